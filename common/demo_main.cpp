@@ -1,0 +1,104 @@
+// common/demo_main.cpp — the main() of every demo: the same flags, the same
+// errors, the same three ways to run (window, OSMesa, EGL).
+#include <cstdio>
+#include <iostream>
+
+#include "context.hpp"
+#include "error.hpp"
+#include "figure.hpp"
+#include "render.hpp"
+#include "scene.hpp"
+#include "sidecar.hpp"
+#include "window.hpp"
+
+namespace ts {
+std::vector<RegisteredScene>& sceneRegistry() {
+  static std::vector<RegisteredScene> r;
+  return r;
+}
+bool registerScene(const std::string& id, SceneFactory make) {
+  sceneRegistry().push_back({id, std::move(make)});
+  return true;
+}
+std::unique_ptr<Scene> makeScene(const std::string& id) {
+  for (auto& s : sceneRegistry())
+    if (s.id == id) return s.make();
+  return nullptr;
+}
+
+std::string formatMeasurements(const Measurements& m) {
+  std::string out;
+  for (const auto& x : m) {
+    char line[512];
+    std::snprintf(line, sizeof line, "%-28s %12.4f   %s\n", x.name.c_str(), x.value, x.meaning.c_str());
+    out += line;
+  }
+  return out;
+}
+
+static int renderPng(Scene& scene, Options& opts, const CommonFlags& f, Backend b, int w, int h) {
+  checkWritable(f.png);
+  if (!f.json.empty()) checkWritable(f.json);
+  ContextOptions co;
+  co.width = w;
+  co.height = h;
+  co.verbose = true;
+  auto ctx = createOffscreenContext(b, co);
+  Renderer r(*ctx);
+  Rendered out = renderScene(scene, r, w, h);
+  writePng(f.png, out.image);
+  if (!f.json.empty()) {
+    SidecarInfo info;
+    info.demo = scene.id();
+    info.figureId = f.png;
+    info.caption = scene.title();
+    info.command = figureCommand(scene.id(), f.png, w, h, opts.stateFlags());
+    info.state = opts.state();
+    info.measurements = out.measurements;
+    writeFileAtomic(f.json, sidecarJson(out.frame, info));
+  }
+  if (!f.quiet) {
+    std::printf("%s | %s\n%s", scene.title().c_str(), ctx->describe().c_str(),
+                formatMeasurements(out.measurements).c_str());
+  }
+  r.release();
+  return kExitOk;
+}
+
+int runDemo(const std::string& id, int argc, char** argv) {
+  try {
+    auto scene = makeScene(id);
+    if (!scene) throw Error("no scene named '" + id + "' is registered", kExitFailure);
+    Options opts;
+    scene->addOptions(opts);
+    CommonFlags f;
+    std::vector<std::string> rest = parseCommonFlags(argc, argv, &f);
+    opts.parse(rest);
+    if (f.help) {
+      std::printf("%s\n\n%s\n\nusage: %s [flags]\n\ncommon flags:\n%s\n%s flags (each key works in the window):\n%s",
+                  scene->title().c_str(), scene->about().c_str(), id.c_str(), commonFlagsHelp().c_str(),
+                  id.c_str(), opts.helpText().c_str());
+      std::printf("\nwindow keys: %s  h: overlay on/off  esc/q: quit\n", opts.keysText().c_str());
+      return kExitOk;
+    }
+    Backend b = parseBackend(f.backend);
+    int w = f.width ? f.width : scene->defaultWidth();
+    int h = f.height ? f.height : scene->defaultHeight();
+    if (!f.png.empty()) {
+      if (b == Backend::Window) throw Error("--png renders offscreen: use --backend osmesa, egl or auto");
+      if (!f.screenshot.empty() || f.frames) throw Error("--screenshot and --frames are for the window, not --png");
+      return renderPng(*scene, opts, f, b, w, h);
+    }
+    if (!f.json.empty()) throw Error("--json needs --png FILE");
+    if (b == Backend::OSMesa || b == Backend::EGL)
+      throw Error(std::string("backend ") + backendName(b) + " is offscreen: add --png FILE");
+    return runWindow(*scene, opts, f, w, h);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "%s: %s\n", id.c_str(), e.what());
+    return e.exit_code;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: internal error: %s\n", id.c_str(), e.what());
+    return kExitFailure;
+  }
+}
+}  // namespace ts

@@ -1,0 +1,39 @@
+#include "figure.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "context.hpp"
+#include "error.hpp"
+#include "render.hpp"
+
+namespace ts {
+Rendered renderScene(Scene& scene, Renderer& r, int width, int height) {
+  Context& ctx = r.context();
+  Rendered out;
+  out.measurements = scene.measure(r);  // may resize the target for itself
+  if (ctx.width() != width || ctx.height() != height) ctx.resize(width, height);
+  out.frame = scene.build(width, height);
+  out.image = r.render(out.frame);
+  return out;
+}
+
+void checkWritable(const std::string& path) {
+  if (path.empty()) throw Error("empty output path");
+  std::string probe = path + ".tmp-" + std::to_string(::getpid());
+  std::FILE* f = std::fopen(probe.c_str(), "wb");
+  if (!f) throw Error("cannot write " + path + ": " + std::strerror(errno));
+  std::fclose(f);
+  std::remove(probe.c_str());
+}
+
+std::string figureCommand(const std::string& demo, const std::string& png, int w, int h,
+                          const std::vector<std::string>& flags) {
+  std::string c = "build/bin/" + demo + " --png " + png + " --size " + std::to_string(w) + "x" + std::to_string(h);
+  for (const auto& f : flags) c += " " + f;
+  return c;
+}
+}  // namespace ts

@@ -1,0 +1,25 @@
+// common/figure.hpp — render a scene's current state offscreen and write it
+// as PNG + sidecar.  Used by every demo's --png and by the figure tool.
+#pragma once
+#include <string>
+
+#include "frame.hpp"
+#include "image.hpp"
+#include "scene.hpp"
+#include "sidecar.hpp"
+
+namespace ts {
+class Renderer;
+struct Rendered {
+  Frame frame;
+  Image image;
+  Measurements measurements;
+};
+// Measures, then draws the figure (without the window overlay) at w x h.
+Rendered renderScene(Scene& scene, Renderer& r, int width, int height);
+// Fails early, with one line naming the path, if `path` cannot be written.
+void checkWritable(const std::string& path);
+// "build/bin/quad_distortion --png book_figures/x.png --size 1024x512 ..."
+std::string figureCommand(const std::string& demo, const std::string& png, int w, int h,
+                          const std::vector<std::string>& flags);
+}  // namespace ts

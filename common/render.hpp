@@ -1,0 +1,41 @@
+// common/render.hpp — draws a Frame with OpenGL and measures what it drew.
+#pragma once
+#include <map>
+#include <string>
+
+#include "frame.hpp"
+#include "gl.hpp"
+#include "image.hpp"
+
+namespace ts {
+class Context;
+
+class Renderer {
+ public:
+  explicit Renderer(Context& ctx) : ctx_(ctx) {}
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Draws the whole frame into the context's current target.  The target
+  // must be at least frame.width x frame.height.  `labels` off leaves the
+  // text out (measurement passes).
+  void draw(const Frame& frame, bool labels = true);
+  // draw() and read back: the picture as the PNG will hold it.
+  Image render(const Frame& frame, bool labels = true);
+  Context& context() { return ctx_; }
+  // The GL texture for a description (uploaded once per key, then cached;
+  // filters and wrap modes are set on every bind).
+  GLuint texture(const TextureDesc& t);
+  GLuint program(const std::string& key, const Program& p);
+  // Drops every cached GL object (call before the context goes away).
+  void release();
+
+ private:
+  void drawLabels(const Frame& frame);
+  Context& ctx_;
+  std::map<std::string, GLuint> textures_;
+  std::map<std::string, GLuint> programs_;
+  GLuint fontTexture_ = 0;
+};
+}  // namespace ts

@@ -1,0 +1,73 @@
+// common/scene.hpp — what a demo implements.  One Scene subclass per figure,
+// in one file under demos/<name>/; everything else (flags, windows,
+// offscreen contexts, PNG, sidecars, the figure gallery) is shared.
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "frame.hpp"
+#include "options.hpp"
+
+namespace ts {
+class Renderer;
+
+// The numbers a figure exists to show, e.g. {"kink_deg", 18.43, "..."}.
+struct Measurement {
+  std::string name;
+  double value = 0;
+  std::string meaning;
+};
+using Measurements = std::vector<Measurement>;
+std::string formatMeasurements(const Measurements& m);
+
+// A registered book figure: a state of a demo (its flags) at a size.
+struct FigureSpec {
+  std::string id;          // file name in book_figures/, e.g. "vi1_quad_distortion"
+  std::string bookNumber;  // "Figure VI.1"
+  std::string caption;
+  std::vector<std::string> flags;  // demo options that set the state
+  int width = 1024, height = 512;
+};
+
+class Scene {
+ public:
+  virtual ~Scene() = default;
+  virtual std::string id() const = 0;     // "quad_distortion" (= folder and program name)
+  virtual std::string title() const = 0;  // "Figure VI.1 — quadrilateral distortion"
+  virtual std::string about() const = 0;  // a paragraph for --help: the claim
+  virtual int defaultWidth() const { return 1024; }
+  virtual int defaultHeight() const { return 512; }
+  // Binds the demo's state to flags and keys.  Called once, before parsing.
+  virtual void addOptions(Options& o) = 0;
+  // The picture of the current state at a size.  Pure description: no GL.
+  virtual Frame build(int width, int height) = 0;
+  // Measures the figure's claim in the current state.  May render extra
+  // passes with `r` into the current target (the caller redraws after).
+  virtual Measurements measure(Renderer& r) = 0;
+  virtual std::vector<FigureSpec> figures() const { return {}; }
+  // Window only: called each frame with the elapsed seconds (animations).
+  virtual void update(double /*seconds*/) {}
+};
+
+// Registry filled by TM_REGISTER_SCENE in each demo's file.
+using SceneFactory = std::function<std::unique_ptr<Scene>()>;
+struct RegisteredScene {
+  std::string id;
+  SceneFactory make;
+};
+std::vector<RegisteredScene>& sceneRegistry();
+bool registerScene(const std::string& id, SceneFactory make);
+std::unique_ptr<Scene> makeScene(const std::string& id);  // nullptr if unknown
+
+// Runs a demo program: flags, --help, --png, or the window.  Returns the exit
+// status; every user error becomes one line on stderr.
+int runDemo(const std::string& id, int argc, char** argv);
+}  // namespace ts
+
+#define TM_REGISTER_SCENE(Class)                                                          \
+  static const bool tm_registered_##Class = ::ts::registerScene(Class().id(), [] {        \
+    return std::unique_ptr<::ts::Scene>(new Class());                                    \
+  })

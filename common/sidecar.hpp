@@ -1,0 +1,23 @@
+// common/sidecar.hpp — the JSON written beside every figure: every number
+// needed to recompute the image without OpenGL (size, matrices, textures and
+// how they were made, per-vertex positions and (s,t,r,q), filters, wraps),
+// plus the demo state that produced it and what it measured.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "frame.hpp"
+#include "scene.hpp"
+
+namespace ts {
+struct SidecarInfo {
+  std::string figureId, bookNumber, caption, demo, command;
+  std::vector<std::pair<std::string, std::string>> state;
+  Measurements measurements;
+};
+// Deterministic: fixed key order, floats with 9 significant digits, no
+// renderer strings or times (the file must not change between machines).
+std::string sidecarJson(const Frame& frame, const SidecarInfo& info);
+std::string glEnumName(GLenum e);
+}  // namespace ts

@@ -1,0 +1,168 @@
+#include "textures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "error.hpp"
+#include "text.hpp"
+
+namespace ts {
+static std::string str(int v) { return std::to_string(v); }
+static std::string str(Rgba c) {
+  return str(c.r) + "," + str(c.g) + "," + str(c.b) + "," + str(c.a);
+}
+
+// Images are stored top row first (PNG order) but GL's texel row 0 is t = 0,
+// the bottom.  Textures are uploaded row 0 first, so the Image's row 0 is
+// t = 0 here: generators index rows by t directly.
+TextureDesc checkerboard(int size, int checks, Rgba a, Rgba b) {
+  if (size < 1 || size > kMaxImageDimension || checks < 1 || checks > size)
+    throw Error("checkerboard: size " + str(size) + " with " + str(checks) + " checks is invalid");
+  auto img = std::make_shared<Image>(size, size);
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) {
+      int ci = i * checks / size, cj = j * checks / size;
+      img->set(i, j, ((ci + cj) % 2 == 0) ? a : b);
+    }
+  TextureDesc t;
+  t.name = "checkerboard";
+  t.params = {{"size", str(size)}, {"checks", str(checks)}, {"color_a", str(a)}, {"color_b", str(b)}};
+  t.image = img;
+  return t;
+}
+
+Rgba checkerAt(int size, int checks, Rgba a, Rgba b, double s, double t) {
+  auto texel = [size](double c) {
+    double f = c - std::floor(c);
+    return std::min(size - 1, int(std::floor(f * size)));
+  };
+  int i = texel(s), j = texel(t);
+  int ci = i * checks / size, cj = j * checks / size;
+  return ((ci + cj) % 2 == 0) ? a : b;
+}
+
+TextureDesc texelIndexTexture(int size) {
+  if (size < 1 || size > 4096) throw Error("texel index texture: size must be 1..4096");
+  auto img = std::make_shared<Image>(size, size);
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i)
+      img->set(i, j, {uint8_t(i & 255), uint8_t(j & 255), uint8_t((i >> 8) | ((j >> 8) << 4)), 255});
+  TextureDesc t;
+  t.name = "texel_index";
+  t.params = {{"size", str(size)}};
+  t.image = img;
+  t.minFilter = t.magFilter = GL_NEAREST;
+  return t;
+}
+
+void decodeTexelIndex(Rgba c, int* i, int* j) {
+  *i = c.r | ((c.b & 15) << 8);
+  *j = c.g | ((c.b >> 4) << 8);
+}
+
+TextureDesc labelledGrid(int size, int cells) {
+  if (size < 16 || size > 4096 || cells < 1 || cells > 26)
+    throw Error("labelled grid: size 16..4096 and 1..26 cells");
+  // Drawn top-down as a picture, then flipped so the picture's top is t = 1.
+  Image pic(size, size);
+  int cs = size / cells;
+  for (int cy = 0; cy < cells; ++cy)
+    for (int cx = 0; cx < cells; ++cx) {
+      int row = cells - 1 - cy;  // row number counted from the bottom
+      // Hue varies with the column, brightness with the row: both
+      // directions can be read off any patch.
+      Rgba c{uint8_t(60 + 180 * cx / std::max(1, cells - 1)), uint8_t(90 + 120 * row / std::max(1, cells - 1)),
+             uint8_t(200 - 150 * cx / std::max(1, cells - 1)), 255};
+      for (int y = cy * cs; y < (cy + 1) * cs; ++y)
+        for (int x = cx * cs; x < (cx + 1) * cs; ++x) {
+          bool edge = x == cx * cs || y == cy * cs;
+          pic.set(x, y, edge ? Rgba{20, 20, 20, 255} : c);
+        }
+      std::string label = std::string(1, char('A' + cx)) + std::to_string(row + 1);
+      int scale = std::clamp(cs / 26, 1, text::kMaxScale);
+      float tw = text::width(label, scale);
+      text::draw(pic, float(cx * cs) + (float(cs) - tw) / 2, float(cy * cs) + (float(cs) - text::height(scale)) / 2,
+                 label, {255, 255, 255, 255}, scale);
+    }
+  // An arrow-free orientation cue: a bright bar along the bottom edge (t = 0).
+  for (int y = size - std::max(2, size / 64); y < size; ++y)
+    for (int x = 0; x < size; ++x) pic.set(x, y, {250, 220, 40, 255});
+  pic.flipVertical();
+  TextureDesc t;
+  t.name = "labelled_grid";
+  t.params = {{"size", str(size)}, {"cells", str(cells)}};
+  t.image = std::make_shared<Image>(std::move(pic));
+  return t;
+}
+
+Rgba mipLevelColour(int level) {
+  static const Rgba k[] = {{230, 40, 40, 255},  {40, 200, 40, 255},  {40, 80, 230, 255}, {230, 210, 40, 255},
+                           {200, 40, 200, 255}, {40, 200, 200, 255}, {240, 140, 30, 255}, {240, 240, 240, 255},
+                           {120, 120, 120, 255}, {20, 20, 20, 255},  {150, 90, 40, 255},  {90, 40, 150, 255},
+                           {40, 110, 60, 255},  {250, 170, 180, 255}, {60, 60, 140, 255}};
+  return k[size_t(std::max(0, level)) % (sizeof k / sizeof k[0])];
+}
+
+TextureDesc mipLevelColours(int size) {
+  if (size < 1 || size > kMaxImageDimension || (size & (size - 1)) != 0)
+    throw Error("mip level texture: size must be a power of two");
+  TextureDesc t;
+  t.name = "mip_level_colours";
+  t.params = {{"size", str(size)}};
+  auto levels = std::make_shared<std::vector<Image>>();
+  for (int k = 0, s = size; s >= 1; ++k, s /= 2) levels->emplace_back(s, s, mipLevelColour(k));
+  t.image = std::make_shared<Image>(levels->front());
+  t.mipLevels = levels;
+  t.mipmaps = true;
+  t.minFilter = GL_NEAREST_MIPMAP_NEAREST;
+  return t;
+}
+
+static double toLinear(uint8_t v) {
+  double c = v / 255.0;
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+static uint8_t fromLinear(double c) {
+  double v = c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
+  return uint8_t(std::clamp(std::lround(v * 255.0), 0L, 255L));
+}
+
+std::vector<Image> buildMipChain(const Image& level0, bool linearLight) {
+  std::vector<Image> chain{level0};
+  while (chain.back().width > 1 || chain.back().height > 1) {
+    const Image& src = chain.back();
+    int w = std::max(1, src.width / 2), h = std::max(1, src.height / 2);
+    Image dst(w, h);
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) {
+        int x0 = std::min(2 * i, src.width - 1), x1 = std::min(2 * i + 1, src.width - 1);
+        int y0 = std::min(2 * j, src.height - 1), y1 = std::min(2 * j + 1, src.height - 1);
+        Rgba p[4] = {src.at(x0, y0), src.at(x1, y0), src.at(x0, y1), src.at(x1, y1)};
+        uint8_t out[4];
+        for (int c = 0; c < 4; ++c) {
+          auto ch = [c](const Rgba& q) { return c == 0 ? q.r : c == 1 ? q.g : c == 2 ? q.b : q.a; };
+          if (linearLight && c < 3) {
+            double sum = 0;
+            for (auto& q : p) sum += toLinear(ch(q));
+            out[c] = fromLinear(sum / 4);
+          } else {
+            int sum = 0;
+            for (auto& q : p) sum += ch(q);
+            out[c] = uint8_t((sum + 2) / 4);  // round half up
+          }
+        }
+        dst.set(i, j, {out[0], out[1], out[2], out[3]});
+      }
+    chain.push_back(std::move(dst));
+  }
+  return chain;
+}
+
+double mipChainOverhead(const std::vector<Image>& chain) {
+  if (chain.empty()) return 0;
+  double base = double(chain[0].width) * chain[0].height, extra = 0;
+  for (size_t k = 1; k < chain.size(); ++k) extra += double(chain[k].width) * chain[k].height;
+  return extra / base;
+}
+}  // namespace ts

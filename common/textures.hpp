@@ -1,0 +1,38 @@
+// common/textures.hpp — the procedural textures every demo draws with.
+// Each returns a TextureDesc whose name and params say exactly how it was
+// made, so the sidecar JSON is enough to remake the texels.
+#pragma once
+#include <vector>
+
+#include "frame.hpp"
+#include "image.hpp"
+
+namespace ts {
+// size x size texels, checks x checks squares; texel (0,0) (s≈0, t≈0, the
+// bottom-left in GL) has colour `a`.  Square (i, j) is `a` when i+j is even.
+TextureDesc checkerboard(int size, int checks, Rgba a = {32, 32, 32, 255}, Rgba b = {224, 224, 224, 255});
+// A texture whose texel (i, j) holds its own indices, i and j in 12 bits:
+// R = i & 255, G = j & 255, B = (i >> 8) | (j >> 8) << 4 (size <= 4096).
+// Drawn with GL_NEAREST it turns a render into a map of which texel each
+// pixel took; decodeTexelIndex reads it back.
+TextureDesc texelIndexTexture(int size = 2048);
+void decodeTexelIndex(Rgba c, int* i, int* j);
+// A grid of size/cells cells labelled "A1".."H8" (column letter, row number
+// from the bottom): shows orientation and left/right in any mapping.
+TextureDesc labelledGrid(int size = 512, int cells = 8);
+// Level k filled with a distinct saturated colour (red, green, blue, ...) so
+// the mip level a pixel uses is visible (the Red Book's mipmap.c idea).
+TextureDesc mipLevelColours(int size = 256);
+Rgba mipLevelColour(int level);
+
+// The book's mip chain: level k+1 texel (i, j) is the average of level k's
+// texels (2i..2i+1, 2j..2j+1).  Odd sizes clamp the second row/column.
+// linearLight: average in linear light (sRGB decode, mean, encode).
+std::vector<Image> buildMipChain(const Image& level0, bool linearLight = false);
+// Bytes of all levels above level 0 divided by level 0's bytes (≈ 1/3).
+double mipChainOverhead(const std::vector<Image>& chain);
+
+// Texel centre value of the checkerboard at (s, t): which colour GL_NEAREST
+// returns (texture coordinates wrap with GL_REPEAT).
+Rgba checkerAt(int size, int checks, Rgba a, Rgba b, double s, double t);
+}  // namespace ts

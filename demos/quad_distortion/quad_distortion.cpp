@@ -1,0 +1,412 @@
+// Figure VI.1 — a quadrilateral region of a checkerboard drawn on a square.
+//
+// The claim (Buss, VI.1.1): a quad is drawn as two triangles and each one
+// interpolates (s, t) linearly, so when the (s, t) corners do not form a
+// parallelogram the two triangles map the texture differently and the
+// checker lines bend along the diagonal.  The bend depends on which diagonal
+// splits the quad, and vanishes with bilinear interpolation over the quad or
+// with projective texture coordinates (s, t, r, q).
+//
+// Left: texture space — the whole checkerboard, the region in red, the image
+// of the screen diagonal in orange.  Right: screen space — the square.
+//
+// Keys (each is also a flag, see --help):
+//   d  which diagonal splits the square (tl-br as in the book, or bl-tr)
+//   i  interpolation: affine triangles | bilinear (GLSL) | projective (s,t,r,q)
+//   e  draw the triangle edges
+//   v  view: the book's figure | the four variants side by side
+//   f  texture filter nearest | linear      + / -  checks per side
+//
+// Measured: the kink — the angle between the checker lines on the two sides
+// of the diagonal, fitted from a render that shows which texel each pixel
+// took — next to the angle the math predicts.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include "common/context.hpp"
+#include "common/error.hpp"
+#include "common/probe.hpp"
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "common/text.hpp"
+#include "common/textures.hpp"
+#include "quad_map.hpp"
+
+namespace {
+using quadmap::Diagonal;
+
+enum Interp { kAffine, kBilinear, kProjective };
+const char* const kInterpNames[] = {"affine", "bilinear", "projective"};
+const char* const kDiagNames[] = {"tl-br", "bl-tr"};
+
+// Bilinear interpolation of (s, t) over the quad cannot be done by fixed
+// function: the vertices carry the square's own (a, b) as texture
+// coordinates (affine over the square, so exact per triangle) and the
+// fragment shader blends the four corner (s, t) with them.  GLSL 1.20 so it
+// runs on softpipe's GL 3.3 compatibility context as well.
+const char* const kBilinearVS = R"(#version 120
+void main() {
+  gl_TexCoord[0] = gl_MultiTexCoord0;   // (a, b) in [0,1]^2
+  gl_Position = ftransform();
+})";
+const char* const kBilinearFS = R"(#version 120
+uniform sampler2D tex;
+uniform vec4 st00_st10;  // (s,t) at corner (0,0) and (1,0)
+uniform vec4 st11_st01;  // (s,t) at corner (1,1) and (0,1)
+void main() {
+  vec2 ab = gl_TexCoord[0].xy;
+  vec2 bottom = mix(st00_st10.xy, st00_st10.zw, ab.x);   // along b = 0
+  vec2 top    = mix(st11_st01.zw, st11_st01.xy, ab.x);   // along b = 1
+  gl_FragColor = texture2D(tex, mix(bottom, top, ab.y));
+})";
+
+class QuadDistortion final : public ts::Scene {
+ public:
+  std::string id() const override { return "quad_distortion"; }
+  std::string title() const override { return "Figure VI.1 - quadrilateral distortion"; }
+  std::string about() const override {
+    return "A non-parallelogram region of a checkerboard, chosen by (s,t) at the corners of a square, drawn on\n"
+           "that square as two triangles: each triangle's map is affine, so checker lines bend at the diagonal.\n"
+           "Prints the bend measured from the render and the bend the math predicts.";
+  }
+  void addOptions(ts::Options& o) override {
+    o.addEnum("diagonal", &diagonal_, {kDiagNames[0], kDiagNames[1]},
+              "which diagonal splits the square (the book: tl-br)", 'd');
+    o.addEnum("interp", &interp_, {kInterpNames[0], kInterpNames[1], kInterpNames[2]},
+              "affine triangles, bilinear over the quad (GLSL), or projective (s,t,r,q)", 'i');
+    o.addBool("edges", &edges_, "draw the two triangles' edges", 'e');
+    o.addEnum("view", &view_, {"book", "compare"}, "book: texture | square; compare: four variants", 'v');
+    o.addEnum("filter", &filter_, {"nearest", "linear"}, "texture magnification filter", 'f');
+    o.addInt("checks", &checks_, 2, 32, "checks along each side of the texture", '+', '-');
+    o.addText("corners", &cornersText_,
+              "(s,t) at the square's corners (0,0) (1,0) (1,1) (0,1): \"s,t s,t s,t s,t\"",
+              [](const std::string& v) { parseCorners(v); });
+  }
+
+  std::vector<ts::FigureSpec> figures() const override {
+    return {
+        {"vi1_quad_distortion", "Figure VI.1",
+         "The texture with the region chosen by the (s,t) corners (left) and that region drawn on a square as two "
+         "linearly mapped triangles (right): the checker lines bend along the diagonal.",
+         {"--view", "book", "--diagonal", "tl-br", "--interp", "affine"}, 1024, 560},
+        {"vi1_quad_variants", "Figure VI.1 (variants)",
+         "The same region four ways: split along either diagonal (the kink moves and changes), bilinear "
+         "interpolation of (s,t) over the quad, and projective (s,t,r,q) coordinates (no kink).",
+         {"--view", "compare", "--edges"}, 1280, 420},
+    };
+  }
+
+  ts::Measurements measure(ts::Renderer& r) override;
+  ts::Frame build(int width, int height) override;
+
+  // Public for the tests: the texel-index render of one variant.
+  struct Variant {
+    Diagonal diagonal;
+    Interp interp;
+  };
+  quadmap::Corners corners() const { return parseCorners(cornersText_); }
+  static quadmap::Corners parseCorners(const std::string& text);
+
+ private:
+  // The square with `interp` applied, as batches in a unit-square panel.
+  void addSquare(ts::Frame& f, ts::Panel& p, Variant v, int texture, bool edges) const;
+  void addTextureView(ts::Frame& f, ts::Panel& p, Variant v, int texture) const;
+  ts::TextureDesc checker() const {
+    ts::TextureDesc t = ts::checkerboard(256, checks_);
+    t.minFilter = t.magFilter = filter_ == 0 ? GL_NEAREST : GL_LINEAR;
+    return t;
+  }
+  double measureKink(ts::Renderer& r, Variant v, double* texelError);
+  double predicted(Variant v) const {
+    return v.interp == kAffine ? quadmap::predictedKinkDeg(corners(), v.diagonal) : 0.0;
+  }
+  glm::dvec2 analytic(Variant v, glm::dvec2 p) const {
+    quadmap::Corners st = corners();
+    if (v.interp == kBilinear) return quadmap::bilinear(st, p);
+    if (v.interp == kProjective) return quadmap::projective(quadmap::homography(st), p);
+    return quadmap::split(st, v.diagonal).at(p, v.diagonal)(p);
+  }
+
+  int diagonal_ = 0, interp_ = kAffine, view_ = 0, filter_ = 1, checks_ = 8;
+  bool edges_ = false;
+  std::string cornersText_ = "0,0 1,0 0.75,0.75 0,1";  // the book's labels
+  std::map<std::string, double> measured_;             // variant name -> kink, for labels
+};
+
+quadmap::Corners QuadDistortion::parseCorners(const std::string& text) {
+  quadmap::Corners c{};
+  std::istringstream in(text);
+  for (int i = 0; i < 4; ++i) {
+    double s = 0, t = 0;
+    char comma = 0;
+    if (!(in >> s >> comma >> t) || comma != ',' || !std::isfinite(s) || !std::isfinite(t) || std::abs(s) > 64 ||
+        std::abs(t) > 64)
+      throw ts::Error("--corners: '" + text + "' is not four \"s,t\" pairs with |s|,|t| <= 64");
+    c[size_t(i)] = {s, t};
+  }
+  std::string rest;
+  if (in >> rest) throw ts::Error("--corners: '" + text + "' has more than four pairs");
+  // The projective fix needs a proper quadrilateral (no three corners in line).
+  for (int i = 0; i < 4; ++i) {
+    glm::dvec2 a = c[size_t(i)], b = c[size_t((i + 1) % 4)], d = c[size_t((i + 3) % 4)];
+    glm::dvec2 u = b - a, w = d - a;
+    if (std::abs(u.x * w.y - u.y * w.x) < 1e-9)
+      throw ts::Error("--corners: '" + text + "' has three corners in a line");
+  }
+  return c;
+}
+
+std::string variantName(const QuadDistortion::Variant& v) {
+  return v.interp == kAffine ? std::string("affine ") + kDiagNames[int(v.diagonal)] : kInterpNames[v.interp];
+}
+
+void QuadDistortion::addSquare(ts::Frame& f, ts::Panel& p, Variant v, int texture, bool edges) const {
+  quadmap::Corners st = corners();
+  const auto& P = quadmap::squareCorners();
+  // Vertex order of the two triangles for each diagonal.
+  const int tlbr[6] = {0, 1, 3, 1, 2, 3}, bltr[6] = {0, 1, 2, 0, 2, 3};
+  const int* idx = v.diagonal == Diagonal::TopLeftBottomRight ? tlbr : bltr;
+  ts::Batch b;
+  b.role = "surface";
+  b.texture = texture;
+  glm::dmat3 H = quadmap::homography(st);
+  for (int k = 0; k < 6; ++k) {
+    int i = idx[k];
+    ts::Vertex vert;
+    vert.pos = glm::vec3(glm::vec2(P[size_t(i)]), 0.0f);
+    switch (v.interp) {
+      case kAffine: vert.tex = glm::vec4(glm::vec2(st[size_t(i)]), 0, 1); break;
+      case kBilinear: vert.tex = glm::vec4(glm::vec2(P[size_t(i)]), 0, 1); break;  // (a, b); shader maps
+      case kProjective: vert.tex = glm::vec4(quadmap::projectiveTexCoord(H, P[size_t(i)])); break;
+    }
+    b.vertices.push_back(vert);
+  }
+  if (v.interp == kBilinear) {
+    b.program = "bilinear_quad";
+    b.uniforms = {{"st00_st10", glm::vec4(glm::vec2(st[0]), glm::vec2(st[1]))},
+                  {"st11_st01", glm::vec4(glm::vec2(st[2]), glm::vec2(st[3]))}};
+    bool have = false;
+    for (const auto& pr : f.programs) have |= pr.first == "bilinear_quad";
+    if (!have) f.programs.push_back({"bilinear_quad", {"demos/quad_distortion/quad_distortion.cpp", kBilinearVS, kBilinearFS}});
+  }
+  p.batches.push_back(b);
+  if (edges) {
+    glm::vec2 d0 = v.diagonal == Diagonal::TopLeftBottomRight ? glm::vec2(0, 1) : glm::vec2(0, 0);
+    glm::vec2 d1 = v.diagonal == Diagonal::TopLeftBottomRight ? glm::vec2(1, 0) : glm::vec2(1, 1);
+    p.batches.push_back(ts::lineSegments({d0, d1}, {1.0f, 0.55f, 0.0f, 1.0f}, 2.0f, "diagonal"));
+    p.batches.push_back(ts::lineLoop({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {1.0f, 0.55f, 0.0f, 1.0f}, 2.0f, "edges"));
+  }
+}
+
+void QuadDistortion::addTextureView(ts::Frame&, ts::Panel& p, Variant v, int texture) const {
+  quadmap::Corners st = corners();
+  // The whole texture on the unit square: s, t = a, b.
+  ts::Batch tex;
+  tex.role = "texture";
+  tex.texture = texture;
+  for (int i : {0, 1, 2, 0, 2, 3}) {
+    glm::vec2 c = glm::vec2(quadmap::squareCorners()[size_t(i)]);
+    tex.vertices.push_back({{c, 0}, {c, 0, 1}, {1, 1, 1, 1}});
+  }
+  p.batches.push_back(tex);
+  // The region the (s, t) corners select, and the screen diagonal's image.
+  std::vector<glm::vec2> region;
+  for (const auto& c : st) region.push_back(glm::vec2(c));
+  p.batches.push_back(ts::lineLoop(region, {0.9f, 0.1f, 0.1f, 1.0f}, 3.0f, "region"));
+  glm::dvec2 a = v.diagonal == Diagonal::TopLeftBottomRight ? glm::dvec2(0, 1) : glm::dvec2(0, 0);
+  glm::dvec2 b = v.diagonal == Diagonal::TopLeftBottomRight ? glm::dvec2(1, 0) : glm::dvec2(1, 1);
+  std::vector<glm::vec2> diag;
+  glm::dmat3 H = quadmap::homography(st);
+  quadmap::Split sp = quadmap::split(st, v.diagonal);
+  for (int k = 0; k <= 32; ++k) {
+    glm::dvec2 q = glm::mix(a, b, k / 32.0);
+    glm::dvec2 m = v.interp == kAffine ? sp.first(q) : v.interp == kBilinear ? quadmap::bilinear(st, q)
+                                                                              : quadmap::projective(H, q);
+    diag.push_back(glm::vec2(m));
+  }
+  ts::Batch d = ts::lineLoop(diag, {1.0f, 0.55f, 0.0f, 1.0f}, 2.0f, "diagonal_image");
+  d.prim = ts::Prim::LineStrip;
+  p.batches.push_back(d);
+}
+
+static std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+ts::Frame QuadDistortion::build(int width, int height) {
+  ts::Frame f;
+  f.width = width;
+  f.height = height;
+  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  int checker = f.addTexture(this->checker());
+  int scale = std::max(1, std::min(3, std::min(width, height) / 300));
+  int line = int(ts::text::height(scale)) + 6 * scale;
+  glm::vec4 white{0.95f, 0.95f, 0.95f, 1.0f};
+  glm::mat4 unit = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+  quadmap::Corners st = corners();
+  Variant current{Diagonal(diagonal_), Interp(interp_)};
+  auto cornerLabels = [&](const ts::Rect& r, bool withValues) {
+    const auto& P = quadmap::squareCorners();
+    for (int i = 0; i < 4; ++i) {
+      glm::dvec2 c = P[size_t(i)];
+      std::string s = withValues ? "<" + fmt("%g", st[size_t(i)].x) + "," + fmt("%g", st[size_t(i)].y) + ">"
+                                 : "<" + fmt("%g", c.x) + "," + fmt("%g", c.y) + ">";
+      float x = float(r.x) + float(c.x) * float(r.w);
+      float y = c.y > 0.5 ? float(r.y) - float(line) : float(r.y + r.h) + 4.0f * float(scale);
+      f.labels.push_back({x, y, s, white, scale, c.x > 0.5 ? ts::Align::Right : ts::Align::Left});
+    }
+  };
+  if (view_ == 0) {
+    // The book's layout: texture square left, rendered square right.
+    int side = std::max(1, std::min(width / 2 - 2 * line, height - 4 * line));
+    int top = (height - side) / 2;
+    ts::Panel left, right;
+    left.id = "texture_space";
+    left.viewport = {width / 4 - side / 2, top, side, side};
+    left.projection = unit;
+    addTextureView(f, left, current, checker);
+    right.id = "screen_space";
+    right.viewport = {3 * width / 4 - side / 2, top, side, side};
+    right.projection = unit;
+    addSquare(f, right, current, checker, edges_);
+    f.panels = {left, right};
+    cornerLabels(left.viewport, false);
+    cornerLabels(right.viewport, true);
+    f.labels.push_back({float(width / 4), float(line / 2), "texture space: the region", white, scale, ts::Align::Center});
+    std::string name = variantName(current);
+    f.labels.push_back({float(3 * width / 4), float(line / 2), "screen space: " + name, white, scale, ts::Align::Center});
+    auto m = measured_.find(name);
+    if (m != measured_.end())
+      f.labels.push_back({float(width / 2), float(height - line), "kink along the diagonal: " + fmt("%.1f", m->second) +
+                              " deg (predicted " + fmt("%.1f", predicted(current)) + ")", {1.0f, 0.75f, 0.3f, 1.0f},
+                          scale, ts::Align::Center});
+  } else {
+    // The four variants: both diagonals, then the two fixes.
+    const Variant vs[4] = {{Diagonal::TopLeftBottomRight, kAffine}, {Diagonal::BottomLeftTopRight, kAffine},
+                           {Diagonal(diagonal_), kBilinear}, {Diagonal(diagonal_), kProjective}};
+    int side = std::max(1, std::min(width / 4 - line, height - 5 * line));
+    int top = 2 * line;
+    for (int k = 0; k < 4; ++k) {
+      ts::Panel p;
+      p.id = "variant_" + std::to_string(k);
+      p.viewport = {(2 * k + 1) * width / 8 - side / 2, top, side, side};
+      p.projection = unit;
+      addSquare(f, p, vs[k], checker, edges_ && vs[k].interp == kAffine);
+      f.panels.push_back(p);
+      std::string name = variantName(vs[k]);
+      float cx = float((2 * k + 1) * width / 8);
+      f.labels.push_back({cx, float(line / 2), name, white, scale, ts::Align::Center});
+      auto m = measured_.find(name);
+      if (m != measured_.end())
+        f.labels.push_back({cx, float(top + side + line / 2), "kink " + fmt("%.1f", m->second) + " deg",
+                            {1.0f, 0.75f, 0.3f, 1.0f}, scale, ts::Align::Center});
+    }
+  }
+  return f;
+}
+
+// The measurement.  The square is drawn once more, full-frame, with a
+// texture whose texel (i, j) holds R = i, G = j (GL_NEAREST): the picture
+// then says which texel every pixel took.  Two things follow:
+//  * the texel each pixel took is compared with the analytic map (the
+//    triangles' affine maps, the bilinear map or the homography);
+//  * the diagonal is cut into 8 segments; beside each, on either side, in a
+//    band 1.5 .. N/16 pixels wide, s and t (in texels) are fitted by
+//    quadratics in (a, b); the gradients of the two fits at the segment's
+//    centre give the angle between the checker lines on either side.  Affine triangles: the angle of predictedKinkDeg;
+//    bilinear and projective: ~0, the gradient is continuous.
+static glm::dvec2 segmentCentre(Diagonal d, int seg, int segments) {
+  double u = (seg + 0.5) / segments;
+  return d == Diagonal::TopLeftBottomRight ? glm::dvec2(u, 1 - u) : glm::dvec2(u, u);
+}
+
+double QuadDistortion::measureKink(ts::Renderer& r, Variant v, double* texelError) {
+  ts::Context& ctx = r.context();
+  if (ctx.backend() != ts::Backend::Window) ctx.resize(512, 512);
+  const int N = std::min({512, ctx.width(), ctx.height()});
+  if (N < 64) throw ts::Error("the measurement needs at least 64x64 pixels", ts::kExitFailure);
+  ts::Frame mf;
+  mf.width = mf.height = N;
+  // 2048 texels across 512 pixels: each pixel's texel is known to 1/4 pixel.
+  const double T = 2048.0;
+  int tex = mf.addTexture(ts::texelIndexTexture(int(T)));
+  ts::Panel p;
+  p.id = "texel_index";
+  p.viewport = {0, 0, N, N};
+  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+  addSquare(mf, p, v, tex, false);
+  mf.panels.push_back(p);
+  ts::Image img = r.render(mf, false);
+
+  // Samples per diagonal segment and side: [segment][side][s or t].
+  constexpr int kSegments = 8;
+  std::vector<ts::probe::Sample> samples[kSegments][2][2];
+  const double band = N / 16.0;
+  double worst = 0;
+  for (int y = 0; y < N; ++y)
+    for (int x = 0; x < N; ++x) {
+      glm::dvec2 ab((x + 0.5) / N, 1.0 - (y + 0.5) / N);
+      glm::dvec2 want = analytic(v, ab) * T;
+      int i = 0, j = 0;
+      ts::decodeTexelIndex(img.at(x, y), &i, &j);
+      // Unwrap the index to the repeat the analytic value is in.
+      double si = i + T * std::round((want.x - i - 0.5) / T) + 0.5;
+      double ti = j + T * std::round((want.y - j - 0.5) / T) + 0.5;
+      worst = std::max({worst, std::abs(std::floor(want.x) + 0.5 - si), std::abs(std::floor(want.y) + 0.5 - ti)});
+      // Signed distance (pixels) from the diagonal, positive in the second
+      // triangle, and position along it in [0, 1].
+      bool tlbr = v.diagonal == Diagonal::TopLeftBottomRight;
+      double d = (tlbr ? ab.x + ab.y - 1.0 : ab.y - ab.x) * N / std::sqrt(2.0);
+      double along = tlbr ? (ab.x - ab.y + 1.0) / 2.0 : (ab.x + ab.y) / 2.0;
+      if (std::abs(d) < 1.5 || std::abs(d) > band || along <= 0 || along >= 1) continue;
+      int seg = std::min(kSegments - 1, int(along * kSegments));
+      glm::dvec2 c = segmentCentre(v.diagonal, seg, kSegments);
+      int side = d < 0 ? 0 : 1;
+      // Local coordinates around the segment's centre keep the fit well
+      // conditioned and its gradient at (0, 0) the gradient on the diagonal.
+      samples[seg][side][0].push_back({ab.x - c.x, ab.y - c.y, si});
+      samples[seg][side][1].push_back({ab.x - c.x, ab.y - c.y, ti});
+    }
+  *texelError = worst;
+  double kink = 0;
+  for (auto& seg : samples)
+    for (int k = 0; k < 2; ++k) {
+      ts::probe::Fit a = ts::probe::fit(seg[0][k], true), b = ts::probe::fit(seg[1][k], true);
+      kink = std::max(kink, quadmap::angleDeg({a.c[1], a.c[2]}, {b.c[1], b.c[2]}));
+    }
+  return kink;
+}
+
+ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
+  Variant current{Diagonal(diagonal_), Interp(interp_)};
+  std::vector<Variant> todo{current};
+  if (view_ == 1)
+    todo = {{Diagonal::TopLeftBottomRight, kAffine}, {Diagonal::BottomLeftTopRight, kAffine},
+            {Diagonal(diagonal_), kBilinear}, {Diagonal(diagonal_), kProjective}};
+  ts::Measurements out;
+  measured_.clear();
+  for (const Variant& v : todo) {
+    double texelError = 0;
+    double kink = measureKink(r, v, &texelError);
+    std::string name = variantName(v);
+    measured_[name] = kink;
+    std::string key = name;
+    for (char& c : key)
+      if (c == ' ' || c == '-') c = '_';
+    out.push_back({"kink_deg[" + key + "]", kink, "measured angle between checker lines across the diagonal"});
+    out.push_back({"kink_predicted_deg[" + key + "]", predicted(v), "the same angle from the affine maps"});
+    out.push_back({"texel_error_max[" + key + "]", texelError, "largest |texel taken - analytic texel| (2048 texels)"});
+  }
+  out.push_back({"split_disagreement_texels", quadmap::splitDisagreement(corners(), current.diagonal) * 256.0,
+                 "how far apart the two triangles' maps put one point (256 texels)"});
+  return out;
+}
+}  // namespace
+
+TM_REGISTER_SCENE(QuadDistortion);
