@@ -56,6 +56,16 @@ TextureDesc texelIndexTexture(int size) {
   return t;
 }
 
+TextureDesc fileTexture(const std::string& path) {
+  Image img = readPng(path);
+  img.flipVertical();  // a picture's top row is t = 1
+  TextureDesc t;
+  t.name = "file";
+  t.params = {{"path", path}, {"width", str(img.width)}, {"height", str(img.height)}};
+  t.image = std::make_shared<Image>(std::move(img));
+  return t;
+}
+
 void decodeTexelIndex(Rgba c, int* i, int* j) {
   *i = c.r | ((c.b & 15) << 8);
   *j = c.g | ((c.b >> 4) << 8);

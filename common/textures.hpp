@@ -25,6 +25,10 @@ TextureDesc labelledGrid(int size = 512, int cells = 8);
 TextureDesc mipLevelColours(int size = 256);
 Rgba mipLevelColour(int level);
 
+// A PNG file as a texture (row 0 of the picture = the top = t = 1).  Throws
+// ts::Error "<path>: <what is wrong>" for a missing or malformed file.
+TextureDesc fileTexture(const std::string& path);
+
 // The book's mip chain: level k+1 texel (i, j) is the average of level k's
 // texels (2i..2i+1, 2j..2j+1).  Odd sizes clamp the second row/column.
 // linearLight: average in linear light (sRGB decode, mean, encode).

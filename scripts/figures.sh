@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# The instructors' command: set up, build, and regenerate every book figure
+# into book_figures/ (PNG + sidecar JSON + the gallery README.md).
+# Extra arguments go to make_figures, e.g. --scale 2 or --backend egl.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+cmake --preset default >/dev/null
+cmake --build --preset default --target make_figures
+./build/bin/make_figures --out book_figures "$@"

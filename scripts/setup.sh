@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs what the suite needs from Debian's packages, and nothing when it is
+# all there already.  Run as root (CI does) or with sudo available.
+set -euo pipefail
+
+packages=(
+  g++ make cmake pkg-config git          # toolchain
+  libgl-dev libegl-dev                   # GL and EGL headers (no GL library is linked)
+  libosmesa6 libosmesa6-dev              # OSMesa, the default offscreen backend (dlopen'ed)
+  libegl1 libegl-mesa0 libgl1-mesa-dri   # EGL surfaceless backend and Mesa's llvmpipe/softpipe
+  libglfw3-dev libglm-dev libpng-dev libimgui-dev libstb-dev
+  googletest libgtest-dev libbenchmark-dev
+  xvfb xauth                             # window tests under a virtual X server
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "setup: installing ${missing[*]}" >&2
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then SUDO=sudo; else
+    echo "setup: need root to install: ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
