@@ -40,7 +40,9 @@ std::string gallery(const std::vector<Entry>& entries, const std::string& regene
     for (const auto& m : e.measurements) {
       char v[32];
       std::snprintf(v, sizeof v, "%.3f", m.value);
-      md += "| `" + m.name + "` | " + v + " | " + m.meaning + " |\n";
+      std::string meaning;
+      for (char c : m.meaning) meaning += c == '|' ? std::string("\\|") : std::string(1, c);
+      md += "| `" + m.name + "` | " + v + " | " + meaning + " |\n";
     }
     md += "\n";
   }

@@ -295,7 +295,7 @@ ts::Frame QuadDistortion::build(int width, int height) {
     const Variant vs[4] = {{Diagonal::TopLeftBottomRight, kAffine}, {Diagonal::BottomLeftTopRight, kAffine},
                            {Diagonal(diagonal_), kBilinear}, {Diagonal(diagonal_), kProjective}};
     int side = std::max(1, std::min(width / 4 - line, height - 5 * line));
-    int top = 2 * line;
+    int top = std::max(2 * line, (height - side) / 2);
     for (int k = 0; k < 4; ++k) {
       ts::Panel p;
       p.id = "variant_" + std::to_string(k);
@@ -305,7 +305,7 @@ ts::Frame QuadDistortion::build(int width, int height) {
       f.panels.push_back(p);
       std::string name = variantName(vs[k]);
       float cx = float((2 * k + 1) * width / 8);
-      f.labels.push_back({cx, float(line / 2), name, white, scale, ts::Align::Center});
+      f.labels.push_back({cx, float(top - line - line / 2), name, white, scale, ts::Align::Center});
       auto m = measured_.find(name);
       if (m != measured_.end())
         f.labels.push_back({cx, float(top + side + line / 2), "kink " + fmt("%.1f", m->second) + " deg",
@@ -405,7 +405,7 @@ ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
       if (c == ' ' || c == '-') c = '_';
     out.push_back({"kink_deg[" + key + "]", kink, "measured angle between checker lines across the diagonal"});
     out.push_back({"kink_predicted_deg[" + key + "]", predicted(v), "the same angle from the affine maps"});
-    out.push_back({"texel_error_max[" + key + "]", texelError, "largest |texel taken - analytic texel| (2048 texels)"});
+    out.push_back({"texel_error_max[" + key + "]", texelError, "largest distance (texels of 2048) between the texel taken and the analytic one"});
   }
   out.push_back({"split_disagreement_texels", quadmap::splitDisagreement(corners(), current.diagonal) * 256.0,
                  "how far apart the two triangles' maps put one point (256 texels)"});
