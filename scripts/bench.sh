@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The benchmark command: set up, build the two Google Benchmark programs in
+# build-bench/, and run them: every registered figure's offscreen stages
+# (context, measure, build, render, readback, PNG encode; OSMesa and EGL), then
+# its frames per second in a 1024x768 window under Xvfb.  Speed is measured,
+# not asserted: nothing here is a CTest test.
+#
+# Extra arguments go to both programs, e.g.
+#   scripts/bench.sh --benchmark_filter=vi1_quad_variants --benchmark_repetitions=9
+# Each program ends with markdown tables of the medians (for the README);
+# the full results are kept as JSON in build-bench/bench/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+build=build-bench
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DTM_BUILD_TESTS=ON -DTM_BUILD_BENCHMARKS=ON >/dev/null
+cmake --build "$build" -j2 --target bench_figures bench_window
+mkdir -p "$build/bench"
+echo "bench: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg) before the run" >&2
+"$build/bin/bench_figures" --benchmark_out="$build/bench/figures.json" --benchmark_out_format=json "$@"
+xvfb-run -a -s "-screen 0 1280x1024x24" \
+  "$build/bin/bench_window" --benchmark_out="$build/bench/window.json" --benchmark_out_format=json "$@"
