@@ -30,10 +30,21 @@ void checkWritable(const std::string& path) {
   std::remove(probe.c_str());
 }
 
+// Single-quotes an argument for a POSIX shell when it needs it.
+static std::string shellQuote(const std::string& a) {
+  if (!a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_=./,:+") ==
+                        std::string::npos)
+    return a;
+  std::string q = "'";
+  for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
 std::string figureCommand(const std::string& demo, const std::string& png, int w, int h,
                           const std::vector<std::string>& flags) {
-  std::string c = "build/bin/" + demo + " --png " + png + " --size " + std::to_string(w) + "x" + std::to_string(h);
-  for (const auto& f : flags) c += " " + f;
+  std::string c = "build/bin/" + demo + " --png " + shellQuote(png) + " --size " + std::to_string(w) + "x" +
+                  std::to_string(h);
+  for (const auto& f : flags) c += " " + shellQuote(f);
   return c;
 }
 }  // namespace ts

@@ -222,10 +222,13 @@ std::string Options::stateText() const {
 }
 
 std::vector<std::string> Options::stateFlags() const {
+  // "--name=value" throughout: unambiguous for bools too, and parse() takes
+  // it back.  Empty text (an unset file name) is left out.
   std::vector<std::string> out;
   for (const auto& it : items_) {
-    out.push_back("--" + it.name);
-    out.push_back(valueOf(it));
+    std::string v = valueOf(it);
+    if (it.kind == Item::Text && v.empty()) continue;
+    out.push_back("--" + it.name + "=" + v);
   }
   return out;
 }

@@ -37,7 +37,8 @@ class Options {
   std::string helpText() const;   // one line per option, keys included
   std::string keysText() const;   // "d: diagonal  e: edges ..."
   std::string stateText() const;  // "diagonal=tl-br edges=on ..."
-  // Flags that reproduce the current state: {"--diagonal", "tl-br", ...}.
+  // Flags that reproduce the current state: {"--diagonal=tl-br", ...};
+  // parse(stateFlags()) restores it.
   std::vector<std::string> stateFlags() const;
   // (name, value) pairs of the current state, for the sidecar.
   std::vector<std::pair<std::string, std::string>> state() const;

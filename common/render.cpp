@@ -116,10 +116,15 @@ static GLenum glPrim(Prim p) {
 }
 
 void Renderer::draw(const Frame& f, bool labels) {
-  if (f.width > ctx_.width() || f.height > ctx_.height())
-    throw Error("frame " + std::to_string(f.width) + "x" + std::to_string(f.height) + " is larger than the target",
-                kExitFailure);
-  ctx_.bindTarget();
+  if (overrideTarget_) {
+    glBindFramebuffer(GL_FRAMEBUFFER, overrideTarget_);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  } else {
+    if (f.width > ctx_.width() || f.height > ctx_.height())
+      throw Error("frame " + std::to_string(f.width) + "x" + std::to_string(f.height) + " is larger than the target",
+                  kExitFailure);
+    ctx_.bindTarget();
+  }
   glDisable(GL_SCISSOR_TEST);
   glViewport(0, 0, f.width, f.height);
   glClearColor(f.clearColor.r, f.clearColor.g, f.clearColor.b, f.clearColor.a);
@@ -256,6 +261,49 @@ void Renderer::drawLabels(const Frame& f) {
   glDisable(GL_TEXTURE_2D);
   glDisable(GL_BLEND);
   gl::check("drawing labels");
+}
+
+Image Renderer::renderOffscreen(const Frame& f) {
+  if (!gl::p_glGenFramebuffers) throw Error("measurement passes need framebuffer objects (GL 3.0)", kExitFailure);
+  GLint drawBuffer = 0, readBuffer = 0, boundFbo = 0;
+  glGetIntegerv(GL_DRAW_BUFFER, &drawBuffer);
+  glGetIntegerv(GL_READ_BUFFER, &readBuffer);
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &boundFbo);
+  GLuint fbo = 0, rb[2] = {0, 0};
+  glGenFramebuffers(1, &fbo);
+  glGenRenderbuffers(2, rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, f.width, f.height);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, f.width, f.height);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+  Image img(f.width, f.height);
+  std::string failure;
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    failure = "measurement framebuffer " + std::to_string(f.width) + "x" + std::to_string(f.height) + " is incomplete";
+  } else {
+    overrideTarget_ = fbo;
+    try {
+      draw(f, false);
+    } catch (const Error& e) {
+      failure = e.what();
+    }
+    overrideTarget_ = 0;
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, f.width, f.height, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
+    img.flipVertical();
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(boundFbo));
+  glDeleteFramebuffers(1, &fbo);
+  glDeleteRenderbuffers(2, rb);
+  glDrawBuffer(GLenum(drawBuffer));
+  glReadBuffer(GLenum(readBuffer));
+  if (!failure.empty()) throw Error(failure, kExitFailure);
+  gl::check("a measurement pass");
+  return img;
 }
 
 Image Renderer::render(const Frame& f, bool labels) {

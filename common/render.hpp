@@ -23,6 +23,10 @@ class Renderer {
   void draw(const Frame& frame, bool labels = true);
   // draw() and read back: the picture as the PNG will hold it.
   Image render(const Frame& frame, bool labels = true);
+  // Draws into a private framebuffer object of the frame's size and reads it
+  // back: measurement passes get the same pixels whatever the window's size,
+  // and leave the window's own target untouched.
+  Image renderOffscreen(const Frame& frame);
   Context& context() { return ctx_; }
   // The GL texture for a description (uploaded once per key, then cached;
   // filters and wrap modes are set on every bind).
@@ -37,5 +41,6 @@ class Renderer {
   std::map<std::string, GLuint> textures_;
   std::map<std::string, GLuint> programs_;
   GLuint fontTexture_ = 0;
+  GLuint overrideTarget_ = 0;  // set while renderOffscreen draws
 };
 }  // namespace ts

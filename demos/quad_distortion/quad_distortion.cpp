@@ -331,10 +331,7 @@ static glm::dvec2 segmentCentre(Diagonal d, int seg, int segments) {
 }
 
 double QuadDistortion::measureKink(ts::Renderer& r, Variant v, double* texelError) {
-  ts::Context& ctx = r.context();
-  if (ctx.backend() != ts::Backend::Window) ctx.resize(512, 512);
-  const int N = std::min({512, ctx.width(), ctx.height()});
-  if (N < 64) throw ts::Error("the measurement needs at least 64x64 pixels", ts::kExitFailure);
+  const int N = 512;  // the same at any figure or window size
   ts::Frame mf;
   mf.width = mf.height = N;
   // 2048 texels across 512 pixels: each pixel's texel is known to 1/4 pixel.
@@ -346,7 +343,7 @@ double QuadDistortion::measureKink(ts::Renderer& r, Variant v, double* texelErro
   p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
   addSquare(mf, p, v, tex, false);
   mf.panels.push_back(p);
-  ts::Image img = r.render(mf, false);
+  ts::Image img = r.renderOffscreen(mf);
 
   // Samples per diagonal segment and side: [segment][side][s or t].
   constexpr int kSegments = 8;

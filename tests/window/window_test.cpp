@@ -1,0 +1,609 @@
+// tests/window/window_test.cpp — the "real windows" tests.
+//
+// For every registered scene (so every demo program; new demos are covered
+// by linking their scene, see CMakeLists.txt) and under a fresh Xvfb:
+//   <id>.window_matches_png       the window opens, draws 3 frames, exits 0
+//                                 quickly, prints the initial state line, and
+//                                 its screenshot matches the --png render.
+//   <id>.key_<char>_<option>      for every key of every option (Item::key and
+//                                 Item::keyDown): --keys <char> changes the
+//                                 state the way Options::handleKey does on a
+//                                 fresh Options; the window's stdout state
+//                                 line says so; its screenshot matches the
+//                                 --png render of that state.
+//   <id>.state_flags_round_trip   parse(stateFlags()) reproduces the state,
+//                                 for the initial state and after each key
+//                                 (the flags a figure's sidecar command uses).
+//
+// Each window run is exactly what a student would type:
+//   xvfb-run -a -s "-screen 0 1600x1200x24" build/bin/<id> --size 800x480 --frames 3
+//            [--keys K] --screenshot W.png     (one line)
+//   build/bin/<id> --size 800x480 --png P.png [--name=value of what changed]
+// and the images, stdout/stderr and commands are kept in
+// <build>/tests/window/out/<id>/<test>/ (plus diff.png when they differ).
+//
+// Environment: TS_WINDOW_PNG_BACKEND=osmesa|egl (default: auto) picks the
+// --png backend; TS_WINDOW_SIZE=WxH overrides 800x480.
+// `window_test --compare A.png B.png [DIFF.png]` prints the statistics the
+// bounds below are about.
+//
+// No xvfb-run on PATH: the program prints why and exits 77, which CTest
+// reports as "Skipped" (SKIP_RETURN_CODE), never as passed.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "common/error.hpp"
+#include "common/image.hpp"
+#include "common/options.hpp"
+#include "common/scene.hpp"
+
+#ifndef TS_BIN_DIR
+#define TS_BIN_DIR "build/bin"
+#endif
+#ifndef TS_OUT_DIR
+#define TS_OUT_DIR "build/tests/window/out"
+#endif
+
+namespace {
+constexpr int kSkip = 77;  // CTest SKIP_RETURN_CODE
+const char* const kXvfbScreen = "-screen 0 1600x1200x24";
+constexpr int kFrames = 3;
+// The window and --png size: 800x480 unless TS_WINDOW_SIZE=WxH says otherwise.
+int gWidth = 800, gHeight = 480;
+
+// How long a window run may take.  Measured: 0.5-1.5 s (Xvfb start,
+// context, 3 frames, the measurement passes; 1.5-4.5 s for view=compare's
+// four measurements) on 2 busy shared llvmpipe cores.  Anything
+// over kSlowSeconds is a failure ("quickly"); at kKillSeconds the process
+// group (xvfb-run, Xvfb, the demo) is killed.
+constexpr double kSlowSeconds = 15.0, kKillSeconds = 45.0;
+
+// --- window vs --png tolerance ------------------------------------------
+// Measured on Debian 12 / Mesa 22.3.6 / llvmpipe, 800x480, every state this
+// test visits (default + each key), RGB only (the window's back buffer alpha
+// is not part of the picture; measured equal anyway):
+//  * GLX window vs OSMesa --png (the default: --backend auto picks OSMesa):
+//    bit-identical, 0 pixels differ, apart from the measured-kink label
+//    (quad_distortion measures at 480 px in an 800x480 window, 512 px
+//    offscreen: "18.5 deg" vs "18.4 deg", 20-45 pixels differing by 224, 6-13
+//    of them with no match within one pixel; see the report).
+//  * GLX window vs EGL --png (the fallback once Mesa drops OSMesa): EGL draws
+//    into an FBO, the window and OSMesa into y-inverted window-system
+//    buffers, so GL_NEAREST ties at texel boundaries land one pixel over:
+//    up to 1377 pixels (0.36%, filter=nearest) differ by up to 192, all
+//    within one pixel of a matching pixel except 4 at line crossings.
+//    Linear filtering differs by <= 2 in up to 85 pixels.
+// What a real disagreement costs, window (after a key) vs the --png of the
+// default state: the edges key 2188 px (0.57%), 2169 of them with no match
+// within one pixel; the filter key 13487 px; others 10-55% of the picture.
+// So two bounds, per --png backend:
+//  - "differ": the fraction of pixels whose largest channel difference is
+//    more than 2 (rounding of blends and linear filtering is not a
+//    disagreement);
+//  - "unexplained": pixels that differ by more than 2 from every pixel in the
+//    other image's 3x3 neighbourhood (both ways): a one-pixel shift of an
+//    edge is explained, a missing line, a different colour or texture is not.
+// OSMesa: measured 0 and 0 -> at most 0.01% (38 px) differ, none
+//   unexplained.  Catches a changed digit in a label too.
+// EGL: measured 0.36% and 4 -> at most 0.75% differ, at most 16
+//   unexplained (a digit of a label can slip through here; the measurement
+//   check below catches the numbers that labels show).
+constexpr int kSmallDiff = 2;
+struct Bounds {
+  double maxFraction;
+  long maxUnexplained;
+};
+constexpr Bounds kOsmesaBounds{0.0001, 0}, kEglBounds{0.0075, 16};
+// Measurements printed by the window and by --png (4 decimals) must agree
+// to the last digit or so: measured identical for OSMesa and EGL renders of
+// the same size.
+constexpr double kMeasurementAbs = 1e-3, kMeasurementRel = 1e-4;
+
+std::string binDir() {
+  const char* e = std::getenv("TS_WINDOW_BIN_DIR");
+  return e && *e ? e : TS_BIN_DIR;
+}
+std::string outDir() {
+  const char* e = std::getenv("TS_WINDOW_OUT_DIR");
+  return e && *e ? e : TS_OUT_DIR;
+}
+
+std::string findOnPath(const std::string& prog) {
+  const char* path = std::getenv("PATH");
+  std::stringstream ss(path ? path : "/usr/bin:/bin");
+  std::string dir;
+  while (std::getline(ss, dir, ':')) {
+    std::string p = (dir.empty() ? "." : dir) + "/" + prog;
+    if (access(p.c_str(), X_OK) == 0) return p;
+  }
+  return "";
+}
+
+void mkdirs(const std::string& path) {
+  std::string cur;
+  std::stringstream ss(path);
+  std::string part;
+  if (!path.empty() && path[0] == '/') cur = "/";
+  while (std::getline(ss, part, '/')) {
+    if (part.empty()) continue;
+    cur += part + "/";
+    mkdir(cur.c_str(), 0755);
+  }
+}
+
+std::string readFile(const std::string& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string quote(const std::string& a) {
+  if (!a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_=./+,:") ==
+                        std::string::npos)
+    return a;
+  std::string q = "'";
+  for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+std::string commandLine(const std::vector<std::string>& argv) {
+  std::string s;
+  for (const auto& a : argv) s += (s.empty() ? "" : " ") + quote(a);
+  return s;
+}
+
+// A child process in its own process group, stdout and stderr to files.
+struct Proc {
+  std::vector<std::string> argv;
+  std::string outPath, errPath;
+  pid_t pid = -1;
+  std::chrono::steady_clock::time_point start;
+  // Results.
+  int exitCode = -1;  // -1: killed by a signal or timed out
+  bool timedOut = false;
+  double seconds = 0;
+  std::string out, err;
+
+  void spawn() {
+    start = std::chrono::steady_clock::now();
+    pid = fork();
+    if (pid == 0) {
+      setpgid(0, 0);
+      int o = open(outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      int e = open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      int n = open("/dev/null", O_RDONLY);
+      if (o < 0 || e < 0 || n < 0) _exit(126);
+      dup2(n, 0);
+      dup2(o, 1);
+      dup2(e, 2);
+      std::vector<char*> args;
+      for (auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+      args.push_back(nullptr);
+      execvp(args[0], args.data());
+      std::fprintf(stderr, "cannot run %s\n", args[0]);
+      _exit(127);
+    }
+    if (pid > 0) setpgid(pid, pid);  // either side may win the race
+  }
+  // Returns true once the process has ended (or was killed for taking too long).
+  bool poll() {
+    if (done) return true;
+    if (pid <= 0) {
+      err = "fork failed";
+      return done = true;
+    }
+    // Wait without reaping, so that the process group id stays ours while
+    // what is left of the group (xvfb-run's Xvfb) is killed; then reap.
+    siginfo_t info{};
+    info.si_pid = 0;
+    waitid(P_PID, id_t(pid), &info, WEXITED | WNOHANG | WNOWAIT);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (info.si_pid != pid) {
+      if (seconds <= kKillSeconds) return false;
+      timedOut = true;
+    }
+    kill(-pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (!timedOut && WIFEXITED(status)) exitCode = WEXITSTATUS(status);
+    out = readFile(outPath);
+    err = readFile(errPath);
+    return done = true;
+  }
+  bool done = false;
+  std::string describe() const {
+    std::ostringstream o;
+    o << "$ " << commandLine(argv) << "\n  exit " << exitCode << (timedOut ? " (killed: timeout)" : "") << " after "
+      << seconds << " s\n  stderr: " << (err.empty() ? "(empty)" : err) << "\n";
+    return o.str();
+  }
+};
+
+struct Diff {
+  long pixels = 0;
+  long anyDiff = 0;    // pixels whose largest RGB channel difference is > 0
+  long overSmall = 0;  // ... is > kSmallDiff, at the same position
+  long unexplained = 0;  // ... > kSmallDiff from every pixel of the other image's 3x3 neighbourhood
+  int maxDiff = 0, maxAlphaDiff = 0;
+  int worstX = -1, worstY = -1, unexplainedX = -1, unexplainedY = -1;
+};
+int channelDiff(ts::Rgba p, ts::Rgba q) {
+  return std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)});
+}
+// Whether pixel (x, y) of `a` matches some pixel of `b` within one pixel.
+bool nearMatch(const ts::Image& a, const ts::Image& b, int x, int y) {
+  ts::Rgba p = a.at(x, y);
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      int u = x + dx, v = y + dy;
+      if (u >= 0 && v >= 0 && u < b.width && v < b.height && channelDiff(p, b.at(u, v)) <= kSmallDiff) return true;
+    }
+  return false;
+}
+// Compares RGB (the window's back buffer alpha is not part of the picture).
+// `picture`: the second image dimmed; yellow where pixels differ but a
+// neighbour matches (a one-pixel shift), red where nothing near matches.
+Diff compare(const ts::Image& a, const ts::Image& b, ts::Image* picture) {
+  Diff d;
+  d.pixels = long(a.width) * a.height;
+  *picture = ts::Image(a.width, a.height);
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      ts::Rgba p = a.at(x, y), q = b.at(x, y);
+      int m = channelDiff(p, q);
+      d.maxAlphaDiff = std::max(d.maxAlphaDiff, std::abs(p.a - q.a));
+      uint8_t g = uint8_t((q.r + q.g + q.b) / 12);
+      ts::Rgba show{g, g, g, 255};
+      if (m > 0) ++d.anyDiff;
+      if (m > kSmallDiff) {
+        ++d.overSmall;
+        show = {255, 220, 0, 255};
+        if (!nearMatch(a, b, x, y) || !nearMatch(b, a, x, y)) {
+          if (d.unexplained++ == 0) {
+            d.unexplainedX = x;
+            d.unexplainedY = y;
+          }
+          show = {255, 0, 0, 255};
+        }
+      }
+      if (m > d.maxDiff) {
+        d.maxDiff = m;
+        d.worstX = x;
+        d.worstY = y;
+      }
+      picture->set(x, y, show);
+    }
+  return d;
+}
+
+// Lines of the window's stdout that are state lines ("name=value ...").
+std::vector<std::string> stateLines(const std::string& out, const ts::Options& o) {
+  std::vector<std::string> r;
+  if (o.items().empty()) return r;
+  std::string head = o.items().front().name + "=";
+  std::stringstream ss(out);
+  std::string line;
+  while (std::getline(ss, line))
+    if (line.rfind(head, 0) == 0) r.push_back(line);
+  return r;
+}
+
+// The measurement lines "name value meaning" (formatMeasurements): in the
+// window's stdout the block after the last state line, in --png's stdout
+// everything after the title line.
+struct Number {
+  std::string name;
+  double value = 0;
+};
+std::vector<Number> measurements(const std::string& out, const ts::Options& o, bool window) {
+  std::vector<std::string> lines;
+  std::stringstream ss(out);
+  std::string line;
+  while (std::getline(ss, line)) lines.push_back(line);
+  size_t from = 1;  // --png: after the title
+  if (window && o.items().empty()) {
+    from = 3;  // title, keys, the (empty) state line
+  } else if (window) {
+    std::string head = o.items().front().name + "=";
+    from = lines.size();
+    for (size_t i = 0; i < lines.size(); ++i)
+      if (lines[i].rfind(head, 0) == 0) from = i + 1;
+  }
+  std::vector<Number> r;
+  for (size_t i = from; i < lines.size(); ++i) {
+    std::istringstream in(lines[i]);
+    Number n;
+    if (in >> n.name >> n.value) r.push_back(n);
+  }
+  return r;
+}
+std::string names(const std::vector<Number>& v) {
+  std::string s;
+  for (const auto& n : v) s += n.name + " ";
+  return s;
+}
+
+std::string keyLabel(char k) {
+  if (std::isalnum(static_cast<unsigned char>(k))) return std::string(1, k);
+  switch (k) {
+    case '+': return "plus";
+    case '-': return "minus";
+    case ' ': return "space";
+    case '[': return "lbracket";
+    case ']': return "rbracket";
+    case '<': return "less";
+    case '>': return "greater";
+    case ',': return "comma";
+    case '.': return "period";
+    case '=': return "equals";
+    default: {
+      char b[8];
+      std::snprintf(b, sizeof b, "x%02x", unsigned(static_cast<unsigned char>(k)));
+      return b;
+    }
+  }
+}
+
+// A fresh scene and its options (the state the program starts in).
+struct Fresh {
+  std::unique_ptr<ts::Scene> scene;
+  ts::Options opts;
+  explicit Fresh(const std::string& id) : scene(ts::makeScene(id)) {
+    if (scene) scene->addOptions(opts);
+  }
+};
+
+// "--name=value" for every option whose value differs from the default: the
+// flags that reproduce the state with --png.  (Built from state() rather
+// than stateFlags(): see state_flags_round_trip for why.)
+std::vector<std::string> flagsFor(const std::string& id, const ts::Options& o) {
+  Fresh d(id);
+  std::vector<std::string> r;
+  auto want = o.state(), def = d.opts.state();
+  for (size_t i = 0; i < want.size(); ++i)
+    if (i >= def.size() || want[i].second != def[i].second) r.push_back("--" + want[i].first + "=" + want[i].second);
+  return r;
+}
+
+// One window run and one --png run of the same state, compared.
+void windowVsPng(const std::string& id, const std::string& testName, const std::string& keys,
+                 const ts::Options& expected, const std::string& changed) {
+  std::string dir = outDir() + "/" + id + "/" + testName;
+  const char* backend = std::getenv("TS_WINDOW_PNG_BACKEND");  // osmesa | egl | auto (default)
+  mkdirs(dir);
+  std::string prog = binDir() + "/" + id;
+  ASSERT_EQ(access(prog.c_str(), X_OK), 0) << "no program " << prog << " for the registered scene '" << id << "'";
+  std::string W = dir + "/window.png", P = dir + "/png.png";
+  std::remove(W.c_str());
+  std::remove(P.c_str());
+  std::string size = std::to_string(gWidth) + "x" + std::to_string(gHeight);
+
+  Proc win, png;
+  win.argv = {"xvfb-run", "-a", "-s", kXvfbScreen, prog, "--size", size, "--frames", std::to_string(kFrames)};
+  if (!keys.empty()) win.argv.insert(win.argv.end(), {"--keys", keys});
+  win.argv.insert(win.argv.end(), {"--screenshot", W});
+  win.outPath = dir + "/window.stdout";
+  win.errPath = dir + "/window.stderr";
+  png.argv = {prog, "--size", size, "--png", P};
+  if (backend && *backend) png.argv.insert(png.argv.end(), {"--backend", backend});
+  for (const auto& f : flagsFor(id, expected)) png.argv.push_back(f);
+  png.outPath = dir + "/png.stdout";
+  png.errPath = dir + "/png.stderr";
+  // The two runs are independent: run them side by side.
+  win.spawn();
+  png.spawn();
+  while (!(win.poll() & png.poll())) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  std::ofstream(dir + "/commands.txt") << commandLine(win.argv) << "\n" << commandLine(png.argv) << "\n";
+
+  ASSERT_EQ(win.exitCode, 0) << win.describe();
+  EXPECT_LT(win.seconds, kSlowSeconds) << "the window run is slow\n" << win.describe();
+  ASSERT_EQ(png.exitCode, 0) << png.describe();
+
+  // The state lines: the window prints stateText() on its first frame and
+  // after every key that changed something.  The first key is taken on the
+  // first frame, before that print, so with --keys K there is one line, the
+  // state after K; without keys, one line, the initial state.
+  Fresh initial(id);
+  std::vector<std::string> lines = stateLines(win.out, expected);
+  if (!expected.items().empty()) {
+    ASSERT_FALSE(lines.empty()) << "the window printed no state line\n" << win.describe() << "stdout:\n" << win.out;
+    EXPECT_EQ(lines.back(), expected.stateText()) << "the last state line the window printed (--keys '" << keys
+                                                  << "')";
+    for (const auto& l : lines)
+      EXPECT_TRUE(l == initial.opts.stateText() || l == expected.stateText()) << "unexpected state line: " << l;
+    EXPECT_LE(lines.size(), keys.size() + 1) << "more state lines than changes";
+    if (!changed.empty()) {
+      EXPECT_NE((" " + lines.back() + " ").find(" " + changed + " "), std::string::npos)
+          << "the state line after --keys " << keys << " lacks '" << changed << "': " << lines.back();
+    }
+  }
+
+  ts::Image w, p;
+  try {
+    w = ts::readPng(W);
+  } catch (const std::exception& e) {
+    FAIL() << "no screenshot: " << e.what() << "\n" << win.describe();
+  }
+  try {
+    p = ts::readPng(P);
+  } catch (const std::exception& e) {
+    FAIL() << "no --png render: " << e.what() << "\n" << png.describe();
+  }
+  ASSERT_EQ(p.width, gWidth);
+  ASSERT_EQ(p.height, gHeight);
+  ASSERT_EQ(w.width, p.width) << "the window's framebuffer is not the requested size (a window manager?)";
+  ASSERT_EQ(w.height, p.height) << "the window's framebuffer is not the requested size (a window manager?)";
+  ts::Image picture;
+  Diff d = compare(w, p, &picture);
+  double frac = double(d.overSmall) / double(d.pixels);
+  std::printf("[ measured ] %s/%s: window %.2f s, png %.2f s; max channel diff %d at (%d,%d); %ld px differ at all, "
+              "%ld px (%.4f%%) by more than %d, %ld with no match within one pixel; max alpha diff %d\n",
+              id.c_str(), testName.c_str(), win.seconds, png.seconds, d.maxDiff, d.worstX, d.worstY, d.anyDiff,
+              d.overSmall, 100.0 * frac, kSmallDiff, d.unexplained, d.maxAlphaDiff);
+  if (d.anyDiff) ts::writePng(dir + "/diff.png", picture);
+  std::string where = "\n  window " + W + "\n  png    " + P + "\n  diff   " + dir +
+                      "/diff.png (yellow: differs, a neighbour matches; red: nothing within one pixel matches)";
+  // The bounds of the backend --png used ("<title> | osmesa | ..." on stdout).
+  bool egl = png.out.find(" | egl | ") != std::string::npos;
+  Bounds bounds = egl ? kEglBounds : kOsmesaBounds;
+  where += std::string("\n  bounds for --png backend ") + (egl ? "egl" : "osmesa");
+  EXPECT_LE(frac, bounds.maxFraction) << d.overSmall << " of " << d.pixels << " pixels differ by more than "
+                                      << kSmallDiff << where;
+  EXPECT_LE(d.unexplained, bounds.maxUnexplained)
+      << d.unexplained << " pixels differ by more than " << kSmallDiff
+      << " from every pixel within one pixel of them, first at (" << d.unexplainedX << "," << d.unexplainedY << ")"
+      << where;
+
+  // The numbers the figure exists to show: the same in the window (printed
+  // after its last state line) as in the --png render (after its title).
+  std::vector<Number> wm = measurements(win.out, expected, true), pm = measurements(png.out, expected, false);
+  EXPECT_EQ(names(wm), names(pm)) << "the window and --png print different measurements";
+  for (size_t i = 0; i < std::min(wm.size(), pm.size()); ++i) {
+    if (wm[i].name != pm[i].name) continue;
+    double tol = kMeasurementAbs + kMeasurementRel * std::abs(pm[i].value);
+    EXPECT_NEAR(wm[i].value, pm[i].value, tol)
+        << wm[i].name << ": the window measured " << wm[i].value << ", --png " << pm[i].value
+        << " (the window's target is " << gWidth << "x" << gHeight << ")";
+  }
+}
+
+// parse(stateFlags()) on a fresh Options must give back the state.
+void roundTrip(const std::string& id, const ts::Options& state, const std::string& what) {
+  Fresh f(id);
+  std::vector<std::string> flags = state.stateFlags();
+  try {
+    f.opts.parse(flags);
+  } catch (const ts::Error& e) {
+    ADD_FAILURE() << what << ": stateFlags() " << commandLine(flags) << " are rejected by parse(): " << e.what();
+    return;
+  }
+  EXPECT_EQ(f.opts.stateText(), state.stateText()) << what << ": stateFlags() " << commandLine(flags);
+}
+
+class Case : public testing::Test {
+ public:
+  explicit Case(std::function<void()> body) : body_(std::move(body)) {}
+  void TestBody() override { body_(); }
+
+ private:
+  std::function<void()> body_;
+};
+
+void registerCase(const std::string& suite, const std::string& name, std::function<void()> body) {
+  testing::RegisterTest(suite.c_str(), name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                        [body]() -> testing::Test* { return new Case(body); });
+}
+
+void registerAll() {
+  for (const auto& reg : ts::sceneRegistry()) {
+    const std::string id = reg.id;
+    registerCase(id, "window_matches_png", [id] {
+      Fresh f(id);
+      ASSERT_TRUE(f.scene);
+      windowVsPng(id, "window_matches_png", "", f.opts, "");
+    });
+    Fresh probe(id);
+    std::vector<std::pair<char, std::string>> keys;
+    for (const auto& it : probe.opts.items())
+      for (char k : {it.key, it.keyDown})
+        if (k) keys.push_back({k, it.name});
+    for (const auto& [k, name] : keys) {
+      std::string test = "key_" + keyLabel(k) + "_" + name;
+      char key = k;
+      std::string option = name;
+      registerCase(id, test, [id, test, key, option] {
+        // The window takes q and h itself (quit, overlay) before the demo's
+        // handler: an option bound to either could never be reached.
+        ASSERT_TRUE(key != 'q' && key != 'h')
+            << "option --" << option << " uses key '" << key << "', which the window reserves (q: quit, h: overlay)";
+        Fresh f(id);
+        auto before = f.opts.state();
+        ASSERT_TRUE(f.opts.handleKey(key)) << "handleKey('" << key << "') took no option";
+        // handleKey acts on the first option with the key: another option
+        // bound to the same key would be unreachable.
+        auto after = f.opts.state();
+        for (size_t i = 0; i < after.size(); ++i)
+          ASSERT_TRUE(after[i].first == option || after[i].second == before[i].second)
+              << "key '" << key << "' of --" << option << " changes --" << after[i].first
+              << " instead: two options share the key";
+        std::string changed;
+        for (const auto& [n, v] : f.opts.state())
+          if (n == option) changed = n + "=" + v;
+        windowVsPng(id, test, std::string(1, key), f.opts, changed);
+      });
+    }
+    registerCase(id, "state_flags_round_trip", [id, keys] {
+      Fresh f(id);
+      roundTrip(id, f.opts, "initial state");
+      for (const auto& kv : keys) {
+        Fresh g(id);
+        g.opts.handleKey(kv.first);
+        roundTrip(id, g.opts, std::string("after key '") + kv.first + "'");
+      }
+    });
+  }
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  // window_test --compare A.png B.png [DIFF.png]: the statistics the tests
+  // use, for measuring tolerances by hand.
+  if (argc >= 4 && std::string(argv[1]) == "--compare") {
+    try {
+      ts::Image a = ts::readPng(argv[2]), b = ts::readPng(argv[3]), picture;
+      if (a.width != b.width || a.height != b.height) {
+        std::printf("sizes differ: %dx%d vs %dx%d\n", a.width, a.height, b.width, b.height);
+        return 1;
+      }
+      Diff d = compare(a, b, &picture);
+      std::printf("max channel diff %d at (%d,%d); %ld px differ; %ld px (%.4f%%) by more than %d, %ld of them with "
+                  "no match within one pixel\n",
+                  d.maxDiff, d.worstX, d.worstY, d.anyDiff, d.overSmall,
+                  100.0 * double(d.overSmall) / double(d.pixels), kSmallDiff, d.unexplained);
+      if (argc >= 5) ts::writePng(argv[4], picture);
+      return 0;
+    } catch (const std::exception& e) {
+      std::printf("%s\n", e.what());
+      return 1;
+    }
+  }
+  if (findOnPath("xvfb-run").empty()) {
+    std::printf("SKIPPED: xvfb-run is not on PATH (Debian: apt-get install xvfb); the window tests need an X server "
+                "of their own. Exiting %d so CTest reports this test as skipped.\n",
+                kSkip);
+    return kSkip;
+  }
+  if (const char* sz = std::getenv("TS_WINDOW_SIZE"); sz && *sz) {
+    try {
+      ts::parseSize(sz, &gWidth, &gHeight);
+    } catch (const std::exception& e) {
+      std::printf("TS_WINDOW_SIZE: %s\n", e.what());
+      return 1;
+    }
+  }
+  if (ts::sceneRegistry().empty()) {
+    std::printf("no scene is registered: nothing links into this program\n");
+    return 1;
+  }
+  registerAll();
+  return RUN_ALL_TESTS();
+}
