@@ -1,5 +1,6 @@
 #include "mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ts {
@@ -58,6 +59,16 @@ Batch meshBatch(const Mesh& m, int texture, glm::vec4 color, std::string role) {
   b.texEnv = GL_MODULATE;
   for (unsigned k : m.triangles())
     b.vertices.push_back({glm::vec3(m.points[k].pos), glm::vec4(float(m.st[k].x), float(m.st[k].y), 0.0f, 1.0f), color});
+  return b;
+}
+Batch litMeshBatch(const Mesh& m, int texture, glm::dvec3 toLight, double ambient, double diffuse, std::string role) {
+  Batch b = meshBatch(m, texture, glm::vec4(1.0f), std::move(role));
+  glm::dvec3 l = glm::normalize(toLight);
+  std::vector<unsigned> tri = m.triangles();
+  for (size_t k = 0; k < tri.size(); ++k) {
+    float c = float(std::min(1.0, ambient + diffuse * std::max(0.0, glm::dot(m.points[tri[k]].normal, l))));
+    b.vertices[k].color = glm::vec4(c, c, c, 1.0f);
+  }
   return b;
 }
 }  // namespace ts

@@ -53,4 +53,10 @@ SurfacePoint torusPoint(double R, double r, int nu, int nv, int i, int j);
 
 // A mesh as a fixed-function batch of triangles (texture coordinates (s,t,0,1)).
 Batch meshBatch(const Mesh& m, int texture, glm::vec4 color = glm::vec4(1.0f), std::string role = "surface");
+// The same, shaded: each vertex colour is ambient + diffuse * max(0, n . l)
+// for a directional light `toLight` given in the mesh's own (model)
+// coordinates, combined with the texture by GL_MODULATE.  Computed on the CPU
+// so the sidecar holds the exact colours and no GL lighting state is needed.
+Batch litMeshBatch(const Mesh& m, int texture, glm::dvec3 toLight, double ambient = 0.35, double diffuse = 0.65,
+                   std::string role = "surface");
 }  // namespace ts

@@ -133,7 +133,7 @@ void Renderer::draw(const Frame& f, bool labels) {
   glDisable(GL_LIGHTING);
   glDisable(GL_CULL_FACE);
   glShadeModel(GL_SMOOTH);
-  glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);
+  glHint(GL_PERSPECTIVE_CORRECTION_HINT, f.perspectiveHint);
   for (const Panel& p : f.panels) {
     // The frame's rows count from the top; GL's from the bottom.
     int glY = f.height - p.viewport.y - p.viewport.h;

@@ -94,6 +94,7 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
        "top-left of the image; texture row 0 is t = 0; vertex tex is (s,t,r,q)\",\n";
   o << "  \"size\": [" << f.width << "," << f.height << "],\n";
   o << "  \"clear_color\": " << vec(f.clearColor) << ",\n";
+  o << "  \"perspective_correction_hint\": " << quote(f.perspectiveHint == GL_FASTEST ? "GL_FASTEST" : f.perspectiveHint == GL_NICEST ? "GL_NICEST" : "GL_DONT_CARE") << ",\n";
   o << "  \"textures\": [\n";
   for (size_t i = 0; i < f.textures.size(); ++i) {
     const TextureDesc& t = f.textures[i];
