@@ -1,5 +1,6 @@
 #include "figure.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -23,6 +24,8 @@ Rendered renderScene(Scene& scene, Renderer& r, int width, int height) {
 
 void checkWritable(const std::string& path) {
   if (path.empty()) throw Error("empty output path");
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) throw Error("cannot write " + path + ": it is a directory");
   std::string probe = path + ".tmp-" + std::to_string(::getpid());
   std::FILE* f = std::fopen(probe.c_str(), "wb");
   if (!f) throw Error("cannot write " + path + ": " + std::strerror(errno));

@@ -269,14 +269,17 @@ std::vector<std::string> parseCommonFlags(int argc, char** argv, CommonFlags* f)
       if (i + 1 >= argc) throw Error(name + " needs a value (see --help)");
       return argv[++i];
     };
-    if (name == "--help" || name == "-h") f->help = true;
+    auto noValue = [&] {
+      if (inl) throw Error(name + " takes no value");
+    };
+    if (name == "--help" || name == "-h") noValue(), f->help = true;
     else if (name == "--png") f->png = need();
     else if (name == "--json") f->json = need();
     else if (name == "--size") parseSize(need(), &f->width, &f->height);
     else if (name == "--backend") f->backend = need();
     else if (name == "--screenshot") f->screenshot = need();
     else if (name == "--keys") f->keys = need();
-    else if (name == "--quiet") f->quiet = true;
+    else if (name == "--quiet") noValue(), f->quiet = true;
     else if (name == "--frames") {
       std::string v = need();
       if (v.empty() || v.size() > 7 || v.find_first_not_of("0123456789") != std::string::npos || std::atoi(v.c_str()) < 1)

@@ -83,7 +83,10 @@ class QuadDistortion final : public ts::Scene {
     o.addEnum("filter", &filter_, {"nearest", "linear"}, "texture magnification filter", 'f');
     o.addInt("checks", &checks_, 2, 32, "checks along each side of the texture", '+', '-');
     o.addText("texture", &texturePath_, "a PNG file to map instead of the checkerboard",
-              [this](const std::string& v) { fileTexture_ = ts::fileTexture(v); });
+              [this](const std::string& v) {
+                if (v.empty()) throw ts::Error("--texture: the file name is empty");
+                fileTexture_ = ts::fileTexture(v);
+              });
     o.addText("corners", &cornersText_,
               "(s,t) at the square's corners (0,0) (1,0) (1,1) (0,1): \"s,t s,t s,t s,t\"",
               [](const std::string& v) { parseCorners(v); });
@@ -154,13 +157,18 @@ quadmap::Corners QuadDistortion::parseCorners(const std::string& text) {
   }
   std::string rest;
   if (in >> rest) throw ts::Error("--corners: '" + text + "' has more than four pairs");
-  // The projective fix needs a proper quadrilateral (no three corners in line).
+  // The projective fix needs a convex quadrilateral: only then is q of the
+  // homography positive over the whole square.  All four turns must have one
+  // sign (a zero turn is three corners in a line).
+  double turn[4];
   for (int i = 0; i < 4; ++i) {
-    glm::dvec2 a = c[size_t(i)], b = c[size_t((i + 1) % 4)], d = c[size_t((i + 3) % 4)];
-    glm::dvec2 u = b - a, w = d - a;
-    if (std::abs(u.x * w.y - u.y * w.x) < 1e-9)
-      throw ts::Error("--corners: '" + text + "' has three corners in a line");
+    glm::dvec2 u = c[size_t((i + 1) % 4)] - c[size_t(i)], w = c[size_t((i + 2) % 4)] - c[size_t((i + 1) % 4)];
+    turn[i] = u.x * w.y - u.y * w.x;
+    if (std::abs(turn[i]) < 1e-9) throw ts::Error("--corners: '" + text + "' has three corners in a line");
   }
+  for (int i = 1; i < 4; ++i)
+    if ((turn[i] > 0) != (turn[0] > 0))
+      throw ts::Error("--corners: '" + text + "' is not a convex quadrilateral");
   return c;
 }
 
