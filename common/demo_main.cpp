@@ -43,6 +43,7 @@ static int renderPng(Scene& scene, Options& opts, const CommonFlags& f, Backend 
   co.width = w;
   co.height = h;
   co.verbose = true;
+  co.accumBuffer = scene.wantsAccumBuffer();
   auto ctx = createOffscreenContext(b, co);
   Renderer r(*ctx);
   Rendered out = renderScene(scene, r, w, h);

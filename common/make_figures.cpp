@@ -99,6 +99,7 @@ int run(int argc, char** argv) {
 
   ts::ContextOptions co;
   co.verbose = true;
+  for (const auto& reg : ts::sceneRegistry()) co.accumBuffer |= reg.make()->wantsAccumBuffer();
   auto ctx = ts::createOffscreenContext(b, co);
   ts::Renderer r(*ctx);
   std::printf("rendering %zu figures into %s/ with %s\n", todo.size(), out.c_str(), ctx->describe().c_str());

@@ -48,6 +48,10 @@ class Scene {
   // passes with `r` into the current target (the caller redraws after).
   virtual Measurements measure(Renderer& r) = 0;
   virtual std::vector<FigureSpec> figures() const { return {}; }
+  // An accumulation buffer (the Red Book's jitter method).  OSMesa and GLX
+  // windows give one when asked; EGL contexts have none, so a scene must
+  // check Context::hasAccumBuffer() and fall back (e.g. averaging in an FBO).
+  virtual bool wantsAccumBuffer() const { return false; }
   // Window only: called each frame with the elapsed seconds (animations).
   virtual void update(double /*seconds*/) {}
 };

@@ -21,7 +21,13 @@ void* glfwProc(const char* name) { return reinterpret_cast<void*>(glfwGetProcAdd
 
 class WindowContext final : public Context {
  public:
-  explicit WindowContext(GLFWwindow* w) : win_(w) { sync(); }
+  explicit WindowContext(GLFWwindow* w) : win_(w) {
+    sync();
+    GLint bits = 0;
+    glGetIntegerv(GL_ACCUM_RED_BITS, &bits);
+    accum_ = bits > 0;
+  }
+  bool hasAccumBuffer() const override { return accum_; }
   Backend backend() const override { return Backend::Window; }
   void resize(int, int) override { sync(); }  // the window manager decides
   void bindTarget() override {
@@ -33,6 +39,7 @@ class WindowContext final : public Context {
 
  private:
   GLFWwindow* win_;
+  bool accum_ = false;
 };
 
 struct Input {
@@ -115,6 +122,12 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
   glfwWindowHint(GLFW_DOUBLEBUFFER, GLFW_TRUE);
   glfwWindowHint(GLFW_DEPTH_BITS, 24);
+  if (scene.wantsAccumBuffer()) {
+    glfwWindowHint(GLFW_ACCUM_RED_BITS, 16);
+    glfwWindowHint(GLFW_ACCUM_GREEN_BITS, 16);
+    glfwWindowHint(GLFW_ACCUM_BLUE_BITS, 16);
+    glfwWindowHint(GLFW_ACCUM_ALPHA_BITS, 16);
+  }
   GLFWwindow* win = glfwCreateWindow(width, height, scene.title().c_str(), nullptr, nullptr);
   if (!win) {
     glfwTerminate();
