@@ -119,6 +119,7 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
     const Panel& p = f.panels[pi];
     o << "    {\"id\": " << quote(p.id) << ", \"viewport\": [" << p.viewport.x << "," << p.viewport.y << ","
       << p.viewport.w << "," << p.viewport.h << "], \"depth_test\": " << (p.depthTest ? "true" : "false")
+      << ", \"clear\": " << (p.clear ? "true" : "false") << ", \"clear_color\": " << vec(p.clearColor)
       << ",\n     \"projection\": " << mat(p.projection) << ",\n     \"modelview\": " << mat(p.modelview)
       << ",\n     \"batches\": [\n";
     for (size_t bi = 0; bi < p.batches.size(); ++bi) {

@@ -149,7 +149,11 @@ for f in vi1_quad_distortion.png vi1_quad_distortion.json vi1_quad_variants.png 
   if [ ! -s "$T/figs.first/$f" ]; then fail "make_figures did not write $f"; continue; fi
   if cmp -s "$T/figs.first/$f" "$T/figs/$f"; then pass; else fail "make_figures: $f differs between two runs"; fi
 done
-if [ "$(ls "$T/figs" | wc -l)" -eq 5 ]; then pass; else fail "make_figures wrote unexpected files: $(ls "$T/figs")"; fi
+# Every figure has its PNG and sidecar, and no temporary file is left behind.
+if ls "$T/figs" | grep -q '\.tmp-'; then fail "make_figures left temporary files: $(ls "$T/figs")"; else pass; fi
+for png in "$T/figs"/*.png; do
+  if [ -s "${png%.png}.json" ]; then pass; else fail "make_figures: $(basename "$png") has no sidecar"; fi
+done
 # Into another folder: the same pictures (the PNGs hold no path).
 run figs3 "$FIGS" --backend "$BACKEND" --out "$T/figs.other" --only vi1_quad_variants
 if [ "$rc" -ne 0 ]; then fail "make_figures --only vi1_quad_variants: exit status $rc"; else pass; fi

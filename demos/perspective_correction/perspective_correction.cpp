@@ -1,0 +1,359 @@
+// Figure VI.2 — a checkerboard plane seen at a slant, without and with
+// hyperbolic (perspective-correct) interpolation of (s, t).
+//
+// The claim (Buss, VI.1.1 and V.5): interpolating texture coordinates
+// linearly in screen space does not shorten distant squares correctly;
+// hyperbolic interpolation does.  It matters most for large polygons seen at
+// a slant — roughly when d2 - d1 (farthest minus nearest distance from the
+// eye to the polygon) is comparable to d1 or larger.
+//
+// The book turns it on with glHint(GL_PERSPECTIVE_CORRECTION_HINT,
+// GL_NICEST).  The demo sets the hint as the book does, and checks whether
+// the driver honours it: it renders the plane through GL's projection once
+// with GL_FASTEST and once with GL_NICEST and compares.  Mesa (llvmpipe,
+// softpipe) ignores it and always interpolates hyperbolically, so the
+// "without" image is made another way, the same on every driver: the
+// vertices are projected on the CPU and sent as (x/w, y/w, z/w, 1) with an
+// identity projection.  GL's hyperbolic interpolation divides by w = 1 at
+// every vertex, which is exactly linear interpolation in screen space.  The
+// square is one quad — two triangles — as in the book: subdividing it would
+// hide the error the figure is about.
+//
+// Keys (each is also a flag, see --help):
+//   v  view: both (the book's figure) | affine | perspective | plot (the sweep)
+//   t / T  tilt up / down (0 = facing the eye)   d / D  distance up / down
+//   f  filter: nearest | linear | mipmap         e  the two triangles' edges
+//
+// Measured: the square is drawn once more with a texture whose texels hold
+// their own indices (texelIndexTexture), so each pixel says which texel it
+// took; compared with the perspective-correct (s, t) of the ray through the
+// pixel this gives the affine image's largest error in texels, at the
+// current state and over a sweep of tilts, against the book's (d2 - d1)/d1.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "common/error.hpp"
+#include "common/gl.hpp"
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "common/text.hpp"
+#include "common/textures.hpp"
+#include "perspective_map.hpp"
+#include "plot.hpp"
+
+namespace {
+enum View { kBoth, kAffine, kPerspective, kPlot };
+enum Variant { kAffineVariant, kPerspectiveVariant };
+
+// Measurement passes: a square N x N render (aspect 1, so the sweep's numbers
+// do not depend on the window) of a 2048-texel index texture: one texel of it
+// is 1/8 texel of the 256-texel checkerboard, so each pixel's (s, t) is known
+// to well under the errors measured.
+constexpr int kMeasureSize = 256, kIndexTexels = 2048;
+// The sweep: tilts 0, 10, ... 80 degrees at the current distance (85 would
+// be nearly edge-on and the square a sliver a few pixels high).
+constexpr int kSweepStepDeg = 10, kSweepMaxDeg = 80;
+
+std::string fmt(const char* f, double v) {
+  char b[96];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+class PerspectiveCorrection final : public ts::Scene {
+ public:
+  std::string id() const override { return "perspective_correction"; }
+  std::string title() const override { return "Figure VI.2 - hyperbolic (perspective-correct) interpolation"; }
+  std::string about() const override {
+    return "A checkerboard square seen at a slant, drawn as two triangles with (s,t) interpolated linearly in screen\n"
+           "space (left) and hyperbolically (right).  Tests whether the driver honours GL_PERSPECTIVE_CORRECTION_HINT,\n"
+           "measures the affine image's largest (s,t) error in texels from a texel-index render, and sweeps the tilt\n"
+           "to set that error against the book's rule of thumb (d2 - d1)/d1.";
+  }
+  int defaultWidth() const override { return 1024; }
+  int defaultHeight() const override { return 400; }
+
+  void addOptions(ts::Options& o) override {
+    o.addEnum("view", &view_, {"both", "affine", "perspective", "plot"},
+              "both: the book's figure; one variant large; plot: error vs (d2-d1)/d1 over tilts", 'v');
+    o.addFloat("tilt", &tilt_, 0.0f, 85.0f, "degrees the square is tilted back (0 = facing the eye)", 't', 'T', 5.0f);
+    o.addFloat("distance", &distance_, 1.25f, 32.0f,
+               "eye to the square's centre, in half-sides (the square's side is 2)", 'd', 'D', 0.25f);
+    o.addEnum("filter", &filter_, {"nearest", "linear", "mipmap"},
+              "checkerboard filter (mipmap = trilinear over the book's 2x2 mip chain)", 'f');
+    o.addBool("edges", &edges_, "draw the two triangles' edges (the affine error kinks along the diagonal)", 'e');
+  }
+
+  std::vector<ts::FigureSpec> figures() const override {
+    return {
+        {"vi2_perspective_correction", "Figure VI.2",
+         "A checkerboard square tilted 60 degrees, its centre 1.5 half-sides from the eye ((d2 - d1)/d1 = 2.24), as "
+         "two triangles: without hyperbolic interpolation (left: (s,t) linear in screen space, the far squares are "
+         "not shortened) and with it (right). The note says whether the driver honours "
+         "GL_PERSPECTIVE_CORRECTION_HINT and how the left image was made.",
+         {"--view", "both", "--tilt", "60", "--distance", "1.5", "--filter", "mipmap"}, 1024, 380},
+        {"vi2_error_vs_depth_ratio", "Figure VI.2 (measured)",
+         "The screen-linear image's largest (s,t) error, measured from texel-index renders (crosses), against the "
+         "book's (d2 - d1)/d1 over tilts 0..80 degrees at distance 1.5; the line is the analytic error. Facing the "
+         "eye (tilt 0) the error is zero although (d2 - d1)/d1 = 0.37: what the interpolation feels is how much the "
+         "depth w varies over the polygon, which the distances only approximate.",
+         {"--view", "plot", "--tilt", "60", "--distance", "1.5"}, 1024, 560},
+    };
+  }
+
+  ts::Frame build(int width, int height) override;
+  ts::Measurements measure(ts::Renderer& r) override;
+
+ private:
+  persp::Setup setup() const { return {double(tilt_), double(distance_)}; }
+  void addSquare(ts::Panel& p, const persp::Setup& s, Variant v, int texture, bool edges) const;
+  ts::TextureDesc checker() const;
+  // The texel-index render of one variant at kMeasureSize, and the largest
+  // error of the texels it took against the perspective-correct (s, t).
+  struct Pass {
+    double maxErrorTexels = 0;     // |(s,t) taken - correct|, texels of 256
+    double predictedTexels = 0;    // the analytic error at the same pixels
+    int maxIndexError = 0;         // largest index difference, texels of 2048
+  };
+  Pass measurePass(ts::Renderer& r, const persp::Setup& s, Variant v, GLenum hint, ts::Image* out = nullptr) const;
+  plot::Data plotData();
+  std::vector<plot::Point> curve_;
+  double curveDistance_ = -1;
+
+  int view_ = kBoth, filter_ = 2;
+  float tilt_ = 60.0f, distance_ = 1.5f;
+  bool edges_ = false;
+
+  // The last measurement, for the labels and the plot (valid when its
+  // setup is the current one).
+  struct Measured {
+    bool valid = false;
+    persp::Setup setup;
+    Pass affine, perspective;
+    long hintDiffering = 0;
+    double hintFastestError = 0;
+    std::string driver;
+    std::vector<plot::Point> sweep;
+  } last_;
+};
+
+ts::TextureDesc PerspectiveCorrection::checker() const {
+  ts::TextureDesc t = ts::checkerboard(persp::kTexels, persp::kChecks);
+  t.magFilter = filter_ == 0 ? GL_NEAREST : GL_LINEAR;
+  t.minFilter = filter_ == 0 ? GL_NEAREST : filter_ == 1 ? GL_LINEAR : GL_LINEAR_MIPMAP_LINEAR;
+  t.mipmaps = filter_ == 2;
+  return t;
+}
+
+void PerspectiveCorrection::addSquare(ts::Panel& p, const persp::Setup& s, Variant v, int texture, bool edges) const {
+  double aspect = double(p.viewport.w) / p.viewport.h;
+  persp::View view = persp::makeView(s, aspect);
+  // Perspective: model coordinates through GL's projection (w = depth).
+  // Affine: the same vertices projected here, sent with w = 1.
+  auto position = [&](glm::dvec2 uv) {
+    return v == kPerspectiveVariant ? glm::vec3(glm::vec2(uv), 0.0f) : glm::vec3(persp::ndc(view, uv));
+  };
+  if (v == kPerspectiveVariant) {
+    p.projection = glm::mat4(view.proj);
+    p.modelview = glm::mat4(view.mv);
+  }
+  ts::Batch b;
+  b.role = v == kPerspectiveVariant ? "surface_hyperbolic" : "surface_screen_linear";
+  b.texture = texture;
+  for (size_t k : {0, 1, 2, 0, 2, 3}) {
+    glm::dvec2 uv = persp::corners()[k];
+    b.vertices.push_back({position(uv), glm::vec4(glm::vec2(persp::texCoord(uv)), 0, 1), glm::vec4(1.0f)});
+  }
+  p.batches.push_back(b);
+  if (edges) {
+    ts::Batch e;
+    e.role = "triangle_edges";
+    e.prim = ts::Prim::Lines;
+    e.lineWidth = 2.0f;
+    for (auto [a, c] : {std::pair{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}})
+      for (int k : {a, c})
+        e.vertices.push_back({position(persp::corners()[size_t(k)]), {0, 0, 0, 1}, {1.0f, 0.55f, 0.0f, 1.0f}});
+    p.batches.push_back(e);
+  }
+}
+
+ts::Frame PerspectiveCorrection::build(int width, int height) {
+  ts::Frame f;
+  f.width = width;
+  f.height = height;
+  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  // The book's call.  The right (and single perspective) image is drawn
+  // under GL_NICEST; the affine-only view asks for GL_FASTEST, which Mesa
+  // ignores — and which cannot matter to it anyway, since w = 1 everywhere.
+  f.perspectiveHint = view_ == kAffine ? GL_FASTEST : GL_NICEST;
+  const int scale = std::max(1, std::min(2, std::min(width / 480, height / 160)));
+  const int line = int(ts::text::height(1)) + 6;  // notes are always 13 px
+  const glm::vec4 white{0.95f, 0.95f, 0.95f, 1.0f}, grey{0.75f, 0.75f, 0.78f, 1.0f}, amber{1.0f, 0.75f, 0.3f, 1.0f};
+  const persp::Setup s = setup();
+  const persp::Distances d = persp::distances(s);
+  const bool have = last_.valid && last_.setup.tiltDeg == s.tiltDeg && last_.setup.distance == s.distance;
+
+  if (view_ == kPlot) {
+    plot::draw(f, plotData(), {0, 0, width, height});
+    return f;
+  }
+  int tex = f.addTexture(checker());
+  const int titleH = int(ts::text::height(scale)) + 8 * scale, notes = 3;
+  const std::string how[2] = {"CPU-projected vertices, w = 1: screen-linear", "glHint(..., GL_NICEST): hyperbolic"};
+  const char* titles[2] = {"Without hyperbolic interpolation", "With hyperbolic interpolation"};
+  const Variant shown[2] = {view_ == kPerspective ? kPerspectiveVariant : kAffineVariant, kPerspectiveVariant};
+  const int n = view_ == kBoth ? 2 : 1, gap = 16;
+  // Panels as tall as the projected square needs (its framing adds the
+  // margin); titles, panels and notes centred vertically as one block.
+  const int extra = titleH + (1 + notes) * line + 12;
+  const int pw = std::max(1, (width - (n + 1) * gap) / n), avail = std::max(1, height - extra);
+  const int ph = std::max(1, std::min(avail, int(std::lround(pw / persp::boundsAspect(s)))));
+  const int py = (height - ph - extra) / 2 + titleH;
+  for (int k = 0; k < n; ++k) {
+    ts::Panel p;
+    p.id = shown[k] == kAffineVariant ? "affine" : "perspective";
+    p.viewport = {gap + k * (pw + gap), py, pw, ph};
+    addSquare(p, s, shown[k], tex, edges_);
+    f.panels.push_back(p);
+    float cx = float(p.viewport.x + pw / 2);
+    f.labels.push_back({cx, float(py - titleH), titles[shown[k]], white, scale, ts::Align::Center});
+    f.labels.push_back({cx, float(py + ph + 4), how[shown[k]], grey, 1, ts::Align::Center});
+  }
+  // The notes: the hint test, and the measured error against the rule of thumb.
+  float y = float(py + ph + line + 10);
+  if (have) {
+    std::string hint = last_.hintDiffering == 0
+        ? last_.driver + " ignores GL_PERSPECTIVE_CORRECTION_HINT: its GL_FASTEST and GL_NICEST renders are identical"
+        : last_.driver + " honours GL_PERSPECTIVE_CORRECTION_HINT: GL_FASTEST changes " +
+          std::to_string(last_.hintDiffering) + " px (error up to " + fmt("%.1f", last_.hintFastestError) + " texels)";
+    f.labels.push_back({float(width / 2), y, hint, amber, 1, ts::Align::Center});
+    f.labels.push_back({float(width / 2), y + float(line),
+                        "Screen-linear image: largest (s,t) error " + fmt("%.1f", last_.affine.maxErrorTexels) +
+                            " texels of 256 (" + fmt("%.2f", last_.affine.maxErrorTexels / (persp::kTexels / persp::kChecks)) +
+                            " checks), measured from a texel-index render",
+                        white, 1, ts::Align::Center});
+  }
+  f.labels.push_back({float(width / 2), y + float(2 * line),
+                      "tilt " + fmt("%g", s.tiltDeg) + " deg, distance " + fmt("%g", s.distance) + ": d1 = " +
+                          fmt("%.2f", d.d1) + ", d2 = " + fmt("%.2f", d.d2) + ", (d2 - d1)/d1 = " + fmt("%.2f", d.ratio()) +
+                          " (book: it matters from about 1)",
+                      grey, 1, ts::Align::Center});
+  return f;
+}
+
+PerspectiveCorrection::Pass PerspectiveCorrection::measurePass(ts::Renderer& r, const persp::Setup& s, Variant v,
+                                                               GLenum hint, ts::Image* out) const {
+  const int N = kMeasureSize;
+  const double T = kIndexTexels;
+  ts::Frame mf;
+  mf.width = mf.height = N;
+  mf.clearColor = glm::vec4(0.0f);  // alpha 0 marks pixels the square does not cover
+  mf.perspectiveHint = hint;
+  ts::TextureDesc t = ts::texelIndexTexture(kIndexTexels);
+  // Clamp, not repeat: a pixel centre just outside the square reads the edge
+  // texel instead of wrapping to the far side of the texture.
+  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
+  int tex = mf.addTexture(t);
+  ts::Panel p;
+  p.id = "texel_index";
+  p.viewport = {0, 0, N, N};
+  addSquare(p, s, v, tex, false);
+  mf.panels.push_back(p);
+  ts::Image img = r.renderOffscreen(mf);
+  persp::View view = persp::makeView(s, 1.0);
+  Pass pass;
+  for (int y = 0; y < N; ++y)
+    for (int x = 0; x < N; ++x) {
+      ts::Rgba c = img.at(x, y);
+      if (c.a == 0) continue;
+      glm::dvec2 xy(2 * (x + 0.5) / N - 1, 1 - 2 * (y + 0.5) / N);
+      glm::dvec2 want = glm::clamp(persp::perspectiveST(view, xy), 0.0, 1.0);
+      int i = 0, j = 0;
+      ts::decodeTexelIndex(c, &i, &j);
+      glm::dvec2 took((i + 0.5) / T, (j + 0.5) / T);
+      pass.maxErrorTexels = std::max(pass.maxErrorTexels, glm::length(took - want) * persp::kTexels);
+      int wi = std::min(int(T) - 1, int(want.x * T)), wj = std::min(int(T) - 1, int(want.y * T));
+      pass.maxIndexError = std::max({pass.maxIndexError, std::abs(i - wi), std::abs(j - wj)});
+      if (v == kAffineVariant)
+        pass.predictedTexels = std::max(pass.predictedTexels, persp::affineErrorTexels(view, xy));
+    }
+  if (out) *out = std::move(img);
+  return pass;
+}
+
+ts::Measurements PerspectiveCorrection::measure(ts::Renderer& r) {
+  const persp::Setup s = setup();
+  const persp::Distances d = persp::distances(s);
+  Measured m;
+  m.setup = s;
+  m.affine = measurePass(r, s, kAffineVariant, GL_FASTEST);
+  // The hint test: GL's own projection under both hints, pixel by pixel.
+  ts::Image nicest, fastest;
+  m.perspective = measurePass(r, s, kPerspectiveVariant, GL_NICEST, &nicest);
+  Pass fast = measurePass(r, s, kPerspectiveVariant, GL_FASTEST, &fastest);
+  for (size_t k = 0; k < nicest.pixels.size(); k += 4)
+    m.hintDiffering += std::memcmp(&nicest.pixels[k], &fastest.pixels[k], 4) != 0;
+  m.hintFastestError = fast.maxErrorTexels;
+  std::string renderer = ts::gl::rendererString();
+  m.driver = renderer.substr(0, renderer.find(' '));
+  ts::Measurements out{
+      {"d1", d.d1, "nearest distance from the eye to the square"},
+      {"d2", d.d2, "farthest distance from the eye to the square"},
+      {"d_ratio", d.ratio(), "(d2 - d1)/d1, the book's rule of thumb"},
+      {"depth_ratio", d.depthRatio(), "(w2 - w1)/w1 over the corners' depths"},
+      {"affine_error_texels", m.affine.maxErrorTexels, "largest |(s,t) - correct| of the screen-linear image, texels of 256"},
+      {"affine_error_predicted", m.affine.predictedTexels, "the same from the analytic maps at the same pixels"},
+      {"perspective_error_index", double(m.perspective.maxIndexError), "hyperbolic image: largest texel-index error (of 2048)"},
+      {"hint_pixels_differing", double(m.hintDiffering), "GL_FASTEST vs GL_NICEST render of the GL-projected square"},
+      {"hint_honoured", m.hintDiffering > 0 ? 1.0 : 0.0, "1 if the driver changes anything for GL_FASTEST"},
+      {"hint_fastest_error_texels", m.hintFastestError, "largest (s,t) error of the GL_FASTEST render, texels of 256"},
+  };
+  // The sweep: the rule of thumb measured.
+  for (int tilt = 0; tilt <= kSweepMaxDeg; tilt += kSweepStepDeg) {
+    persp::Setup st{double(tilt), s.distance};
+    Pass p = measurePass(r, st, kAffineVariant, GL_FASTEST);
+    double ratio = persp::distances(st).ratio();
+    m.sweep.push_back({ratio, p.maxErrorTexels, double(tilt)});
+    std::string key = "sweep_t" + fmt("%02.0f", tilt);
+    out.push_back({key + "_d_ratio", ratio, "(d2 - d1)/d1 at tilt " + std::to_string(tilt)});
+    out.push_back({key + "_error_texels", p.maxErrorTexels, "measured largest error of the screen-linear image"});
+    out.push_back({key + "_predicted", p.predictedTexels, "analytic largest error at the same pixels"});
+  }
+  m.valid = true;
+  last_ = m;
+  return out;
+}
+
+plot::Data PerspectiveCorrection::plotData() {
+  const persp::Setup s = setup();
+  plot::Data data;
+  data.title = "Largest (s,t) error of the screen-linear image vs (d2 - d1)/d1: tilts 0.." +
+               std::to_string(kSweepMaxDeg) + " deg at distance " + fmt("%g", s.distance);
+  data.xLabel = "(d2 - d1)/d1   (d1, d2: nearest and farthest distance from the eye to the square)";
+  data.yLabel = "error, texels of 256 (one check = 32)";
+  data.tagFormat = "t=%g";
+  // The analytic curve, densely (2.5 degree steps), at the measurement's
+  // size; kept while the distance stays (build() runs every window frame).
+  if (curveDistance_ != s.distance) {
+    curve_.clear();
+    for (double tilt = 0; tilt <= kSweepMaxDeg + 1e-9; tilt += 2.5) {
+      persp::Setup st{tilt, s.distance};
+      curve_.push_back({persp::distances(st).ratio(), persp::maxAffineErrorTexels(st, kMeasureSize), tilt});
+    }
+    curveDistance_ = s.distance;
+  }
+  data.curve = curve_;
+  if (!curve_.empty() && curve_.front().x >= 0.05)  // the rule of thumb's blind spot, when it shows
+    data.notes.push_back({curve_.front(), "<- tilt 0: facing the eye, all depths equal, no error although (d2 - d1)/d1 = " +
+                                              fmt("%.2f", curve_.front().x)});
+  if (last_.valid && last_.setup.distance == s.distance) data.measured = last_.sweep;
+  data.current = {persp::distances(s).ratio(), persp::maxAffineErrorTexels(s, kMeasureSize), s.tiltDeg};
+  if (last_.valid && last_.setup.tiltDeg == s.tiltDeg && last_.setup.distance == s.distance)
+    data.current.y = last_.affine.maxErrorTexels;
+  return data;
+}
+}  // namespace
+
+TM_REGISTER_SCENE(PerspectiveCorrection);

@@ -1,0 +1,130 @@
+// demos/perspective_correction/plot.hpp — a small x-y plot as Frame data:
+// one panel whose projection is the data's own coordinates, axes, grid and
+// series as line batches, tick and axis labels as ts::Label.  Candidate for
+// common/ once a second figure plots a measurement.
+#pragma once
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "common/frame.hpp"
+#include "common/text.hpp"
+
+namespace plot {
+struct Point {
+  double x = 0, y = 0;
+  double tag = 0;  // shown beside measured points (here: the tilt)
+};
+struct Data {
+  std::string title, xLabel, yLabel, tagFormat = "%g";
+  std::vector<Point> curve;     // analytic, drawn as a line
+  std::vector<Point> measured;  // drawn as crosses, each with its tag
+  Point current;                // the current state, a ring
+  double xMarker = 1.0;         // a dashed vertical line (the rule of thumb)
+  std::string xMarkerLabel = "d2 - d1 = d1";
+  struct Note {
+    Point at;
+    std::string text;
+  };
+  std::vector<Note> notes;  // text beside a data point
+};
+
+// 1, 2 or 5 times a power of ten, about range/6.
+inline double niceStep(double range) {
+  double raw = range / 6, p = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 5.0})
+    if (raw <= m * p) return m * p;
+  return 10 * p;
+}
+inline std::string num(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+// Lays the plot out in `area` (frame pixels) and appends its panel and labels.
+inline void draw(ts::Frame& f, const Data& d, ts::Rect area) {
+  const glm::vec4 axis{0.85f, 0.85f, 0.85f, 1.0f}, grid{0.32f, 0.32f, 0.36f, 1.0f}, curveC{0.35f, 0.7f, 1.0f, 1.0f},
+      measuredC{1.0f, 0.75f, 0.3f, 1.0f}, currentC{1.0f, 0.3f, 0.3f, 1.0f}, white{0.95f, 0.95f, 0.95f, 1.0f},
+      background{0.17f, 0.17f, 0.2f, 1.0f};
+  const int line = int(ts::text::height(1)) + 6;
+  double xmax = std::max(1.2, d.current.x), ymax = std::max(1.0, d.current.y);
+  for (const auto* s : {&d.curve, &d.measured})
+    for (const Point& p : *s) xmax = std::max(xmax, p.x), ymax = std::max(ymax, p.y);
+  const double xs = niceStep(xmax * 1.05), ys = niceStep(ymax * 1.1);
+  xmax = xs * std::ceil(xmax * 1.05 / xs), ymax = ys * std::ceil(ymax * 1.1 / ys);
+
+  ts::Panel p;
+  p.id = "plot";
+  p.viewport = {area.x + 70, area.y + 3 * line, std::max(1, area.w - 100), std::max(1, area.h - 6 * line)};
+  p.projection = glm::ortho(0.0f, float(xmax), 0.0f, float(ymax), -1.0f, 1.0f);
+  const ts::Rect& vp = p.viewport;
+  auto px = [&](double x, double y) {
+    return glm::vec2(float(vp.x + x / xmax * vp.w), float(vp.y + (1 - y / ymax) * vp.h));
+  };
+  // Data units per pixel, for marks of a fixed size in pixels.
+  const double ux = xmax / vp.w, uy = ymax / vp.h;
+
+  // The plot's background as two triangles rather than Panel::clear, which
+  // the sidecar JSON does not record (so the reference could not redraw it).
+  ts::Batch bg;
+  bg.role = "background";
+  for (auto [x, y] : {std::pair{0.0, 0.0}, {xmax, 0.0}, {xmax, ymax}, {0.0, 0.0}, {xmax, ymax}, {0.0, ymax}})
+    bg.vertices.push_back({{float(x), float(y), 0.0f}, {0, 0, 0, 1}, background});
+  p.batches.push_back(bg);
+  std::vector<glm::vec2> g;
+  for (double x = xs; x < xmax - 1e-9; x += xs) g.insert(g.end(), {{float(x), 0.0f}, {float(x), float(ymax)}});
+  for (double y = ys; y < ymax - 1e-9; y += ys) g.insert(g.end(), {{0.0f, float(y)}, {float(xmax), float(y)}});
+  p.batches.push_back(ts::lineSegments(g, grid, 1.0f, "grid"));
+  // The rule of thumb, dashed every 8 px.
+  std::vector<glm::vec2> dash;
+  for (double y = 0; y < ymax; y += 16 * uy)
+    dash.insert(dash.end(), {{float(d.xMarker), float(y)}, {float(d.xMarker), float(std::min(ymax, y + 8 * uy))}});
+  p.batches.push_back(ts::lineSegments(dash, axis, 1.0f, "rule_of_thumb"));
+  std::vector<glm::vec2> c;
+  for (const Point& q : d.curve) c.push_back({float(q.x), float(q.y)});
+  ts::Batch cb = ts::lineSegments(c, curveC, 2.0f, "analytic");
+  cb.prim = ts::Prim::LineStrip;
+  p.batches.push_back(cb);
+  std::vector<glm::vec2> m;
+  for (const Point& q : d.measured) {
+    const float a = float(5 * ux), b = float(5 * uy), x = float(q.x), y = float(q.y);
+    m.insert(m.end(), {{x - a, y - b}, {x + a, y + b}, {x - a, y + b}, {x + a, y - b}});
+  }
+  if (!m.empty()) p.batches.push_back(ts::lineSegments(m, measuredC, 2.0f, "measured"));
+  std::vector<glm::vec2> ring;
+  for (int k = 0; k < 16; ++k) {
+    double a = 2 * 3.14159265358979 * k / 16;
+    ring.push_back({float(d.current.x + 8 * ux * std::cos(a)), float(d.current.y + 8 * uy * std::sin(a))});
+  }
+  p.batches.push_back(ts::lineLoop(ring, currentC, 2.0f, "current"));
+  p.batches.push_back(ts::lineLoop({{0, 0}, {float(xmax), 0}, {float(xmax), float(ymax)}, {0, float(ymax)}}, axis,
+                                   1.0f, "axes"));
+  f.panels.push_back(p);
+
+  // Labels: title, axis names, ticks, tags, legend.
+  f.labels.push_back({float(area.x + area.w / 2), float(area.y + 6), d.title, white, 1, ts::Align::Center});
+  f.labels.push_back({float(vp.x), float(vp.y - line - 4), d.yLabel, axis, 1, ts::Align::Left});
+  f.labels.push_back({float(vp.x + vp.w / 2), float(vp.y + vp.h + line + 6), d.xLabel, axis, 1, ts::Align::Center});
+  for (double x = 0; x <= xmax + 1e-9; x += xs)
+    f.labels.push_back({px(x, 0).x, float(vp.y + vp.h + 5), num("%g", x), axis, 1, ts::Align::Center});
+  for (double y = 0; y <= ymax + 1e-9; y += ys)
+    f.labels.push_back({float(vp.x - 6), px(0, y).y - 6, num("%g", y), axis, 1, ts::Align::Right});
+  for (const Point& q : d.measured)
+    f.labels.push_back({px(q.x, q.y).x + 8, px(q.x, q.y).y + 4, num(d.tagFormat.c_str(), q.tag), measuredC, 1,
+                        ts::Align::Left});
+  for (const auto& n : d.notes)
+    f.labels.push_back({px(n.at.x, n.at.y).x + 40, px(n.at.x, n.at.y).y - 20, n.text, axis, 1, ts::Align::Left,
+                        background});  // boxed: it crosses the dashed line
+  f.labels.push_back({px(d.xMarker, ymax).x + 6, float(vp.y + 6), d.xMarkerLabel, axis, 1, ts::Align::Left});
+  const float lx = float(vp.x + vp.w - 12), ly = float(vp.y + vp.h - 4 * line);
+  f.labels.push_back({lx, ly, "x  measured (texel-index render), tagged by tilt", measuredC, 1, ts::Align::Right});
+  f.labels.push_back({lx, ly + line, "-  analytic (ray-plane vs screen barycentrics)", curveC, 1, ts::Align::Right});
+  f.labels.push_back({lx, ly + 2 * line, "o  current state (" + num(d.tagFormat.c_str(), d.current.tag) + ")", currentC,
+                      1, ts::Align::Right});
+}
+}  // namespace plot
