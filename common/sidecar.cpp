@@ -129,7 +129,8 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
         << ", \"program\": " << quote(b.program) << ", \"uniforms\": {";
       for (size_t u = 0; u < b.uniforms.size(); ++u)
         o << (u ? ", " : "") << quote(b.uniforms[u].name) << ": " << vec(b.uniforms[u].value);
-      o << "}, \"line_width\": " << num(b.lineWidth) << ", \"blend\": " << (b.blend ? "true" : "false")
+      o << "}, \"line_width\": " << num(b.lineWidth) << ", \"point_size\": " << num(b.pointSize)
+        << ", \"blend\": " << (b.blend ? "true" : "false")
         << ",\n        \"vertices\": [";
       for (size_t v = 0; v < b.vertices.size(); ++v) {
         const Vertex& x = b.vertices[v];

@@ -1,0 +1,381 @@
+// Figure VI.5 — two ways to put a checkerboard on a sphere.
+//
+// The claim (Buss, VI.1.2): the sphere p(θ, φ) = (r sin θ cos φ, r sin φ,
+// r cos θ cos φ) takes s = θ/360 and either t = φ/180 + 1/2 (Eq. VI.2, left)
+// or t = (sin φ + 1)/2 (Eq. VI.3, right: the sphere projected out onto a
+// cylinder and the cylinder unrolled).  VI.3 preserves area, VI.2 does not:
+// its checks shrink toward the poles.  Both pinch at the poles, where the
+// whole top (bottom) edge of the texture meets in one point.
+//
+// Keys (each is also a flag, see --help):
+//   m  mapping: both side by side | VI.2 | VI.3
+//   v  view: the spheres | the plot of area ratio against latitude
+//   r / R  turn the spheres about their axis (15° steps)
+//   t / T  tilt toward / away from the viewer (10° steps)
+//   + / -  mesh resolution: cells per 20° band (cells of 20/N degrees)
+//
+// Measured, per 20° band of latitude and per mapping: texture area / surface
+// area, normalised to a whole-sphere mean of 1 — analytic (sphere_map.hpp),
+// exact from the mesh's triangles, and from a render that shows which texel
+// every pixel took; plus the pinch (how much of the texture's width meets
+// within 3 px of a pole) and the texture the pole triangles draw nowhere.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "common/text.hpp"
+#include "common/textures.hpp"
+#include "sphere_map.hpp"
+
+namespace {
+using spheremap::Mapping;
+using spheremap::kBands;
+
+enum Shown { kBoth, kVI2, kVI3 };
+const char* const kKey[] = {"vi2", "vi3"};  // measurement names
+const char* const kEq[] = {"Eq. VI.2", "Eq. VI.3"};
+const char* const kFormula[] = {"s = theta/360,  t = phi/180 + 1/2", "s = theta/360,  t = (sin phi + 1)/2"};
+const glm::vec4 kColour[] = {{1.0f, 0.55f, 0.1f, 1.0f}, {0.35f, 0.7f, 1.0f, 1.0f}};
+const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kGrey{0.4f, 0.4f, 0.45f, 1.0f};
+
+// The measurement pass: 9 panels (one per band) of kPanel pixels, whatever
+// the window's size, each showing one band's region (sphere_map.hpp's
+// regionBox).  2048 texels around the sphere: a texel is smaller than the
+// region's pixels except right at the poles, so a texel index pins every
+// pixel's (s, t) — and so its band, column and mesh cell — to < 1 pixel.
+constexpr int kPanel = 384, kTexels = 2048;
+constexpr double kPinchRadiusPx = 3.0;
+
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+std::string bandName(int b) {
+  return "[" + fmt("%.0f", spheremap::bandLo(b)) + ":" + fmt("%.0f", spheremap::bandHi(b)) + "]";
+}
+
+class SphereProjections final : public ts::Scene {
+ public:
+  std::string id() const override { return "sphere_projections"; }
+  std::string title() const override { return "Figure VI.5 - two sphere projections"; }
+  std::string about() const override {
+    return "A checkerboard on a sphere with s = theta/360 and t = phi/180 + 1/2 (Eq. VI.2) or t = (sin phi + 1)/2\n"
+           "(Eq. VI.3, the cylinder projection unrolled). Prints texture area / surface area per 20 deg band of\n"
+           "latitude (whole-sphere mean 1): analytic, from the mesh, and measured from a texel-index render.\n"
+           "VI.3 is 1 in every band (area-preserving); VI.2 grows like 1/cos(phi) toward the poles. Both pinch.";
+  }
+  void addOptions(ts::Options& o) override {
+    o.addEnum("mapping", &shown_, {"both", "vi2", "vi3"}, "both spheres, or Eq. VI.2 or Eq. VI.3 alone", 'm');
+    o.addEnum("view", &view_, {"spheres", "plot"}, "the spheres, or area ratio against latitude", 'v');
+    o.addInt("rotation", &rotation_, -180, 180, "turn about the sphere's axis, degrees", 'r', 'R', 15);
+    o.addInt("tilt", &tilt_, -90, 90, "tilt of the north pole toward the viewer, degrees", 't', 'T', 10);
+    o.addInt("resolution", &resolution_, 1, 16,
+             "mesh cells per 20 deg band (stacks 9N, slices 18N; the book-like default 4 = 5 deg cells)", '+', '-');
+  }
+  std::vector<ts::FigureSpec> figures() const override {
+    return {
+        {"vi5_sphere_projections", "Figure VI.5",
+         "A checkerboard on two spheres, drawn with a tilt and a small rotation. Left: t = phi/180 + 1/2 "
+         "(Eq. VI.2), the checks shrink toward the poles. Right: t = (sin phi + 1)/2 (Eq. VI.3), the cylinder "
+         "projection: every check has the same area. Both pinch at the poles.",
+         {"--view", "spheres", "--mapping", "both"}, 1024, 512},
+        {"vi5_area_ratio", "Figure VI.5 (measured)",
+         "Texture area / surface area by 20 deg band of latitude, measured from texel-index renders (bars and "
+         "dots) against the analytic ratio (lines): 2/(pi cos phi) for Eq. VI.2, 1 for Eq. VI.3 (whole-sphere "
+         "mean 1).",
+         {"--view", "plot", "--mapping", "both"}, 1024, 512},
+    };
+  }
+  ts::Frame build(int width, int height) override;
+  ts::Measurements measure(ts::Renderer& r) override;
+
+ private:
+  struct Result {
+    std::array<double, kBands> analytic{}, mesh{}, render{};
+    double spread = 0, pinchLost = 0, poleSpan = 0, frontSpan = 0;
+  };
+  std::vector<Mapping> mappings() const {
+    if (shown_ == kVI2) return {Mapping::Latitude};
+    if (shown_ == kVI3) return {Mapping::Cylinder};
+    return {Mapping::Latitude, Mapping::Cylinder};
+  }
+  Result measureMapping(ts::Renderer& r, Mapping m) const;
+  void addSphere(ts::Frame& f, const ts::Rect& vp, Mapping m, int texture, int scale, int line) const;
+  void addPlot(ts::Frame& f, int width, int height, int scale, int line) const;
+
+  int shown_ = kBoth, view_ = 0, rotation_ = 20, tilt_ = 20, resolution_ = 4;
+  std::map<std::pair<int, int>, Result> measured_;  // (mapping, resolution) -> numbers
+};
+
+// ---------------------------------------------------------------------------
+// The picture.
+
+void SphereProjections::addSphere(ts::Frame& f, const ts::Rect& vp, Mapping m, int texture, int scale,
+                                  int line) const {
+  ts::Panel p;
+  p.id = std::string("sphere_") + kKey[int(m)];
+  p.viewport = vp;
+  p.depthTest = true;
+  // A narrow perspective (30°, eye 4.6 radii away): the sphere fills ~83% of
+  // the panel and looks round, not fish-eyed.
+  p.projection = glm::perspective(float(spheremap::rad(30.0)), float(vp.w) / float(vp.h), 1.0f, 10.0f);
+  glm::mat4 turn = glm::rotate(glm::rotate(glm::mat4(1.0f), float(spheremap::rad(tilt_)), {1, 0, 0}),
+                               float(spheremap::rad(rotation_)), {0, 1, 0});
+  p.modelview = glm::translate(glm::mat4(1.0f), {0, 0, -4.6f}) * turn;
+  // Light from the upper left, in front, fixed to the viewer: into model
+  // coordinates with the inverse (transpose) of the rotation.
+  glm::dvec3 toLight = glm::transpose(glm::dmat3(glm::mat3(turn))) * glm::dvec3(-0.45, 0.55, 0.7);
+  p.batches.push_back(ts::litMeshBatch(spheremap::sphereMesh(m, resolution_), texture, toLight));
+  f.panels.push_back(p);
+
+  float cx = float(vp.x + vp.w / 2);
+  f.labels.push_back({cx, float(vp.y - 2 * line), kEq[int(m)], kColour[int(m)], scale, ts::Align::Center});
+  f.labels.push_back({cx, float(vp.y - line), kFormula[int(m)], kWhite, scale, ts::Align::Center});
+  auto it = measured_.find({int(m), resolution_});
+  if (it != measured_.end()) {
+    const Result& res = it->second;
+    f.labels.push_back({cx, float(vp.y + vp.h + line / 3),
+                        "texture/surface area: equator band " + fmt("%.2f", res.render[kBands / 2]) + ", pole bands " +
+                            fmt("%.2f", res.render[kBands - 1]),
+                        kWhite, scale, ts::Align::Center});
+  }
+}
+
+void SphereProjections::addPlot(ts::Frame& f, int width, int height, int scale, int line) const {
+  // Plot area: latitude -90..90 across, ratio 0..kTop up.  The VI.2 curve
+  // leaves the top near the poles (it is 1/cos φ); the viewport clips it.
+  const double kTop = 4.5;
+  int left = 6 * line, right = 2 * line, top = 4 * line, bottom = 3 * line;
+  ts::Panel p;
+  p.id = "plot";
+  p.viewport = {left, top, std::max(1, width - left - right), std::max(1, height - top - bottom)};
+  p.projection = glm::ortho(-90.0f, 90.0f, 0.0f, float(kTop), -1.0f, 1.0f);
+  std::vector<glm::vec2> grid;
+  for (int y = 0; y <= int(kTop); ++y) grid.insert(grid.end(), {{-90.0f, float(y)}, {90.0f, float(y)}});
+  for (int b = 0; b <= kBands; ++b) {
+    float x = float(spheremap::bandLo(0) + spheremap::kBandDeg * b);
+    grid.insert(grid.end(), {{x, 0.0f}, {x, float(kTop)}});
+  }
+  p.batches.push_back(ts::lineSegments(grid, kGrey, 1.0f, "grid"));
+  int row = 0;
+  for (Mapping m : mappings()) {
+    const glm::vec4 c = kColour[int(m)];
+    // Analytic ratio, every degree (±89.5°: 2/(π cos φ) = 73, far off the top).
+    std::vector<glm::vec2> curve;
+    for (double phi = -89.5; phi <= 89.5; phi += 1.0)
+      curve.push_back({float(phi), float(spheremap::ratioAt(m, phi))});
+    ts::Batch a = ts::lineLoop(curve, c, 1.0f, std::string("analytic_") + kKey[int(m)]);
+    a.prim = ts::Prim::LineStrip;
+    p.batches.push_back(a);
+    auto it = measured_.find({int(m), resolution_});
+    std::string legend = std::string(kEq[int(m)]) + "  " + kFormula[int(m)] + ":  analytic (line)";
+    if (it != measured_.end()) {
+      const Result& res = it->second;
+      // Bars across each band and a 7-px square at its centre.  The squares
+      // are two triangles each, not GL points: the sidecar does not record
+      // a point size, and the oracle must be able to redraw the figure.
+      std::vector<glm::vec2> bars;
+      ts::Batch dots;
+      dots.role = std::string("measured_points_") + kKey[int(m)];
+      const float hx = 3.5f * 180.0f / float(p.viewport.w), hy = 3.5f * float(kTop) / float(p.viewport.h);
+      for (int b = 0; b < kBands; ++b) {
+        float x = float(spheremap::bandMid(b)), y = float(res.render[size_t(b)]);
+        bars.insert(bars.end(), {{float(spheremap::bandLo(b)) + 1.0f, y}, {float(spheremap::bandHi(b)) - 1.0f, y}});
+        for (glm::vec2 d : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, -1), glm::vec2(1, 1),
+                            glm::vec2(-1, 1)})
+          dots.vertices.push_back({{x + d.x * hx, y + d.y * hy, 0.0f}, {0, 0, 0, 1}, c});
+      }
+      p.batches.push_back(ts::lineSegments(bars, c, 3.0f, std::string("measured_") + kKey[int(m)]));
+      p.batches.push_back(dots);
+      legend += ", measured (bars): max/min " + fmt("%.2f", res.spread);
+    }
+    f.labels.push_back({float(left), float(line / 2 + row * line), legend, c, scale, ts::Align::Left});
+    ++row;
+  }
+  f.panels.push_back(p);
+  // Axes' numbers, in frame pixels.
+  const ts::Rect& vp = f.panels.back().viewport;
+  for (int y = 0; y <= int(kTop); ++y)
+    f.labels.push_back({float(vp.x - line / 2), float(vp.y + vp.h - y * vp.h / kTop - line / 2.0), fmt("%.0f", y),
+                        kWhite, scale, ts::Align::Right});
+  for (int b = 0; b <= kBands; ++b)
+    f.labels.push_back({float(vp.x + b * vp.w / kBands), float(vp.y + vp.h + line / 3),
+                        fmt("%.0f", spheremap::bandLo(0) + spheremap::kBandDeg * b), kWhite, scale, ts::Align::Center});
+  f.labels.push_back({float(vp.x + vp.w / 2), float(vp.y + vp.h + line + line / 2), "latitude phi (degrees)", kWhite,
+                      scale, ts::Align::Center});
+  f.labels.push_back({float(vp.x), float(vp.y - line - line / 4), "texture area / surface area (whole sphere = 1)",
+                      kWhite, scale, ts::Align::Left});
+}
+
+ts::Frame SphereProjections::build(int width, int height) {
+  ts::Frame f;
+  f.width = width;
+  f.height = height;
+  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  int scale = std::max(1, std::min(3, std::min(width, height) / 300));
+  int line = int(ts::text::height(scale)) + 6 * scale;
+  if (view_ == 1) {
+    addPlot(f, width, height, scale, line);
+    return f;
+  }
+  // 16 x 16 checks: 22.5° of θ per check around, 11.25° of φ (VI.2) per
+  // check up, so the checks' shapes show both maps.  Mipmapped: VI.2 squeezes
+  // a whole texture row into a point at the poles.  t does not wrap.
+  ts::TextureDesc checker = ts::checkerboard(512, 16);
+  checker.mipmaps = true;
+  checker.minFilter = GL_LINEAR_MIPMAP_LINEAR;
+  checker.wrapT = GL_CLAMP_TO_EDGE;
+  int tex = f.addTexture(checker);
+  std::vector<Mapping> ms = mappings();
+  int n = int(ms.size());
+  int side = std::max(1, std::min(width / n - 2 * line, height - 4 * line));
+  int top = std::max(2 * line, (height - side) / 2);
+  for (int k = 0; k < n; ++k)
+    addSphere(f, {(2 * k + 1) * width / (2 * n) - side / 2, top, side, side}, ms[size_t(k)], tex, scale, line);
+  return f;
+}
+
+// ---------------------------------------------------------------------------
+// The measurement.  For each band, a panel looks at the band's centre
+// face-on (ortho, the sphere turned by rotateX(band centre)); the sphere is
+// drawn with a texture whose texels hold their own indices (GL_NEAREST), so
+// every pixel says which texel it took.  A region of the texture — the
+// band's rows, and the columns with |θ| <= spheremap::thetaHalfWidth — has a
+// known area; the surface it landed on is the sum, over the pixels that took
+// one of its texels, of the pixel's area / |n·v| (n the normal of the mesh
+// cell the texel belongs to).  No derivatives: a pixel right at a pole, where
+// every s meets, counts like any other.
+
+SphereProjections::Result SphereProjections::measureMapping(ts::Renderer& r, Mapping m) const {
+  Result res;
+  const ts::Mesh mesh = spheremap::sphereMesh(m, resolution_);
+  const spheremap::MeshRatios mr = spheremap::meshRatios(mesh);
+  const int stacks = mesh.nv, slices = mesh.nu;
+
+  ts::Frame f;
+  f.width = 3 * kPanel;
+  f.height = 3 * kPanel;
+  f.clearColor = {1.0f, 1.0f, 1.0f, 0.0f};  // alpha 0: no texel
+  ts::TextureDesc index = ts::texelIndexTexture(kTexels);
+  index.wrapT = GL_CLAMP_TO_EDGE;  // t = 1 at the pole vertex is the last row, not the first
+  int tex = f.addTexture(index);
+  ts::Batch surface = ts::meshBatch(mesh, tex);
+  surface.texEnv = GL_REPLACE;
+  for (int b = 0; b < kBands; ++b) {
+    ts::Panel p;
+    p.id = "band_" + std::to_string(b);
+    p.viewport = {(b % 3) * kPanel, (b / 3) * kPanel, kPanel, kPanel};
+    glm::vec4 box(spheremap::regionBox(b));
+    p.projection = glm::ortho(box.x, box.y, box.z, box.w, -2.0f, 2.0f);
+    p.modelview = glm::rotate(glm::mat4(1.0f), float(spheremap::rad(spheremap::bandMid(b))), {1, 0, 0});
+    p.depthTest = true;
+    p.batches.push_back(surface);
+    f.panels.push_back(p);
+  }
+  ts::Image img = r.renderOffscreen(f);
+
+  // Which texel rows and columns make up each band's region, and its area.
+  std::vector<int> rowBand(kTexels);
+  for (int j = 0; j < kTexels; ++j)
+    rowBand[size_t(j)] =
+        std::clamp(int((spheremap::phiFromT(m, (j + 0.5) / kTexels) + 90.0) / spheremap::kBandDeg), 0, kBands - 1);
+  auto thetaOf = [](int i) {  // texel column centre, degrees in (-180, 180]
+    double th = 360.0 * (i + 0.5) / kTexels;
+    return th > 180.0 ? th - 360.0 : th;
+  };
+  // Mesh cell normals (the cells are planar trapezoids): cross of the diagonals.
+  std::vector<glm::dvec3> normal(size_t(slices) * size_t(stacks));
+  for (int j = 0; j < stacks; ++j)
+    for (int i = 0; i < slices; ++i) {
+      const auto& P = mesh.points;
+      glm::dvec3 d1 = P[size_t(mesh.at(i + 1, j + 1))].pos - P[size_t(mesh.at(i, j))].pos;
+      glm::dvec3 d2 = P[size_t(mesh.at(i, j + 1))].pos - P[size_t(mesh.at(i + 1, j))].pos;
+      normal[size_t(j) * size_t(slices) + size_t(i)] = glm::normalize(glm::cross(d1, d2));
+    }
+  const double norm = mr.totalArea / mr.totalTexArea;  // the mesh's whole-sphere mean -> 1
+  double lo = 1e300, hi = 0;
+  for (int b = 0; b < kBands; ++b) {
+    const double halfWidth = spheremap::thetaHalfWidth(b), e = spheremap::rad(spheremap::bandMid(b));
+    const glm::dvec3 view(0.0, std::sin(e), std::cos(e));  // toward the camera, model coordinates
+    long rows = 0, cols = 0;
+    for (int j = 0; j < kTexels; ++j) rows += rowBand[size_t(j)] == b;
+    for (int i = 0; i < kTexels; ++i) cols += std::abs(thetaOf(i)) <= halfWidth;
+    const double texArea = double(rows) * double(cols) / (double(kTexels) * kTexels);
+    const glm::dvec4 box = spheremap::regionBox(b);
+    const double pixelArea = (box.y - box.x) / kPanel * (box.w - box.z) / kPanel;  // model units
+    double surfArea = 0;
+    const ts::Rect& vp = f.panels[size_t(b)].viewport;
+    for (int y = vp.y; y < vp.y + vp.h; ++y)
+      for (int x = vp.x; x < vp.x + vp.w; ++x) {
+        ts::Rgba c = img.at(x, y);
+        int i = 0, j = 0;
+        ts::decodeTexelIndex(c, &i, &j);
+        if (c.a != 255 || i >= kTexels || j >= kTexels) continue;
+        if (rowBand[size_t(j)] != b || std::abs(thetaOf(i)) > halfWidth) continue;
+        double phi = spheremap::phiFromT(m, (j + 0.5) / kTexels);
+        int ci = std::min(slices - 1, i * slices / kTexels);
+        int cj = std::clamp(int((phi + 90.0) / 180.0 * stacks), 0, stacks - 1);
+        surfArea += pixelArea / std::abs(glm::dot(normal[size_t(cj) * size_t(slices) + size_t(ci)], view));
+      }
+    res.analytic[size_t(b)] = spheremap::bandRatio(m, spheremap::bandLo(b), spheremap::bandHi(b));
+    res.mesh[size_t(b)] = mr.ratio[size_t(b)];
+    res.render[size_t(b)] = surfArea > 0 ? texArea / surfArea * norm : 0.0;
+    lo = std::min(lo, res.render[size_t(b)]);
+    hi = std::max(hi, res.render[size_t(b)]);
+  }
+  res.spread = lo > 0 ? hi / lo : 0.0;
+  res.pinchLost = mr.pinchLost / mr.totalTexArea;
+
+  // The pinch: the s values of the pixels within 3 px of a point, as a
+  // fraction of the circle — both poles (band panels 8 and 0) and the front
+  // (θ = 0, φ = 0, the centre of the equator's panel).
+  auto span = [&](int b, glm::vec3 point) {
+    const ts::Panel& p = f.panels[size_t(b)];
+    glm::vec2 c = ts::panelToPixels(p, p.projection * p.modelview * glm::vec4(point, 1.0f));
+    std::vector<double> s;
+    for (int y = int(c.y) - 4; y <= int(c.y) + 4; ++y)
+      for (int x = int(c.x) - 4; x <= int(c.x) + 4; ++x) {
+        if (std::hypot(x + 0.5 - c.x, y + 0.5 - c.y) > kPinchRadiusPx) continue;
+        ts::Rgba px = img.at(x, y);
+        int i = 0, j = 0;
+        ts::decodeTexelIndex(px, &i, &j);
+        if (px.a == 255 && i < kTexels) s.push_back((i + 0.5) / kTexels);
+      }
+    return spheremap::circularSpan(s);
+  };
+  res.poleSpan = std::min(span(kBands - 1, {0, 1, 0}), span(0, {0, -1, 0}));
+  res.frontSpan = span(kBands / 2, {0, 0, 1});
+  return res;
+}
+
+ts::Measurements SphereProjections::measure(ts::Renderer& r) {
+  ts::Measurements out;
+  for (Mapping m : mappings()) {
+    auto key = std::make_pair(int(m), resolution_);
+    if (!measured_.count(key)) measured_[key] = measureMapping(r, m);  // rotation and tilt do not matter
+    const Result& res = measured_[key];
+    const std::string k = kKey[int(m)];
+    for (int b = 0; b < kBands; ++b) {
+      std::string band = bandName(b), deg = fmt("%.0f", spheremap::bandLo(b)) + ".." + fmt("%.0f", spheremap::bandHi(b));
+      out.push_back({k + band + "_analytic", res.analytic[size_t(b)],
+                     "texture/surface area, latitudes " + deg + ", whole sphere = 1: exact for the sphere"});
+      out.push_back({k + band + "_mesh", res.mesh[size_t(b)], "the same from the mesh's triangles ((s,t) area / 3D area)"});
+      out.push_back({k + band + "_render", res.render[size_t(b)], "the same measured from a texel-index render"});
+    }
+    out.push_back({k + "_spread", res.spread, "largest / smallest measured band ratio (1 = area-preserving)"});
+    out.push_back({k + "_pinch_lost", res.pinchLost,
+                   "fraction of the texture on the pole triangles that have no area (drawn nowhere)"});
+    out.push_back({k + "_pole_s_span", res.poleSpan, "fraction of the texture's width (s) seen within 3 px of a pole"});
+    out.push_back({k + "_front_s_span", res.frontSpan, "the same within 3 px of the front point (theta 0, phi 0)"});
+  }
+  return out;
+}
+}  // namespace
+
+TM_REGISTER_SCENE(SphereProjections);
