@@ -3,7 +3,11 @@
 // between figures), and writes the gallery README.md beside them.
 //
 //   make_figures [--out DIR] [--backend auto|osmesa|egl] [--scale F] [--only ID] [--list]
+#include <sys/stat.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -95,6 +99,9 @@ int run(int argc, char** argv) {
     return 0;
   }
   if (todo.empty()) throw ts::Error("no figure named '" + only + "' (see --list)");
+  struct stat st;
+  if (::stat(out.c_str(), &st) != 0 && ::mkdir(out.c_str(), 0777) != 0)
+    throw ts::Error("cannot create " + out + ": " + std::strerror(errno));
   ts::checkWritable(out + "/README.md");
 
   ts::ContextOptions co;

@@ -76,6 +76,9 @@ TextureDesc labelledGrid(int size, int cells) {
     throw Error("labelled grid: size 16..4096 and 1..26 cells");
   // Drawn top-down as a picture, then flipped so the picture's top is t = 1.
   Image pic(size, size);
+  // Cell k spans pixels [k*size/cells, (k+1)*size/cells): every pixel belongs
+  // to a cell even when size is not a multiple of cells.
+  auto edge = [&](int k) { return k * size / cells; };
   int cs = size / cells;
   for (int cy = 0; cy < cells; ++cy)
     for (int cx = 0; cx < cells; ++cx) {
@@ -84,15 +87,15 @@ TextureDesc labelledGrid(int size, int cells) {
       // directions can be read off any patch.
       Rgba c{uint8_t(60 + 180 * cx / std::max(1, cells - 1)), uint8_t(90 + 120 * row / std::max(1, cells - 1)),
              uint8_t(200 - 150 * cx / std::max(1, cells - 1)), 255};
-      for (int y = cy * cs; y < (cy + 1) * cs; ++y)
-        for (int x = cx * cs; x < (cx + 1) * cs; ++x) {
-          bool edge = x == cx * cs || y == cy * cs;
-          pic.set(x, y, edge ? Rgba{20, 20, 20, 255} : c);
+      for (int y = edge(cy); y < edge(cy + 1); ++y)
+        for (int x = edge(cx); x < edge(cx + 1); ++x) {
+          bool border = x == edge(cx) || y == edge(cy);
+          pic.set(x, y, border ? Rgba{20, 20, 20, 255} : c);
         }
       std::string label = std::string(1, char('A' + cx)) + std::to_string(row + 1);
       int scale = std::clamp(cs / 26, 1, text::kMaxScale);
       float tw = text::width(label, scale);
-      text::draw(pic, float(cx * cs) + (float(cs) - tw) / 2, float(cy * cs) + (float(cs) - text::height(scale)) / 2,
+      text::draw(pic, float(edge(cx)) + (float(cs) - tw) / 2, float(edge(cy)) + (float(cs) - text::height(scale)) / 2,
                  label, {255, 255, 255, 255}, scale);
     }
   // An arrow-free orientation cue: a bright bar along the bottom edge (t = 0).

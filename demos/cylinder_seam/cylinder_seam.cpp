@@ -1,0 +1,368 @@
+// Figures VI.3 and VI.4, Exercise VI.1 — a label wrapped on a cylinder, and
+// the patch across the seam.
+//
+// The claim (Buss, VI.1.2): Eq. VI.1, s = θ/360 and t = (y + h/2)/h, wraps a
+// texture around the side of a cylinder like a label on a can; its left and
+// right edges meet on the front line x = 0, z = r (Exercise VI.1: s = θ/360 +
+// 1/2 puts them at the back).  A patch across that line with θ = -36° at x, w
+// and +36° at y, z gets s = 0.9 and s = 0.1 if each vertex's s is reduced to
+// [0, 1): it shows the long region 0.1..0.9 of the texture, backwards.  The
+// fix: GL_REPEAT and s = 0.9 -> 1.1 (track the winding number).  Shared
+// vertices keep bit-identical positions (computed from the wrapped column).
+//
+// Left: texture space — the label, the region the seam patch should show
+// (green, 0.9..1.1 drawn wrapping) and the one it shows (red).  Right: the
+// cylinder from the front, the seam patch x, y, z, w outlined in orange.
+//
+// Keys (each is also a flag, see --help):
+//   c  coordinates: wrong (reduced to [0,1) per vertex) | right (winding tracked)
+//   b  seam: front (Eq. VI.1, the book) | back (Exercise VI.1)
+//   + / -  slices (patches around the cylinder)      [ / ]  turn the cylinder
+//   p  outline the seam patch and its regions         v  view: book | compare
+//
+// Measured: the cylinder is drawn once more, each patch head-on in its own
+// orthographic panel, with a texture whose texels hold their own indices;
+// along each patch the s it shows is read from the pixels and fitted: the
+// span of s across the patch and its direction (the sign of ds/dx).
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "common/probe.hpp"
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "common/text.hpp"
+#include "common/textures.hpp"
+#include "cylinder_map.hpp"
+
+namespace {
+using cylmap::Coords;
+using cylmap::Seam;
+
+const char* const kCoordNames[] = {"wrong", "right"};
+const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kIntended{0.2f, 0.85f, 0.3f, 1.0f}, kActual{0.95f, 0.15f, 0.15f, 1.0f},
+    kPatch{1.0f, 0.55f, 0.0f, 1.0f}, kMeasured{1.0f, 0.75f, 0.3f, 1.0f};
+
+// 10 x 10 labelled cells, 64 texels each: the book's s = 0.1 and 0.9 fall on
+// cell edges, so the seam patch shows whole columns (J|A right, I..B wrong).
+ts::TextureDesc label() { return ts::labelledGrid(640, 10); }
+
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+class CylinderSeam final : public ts::Scene {
+ public:
+  std::string id() const override { return "cylinder_seam"; }
+  std::string title() const override { return "Figures VI.3, VI.4 - a label on a cylinder and its seam"; }
+  std::string about() const override {
+    return "A labelled texture wrapped on a cylinder by s = theta/360, t = (y + h/2)/h (Eq. VI.1).  The patch across\n"
+           "the seam (theta = -36 to +36 degrees) shows 0.8 of the texture backwards when each vertex's s is reduced\n"
+           "to [0,1), and the intended 0.2 with s = 0.9 -> 1.1 and GL_REPEAT.  Prints the span and direction of s\n"
+           "measured across the patches from a render whose pixels name their texels.";
+  }
+  void addOptions(ts::Options& o) override {
+    o.addEnum("coords", &coords_, {kCoordNames[0], kCoordNames[1]},
+              "s per vertex: wrong = theta/360 reduced to [0,1); right = winding tracked (0.9 -> 1.1), GL_REPEAT", 'c');
+    o.addEnum("seam", &seam_, {"front", "back"}, "where the texture edges meet: front (Eq. VI.1) | back (Exercise VI.1)",
+              'b');
+    // 3 patches at least (a triangle prism); beyond 36 the seam patch is a sliver.
+    o.addInt("slices", &slices_, 3, 36, "patches around the cylinder (the book's patch: 5, 72 degrees wide)", '+', '-');
+    o.addFloat("turn", &turn_, -180.0f, 180.0f, "turn the cylinder (degrees; 180 shows the back)", ']', '[', 30.0f);
+    o.addBool("patch", &patch_, "outline the seam patch x,y,z,w and its regions in texture space", 'p');
+    o.addEnum("view", &view_, {"book", "compare"}, "book: texture | cylinder; compare: texture | wrong | right", 'v');
+  }
+  std::vector<ts::FigureSpec> figures() const override {
+    return {
+        {"vi3_cylinder", "Figure VI.3",
+         "A texture map (left) wrapped around the side of a cylinder by Eq. VI.1 (right): its left and right edges "
+         "meet on the front line x = 0, z = r, where column J meets column A.",
+         {"--coords", "right", "--slices", "24", "--patch=off"}, 1024, 512},
+        {"vi4_seam_patch", "Figure VI.4",
+         "The patch x, y, z, w across the seam (theta = -36 deg at x, w; +36 deg at y, z). Left: the intended region "
+         "0.9..1.1 (green, wrapping) and the region 0.1..0.9 that s = 0.9 and 0.1 select (red). Middle: s reduced "
+         "to [0,1) shows 0.8 of the texture backwards. Right: s = 0.9 -> 1.1 with GL_REPEAT.",
+         {"--view", "compare", "--slices", "5", "--seam", "front"}, 1280, 520},
+    };
+  }
+  ts::Frame build(int width, int height) override;
+  ts::Measurements measure(ts::Renderer& r) override;
+
+ private:
+  cylmap::Params params(Coords c) const {
+    cylmap::Params p;
+    p.slices = slices_;
+    p.coords = c;
+    p.seam = Seam(seam_);
+    return p;
+  }
+  void addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const;
+  void addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int tex, int scale) const;
+  glm::mat4 view() const {
+    // Eye 7.5 radii away (mild perspective), 12° above: the front is seen nearly head-on and the
+    // top rim shows it is a cylinder.  `turn` brings θ = turn to the front.
+    glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -7.5f));
+    m = glm::rotate(m, glm::radians(12.0f), glm::vec3(1, 0, 0));
+    return glm::rotate(m, glm::radians(-turn_), glm::vec3(0, 1, 0));
+  }
+
+  struct PatchResult {
+    double span = 0;       // signed Δs from left edge to right edge
+    double texelErr = 0;   // largest distance (texels) from the assigned s
+  };
+  std::vector<PatchResult> measurePatches(ts::Renderer& r, Coords c) const;
+
+  int coords_ = int(Coords::Wrong), seam_ = int(Seam::Front), slices_ = 5, view_ = 0;
+  float turn_ = 0.0f;
+  bool patch_ = true;
+  std::map<int, double> measuredSpan_;  // coords -> signed span of the seam patch, for labels
+};
+
+void CylinderSeam::addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const {
+  ts::Panel p;
+  p.id = "texture_space";
+  p.viewport = vp;
+  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+  ts::Batch t;
+  t.role = "texture";
+  t.texture = tex;
+  for (int i : {0, 1, 2, 0, 2, 3}) {
+    glm::vec2 c(i == 1 || i == 2, i >= 2);
+    t.vertices.push_back({{c, 0}, {c, 0, 1}, {1, 1, 1, 1}});
+  }
+  p.batches.push_back(t);
+  if (patch_) {
+    const int k = cylmap::seamPatch(params(Coords::Right));
+    // Intended: [s_k, s_k+1] of the right coordinates, cut where it wraps.
+    cylmap::Params right = params(Coords::Right);
+    double a = cylmap::sOf(right, k), b = cylmap::sOf(right, k + 1);
+    double fa = a - std::floor(a);
+    std::vector<std::pair<double, double>> pieces;
+    if (fa + (b - a) <= 1.0 + 1e-12) pieces = {{fa, fa + (b - a)}};
+    else pieces = {{fa, 1.0}, {0.0, fa + (b - a) - 1.0}};
+    for (auto [lo, hi] : pieces) {
+      ts::Batch shade;
+      shade.role = "intended_region";
+      shade.blend = true;
+      for (int i : {0, 1, 2, 0, 2, 3}) {
+        glm::vec2 c(float(i == 1 || i == 2 ? hi : lo), float(i >= 2));
+        shade.vertices.push_back({{c, 0}, {0, 0, 0, 1}, {kIntended.r, kIntended.g, kIntended.b, 0.45f}});
+      }
+      p.batches.push_back(shade);
+      p.batches.push_back(ts::lineLoop({{float(lo), 0.003f}, {float(hi), 0.003f}, {float(hi), 0.997f}, {float(lo), 0.997f}},
+                                       kIntended, 3.0f, "intended_outline"));
+    }
+    // Actual: from column k's s to column k+1's s, walked left to right on
+    // screen; an arrow at mid-height shows the way.  The compare view shows
+    // the wrong way here (the right one is the green region itself).
+    const Coords shown = view_ == 1 ? Coords::Wrong : Coords(coords_);
+    cylmap::Params cur = params(shown);
+    double sa = cylmap::sOf(cur, k), sb = cylmap::sOf(cur, k + 1);
+    if (shown == Coords::Wrong) {
+      float lo = float(std::min(sa, sb)), hi = float(std::max(sa, sb));
+      p.batches.push_back(ts::lineLoop({{lo, 0.01f}, {hi, 0.01f}, {hi, 0.99f}, {lo, 0.99f}}, kActual, 3.0f, "actual_region"));
+      std::vector<glm::vec2> hatch;  // the book's cross-hatching
+      for (float u = lo + 0.05f; u < hi; u += 0.1f) hatch.insert(hatch.end(), {{u, 0.01f}, {std::min(u + 0.05f, hi), 0.99f}});
+      p.batches.push_back(ts::lineSegments(hatch, {kActual.r, kActual.g, kActual.b, 1.0f}, 1.0f, "actual_hatch"));
+    }
+    // The arrow: s from x (left edge) to y (right edge), as GL_REPEAT reads
+    // it: right = from + 0.2, continued from the left edge if it passes 1.
+    const float from = float(sa - std::floor(sa));
+    const float to = shown == Coords::Right ? from + float(sb - sa) : float(sb);
+    const float y0 = 0.5f, ah = 0.03f, dir = to > from ? 1.0f : -1.0f;
+    const float tip = to > 1.0f ? to - 1.0f : to;
+    std::vector<glm::vec2> arrow;
+    if (to > 1.0f) arrow = {{from, y0}, {1.0f, y0}, {0.0f, y0}, {tip, y0}};
+    else arrow = {{from, y0}, {to, y0}};
+    arrow.insert(arrow.end(), {{tip, y0}, {tip - dir * ah, y0 + ah}, {tip, y0}, {tip - dir * ah, y0 - ah}});
+    p.batches.push_back(ts::lineSegments(arrow, kPatch, 3.0f, "direction"));
+    // Vertex names at the corners of the region actually shown.
+    auto at = [&](double s, double t) {
+      return glm::vec2(float(vp.x) + float(s) * float(vp.w), float(vp.y) + float(1.0 - t) * float(vp.h));
+    };
+    float line = ts::text::height(scale);
+    struct {
+      const char* n;
+      double s, t;
+    } names[] = {{"x", from, 0}, {"y", tip, 0}, {"z", tip, 1}, {"w", from, 1}};
+    for (auto& v : names) {
+      glm::vec2 q = at(v.s, v.t);
+      f.labels.push_back({q.x, v.t > 0.5 ? q.y - line - 4.0f * float(scale) : q.y + 4.0f * float(scale), v.n, kPatch,
+                          scale, ts::Align::Center});
+    }
+  }
+  f.panels.push_back(p);
+}
+
+void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int tex, int scale) const {
+  cylmap::Params cp = params(c);
+  ts::Panel p;
+  p.id = std::string("cylinder_") + kCoordNames[int(c)];
+  p.viewport = vp;
+  p.projection = glm::perspective(glm::radians(24.0f), float(vp.w) / float(vp.h), 2.0f, 12.0f);
+  p.modelview = view();
+  p.depthTest = true;
+  // Light from the upper left in front, fixed to the viewer: expressed in the
+  // cylinder's own coordinates by undoing the turn.
+  glm::dvec3 toLight = glm::dvec3(glm::inverse(glm::mat3(p.modelview)) * glm::vec3(-0.4f, 0.5f, 1.0f));
+  p.batches.push_back(ts::litMeshBatch(cylmap::mesh(cp), tex, toLight, 0.45, 0.55, "cylinder"));
+  if (patch_) {
+    // The seam patch's outline, 1% outside the surface so the depth test
+    // keeps it in front of its own patch but behind the rest of the cylinder.
+    const int k = cylmap::seamPatch(cp);
+    double ta = cylmap::thetaDeg(cp.slices, k), tb = cylmap::thetaDeg(cp.slices, k + 1);
+    const double R = cp.r * 1.01, hh = cp.h / 2;
+    glm::dvec3 corner[4] = {cylmap::point(R, ta, -hh), cylmap::point(R, tb, -hh), cylmap::point(R, tb, hh),
+                            cylmap::point(R, ta, hh)};
+    ts::Batch outline = ts::lineLoop({}, kPatch, 3.0f, "seam_patch");
+    for (const auto& q : corner) outline.vertices.push_back({glm::vec3(q), {0, 0, 0, 1}, kPatch});
+    p.batches.push_back(outline);
+    // x, y, z, w where the patch faces the viewer.
+    const char* names[4] = {"x", "y", "z", "w"};
+    glm::mat4 mvp = p.projection * p.modelview;
+    for (int i = 0; i < 4; ++i) {
+      glm::vec3 n = glm::mat3(p.modelview) * glm::vec3(corner[i].x, 0.0, corner[i].z);
+      if (n.z <= 0.05f) continue;
+      glm::vec2 q = ts::panelToPixels(p, mvp * glm::vec4(glm::vec3(corner[i]), 1.0f));
+      float dx = (i == 0 || i == 3 ? -1.0f : 1.0f) * 6.0f * float(scale);
+      float dy = i < 2 ? 2.0f * float(scale) : -ts::text::height(scale) - 2.0f * float(scale);
+      f.labels.push_back({q.x + dx, q.y + dy, names[i], kPatch, scale, i == 0 || i == 3 ? ts::Align::Right : ts::Align::Left});
+    }
+  }
+  f.panels.push_back(p);
+}
+
+ts::Frame CylinderSeam::build(int width, int height) {
+  ts::Frame f;
+  f.width = width;
+  f.height = height;
+  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::TextureDesc t = label();
+  t.wrapS = GL_REPEAT;  // the fix needs it (and the wrong way does not care)
+  int tex = f.addTexture(t);
+  int scale = std::max(1, std::min(3, std::min(width, height) / 300));
+  int line = int(ts::text::height(scale)) + 6 * scale;
+  const std::vector<Coords> shown =
+      view_ == 0 ? std::vector<Coords>{Coords(coords_)} : std::vector<Coords>{Coords::Wrong, Coords::Right};
+  const int columns = 1 + int(shown.size()), colW = width / columns;
+  // Titles on the first line; the texture square below with a line above
+  // and below it for the x, y, z, w names; the cylinders fill their column
+  // down to the measurement line.
+  int side = std::max(1, std::min(colW - 2 * line, height - 7 * line));
+  int top = 3 * line + std::max(0, (height - 7 * line - side) / 2);
+  addTextureView(f, {colW / 2 - side / 2, top, side, side}, tex, scale);
+  f.labels.push_back({float(colW / 2), float(line / 2), "texture space", kWhite, scale, ts::Align::Center});
+  std::string seam = seam_ == 0 ? "seam at the front: s = theta/360" : "seam at the back: s = theta/360 + 1/2";
+  f.labels.push_back({float(colW / 2), float(top + side + line + line / 2), seam, kWhite, scale, ts::Align::Center});
+  for (size_t c = 0; c < shown.size(); ++c) {
+    int cx = int(2 * c + 3) * width / (2 * columns);
+    int w = std::max(1, colW - line), h = std::max(1, height - 4 * line - line / 2);
+    addCylinder(f, {cx - w / 2, 2 * line, w, h}, shown[c], tex, scale);
+    std::string title = shown[c] == Coords::Wrong ? "s reduced to [0,1): wrong" : "s winding tracked: right";
+    f.labels.push_back({float(cx), float(line / 2), title, kWhite, scale, ts::Align::Center});
+    auto m = measuredSpan_.find(int(shown[c]));
+    if (m != measuredSpan_.end())
+      f.labels.push_back({float(cx), float(height - line - line / 4),
+                          "seam patch: " + fmt("%.2f", std::abs(m->second)) + " of s, " +
+                              (m->second < 0 ? "reversed" : "forwards"),
+                          kMeasured, scale, ts::Align::Center});
+  }
+  return f;
+}
+
+// Each patch is drawn head-on in its own W x H panel: turned by -θ_mid about
+// y so it faces +z, and an orthographic projection that maps its chord onto
+// exactly the panel's width (left edge = column k, right edge = column k+1).
+// Then screen x is linear in s, every pixel centre lies inside the patch,
+// and the s a pixel shows is (texel index + 1/2) / N.
+std::vector<CylinderSeam::PatchResult> CylinderSeam::measurePatches(ts::Renderer& r, Coords c) const {
+  // 2048 texels: s is read to 1/2048 per pixel; 256 px across a patch make
+  // the fitted span good to far better than a texel; 32 rows are plenty (s
+  // does not depend on y).  The frame's size depends only on the slices.
+  const int N = 2048, W = 256, H = 32;
+  const cylmap::Params cp = params(c);
+  const ts::Mesh mesh = cylmap::mesh(cp);
+  ts::Frame mf;
+  mf.width = W;
+  mf.height = H * cp.slices;
+  int tex = mf.addTexture(ts::texelIndexTexture(N));  // GL_NEAREST, GL_REPEAT
+  ts::Batch all = ts::meshBatch(mesh, tex);
+  all.texEnv = GL_REPLACE;
+  const double half = 180.0 / cp.slices, chord = cp.r * std::sin(ts::degToRad(half));
+  for (int k = 0; k < cp.slices; ++k) {
+    ts::Panel p;
+    p.id = "patch_" + std::to_string(k);
+    p.viewport = {0, k * H, W, H};
+    p.projection = glm::ortho(float(-chord), float(chord), float(-cp.h / 2), float(cp.h / 2), float(-2 * cp.r),
+                              float(2 * cp.r));
+    p.modelview = glm::rotate(glm::mat4(1.0f), float(-ts::degToRad(cylmap::thetaDeg(cp.slices, k) + half)),
+                              glm::vec3(0, 1, 0));
+    ts::Batch b = all;  // only column k's cells: 6 vertices per cell, row-major in j
+    b.vertices.clear();
+    for (int j = 0; j < cp.stacks; ++j)
+      for (int v = 0; v < 6; ++v) b.vertices.push_back(all.vertices[size_t((j * cp.slices + k) * 6 + v)]);
+    p.batches.push_back(b);
+    mf.panels.push_back(p);
+  }
+  ts::Image img = r.renderOffscreen(mf);
+
+  std::vector<PatchResult> out;
+  for (int k = 0; k < cp.slices; ++k) {
+    const double sa = cylmap::sOf(cp, k), sb = cylmap::sOf(cp, k + 1);
+    std::vector<ts::probe::Sample> samples;
+    PatchResult pr;
+    for (int y = k * H; y < (k + 1) * H; ++y) {
+      double prev = 0, unwrapped = 0;
+      for (int x = 0; x < W; ++x) {
+        int i = 0, j = 0;
+        ts::decodeTexelIndex(img.at(x, y), &i, &j);
+        double s = (i + 0.5) / N;
+        // Unwrap along the row: neighbouring pixels differ by far less than
+        // half the texture, so a jump of more than 1/2 is a wrap (GL_REPEAT).
+        unwrapped = x == 0 ? s : unwrapped + (s - prev) - std::round(s - prev);
+        prev = s;
+        double u = (x + 0.5) / W;
+        samples.push_back({u, (y - k * H + 0.5) / H, unwrapped});
+        // Against the assignment, interpolated linearly across the patch.
+        double want = sa + u * (sb - sa), d = (unwrapped - want) - std::round(unwrapped - want);
+        pr.texelErr = std::max(pr.texelErr, std::abs(d) * N);
+      }
+    }
+    ts::probe::Fit fit = ts::probe::fit(samples, false);  // s = c0 + c1 u + c2 v: c1 is the span
+    pr.span = fit.c[1];
+    out.push_back(pr);
+  }
+  return out;
+}
+
+ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
+  std::vector<Coords> todo = view_ == 0 ? std::vector<Coords>{Coords(coords_)}
+                                        : std::vector<Coords>{Coords::Wrong, Coords::Right};
+  ts::Measurements out;
+  measuredSpan_.clear();
+  const int k = cylmap::seamPatch(params(Coords::Right));
+  out.push_back({"seam_patch", double(k), "the patch the texture edges meet in (0 = the front one)"});
+  for (Coords c : todo) {
+    std::vector<PatchResult> res = measurePatches(r, c);
+    std::string n = std::string("[") + kCoordNames[int(c)] + "]";
+    int reversed = 0;
+    double err = 0;
+    for (const auto& pr : res) reversed += pr.span < 0, err = std::max(err, pr.texelErr);
+    measuredSpan_[int(c)] = res[size_t(k)].span;
+    out.push_back({"seam_patch_span_s" + n, std::abs(res[size_t(k)].span), "how much of the texture (in s) the seam patch shows"});
+    out.push_back({"seam_patch_direction" + n, res[size_t(k)].span < 0 ? -1.0 : 1.0, "sign of ds/dx across it: -1 = backwards"});
+    out.push_back({"front_patch_span_s" + n, std::abs(res[0].span), "the same for the patch facing +z (theta -180/n..180/n)"});
+    out.push_back({"front_patch_direction" + n, res[0].span < 0 ? -1.0 : 1.0, "sign of ds/dx across the front patch"});
+    out.push_back({"reversed_patches" + n, double(reversed), "patches showing the texture backwards"});
+    out.push_back({"texel_error_max" + n, err, "largest distance (texels of 2048) between the texel shown and the assigned s"});
+  }
+  return out;
+}
+}  // namespace
+
+TM_REGISTER_SCENE(CylinderSeam);

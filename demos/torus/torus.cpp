@@ -1,0 +1,385 @@
+// Figure VI.6, Exercise VI.2 — a checkerboard on a torus, and where the
+// texture's centre lands.
+//
+// The claim (Buss, VI.1.2): the torus p(θ, φ) = ((R + r cos φ) sin θ, r sin φ,
+// (R + r cos φ) cos θ) takes the texture by s = θ/360, t = φ/360.  Exercise
+// VI.2: the texture's centre (s, t) = (1/2, 1/2) then lands at θ = φ = 180°,
+// the point (0, 0, -(R - r)) on the inner wall of the hole at the back; with
+// s = θ/360 + 1/2, t = φ/360 + 1/2 it lands at the front, (0, 0, R + r) on
+// the positive z axis.
+//
+// Left: the texture with its centre marked.  Right: the torus tilted towards
+// the viewer (from above, as in the book) so the hole's far wall shows; a
+// red cross on the surface and a label mark where (1/2, 1/2) is.
+//
+// Keys (each is also a flag, see --help):
+//   c  mapping: book (s = θ/360, t = φ/360) | front (both + 1/2, the exercise)
+//   g  texture: checker (the book's) | grid (labelled cells; the centre is
+//      where D4, E4, D5, E5 meet)
+//   m  the centre marker            v  view: single | compare (both mappings)
+//   . / ,  tilt towards the viewer   ] / [  turn about the torus's axis
+//
+// Measured: the torus is drawn once more with a texture whose texels hold
+// their own indices; the pixels whose texel is near (1/2, 1/2) are fitted to
+// find where on the screen the centre is, a ray through that point is cast
+// against the mesh, and the 3D point it hits is compared with the answer.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "common/error.hpp"
+#include "common/probe.hpp"
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "common/text.hpp"
+#include "common/textures.hpp"
+#include "torus_map.hpp"
+
+namespace {
+using torusmap::Mapping;
+
+const char* const kMappingNames[] = {"book", "front"};
+const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kMarker{0.95f, 0.1f, 0.2f, 1.0f}, kMeasured{1.0f, 0.75f, 0.3f, 1.0f},
+                kMarkerBox{0.55f, 0.0f, 0.1f, 0.85f};
+
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+// Where the centre was found in one mapping (the measurement).
+struct Found {
+  bool visible = false;
+  glm::dvec2 screen{-1.0};  // pixels of the kMeasureSize render, top-left origin
+  glm::dvec2 nearestPixel{-1.0};
+  glm::dvec3 point{0.0};    // the mesh point a ray through `screen` hits
+};
+constexpr int kMeasureSize = 512;
+
+class Torus final : public ts::Scene {
+ public:
+  std::string id() const override { return "torus"; }
+  std::string title() const override { return "Figure VI.6 - a checkerboard on a torus and its centre"; }
+  std::string about() const override {
+    return "A checkerboard on a torus by s = theta/360, t = phi/360.  Exercise VI.2: the texture centre (1/2, 1/2)\n"
+           "lands at theta = phi = 180 deg, (0, 0, -(R - r)) inside the hole at the back; adding 1/2 to s and t moves\n"
+           "it to (0, 0, R + r) at the front.  Prints where the centre is found in a render whose pixels name their\n"
+           "texels: its screen position, the 3D point there, and its distance from the answer.";
+  }
+  void addOptions(ts::Options& o) override {
+    o.addEnum("mapping", &mapping_, {kMappingNames[0], kMappingNames[1]},
+              "book: s = theta/360, t = phi/360; front: s = theta/360 + 1/2, t = phi/360 + 1/2 (Exercise VI.2)", 'c');
+    o.addEnum("texture", &texture_, {"checker", "grid"}, "checker (Figure VI.6) or labelled grid (shows the centre)",
+              'g');
+    o.addBool("marker", &marker_, "mark the texture centre (1/2, 1/2) on the torus", 'm');
+    o.addEnum("view", &view_, {"single", "compare"}, "single: texture | torus; compare: texture | book | front", 'v');
+    // 0 = edge-on (the hole's far wall is hidden by the front of the ring),
+    // 90 = straight down the axis.  The book's figure: about 35, well above
+    // the 16.1° from which the book's centre can be seen
+    // (torusmap::minTiltToSeeBookCentre).
+    o.addFloat("tilt", &tilt_, 0.0f, 90.0f, "tilt towards the viewer, degrees (the hole's far wall shows above ~16)",
+               '.', ',', 5.0f);
+    o.addFloat("turn", &turn_, -180.0f, 180.0f, "turn about the torus's axis, degrees", ']', '[', 30.0f);
+    o.addText("radii", &radiiText_, "major and minor radius \"R,r\" with 0 < r < R <= 10", [](const std::string& v) {
+      parseRadii(v);
+    });
+  }
+  std::vector<ts::FigureSpec> figures() const override {
+    return {
+        {"vi6_torus", "Figure VI.6",
+         "A checkerboard texture map (left) applied to a torus by s = theta/360, t = phi/360 (right), the torus "
+         "tilted towards the viewer.",
+         {"--mapping", "book", "--texture", "checker", "--marker=off"}, 1024, 512},
+        {"vi6_torus_centre", "Exercise VI.2",
+         "Where the texture's centre (1/2, 1/2) lands. Middle: s = theta/360, t = phi/360 put it at theta = phi = 180 "
+         "deg, (0, 0, -(R - r)), on the far inner wall of the hole. Right: s = theta/360 + 1/2, t = phi/360 + 1/2 "
+         "put it at the front, (0, 0, R + r).",
+         {"--view", "compare", "--texture", "grid"}, 1280, 520},
+    };
+  }
+  ts::Frame build(int width, int height) override;
+  ts::Measurements measure(ts::Renderer& r) override;
+
+  static glm::dvec2 parseRadii(const std::string& text) {
+    std::istringstream in(text);
+    double R = 0, r = 0;
+    char comma = 0;
+    std::string rest;
+    if (!(in >> R >> comma >> r) || comma != ',' || (in >> rest) || !std::isfinite(R) || !std::isfinite(r) ||
+        !(r > 0) || !(r < R) || R > 10)
+      throw ts::Error("--radii: '" + text + "' is not \"R,r\" with 0 < r < R <= 10");
+    return {R, r};
+  }
+
+ private:
+  torusmap::Params params(Mapping m) const {
+    glm::dvec2 rr = parseRadii(radiiText_);
+    torusmap::Params p;
+    p.R = rr.x;
+    p.r = rr.y;
+    p.mapping = m;
+    return p;
+  }
+  // The camera, the same for the picture and the measurement.  Eye at
+  // 5.2 / 1.4 (R + r) from the centre, 35° field: the whole ring fits with a
+  // margin at any tilt and turn (straight down, the near rim is 0.4 closer).
+  glm::mat4 projection() const { return glm::perspective(glm::radians(35.0f), 1.0f, 0.5f, 20.0f); }
+  glm::mat4 modelview(const torusmap::Params& p) const {
+    float d = float(torusmap::eyeDistance(p));
+    glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -d));
+    m = glm::rotate(m, glm::radians(tilt_), glm::vec3(1, 0, 0));  // the eye goes up: (0, sin, cos) -> +z
+    return glm::rotate(m, glm::radians(-turn_), glm::vec3(0, 1, 0));
+  }
+  ts::TextureDesc picture() const {
+    return texture_ == 0 ? ts::checkerboard(256, 16) : ts::labelledGrid(512, 8);
+  }
+  void addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale) const;
+  void addTexture(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const;
+  Found find(ts::Renderer& r, Mapping m) const;
+
+  int mapping_ = int(Mapping::Book), texture_ = 0, view_ = 0;
+  bool marker_ = true;
+  float tilt_ = 35.0f, turn_ = 0.0f;
+  std::string radiiText_ = "1,0.4";
+  std::map<int, Found> found_;  // mapping -> measurement, for labels
+};
+
+void Torus::addTexture(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const {
+  ts::Panel p;
+  p.id = "texture_space";
+  p.viewport = vp;
+  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+  ts::Batch t;
+  t.role = "texture";
+  t.texture = tex;
+  for (int i : {0, 1, 2, 0, 2, 3}) {
+    glm::vec2 c(i == 1 || i == 2, i >= 2);
+    t.vertices.push_back({{c, 0}, {c, 0, 1}, {1, 1, 1, 1}});
+  }
+  p.batches.push_back(t);
+  if (marker_) {
+    const float a = 0.06f;
+    p.batches.push_back(ts::lineSegments({{0.5f - a, 0.5f}, {0.5f + a, 0.5f}, {0.5f, 0.5f - a}, {0.5f, 0.5f + a}}, kMarker,
+                                         3.0f, "centre_marker"));
+    f.labels.push_back({float(vp.x + vp.w / 2) + 8.0f * float(scale), float(vp.y + vp.h / 2) + 4.0f * float(scale),
+                        "(1/2, 1/2)", kWhite, scale, ts::Align::Left, kMarkerBox});
+  }
+  f.panels.push_back(p);
+}
+
+void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale) const {
+  torusmap::Params tp = params(m);
+  ts::Panel p;
+  p.id = std::string("torus_") + kMappingNames[int(m)];
+  p.viewport = vp;
+  p.projection = projection();
+  p.modelview = modelview(tp);
+  p.depthTest = true;
+  // Light from the upper left in front, fixed to the viewer.
+  glm::dvec3 toLight = glm::dvec3(glm::inverse(glm::mat3(p.modelview)) * glm::vec3(-0.4f, 0.6f, 1.0f));
+  p.batches.push_back(ts::litMeshBatch(torusmap::mesh(tp), tex, toLight, 0.4, 0.6, "torus"));
+  if (marker_) {
+    // A cross in the tangent plane at the answer, lifted 2% of r along the
+    // normal so the depth test keeps it above its own surface and hides it
+    // behind the rest of the ring.
+    glm::dvec2 a = torusmap::centreAngles(m);
+    glm::dvec3 n = torusmap::normal(a.x, a.y);
+    glm::dvec3 c = torusmap::centrePoint(tp) + 0.02 * tp.r * n;
+    glm::dvec3 dTheta(std::cos(ts::degToRad(a.x)), 0.0, -std::sin(ts::degToRad(a.x)));  // along θ
+    glm::dvec3 dPhi = glm::cross(n, dTheta);                                            // along φ
+    const double arm = 0.35 * tp.r;
+    ts::Batch cross = ts::lineSegments({}, kMarker, 3.0f, "centre_marker");
+    for (glm::dvec3 q : {c - arm * dTheta, c + arm * dTheta, c - arm * dPhi, c + arm * dPhi})
+      cross.vertices.push_back({glm::vec3(q), {0, 0, 0, 1}, kMarker});
+    p.batches.push_back(cross);
+    glm::vec2 q = ts::panelToPixels(p, p.projection * p.modelview * glm::vec4(glm::vec3(c), 1.0f));
+    auto it = found_.find(int(m));
+    bool hidden = it != found_.end() && !it->second.visible;
+    f.labels.push_back({q.x + 10.0f * float(scale), q.y + 6.0f * float(scale),
+                        hidden ? "(1/2,1/2): hidden" : "(1/2,1/2)", kWhite, scale, ts::Align::Left, kMarkerBox});
+  }
+  f.panels.push_back(p);
+}
+
+ts::Frame Torus::build(int width, int height) {
+  ts::Frame f;
+  f.width = width;
+  f.height = height;
+  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  int tex = f.addTexture(picture());
+  int scale = std::max(1, std::min(3, std::min(width, height) / 300));
+  int line = int(ts::text::height(scale)) + 6 * scale;
+  const std::vector<Mapping> shown =
+      view_ == 0 ? std::vector<Mapping>{Mapping(mapping_)} : std::vector<Mapping>{Mapping::Book, Mapping::Front};
+  // Columns: the texture (narrower), then one square torus panel per mapping.
+  const int columns = 1 + int(shown.size());
+  int side = std::max(1, std::min(width / columns, height - 5 * line));
+  int texSide = std::max(1, std::min(side * 3 / 4, width - int(shown.size()) * side - 2 * line));
+  int texCol = width - int(shown.size()) * side;  // the texture gets what the tori leave
+  int top = 2 * line + std::max(0, (height - 5 * line - side) / 2);
+  addTexture(f, {texCol / 2 - texSide / 2, top + (side - texSide) / 2, texSide, texSide}, tex, scale);
+  f.labels.push_back({float(texCol / 2), float(line / 2), "texture", kWhite, scale, ts::Align::Center});
+  for (size_t k = 0; k < shown.size(); ++k) {
+    const Mapping m = shown[k];
+    const torusmap::Params tp = params(m);
+    int x0 = texCol + int(k) * side;
+    addTorus(f, {x0, top, side, side}, m, tex, scale);
+    float cx = float(x0 + side / 2);
+    f.labels.push_back({cx, float(line / 2),
+                        m == Mapping::Book ? "s=theta/360, t=phi/360" : "s=theta/360+1/2, t=phi/360+1/2",
+                        kWhite, scale, ts::Align::Center});
+    glm::dvec3 answer = torusmap::centrePoint(tp);
+    f.labels.push_back({cx, float(line / 2 + line),
+                        "centre at (0, 0, " + fmt("%.2f", answer.z) + ")" +
+                            (m == Mapping::Book ? " = -(R - r)" : " = R + r"),
+                        kWhite, scale, ts::Align::Center});
+    auto it = found_.find(int(m));
+    if (it != found_.end())
+      f.labels.push_back({cx, float(height - line - line / 4),
+                          it->second.visible ? "measured: " + fmt("%.3f", glm::length(it->second.point - answer)) +
+                                                   " from the answer"
+                                             : "measured: not visible from here",
+                          kMeasured, scale, ts::Align::Center});
+  }
+  return f;
+}
+
+// Möller–Trumbore: distance along the ray to the triangle, or +inf.
+double hit(glm::dvec3 o, glm::dvec3 d, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
+  glm::dvec3 e1 = b - a, e2 = c - a, pv = glm::cross(d, e2);
+  double det = glm::dot(e1, pv);
+  if (std::abs(det) < 1e-14) return std::numeric_limits<double>::infinity();
+  glm::dvec3 tv = o - a;
+  double u = glm::dot(tv, pv) / det;
+  glm::dvec3 qv = glm::cross(tv, e1);
+  double v = glm::dot(d, qv) / det, t = glm::dot(e2, qv) / det;
+  if (u < -1e-9 || v < -1e-9 || u + v > 1 + 1e-9 || t <= 0) return std::numeric_limits<double>::infinity();
+  return t;
+}
+
+// Where (1/2, 1/2) is on the screen and on the torus, from a render with the
+// texel-index texture (N = 2048, GL_NEAREST, GL_REPEAT) at a fixed size.
+Found Torus::find(ts::Renderer& r, Mapping m) const {
+  const int N = 2048, S = kMeasureSize;
+  const torusmap::Params tp = params(m);
+  const ts::Mesh mesh = torusmap::mesh(tp);
+  ts::Frame mf;
+  mf.width = mf.height = S;
+  mf.clearColor = glm::vec4(0.0f);  // alpha 0: not the torus (every texel has alpha 255)
+  int tex = mf.addTexture(ts::texelIndexTexture(N));
+  ts::Panel p;
+  p.id = "texel_index";
+  p.viewport = {0, 0, S, S};
+  p.projection = projection();
+  p.modelview = modelview(tp);
+  p.depthTest = true;
+  ts::Batch b = ts::meshBatch(mesh, tex);
+  b.texEnv = GL_REPLACE;
+  p.batches.push_back(b);
+  mf.panels.push_back(p);
+  ts::Image img = r.renderOffscreen(mf);
+
+  // Pixels within 0.02 of the centre in s and t (7.2° of θ and of φ): a
+  // neighbourhood of some hundred pixels where s and t are nearly linear in
+  // the pixel position.  Fit them and solve s = t = 1/2.
+  const double near = 0.02;
+  std::vector<ts::probe::Sample> ss, st;
+  double best = 1e9;
+  Found out;
+  glm::dvec2 mean(0.0);
+  std::vector<glm::dvec4> px;  // x, y, ds, dt
+  for (int y = 0; y < S; ++y)
+    for (int x = 0; x < S; ++x) {
+      ts::Rgba c = img.at(x, y);
+      if (c.a == 0) continue;
+      int i = 0, j = 0;
+      ts::decodeTexelIndex(c, &i, &j);
+      double ds = (i + 0.5) / N - 0.5, dt = (j + 0.5) / N - 0.5;
+      ds -= std::round(ds), dt -= std::round(dt);  // GL_REPEAT: 1.5 is 0.5
+      double d = std::hypot(ds, dt);
+      if (d < best) best = d, out.nearestPixel = {x + 0.5, y + 0.5};
+      if (std::abs(ds) < near && std::abs(dt) < near) px.push_back({x + 0.5, y + 0.5, ds, dt}), mean += glm::dvec2(x + 0.5, y + 0.5);
+    }
+  if (px.size() < 12) return out;  // too few pixels show it: hidden (or off screen)
+  mean /= double(px.size());
+  for (const auto& q : px) {
+    ss.push_back({q.x - mean.x, q.y - mean.y, q.z});
+    st.push_back({q.x - mean.x, q.y - mean.y, q.w});
+  }
+  // Quadratics absorb the perspective and the curvature over the
+  // neighbourhood; Newton's method from its middle finds s = t = 1/2.
+  ts::probe::Fit fs = ts::probe::fit(ss, true), ft = ts::probe::fit(st, true);
+  glm::dvec2 d(0.0);
+  for (int it = 0; it < 8; ++it) {
+    double a = fs.dx(d.x, d.y), b = fs.dy(d.x, d.y), c = ft.dx(d.x, d.y), e = ft.dy(d.x, d.y), det = a * e - b * c;
+    if (std::abs(det) < 1e-12) return out;
+    double fsv = fs.at(d.x, d.y), ftv = ft.at(d.x, d.y);
+    d -= glm::dvec2((e * fsv - b * ftv) / det, (a * ftv - c * fsv) / det);
+  }
+  out.screen = mean + d;
+  // Half hidden (the near rim covers the solution, e.g. at a low tilt): the
+  // pixel there shows some other texel, and the point is not what is seen.
+  {
+    int x = int(std::floor(out.screen.x)), y = int(std::floor(out.screen.y)), i = 0, j = 0;
+    if (x < 0 || y < 0 || x >= S || y >= S || img.at(x, y).a == 0) return out;
+    ts::decodeTexelIndex(img.at(x, y), &i, &j);
+    double ds = (i + 0.5) / N - 0.5, dt = (j + 0.5) / N - 0.5;
+    if (std::abs(ds - std::round(ds)) >= near || std::abs(dt - std::round(dt)) >= near) return out;
+  }
+  // Unproject: the pixel position to normalised device coordinates, the
+  // near and far points back to the torus's coordinates; nearest hit.
+  glm::dmat4 inv = glm::inverse(glm::dmat4(p.projection) * glm::dmat4(p.modelview));
+  glm::dvec2 ndc(2.0 * out.screen.x / S - 1.0, 1.0 - 2.0 * out.screen.y / S);
+  glm::dvec4 a = inv * glm::dvec4(ndc, -1.0, 1.0), z = inv * glm::dvec4(ndc, 1.0, 1.0);
+  glm::dvec3 o = glm::dvec3(a) / a.w, dir = glm::normalize(glm::dvec3(z) / z.w - o);
+  double tBest = std::numeric_limits<double>::infinity();
+  std::vector<unsigned> tri = mesh.triangles();
+  for (size_t k = 0; k + 2 < tri.size(); k += 3)
+    tBest = std::min(tBest, hit(o, dir, mesh.points[tri[k]].pos, mesh.points[tri[k + 1]].pos, mesh.points[tri[k + 2]].pos));
+  if (!std::isfinite(tBest)) return out;
+  out.point = o + tBest * dir;
+  out.visible = true;
+  return out;
+}
+
+ts::Measurements Torus::measure(ts::Renderer& r) {
+  std::vector<Mapping> todo = view_ == 0 ? std::vector<Mapping>{Mapping(mapping_)}
+                                         : std::vector<Mapping>{Mapping::Book, Mapping::Front};
+  ts::Measurements out;
+  found_.clear();
+  for (Mapping m : todo) {
+    const torusmap::Params tp = params(m), other = params(m == Mapping::Book ? Mapping::Front : Mapping::Book);
+    Found fd = find(r, m);
+    found_[int(m)] = fd;
+    const std::string n = std::string("[") + kMappingNames[int(m)] + "]";
+    const glm::dvec3 answer = torusmap::centrePoint(tp);
+    glm::mat4 mvp = projection() * modelview(tp);
+    ts::Panel whole;
+    whole.viewport = {0, 0, kMeasureSize, kMeasureSize};
+    glm::vec2 projected = ts::panelToPixels(whole, mvp * glm::vec4(glm::vec3(answer), 1.0f));
+    const double none = -1.0;
+    out.push_back({"centre_visible" + n, fd.visible ? 1.0 : 0.0, "1 if the render shows texel (1/2,1/2)"});
+    out.push_back({"centre_x_px" + n, fd.screen.x, "where it is, pixels of a 512x512 render (fitted)"});
+    out.push_back({"centre_y_px" + n, fd.screen.y, "... (top-left origin)"});
+    out.push_back({"centre_screen_error_px" + n, fd.visible ? glm::distance(fd.screen, glm::dvec2(projected)) : none,
+                   "from the projection of the exercise's answer"});
+    out.push_back({"centre_3d_x" + n, fd.point.x, "the torus point a ray through it hits"});
+    out.push_back({"centre_3d_y" + n, fd.point.y, ""});
+    out.push_back({"centre_3d_z" + n, fd.point.z, "answer: -(R - r) for book, R + r for front"});
+    out.push_back({"centre_distance_to_answer" + n, fd.visible ? glm::distance(fd.point, answer) : none,
+                   "from the exercise's answer"});
+    out.push_back({"centre_distance_to_other" + n,
+                   fd.visible ? glm::distance(fd.point, torusmap::centrePoint(other)) : none,
+                   "from the other mapping's answer (should be far)"});
+  }
+  return out;
+}
+}  // namespace
+
+TM_REGISTER_SCENE(Torus);
