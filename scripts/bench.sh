@@ -16,7 +16,6 @@ build=build-bench
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DTM_BUILD_TESTS=ON -DTM_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build "$build" -j2 --target bench_figures bench_window
 mkdir -p "$build/bench"
-echo "bench: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg) before the run" >&2
 "$build/bin/bench_figures" --benchmark_out="$build/bench/figures.json" --benchmark_out_format=json "$@"
 xvfb-run -a -s "-screen 0 1280x1024x24" \
   "$build/bin/bench_window" --benchmark_out="$build/bench/window.json" --benchmark_out_format=json "$@"

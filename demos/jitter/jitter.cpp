@@ -1,0 +1,618 @@
+// Figure VI.7 — jittered supersampling, on a checkerboard receding to the
+// horizon.
+//
+// The claim (Buss, VI.1.4): supersampling renders n x n samples per pixel
+// (the book: 3 x 3 subpixels) and averages them.  Regular samples at the
+// subpixel centres only push aliasing further off; jittering puts one random
+// sample inside each subpixel and turns the aliasing (interference, moire:
+// coherent patterns) into noise (grain) — but only if the jitter is chosen
+// independently for every pixel, "otherwise interference patterns can still
+// form".  More samples reduce the noise.
+//
+// Five images of one scene (an infinite procedural checkerboard under a
+// perspective camera), each 288 x 192 whatever the window's size:
+//   one            1 sample per pixel, at its centre
+//   regular        n x n at the subpixel centres      } the Red Book's method:
+//   jitter-global  n x n jittered, the same jitter     } n*n passes with the
+//                  for every pixel                     } projection shifted,
+//                                                      } glAccum (or FBO averaging)
+//   jitter-pixel   n x n jittered independently per pixel (a fragment shader
+//                  hashes (seed, pixel, sample))
+//   reference      16 x 16 stratified samples per pixel, on the CPU in double
+//                  precision (the checkerboard is analytic)
+//
+// Keys (each is also a flag, see --help):
+//   m  mode: one | regular | jitter-global | jitter-pixel | reference
+//   + / -  samples per side n (1..4)      s / S  seed up / down
+//   v  view: mode (one image large) | compare (the figure) | plot (error vs n)
+//   e  show the image's error against the reference instead of the image
+// Flag only: --average auto|accum|fbo (how the passes are averaged).
+//
+// Measured, per mode, against the reference: the RMS error, split into
+// "aliasing" — the part of each pixel's error that one linear rule predicts
+// from its 24 neighbours' errors: interference patterns repeat, so they are
+// predictable — and "noise", the unpredictable rest: grain
+// (jitter::analyse; rms^2 = aliasing^2 + noise^2).  The plot view adds the
+// RMS and aliasing at n = 1..4 for the three patterns.  Which path averaged
+// the multi-pass images — glAccum, or FBO averaging where there is no usable
+// accumulation buffer (EGL; Mesa's sRGB GLX visuals) — is printed on stderr
+// ("jitter: multi-pass images averaged with glAccum ...") and recorded in the
+// sidecar's texture params; the two agree to one 8-bit step, so a window and
+// --png show the same picture and numbers whichever each used.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/context.hpp"
+#include "common/error.hpp"
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "common/text.hpp"
+#include "jitter_gl.hpp"
+#include "jitter_math.hpp"
+
+namespace {
+using jitter::Pattern;
+
+enum Mode { kOne, kRegular, kJitterGlobal, kJitterPixel, kReference, kModes };
+const char* const kModeNames[] = {"one", "regular", "jitter-global", "jitter-pixel", "reference"};
+enum View { kViewMode, kViewCompare, kViewPlot };
+enum Average { kAuto, kAccum, kFbo };
+constexpr int kMaxSide = 4;
+
+// The three n x n patterns the sweep covers, in the order of the arrays below.
+constexpr Pattern kKinds[3] = {Pattern::Regular, Pattern::JitterGlobal, Pattern::JitterPixel};
+const char* const kKindKeys[3] = {"regular", "jitter_global", "jitter_pixel"};
+const char* const kKindTitles[3] = {"regular", "jittered, one pattern", "jittered per pixel"};
+
+const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f}, kGrey{0.6f, 0.6f, 0.65f, 1.0f};
+const glm::vec4 kSeriesColour[3] = {{0.35f, 0.65f, 1.0f, 1.0f}, {1.0f, 0.55f, 0.2f, 1.0f}, {0.4f, 0.9f, 0.45f, 1.0f}};
+
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+// FNV-1a of the pixels: part of a computed texture's key, so the renderer's
+// upload cache never confuses two images.
+std::string digest(const ts::Image& img) {
+  uint64_t h = 1469598103934665603ull;
+  for (uint8_t b : img.pixels) h = (h ^ b) * 1099511628211ull;
+  char s[20];
+  std::snprintf(s, sizeof s, "%016llx", static_cast<unsigned long long>(h));
+  return s;
+}
+
+ts::TextureDesc imageTexture(const ts::Image& img, const std::string& what,
+                             std::vector<std::pair<std::string, std::string>> params) {
+  ts::TextureDesc t;
+  t.name = "jitter_render";
+  t.params = std::move(params);
+  t.params.insert(t.params.begin(), {"image", what});
+  t.params.push_back({"size", std::to_string(img.width) + "x" + std::to_string(img.height)});
+  t.params.push_back({"made_by", "the jitter demo's measure(): rerun the sidecar's command"});
+  t.params.push_back({"digest", digest(img)});
+  // Texture row 0 is t = 0 (the bottom); the image's row 0 is its top.
+  ts::Image flipped = img;
+  flipped.flipVertical();
+  t.image = std::make_shared<const ts::Image>(std::move(flipped));
+  t.minFilter = t.magFilter = GL_NEAREST;
+  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
+  return t;
+}
+
+// Signed error, 3x: orange where the image is brighter than the reference,
+// blue where darker, grey where equal.
+ts::Image errorPicture(const std::vector<double>& e, int w, int h) {
+  ts::Image out(w, h);
+  const glm::dvec3 mid(96, 96, 100), pos(255, 150, 40), neg(60, 140, 255);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      double v = std::clamp(3.0 * e[size_t(y) * size_t(w) + size_t(x)], -1.0, 1.0);
+      glm::dvec3 c = v >= 0 ? glm::mix(mid, pos, v) : glm::mix(mid, neg, -v);
+      out.set(x, y, {uint8_t(std::lround(c.r)), uint8_t(std::lround(c.g)), uint8_t(std::lround(c.b)), 255});
+    }
+  return out;
+}
+
+class Jitter final : public ts::Scene {
+ public:
+  std::string id() const override { return "jitter"; }
+  std::string title() const override { return "Figure VI.7 - jittered supersampling"; }
+  std::string about() const override {
+    return "A checkerboard receding to the horizon, sampled 1 per pixel, n x n at the subpixel centres, n x n\n"
+           "jittered with one pattern for all pixels (the Red Book's accumulation buffer), and n x n jittered\n"
+           "independently per pixel (the book).  Prints, per mode, the RMS error against a 256-sample reference,\n"
+           "split into aliasing (the part of a pixel's error its neighbours' errors predict: interference) and\n"
+           "noise (the unpredictable rest: grain).";
+  }
+  int defaultWidth() const override { return 1024; }
+  int defaultHeight() const override { return 560; }
+  bool wantsAccumBuffer() const override { return true; }
+
+  void addOptions(ts::Options& o) override {
+    o.addEnum("mode", &mode_, {kModeNames[0], kModeNames[1], kModeNames[2], kModeNames[3], kModeNames[4]},
+              "one sample | regular n x n | jittered, one pattern for all pixels | jittered per pixel | reference",
+              'm');
+    o.addInt("samples", &side_, 1, kMaxSide, "samples per side of a pixel, n (n x n per pixel; the book: 3)", '+', '-');
+    o.addInt("seed", &seed_, 0, 1000000, "seed of the jitter (the hash of seed, pixel and sample)", 's', 'S');
+    o.addEnum("view", &view_, {"mode", "compare", "plot"},
+              "mode: the current mode large; compare: every mode and the sample patterns; plot: error vs n", 'v');
+    o.addBool("error", &showError_, "show the error against the reference (orange brighter, blue darker, x3)", 'e');
+    o.addEnum("average", &average_, {"auto", "accum", "fbo"},
+              "how the passes are averaged: glAccum when the context has an accumulation buffer (auto), or FBO "
+              "averaging");
+  }
+
+  std::vector<ts::FigureSpec> figures() const override {
+    return {
+        {"vi7_jitter", "Figure VI.7",
+         "A checkerboard receding to the horizon, 288x192 pixels each: one sample per pixel; 3x3 samples at the "
+         "subpixel centres; 3x3 jittered with one pattern for every pixel (the accumulation buffer); 3x3 jittered "
+         "independently per pixel; below, each one's error against a 256-sample reference (x3). Regular samples "
+         "and one jitter pattern for all pixels keep interference patterns; jitter chosen per pixel turns them into "
+         "grain. Bottom: the reference, and the sample patterns of Figure VI.7: regular; jittered, one pattern for "
+         "every pixel; jittered anew in each pixel (2x2 pixels shown).",
+         {"--view", "compare", "--samples", "3", "--seed", "1"}, 1320, 760},
+        {"vi7_error_vs_samples", "Figure VI.7 (error vs samples)",
+         "RMS error against the reference, and its aliasing (the part of each pixel's error its neighbours' errors "
+         "predict), for 1, 4, 9 and 16 samples per pixel: "
+         "the error falls as samples rise; jitter per pixel leaves almost no aliasing; one jitter pattern for all "
+         "pixels keeps much of it (with seed 1 about as much as regular sampling; how much depends on the pattern).",
+         {"--view", "plot", "--seed", "1"}, 1024, 600},
+    };
+  }
+
+  ts::Measurements measure(ts::Renderer& r) override;
+  ts::Frame build(int width, int height) override;
+
+ private:
+  struct Result {
+    ts::Image image;
+    jitter::ErrorStats stats;
+    std::vector<double> error;
+    ts::TextureDesc texture;
+    std::shared_ptr<ts::TextureDesc> errorTexture;  // made on first use
+    bool valid = false;
+  };
+  void prepare(ts::Renderer& r);
+  void ensure(ts::Renderer& r, int kind, int side);
+  Result& result(int kind, int side) { return results_[size_t(kind)][size_t(side - 1)]; }
+  Result* current();
+  const ts::TextureDesc& errorTextureOf(Result& res);
+
+  void addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const ts::TextureDesc& tex) const;
+  void addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels) const;
+  void buildMode(ts::Frame& f, ts::Panel& canvas);
+  void buildCompare(ts::Frame& f, ts::Panel& canvas);
+  void buildPlot(ts::Frame& f, ts::Panel& canvas);
+  void addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::string& title, bool aliasing) const;
+
+  int mode_ = kJitterPixel, side_ = 3, seed_ = 1, view_ = kViewMode, average_ = kAuto;
+  bool showError_ = false;
+
+  // What measure() computed, for which seed and averaging.
+  bool accum_ = false;
+  std::string path_, printedPath_;
+  int preparedSeed_ = -1, preparedAverage_ = -1;
+  std::array<std::array<Result, kMaxSide>, 3> results_;
+  jitter::FloatImage reference_;
+  Result referenceResult_;
+};
+
+// Starts over for the current seed and averaging: the reference (once), the
+// averaging path; the images themselves are made on demand (ensure).
+void Jitter::prepare(ts::Renderer& r) {
+  const jitter::Camera cam;
+  if (reference_.rgb.empty()) {
+    reference_ = jitter::renderCpu(cam, Pattern::Reference, jitter::kReferenceSide, 0);
+    ts::Image ref(cam.width, cam.height);
+    for (size_t p = 0; p < size_t(cam.width) * size_t(cam.height); ++p)
+      for (int ch = 0; ch < 3; ++ch)
+        ref.pixels[p * 4 + size_t(ch)] = uint8_t(std::lround(reference_.rgb[p * 3 + size_t(ch)]));
+    referenceResult_.image = ref;
+    referenceResult_.error = jitter::errorImage(ref.pixels.data(), reference_);
+    referenceResult_.stats = jitter::analyse(referenceResult_.error, cam.width, cam.height);
+    referenceResult_.texture = imageTexture(ref, "reference", {{"samples", "16x16 stratified"}});
+    referenceResult_.valid = true;
+  }
+  accum_ = false;
+  if (average_ != kFbo) {
+    jitter::AccumStatus status = jitter::accumStatus(r, cam.width, cam.height);
+    if (average_ == kAccum && status != jitter::AccumStatus::Usable)
+      throw ts::Error("--average accum: " + jitter::reason(status) + "; use --average auto or fbo");
+    accum_ = status == jitter::AccumStatus::Usable;
+    path_ = jitter::describe(status);
+  } else {
+    path_ = "averaged in FBOs (--average fbo)";
+  }
+  // Which path: a note on stderr (like the backend fallback), once per
+  // change; not a measurement, because a window and --png may differ here and
+  // still show the same picture (FBO and glAccum agree to one 8-bit step).
+  if (path_ != printedPath_) {
+    std::fprintf(stderr, "jitter: multi-pass images %s\n", path_.c_str());
+    printedPath_ = path_;
+  }
+  for (auto& row : results_)
+    for (Result& res : row) res = Result();
+  preparedSeed_ = seed_;
+  preparedAverage_ = average_;
+}
+
+void Jitter::ensure(ts::Renderer& r, int kind, int side) {
+  Result& res = result(kind, side);
+  if (res.valid) return;
+  const jitter::Camera cam;
+  const uint32_t seed = uint32_t(seed_);
+  if (kKinds[kind] == Pattern::JitterPixel) {
+    res.image = r.renderOffscreen(jitter::pixelJitterPass(cam, side, seed));
+  } else {
+    std::vector<ts::Frame> passes;
+    for (glm::dvec2 o : jitter::passOffsets(kKinds[kind], side, seed)) passes.push_back(jitter::groundPass(cam, o));
+    res.image = accum_ ? jitter::accumulateWithAccumBuffer(r, passes) : jitter::accumulateWithFbo(r, passes);
+  }
+  res.error = jitter::errorImage(res.image.pixels.data(), reference_);
+  res.stats = jitter::analyse(res.error, cam.width, cam.height);
+  std::string n = std::to_string(side) + "x" + std::to_string(side);
+  res.texture = imageTexture(res.image, kKindKeys[kind],
+                             {{"samples", n},
+                              {"seed", kKinds[kind] == Pattern::Regular ? "-" : std::to_string(seed_)},
+                              {"averaging", kKinds[kind] == Pattern::JitterPixel ? "shader"
+                                            : accum_                             ? "glAccum"
+                                                                                 : "fbo"}});
+  res.errorTexture.reset();
+  res.valid = true;
+}
+
+Jitter::Result* Jitter::current() {
+  Result* res = &referenceResult_;
+  switch (mode_) {
+    case kOne: res = &result(0, 1); break;
+    case kRegular: res = &result(0, side_); break;
+    case kJitterGlobal: res = &result(1, side_); break;
+    case kJitterPixel: res = &result(2, side_); break;
+    default: break;
+  }
+  return res->valid ? res : nullptr;
+}
+
+const ts::TextureDesc& Jitter::errorTextureOf(Result& res) {
+  if (!res.errorTexture) {
+    const jitter::Camera cam;
+    auto params = res.texture.params;
+    params.erase(std::remove_if(params.begin(), params.end(),
+                                [](const auto& p) {
+                                  return p.first == "digest" || p.first == "size" || p.first == "image" ||
+                                         p.first == "made_by";
+                                }),
+                 params.end());
+    params.push_back({"of", res.texture.params.front().second});
+    res.errorTexture = std::make_shared<ts::TextureDesc>(
+        imageTexture(errorPicture(res.error, cam.width, cam.height), "error_x3", params));
+  }
+  return *res.errorTexture;
+}
+
+ts::Measurements Jitter::measure(ts::Renderer& r) {
+  if (preparedSeed_ != seed_ || preparedAverage_ != average_) prepare(r);
+  // The images this state shows and prints: the four modes at n, and in the
+  // plot view every pattern at n = 1..4.
+  ensure(r, 0, 1);
+  for (int kind = 0; kind < 3; ++kind) ensure(r, kind, side_);
+  if (view_ == kViewPlot)
+    for (int kind = 0; kind < 3; ++kind)
+      for (int side = 1; side <= kMaxSide; ++side) ensure(r, kind, side);
+  ts::Measurements out;
+  const std::string n = std::to_string(side_) + "x" + std::to_string(side_);
+  struct Row {
+    const char* key;
+    const Result* res;
+    std::string what;
+  } rows[] = {{"one", &result(0, 1), "1 sample at the pixel centre"},
+              {"regular", &result(0, side_), n + " at the subpixel centres"},
+              {"jitter_global", &result(1, side_), n + " jittered, one pattern for every pixel"},
+              {"jitter_pixel", &result(2, side_), n + " jittered independently per pixel"}};
+  for (const Row& row : rows) {
+    std::string k = std::string("[") + row.key + "]";
+    out.push_back({"rms" + k, row.res->stats.rms, "RMS error vs the 256-sample reference (1 = full scale); " + row.what});
+    out.push_back({"aliasing" + k, row.res->stats.aliasing,
+                   "RMS of the error its 24 neighbours' errors predict: interference, moire"});
+    out.push_back({"noise" + k, row.res->stats.noise, "RMS of the unpredictable rest: grain"});
+  }
+  if (view_ == kViewPlot)
+    for (int kind = 0; kind < 3; ++kind)
+      for (int side = 1; side <= kMaxSide; ++side) {
+        std::string k = std::string("[") + kKindKeys[kind] + "_" + std::to_string(side) + "x" + std::to_string(side) + "]";
+        out.push_back({"rms" + k, result(kind, side).stats.rms, "RMS error, " + std::to_string(side * side) + " samples"});
+        out.push_back({"aliasing" + k, result(kind, side).stats.aliasing, "its predictable part"});
+      }
+  return out;
+}
+
+// ---------------------------------------------------------------- drawing
+void Jitter::addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const ts::TextureDesc& tex) const {
+  ts::TextureDesc t = tex;
+  // Pixel-exact at 1:1; scaled down (a small window) it is filtered.
+  if (rect.w < t.image->width || rect.h < t.image->height) t.minFilter = GL_LINEAR;
+  int index = -1;
+  for (size_t i = 0; i < f.textures.size(); ++i)
+    if (f.textures[i].key() == t.key() && f.textures[i].minFilter == t.minFilter) index = int(i);
+  if (index < 0) index = f.addTexture(t);
+  ts::Panel p;
+  p.id = id;
+  p.viewport = rect;
+  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+  ts::Batch b;
+  b.role = "image";
+  b.texture = index;
+  for (int i : {0, 1, 2, 0, 2, 3}) {
+    glm::vec2 c = i == 0 ? glm::vec2(0, 0) : i == 1 ? glm::vec2(1, 0) : i == 2 ? glm::vec2(1, 1) : glm::vec2(0, 1);
+    b.vertices.push_back({{c, 0.0f}, {c, 0.0f, 1.0f}, {1, 1, 1, 1}});
+  }
+  p.batches.push_back(b);
+  f.panels.push_back(p);
+}
+
+// A pixel square of `box` (canvas pixels, y down) with its subpixel grid and
+// the sample points of `mode` (jitter-pixel: a 2 x 2 block of pixels, each
+// with its own jitter).
+void Jitter::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels) const {
+  const int n = mode == kOne ? 1 : mode == kReference ? jitter::kReferenceSide : side;
+  const int cells = mode == kJitterPixel ? 2 : 1;
+  const float cell = float(box.w) / float(cells);
+  std::vector<glm::vec2> grid, border, dots;
+  for (int cy = 0; cy < cells; ++cy)
+    for (int cx = 0; cx < cells; ++cx) {
+      float x0 = float(box.x) + cx * cell, y0 = float(box.y) + cy * cell;
+      border.insert(border.end(), {{x0, y0}, {x0 + cell, y0}, {x0 + cell, y0}, {x0 + cell, y0 + cell},
+                                   {x0 + cell, y0 + cell}, {x0, y0 + cell}, {x0, y0 + cell}, {x0, y0}});
+      if (mode != kOne && n <= 8)
+        for (int k = 1; k < n; ++k) {
+          float t = float(k) / float(n) * cell;
+          grid.insert(grid.end(), {{x0 + t, y0}, {x0 + t, y0 + cell}, {x0, y0 + t}, {x0 + cell, y0 + t}});
+        }
+      // The pixel shown: for jitter-pixel, (100 + cx, 100 + 1 - cy) of the image (GL rows from the bottom).
+      const int pi = 100 + cx, pj = 100 + (cells - 1 - cy);
+      Pattern p = mode == kJitterGlobal ? Pattern::JitterGlobal : mode == kJitterPixel ? Pattern::JitterPixel
+                  : mode == kReference ? Pattern::Reference : Pattern::Regular;
+      for (int k = 0; k < n * n; ++k) {
+        glm::dvec2 s = jitter::samplePos(p, n, uint32_t(seed_), pi, pj, k);
+        dots.push_back({x0 + float(s.x) * cell, y0 + float(1.0 - s.y) * cell});
+      }
+    }
+  canvas.batches.push_back(ts::lineSegments(grid, kGrey, 1.0f, "subpixel_grid"));
+  canvas.batches.push_back(ts::lineSegments(border, kWhite, 2.0f, "pixel_border"));
+  ts::Batch d = ts::lineSegments(dots, kAmber, 1.0f, "sample_points");
+  d.prim = ts::Prim::Points;
+  d.pointSize = n > 8 ? 3.0f : std::clamp(std::round(cell / float(4 * n)), 3.0f, 8.0f);
+  canvas.batches.push_back(d);
+  if (labels) {
+    std::string nn = std::to_string(n) + "x" + std::to_string(n);
+    std::string l1 = mode == kOne ? "1 sample" : mode == kReference ? "16x16 stratified" : mode == kRegular ? nn + " regular"
+                                                                                                     : nn + " jittered";
+    std::string l2 = mode == kOne ? "the pixel centre"
+                     : mode == kRegular ? "subpixel centres"
+                     : mode == kJitterGlobal ? "same in every pixel"
+                     : mode == kJitterPixel ? "new in every pixel"
+                                            : "jittered (the reference)";
+    float cx = float(box.x + box.w / 2), y = float(box.y + box.h + 5);
+    f.labels.push_back({cx, y, l1, kWhite, 1, ts::Align::Center});
+    f.labels.push_back({cx, y + 16, l2, kGrey, 1, ts::Align::Center});
+  }
+}
+
+ts::Frame Jitter::build(int width, int height) {
+  ts::Frame f;
+  f.width = width;
+  f.height = height;
+  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Panel canvas;
+  canvas.id = "canvas";
+  canvas.viewport = {0, 0, width, height};
+  canvas.projection = glm::ortho(0.0f, float(width), float(height), 0.0f, -1.0f, 1.0f);
+  if (view_ == kViewCompare) buildCompare(f, canvas);
+  else if (view_ == kViewPlot) buildPlot(f, canvas);
+  else buildMode(f, canvas);
+  f.panels.push_back(canvas);
+  return f;
+}
+
+void Jitter::buildMode(ts::Frame& f, ts::Panel& canvas) {
+  const int W = jitter::kImageW, H = jitter::kImageH, line = 19;
+  const int side = std::min(220, std::max(60, f.width / 4));
+  std::string n = std::to_string(side_) + "x" + std::to_string(side_);
+  std::string what = mode_ == kOne ? "1 sample per pixel"
+                     : mode_ == kRegular ? n + " regular samples per pixel"
+                     : mode_ == kJitterGlobal ? n + " jittered, one pattern for all pixels"
+                     : mode_ == kJitterPixel ? n + " jittered independently per pixel"
+                                             : "reference: 16x16 stratified samples per pixel";
+  f.labels.push_back({12.0f, 8.0f, "Figure VI.7: " + what + (showError_ ? "  (error x3)" : ""), kWhite, 1, ts::Align::Left});
+  // The image, as large as an integer zoom allows (or scaled down to fit).
+  int availW = std::max(1, f.width - side - 48), availH = std::max(1, f.height - 4 * line);
+  int zoom = std::min(availW / W, availH / H);
+  ts::Rect rect;
+  if (zoom >= 1) {
+    rect = {16, 2 * line, W * zoom, H * zoom};
+  } else {
+    double s = std::min(double(availW) / W, double(availH) / H);
+    rect = {16, 2 * line, std::max(1, int(W * s)), std::max(1, int(H * s))};
+  }
+  Result* res = current();
+  if (res) addImage(f, "image", rect, showError_ ? errorTextureOf(*res) : res->texture);
+  // The sample pattern and the numbers on the right.
+  int x = rect.x + rect.w + 24;
+  int box = std::min(side - 20, std::max(40, f.height / 3));
+  addPattern(f, canvas, {x, 2 * line + 4, box, box}, mode_, side_, true);
+  float y = float(2 * line + box + 48);
+  if (res && mode_ != kReference) {
+    f.labels.push_back({float(x), y, "RMS error " + fmt("%.4f", res->stats.rms), kAmber, 1, ts::Align::Left});
+    f.labels.push_back({float(x), y + line, "aliasing  " + fmt("%.4f", res->stats.aliasing), kAmber, 1, ts::Align::Left});
+    f.labels.push_back({float(x), y + 2 * line, "noise     " + fmt("%.4f", res->stats.noise), kAmber, 1, ts::Align::Left});
+  }
+}
+
+void Jitter::buildCompare(ts::Frame& f, ts::Panel& canvas) {
+  const int W = jitter::kImageW, H = jitter::kImageH, line = 17, gap = 24;
+  // At 1:1 the figure needs four images and three gaps across, three images
+  // and ten lines of text down; a smaller frame (a window) scales the images.
+  // Text above, between and below the three rows (see the rows below).
+  auto scaleFor = [&](int numberLines) {
+    const int textH = 2 * line + 2 + (numberLines + 1) * line + 10 + 2 * line + 2 * line;
+    return std::min({1.0, double(f.width - 16) / (4 * W + 3 * gap), double(f.height - textH) / (3 * H)});
+  };
+  double s = scaleFor(2);
+  const bool narrow = W * s < 220;  // the numbers take three lines instead of two
+  if (narrow) s = scaleFor(3);
+  const int w = std::max(1, int(W * s)), h = std::max(1, int(H * s)), g = std::max(6, int(gap * s));
+  const int left = std::max(0, (f.width - (4 * w + 3 * g)) / 2);
+  const std::string n = std::to_string(side_) + "x" + std::to_string(side_);
+  f.labels.push_back({float(f.width / 2), 4.0f,
+                      "Figure VI.7  jittered supersampling: " + n + " samples per pixel, seed " + std::to_string(seed_),
+                      kWhite, 1, ts::Align::Center});
+  if (!result(0, 1).valid || !result(0, side_).valid || !result(1, side_).valid || !result(2, side_).valid)
+    return;  // measure() makes them
+  const int modes[4] = {kOne, kRegular, kJitterGlobal, kJitterPixel};
+  const std::string titles[4] = {narrow ? "1 sample" : "1 sample per pixel", n + " regular",
+                                 n + (narrow ? " jitter, global" : " jittered, one pattern"),
+                                 n + (narrow ? " jitter, per pixel" : " jittered per pixel")};
+  const int numberLines = narrow ? 3 : 2;
+  const int rowA = 2 * line + 2;
+  const int rowB = rowA + h + (numberLines + 1) * line + 10;
+  const int rowC = rowB + h + 2 * line;
+  for (int k = 0; k < 4; ++k) {
+    Result& res = modes[k] == kOne ? result(0, 1)
+                                   : result(modes[k] == kRegular ? 0 : modes[k] == kJitterGlobal ? 1 : 2, side_);
+    int x = left + k * (w + g);
+    addImage(f, std::string("image_") + kModeNames[modes[k]], {x, rowA, w, h}, res.texture);
+    addImage(f, std::string("error_") + kModeNames[modes[k]], {x, rowB, w, h}, errorTextureOf(res));
+    float cx = float(x + w / 2);
+    f.labels.push_back({cx, float(rowA - line), titles[k], kWhite, 1, ts::Align::Center});
+    float y = float(rowA + h + 4);
+    f.labels.push_back({cx, y, "RMS error " + fmt("%.4f", res.stats.rms), kAmber, 1, ts::Align::Center});
+    if (narrow) {
+      f.labels.push_back({cx, y + line, "aliasing " + fmt("%.4f", res.stats.aliasing), kAmber, 1, ts::Align::Center});
+      f.labels.push_back({cx, y + 2 * line, "noise " + fmt("%.4f", res.stats.noise), kAmber, 1, ts::Align::Center});
+    } else {
+      f.labels.push_back({cx, y + line, "aliasing " + fmt("%.4f", res.stats.aliasing) + "  noise " +
+                                            fmt("%.4f", res.stats.noise),
+                          kAmber, 1, ts::Align::Center});
+    }
+  }
+  f.labels.push_back({float(f.width / 2), float(rowB - line - 2),
+                      "error against the reference, x3 (orange: too bright, blue: too dark)", kGrey, 1,
+                      ts::Align::Center});
+  // Bottom row: the reference, then the sample patterns of Figure VI.7.
+  addImage(f, "image_reference", {left, rowC, w, h}, referenceResult_.texture);
+  f.labels.push_back({float(left + w / 2), float(rowC + h + 4), "reference: 16x16 stratified", kWhite, 1,
+                      ts::Align::Center});
+  const int box = std::max(16, h - line);
+  const int patterns[3] = {kRegular, kJitterGlobal, kJitterPixel};
+  for (int k = 0; k < 3; ++k) {
+    int x = left + (k + 1) * (w + g) + (w - box) / 2;
+    addPattern(f, canvas, {x, rowC, box, box}, patterns[k], side_, true);
+  }
+}
+
+void Jitter::addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::string& title, bool aliasing) const {
+  const int line = 17;
+  ts::Panel p;
+  p.id = aliasing ? "plot_aliasing" : "plot_rms";
+  p.viewport = {area.x + 56, area.y + 2 * line, std::max(1, area.w - 72), std::max(1, area.h - 5 * line)};
+  double ymax = 0;
+  for (int kind = 0; kind < 3; ++kind)
+    for (int side = 1; side <= kMaxSide; ++side)
+      ymax = std::max(ymax, aliasing ? results_[size_t(kind)][size_t(side - 1)].stats.aliasing
+                                     : results_[size_t(kind)][size_t(side - 1)].stats.rms);
+  double step = 0.01;
+  for (double c : {0.005, 0.01, 0.02, 0.025, 0.05, 0.1})
+    if (ymax / c <= 6) {
+      step = c;
+      break;
+    }
+  ymax = std::max(step, step * std::ceil(ymax * 1.08 / step));
+  const double xmax = 17.0;
+  p.projection = glm::ortho(0.0f, float(xmax), 0.0f, float(ymax), -1.0f, 1.0f);
+  p.clear = true;
+  p.clearColor = {0.17f, 0.17f, 0.2f, 1.0f};
+  const ts::Rect& vp = p.viewport;
+  auto px = [&](double x, double y) {
+    return glm::vec2(float(vp.x + x / xmax * vp.w), float(vp.y + (1 - y / ymax) * vp.h));
+  };
+  std::vector<glm::vec2> grid;
+  for (double y = step; y < ymax - 1e-9; y += step) grid.insert(grid.end(), {{0.0f, float(y)}, {float(xmax), float(y)}});
+  for (int side = 1; side <= kMaxSide; ++side)
+    grid.insert(grid.end(), {{float(side * side), 0.0f}, {float(side * side), float(ymax)}});
+  p.batches.push_back(ts::lineSegments(grid, {0.32f, 0.32f, 0.36f, 1.0f}, 1.0f, "grid"));
+  for (int kind = 0; kind < 3; ++kind) {
+    std::vector<glm::vec2> pts;
+    for (int side = 1; side <= kMaxSide; ++side) {
+      const jitter::ErrorStats& s = results_[size_t(kind)][size_t(side - 1)].stats;
+      pts.push_back({float(side * side), float(aliasing ? s.aliasing : s.rms)});
+    }
+    ts::Batch curve = ts::lineSegments(pts, kSeriesColour[kind], 2.0f, std::string("series_") + kKindKeys[kind]);
+    curve.prim = ts::Prim::LineStrip;
+    p.batches.push_back(curve);
+    ts::Batch marks = ts::lineSegments(pts, kSeriesColour[kind], 1.0f, std::string("points_") + kKindKeys[kind]);
+    marks.prim = ts::Prim::Points;
+    marks.pointSize = 7.0f;
+    p.batches.push_back(marks);
+  }
+  f.panels.push_back(p);
+  // Axes on the canvas, labels.
+  canvas.batches.push_back(ts::lineSegments({{float(vp.x), float(vp.y + vp.h)}, {float(vp.x + vp.w), float(vp.y + vp.h)},
+                                             {float(vp.x), float(vp.y)}, {float(vp.x), float(vp.y + vp.h)}},
+                                            {0.85f, 0.85f, 0.85f, 1.0f}, 1.0f, "axes"));
+  f.labels.push_back({float(vp.x + vp.w / 2), float(area.y), title, kWhite, 1, ts::Align::Center});
+  for (double y = 0; y <= ymax + 1e-9; y += step) {
+    glm::vec2 q = px(0, y);
+    f.labels.push_back({q.x - 6, q.y - 6, fmt(step < 0.01 ? "%.3f" : "%.2f", y), kGrey, 1, ts::Align::Right});
+  }
+  for (int side = 1; side <= kMaxSide; ++side) {
+    glm::vec2 q = px(side * side, 0);
+    f.labels.push_back({q.x, q.y + 6, std::to_string(side * side), kGrey, 1, ts::Align::Center});
+  }
+  f.labels.push_back({float(vp.x + vp.w / 2), float(vp.y + vp.h + 6 + line), "samples per pixel", kGrey, 1,
+                      ts::Align::Center});
+}
+
+void Jitter::buildPlot(ts::Frame& f, ts::Panel& canvas) {
+  const int line = 17;
+  f.labels.push_back({float(f.width / 2), 6.0f,
+                      "Figure VI.7  error against a 256-sample reference, seed " + std::to_string(seed_),
+                      kWhite, 1, ts::Align::Center});
+  for (const auto& row : results_)
+    for (const Result& res : row)
+      if (!res.valid) return;  // measure() makes them (view=plot)
+  const int tableH = 6 * line + 8;
+  const int plotH = std::max(60, f.height - 2 * line - tableH);
+  addPlot(f, canvas, {0, 2 * line, f.width / 2, plotH}, "RMS error (1 = full scale)", false);
+  addPlot(f, canvas, {f.width / 2, 2 * line, f.width - f.width / 2, plotH}, "aliasing: the predictable part of the error",
+          true);
+  // Legend and table: one row per pattern, RMS / aliasing at 1, 4, 9, 16.
+  float y = float(2 * line + plotH + 4);
+  const float nameW = 170.0f, colW = std::min(150.0f, float(f.width - 16 - 170) / 4.0f);
+  const float x0 = std::max(8.0f, (float(f.width) - nameW - 4 * colW) / 2.0f);
+  f.labels.push_back({x0, y, "RMS error / aliasing", kGrey, 1, ts::Align::Left});
+  for (int side = 1; side <= kMaxSide; ++side)
+    f.labels.push_back({x0 + nameW + colW * float(side - 1), y,
+                        std::to_string(side * side) + (side == 1 ? " sample" : " samples"), kGrey, 1, ts::Align::Left});
+  for (int kind = 0; kind < 3; ++kind) {
+    y += float(line);
+    f.labels.push_back({x0, y, kKindTitles[kind], kSeriesColour[kind], 1, ts::Align::Left});
+    for (int side = 1; side <= kMaxSide; ++side) {
+      const jitter::ErrorStats& s = results_[size_t(kind)][size_t(side - 1)].stats;
+      f.labels.push_back({x0 + nameW + colW * float(side - 1), y, fmt("%.4f", s.rms) + " / " + fmt("%.4f", s.aliasing),
+                          kSeriesColour[kind], 1, ts::Align::Left});
+    }
+  }
+}
+}  // namespace
+
+TM_REGISTER_SCENE(Jitter);

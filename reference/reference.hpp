@@ -1,0 +1,112 @@
+// reference/reference.hpp — a Frame drawn on the CPU, without OpenGL, the
+// way a conformant OpenGL implementation draws it (common/render.cpp's
+// state: per-panel viewport and scissor, the panel's matrices, glBegin with
+// one glTexCoord4f/glColor4f per glVertex3f, fixed-function GL_REPLACE or
+// GL_MODULATE, or the "bilinear_quad" program of demos/quad_distortion).
+//
+// It produces two things:
+//   * image(): the reference picture — each covered pixel centre (scanline
+//     rasterizer, raster.hpp) textured at its exact coordinate and LOD;
+//   * for every pixel, the list of fragments that may legally end up there
+//     (the "candidates"): normally one; near a triangle's boundary (within
+//     RenderOptions::edgeBand pixels) both the triangle and whatever was
+//     under it; under lines, points, labels, blended or unsupported batches
+//     an exempt marker.  verify.hpp turns candidates into legal colour ranges.
+//
+// Vertex processing: clip = projection * modelview * (pos, 1); clipped to
+// -w <= z <= w; window x = vx + (ndc.x + 1) vw / 2, GL window
+// y = (H - vy - vh) + (ndc.y + 1) vh / 2 (the panel's top-left viewport made
+// bottom-left exactly as render.cpp does), image y = H - GL y.
+// Interpolation: Perspective (hyperbolic: a/w and 1/w screen-linear) — what
+// GL does whatever GL_PERSPECTIVE_CORRECTION_HINT says — or Affine
+// (screen-linear a), the "without" of Figure VI.2.  Texture coordinates are
+// then divided by q.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "common/frame.hpp"
+#include "common/image.hpp"
+#include "raster.hpp"
+#include "sampler.hpp"
+
+namespace ref {
+enum class Interpolation { Perspective, Affine };
+// Pixels near a triangle's boundary: checked against both sides (Union) or
+// not checked (Exempt).
+enum class EdgePolicy { Union, Exempt };
+
+struct RenderOptions {
+  Interpolation interpolation = Interpolation::Perspective;
+  FillRule fill = FillRule::GLTopLeft;  // llvmpipe's, measured
+  bool labels = true;              // the image has labels: draw them, exempt their boxes
+  bool labelGeometryKnown = true;  // false (a sidecar without label scale/align): exempt wide boxes
+  double edgeBand = 1.0;           // pixels
+  EdgePolicy edges = EdgePolicy::Union;
+  double lineMargin = 1.0;  // exempt this many pixels beyond a line's or point's footprint
+  LodModel lodModel = LodModel::Bounded;
+  double lodMargin = 0.1;     // levels added on both sides of the LOD interval
+  double depthEpsilon = 1e-5;  // window z closer than this: either fragment may win
+};
+
+enum class Exempt : uint8_t { None, Line, Point, Label, Program, Blend, Unsupported, Edge, Count };
+const char* exemptName(Exempt e);
+
+struct Candidate {
+  enum class Kind : uint8_t { Flat, Textured, Exempt };
+  Kind kind = Kind::Flat;
+  Exempt why = Exempt::None;
+  bool modulate = false;  // GL_MODULATE: texture times colour
+  int texture = -1;       // index into Reference::textures()
+  int next = -1;          // the next candidate of the same pixel
+  Colour colour{};        // flat colour, or the fragment's primary colour
+  double s = 0, t = 0;    // texture coordinate after the division by q
+  float lodLo = 0, lodHi = 0;  // lambda_base interval (without bias), margin included
+  float rho = 0;               // texels per pixel (for position jitter)
+  float z = 1;
+};
+
+class Reference {
+ public:
+  Reference(const ts::Frame& frame, const RenderOptions& options = {});
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const ts::Image& image() const { return image_; }
+  const RenderOptions& options() const { return opts_; }
+  // The first candidate of pixel (x, y) (top-left origin), -1 = only the
+  // frame's clear colour; follow Candidate::next.
+  int head(int x, int y) const { return head_[size_t(y) * size_t(width_) + size_t(x)]; }
+  const Candidate& candidate(int i) const { return pool_[size_t(i)]; }
+  const Colour& clearColour() const { return clear_; }
+  const std::vector<Texture>& textures() const { return textures_; }
+  // A copy with the frame's labels drawn and exempt (for an image rendered
+  // with labels, from a reference made with RenderOptions::labels off).
+  Reference withLabels(const ts::Frame& frame, bool geometryKnown = true) const;
+  // Notes about what could not be modelled (unsupported programs etc.).
+  const std::vector<std::string>& notes() const { return notes_; }
+
+ private:
+  struct Poly;
+  void drawPanel(const ts::Panel& p);
+  void drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect scissor);
+  void drawLines(const ts::Panel& p, const ts::Batch& b, PixelRect scissor);
+  void drawLabels(const ts::Frame& f);
+  void place(int x, int y, const Candidate& c, bool sure, bool depthTest);
+  void exemptDisc(double x, double y, double r, Exempt why, PixelRect clip);
+  void note(const std::string& s);
+
+  RenderOptions opts_;
+  int width_ = 0, height_ = 0;
+  ts::Image image_;
+  std::vector<float> depth_;  // reference depth buffer (window z)
+  std::vector<int> head_;
+  std::vector<Candidate> pool_;
+  std::vector<Texture> textures_;
+  Colour clear_{};
+  std::vector<std::string> notes_;
+};
+
+// The image rectangle a label covers as render.cpp draws it (text plus
+// background padding), in pixels [x0, x1) x [y0, y1), with `margin` around.
+PixelRect labelBox(const ts::Label& l, int margin, bool geometryKnown);
+}  // namespace ref

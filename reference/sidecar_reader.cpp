@@ -1,0 +1,324 @@
+#include "sidecar_reader.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "common/error.hpp"
+#include "common/textures.hpp"
+#include "json.hpp"
+
+namespace ref {
+namespace {
+using json::Value;
+
+[[noreturn]] void fail(const std::string& where, const std::string& what) {
+  throw ts::Error("sidecar: " + where + ": " + what);
+}
+
+const Value& member(const Value& v, const std::string& key, const std::string& where) {
+  const Value* m = v.find(key);
+  if (!m) fail(where, "missing key '" + key + "'");
+  return *m;
+}
+
+double number(const Value& v, const std::string& where) {
+  try {
+    return v.asNumber();
+  } catch (const ts::Error& e) {
+    fail(where, e.what());
+  }
+}
+std::string text(const Value& v, const std::string& where) {
+  if (!v.isString()) fail(where, std::string("expected a string, found ") + json::typeName(v.type));
+  return v.string;
+}
+bool boolean(const Value& v, const std::string& where) {
+  if (v.type != Value::Type::Bool) fail(where, std::string("expected true/false, found ") + json::typeName(v.type));
+  return v.boolean;
+}
+template <int N>
+glm::vec<N, float> vec(const Value& v, const std::string& where) {
+  if (!v.isArray() || v.array.size() != size_t(N)) fail(where, "expected an array of " + std::to_string(N) + " numbers");
+  glm::vec<N, float> out;
+  for (int i = 0; i < N; ++i) out[i] = float(number(v.array[size_t(i)], where));
+  return out;
+}
+glm::mat4 mat(const Value& v, const std::string& where) {
+  if (!v.isArray() || v.array.size() != 16) fail(where, "expected 16 numbers (column-major)");
+  glm::mat4 m;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) m[c][r] = float(number(v.array[size_t(c * 4 + r)], where));
+  return m;
+}
+
+int intParam(const std::vector<std::pair<std::string, std::string>>& p, const std::string& key,
+             const std::string& name) {
+  for (const auto& [k, v] : p)
+    if (k == key) {
+      char* end = nullptr;
+      long x = std::strtol(v.c_str(), &end, 10);
+      if (v.empty() || *end) fail("texture '" + name + "'", "param " + key + " = '" + v + "' is not an integer");
+      return int(x);
+    }
+  fail("texture '" + name + "'", "missing param '" + key + "'");
+}
+std::string strParam(const std::vector<std::pair<std::string, std::string>>& p, const std::string& key,
+                     const std::string& name) {
+  for (const auto& [k, v] : p)
+    if (k == key) return v;
+  fail("texture '" + name + "'", "missing param '" + key + "'");
+}
+ts::Rgba rgbaParam(const std::vector<std::pair<std::string, std::string>>& p, const std::string& key,
+                   const std::string& name) {
+  std::string v = strParam(p, key, name);
+  int c[4];
+  char tail = 0;
+  if (std::sscanf(v.c_str(), "%d,%d,%d,%d%c", &c[0], &c[1], &c[2], &c[3], &tail) != 4)
+    fail("texture '" + name + "'", "param " + key + " = '" + v + "' is not r,g,b,a");
+  for (int x : c)
+    if (x < 0 || x > 255) fail("texture '" + name + "'", "param " + key + " = '" + v + "' is out of 0..255");
+  return {uint8_t(c[0]), uint8_t(c[1]), uint8_t(c[2]), uint8_t(c[3])};
+}
+
+ts::Prim primFromName(const std::string& s, const std::string& where) {
+  if (s == "triangles") return ts::Prim::Triangles;
+  if (s == "lines") return ts::Prim::Lines;
+  if (s == "line_strip") return ts::Prim::LineStrip;
+  if (s == "line_loop") return ts::Prim::LineLoop;
+  if (s == "points") return ts::Prim::Points;
+  fail(where, "unknown primitive '" + s + "'");
+}
+}  // namespace
+
+GLenum glEnumFromName(const std::string& name) {
+  static const std::pair<const char*, GLenum> k[] = {
+      {"GL_NEAREST", GL_NEAREST},
+      {"GL_LINEAR", GL_LINEAR},
+      {"GL_NEAREST_MIPMAP_NEAREST", GL_NEAREST_MIPMAP_NEAREST},
+      {"GL_LINEAR_MIPMAP_NEAREST", GL_LINEAR_MIPMAP_NEAREST},
+      {"GL_NEAREST_MIPMAP_LINEAR", GL_NEAREST_MIPMAP_LINEAR},
+      {"GL_LINEAR_MIPMAP_LINEAR", GL_LINEAR_MIPMAP_LINEAR},
+      {"GL_REPEAT", GL_REPEAT},
+      {"GL_MIRRORED_REPEAT", GL_MIRRORED_REPEAT},
+      {"GL_CLAMP_TO_EDGE", GL_CLAMP_TO_EDGE},
+      {"GL_CLAMP_TO_BORDER", GL_CLAMP_TO_BORDER},
+      {"GL_CLAMP", GL_CLAMP},
+      {"GL_REPLACE", GL_REPLACE},
+      {"GL_MODULATE", GL_MODULATE},
+      {"GL_DECAL", GL_DECAL},
+      {"GL_BLEND", GL_BLEND},
+      {"GL_ADD", GL_ADD},
+      {"GL_FASTEST", GL_FASTEST},
+      {"GL_NICEST", GL_NICEST},
+      {"GL_DONT_CARE", GL_DONT_CARE},
+  };
+  for (const auto& [n, e] : k)
+    if (name == n) return e;
+  if (name.size() > 2 && name[0] == '0' && (name[1] == 'x' || name[1] == 'X')) {
+    char* end = nullptr;
+    unsigned long v = std::strtoul(name.c_str() + 2, &end, 16);
+    if (*end == 0) return GLenum(v);
+  }
+  throw ts::Error("sidecar: unknown GL enum '" + name + "'");
+}
+
+ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pair<std::string, std::string>>& p,
+                              const std::string& baseDir) {
+  if (name == "checkerboard")
+    return ts::checkerboard(intParam(p, "size", name), intParam(p, "checks", name), rgbaParam(p, "color_a", name),
+                            rgbaParam(p, "color_b", name));
+  if (name == "texel_index") return ts::texelIndexTexture(intParam(p, "size", name));
+  if (name == "labelled_grid") return ts::labelledGrid(intParam(p, "size", name), intParam(p, "cells", name));
+  if (name == "mip_level_colours") return ts::mipLevelColours(intParam(p, "size", name));
+  if (name == "file") {
+    std::string path = strParam(p, "path", name);
+    if (!baseDir.empty() && !path.empty() && path[0] != '/') path = baseDir + "/" + path;
+    ts::TextureDesc t = ts::fileTexture(path);
+    t.params = p;  // keep the recorded key
+    return t;
+  }
+  throw ts::Error("sidecar: unknown texture generator '" + name +
+                  "' (known: checkerboard, texel_index, labelled_grid, mip_level_colours, file)");
+}
+
+static SidecarScene read(const std::string& jsonText, const std::string& baseDir) {
+  Value doc = json::parse(jsonText);
+  if (!doc.isObject()) fail("document", "expected an object");
+  SidecarScene out;
+  auto optText = [&](const char* key, std::string* dst) {
+    if (const Value* v = doc.find(key)) *dst = text(*v, key);
+  };
+  optText("figure", &out.figure);
+  optText("book_number", &out.bookNumber);
+  optText("caption", &out.caption);
+  optText("demo", &out.demo);
+  optText("command", &out.command);
+  if (const Value* st = doc.find("state"))
+    for (const auto& [k, v] : st->object) out.state.emplace_back(k, text(v, "state." + k));
+
+  ts::Frame& f = out.frame;
+  const Value& size = member(doc, "size", "document");
+  if (!size.isArray() || size.array.size() != 2) fail("size", "expected [width, height]");
+  f.width = int(number(size.array[0], "size"));
+  f.height = int(number(size.array[1], "size"));
+  if (f.width < 1 || f.height < 1 || f.width > ts::kMaxImageDimension || f.height > ts::kMaxImageDimension)
+    fail("size", std::to_string(f.width) + "x" + std::to_string(f.height) + " is out of range");
+  if (const Value* c = doc.find("clear_color")) f.clearColor = vec<4>(*c, "clear_color");
+  if (const Value* h = doc.find("perspective_correction_hint")) {
+    try {
+      f.perspectiveHint = glEnumFromName(text(*h, "perspective_correction_hint"));
+    } catch (const ts::Error& e) {
+      fail("perspective_correction_hint", e.what());
+    }
+  }
+
+  const Value& textures = member(doc, "textures", "document");
+  for (size_t i = 0; i < textures.asArray().size(); ++i) {
+    const Value& t = textures.array[i];
+    std::string where = "textures[" + std::to_string(i) + "]";
+    std::string name = text(member(t, "name", where), where + ".name");
+    std::vector<std::pair<std::string, std::string>> params;
+    if (const Value* pv = t.find("params"))
+      for (const auto& [k, v] : pv->object) params.emplace_back(k, text(v, where + ".params." + k));
+    ts::TextureDesc d;
+    try {
+      d = remakeTexture(name, params, baseDir);
+    } catch (const ts::Error& e) {
+      fail(where, e.what());
+    }
+    if (const Value* w = t.find("width"))
+      if (d.image && int(number(*w, where)) != d.image->width) fail(where, "the remade texture's width differs");
+    if (const Value* h = t.find("height"))
+      if (d.image && int(number(*h, where)) != d.image->height) fail(where, "the remade texture's height differs");
+    const Value& mips = member(t, "mipmaps", where);
+    if (mips.type == Value::Type::Bool) {
+      if (mips.boolean) fail(where, "mipmaps: true is not a kind of chain");
+      d.mipmaps = false;
+      d.mipLevels = nullptr;
+    } else {
+      std::string kind = text(mips, where + ".mipmaps");
+      d.mipmaps = true;
+      if (kind == "explicit") {
+        if (!d.mipLevels) fail(where, "explicit mip levels, but generator '" + name + "' makes none");
+      } else if (kind == "box_2x2" || kind == "box_linear_light") {
+        d.mipLevels = nullptr;
+        d.linearLightMips = kind == "box_linear_light";
+      } else {
+        fail(where, "unknown mip chain '" + kind + "'");
+      }
+    }
+    try {
+      d.minFilter = glEnumFromName(text(member(t, "min_filter", where), where));
+      d.magFilter = glEnumFromName(text(member(t, "mag_filter", where), where));
+      d.wrapS = glEnumFromName(text(member(t, "wrap_s", where), where));
+      d.wrapT = glEnumFromName(text(member(t, "wrap_t", where), where));
+    } catch (const ts::Error& e) {
+      fail(where, e.what());
+    }
+    if (const Value* b = t.find("border")) d.border = vec<4>(*b, where + ".border");
+    if (const Value* a = t.find("max_anisotropy")) d.maxAnisotropy = float(number(*a, where));
+    if (const Value* b = t.find("lod_bias")) d.lodBias = float(number(*b, where));
+    f.textures.push_back(std::move(d));
+  }
+
+  if (const Value* progs = doc.find("programs"))
+    for (size_t i = 0; i < progs->asArray().size(); ++i) {
+      const Value& p = progs->array[i];
+      std::string where = "programs[" + std::to_string(i) + "]";
+      ts::Program prog;
+      if (const Value* s = p.find("source")) prog.file = text(*s, where);
+      f.programs.emplace_back(text(member(p, "name", where), where), prog);
+    }
+
+  const Value& panels = member(doc, "panels", "document");
+  for (size_t pi = 0; pi < panels.asArray().size(); ++pi) {
+    const Value& pv = panels.array[pi];
+    std::string where = "panels[" + std::to_string(pi) + "]";
+    ts::Panel p;
+    if (const Value* id = pv.find("id")) p.id = text(*id, where + ".id");
+    glm::vec4 vp = vec<4>(member(pv, "viewport", where), where + ".viewport");
+    p.viewport = {int(vp.x), int(vp.y), int(vp.z), int(vp.w)};
+    if (const Value* d = pv.find("depth_test")) p.depthTest = boolean(*d, where + ".depth_test");
+    if (const Value* c = pv.find("clear")) p.clear = boolean(*c, where + ".clear");
+    else out.missing.push_back(where + ".clear");
+    if (const Value* c = pv.find("clear_color")) p.clearColor = vec<4>(*c, where + ".clear_color");
+    p.projection = mat(member(pv, "projection", where), where + ".projection");
+    p.modelview = mat(member(pv, "modelview", where), where + ".modelview");
+    const Value& batches = member(pv, "batches", where);
+    for (size_t bi = 0; bi < batches.asArray().size(); ++bi) {
+      const Value& bv = batches.array[bi];
+      std::string bw = where + ".batches[" + std::to_string(bi) + "]";
+      ts::Batch b;
+      if (const Value* r = bv.find("role")) b.role = text(*r, bw + ".role");
+      b.prim = primFromName(text(member(bv, "primitive", bw), bw + ".primitive"), bw);
+      b.texture = int(number(member(bv, "texture", bw), bw + ".texture"));
+      if (b.texture >= int(f.textures.size()) || b.texture < -1) fail(bw, "texture index out of range");
+      try {
+        b.texEnv = glEnumFromName(text(member(bv, "tex_env", bw), bw + ".tex_env"));
+      } catch (const ts::Error& e) {
+        fail(bw, e.what());
+      }
+      if (const Value* pr = bv.find("program")) b.program = text(*pr, bw + ".program");
+      if (const Value* us = bv.find("uniforms"))
+        for (const auto& [k, v] : us->object) b.uniforms.push_back({k, vec<4>(v, bw + ".uniforms." + k)});
+      if (const Value* lw = bv.find("line_width")) b.lineWidth = float(number(*lw, bw));
+      if (const Value* ps = bv.find("point_size")) b.pointSize = float(number(*ps, bw));
+      else if (b.prim == ts::Prim::Points) out.missing.push_back(bw + ".point_size");
+      if (const Value* bl = bv.find("blend")) b.blend = boolean(*bl, bw + ".blend");
+      const Value& verts = member(bv, "vertices", bw);
+      for (size_t vi = 0; vi < verts.asArray().size(); ++vi) {
+        const Value& vv = verts.array[vi];
+        std::string vw = bw + ".vertices[" + std::to_string(vi) + "]";
+        ts::Vertex x;
+        x.pos = vec<3>(member(vv, "pos", vw), vw + ".pos");
+        if (const Value* t = vv.find("tex")) x.tex = vec<4>(*t, vw + ".tex");
+        if (const Value* c = vv.find("color")) x.color = vec<4>(*c, vw + ".color");
+        b.vertices.push_back(x);
+      }
+      p.batches.push_back(std::move(b));
+    }
+    f.panels.push_back(std::move(p));
+  }
+
+  if (const Value* labels = doc.find("labels"))
+    for (size_t i = 0; i < labels->asArray().size(); ++i) {
+      const Value& lv = labels->array[i];
+      std::string where = "labels[" + std::to_string(i) + "]";
+      ts::Label l;
+      l.x = float(number(member(lv, "x", where), where + ".x"));
+      l.y = float(number(member(lv, "y", where), where + ".y"));
+      l.text = text(member(lv, "text", where), where + ".text");
+      if (const Value* s = lv.find("scale")) l.scale = int(number(*s, where + ".scale"));
+      else out.labelGeometryKnown = false, out.missing.push_back(where + ".scale");
+      if (const Value* a = lv.find("align")) {
+        std::string al = text(*a, where + ".align");
+        if (al == "left") l.align = ts::Align::Left;
+        else if (al == "center" || al == "centre") l.align = ts::Align::Center;
+        else if (al == "right") l.align = ts::Align::Right;
+        else fail(where, "unknown align '" + al + "'");
+      } else {
+        out.labelGeometryKnown = false;
+        out.missing.push_back(where + ".align");
+      }
+      if (const Value* c = lv.find("color")) l.color = vec<4>(*c, where + ".color");
+      if (const Value* b = lv.find("background")) l.background = vec<4>(*b, where + ".background");
+      f.labels.push_back(std::move(l));
+    }
+  return out;
+}
+
+SidecarScene readSidecar(const std::string& jsonText) { return read(jsonText, ""); }
+
+SidecarScene readSidecarFile(const std::string& path, const std::string& baseDir) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ts::Error(path + ": cannot open");
+  std::ostringstream s;
+  s << in.rdbuf();
+  try {
+    return read(s.str(), baseDir);
+  } catch (const ts::Error& e) {
+    throw ts::Error(path + ": " + e.what());
+  }
+}
+}  // namespace ref

@@ -1,0 +1,45 @@
+// reference/sidecar_reader.hpp — the sidecar JSON (common/sidecar.cpp) read
+// back into a ts::Frame, so a figure can be recomputed from the file alone.
+//
+// Textures are re-made from their name and params with the generators of
+// common/textures.cpp ("checkerboard", "texel_index", "labelled_grid",
+// "mip_level_colours", and "file" from its path); filters, wraps, border, LOD
+// bias and the kind of mip chain come from the file.  An unknown texture name
+// throws ts::Error "sidecar: texture 0: unknown generator 'x' ...".
+//
+// What the sidecar does not record (as of this writing) is left at the
+// Frame's defaults and flagged in `missing`: a panel's own clear colour,
+// points' size, and the labels' scale, alignment, colour and background.
+// Keys for them are read when present ("clear", "clear_color", "point_size",
+// "scale", "align", "color", "background"), so the writer can add them.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/frame.hpp"
+
+namespace ref {
+struct SidecarScene {
+  ts::Frame frame;
+  std::string figure, bookNumber, caption, demo, command;
+  std::vector<std::pair<std::string, std::string>> state;
+  // True when every label carried its scale and alignment (its box is then
+  // exact); false: a verifier should exempt a conservative box around labels.
+  bool labelGeometryKnown = true;
+  std::vector<std::string> missing;  // keys the file lacked, e.g. "labels[0].scale"
+};
+
+SidecarScene readSidecar(const std::string& jsonText);
+// Reads a file; "file" textures with relative paths are resolved against
+// `baseDir` (default: the current directory).
+SidecarScene readSidecarFile(const std::string& path, const std::string& baseDir = "");
+
+// The texture a sidecar entry describes (generator + params only; filters,
+// wraps and mip settings are not applied).  Throws ts::Error for unknown
+// names or missing/invalid params.
+ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pair<std::string, std::string>>& params,
+                              const std::string& baseDir = "");
+// "GL_LINEAR" -> GL_LINEAR; also "0x2601".  Throws ts::Error for unknown names.
+GLenum glEnumFromName(const std::string& name);
+}  // namespace ref

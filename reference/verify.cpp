@@ -1,0 +1,230 @@
+#include "verify.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+#include "common/error.hpp"
+
+namespace ref {
+namespace {
+std::string rgba(ts::Rgba c) {
+  return "(" + std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b) + "," +
+         std::to_string(c.a) + ")";
+}
+std::string box(const Box& b) {
+  ts::Rgba lo = toRgba(b.lo), hi = toRgba(b.hi);
+  if (lo == hi) return rgba(lo);
+  return rgba(lo) + ".." + rgba(hi);
+}
+bool inside(ts::Rgba c, const Box& b, int tol) {
+  const int v[4] = {c.r, c.g, c.b, c.a};
+  for (size_t k = 0; k < 4; ++k) {
+    long lo = std::lround(double(b.lo[k]) * 255.0) - tol, hi = std::lround(double(b.hi[k]) * 255.0) + tol;
+    if (v[k] < lo || v[k] > hi) return false;
+  }
+  return true;
+}
+Box widen(const Colour& c, double e) {
+  Box b;
+  for (size_t k = 0; k < 4; ++k)
+    b.lo[k] = float(std::max(0.0, c[k] - e)), b.hi[k] = float(std::min(1.0, c[k] + e));
+  return b;
+}
+std::string writeImage(const std::string& dir, const std::string& stem, const char* kind, const ts::Image& img,
+                       std::vector<std::string>* files) {
+  std::string path = dir + "/" + stem + "." + kind + ".png";
+  try {
+    ts::writePng(path, img);
+    files->push_back(path);
+  } catch (const ts::Error& e) {
+    files->push_back(std::string("(not written: ") + e.what() + ")");
+  }
+  return path;
+}
+}  // namespace
+
+std::string failureDir(const std::string& requested) {
+  std::string dir = requested;
+  if (dir.empty()) {
+    const char* env = std::getenv("TS_ORACLE_OUT");
+    dir = env && *env ? env : "oracle_failures";
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  return dir;
+}
+
+void legalAt(const Reference& r, int x, int y, const VerifyOptions& o, std::vector<Box>* outp, Exempt* why) {
+  std::vector<Box>& out = *outp;
+  out.clear();
+  *why = Exempt::None;
+  int h = r.head(x, y);
+  if (h < 0) {
+    out.push_back(widen(r.clearColour(), 0.0));
+    return;
+  }
+  for (int i = h; i >= 0; i = r.candidate(i).next) {
+    const Candidate& c = r.candidate(i);
+    switch (c.kind) {
+      case Candidate::Kind::Exempt:
+        *why = c.why;
+        out.clear();
+        return;
+      case Candidate::Kind::Flat: out.push_back(widen(c.colour, o.colourEps)); break;
+      case Candidate::Kind::Textured: {
+        const Texture& t = r.textures()[size_t(c.texture)];
+        double jitter = o.positionEpsPixels * double(c.rho);
+        size_t first = out.size();
+        t.legal(c.s, c.t, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter, o.linearEpsTexels + jitter, &out);
+        if (c.modulate) {
+          Box col = widen(c.colour, o.colourEps);
+          for (size_t k = first; k < out.size(); ++k)
+            for (size_t ch = 0; ch < 4; ++ch)
+              out[k].lo[ch] *= col.lo[ch], out[k].hi[ch] *= col.hi[ch];
+        }
+        break;
+      }
+    }
+  }
+}
+
+VerifyResult verifyImage(const ts::Image& got, const ts::Frame& frame, const VerifyOptions& o) {
+  Reference r(frame, o.render);
+  return verifyImage(got, r, o);
+}
+
+VerifyResult verifyImage(const ts::Image& got, const Reference& r, const VerifyOptions& o) {
+  VerifyResult res;
+  res.name = o.name;
+  res.maxInvalid = o.maxInvalid;
+  res.notes = r.notes();
+  res.reference = r.image();
+  if (got.width != r.width() || got.height != r.height()) {
+    res.invalid = 1;
+    res.checked = 1;
+    res.notes.push_back("image is " + std::to_string(got.width) + "x" + std::to_string(got.height) +
+                        ", the frame " + std::to_string(r.width()) + "x" + std::to_string(r.height()));
+    return res;
+  }
+  res.mask = ts::Image(got.width, got.height, {0, 0, 0, 255});
+  std::vector<Box> legal;
+  legal.reserve(16);
+  for (int y = 0; y < got.height; ++y)
+    for (int x = 0; x < got.width; ++x) {
+      ++res.pixels;
+      Exempt why;
+      legalAt(r, x, y, o, &legal, &why);
+      if (why != Exempt::None) {
+        ++res.exempt;
+        ++res.exemptBy[size_t(why)];
+        res.mask.set(x, y, {0, 0, 110, 255});
+        continue;
+      }
+      ++res.checked;
+      bool edge = r.head(x, y) >= 0 && r.candidate(r.head(x, y)).next >= 0;
+      if (edge) ++res.edges;
+      for (int i = r.head(x, y); i >= 0; i = r.candidate(i).next)
+        if (r.candidate(i).kind == Candidate::Kind::Textured) {
+          ++res.textured;
+          break;
+        }
+      {
+        float lo[4] = {2, 2, 2, 2}, hi[4] = {-1, -1, -1, -1};
+        for (const Box& b : legal)
+          for (size_t k = 0; k < 4; ++k) lo[k] = std::min(lo[k], b.lo[k]), hi[k] = std::max(hi[k], b.hi[k]);
+        bool narrow = true;
+        for (size_t k = 0; k < 4; ++k) narrow = narrow && (hi[k] - lo[k]) * 255.0f <= 2.0f;
+        res.pinned += narrow;
+      }
+      ts::Rgba c = got.at(x, y);
+      bool ok = false;
+      for (const Box& b : legal)
+        if (inside(c, b, o.tolerance)) {
+          ok = true;
+          break;
+        }
+      if (ok) {
+        if (edge) res.mask.set(x, y, {60, 60, 60, 255});
+        continue;
+      }
+      if (res.invalid++ == 0) res.firstX = x, res.firstY = y, res.firstGot = c, res.firstLegal = legal;
+      res.mask.set(x, y, {255, 0, 0, 255});
+    }
+  if (!res.ok() && o.writeOnFailure) {
+    std::string dir = failureDir(o.outputDir);
+    writeImage(dir, o.name, "rendered", got, &res.files);
+    writeImage(dir, o.name, "reference", res.reference, &res.files);
+    writeImage(dir, o.name, "errors", res.mask, &res.files);
+  }
+  return res;
+}
+
+std::string VerifyResult::summary() const {
+  std::string s = name + ": " + std::to_string(invalid) + " of " + std::to_string(checked) + " checked pixels invalid";
+  if (invalid > 0 && firstX >= 0) {
+    s += " (first at (" + std::to_string(firstX) + "," + std::to_string(firstY) + "): got " + rgba(firstGot) +
+         ", legal ";
+    for (size_t i = 0; i < firstLegal.size() && i < 4; ++i) s += (i ? " | " : "") + box(firstLegal[i]);
+    if (firstLegal.size() > 4) s += " | ...";
+    s += ")";
+  }
+  s += "; " + std::to_string(textured) + " textured, " + std::to_string(pinned) + " pinned to +-1 step; " + std::to_string(edges) + " edge pixels checked against both sides; " + std::to_string(exempt) +
+       " exempt";
+  if (exempt) {
+    std::string by;
+    for (size_t k = 1; k < exemptBy.size(); ++k)
+      if (exemptBy[k]) by += (by.empty() ? "" : ", ") + std::string(exemptName(Exempt(k))) + " " + std::to_string(exemptBy[k]);
+    s += " (" + by + ")";
+  }
+  for (const auto& n : notes) s += "; note: " + n;
+  if (!files.empty()) {
+    s += "; images:";
+    for (const auto& f : files) s += " " + f;
+  }
+  return s;
+}
+
+FuzzyResult compareFuzzy(const ts::Image& got, const ts::Image& want, const FuzzyOptions& o) {
+  FuzzyResult r;
+  if (got.width != want.width || got.height != want.height) {
+    r.message = o.name + ": size " + std::to_string(got.width) + "x" + std::to_string(got.height) + " vs " +
+                std::to_string(want.width) + "x" + std::to_string(want.height);
+    return r;
+  }
+  ts::Image diff(got.width, got.height, {0, 0, 0, 255});
+  for (int y = 0; y < got.height; ++y)
+    for (int x = 0; x < got.width; ++x) {
+      ts::Rgba a = got.at(x, y), b = want.at(x, y);
+      int d = std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b), std::abs(a.a - b.a)});
+      r.maxDiff = std::max(r.maxDiff, d);
+      if (d > o.maxChannelDiff) {
+        if (r.differing++ == 0) r.firstX = x, r.firstY = y;
+        diff.set(x, y, {255, 0, 0, 255});
+      } else if (d > 0) {
+        diff.set(x, y, {90, 90, 0, 255});
+      }
+    }
+  r.ok = r.differing <= o.maxDifferingPixels;
+  r.message = o.name + ": " + std::to_string(r.differing) + " pixels differ by more than " +
+              std::to_string(o.maxChannelDiff) + " (allowed " + std::to_string(o.maxDifferingPixels) +
+              "), largest channel difference " + std::to_string(r.maxDiff);
+  if (r.firstX >= 0)
+    r.message += ", first at (" + std::to_string(r.firstX) + "," + std::to_string(r.firstY) + "): got " +
+                 rgba(got.at(r.firstX, r.firstY)) + ", committed " + rgba(want.at(r.firstX, r.firstY));
+  if (!r.ok && o.writeOnFailure) {
+    std::string dir = failureDir(o.outputDir);
+    writeImage(dir, o.name, "rendered", got, &r.files);
+    writeImage(dir, o.name, "committed", want, &r.files);
+    writeImage(dir, o.name, "diff", diff, &r.files);
+    r.message += "; images:";
+    for (const auto& f : r.files) r.message += " " + f;
+  }
+  return r;
+}
+
+FuzzyResult compareWithPng(const ts::Image& got, const std::string& pngPath, const FuzzyOptions& o) {
+  return compareFuzzy(got, ts::readPng(pngPath), o);
+}
+}  // namespace ref

@@ -1,0 +1,281 @@
+// bench_window — frames per second of every registered figure in a window
+// at 1024x768, swap interval 0 (needs a display: run it under
+//   xvfb-run -a -s "-screen 0 1280x1024x24" build/bin/bench_window
+// as scripts/bench.sh does).  Two measurements per figure:
+//
+//   <figure>/window_draw  in this process, one GLFW window: per frame
+//                         glfwPollEvents + scene update + build + Renderer::draw
+//                         + glfwSwapBuffers (the window loop without the overlay)
+//   <figure>/window_loop  the demo program itself, overlay included: the time of
+//                         `<demo> --size 1024x768 --frames N2 <flags>` minus that of
+//                         --frames N1, divided by N2 - N1, each timed from the
+//                         demo's first output (printed after its start-up
+//                         measurement) to its exit; the first frame's texture
+//                         uploads and the teardown cancel out
+//
+// Reported time is per frame; the fps counter is its inverse.  Medians of 5
+// repetitions by default; any benchmark flag overrides.
+#include <fcntl.h>
+#include <limits.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bench_common.hpp"
+#include "common/context.hpp"
+#include "common/error.hpp"
+#include "common/gl.hpp"
+#include "common/render.hpp"
+
+extern char** environ;
+
+namespace {
+using ts::bench::Figure;
+using Clock = std::chrono::steady_clock;
+
+constexpr int kWidth = 1024, kHeight = 768;
+
+GLFWwindow* g_window = nullptr;
+std::string g_glfwError;
+
+// The default framebuffer of the benchmark's window as a ts::Context.
+class WindowTarget final : public ts::Context {
+ public:
+  explicit WindowTarget(GLFWwindow* w) : win_(w) { sync(); }
+  ts::Backend backend() const override { return ts::Backend::Window; }
+  void resize(int, int) override { sync(); }
+  void bindTarget() override {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDrawBuffer(GL_BACK);
+    glReadBuffer(GL_BACK);
+  }
+  void sync() { glfwGetFramebufferSize(win_, &width_, &height_); }
+
+ private:
+  GLFWwindow* win_;
+};
+std::unique_ptr<WindowTarget> g_target;
+std::map<std::string, double> g_drawSeconds;  // figure -> seconds per frame in window_draw
+
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+void benchWindowDraw(benchmark::State& st, const Figure& f) {
+  try {
+    ts::Renderer r(*g_target);
+    ts::bench::SceneState s(f);
+    s.scene->measure(r);  // once, as the window does when the state changes
+    g_target->sync();
+    r.draw(s.scene->build(g_target->width(), g_target->height()));  // uploads textures, compiles shaders
+    glfwSwapBuffers(g_window);
+    auto last = Clock::now();
+    auto start = last;
+    for (auto _ : st) {
+      glfwPollEvents();
+      auto now = Clock::now();
+      s.scene->update(seconds(now - last));
+      last = now;
+      g_target->sync();
+      ts::Frame frame = s.scene->build(g_target->width(), g_target->height());
+      r.draw(frame);
+      glfwSwapBuffers(g_window);
+    }
+    double elapsed = seconds(Clock::now() - start);
+    st.counters["fps"] = elapsed > 0 ? double(st.iterations()) / elapsed : 0.0;
+    if (st.iterations() > 0) g_drawSeconds[f.spec.id] = elapsed / double(st.iterations());
+    ts::gl::check("the benchmark's window frames");
+    r.release();
+  } catch (const std::exception& e) {
+    st.SkipWithError(e.what());
+  }
+}
+
+std::string binDir() {
+  char buf[PATH_MAX];
+  ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
+  if (n <= 0) return ".";
+  std::string p(buf, size_t(n));
+  return p.substr(0, p.rfind('/'));
+}
+
+// Runs `<demo> --size 1024x768 --frames N <flags>` and returns the seconds from
+// its first output to its exit.  The window loop flushes its first output
+// right after the start-up measurement, before the first frame, so the
+// start-up (window, context, Dear ImGui, measure), whose time varies far more
+// than a frame's, is left out; what remains is N frames and the teardown.
+// Throws if the demo fails.
+double runDemo(const Figure& f, int frames) {
+  std::string exe = binDir() + "/" + f.demo;
+  std::vector<std::string> args = {exe, "--size", std::to_string(kWidth) + "x" + std::to_string(kHeight), "--frames",
+                                   std::to_string(frames)};
+  args.insert(args.end(), f.spec.flags.begin(), f.spec.flags.end());
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  int out[2];
+  if (pipe(out) != 0) throw ts::Error(std::string("pipe: ") + std::strerror(errno));
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_adddup2(&fa, out[1], 1);
+  posix_spawn_file_actions_addclose(&fa, out[0]);
+  posix_spawn_file_actions_addclose(&fa, out[1]);
+  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  int err = posix_spawn(&pid, exe.c_str(), &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  close(out[1]);
+  if (err != 0) {
+    close(out[0]);
+    throw ts::Error("cannot run " + exe + ": " + std::strerror(err));
+  }
+  // First output, then drain to end of file (the demo's exit).
+  char buf[4096];
+  bool first = true;
+  Clock::time_point t0 = Clock::now();
+  for (;;) {
+    ssize_t n = read(out[0], buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    if (first) t0 = Clock::now();
+    first = false;
+  }
+  close(out[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  double t = seconds(Clock::now() - t0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw ts::Error(exe + " --frames " + std::to_string(frames) + " failed (status " + std::to_string(status) + ")");
+  if (first) throw ts::Error(exe + " printed nothing: cannot tell its start-up from its frames");
+  return t;
+}
+
+constexpr int kBaseFrames = 10;
+constexpr double kExtraSeconds = 1.5;
+
+// Extra frames so that they take about kExtraSeconds (60 to 3000 frames),
+// from the figure's window_draw time if it ran, else from a trial run.
+int extraFrames(const Figure& f) {
+  static std::map<std::string, int> cache;
+  auto it = cache.find(f.spec.id);
+  if (it != cache.end()) return it->second;
+  double perFrame = 0;
+  auto d = g_drawSeconds.find(f.spec.id);
+  if (d != g_drawSeconds.end()) perFrame = d->second;
+  else perFrame = (runDemo(f, kBaseFrames + 100) - runDemo(f, kBaseFrames)) / 100.0;
+  int n = perFrame > 0 ? int(std::lround(kExtraSeconds / perFrame)) : 3000;
+  n = std::clamp(n, 60, 3000);
+  cache[f.spec.id] = n;
+  return n;
+}
+
+void benchWindowLoop(benchmark::State& st, const Figure& f) {
+  try {
+    int extra = extraFrames(f);
+    double sum = 0;
+    for (auto _ : st) {
+      double t1 = runDemo(f, kBaseFrames);
+      double t2 = runDemo(f, kBaseFrames + extra);
+      double perFrame = std::max(1e-9, (t2 - t1) / extra);
+      sum += perFrame;
+      st.SetIterationTime(perFrame);
+    }
+    st.counters["fps"] = double(st.iterations()) / sum;
+    st.counters["frames"] = extra;
+  } catch (const std::exception& e) {
+    st.SkipWithError(e.what());
+  }
+}
+
+std::string name(const Figure& f, const char* what) { return f.spec.id + "/" + what; }
+
+void summary(const ts::bench::SummaryReporter& rep, const std::vector<Figure>& figs, const std::string& renderer) {
+  std::printf("\n## Window frames per second at %dx%d, swap interval 0 (wall clock, %s)\n\n- `%s`\n\n", kWidth,
+              kHeight, rep.statistic().c_str(), renderer.c_str());
+  std::printf(
+      "| figure | draw + swap ms/frame | FPS | demo window loop ms/frame (overlay on) | FPS | loop ÷ draw |\n"
+      "|---|--:|--:|--:|--:|--:|\n");
+  for (const Figure& f : figs) {
+    if (!rep.ran(f.spec.id + "/")) continue;
+    double draw = rep.ms(name(f, "window_draw")), loop = rep.ms(name(f, "window_loop"));
+    std::printf("| `%s` | %s | %s | %s | %s | %s |\n", f.spec.id.c_str(), ts::bench::fmt(draw).c_str(),
+                ts::bench::fmt(1000.0 / draw).c_str(), ts::bench::fmt(loop).c_str(),
+                ts::bench::fmt(1000.0 / loop).c_str(), ts::bench::ratio(loop, draw).c_str());
+  }
+  std::printf(
+      "\nFPS = 1000 ÷ median ms/frame. draw + swap: this program's own window (poll, update, build, "
+      "Renderer::draw, glfwSwapBuffers);\ndemo window loop: `<demo> --size %dx%d --frames N <figure flags>` timed "
+      "from its first output (after start-up) to exit, for two N; difference ÷ frames (Dear ImGui overlay "
+      "included).\n\n",
+      kWidth, kHeight);
+}
+
+void onGlfwError(int, const char* msg) { g_glfwError = msg ? msg : "unknown"; }
+void* glfwProc(const char* n) { return reinterpret_cast<void*>(glfwGetProcAddress(n)); }
+}  // namespace
+
+int main(int argc, char** argv) {
+  glfwSetErrorCallback(onGlfwError);
+  if (!glfwInit()) {
+    std::fprintf(stderr,
+                 "bench_window: no display (%s); run it under xvfb-run -a -s \"-screen 0 1280x1024x24\" (see "
+                 "scripts/bench.sh)\n",
+                 g_glfwError.c_str());
+    return 2;
+  }
+  // The same hints as common/window.cpp: a compatibility context.
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 2);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
+  glfwWindowHint(GLFW_DOUBLEBUFFER, GLFW_TRUE);
+  glfwWindowHint(GLFW_DEPTH_BITS, 24);
+  glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
+  g_window = glfwCreateWindow(kWidth, kHeight, "bench_window", nullptr, nullptr);
+  if (!g_window) {
+    std::fprintf(stderr, "bench_window: cannot open a %dx%d window (%s)\n", kWidth, kHeight, g_glfwError.c_str());
+    glfwTerminate();
+    return 2;
+  }
+  glfwMakeContextCurrent(g_window);
+  glfwSwapInterval(0);
+  std::string missing;
+  if (!ts::gl::load(glfwProc, &missing)) {
+    std::fprintf(stderr, "bench_window: the window's OpenGL context lacks %s\n", missing.c_str());
+    return 2;
+  }
+  g_target = std::make_unique<WindowTarget>(g_window);
+  std::string renderer = g_target->describe() + " | framebuffer " + std::to_string(g_target->width()) + "x" +
+                         std::to_string(g_target->height());
+  benchmark::AddCustomContext("gl_window", renderer);
+
+  std::vector<Figure> figs = ts::bench::registeredFigures();
+  for (const Figure& f : figs) {
+    benchmark::RegisterBenchmark(name(f, "window_draw").c_str(), benchWindowDraw, f)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->ComputeStatistics("min", ts::bench::minimum);
+    benchmark::RegisterBenchmark(name(f, "window_loop").c_str(), benchWindowLoop, f)
+        ->Unit(benchmark::kMillisecond)
+        ->UseManualTime()
+        ->Iterations(1)
+        ->ComputeStatistics("min", ts::bench::minimum);
+  }
+  int status =
+      ts::bench::run(argc, argv, [&](const ts::bench::SummaryReporter& rep) { summary(rep, figs, renderer); });
+  g_target.reset();
+  glfwDestroyWindow(g_window);
+  glfwTerminate();
+  return status;
+}

@@ -1,0 +1,47 @@
+// The committed figures, checked without OpenGL: every book_figures/<id>.png
+// must be a legal OpenGL result for the Frame its sidecar <id>.json
+// describes (read by ref::readSidecar, textures re-made from their names).
+// The sidecar does not record label scale and alignment, so wide boxes
+// around labels are exempt.  Skipped, visibly, while no figure is committed.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "common/image.hpp"
+#include "reference/sidecar_reader.hpp"
+#include "reference/verify.hpp"
+
+#ifndef TS_SOURCE_DIR
+#define TS_SOURCE_DIR "."
+#endif
+#ifndef TS_ORACLE_OUT_DIR
+#define TS_ORACLE_OUT_DIR "oracle_failures"
+#endif
+
+namespace {
+TEST(CommittedFigures, EachPngIsLegalForItsSidecar) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::path(TS_SOURCE_DIR) / "book_figures";
+  int checked = 0;
+  if (fs::is_directory(dir))
+    for (const auto& e : fs::directory_iterator(dir)) {
+      if (e.path().extension() != ".json") continue;
+      fs::path png = e.path();
+      png.replace_extension(".png");
+      if (!fs::exists(png)) continue;
+      SCOPED_TRACE(e.path().string());
+      ref::SidecarScene sc = ref::readSidecarFile(e.path().string(), TS_SOURCE_DIR);
+      ref::VerifyOptions o;
+      o.name = e.path().stem().string() + ".committed";
+      o.outputDir = std::string(TS_ORACLE_OUT_DIR) + "/committed";
+      o.render.labelGeometryKnown = sc.labelGeometryKnown;
+      ref::VerifyResult r = ref::verifyImage(ts::readPng(png.string()), sc.frame, o);
+      std::printf("[oracle] %s\n", r.summary().c_str());
+      EXPECT_EQ(r.invalid, 0) << r.summary();
+      EXPECT_GT(r.checked, r.pixels / 2) << r.summary();
+      ++checked;
+    }
+  if (checked == 0) GTEST_SKIP() << "no PNG with a sidecar in " << dir.string() << " (scripts/figures.sh makes them)";
+}
+}  // namespace

@@ -1,0 +1,218 @@
+// Unit tests of the JSON reader and of the sidecar round trip: a Frame
+// written by ts::sidecarJson and read back by ref::readSidecar is the same
+// Frame (textures re-made from name and params, texel for texel).
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "common/error.hpp"
+#include "common/sidecar.hpp"
+#include "common/textures.hpp"
+#include "reference/json.hpp"
+#include "reference/sidecar_reader.hpp"
+
+namespace {
+using ref::json::Value;
+
+TEST(Json, ParsesValues) {
+  Value v = ref::json::parse(R"( {"a": [1, -2.5e2, 0.125], "s": "x\"y\\z\n\u00e9\ud83d\ude00", "t": true,
+                                  "f": false, "n": null, "o": {}, "e": []} )");
+  ASSERT_TRUE(v.isObject());
+  ASSERT_EQ(v.at("a").asArray().size(), 3u);
+  EXPECT_EQ(v.at("a").array[1].asNumber(), -250.0);
+  EXPECT_EQ(v.at("a").array[2].asNumber(), 0.125);
+  EXPECT_EQ(v.at("s").asString(), "x\"y\\z\n\xc3\xa9\xf0\x9f\x98\x80");
+  EXPECT_TRUE(v.at("t").asBool());
+  EXPECT_FALSE(v.at("f").asBool());
+  EXPECT_TRUE(v.at("n").isNull());
+  EXPECT_TRUE(std::isnan(v.at("n").asNumber()));  // the sidecar writes non-finite floats as null
+  EXPECT_TRUE(v.at("o").isObject());
+  EXPECT_TRUE(v.at("e").asArray().empty());
+  EXPECT_EQ(v.object[0].first, "a");  // key order is kept
+  EXPECT_EQ(v.find("missing"), nullptr);
+}
+
+TEST(Json, ErrorsNameThePlace) {
+  auto message = [](const std::string& text) {
+    try {
+      ref::json::parse(text);
+    } catch (const ts::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("{\n  \"a\": [1, 2,]\n}"), "json: unexpected character ']' at line 2 column 14");
+  EXPECT_NE(message("{\"a\" 1}").find("expected ':'"), std::string::npos);
+  EXPECT_NE(message("[1, 2] x").find("unexpected text after the document"), std::string::npos);
+  EXPECT_NE(message("\"abc").find("unterminated string"), std::string::npos);
+  EXPECT_NE(message("01x").find("unexpected text"), std::string::npos);
+  EXPECT_NE(message("-").find("bad number"), std::string::npos);
+  EXPECT_THROW(Value().asString(), ts::Error);
+}
+
+ts::Frame sampleFrame() {
+  ts::Frame f;
+  f.width = 320, f.height = 200;
+  f.clearColor = {0.1f, 0.2f, 0.3f, 1.0f};
+  f.perspectiveHint = GL_FASTEST;
+  ts::TextureDesc c = ts::checkerboard(64, 4, {1, 2, 3, 255}, {250, 240, 230, 128});
+  c.wrapS = GL_MIRRORED_REPEAT;
+  c.wrapT = GL_CLAMP_TO_BORDER;
+  c.border = {0.25f, 0.5f, 0.75f, 1.0f};
+  c.minFilter = GL_LINEAR_MIPMAP_NEAREST;
+  c.magFilter = GL_NEAREST;
+  c.mipmaps = true;
+  c.lodBias = -0.75f;
+  c.maxAnisotropy = 4.0f;
+  f.addTexture(c);
+  ts::TextureDesc m = ts::mipLevelColours(32);  // explicit levels
+  f.addTexture(m);
+  ts::TextureDesc g = ts::labelledGrid(64, 4);
+  g.mipmaps = true;
+  g.linearLightMips = true;
+  f.addTexture(g);
+  f.addTexture(ts::texelIndexTexture(16));
+  f.programs.push_back({"bilinear_quad", {"demos/quad_distortion/quad_distortion.cpp", "vs", "fs"}});
+  ts::Panel p;
+  p.id = "left";
+  p.viewport = {3, 5, 150, 120};
+  p.depthTest = true;
+  p.projection = glm::perspective(0.7f, 1.25f, 0.1f, 30.0f);
+  p.modelview = glm::lookAt(glm::vec3(0.3f, 1.1f, 2.7f), glm::vec3(0), glm::vec3(0, 1, 0));
+  ts::Batch b;
+  b.role = "surface";
+  b.texture = 0;
+  b.texEnv = GL_MODULATE;
+  b.vertices = {{{0.1f, 0.2f, 0.3f}, {0.5f, 0.25f, 0.0f, 1.0f}, {1, 0.5f, 0.25f, 1}},
+                {{1.0f / 3, -2.0f / 7, 1e-7f}, {3.5f, -1.25f, 0.5f, 2.0f}, {0, 1, 0, 0.5f}},
+                {{-5, 6, -7}, {0.1f, 0.9f, 0, 1}, {1, 1, 1, 1}}};
+  p.batches.push_back(b);
+  ts::Batch q = b;
+  q.program = "bilinear_quad";
+  q.texture = 1;
+  q.texEnv = GL_REPLACE;
+  q.uniforms = {{"st00_st10", {0, 0, 1, 0}}, {"st11_st01", {0.75f, 0.75f, 0, 1}}};
+  p.batches.push_back(q);
+  p.batches.push_back(ts::lineLoop({{0, 0}, {1, 0}, {0.5f, 1}}, {0.9f, 0.1f, 0.1f, 1}, 3.0f, "outline"));
+  ts::Batch s = ts::lineSegments({{0, 0}, {1, 1}}, {1, 1, 1, 1}, 1.5f, "diag");
+  s.prim = ts::Prim::LineStrip;
+  s.blend = true;
+  p.batches.push_back(s);
+  f.panels.push_back(p);
+  ts::Panel r;
+  r.id = "right";
+  r.viewport = {160, 0, 160, 200};
+  ts::Batch l = ts::lineSegments({{0, 0}, {1, 1}}, {1, 1, 1, 1}, 2.0f, "segments");
+  r.batches.push_back(l);
+  f.panels.push_back(r);
+  f.labels.push_back({12.5f, 7.0f, "a \"quoted\" label\\", {1, 1, 1, 1}, 2, ts::Align::Center});
+  return f;
+}
+
+void expectSameImage(const ts::Image& a, const ts::Image& b) {
+  ASSERT_EQ(a.width, b.width);
+  ASSERT_EQ(a.height, b.height);
+  EXPECT_TRUE(a.pixels == b.pixels);
+}
+
+TEST(Sidecar, RoundTripOfAFrame) {
+  ts::Frame f = sampleFrame();
+  ts::SidecarInfo info;
+  info.figureId = "x";
+  info.demo = "demo";
+  info.state = {{"view", "book"}};
+  ref::SidecarScene sc = ref::readSidecar(ts::sidecarJson(f, info));
+  const ts::Frame& g = sc.frame;
+  EXPECT_EQ(sc.figure, "x");
+  EXPECT_EQ(sc.demo, "demo");
+  ASSERT_EQ(sc.state.size(), 1u);
+  EXPECT_EQ(g.width, f.width);
+  EXPECT_EQ(g.height, f.height);
+  EXPECT_EQ(g.clearColor, f.clearColor);
+  EXPECT_EQ(g.perspectiveHint, GLenum(GL_FASTEST));
+  ASSERT_EQ(g.textures.size(), f.textures.size());
+  for (size_t i = 0; i < f.textures.size(); ++i) {
+    SCOPED_TRACE(f.textures[i].name);
+    const ts::TextureDesc &a = f.textures[i], &b = g.textures[i];
+    EXPECT_EQ(a.key(), b.key());
+    EXPECT_EQ(a.minFilter, b.minFilter);
+    EXPECT_EQ(a.magFilter, b.magFilter);
+    EXPECT_EQ(a.wrapS, b.wrapS);
+    EXPECT_EQ(a.wrapT, b.wrapT);
+    EXPECT_EQ(a.border, b.border);
+    EXPECT_EQ(a.lodBias, b.lodBias);
+    EXPECT_EQ(a.maxAnisotropy, b.maxAnisotropy);
+    EXPECT_EQ(a.mipmaps, b.mipmaps);
+    EXPECT_EQ(a.linearLightMips, b.linearLightMips);
+    EXPECT_EQ(bool(a.mipLevels), bool(b.mipLevels));
+    expectSameImage(*a.image, *b.image);  // texel for texel
+    if (a.mipLevels)
+      for (size_t k = 0; k < a.mipLevels->size(); ++k) expectSameImage((*a.mipLevels)[k], (*b.mipLevels)[k]);
+  }
+  ASSERT_EQ(g.programs.size(), 1u);
+  EXPECT_EQ(g.programs[0].first, "bilinear_quad");
+  EXPECT_EQ(g.programs[0].second.file, f.programs[0].second.file);
+  ASSERT_EQ(g.panels.size(), f.panels.size());
+  for (size_t pi = 0; pi < f.panels.size(); ++pi) {
+    const ts::Panel &a = f.panels[pi], &b = g.panels[pi];
+    EXPECT_EQ(a.id, b.id);
+    EXPECT_EQ(a.viewport.x, b.viewport.x);
+    EXPECT_EQ(a.viewport.y, b.viewport.y);
+    EXPECT_EQ(a.viewport.w, b.viewport.w);
+    EXPECT_EQ(a.viewport.h, b.viewport.h);
+    EXPECT_EQ(a.depthTest, b.depthTest);
+    EXPECT_EQ(a.projection, b.projection);  // 9 significant digits: floats come back exactly
+    EXPECT_EQ(a.modelview, b.modelview);
+    ASSERT_EQ(a.batches.size(), b.batches.size());
+    for (size_t bi = 0; bi < a.batches.size(); ++bi) {
+      const ts::Batch &x = a.batches[bi], &y = b.batches[bi];
+      EXPECT_EQ(x.role, y.role);
+      EXPECT_EQ(x.prim, y.prim);
+      EXPECT_EQ(x.texture, y.texture);
+      EXPECT_EQ(x.texEnv, y.texEnv);
+      EXPECT_EQ(x.program, y.program);
+      EXPECT_EQ(x.lineWidth, y.lineWidth);
+      EXPECT_EQ(x.blend, y.blend);
+      ASSERT_EQ(x.uniforms.size(), y.uniforms.size());
+      for (size_t u = 0; u < x.uniforms.size(); ++u) {
+        EXPECT_EQ(x.uniforms[u].name, y.uniforms[u].name);
+        EXPECT_EQ(x.uniforms[u].value, y.uniforms[u].value);
+      }
+      ASSERT_EQ(x.vertices.size(), y.vertices.size());
+      for (size_t v = 0; v < x.vertices.size(); ++v) {
+        EXPECT_EQ(x.vertices[v].pos, y.vertices[v].pos);
+        EXPECT_EQ(x.vertices[v].tex, y.vertices[v].tex);
+        EXPECT_EQ(x.vertices[v].color, y.vertices[v].color);
+      }
+    }
+  }
+  ASSERT_EQ(g.labels.size(), 1u);
+  EXPECT_EQ(g.labels[0].text, f.labels[0].text);
+  EXPECT_EQ(g.labels[0].x, f.labels[0].x);
+  EXPECT_EQ(g.labels[0].y, f.labels[0].y);
+}
+
+TEST(Sidecar, ReportsWhatItDoesNotRecord) {
+  // The writer leaves out label scale and alignment and a panel's own clear;
+  // the reader says so, so a verifier can be conservative about them.
+  ref::SidecarScene sc = ref::readSidecar(ts::sidecarJson(sampleFrame(), {}));
+  EXPECT_FALSE(sc.labelGeometryKnown);
+  EXPECT_FALSE(sc.missing.empty());
+}
+
+TEST(Sidecar, UnknownTextureNameIsAClearError) {
+  ts::Frame f = sampleFrame();
+  f.textures[0].name = "marble";
+  try {
+    ref::readSidecar(ts::sidecarJson(f, {}));
+    FAIL() << "no error";
+  } catch (const ts::Error& e) {
+    std::string m = e.what();
+    EXPECT_NE(m.find("textures[0]"), std::string::npos) << m;
+    EXPECT_NE(m.find("unknown texture generator 'marble'"), std::string::npos) << m;
+  }
+  EXPECT_THROW(ref::remakeTexture("checkerboard", {{"size", "64"}}), ts::Error);  // params missing
+  EXPECT_THROW(ref::glEnumFromName("GL_NOT_A_MODE"), ts::Error);
+  EXPECT_EQ(ref::glEnumFromName("0x2901"), GLenum(GL_REPEAT));
+}
+}  // namespace
