@@ -86,6 +86,30 @@ static const char* errorName(GLenum e) {
   }
 }
 
+// KHR_debug: the driver's own words for an error ("glTexImage2D(invalid
+// width)"), kept until the next check() so its message can quote them.
+namespace {
+std::string g_debugErrors;
+void APIENTRY onDebugMessage(GLenum, GLenum type, GLuint, GLenum, GLsizei length, const GLchar* message,
+                             const void*) {
+  if (type != GL_DEBUG_TYPE_ERROR || !message || g_debugErrors.size() > 1024) return;
+  if (!g_debugErrors.empty()) g_debugErrors += "; ";
+  g_debugErrors += length > 0 ? std::string(message, size_t(length)) : std::string(message);
+  while (!g_debugErrors.empty() && (g_debugErrors.back() == '\n' || g_debugErrors.back() == ' '))
+    g_debugErrors.pop_back();
+}
+}  // namespace
+
+bool enableDebugOutput() {
+  if (!g_loaded || !p_glDebugMessageCallback || (version() < 43 && !hasExtension("GL_KHR_debug"))) return false;
+  g_debugErrors.clear();
+  p_glEnable(GL_DEBUG_OUTPUT);
+  p_glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);  // the callback runs in the failing call
+  p_glDebugMessageCallback(onDebugMessage, nullptr);
+  p_glGetError();  // enabling must not leave an error for the first check
+  return true;
+}
+
 std::string errorString(const char* stage) {
   std::string out;
   for (int i = 0; i < 16; ++i) {  // bounded: a lost context can report forever
@@ -94,8 +118,10 @@ std::string errorString(const char* stage) {
     if (!out.empty()) out += ", ";
     out += errorName(e);
   }
+  std::string driver;
+  driver.swap(g_debugErrors);
   if (out.empty()) return out;
-  return out + " after " + stage;
+  return out + " after " + stage + (driver.empty() ? "" : " (driver: " + driver + ")");
 }
 
 void check(const char* stage) {

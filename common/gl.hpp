@@ -91,6 +91,10 @@ bool hasExtension(const char* name);
 std::string errorString(const char* stage);
 // Throws ts::Error if glGetError() reports an error after `stage`.
 void check(const char* stage);
+// Where the context has KHR_debug (GL 4.3 or the extension), turns on
+// synchronous debug output; errors reported through it are quoted by
+// errorString/check.  Returns whether it did.
+bool enableDebugOutput();
 }  // namespace ts::gl
 
 // Route every call site through the loaded pointers (one line per function

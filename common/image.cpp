@@ -1,15 +1,17 @@
 #include "image.hpp"
 
+#include <fcntl.h>
 #include <png.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <memory>
 
+#include "bmp.hpp"
 #include "error.hpp"
 
 namespace ts {
@@ -64,10 +66,20 @@ void pngError(png_structp png, png_const_charp msg) {
   // libpng requires this not to return; throwing through C frames is not
   // safe, so we longjmp back as libpng documents.
   auto* why = static_cast<std::string*>(png_get_error_ptr(png));
-  if (why) *why = msg ? msg : "libpng error";
+  if (why) {
+    std::string after = (why->rfind("(after: ", 0) == 0) ? *why : std::string();
+    *why = std::string(msg ? msg : "libpng error");
+    if (!after.empty()) *why += " " + after.substr(0, after.size() - 1);
+  }
   png_longjmp(png, 1);
 }
-void pngWarning(png_structp, png_const_charp) {}  // warnings stay quiet
+void pngWarning(png_structp png, png_const_charp msg) {
+  // Warnings stay quiet, but the last one is kept: libpng often warns with
+  // the precise reason ("Image width is zero in IHDR") and then fails with a
+  // vaguer error ("Invalid IHDR data").
+  auto* why = static_cast<std::string*>(png_get_error_ptr(png));
+  if (why && msg) *why = std::string("(after: ") + msg + ") ";
+}
 
 void appendBytes(png_structp png, png_bytep data, png_size_t len) {
   auto* out = static_cast<std::vector<uint8_t>*>(png_get_io_ptr(png));
@@ -105,23 +117,80 @@ std::vector<uint8_t> encodePng(const Image& img) {
   return out;
 }
 
+
+// ------------------------------------------------------------ atomic writes
+namespace {
+bool writeAll(int fd, const char* p, size_t n) {
+  // TS_TEST_WRITE_PAUSE_MS (tests only): pause half-way through every file,
+  // so a test can kill a run in the middle of a write and check that no
+  // half-written file appears under the final name.
+  static const long pauseMs = [] {
+    const char* v = std::getenv("TS_TEST_WRITE_PAUSE_MS");
+    return v ? std::strtol(v, nullptr, 10) : 0L;
+  }();
+  size_t half = pauseMs > 0 ? n / 2 : n, done = 0;
+  while (done < n) {
+    if (done == half && pauseMs > 0) ::usleep(useconds_t(pauseMs) * 1000);
+    size_t want = (done < half ? half : n) - done;
+    ssize_t k = ::write(fd, p + done, want);
+    if (k < 0 && errno == EINTR) continue;
+    if (k <= 0) return false;
+    done += size_t(k);
+  }
+  return true;
+}
+}  // namespace
+
 void writeFileAtomic(const std::string& path, const std::string& bytes) {
-  std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw Error("cannot write " + path + ": " + std::strerror(errno));
-  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  ok = (std::fflush(f) == 0) && ok;
-  ok = (std::fclose(f) == 0) && ok;
-  if (!ok) {
-    int e = errno;
-    std::remove(tmp.c_str());
+  // The content is first written to a file with no name (O_TMPFILE) in the
+  // target's directory, so a run killed mid-write leaves nothing behind; it
+  // is then linked as ".<name>.tmp-<pid>" and renamed over `path` (rename is
+  // atomic: readers see the old file or the new one, never a mix).  Where
+  // O_TMPFILE is not supported the named temporary is written directly.
+  size_t slash = path.rfind('/');
+  std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+  std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  std::string tmp = (slash == std::string::npos ? "" : path.substr(0, slash + 1)) + "." + base + ".tmp-" +
+                    std::to_string(::getpid());
+  auto fail = [&](int e, bool removeTmp) {
+    if (removeTmp) ::unlink(tmp.c_str());
     throw Error("cannot write " + path + ": " + std::strerror(e));
+  };
+  if (base.empty()) fail(EISDIR, false);
+  bool named = false;
+#ifdef O_TMPFILE
+  int fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+#else
+  int fd = -1;
+  errno = EOPNOTSUPP;
+#endif
+  if (fd < 0) {
+    if (errno == ENOENT || errno == ENOTDIR || errno == EACCES || errno == EROFS) fail(errno, false);
+    fd = ::open(tmp.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0666);
+    if (fd < 0) fail(errno, false);
+    named = true;
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+  if (!writeAll(fd, bytes.data(), bytes.size()) || ::fsync(fd) != 0) {
     int e = errno;
-    std::remove(tmp.c_str());
-    throw Error("cannot write " + path + ": " + std::strerror(e));
+    ::close(fd);
+    fail(e, named);
   }
+  if (!named) {
+    std::string self = "/proc/self/fd/" + std::to_string(fd);
+    if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, tmp.c_str(), AT_SYMLINK_FOLLOW) != 0) {
+      // No /proc: write the named temporary the plain way.
+      ::close(fd);
+      fd = ::open(tmp.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0666);
+      if (fd < 0) fail(errno, false);
+      if (!writeAll(fd, bytes.data(), bytes.size()) || ::fsync(fd) != 0) {
+        int e = errno;
+        ::close(fd);
+        fail(e, true);
+      }
+    }
+  }
+  if (::close(fd) != 0) fail(errno, true);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) fail(errno, true);
 }
 
 void writePng(const std::string& path, const Image& img) {
@@ -129,50 +198,130 @@ void writePng(const std::string& path, const Image& img) {
   writeFileAtomic(path, std::string(bytes.begin(), bytes.end()));
 }
 
-Image readPng(const std::string& path) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), std::fclose);
-  if (!f) throw Error(path + ": cannot open: " + std::strerror(errno));
-  unsigned char sig[8];
-  if (std::fread(sig, 1, 8, f.get()) != 8 || png_sig_cmp(sig, 0, 8) != 0)
-    throw Error(path + ": not a PNG file (bad signature)");
+// ------------------------------------------------------------ reading files
+std::vector<uint8_t> readFileBytes(const std::string& path, size_t limit) {
+  // O_NONBLOCK: opening a FIFO must not wait for a writer; the fstat below
+  // refuses anything that is not a regular file before reading a byte.
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw Error(path + ": cannot open: " + std::strerror(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st;
+  if (::fstat(fd, &st) != 0) throw Error(path + ": cannot read: " + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw Error(path + ": is a directory, not an image file");
+  if (!S_ISREG(st.st_mode)) throw Error(path + ": is not a regular file");
+  if (st.st_size == 0) throw Error(path + ": is empty (0 bytes)");
+  if (uint64_t(st.st_size) > limit)
+    throw Error(path + ": is too large (" + std::to_string(st.st_size) + " bytes; the limit is " +
+                std::to_string(limit) + ")");
+  std::vector<uint8_t> data(size_t(st.st_size));
+  size_t got = 0;
+  while (got < data.size()) {
+    ssize_t k = ::read(fd, data.data() + got, data.size() - got);
+    if (k < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+    if (k < 0) throw Error(path + ": cannot read: " + std::strerror(errno));
+    if (k == 0) break;  // shrank while we read: decode what is there
+    got += size_t(k);
+  }
+  data.resize(got);
+  return data;
+}
+
+std::string checkImageSize(uint64_t w, uint64_t h) {
+  if (w == 0 || h == 0) return "zero " + std::string(w == 0 ? "width" : "height") + " in the header";
+  if (w > uint64_t(kMaxImageDimension) || h > uint64_t(kMaxImageDimension) || w * h > uint64_t(kMaxFilePixels))
+    return "header says " + std::to_string(w) + "x" + std::to_string(h) + " pixels, over the limit of " +
+           std::to_string(kMaxImageDimension) + " per side and " + std::to_string(kMaxFilePixels) +
+           " pixels (refused before allocating)";
+  return "";
+}
+
+// ------------------------------------------------------------ PNG decoding
+namespace {
+struct PngSource {
+  const uint8_t* data;
+  size_t size, pos;
+  std::string* why;
+};
+void readFromMemory(png_structp png, png_bytep out, png_size_t len) {
+  auto* src = static_cast<PngSource*>(png_get_io_ptr(png));
+  if (len > src->size - src->pos) png_error(png, "the file ends early (truncated)");
+  std::memcpy(out, src->data + src->pos, len);
+  src->pos += len;
+}
+uint32_t be32(const uint8_t* p) { return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | p[3]; }
+}  // namespace
+
+Image decodePng(const uint8_t* data, size_t size, const std::string& name) {
+  static const uint8_t kSig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (size < 8 || std::memcmp(data, kSig, 8) != 0) throw Error(name + ": not a PNG file (bad signature)");
+  // The header is checked here, before libpng sees it, so that the size
+  // limits apply before anything is allocated and the messages are plain.
+  if (size < 8 + 8 + 13 + 4) throw Error(name + ": malformed PNG: the file ends inside the IHDR header (truncated)");
+  if (be32(data + 8) != 13 || std::memcmp(data + 12, "IHDR", 4) != 0)
+    throw Error(name + ": malformed PNG: the first chunk is not a 13-byte IHDR");
+  uint32_t w = be32(data + 16), h = be32(data + 20);
+  std::string bad = checkImageSize(w, h);
+  if (!bad.empty()) throw Error(name + ": malformed PNG: " + bad);
+
   std::string why;
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &why, pngError, pngWarning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!png || !info) {
     png_destroy_read_struct(&png, &info, nullptr);
-    throw Error(path + ": out of memory");
+    throw Error(name + ": out of memory");
   }
-  // Everything with a destructor lives outside the setjmp/longjmp region.
+  // Everything with a destructor is made before setjmp and only its
+  // contents change after it (longjmp skips destructors of anything newer).
   Image img;
-  std::vector<png_bytep> rows;
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    throw Error(path + ": malformed PNG: " + why);
-  }
-  png_init_io(png, f.get());
-  png_set_sig_bytes(png, 8);
-  png_set_user_limits(png, kMaxImageDimension, kMaxImageDimension);  // refuse before allocating
-  png_read_info(png, info);
-  png_uint_32 w = png_get_image_width(png, info), h = png_get_image_height(png, info);
-  int depth = png_get_bit_depth(png, info), type = png_get_color_type(png, info);
-  if (depth == 16) png_set_strip_16(png);
-  if (type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
-  if (type == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
-  if (png_get_valid(png, info, PNG_INFO_tRNS)) png_set_tRNS_to_alpha(png);
-  if (type == PNG_COLOR_TYPE_GRAY || type == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_gray_to_rgb(png);
-  if (!(type & PNG_COLOR_MASK_ALPHA) && !png_get_valid(png, info, PNG_INFO_tRNS))
-    png_set_filler(png, 0xff, PNG_FILLER_AFTER);
-  png_set_interlace_handling(png);
-  png_read_update_info(png, info);
-  if (png_get_rowbytes(png, info) != size_t(w) * 4) longjmp(png_jmpbuf(png), 1);
   img.width = int(w);
   img.height = int(h);
   img.pixels.resize(size_t(w) * h * 4);
-  rows.resize(h);
+  std::vector<png_bytep> rows(h);
   for (png_uint_32 y = 0; y < h; ++y) rows[y] = &img.pixels[size_t(y) * w * 4];
+  PngSource src{data, size, 8, &why};
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    throw Error(name + ": malformed PNG: " + why);
+  }
+  png_set_read_fn(png, &src, readFromMemory);
+  png_set_sig_bytes(png, 8);
+  png_set_user_limits(png, kMaxImageDimension, kMaxImageDimension);
+  png_read_info(png, info);
+  if (png_get_image_width(png, info) != w || png_get_image_height(png, info) != h)
+    png_error(png, "IHDR changed while reading");
+  int depth = png_get_bit_depth(png, info), type = png_get_color_type(png, info);
+  if (depth == 16) png_set_strip_16(png);  // keep the high byte
+  if (type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+  if (type == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
+  bool trns = png_get_valid(png, info, PNG_INFO_tRNS) != 0;
+  if (trns) png_set_tRNS_to_alpha(png);
+  if (type == PNG_COLOR_TYPE_GRAY || type == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_gray_to_rgb(png);
+  if (!(type & PNG_COLOR_MASK_ALPHA) && !trns) png_set_filler(png, 0xff, PNG_FILLER_AFTER);
+  png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  if (png_get_rowbytes(png, info) != size_t(w) * 4) png_error(png, "unsupported pixel layout after conversion");
   png_read_image(png, rows.data());
   png_read_end(png, nullptr);
   png_destroy_read_struct(&png, &info, nullptr);
   return img;
+}
+
+Image readPng(const std::string& path) {
+  std::vector<uint8_t> bytes = readFileBytes(path);
+  return decodePng(bytes.data(), bytes.size(), path);
+}
+
+Image decodeImage(const uint8_t* data, size_t size, const std::string& name) {
+  if (size >= 8 && data[0] == 0x89 && std::memcmp(data + 1, "PNG", 3) == 0) return decodePng(data, size, name);
+  if (size >= 2 && data[0] == 'B' && data[1] == 'M') return decodeBmp(data, size, name);
+  throw Error(name + ": not a PNG or BMP file (unrecognised first bytes)");
+}
+
+Image readImage(const std::string& path) {
+  std::vector<uint8_t> bytes = readFileBytes(path);
+  return decodeImage(bytes.data(), bytes.size(), path);
 }
 }  // namespace ts

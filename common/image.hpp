@@ -30,6 +30,10 @@ struct Image {
 // Largest width or height any image of the suite may have; checked before any
 // allocation (flags and files alike).
 constexpr int kMaxImageDimension = 16384;
+// Images read from files are also limited in pixels (64 Mi pixels = 256 MiB
+// as RGBA8) and files in bytes, both checked before the pixels are allocated.
+constexpr int64_t kMaxFilePixels = int64_t(1) << 26;
+constexpr size_t kMaxImageFileBytes = size_t(512) << 20;
 
 // Writes a PNG deterministically (fixed zlib level, no time or text chunks),
 // atomically: into "<path>.tmp-<pid>" in the same directory, then rename().
@@ -37,10 +41,29 @@ constexpr int kMaxImageDimension = 16384;
 void writePng(const std::string& path, const Image& img);
 // Encodes to memory (used by writePng and the benchmark).
 std::vector<uint8_t> encodePng(const Image& img);
-// Reads any PNG libpng understands and converts to RGBA8.  Throws ts::Error
-// "<path>: <what is wrong>" on a missing, unreadable or malformed file.
+// Reads any PNG (grey, grey+alpha, palette, RGB, RGBA; 1..16 bits; tRNS;
+// interlaced or not) and converts to RGBA8 (16-bit channels keep their high
+// byte).  Throws ts::Error "<path>: <what is wrong>" on a missing, unreadable
+// or malformed file; never crashes, whatever the bytes.
 Image readPng(const std::string& path);
+// The same from memory; `name` is what error messages call the data.
+Image decodePng(const uint8_t* data, size_t size, const std::string& name);
+// PNG or 24-bit BMP (common/bmp.hpp), recognised by the first bytes, not by
+// the file name.
+Image readImage(const std::string& path);
+Image decodeImage(const uint8_t* data, size_t size, const std::string& name);
 
-// Writes `bytes` to `path` atomically (temporary file, then rename).
+// A whole regular file in memory.  Refuses, with "<path>: <reason>", what
+// cannot be opened, a directory, a FIFO or device, an empty file and a file
+// over `limit` bytes (before reading it).
+std::vector<uint8_t> readFileBytes(const std::string& path, size_t limit = kMaxImageFileBytes);
+// "" when w x h is within the limits above, else why not (for messages).
+std::string checkImageSize(uint64_t w, uint64_t h);
+
+// Writes `bytes` to `path` atomically: the content goes to an unnamed file
+// (O_TMPFILE) in the same directory, which is then linked as a temporary
+// name and renamed over `path`, so an interrupted run leaves either the old
+// file or the whole new one, never a half-written one.  Throws ts::Error
+// "cannot write <path>: <reason>" and leaves nothing behind on failure.
 void writeFileAtomic(const std::string& path, const std::string& bytes);
 }  // namespace ts

@@ -1,5 +1,8 @@
 #include "render.hpp"
 
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "context.hpp"
@@ -21,6 +24,13 @@ void Renderer::release() {
   fontTexture_ = 0;
 }
 
+static bool powerOfTwo(int v) { return v > 0 && (v & (v - 1)) == 0; }
+static int nextPowerOfTwo(int v) {
+  int p = 1;
+  while (p < v) p *= 2;
+  return p;
+}
+
 static void upload(const Image& img, int level) {
   glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                img.pixels.data());
@@ -34,16 +44,33 @@ GLuint Renderer::texture(const TextureDesc& t) {
     glBindTexture(GL_TEXTURE_2D, id);
   } else {
     if (!t.image) throw Error("texture '" + t.name + "' has no image", kExitFailure);
+    // Sizes the context cannot take are refused with the reason, not left to
+    // a GL error (or, worse, an incomplete texture that samples black).
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (maxSize > 0 && (t.image->width > maxSize || t.image->height > maxSize))
+      throw Error("texture '" + t.name + "' is " + std::to_string(t.image->width) + "x" +
+                  std::to_string(t.image->height) + ", over this context's GL_MAX_TEXTURE_SIZE " +
+                  std::to_string(maxSize));
+    std::shared_ptr<const Image> level0 = t.image;
+    if ((!powerOfTwo(level0->width) || !powerOfTwo(level0->height)) && gl::version() < 20 &&
+        !gl::hasExtension("GL_ARB_texture_non_power_of_two")) {
+      // GL 1.x without NPOT support: resample to powers of two, and say so.
+      int w = nextPowerOfTwo(level0->width), h = nextPowerOfTwo(level0->height);
+      std::fprintf(stderr, "note: texture '%s' %dx%d resized bilinearly to %dx%d (the context lacks non-power-of-two textures)\n",
+                   t.name.c_str(), level0->width, level0->height, w, h);
+      level0 = std::make_shared<Image>(resizeBilinear(*level0, w, h));
+    }
     glGenTextures(1, &id);
     glBindTexture(GL_TEXTURE_2D, id);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     if (t.mipmaps) {
       // The book's chain, built on the CPU so it is the same on every driver.
-      std::vector<Image> chain = t.mipLevels ? *t.mipLevels : buildMipChain(*t.image, t.linearLightMips);
+      std::vector<Image> chain = t.mipLevels ? *t.mipLevels : buildMipChain(*level0, t.linearLightMips);
       for (size_t k = 0; k < chain.size(); ++k) upload(chain[k], int(k));
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, int(chain.size()) - 1);
     } else {
-      upload(*t.image, 0);
+      upload(*level0, 0);
       glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     }
     gl::check(("uploading texture " + t.key()).c_str());
@@ -61,31 +88,100 @@ GLuint Renderer::texture(const TextureDesc& t) {
   return id;
 }
 
-static GLuint compile(GLenum type, const std::string& src, const std::string& where) {
+// The 1-based line of `file` where the shader text `src` begins (it is a raw
+// string literal there), or 0 when the file cannot be read or does not hold
+// the text.  Looked up only to word an error message.
+static int sourceLine(const std::string& file, const std::string& src) {
+  if (file.empty() || src.empty()) return 0;
+  std::vector<std::string> candidates{file};
+#ifdef TM_SOURCE_DIR
+  candidates.push_back(std::string(TM_SOURCE_DIR) + "/" + file);
+#endif
+  for (const std::string& path : candidates) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) continue;
+    std::string text;
+    char buf[4096];
+    size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0 && text.size() < (size_t(8) << 20)) text.append(buf, n);
+    std::fclose(f);
+    size_t at = text.find(src);
+    if (at == std::string::npos) continue;
+    return 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
+  }
+  return 0;
+}
+
+// A GL info log as one line: each "0:LINE(COL): ..." message (Mesa's form;
+// "0(LINE) : ..." is also understood) becomes "file:LINE':COL: ..." with
+// LINE' counted in the C++ file holding the shader, when that is known.
+std::string formatShaderLog(const std::string& log, const std::string& file, int firstLine, const char* stage) {
+  std::string out;
+  size_t pos = 0;
+  while (pos < log.size()) {
+    size_t end = log.find('\n', pos);
+    if (end == std::string::npos) end = log.size();
+    std::string line = log.substr(pos, end - pos);
+    pos = end + 1;
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
+    if (line.empty()) continue;
+    int src = 0, ln = 0, col = 0, used = 0;
+    std::string where;
+    if (std::sscanf(line.c_str(), "%d:%d(%d)%n", &src, &ln, &col, &used) == 3 && used > 0) {
+    } else if (std::sscanf(line.c_str(), "%d(%d)%n", &src, &ln, &used) == 2 && used > 0) {
+      col = 0;
+    } else {
+      used = 0;
+      ln = 0;
+    }
+    std::string msg = line.substr(size_t(used));
+    while (!msg.empty() && (msg[0] == ':' || msg[0] == ' ')) msg.erase(0, 1);
+    if (ln > 0 && firstLine > 0)
+      where = file + ":" + std::to_string(firstLine + ln - 1) + (col > 0 ? ":" + std::to_string(col) : "");
+    else if (ln > 0)
+      where = file + ": " + stage + " shader line " + std::to_string(ln);
+    else
+      where = file;
+    if (!out.empty()) out += "; ";
+    out += where + ": " + msg;
+  }
+  return out.empty() ? file + ": (the driver gave no log)" : out;
+}
+
+static GLuint compile(GLenum type, const Program& p, const std::string& key) {
+  const std::string& src = type == GL_VERTEX_SHADER ? p.vertex : p.fragment;
+  const char* stage = type == GL_VERTEX_SHADER ? "vertex" : "fragment";
   GLuint s = glCreateShader(type);
-  const char* p = src.c_str();
-  glShaderSource(s, 1, &p, nullptr);
+  const char* text = src.c_str();
+  glShaderSource(s, 1, &text, nullptr);
   glCompileShader(s);
   GLint ok = 0;
   glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    char log[2048] = {0};
-    glGetShaderInfoLog(s, sizeof log, nullptr, log);
+    GLint len = 0;
+    glGetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
+    std::string log(size_t(std::clamp(len, 1, 1 << 16)), '\0');
+    glGetShaderInfoLog(s, GLsizei(log.size()), nullptr, log.data());
+    log.resize(std::strlen(log.c_str()));
     glDeleteShader(s);
-    std::string l = log;
-    while (!l.empty() && (l.back() == '\n' || l.back() == ' ')) l.pop_back();
-    for (char& c : l)
-      if (c == '\n') c = ' ';
-    throw Error(where + ": " + (type == GL_VERTEX_SHADER ? "vertex" : "fragment") + " shader: " + l, kExitFailure);
+    throw Error(std::string(stage) + " shader of program '" + key + "' does not compile: " +
+                    formatShaderLog(log, p.file, sourceLine(p.file, src), stage),
+                kExitFailure);
   }
+  gl::check((std::string("compiling the ") + stage + " shader of program " + key).c_str());
   return s;
 }
 
 GLuint Renderer::program(const std::string& key, const Program& p) {
   auto it = programs_.find(key);
   if (it != programs_.end()) return it->second;
-  std::string where = p.file + " (program " + key + ")";
-  GLuint vs = compile(GL_VERTEX_SHADER, p.vertex, where), fs = compile(GL_FRAGMENT_SHADER, p.fragment, where);
+  GLuint vs = compile(GL_VERTEX_SHADER, p, key), fs = 0;
+  try {
+    fs = compile(GL_FRAGMENT_SHADER, p, key);
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
   GLuint prog = glCreateProgram();
   glAttachShader(prog, vs);
   glAttachShader(prog, fs);
@@ -95,11 +191,15 @@ GLuint Renderer::program(const std::string& key, const Program& p) {
   GLint ok = 0;
   glGetProgramiv(prog, GL_LINK_STATUS, &ok);
   if (!ok) {
-    char log[2048] = {0};
-    glGetProgramInfoLog(prog, sizeof log, nullptr, log);
+    GLint len = 0;
+    glGetProgramiv(prog, GL_INFO_LOG_LENGTH, &len);
+    std::string log(size_t(std::clamp(len, 1, 1 << 16)), '\0');
+    glGetProgramInfoLog(prog, GLsizei(log.size()), nullptr, log.data());
+    log.resize(std::strlen(log.c_str()));
     glDeleteProgram(prog);
-    throw Error(where + ": link: " + log, kExitFailure);
+    throw Error("program '" + key + "' does not link: " + formatShaderLog(log, p.file, 0, "linked"), kExitFailure);
   }
+  gl::check(("linking program " + key).c_str());
   programs_[key] = prog;
   return prog;
 }

@@ -10,6 +10,12 @@
 namespace ts {
 class Context;
 
+// A shader or program info log as one line, each message prefixed with
+// "file:line:col" counted in the C++ file that holds the shader source
+// (firstLine = the line where the source starts; 0 = unknown, then
+// "file: <stage> shader line N").  Used in compile and link errors.
+std::string formatShaderLog(const std::string& log, const std::string& file, int firstLine, const char* stage);
+
 class Renderer {
  public:
   explicit Renderer(Context& ctx) : ctx_(ctx) {}

@@ -57,13 +57,36 @@ TextureDesc texelIndexTexture(int size) {
 }
 
 TextureDesc fileTexture(const std::string& path) {
-  Image img = readPng(path);
+  Image img = readImage(path);  // PNG or 24-bit BMP, by content
   img.flipVertical();  // a picture's top row is t = 1
   TextureDesc t;
   t.name = "file";
   t.params = {{"path", path}, {"width", str(img.width)}, {"height", str(img.height)}};
   t.image = std::make_shared<Image>(std::move(img));
   return t;
+}
+
+Image resizeBilinear(const Image& src, int width, int height) {
+  if (src.empty()) throw Error("resizeBilinear: empty source image", kExitFailure);
+  Image dst(width, height);
+  for (int y = 0; y < height; ++y) {
+    double fy = std::clamp((y + 0.5) * src.height / height - 0.5, 0.0, double(src.height - 1));
+    int y0 = int(fy), y1 = std::min(y0 + 1, src.height - 1);
+    double ay = fy - y0;
+    for (int x = 0; x < width; ++x) {
+      double fx = std::clamp((x + 0.5) * src.width / width - 0.5, 0.0, double(src.width - 1));
+      int x0 = int(fx), x1 = std::min(x0 + 1, src.width - 1);
+      double ax = fx - x0;
+      Rgba p00 = src.at(x0, y0), p10 = src.at(x1, y0), p01 = src.at(x0, y1), p11 = src.at(x1, y1);
+      auto mix = [&](uint8_t a, uint8_t b, uint8_t c, uint8_t d) {
+        double v = (a * (1 - ax) + b * ax) * (1 - ay) + (c * (1 - ax) + d * ax) * ay;
+        return uint8_t(std::clamp(std::lround(v), 0L, 255L));
+      };
+      dst.set(x, y, {mix(p00.r, p10.r, p01.r, p11.r), mix(p00.g, p10.g, p01.g, p11.g), mix(p00.b, p10.b, p01.b, p11.b),
+                     mix(p00.a, p10.a, p01.a, p11.a)});
+    }
+  }
+  return dst;
 }
 
 void decodeTexelIndex(Rgba c, int* i, int* j) {

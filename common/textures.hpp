@@ -25,8 +25,18 @@ TextureDesc labelledGrid(int size = 512, int cells = 8);
 TextureDesc mipLevelColours(int size = 256);
 Rgba mipLevelColour(int level);
 
-// A PNG file as a texture (row 0 of the picture = the top = t = 1).  Throws
-// ts::Error "<path>: <what is wrong>" for a missing or malformed file.
+// A PNG or 24-bit BMP file as a texture (row 0 of the picture = the top =
+// t = 1).  Throws ts::Error "<path>: <what is wrong>" for a missing,
+// unreadable or malformed file, and refuses sizes over the limits in
+// image.hpp before allocating.  Any size is kept as it is (no resampling):
+// non-power-of-two sizes are uploaded directly where the context has
+// ARB_texture_non_power_of_two (GL >= 2.0, every backend here), otherwise
+// resized to the next powers of two with resizeBilinear (render.cpp says so
+// on stderr).
+TextureDesc fileTexture(const std::string& path);
+// Resamples with a bilinear filter, sample centres aligned ((x + 0.5) *
+// src/dst - 0.5), edges clamped.
+Image resizeBilinear(const Image& src, int width, int height);
 TextureDesc fileTexture(const std::string& path);
 
 // The book's mip chain: level k+1 texel (i, j) is the average of level k's

@@ -1,0 +1,21 @@
+// common/bmp.hpp — 24-bit uncompressed Windows BMP files, the format the
+// book's own code (Buss's RgbImage) reads.  Every header field is checked
+// against the file's length before a pixel is read; anything else (other
+// bit depths, RLE or bitfield compression, OS/2 headers) is refused with a
+// message saying what the file is.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "image.hpp"
+
+namespace ts {
+// Decodes a BMP held in memory into RGBA8 (alpha 255), row 0 = the top row,
+// whether the file stores rows bottom-up (positive height) or top-down
+// (negative height).  Throws ts::Error "<name>: <what is wrong>".
+Image decodeBmp(const uint8_t* data, size_t size, const std::string& name);
+// Reads a file (see readFileBytes for what is refused) and decodes it.
+Image readBmp(const std::string& path);
+// Encodes a 24-bit bottom-up BMP (alpha dropped); used by tests and fuzz seeds.
+std::vector<uint8_t> encodeBmp(const Image& img);
+}  // namespace ts

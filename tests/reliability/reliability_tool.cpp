@@ -1,0 +1,57 @@
+// reliability_tool — helpers for the reliability tests:
+//   reliability_tool corpus DIR   writes the image corpus (corpus_gen.hpp) into
+//       DIR: one file per case plus MANIFEST ("name<TAB>ok" or
+//       "name<TAB>error<TAB>phrase").  The committed tests/reliability/corpus/
+//       is its output; reliability_test fails if the two drift apart.  Files
+//       found by fuzzing go to corpus/regressions/ (kept as found).
+//   reliability_tool check FILE...   every FILE must decode completely as an
+//       image (used after killing a run: no half-written PNG may exist).
+//   reliability_tool diff A B   compares two images: prints
+//       "<pixels that differ> <largest channel difference>" (exit 0), or fails
+//       if either cannot be read or the sizes differ.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "common/error.hpp"
+#include "corpus_gen.hpp"
+
+int main(int argc, char** argv) {
+  std::string cmd = argc > 1 ? argv[1] : "";
+  try {
+    if (cmd == "corpus" && argc == 3) {
+      std::string dir = argv[2], manifest;
+      for (const corpus::Case& c : corpus::makeCases()) {
+        ts::writeFileAtomic(dir + "/" + c.name, std::string(c.bytes.begin(), c.bytes.end()));
+        manifest += c.name + (c.good ? "\tok\n" : "\terror\t" + c.error + "\n");
+      }
+      ts::writeFileAtomic(dir + "/MANIFEST", manifest);
+      return 0;
+    }
+    if (cmd == "check" && argc >= 3) {
+      for (int i = 2; i < argc; ++i) ts::readImage(argv[i]);
+      return 0;
+    }
+    if (cmd == "diff" && argc == 4) {
+      ts::Image a = ts::readImage(argv[2]), b = ts::readImage(argv[3]);
+      if (a.width != b.width || a.height != b.height)
+        throw ts::Error(std::string(argv[2]) + " and " + argv[3] + " differ in size", 1);
+      long n = 0;
+      int most = 0;
+      for (size_t i = 0; i < a.pixels.size(); i += 4) {
+        int d = 0;
+        for (int k = 0; k < 4; ++k) d = std::max(d, std::abs(int(a.pixels[i + k]) - int(b.pixels[i + k])));
+        if (d) ++n;
+        most = std::max(most, d);
+      }
+      std::printf("%ld %d\n", n, most);
+      return 0;
+    }
+  } catch (const ts::Error& e) {
+    std::fprintf(stderr, "reliability_tool: %s\n", e.what());
+    return e.exit_code;
+  }
+  std::fprintf(stderr, "usage: reliability_tool corpus DIR | check FILE... | diff A B\n");
+  return 2;
+}
