@@ -1,0 +1,377 @@
+// Parallax mapping with anisotropic filtering that knows what the relief
+// hides (seed 003, Romanyuk & Archangel 2017), measured against a reference.
+//
+// The claim of the seed: anisotropic filtering under parallax mapping
+// averages, inside the pixel's footprint ellipse, texels that higher relief
+// hides from the eye; excluding them (a ray traced per texel, or the cheaper
+// walk of each row of the footprint from both ends that stops at the first
+// hidden texel) should give truer colours.  The paper never measures it; this
+// demo does.  A relief plane (bricks with deep mortar, a synthetic step/ridge
+// map, or a flat map) is seen at a grazing angle through parallax occlusion
+// mapping (parallax_gl.hpp) and filtered six ways:
+//   M0 naive (implicit derivatives of the shifted coordinate: the artifact),
+//   M1 trilinear and M2 hardware anisotropic 16x (the unshifted gradients),
+//   M3 EWA in the shader (Heckbert), M4 EWA without hidden texels (every
+//   texel traced), M5 the seed's row walk,
+// and compared with R, a reference of 16 x 16 stratified jittered rays per
+// pixel traced finely on the CPU and weighted by the same Gaussian kernel
+// (relief.hpp).  Printed and written as CSV (--csv FILE; make_figures writes
+// parallax_modes.csv beside the figure): PSNR and SSIM over the whole frame,
+// over the high-anisotropy pixels and over the occlusion band (pixels whose
+// footprint crosses an occluding edge), milliseconds per frame and texture
+// lookups per pixel, and the renderer.
+//
+// Keys (each is also a flag, see --help):
+//   m  mode            t  map: bricks | step | flat
+//   + / -  height scale          ] / [  view angle (elevation)
+//   z / Z  azimuth               c  split-screen compare (mode | --against)
+//   b  the mode compared against  v  view: single | modes | error
+//   r / R  render width          x  max-height pyramid acceleration
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/context.hpp"
+#include "common/error.hpp"
+#include "common/figure.hpp"
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "measure.hpp"
+#include "parallax_gl.hpp"
+#include "relief.hpp"
+
+namespace {
+using namespace pax;
+enum View { kSingle, kModes, kError };
+const char* const kMaps[] = {"bricks", "step", "flat"};
+const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f}, kGrey{0.62f, 0.62f, 0.66f, 1.0f};
+
+std::string digest(const ts::Image& img) {
+  uint64_t h = 1469598103934665603ull;
+  for (uint8_t b : img.pixels) h = (h ^ b) * 1099511628211ull;
+  char s[20];
+  std::snprintf(s, sizeof s, "%016llx", static_cast<unsigned long long>(h));
+  return s;
+}
+
+ts::TextureDesc imageTexture(const ts::Image& img, const std::string& what) {
+  ts::TextureDesc t;
+  t.name = "parallax_render";
+  t.params = {{"image", what},
+              {"size", std::to_string(img.width) + "x" + std::to_string(img.height)},
+              {"made_by", "the parallax_aniso demo's measure(): rerun the sidecar's command"},
+              {"digest", digest(img)}};
+  ts::Image flipped = img;
+  flipped.flipVertical();  // texture row 0 is the bottom
+  t.image = std::make_shared<const ts::Image>(std::move(flipped));
+  t.minFilter = t.magFilter = GL_NEAREST;
+  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
+  return t;
+}
+
+// |error| against the reference inside the occlusion band, x4, on a heat
+// scale (black 0 .. yellow 64 levels); outside the band the reference, dimmed.
+ts::Image bandError(const ts::Image& img, const Table& t) {
+  ts::Image out(img.width, img.height);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      size_t p = size_t(y) * size_t(img.width) + size_t(x);
+      const uint8_t* a = &img.pixels[p * 4];
+      const uint8_t* r = &t.referenceImage.pixels[p * 4];
+      if (!t.bandMask[p]) {
+        double l = (0.299 * r[0] + 0.587 * r[1] + 0.114 * r[2]) * 0.25;
+        out.set(x, y, {u8(l), u8(l), u8(l + 8), 255});
+        continue;
+      }
+      double e = 0;
+      for (int c = 0; c < 3; ++c) e += std::abs(double(a[c]) - double(r[c]));
+      double v = std::clamp(e / 3.0 / 64.0, 0.0, 1.0);
+      glm::dvec3 col = v < 0.5 ? glm::mix(glm::dvec3(30, 20, 60), glm::dvec3(220, 40, 40), v * 2)
+                               : glm::mix(glm::dvec3(220, 40, 40), glm::dvec3(255, 240, 80), v * 2 - 1);
+      out.set(x, y, {u8(col.r), u8(col.g), u8(col.b), 255});
+    }
+  return out;
+}
+
+class ParallaxAniso final : public ts::Scene {
+ public:
+  std::string id() const override { return "parallax_aniso"; }
+  std::string title() const override { return "Parallax mapping with visibility-aware anisotropic filtering (seed 003)"; }
+  std::string about() const override {
+    return "A relief (bricks with deep mortar, a step/ridge map, or flat) seen at a grazing angle through parallax\n"
+           "occlusion mapping, its albedo filtered six ways: M0 naive (implicit derivatives of the shifted\n"
+           "coordinate), M1 trilinear, M2 hardware anisotropic 16x, M3 EWA (Heckbert) in the shader, M4 EWA without\n"
+           "the texels higher relief hides (every texel traced), M5 the seed's cheaper row walk.  Measured against a\n"
+           "reference of n x n traced rays per pixel (same Gaussian kernel): PSNR and SSIM over the frame, the\n"
+           "high-anisotropy pixels and the occlusion band; ms per frame and texture lookups per pixel.";
+  }
+  int defaultWidth() const override { return 1360; }
+  int defaultHeight() const override { return 660; }
+
+  void addOptions(ts::Options& o) override {
+    o.addEnum("mode", &mode_, {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5],
+                               kModeKeys[6]},
+              "M0 naive | M1 trilinear | M2 aniso 16x | M3 EWA | M4 EWA visible texels | M5 EWA row walk | "
+              "reference",
+              'm');
+    o.addEnum("map", &map_, {kMaps[0], kMaps[1], kMaps[2]}, "relief: bricks with deep mortar | step/ridge | flat",
+              't');
+    o.addFloat("height-scale", &heightScale_, 0.0f, 0.2f, "depth of the relief, world units (a tile is 2)", '+', '-',
+               0.01f);
+    o.addFloat("angle", &angle_, 14.0f, 80.0f, "view angle: elevation of the central ray above the plane, degrees",
+               ']', '[', 2.0f);
+    o.addFloat("azimuth", &azimuth_, -45.0f, 45.0f, "turn of the view about the normal, degrees", 'z', 'Z', 3.0f);
+    o.addBool("compare", &compare_, "split screen: left half the mode, right half --against", 'c');
+    o.addEnum("against", &against_, {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4],
+                                     kModeKeys[5], kModeKeys[6]},
+              "the mode of the right half in split-screen compare", 'b');
+    o.addEnum("view", &view_, {"single", "modes", "error"},
+              "single: one mode (or the split screen); modes: all seven with their numbers; error: the occlusion "
+              "band's error for M2, M3, M4",
+              'v');
+    o.addInt("res", &res_, 80, 800, "width of the measured renders (height 3/4 of it)", 'r', 'R', 80);
+    o.addInt("rays", &rays_, 2, 32, "reference rays per side of the kernel square (n x n)");
+    o.addInt("seed", &seed_, 0, 1000000, "seed of the reference's jitter");
+    o.addBool("accel", &accel_, "max-height pyramid skip in the visibility trace (same result, fewer lookups)", 'x');
+    o.addText("csv", &csvPath_, "write the measured table as CSV to FILE", [](const std::string& v) {
+      if (!v.empty()) ts::checkWritable(v);
+    });
+  }
+
+  std::vector<ts::FigureSpec> figures() const override {
+    return {
+        {"parallax_modes", "Seed 003: parallax + anisotropic filtering",
+         "Bricks with deep mortar seen at 20 degrees through parallax occlusion mapping, 320x240 each: M0 naive "
+         "lookup (implicit derivatives of the shifted coordinate: fringes along every occluding edge), M1 trilinear, "
+         "M2 hardware anisotropic 16x, M3 EWA in the shader, M4 EWA without the texels higher relief hides, M5 the "
+         "seed's row walk, and the reference (16x16 traced rays per pixel, the same Gaussian kernel). Under each: "
+         "PSNR against the reference over the whole frame and over the occlusion band, and lookups per pixel. The "
+         "table is in parallax_modes.csv.",
+         {"--view", "modes", "--map", "bricks", "--res", "320"}, 1360, 660},
+        {"parallax_error_band", "Seed 003: error in the occlusion band",
+         "The occlusion band (pixels whose footprint crosses an occluding edge, where the reference's rays hit "
+         "depths more than half the relief apart) and the error against the reference inside it for M2 (hardware "
+         "anisotropic), M3 (EWA) and M4 (EWA without hidden texels): |error| x4, black none, red 32, yellow 64 "
+         "levels or more.",
+         {"--view", "error", "--map", "bricks", "--res", "320"}, 1360, 340},
+        {"parallax_step", "Seed 003: the step map",
+         "The synthetic step map (ridges of height 1 and floors of height 0, 32 texels each) at 20 degrees: every "
+         "mode and the reference, as in parallax_modes.",
+         {"--view", "modes", "--map", "step", "--res", "320"}, 1360, 660},
+    };
+  }
+
+  std::string figureCsv() const { return table_ ? csv(*table_) : ""; }
+
+  ts::Measurements measure(ts::Renderer& r) override {
+    std::string key = stateKey();
+    if (!table_ || key != tableKey_) {
+      if (!gl_ || &r != renderer_) {
+        gl_ = std::make_unique<ReliefGL>(r);
+        renderer_ = &r;
+      }
+      Relief& rel = relief();
+      MeasureOptions mo;
+      mo.refRays = rays_;
+      mo.seed = uint32_t(seed_);
+      mo.accel = accel_;
+      mo.timingRuns = 3;
+      table_ = std::make_unique<Table>(measureAll(*gl_, camera(), rel, mo));
+      tableKey_ = key;
+      textures_.clear();
+      for (const Row& row : table_->rows) textures_.push_back(imageTexture(row.image, kModeKeys[row.mode]));
+      textures_.push_back(imageTexture(table_->referenceImage, "reference"));
+      errorTextures_.clear();
+      for (int m : {kAniso16, kEwa, kEwaVis})
+        errorTextures_.push_back(imageTexture(bandError(table_->rows[size_t(m)].image, *table_),
+                                              std::string("band_error_") + kModeKeys[m]));
+      ts::Image band(table_->cam.width, table_->cam.height);
+      for (size_t p = 0; p < table_->bandMask.size(); ++p) {
+        const uint8_t* c = &table_->referenceImage.pixels[p * 4];
+        bool in = table_->bandMask[p];
+        for (int k = 0; k < 3; ++k) band.pixels[p * 4 + size_t(k)] = in ? uint8_t(k == 0 ? 255 : k == 1 ? 200 : 40) : uint8_t(c[k] / 2);
+      }
+      errorTextures_.push_back(imageTexture(band, "occlusion_band"));
+      if (!csvPath_.empty()) ts::writeFileAtomic(csvPath_, csv(*table_));
+      std::fprintf(stderr, "%s", textTable(*table_).c_str());
+    }
+    ts::Measurements m;
+    for (const Row& row : table_->rows) {
+      std::string k = kModeKeys[row.mode];
+      for (char& ch : k)
+        if (ch == '-') ch = '_';
+      m.push_back({k + "_psnr_all", row.psnrAll, std::string(kModeLabels[row.mode]) + ": PSNR (dB) vs the reference, whole frame"});
+      m.push_back({k + "_psnr_band", row.psnrBand, "PSNR (dB) over the occlusion band"});
+      m.push_back({k + "_ssim_band", row.ssimBand, "SSIM over the occlusion band"});
+      m.push_back({k + "_psnr_aniso", row.psnrAniso, "PSNR (dB) over the high-anisotropy pixels"});
+      m.push_back({k + "_lookups", row.lookupsPerPixel, "texture lookups per pixel"});
+    }
+    m.push_back({"band_pixels", double(table_->bandPixels), "pixels in the occlusion band"});
+    return m;
+  }
+
+  ts::Frame build(int width, int height) override {
+    ts::Frame f;
+    f.width = width;
+    f.height = height;
+    f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+    if (!table_) return f;
+    if (view_ == kModes) buildModes(f);
+    else if (view_ == kError) buildError(f);
+    else buildSingle(f);
+    return f;
+  }
+
+ private:
+  Camera camera() const {
+    Camera c;
+    c.width = res_;
+    c.height = std::max(1, res_ * 3 / 4);
+    c.elevationDeg = angle_;
+    c.azimuthDeg = azimuth_;
+    c.heightScale = heightScale_;
+    return c;
+  }
+  std::string stateKey() const {
+    char b[256];
+    std::snprintf(b, sizeof b, "%d %.4f %.3f %.3f %d %d %d %d", map_, heightScale_, angle_, azimuth_, res_, rays_,
+                  seed_, accel_ ? 1 : 0);
+    return b;
+  }
+  Relief& relief() {
+    if (!relief_ || relief_->name != kMaps[map_]) relief_ = std::make_unique<Relief>(makeRelief(kMaps[map_]));
+    return *relief_;
+  }
+  const ts::TextureDesc& textureOf(int mode) const { return textures_[size_t(mode == kReference ? 6 : mode)]; }
+
+  void addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const ts::TextureDesc& tex, float s0 = 0,
+                float s1 = 1) const {
+    int index = f.addTexture(tex);
+    ts::Panel p;
+    p.id = id;
+    p.viewport = rect;
+    p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+    ts::Batch b;
+    b.role = "image";
+    b.texture = index;
+    const glm::vec2 c[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int i : {0, 1, 2, 0, 2, 3}) {
+      float s = s0 + c[i].x * (s1 - s0);
+      b.vertices.push_back({{c[i], 0.0f}, {s, c[i].y, 0.0f, 1.0f}, {1, 1, 1, 1}});
+    }
+    p.batches.push_back(b);
+    f.panels.push_back(p);
+  }
+  std::string numbers(int mode) const {
+    if (mode == kReference) return std::to_string(table_->refRays) + "x" + std::to_string(table_->refRays) + " rays, CPU";
+    const Row& r = table_->rows[size_t(mode)];
+    return fmtNum("%.1f", r.psnrAll) + " dB  band " + fmtNum("%.1f", r.psnrBand) + " dB  " +
+           fmtNum("%.0f", r.lookupsPerPixel) + " lk/px";
+  }
+  std::string header() const {
+    return std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) + " deg, height " +
+           fmtNum("%.2f", heightScale_) + ", " + table_->renderer;
+  }
+
+  void buildSingle(ts::Frame& f) {
+    const int line = 17;
+    int availW = f.width - 32, availH = f.height - 4 * line;
+    double s = std::min(double(availW) / table_->cam.width, double(availH) / table_->cam.height);
+    int w = std::max(1, int(table_->cam.width * s)), h = std::max(1, int(table_->cam.height * s));
+    ts::Rect rect{(f.width - w) / 2, 2 * line, w, h};
+    f.labels.push_back({16.0f, 6.0f, header(), kWhite, 1, ts::Align::Left});
+    if (!compare_) {
+      addImage(f, "image", rect, textureOf(mode_));
+      f.labels.push_back({float(f.width / 2), float(rect.y + h + 6), std::string(kModeLabels[mode_]) + ":  " + numbers(mode_),
+                          kAmber, 1, ts::Align::Center});
+      return;
+    }
+    ts::Rect left{rect.x, rect.y, w / 2, h}, right{rect.x + w / 2, rect.y, w - w / 2, h};
+    addImage(f, "left", left, textureOf(mode_), 0.0f, 0.5f);
+    addImage(f, "right", right, textureOf(against_), 0.5f, 1.0f);
+    ts::Panel canvas;
+    canvas.id = "divider";
+    canvas.viewport = {0, 0, f.width, f.height};
+    canvas.projection = glm::ortho(0.0f, float(f.width), float(f.height), 0.0f, -1.0f, 1.0f);
+    canvas.batches.push_back(ts::lineSegments({{float(right.x), float(rect.y)}, {float(right.x), float(rect.y + h)}},
+                                              kWhite, 2.0f, "divider"));
+    f.panels.push_back(canvas);
+    f.labels.push_back({float(rect.x + w / 4), float(rect.y + h + 6), std::string(kModeLabels[mode_]) + ": " + numbers(mode_),
+                        kAmber, 1, ts::Align::Center});
+    f.labels.push_back({float(rect.x + 3 * w / 4), float(rect.y + h + 6),
+                        std::string(kModeLabels[against_]) + ": " + numbers(against_), kAmber, 1, ts::Align::Center});
+  }
+
+  void buildModes(ts::Frame& f) {
+    const int line = 17, gap = 12, cols = 4;
+    const int W = table_->cam.width, H = table_->cam.height;
+    double s = std::min({1.0, double(f.width - (cols + 1) * gap) / (cols * W), double(f.height - 2 * line - 2 * (3 * line + 6)) / (2 * H)});
+    int w = std::max(1, int(W * s)), h = std::max(1, int(H * s));
+    int left = std::max(0, (f.width - cols * w - (cols - 1) * gap) / 2);
+    f.labels.push_back({float(f.width / 2), 4.0f, header(), kWhite, 1, ts::Align::Center});
+    const int order[7] = {kNaive, kTrilinear, kAniso16, kReference, kEwa, kEwaVis, kEwaRows};
+    for (int k = 0; k < 7; ++k) {
+      int col = k % cols, row = k / cols;
+      int x = left + col * (w + gap), y = 2 * line + row * (h + 3 * line + 6) + line;
+      addImage(f, std::string("image_") + kModeKeys[order[k]], {x, y, w, h}, textureOf(order[k]));
+      f.labels.push_back({float(x + w / 2), float(y - line), kModeLabels[order[k]], kWhite, 1, ts::Align::Center});
+      f.labels.push_back({float(x + w / 2), float(y + h + 3), numbers(order[k]), kAmber, 1, ts::Align::Center});
+    }
+    // The eighth cell: the band in numbers.
+    int x = left + 3 * (w + gap), y = 2 * line + (h + 3 * line + 6) + line;
+    f.labels.push_back({float(x), float(y), "occlusion band: " + std::to_string(table_->bandPixels) + " px", kGrey, 1,
+                        ts::Align::Left});
+    f.labels.push_back({float(x), float(y + line), "mode     PSNR    SSIM", kGrey, 1, ts::Align::Left});
+    for (int m = 0; m < kShaderModes; ++m) {
+      const Row& r = table_->rows[size_t(m)];
+      f.labels.push_back({float(x), float(y + (m + 2) * line),
+                          std::string("M") + std::to_string(m) + "    " + fmtNum("%6.2f", r.psnrBand) + "  " +
+                              fmtNum("%6.4f", r.ssimBand),
+                          m >= kEwa ? kAmber : kWhite, 1, ts::Align::Left});
+    }
+    f.labels.push_back({float(x), float(y + 9 * line), "ms/frame at " + std::to_string(W) + "x" + std::to_string(H) + ":",
+                        kGrey, 1, ts::Align::Left});
+    std::string ms;
+    for (int m = 0; m < kShaderModes; ++m) ms += (m ? " " : "") + fmtNum("%.0f", table_->rows[size_t(m)].ms);
+    f.labels.push_back({float(x), float(y + 10 * line), ms, kGrey, 1, ts::Align::Left});
+  }
+
+  void buildError(ts::Frame& f) {
+    const int line = 17, gap = 12;
+    const int W = table_->cam.width, H = table_->cam.height;
+    double s = std::min({1.0, double(f.width - 5 * gap) / (4 * W), double(f.height - 5 * line) / H});
+    int w = std::max(1, int(W * s)), h = std::max(1, int(H * s));
+    int left = std::max(0, (f.width - 4 * w - 3 * gap) / 2);
+    f.labels.push_back({float(f.width / 2), 4.0f, header(), kWhite, 1, ts::Align::Center});
+    const char* titles[4] = {"occlusion band", "M2 aniso 16x |error|", "M3 EWA |error|", "M4 EWA visible |error|"};
+    const int modes[4] = {-1, kAniso16, kEwa, kEwaVis};
+    for (int k = 0; k < 4; ++k) {
+      int x = left + k * (w + gap), y = 2 * line + line / 2;
+      addImage(f, std::string("error_") + std::to_string(k), {x, y, w, h}, errorTextures_[size_t(k == 0 ? 3 : k - 1)]);
+      f.labels.push_back({float(x + w / 2), float(y - line), titles[k], kWhite, 1, ts::Align::Center});
+      std::string n = k == 0 ? std::to_string(table_->bandPixels) + " px"
+                             : "band PSNR " + fmtNum("%.2f", table_->rows[size_t(modes[k])].psnrBand) + " dB, SSIM " +
+                                   fmtNum("%.3f", table_->rows[size_t(modes[k])].ssimBand);
+      f.labels.push_back({float(x + w / 2), float(y + h + 4), n, kAmber, 1, ts::Align::Center});
+    }
+  }
+
+  int mode_ = kEwa, map_ = 0, against_ = kEwaVis, view_ = kSingle, res_ = 320, rays_ = 16, seed_ = 1;
+  float heightScale_ = 0.06f, angle_ = 20.0f, azimuth_ = 12.0f;
+  bool compare_ = false, accel_ = true;
+  std::string csvPath_;
+
+  std::unique_ptr<Relief> relief_;
+  std::unique_ptr<ReliefGL> gl_;
+  ts::Renderer* renderer_ = nullptr;
+  std::unique_ptr<Table> table_;
+  std::string tableKey_;
+  std::vector<ts::TextureDesc> textures_, errorTextures_;
+};
+}  // namespace
+
+TM_REGISTER_SCENE(ParallaxAniso);

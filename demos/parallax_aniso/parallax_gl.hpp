@@ -1,0 +1,494 @@
+// demos/parallax_aniso/parallax_gl.hpp — the GLSL of the parallax demo and
+// its own GL passes (three textures per draw, float probe targets), shared by
+// the demo, its tests and its benchmark.
+//
+// One fragment shader draws every mode.  Each fragment builds its view ray
+// from the camera (no geometry: the relief plane is analytic, as in
+// demos/jitter), finds where it enters the top of the relief, and runs
+// parallax occlusion mapping: a linear march of 16..64 steps (more the more
+// grazing the ray) and 6 bisection steps, heights read with textureGrad and
+// the top plane's analytic gradients (no implicit derivatives inside the
+// data-dependent loop).  Then the albedo at the shifted coordinate uvS by
+//   M0 naive     texture(albedo, uvS): implicit derivatives of the shifted
+//                coordinate, which jump at every occluding edge
+//   M1 trilinear textureGrad with the unshifted gradients, anisotropy 1
+//   M2 aniso16   the same with GL_TEXTURE_MAX_ANISOTROPY 16 (the hardware's
+//                anisotropic filter; on llvmpipe an EWA on one level)
+//   M3 ewa       Heckbert's EWA in the shader: the ellipse of the unshifted
+//                gradients around uvS, unit reconstruction term, Gaussian
+//                weights, texelFetch row by row (only texels inside the
+//                ellipse are read), two mip levels blended
+//   M4 ewa-vis   M3 without the texels whose surface point is hidden from
+//                the eye by higher relief (every texel traced, once)
+//   M5 ewa-rows  the seed's cheaper walk: each row of the ellipse from its
+//                left end until the first hidden texel, then from its right
+//                end back until a hidden texel (or the stop of the first
+//                walk: that index is the "buffer" that keeps a texel from
+//                being counted twice); the untraced middle is dropped.
+// The visibility trace (hiddenTexel, mirrored by pax::hiddenTexel) reads the
+// heights of the level being filtered with texelFetch.  With `accel` on it
+// first reads the max-height pyramid: when no relief in the cells covering the
+// whole trace rises above the texel's own depth (minus the tolerance), the
+// texel cannot be hidden and the trace is skipped — the same answer, fewer
+// fetches.
+// Counting mode writes the number of texture lookups (texture, textureGrad,
+// textureLod and texelFetch calls, whatever the hardware filter reads behind
+// one call) and of excluded texels into the colour, as 16-bit integers.
+#pragma once
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "common/error.hpp"
+#include "common/gl.hpp"
+#include "common/render.hpp"
+#include "relief.hpp"
+
+namespace pax {
+constexpr const char* kSourceFile = "demos/parallax_aniso/parallax_gl.hpp";
+enum Mode { kNaive, kTrilinear, kAniso16, kEwa, kEwaVis, kEwaRows, kShaderModes, kReference = kShaderModes };
+inline const char* const kModeKeys[] = {"naive", "trilinear", "aniso16", "ewa", "ewa-vis", "ewa-rows", "reference"};
+inline const char* const kModeLabels[] = {"M0 naive", "M1 trilinear", "M2 aniso 16x", "M3 EWA",
+                                          "M4 EWA visible", "M5 EWA row walk", "R reference"};
+
+inline const char* vertexShader() {
+  return "#version 130\nvoid main() { gl_Position = gl_Vertex; }\n";
+}
+
+inline std::string fragmentShader() {
+  return R"(#version 130
+uniform sampler2D albedo;     // RGBA8, mipmapped (the 2x2 averages)
+uniform sampler2D heightTex;  // R = height, mipmapped (2x2 averages)
+uniform sampler2D heightMax;  // R = the max-height pyramid
+uniform vec3 eye, fwd, rightV, upV;
+uniform vec2 viewport;        // the pass's size in pixels
+uniform vec4 relief;          // (1 / tile, heightScale / tile, texture size, number of levels - 1)
+uniform vec2 pomSteps;        // (fewest, most) linear steps
+uniform int mode, countMode, accel, probe;
+uniform vec4 probeA, probeB;  // probe inputs
+const float ALPHA = 2.0, MAXANISO = 16.0, EPS = 1.5 / 255.0;
+int fetches = 0, excluded = 0;
+
+vec3 rayDir(vec2 p) {
+  vec2 n = p / viewport * 2.0 - 1.0;
+  return fwd + n.x * rightV + n.y * upV;
+}
+vec2 topUV(vec3 d) { return (eye.xy + (eye.z / -d.z) * d.xy) * relief.x; }
+
+float depthGrad(vec2 uv, vec2 gx, vec2 gy) {
+  fetches++;
+  return 1.0 - textureGrad(heightTex, uv, gx, gy).r;
+}
+// Parallax occlusion mapping: returns the depth where the ray meets the relief.
+float pom(vec2 uv0, vec2 Vp, vec2 gx, vec2 gy, float cosView) {
+  int n = int(mix(pomSteps.y, pomSteps.x, cosView) + 0.5);
+  float stepD = 1.0 / float(n), prev = 0.0;
+  for (int k = 1; k <= n; ++k) {
+    float d = float(k) * stepD;
+    if (d >= depthGrad(uv0 + Vp * d, gx, gy)) {
+      float lo = prev, hi = d;
+      for (int it = 0; it < 6; ++it) {
+        float m = 0.5 * (lo + hi);
+        if (m >= depthGrad(uv0 + Vp * m, gx, gy)) hi = m; else lo = m;
+      }
+      return hi;
+    }
+    prev = d;
+  }
+  return 1.0;
+}
+
+vec4 ellipse(vec2 gx, vec2 gy, bool recon) {  // gx = (Ux, Vx), gy = (Uy, Vy)
+  float A = gx.y * gx.y + gy.y * gy.y;
+  float B = -2.0 * (gx.x * gx.y + gy.x * gy.y);
+  float C = gx.x * gx.x + gy.x * gy.x;
+  float det = gx.x * gy.y - gy.x * gx.y;
+  float F = det * det;
+  if (recon) { A += 1.0; C += 1.0; F = A * C - 0.25 * B * B; }
+  return vec4(A, B, C, F);
+}
+vec2 radii(vec4 e) {  // semi-axes, longest first
+  float m = 0.5 * (e.x + e.z), d = 0.5 * sqrt((e.x - e.z) * (e.x - e.z) + e.y * e.y);
+  return vec2(sqrt(e.w / max(m - d, 1e-30)), sqrt(e.w / max(m + d, 1e-30)));
+}
+
+ivec2 wrapT(ivec2 t, int size) { return ivec2((t.x % size + size) % size, (t.y % size + size) % size); }
+float depthTexel(ivec2 t, int L, int size) {
+  fetches++;
+  return 1.0 - texelFetch(heightTex, wrapT(t, size), L).r;
+}
+// Is texel t of level L hidden from the eye?  Vt = parallax per unit depth in
+// texels of level L.  Mirrors pax::hiddenTexel.
+bool hiddenTexel(ivec2 t, int L, vec2 Vt) {
+  int size = int(relief.z) >> L;
+  float d0 = depthTexel(t, L, size);
+  if (d0 <= EPS) return false;
+  vec2 c = vec2(t) + 0.5;
+  if (accel != 0) {
+    // The trace reads texels floor(c - Vt * s), s in [0, d0]: all inside the box lo..hi.
+    vec2 e = c - Vt * d0;
+    vec2 lo = floor(min(c, e)), hi = floor(max(c, e));
+    int k = 0;
+    float scale = 1.0;
+    while (k < int(relief.w) - L && (floor(hi.x / scale) - floor(lo.x / scale) > 1.0 ||
+                                     floor(hi.y / scale) - floor(lo.y / scale) > 1.0)) {
+      k++;
+      scale *= 2.0;
+    }
+    int sizeK = max(1, size >> k);
+    ivec2 b0 = ivec2(floor(lo / scale)), b1 = ivec2(floor(hi / scale));
+    float top = 0.0;
+    for (int by = b0.y; by <= b1.y; ++by)
+      for (int bx = b0.x; bx <= b1.x; ++bx) {
+        fetches++;
+        top = max(top, texelFetch(heightMax, wrapT(ivec2(bx, by), sizeK), L + k).r);
+      }
+    if (1.0 - top >= d0 - EPS) return false;  // nothing rises above the ray: not hidden
+  }
+  int n = int(ceil(2.0 * d0 * length(Vt)));
+  for (int k = 1; k <= n; ++k) {
+    float s = d0 * float(k) / float(n);
+    vec2 p = c - Vt * s;
+    if (depthTexel(ivec2(floor(p)), L, size) < d0 - s - EPS) return true;
+  }
+  return false;
+}
+
+// EWA on level L: vis 0 = every texel, 1 = visible texels only, 2 = row walk.
+vec3 ewaLevel(vec2 uvS, vec2 gx, vec2 gy, vec2 Vp, int L, int vis) {
+  int size = int(relief.z) >> L;
+  float s = float(size);
+  vec4 e = ellipse(gx * s, gy * s, true);
+  float A = e.x, B = e.y, C = e.z, F = e.w;
+  vec2 c = uvS * s - 0.5;
+  vec2 Vt = Vp * s;
+  vec3 sum = vec3(0.0);
+  float wsum = 0.0;
+  float vr = sqrt(A);
+  int j0 = int(ceil(c.y - vr)), j1 = int(floor(c.y + vr));
+  for (int j = j0; j <= j1; ++j) {
+    float V = float(j) - c.y;
+    float disc = B * B * V * V - 4.0 * A * (C * V * V - F);
+    if (disc < 0.0) continue;
+    float sq = sqrt(disc);
+    int i0 = int(ceil(c.x + (-B * V - sq) / (2.0 * A))), i1 = int(floor(c.x + (-B * V + sq) / (2.0 * A)));
+    int stop = i1 + 1;  // vis 2: where the walk from the left stopped
+    for (int i = i0; i <= i1; ++i) {
+      if (vis != 0 && hiddenTexel(ivec2(i, j), L, Vt)) {
+        excluded++;
+        stop = i;
+        if (vis == 2) break;
+        continue;
+      }
+      float U = float(i) - c.x;
+      float w = exp(-ALPHA * min(1.0, (A * U * U + B * U * V + C * V * V) / F));
+      fetches++;
+      sum += w * texelFetch(albedo, wrapT(ivec2(i, j), size), L).rgb;
+      wsum += w;
+    }
+    if (vis == 2 && stop <= i1) {
+      int i = i1;
+      for (; i > stop; --i) {
+        if (hiddenTexel(ivec2(i, j), L, Vt)) break;
+        float U = float(i) - c.x;
+        float w = exp(-ALPHA * min(1.0, (A * U * U + B * U * V + C * V * V) / F));
+        fetches++;
+        sum += w * texelFetch(albedo, wrapT(ivec2(i, j), size), L).rgb;
+        wsum += w;
+      }
+      excluded += i - stop;  // the hidden texel found (if any) and the untraced middle
+    }
+  }
+  if (wsum <= 0.0) {  // everything hidden at this level: the texel under uvS
+    fetches++;
+    return textureLod(albedo, uvS, float(L)).rgb;
+  }
+  return sum / wsum;
+}
+
+vec3 ewa(vec2 uvS, vec2 gx, vec2 gy, vec2 Vp, int vis) {
+  vec4 plain = ellipse(gx * relief.z, gy * relief.z, false);
+  vec2 r = radii(plain);
+  float lod = max(0.0, log2(max(max(r.y, r.x / MAXANISO), 1e-30)));
+  lod = min(lod, relief.w);
+  int L0 = int(floor(lod));
+  float f = lod - float(L0);
+  vec3 a = ewaLevel(uvS, gx, gy, Vp, L0, vis);
+  if (f <= 0.0 || L0 >= int(relief.w)) return a;
+  return mix(a, ewaLevel(uvS, gx, gy, Vp, L0 + 1, vis), f);
+}
+
+void main() {
+  if (probe == 1) {  // the ellipse of gradients probeA = (Ux, Vx, Uy, Vy); probeB.x = reconstruction
+    gl_FragColor = ellipse(probeA.xy, probeA.zw, probeB.x > 0.5);
+    return;
+  }
+  if (probe == 2) {  // hiddenTexel of texel (probeA.xy + pixel) of level probeA.z, Vt = probeB.xy
+    ivec2 t = ivec2(probeA.xy) + ivec2(gl_FragCoord.xy);
+    gl_FragColor = vec4(hiddenTexel(t, int(probeA.z), probeB.xy) ? 1.0 : 0.0, float(fetches) / 255.0, 0.0, 1.0);
+    return;
+  }
+  vec2 p = gl_FragCoord.xy;
+  vec3 d = rayDir(p);
+  vec2 uv0 = topUV(d);
+  vec2 gx = topUV(rayDir(p + vec2(0.5, 0.0))) - topUV(rayDir(p - vec2(0.5, 0.0)));
+  vec2 gy = topUV(rayDir(p + vec2(0.0, 0.5))) - topUV(rayDir(p - vec2(0.0, 0.5)));
+  vec2 Vp = d.xy / (-d.z) * relief.y;
+  float depth = pom(uv0, Vp, gx, gy, abs(normalize(d).z));
+  vec2 uvS = uv0 + Vp * depth;
+  vec3 col;
+  if (mode == 0) {
+    fetches++;
+    col = texture(albedo, uvS).rgb;
+  } else if (mode == 1 || mode == 2) {
+    fetches++;
+    col = textureGrad(albedo, uvS, gx, gy).rgb;
+  } else {
+    col = ewa(uvS, gx, gy, Vp, mode - 3);
+  }
+  if (countMode != 0)
+    gl_FragColor = vec4(float(fetches % 256), float((fetches / 256) % 256), float(excluded % 256),
+                        float((excluded / 256) % 256)) / 255.0;
+  else
+    gl_FragColor = vec4(col, 1.0);
+}
+)";
+}
+
+// The GL objects of one relief map: albedo, heights and the max-height
+// pyramid, every level uploaded from the CPU chains (the same on every driver).
+struct ReliefTextures {
+  std::string name;
+  GLuint albedo = 0, height = 0, heightMax = 0;
+  int levels = 0;
+};
+
+struct PassOptions {
+  bool count = false;  // write lookups / excluded texels instead of the colour
+  bool accel = true;   // max-height pyramid skip in the visibility trace
+  float minSteps = 16, maxSteps = 64;
+};
+
+// Everything the demo, the tests and the benchmark need on the GL side.
+class ReliefGL {
+ public:
+  explicit ReliefGL(ts::Renderer& r) : r_(r) {}
+  ~ReliefGL() = default;
+  // Drops the GL objects (call while the context is alive).
+  void release() {
+    for (auto& t : textures_) {
+      GLuint ids[3] = {t.albedo, t.height, t.heightMax};
+      glDeleteTextures(3, ids);
+    }
+    textures_.clear();
+    freeTarget();
+  }
+
+  const ReliefTextures& textures(const Relief& rel) {
+    for (auto& t : textures_)
+      if (t.name == rel.name) return t;
+    ReliefTextures t;
+    t.name = rel.name;
+    t.levels = int(rel.albedo.size());
+    auto upload = [](const std::vector<ts::Image>& chain, GLenum minFilter) {
+      GLuint id = 0;
+      glGenTextures(1, &id);
+      glBindTexture(GL_TEXTURE_2D, id);
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      for (size_t k = 0; k < chain.size(); ++k)
+        glTexImage2D(GL_TEXTURE_2D, GLint(k), GL_RGBA8, chain[k].width, chain[k].height, 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, chain[k].pixels.data());
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(chain.size()) - 1);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(minFilter));
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, minFilter == GL_NEAREST_MIPMAP_NEAREST ? GL_NEAREST : GL_LINEAR);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+      return id;
+    };
+    t.albedo = upload(rel.albedo, GL_LINEAR_MIPMAP_LINEAR);
+    t.height = upload(rel.height, GL_LINEAR_MIPMAP_LINEAR);
+    t.heightMax = upload(rel.heightMax, GL_NEAREST_MIPMAP_NEAREST);
+    ts::gl::check("uploading the relief textures");
+    textures_.push_back(t);
+    return textures_.back();
+  }
+
+  static bool anisotropySupported() {
+    return ts::gl::hasExtension("GL_EXT_texture_filter_anisotropic") ||
+           ts::gl::hasExtension("GL_ARB_texture_filter_anisotropic") || ts::gl::version() >= 46;
+  }
+
+  // Draws one mode into an RGBA8 target of the camera's size (bound and left
+  // bound; read with readColour).  Returns nothing: timing wraps this.
+  void draw(const Camera& cam, const Relief& rel, int mode, const PassOptions& o) {
+    if (mode < 0 || mode >= kShaderModes) throw ts::Error("no shader for mode " + std::to_string(mode), ts::kExitFailure);
+    bindTarget(cam.width, cam.height, false);
+    GLuint prog = program();
+    glUseProgram(prog);
+    setCamera(prog, cam);
+    const ReliefTextures& t = textures(rel);
+    bind(prog, t, mode == kAniso16 ? 16.0f : 1.0f);
+    glUniform4f(glGetUniformLocation(prog, "relief"), float(1.0 / cam.tile), float(cam.heightScale / cam.tile),
+                float(kTexSize), float(t.levels - 1));
+    glUniform2f(glGetUniformLocation(prog, "pomSteps"), o.minSteps, o.maxSteps);
+    glUniform1i(glGetUniformLocation(prog, "mode"), mode);
+    glUniform1i(glGetUniformLocation(prog, "countMode"), o.count ? 1 : 0);
+    glUniform1i(glGetUniformLocation(prog, "accel"), o.accel ? 1 : 0);
+    glUniform1i(glGetUniformLocation(prog, "probe"), 0);
+    quad();
+    glUseProgram(0);
+    ts::gl::check("drawing a parallax pass");
+  }
+  // draw() and read back (row 0 = top).
+  ts::Image render(const Camera& cam, const Relief& rel, int mode, const PassOptions& o = {}) {
+    draw(cam, rel, mode, o);
+    ts::Image img(cam.width, cam.height);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, cam.width, cam.height, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
+    restore();
+    img.flipVertical();
+    return img;
+  }
+  // Milliseconds per frame: the median of `runs` draws, each finished.
+  double timeMs(const Camera& cam, const Relief& rel, int mode, int runs, const PassOptions& o = {}) {
+    draw(cam, rel, mode, o);  // warm: compile, upload, first JIT
+    glFinish();
+    std::vector<double> ms;
+    for (int k = 0; k < runs; ++k) {
+      auto t0 = std::chrono::steady_clock::now();
+      draw(cam, rel, mode, o);
+      glFinish();
+      ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+    restore();
+    std::sort(ms.begin(), ms.end());
+    return ms[ms.size() / 2];
+  }
+
+  // Probe 1: the shader's ellipse of (Ux, Vx, Uy, Vy) -> (A, B, C, F).
+  glm::dvec4 probeEllipse(glm::dvec4 g, bool reconstruction) {
+    std::vector<float> v = probePass(1, 1, g, glm::dvec4(reconstruction ? 1 : 0, 0, 0, 0), nullptr, 0);
+    return {v[0], v[1], v[2], v[3]};
+  }
+  // Probe 2: hiddenTexel for texels first..first + (w, h) of level L of a map;
+  // returns 1/0 per texel, row-major from `first` (j rows, i columns).
+  std::vector<int> probeHidden(const Relief& rel, glm::ivec2 first, int w, int h, int L, glm::dvec2 Vt, bool accel,
+                               std::vector<int>* lookups = nullptr) {
+    std::vector<float> v = probePass(w, h, glm::dvec4(first.x, first.y, L, 0), glm::dvec4(Vt, 0, 0), &rel, accel);
+    std::vector<int> out(size_t(w) * size_t(h));
+    if (lookups) lookups->resize(out.size());
+    for (size_t k = 0; k < out.size(); ++k) {
+      out[k] = v[k * 4] > 0.5f;
+      if (lookups) (*lookups)[k] = int(std::lround(v[k * 4 + 1] * 255.0f));
+    }
+    return out;
+  }
+
+ private:
+  GLuint program() {
+    return r_.program("parallax_aniso", {kSourceFile, vertexShader(), fragmentShader()});
+  }
+  void setCamera(GLuint prog, const Camera& cam) {
+    auto v3 = [&](const char* n, glm::dvec3 v) { glUniform3f(glGetUniformLocation(prog, n), float(v.x), float(v.y), float(v.z)); };
+    v3("eye", cam.eye());
+    v3("fwd", cam.forward());
+    v3("rightV", cam.right());
+    v3("upV", cam.up());
+    glUniform2f(glGetUniformLocation(prog, "viewport"), float(cam.width), float(cam.height));
+  }
+  void bind(GLuint prog, const ReliefTextures& t, float aniso) {
+    const GLuint ids[3] = {t.albedo, t.height, t.heightMax};
+    const char* names[3] = {"albedo", "heightTex", "heightMax"};
+    for (int k = 0; k < 3; ++k) {
+      glActiveTexture(GLenum(GL_TEXTURE0 + k));
+      glBindTexture(GL_TEXTURE_2D, ids[k]);
+      glUniform1i(glGetUniformLocation(prog, names[k]), k);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, t.albedo);
+    if (anisotropySupported()) glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, aniso);
+  }
+  void quad() {
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glBegin(GL_TRIANGLES);
+    const float c[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
+    for (const auto& v : c) glVertex2f(v[0], v[1]);
+    glEnd();
+  }
+  // An FBO of w x h (RGBA8 or RGBA32F), bound for drawing.
+  void bindTarget(int w, int h, bool floatTarget) {
+    if (!ts::gl::p_glGenFramebuffers) throw ts::Error("the parallax passes need framebuffer objects (GL 3.0)", ts::kExitFailure);
+    if (!saved_) {
+      glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prevFbo_);
+      glGetIntegerv(GL_DRAW_BUFFER, &prevDraw_);
+      glGetIntegerv(GL_READ_BUFFER, &prevRead_);
+      saved_ = true;
+    }
+    if (w != tw_ || h != th_ || floatTarget != tfloat_) {
+      freeTarget();
+      glGenFramebuffers(1, &fbo_);
+      glGenRenderbuffers(1, &rb_);
+      glBindRenderbuffer(GL_RENDERBUFFER, rb_);
+      glRenderbufferStorage(GL_RENDERBUFFER, floatTarget ? GL_RGBA32F : GL_RGBA8, w, h);
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb_);
+      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw ts::Error("parallax framebuffer " + std::to_string(w) + "x" + std::to_string(h) + " is incomplete",
+                        ts::kExitFailure);
+      tw_ = w, th_ = h, tfloat_ = floatTarget;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    glViewport(0, 0, w, h);
+  }
+  void restore() {
+    if (!saved_) return;
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(prevFbo_));
+    glDrawBuffer(GLenum(prevDraw_));
+    glReadBuffer(GLenum(prevRead_));
+    saved_ = false;
+  }
+  void freeTarget() {
+    if (fbo_) glDeleteFramebuffers(1, &fbo_);
+    if (rb_) glDeleteRenderbuffers(1, &rb_);
+    fbo_ = rb_ = 0;
+    tw_ = th_ = 0;
+  }
+  std::vector<float> probePass(int w, int h, glm::dvec4 a, glm::dvec4 b, const Relief* rel, bool accel) {
+    bindTarget(w, h, true);
+    GLuint prog = program();
+    glUseProgram(prog);
+    Camera cam;
+    setCamera(prog, cam);
+    if (rel) {
+      const ReliefTextures& t = textures(*rel);
+      bind(prog, t, 1.0f);
+      glUniform4f(glGetUniformLocation(prog, "relief"), 0.5f, 0.03f, float(kTexSize), float(t.levels - 1));
+    }
+    glUniform1i(glGetUniformLocation(prog, "probe"), rel ? 2 : 1);
+    glUniform1i(glGetUniformLocation(prog, "accel"), accel ? 1 : 0);
+    glUniform4f(glGetUniformLocation(prog, "probeA"), float(a.x), float(a.y), float(a.z), float(a.w));
+    glUniform4f(glGetUniformLocation(prog, "probeB"), float(b.x), float(b.y), float(b.z), float(b.w));
+    quad();
+    glUseProgram(0);
+    std::vector<float> v(size_t(w) * size_t(h) * 4);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, v.data());
+    restore();
+    ts::gl::check("a parallax probe pass");
+    return v;
+  }
+
+  ts::Renderer& r_;
+  std::vector<ReliefTextures> textures_;
+  GLuint fbo_ = 0, rb_ = 0;
+  int tw_ = 0, th_ = 0;
+  bool tfloat_ = false, saved_ = false;
+  GLint prevFbo_ = 0, prevDraw_ = 0, prevRead_ = 0;
+};
+}  // namespace pax
