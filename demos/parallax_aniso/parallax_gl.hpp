@@ -26,11 +26,12 @@
 //                walk: that index is the "buffer" that keeps a texel from
 //                being counted twice); the untraced middle is dropped.
 // The visibility trace (hiddenTexel, mirrored by pax::hiddenTexel) reads the
-// heights of the level being filtered with texelFetch.  With `accel` on it
-// first reads the max-height pyramid: when no relief in the cells covering the
-// whole trace rises above the texel's own depth (minus the tolerance), the
-// texel cannot be hidden and the trace is skipped — the same answer, fewer
-// fetches.
+// heights of the level being filtered with texelFetch.  With `accel` on, each
+// ellipse first reads the max-height pyramid once (<= 4 lookups) for the
+// highest relief over every texel its traces can read; a trace stops as soon
+// as its ray is less than the tolerance below that height, because no later
+// sample can then find relief above the ray — the same answer, fewer lookups
+// (most visible texels are on tops, where the trace then ends at once).
 // Counting mode writes the number of texture lookups (texture, textureGrad,
 // textureLod and texelFetch calls, whatever the hardware filter reads behind
 // one call) and of excluded texels into the colour, as 16-bit integers.
@@ -120,35 +121,44 @@ float depthTexel(ivec2 t, int L, int size) {
 }
 // Is texel t of level L hidden from the eye?  Vt = parallax per unit depth in
 // texels of level L.  Mirrors pax::hiddenTexel.
-bool hiddenTexel(ivec2 t, int L, vec2 Vt) {
+// The smallest depth (highest relief) over texels lo..hi (inclusive, texel
+// indices of level L, any span): the max-height pyramid read at the level
+// where the box fits in 2 x 2 cells.  A lower bound, never above the truth.
+float minDepthOver(vec2 lo, vec2 hi, int L) {
+  int size = int(relief.z) >> L;
+  int k = 0;
+  float scale = 1.0;
+  while (k < int(relief.w) - L && (floor(hi.x / scale) - floor(lo.x / scale) > 1.0 ||
+                                   floor(hi.y / scale) - floor(lo.y / scale) > 1.0)) {
+    k++;
+    scale *= 2.0;
+  }
+  if (floor(hi.x / scale) - floor(lo.x / scale) > 1.0 || floor(hi.y / scale) - floor(lo.y / scale) > 1.0) return 0.0;
+  int sizeK = max(1, size >> k);
+  ivec2 b0 = ivec2(floor(lo / scale)), b1 = ivec2(floor(hi / scale));
+  float top = 0.0;
+  for (int by = b0.y; by <= b1.y; ++by)
+    for (int bx = b0.x; bx <= b1.x; ++bx) {
+      fetches++;
+      top = max(top, texelFetch(heightMax, wrapT(ivec2(bx, by), sizeK), L + k).r);
+    }
+  return 1.0 - top;
+}
+
+// Is texel t of level L hidden from the eye?  Vt = parallax per unit depth in
+// texels of level L; dmin = a lower bound of the depth over every texel the
+// trace can read (0 when unknown).  Mirrors pax::hiddenTexel.
+bool hiddenTexel(ivec2 t, int L, vec2 Vt, float dmin) {
   int size = int(relief.z) >> L;
   float d0 = depthTexel(t, L, size);
   if (d0 <= EPS) return false;
   vec2 c = vec2(t) + 0.5;
-  if (accel != 0) {
-    // The trace reads texels floor(c - Vt * s), s in [0, d0]: all inside the box lo..hi.
-    vec2 e = c - Vt * d0;
-    vec2 lo = floor(min(c, e)), hi = floor(max(c, e));
-    int k = 0;
-    float scale = 1.0;
-    while (k < int(relief.w) - L && (floor(hi.x / scale) - floor(lo.x / scale) > 1.0 ||
-                                     floor(hi.y / scale) - floor(lo.y / scale) > 1.0)) {
-      k++;
-      scale *= 2.0;
-    }
-    int sizeK = max(1, size >> k);
-    ivec2 b0 = ivec2(floor(lo / scale)), b1 = ivec2(floor(hi / scale));
-    float top = 0.0;
-    for (int by = b0.y; by <= b1.y; ++by)
-      for (int bx = b0.x; bx <= b1.x; ++bx) {
-        fetches++;
-        top = max(top, texelFetch(heightMax, wrapT(ivec2(bx, by), sizeK), L + k).r);
-      }
-    if (1.0 - top >= d0 - EPS) return false;  // nothing rises above the ray: not hidden
-  }
   int n = int(ceil(2.0 * d0 * length(Vt)));
   for (int k = 1; k <= n; ++k) {
     float s = d0 * float(k) / float(n);
+    // With `accel`: once the ray is less than EPS below the highest relief
+    // around, no later sample can find relief above it — stop (same answer).
+    if (accel != 0 && d0 - s - EPS <= dmin) return false;
     vec2 p = c - Vt * s;
     if (depthTexel(ivec2(floor(p)), L, size) < d0 - s - EPS) return true;
   }
@@ -167,6 +177,14 @@ vec3 ewaLevel(vec2 uvS, vec2 gx, vec2 gy, vec2 Vp, int L, int vis) {
   float wsum = 0.0;
   float vr = sqrt(A);
   int j0 = int(ceil(c.y - vr)), j1 = int(floor(c.y + vr));
+  float dmin = 0.0;
+  if (accel != 0 && vis != 0) {
+    // Every texel a trace can read: the ellipse's box, swept toward the eye by
+    // the parallax of the full depth.
+    vec2 box = vec2(sqrt(C), vr);
+    vec2 lo = floor(min(c - box, c - box - Vt)), hi = floor(max(c + box, c + box - Vt)) + 1.0;
+    dmin = minDepthOver(lo, hi, L);
+  }
   for (int j = j0; j <= j1; ++j) {
     float V = float(j) - c.y;
     float disc = B * B * V * V - 4.0 * A * (C * V * V - F);
@@ -175,7 +193,7 @@ vec3 ewaLevel(vec2 uvS, vec2 gx, vec2 gy, vec2 Vp, int L, int vis) {
     int i0 = int(ceil(c.x + (-B * V - sq) / (2.0 * A))), i1 = int(floor(c.x + (-B * V + sq) / (2.0 * A)));
     int stop = i1 + 1;  // vis 2: where the walk from the left stopped
     for (int i = i0; i <= i1; ++i) {
-      if (vis != 0 && hiddenTexel(ivec2(i, j), L, Vt)) {
+      if (vis != 0 && hiddenTexel(ivec2(i, j), L, Vt, dmin)) {
         excluded++;
         stop = i;
         if (vis == 2) break;
@@ -190,7 +208,7 @@ vec3 ewaLevel(vec2 uvS, vec2 gx, vec2 gy, vec2 Vp, int L, int vis) {
     if (vis == 2 && stop <= i1) {
       int i = i1;
       for (; i > stop; --i) {
-        if (hiddenTexel(ivec2(i, j), L, Vt)) break;
+        if (hiddenTexel(ivec2(i, j), L, Vt, dmin)) break;
         float U = float(i) - c.x;
         float w = exp(-ALPHA * min(1.0, (A * U * U + B * U * V + C * V * V) / F));
         fetches++;
@@ -226,7 +244,10 @@ void main() {
   }
   if (probe == 2) {  // hiddenTexel of texel (probeA.xy + pixel) of level probeA.z, Vt = probeB.xy
     ivec2 t = ivec2(probeA.xy) + ivec2(gl_FragCoord.xy);
-    gl_FragColor = vec4(hiddenTexel(t, int(probeA.z), probeB.xy) ? 1.0 : 0.0, float(fetches) / 255.0, 0.0, 1.0);
+    int L = int(probeA.z);
+    vec2 c = vec2(t) + 0.5;
+    float dmin = accel != 0 ? minDepthOver(floor(min(c, c - probeB.xy)) - 1.0, floor(max(c, c - probeB.xy)) + 1.0, L) : 0.0;
+    gl_FragColor = vec4(hiddenTexel(t, L, probeB.xy, dmin) ? 1.0 : 0.0, float(fetches) / 255.0, 0.0, 1.0);
     return;
   }
   vec2 p = gl_FragCoord.xy;
