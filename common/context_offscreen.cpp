@@ -257,10 +257,14 @@ std::unique_ptr<Context> createOffscreenContext(Backend backend, const ContextOp
     if (backend == Backend::OSMesa)
       throw Error("OSMesa backend unavailable (" + whyOsmesa +
                   "); install Debian's libosmesa6 or use --backend egl");
-    if (opts.verbose) std::fprintf(stderr, "note: %s; using the EGL backend\n", whyOsmesa.c_str());
   }
   if (backend == Backend::EGL || backend == Backend::Auto) {
-    if (auto c = EglContext::create(opts, &whyEgl)) return c;
+    if (auto c = EglContext::create(opts, &whyEgl)) {
+      // The note only when the fallback worked: a failure is one line.
+      if (backend == Backend::Auto && opts.verbose)
+        std::fprintf(stderr, "note: %s; using the EGL backend\n", whyOsmesa.c_str());
+      return c;
+    }
     if (backend == Backend::EGL)
       throw Error("EGL backend unavailable (" + whyEgl + "); install Debian's libegl1 libegl-mesa0 libgl1-mesa-dri");
     throw Error("no offscreen OpenGL context: OSMesa: " + whyOsmesa + "; EGL: " + whyEgl +

@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# tests/reliability/figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL — figures
+# are reproducible and written atomically:
+#   1. two runs into two folders give byte-identical PNGs (and sidecars,
+#      once the folder name in their commands is replaced);
+#   2. OSMesa and EGL give byte-identical PNGs except the figures listed in
+#      backend_bounds.tsv, whose differences stay within the stated bounds
+#      (pixels that differ, largest channel difference);
+#   3. runs killed (SIGKILL) while a file is being written leave no partial
+#      PNG and no temporary file: every *.png present decodes completely.
+set -u
+FIGS=$(readlink -f "${1:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL}")
+TOOL=$(readlink -f "${2:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL}")
+HERE=$(cd "$(dirname "$0")" && pwd)
+T=$(mktemp -d "${TMPDIR:-/tmp}/ts_figures_repro.XXXXXX")
+trap 'rm -rf "$T"' EXIT
+failures=0 checks=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+pass() { checks=$((checks + 1)); }
+
+figs() { timeout 600 "$FIGS" --out "$@" >"$T/log" 2>&1 || fail "make_figures --out $*: $(tail -3 "$T/log")"; }
+
+# ---------------------------------------------------- 1. run to run
+figs "$T/a" --backend osmesa
+figs "$T/b" --backend osmesa
+n=0
+for f in "$T/a"/*.png; do
+  n=$((n + 1))
+  name=$(basename "$f")
+  if cmp -s "$f" "$T/b/$name"; then pass; else fail "$name differs between two OSMesa runs"; fi
+  json=${name%.png}.json
+  if cmp -s <(sed "s|$T/a|OUT|g" "$T/a/$json") <(sed "s|$T/b|OUT|g" "$T/b/$json"); then pass
+  else fail "$json differs between two runs (beyond the --out folder)"; fi
+done
+[ "$n" -gt 0 ] || fail "make_figures wrote no PNG"
+echo "run to run: $n figures byte-identical"
+
+# ---------------------------------------------------- 2. OSMesa vs EGL
+figs "$T/e" --backend egl
+declare -A maxpx maxdiff
+while read -r name px diff _; do
+  case "$name" in ''|\#*) continue ;; esac
+  maxpx[$name]=$px maxdiff[$name]=$diff
+done <"$HERE/backend_bounds.tsv"
+same=0 bounded=0
+for f in "$T/a"/*.png; do
+  name=$(basename "$f" .png)
+  if cmp -s "$f" "$T/e/$name.png"; then same=$((same + 1)); pass; continue; fi
+  read -r px diff < <("$TOOL" diff "$f" "$T/e/$name.png") || { fail "$name: cannot compare"; continue; }
+  if [ -z "${maxpx[$name]:-}" ]; then fail "$name: OSMesa and EGL differ ($px pixels, up to $diff) and it is not in backend_bounds.tsv"
+  elif [ "$px" -gt "${maxpx[$name]}" ] || [ "$diff" -gt "${maxdiff[$name]}" ]; then
+    fail "$name: OSMesa and EGL differ in $px pixels by up to $diff, over the stated ${maxpx[$name]} pixels / ${maxdiff[$name]}"
+  else bounded=$((bounded + 1)); pass; echo "  $name: $px pixels differ, by up to $diff (bound ${maxpx[$name]} / ${maxdiff[$name]})"; fi
+done
+echo "OSMesa vs EGL: $same figures byte-identical, $bounded within their stated bounds"
+
+# ---------------------------------------------------- 3. killed mid-write
+# TS_TEST_WRITE_PAUSE_MS makes every write pause half-way, while the data is
+# in the unnamed (O_TMPFILE) file; we wait until the process holds such a
+# file open in the output folder, then SIGKILL it.
+for round in 1 2 3; do
+  out="$T/k$round"
+  mkdir -p "$out"
+  TS_TEST_WRITE_PAUSE_MS=400 "$FIGS" --backend osmesa --out "$out" >/dev/null 2>&1 &
+  pid=$!
+  caught=0
+  # Skip $round writes first, so the kill lands on different files.
+  for _ in $(seq 1 600); do
+    if ls -l /proc/$pid/fd 2>/dev/null | grep -q "$out/.*(deleted)\|$out/#"; then
+      caught=$((caught + 1))
+      [ "$caught" -ge "$round" ] && break
+      sleep 0.45
+    else
+      sleep 0.02
+    fi
+  done
+  kill -KILL "$pid" 2>/dev/null
+  wait "$pid" 2>/dev/null
+  if [ "$caught" -lt "$round" ]; then fail "round $round: never saw a write in progress"; continue; fi
+  pngs=("$out"/*.png)
+  if [ -e "${pngs[0]}" ]; then
+    if "$TOOL" check "${pngs[@]}"; then pass; else fail "round $round: a partial PNG was left"; fi
+  fi
+  left=$(ls -A "$out" | grep -v '\.png$\|\.json$' || true)
+  if [ -n "$left" ]; then fail "round $round: left behind: $left"; else pass; fi
+  echo "killed mid-write (round $round): ${#pngs[@]} complete PNGs present, nothing partial"
+done
+
+echo "figures_repro: $checks checks passed, $failures failed"
+[ "$failures" -eq 0 ]
