@@ -84,20 +84,21 @@ float depthGrad(vec2 uv, vec2 gx, vec2 gy) {
 // Parallax occlusion mapping: returns the depth where the ray meets the relief.
 float pom(vec2 uv0, vec2 Vp, vec2 gx, vec2 gy, float cosView) {
   int n = int(mix(pomSteps.y, pomSteps.x, cosView) + 0.5);
-  float stepD = 1.0 / float(n), prev = 0.0;
+  float stepD = 1.0 / float(n), lo = 0.0, hi = 1.0;
   for (int k = 1; k <= n; ++k) {
     float d = float(k) * stepD;
     if (d >= depthGrad(uv0 + Vp * d, gx, gy)) {
-      float lo = prev, hi = d;
-      for (int it = 0; it < 6; ++it) {
-        float m = 0.5 * (lo + hi);
-        if (m >= depthGrad(uv0 + Vp * m, gx, gy)) hi = m; else lo = m;
-      }
-      return hi;
+      hi = d;
+      break;
     }
-    prev = d;
+    lo = d;
   }
-  return 1.0;
+  if (lo < hi - 0.5 * stepD)
+    for (int it = 0; it < 6; ++it) {
+      float m = 0.5 * (lo + hi);
+      if (m >= depthGrad(uv0 + Vp * m, gx, gy)) hi = m; else lo = m;
+    }
+  return hi;
 }
 
 vec4 ellipse(vec2 gx, vec2 gy, bool recon) {  // gx = (Ux, Vx), gy = (Uy, Vy)
@@ -154,15 +155,19 @@ bool hiddenTexel(ivec2 t, int L, vec2 Vt, float dmin) {
   if (d0 <= EPS) return false;
   vec2 c = vec2(t) + 0.5;
   int n = int(ceil(2.0 * d0 * length(Vt)));
+  bool hidden = false;
   for (int k = 1; k <= n; ++k) {
     float s = d0 * float(k) / float(n);
     // With `accel`: once the ray is less than EPS below the highest relief
     // around, no later sample can find relief above it — stop (same answer).
-    if (accel != 0 && d0 - s - EPS <= dmin) return false;
+    if (accel != 0 && d0 - s - EPS <= dmin) break;
     vec2 p = c - Vt * s;
-    if (depthTexel(ivec2(floor(p)), L, size) < d0 - s - EPS) return true;
+    if (depthTexel(ivec2(floor(p)), L, size) < d0 - s - EPS) {
+      hidden = true;
+      break;
+    }
   }
-  return false;
+  return hidden;
 }
 
 // EWA on level L: vis 0 = every texel, 1 = visible texels only, 2 = row walk.
