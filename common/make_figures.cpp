@@ -124,6 +124,7 @@ int run(int argc, char** argv) {
     ts::SidecarInfo info{e.spec.id, e.spec.bookNumber, e.spec.caption, e.demo, e.command, opts.state(), got.measurements};
     ts::writePng(png, got.image);
     ts::writeFileAtomic(json, ts::sidecarJson(got.frame, info));
+    for (const auto& [suffix, text] : scene->figureFiles()) ts::writeFileAtomic(out + "/" + e.spec.id + suffix, text);
     std::printf("%s  %s\n%s", png.c_str(), e.spec.bookNumber.c_str(), ts::formatMeasurements(got.measurements).c_str());
   }
   if (only.empty()) {

@@ -54,6 +54,10 @@ class Scene {
   virtual bool wantsAccumBuffer() const { return false; }
   // Window only: called each frame with the elapsed seconds (animations).
   virtual void update(double /*seconds*/) {}
+  // Files to write beside a figure besides its PNG and sidecar, made by the
+  // last measure(): (suffix, contents), e.g. {".csv", table}.  make_figures
+  // writes each as <out>/<figure id><suffix>.  Default: none.
+  virtual std::vector<std::pair<std::string, std::string>> figureFiles() const { return {}; }
 };
 
 // Registry filled by TM_REGISTER_SCENE in each demo's file.

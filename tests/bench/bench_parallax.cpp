@@ -1,0 +1,109 @@
+// bench_parallax — milliseconds per frame of each filtering mode of the
+// parallax demo (seed 003) at 800 x 600 on llvmpipe (OSMesa), bricks at 20
+// degrees, the demo's default view:
+//
+//   parallax/<mode>              M0..M5, one full frame + glFinish
+//   parallax/<mode>/no-accel     M4, M5 without the max-height bound (same image)
+//   parallax/aniso16/pom-16      M2 with the march cut to 8..16 steps (what the march costs)
+//
+// Speed is measured here, never asserted.  Medians of 5 repetitions by
+// default (any benchmark flag overrides); a frame of M4 takes seconds, so
+// each repetition is one or a few frames.  Afterwards it prints a markdown
+// table: ms per frame, frames per second, and how far each mode is from the
+// 20 frames per second (50 ms) a window needs to feel interactive.  The
+// renderer string is printed with it.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "bench_common.hpp"
+#include "common/context.hpp"
+#include "common/render.hpp"
+#include "demos/parallax_aniso/parallax_gl.hpp"
+#include "demos/parallax_aniso/relief.hpp"
+
+namespace {
+struct Rig {
+  Rig() {
+    ts::ContextOptions o;
+    o.width = 800;
+    o.height = 600;
+    ctx = ts::createOffscreenContext(ts::Backend::OSMesa, o);
+    renderer = std::make_unique<ts::Renderer>(*ctx);
+    gl = std::make_unique<pax::ReliefGL>(*renderer);
+    relief = pax::makeRelief("bricks");
+    cam.width = 800;
+    cam.height = 600;
+  }
+  std::unique_ptr<ts::Context> ctx;
+  std::unique_ptr<ts::Renderer> renderer;
+  std::unique_ptr<pax::ReliefGL> gl;
+  pax::Relief relief;
+  pax::Camera cam;
+};
+Rig& rig() {
+  static Rig r;
+  return r;
+}
+
+void benchMode(benchmark::State& st, int mode, bool accel, float maxSteps = 64) {
+  try {
+    Rig& r = rig();
+    pax::PassOptions o;
+    o.accel = accel;
+    o.minSteps = std::min(o.minSteps, maxSteps / 2);
+    o.maxSteps = maxSteps;
+    r.gl->draw(r.cam, r.relief, mode, o);  // compile, upload, JIT
+    glFinish();
+    for (auto _ : st) {
+      r.gl->draw(r.cam, r.relief, mode, o);
+      glFinish();
+    }
+    st.counters["fps"] = benchmark::Counter(double(st.iterations()), benchmark::Counter::kIsRate);
+  } catch (const std::exception& e) {
+    st.SkipWithError(e.what());
+  }
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  ts::bench::Args args(argc, argv, {"--benchmark_repetitions=5", "--benchmark_report_aggregates_only=true",
+                                    "--benchmark_min_time=0.05"});
+  for (int m = 0; m < pax::kShaderModes; ++m) {
+    std::string name = std::string("parallax/") + pax::kModeKeys[m];
+    benchmark::RegisterBenchmark(name.c_str(), [m](benchmark::State& st) { benchMode(st, m, true); })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    if (m >= pax::kEwaVis)
+      benchmark::RegisterBenchmark((name + "/no-accel").c_str(), [m](benchmark::State& st) { benchMode(st, m, false); })
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+  }
+  // The cost of the parallax march itself: M2 with a quarter of the steps
+  // (8..16 instead of 16..64; a different, coarser image).
+  benchmark::RegisterBenchmark("parallax/aniso16/pom-16", [](benchmark::State& st) { benchMode(st, pax::kAniso16, true, 16); })
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+  benchmark::Initialize(args.argc(), args.argv());
+  ts::bench::SummaryReporter rep;
+  benchmark::RunSpecifiedBenchmarks(&rep);
+  std::printf("\nparallax_aniso at 800x600, bricks, 20 degrees, %s\n\n", ts::gl::rendererString().c_str());
+  std::printf("| mode | ms/frame (median) | frames/s | x the 50 ms of 20 fps |\n|---|---|---|---|\n");
+  for (int m = 0; m < pax::kShaderModes; ++m)
+    for (int a = 1; a >= 0; --a) {
+      if (!a && m < pax::kEwaVis) continue;
+      std::string name = std::string("parallax/") + pax::kModeKeys[m] + (a ? "" : "/no-accel");
+      double ms = rep.ms(name);
+      if (std::isnan(ms)) continue;
+      std::printf("| %s%s | %.1f | %.2f | %.2f |\n", pax::kModeLabels[m], a ? "" : " (no max-height bound)", ms,
+                  1000.0 / ms, ms / 50.0);
+    }
+  double fast = rep.ms("parallax/aniso16/pom-16");
+  if (!std::isnan(fast))
+    std::printf("| M2 aniso 16x, parallax march 8..16 steps (coarser) | %.1f | %.2f | %.2f |\n", fast, 1000.0 / fast,
+                fast / 50.0);
+  rig().renderer->release();
+  return 0;
+}
