@@ -265,6 +265,18 @@ Image decodePng(const uint8_t* data, size_t size, const std::string& name) {
   uint32_t w = be32(data + 16), h = be32(data + 20);
   std::string bad = checkImageSize(w, h);
   if (!bad.empty()) throw Error(name + ": malformed PNG: " + bad);
+  // zlib cannot compress better than 1032:1, so a file too short to hold
+  // the rows its header announces is refused before the pixels are
+  // allocated (a 40-byte file must not cost 256 MiB).
+  static const int kChannels[7] = {1, 0, 3, 1, 2, 0, 4};
+  int depth = data[24], type = data[25];
+  if (type <= 6 && kChannels[type] && depth >= 1 && depth <= 16) {
+    uint64_t rawBytes = uint64_t(h) * (1 + (uint64_t(w) * uint64_t(kChannels[type] * depth) + 7) / 8);
+    uint64_t rest = size - 33;
+    if (rest * 1032 + 1032 < rawBytes)
+      throw Error(name + ": malformed PNG: truncated: the header says " + std::to_string(w) + "x" + std::to_string(h) +
+                  " pixels but only " + std::to_string(rest) + " bytes follow it");
+  }
 
   std::string why;
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &why, pngError, pngWarning);
@@ -292,7 +304,8 @@ Image decodePng(const uint8_t* data, size_t size, const std::string& name) {
   png_read_info(png, info);
   if (png_get_image_width(png, info) != w || png_get_image_height(png, info) != h)
     png_error(png, "IHDR changed while reading");
-  int depth = png_get_bit_depth(png, info), type = png_get_color_type(png, info);
+  depth = png_get_bit_depth(png, info);
+  type = png_get_color_type(png, info);
   if (depth == 16) png_set_strip_16(png);  // keep the high byte
   if (type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
   if (type == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);

@@ -12,6 +12,8 @@ packages=(
   libglfw3-dev libglm-dev libpng-dev libimgui-dev libstb-dev
   googletest libgtest-dev libbenchmark-dev
   xvfb xauth                             # window tests under a virtual X server
+  clang libclang-rt-14-dev               # libFuzzer and its sanitizer runtimes (fuzz preset)
+  valgrind zlib1g-dev                    # memcheck over a figure run; zlib for the corpus generator
 )
 
 missing=()
