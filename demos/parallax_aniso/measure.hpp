@@ -97,7 +97,7 @@ inline std::string csv(const Table& t) {
   for (const Row& r : t.rows) {
     s += std::string(kModeKeys[r.mode]) + "," + kModeLabels[r.mode] + "," + fmtNum("%.3f", r.psnrAll) + "," +
          fmtNum("%.4f", r.ssimAll) + "," + fmtNum("%.3f", r.psnrAniso) + "," + fmtNum("%.4f", r.ssimAniso) + "," +
-         fmtNum("%.3f", r.psnrBand) + "," + fmtNum("%.4f", r.ssimBand) + "," + fmtNum("%.2f", r.ms) + "," +
+         fmtNum("%.3f", r.psnrBand) + "," + fmtNum("%.4f", r.ssimBand) + "," + (r.ms > 0 ? fmtNum("%.2f", r.ms) : std::string()) + "," +
          fmtNum("%.1f", r.lookupsPerPixel) + "," + fmtNum("%.2f", r.excludedPerPixel) + "," +
          std::to_string(t.cam.width) + "," + std::to_string(t.cam.height) + "," + t.map + "," +
          fmtNum("%.1f", t.cam.elevationDeg) + "," + fmtNum("%.3f", t.cam.heightScale) + "," +

@@ -27,6 +27,8 @@
 //   z / Z  azimuth               c  split-screen compare (mode | --against)
 //   b  the mode compared against  v  view: single | modes | error
 //   r / R  render width          x  max-height pyramid acceleration
+// Flags only: --rays N (reference rays per side), --seed, --time N (time each
+// mode, median of N frames, for the CSV), --csv FILE.
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -133,8 +135,10 @@ class ParallaxAniso final : public ts::Scene {
               "single: one mode (or the split screen); modes: all seven with their numbers; error: the occlusion "
               "band's error for M2, M3, M4",
               'v');
-    o.addInt("res", &res_, 80, 800, "width of the measured renders (height 3/4 of it)", 'r', 'R', 80);
-    o.addInt("rays", &rays_, 2, 32, "reference rays per side of the kernel square (n x n)");
+    o.addInt("res", &res_, 80, 800, "width of the measured renders (height 3/4 of it; the figures use 320)", 'r', 'R', 80);
+    o.addInt("rays", &rays_, 2, 32, "reference rays per side of the kernel square (n x n; the figures use 12)");
+    o.addInt("time", &timeRuns_, 0, 50,
+             "time each mode over N frames (median, into the CSV's ms_per_frame); 0 = do not time (the figures use 3)");
     o.addInt("seed", &seed_, 0, 1000000, "seed of the reference's jitter");
     o.addBool("accel", &accel_, "max-height pyramid skip in the visibility trace (same result, fewer lookups)", 'x');
     o.addText("csv", &csvPath_, "write the measured table as CSV to FILE", [](const std::string& v) {
@@ -151,17 +155,17 @@ class ParallaxAniso final : public ts::Scene {
          "seed's row walk, and the reference (12x12 traced rays per pixel, the same Gaussian kernel). Under each: "
          "PSNR against the reference over the whole frame and over the occlusion band, and lookups per pixel. The "
          "table is in parallax_modes.csv.",
-         {"--view", "modes", "--map", "bricks", "--res", "320", "--rays", "12"}, 1360, 660},
+         {"--view", "modes", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"}, 1360, 660},
         {"parallax_error_band", "Seed 003: error in the occlusion band",
          "The occlusion band (pixels whose footprint crosses an occluding edge, where the reference's rays hit "
          "depths more than half the relief apart) and the error against the reference inside it for M2 (hardware "
          "anisotropic), M3 (EWA) and M4 (EWA without hidden texels): |error| x4, black none, red 32, yellow 64 "
          "levels or more.",
-         {"--view", "error", "--map", "bricks", "--res", "320", "--rays", "12"}, 1360, 340},
+         {"--view", "error", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"}, 1360, 340},
         {"parallax_step", "Seed 003: the step map",
          "The synthetic step map (ridges of height 1 and floors of height 0, 32 texels each) at 20 degrees: every "
          "mode and the reference, as in parallax_modes.",
-         {"--view", "modes", "--map", "step", "--res", "320", "--rays", "12"}, 1360, 660},
+         {"--view", "modes", "--map", "step", "--res", "320", "--rays", "12", "--time", "3"}, 1360, 660},
     };
   }
 
@@ -182,7 +186,7 @@ class ParallaxAniso final : public ts::Scene {
       mo.refRays = rays_;
       mo.seed = uint32_t(seed_);
       mo.accel = accel_;
-      mo.timingRuns = 3;
+      mo.timingRuns = timeRuns_;
       // One table per state for the whole process: make_figures makes a new
       // scene for each figure, and two figures share a state (view differs).
       static std::shared_ptr<Table> lastTable;
@@ -249,8 +253,8 @@ class ParallaxAniso final : public ts::Scene {
   }
   std::string stateKey() const {
     char b[256];
-    std::snprintf(b, sizeof b, "%d %.4f %.3f %.3f %d %d %d %d", map_, heightScale_, angle_, azimuth_, res_, rays_,
-                  seed_, accel_ ? 1 : 0);
+    std::snprintf(b, sizeof b, "%d %.4f %.3f %.3f %d %d %d %d %d", map_, heightScale_, angle_, azimuth_, res_, rays_,
+                  seed_, accel_ ? 1 : 0, timeRuns_);
     return b;
   }
   Relief& relief() {
@@ -369,7 +373,7 @@ class ParallaxAniso final : public ts::Scene {
     }
   }
 
-  int mode_ = kEwa, map_ = 0, against_ = kEwaVis, view_ = kSingle, res_ = 320, rays_ = 16, seed_ = 1;
+  int mode_ = kEwa, map_ = 0, against_ = kEwaVis, view_ = kSingle, res_ = 160, rays_ = 6, seed_ = 1, timeRuns_ = 0;
   float heightScale_ = 0.06f, angle_ = 20.0f, azimuth_ = 12.0f;
   bool compare_ = false, accel_ = true;
   std::string csvPath_;
