@@ -66,7 +66,7 @@ uniform vec3 eye, fwd, rightV, upV;
 uniform vec2 viewport;        // the pass's size in pixels
 uniform vec4 relief;          // (1 / tile, heightScale / tile, texture size, number of levels - 1)
 uniform vec2 pomSteps;        // (fewest, most) linear steps
-uniform int mode, countMode, accel, probe;
+uniform int mode, countMode, accel, probe, centreLookups;
 uniform vec4 probeA, probeB;  // probe inputs
 const float ALPHA = 2.0, MAXANISO = 16.0, EPS = 1.5 / 255.0;
 int fetches = 0, excluded = 0;
@@ -116,9 +116,19 @@ vec2 radii(vec4 e) {  // semi-axes, longest first
 }
 
 ivec2 wrapT(ivec2 t, int size) { return ivec2((t.x % size + size) % size, (t.y % size + size) % size); }
+// Texel t of level L (wrapped).  texelFetch, or with centreLookups a
+// filtered lookup at the texel's centre — the same value (at a texel centre
+// of one level the bilinear weights are 1 and 0) but 40% slower on llvmpipe.
+// softpipe (Mesa 22.3) needs the second: its texelFetch returns wrong texels
+// when the lanes of a quad fetch different texels inside a loop (measured
+// with the step-map probe: plainly hidden texels came out visible).
+vec4 texelAt(sampler2D s, ivec2 t, int L, int size) {
+  if (centreLookups != 0) return textureLod(s, (vec2(wrapT(t, size)) + 0.5) / float(size), float(L));
+  return texelFetch(s, wrapT(t, size), L);
+}
 float depthTexel(ivec2 t, int L, int size) {
   fetches++;
-  return 1.0 - texelFetch(heightTex, wrapT(t, size), L).r;
+  return 1.0 - texelAt(heightTex, t, L, size).r;
 }
 // Is texel t of level L hidden from the eye?  Vt = parallax per unit depth in
 // texels of level L.  Mirrors pax::hiddenTexel.
@@ -141,7 +151,7 @@ float minDepthOver(vec2 lo, vec2 hi, int L) {
   for (int by = b0.y; by <= b1.y; ++by)
     for (int bx = b0.x; bx <= b1.x; ++bx) {
       fetches++;
-      top = max(top, texelFetch(heightMax, wrapT(ivec2(bx, by), sizeK), L + k).r);
+      top = max(top, texelAt(heightMax, ivec2(bx, by), L + k, sizeK).r);
     }
   return 1.0 - top;
 }
@@ -207,7 +217,7 @@ vec3 ewaLevel(vec2 uvS, vec2 gx, vec2 gy, vec2 Vp, int L, int vis) {
       float U = float(i) - c.x;
       float w = exp(-ALPHA * min(1.0, (A * U * U + B * U * V + C * V * V) / F));
       fetches++;
-      sum += w * texelFetch(albedo, wrapT(ivec2(i, j), size), L).rgb;
+      sum += w * texelAt(albedo, ivec2(i, j), L, size).rgb;
       wsum += w;
     }
     if (vis == 2 && stop <= i1) {
@@ -217,7 +227,7 @@ vec3 ewaLevel(vec2 uvS, vec2 gx, vec2 gy, vec2 Vp, int L, int vis) {
         float U = float(i) - c.x;
         float w = exp(-ALPHA * min(1.0, (A * U * U + B * U * V + C * V * V) / F));
         fetches++;
-        sum += w * texelFetch(albedo, wrapT(ivec2(i, j), size), L).rgb;
+        sum += w * texelAt(albedo, ivec2(i, j), L, size).rgb;
         wsum += w;
       }
       excluded += i - stop;  // the hidden texel found (if any) and the untraced middle
@@ -294,7 +304,12 @@ struct PassOptions {
   bool count = false;  // write lookups / excluded texels instead of the colour
   bool accel = true;   // max-height pyramid skip in the visibility trace
   float minSteps = 16, maxSteps = 64;
+  // Texels read as lookups at their centres instead of texelFetch: -1 = only
+  // on softpipe (whose texelFetch misbehaves in divergent loops), 0/1 = force.
+  int centreLookups = -1;
 };
+
+inline bool isSoftpipe() { return ts::gl::rendererString().find("softpipe") != std::string::npos; }
 
 // Everything the demo, the tests and the benchmark need on the GL side.
 class ReliefGL {
@@ -362,6 +377,7 @@ class ReliefGL {
     glUniform1i(glGetUniformLocation(prog, "countMode"), o.count ? 1 : 0);
     glUniform1i(glGetUniformLocation(prog, "accel"), o.accel ? 1 : 0);
     glUniform1i(glGetUniformLocation(prog, "probe"), 0);
+    glUniform1i(glGetUniformLocation(prog, "centreLookups"), o.centreLookups < 0 ? int(isSoftpipe()) : o.centreLookups);
     quad();
     glUseProgram(0);
     ts::gl::check("drawing a parallax pass");
@@ -497,6 +513,7 @@ class ReliefGL {
     }
     glUniform1i(glGetUniformLocation(prog, "probe"), rel ? 2 : 1);
     glUniform1i(glGetUniformLocation(prog, "accel"), accel ? 1 : 0);
+    glUniform1i(glGetUniformLocation(prog, "centreLookups"), int(isSoftpipe()));
     glUniform4f(glGetUniformLocation(prog, "probeA"), float(a.x), float(a.y), float(a.z), float(a.w));
     glUniform4f(glGetUniformLocation(prog, "probeB"), float(b.x), float(b.y), float(b.z), float(b.w));
     quad();
