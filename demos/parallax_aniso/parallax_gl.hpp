@@ -57,8 +57,10 @@ inline const char* vertexShader() {
   return "#version 130\nvoid main() { gl_Position = gl_Vertex; }\n";
 }
 
-inline std::string fragmentShader() {
-  return R"(#version 130
+// centreLookups: compiled in (a uniform branch in the innermost loop cost
+// llvmpipe a third of M3's speed).
+inline std::string fragmentShader(bool centreLookups) {
+  return std::string("#version 130\n#define CENTRE_LOOKUPS ") + (centreLookups ? "1" : "0") + R"(
 uniform sampler2D albedo;     // RGBA8, mipmapped (the 2x2 averages)
 uniform sampler2D heightTex;  // R = height, mipmapped (2x2 averages)
 uniform sampler2D heightMax;  // R = the max-height pyramid
@@ -66,7 +68,7 @@ uniform vec3 eye, fwd, rightV, upV;
 uniform vec2 viewport;        // the pass's size in pixels
 uniform vec4 relief;          // (1 / tile, heightScale / tile, texture size, number of levels - 1)
 uniform vec2 pomSteps;        // (fewest, most) linear steps
-uniform int mode, countMode, accel, probe, centreLookups;
+uniform int mode, countMode, accel, probe;
 uniform vec4 probeA, probeB;  // probe inputs
 const float ALPHA = 2.0, MAXANISO = 16.0, EPS = 1.5 / 255.0;
 int fetches = 0, excluded = 0;
@@ -123,8 +125,11 @@ ivec2 wrapT(ivec2 t, int size) { return ivec2((t.x % size + size) % size, (t.y %
 // when the lanes of a quad fetch different texels inside a loop (measured
 // with the step-map probe: plainly hidden texels came out visible).
 vec4 texelAt(sampler2D s, ivec2 t, int L, int size) {
-  if (centreLookups != 0) return textureLod(s, (vec2(wrapT(t, size)) + 0.5) / float(size), float(L));
+#if CENTRE_LOOKUPS
+  return textureLod(s, (vec2(wrapT(t, size)) + 0.5) / float(size), float(L));
+#else
   return texelFetch(s, wrapT(t, size), L);
+#endif
 }
 float depthTexel(ivec2 t, int L, int size) {
   fetches++;
@@ -365,7 +370,7 @@ class ReliefGL {
   void draw(const Camera& cam, const Relief& rel, int mode, const PassOptions& o) {
     if (mode < 0 || mode >= kShaderModes) throw ts::Error("no shader for mode " + std::to_string(mode), ts::kExitFailure);
     bindTarget(cam.width, cam.height, false);
-    GLuint prog = program();
+    GLuint prog = program(o.centreLookups < 0 ? isSoftpipe() : o.centreLookups != 0);
     glUseProgram(prog);
     setCamera(prog, cam);
     const ReliefTextures& t = textures(rel);
@@ -377,7 +382,6 @@ class ReliefGL {
     glUniform1i(glGetUniformLocation(prog, "countMode"), o.count ? 1 : 0);
     glUniform1i(glGetUniformLocation(prog, "accel"), o.accel ? 1 : 0);
     glUniform1i(glGetUniformLocation(prog, "probe"), 0);
-    glUniform1i(glGetUniformLocation(prog, "centreLookups"), o.centreLookups < 0 ? int(isSoftpipe()) : o.centreLookups);
     quad();
     glUseProgram(0);
     ts::gl::check("drawing a parallax pass");
@@ -429,8 +433,9 @@ class ReliefGL {
   }
 
  private:
-  GLuint program() {
-    return r_.program("parallax_aniso", {kSourceFile, vertexShader(), fragmentShader()});
+  GLuint program(bool centreLookups) {
+    return r_.program(centreLookups ? "parallax_aniso_centre" : "parallax_aniso",
+                      {kSourceFile, vertexShader(), fragmentShader(centreLookups)});
   }
   void setCamera(GLuint prog, const Camera& cam) {
     auto v3 = [&](const char* n, glm::dvec3 v) { glUniform3f(glGetUniformLocation(prog, n), float(v.x), float(v.y), float(v.z)); };
@@ -502,7 +507,7 @@ class ReliefGL {
   }
   std::vector<float> probePass(int w, int h, glm::dvec4 a, glm::dvec4 b, const Relief* rel, bool accel) {
     bindTarget(w, h, true);
-    GLuint prog = program();
+    GLuint prog = program(isSoftpipe());
     glUseProgram(prog);
     Camera cam;
     setCamera(prog, cam);
@@ -513,7 +518,6 @@ class ReliefGL {
     }
     glUniform1i(glGetUniformLocation(prog, "probe"), rel ? 2 : 1);
     glUniform1i(glGetUniformLocation(prog, "accel"), accel ? 1 : 0);
-    glUniform1i(glGetUniformLocation(prog, "centreLookups"), int(isSoftpipe()));
     glUniform4f(glGetUniformLocation(prog, "probeA"), float(a.x), float(a.y), float(a.z), float(a.w));
     glUniform4f(glGetUniformLocation(prog, "probeB"), float(b.x), float(b.y), float(b.z), float(b.w));
     quad();
