@@ -13,7 +13,7 @@
 //   M1 trilinear and M2 hardware anisotropic 16x (the unshifted gradients),
 //   M3 EWA in the shader (Heckbert), M4 EWA without hidden texels (every
 //   texel traced), M5 the seed's row walk,
-// and compared with R, a reference of 16 x 16 stratified jittered rays per
+// and compared with R, a reference of n x n (--rays; the figures 12 x 12) stratified jittered rays per
 // pixel traced finely on the CPU and weighted by the same Gaussian kernel
 // (relief.hpp).  Printed and written as CSV (--csv FILE; make_figures writes
 // parallax_modes.csv beside the figure): PSNR and SSIM over the whole frame,
