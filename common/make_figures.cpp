@@ -53,6 +53,20 @@ std::string gallery(const std::vector<Entry>& entries, const std::string& regene
   return md;
 }
 
+// --only takes figure ids or demo names, comma-separated: "vi1_quad_variants"
+// or "quad_distortion,torus" (every figure of those demos).
+bool selected(const std::string& only, const std::string& figure, const std::string& demo) {
+  size_t start = 0;
+  while (start <= only.size()) {
+    size_t end = only.find(',', start);
+    if (end == std::string::npos) end = only.size();
+    std::string item = only.substr(start, end - start);
+    if (item == figure || item == demo) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
 int run(int argc, char** argv) {
   std::string out = "book_figures", backend = "auto", only;
   double scale = 1.0;
@@ -75,7 +89,8 @@ int run(int argc, char** argv) {
     } else if (a == "--help" || a == "-h") {
       std::printf("usage: make_figures [--out DIR] [--backend auto|osmesa|egl] [--scale F] [--only ID] [--list]\n"
                   "Renders every registered book figure (PNG + sidecar JSON) and the gallery README.md into DIR\n"
-                  "(default book_figures). --scale multiplies every figure's size.\n");
+                  "(default book_figures). --scale multiplies every figure's size. --only ID[,ID...]: just these\n"
+                  "figures or every figure of these demos (no gallery).\n");
       return 0;
     } else throw ts::Error("unknown argument '" + a + "' (see --help)");
   }
@@ -85,7 +100,7 @@ int run(int argc, char** argv) {
   std::vector<Entry> todo;
   for (const auto& reg : ts::sceneRegistry())
     for (const auto& spec : reg.make()->figures()) {
-      if (!only.empty() && spec.id != only) continue;
+      if (!only.empty() && !selected(only, spec.id, reg.id)) continue;
       Entry e{spec, reg.id, "", {}};
       e.spec.width = std::max(1, int(std::lround(spec.width * scale)));
       e.spec.height = std::max(1, int(std::lround(spec.height * scale)));
@@ -98,7 +113,7 @@ int run(int argc, char** argv) {
                                            e.spec.width, e.spec.height, e.demo.c_str());
     return 0;
   }
-  if (todo.empty()) throw ts::Error("no figure named '" + only + "' (see --list)");
+  if (todo.empty()) throw ts::Error("no figure or demo named '" + only + "' (see --list)");
   struct stat st;
   if (::stat(out.c_str(), &st) != 0 && ::mkdir(out.c_str(), 0777) != 0)
     throw ts::Error("cannot create " + out + ": " + std::strerror(errno));
