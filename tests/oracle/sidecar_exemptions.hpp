@@ -15,6 +15,32 @@ namespace oracle {
 inline constexpr std::array<const char*, 4> kFiguresDrawnFromGlRenders = {
     "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step"};
 
+// Figures whose measure() takes minutes on softpipe (the parallax table: twelve
+// full-frame GLSL passes and a CPU reference per state).  The oracle checks
+// them on llvmpipe; on softpipe they are skipped, visibly, and the parallax
+// demo's own tests (tests/figures/fig_parallax_aniso_test.cpp) run there at a
+// small size.
+inline constexpr std::array<const char*, 3> kFiguresTooSlowForSoftpipe = {"parallax_modes", "parallax_error_band",
+                                                                          "parallax_step"};
+
+inline bool tooSlowForSoftpipe(const std::string& id) {
+  return std::any_of(kFiguresTooSlowForSoftpipe.begin(), kFiguresTooSlowForSoftpipe.end(),
+                     [&](const char* f) { return id == f; });
+}
+
+// Figures that show measurements of the rasterizer's own filtering (the LOD it
+// picks per quad, its anisotropic filter, the popping measure printed on
+// them): another rasterizer legally draws them differently, so the fuzzy
+// comparison with the committed (llvmpipe) PNGs applies on llvmpipe only.
+// The per-pixel oracle and the mipmap tests still check them everywhere.
+inline constexpr std::array<const char*, 3> kFiguresOfTheRasterizersFiltering = {
+    "mip_popping_filmstrip", "mip_popping_plot", "mip_anisotropic"};
+
+inline bool showsTheRasterizersFiltering(const std::string& id) {
+  return std::any_of(kFiguresOfTheRasterizersFiltering.begin(), kFiguresOfTheRasterizersFiltering.end(),
+                     [&](const char* f) { return id == f; });
+}
+
 inline bool drawnFromGlRenders(const std::string& id) {
   return std::any_of(kFiguresDrawnFromGlRenders.begin(), kFiguresDrawnFromGlRenders.end(),
                      [&](const char* f) { return id == f; });
