@@ -2,7 +2,9 @@
 # The test command (CI runs exactly this): set up, build, run every test on
 # llvmpipe through OSMesa, then the GL tests again on Mesa's second rasterizer
 # (softpipe) and on the EGL surfaceless backend; then the whole suite again
-# built with AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/), and
+# built with AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/; not
+# the Xvfb window tests: GLX's libraries leak from code LeakSanitizer cannot
+# name once they are unloaded, and a window under ASan takes minutes), and
 # each libFuzzer target for TS_FUZZ_SECONDS (default 60) seconds
 # (build-fuzz/).  TS_SKIP_SANITIZERS=1 skips the last two (a quick local
 # run).  Extra arguments go to ctest.
