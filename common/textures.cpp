@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
 #include <string>
 
 #include "error.hpp"
@@ -53,6 +56,27 @@ TextureDesc texelIndexTexture(int size) {
   t.params = {{"size", str(size)}};
   t.image = img;
   t.minFilter = t.magFilter = GL_NEAREST;
+  return t;
+}
+
+TextureDesc renderedImageTexture(const Image& img, const std::string& generator, const std::string& what,
+                                 const std::string& demo, std::vector<std::pair<std::string, std::string>> extraParams) {
+  uint64_t h = 1469598103934665603ull;  // FNV-1a 64
+  for (uint8_t b : img.pixels) h = (h ^ b) * 1099511628211ull;
+  char digest[20];
+  std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(h));
+  TextureDesc t;
+  t.name = generator;
+  t.params = {{"image", what}};
+  for (auto& p : extraParams) t.params.push_back(std::move(p));
+  t.params.push_back({"size", std::to_string(img.width) + "x" + std::to_string(img.height)});
+  t.params.push_back({"made_by", "the " + demo + " demo's measure(): rerun the sidecar's command"});
+  t.params.push_back({"digest", digest});
+  Image flipped = img;
+  flipped.flipVertical();  // texture row 0 is t = 0, the bottom
+  t.image = std::make_shared<const Image>(std::move(flipped));
+  t.minFilter = t.magFilter = GL_NEAREST;
+  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
   return t;
 }
 

@@ -2,6 +2,8 @@
 // Each returns a TextureDesc whose name and params say exactly how it was
 // made, so the sidecar JSON is enough to remake the texels.
 #pragma once
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "frame.hpp"
@@ -25,6 +27,16 @@ TextureDesc labelledGrid(int size = 512, int cells = 8);
 TextureDesc mipLevelColours(int size = 256);
 Rgba mipLevelColour(int level);
 
+// A picture a demo rendered with GL in its measure() pass (Figure VI.7's
+// sampling modes, the parallax filtering modes), shown in a panel as a
+// GL_NEAREST texture.  The sidecar cannot remake it: its params name the
+// image, its size, an FNV-1a digest of the pixels (also the upload cache's
+// key) and the demo that made it, so the sidecar's command reproduces it.
+// `img` has row 0 at the top, as every ts::Image.
+TextureDesc renderedImageTexture(const Image& img, const std::string& generator, const std::string& what,
+                                 const std::string& demo,
+                                 std::vector<std::pair<std::string, std::string>> extraParams = {});
+
 // A PNG or 24-bit BMP file as a texture (row 0 of the picture = the top =
 // t = 1).  Throws ts::Error "<path>: <what is wrong>" for a missing,
 // unreadable or malformed file, and refuses sizes over the limits in
@@ -37,7 +49,6 @@ TextureDesc fileTexture(const std::string& path);
 // Resamples with a bilinear filter, sample centres aligned ((x + 0.5) *
 // src/dst - 0.5), edges clamped.
 Image resizeBilinear(const Image& src, int width, int height);
-TextureDesc fileTexture(const std::string& path);
 
 // The book's mip chain: level k+1 texel (i, j) is the average of level k's
 // texels (2i..2i+1, 2j..2j+1).  Odd sizes clamp the second row/column.

@@ -54,6 +54,7 @@
 #include "common/render.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
+#include "common/textures.hpp"
 #include "jitter_gl.hpp"
 #include "jitter_math.hpp"
 
@@ -80,32 +81,9 @@ std::string fmt(const char* f, double v) {
   return b;
 }
 
-// FNV-1a of the pixels: part of a computed texture's key, so the renderer's
-// upload cache never confuses two images.
-std::string digest(const ts::Image& img) {
-  uint64_t h = 1469598103934665603ull;
-  for (uint8_t b : img.pixels) h = (h ^ b) * 1099511628211ull;
-  char s[20];
-  std::snprintf(s, sizeof s, "%016llx", static_cast<unsigned long long>(h));
-  return s;
-}
-
 ts::TextureDesc imageTexture(const ts::Image& img, const std::string& what,
                              std::vector<std::pair<std::string, std::string>> params) {
-  ts::TextureDesc t;
-  t.name = "jitter_render";
-  t.params = std::move(params);
-  t.params.insert(t.params.begin(), {"image", what});
-  t.params.push_back({"size", std::to_string(img.width) + "x" + std::to_string(img.height)});
-  t.params.push_back({"made_by", "the jitter demo's measure(): rerun the sidecar's command"});
-  t.params.push_back({"digest", digest(img)});
-  // Texture row 0 is t = 0 (the bottom); the image's row 0 is its top.
-  ts::Image flipped = img;
-  flipped.flipVertical();
-  t.image = std::make_shared<const ts::Image>(std::move(flipped));
-  t.minFilter = t.magFilter = GL_NEAREST;
-  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
-  return t;
+  return ts::renderedImageTexture(img, "jitter_render", what, "jitter", std::move(params));
 }
 
 // Signed error, 3x: orange where the image is brighter than the reference,

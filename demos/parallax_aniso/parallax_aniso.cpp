@@ -41,6 +41,7 @@
 #include "common/error.hpp"
 #include "common/figure.hpp"
 #include "common/render.hpp"
+#include "common/textures.hpp"
 #include "common/scene.hpp"
 #include "measure.hpp"
 #include "parallax_gl.hpp"
@@ -52,27 +53,8 @@ enum View { kSingle, kModes, kError };
 const char* const kMaps[] = {"bricks", "step", "flat"};
 const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f}, kGrey{0.62f, 0.62f, 0.66f, 1.0f};
 
-std::string digest(const ts::Image& img) {
-  uint64_t h = 1469598103934665603ull;
-  for (uint8_t b : img.pixels) h = (h ^ b) * 1099511628211ull;
-  char s[20];
-  std::snprintf(s, sizeof s, "%016llx", static_cast<unsigned long long>(h));
-  return s;
-}
-
 ts::TextureDesc imageTexture(const ts::Image& img, const std::string& what) {
-  ts::TextureDesc t;
-  t.name = "parallax_render";
-  t.params = {{"image", what},
-              {"size", std::to_string(img.width) + "x" + std::to_string(img.height)},
-              {"made_by", "the parallax_aniso demo's measure(): rerun the sidecar's command"},
-              {"digest", digest(img)}};
-  ts::Image flipped = img;
-  flipped.flipVertical();  // texture row 0 is the bottom
-  t.image = std::make_shared<const ts::Image>(std::move(flipped));
-  t.minFilter = t.magFilter = GL_NEAREST;
-  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
-  return t;
+  return ts::renderedImageTexture(img, "parallax_render", what, "parallax_aniso");
 }
 
 // |error| against the reference inside the occlusion band, x4, on a heat
