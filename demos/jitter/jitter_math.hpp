@@ -27,6 +27,7 @@
 // each pixel's error that its neighbours' errors predict — interference,
 // structured aliasing — and the unpredictable rest — noise.
 #pragma once
+#include "common/hash.hpp"
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -115,15 +116,9 @@ inline glm::dvec3 colourAt(const Camera& c, const glm::dmat3& h, double px, doub
 }
 
 // ---------------------------------------------------------------- patterns
-// Chris Wellons' "lowbias32" integer hash; the GLSL copy is in jitter_gl.hpp.
-inline uint32_t hash32(uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  x ^= x >> 16;
-  return x;
-}
+// Chris Wellons' "lowbias32" integer hash (common/hash.hpp); the GLSL copy is
+// in jitter_gl.hpp.
+using ts::hash32;
 // 24 random bits as a float in [0, 1): exact in single precision, so the GPU
 // and the CPU agree bit for bit.
 inline float unitFloat(uint32_t h) { return float(h >> 8) * (1.0f / 16777216.0f); }

@@ -31,6 +31,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/hash.hpp"
 #include "common/image.hpp"
 
 namespace pax {
@@ -47,14 +48,7 @@ struct Relief {
   std::vector<ts::Image> heightMax;  // max-height pyramid: each texel the largest height of the 2x2 below it
 };
 
-inline uint32_t hash32(uint32_t x) {  // lowbias32
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  x ^= x >> 16;
-  return x;
-}
+using ts::hash32;  // lowbias32
 inline double unit(uint32_t h) { return double(h >> 8) * (1.0 / 16777216.0); }
 inline uint8_t u8(double v) { return uint8_t(std::clamp(std::lround(v), 0L, 255L)); }
 
