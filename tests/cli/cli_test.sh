@@ -35,7 +35,7 @@ run() {
 }
 
 # Files in the scratch folder besides the captured stdout/stderr.
-outputs() { (cd "$T/work" && find . -mindepth 1 | sort); }
+outputs() { (cd "$T/inputs" && find . -mindepth 1 | sort); }
 
 # expect_usage_error NAME ARGS...: the demo, run in the scratch folder, must
 # exit 2 with one line on stderr, nothing on stdout, and leave the folder as
@@ -44,7 +44,7 @@ expect_usage_error() {
   local name=$1; shift
   local before after
   before=$(outputs)
-  run "$name" bash -c 'cd "$0" && exec "$@"' "$T/work" "$DEMO" "$@"
+  run "$name" bash -c 'cd "$0" && exec "$@"' "$T/inputs" "$DEMO" "$@"
   after=$(outputs)
   local lines
   lines=$(wc -l <"$err")
@@ -55,8 +55,8 @@ expect_usage_error() {
   else pass; fi
 }
 
-mkdir -p "$T/work/adir"
-printf 'this is not a PNG\n' >"$T/work/text.png"
+mkdir -p "$T/inputs/adir"
+printf 'this is not a PNG\n' >"$T/inputs/text.png"
 PNG_ARGS=(--backend "$BACKEND" --png out.png)
 
 # ---------------------------------------------------------------- bad input
