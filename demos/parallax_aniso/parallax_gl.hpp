@@ -5,10 +5,12 @@
 // One fragment shader draws every mode.  Each fragment builds its view ray
 // from the camera (no geometry: the relief plane is analytic, as in
 // demos/jitter), finds where it enters the top of the relief, and runs
-// parallax occlusion mapping: a linear march of 16..64 steps (more the more
-// grazing the ray) and 6 bisection steps, heights read with textureGrad and
-// the top plane's analytic gradients (no implicit derivatives inside the
-// data-dependent loop).  Then the albedo at the shifted coordinate uvS by
+// parallax occlusion mapping: a linear march of 12..40 steps (more the more
+// grazing the ray) refined by intersecting the ray with the straight line
+// between the last two heights read (Tatarchuk's POM refinement: no further
+// lookup), heights read with textureGrad and the top plane's analytic
+// gradients (no implicit derivatives inside the data-dependent loop).
+// Then the albedo at the shifted coordinate uvS by
 //   M0 naive     texture(albedo, uvS): implicit derivatives of the shifted
 //                coordinate, which jump at every occluding edge
 //   M1 trilinear textureGrad with the unshifted gradients, anisotropy 1
@@ -35,6 +37,12 @@
 // Counting mode writes the number of texture lookups (texture, textureGrad,
 // textureLod and texelFetch calls, whatever the hardware filter reads behind
 // one call) and of excluded texels into the colour, as 16-bit integers.
+//
+// Every (mode, counting, texel path) is its own program, the choices
+// compiled in as constants: llvmpipe runs both sides of a branch under a lane
+// mask and enters every loop, so one program with `uniform int mode` made M2
+// pay for the EWA code it never used (M1 at 800 x 600 took 127 ms instead
+// of 70 ms).  The probe programs (MODE -1) keep a uniform `probe`.
 #pragma once
 #include <algorithm>
 #include <chrono>
@@ -57,10 +65,20 @@ inline const char* vertexShader() {
   return "#version 130\nvoid main() { gl_Position = gl_Vertex; }\n";
 }
 
-// centreLookups: compiled in (a uniform branch in the innermost loop cost
-// llvmpipe a third of M3's speed).
-inline std::string fragmentShader(bool centreLookups) {
-  return std::string("#version 130\n#define CENTRE_LOOKUPS ") + (centreLookups ? "1" : "0") + R"(
+// One compiled program (see above).  centreLookups: a uniform branch in the
+// innermost loop cost llvmpipe a third of M3's speed.
+struct Variant {
+  int mode = 0;          // 0..5, or -1 for the probe program
+  bool count = false;    // write lookups / excluded texels instead of the colour
+  bool centreLookups = false;
+  std::string key() const {
+    return "parallax_aniso_m" + std::to_string(mode) + (count ? "_count" : "") +
+           (centreLookups ? "_centre" : "");
+  }
+};
+inline std::string fragmentShader(const Variant& v) {
+  return "#version 130\n#define MODE " + std::to_string(v.mode) + "\n#define COUNT " + (v.count ? "1" : "0") +
+         "\n#define CENTRE_LOOKUPS " + (v.centreLookups ? "1" : "0") + R"(
 uniform sampler2D albedo;     // RGBA8, mipmapped (the 2x2 averages)
 uniform sampler2D heightTex;  // R = height, mipmapped (2x2 averages)
 uniform sampler2D heightMax;  // R = the max-height pyramid
@@ -68,10 +86,24 @@ uniform vec3 eye, fwd, rightV, upV;
 uniform vec2 viewport;        // the pass's size in pixels
 uniform vec4 relief;          // (1 / tile, heightScale / tile, texture size, number of levels - 1)
 uniform vec2 pomSteps;        // (fewest, most) linear steps
-uniform int mode, countMode, accel, probe;
+// accel stays a uniform: compiled in, it let LLVM round the ellipse's row
+// ends differently in the two programs, and the images with and without the
+// bound must match byte for byte.
+uniform int accel;
+const int mode = MODE, countMode = COUNT;
+#if MODE < 0
+uniform int probe;
+#else
+const int probe = 0;
+#endif
 uniform vec4 probeA, probeB;  // probe inputs
 const float ALPHA = 2.0, MAXANISO = 16.0, EPS = 1.5 / 255.0;
 int fetches = 0, excluded = 0;
+#if COUNT
+#define FETCH fetches++
+#else
+#define FETCH
+#endif
 
 vec3 rayDir(vec2 p) {
   vec2 n = p / viewport * 2.0 - 1.0;
@@ -80,27 +112,37 @@ vec3 rayDir(vec2 p) {
 vec2 topUV(vec3 d) { return (eye.xy + (eye.z / -d.z) * d.xy) * relief.x; }
 
 float depthGrad(vec2 uv, vec2 gx, vec2 gy) {
-  fetches++;
+  FETCH;
   return 1.0 - textureGrad(heightTex, uv, gx, gy).r;
 }
 // Parallax occlusion mapping: returns the depth where the ray meets the relief.
+// The march stops at the first step k whose ray depth d_k is at or below the
+// relief's depth h_k.  Between the step before (ray above: d - h < 0) and
+// this one (d - h >= 0) both are taken as straight lines in d, and they
+// cross where d - h is zero:
+//   d* = lo + (hi - lo) a / (a + b),  a = h_lo - lo > 0,  b = hi - h_hi >= 0.
+// A ray that meets the relief at the first step takes the relief as flat
+// from its entry to that step: it meets it at d* = h_1 (0 on a top, where
+// most rays end after one lookup; reading the entry point too cost every
+// pixel a lookup).  The last step (d = 1) always meets the relief: no depth
+// is below the floor.
 float pom(vec2 uv0, vec2 Vp, vec2 gx, vec2 gy, float cosView) {
   int n = int(mix(pomSteps.y, pomSteps.x, cosView) + 0.5);
-  float stepD = 1.0 / float(n), lo = 0.0, hi = 1.0;
+  float stepD = 1.0 / float(n), lo = 0.0, hi = 1.0, hLo = 0.0, hHi = 1.0;
   for (int k = 1; k <= n; ++k) {
     float d = float(k) * stepD;
-    if (d >= depthGrad(uv0 + Vp * d, gx, gy)) {
+    float h = depthGrad(uv0 + Vp * d, gx, gy);
+    if (d >= h) {
       hi = d;
+      hHi = h;
       break;
     }
     lo = d;
+    hLo = h;
   }
-  if (lo < hi - 0.5 * stepD)
-    for (int it = 0; it < 6; ++it) {
-      float m = 0.5 * (lo + hi);
-      if (m >= depthGrad(uv0 + Vp * m, gx, gy)) hi = m; else lo = m;
-    }
-  return hi;
+  if (lo == 0.0) return hHi;
+  float a = hLo - lo, b = hi - hHi;
+  return lo + (hi - lo) * a / (a + b);
 }
 
 vec4 ellipse(vec2 gx, vec2 gy, bool recon) {  // gx = (Ux, Vx), gy = (Uy, Vy)
@@ -132,7 +174,7 @@ vec4 texelAt(sampler2D s, ivec2 t, int L, int size) {
 #endif
 }
 float depthTexel(ivec2 t, int L, int size) {
-  fetches++;
+  FETCH;
   return 1.0 - texelAt(heightTex, t, L, size).r;
 }
 // Is texel t of level L hidden from the eye?  Vt = parallax per unit depth in
@@ -155,7 +197,7 @@ float minDepthOver(vec2 lo, vec2 hi, int L) {
   float top = 0.0;
   for (int by = b0.y; by <= b1.y; ++by)
     for (int bx = b0.x; bx <= b1.x; ++bx) {
-      fetches++;
+      FETCH;
       top = max(top, texelAt(heightMax, ivec2(bx, by), L + k, sizeK).r);
     }
   return 1.0 - top;
@@ -221,7 +263,7 @@ vec3 ewaLevel(vec2 uvS, vec2 gx, vec2 gy, vec2 Vp, int L, int vis) {
       }
       float U = float(i) - c.x;
       float w = exp(-ALPHA * min(1.0, (A * U * U + B * U * V + C * V * V) / F));
-      fetches++;
+      FETCH;
       sum += w * texelAt(albedo, ivec2(i, j), L, size).rgb;
       wsum += w;
     }
@@ -231,7 +273,7 @@ vec3 ewaLevel(vec2 uvS, vec2 gx, vec2 gy, vec2 Vp, int L, int vis) {
         if (hiddenTexel(ivec2(i, j), L, Vt, dmin)) break;
         float U = float(i) - c.x;
         float w = exp(-ALPHA * min(1.0, (A * U * U + B * U * V + C * V * V) / F));
-        fetches++;
+        FETCH;
         sum += w * texelAt(albedo, ivec2(i, j), L, size).rgb;
         wsum += w;
       }
@@ -239,7 +281,7 @@ vec3 ewaLevel(vec2 uvS, vec2 gx, vec2 gy, vec2 Vp, int L, int vis) {
     }
   }
   if (wsum <= 0.0) {  // everything hidden at this level: the texel under uvS
-    fetches++;
+    FETCH;
     return textureLod(albedo, uvS, float(L)).rgb;
   }
   return sum / wsum;
@@ -280,10 +322,10 @@ void main() {
   vec2 uvS = uv0 + Vp * depth;
   vec3 col;
   if (mode == 0) {
-    fetches++;
+    FETCH;
     col = texture(albedo, uvS).rgb;
   } else if (mode == 1 || mode == 2) {
-    fetches++;
+    FETCH;
     col = textureGrad(albedo, uvS, gx, gy).rgb;
   } else {
     col = ewa(uvS, gx, gy, Vp, mode - 3);
@@ -308,7 +350,7 @@ struct ReliefTextures {
 struct PassOptions {
   bool count = false;  // write lookups / excluded texels instead of the colour
   bool accel = true;   // max-height pyramid skip in the visibility trace
-  float minSteps = 16, maxSteps = 64;
+  float minSteps = 12, maxSteps = 40;
   // Texels read as lookups at their centres instead of texelFetch: -1 = only
   // on softpipe (whose texelFetch misbehaves in divergent loops), 0/1 = force.
   int centreLookups = -1;
@@ -370,7 +412,11 @@ class ReliefGL {
   void draw(const Camera& cam, const Relief& rel, int mode, const PassOptions& o) {
     if (mode < 0 || mode >= kShaderModes) throw ts::Error("no shader for mode " + std::to_string(mode), ts::kExitFailure);
     bindTarget(cam.width, cam.height, false);
-    GLuint prog = program(o.centreLookups < 0 ? isSoftpipe() : o.centreLookups != 0);
+    Variant v;
+    v.mode = mode;
+    v.count = o.count;
+    v.centreLookups = o.centreLookups < 0 ? isSoftpipe() : o.centreLookups != 0;
+    GLuint prog = program(v);
     glUseProgram(prog);
     setCamera(prog, cam);
     const ReliefTextures& t = textures(rel);
@@ -378,10 +424,7 @@ class ReliefGL {
     glUniform4f(glGetUniformLocation(prog, "relief"), float(1.0 / cam.tile), float(cam.heightScale / cam.tile),
                 float(kTexSize), float(t.levels - 1));
     glUniform2f(glGetUniformLocation(prog, "pomSteps"), o.minSteps, o.maxSteps);
-    glUniform1i(glGetUniformLocation(prog, "mode"), mode);
-    glUniform1i(glGetUniformLocation(prog, "countMode"), o.count ? 1 : 0);
     glUniform1i(glGetUniformLocation(prog, "accel"), o.accel ? 1 : 0);
-    glUniform1i(glGetUniformLocation(prog, "probe"), 0);
     quad();
     glUseProgram(0);
     ts::gl::check("drawing a parallax pass");
@@ -433,10 +476,7 @@ class ReliefGL {
   }
 
  private:
-  GLuint program(bool centreLookups) {
-    return r_.program(centreLookups ? "parallax_aniso_centre" : "parallax_aniso",
-                      {kSourceFile, vertexShader(), fragmentShader(centreLookups)});
-  }
+  GLuint program(const Variant& v) { return r_.program(v.key(), {kSourceFile, vertexShader(), fragmentShader(v)}); }
   void setCamera(GLuint prog, const Camera& cam) {
     auto v3 = [&](const char* n, glm::dvec3 v) { glUniform3f(glGetUniformLocation(prog, n), float(v.x), float(v.y), float(v.z)); };
     v3("eye", cam.eye());
@@ -507,7 +547,11 @@ class ReliefGL {
   }
   std::vector<float> probePass(int w, int h, glm::dvec4 a, glm::dvec4 b, const Relief* rel, bool accel) {
     bindTarget(w, h, true);
-    GLuint prog = program(isSoftpipe());
+    Variant pv;
+    pv.mode = -1;     // the probe program: `probe` picks the probe
+    pv.count = true;  // probe 2 reports the lookups of each trace
+    pv.centreLookups = isSoftpipe();
+    GLuint prog = program(pv);
     glUseProgram(prog);
     Camera cam;
     setCamera(prog, cam);
