@@ -38,6 +38,10 @@ struct TextureDesc {
   glm::vec4 border{0.0f};
   float maxAnisotropy = 1.0f;
   float lodBias = 0.0f;
+  // A texture the scene drew itself for this frame (a live view, see
+  // Scene::live): bound as it is, never uploaded, cached or hashed; `image`
+  // stays empty and the parameters above are still applied.
+  GLuint glTexture = 0;
   // Identifies the texel contents (name + params), for caching uploads.
   std::string key() const;
 };

@@ -39,7 +39,10 @@ static void upload(const Image& img, int level) {
 GLuint Renderer::texture(const TextureDesc& t) {
   auto it = textures_.find(t.key());
   GLuint id = 0;
-  if (it != textures_.end()) {
+  if (t.glTexture) {
+    id = t.glTexture;
+    glBindTexture(GL_TEXTURE_2D, id);
+  } else if (it != textures_.end()) {
     id = it->second;
     glBindTexture(GL_TEXTURE_2D, id);
   } else {

@@ -54,6 +54,10 @@ class Scene {
   virtual bool wantsAccumBuffer() const { return false; }
   // Window only: called each frame with the elapsed seconds (animations).
   virtual void update(double /*seconds*/) {}
+  // A live view: measure() draws the picture itself with GL (into a texture
+  // the frame names through TextureDesc::glTexture), so the window calls it
+  // every frame, not only after a key.  Default: no.
+  virtual bool live() const { return false; }
   // Files to write beside a figure besides its PNG and sidecar, made by the
   // last measure(): (suffix, contents), e.g. {".csv", table}.  make_figures
   // writes each as <out>/<figure id><suffix>.  Default: none.

@@ -191,10 +191,12 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       last = now;
       ctx.sync();
       if (ctx.width() < 1 || ctx.height() < 1) continue;  // minimised
-      if (dirty) {
+      if (dirty || scene.live()) {
         m = scene.measure(renderer);
-        std::printf("%s\n%s", opts.stateText().c_str(), formatMeasurements(m).c_str());
-        std::fflush(stdout);
+        if (dirty) {
+          std::printf("%s\n%s", opts.stateText().c_str(), formatMeasurements(m).c_str());
+          std::fflush(stdout);
+        }
         dirty = false;
       }
       Frame f = scene.build(ctx.width(), ctx.height());

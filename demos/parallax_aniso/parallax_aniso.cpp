@@ -25,12 +25,18 @@
 //   m  mode            t  map: bricks | step | flat
 //   + / -  height scale          ] / [  view angle (elevation)
 //   z / Z  azimuth               c  split-screen compare (mode | --against)
-//   b  the mode compared against  v  view: single | modes | error
+//   b  the mode compared against  v  view: single | modes | error | live
 //   r / R  render width          x  max-height pyramid acceleration
+//   a  live view: sweep the azimuth
+// The live view (v until "live", or --view live) draws the mode every frame at
+// the window's size: M2 there is what "interactive" is measured on (the
+// overlay, h, shows live_ms_per_frame and live_fps).
 // Flags only: --rays N (reference rays per side), --seed, --time N (time each
 // mode, median of N frames, for the CSV), --csv FILE.
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -49,7 +55,7 @@
 
 namespace {
 using namespace pax;
-enum View { kSingle, kModes, kError };
+enum View { kSingle, kModes, kError, kLive };
 const char* const kMaps[] = {"bricks", "step", "flat"};
 const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f}, kGrey{0.62f, 0.62f, 0.66f, 1.0f};
 
@@ -113,10 +119,12 @@ class ParallaxAniso final : public ts::Scene {
     o.addEnum("against", &against_, {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4],
                                      kModeKeys[5], kModeKeys[6]},
               "the mode of the right half in split-screen compare", 'b');
-    o.addEnum("view", &view_, {"single", "modes", "error"},
+    o.addEnum("view", &view_, {"single", "modes", "error", "live"},
               "single: one mode (or the split screen); modes: all seven with their numbers; error: the occlusion "
-              "band's error for M2, M3, M4",
+              "band's error for M2, M3, M4; live: the mode (or the split screen) drawn every frame at the window's "
+              "size, timed (no reference, no table)",
               'v');
+    o.addBool("animate", &animate_, "live view: sweep the azimuth back and forth (10 degrees a second)", 'a');
     o.addInt("res", &res_, 80, 800, "width of the measured renders (height 3/4 of it; the figures use 320)", 'r', 'R', 80);
     o.addInt("rays", &rays_, 2, 32, "reference rays per side of the kernel square (n x n; the figures use 12)");
     o.addInt("time", &timeRuns_, 0, 50,
@@ -156,13 +164,22 @@ class ParallaxAniso final : public ts::Scene {
     return {{".csv", csv(*table_)}};
   }
 
+  bool live() const override { return view_ == kLive; }
+  void update(double seconds) override {
+    if (!animate_ || view_ != kLive) return;
+    azimuth_ += float(sweep_ * 10.0 * seconds);
+    if (azimuth_ > 30.0f) azimuth_ = 30.0f, sweep_ = -1;
+    if (azimuth_ < -30.0f) azimuth_ = -30.0f, sweep_ = 1;
+  }
+
   ts::Measurements measure(ts::Renderer& r) override {
+    if (!gl_ || &r != renderer_) {
+      gl_ = std::make_unique<ReliefGL>(r);
+      renderer_ = &r;
+    }
+    if (view_ == kLive) return measureLive(r);
     std::string key = stateKey();
     if (!table_ || key != tableKey_) {
-      if (!gl_ || &r != renderer_) {
-        gl_ = std::make_unique<ReliefGL>(r);
-        renderer_ = &r;
-      }
       Relief& rel = relief();
       MeasureOptions mo;
       mo.refRays = rays_;
@@ -216,6 +233,10 @@ class ParallaxAniso final : public ts::Scene {
     f.width = width;
     f.height = height;
     f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+    if (view_ == kLive) {
+      buildLive(f);
+      return f;
+    }
     if (!table_) return f;
     if (view_ == kModes) buildModes(f);
     else if (view_ == kError) buildError(f);
@@ -303,6 +324,89 @@ class ParallaxAniso final : public ts::Scene {
                         std::string(kModeLabels[against_]) + ": " + numbers(against_), kAmber, 1, ts::Align::Center});
   }
 
+  // The live view: the chosen mode (M0..M5; R is the CPU reference, seconds
+  // a frame, so it is not drawn live) at the target's full size, drawn by
+  // ReliefGL::drawLive straight into a texture, timed with glFinish.  The
+  // milliseconds go to the measurements (stdout, the `h` overlay), not into
+  // the picture, so a --png of the live view stays reproducible.
+  ts::Measurements measureLive(ts::Renderer& r) {
+    Camera c = camera();
+    c.width = std::max(1, r.context().width());
+    c.height = std::max(1, r.context().height());
+    auto liveMode = [](int m) { return m == kReference ? -1 : m; };
+    int left = liveMode(mode_), right = compare_ ? liveMode(against_) : -1;
+    if (left < 0) left = right, right = -1;  // the reference cannot be drawn live: the other half fills the view
+    ts::Measurements m;
+    live_ = {};
+    if (left < 0) return m;
+    PassOptions o;
+    o.accel = accel_;
+    auto t0 = std::chrono::steady_clock::now();
+    GLuint tex = gl_->drawLive(c, relief(), left, right, o);
+    glFinish();
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    liveMs_.push_back(ms);
+    if (liveMs_.size() > 15) liveMs_.erase(liveMs_.begin());
+    std::vector<double> sorted = liveMs_;
+    std::sort(sorted.begin(), sorted.end());
+    double median = sorted[sorted.size() / 2];
+    live_.name = "parallax_live";
+    live_.params = {{"left", kModeKeys[left]}, {"right", right < 0 ? "-" : kModeKeys[right]},
+                    {"size", std::to_string(c.width) + "x" + std::to_string(c.height)},
+                    {"made_by", "ReliefGL::drawLive in the parallax_aniso demo's measure()"}};
+    live_.glTexture = tex;
+    live_.minFilter = live_.magFilter = GL_NEAREST;
+    live_.wrapS = live_.wrapT = GL_CLAMP_TO_EDGE;
+    liveSize_ = {c.width, c.height};
+    liveModes_ = {left, right};
+    m.push_back({"live_ms_per_frame", median, "the live view's draw, median of the last " +
+                                                  std::to_string(liveMs_.size()) + " frames (glFinish)"});
+    m.push_back({"live_fps", 1000.0 / median, "frames per second that draw allows (20 = interactive)"});
+    return m;
+  }
+
+  static constexpr int kLiveBar = 22;  // the dark bars under the live view's two lines of text
+  void buildLive(ts::Frame& f) {
+    const int line = 17;
+    auto bar = [&](const char* id, int y) {
+      ts::Panel p;
+      p.id = id;
+      p.viewport = {0, y, f.width, kLiveBar};
+      p.clear = true;
+      p.clearColor = f.clearColor;
+      f.panels.push_back(p);
+    };
+    std::string head = std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) +
+                       " deg, azimuth " + fmtNum("%.0f", azimuth_) + " deg, height " + fmtNum("%.2f", heightScale_) +
+                       ", live";
+    if (!live_.glTexture) {
+      f.labels.push_back({16.0f, 6.0f, head, kWhite, 1, ts::Align::Left});
+      f.labels.push_back({16.0f, 6.0f + line, "R (the reference) is traced on the CPU and is not drawn live: m picks a mode",
+                          kAmber, 1, ts::Align::Left});
+      return;
+    }
+    addImage(f, "live", {0, 0, f.width, f.height}, live_);
+    bar("top_bar", 0);
+    bar("bottom_bar", f.height - kLiveBar);
+    f.labels.push_back({16.0f, 4.0f, head, kWhite, 1, ts::Align::Left});
+    std::string sizeText = std::to_string(liveSize_.x) + "x" + std::to_string(liveSize_.y);
+    if (liveModes_.y < 0) {
+      f.labels.push_back({float(f.width / 2), float(f.height - line - 2), std::string(kModeLabels[liveModes_.x]) + ", " + sizeText,
+                          kAmber, 1, ts::Align::Center});
+      return;
+    }
+    f.labels.push_back({float(f.width / 4), float(f.height - line - 2), kModeLabels[liveModes_.x], kAmber, 1, ts::Align::Center});
+    f.labels.push_back({float(3 * f.width / 4), float(f.height - line - 2), kModeLabels[liveModes_.y], kAmber, 1,
+                        ts::Align::Center});
+    ts::Panel canvas;
+    canvas.id = "divider";
+    canvas.viewport = {0, 0, f.width, f.height};
+    canvas.projection = glm::ortho(0.0f, float(f.width), float(f.height), 0.0f, -1.0f, 1.0f);
+    float x = float(f.width / 2);
+    canvas.batches.push_back(ts::lineSegments({{x, 0.0f}, {x, float(f.height)}}, kWhite, 2.0f, "divider"));
+    f.panels.push_back(canvas);
+  }
+
   void buildModes(ts::Frame& f) {
     const int line = 17, gap = 12, cols = 4;
     const int W = table_->cam.width, H = table_->cam.height;
@@ -357,7 +461,11 @@ class ParallaxAniso final : public ts::Scene {
 
   int mode_ = kEwa, map_ = 0, against_ = kEwaVis, view_ = kSingle, res_ = 160, rays_ = 6, seed_ = 1, timeRuns_ = 0;
   float heightScale_ = 0.06f, angle_ = 20.0f, azimuth_ = 12.0f;
-  bool compare_ = false, accel_ = true;
+  bool compare_ = false, accel_ = true, animate_ = false;
+  int sweep_ = 1;
+  ts::TextureDesc live_;
+  glm::ivec2 liveSize_{0}, liveModes_{-1};
+  std::vector<double> liveMs_;
   std::string csvPath_;
 
   std::unique_ptr<Relief> relief_;

@@ -70,14 +70,15 @@ inline const char* vertexShader() {
 struct Variant {
   int mode = 0;          // 0..5, or -1 for the probe program
   bool count = false;    // write lookups / excluded texels instead of the colour
+  bool parallax = true;  // false: no march, the flat top (the benchmark's floor)
   bool centreLookups = false;
   std::string key() const {
-    return "parallax_aniso_m" + std::to_string(mode) + (count ? "_count" : "") +
+    return "parallax_aniso_m" + std::to_string(mode) + (count ? "_count" : "") + (parallax ? "" : "_flat") +
            (centreLookups ? "_centre" : "");
   }
 };
 inline std::string fragmentShader(const Variant& v) {
-  return "#version 130\n#define MODE " + std::to_string(v.mode) + "\n#define COUNT " + (v.count ? "1" : "0") +
+  return "#version 130\n#define MODE " + std::to_string(v.mode) + "\n#define COUNT " + (v.count ? "1" : "0") + "\n#define PARALLAX " + (v.parallax ? "1" : "0") +
          "\n#define CENTRE_LOOKUPS " + (v.centreLookups ? "1" : "0") + R"(
 uniform sampler2D albedo;     // RGBA8, mipmapped (the 2x2 averages)
 uniform sampler2D heightTex;  // R = height, mipmapped (2x2 averages)
@@ -318,7 +319,11 @@ void main() {
   vec2 gx = topUV(rayDir(p + vec2(0.5, 0.0))) - topUV(rayDir(p - vec2(0.5, 0.0)));
   vec2 gy = topUV(rayDir(p + vec2(0.0, 0.5))) - topUV(rayDir(p - vec2(0.0, 0.5)));
   vec2 Vp = d.xy / (-d.z) * relief.y;
+#if PARALLAX
   float depth = pom(uv0, Vp, gx, gy, abs(normalize(d).z));
+#else
+  float depth = 0.0;
+#endif
   vec2 uvS = uv0 + Vp * depth;
   vec3 col;
   if (mode == 0) {
@@ -350,6 +355,7 @@ struct ReliefTextures {
 struct PassOptions {
   bool count = false;  // write lookups / excluded texels instead of the colour
   bool accel = true;   // max-height pyramid skip in the visibility trace
+  bool parallax = true;  // false: no parallax march (what the rest of a mode costs; benchmark only)
   float minSteps = 12, maxSteps = 40;
   // Texels read as lookups at their centres instead of texelFetch: -1 = only
   // on softpipe (whose texelFetch misbehaves in divergent loops), 0/1 = force.
@@ -371,6 +377,10 @@ class ReliefGL {
     }
     textures_.clear();
     freeTarget();
+    if (liveFbo_) glDeleteFramebuffers(1, &liveFbo_);
+    if (liveTex_) glDeleteTextures(1, &liveTex_);
+    liveFbo_ = liveTex_ = 0;
+    lw_ = lh_ = 0;
   }
 
   const ReliefTextures& textures(const Relief& rel) {
@@ -410,11 +420,65 @@ class ReliefGL {
   // Draws one mode into an RGBA8 target of the camera's size (bound and left
   // bound; read with readColour).  Returns nothing: timing wraps this.
   void draw(const Camera& cam, const Relief& rel, int mode, const PassOptions& o) {
-    if (mode < 0 || mode >= kShaderModes) throw ts::Error("no shader for mode " + std::to_string(mode), ts::kExitFailure);
     bindTarget(cam.width, cam.height, false);
+    glDisable(GL_SCISSOR_TEST);
+    pass(cam, rel, mode, o);
+  }
+  // The live view: `left` over the whole camera, or with right >= 0 `left` on
+  // the left half and `right` on the right half (split-screen compare: one
+  // frame's work, each pixel drawn once), into an RGBA8 texture of the
+  // camera's size (GL_NEAREST; valid until the next call).  The previous
+  // framebuffer is bound again on return.
+  GLuint drawLive(const Camera& cam, const Relief& rel, int left, int right, const PassOptions& o) {
+    if (!ts::gl::p_glGenFramebuffers) throw ts::Error("the parallax passes need framebuffer objects (GL 3.0)", ts::kExitFailure);
+    GLint prevFbo = 0, prevDraw = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prevFbo);
+    glGetIntegerv(GL_DRAW_BUFFER, &prevDraw);
+    if (cam.width != lw_ || cam.height != lh_) {
+      if (liveFbo_) glDeleteFramebuffers(1, &liveFbo_);
+      if (liveTex_) glDeleteTextures(1, &liveTex_);
+      glGenTextures(1, &liveTex_);
+      glBindTexture(GL_TEXTURE_2D, liveTex_);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, cam.width, cam.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glGenFramebuffers(1, &liveFbo_);
+      glBindFramebuffer(GL_FRAMEBUFFER, liveFbo_);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, liveTex_, 0);
+      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw ts::Error("live parallax framebuffer " + std::to_string(cam.width) + "x" + std::to_string(cam.height) +
+                        " is incomplete", ts::kExitFailure);
+      lw_ = cam.width, lh_ = cam.height;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, liveFbo_);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    glViewport(0, 0, cam.width, cam.height);
+    if (right < 0) {
+      glDisable(GL_SCISSOR_TEST);
+      pass(cam, rel, left, o);
+    } else {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(0, 0, cam.width / 2, cam.height);
+      pass(cam, rel, left, o);
+      glScissor(cam.width / 2, 0, cam.width - cam.width / 2, cam.height);
+      pass(cam, rel, right, o);
+      glDisable(GL_SCISSOR_TEST);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(prevFbo));
+    glDrawBuffer(GLenum(prevDraw));
+    ts::gl::check("drawing the live parallax view");
+    return liveTex_;
+  }
+
+ private:
+  // One mode over the bound target's viewport (and scissor, if enabled).
+  void pass(const Camera& cam, const Relief& rel, int mode, const PassOptions& o) {
+    if (mode < 0 || mode >= kShaderModes) throw ts::Error("no shader for mode " + std::to_string(mode), ts::kExitFailure);
     Variant v;
     v.mode = mode;
     v.count = o.count;
+    v.parallax = o.parallax;
     v.centreLookups = o.centreLookups < 0 ? isSoftpipe() : o.centreLookups != 0;
     GLuint prog = program(v);
     glUseProgram(prog);
@@ -429,6 +493,8 @@ class ReliefGL {
     glUseProgram(0);
     ts::gl::check("drawing a parallax pass");
   }
+
+ public:
   // draw() and read back (row 0 = top).
   ts::Image render(const Camera& cam, const Relief& rel, int mode, const PassOptions& o = {}) {
     draw(cam, rel, mode, o);
@@ -497,10 +563,9 @@ class ReliefGL {
     glBindTexture(GL_TEXTURE_2D, t.albedo);
     if (anisotropySupported()) glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, aniso);
   }
-  void quad() {
+  void quad() {  // the caller sets the scissor test
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
     glBegin(GL_TRIANGLES);
     const float c[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};
     for (const auto& v : c) glVertex2f(v[0], v[1]);
@@ -547,6 +612,7 @@ class ReliefGL {
   }
   std::vector<float> probePass(int w, int h, glm::dvec4 a, glm::dvec4 b, const Relief* rel, bool accel) {
     bindTarget(w, h, true);
+    glDisable(GL_SCISSOR_TEST);
     Variant pv;
     pv.mode = -1;     // the probe program: `probe` picks the probe
     pv.count = true;  // probe 2 reports the lookups of each trace
@@ -577,8 +643,8 @@ class ReliefGL {
 
   ts::Renderer& r_;
   std::vector<ReliefTextures> textures_;
-  GLuint fbo_ = 0, rb_ = 0;
-  int tw_ = 0, th_ = 0;
+  GLuint fbo_ = 0, rb_ = 0, liveFbo_ = 0, liveTex_ = 0;
+  int tw_ = 0, th_ = 0, lw_ = 0, lh_ = 0;
   bool tfloat_ = false, saved_ = false;
   GLint prevFbo_ = 0, prevDraw_ = 0, prevRead_ = 0;
 };

@@ -22,7 +22,10 @@
 //     as the algorithms imply; and the finding it gives on the bricks at 20
 //     degrees (visibility-aware EWA closer to the reference than EWA over the
 //     whole frame and the high-anisotropy pixels; the row walk within 0.5 dB
-//     of the full trace) is checked as regenerated, not copied.
+//     of the full trace) is checked as regenerated, not copied;
+//   * the live view (the window's interactive view) draws the chosen mode at
+//     the target's size, pixel for pixel what the measured passes draw, and
+//     its split screen is the two modes' halves.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,6 +39,7 @@
 #include "demos/parallax_aniso/parallax_gl.hpp"
 #include "demos/parallax_aniso/relief.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/scene_test.hpp"
 
 namespace {
 using namespace pax;
@@ -360,5 +364,67 @@ TEST(Table, RegeneratedWithinBounds) {
   std::string c = csv(t);
   EXPECT_NE(c.find(t.renderer), std::string::npos);
   EXPECT_EQ(std::count(c.begin(), c.end(), '\n'), kShaderModes + 1);
+}
+
+// ------------------------------------------------------------- the live view
+// Rows of `a` and `b` in [y0, y1) equal, columns [x0, x1) (both row 0 = top).
+::testing::AssertionResult sameRows(const ts::Image& a, const ts::Image& b, int y0, int y1, int x0, int x1) {
+  long differ = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x)
+      for (int c = 0; c < 3; ++c)
+        differ += a.pixels[(size_t(y) * size_t(a.width) + size_t(x)) * 4 + size_t(c)] !=
+                  b.pixels[(size_t(y) * size_t(b.width) + size_t(x)) * 4 + size_t(c)];
+  if (differ == 0) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << differ << " channel values differ in rows " << y0 << ".." << y1 << ", columns "
+                                       << x0 << ".." << x1;
+}
+
+TEST(Live, DrawsTheModeAtTheTargetSize) {
+  ts::test::context();
+  TS_REQUIRE_GL_VERSION(30);
+  const int W = ts::test::isSoftpipe() ? 96 : 240, H = W * 3 / 4, bar = 22;
+  ts::test::Demo d("parallax_aniso", {"--view", "live", "--mode", "aniso16"});
+  ASSERT_TRUE(d.scene->live());
+  ts::test::context().resize(W, H);  // the live view draws at the target's size
+  ts::Measurements m = d.measure();
+  EXPECT_GT(ts::test::value(m, "live_ms_per_frame"), 0.0);
+  ts::Frame f;
+  ts::Image live = d.render(W, H, &f);
+  ASSERT_NE(f.panel("live"), nullptr);
+  Camera c;  // the demo's defaults: bricks, 20 degrees, azimuth 12, height 0.06
+  c.width = W;
+  c.height = H;
+  ts::Image m2 = gl().render(c, relief("bricks"), kAniso16);
+  // Between the two text bars, the window shows exactly the M2 pass.
+  EXPECT_TRUE(sameRows(live, m2, bar, H - bar, 0, W));
+  // Not a picture of nothing: the relief has both bricks and mortar in it.
+  EXPECT_FALSE(sameRows(live, gl().render(c, relief("bricks"), kNaive), bar, H - bar, 0, W))
+      << "M2 and M0 drew the same picture";
+}
+
+TEST(Live, SplitScreenIsTheTwoModesHalves) {
+  ts::test::context();
+  TS_REQUIRE_GL_VERSION(30);
+  const int W = ts::test::isSoftpipe() ? 96 : 240, H = W * 3 / 4, bar = 22;
+  ts::test::Demo d("parallax_aniso", {"--view", "live", "--mode", "trilinear", "--compare", "--against", "ewa"});
+  ts::test::context().resize(W, H);
+  d.measure();
+  ts::Image live = d.render(W, H);
+  Camera c;
+  c.width = W;
+  c.height = H;
+  ts::Image left = gl().render(c, relief("bricks"), kTrilinear), right = gl().render(c, relief("bricks"), kEwa);
+  // The divider (2 px at W/2) is left out.
+  EXPECT_TRUE(sameRows(live, left, bar, H - bar, 0, W / 2 - 2));
+  EXPECT_TRUE(sameRows(live, right, bar, H - bar, W / 2 + 2, W));
+}
+
+TEST(Live, TheReferenceIsNotDrawnLive) {
+  ts::test::context();
+  ts::test::Demo d("parallax_aniso", {"--view", "live", "--mode", "reference"});
+  ts::test::context().resize(64, 48);
+  EXPECT_TRUE(d.measure().empty());  // no pass, no timing
+  EXPECT_EQ(d.frame(64, 48).panel("live"), nullptr);
 }
 }  // namespace

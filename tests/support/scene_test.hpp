@@ -1,0 +1,52 @@
+// tests/support/scene_test.hpp — a registered demo in a state, on the test
+// context (tests/support/gl_test.hpp): what every figure test needs to say
+// "this demo, these flags, measure it, draw it at this size" in one line.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/scene.hpp"
+#include "tests/support/gl_test.hpp"
+
+namespace ts::test {
+// The demo `id` with its flags parsed, as make_figures and --png do.
+struct Demo {
+  std::unique_ptr<Scene> scene;
+  Options opts;
+  Demo(const std::string& id, const std::vector<std::string>& flags) : scene(makeScene(id)) {
+    if (!scene) throw std::runtime_error(id + " is not registered (is its scene linked into this test?)");
+    scene->addOptions(opts);
+    opts.parse(flags);
+  }
+  Measurements measure() { return scene->measure(renderer()); }
+  // The frame at w x h; the test context is resized to it first, as a
+  // --png render of that size would be.
+  Frame frame(int w, int h) {
+    Context& ctx = context();
+    if (ctx.width() != w || ctx.height() != h) ctx.resize(w, h);
+    return scene->build(w, h);
+  }
+  // frame() drawn and read back (labels off unless asked: the font is not
+  // what the tests are about).
+  Image render(int w, int h, Frame* frameOut = nullptr, bool labels = false) {
+    Frame f = frame(w, h);
+    Image img = renderer().render(f, labels);
+    if (frameOut) *frameOut = std::move(f);
+    return img;
+  }
+};
+
+// The value of the measurement `name`; a test failure (and NaN) when absent.
+inline double value(const Measurements& m, const std::string& name) {
+  for (const auto& x : m)
+    if (x.name == name) return x.value;
+  ADD_FAILURE() << "no measurement named " << name << " in\n" << formatMeasurements(m);
+  return std::nan("");
+}
+}  // namespace ts::test
