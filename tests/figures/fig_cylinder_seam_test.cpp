@@ -29,33 +29,14 @@
 #include "common/textures.hpp"
 #include "demos/cylinder_seam/cylinder_map.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/scene_test.hpp"
 
 namespace {
 constexpr int kN = 2048;                 // texels of the texel-index texture
 constexpr double kSpanTol = 2.0 / kN;    // see the header comment
 
-struct Demo {
-  std::unique_ptr<ts::Scene> scene;
-  ts::Options opts;
-  explicit Demo(const std::vector<std::string>& flags) : scene(ts::makeScene("cylinder_seam")) {
-    if (!scene) throw std::runtime_error("cylinder_seam is not registered");
-    scene->addOptions(opts);
-    opts.parse(flags);
-  }
-  ts::Frame frame(int w, int h) {
-    ts::Context& ctx = ts::test::context();
-    if (ctx.width() != w || ctx.height() != h) ctx.resize(w, h);
-    return scene->build(w, h);
-  }
-  ts::Measurements measure() { return scene->measure(ts::test::renderer()); }
-};
-
-double value(const ts::Measurements& m, const std::string& name) {
-  for (const auto& x : m)
-    if (x.name == name) return x.value;
-  ADD_FAILURE() << "no measurement named " << name << " in\n" << ts::formatMeasurements(m);
-  return std::nan("");
-}
+using ts::test::Demo;
+using ts::test::value;
 
 const ts::Panel& panelOf(const ts::Frame& f, const std::string& id) {
   const ts::Panel* p = f.panel(id);
@@ -99,7 +80,7 @@ double wrapDist(double a, double b) {
 // the front seam shows 0.8 of the texture, backwards (ds/dx < 0), measured
 // from a render; it is the only reversed patch.
 TEST(CylinderSeam, WrongSeamPatchShowsEightTenthsBackwards) {
-  Demo demo({"--coords", "wrong", "--slices", "5", "--seam", "front"});
+  Demo demo("cylinder_seam", {"--coords", "wrong", "--slices", "5", "--seam", "front"});
   ts::Measurements m = demo.measure();
   EXPECT_EQ(value(m, "seam_patch"), 0.0);
   EXPECT_NEAR(value(m, "seam_patch_span_s[wrong]"), 0.8, kSpanTol);
@@ -111,7 +92,7 @@ TEST(CylinderSeam, WrongSeamPatchShowsEightTenthsBackwards) {
 // Claim (the fix): s = 0.9 -> 1.1 with GL_REPEAT shows the intended 0.2,
 // forwards, and no patch is reversed.
 TEST(CylinderSeam, RightSeamPatchShowsTwoTenthsForwards) {
-  Demo demo({"--coords", "right", "--slices", "5", "--seam", "front"});
+  Demo demo("cylinder_seam", {"--coords", "right", "--slices", "5", "--seam", "front"});
   ts::Measurements m = demo.measure();
   EXPECT_NEAR(value(m, "seam_patch_span_s[right]"), 0.2, kSpanTol);
   EXPECT_EQ(value(m, "seam_patch_direction[right]"), 1.0);
@@ -123,7 +104,7 @@ TEST(CylinderSeam, RightSeamPatchShowsTwoTenthsForwards) {
 // span is nowhere near the right one's (a measurement that always said 0.2,
 // or that unwrapped s into forwards order, would fail the two tests above).
 TEST(CylinderSeam, NegativeControlTheTwoMeasurementsDiffer) {
-  Demo demo({"--view", "compare"});
+  Demo demo("cylinder_seam", {"--view", "compare"});
   ts::Measurements m = demo.measure();
   double wrong = value(m, "seam_patch_span_s[wrong]"), right = value(m, "seam_patch_span_s[right]");
   EXPECT_GT(std::abs(wrong - 0.2), 100 * kSpanTol) << "the wrong patch measured like the right one";
@@ -135,7 +116,7 @@ TEST(CylinderSeam, NegativeControlTheTwoMeasurementsDiffer) {
 // front patch shows 0.2 forwards in both coordinate modes; the seam patch is
 // the one at the back (slices/2), and reducing s there still reverses it.
 TEST(CylinderSeam, BackSeamLeavesTheFrontPatchForwards) {
-  Demo demo({"--seam", "back", "--view", "compare", "--slices", "5"});
+  Demo demo("cylinder_seam", {"--seam", "back", "--view", "compare", "--slices", "5"});
   ts::Measurements m = demo.measure();
   EXPECT_EQ(value(m, "seam_patch"), 2.0);
   for (const char* c : {"wrong", "right"}) {
@@ -147,7 +128,7 @@ TEST(CylinderSeam, BackSeamLeavesTheFrontPatchForwards) {
   EXPECT_EQ(value(m, "seam_patch_direction[wrong]"), -1.0);
   EXPECT_EQ(value(m, "reversed_patches[right]"), 0.0);
   // The same with an even count (the seam then crosses the middle of a patch).
-  Demo even({"--seam", "back", "--coords", "wrong", "--slices", "8"});
+  Demo even("cylinder_seam", {"--seam", "back", "--coords", "wrong", "--slices", "8"});
   ts::Measurements e = even.measure();
   EXPECT_EQ(value(e, "seam_patch"), 4.0);
   EXPECT_EQ(value(e, "front_patch_direction[wrong]"), 1.0);
@@ -237,7 +218,7 @@ TEST(CylinderSeam, DisplayedFrontPatchShowsTheAssignedRegion) {
   for (const char* c : {"wrong", "right"}) {
     SCOPED_TRACE(c);
     const bool wrong = std::string(c) == "wrong";
-    Demo demo({"--coords", c});
+    Demo demo("cylinder_seam", {"--coords", c});
     ts::Frame f = demo.frame(1024, 512);
     const ts::Panel& p = panelOf(f, std::string("cylinder_") + c);
     ts::Image img = renderTexelIndex(f);
@@ -270,7 +251,7 @@ TEST(CylinderSeam, DisplayedFrontPatchShowsTheAssignedRegion) {
 // closer to the overlay's green and pixels in the middle (away from the red outline, hatching and
 // arrow) are unchanged.
 TEST(CylinderSeam, TextureSpaceShowsTheIntendedRegionWrapping) {
-  Demo on({"--coords", "wrong"}), off({"--coords", "wrong", "--patch=off"});
+  Demo on("cylinder_seam", {"--coords", "wrong"}), off("cylinder_seam", {"--coords", "wrong", "--patch=off"});
   ts::Frame fa = on.frame(1024, 512), fb = off.frame(1024, 512);
   ts::Image a = ts::test::renderer().render(fa, false), b = ts::test::renderer().render(fb, false);
   const ts::Rect vp = panelOf(fa, "texture_space").viewport;

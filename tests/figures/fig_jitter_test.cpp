@@ -41,6 +41,7 @@
 #include "common/scene.hpp"
 #include "demos/jitter/jitter_gl.hpp"
 #include "demos/jitter/jitter_math.hpp"
+#include "tests/support/scene_test.hpp"
 
 namespace {
 using jitter::Pattern;
@@ -60,39 +61,18 @@ ts::Renderer& renderer() {
   return r;
 }
 
-// The demo in one state.
-struct Demo {
-  std::unique_ptr<ts::Scene> scene;
-  ts::Options opts;
-  explicit Demo(const std::vector<std::string>& flags) : scene(ts::makeScene("jitter")) {
-    if (!scene) throw std::runtime_error("jitter is not registered");
-    scene->addOptions(opts);
-    opts.parse(flags);
-  }
-  ts::Measurements measure() { return scene->measure(renderer()); }
-  // Measures, then renders the frame at w x h without labels.
-  ts::Image render(int w, int h, ts::Frame* out) {
-    scene->measure(renderer());
-    ts::Context& ctx = context();
-    if (ctx.width() != w || ctx.height() != h) ctx.resize(w, h);
-    *out = scene->build(w, h);
-    return renderer().render(*out, false);
-  }
-};
+using ts::test::Demo;
+using ts::test::value;
 
-double value(const ts::Measurements& m, const std::string& name) {
-  for (const auto& x : m)
-    if (x.name == name) return x.value;
-  ADD_FAILURE() << "no measurement named " << name << " in\n" << ts::formatMeasurements(m);
-  return std::nan("");
-}
+// The demo in one state, on this file's context (not the shared one).
+Demo jitterDemo(const std::vector<std::string>& flags) { return Demo("jitter", flags, renderer()); }
 
 // The plot view measures every pattern at n = 1..4; one render per seed.
 const ts::Measurements& sweep(int seed) {
   static std::map<int, ts::Measurements> cache;
   auto it = cache.find(seed);
   if (it != cache.end()) return it->second;
-  Demo d({"--view", "plot", "--samples", "3", "--seed", std::to_string(seed)});
+  Demo d = jitterDemo({"--view", "plot", "--samples", "3", "--seed", std::to_string(seed)});
   return cache.emplace(seed, d.measure()).first->second;
 }
 
@@ -314,7 +294,7 @@ TEST(VI7Averaging, AccumulationBufferWhereThereIsOneFboAveragingElsewhere) {
   if (context().backend() == ts::Backend::EGL) {
     EXPECT_FALSE(context().hasAccumBuffer());
     EXPECT_EQ(status, jitter::AccumStatus::NoBuffer);
-    Demo d({"--average", "accum"});
+    Demo d = jitterDemo({"--average", "accum"});
     try {
       d.measure();
       ADD_FAILURE() << "--average accum was accepted without an accumulation buffer";
@@ -354,7 +334,7 @@ TEST(VI7Averaging, FboAveragingMatchesTheAccumulationBuffer) {
                 p == Pattern::Regular ? "regular" : "jitter-global", n, n, differ, worst);
     EXPECT_LE(worst, 1);
   }
-  Demo acc({"--average", "accum"}), fbo({"--average", "fbo"});
+  Demo acc = jitterDemo({"--average", "accum"}), fbo = jitterDemo({"--average", "fbo"});
   ts::Measurements ma = acc.measure(), mf = fbo.measure();
   ASSERT_EQ(ma.size(), mf.size());
   for (size_t i = 0; i < ma.size(); ++i) {
@@ -422,7 +402,7 @@ TEST(VI7Claims, PerPixelJitterRemovesTheInterferenceGlobalJitterKeeps) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     // Seed 1: every n (the plot view); the others at n = 3 only.
     ts::Measurements other;
-    if (seed != 1) other = Demo({"--samples", "3", "--seed", std::to_string(seed)}).measure();
+    if (seed != 1) other = jitterDemo({"--samples", "3", "--seed", std::to_string(seed)}).measure();
     const ts::Measurements& m = seed == 1 ? sweep(1) : other;
     const double reg = value(m, "aliasing[regular]"), glob = value(m, "aliasing[jitter_global]"),
                  pix = value(m, "aliasing[jitter_pixel]");
@@ -560,8 +540,9 @@ const ts::Panel& panelOf(const ts::Frame& f, const std::string& id) {
 // the numbers printed under them are the measurements, and the jittered
 // sample-pattern diagram puts each dot inside its subpixel.
 TEST(VI7Figure, CompareViewShowsTheMeasuredImagesPixelExact) {
-  Demo demo({"--view", "compare", "--samples", "3", "--seed", "1"});
+  Demo demo = jitterDemo({"--view", "compare", "--samples", "3", "--seed", "1"});
   ts::Frame f;
+  demo.measure();  // measured first, then the frame at that size without labels
   ts::Image img = demo.render(1320, 760, &f);
   ts::Measurements m = demo.measure();
   for (const char* id : {"image_one", "image_regular", "image_jitter-global", "image_jitter-pixel", "image_reference",
@@ -628,8 +609,9 @@ TEST(VI7Figure, CompareViewShowsTheMeasuredImagesPixelExact) {
 // images (global and per pixel) and the same regular one.
 TEST(VI7Figure, SeedChangesTheJitterOnly) {
   auto textures = [](const std::vector<std::string>& flags) {
-    Demo d(flags);
+    Demo d = jitterDemo(flags);
     ts::Frame f;
+    d.measure();
     d.render(1320, 760, &f);
     std::map<std::string, std::vector<uint8_t>> out;
     for (const char* id : {"image_regular", "image_jitter-global", "image_jitter-pixel"})
@@ -652,7 +634,7 @@ TEST(VI7Options, BadValuesAreRejected) {
                                                      {"--average", "gpu"},  {"--samples", "three"}};
   for (const auto& flags : bad) {
     try {
-      Demo d(flags);
+      Demo d = jitterDemo(flags);
       ADD_FAILURE() << flags[0] << " " << flags[1] << " was accepted";
     } catch (const ts::Error& e) {
       EXPECT_NE(std::string(e.what()).find(flags[0].substr(2)), std::string::npos) << e.what();

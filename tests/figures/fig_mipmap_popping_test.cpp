@@ -34,6 +34,7 @@
 #include "demos/mipmap_popping/mip_math.hpp"
 #include "demos/mipmap_popping/sweep.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/scene_test.hpp"
 
 namespace {
 using namespace mipmath;
@@ -50,36 +51,13 @@ constexpr double kBlendTolerance = 0.06;
 
 std::string renderer() { return ts::test::rendererString(); }
 
-struct Demo {
-  std::unique_ptr<ts::Scene> scene;
-  ts::Options opts;
-  explicit Demo(const std::vector<std::string>& flags) : scene(ts::makeScene("mipmap_popping")) {
-    if (!scene) throw std::runtime_error("mipmap_popping is not registered");
-    scene->addOptions(opts);
-    opts.parse(flags);
-  }
-  ts::Image render(int w, int h, ts::Frame* frameOut = nullptr) {
-    ts::Context& ctx = ts::test::context();
-    if (ctx.width() != w || ctx.height() != h) ctx.resize(w, h);
-    ts::Frame f = scene->build(w, h);
-    ts::Image img = ts::test::renderer().render(f, false);
-    if (frameOut) *frameOut = std::move(f);
-    return img;
-  }
-  ts::Measurements measure() { return scene->measure(ts::test::renderer()); }
-};
-
-double value(const ts::Measurements& m, const std::string& name) {
-  for (const auto& x : m)
-    if (x.name == name) return x.value;
-  ADD_FAILURE() << "no measurement named " << name << " in\n" << ts::formatMeasurements(m);
-  return std::nan("");
-}
+using ts::test::Demo;
+using ts::test::value;
 
 // The default state's measurement, shared by the tests that read it (on
 // softpipe one measure() takes seconds).
 const ts::Measurements& defaultMeasurement() {
-  static ts::Measurements m = Demo({}).measure();
+  static ts::Measurements m = Demo("mipmap_popping", {}).measure();
   return m;
 }
 
@@ -182,7 +160,8 @@ TEST(MipmapPopping, LinearLightAveragesAreBrighter) {
   };
   double lin = (dec(32) + dec(224)) / 2;
   double want = 255 * (1.055 * std::pow(lin, 1 / 2.4) - 0.055);
-  Demo srgb({"--texture", "checker"}), linear({"--texture", "checker", "--linear-light"});
+  Demo srgb("mipmap_popping", {"--texture", "checker"});
+  Demo linear("mipmap_popping", {"--texture", "checker", "--linear-light"});
   std::vector<ts::Image> a = ts::buildMipChain(*sweep::texture({kNearestMipNearest, 16, 0, 1, false}).image, false);
   std::vector<ts::Image> b = ts::buildMipChain(*sweep::texture({kNearestMipNearest, 16, 0, 1, true}).image, true);
   EXPECT_EQ(a.back().at(0, 0).r, 128);
@@ -552,8 +531,8 @@ TEST(MipmapPopping, GLSLReferenceAgreesWithTheDownsampledRender) {
 // coloured half of every frame is one level's colour — the level of that
 // frame's LOD; in the bottom row (trilinear) it is the blend frac(LOD).
 TEST(MipmapPopping, FilmstripFramesShowTheirLevels) {
-  Demo demo({"--view", "filmstrip", "--filter", "nearest-mipmap-nearest", "--distance-log2", "2.625", "--levels",
-             "split"});
+  Demo demo("mipmap_popping", {"--view", "filmstrip", "--filter", "nearest-mipmap-nearest", "--distance-log2", "2.625",
+                               "--levels", "split"});
   ts::Frame f;
   ts::Image img = demo.render(1024, 400, &f);
   int frames = 0;
@@ -580,7 +559,7 @@ TEST(MipmapPopping, FilmstripFramesShowTheirLevels) {
 // Claim (the plot figure): the curves are the measured sweep, one point per
 // distance for R, G and B, for the current filter (top) and trilinear.
 TEST(MipmapPopping, PlotDrawsTheMeasuredSweep) {
-  Demo demo({"--view", "plot"});
+  Demo demo("mipmap_popping", {"--view", "plot"});
   demo.measure();
   ts::Frame f = demo.scene->build(1024, 640);
   int series = 0;
@@ -598,13 +577,13 @@ TEST(MipmapPopping, PlotDrawsTheMeasuredSweep) {
 // Claim: the three figures are registered under Section VI.1.3 and their
 // flags parse.
 TEST(MipmapPopping, FiguresAreRegistered) {
-  Demo demo({});
+  Demo demo("mipmap_popping", {});
   std::map<std::string, ts::FigureSpec> byId;
   for (const auto& s : demo.scene->figures()) byId[s.id] = s;
   for (const char* id : {"mip_popping_filmstrip", "mip_popping_plot", "mip_anisotropic"}) {
     ASSERT_TRUE(byId.count(id)) << id;
     EXPECT_EQ(byId[id].bookNumber, "Section VI.1.3");
-    Demo d(byId[id].flags);  // throws on a bad flag
+    Demo d("mipmap_popping", byId[id].flags);  // throws on a bad flag
   }
 }
 
@@ -616,7 +595,7 @@ TEST(MipmapPopping, BadFlagValuesAreOneLineErrors) {
                                                      {"--levels", "rainbow"},    {"--view", "side"}};
   for (const auto& flags : bad) {
     try {
-      Demo d(flags);
+      Demo d("mipmap_popping", flags);
       ADD_FAILURE() << flags[0] << " " << flags[1] << " was accepted";
     } catch (const ts::Error& e) {
       EXPECT_EQ(e.exit_code, ts::kExitUsage);
@@ -635,14 +614,14 @@ TEST(MipmapPopping, AnimationIsFrameCountedAfterAPause) {
     ts::Frame f = s.build(320, 200);
     return f.panel("plane")->projection;
   };
-  Demo still({}), moving({"--animate"});
+  Demo still("mipmap_popping", {}), moving("mipmap_popping", {"--animate"});
   glm::mat4 p0 = planeProjection(*still.scene);
   for (int k = 0; k < 30; ++k) moving.scene->update(1.0);  // a second per frame: wall time does not matter
   EXPECT_EQ(planeProjection(*moving.scene), p0);
   for (int k = 0; k < 10; ++k) moving.scene->update(0.001);
   glm::mat4 p40 = planeProjection(*moving.scene);
   EXPECT_NE(p40, p0);
-  Demo again({"--animate"});
+  Demo again("mipmap_popping", {"--animate"});
   for (int k = 0; k < 40; ++k) again.scene->update(0.5);
   EXPECT_EQ(planeProjection(*again.scene), p40);
   // Turning it off returns to the chosen distance.

@@ -27,6 +27,7 @@
 #include "common/textures.hpp"
 #include "demos/perspective_correction/perspective_map.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/scene_test.hpp"
 
 namespace {
 constexpr int kTexels = persp::kTexels, kChecks = persp::kChecks;
@@ -38,31 +39,8 @@ constexpr int kW = 1024, kH = 380;  // the book figure's size
 
 int tol() { return ts::probe::tolerance(8); }
 
-struct Demo {
-  std::unique_ptr<ts::Scene> scene;
-  ts::Options opts;
-  explicit Demo(const std::vector<std::string>& flags) : scene(ts::makeScene("perspective_correction")) {
-    if (!scene) throw std::runtime_error("perspective_correction is not registered");
-    scene->addOptions(opts);
-    opts.parse(flags);
-  }
-  ts::Image render(int w, int h, ts::Frame* frameOut = nullptr, bool labels = false) {
-    ts::Context& ctx = ts::test::context();
-    if (ctx.width() != w || ctx.height() != h) ctx.resize(w, h);
-    ts::Frame f = scene->build(w, h);
-    ts::Image img = ts::test::renderer().render(f, labels);
-    if (frameOut) *frameOut = std::move(f);
-    return img;
-  }
-  ts::Measurements measure() { return scene->measure(ts::test::renderer()); }
-};
-
-double value(const ts::Measurements& m, const std::string& name) {
-  for (const auto& x : m)
-    if (x.name == name) return x.value;
-  ADD_FAILURE() << "no measurement named " << name << " in\n" << ts::formatMeasurements(m);
-  return std::nan("");
-}
+using ts::test::Demo;
+using ts::test::value;
 
 const ts::Panel& panelOf(const ts::Frame& f, const std::string& id) {
   const ts::Panel* p = f.panel(id);
@@ -121,7 +99,7 @@ BookView renderBook(double tilt, double distance) {
   char t[32], d[32];
   std::snprintf(t, sizeof t, "%g", tilt);
   std::snprintf(d, sizeof d, "%g", distance);
-  Demo demo({"--view", "both", "--filter", "nearest", "--tilt", t, "--distance", d});
+  Demo demo("perspective_correction", {"--view", "both", "--filter", "nearest", "--tilt", t, "--distance", d});
   BookView b;
   b.image = demo.render(kW, kH, &b.frame);
   b.setup = {tilt, distance};
@@ -160,7 +138,7 @@ TEST(VI2, BookViewIsTheTwoVariantsOfOneSquare) {
     EXPECT_NEAR(a.batches[0].vertices[k].pos.y, ndc.y, 1e-5);
     EXPECT_EQ(a.batches[0].vertices[k].tex, p.batches[0].vertices[k].tex);
   }
-  Demo affineOnly({"--view", "affine"});
+  Demo affineOnly("perspective_correction", {"--view", "affine"});
   EXPECT_EQ(affineOnly.scene->build(800, 480).perspectiveHint, GLenum(GL_FASTEST)) << "the book's 'without' call";
 }
 
@@ -249,7 +227,7 @@ TEST(VI2, ImagesDifferWhenTheDistanceRatioIsLarge) {
 // texel (within one texel of 2048), and (d1, d2) are the square's nearest
 // and farthest distances (checked here by brute force over the square).
 TEST(VI2, MeasuredErrorMatchesTheAnalyticError) {
-  Demo demo({"--tilt", "60", "--distance", "1.5"});
+  Demo demo("perspective_correction", {"--tilt", "60", "--distance", "1.5"});
   ts::Measurements m = demo.measure();
   persp::Setup s{60, 1.5};
   double d1 = 1e9, d2 = 0;
@@ -273,7 +251,7 @@ TEST(VI2, MeasuredErrorMatchesTheAnalyticError) {
 // (d2 - d1)/d1 = 0.37), and grows with tilt and with (d2 - d1)/d1; from
 // (d2 - d1)/d1 >= 1 it exceeds two checks.
 TEST(VI2, SweepFollowsTheRuleOfThumb) {
-  Demo demo({"--distance", "1.5"});
+  Demo demo("perspective_correction", {"--distance", "1.5"});
   ts::Measurements m = demo.measure();
   double lastRatio = -1, lastError = -1;
   for (int tilt = 0; tilt <= 80; tilt += 10) {
@@ -298,7 +276,8 @@ TEST(VI2, SweepFollowsTheRuleOfThumb) {
 // way (hint_fastest_error_texels: GL's own projection) is within the index
 // texture's quantisation of zero.
 TEST(VI2, SmallRatioGivesSmallErrorNegativeControl) {
-  Demo book({"--tilt", "60", "--distance", "1.5"}), far({"--tilt", "20", "--distance", "16"});
+  Demo book("perspective_correction", {"--tilt", "60", "--distance", "1.5"});
+  Demo far("perspective_correction", {"--tilt", "20", "--distance", "16"});
   ts::Measurements mb = book.measure(), mf = far.measure();
   EXPECT_LE(value(mf, "d_ratio"), 0.05);
   EXPECT_LT(value(mf, "affine_error_texels"), 0.1 * value(mb, "affine_error_texels"));
@@ -310,7 +289,7 @@ TEST(VI2, SmallRatioGivesSmallErrorNegativeControl) {
 // both and comparing, and says so in the figure.  Mesa (llvmpipe and
 // softpipe) ignores it (PLATFORM.md): 0 pixels differ.
 TEST(VI2, HintDetectionIsReportedOnScreen) {
-  Demo demo({"--tilt", "60", "--distance", "1.5"});
+  Demo demo("perspective_correction", {"--tilt", "60", "--distance", "1.5"});
   ts::Measurements m = demo.measure();
   const double differ = value(m, "hint_pixels_differing");
   EXPECT_EQ(value(m, "hint_honoured"), differ > 0 ? 1.0 : 0.0);
@@ -329,7 +308,7 @@ TEST(VI2, HintDetectionIsReportedOnScreen) {
 // it: one cross per tilt, centred on ((d2 - d1)/d1, error), in the cross
 // colour, on the analytic curve, with the rule-of-thumb line at 1.
 TEST(VI2, PlotShowsTheMeasuredSweep) {
-  Demo demo({"--view", "plot", "--distance", "1.5", "--tilt", "60"});
+  Demo demo("perspective_correction", {"--view", "plot", "--distance", "1.5", "--tilt", "60"});
   ts::Measurements m = demo.measure();
   ts::Frame f;
   ts::Image img = demo.render(1024, 560, &f);

@@ -37,6 +37,7 @@
 #include "common/textures.hpp"
 #include "demos/sphere_projections/sphere_map.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/scene_test.hpp"
 
 namespace {
 using spheremap::kBands;
@@ -44,31 +45,8 @@ using spheremap::Mapping;
 constexpr double kPi = spheremap::kPi;
 constexpr double kMeshTol = 0.003, kRenderTol = 0.01;
 
-struct Demo {
-  std::unique_ptr<ts::Scene> scene;
-  ts::Options opts;
-  explicit Demo(const std::vector<std::string>& flags) : scene(ts::makeScene("sphere_projections")) {
-    if (!scene) throw std::runtime_error("sphere_projections is not registered");
-    scene->addOptions(opts);
-    opts.parse(flags);
-  }
-  ts::Image render(int w, int h, ts::Frame* frameOut = nullptr) {
-    ts::Context& ctx = ts::test::context();
-    if (ctx.width() != w || ctx.height() != h) ctx.resize(w, h);
-    ts::Frame f = scene->build(w, h);
-    ts::Image img = ts::test::renderer().render(f, false);
-    if (frameOut) *frameOut = std::move(f);
-    return img;
-  }
-  ts::Measurements measure() { return scene->measure(ts::test::renderer()); }
-};
-
-double value(const ts::Measurements& m, const std::string& name) {
-  for (const auto& x : m)
-    if (x.name == name) return x.value;
-  ADD_FAILURE() << "no measurement named " << name << " in\n" << ts::formatMeasurements(m);
-  return std::nan("");
-}
+using ts::test::Demo;
+using ts::test::value;
 std::string key(Mapping m) { return m == Mapping::Latitude ? "vi2" : "vi3"; }
 std::string bandName(int b) {
   char buf[32];
@@ -82,7 +60,7 @@ std::vector<double> column(const ts::Measurements& m, Mapping map, const std::st
 }
 // The default state (both mappings, 5-degree cells), measured once.
 const ts::Measurements& defaultMeasurements() {
-  static const ts::Measurements m = Demo({}).measure();
+  static const ts::Measurements m = Demo("sphere_projections", {}).measure();
   return m;
 }
 
@@ -270,7 +248,7 @@ TEST(VI5, BothPinchAtThePoles) {
 // Claim: the measurement is of the mapping, not of the picture: another tilt
 // and rotation measure the same; one mapping alone measures only itself.
 TEST(VI5, MeasurementIgnoresTheViewAndNamesItsMapping) {
-  ts::Measurements m = Demo({"--mapping", "vi2", "--tilt", "-50", "--rotation", "95"}).measure();
+  ts::Measurements m = Demo("sphere_projections", {"--mapping", "vi2", "--tilt", "-50", "--rotation", "95"}).measure();
   std::vector<double> a = column(m, Mapping::Latitude, "render"), b = column(defaultMeasurements(), Mapping::Latitude, "render");
   for (int k = 0; k < kBands; ++k) EXPECT_EQ(a[size_t(k)], b[size_t(k)]) << bandName(k);
   for (const auto& x : m) EXPECT_EQ(x.name.find("vi3"), std::string::npos) << x.name;
@@ -319,7 +297,7 @@ ProbeResult probeSphere(const ts::Image& img, const ts::Panel& p, Mapping m) {
 }
 
 TEST(VI5, SpheresShowTheirMappings) {
-  Demo demo({"--view", "spheres", "--mapping", "both"});
+  Demo demo("sphere_projections", {"--view", "spheres", "--mapping", "both"});
   ts::Frame f;
   ts::Image img = demo.render(1024, 512, &f);
   const ts::Panel* left = f.panel("sphere_vi2");
@@ -345,7 +323,7 @@ TEST(VI5, SpheresShowTheirMappings) {
 // The plot: the bars and dots sit at the measured values (frame data and
 // pixels), VI.2 orange, VI.3 blue.
 TEST(VI5, PlotShowsTheMeasuredRatios) {
-  Demo demo({"--view", "plot"});
+  Demo demo("sphere_projections", {"--view", "plot"});
   ts::Measurements m = demo.measure();
   ts::Frame f;
   ts::Image img = demo.render(1024, 512, &f);
@@ -372,7 +350,7 @@ TEST(VI5, PlotShowsTheMeasuredRatios) {
     }
   }
   // Negative control: where VI.2's polar dot is, the VI.3-only plot shows no orange.
-  Demo only3({"--view", "plot", "--mapping", "vi3"});
+  Demo only3("sphere_projections", {"--view", "plot", "--mapping", "vi3"});
   only3.measure();
   ts::Frame g;
   ts::Image img3 = only3.render(1024, 512, &g);

@@ -33,33 +33,14 @@
 #include "common/textures.hpp"
 #include "demos/torus/torus_map.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/scene_test.hpp"
 
 namespace {
 using torusmap::Mapping;
 constexpr int kN = 2048;
 
-struct Demo {
-  std::unique_ptr<ts::Scene> scene;
-  ts::Options opts;
-  explicit Demo(const std::vector<std::string>& flags) : scene(ts::makeScene("torus")) {
-    if (!scene) throw std::runtime_error("torus is not registered");
-    scene->addOptions(opts);
-    opts.parse(flags);
-  }
-  ts::Frame frame(int w, int h) {
-    ts::Context& ctx = ts::test::context();
-    if (ctx.width() != w || ctx.height() != h) ctx.resize(w, h);
-    return scene->build(w, h);
-  }
-  ts::Measurements measure() { return scene->measure(ts::test::renderer()); }
-};
-
-double value(const ts::Measurements& m, const std::string& name) {
-  for (const auto& x : m)
-    if (x.name == name) return x.value;
-  ADD_FAILURE() << "no measurement named " << name << " in\n" << ts::formatMeasurements(m);
-  return std::nan("");
-}
+using ts::test::Demo;
+using ts::test::value;
 const ts::Panel& panelOf(const ts::Frame& f, const std::string& id) {
   const ts::Panel* p = f.panel(id);
   if (!p) throw std::runtime_error("frame has no panel " + id);
@@ -141,7 +122,7 @@ TEST(Torus, TheAnswerAndTheMeshAgree) {
 // projected answer, and the torus point under it is within 0.02 of the
 // answer and about 2R from the other mapping's answer.
 TEST(Torus, MeasuredCentreIsTheExercisesAnswer) {
-  Demo demo({"--view", "compare"});
+  Demo demo("torus", {"--view", "compare"});
   ts::Measurements m = demo.measure();
   for (const char* n : {"book", "front"}) {
     SCOPED_TRACE(n);
@@ -172,7 +153,7 @@ TEST(Torus, DisplayedCentreIsWhereTheAnswerProjects) {
   for (Mapping m : {Mapping::Book, Mapping::Front}) {
     const char* n = m == Mapping::Book ? "book" : "front";
     SCOPED_TRACE(n);
-    Demo demo({"--mapping", n});
+    Demo demo("torus", {"--mapping", n});
     ts::Frame f = demo.frame(1024, 512);
     const ts::Panel& p = panelOf(f, std::string("torus_") + n);
     ts::Image img = renderTexelIndex(f);
@@ -193,7 +174,7 @@ TEST(Torus, DisplayedCentreIsWhereTheAnswerProjects) {
 // is hidden behind the front of the ring, and the demo says so instead of
 // reporting a point; the front one is still found.
 TEST(Torus, NegativeControlHiddenCentreIsNotFound) {
-  Demo demo({"--view", "compare", "--tilt", "0"});
+  Demo demo("torus", {"--view", "compare", "--tilt", "0"});
   ts::Measurements m = demo.measure();
   EXPECT_EQ(value(m, "centre_visible[book]"), 0.0);
   EXPECT_EQ(value(m, "centre_distance_to_answer[book]"), -1.0);
@@ -211,7 +192,7 @@ TEST(Torus, BookCentreShowsOnceTheSightLineClearsTheRing) {
   EXPECT_GT(35.0, edge + 10);
   for (double tilt : {edge - 2, edge + 2}) {
     SCOPED_TRACE(tilt);
-    Demo demo({"--tilt", std::to_string(tilt)});
+    Demo demo("torus", {"--tilt", std::to_string(tilt)});
     ts::Measurements m = demo.measure();
     if (tilt < edge) {
       EXPECT_EQ(value(m, "centre_visible[book]"), 0.0);
@@ -225,7 +206,7 @@ TEST(Torus, BookCentreShowsOnceTheSightLineClearsTheRing) {
 // Claim: the answer follows R and r: with R = 2, r = 0.5 the book's centre
 // is at (0, 0, -1.5) and the exercise's at (0, 0, 2.5), both found there.
 TEST(Torus, AnswerFollowsTheRadii) {
-  Demo demo({"--view", "compare", "--radii", "2,0.5"});
+  Demo demo("torus", {"--view", "compare", "--radii", "2,0.5"});
   ts::Measurements m = demo.measure();
   EXPECT_NEAR(value(m, "centre_3d_z[book]"), -1.5, 0.03);
   EXPECT_NEAR(value(m, "centre_3d_z[front]"), 2.5, 0.03);
@@ -240,7 +221,7 @@ TEST(Torus, MarkerSitsOnTheAnswer) {
   const ts::Rgba red{242, 26, 51, 255};  // kMarker (0.95, 0.1, 0.2)
   for (const char* n : {"book", "front"}) {
     SCOPED_TRACE(n);
-    Demo on({"--mapping", n}), off({"--mapping", n, "--marker=off"});
+    Demo on("torus", {"--mapping", n}), off("torus", {"--mapping", n, "--marker=off"});
     ts::Frame fa = on.frame(1024, 512);
     ts::Image a = ts::test::renderer().render(fa, false);
     ts::Frame fb = off.frame(1024, 512);

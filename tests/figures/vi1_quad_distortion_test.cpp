@@ -30,6 +30,7 @@
 #include "common/textures.hpp"
 #include "demos/quad_distortion/quad_map.hpp"
 #include "tests/support/gl_test.hpp"
+#include "tests/support/scene_test.hpp"
 
 namespace {
 using quadmap::Corners;
@@ -58,34 +59,8 @@ Map projectiveMap(const Corners& st) {
   return [H](glm::dvec2 p) { return quadmap::projective(H, p); };
 }
 
-// The demo in one state: a scene bound to options parsed from `flags`.
-struct Demo {
-  std::unique_ptr<ts::Scene> scene;
-  ts::Options opts;
-  explicit Demo(const std::vector<std::string>& flags) : scene(ts::makeScene("quad_distortion")) {
-    if (!scene) throw std::runtime_error("quad_distortion is not registered");
-    scene->addOptions(opts);
-    opts.parse(flags);
-  }
-  // The frame at w x h and its render without labels (as renderScene does:
-  // resize the shared context, build, render).
-  ts::Image render(int w, int h, ts::Frame* frameOut = nullptr) {
-    ts::Context& ctx = ts::test::context();
-    if (ctx.width() != w || ctx.height() != h) ctx.resize(w, h);
-    ts::Frame f = scene->build(w, h);
-    ts::Image img = ts::test::renderer().render(f, false);
-    if (frameOut) *frameOut = std::move(f);
-    return img;
-  }
-  ts::Measurements measure() { return scene->measure(ts::test::renderer()); }
-};
-
-double value(const ts::Measurements& m, const std::string& name) {
-  for (const auto& x : m)
-    if (x.name == name) return x.value;
-  ADD_FAILURE() << "no measurement named " << name << " in\n" << ts::formatMeasurements(m);
-  return std::nan("");
-}
+using ts::test::Demo;
+using ts::test::value;
 
 glm::dvec2 panelPoint(const ts::Rect& vp, int x, int y) {
   return {(x + 0.5 - vp.x) / vp.w, 1.0 - (y + 0.5 - vp.y) / vp.h};
@@ -127,7 +102,7 @@ const ts::Panel& panelOf(const ts::Frame& f, const std::string& id) {
 // Renders the book view (1024x512, the demo's default size) in one state and
 // probes its screen-space panel against `map`.
 ts::probe::Result checkScreenSpace(const std::vector<std::string>& flags, const Map& map) {
-  Demo demo(flags);
+  Demo demo("quad_distortion", flags);
   ts::Frame f;
   ts::Image img = demo.render(1024, 512, &f);
   const ts::Rect vp = panelOf(f, "screen_space").viewport;
@@ -140,7 +115,7 @@ ts::probe::Result checkScreenSpace(const std::vector<std::string>& flags, const 
 // Claim (precondition of every probe below): the demo maps the 256-texel,
 // 8-check checkerboard on both panels, and --filter sets its filters.
 TEST(VI1, MapsThe256TexelCheckerboard) {
-  Demo demo({"--filter", "nearest"});
+  Demo demo("quad_distortion", {"--filter", "nearest"});
   ts::Frame f;
   demo.render(1024, 512, &f);
   for (const char* id : {"texture_space", "screen_space"}) {
@@ -155,7 +130,7 @@ TEST(VI1, MapsThe256TexelCheckerboard) {
     EXPECT_EQ(p.viewport.w, p.viewport.h);
     EXPECT_GT(p.viewport.w, 300);
   }
-  Demo linear({"--filter", "linear"});
+  Demo linear("quad_distortion", {"--filter", "linear"});
   ts::Frame g = linear.scene->build(1024, 512);
   EXPECT_EQ(g.textures.at(0).magFilter, GLenum(GL_LINEAR));
 }
@@ -211,7 +186,7 @@ TEST(VI1, ProjectiveMatchesTheHomography) {
 // variants left to right: tl-br triangles, bl-tr triangles, bilinear,
 // projective, each matching its own analytic map.
 TEST(VI1, CompareViewShowsTheFourMaps) {
-  Demo demo({"--view", "compare", "--filter", "nearest"});
+  Demo demo("quad_distortion", {"--view", "compare", "--filter", "nearest"});
   ts::Frame f;
   ts::Image img = demo.render(1280, 420, &f);
   const Map maps[4] = {affineMap(kBook, Diagonal::TopLeftBottomRight), affineMap(kBook, Diagonal::BottomLeftTopRight),
@@ -233,7 +208,8 @@ TEST(VI1, CompareViewShowsTheFourMaps) {
 // the bilinear map fails against the affine render, and the two renders
 // differ in about as many pixels as their analytic maps' colours do.
 TEST(VI1, DiagonalChoiceChangesThePictureNegativeControl) {
-  Demo tlbr({"--diagonal", "tl-br", "--filter", "nearest"}), bltr({"--diagonal", "bl-tr", "--filter", "nearest"});
+  Demo tlbr("quad_distortion", {"--diagonal", "tl-br", "--filter", "nearest"});
+  Demo bltr("quad_distortion", {"--diagonal", "bl-tr", "--filter", "nearest"});
   ts::Frame f;
   ts::Image a = tlbr.render(1024, 512, &f), b = bltr.render(1024, 512);
   const ts::Rect vp = panelOf(f, "screen_space").viewport;
@@ -271,7 +247,7 @@ TEST(VI1, DiagonalChoiceChangesThePictureNegativeControl) {
 // prediction; bilinear and projective have no kink (< 0.5 deg); every
 // variant took the texel the analytic map says, within one texel of 2048.
 TEST(VI1, MeasuredKinkMatchesThePrediction) {
-  Demo demo({"--view", "compare"});
+  Demo demo("quad_distortion", {"--view", "compare"});
   ts::Measurements m = demo.measure();
   const double tlbr = deg(std::atan(1.0 / 3.0)), bltr = deg(std::atan(0.25));
   EXPECT_NEAR(value(m, "kink_predicted_deg[affine_tl_br]"), tlbr, 1e-9);
@@ -293,7 +269,7 @@ TEST(VI1, MeasuredKinkMatchesThePrediction) {
 // Claim: the book view measures only the variant it shows, with the same
 // numbers as the compare view.
 TEST(VI1, BookViewMeasuresItsOwnVariant) {
-  Demo demo({"--diagonal", "bl-tr"});
+  Demo demo("quad_distortion", {"--diagonal", "bl-tr"});
   ts::Measurements m = demo.measure();
   EXPECT_NEAR(value(m, "kink_deg[affine_bl_tr]"), deg(std::atan(0.25)), 0.2);
   for (const auto& x : m) EXPECT_EQ(x.name.find("tl_br"), std::string::npos) << x.name;
@@ -308,7 +284,7 @@ TEST(VI1, ParallelogramCornersHaveNoKink) {
       {"0,0 0.75,0.25 1,1 0.25,0.75", {glm::dvec2(0, 0), glm::dvec2(0.75, 0.25), glm::dvec2(1, 1), glm::dvec2(0.25, 0.75)}}};
   for (const auto& [text, st] : cases) {
     SCOPED_TRACE(text);
-    Demo demo({"--view", "compare", "--corners", text});
+    Demo demo("quad_distortion", {"--view", "compare", "--corners", text});
     ts::Measurements m = demo.measure();
     for (const char* v : {"affine_tl_br", "affine_bl_tr", "bilinear", "projective"}) {
       EXPECT_LT(value(m, std::string("kink_deg[") + v + "]"), 0.2) << v;
@@ -317,8 +293,8 @@ TEST(VI1, ParallelogramCornersHaveNoKink) {
     }
     EXPECT_NEAR(value(m, "split_disagreement_texels"), 0.0, 1e-6);
 
-    Demo a({"--corners", text, "--diagonal", "tl-br", "--filter", "nearest"});
-    Demo b({"--corners", text, "--diagonal", "bl-tr", "--filter", "nearest"});
+    Demo a("quad_distortion", {"--corners", text, "--diagonal", "tl-br", "--filter", "nearest"});
+    Demo b("quad_distortion", {"--corners", text, "--diagonal", "bl-tr", "--filter", "nearest"});
     ts::Frame f;
     ts::Image ia = a.render(1024, 512, &f), ib = b.render(1024, 512);
     const ts::Rect vp = panelOf(f, "screen_space").viewport;
@@ -345,7 +321,7 @@ TEST(VI1, TextureSpacePanelShowsTheTextureAndTheRegion) {
   for (Diagonal d : {Diagonal::TopLeftBottomRight, Diagonal::BottomLeftTopRight}) {
     const bool tlbr = d == Diagonal::TopLeftBottomRight;
     SCOPED_TRACE(tlbr ? "tl-br" : "bl-tr");
-    Demo demo({"--diagonal", tlbr ? "tl-br" : "bl-tr", "--filter", "nearest"});
+    Demo demo("quad_distortion", {"--diagonal", tlbr ? "tl-br" : "bl-tr", "--filter", "nearest"});
     ts::Frame f;
     ts::Image img = demo.render(1024, 512, &f);
     const ts::Panel& p = panelOf(f, "texture_space");
@@ -405,7 +381,7 @@ TEST(VI1, TextureFileIsMappedUpright) {
   const char* tmp = std::getenv("TMPDIR");
   std::string path = std::string(tmp && *tmp ? tmp : "/tmp") + "/vi1_texture_test_" + std::to_string(::getpid()) + ".png";
   ts::writePng(path, pic);
-  Demo demo({"--texture", path, "--corners", "0,0 1,0 1,1 0,1", "--filter", "nearest"});
+  Demo demo("quad_distortion", {"--texture", path, "--corners", "0,0 1,0 1,1 0,1", "--filter", "nearest"});
   std::remove(path.c_str());
   ts::Frame f;
   ts::Image img = demo.render(1024, 512, &f);
@@ -428,7 +404,7 @@ TEST(VI1, TextureFileIsMappedUpright) {
 // frame rebuilt from the same state, give identical pixels and identical
 // PNG bytes.
 TEST(VI1, RenderingIsDeterministic) {
-  Demo demo({"--view", "compare", "--edges"});
+  Demo demo("quad_distortion", {"--view", "compare", "--edges"});
   ts::Frame f;
   ts::Image a = demo.render(1280, 420, &f);
   ts::Image b = ts::test::renderer().render(f, true);
@@ -453,7 +429,7 @@ TEST(VI1, CheckerLinesBendByThePredictedAngle) {
   for (Diagonal d : {Diagonal::TopLeftBottomRight, Diagonal::BottomLeftTopRight}) {
     const bool tlbr = d == Diagonal::TopLeftBottomRight;
     SCOPED_TRACE(tlbr ? "tl-br" : "bl-tr");
-    Demo demo({"--diagonal", tlbr ? "tl-br" : "bl-tr", "--filter", "nearest"});
+    Demo demo("quad_distortion", {"--diagonal", tlbr ? "tl-br" : "bl-tr", "--filter", "nearest"});
     ts::Frame f;
     ts::Image img = demo.render(1024, 512, &f);
     const ts::Rect vp = panelOf(f, "screen_space").viewport;

@@ -24,11 +24,17 @@ struct Demo {
     scene->addOptions(opts);
     opts.parse(flags);
   }
-  Measurements measure() { return scene->measure(renderer()); }
+  // The same on a test program's own renderer (and so on its context)
+  // instead of the shared renderer(): for a program whose context needs what
+  // gl_test.hpp's lacks, e.g. an accumulation buffer.  `r` must outlive this.
+  Demo(const std::string& id, const std::vector<std::string>& flags, Renderer& r) : Demo(id, flags) {
+    own_ = &r;
+  }
+  Measurements measure() { return scene->measure(drawWith()); }
   // The frame at w x h; the test context is resized to it first, as a
   // --png render of that size would be.
   Frame frame(int w, int h) {
-    Context& ctx = context();
+    Context& ctx = own_ ? own_->context() : context();
     if (ctx.width() != w || ctx.height() != h) ctx.resize(w, h);
     return scene->build(w, h);
   }
@@ -36,10 +42,14 @@ struct Demo {
   // what the tests are about).
   Image render(int w, int h, Frame* frameOut = nullptr, bool labels = false) {
     Frame f = frame(w, h);
-    Image img = renderer().render(f, labels);
+    Image img = drawWith().render(f, labels);
     if (frameOut) *frameOut = std::move(f);
     return img;
   }
+
+ private:
+  Renderer* own_ = nullptr;  // null: the shared renderer()
+  Renderer& drawWith() { return own_ ? *own_ : renderer(); }
 };
 
 // The value of the measurement `name`; a test failure (and NaN) when absent.
