@@ -320,6 +320,61 @@ TEST(Gl, NonPowerOfTwoTextureIsSampledExactly) {
   }
 }
 
+// The path for a context without non-power-of-two textures, taken on real GL
+// (TS_GL_NO_NPOT=1): the 37x23 texture is resized bilinearly to 64x32, the
+// renderer says so on stderr, and drawn 1:1 with GL_NEAREST every pixel is
+// the resized texel its centre falls in — a stated filter, not a silent one.
+TEST(Gl, WithoutNpotTheTextureIsResizedAndSaysSo) {
+  ts::TextureDesc tex = ts::fileTexture(kCorpus + "/good_rgba8_37x23.png");
+  tex.params.push_back({"case", "no-npot"});  // a key of its own: not the cached direct upload
+  tex.minFilter = tex.magFilter = GL_NEAREST;
+  const int W = tex.image->width, H = tex.image->height;
+  ts::Image resized = ts::resizeBilinear(*tex.image, 64, 32);  // texture rows: row 0 = t = 0
+  setenv("TS_GL_NO_NPOT", "1", 1);
+  testing::internal::CaptureStderr();
+  ts::Image got;
+  try {
+    got = ts::test::renderer().render(fullScreenQuad(W, H, tex), false);
+  } catch (...) {
+    testing::internal::GetCapturedStderr();
+    unsetenv("TS_GL_NO_NPOT");
+    throw;
+  }
+  std::string err = testing::internal::GetCapturedStderr();
+  unsetenv("TS_GL_NO_NPOT");
+  EXPECT_NE(err.find("resized bilinearly to 64x32"), std::string::npos) << "stderr: " << err;
+  int wrong = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      // Output row y (top) is t = (H - y - 0.5) / H; the texel row under it.
+      // A centre exactly on a texel boundary (x = 18, y = 11 here) may take
+      // either texel: any legal one is accepted.
+      double sx = (x + 0.5) * 64 / W, sy = (H - y - 0.5) * 32 / H;
+      ts::Rgba a = got.at(x, y);
+      a.a = 255;
+      bool ok = false;
+      for (int tx : {int(sx), int(std::ceil(sx)) - 1})
+        for (int ty : {int(sy), int(std::ceil(sy)) - 1}) {
+          if (tx < 0 || ty < 0) continue;
+          ts::Rgba b = resized.at(tx, ty);
+          b.a = 255;
+          ok = ok || a == b;
+        }
+      wrong += !ok;
+    }
+  EXPECT_EQ(wrong, 0);
+  // And it is not the direct upload: the 37x23 texels themselves differ somewhere.
+  ts::Image direct = *tex.image;
+  int same = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      ts::Rgba a = got.at(x, y), b = direct.at(x, H - 1 - y);
+      a.a = b.a = 255;
+      same += a == b;
+    }
+  EXPECT_LT(same, W * H);
+}
+
 TEST(Gl, ShaderCompileErrorNamesFileAndLine) {
   ts::TextureDesc t = ts::checkerboard(8, 2);
   ts::Frame f = fullScreenQuad(16, 16, t);
