@@ -2,9 +2,9 @@
 # The test command (CI runs exactly this): set up, build, run every test on
 # llvmpipe through OSMesa, then the GL tests again on Mesa's second rasterizer
 # (softpipe) and on the EGL surfaceless backend; then the whole suite again
-# built with AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/; not
-# the Xvfb window tests: GLX's libraries leak from code LeakSanitizer cannot
-# name once they are unloaded, and a window under ASan takes minutes), and
+# built with AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/; the
+# Xvfb window tests in a second step with leak checking off: GLX's libraries
+# leak from code LeakSanitizer cannot name once they are unloaded), and
 # each libFuzzer target for TS_FUZZ_SECONDS (default 60) seconds
 # (build-fuzz/).  TS_SKIP_SANITIZERS=1 skips the last two (a quick local
 # run).  Extra arguments go to ctest.
@@ -23,6 +23,8 @@ if [ "${TS_SKIP_SANITIZERS:-0}" != 1 ]; then
   cmake --preset asan >/dev/null
   cmake --build --preset asan
   ctest --preset asan "$@"
+  echo "== the window tests under ASan + UBSan (leak checking off) =="
+  ctest --preset asan-window "$@"
   echo "== fuzzing: each target for ${TS_FUZZ_SECONDS:-60} s (build-fuzz) =="
   bash fuzz/run.sh "${TS_FUZZ_SECONDS:-60}"
 fi

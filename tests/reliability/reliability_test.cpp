@@ -19,6 +19,8 @@
 #include <unistd.h>
 
 #include <dirent.h>
+
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <map>
