@@ -2,7 +2,8 @@
 // its own GL passes (three textures per draw, float probe targets), shared by
 // the demo, its tests and its benchmark.
 //
-// One fragment shader draws every mode.  Each fragment builds its view ray
+// One fragment shader source draws every mode (compiled once per mode, see
+// below).  Each fragment builds its view ray
 // from the camera (no geometry: the relief plane is analytic, as in
 // demos/jitter), finds where it enters the top of the relief, and runs
 // parallax occlusion mapping: a linear march of 12..40 steps (more the more
@@ -377,10 +378,6 @@ class ReliefGL {
     }
     textures_.clear();
     freeTarget();
-    if (liveFbo_) glDeleteFramebuffers(1, &liveFbo_);
-    if (liveTex_) glDeleteTextures(1, &liveTex_);
-    liveFbo_ = liveTex_ = 0;
-    lw_ = lh_ = 0;
   }
 
   const ReliefTextures& textures(const Relief& rel) {
@@ -426,34 +423,11 @@ class ReliefGL {
   }
   // The live view: `left` over the whole camera, or with right >= 0 `left` on
   // the left half and `right` on the right half (split-screen compare: one
-  // frame's work, each pixel drawn once), into an RGBA8 texture of the
-  // camera's size (GL_NEAREST; valid until the next call).  The previous
+  // frame's work, each pixel drawn once), into the passes' own RGBA8 target
+  // texture (GL_NEAREST), returned; valid until the next draw.  The previous
   // framebuffer is bound again on return.
   GLuint drawLive(const Camera& cam, const Relief& rel, int left, int right, const PassOptions& o) {
-    if (!ts::gl::p_glGenFramebuffers) throw ts::Error("the parallax passes need framebuffer objects (GL 3.0)", ts::kExitFailure);
-    GLint prevFbo = 0, prevDraw = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prevFbo);
-    glGetIntegerv(GL_DRAW_BUFFER, &prevDraw);
-    if (cam.width != lw_ || cam.height != lh_) {
-      if (liveFbo_) glDeleteFramebuffers(1, &liveFbo_);
-      if (liveTex_) glDeleteTextures(1, &liveTex_);
-      glGenTextures(1, &liveTex_);
-      glBindTexture(GL_TEXTURE_2D, liveTex_);
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, cam.width, cam.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-      glGenFramebuffers(1, &liveFbo_);
-      glBindFramebuffer(GL_FRAMEBUFFER, liveFbo_);
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, liveTex_, 0);
-      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw ts::Error("live parallax framebuffer " + std::to_string(cam.width) + "x" + std::to_string(cam.height) +
-                        " is incomplete", ts::kExitFailure);
-      lw_ = cam.width, lh_ = cam.height;
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, liveFbo_);
-    glDrawBuffer(GL_COLOR_ATTACHMENT0);
-    glViewport(0, 0, cam.width, cam.height);
+    bindTarget(cam.width, cam.height, false);
     if (right < 0) {
       glDisable(GL_SCISSOR_TEST);
       pass(cam, rel, left, o);
@@ -465,10 +439,8 @@ class ReliefGL {
       pass(cam, rel, right, o);
       glDisable(GL_SCISSOR_TEST);
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(prevFbo));
-    glDrawBuffer(GLenum(prevDraw));
-    ts::gl::check("drawing the live parallax view");
-    return liveTex_;
+    restore();
+    return tex_;
   }
 
  private:
@@ -582,12 +554,17 @@ class ReliefGL {
     }
     if (w != tw_ || h != th_ || floatTarget != tfloat_) {
       freeTarget();
+      // A texture, not a renderbuffer: the live view shows it as it is.
+      glGenTextures(1, &tex_);
+      glBindTexture(GL_TEXTURE_2D, tex_);
+      glTexImage2D(GL_TEXTURE_2D, 0, floatTarget ? GL_RGBA32F : GL_RGBA8, w, h, 0, GL_RGBA,
+                   floatTarget ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
       glGenFramebuffers(1, &fbo_);
-      glGenRenderbuffers(1, &rb_);
-      glBindRenderbuffer(GL_RENDERBUFFER, rb_);
-      glRenderbufferStorage(GL_RENDERBUFFER, floatTarget ? GL_RGBA32F : GL_RGBA8, w, h);
       glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb_);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex_, 0);
       if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw ts::Error("parallax framebuffer " + std::to_string(w) + "x" + std::to_string(h) + " is incomplete",
                         ts::kExitFailure);
@@ -606,8 +583,8 @@ class ReliefGL {
   }
   void freeTarget() {
     if (fbo_) glDeleteFramebuffers(1, &fbo_);
-    if (rb_) glDeleteRenderbuffers(1, &rb_);
-    fbo_ = rb_ = 0;
+    if (tex_) glDeleteTextures(1, &tex_);
+    fbo_ = tex_ = 0;
     tw_ = th_ = 0;
   }
   std::vector<float> probePass(int w, int h, glm::dvec4 a, glm::dvec4 b, const Relief* rel, bool accel) {
@@ -643,8 +620,8 @@ class ReliefGL {
 
   ts::Renderer& r_;
   std::vector<ReliefTextures> textures_;
-  GLuint fbo_ = 0, rb_ = 0, liveFbo_ = 0, liveTex_ = 0;
-  int tw_ = 0, th_ = 0, lw_ = 0, lh_ = 0;
+  GLuint fbo_ = 0, tex_ = 0;
+  int tw_ = 0, th_ = 0;
   bool tfloat_ = false, saved_ = false;
   GLint prevFbo_ = 0, prevDraw_ = 0, prevRead_ = 0;
 };
