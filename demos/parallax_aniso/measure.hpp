@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/probe.hpp"
 #include "parallax_gl.hpp"
 #include "relief.hpp"
 
@@ -29,6 +30,13 @@ struct Table {
   std::vector<uint8_t> anisoMask, bandMask;
   size_t anisoPixels = 0, bandPixels = 0;
   std::vector<Row> rows;  // modes 0..5
+  // Does the hardware filter use the gradients textureGrad hands it?  Pixels
+  // of M1 and of M2 that change when those gradients are 4 times longer
+  // (PassOptions::gradScale); -1 = not measured.  Trilinear filtering must
+  // change (a coarser level); 0 for M2 means the driver's anisotropic filter
+  // took its footprint and level from elsewhere (on llvmpipe: the implicit
+  // derivatives of the shifted coordinate, M0's artifact).
+  long gradChangeM1 = -1, gradChangeM2 = -1;
 };
 
 struct MeasureOptions {
@@ -80,6 +88,14 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
     r.ms = o.timingRuns > 0 ? gl.timeMs(cam, rel, mode, o.timingRuns, po) : 0.0;
     t.rows.push_back(std::move(r));
   }
+  for (const Row& r : t.rows)
+    if (r.mode == kTrilinear || (r.mode == kAniso16 && ReliefGL::anisotropySupported())) {
+      PassOptions po;
+      po.accel = o.accel;
+      po.gradScale = 4;
+      long changed = ts::probe::countDiffering(r.image, gl.render(cam, rel, r.mode, po), 0);
+      (r.mode == kTrilinear ? t.gradChangeM1 : t.gradChangeM2) = changed;
+    }
   return t;
 }
 
@@ -89,11 +105,13 @@ inline std::string fmtNum(const char* f, double v) {
   return b;
 }
 
+inline std::string optCount(long n) { return n >= 0 ? std::to_string(n) : std::string(); }
+
 inline std::string csv(const Table& t) {
   std::string s =
       "mode,label,psnr_all,ssim_all,psnr_aniso,ssim_aniso,psnr_band,ssim_band,ms_per_frame,lookups_per_pixel,"
       "excluded_per_pixel,width,height,map,elevation_deg,height_scale,reference_rays,seed,aniso_pixels,band_pixels,"
-      "renderer\n";
+      "m1_grad_x4_changed_px,m2_grad_x4_changed_px,renderer\n";
   for (const Row& r : t.rows) {
     s += std::string(kModeKeys[r.mode]) + "," + kModeLabels[r.mode] + "," + fmtNum("%.3f", r.psnrAll) + "," +
          fmtNum("%.4f", r.ssimAll) + "," + fmtNum("%.3f", r.psnrAniso) + "," + fmtNum("%.4f", r.ssimAniso) + "," +
@@ -102,8 +120,20 @@ inline std::string csv(const Table& t) {
          std::to_string(t.cam.width) + "," + std::to_string(t.cam.height) + "," + t.map + "," +
          fmtNum("%.1f", t.cam.elevationDeg) + "," + fmtNum("%.3f", t.cam.heightScale) + "," +
          std::to_string(t.refRays) + "x" + std::to_string(t.refRays) + "," + std::to_string(t.seed) + "," +
-         std::to_string(t.anisoPixels) + "," + std::to_string(t.bandPixels) + ",\"" + t.renderer + "\"\n";
+         std::to_string(t.anisoPixels) + "," + std::to_string(t.bandPixels) + "," +
+         optCount(t.gradChangeM1) + "," + optCount(t.gradChangeM2) + ",\"" + t.renderer +
+         "\"\n";
   }
+  return s;
+}
+
+// What the gradient test says (Table::gradChangeM1/M2).
+inline std::string gradientFinding(const Table& t) {
+  if (t.gradChangeM1 < 0 || t.gradChangeM2 < 0) return "gradients x4: not measured";
+  std::string s = "gradients x4 change " + std::to_string(t.gradChangeM1) + " px of M1 and " +
+                  std::to_string(t.gradChangeM2) + " px of M2";
+  if (t.gradChangeM1 > 0 && t.gradChangeM2 == 0)
+    s += " -- this driver's anisotropic filter ignores the gradients textureGrad gives it";
   return s;
 }
 
@@ -122,6 +152,7 @@ inline std::string textTable(const Table& t) {
                   r.lookupsPerPixel, r.excludedPerPixel);
     s += line;
   }
+  s += gradientFinding(t) + "\n";
   return s;
 }
 }  // namespace pax

@@ -225,6 +225,12 @@ class ParallaxAniso final : public ts::Scene {
       m.push_back({k + "_lookups", row.lookupsPerPixel, "texture lookups per pixel"});
     }
     m.push_back({"band_pixels", double(table_->bandPixels), "pixels in the occlusion band"});
+    if (table_->gradChangeM1 >= 0 && table_->gradChangeM2 >= 0) {
+      m.push_back({"m1_grad_x4_changed_px", double(table_->gradChangeM1),
+                   "pixels of M1 that change when textureGrad's gradients are x4 (trilinear must change)"});
+      m.push_back({"m2_grad_x4_changed_px", double(table_->gradChangeM2),
+                   "pixels of M2 that change when textureGrad's gradients are x4 (0: the driver ignores them)"});
+    }
     return m;
   }
 

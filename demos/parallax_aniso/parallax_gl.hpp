@@ -88,6 +88,7 @@ uniform vec3 eye, fwd, rightV, upV;
 uniform vec2 viewport;        // the pass's size in pixels
 uniform vec4 relief;          // (1 / tile, heightScale / tile, texture size, number of levels - 1)
 uniform vec2 pomSteps;        // (fewest, most) linear steps
+uniform float gradScale;      // M1/M2: scale of the gradients given to the albedo lookup (1; see PassOptions)
 // accel stays a uniform: compiled in, it let LLVM round the ellipse's row
 // ends differently in the two programs, and the images with and without the
 // bound must match byte for byte.
@@ -332,7 +333,7 @@ void main() {
     col = texture(albedo, uvS).rgb;
   } else if (mode == 1 || mode == 2) {
     FETCH;
-    col = textureGrad(albedo, uvS, gx, gy).rgb;
+    col = textureGrad(albedo, uvS, gx * gradScale, gy * gradScale).rgb;
   } else {
     col = ewa(uvS, gx, gy, Vp, mode - 3);
   }
@@ -361,6 +362,10 @@ struct PassOptions {
   // Texels read as lookups at their centres instead of texelFetch: -1 = only
   // on softpipe (whose texelFetch misbehaves in divergent loops), 0/1 = force.
   int centreLookups = -1;
+  // M1/M2 only: the gradients handed to the albedo's textureGrad are scaled
+  // by this.  A filter that uses them must change its answer at x4 (the
+  // trilinear one does); one that does not, does not (Table::gradientTest).
+  float gradScale = 1;
 };
 
 inline bool isSoftpipe() { return ts::gl::rendererString().find("softpipe") != std::string::npos; }
@@ -460,6 +465,7 @@ class ReliefGL {
     glUniform4f(glGetUniformLocation(prog, "relief"), float(1.0 / cam.tile), float(cam.heightScale / cam.tile),
                 float(kTexSize), float(t.levels - 1));
     glUniform2f(glGetUniformLocation(prog, "pomSteps"), o.minSteps, o.maxSteps);
+    glUniform1f(glGetUniformLocation(prog, "gradScale"), o.gradScale);
     glUniform1i(glGetUniformLocation(prog, "accel"), o.accel ? 1 : 0);
     quad();
     glUseProgram(0);

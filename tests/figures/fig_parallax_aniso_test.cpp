@@ -316,6 +316,40 @@ TEST(Frames, ShaderEwaMatchesTheReferenceOnAFlatMap) {
   EXPECT_GE(p, 30.0) << "the shader EWA should reproduce the reference's kernel where nothing is hidden";
 }
 
+// Does the hardware filter use the gradients textureGrad gives it?  The
+// table answers by rendering M1 and M2 with the gradients x4.  Trilinear
+// filtering must answer yes (a coarser level: GL's lambda is log2 of the
+// gradients' length), so the switch demonstrably reaches the lookup; for M2
+// whatever the driver does is the answer, but it must be consistent: a
+// filter that ignores the gradients at x4 ignores them at x1/4 too, and one
+// that uses them changes at both.  (llvmpipe in Mesa 22.3 ignores them: its
+// anisotropic footprint and level come from the coordinate's own quad
+// differences.)
+TEST(Frames, GradientTestSeesWhetherTheFilterUsesTheGradients) {
+  ts::test::context();
+  TS_REQUIRE_GL_VERSION(30);
+  if (!ReliefGL::anisotropySupported()) GTEST_SKIP() << "no anisotropic filtering";
+  const Relief& bricks = relief("bricks");
+  Camera cam = glCamera();
+  MeasureOptions o;
+  o.refRays = 2;
+  o.timingRuns = 0;
+  Table t = measureAll(gl(), cam, bricks, o, {kTrilinear, kAniso16});
+  std::printf("%s\n", gradientFinding(t).c_str());
+  const long pixels = long(cam.width) * cam.height;
+  EXPECT_GT(t.gradChangeM1, pixels / 2) << "trilinear filtering must see 4x longer gradients";
+  ASSERT_GE(t.gradChangeM2, 0);
+  PassOptions quarter;
+  quarter.gradScale = 0.25f;
+  long m2Quarter = ts::probe::countDiffering(t.rows[1].image, gl().render(cam, bricks, kAniso16, quarter), 0);
+  std::printf("M2 with the gradients x1/4: %ld px change\n", m2Quarter);
+  if (t.gradChangeM2 == 0)
+    EXPECT_EQ(m2Quarter, 0) << "the filter ignored 4x gradients but not 1/4x ones";
+  else
+    EXPECT_GT(m2Quarter, 0) << "the filter used 4x gradients but not 1/4x ones";
+  EXPECT_NE(gradientFinding(t).find(std::to_string(t.gradChangeM2) + " px of M2"), std::string::npos);
+}
+
 // ------------------------------------------------------------- the table
 TEST(Table, RegeneratedWithinBounds) {
   ts::test::context();
@@ -360,6 +394,9 @@ TEST(Table, RegeneratedWithinBounds) {
   EXPECT_GT(m4.psnrAll, m3.psnrAll + 1.0);
   EXPECT_GT(m4.psnrAniso, m3.psnrAniso + 1.0);
   EXPECT_NEAR(m5.psnrAll, m4.psnrAll, 0.5);
+  // The gradient test ran (its consistency is checked above).
+  EXPECT_GT(t.gradChangeM1, 0);
+  EXPECT_GE(t.gradChangeM2, 0);
   // The CSV carries every row and the renderer.
   std::string c = csv(t);
   EXPECT_NE(c.find(t.renderer), std::string::npos);
