@@ -10,7 +10,9 @@
 // map, or a flat map) is seen at a grazing angle through parallax occlusion
 // mapping (parallax_gl.hpp) and filtered six ways:
 //   M0 naive (implicit derivatives of the shifted coordinate: the artifact),
-//   M1 trilinear and M2 hardware anisotropic 16x (the unshifted gradients),
+//   M1 trilinear and M2 hardware anisotropic 16x (textureGrad with the
+//   unshifted gradients; whether the driver's anisotropic filter uses them is
+//   measured: llvmpipe's does not),
 //   M3 EWA in the shader (Heckbert), M4 EWA without hidden texels (every
 //   texel traced), M5 the seed's row walk,
 // and compared with R, a reference of n x n (--rays; the figures 12 x 12) stratified jittered rays per

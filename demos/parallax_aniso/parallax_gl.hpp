@@ -16,7 +16,13 @@
 //                coordinate, which jump at every occluding edge
 //   M1 trilinear textureGrad with the unshifted gradients, anisotropy 1
 //   M2 aniso16   the same with GL_TEXTURE_MAX_ANISOTROPY 16 (the hardware's
-//                anisotropic filter; on llvmpipe an EWA on one level)
+//                anisotropic filter; on llvmpipe an EWA on one level, whose
+//                footprint and level come from the coordinate's own quad
+//                differences, not from the gradients given: rendered with
+//                them x4, M2 does not change by a pixel on llvmpipe, M1
+//                and softpipe's M2 change almost everywhere (gradScale,
+//                Table::gradChangeM2).  So there M2 filters the footprint
+//                M0's lookup sees, the shifted coordinate's, with 16 probes.)
 //   M3 ewa       Heckbert's EWA in the shader: the ellipse of the unshifted
 //                gradients around uvS, unit reconstruction term, Gaussian
 //                weights, texelFetch row by row (only texels inside the
@@ -72,15 +78,16 @@ struct Variant {
   int mode = 0;          // 0..5, or -1 for the probe program
   bool count = false;    // write lookups / excluded texels instead of the colour
   bool parallax = true;  // false: no march, the flat top (the benchmark's floor)
+  bool unshiftedLookup = false;  // the march runs, the albedo is read at the unshifted coordinate (benchmark)
   bool centreLookups = false;
   std::string key() const {
     return "parallax_aniso_m" + std::to_string(mode) + (count ? "_count" : "") + (parallax ? "" : "_flat") +
-           (centreLookups ? "_centre" : "");
+           (unshiftedLookup ? "_unshifted" : "") + (centreLookups ? "_centre" : "");
   }
 };
 inline std::string fragmentShader(const Variant& v) {
   return "#version 130\n#define MODE " + std::to_string(v.mode) + "\n#define COUNT " + (v.count ? "1" : "0") + "\n#define PARALLAX " + (v.parallax ? "1" : "0") +
-         "\n#define CENTRE_LOOKUPS " + (v.centreLookups ? "1" : "0") + R"(
+         "\n#define UNSHIFTED_LOOKUP " + (v.unshiftedLookup ? "1" : "0") + "\n#define CENTRE_LOOKUPS " + (v.centreLookups ? "1" : "0") + R"(
 uniform sampler2D albedo;     // RGBA8, mipmapped (the 2x2 averages)
 uniform sampler2D heightTex;  // R = height, mipmapped (2x2 averages)
 uniform sampler2D heightMax;  // R = the max-height pyramid
@@ -326,7 +333,13 @@ void main() {
 #else
   float depth = 0.0;
 #endif
+#if UNSHIFTED_LOOKUP
+  // Benchmark only: what the filters cost where the lookup coordinate is
+  // smooth (no jumps at occluding edges); the depth is kept alive below.
+  vec2 uvS = uv0;
+#else
   vec2 uvS = uv0 + Vp * depth;
+#endif
   vec3 col;
   if (mode == 0) {
     FETCH;
@@ -337,6 +350,9 @@ void main() {
   } else {
     col = ewa(uvS, gx, gy, Vp, mode - 3);
   }
+#if UNSHIFTED_LOOKUP
+  col += depth * 1e-6;
+#endif
   if (countMode != 0)
     gl_FragColor = vec4(float(fetches % 256), float((fetches / 256) % 256), float(excluded % 256),
                         float((excluded / 256) % 256)) / 255.0;
@@ -358,6 +374,10 @@ struct PassOptions {
   bool count = false;  // write lookups / excluded texels instead of the colour
   bool accel = true;   // max-height pyramid skip in the visibility trace
   bool parallax = true;  // false: no parallax march (what the rest of a mode costs; benchmark only)
+  // The march runs but the albedo is read at the unshifted coordinate: what
+  // the jumps of the shifted coordinate at occluding edges cost a filter
+  // that takes its footprint from the coordinate (benchmark only).
+  bool unshiftedLookup = false;
   float minSteps = 12, maxSteps = 40;
   // Texels read as lookups at their centres instead of texelFetch: -1 = only
   // on softpipe (whose texelFetch misbehaves in divergent loops), 0/1 = force.
@@ -456,6 +476,7 @@ class ReliefGL {
     v.mode = mode;
     v.count = o.count;
     v.parallax = o.parallax;
+    v.unshiftedLookup = o.unshiftedLookup;
     v.centreLookups = o.centreLookups < 0 ? isSoftpipe() : o.centreLookups != 0;
     GLuint prog = program(v);
     glUseProgram(prog);
