@@ -2,6 +2,7 @@
 // the reference: the table the demo prints and writes as CSV, the tests
 // regenerate and bound, and the figure shows.
 #pragma once
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -99,7 +100,10 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
   return t;
 }
 
+// printf of one number; a measure that does not exist (PSNR over an empty
+// mask) is NaN and prints as nothing, an empty CSV cell.
 inline std::string fmtNum(const char* f, double v) {
+  if (std::isnan(v)) return std::string();
   char b[64];
   std::snprintf(b, sizeof b, f, v);
   return b;

@@ -295,8 +295,9 @@ class ParallaxAniso final : public ts::Scene {
   std::string numbers(int mode) const {
     if (mode == kReference) return std::to_string(table_->refRays) + "x" + std::to_string(table_->refRays) + " rays, CPU";
     const Row& r = table_->rows[size_t(mode)];
-    return fmtNum("%.1f", r.psnrAll) + " dB  band " + fmtNum("%.1f", r.psnrBand) + " dB  " +
-           fmtNum("%.0f", r.lookupsPerPixel) + " lk/px";
+    // A map with no occluding edge (flat) has an empty band: no number to show.
+    std::string band = table_->bandPixels ? "band " + fmtNum("%.1f", r.psnrBand) + " dB" : std::string("no band");
+    return fmtNum("%.1f", r.psnrAll) + " dB  " + band + "  " + fmtNum("%.0f", r.lookupsPerPixel) + " lk/px";
   }
   std::string header() const {
     return std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) + " deg, height " +
@@ -415,10 +416,16 @@ class ParallaxAniso final : public ts::Scene {
     f.panels.push_back(canvas);
   }
 
+  // The panels of the modes and error views: shrunk to fit, or enlarged by a
+  // whole factor when two or more fit (each rendered pixel stays a block of
+  // equal pixels: small --res renders stay readable and comparable).
+  static double panelScale(double fit) { return fit >= 2.0 ? std::floor(fit) : std::min(1.0, fit); }
+
   void buildModes(ts::Frame& f) {
     const int line = 17, gap = 12, cols = 4;
     const int W = table_->cam.width, H = table_->cam.height;
-    double s = std::min({1.0, double(f.width - (cols + 1) * gap) / (cols * W), double(f.height - 2 * line - 2 * (3 * line + 6)) / (2 * H)});
+    double s = panelScale(std::min(double(f.width - (cols + 1) * gap) / (cols * W),
+                                   double(f.height - 2 * line - 2 * (3 * line + 6)) / (2 * H)));
     int w = std::max(1, int(W * s)), h = std::max(1, int(H * s));
     int left = std::max(0, (f.width - cols * w - (cols - 1) * gap) / 2);
     f.labels.push_back({float(f.width / 2), 4.0f, header(), kWhite, 1, ts::Align::Center});
@@ -438,8 +445,9 @@ class ParallaxAniso final : public ts::Scene {
     for (int m = 0; m < kShaderModes; ++m) {
       const Row& r = table_->rows[size_t(m)];
       f.labels.push_back({float(x), float(y + (m + 2) * line),
-                          std::string("M") + std::to_string(m) + "    " + fmtNum("%6.2f", r.psnrBand) + "  " +
-                              fmtNum("%6.4f", r.ssimBand),
+                          std::string("M") + std::to_string(m) + "    " +
+                              (table_->bandPixels ? fmtNum("%6.2f", r.psnrBand) + "  " + fmtNum("%6.4f", r.ssimBand)
+                                                  : std::string("     -       -")),
                           m >= kEwa ? kAmber : kWhite, 1, ts::Align::Left});
     }
     // (Milliseconds are in the CSV, not here: the figure must regenerate byte-identically.)
@@ -450,7 +458,7 @@ class ParallaxAniso final : public ts::Scene {
   void buildError(ts::Frame& f) {
     const int line = 17, gap = 12;
     const int W = table_->cam.width, H = table_->cam.height;
-    double s = std::min({1.0, double(f.width - 5 * gap) / (4 * W), double(f.height - 5 * line) / H});
+    double s = panelScale(std::min(double(f.width - 5 * gap) / (4 * W), double(f.height - 5 * line) / H));
     int w = std::max(1, int(W * s)), h = std::max(1, int(H * s));
     int left = std::max(0, (f.width - 4 * w - 3 * gap) / 2);
     f.labels.push_back({float(f.width / 2), 4.0f, header(), kWhite, 1, ts::Align::Center});

@@ -403,6 +403,43 @@ TEST(Table, RegeneratedWithinBounds) {
   EXPECT_EQ(std::count(c.begin(), c.end(), '\n'), kShaderModes + 1);
 }
 
+// The flat map has no occluding edge, so no occlusion band: its PSNR/SSIM do
+// not exist and the CSV leaves the cells empty (not "nan", which spreadsheet
+// and CSV readers take differently).
+TEST(Table, AnEmptyBandLeavesItsCellsEmpty) {
+  ts::test::context();
+  TS_REQUIRE_GL_VERSION(30);
+  MeasureOptions o;
+  o.refRays = 2;
+  o.timingRuns = 0;
+  Camera cam = glCamera();
+  cam.width /= 2;
+  cam.height /= 2;
+  Table t = measureAll(gl(), cam, relief("flat"), o, {kTrilinear});
+  EXPECT_EQ(t.bandPixels, 0u);
+  ASSERT_EQ(t.rows.size(), 1u);
+  EXPECT_TRUE(std::isnan(t.rows[0].psnrBand));
+  std::string c = csv(t);
+  EXPECT_EQ(c.find("nan"), std::string::npos) << c;
+  // Columns 6 and 7 of the data row (psnr_band, ssim_band) are empty; the header names them.
+  auto cells = [](const std::string& line) {
+    std::vector<std::string> v(1);
+    for (char ch : line) {
+      if (ch == ',') v.emplace_back();
+      else v.back().push_back(ch);
+    }
+    return v;
+  };
+  size_t nl = c.find('\n');
+  std::vector<std::string> head = cells(c.substr(0, nl)), row = cells(c.substr(nl + 1, c.find('\n', nl + 1) - nl - 1));
+  ASSERT_GT(row.size(), 7u);
+  EXPECT_EQ(head[6], "psnr_band");
+  EXPECT_EQ(head[7], "ssim_band");
+  EXPECT_EQ(row[6], "");
+  EXPECT_EQ(row[7], "");
+  EXPECT_NE(row[2], "") << "the whole-frame PSNR exists";
+}
+
 // ------------------------------------------------------------- the live view
 // Rows of `a` and `b` in [y0, y1) equal, columns [x0, x1) (both row 0 = top).
 ::testing::AssertionResult sameRows(const ts::Image& a, const ts::Image& b, int y0, int y1, int x0, int x1) {
