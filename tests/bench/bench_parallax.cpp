@@ -72,19 +72,20 @@ void benchMode(benchmark::State& st, int mode, pax::PassOptions o) {  // default
 int main(int argc, char** argv) {
   ts::bench::Args args(argc, argv, {"--benchmark_repetitions=5", "--benchmark_report_aggregates_only=true",
                                     "--benchmark_min_time=0.05"});
-  for (int m = 0; m < pax::kShaderModes; ++m) {
-    std::string name = std::string("parallax/") + pax::kModeKeys[m];
-    benchmark::RegisterBenchmark(name.c_str(), [m](benchmark::State& st) { benchMode(st, m, {}); })
+  // One benchmark: parallax/<mode><suffix>, the pass with options o.
+  auto add = [](int m, const std::string& suffix, pax::PassOptions o) {
+    benchmark::RegisterBenchmark((std::string("parallax/") + pax::kModeKeys[m] + suffix).c_str(),
+                                 [m, o](benchmark::State& st) { benchMode(st, m, o); })
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
-    if (m >= pax::kEwaVis)
-      benchmark::RegisterBenchmark((name + "/no-accel").c_str(), [m](benchmark::State& st) {
-        pax::PassOptions o;
-        o.accel = false;
-        benchMode(st, m, o);
-      })
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
+  };
+  pax::PassOptions noAccel, flat, unshifted;
+  noAccel.accel = false;
+  flat.parallax = false;
+  unshifted.unshiftedLookup = true;
+  for (int m = 0; m < pax::kShaderModes; ++m) {
+    add(m, "", {});
+    if (m >= pax::kEwaVis) add(m, "/no-accel", noAccel);
   }
   // What the modes cost without the parallax march (the flat top, depth 0):
   // the floor the march adds to; for M2 that is llvmpipe's anisotropic filter.
@@ -93,22 +94,8 @@ int main(int argc, char** argv) {
   // occluding edges cost (llvmpipe's anisotropic filter takes its footprint
   // from the coordinate's quad differences, whatever textureGrad is given).
   for (int m : {pax::kTrilinear, pax::kAniso16}) {
-    benchmark::RegisterBenchmark((std::string("parallax/") + pax::kModeKeys[m] + "/no-parallax").c_str(),
-                                 [m](benchmark::State& st) {
-                                   pax::PassOptions o;
-                                   o.parallax = false;
-                                   benchMode(st, m, o);
-                                 })
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime();
-    benchmark::RegisterBenchmark((std::string("parallax/") + pax::kModeKeys[m] + "/unshifted-lookup").c_str(),
-                                 [m](benchmark::State& st) {
-                                   pax::PassOptions o;
-                                   o.unshiftedLookup = true;
-                                   benchMode(st, m, o);
-                                 })
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime();
+    add(m, "/no-parallax", flat);
+    add(m, "/unshifted-lookup", unshifted);
   }
   benchmark::Initialize(args.argc(), args.argv());
   ts::bench::SummaryReporter rep;
