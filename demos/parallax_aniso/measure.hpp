@@ -38,6 +38,7 @@ struct Table {
   // took its footprint and level from elsewhere (on llvmpipe: the implicit
   // derivatives of the shifted coordinate, M0's artifact).
   long gradChangeM1 = -1, gradChangeM2 = -1;
+  float gradScale = 1;  // the gradients M1/M2 were given (MeasureOptions::gradScale)
 };
 
 struct MeasureOptions {
@@ -45,6 +46,7 @@ struct MeasureOptions {
   uint32_t seed = 1;
   int timingRuns = 5;   // 0 = do not time
   bool accel = true;
+  float gradScale = 1;  // the gradients M1 and M2 hand their lookup (PassOptions::gradScale)
 };
 
 inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, const MeasureOptions& o,
@@ -55,6 +57,7 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
   t.renderer = ts::gl::rendererString();
   t.refRays = o.refRays;
   t.seed = o.seed;
+  t.gradScale = o.gradScale;
   auto t0 = std::chrono::steady_clock::now();
   t.reference = renderReference(cam, rel, o.refRays, o.seed);
   t.refSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -69,6 +72,7 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
     r.mode = mode;
     PassOptions po;
     po.accel = o.accel;
+    po.gradScale = o.gradScale;
     r.image = gl.render(cam, rel, mode, po);
     r.psnrAll = psnr(r.image, ref, nullptr);
     r.ssimAll = ssim(r.image, ref, nullptr);
@@ -93,7 +97,7 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
     if (r.mode == kTrilinear || (r.mode == kAniso16 && ReliefGL::anisotropySupported())) {
       PassOptions po;
       po.accel = o.accel;
-      po.gradScale = 4;
+      po.gradScale = o.gradScale * 4;
       long changed = ts::probe::countDiffering(r.image, gl.render(cam, rel, r.mode, po), 0);
       (r.mode == kTrilinear ? t.gradChangeM1 : t.gradChangeM2) = changed;
     }
@@ -115,7 +119,7 @@ inline std::string csv(const Table& t) {
   std::string s =
       "mode,label,psnr_all,ssim_all,psnr_aniso,ssim_aniso,psnr_band,ssim_band,ms_per_frame,lookups_per_pixel,"
       "excluded_per_pixel,width,height,map,elevation_deg,height_scale,reference_rays,seed,aniso_pixels,band_pixels,"
-      "m1_grad_x4_changed_px,m2_grad_x4_changed_px,renderer\n";
+      "m1_m2_gradient_scale,m1_grad_x4_changed_px,m2_grad_x4_changed_px,renderer\n";
   for (const Row& r : t.rows) {
     s += std::string(kModeKeys[r.mode]) + "," + kModeLabels[r.mode] + "," + fmtNum("%.3f", r.psnrAll) + "," +
          fmtNum("%.4f", r.ssimAll) + "," + fmtNum("%.3f", r.psnrAniso) + "," + fmtNum("%.4f", r.ssimAniso) + "," +
@@ -125,7 +129,7 @@ inline std::string csv(const Table& t) {
          fmtNum("%.1f", t.cam.elevationDeg) + "," + fmtNum("%.3f", t.cam.heightScale) + "," +
          std::to_string(t.refRays) + "x" + std::to_string(t.refRays) + "," + std::to_string(t.seed) + "," +
          std::to_string(t.anisoPixels) + "," + std::to_string(t.bandPixels) + "," +
-         optCount(t.gradChangeM1) + "," + optCount(t.gradChangeM2) + ",\"" + t.renderer +
+         fmtNum("%g", t.gradScale) + "," + optCount(t.gradChangeM1) + "," + optCount(t.gradChangeM2) + ",\"" + t.renderer +
          "\"\n";
   }
   return s;
@@ -147,7 +151,8 @@ inline std::string textTable(const Table& t) {
                   fmtNum("%.3f", t.cam.heightScale) + ", reference " + std::to_string(t.refRays) + "x" +
                   std::to_string(t.refRays) + " rays (" + fmtNum("%.1f", t.refSeconds) + " s on the CPU), renderer " +
                   t.renderer + "\n";
-  s += "aniso mask " + std::to_string(t.anisoPixels) + " px, occlusion band " + std::to_string(t.bandPixels) + " px\n";
+  s += "aniso mask " + std::to_string(t.anisoPixels) + " px, occlusion band " + std::to_string(t.bandPixels) + " px" +
+       (t.gradScale != 1 ? ", M1/M2 given their gradients x" + fmtNum("%g", t.gradScale) : std::string()) + "\n";
   s += "mode               PSNR all  SSIM all  PSNR aniso SSIM aniso PSNR band SSIM band   ms/frame  lookups/px excl/px\n";
   for (const Row& r : t.rows) {
     char line[256];

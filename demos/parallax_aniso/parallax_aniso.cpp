@@ -30,6 +30,8 @@
 //   b  the mode compared against  v  view: single | modes | error | live
 //   r / R  render width          x  max-height pyramid acceleration
 //   a  live view: sweep the azimuth
+//   g  gradients M1/M2 give textureGrad: x1 | x4 (does the filter use them?
+//      trilinear blurs; llvmpipe's anisotropic filter does not change)
 // The live view (v until "live", or --view live) draws the mode every frame at
 // the window's size: M2 there is what "interactive" is measured on (the
 // overlay, h, shows live_ms_per_frame and live_fps).
@@ -133,6 +135,10 @@ class ParallaxAniso final : public ts::Scene {
              "time each mode over N frames (median, into the CSV's ms_per_frame); 0 = do not time (the figures use 3)");
     o.addInt("seed", &seed_, 0, 1000000, "seed of the reference's jitter");
     o.addBool("accel", &accel_, "max-height pyramid skip in the visibility trace (same result, fewer lookups)", 'x');
+    o.addEnum("gradients", &gradients_, {"x1", "x4"},
+              "the gradients M1 and M2 give textureGrad: x1 the unshifted coordinate's, x4 four times longer -- "
+              "trilinear M1 turns blurrier; a filter that ignores them (llvmpipe's anisotropic M2) does not change",
+              'g');
     o.addText("csv", &csvPath_, "write the measured table as CSV to FILE", [](const std::string& v) {
       if (!v.empty()) ts::checkWritable(v);
     });
@@ -187,6 +193,7 @@ class ParallaxAniso final : public ts::Scene {
       mo.refRays = rays_;
       mo.seed = uint32_t(seed_);
       mo.accel = accel_;
+      mo.gradScale = gradScale();
       mo.timingRuns = timeRuns_;
       // One table per state for the whole process: make_figures makes a new
       // scene for each figure, and two figures share a state (view differs).
@@ -264,8 +271,8 @@ class ParallaxAniso final : public ts::Scene {
   }
   std::string stateKey() const {
     char b[256];
-    std::snprintf(b, sizeof b, "%d %.4f %.3f %.3f %d %d %d %d %d", map_, heightScale_, angle_, azimuth_, res_, rays_,
-                  seed_, accel_ ? 1 : 0, timeRuns_);
+    std::snprintf(b, sizeof b, "%d %.4f %.3f %.3f %d %d %d %d %d %d", map_, heightScale_, angle_, azimuth_, res_,
+                  rays_, seed_, accel_ ? 1 : 0, timeRuns_, gradients_);
     return b;
   }
   Relief& relief() {
@@ -301,8 +308,11 @@ class ParallaxAniso final : public ts::Scene {
   }
   std::string header() const {
     return std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) + " deg, height " +
-           fmtNum("%.2f", heightScale_) + ", " + table_->renderer;
+           fmtNum("%.2f", heightScale_) + gradientsNote() + ", " + table_->renderer;
   }
+  float gradScale() const { return gradients_ ? 4.0f : 1.0f; }
+  // Said in the picture whenever M1/M2 are not given the true gradients.
+  std::string gradientsNote() const { return gradients_ ? ", M1/M2 gradients x4" : ""; }
 
   void buildSingle(ts::Frame& f) {
     const int line = 17;
@@ -350,6 +360,7 @@ class ParallaxAniso final : public ts::Scene {
     if (left < 0) return m;
     PassOptions o;
     o.accel = accel_;
+    o.gradScale = gradScale();
     auto t0 = std::chrono::steady_clock::now();
     GLuint tex = gl_->drawLive(c, relief(), left, right, o);
     glFinish();
@@ -387,7 +398,7 @@ class ParallaxAniso final : public ts::Scene {
     };
     std::string head = std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) +
                        " deg, azimuth " + fmtNum("%.0f", azimuth_) + " deg, height " + fmtNum("%.2f", heightScale_) +
-                       ", live";
+                       gradientsNote() + ", live";
     if (!live_.glTexture) {
       f.labels.push_back({16.0f, 6.0f, head, kWhite, 1, ts::Align::Left});
       f.labels.push_back({16.0f, 6.0f + line, "R (the reference) is traced on the CPU and is not drawn live: m picks a mode",
@@ -478,6 +489,7 @@ class ParallaxAniso final : public ts::Scene {
   int mode_ = kEwa, map_ = 0, against_ = kEwaVis, view_ = kSingle, res_ = 160, rays_ = 6, seed_ = 1, timeRuns_ = 0;
   float heightScale_ = 0.06f, angle_ = 20.0f, azimuth_ = 12.0f;
   bool compare_ = false, accel_ = true, animate_ = false;
+  int gradients_ = 0;  // 0: x1, 1: x4
   int sweep_ = 1;
   ts::TextureDesc live_;
   glm::ivec2 liveSize_{0}, liveModes_{-1};

@@ -494,6 +494,36 @@ TEST(Live, SplitScreenIsTheTwoModesHalves) {
   EXPECT_TRUE(sameRows(live, right, bar, H - bar, W / 2 + 2, W));
 }
 
+// The g key (--gradients x4) reaches the passes the window shows: in the
+// live split screen M1 | M2 the left half is the M1 pass with its gradients
+// x4 (and so differs from x1), the right half the M2 pass with them x4 --
+// whatever the driver makes of them; the header says the gradients are off.
+TEST(Live, GradientsKeyReachesTheLivePasses) {
+  ts::test::context();
+  TS_REQUIRE_GL_VERSION(30);
+  const int W = ts::test::isSoftpipe() ? 96 : 240, H = W * 3 / 4, bar = 22;
+  ts::test::Demo d("parallax_aniso",
+                   {"--view", "live", "--mode", "trilinear", "--compare", "--against", "aniso16", "--gradients", "x4"});
+  ts::test::context().resize(W, H);
+  d.measure();
+  ts::Frame f;
+  ts::Image live = d.render(W, H, &f);
+  Camera c;  // the demo's defaults
+  c.width = W;
+  c.height = H;
+  PassOptions x4;
+  x4.gradScale = 4;
+  ts::Image m1x4 = gl().render(c, relief("bricks"), kTrilinear, x4), m2x4 = gl().render(c, relief("bricks"), kAniso16, x4);
+  // (The divider, 2 px at W/2, is left out.)
+  EXPECT_TRUE(sameRows(live, m1x4, bar, H - bar, 0, W / 2 - 2));
+  EXPECT_TRUE(sameRows(live, m2x4, bar, H - bar, W / 2 + 2, W));
+  EXPECT_FALSE(sameRows(live, gl().render(c, relief("bricks"), kTrilinear), bar, H - bar, 0, W / 2 - 2))
+      << "M1 with its gradients x4 should be blurrier than with x1";
+  bool said = false;
+  for (const auto& l : f.labels) said = said || l.text.find("gradients x4") != std::string::npos;
+  EXPECT_TRUE(said) << "the picture must say its M1/M2 gradients are not the true ones";
+}
+
 TEST(Live, TheReferenceIsNotDrawnLive) {
   ts::test::context();
   ts::test::Demo d("parallax_aniso", {"--view", "live", "--mode", "reference"});
