@@ -4,6 +4,8 @@
 //
 //   parallax/<mode>              M0..M5, one full frame + glFinish
 //   parallax/<mode>/no-accel     M4, M5 without the max-height bound (same image)
+//   parallax/<mode>/plain-trace  M4, M5 with the visibility trace reading every
+//                                sample's texel (same image, more lookups)
 //   parallax/<mode>/no-parallax  M1, M2 without the march (depth 0): what the rest
 //                                of the mode costs; for M2 llvmpipe's anisotropic filter
 //   parallax/<mode>/unshifted-lookup  M1, M2 with the march, the albedo read at
@@ -79,13 +81,15 @@ int main(int argc, char** argv) {
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
   };
-  pax::PassOptions noAccel, flat, unshifted;
+  pax::PassOptions noAccel, flat, unshifted, plain;
   noAccel.accel = false;
+  plain.plainTrace = true;
   flat.parallax = false;
   unshifted.unshiftedLookup = true;
   for (int m = 0; m < pax::kShaderModes; ++m) {
     add(m, "", {});
     if (m >= pax::kEwaVis) add(m, "/no-accel", noAccel);
+    if (m >= pax::kEwaVis) add(m, "/plain-trace", plain);  // the trace reading every sample's texel
   }
   // What the modes cost without the parallax march (the flat top, depth 0):
   // the floor the march adds to; for M2 that is llvmpipe's anisotropic filter.
@@ -103,13 +107,12 @@ int main(int argc, char** argv) {
   std::printf("\nparallax_aniso at 800x600, bricks, 20 degrees, %s\n\n", ts::gl::rendererString().c_str());
   std::printf("| mode | ms/frame (median) | frames/s | x the 50 ms of 20 fps |\n|---|---|---|---|\n");
   for (int m = 0; m < pax::kShaderModes; ++m)
-    for (int a = 1; a >= 0; --a) {
-      if (!a && m < pax::kEwaVis) continue;
-      std::string name = std::string("parallax/") + pax::kModeKeys[m] + (a ? "" : "/no-accel");
-      double ms = rep.ms(name);
+    for (const char* v : {"", "/no-accel", "/plain-trace"}) {
+      double ms = rep.ms(std::string("parallax/") + pax::kModeKeys[m] + v);
       if (std::isnan(ms)) continue;
-      std::printf("| %s%s | %.1f | %.2f | %.2f |\n", pax::kModeLabels[m], a ? "" : " (no max-height bound)", ms,
-                  1000.0 / ms, ms / 50.0);
+      std::printf("| %s%s | %.1f | %.2f | %.2f |\n", pax::kModeLabels[m],
+                  v[0] == 0 ? "" : v[1] == 'n' ? " (no max-height bound)" : " (trace reading every sample)", ms, 1000.0 / ms,
+                  ms / 50.0);
     }
   for (int m : {pax::kTrilinear, pax::kAniso16})
     for (const char* v : {"no-parallax", "unshifted-lookup"}) {
