@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "bench_common.hpp"
 #include "common/context.hpp"
@@ -74,54 +75,49 @@ void benchMode(benchmark::State& st, int mode, pax::PassOptions o) {  // default
 int main(int argc, char** argv) {
   ts::bench::Args args(argc, argv, {"--benchmark_repetitions=5", "--benchmark_report_aggregates_only=true",
                                     "--benchmark_min_time=0.05"});
-  // One benchmark: parallax/<mode><suffix>, the pass with options o.
-  auto add = [](int m, const std::string& suffix, pax::PassOptions o) {
-    benchmark::RegisterBenchmark((std::string("parallax/") + pax::kModeKeys[m] + suffix).c_str(),
-                                 [m, o](benchmark::State& st) { benchMode(st, m, o); })
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime();
+  // Every benchmark is parallax/<mode><suffix>: a mode's pass with options o.
+  struct Variant {
+    const char* suffix;
+    const char* label;  // after the mode's name in the table
+    pax::PassOptions o;
+    bool (*appliesTo)(int mode);
   };
-  pax::PassOptions noAccel, flat, unshifted, plain;
-  noAccel.accel = false;
-  plain.plainTrace = true;
-  flat.parallax = false;
-  unshifted.unshiftedLookup = true;
-  for (int m = 0; m < pax::kShaderModes; ++m) {
-    add(m, "", {});
-    if (m >= pax::kEwaVis) add(m, "/no-accel", noAccel);
-    if (m >= pax::kEwaVis) add(m, "/plain-trace", plain);  // the trace reading every sample's texel
-  }
+  auto every = [](int) { return true; };
+  auto traced = [](int m) { return m >= pax::kEwaVis; };      // M4, M5
+  auto hardware = [](int m) { return m == pax::kTrilinear || m == pax::kAniso16; };
+  std::vector<Variant> variants(5);
+  variants[0] = {"", "", {}, every};
+  variants[1] = {"/no-accel", " (no max-height bound)", {}, traced};
+  variants[1].o.accel = false;
+  variants[2] = {"/plain-trace", " (trace reading every sample)", {}, traced};
+  variants[2].o.plainTrace = true;
   // What the modes cost without the parallax march (the flat top, depth 0):
   // the floor the march adds to; for M2 that is llvmpipe's anisotropic filter.
-  // And with the march but the albedo read at the unshifted coordinate: the
+  variants[3] = {"/no-parallax", " without the parallax march (flat top)", {}, hardware};
+  variants[3].o.parallax = false;
+  // With the march but the albedo read at the unshifted coordinate: the
   // difference to the mode is what the shifted coordinate's jumps at
   // occluding edges cost (llvmpipe's anisotropic filter takes its footprint
   // from the coordinate's quad differences, whatever textureGrad is given).
-  for (int m : {pax::kTrilinear, pax::kAniso16}) {
-    add(m, "/no-parallax", flat);
-    add(m, "/unshifted-lookup", unshifted);
-  }
+  variants[4] = {"/unshifted-lookup", " with the march, albedo read at the unshifted coordinate", {}, hardware};
+  variants[4].o.unshiftedLookup = true;
+  auto name = [](int m, const Variant& v) { return std::string("parallax/") + pax::kModeKeys[m] + v.suffix; };
+  for (int m = 0; m < pax::kShaderModes; ++m)
+    for (const Variant& v : variants)
+      if (v.appliesTo(m))
+        benchmark::RegisterBenchmark(name(m, v).c_str(), [m, o = v.o](benchmark::State& st) { benchMode(st, m, o); })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
   benchmark::Initialize(args.argc(), args.argv());
   ts::bench::SummaryReporter rep;
   benchmark::RunSpecifiedBenchmarks(&rep);
   std::printf("\nparallax_aniso at 800x600, bricks, 20 degrees, %s\n\n", ts::gl::rendererString().c_str());
   std::printf("| mode | ms/frame (median) | frames/s | x the 50 ms of 20 fps |\n|---|---|---|---|\n");
   for (int m = 0; m < pax::kShaderModes; ++m)
-    for (const char* v : {"", "/no-accel", "/plain-trace"}) {
-      double ms = rep.ms(std::string("parallax/") + pax::kModeKeys[m] + v);
-      if (std::isnan(ms)) continue;
-      std::printf("| %s%s | %.1f | %.2f | %.2f |\n", pax::kModeLabels[m],
-                  v[0] == 0 ? "" : v[1] == 'n' ? " (no max-height bound)" : " (trace reading every sample)", ms, 1000.0 / ms,
-                  ms / 50.0);
-    }
-  for (int m : {pax::kTrilinear, pax::kAniso16})
-    for (const char* v : {"no-parallax", "unshifted-lookup"}) {
-      double ms = rep.ms(std::string("parallax/") + pax::kModeKeys[m] + "/" + v);
+    for (const Variant& v : variants) {
+      double ms = v.appliesTo(m) ? rep.ms(name(m, v)) : std::nan("");
       if (!std::isnan(ms))
-        std::printf("| %s %s | %.1f | %.2f | %.2f |\n", pax::kModeLabels[m],
-                    v[0] == 'n' ? "without the parallax march (flat top)"
-                                : "with the march, albedo read at the unshifted coordinate",
-                    ms, 1000.0 / ms, ms / 50.0);
+        std::printf("| %s%s | %.1f | %.2f | %.2f |\n", pax::kModeLabels[m], v.label, ms, 1000.0 / ms, ms / 50.0);
     }
   rig().renderer->release();
   return 0;
