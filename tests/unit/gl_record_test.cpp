@@ -1,0 +1,113 @@
+// tests/unit/gl_record_test.cpp — the GL call recorder (common/gl_record.hpp)
+// on the test context: calls are kept with their arguments as a C programmer
+// reads them, only while a Recording lives, only on its thread.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <thread>
+
+#include "common/gl_record.hpp"
+#include "tests/support/gl_test.hpp"
+
+namespace {
+using ts::gl::Arg;
+using ts::gl::Call;
+
+std::vector<std::string> lines(const std::vector<Call>& calls) {
+  std::vector<std::string> out;
+  for (const Call& c : calls) out.push_back(ts::gl::formatCall(c));
+  return out;
+}
+bool has(const std::vector<std::string>& v, const std::string& line) {
+  return std::find(v.begin(), v.end(), line) != v.end();
+}
+
+// Claim: enum names come from the GL headers, the core name before a vendor's.
+TEST(GlRecord, EnumNamesFromTheHeaders) {
+  EXPECT_STREQ(ts::gl::enumName(GL_LINEAR_MIPMAP_LINEAR), "GL_LINEAR_MIPMAP_LINEAR");
+  EXPECT_STREQ(ts::gl::enumName(GL_CLAMP_TO_EDGE), "GL_CLAMP_TO_EDGE");  // not ..._SGIS
+  EXPECT_STREQ(ts::gl::enumName(GL_MIRRORED_REPEAT), "GL_MIRRORED_REPEAT");  // not ..._ARB
+  unsigned long long v = 0;
+  ASSERT_TRUE(ts::gl::enumValue("GL_PERSPECTIVE_CORRECTION_HINT", &v));
+  EXPECT_EQ(v, unsigned(GL_PERSPECTIVE_CORRECTION_HINT));
+  EXPECT_FALSE(ts::gl::enumValue("GL_NOT_AN_ENUM", &v));
+}
+
+// Claim: a recorded call reads back as the C call that was made, enums by
+// name, arrays by value, texture data by what it is; the real pointers are
+// back when the Recording ends.
+TEST(GlRecord, CallsAsCWithTheirValues) {
+  ts::test::context();
+  auto realBegin = ts::gl::p_glBegin;
+  std::vector<Call> calls;
+  {
+    ts::gl::Recording rec;
+    EXPECT_NE(ts::gl::p_glBegin, realBegin);
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    glBindTexture(GL_TEXTURE_2D, id);
+    unsigned char texels[3 * 2 * 4];
+    for (int k = 0; k < 24; ++k) texels[k] = (unsigned char)(k * 10);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 3, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    const GLfloat m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5f, 0, 0, 1};
+    glLoadMatrixf(m);
+    glBegin(GL_TRIANGLES);
+    glTexCoord4f(0.9f, 1.1f, 0, 1);
+    glVertex3f(-1, 0.25f, 0);
+    glEnd();
+    GLint viewport[4];
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glDeleteTextures(1, &id);
+    calls = rec.take();
+    ASSERT_FALSE(calls.empty());
+    EXPECT_EQ(calls[0].args[1].ints, std::vector<long long>{(long long)(id)});
+  }
+  EXPECT_EQ(ts::gl::p_glBegin, realBegin);
+  std::vector<std::string> l = lines(calls);
+  EXPECT_TRUE(has(l, "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);"));
+  EXPECT_TRUE(has(l, "glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);"));  // a number, not GL_NONE
+  EXPECT_TRUE(has(l, "glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);"));
+  EXPECT_TRUE(has(l, "glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);"));
+  EXPECT_TRUE(has(l, "glBlendFunc(GL_ONE, GL_ZERO);"));
+  EXPECT_TRUE(has(l, "glBegin(GL_TRIANGLES);"));
+  EXPECT_TRUE(has(l, "glTexCoord4f(0.9, 1.1, 0, 1);"));
+  EXPECT_TRUE(has(l, "glVertex3f(-1, 0.25, 0);"));
+  EXPECT_TRUE(has(l, "glLoadMatrixf((const GLfloat[16]){1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5, 0, 0, 1});"));
+  EXPECT_TRUE(has(l, "glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 3, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, "
+                     "NULL /* 3x2 GL_RGBA GL_UNSIGNED_BYTE, 24 bytes */);"));
+  // The pixels themselves are kept (a standalone program can write them out).
+  auto tex = std::find_if(calls.begin(), calls.end(), [](const Call& c) { return std::string(c.name) == "glTexImage2D"; });
+  ASSERT_NE(tex, calls.end());
+  ASSERT_TRUE(tex->args[8].bytes);
+  ASSERT_EQ(tex->args[8].bytes->size(), 24u);
+  EXPECT_EQ((*tex->args[8].bytes)[23], 230);
+  // A query is marked as one.
+  auto get = std::find_if(calls.begin(), calls.end(), [](const Call& c) { return std::string(c.name) == "glGetIntegerv"; });
+  ASSERT_NE(get, calls.end());
+  EXPECT_TRUE(get->query);
+}
+
+// Claim: calls on another thread (a measurement on its own context) are not
+// the picture's, and nothing is kept once the Recording ends.
+TEST(GlRecord, OnlyThisThreadOnlyWhileAlive) {
+  ts::test::context();
+  std::vector<Call> calls;
+  {
+    ts::gl::Recording rec;
+    std::thread other([] { glGetError(); });
+    other.join();
+    glFlush();
+    calls = rec.take();
+  }
+  glFlush();
+  ASSERT_EQ(calls.size(), 1u);
+  EXPECT_STREQ(calls[0].name, "glFlush");
+  EXPECT_FALSE(ts::gl::Recording::active());
+}
+}  // namespace
