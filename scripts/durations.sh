@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# scripts/durations.sh — measures every CTest test's duration and prints the
+# table tests/durations.tsv holds (each test's TIMEOUT is 4x its row): the
+# slowest of the release presets (default, softpipe, egl) and, when build-asan/
+# exists, the ASan + UBSan run (asan, asan-window).  Run it on a quiet machine
+# (nothing else building or testing: `uptime` near 0 before it starts) after
+# adding a test or a demo, and commit the table:
+#   bash scripts/durations.sh > tests/durations.tsv.new && mv tests/durations.tsv.new tests/durations.tsv
+# It reads the builds as they are: build them first (scripts/test.sh does).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+load_before=$(cut -d' ' -f1-3 /proc/loadavg)
+run() {  # run NAME PRESET: one preset's log, "name seconds" per line
+  ctest --preset "$2" >"$T/$1.log" 2>&1 || echo "note: preset $2 had failures (durations still recorded)" >&2
+  sed -n 's/^.*Test *#[0-9]*: \([A-Za-z0-9_]*\) .*Passed *\([0-9.]*\) sec.*$/\1 \2/p' "$T/$1.log" >"$T/$1.txt"
+}
+for p in default softpipe egl; do run "$p" "$p"; done
+asan=0
+if [ -d build-asan ]; then
+  asan=1
+  run asan asan
+  run asan-window asan-window
+fi
+load_after=$(cut -d' ' -f1-3 /proc/loadavg)
+cat <<EOF
+# Each CTest test's measured duration in seconds, from which its TIMEOUT is
+# set (CMakeLists.txt, ts_apply_timeouts): 4x the slowest of the release
+# presets (default, softpipe, egl) for the release build, 4x the ASan + UBSan
+# run for the asan build, at least 120 s.  Written by scripts/durations.sh on
+# $(date -u +%F), load average $load_before before and $load_after after.
+# A test missing here gets 600 s and a note at configure time.
+# test	release_s	asan_s
+EOF
+cat "$T"/default.txt "$T"/softpipe.txt "$T"/egl.txt | sort -k1,1 -k2,2gr | awk '!seen[$1]++' >"$T/release"
+if [ "$asan" = 1 ]; then cat "$T"/asan.txt "$T"/asan-window.txt | sort -k1,1 -k2,2gr | awk '!seen[$1]++' >"$T/asan"
+else : >"$T/asan"; fi
+join -a1 -e - -o 0,1.2,2.2 "$T/release" "$T/asan" | awk '{ printf "%s\t%s\t%s\n", $1, $2, ($3 == "-" ? $2 * 5 : $3) }'
