@@ -62,8 +62,9 @@ for t in "${targets[@]}"; do
        >"$B/fuzz_$t.log" 2>&1; then
     runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$B/fuzz_$t.log")
     cov=$(grep -o 'cov: [0-9]*' "$B/fuzz_$t.log" | tail -1 | cut -d' ' -f2)
-    # 3. Keep what raised coverage (small files only: the corpus stays small).
-    "$bin" -merge=1 -max_len=65536 "$kept" "$work" >"$B/fuzz_$t.merge.log" 2>&1 || true
+    # 3. Keep what raised coverage, cut to 8 KiB, so the committed corpus stays
+    #    small (the large seeds are replayed from where they live anyway).
+    "$bin" -merge=1 -max_len=8192 "$kept" "$work" >"$B/fuzz_$t.merge.log" 2>&1 || true
     after=$(ls "$kept" | wc -l)
     report+="fuzz_$t: ${runs:-?} executions in ${SECONDS_EACH} s ($(( ${runs:-0} / (SECONDS_EACH > 0 ? SECONDS_EACH : 1) )) per s), coverage ${cov:-?} edges, no crash; kept corpus $before -> $after inputs"$'\n'
   else
