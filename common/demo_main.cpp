@@ -36,9 +36,11 @@ std::string formatMeasurements(const Measurements& m) {
   return out;
 }
 
-static int renderPng(Scene& scene, Options& opts, const CommonFlags& f, Backend b, int w, int h) {
-  checkWritable(f.png);
+// --png, --json and --gl-listing: one offscreen render of the state.
+static int renderOffscreen(Scene& scene, Options& opts, const CommonFlags& f, Backend b, int w, int h) {
+  if (!f.png.empty()) checkWritable(f.png);
   if (!f.json.empty()) checkWritable(f.json);
+  if (!f.glListing.empty()) checkWritable(f.glListing);
   ContextOptions co;
   co.width = w;
   co.height = h;
@@ -46,8 +48,10 @@ static int renderPng(Scene& scene, Options& opts, const CommonFlags& f, Backend 
   co.accumBuffer = scene.wantsAccumBuffer();
   auto ctx = createOffscreenContext(b, co);
   Renderer r(*ctx);
-  Rendered out = renderScene(scene, r, w, h);
-  writePng(f.png, out.image);
+  Rendered out = renderScene(scene, r, w, h, !f.glListing.empty());
+  if (!f.png.empty()) writePng(f.png, out.image);
+  if (!f.glListing.empty())
+    writeFileAtomic(f.glListing, glListingFile(out, stateCommand(scene.id(), w, h, opts.stateFlags())));
   if (!f.json.empty()) {
     SidecarInfo info;
     info.demo = scene.id();
@@ -85,10 +89,11 @@ int runDemo(const std::string& id, int argc, char** argv) {
     Backend b = parseBackend(f.backend);
     int w = f.width ? f.width : scene->defaultWidth();
     int h = f.height ? f.height : scene->defaultHeight();
-    if (!f.png.empty()) {
-      if (b == Backend::Window) throw Error("--png renders offscreen: use --backend osmesa, egl or auto");
-      if (!f.screenshot.empty() || f.frames) throw Error("--screenshot and --frames are for the window, not --png");
-      return renderPng(*scene, opts, f, b, w, h);
+    if (!f.png.empty() || !f.glListing.empty()) {
+      if (b == Backend::Window) throw Error("--png and --gl-listing render offscreen: use --backend osmesa, egl or auto");
+      if (!f.screenshot.empty() || f.frames)
+        throw Error("--screenshot and --frames are for the window, not --png or --gl-listing");
+      return renderOffscreen(*scene, opts, f, b, w, h);
     }
     if (!f.json.empty()) throw Error("--json needs --png FILE");
     if (b == Backend::OSMesa || b == Backend::EGL)

@@ -9,17 +9,27 @@
 
 #include "context.hpp"
 #include "error.hpp"
+#include "gl_listing.hpp"
 #include "render.hpp"
 
 namespace ts {
-Rendered renderScene(Scene& scene, Renderer& r, int width, int height) {
+Rendered renderScene(Scene& scene, Renderer& r, int width, int height, bool record) {
   Context& ctx = r.context();
   Rendered out;
   out.measurements = scene.measure(r);  // may resize the target for itself
   if (ctx.width() != width || ctx.height() != height) ctx.resize(width, height);
   out.frame = scene.build(width, height);
+  if (record) out.calls = recordPicture(r, out.frame);  // the same picture, drawn once more
   out.image = r.render(out.frame);
   return out;
+}
+
+std::string glListingFile(const Rendered& got, const std::string& state) {
+  return listingText(listing(got.calls, nullptr, 3),
+                     "The OpenGL calls that draw this picture, recorded as they were made by\n"
+                     "       " + state + " --gl-listing FILE\n"
+                     "   Object names are numbered in order of creation; queries (glGet*) are left out;\n"
+                     "   each glBegin shows its first 3 vertices. Every line is C.");
 }
 
 void checkWritable(const std::string& path) {
@@ -41,6 +51,12 @@ static std::string shellQuote(const std::string& a) {
   std::string q = "'";
   for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
+}
+
+std::string stateCommand(const std::string& demo, int w, int h, const std::vector<std::string>& flags) {
+  std::string c = "build/bin/" + demo + " --size " + std::to_string(w) + "x" + std::to_string(h);
+  for (const auto& f : flags) c += " " + shellQuote(f);
+  return c;
 }
 
 std::string figureCommand(const std::string& demo, const std::string& png, int w, int h,

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "frame.hpp"
+#include "gl_record.hpp"
 #include "image.hpp"
 #include "scene.hpp"
 #include "sidecar.hpp"
@@ -14,9 +15,16 @@ struct Rendered {
   Frame frame;
   Image image;
   Measurements measurements;
+  std::vector<gl::Call> calls;  // the picture's GL calls, when asked for
 };
 // Measures, then draws the figure (without the window overlay) at w x h.
-Rendered renderScene(Scene& scene, Renderer& r, int width, int height);
+// `record`: also keep the GL calls that draw the picture (not the
+// measurement's), for a listing or an exported program.
+Rendered renderScene(Scene& scene, Renderer& r, int width, int height, bool record = false);
+// The --gl-listing file of a rendered state; `state` names it (stateCommand).
+std::string glListingFile(const Rendered& got, const std::string& state);
+// "build/bin/quad_distortion --size 1024x512 --filter nearest": a state.
+std::string stateCommand(const std::string& demo, int w, int h, const std::vector<std::string>& flags);
 // Fails early, with one line naming the path, if `path` cannot be written.
 void checkWritable(const std::string& path);
 // "build/bin/quad_distortion --png book_figures/x.png --size 1024x512 ..."

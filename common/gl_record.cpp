@@ -363,14 +363,23 @@ void swapOut() {
 std::string number(double v, bool isDouble) {
   if (std::isnan(v)) return "NAN";
   if (std::isinf(v)) return v > 0 ? "INFINITY" : "-INFINITY";
+  auto same = [&](const char* text) {
+    return isDouble ? std::strtod(text, nullptr) == v : std::strtof(text, nullptr) == float(v);
+  };
   char buf[64];
   for (int digits = 1; digits <= 17; ++digits) {
     std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    if (isDouble ? std::strtod(buf, nullptr) == v : std::strtof(buf, nullptr) == float(v)) break;
+    if (same(buf)) break;
   }
-  std::string s = buf;
-  // A C reader should see a floating constant: 1 -> 1.0 only where needed is noise; keep "1".
-  return s;
+  // 20 rather than 2e+01: plain decimals where they are as exact.
+  if (std::strchr(buf, 'e') && std::fabs(v) >= 1e-5 && std::fabs(v) < 1e9) {
+    char fixed[64];
+    for (int places = 0; places <= 24; ++places) {
+      std::snprintf(fixed, sizeof fixed, "%.*f", places, v);
+      if (same(fixed)) return fixed;
+    }
+  }
+  return buf;
 }
 
 std::string enumText(const Arg& a, char group) {

@@ -39,6 +39,7 @@ std::string gallery(const std::vector<Entry>& entries, const std::string& regene
     md += "![" + e.spec.bookNumber + "](" + e.spec.id + ".png)\n\n";
     md += e.spec.caption + "\n\n";
     md += "Source: [`demos/" + e.demo + "/" + e.demo + ".cpp`](../demos/" + e.demo + "/" + e.demo + ".cpp). ";
+    md += "The OpenGL calls that draw it: [`" + e.spec.id + ".gl.txt`](" + e.spec.id + ".gl.txt). ";
     md += "Make just this one:\n\n    " + e.command + "\n\n";
     md += "| measured | value | meaning |\n|---|---|---|\n";
     for (const auto& m : e.measurements) {
@@ -130,8 +131,9 @@ int run(int argc, char** argv) {
     ts::Options opts;
     scene->addOptions(opts);
     opts.parse(e.spec.flags);
-    ts::Rendered got = ts::renderScene(*scene, r, e.spec.width, e.spec.height);
+    ts::Rendered got = ts::renderScene(*scene, r, e.spec.width, e.spec.height, true);
     std::string png = out + "/" + e.spec.id + ".png", json = out + "/" + e.spec.id + ".json";
+    std::string listing = out + "/" + e.spec.id + ".gl.txt";
     std::vector<std::string> flags = {"--json", json};
     flags.insert(flags.end(), e.spec.flags.begin(), e.spec.flags.end());
     e.command = ts::figureCommand(e.demo, png, e.spec.width, e.spec.height, flags);
@@ -139,6 +141,7 @@ int run(int argc, char** argv) {
     ts::SidecarInfo info{e.spec.id, e.spec.bookNumber, e.spec.caption, e.demo, e.command, opts.state(), got.measurements};
     ts::writePng(png, got.image);
     ts::writeFileAtomic(json, ts::sidecarJson(got.frame, info));
+    ts::writeFileAtomic(listing, ts::glListingFile(got, ts::stateCommand(e.demo, e.spec.width, e.spec.height, e.spec.flags)));
     for (const auto& [suffix, text] : scene->figureFiles()) ts::writeFileAtomic(out + "/" + e.spec.id + suffix, text);
     std::printf("%s  %s\n%s", png.c_str(), e.spec.bookNumber.c_str(), ts::formatMeasurements(got.measurements).c_str());
   }

@@ -65,6 +65,7 @@ struct CommonFlags {
   bool help = false;
   std::string png;         // --png FILE: render offscreen, no window
   std::string json;        // --json FILE: the sidecar of that render
+  std::string glListing;   // --gl-listing FILE: the GL calls that draw that render
   int width = 0, height = 0;  // --size WxH (0 = the demo's default)
   std::string backend = "auto";
   int frames = 0;          // --frames N: window closes after N frames (tests)

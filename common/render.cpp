@@ -8,7 +8,6 @@
 
 #include "context.hpp"
 #include "error.hpp"
-#include "gl_record.hpp"
 #include "text.hpp"
 #include "textures.hpp"
 
@@ -41,13 +40,6 @@ static void upload(const Image& img, int level) {
 GLuint Renderer::texture(const TextureDesc& t) {
   auto it = textures_.find(t.key());
   GLuint id = 0;
-  // While the calls are recorded (a listing, an exported program), a cached
-  // texture is made again, so the record holds how it was made.
-  if (it != textures_.end() && !t.glTexture && gl::Recording::active()) {
-    glDeleteTextures(1, &it->second);
-    textures_.erase(it);
-    it = textures_.end();
-  }
   if (t.glTexture) {
     id = t.glTexture;
     glBindTexture(GL_TEXTURE_2D, id);
@@ -190,11 +182,6 @@ static GLuint compile(GLenum type, const Program& p, const std::string& key) {
 
 GLuint Renderer::program(const std::string& key, const Program& p) {
   auto it = programs_.find(key);
-  if (it != programs_.end() && gl::Recording::active()) {  // recorded: compiled again (see texture())
-    glDeleteProgram(it->second);
-    programs_.erase(it);
-    it = programs_.end();
-  }
   if (it != programs_.end()) return it->second;
   GLuint vs = compile(GL_VERTEX_SHADER, p, key), fs = 0;
   try {
@@ -329,10 +316,6 @@ void Renderer::draw(const Frame& f, bool labels) {
 void Renderer::drawLabels(const Frame& f) {
   if (f.labels.empty()) return;
   const Image& atlas = text::atlas();
-  if (fontTexture_ && gl::Recording::active()) {  // recorded: made again (see texture())
-    glDeleteTextures(1, &fontTexture_);
-    fontTexture_ = 0;
-  }
   if (!fontTexture_) {
     glGenTextures(1, &fontTexture_);
     glBindTexture(GL_TEXTURE_2D, fontTexture_);

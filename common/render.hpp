@@ -38,7 +38,8 @@ class Renderer {
   // filters and wrap modes are set on every bind).
   GLuint texture(const TextureDesc& t);
   GLuint program(const std::string& key, const Program& p);
-  // Drops every cached GL object (call before the context goes away).
+  // Drops every cached GL object (call before the context goes away, and
+  // before recording a picture: see recordPicture in gl_listing.hpp).
   void release();
 
  private:

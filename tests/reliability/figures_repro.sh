@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # tests/reliability/figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL — figures
 # are reproducible and written atomically:
-#   1. two runs into two folders give byte-identical PNGs (and sidecars,
-#      once the folder name in their commands is replaced);
+#   1. two runs into two folders give byte-identical PNGs, GL listings (and
+#      sidecars, once the folder name in their commands is replaced);
 #   2. OSMesa and EGL give byte-identical PNGs except the figures listed in
 #      backend_bounds.tsv, whose differences stay within the stated bounds
 #      (pixels that differ, largest channel difference);
@@ -31,6 +31,10 @@ for f in "$T/a"/*.png; do
   json=${name%.png}.json
   if cmp -s <(sed "s|$T/a|OUT|g" "$T/a/$json") <(sed "s|$T/b|OUT|g" "$T/b/$json"); then pass
   else fail "$json differs between two runs (beyond the --out folder)"; fi
+  listing=${name%.png}.gl.txt
+  if [ ! -f "$T/a/$listing" ]; then fail "$listing was not written"
+  elif cmp -s "$T/a/$listing" "$T/b/$listing"; then pass
+  else fail "$listing differs between two runs"; fi
 done
 [ "$n" -gt 0 ] || fail "make_figures wrote no PNG"
 echo "run to run: $n figures byte-identical"

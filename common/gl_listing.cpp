@@ -1,0 +1,154 @@
+#include "gl_listing.hpp"
+
+#include <cstring>
+#include <map>
+#include <unordered_map>
+
+#include "render.hpp"
+
+namespace ts {
+std::vector<gl::Call> recordPicture(Renderer& r, const Frame& frame) {
+  // Cached textures and programs are dropped first, so the record holds how
+  // each was made, not only its binds (and no deletions of the old ones).
+  r.release();
+  gl::Recording rec;
+  r.draw(frame, true);
+  return rec.take();
+}
+
+namespace {
+bool is(const gl::Call& c, const char* name) { return std::strcmp(c.name, name) == 0; }
+
+// Which arguments of a call name a texture ('t') or a program/shader ('p').
+const char* nameRoles(const gl::Call& c) {
+  static const std::map<std::string, const char*> roles = {
+      {"glBindTexture", " t"}, {"glDeleteTextures", " t"}, {"glGenTextures", " t"},
+      {"glFramebufferTexture2D", "   t"}, {"glUseProgram", "p"}, {"glAttachShader", "pp"},
+      {"glShaderSource", "p"}, {"glCompileShader", "p"}, {"glLinkProgram", "p"}, {"glDeleteShader", "p"},
+      {"glDeleteProgram", "p"}, {"glGetUniformLocation", "p"}, {"glGetAttribLocation", "p"},
+      {"glBindAttribLocation", "p"}, {"glGetProgramiv", "p"}, {"glGetShaderiv", "p"},
+      {"glGetProgramInfoLog", "p"}, {"glGetShaderInfoLog", "p"}};
+  auto it = roles.find(c.name);
+  return it == roles.end() ? "" : it->second;
+}
+}  // namespace
+
+std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls) {
+  std::unordered_map<long long, long long> textures, programs;
+  auto number = [](std::unordered_map<long long, long long>& m, long long name) {
+    if (name == 0) return 0LL;
+    auto it = m.find(name);
+    if (it != m.end()) return it->second;
+    long long n = (long long)(m.size()) + 1;
+    m.emplace(name, n);
+    return n;
+  };
+  std::vector<gl::Call> out = calls;
+  for (gl::Call& c : out) {
+    // Creation first, so names are numbered in the order they were made.
+    if (c.hasResult && (is(c, "glCreateProgram") || is(c, "glCreateShader"))) c.result = number(programs, c.result);
+    const char* roles = nameRoles(c);
+    for (size_t k = 0; roles[k] && k < c.args.size(); ++k) {
+      if (roles[k] == ' ') continue;
+      auto& m = roles[k] == 't' ? textures : programs;
+      gl::Arg& a = c.args[k];
+      if (a.kind == gl::Arg::Kind::Ints)
+        for (long long& v : a.ints) v = number(m, v);
+      else
+        a.i = number(m, a.i);
+    }
+  }
+  return out;
+}
+
+namespace {
+// One entry of a listing before shortening: the call's text (may hold
+// several lines: a shader's source) and where it stands.
+struct Entry {
+  std::string text;
+  bool changed = false;
+  bool vertex = false;  // a glVertex*: ends one vertex's group of calls
+};
+
+std::vector<Entry> entries(const std::vector<gl::Call>& numbered) {
+  std::vector<Entry> out;
+  for (const gl::Call& c : numbered) {
+    if (c.query) continue;
+    Entry e;
+    e.text = gl::formatCall(c);
+    e.vertex = std::strncmp(c.name, "glVertex", 8) == 0 && std::strcmp(c.name, "glVertexPointer") != 0 &&
+               std::strncmp(c.name, "glVertexAttrib", 14) != 0;
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+}  // namespace
+
+std::vector<ListingLine> listing(const std::vector<gl::Call>& calls, const std::vector<gl::Call>* previous,
+                                 int keepVertices) {
+  std::vector<Entry> now = entries(numberObjects(calls));
+  if (previous) {
+    // A line is changed when the previous listing did not make that call as
+    // many times: the calls are compared as a multiset of their texts.
+    std::unordered_map<std::string, int> before;
+    for (const Entry& e : entries(numberObjects(*previous))) ++before[e.text];
+    for (Entry& e : now) {
+      auto it = before.find(e.text);
+      if (it != before.end() && it->second > 0) --it->second;
+      else e.changed = true;
+    }
+  }
+  std::vector<ListingLine> out;
+  auto emit = [&](const Entry& e) {
+    // One listing line per source line (a shader's source spans many).
+    size_t pos = 0;
+    while (true) {
+      size_t nl = e.text.find('\n', pos);
+      out.push_back({e.text.substr(pos, nl == std::string::npos ? std::string::npos : nl - pos), e.changed});
+      if (nl == std::string::npos) break;
+      pos = nl + 1;
+    }
+  };
+  size_t i = 0;
+  while (i < now.size()) {
+    const Entry& e = now[i];
+    emit(e);
+    ++i;
+    if (e.text.rfind("glBegin(", 0) != 0) continue;
+    // The vertices up to glEnd, in groups: the attribute calls of a vertex
+    // and its glVertex.  Kept: the first `keepVertices` groups and every
+    // group with a changed call; the rest become "... N more vertices".
+    size_t end = i;
+    while (end < now.size() && now[end].text.rfind("glEnd(", 0) != 0) ++end;
+    int vertex = 0, skipped = 0;
+    size_t groupStart = i;
+    auto flushSkipped = [&] {
+      if (skipped > 0)
+        out.push_back({"/* ... " + std::to_string(skipped) + (skipped == 1 ? " more vertex */" : " more vertices */"), false});
+      skipped = 0;
+    };
+    for (size_t k = i; k < end; ++k) {
+      if (!now[k].vertex && k + 1 < end) continue;
+      bool changed = false;
+      for (size_t g = groupStart; g <= k; ++g) changed |= now[g].changed;
+      if (keepVertices < 0 || vertex < keepVertices || changed) {
+        flushSkipped();
+        for (size_t g = groupStart; g <= k; ++g) emit(now[g]);
+      } else {
+        ++skipped;
+      }
+      ++vertex;
+      groupStart = k + 1;
+    }
+    flushSkipped();
+    i = end;  // glEnd is emitted by the loop
+  }
+  return out;
+}
+
+std::string listingText(const std::vector<ListingLine>& lines, const std::string& header) {
+  std::string out = "/* " + header + " */\n";
+  for (const ListingLine& l : lines) out += l.text + "\n";
+  return out;
+}
+}  // namespace ts

@@ -1,0 +1,173 @@
+// tests/figures/fig_gl_listing_test.cpp — the OpenGL listings (issue 14.3):
+// a listing is the calls that drew the picture, so it changes exactly where
+// the state changes, it holds the call a figure is about, and every line of
+// every book figure's listing reads back as C with enums the GL headers know.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "common/gl_listing.hpp"
+#include "tests/support/scene_test.hpp"
+
+namespace {
+std::vector<std::string> listingOf(const std::string& demo, const std::vector<std::string>& flags, int w, int h) {
+  ts::test::Demo d(demo, flags);
+  d.measure();
+  ts::Frame f = d.frame(w, h);
+  std::vector<std::string> out;
+  for (const ts::ListingLine& l : ts::listing(ts::recordPicture(ts::test::renderer(), f))) out.push_back(l.text);
+  return out;
+}
+
+// Claim: --filter nearest and --filter linear differ in the filter lines and
+// nowhere else (the same calls draw the rest of the picture).
+TEST(GlListing, FilterChangesExactlyTheFilterLines) {
+  auto nearest = listingOf("quad_distortion", {"--filter", "nearest"}, 512, 256);
+  auto linear = listingOf("quad_distortion", {"--filter", "linear"}, 512, 256);
+  ASSERT_EQ(nearest.size(), linear.size());
+  int differ = 0;
+  for (size_t k = 0; k < nearest.size(); ++k) {
+    if (nearest[k] == linear[k]) continue;
+    ++differ;
+    bool filterLine = nearest[k].find("GL_TEXTURE_MIN_FILTER") != std::string::npos ||
+                      nearest[k].find("GL_TEXTURE_MAG_FILTER") != std::string::npos;
+    EXPECT_TRUE(filterLine) << "line " << k << " differs: " << nearest[k] << " / " << linear[k];
+    if (filterLine) {
+      EXPECT_NE(nearest[k].find("GL_NEAREST"), std::string::npos) << nearest[k];
+      EXPECT_NE(linear[k].find("GL_LINEAR"), std::string::npos) << linear[k];
+    }
+  }
+  EXPECT_GE(differ, 2) << "the checkerboard's two filter lines must change";
+}
+
+// Claim: Figure VI.2's listing holds the hint the figure is about.
+TEST(GlListing, PerspectiveCorrectionSetsTheHint) {
+  auto l = listingOf("perspective_correction", {}, 512, 256);
+  EXPECT_NE(std::find(l.begin(), l.end(), "glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);"), l.end());
+}
+
+// ---- reading a listing back as C -------------------------------------------
+// The statements of a listing: comments dropped, string literals kept whole,
+// split at the ';' that ends each call.
+std::vector<std::string> statements(const std::string& text, std::string* error) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+      size_t end = text.find("*/", i + 2);
+      if (end == std::string::npos) return *error = "an unterminated comment", out;
+      i = end + 1;
+      cur += ' ';
+      continue;
+    }
+    if (c == '"') {
+      size_t j = i + 1;
+      while (j < text.size() && text[j] != '"') j += text[j] == '\\' ? 2 : 1;
+      if (j >= text.size()) return *error = "an unterminated string", out;
+      cur += "\"\"";  // the string's contents are not C syntax
+      i = j;
+      continue;
+    }
+    if (c == ';') {
+      out.push_back(cur);
+      cur.clear();
+      continue;
+    }
+    cur += c;
+  }
+  for (char c : cur)
+    if (!std::isspace(static_cast<unsigned char>(c))) return *error = "text after the last ';': " + cur, out;
+  return out;
+}
+
+// One statement: name(arguments) where name is a GL function of the suite,
+// parentheses and braces balance, and every GL_ identifier is an enum.
+std::string checkCall(const std::string& raw) {
+  std::string s = raw;
+  s.erase(0, s.find_first_not_of(" \n\t"));
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
+  static const std::set<std::string> functions = {
+#define TM_GL_NAME(name) #name,
+      TM_GL_FUNCTIONS(TM_GL_NAME)
+#undef TM_GL_NAME
+  };
+  size_t open = s.find('(');
+  if (open == std::string::npos || s.back() != ')') return "not a call";
+  std::string name = s.substr(0, open);
+  if (!functions.count(name)) return "unknown function " + name;
+  int depth = 0;
+  for (char c : s) {
+    depth += (c == '(' || c == '{' || c == '[') - (c == ')' || c == '}' || c == ']');
+    if (depth < 0) return "unbalanced";
+  }
+  if (depth != 0) return "unbalanced";
+  for (size_t i = open; i < s.size(); ++i) {
+    if (s.compare(i, 3, "GL_") != 0 || (i > 0 && (std::isalnum(static_cast<unsigned char>(s[i - 1])) || s[i - 1] == '_')))
+      continue;
+    size_t j = i;
+    while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
+    std::string id = s.substr(i, j - i);
+    if (id != "GLfloat" && id != "GLuint" && id != "GLchar" && !ts::gl::enumValue(id, nullptr)) return "unknown enum " + id;
+    i = j;
+  }
+  // The rest: numbers, type names of compound literals, NULL, NAN/INFINITY.
+  for (size_t i = open + 1; i + 1 < s.size(); ++i) {
+    char c = s[i];
+    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+      size_t j = i;
+      while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_' || s[j] == '+' ||
+                              ((s[j] == '-') && j > 0 && s[j - 1] == 'e')))
+        ++j;
+      std::string id = s.substr(i, j - i);
+      bool ok = id.rfind("GL_", 0) == 0 || id == "GLfloat" || id == "GLuint" || id == "GLchar" || id == "const" ||
+                id == "NULL" || id == "NAN" || id == "INFINITY";
+      bool exponent = i > open + 1 && std::isdigit(static_cast<unsigned char>(s[i - 1])) && c == 'e';
+      if (!ok && !exponent) return "unexpected word " + id;
+      i = j - 1;
+    }
+  }
+  return "";
+}
+
+// Claim: every registered figure has its listing in book_figures/, and every
+// line of it reads back as C: known functions, known enums, balanced.
+TEST(GlListing, EveryFigureListingReadsBackAsC) {
+  int figures = 0;
+  for (const auto& reg : ts::sceneRegistry())
+    for (const ts::FigureSpec& spec : reg.make()->figures()) {
+      ++figures;
+      std::ifstream in("book_figures/" + spec.id + ".gl.txt");
+      ASSERT_TRUE(in) << "book_figures/" << spec.id << ".gl.txt is missing (scripts/figures.sh writes it)";
+      std::stringstream text;
+      text << in.rdbuf();
+      std::string error;
+      std::vector<std::string> calls = statements(text.str(), &error);
+      EXPECT_TRUE(error.empty()) << spec.id << ": " << error;
+      EXPECT_GT(calls.size(), 10u) << spec.id;
+      int bad = 0;
+      for (const std::string& c : calls) {
+        std::string why = checkCall(c);
+        if (!why.empty() && ++bad <= 3) ADD_FAILURE() << spec.id << ": " << why << " in: " << c.substr(0, 200);
+      }
+      EXPECT_EQ(bad, 0) << spec.id;
+      EXPECT_NE(text.str().find("glBegin("), std::string::npos) << spec.id;
+    }
+  EXPECT_GT(figures, 0);
+}
+
+// The checker itself rejects what is not C with known enums (so the test
+// above can fail).
+TEST(GlListing, TheReaderRejectsWhatIsNotAListing) {
+  EXPECT_EQ(checkCall("glEnable(GL_TEXTURE_2D)"), "");
+  EXPECT_NE(checkCall("glEnable(GL_NOT_AN_ENUM)"), "");
+  EXPECT_NE(checkCall("glFrobnicate(1)"), "");
+  EXPECT_NE(checkCall("glEnable(GL_TEXTURE_2D"), "");
+  EXPECT_NE(checkCall("glEnable(0x9999 banana)"), "");
+  EXPECT_EQ(checkCall("glLoadMatrixf((const GLfloat[2]){1, -2.5e-05})"), "");
+}
+}  // namespace
