@@ -83,7 +83,7 @@ int runDemo(const std::string& id, int argc, char** argv) {
       std::printf("%s\n\n%s\n\nusage: %s [flags]\n\ncommon flags:\n%s\n%s flags (each key works in the window):\n%s",
                   scene->title().c_str(), scene->about().c_str(), id.c_str(), commonFlagsHelp().c_str(),
                   id.c_str(), opts.helpText().c_str());
-      std::printf("\nwindow keys: %s  h: overlay on/off  esc/q: quit\n", opts.keysText().c_str());
+      std::printf("\nwindow keys: %s  h: overlay on/off  l: the OpenGL calls beside the picture  esc/q: quit\n", opts.keysText().c_str());
       return kExitOk;
     }
     Backend b = parseBackend(f.backend);

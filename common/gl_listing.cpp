@@ -1,5 +1,6 @@
 #include "gl_listing.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <map>
 #include <unordered_map>
@@ -82,22 +83,52 @@ std::vector<Entry> entries(const std::vector<gl::Call>& numbered) {
   }
   return out;
 }
+// Marks the entries of `now` that are not in `before`, aligned as a diff
+// would: position by position when the two have the same length (a key
+// changed values, not structure), the longest common subsequence when that
+// is small enough, else as multisets of texts (many vertices added or
+// removed: nearly everything changed anyway).
+void markChanged(const std::vector<Entry>& before, std::vector<Entry>* now) {
+  size_t n = before.size(), m = now->size();
+  if (n == m) {
+    for (size_t k = 0; k < m; ++k) (*now)[k].changed = (*now)[k].text != before[k].text;
+    return;
+  }
+  if (n * m <= size_t(4) << 20) {
+    // lcs[i][j]: the longest common subsequence of before[i..] and now[j..].
+    std::vector<unsigned short> lcs((n + 1) * (m + 1), 0);
+    auto at = [&](size_t i, size_t j) -> unsigned short& { return lcs[i * (m + 1) + j]; };
+    for (size_t i = n; i-- > 0;)
+      for (size_t j = m; j-- > 0;)
+        at(i, j) = before[i].text == (*now)[j].text ? (unsigned short)(at(i + 1, j + 1) + 1)
+                                                     : std::max(at(i + 1, j), at(i, j + 1));
+    for (Entry& e : *now) e.changed = true;
+    for (size_t i = 0, j = 0; i < n && j < m;) {
+      if (before[i].text == (*now)[j].text) {
+        (*now)[j].changed = false;
+        ++i, ++j;
+      } else if (at(i + 1, j) >= at(i, j + 1)) {
+        ++i;
+      } else {
+        ++j;
+      }
+    }
+    return;
+  }
+  std::unordered_map<std::string, int> count;
+  for (const Entry& e : before) ++count[e.text];
+  for (Entry& e : *now) {
+    auto it = count.find(e.text);
+    e.changed = !(it != count.end() && it->second > 0);
+    if (!e.changed) --it->second;
+  }
+}
 }  // namespace
 
 std::vector<ListingLine> listing(const std::vector<gl::Call>& calls, const std::vector<gl::Call>* previous,
                                  int keepVertices) {
   std::vector<Entry> now = entries(numberObjects(calls));
-  if (previous) {
-    // A line is changed when the previous listing did not make that call as
-    // many times: the calls are compared as a multiset of their texts.
-    std::unordered_map<std::string, int> before;
-    for (const Entry& e : entries(numberObjects(*previous))) ++before[e.text];
-    for (Entry& e : now) {
-      auto it = before.find(e.text);
-      if (it != before.end() && it->second > 0) --it->second;
-      else e.changed = true;
-    }
-  }
+  if (previous) markChanged(entries(numberObjects(*previous)), &now);
   std::vector<ListingLine> out;
   auto emit = [&](const Entry& e) {
     // One listing line per source line (a shader's source spans many).

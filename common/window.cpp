@@ -5,12 +5,15 @@
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "context.hpp"
 #include "error.hpp"
 #include "gl.hpp"
+#include "gl_pane.hpp"
 #include "render.hpp"
 
 namespace ts {
@@ -168,10 +171,13 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
 
   WindowContext ctx(win);
   Renderer renderer(ctx);
-  std::printf("%s | %s\nkeys: %s  h: overlay  esc/q: quit\n", scene.title().c_str(), ctx.describe().c_str(),
-              opts.keysText().c_str());
+  std::printf("%s | %s\nkeys: %s  h: overlay  l: OpenGL calls  esc/q: quit\n", scene.title().c_str(),
+              ctx.describe().c_str(), opts.keysText().c_str());
   Measurements m;
   bool dirty = true;
+  GlPane pane;
+  bool record = false, afterKey = false;  // the GL pane needs a new recording
+  int recordedW = 0, recordedH = 0;
   int frame = 0;
   double last = glfwGetTime();
   int status = kExitOk;
@@ -184,7 +190,8 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         input.keys.erase(0, 1);
         if (k == 'q') input.quit = true;
         else if (k == 'h') input.overlay = !input.overlay;
-        else if (opts.handleKey(k)) dirty = true;
+        else if (k == 'l') pane.visible = !pane.visible, record = pane.visible, afterKey = false;
+        else if (opts.handleKey(k)) dirty = true, record = pane.visible, afterKey = true;
       }
       double now = glfwGetTime();
       scene.update(now - last);
@@ -199,14 +206,31 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         }
         dirty = false;
       }
-      Frame f = scene.build(ctx.width(), ctx.height());
-      renderer.draw(f);
+      // With the GL pane open the figure is laid out in the rest of the window.
+      int paneW = pane.visible ? glPaneWidth(ctx.width()) : 0;
+      int figureW = std::max(1, ctx.width() - paneW);
+      Frame f = scene.build(figureW, ctx.height());
+      if (pane.visible && (record || figureW != recordedW || ctx.height() != recordedH)) {
+        pane.record(renderer, f, afterKey, now, true);  // draws the picture, recording its calls
+        record = afterKey = false;
+        recordedW = figureW;
+        recordedH = ctx.height();
+      } else {
+        renderer.draw(f);
+      }
       ++frame;
       bool lastFrame = flags.frames && frame >= flags.frames && input.keys.empty();
-      if (lastFrame && !flags.screenshot.empty()) writePng(flags.screenshot, ctx.readPixels());
-      if (input.overlay) {
+      // The screenshot is the figure alone (it must match --png), unless
+      // TS_SCREENSHOT_OVERLAY=1 asks for the window as the student sees it.
+      const char* withOverlay = std::getenv("TS_SCREENSHOT_OVERLAY");
+      bool overlayShot = withOverlay && *withOverlay == '1';
+      if (lastFrame && !flags.screenshot.empty() && !overlayShot) writePng(flags.screenshot, ctx.readPixels());
+      if (input.overlay || pane.visible) {
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
+      }
+      if (pane.visible) pane.draw(figureW, paneW, ctx.height(), now);
+      if (input.overlay) {
         ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
         ImGui::SetNextWindowBgAlpha(0.75f);
         ImGui::Begin(scene.title().c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -214,11 +238,14 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         ImGui::Separator();
         for (const auto& x : m) ImGui::Text("%-22s %10.4f", x.name.c_str(), x.value);
         ImGui::Separator();
-        ImGui::TextWrapped("keys: %s  h: overlay  esc/q: quit", opts.keysText().c_str());
+        ImGui::TextWrapped("keys: %s  h: overlay  l: OpenGL calls  esc/q: quit", opts.keysText().c_str());
         ImGui::End();
+      }
+      if (input.overlay || pane.visible) {
         ImGui::Render();
         drawImGui(ImGui::GetDrawData(), ctx.width(), ctx.height());
       }
+      if (lastFrame && !flags.screenshot.empty() && overlayShot) writePng(flags.screenshot, ctx.readPixels());
       gl::check("drawing the window");
       glfwSwapBuffers(win);
       if (lastFrame) break;

@@ -72,6 +72,9 @@ expect_usage_error png_trailing_slash --backend "$BACKEND" --png adir/
 expect_usage_error png_is_a_dir --backend "$BACKEND" --png adir
 expect_usage_error json_missing_dir "${PNG_ARGS[@]}" --json nosuch/out.json
 expect_usage_error json_without_png --json out.json
+expect_usage_error listing_missing_dir --backend "$BACKEND" --gl-listing nosuch/gl.txt
+expect_usage_error listing_is_a_dir --backend "$BACKEND" --gl-listing adir
+expect_usage_error listing_in_a_window --backend window --gl-listing gl.txt
 expect_usage_error texture_missing "${PNG_ARGS[@]}" --texture missing.png
 expect_usage_error texture_not_png "${PNG_ARGS[@]}" --texture text.png
 expect_usage_error corners_garbage "${PNG_ARGS[@]}" --corners garbage
@@ -149,7 +152,8 @@ if [ "$rc" -ne 0 ]; then fail "make_figures --out: exit status $rc: $(cat "$err"
 cp -p "$T/figs"/* "$T/figs.first/" 2>/dev/null
 run figs2 "$FIGS" --backend "$BACKEND" --out "$T/figs" --only quad_distortion
 if [ "$rc" -ne 0 ]; then fail "make_figures --out (again): exit status $rc: $(cat "$err")"; else pass; fi
-for f in vi1_quad_distortion.png vi1_quad_distortion.json vi1_quad_variants.png vi1_quad_variants.json; do
+for f in vi1_quad_distortion.png vi1_quad_distortion.json vi1_quad_distortion.gl.txt vi1_quad_variants.png \
+         vi1_quad_variants.json vi1_quad_variants.gl.txt; do
   if [ ! -s "$T/figs.first/$f" ]; then fail "make_figures did not write $f"; continue; fi
   if cmp -s "$T/figs.first/$f" "$T/figs/$f"; then pass; else fail "make_figures: $f differs between two runs"; fi
 done
@@ -163,7 +167,7 @@ run figs3 "$FIGS" --backend "$BACKEND" --out "$T/figs.other" --only vi1_quad_var
 if [ "$rc" -ne 0 ]; then fail "make_figures --only vi1_quad_variants: exit status $rc"; else pass; fi
 if cmp -s "$T/figs/vi1_quad_variants.png" "$T/figs.other/vi1_quad_variants.png"; then pass
 else fail "make_figures: vi1_quad_variants.png differs between output folders"; fi
-if [ "$(ls "$T/figs.other")" = "$(printf 'vi1_quad_variants.json\nvi1_quad_variants.png')" ]; then pass
+if [ "$(ls "$T/figs.other")" = "$(printf 'vi1_quad_variants.gl.txt\nvi1_quad_variants.json\nvi1_quad_variants.png')" ]; then pass
 else fail "make_figures --only wrote: $(ls "$T/figs.other")"; fi
 
 run only_nosuch "$FIGS" --backend "$BACKEND" --out "$T/figs.none" --only nosuch

@@ -54,6 +54,7 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "common/gl_pane.hpp"
 #include "common/image.hpp"
 #include "common/options.hpp"
 #include "common/scene.hpp"
@@ -507,6 +508,63 @@ void windowVsPng(const std::string& id, const std::string& testName, const std::
   }
 }
 
+// The GL pane (key l): the figure is laid out beside it, never under it.
+// The window run's screenshot (the figure alone) must hold, left of the
+// pane, the --png render of the state at the figure's width, and nothing
+// right of it; the pane's stdout lines must name the calls the key changed
+// (`mustChange`: a substring of one of them; "" = any).
+void paneBesideFigure(const std::string& id, const std::string& keys, const ts::Options& expected,
+                      const std::string& mustChange) {
+  std::string dir = outDir() + "/" + id + "/gl_pane_" + keyLabel(keys.size() > 1 ? keys[1] : 'l');
+  mkdirs(dir);
+  std::string prog = binDir() + "/" + id, W = dir + "/window.png", P = dir + "/png.png";
+  std::remove(W.c_str());
+  std::remove(P.c_str());
+  int paneW = ts::glPaneWidth(gWidth), figureW = gWidth - paneW;
+  Proc win, png;
+  win.argv = {"xvfb-run", "-a", "-s", kXvfbScreen, prog, "--size", std::to_string(gWidth) + "x" + std::to_string(gHeight),
+              "--frames", std::to_string(kFrames), "--keys", keys, "--screenshot", W};
+  win.outPath = dir + "/window.stdout";
+  win.errPath = dir + "/window.stderr";
+  png.argv = {prog, "--size", std::to_string(figureW) + "x" + std::to_string(gHeight), "--png", P};
+  for (const auto& f : flagsFor(id, expected)) png.argv.push_back(f);
+  png.outPath = dir + "/png.stdout";
+  png.errPath = dir + "/png.stderr";
+  win.spawn();
+  png.spawn();
+  while (!(win.poll() & png.poll())) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_EQ(win.exitCode, 0) << win.describe();
+  ASSERT_EQ(png.exitCode, 0) << png.describe();
+  ASSERT_NE(win.out.find("gl pane: "), std::string::npos) << "the pane recorded nothing\n" << win.out;
+  if (!mustChange.empty()) {
+    bool found = false;
+    std::istringstream lines(win.out);
+    for (std::string l; std::getline(lines, l);)
+      found |= l.rfind("gl pane: changed: ", 0) == 0 && l.find(mustChange) != std::string::npos;
+    EXPECT_TRUE(found) << "after --keys " << keys << " no changed line holds '" << mustChange << "'\n" << win.out;
+  }
+  ts::Image w = ts::readPng(W), p = ts::readPng(P);
+  ASSERT_EQ(w.width, gWidth);
+  ASSERT_EQ(p.width, figureW);
+  ts::Image left(figureW, gHeight), picture;
+  for (int y = 0; y < gHeight; ++y)
+    for (int x = 0; x < figureW; ++x) left.set(x, y, w.at(x, y));
+  Diff d = compare(left, p, &picture);
+  double frac = double(d.overSmall) / double(d.pixels);
+  bool egl = png.out.find(" | egl | ") != std::string::npos;
+  Bounds bounds = egl ? kEglBounds : kOsmesaBounds;
+  EXPECT_LE(frac, bounds.maxFraction) << "left of the pane the window is not the --png render at " << figureW << "x"
+                                      << gHeight << "\n  " << W << "\n  " << P;
+  EXPECT_LE(d.unexplained, bounds.maxUnexplained) << W << " vs " << P;
+  // Right of the figure (under the pane) nothing of the figure is drawn:
+  // one colour, the clear colour.
+  ts::Rgba clear = w.at(gWidth - 1, gHeight - 1);
+  long other = 0;
+  for (int y = 0; y < gHeight; ++y)
+    for (int x = figureW; x < gWidth; ++x) other += channelDiff(w.at(x, y), clear) > kSmallDiff;
+  EXPECT_EQ(other, 0) << "the figure reaches under the pane (x >= " << figureW << ") in " << W;
+}
+
 // parse(stateFlags()) on a fresh Options must give back the state.
 void roundTrip(const std::string& id, const ts::Options& state, const std::string& what) {
   Fresh f(id);
@@ -554,8 +612,9 @@ void registerAll() {
       registerCase(id, test, [id, test, key, option] {
         // The window takes q and h itself (quit, overlay) before the demo's
         // handler: an option bound to either could never be reached.
-        ASSERT_TRUE(key != 'q' && key != 'h')
-            << "option --" << option << " uses key '" << key << "', which the window reserves (q: quit, h: overlay)";
+        ASSERT_TRUE(key != 'q' && key != 'h' && key != 'l')
+            << "option --" << option << " uses key '" << key
+            << "', which the window reserves (q: quit, h: overlay, l: OpenGL calls)";
         Fresh f(id);
         auto before = f.opts.state();
         ASSERT_TRUE(f.opts.handleKey(key)) << "handleKey('" << key << "') took no option";
@@ -591,6 +650,32 @@ void registerAll() {
           windowVsPng(id, "live_view_matches_png", "", f.opts, "", true);
         });
     }
+    // The GL pane beside the figure, opened, then the demo's first key.
+    if (!keys.empty()) {
+      char first = keys.front().first;
+      registerCase(id, "gl_pane_beside_figure", [id, first] {
+        Fresh f(id);
+        f.opts.handleKey(first);
+        paneBesideFigure(id, std::string("l") + first, f.opts, "");
+      });
+    }
+    // The two examples: f in quad_distortion changes the filter
+    // lines; c in cylinder_seam the seam's s from 0.1 to 1.1.
+    if (id == "quad_distortion")
+      registerCase(id, "gl_pane_shows_the_filter_change", [id] {
+        Fresh f(id);
+        f.opts.handleKey('f');
+        std::string filter;
+        for (const auto& [n, v] : f.opts.state())
+          if (n == "filter") filter = v == "linear" ? "GL_LINEAR" : "GL_NEAREST";
+        paneBesideFigure(id, "lf", f.opts, "GL_TEXTURE_MAG_FILTER, " + filter + ")");
+      });
+    if (id == "cylinder_seam")
+      registerCase(id, "gl_pane_shows_the_seam_change", [id] {
+        Fresh f(id);
+        f.opts.handleKey('c');
+        paneBesideFigure(id, "lc", f.opts, "glTexCoord4f(1.1, ");
+      });
     registerCase(id, "state_flags_round_trip", [id, keys] {
       Fresh f(id);
       roundTrip(id, f.opts, "initial state");
