@@ -5,6 +5,7 @@
 
 #include "context.hpp"
 #include "error.hpp"
+#include "export_c.hpp"
 #include "figure.hpp"
 #include "render.hpp"
 #include "scene.hpp"
@@ -41,6 +42,7 @@ static int renderOffscreen(Scene& scene, Options& opts, const CommonFlags& f, Ba
   if (!f.png.empty()) checkWritable(f.png);
   if (!f.json.empty()) checkWritable(f.json);
   if (!f.glListing.empty()) checkWritable(f.glListing);
+  if (!f.exportC.empty()) checkWritable(f.exportC);
   ContextOptions co;
   co.width = w;
   co.height = h;
@@ -48,10 +50,25 @@ static int renderOffscreen(Scene& scene, Options& opts, const CommonFlags& f, Ba
   co.accumBuffer = scene.wantsAccumBuffer();
   auto ctx = createOffscreenContext(b, co);
   Renderer r(*ctx);
-  Rendered out = renderScene(scene, r, w, h, !f.glListing.empty());
+  Rendered out = renderScene(scene, r, w, h, !f.glListing.empty() || !f.exportC.empty());
+  // The program is made before anything is written: a state that cannot be
+  // exported leaves no file at all.
+  ExportedProgram program;
+  if (!f.exportC.empty()) {
+    ExportInfo info;
+    info.demo = scene.id();
+    info.title = scene.title();
+    info.about = scene.about();
+    info.state = stateCommand(scene.id(), w, h, opts.stateFlags());
+    info.width = w;
+    info.height = h;
+    nameExport(f.exportC, &info);
+    program = exportC(out.calls, out.frame, info);
+  }
   if (!f.png.empty()) writePng(f.png, out.image);
   if (!f.glListing.empty())
     writeFileAtomic(f.glListing, glListingFile(out, stateCommand(scene.id(), w, h, opts.stateFlags())));
+  if (!f.exportC.empty()) writeExport(f.exportC, program);
   if (!f.json.empty()) {
     SidecarInfo info;
     info.demo = scene.id();
@@ -89,7 +106,7 @@ int runDemo(const std::string& id, int argc, char** argv) {
     Backend b = parseBackend(f.backend);
     int w = f.width ? f.width : scene->defaultWidth();
     int h = f.height ? f.height : scene->defaultHeight();
-    if (!f.png.empty() || !f.glListing.empty()) {
+    if (!f.png.empty() || !f.glListing.empty() || !f.exportC.empty()) {
       if (b == Backend::Window) throw Error("--png and --gl-listing render offscreen: use --backend osmesa, egl or auto");
       if (!f.screenshot.empty() || f.frames)
         throw Error("--screenshot and --frames are for the window, not --png or --gl-listing");

@@ -181,6 +181,7 @@ Arg describe(char hint, const Raw& r, const std::vector<Raw>& all, size_t index,
   Arg a;
   a.i = r.i;
   a.f = r.f;
+  a.isDouble = r.type == Raw::RealDouble;
   auto floatsAt = [&](size_t n) {
     const float* v = static_cast<const float*>(r.p);
     a.kind = Arg::Kind::Floats;
@@ -382,6 +383,16 @@ std::string number(double v, bool isDouble) {
   return buf;
 }
 
+}  // namespace
+
+std::string floatLiteral(double v) {
+  std::string s = number(v, false);
+  if (!std::isfinite(v)) return s;
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s + "f";
+}
+
+namespace {
 std::string enumText(const Arg& a, char group) {
   unsigned long long v = (unsigned long long)(a.i);
   static const char* const kPrims[] = {"GL_POINTS",         "GL_LINES",        "GL_LINE_LOOP", "GL_LINE_STRIP",
@@ -443,7 +454,7 @@ bool enumValue(const std::string& name, unsigned long long* value) {
   return true;
 }
 
-std::string formatCall(const Call& c) {
+std::string formatCall(const Call& c, bool floatSuffix) {
   auto it = hints().find(c.name);
   std::string hint = it == hints().end() ? std::string() : it->second;
   if (!hint.empty() && hint[0] == '?') hint.erase(0, 1);
@@ -454,13 +465,17 @@ std::string formatCall(const Call& c) {
     if (k) out += ", ";
     switch (a.kind) {
       case Arg::Kind::Int: case Arg::Kind::Uint: out += std::to_string(a.i); break;
-      case Arg::Kind::Float: out += number(a.f, false); break;
+      case Arg::Kind::Float:
+        out += floatSuffix && !a.isDouble ? floatLiteral(a.f) : number(a.f, a.isDouble);
+        break;
+      case Arg::Kind::Code: out += a.text.empty() ? "0" : a.text[0]; break;
       case Arg::Kind::Enum: out += enumText(a, group); break;
       case Arg::Kind::Bitfield: out += bitfieldText(a.i); break;
       case Arg::Kind::Boolean: out += a.i ? "GL_TRUE" : "GL_FALSE"; break;
       case Arg::Kind::Floats: {
         out += "(const GLfloat[" + std::to_string(a.floats.size()) + "]){";
-        for (size_t n = 0; n < a.floats.size(); ++n) out += (n ? ", " : "") + number(a.floats[n], false);
+        for (size_t n = 0; n < a.floats.size(); ++n)
+          out += (n ? ", " : "") + (floatSuffix ? floatLiteral(a.floats[n]) : number(a.floats[n], false));
         out += "}";
         break;
       }

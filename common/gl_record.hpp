@@ -38,8 +38,11 @@ struct Arg {
     Text,      // strings the call reads (glShaderSource, glGetUniformLocation's name)
     Pixels,    // image data the call reads (glTexImage2D): `bytes` holds a copy
     Pointer,   // anything else (null, client arrays, query outputs): not kept
+    Code,      // C code standing for the argument (`text[0]`): set by a program
+               // generator, never by the recorder (e.g. "texture[1]")
   };
   Kind kind = Kind::Int;
+  bool isDouble = false;  // a GLdouble parameter (glOrtho, glClearDepth)
   long long i = 0;
   double f = 0;
   std::vector<float> floats;
@@ -67,7 +70,12 @@ bool enumValue(const std::string& name, unsigned long long* value);
 // Arrays read by the call are written as C99 compound literals
 // (glLoadMatrixf((const GLfloat[16]){1, 0, ...})); pixel data as a comment
 // naming what it is (/* 256x256 GL_RGBA GL_UNSIGNED_BYTE, 262144 bytes */ NULL).
-std::string formatCall(const Call& c);
+// A float as a C float literal that reads back as the same float: 0.9f, 1.0f.
+std::string floatLiteral(double v);
+
+// floatSuffix: float constants as C float literals (0.9f), so a compiler
+// gives exactly the recorded float (an exported program's vertices).
+std::string formatCall(const Call& c, bool floatSuffix = false);
 
 class Recording {
  public:

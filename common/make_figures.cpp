@@ -18,6 +18,7 @@
 #include "render.hpp"
 #include "scene.hpp"
 #include "sidecar.hpp"
+#include "export_c.hpp"
 
 namespace {
 struct Entry {
@@ -71,7 +72,7 @@ bool selected(const std::string& only, const std::string& figure, const std::str
 int run(int argc, char** argv) {
   std::string out = "book_figures", backend = "auto", only;
   double scale = 1.0;
-  bool list = false;
+  bool list = false, exportPrograms = false;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     auto need = [&]() -> std::string {
@@ -82,16 +83,18 @@ int run(int argc, char** argv) {
     else if (a == "--backend") backend = need();
     else if (a == "--only") only = need();
     else if (a == "--list") list = true;
+    else if (a == "--export-c") exportPrograms = true;
     else if (a == "--scale") {
       std::string v = need();
       char* end = nullptr;
       scale = std::strtod(v.c_str(), &end);
       if (v.empty() || *end || !(scale > 0) || scale > 16) throw ts::Error("--scale: '" + v + "' is not in (0, 16]");
     } else if (a == "--help" || a == "-h") {
-      std::printf("usage: make_figures [--out DIR] [--backend auto|osmesa|egl] [--scale F] [--only ID] [--list]\n"
-                  "Renders every registered book figure (PNG + sidecar JSON) and the gallery README.md into DIR\n"
-                  "(default book_figures). --scale multiplies every figure's size. --only ID[,ID...]: just these\n"
-                  "figures or every figure of these demos (no gallery).\n");
+      std::printf("usage: make_figures [--out DIR] [--backend auto|osmesa|egl] [--scale F] [--only ID] [--list] [--export-c]\n"
+                  "Renders every registered book figure (PNG + sidecar JSON + GL listing) and the gallery README.md\n"
+                  "into DIR (default book_figures). --scale multiplies every figure's size. --only ID[,ID...]: just\n"
+                  "these figures or every figure of these demos (no gallery). --export-c: also each figure as a\n"
+                  "standalone C program, DIR/<id>.c and DIR/<id>.texels (see --export-c of the demos).\n");
       return 0;
     } else throw ts::Error("unknown argument '" + a + "' (see --help)");
   }
@@ -142,6 +145,18 @@ int run(int argc, char** argv) {
     ts::writePng(png, got.image);
     ts::writeFileAtomic(json, ts::sidecarJson(got.frame, info));
     ts::writeFileAtomic(listing, ts::glListingFile(got, ts::stateCommand(e.demo, e.spec.width, e.spec.height, e.spec.flags)));
+    if (exportPrograms) {
+      ts::ExportInfo info;
+      info.demo = e.demo;
+      info.title = e.spec.bookNumber + ": " + scene->title();
+      info.about = scene->about();
+      info.state = ts::stateCommand(e.demo, e.spec.width, e.spec.height, e.spec.flags);
+      info.width = e.spec.width;
+      info.height = e.spec.height;
+      std::string c = out + "/" + e.spec.id + ".c";
+      ts::nameExport(c, &info);
+      ts::writeExport(c, ts::exportC(got.calls, got.frame, info));
+    }
     for (const auto& [suffix, text] : scene->figureFiles()) ts::writeFileAtomic(out + "/" + e.spec.id + suffix, text);
     std::printf("%s  %s\n%s", png.c_str(), e.spec.bookNumber.c_str(), ts::formatMeasurements(got.measurements).c_str());
   }

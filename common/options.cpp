@@ -276,6 +276,7 @@ std::vector<std::string> parseCommonFlags(int argc, char** argv, CommonFlags* f)
     else if (name == "--png") f->png = need();
     else if (name == "--json") f->json = need();
     else if (name == "--gl-listing") f->glListing = need();
+    else if (name == "--export-c") f->exportC = need();
     else if (name == "--size") parseSize(need(), &f->width, &f->height);
     else if (name == "--backend") f->backend = need();
     else if (name == "--screenshot") f->screenshot = need();
@@ -290,7 +291,7 @@ std::vector<std::string> parseCommonFlags(int argc, char** argv, CommonFlags* f)
       rest.push_back(a);
     }
   }
-  for (const std::string* p : {&f->png, &f->json, &f->screenshot, &f->glListing})
+  for (const std::string* p : {&f->png, &f->json, &f->screenshot, &f->glListing, &f->exportC})
     if (!p->empty() && p->back() == '/') throw Error("'" + *p + "' names a directory, not a file");
   return rest;
 }
@@ -300,6 +301,7 @@ std::string commonFlagsHelp() {
          "  --png FILE                         render offscreen into FILE (no window) and print the measurement\n"
          "  --json FILE                        with --png: also write the sidecar (every parameter of the image)\n"
          "  --gl-listing FILE                  write the OpenGL calls that draw the state's picture (offscreen, no window)\n"
+         "  --export-c FILE.c                  write a standalone C99 program making those calls (and FILE.texels)\n"
          "  --size WxH                         image or window size, 1..16384 each\n"
          "  --backend osmesa|egl|window|auto   auto: a window, or with --png OSMesa then EGL\n"
          "  --frames N                         window: close after N frames (for tests)\n"

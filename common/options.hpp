@@ -66,6 +66,7 @@ struct CommonFlags {
   std::string png;         // --png FILE: render offscreen, no window
   std::string json;        // --json FILE: the sidecar of that render
   std::string glListing;   // --gl-listing FILE: the GL calls that draw that render
+  std::string exportC;     // --export-c FILE.c: a standalone C program making those calls
   int width = 0, height = 0;  // --size WxH (0 = the demo's default)
   std::string backend = "auto";
   int frames = 0;          // --frames N: window closes after N frames (tests)

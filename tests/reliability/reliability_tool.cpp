@@ -6,6 +6,9 @@
 //       found by fuzzing go to corpus/regressions/ (kept as found).
 //   reliability_tool check FILE...   every FILE must decode completely as an
 //       image (used after killing a run: no half-written PNG may exist).
+//   reliability_tool diff-rgb A B   the same on the red, green and blue
+//       channels only; A or B may be a binary PPM (P6), as exported
+//       programs write (tests/cli/export_c_test.sh).
 //   reliability_tool diff A B   compares two images: prints
 //       "<pixels that differ> <largest channel difference>" (exit 0), or fails
 //       if either cannot be read or the sizes differ.
@@ -16,6 +19,33 @@
 
 #include "common/error.hpp"
 #include "corpus_gen.hpp"
+
+// A binary PPM (P6, maxval 255) as an opaque image; anything else: readImage.
+static ts::Image readAny(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) throw ts::Error("cannot read " + path, 1);
+  char magic[3] = {0, 0, 0};
+  int w = 0, h = 0, maxval = 0;
+  bool ppm = std::fread(magic, 1, 2, f) == 2 && magic[0] == 'P' && magic[1] == '6' &&
+             std::fscanf(f, "%d %d %d", &w, &h, &maxval) == 3 && maxval == 255 && w > 0 && h > 0 && w <= 16384 &&
+             h <= 16384 && std::fgetc(f) != EOF;
+  if (!ppm) {
+    std::fclose(f);
+    return ts::readImage(path);
+  }
+  ts::Image img(w, h);
+  for (size_t p = 0; p < size_t(w) * size_t(h); ++p) {
+    unsigned char rgb[3];
+    if (std::fread(rgb, 1, 3, f) != 3) {
+      std::fclose(f);
+      throw ts::Error(path + ": the PPM ends early", 1);
+    }
+    for (int c = 0; c < 3; ++c) img.pixels[p * 4 + size_t(c)] = rgb[c];
+    img.pixels[p * 4 + 3] = 255;
+  }
+  std::fclose(f);
+  return img;
+}
 
 int main(int argc, char** argv) {
   std::string cmd = argc > 1 ? argv[1] : "";
@@ -33,15 +63,16 @@ int main(int argc, char** argv) {
       for (int i = 2; i < argc; ++i) ts::readImage(argv[i]);
       return 0;
     }
-    if (cmd == "diff" && argc == 4) {
-      ts::Image a = ts::readImage(argv[2]), b = ts::readImage(argv[3]);
+    if ((cmd == "diff" || cmd == "diff-rgb") && argc == 4) {
+      bool rgb = cmd == "diff-rgb";
+      ts::Image a = rgb ? readAny(argv[2]) : ts::readImage(argv[2]), b = rgb ? readAny(argv[3]) : ts::readImage(argv[3]);
       if (a.width != b.width || a.height != b.height)
         throw ts::Error(std::string(argv[2]) + " and " + argv[3] + " differ in size", 1);
       long n = 0;
       int most = 0;
       for (size_t i = 0; i < a.pixels.size(); i += 4) {
         int d = 0;
-        for (int k = 0; k < 4; ++k) d = std::max(d, std::abs(int(a.pixels[i + k]) - int(b.pixels[i + k])));
+        for (int k = 0; k < (rgb ? 3 : 4); ++k) d = std::max(d, std::abs(int(a.pixels[i + k]) - int(b.pixels[i + k])));
         if (d) ++n;
         most = std::max(most, d);
       }
@@ -52,6 +83,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "reliability_tool: %s\n", e.what());
     return e.exit_code;
   }
-  std::fprintf(stderr, "usage: reliability_tool corpus DIR | check FILE... | diff A B\n");
+  std::fprintf(stderr, "usage: reliability_tool corpus DIR | check FILE... | diff A B | diff-rgb A B\n");
   return 2;
 }
