@@ -261,6 +261,20 @@ ExportedProgram exportC(const std::vector<gl::Call>& recorded, const Frame& fram
   if (!g.texels.empty())
     s += " * The texture images are read from " + info.texelsName +
          " (every glTexImage2D's bytes, in call order):\n * run the program in the folder that holds it.\n";
+  // Panels that show a GL render the demo made in its measurement passes
+  // (VI.7's sampling modes, the parallax modes) are such images here.
+  std::vector<std::string> rendered;
+  for (const TextureDesc& t : frame.textures)
+    for (const auto& [k, v] : t.params)
+      if (k == "made_by") rendered.push_back(t.name), (void)v;
+  if (!rendered.empty()) {
+    std::string names;
+    for (const std::string& n : rendered) names += (names.empty() ? "" : ", ") + n;
+    s += " *\n" + wrap(commentSafe("Some panels show pictures the demo rendered in earlier passes of its own (its measurement, "
+                                   "with shaders or the accumulation buffer): " + names + ". This program draws those "
+                                   "pictures as textures; the passes that made them are in demos/" + info.demo + "/."),
+                       " * ");
+  }
   s += " * Change a call, build again, and see what it does.\n */\n";
   s += "#define GL_GLEXT_PROTOTYPES 1\n#include <stdio.h>\n#include <stdlib.h>\n"
        "#ifdef OFFSCREEN\n#include <GL/osmesa.h>\n#else\n#include <GLFW/glfw3.h>\n#endif\n"
