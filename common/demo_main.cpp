@@ -93,6 +93,7 @@ int runDemo(const std::string& id, int argc, char** argv) {
     if (!scene) throw Error("no scene named '" + id + "' is registered", kExitFailure);
     Options opts;
     scene->addOptions(opts);
+    opts.captureDefaults();  // Backspace in the window comes back here
     CommonFlags f;
     std::vector<std::string> rest = parseCommonFlags(argc, argv, &f);
     opts.parse(rest);
@@ -100,7 +101,9 @@ int runDemo(const std::string& id, int argc, char** argv) {
       std::printf("%s\n\n%s\n\nusage: %s [flags]\n\ncommon flags:\n%s\n%s flags (each key works in the window):\n%s",
                   scene->title().c_str(), scene->about().c_str(), id.c_str(), commonFlagsHelp().c_str(),
                   id.c_str(), opts.helpText().c_str());
-      std::printf("\nwindow keys: %s  h: overlay on/off  l: the OpenGL calls beside the picture  esc/q: quit\n", opts.keysText().c_str());
+      std::printf("\nwindow keys: %s  h: overlay on/off  l: the OpenGL calls beside the picture\n"
+                  "  ?/F1: help card  F12: save PNG + sidecar and print the command  Backspace: reset every option\n"
+                  "  =: as +  arrows: turn/tilt where the demo has them  esc/q: quit\n", opts.keysText().c_str());
       return kExitOk;
     }
     Backend b = parseBackend(f.backend);
@@ -115,6 +118,8 @@ int runDemo(const std::string& id, int argc, char** argv) {
     if (!f.json.empty()) throw Error("--json needs --png FILE");
     if (b == Backend::OSMesa || b == Backend::EGL)
       throw Error(std::string("backend ") + backendName(b) + " is offscreen: add --png FILE");
+    // A screenshot that cannot be written is said before the window opens.
+    if (!f.screenshot.empty()) checkWritable(f.screenshot);
     return runWindow(*scene, opts, f, w, h);
   } catch (const Error& e) {
     std::fprintf(stderr, "%s: %s\n", id.c_str(), e.what());

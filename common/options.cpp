@@ -160,6 +160,20 @@ bool Options::handleKey(char key) {
   return false;
 }
 
+void Options::resetToDefaults() {
+  // Text options left empty are not in stateFlags(): empty them first.
+  for (auto& it : items_)
+    if (it.kind == Item::Text) static_cast<std::string*>(it.target)->clear();
+  parse(defaults_);
+}
+
+char Options::keyOf(const std::vector<std::string>& names, bool up) const {
+  for (const std::string& n : names)
+    for (const auto& it : items_)
+      if (it.name == n && (up ? it.key : it.keyDown)) return up ? it.key : it.keyDown;
+  return 0;
+}
+
 std::string Options::valueOf(const Item& it) const {
   switch (it.kind) {
     case Item::Bool: return *static_cast<bool*>(it.target) ? "on" : "off";

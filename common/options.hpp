@@ -33,6 +33,13 @@ class Options {
   bool has(const std::string& name) const;
   // Window keys: returns true if `key` changed some option.
   bool handleKey(char key);
+  // The demo's own defaults (call before parsing the command line), and the
+  // window's Backspace: every option back to them.
+  void captureDefaults() { defaults_ = stateFlags(); }
+  void resetToDefaults();
+  // The key of the first option among `names` (its up key, or its down key):
+  // the arrow keys turn and tilt through the demo's own options.  0: none.
+  char keyOf(const std::vector<std::string>& names, bool up) const;
 
   std::string helpText() const;   // one line per option, keys included
   std::string keysText() const;   // "d: diagonal  e: edges ..."
@@ -58,6 +65,7 @@ class Options {
   Item* find(const std::string& name);
   std::string valueOf(const Item& it) const;
   std::vector<Item> items_;
+  std::vector<std::string> defaults_;
 };
 
 // The flags every program of the suite shares.

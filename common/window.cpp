@@ -6,6 +6,8 @@
 #include <backends/imgui_impl_glfw.h>
 
 #include <algorithm>
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -13,7 +15,9 @@
 #include "context.hpp"
 #include "error.hpp"
 #include "gl.hpp"
+#include "figure.hpp"
 #include "gl_pane.hpp"
+#include "sidecar.hpp"
 #include "render.hpp"
 
 namespace ts {
@@ -45,10 +49,16 @@ class WindowContext final : public Context {
   bool accum_ = false;
 };
 
+// Keys without a character travel in Input::keys as these codes, so typed
+// keys and --keys take one path.
+constexpr char kKeyReset = keys::kReset, kKeyHelp = keys::kHelp, kKeySave = keys::kSave, kKeyLeft = keys::kLeft,
+               kKeyRight = keys::kRight, kKeyUp = keys::kUp, kKeyDown = keys::kDown;
+
 struct Input {
   std::string keys;  // characters typed since the last frame
   bool quit = false;
   bool overlay = true;
+  bool help = false;
 };
 
 void onChar(GLFWwindow* w, unsigned int cp) {
@@ -58,7 +68,75 @@ void onChar(GLFWwindow* w, unsigned int cp) {
 }
 void onKey(GLFWwindow* w, int key, int, int action, int) {
   auto* in = static_cast<Input*>(glfwGetWindowUserPointer(w));
-  if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE) in->quit = true;
+  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+  switch (key) {
+    case GLFW_KEY_ESCAPE:  // closes the help card first, then the window
+      if (action == GLFW_PRESS) (in->help ? in->help = false : in->quit = true);
+      break;
+    case GLFW_KEY_BACKSPACE: in->keys += kKeyReset; break;
+    case GLFW_KEY_F1: in->keys += kKeyHelp; break;
+    case GLFW_KEY_F12: in->keys += kKeySave; break;
+    case GLFW_KEY_LEFT: in->keys += kKeyLeft; break;
+    case GLFW_KEY_RIGHT: in->keys += kKeyRight; break;
+    case GLFW_KEY_UP: in->keys += kKeyUp; break;
+    case GLFW_KEY_DOWN: in->keys += kKeyDown; break;
+    default: break;
+  }
+}
+
+// F12: the window's picture as PNG + sidecar under a name not yet taken
+// (<demo>-<n>.png in the working folder), and the command that remakes it.
+void saveState(Scene& scene, const Options& opts, const Frame& f, const Image& window) {
+  std::string base;
+  for (int n = 1; n < 10000; ++n) {
+    base = scene.id() + "-" + std::to_string(n);
+    struct stat st;
+    if (::stat((base + ".png").c_str(), &st) != 0 && ::stat((base + ".json").c_str(), &st) != 0) break;
+  }
+  Image picture(f.width, f.height);  // the figure's part of the window (the GL pane takes the rest)
+  for (int y = 0; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x) picture.set(x, y, window.at(x, y));
+  std::vector<std::string> flags = {"--json", base + ".json"};
+  for (const std::string& s : opts.stateFlags()) flags.push_back(s);
+  SidecarInfo info;
+  info.demo = scene.id();
+  info.figureId = base;
+  info.caption = scene.title();
+  info.command = figureCommand(scene.id(), base + ".png", f.width, f.height, flags);
+  info.state = opts.state();
+  writePng(base + ".png", picture);
+  writeFileAtomic(base + ".json", sidecarJson(f, info));
+  std::printf("saved %s.png and %s.json; remake them with:\n  %s\n", base.c_str(), base.c_str(), info.command.c_str());
+  std::fflush(stdout);
+}
+
+// The help card (? or F1): the figure's claim, what to look for, every key.
+void drawHelp(Scene& scene, const Options& opts, int w, int h, bool* open) {
+  float cw = std::min(float(w) - 40.0f, 720.0f), ch = std::min(float(h) - 40.0f, 560.0f);
+  ImGui::SetNextWindowPos(ImVec2((float(w) - cw) / 2, (float(h) - ch) / 2), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(cw, ch), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.95f);
+  ImGui::Begin("Help (? or F1 or Esc closes it)", open, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                                              ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::TextWrapped("%s", scene.title().c_str());
+  ImGui::Separator();
+  std::string about = scene.about();  // single line breaks of the source are spaces here
+  for (size_t k = 0; k + 1 < about.size(); ++k)
+    if (about[k] == '\n' && about[k + 1] != '\n' && (k == 0 || about[k - 1] != '\n')) about[k] = ' ';
+  ImGui::TextWrapped("%s", about.c_str());
+  ImGui::Separator();
+  ImGui::TextUnformatted("The demo's keys (each is also a flag: --help lists them):");
+  for (const auto& it : opts.items()) {
+    if (!it.key && !it.keyDown) continue;
+    std::string keys = it.keyDown ? std::string(1, it.key) + "/" + std::string(1, it.keyDown) : std::string(1, it.key);
+    ImGui::Bullet();
+    ImGui::TextWrapped("%s  %s: %s", keys.c_str(), it.name.c_str(), it.help.c_str());
+  }
+  ImGui::Separator();
+  ImGui::TextWrapped("Window keys: arrows turn and tilt (where the demo has them), = acts as +, Backspace resets every "
+                     "option, F12 saves the picture and its sidecar and prints the command that remakes them, l shows "
+                     "the OpenGL calls beside the picture, h hides the overlay, ? or F1 this card, Esc or q quits.");
+  ImGui::End();
 }
 
 // Dear ImGui's draw lists, drawn with fixed-function vertex arrays through
@@ -171,31 +249,66 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
 
   WindowContext ctx(win);
   Renderer renderer(ctx);
-  std::printf("%s | %s\nkeys: %s  h: overlay  l: OpenGL calls  esc/q: quit\n", scene.title().c_str(),
+  std::printf("%s | %s\nkeys: %s  h: overlay  l: OpenGL calls  ?/F1: help  F12: save  Backspace: reset  "
+              "arrows: turn/tilt  esc/q: quit\n",
+              scene.title().c_str(),
               ctx.describe().c_str(), opts.keysText().c_str());
   Measurements m;
   bool dirty = true;
   GlPane pane;
   bool record = false, afterKey = false;  // the GL pane needs a new recording
+  bool redraw = true;                      // draw again without waiting for an event
+  double keyAt = -1e9, fps = 0, fpsSince = glfwGetTime();
+  int fpsFrame = 0;
   int recordedW = 0, recordedH = 0;
   int frame = 0;
   double last = glfwGetTime();
   int status = kExitOk;
   try {
     while (!glfwWindowShouldClose(win) && !input.quit) {
-      glfwPollEvents();
+      // Idle is idle: with nothing animating, no key waiting and no test
+      // counting frames, wait for an event instead of drawing again (while a
+      // changed line of the GL pane is highlighted, wake to fade it).
+      bool busy = dirty || redraw || scene.live() || !input.keys.empty() || flags.frames;
+      if (busy) glfwPollEvents();
+      else if (pane.visible && glfwGetTime() - keyAt < GlPane::kHighlightSeconds + 0.1)
+        glfwWaitEventsTimeout(0.25);
+      else
+        glfwWaitEvents();
+      redraw = false;
+      bool save = false;
       // One synthesised or typed key per frame, through the same handler.
       if (!input.keys.empty()) {
         char k = input.keys.front();
         input.keys.erase(0, 1);
+        // = is + (the same key without shift) where no option takes =.
+        if (k == '=') {
+          bool taken = false;
+          for (const auto& it : opts.items()) taken |= it.key == '=' || it.keyDown == '=';
+          if (!taken) k = '+';
+        }
+        if (k == kKeyLeft || k == kKeyRight) k = opts.keyOf({"turn", "rotation", "azimuth"}, k == kKeyRight);
+        else if (k == kKeyUp || k == kKeyDown) k = opts.keyOf({"tilt", "angle", "elevation"}, k == kKeyUp);
         if (k == 'q') input.quit = true;
         else if (k == 'h') input.overlay = !input.overlay;
+        else if (k == '?' || k == kKeyHelp) input.help = !input.help;
+        else if (k == kKeySave) save = true;
         else if (k == 'l') pane.visible = !pane.visible, record = pane.visible, afterKey = false;
+        else if (k == kKeyReset) opts.resetToDefaults(), dirty = true, record = pane.visible, afterKey = true;
         else if (opts.handleKey(k)) dirty = true, record = pane.visible, afterKey = true;
+        if (afterKey) keyAt = glfwGetTime();
       }
       double now = glfwGetTime();
+      std::string stateBefore = opts.stateText();
       scene.update(now - last);
+      if (opts.stateText() != stateBefore) redraw = true;  // an animation moved: keep drawing
       last = now;
+      // Frames per second over the last half second of frames drawn.
+      if (now - fpsSince >= 0.5) {
+        fps = double(frame - fpsFrame) / (now - fpsSince);
+        fpsSince = now;
+        fpsFrame = frame;
+      }
       ctx.sync();
       if (ctx.width() < 1 || ctx.height() < 1) continue;  // minimised
       if (dirty || scene.live()) {
@@ -219,13 +332,15 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         renderer.draw(f);
       }
       ++frame;
+      if (save) saveState(scene, opts, f, ctx.readPixels());
       bool lastFrame = flags.frames && frame >= flags.frames && input.keys.empty();
       // The screenshot is the figure alone (it must match --png), unless
       // TS_SCREENSHOT_OVERLAY=1 asks for the window as the student sees it.
       const char* withOverlay = std::getenv("TS_SCREENSHOT_OVERLAY");
       bool overlayShot = withOverlay && *withOverlay == '1';
       if (lastFrame && !flags.screenshot.empty() && !overlayShot) writePng(flags.screenshot, ctx.readPixels());
-      if (input.overlay || pane.visible) {
+      bool imgui = input.overlay || pane.visible || input.help;
+      if (imgui) {
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
       }
@@ -235,13 +350,16 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         ImGui::SetNextWindowBgAlpha(0.75f);
         ImGui::Begin(scene.title().c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
         for (const auto& [name, value] : opts.state()) ImGui::Text("%-14s %s", name.c_str(), value.c_str());
+        ImGui::Text("%-14s %.1f%s", "fps", fps, busy ? "" : " (idle: drawn when something changes)");
         ImGui::Separator();
         for (const auto& x : m) ImGui::Text("%-22s %10.4f", x.name.c_str(), x.value);
         ImGui::Separator();
-        ImGui::TextWrapped("keys: %s  h: overlay  l: OpenGL calls  esc/q: quit", opts.keysText().c_str());
+        ImGui::TextWrapped("keys: %s  h: overlay  l: OpenGL calls  ?: help  F12: save  Backspace: reset  esc/q: quit",
+                           opts.keysText().c_str());
         ImGui::End();
       }
-      if (input.overlay || pane.visible) {
+      if (input.help) drawHelp(scene, opts, ctx.width(), ctx.height(), &input.help);
+      if (imgui) {
         ImGui::Render();
         drawImGui(ImGui::GetDrawData(), ctx.width(), ctx.height());
       }

@@ -55,6 +55,7 @@
 
 #include "common/error.hpp"
 #include "common/gl_pane.hpp"
+#include "common/window.hpp"
 #include "common/image.hpp"
 #include "common/options.hpp"
 #include "common/scene.hpp"
@@ -565,6 +566,103 @@ void paneBesideFigure(const std::string& id, const std::string& keys, const ts::
   EXPECT_EQ(other, 0) << "the figure reaches under the pane (x >= " << figureW << ") in " << W;
 }
 
+// A window run with --keys in `dir` (its working folder); returns when done.
+Proc windowRun(const std::string& id, const std::string& dir, const std::string& keys, bool overlayShot = false) {
+  mkdirs(dir);
+  Proc win;
+  win.argv = {"env", std::string("TS_SCREENSHOT_OVERLAY=") + (overlayShot ? "1" : "0"), "xvfb-run", "-a", "-s",
+              kXvfbScreen, binDir() + "/" + id, "--size", std::to_string(gWidth) + "x" + std::to_string(gHeight),
+              "--frames", std::to_string(kFrames), "--keys", keys, "--screenshot", dir + "/window.png"};
+  // Relative to the run's folder: F12 writes there.
+  if (win.argv[6][0] != '/') {
+    char cwd[4096];
+    if (getcwd(cwd, sizeof cwd)) win.argv[6] = std::string(cwd) + "/" + win.argv[6];
+  }
+  win.outPath = dir + "/window.stdout";
+  win.errPath = dir + "/window.stderr";
+  std::string here = dir;
+  win.argv.insert(win.argv.begin(), {"bash", "-c", "cd \"$0\" && exec \"$@\"", here});
+  win.spawn();
+  while (!win.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  return win;
+}
+
+// The usual window keys: Backspace resets every option, = is +, the arrows
+// turn and tilt, ? shows the help card, F12 saves the state and prints the
+// command that remakes it (which must give the same picture).
+void usualKeys(const std::string& id) {
+  Fresh initial(id);
+  std::string base = outDir() + "/" + id + "/usual_keys";
+  // Backspace after a change: the state line is the defaults again.
+  std::string change;
+  for (const auto& it : initial.opts.items())
+    if (it.key && change.empty()) change = std::string(1, it.key);
+  ASSERT_FALSE(change.empty());
+  Proc reset = windowRun(id, base + "/reset", change + std::string(1, ts::keys::kReset));
+  ASSERT_EQ(reset.exitCode, 0) << reset.describe();
+  std::vector<std::string> lines = stateLines(reset.out, initial.opts);
+  ASSERT_FALSE(lines.empty()) << reset.out;
+  EXPECT_EQ(lines.back(), initial.opts.stateText()) << "Backspace did not reset the options";
+  // = acts as + where + is a key and = is not.
+  bool plus = false, equals = false;
+  for (const auto& it : initial.opts.items()) {
+    plus |= it.key == '+' || it.keyDown == '+';
+    equals |= it.key == '=' || it.keyDown == '=';
+  }
+  if (plus && !equals) {
+    Fresh f(id);
+    f.opts.handleKey('+');
+    Proc eq = windowRun(id, base + "/equals", "=");
+    ASSERT_EQ(eq.exitCode, 0) << eq.describe();
+    lines = stateLines(eq.out, f.opts);
+    ASSERT_FALSE(lines.empty());
+    EXPECT_EQ(lines.back(), f.opts.stateText()) << "= did not act as +";
+  }
+  // Right arrow = the up key of the turn option (if the demo has one).
+  char right = initial.opts.keyOf({"turn", "rotation", "azimuth"}, true);
+  if (right) {
+    Fresh f(id);
+    f.opts.handleKey(right);
+    Proc arrow = windowRun(id, base + "/arrow", std::string(1, ts::keys::kRight));
+    ASSERT_EQ(arrow.exitCode, 0) << arrow.describe();
+    lines = stateLines(arrow.out, f.opts);
+    ASSERT_FALSE(lines.empty());
+    EXPECT_EQ(lines.back(), f.opts.stateText()) << "the right arrow did not turn";
+  }
+  // ? shows the help card: the window as seen changes, the state does not.
+  Proc plain = windowRun(id, base + "/plain", "", true), help = windowRun(id, base + "/help", "?", true);
+  ASSERT_EQ(help.exitCode, 0) << help.describe();
+  lines = stateLines(help.out, initial.opts);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines.back(), initial.opts.stateText()) << "? changed the state";
+  ts::Image scratch;
+  Diff d = compare(ts::readPng(base + "/plain/window.png"), ts::readPng(base + "/help/window.png"), &scratch);
+  EXPECT_GT(d.overSmall, long(gWidth) * gHeight / 20) << "the help card is not on screen";
+  // F12: PNG + sidecar under a new name, and a command that remakes them.
+  std::string dir = base + "/save";
+  std::remove((dir + "/" + id + "-1.png").c_str());
+  std::remove((dir + "/" + id + "-1.json").c_str());
+  Proc save = windowRun(id, dir, change + std::string(1, ts::keys::kSave));
+  ASSERT_EQ(save.exitCode, 0) << save.describe();
+  size_t at = save.out.find("remake them with:\n  ");
+  ASSERT_NE(at, std::string::npos) << save.out;
+  std::string command = save.out.substr(at + 20, save.out.find('\n', at + 20) - at - 20);
+  ASSERT_EQ(command.rfind("build/bin/" + id + " --png " + id + "-1.png", 0), 0u) << command;
+  ts::Image saved = ts::readPng(dir + "/" + id + "-1.png");
+  ASSERT_EQ(access((dir + "/" + id + "-1.json").c_str(), R_OK), 0) << "no sidecar";
+  // The command, run as printed (its program from this build), remakes the picture.
+  Proc remake;
+  remake.argv = {"bash", "-c", "cd \"$0\" && exec \"$1\"/" + id + command.substr(10 + id.size()) +
+                                   " --png remade.png --json remade.json --quiet", dir, binDir()};
+  remake.outPath = dir + "/remake.stdout";
+  remake.errPath = dir + "/remake.stderr";
+  remake.spawn();
+  while (!remake.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_EQ(remake.exitCode, 0) << remake.describe();
+  Diff r = compare(saved, ts::readPng(dir + "/remade.png"), &scratch);
+  EXPECT_LE(double(r.overSmall) / double(r.pixels), kOsmesaBounds.maxFraction) << "F12's command does not remake it";
+}
+
 // parse(stateFlags()) on a fresh Options must give back the state.
 void roundTrip(const std::string& id, const ts::Options& state, const std::string& what) {
   Fresh f(id);
@@ -676,6 +774,7 @@ void registerAll() {
         f.opts.handleKey('c');
         paneBesideFigure(id, "lc", f.opts, "glTexCoord4f(1.1, ");
       });
+    registerCase(id, "usual_keys", [id] { usualKeys(id); });
     registerCase(id, "state_flags_round_trip", [id, keys] {
       Fresh f(id);
       roundTrip(id, f.opts, "initial state");
