@@ -262,7 +262,7 @@ std::unique_ptr<Context> createOffscreenContext(Backend backend, const ContextOp
     if (auto c = EglContext::create(opts, &whyEgl)) {
       // The note only when the fallback worked: a failure is one line.
       if (backend == Backend::Auto && opts.verbose)
-        std::fprintf(stderr, "note: %s; using the EGL backend\n", whyOsmesa.c_str());
+        note("note: " + whyOsmesa + "; using the EGL backend");
       return c;
     }
     if (backend == Backend::EGL)

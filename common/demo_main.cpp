@@ -13,6 +13,14 @@
 #include "window.hpp"
 
 namespace ts {
+static bool g_quietNotes = false;
+void setQuietNotes(bool quiet) { g_quietNotes = quiet; }
+void note(const std::string& line) {
+  if (g_quietNotes) return;
+  std::fprintf(stderr, "%s\n", line.c_str());
+  std::fflush(stderr);
+}
+
 std::vector<RegisteredScene>& sceneRegistry() {
   static std::vector<RegisteredScene> r;
   return r;
@@ -96,6 +104,7 @@ int runDemo(const std::string& id, int argc, char** argv) {
     opts.captureDefaults();  // Backspace in the window comes back here
     CommonFlags f;
     std::vector<std::string> rest = parseCommonFlags(argc, argv, &f);
+    setQuietNotes(f.quiet);
     opts.parse(rest);
     if (f.help) {
       std::printf("%s\n\n%s\n\nusage: %s [flags]\n\ncommon flags:\n%s\n%s flags (each key works in the window):\n%s",

@@ -12,6 +12,12 @@ enum ExitCode : int {
   kExitUsage = 2,    // bad flags, bad input file, no display, no context
 };
 
+// A note for the user that is neither an error nor the measurement (a backend
+// fallback, a resized texture, which averaging path a demo took): one line
+// on stderr, silenced by --quiet.
+void note(const std::string& line);
+void setQuietNotes(bool quiet);
+
 struct Error : std::runtime_error {
   explicit Error(const std::string& what, int code = kExitUsage)
       : std::runtime_error(what), exit_code(code) {}

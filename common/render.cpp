@@ -65,8 +65,9 @@ GLuint Renderer::texture(const TextureDesc& t) {
     if ((!powerOfTwo(level0->width) || !powerOfTwo(level0->height)) && !npot) {
       // GL 1.x without NPOT support: resample to powers of two, and say so.
       int w = nextPowerOfTwo(level0->width), h = nextPowerOfTwo(level0->height);
-      std::fprintf(stderr, "note: texture '%s' %dx%d resized bilinearly to %dx%d (the context lacks non-power-of-two textures)\n",
-                   t.name.c_str(), level0->width, level0->height, w, h);
+      note("note: texture '" + t.name + "' " + std::to_string(level0->width) + "x" + std::to_string(level0->height) +
+           " resized bilinearly to " + std::to_string(w) + "x" + std::to_string(h) +
+           " (the context lacks non-power-of-two textures)");
       level0 = std::make_shared<Image>(resizeBilinear(*level0, w, h));
     }
     glGenTextures(1, &id);

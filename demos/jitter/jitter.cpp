@@ -215,7 +215,7 @@ void Jitter::prepare(ts::Renderer& r) {
   // change; not a measurement, because a window and --png may differ here and
   // still show the same picture (FBO and glAccum agree to one 8-bit step).
   if (path_ != printedPath_) {
-    std::fprintf(stderr, "jitter: multi-pass images %s\n", path_.c_str());
+    ts::note("jitter: multi-pass images " + path_);
     printedPath_ = path_;
   }
   for (auto& row : results_)

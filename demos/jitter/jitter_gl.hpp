@@ -233,22 +233,24 @@ inline std::string describe(AccumStatus s) {
 // light), and the window's picture would not be the --png's.
 inline bool accumAveragesStoredValues(ts::Renderer& r) {
   ts::Frame f;
-  f.width = f.height = 4;
+  // 4x4 pixels, or the whole target when it is smaller (--size 3x3).
+  const int n = std::max(1, std::min({4, r.context().width(), r.context().height()}));
+  f.width = f.height = n;
   uint8_t got[4 * 4 * 4] = {0};
   for (int k = 0; k < 2; ++k) {
     float v = (k == 0 ? 32.0f : 224.0f) / 255.0f;
     f.clearColor = {v, v, v, 1.0f};
     r.draw(f, false);
     glEnable(GL_SCISSOR_TEST);
-    glScissor(0, 0, 4, 4);
+    glScissor(0, 0, n, n);
     glAccum(k == 0 ? GL_LOAD : GL_ACCUM, 0.5f);
   }
   glAccum(GL_RETURN, 1.0f);
   glDisable(GL_SCISSOR_TEST);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, got);
+  glReadPixels(0, 0, n, n, GL_RGBA, GL_UNSIGNED_BYTE, got);
   ts::gl::check("probing the accumulation buffer");
-  for (int i = 0; i < 16; ++i)
+  for (int i = 0; i < n * n; ++i)
     for (int ch = 0; ch < 3; ++ch)
       if (std::abs(int(got[i * 4 + ch]) - 128) > 1) return false;
   return true;

@@ -220,7 +220,9 @@ class ParallaxAniso final : public ts::Scene {
       }
       errorTextures_.push_back(imageTexture(band, "occlusion_band"));
       if (!csvPath_.empty()) ts::writeFileAtomic(csvPath_, csv(*table_));
-      std::fprintf(stderr, "%s", textTable(*table_).c_str());
+      std::string table = textTable(*table_);
+      if (!table.empty() && table.back() == '\n') table.pop_back();
+      ts::note(table);
     }
     ts::Measurements m;
     for (const Row& row : table_->rows) {

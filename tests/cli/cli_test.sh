@@ -177,5 +177,14 @@ if [ -e "$T/figs.none" ]; then fail "make_figures --only nosuch created its --ou
 run figs_bad_arg "$FIGS" --nosuch
 if [ "$rc" -eq 0 ] || [ "$(wc -l <"$err")" -ne 1 ]; then fail "make_figures --nosuch: status $rc, stderr: $(cat "$err")"; else pass; fi
 
+# The smallest sizes are sizes too: jitter's accumulation-buffer probe used
+# 4x4 pixels whatever the target (exit 1 at --size 3x3).
+JITTER="$(dirname "$DEMO")/jitter"
+if [ -x "$JITTER" ]; then
+  run jitter3 "$JITTER" --backend "$BACKEND" --png "$T/j3.png" --size 3x3 --quiet
+  if [ "$rc" -ne 0 ] || [ ! -s "$T/j3.png" ] || [ -s "$T/err.jitter3" ]; then
+    fail "jitter --size 3x3: exit $rc, stderr: $(cat "$T/err.jitter3")"; else pass; fi
+fi
+
 echo "$checks checks passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -78,10 +78,14 @@ fi
 
 # ------------------------------------------------ GL libraries missing
 run_demo() { (cd "$T/work" && timeout 120 env "$@" >"$T/out" 2>"$T/err"); rc=$?; }
-run_demo TS_HIDE_GL_LIBS=osmesa "$DEMO" --backend auto --png "$T/fallback.png" --size 64x64 --quiet
+run_demo TS_HIDE_GL_LIBS=osmesa "$DEMO" --backend auto --png "$T/fallback.png" --size 64x64
 if [ "$rc" -ne 0 ] || [ ! -s "$T/fallback.png" ]; then fail "no OSMesa, auto: exit status $rc: $(cat "$T/err")"
 elif ! grep -q "using the EGL backend" "$T/err"; then fail "no OSMesa, auto: no note about EGL: $(cat "$T/err")"
 else pass; fi
+# --quiet silences the note too: nothing on stderr, nothing on stdout.
+run_demo TS_HIDE_GL_LIBS=osmesa "$DEMO" --backend auto --png "$T/fallback2.png" --size 64x64 --quiet
+if [ "$rc" -ne 0 ] || [ -s "$T/err" ] || [ -s "$T/out" ]; then
+  fail "no OSMesa, auto, --quiet: status $rc, stderr: $(cat "$T/err"), stdout: $(head -2 "$T/out")"; else pass; fi
 run_demo TS_HIDE_GL_LIBS=osmesa "$DEMO" --backend osmesa --png out.png
 if [ "$rc" -ne 2 ] || [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q "libosmesa6" "$T/err"; then
   fail "no OSMesa, --backend osmesa: status $rc: $(cat "$T/err")"; else pass; fi
