@@ -1,6 +1,7 @@
 #include "options.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -307,6 +308,15 @@ std::vector<std::string> parseCommonFlags(int argc, char** argv, CommonFlags* f)
   }
   for (const std::string* p : {&f->png, &f->json, &f->screenshot, &f->glListing, &f->exportC})
     if (!p->empty() && p->back() == '/') throw Error("'" + *p + "' names a directory, not a file");
+  // PNG bytes under another image's name would mislead every viewer.
+  for (const std::string* p : {&f->png, &f->screenshot}) {
+    size_t dot = p->find_last_of('.'), slash = p->find_last_of('/');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) continue;
+    std::string ext = p->substr(dot);
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".png")
+      throw Error("'" + *p + "' ends in " + p->substr(dot) + ", but --png and --screenshot write PNG files: name it .png");
+  }
   return rest;
 }
 

@@ -70,6 +70,7 @@ expect_usage_error size_missing_value --png out.png --size
 expect_usage_error png_missing_dir --backend "$BACKEND" --png nosuch/out.png
 expect_usage_error png_trailing_slash --backend "$BACKEND" --png adir/
 expect_usage_error png_is_a_dir --backend "$BACKEND" --png adir
+expect_usage_error png_named_jpg --backend "$BACKEND" --png out.jpg
 expect_usage_error json_missing_dir "${PNG_ARGS[@]}" --json nosuch/out.json
 expect_usage_error json_without_png --json out.json
 expect_usage_error listing_missing_dir --backend "$BACKEND" --gl-listing nosuch/gl.txt
