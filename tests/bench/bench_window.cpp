@@ -25,6 +25,7 @@
 // repetitions by default; any benchmark flag overrides.
 #include <fcntl.h>
 #include <limits.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -195,6 +196,54 @@ void benchLiveLoop(benchmark::State& st, const std::string& mode) {
   }
 }
 
+// Idle is idle (issue 13.4): a demo's window left alone for 5 s after it has
+// started (2 s), CPU seconds it used meanwhile, from /proc/<pid>/stat.
+double cpuSeconds(pid_t pid) {
+  std::FILE* f = std::fopen(("/proc/" + std::to_string(pid) + "/stat").c_str(), "r");
+  if (!f) return -1;
+  char buf[2048];
+  size_t n = std::fread(buf, 1, sizeof buf - 1, f);
+  std::fclose(f);
+  buf[n] = 0;
+  const char* p = std::strrchr(buf, ')');  // the command name may hold spaces
+  unsigned long utime = 0, stime = 0;
+  if (!p || std::sscanf(p + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %lu %lu", &utime, &stime) != 2) return -1;
+  return double(utime + stime) / double(sysconf(_SC_CLK_TCK));
+}
+
+void benchIdleCpu(benchmark::State& st, const std::string& demo) {
+  try {
+    for (auto _ : st) {
+      std::string exe = binDir() + "/" + demo;
+      std::vector<std::string> args = {exe, "--size", std::to_string(kWidth) + "x" + std::to_string(kHeight), "--quiet"};
+      std::vector<char*> argv;
+      for (auto& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      posix_spawn_file_actions_t fa;
+      posix_spawn_file_actions_init(&fa);
+      posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+      posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+      pid_t pid = 0;
+      int err = posix_spawn(&pid, exe.c_str(), &fa, nullptr, argv.data(), environ);
+      posix_spawn_file_actions_destroy(&fa);
+      if (err != 0) throw ts::Error("cannot run " + exe + ": " + std::strerror(err));
+      usleep(2000000);
+      double c0 = cpuSeconds(pid);
+      usleep(5000000);
+      double c1 = cpuSeconds(pid);
+      kill(pid, SIGTERM);
+      int status = 0;
+      while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      if (c0 < 0 || c1 < 0) throw ts::Error(demo + " ended before its idle seconds were measured");
+      st.SetIterationTime(c1 - c0);
+      st.counters["cpu_s_per_5_idle_s"] = c1 - c0;
+    }
+  } catch (const std::exception& e) {
+    st.SkipWithError(e.what());
+  }
+}
+
 constexpr double kExtraSeconds = 1.5;
 
 // Extra frames so that they take about kExtraSeconds (60 to 3000 frames),
@@ -315,6 +364,14 @@ int main(int argc, char** argv) {
         ->Iterations(1)
         ->ComputeStatistics("min", ts::bench::minimum);
   }
+  std::vector<std::string> demos;
+  for (const Figure& f : figs)
+    if (std::find(demos.begin(), demos.end(), f.demo) == demos.end()) demos.push_back(f.demo);
+  for (const std::string& d : demos)
+    benchmark::RegisterBenchmark((d + "/idle_cpu_5s").c_str(), benchIdleCpu, d)
+        ->Unit(benchmark::kMillisecond)
+        ->UseManualTime()
+        ->Iterations(1);
   for (const char* m : kLiveModes)
     benchmark::RegisterBenchmark((std::string("parallax_live/") + m + "/window_loop").c_str(), benchLiveLoop,
                                  std::string(m))
