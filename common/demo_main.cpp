@@ -1,5 +1,6 @@
-// common/demo_main.cpp — the main() of every demo: the same flags, the same
-// errors, the same three ways to run (window, OSMesa, EGL).
+// common/demo_main.cpp — runDemo(), which every demo's main() calls
+// (common/demo_entry.cpp): the same flags, the same errors, the same three
+// ways to run (window, OSMesa, EGL).
 #include <cstdio>
 #include <iostream>
 

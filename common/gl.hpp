@@ -8,7 +8,9 @@
 //   so one binary could not offer --backend osmesa|egl|window.  Instead no
 //   executable links a GL library: every GL function is a pointer fetched at
 //   run time from the backend that made the context (OSMesaGetProcAddress,
-//   eglGetProcAddress, glfwGetProcAddress).  A demo writes plain glBegin(...)
+//   eglGetProcAddress, glfwGetProcAddress).  The GL code of the suite (the
+//   Frame renderer common/render.cpp, the window, and the demos that draw
+//   passes of their own: VI.7's jitter, the parallax shaders) writes plain glBegin(...)
 //   — the macros below turn it into a call through the pointer.  Calling a GL
 //   function missing from TM_GL_FUNCTIONS fails at link time (undefined
 //   glFoo), never silently at run time: add the name to the list.
@@ -25,46 +27,35 @@
 // Every GL function the suite calls.  Keep alphabetical within a group.
 #define TM_GL_FUNCTIONS(X)                                                     \
   /* GL 1.x fixed function */                                                  \
-  X(glAccum) X(glBegin) X(glBindTexture) X(glBitmap) X(glBlendFunc)            \
-  X(glClear) X(glClearAccum) X(glClearColor) X(glClearDepth) X(glColor3f)      \
-  X(glColor4f) X(glColor4ub) X(glColorPointer) X(glCopyTexImage2D)             \
-  X(glCullFace) X(glDeleteTextures) X(glDepthFunc) X(glDepthMask)              \
-  X(glDisable) X(glDisableClientState) X(glDrawArrays) X(glDrawElements)       \
-  X(glEnable) X(glEnableClientState) X(glEnd) X(glFinish) X(glFlush)           \
-  X(glFrontFace) X(glFrustum) X(glGenTextures) X(glGetError)                   \
-  X(glGetFloatv) X(glGetIntegerv) X(glGetString) X(glGetTexImage)              \
-  X(glGetTexLevelParameteriv) X(glHint) X(glIsEnabled) X(glLineStipple)        \
+  X(glAccum) X(glBegin) X(glBindTexture) X(glBlendFunc) X(glClear)             \
+  X(glClearColor) X(glClearDepth) X(glColor4f) X(glColorPointer)               \
+  X(glDeleteTextures) X(glDepthFunc) X(glDisable) X(glDisableClientState)      \
+  X(glDrawElements) X(glEnable) X(glEnableClientState) X(glEnd) X(glFinish)    \
+  X(glFlush) X(glFrustum) X(glGenTextures) X(glGetError) X(glGetFloatv)        \
+  X(glGetIntegerv) X(glGetString) X(glGetTexImage) X(glHint) X(glIsEnabled)    \
   X(glLineWidth) X(glLoadIdentity) X(glLoadMatrixf) X(glMatrixMode)            \
-  X(glMultMatrixf) X(glNormal3f) X(glOrtho) X(glPixelStorei) X(glPointSize)    \
-  X(glPolygonMode) X(glPolygonOffset) X(glPopAttrib) X(glPopMatrix)            \
+  X(glOrtho) X(glPixelStorei) X(glPointSize) X(glPopAttrib) X(glPopMatrix)     \
   X(glPushAttrib) X(glPushMatrix) X(glReadBuffer) X(glReadPixels)              \
-  X(glRotatef) X(glScalef) X(glScissor) X(glShadeModel) X(glTexCoord2f)        \
-  X(glTexCoord4f) X(glTexCoordPointer) X(glTexEnvf) X(glTexEnvi)               \
-  X(glTexGenfv) X(glTexGeni) X(glTexImage2D) X(glTexParameterf)                \
-  X(glTexParameterfv) X(glTexParameteri) X(glTexSubImage2D) X(glTranslatef)    \
-  X(glVertex2f) X(glVertex3f) X(glVertex4f) X(glVertexPointer) X(glViewport)   \
-  X(glLightfv) X(glLightModeli) X(glMaterialfv) X(glNormalPointer)             \
-  X(glDrawBuffer) X(glColorMask) X(glStencilFunc) X(glStencilOp)               \
+  X(glScissor) X(glShadeModel) X(glTexCoord2f) X(glTexCoord4f)                 \
+  X(glTexCoordPointer) X(glTexEnvi) X(glTexImage2D) X(glTexParameterf)         \
+  X(glTexParameterfv) X(glTexParameteri) X(glVertex2f) X(glVertex3f)           \
+  X(glVertexPointer) X(glViewport) X(glDrawBuffer)                             \
   /* GL 1.3+ multitexture */                                                   \
-  X(glActiveTexture) X(glClientActiveTexture) X(glMultiTexCoord4f)             \
+  X(glActiveTexture)                                                           \
   /* GL 2.0+ shaders */                                                        \
   X(glAttachShader) X(glCompileShader) X(glCreateProgram) X(glCreateShader)    \
   X(glDeleteProgram) X(glDeleteShader) X(glGetProgramInfoLog)                  \
   X(glGetProgramiv) X(glGetShaderInfoLog) X(glGetShaderiv)                     \
   X(glGetUniformLocation) X(glLinkProgram) X(glShaderSource) X(glUniform1f)    \
-  X(glUniform1i) X(glUniform2f) X(glUniform3f) X(glUniform4f) X(glUniform4fv)  \
-  X(glUniformMatrix4fv) X(glUseProgram) X(glBindAttribLocation)                \
-  X(glVertexAttribPointer) X(glEnableVertexAttribArray)                        \
-  X(glDisableVertexAttribArray) X(glGetAttribLocation) X(glGenerateMipmap)     \
-  /* GL 3.0+ framebuffer objects, buffers, vertex arrays */                    \
+  X(glUniform1i) X(glUniform2f) X(glUniform3f) X(glUniform4f) X(glUseProgram)  \
+  X(glBindAttribLocation) X(glGetAttribLocation)                               \
+  /* GL 3.0+ framebuffer objects */                                            \
   X(glBindFramebuffer) X(glBindRenderbuffer) X(glCheckFramebufferStatus)       \
-  X(glDeleteFramebuffers) X(glDeleteRenderbuffers) X(glFramebufferRenderbuffer) \
-  X(glFramebufferTexture2D) X(glGenFramebuffers) X(glGenRenderbuffers)         \
-  X(glRenderbufferStorage) X(glBlitFramebuffer) X(glGenBuffers)                \
-  X(glBindBuffer) X(glBufferData) X(glDeleteBuffers) X(glGenVertexArrays)      \
-  X(glBindVertexArray) X(glDeleteVertexArrays) X(glGetStringi)                 \
+  X(glDeleteFramebuffers) X(glDeleteRenderbuffers)                             \
+  X(glFramebufferRenderbuffer) X(glFramebufferTexture2D) X(glGenFramebuffers)  \
+  X(glGenRenderbuffers) X(glRenderbufferStorage) X(glGetStringi)               \
   /* GL 4.3 / KHR_debug */                                                     \
-  X(glDebugMessageCallback) X(glDebugMessageControl)
+  X(glDebugMessageCallback)
 
 namespace ts::gl {
 #define TM_GL_DECLARE_POINTER(name) extern decltype(&::name) p_##name;
@@ -103,31 +94,22 @@ bool enableDebugOutput();
 #define glAccum ts::gl::p_glAccum
 #define glBegin ts::gl::p_glBegin
 #define glBindTexture ts::gl::p_glBindTexture
-#define glBitmap ts::gl::p_glBitmap
 #define glBlendFunc ts::gl::p_glBlendFunc
 #define glClear ts::gl::p_glClear
-#define glClearAccum ts::gl::p_glClearAccum
 #define glClearColor ts::gl::p_glClearColor
 #define glClearDepth ts::gl::p_glClearDepth
-#define glColor3f ts::gl::p_glColor3f
 #define glColor4f ts::gl::p_glColor4f
-#define glColor4ub ts::gl::p_glColor4ub
 #define glColorPointer ts::gl::p_glColorPointer
-#define glCopyTexImage2D ts::gl::p_glCopyTexImage2D
-#define glCullFace ts::gl::p_glCullFace
 #define glDeleteTextures ts::gl::p_glDeleteTextures
 #define glDepthFunc ts::gl::p_glDepthFunc
-#define glDepthMask ts::gl::p_glDepthMask
 #define glDisable ts::gl::p_glDisable
 #define glDisableClientState ts::gl::p_glDisableClientState
-#define glDrawArrays ts::gl::p_glDrawArrays
 #define glDrawElements ts::gl::p_glDrawElements
 #define glEnable ts::gl::p_glEnable
 #define glEnableClientState ts::gl::p_glEnableClientState
 #define glEnd ts::gl::p_glEnd
 #define glFinish ts::gl::p_glFinish
 #define glFlush ts::gl::p_glFlush
-#define glFrontFace ts::gl::p_glFrontFace
 #define glFrustum ts::gl::p_glFrustum
 #define glGenTextures ts::gl::p_glGenTextures
 #define glGetError ts::gl::p_glGetError
@@ -135,60 +117,37 @@ bool enableDebugOutput();
 #define glGetIntegerv ts::gl::p_glGetIntegerv
 #define glGetString ts::gl::p_glGetString
 #define glGetTexImage ts::gl::p_glGetTexImage
-#define glGetTexLevelParameteriv ts::gl::p_glGetTexLevelParameteriv
 #define glHint ts::gl::p_glHint
 #define glIsEnabled ts::gl::p_glIsEnabled
-#define glLineStipple ts::gl::p_glLineStipple
 #define glLineWidth ts::gl::p_glLineWidth
 #define glLoadIdentity ts::gl::p_glLoadIdentity
 #define glLoadMatrixf ts::gl::p_glLoadMatrixf
 #define glMatrixMode ts::gl::p_glMatrixMode
-#define glMultMatrixf ts::gl::p_glMultMatrixf
-#define glNormal3f ts::gl::p_glNormal3f
 #define glOrtho ts::gl::p_glOrtho
 #define glPixelStorei ts::gl::p_glPixelStorei
 #define glPointSize ts::gl::p_glPointSize
-#define glPolygonMode ts::gl::p_glPolygonMode
-#define glPolygonOffset ts::gl::p_glPolygonOffset
 #define glPopAttrib ts::gl::p_glPopAttrib
 #define glPopMatrix ts::gl::p_glPopMatrix
 #define glPushAttrib ts::gl::p_glPushAttrib
 #define glPushMatrix ts::gl::p_glPushMatrix
 #define glReadBuffer ts::gl::p_glReadBuffer
 #define glReadPixels ts::gl::p_glReadPixels
-#define glRotatef ts::gl::p_glRotatef
-#define glScalef ts::gl::p_glScalef
 #define glScissor ts::gl::p_glScissor
 #define glShadeModel ts::gl::p_glShadeModel
 #define glTexCoord2f ts::gl::p_glTexCoord2f
 #define glTexCoord4f ts::gl::p_glTexCoord4f
 #define glTexCoordPointer ts::gl::p_glTexCoordPointer
-#define glTexEnvf ts::gl::p_glTexEnvf
 #define glTexEnvi ts::gl::p_glTexEnvi
-#define glTexGenfv ts::gl::p_glTexGenfv
-#define glTexGeni ts::gl::p_glTexGeni
 #define glTexImage2D ts::gl::p_glTexImage2D
 #define glTexParameterf ts::gl::p_glTexParameterf
 #define glTexParameterfv ts::gl::p_glTexParameterfv
 #define glTexParameteri ts::gl::p_glTexParameteri
-#define glTexSubImage2D ts::gl::p_glTexSubImage2D
-#define glTranslatef ts::gl::p_glTranslatef
 #define glVertex2f ts::gl::p_glVertex2f
 #define glVertex3f ts::gl::p_glVertex3f
-#define glVertex4f ts::gl::p_glVertex4f
 #define glVertexPointer ts::gl::p_glVertexPointer
 #define glViewport ts::gl::p_glViewport
-#define glLightfv ts::gl::p_glLightfv
-#define glLightModeli ts::gl::p_glLightModeli
-#define glMaterialfv ts::gl::p_glMaterialfv
-#define glNormalPointer ts::gl::p_glNormalPointer
 #define glDrawBuffer ts::gl::p_glDrawBuffer
-#define glColorMask ts::gl::p_glColorMask
-#define glStencilFunc ts::gl::p_glStencilFunc
-#define glStencilOp ts::gl::p_glStencilOp
 #define glActiveTexture ts::gl::p_glActiveTexture
-#define glClientActiveTexture ts::gl::p_glClientActiveTexture
-#define glMultiTexCoord4f ts::gl::p_glMultiTexCoord4f
 #define glAttachShader ts::gl::p_glAttachShader
 #define glCompileShader ts::gl::p_glCompileShader
 #define glCreateProgram ts::gl::p_glCreateProgram
@@ -207,15 +166,9 @@ bool enableDebugOutput();
 #define glUniform2f ts::gl::p_glUniform2f
 #define glUniform3f ts::gl::p_glUniform3f
 #define glUniform4f ts::gl::p_glUniform4f
-#define glUniform4fv ts::gl::p_glUniform4fv
-#define glUniformMatrix4fv ts::gl::p_glUniformMatrix4fv
 #define glUseProgram ts::gl::p_glUseProgram
 #define glBindAttribLocation ts::gl::p_glBindAttribLocation
-#define glVertexAttribPointer ts::gl::p_glVertexAttribPointer
-#define glEnableVertexAttribArray ts::gl::p_glEnableVertexAttribArray
-#define glDisableVertexAttribArray ts::gl::p_glDisableVertexAttribArray
 #define glGetAttribLocation ts::gl::p_glGetAttribLocation
-#define glGenerateMipmap ts::gl::p_glGenerateMipmap
 #define glBindFramebuffer ts::gl::p_glBindFramebuffer
 #define glBindRenderbuffer ts::gl::p_glBindRenderbuffer
 #define glCheckFramebufferStatus ts::gl::p_glCheckFramebufferStatus
@@ -226,14 +179,5 @@ bool enableDebugOutput();
 #define glGenFramebuffers ts::gl::p_glGenFramebuffers
 #define glGenRenderbuffers ts::gl::p_glGenRenderbuffers
 #define glRenderbufferStorage ts::gl::p_glRenderbufferStorage
-#define glBlitFramebuffer ts::gl::p_glBlitFramebuffer
-#define glGenBuffers ts::gl::p_glGenBuffers
-#define glBindBuffer ts::gl::p_glBindBuffer
-#define glBufferData ts::gl::p_glBufferData
-#define glDeleteBuffers ts::gl::p_glDeleteBuffers
-#define glGenVertexArrays ts::gl::p_glGenVertexArrays
-#define glBindVertexArray ts::gl::p_glBindVertexArray
-#define glDeleteVertexArrays ts::gl::p_glDeleteVertexArrays
 #define glGetStringi ts::gl::p_glGetStringi
 #define glDebugMessageCallback ts::gl::p_glDebugMessageCallback
-#define glDebugMessageControl ts::gl::p_glDebugMessageControl

@@ -112,6 +112,32 @@ inline double predictedKinkDeg(const Corners& st, Diagonal d) {
   return std::fmax(angleDeg(s.first.gradient(0), s.second.gradient(0)),
                    angleDeg(s.first.gradient(1), s.second.gradient(1)));
 }
+// The same angle for any map of the square (s,t) = map(x,y), found the way
+// the render is measured: the gradients of s and of t just either side of
+// the diagonal, by one-sided differences, at points along it; the largest
+// angle between the two sides.  For the affine split it is predictedKinkDeg;
+// for a map smooth across the diagonal (bilinear, projective) it is 0 up to
+// the differences' error (about 1e-4 degrees).
+template <typename Map>
+double kinkAcrossDiagonalDeg(const Map& map, Diagonal d) {
+  const glm::dvec2 a = d == Diagonal::TopLeftBottomRight ? glm::dvec2(0, 1) : glm::dvec2(0, 0);
+  const glm::dvec2 b = d == Diagonal::TopLeftBottomRight ? glm::dvec2(1, 0) : glm::dvec2(1, 1);
+  const glm::dvec2 along = glm::normalize(b - a), across(-along.y, along.x);
+  const double h = 1e-6, off = 1e-6;
+  double worst = 0;
+  for (int k = 1; k < 8; ++k) {
+    glm::dvec2 p = a + (b - a) * (k / 8.0);
+    glm::dvec2 g[2][2];  // [side][s or t]
+    for (int side = 0; side < 2; ++side) {
+      glm::dvec2 q = p + across * (side ? off : -off);
+      glm::dvec2 f0 = map(q), fa = map(q + along * h), fc = map(q + across * (side ? h : -h));
+      glm::dvec2 dAlong = (fa - f0) / h, dAcross = (fc - f0) / (side ? h : -h);
+      for (int c = 0; c < 2; ++c) g[side][c] = along * dAlong[c] + across * dAcross[c];  // back to (x, y)
+    }
+    worst = std::fmax(worst, std::fmax(angleDeg(g[0][0], g[1][0]), angleDeg(g[0][1], g[1][1])));
+  }
+  return worst;
+}
 // Largest distance, over the square, between where the two triangles' maps
 // put the same point, in texture units: how far apart the two halves would
 // drift if each were extended across the diagonal.

@@ -257,8 +257,10 @@ TEST(VI1, MeasuredKinkMatchesThePrediction) {
   EXPECT_NEAR(value(m, "kink_deg[affine_bl_tr]"), value(m, "kink_predicted_deg[affine_bl_tr]"), 0.2);
   EXPECT_LT(value(m, "kink_deg[bilinear]"), 0.5);
   EXPECT_LT(value(m, "kink_deg[projective]"), 0.5);
-  EXPECT_EQ(value(m, "kink_predicted_deg[bilinear]"), 0.0);
-  EXPECT_EQ(value(m, "kink_predicted_deg[projective]"), 0.0);
+  // Predicted from the analytic maps (not a literal): smooth across the
+  // diagonal, so no bend beyond the one-sided differences' error.
+  EXPECT_LT(value(m, "kink_predicted_deg[bilinear]"), 1e-2);
+  EXPECT_LT(value(m, "kink_predicted_deg[projective]"), 1e-2);
   for (const char* v : {"affine_tl_br", "affine_bl_tr", "bilinear", "projective"})
     EXPECT_LE(value(m, std::string("texel_error_max[") + v + "]"), 1.0) << v;
   // Far apart the two triangles' maps put the square's corner (0,0):
