@@ -42,6 +42,8 @@
   X(glVertexPointer) X(glViewport) X(glDrawBuffer)                             \
   /* GL 1.3+ multitexture */                                                   \
   X(glActiveTexture)                                                           \
+  /* GL 1.4 */                                                                 \
+  X(glBlendFuncSeparate)                                                       \
   /* GL 2.0+ shaders */                                                        \
   X(glAttachShader) X(glCompileShader) X(glCreateProgram) X(glCreateShader)    \
   X(glDeleteProgram) X(glDeleteShader) X(glGetProgramInfoLog)                  \
@@ -95,6 +97,7 @@ bool enableDebugOutput();
 #define glBegin ts::gl::p_glBegin
 #define glBindTexture ts::gl::p_glBindTexture
 #define glBlendFunc ts::gl::p_glBlendFunc
+#define glBlendFuncSeparate ts::gl::p_glBlendFuncSeparate
 #define glClear ts::gl::p_glClear
 #define glClearColor ts::gl::p_glClearColor
 #define glClearDepth ts::gl::p_glClearDepth

@@ -97,7 +97,7 @@ Raw toRaw(T v) {
 // A leading '?' marks a query: it reads state and draws nothing.
 const std::map<std::string, std::string>& hints() {
   static const std::map<std::string, std::string> h = {
-      {"glAccum", "e"}, {"glBegin", "P"}, {"glBindTexture", "eu"}, {"glBlendFunc", "FF"}, {"glClear", "b"},
+      {"glAccum", "e"}, {"glBegin", "P"}, {"glBindTexture", "eu"}, {"glBlendFunc", "FF"}, {"glBlendFuncSeparate", "FFFF"}, {"glClear", "b"},
       {"glCopyTexImage2D", "eie"}, {"glCullFace", "e"}, {"glDeleteTextures", "in"}, {"glDepthFunc", "e"},
       {"glDepthMask", "B"}, {"glDisable", "e"}, {"glDisableClientState", "e"}, {"glDrawArrays", "P"},
       {"glDrawElements", "Pie-"}, {"glEnable", "e"}, {"glEnableClientState", "e"}, {"glFrontFace", "e"},

@@ -288,7 +288,9 @@ void Renderer::draw(const Frame& f, bool labels) {
       }
       if (b.blend) {
         glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        // Colour blends over what is there; alpha stays the clear's (opaque):
+        // a figure must not let the page show through where it blends.
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
       } else {
         glDisable(GL_BLEND);
       }
@@ -331,7 +333,7 @@ void Renderer::drawLabels(const Frame& f) {
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
   glEnable(GL_BLEND);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // alpha stays opaque
   for (const Label& l : f.labels) {
     float w = text::width(l.text, l.scale), h = text::height(l.scale);
     float x = l.align == Align::Left ? l.x : l.align == Align::Center ? l.x - w / 2 : l.x - w;

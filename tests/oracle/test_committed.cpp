@@ -55,3 +55,24 @@ TEST(CommittedFigures, EachPngIsLegalForItsSidecar) {
   if (checked == 0) GTEST_SKIP() << "no PNG with a sidecar in " << dir.string() << " (scripts/figures.sh makes them)";
 }
 }  // namespace
+
+namespace {
+// Claim: book figures are opaque.  Blending (seam patches, label boxes) must
+// not blend into the framebuffer's alpha: a viewer would show the page
+// through a figure (vi4_seam_patch once had 27,051 pixels of alpha 192).
+TEST(CommittedFigures, AreOpaque) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::path(TS_SOURCE_DIR) / "book_figures";
+  int figures = 0;
+  if (fs::is_directory(dir))
+    for (const auto& e : fs::directory_iterator(dir)) {
+      if (e.path().extension() != ".png") continue;
+      ts::Image img = ts::readPng(e.path().string());
+      long translucent = 0;
+      for (size_t i = 3; i < img.pixels.size(); i += 4) translucent += img.pixels[i] != 255;
+      EXPECT_EQ(translucent, 0) << e.path().filename().string() << ": pixels with alpha below 255";
+      ++figures;
+    }
+  if (figures == 0) GTEST_SKIP() << "no PNG in " << dir.string();
+}
+}  // namespace
