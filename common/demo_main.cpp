@@ -86,6 +86,7 @@ static int renderOffscreen(Scene& scene, Options& opts, const CommonFlags& f, Ba
     info.command = figureCommand(scene.id(), f.png, w, h, opts.stateFlags());
     info.state = opts.state();
     info.measurements = out.measurements;
+    info.renderer = gl::rendererString() + " | " + gl::versionString();
     writeFileAtomic(f.json, sidecarJson(out.frame, info));
   }
   if (!f.quiet) {

@@ -96,6 +96,16 @@ struct Label {
   glm::vec4 background{0.0f};  // alpha 0 = no box
 };
 
+// The fixed state common/render.cpp draws every Frame with, written into the
+// sidecar so that a reader knows it without reading the renderer.
+struct FixedState {
+  static constexpr GLenum blendSrc = GL_SRC_ALPHA, blendDst = GL_ONE_MINUS_SRC_ALPHA;  // colour
+  static constexpr GLenum blendSrcAlpha = GL_ZERO, blendDstAlpha = GL_ONE;            // alpha: stays opaque
+  static constexpr GLenum depthFunc = GL_LESS;
+  static constexpr GLenum shadeModel = GL_SMOOTH;
+  static constexpr bool cullFace = false, lighting = false;
+};
+
 struct Frame {
   int width = 0, height = 0;
   glm::vec4 clearColor{0.0f, 0.0f, 0.0f, 1.0f};

@@ -141,7 +141,8 @@ int run(int argc, char** argv) {
     flags.insert(flags.end(), e.spec.flags.begin(), e.spec.flags.end());
     e.command = ts::figureCommand(e.demo, png, e.spec.width, e.spec.height, flags);
     e.measurements = got.measurements;
-    ts::SidecarInfo info{e.spec.id, e.spec.bookNumber, e.spec.caption, e.demo, e.command, opts.state(), got.measurements};
+    ts::SidecarInfo info{e.spec.id, e.spec.bookNumber, e.spec.caption, e.demo, e.command, opts.state(), got.measurements,
+                         ts::gl::rendererString() + " | " + ts::gl::versionString()};
     ts::writePng(png, got.image);
     ts::writeFileAtomic(json, ts::sidecarJson(got.frame, info));
     ts::writeFileAtomic(listing, ts::glListingFile(got, ts::stateCommand(e.demo, e.spec.width, e.spec.height, e.spec.flags)));

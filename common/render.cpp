@@ -239,9 +239,10 @@ void Renderer::draw(const Frame& f, bool labels) {
   glClearColor(f.clearColor.r, f.clearColor.g, f.clearColor.b, f.clearColor.a);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  static_assert(!FixedState::lighting && !FixedState::cullFace, "the sidecar says what is drawn with");
   glDisable(GL_LIGHTING);
   glDisable(GL_CULL_FACE);
-  glShadeModel(GL_SMOOTH);
+  glShadeModel(FixedState::shadeModel);
   glHint(GL_PERSPECTIVE_CORRECTION_HINT, f.perspectiveHint);
   for (const Panel& p : f.panels) {
     // The frame's rows count from the top; GL's from the bottom.
@@ -259,7 +260,7 @@ void Renderer::draw(const Frame& f, bool labels) {
     glLoadMatrixf(glm::value_ptr(p.modelview));
     if (p.depthTest) {
       glEnable(GL_DEPTH_TEST);
-      glDepthFunc(GL_LESS);
+      glDepthFunc(FixedState::depthFunc);
     } else {
       glDisable(GL_DEPTH_TEST);
     }
@@ -290,7 +291,7 @@ void Renderer::draw(const Frame& f, bool labels) {
         glEnable(GL_BLEND);
         // Colour blends over what is there; alpha stays the clear's (opaque):
         // a figure must not let the page show through where it blends.
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
       } else {
         glDisable(GL_BLEND);
       }
@@ -333,7 +334,7 @@ void Renderer::drawLabels(const Frame& f) {
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
   glEnable(GL_BLEND);
-  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // alpha stays opaque
+  glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);  // alpha stays opaque
   for (const Label& l : f.labels) {
     float w = text::width(l.text, l.scale), h = text::height(l.scale);
     float x = l.align == Align::Left ? l.x : l.align == Align::Center ? l.x - w / 2 : l.x - w;

@@ -66,6 +66,12 @@ std::string glEnumName(GLenum e) {
     case GL_MODULATE: return "GL_MODULATE";
     case GL_DECAL: return "GL_DECAL";
     case GL_BLEND: return "GL_BLEND";
+    case GL_ZERO: return "GL_ZERO";
+    case GL_ONE: return "GL_ONE";
+    case GL_SRC_ALPHA: return "GL_SRC_ALPHA";
+    case GL_ONE_MINUS_SRC_ALPHA: return "GL_ONE_MINUS_SRC_ALPHA";
+    case GL_LESS: return "GL_LESS";
+    case GL_SMOOTH: return "GL_SMOOTH";
     default: {
       char b[16];
       std::snprintf(b, sizeof b, "0x%04X", e);
@@ -92,7 +98,14 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
   o << "},\n";
   o << "  \"conventions\": \"matrices column-major as glLoadMatrixf takes them; viewports in pixels from the "
        "top-left of the image; texture row 0 is t = 0; vertex tex is (s,t,r,q)\",\n";
+  if (!info.renderer.empty()) o << "  \"renderer\": " << quote(info.renderer) << ",\n";
   o << "  \"size\": [" << f.width << "," << f.height << "],\n";
+  o << "  \"fixed_state\": {\"blend_func\": [" << quote(glEnumName(FixedState::blendSrc)) << ", "
+    << quote(glEnumName(FixedState::blendDst)) << ", " << quote(glEnumName(FixedState::blendSrcAlpha)) << ", "
+    << quote(glEnumName(FixedState::blendDstAlpha)) << "], \"depth_func\": " << quote(glEnumName(FixedState::depthFunc))
+    << ", \"shade_model\": " << quote(glEnumName(FixedState::shadeModel))
+    << ", \"cull_face\": " << (FixedState::cullFace ? "true" : "false")
+    << ", \"lighting\": " << (FixedState::lighting ? "true" : "false") << "},\n";
   o << "  \"clear_color\": " << vec(f.clearColor) << ",\n";
   o << "  \"perspective_correction_hint\": " << quote(f.perspectiveHint == GL_FASTEST ? "GL_FASTEST" : f.perspectiveHint == GL_NICEST ? "GL_NICEST" : "GL_DONT_CARE") << ",\n";
   o << "  \"textures\": [\n";
@@ -145,7 +158,9 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
   o << "  \"labels\": [";
   for (size_t i = 0; i < f.labels.size(); ++i)
     o << (i ? ",\n    " : "\n    ") << "{\"x\": " << num(f.labels[i].x) << ", \"y\": " << num(f.labels[i].y)
-      << ", \"text\": " << quote(f.labels[i].text) << "}";
+      << ", \"text\": " << quote(f.labels[i].text) << ", \"scale\": " << f.labels[i].scale << ", \"align\": \""
+      << (f.labels[i].align == Align::Left ? "left" : f.labels[i].align == Align::Center ? "center" : "right")
+      << "\", \"color\": " << vec(f.labels[i].color) << ", \"background\": " << vec(f.labels[i].background) << "}";
   o << "]\n}\n";
   return o.str();
 }

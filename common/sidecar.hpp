@@ -15,6 +15,7 @@ struct SidecarInfo {
   std::string figureId, bookNumber, caption, demo, command;
   std::vector<std::pair<std::string, std::string>> state;
   Measurements measurements;
+  std::string renderer;  // GL_RENDERER and GL_VERSION of the context that drew it ("" = not written)
 };
 // Deterministic: fixed key order, floats with 9 significant digits, no
 // renderer strings or times (the file must not change between machines).

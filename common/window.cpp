@@ -104,6 +104,7 @@ void saveState(Scene& scene, const Options& opts, const Frame& f, const Image& w
   info.caption = scene.title();
   info.command = figureCommand(scene.id(), base + ".png", f.width, f.height, flags);
   info.state = opts.state();
+  info.renderer = gl::rendererString() + " | " + gl::versionString();
   writePng(base + ".png", picture);
   writeFileAtomic(base + ".json", sidecarJson(f, info));
   std::printf("saved %s.png and %s.json; remake them with:\n  %s\n", base.c_str(), base.c_str(), info.command.c_str());

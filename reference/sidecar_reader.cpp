@@ -173,6 +173,29 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
     }
   }
 
+  if (const Value* r = doc.find("renderer")) out.renderer = text(*r, "renderer");
+  // The state every panel is drawn with: the reference models exactly this,
+  // so a file that says otherwise is refused rather than misread.
+  if (const Value* fs = doc.find("fixed_state")) {
+    auto expect = [&](const char* key, const std::string& want) {
+      std::string got = text(member(*fs, key, "fixed_state"), std::string("fixed_state.") + key);
+      if (got != want) fail(std::string("fixed_state.") + key, "'" + got + "', the reference models " + want + " only");
+    };
+    const Value& bf = member(*fs, "blend_func", "fixed_state");
+    std::string blend;
+    for (size_t k = 0; k < bf.asArray().size(); ++k) blend += (k ? " " : "") + text(bf.array[k], "fixed_state.blend_func");
+    if (blend != "GL_SRC_ALPHA GL_ONE_MINUS_SRC_ALPHA GL_ZERO GL_ONE")
+      fail("fixed_state.blend_func", "'" + blend + "', the reference models GL_SRC_ALPHA GL_ONE_MINUS_SRC_ALPHA GL_ZERO GL_ONE only");
+    expect("depth_func", "GL_LESS");
+    expect("shade_model", "GL_SMOOTH");
+    if (boolean(member(*fs, "cull_face", "fixed_state"), "fixed_state.cull_face") ||
+        boolean(member(*fs, "lighting", "fixed_state"), "fixed_state.lighting"))
+      fail("fixed_state", "face culling and lighting are not modelled by the reference");
+    out.fixedStateKnown = true;
+  } else {
+    out.missing.push_back("fixed_state");
+  }
+
   const Value& textures = member(doc, "textures", "document");
   for (size_t i = 0; i < textures.asArray().size(); ++i) {
     const Value& t = textures.array[i];

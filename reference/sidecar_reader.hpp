@@ -28,6 +28,8 @@ struct SidecarScene {
   // exact); false: a verifier should exempt a conservative box around labels.
   bool labelGeometryKnown = true;
   std::vector<std::string> missing;  // keys the file lacked, e.g. "labels[0].scale"
+  std::string renderer;              // the context that drew the figure ("" when not recorded)
+  bool fixedStateKnown = false;      // the file says what blending, depth test, shading it used
 };
 
 SidecarScene readSidecar(const std::string& jsonText);

@@ -190,14 +190,48 @@ TEST(Sidecar, RoundTripOfAFrame) {
   EXPECT_EQ(g.labels[0].text, f.labels[0].text);
   EXPECT_EQ(g.labels[0].x, f.labels[0].x);
   EXPECT_EQ(g.labels[0].y, f.labels[0].y);
+  EXPECT_EQ(g.labels[0].scale, f.labels[0].scale);
+  EXPECT_EQ(g.labels[0].align, f.labels[0].align);
+  EXPECT_EQ(g.labels[0].color, f.labels[0].color);
+  EXPECT_EQ(g.labels[0].background, f.labels[0].background);
+  for (size_t pi = 0; pi < f.panels.size(); ++pi) {
+    EXPECT_EQ(g.panels[pi].clear, f.panels[pi].clear);
+    EXPECT_EQ(g.panels[pi].clearColor, f.panels[pi].clearColor);
+  }
 }
 
-TEST(Sidecar, ReportsWhatItDoesNotRecord) {
-  // The writer leaves out label scale and alignment and a panel's own clear;
-  // the reader says so, so a verifier can be conservative about them.
-  ref::SidecarScene sc = ref::readSidecar(ts::sidecarJson(sampleFrame(), {}));
-  EXPECT_FALSE(sc.labelGeometryKnown);
-  EXPECT_FALSE(sc.missing.empty());
+TEST(Sidecar, HoldsEverythingAndSaysWhatIsMissing) {
+  // The writer records every label's geometry and look, each panel's clear,
+  // point sizes and the fixed state: the reader finds nothing missing.
+  ts::SidecarInfo info;
+  info.renderer = "llvmpipe | 4.5";
+  ref::SidecarScene sc = ref::readSidecar(ts::sidecarJson(sampleFrame(), info));
+  EXPECT_TRUE(sc.labelGeometryKnown);
+  EXPECT_TRUE(sc.fixedStateKnown);
+  EXPECT_TRUE(sc.missing.empty()) << sc.missing.front();
+  EXPECT_EQ(sc.renderer, "llvmpipe | 4.5");
+  // A file without them (an older sidecar) is read, and each gap is named.
+  std::string old = ts::sidecarJson(sampleFrame(), {});
+  size_t at = old.find("\"fixed_state\"");
+  ASSERT_NE(at, std::string::npos);
+  old.erase(at, old.find('\n', at) + 1 - at);
+  for (const char* key : {", \"scale\": ", ", \"align\": "}) {
+    size_t k = old.find(key);
+    ASSERT_NE(k, std::string::npos) << key;
+    old.erase(k, old.find(',', k + 2) - k);
+  }
+  ref::SidecarScene gaps = ref::readSidecar(old);
+  EXPECT_FALSE(gaps.labelGeometryKnown);
+  EXPECT_FALSE(gaps.fixedStateKnown);
+  std::string all;
+  for (const std::string& m : gaps.missing) all += m + " ";
+  EXPECT_NE(all.find("fixed_state"), std::string::npos) << all;
+  EXPECT_NE(all.find("labels[0].scale"), std::string::npos) << all;
+  EXPECT_NE(all.find("labels[0].align"), std::string::npos) << all;
+  // And a fixed state the reference does not model is refused, by name.
+  std::string lit = ts::sidecarJson(sampleFrame(), {});
+  lit.replace(lit.find("\"lighting\": false"), 18, "\"lighting\": true");
+  EXPECT_THROW(ref::readSidecar(lit), ts::Error);
 }
 
 TEST(Sidecar, UnknownTextureNameIsAClearError) {
