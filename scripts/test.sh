@@ -5,7 +5,8 @@
 #                                 every test on llvmpipe through OSMesa, then
 #                                 the GL tests on Mesa's second rasterizer
 #                                 (softpipe) and on the EGL surfaceless backend.
-#   bash scripts/test.sh --full   the full stages: the whole suite built with
+#   bash scripts/test.sh --full   the full stages: the benchmark programs compiled
+#                                 (not run: scripts/bench.sh runs them), the whole suite built with
 #                                 AddressSanitizer + UndefinedBehaviorSanitizer
 #                                 (build-asan/; the Xvfb window tests in a
 #                                 second step with leak checking off: GLX's
@@ -52,6 +53,10 @@ if [ "$level" = quick ]; then
   stage "GL tests on softpipe" ctest --preset softpipe "$@"
   stage "GL tests on the EGL backend" ctest --preset egl "$@"
 else
+  # The quick level builds what its tests run; the benchmark programs are
+  # compiled here (into build/, reusing its objects), so they cannot rot.
+  stage "compile the benchmarks (build/, not run)" bash -c 'cmake --preset default -DTM_BUILD_BENCHMARKS=ON >/dev/null &&
+    cmake --build --preset default --target bench_figures bench_window bench_jitter bench_parallax'
   stage "configure + build under ASan + UBSan" bash -c 'cmake --preset asan >/dev/null && cmake --build --preset asan'
   stage "the suite under ASan + UBSan" ctest --preset asan "$@"
   stage "window tests under ASan + UBSan" ctest --preset asan-window "$@"
