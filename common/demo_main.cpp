@@ -51,7 +51,7 @@ static int renderOffscreen(Scene& scene, Options& opts, const CommonFlags& f, Ba
   if (!f.png.empty()) checkWritable(f.png);
   if (!f.json.empty()) checkWritable(f.json);
   if (!f.glListing.empty()) checkWritable(f.glListing);
-  if (!f.exportC.empty()) checkWritable(f.exportC);
+  if (!f.exportC.empty()) checkExportWritable(f.exportC);
   ContextOptions co;
   co.width = w;
   co.height = h;
@@ -121,9 +121,9 @@ int runDemo(const std::string& id, int argc, char** argv) {
     int w = f.width ? f.width : scene->defaultWidth();
     int h = f.height ? f.height : scene->defaultHeight();
     if (!f.png.empty() || !f.glListing.empty() || !f.exportC.empty()) {
-      if (b == Backend::Window) throw Error("--png and --gl-listing render offscreen: use --backend osmesa, egl or auto");
+      if (b == Backend::Window) throw Error("--png, --gl-listing and --export-c render offscreen: use --backend osmesa, egl or auto");
       if (!f.screenshot.empty() || f.frames)
-        throw Error("--screenshot and --frames are for the window, not --png or --gl-listing");
+        throw Error("--screenshot and --frames are for the window, not --png, --gl-listing or --export-c");
       return renderOffscreen(*scene, opts, f, b, w, h);
     }
     if (!f.json.empty()) throw Error("--json needs --png FILE");

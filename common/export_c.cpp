@@ -5,6 +5,7 @@
 #include <set>
 
 #include "error.hpp"
+#include "figure.hpp"
 #include "gl_listing.hpp"
 #include "image.hpp"
 
@@ -60,28 +61,37 @@ struct Generator {
   long long program = 0;
   std::string lastBind;  // the last glBindTexture statement, for init's uploads
   bool bindInInit = false;
-  bool panelSeen = false;
 
   std::string text(const gl::Call& c) { return "  " + gl::formatCall(c, true); }
 
-  // "/* panel "id" */" before the viewport of a frame's panel.
-  void commentViewport(const gl::Call& c) {
-    if (c.args.size() != 4) return;
-    long long x = c.args[0].i, y = c.args[1].i, w = c.args[2].i, h = c.args[3].i;
-    for (const Panel& p : frame.panels) {
-      if (p.viewport.x == x && frame.height - p.viewport.y - p.viewport.h == y && p.viewport.w == w &&
-          p.viewport.h == h) {
-        display.push_back("");
-        display.push_back("  /* panel \"" + commentSafe(p.id) + "\" */");
-        panelSeen = true;
-        return;
-      }
+  // Comments from the Frame: the renderer sets one viewport for the whole
+  // frame, then one per panel in the Frame's order, then one for the labels;
+  // inside a panel each batch starts by enabling or disabling GL_TEXTURE_2D.
+  // Counting them (rather than matching viewport numbers) names panels that
+  // share a rectangle correctly.
+  int viewports = 0, panel = -1;
+  size_t batch = 0;
+  void commentViewport() {
+    int k = viewports++;
+    if (k == 0) return;  // run() opens display() with the whole frame's comment
+    display.push_back("");
+    if (size_t(k) <= frame.panels.size()) {
+      panel = k - 1;
+      batch = 0;
+      display.push_back("  /* panel \"" + commentSafe(frame.panels[size_t(panel)].id) + "\" */");
+    } else {
+      panel = -1;
+      display.push_back("  /* the labels: quads of the font texture, in pixels */");
     }
-    if (x == 0 && y == 0 && w == frame.width && h == frame.height) {
-      display.push_back("");
-      display.push_back(panelSeen ? "  /* the labels: quads of the font texture, in pixels */"
-                                  : "  /* the whole frame */");
-    }
+  }
+  void commentBatch(const gl::Call& c) {
+    if (panel < 0 || c.args.empty() || c.args[0].i != GL_TEXTURE_2D) return;
+    const Panel& p = frame.panels[size_t(panel)];
+    if (batch >= p.batches.size()) return;
+    const std::string& role = p.batches[batch].role;
+    display.push_back("  /* panel \"" + commentSafe(p.id) + "\": batch " +
+                      (role.empty() ? std::to_string(batch + 1) : "\"" + commentSafe(role) + "\"") + " */");
+    ++batch;
   }
 
   // glBegin ... glEnd: verbatim when short or irregular; else the vertex
@@ -143,6 +153,7 @@ struct Generator {
   }
 
   void run(const std::vector<gl::Call>& calls) {
+    display.push_back("  /* the whole frame: clear, and the state every panel shares */");
     for (size_t i = 0; i < calls.size(); ++i) {
       gl::Call c = calls[i];
       if (c.query) continue;
@@ -226,7 +237,8 @@ struct Generator {
         auto loc = locationOf.find({program, c.args[0].i});
         if (loc != locationOf.end()) c.args[0] = code("location[" + std::to_string(loc->second) + "]");
       }
-      if (is(c, "glViewport")) commentViewport(c);
+      if (is(c, "glViewport")) commentViewport();
+      if (is(c, "glEnable") || is(c, "glDisable")) commentBatch(c);
       if (is(c, "glBegin")) {
         size_t end = i + 1;
         while (end < calls.size() && !is(calls[end], "glEnd")) ++end;
@@ -242,7 +254,7 @@ struct Generator {
 }  // namespace
 
 ExportedProgram exportC(const std::vector<gl::Call>& recorded, const Frame& frame, const ExportInfo& info) {
-  Generator g{frame, {}, {}, {}, {}, {}, 0, 0, 0, 0, {}, 0, "", false, false};
+  Generator g{frame, {}, {}, {}, {}, {}, 0, 0, 0, 0, {}, 0, "", false, 0, -1, 0};
   std::vector<gl::Call> calls = numberObjects(recorded);
   g.run(calls);
   bool accum = false;
@@ -356,6 +368,11 @@ void nameExport(const std::string& path, ExportInfo* info) {
   };
   info->sourceName = base(path);
   info->texelsName = base(texelsPath(path));
+}
+
+void checkExportWritable(const std::string& path) {
+  checkWritable(path);
+  checkWritable(texelsPath(path));
 }
 
 void writeExport(const std::string& path, const ExportedProgram& p) {

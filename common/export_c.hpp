@@ -37,6 +37,9 @@ ExportedProgram exportC(const std::vector<gl::Call>& recorded, const Frame& fram
 // The names a program written to `path` uses: FILE.c and FILE.texels
 // beside it (FILE without its ".c").
 void nameExport(const std::string& path, ExportInfo* info);
+// Throws ts::Error (exit 2, one line) when FILE.c or FILE.texels beside it
+// cannot be written: said before anything renders or any file is written.
+void checkExportWritable(const std::string& path);
 // Writes the program to `path` and its texels beside it (atomically).
 void writeExport(const std::string& path, const ExportedProgram& program);
 }  // namespace ts

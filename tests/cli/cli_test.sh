@@ -55,7 +55,7 @@ expect_usage_error() {
   else pass; fi
 }
 
-mkdir -p "$T/inputs/adir"
+mkdir -p "$T/inputs/adir" "$T/inputs/adir.texels"
 printf 'this is not a PNG\n' >"$T/inputs/text.png"
 PNG_ARGS=(--backend "$BACKEND" --png out.png)
 
@@ -76,6 +76,11 @@ expect_usage_error json_without_png --json out.json
 expect_usage_error listing_missing_dir --backend "$BACKEND" --gl-listing nosuch/gl.txt
 expect_usage_error listing_is_a_dir --backend "$BACKEND" --gl-listing adir
 expect_usage_error listing_in_a_window --backend window --gl-listing gl.txt
+expect_usage_error export_missing_dir --backend "$BACKEND" --export-c nosuch/fig.c
+expect_usage_error export_is_a_dir --backend "$BACKEND" --export-c adir
+expect_usage_error export_texels_is_a_dir --backend "$BACKEND" --png out.png --export-c adir.c  # adir.texels beside it
+expect_usage_error export_with_png_missing_dir "${PNG_ARGS[@]}" --export-c nosuch/fig.c
+expect_usage_error export_in_a_window --backend window --export-c fig.c
 expect_usage_error texture_missing "${PNG_ARGS[@]}" --texture missing.png
 expect_usage_error texture_not_png "${PNG_ARGS[@]}" --texture text.png
 expect_usage_error corners_garbage "${PNG_ARGS[@]}" --corners garbage
