@@ -280,8 +280,16 @@ ExportedProgram exportC(const std::vector<gl::Call>& recorded, const Frame& fram
     for (const auto& [k, v] : t.params)
       if (k == "made_by") rendered.push_back(t.name), (void)v;
   if (!rendered.empty()) {
+    // One name per kind of picture, with how many there are ("jitter_render
+    // (9 textures)"), not the same name nine times.
+    std::map<std::string, int> count;
+    std::vector<std::string> order;
+    for (const std::string& n : rendered)
+      if (count[n]++ == 0) order.push_back(n);
     std::string names;
-    for (const std::string& n : rendered) names += (names.empty() ? "" : ", ") + n;
+    for (const std::string& n : order)
+      names += (names.empty() ? "" : ", ") + n +
+               (count[n] > 1 ? " (" + std::to_string(count[n]) + " textures)" : "");
     s += " *\n" + wrap(commentSafe("Some panels show pictures the demo rendered in earlier passes of its own (its measurement, "
                                    "with shaders or the accumulation buffer): " + names + ". This program draws those "
                                    "pictures as textures; the passes that made them are in demos/" + info.demo + "/."),
