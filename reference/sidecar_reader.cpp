@@ -29,6 +29,13 @@ double number(const Value& v, const std::string& where) {
     fail(where, e.what());
   }
 }
+// A whole number in [lo, hi]: checked before the conversion, since converting
+// a double outside int's range (a fuzzer's 1e300) is undefined behaviour.
+int integer(const Value& v, const std::string& where, double lo, double hi) {
+  double x = number(v, where);
+  if (!(x >= lo && x <= hi)) fail(where, "expected a number in " + std::to_string(int(lo)) + ".." + std::to_string(int(hi)));
+  return int(x);
+}
 std::string text(const Value& v, const std::string& where) {
   if (!v.isString()) fail(where, std::string("expected a string, found ") + json::typeName(v.type));
   return v.string;
@@ -160,10 +167,8 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
   ts::Frame& f = out.frame;
   const Value& size = member(doc, "size", "document");
   if (!size.isArray() || size.array.size() != 2) fail("size", "expected [width, height]");
-  f.width = int(number(size.array[0], "size"));
-  f.height = int(number(size.array[1], "size"));
-  if (f.width < 1 || f.height < 1 || f.width > ts::kMaxImageDimension || f.height > ts::kMaxImageDimension)
-    fail("size", std::to_string(f.width) + "x" + std::to_string(f.height) + " is out of range");
+  f.width = integer(size.array[0], "size", 1, ts::kMaxImageDimension);
+  f.height = integer(size.array[1], "size", 1, ts::kMaxImageDimension);
   if (const Value* c = doc.find("clear_color")) f.clearColor = vec<4>(*c, "clear_color");
   if (const Value* h = doc.find("perspective_correction_hint")) {
     try {
@@ -211,9 +216,9 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
       fail(where, e.what());
     }
     if (const Value* w = t.find("width"))
-      if (d.image && int(number(*w, where)) != d.image->width) fail(where, "the remade texture's width differs");
+      if (d.image && integer(*w, where + ".width", 0, ts::kMaxImageDimension) != d.image->width) fail(where, "the remade texture's width differs");
     if (const Value* h = t.find("height"))
-      if (d.image && int(number(*h, where)) != d.image->height) fail(where, "the remade texture's height differs");
+      if (d.image && integer(*h, where + ".height", 0, ts::kMaxImageDimension) != d.image->height) fail(where, "the remade texture's height differs");
     const Value& mips = member(t, "mipmaps", where);
     if (mips.type == Value::Type::Bool) {
       if (mips.boolean) fail(where, "mipmaps: true is not a kind of chain");
@@ -260,8 +265,12 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
     std::string where = "panels[" + std::to_string(pi) + "]";
     ts::Panel p;
     if (const Value* id = pv.find("id")) p.id = text(*id, where + ".id");
-    glm::vec4 vp = vec<4>(member(pv, "viewport", where), where + ".viewport");
-    p.viewport = {int(vp.x), int(vp.y), int(vp.z), int(vp.w)};
+    const Value& vpv = member(pv, "viewport", where);
+    if (!vpv.isArray() || vpv.array.size() != 4) fail(where + ".viewport", "expected [x, y, width, height]");
+    auto coord = [&](int i, double lo) {  // x, y may lie off the target; w, h at most the largest image
+      return integer(vpv.array[size_t(i)], where + ".viewport", lo, ts::kMaxImageDimension);
+    };
+    p.viewport = {coord(0, -ts::kMaxImageDimension), coord(1, -ts::kMaxImageDimension), coord(2, 0), coord(3, 0)};
     if (const Value* d = pv.find("depth_test")) p.depthTest = boolean(*d, where + ".depth_test");
     if (const Value* c = pv.find("clear")) p.clear = boolean(*c, where + ".clear");
     else out.missing.push_back(where + ".clear");
@@ -275,8 +284,7 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
       ts::Batch b;
       if (const Value* r = bv.find("role")) b.role = text(*r, bw + ".role");
       b.prim = primFromName(text(member(bv, "primitive", bw), bw + ".primitive"), bw);
-      b.texture = int(number(member(bv, "texture", bw), bw + ".texture"));
-      if (b.texture >= int(f.textures.size()) || b.texture < -1) fail(bw, "texture index out of range");
+      b.texture = integer(member(bv, "texture", bw), bw + ".texture", -1, double(f.textures.size()) - 1);
       try {
         b.texEnv = glEnumFromName(text(member(bv, "tex_env", bw), bw + ".tex_env"));
       } catch (const ts::Error& e) {
@@ -312,7 +320,7 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
       l.x = float(number(member(lv, "x", where), where + ".x"));
       l.y = float(number(member(lv, "y", where), where + ".y"));
       l.text = text(member(lv, "text", where), where + ".text");
-      if (const Value* s = lv.find("scale")) l.scale = int(number(*s, where + ".scale"));
+      if (const Value* s = lv.find("scale")) l.scale = integer(*s, where + ".scale", 1, 64);
       else out.labelGeometryKnown = false, out.missing.push_back(where + ".scale");
       if (const Value* a = lv.find("align")) {
         std::string al = text(*a, where + ".align");
