@@ -18,7 +18,7 @@ Rendered renderScene(Scene& scene, Renderer& r, int width, int height, bool reco
   Rendered out;
   out.measurements = scene.measure(r);  // may resize the target for itself
   if (ctx.width() != width || ctx.height() != height) ctx.resize(width, height);
-  out.frame = scene.build(width, height);
+  out.frame = scene.build(width, height, out.measurements);
   if (record) out.calls = recordPicture(r, out.frame);  // the same picture, drawn once more
   out.image = r.render(out.frame);
   return out;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -129,10 +130,24 @@ int run(int argc, char** argv) {
   auto ctx = ts::createOffscreenContext(b, co);
   ts::Renderer r(*ctx);
   std::printf("rendering %zu figures into %s/ with %s\n", todo.size(), out.c_str(), ctx->describe().c_str());
-  for (Entry& e : todo) {
-    auto scene = ts::makeScene(e.demo);
+  // One scene per demo for all its figures, each from the defaults and its
+  // own flags: what a scene keeps between measurements (the parallax table,
+  // the jitter images) serves every figure of the same state.
+  struct Demo {
+    std::unique_ptr<ts::Scene> scene;
     ts::Options opts;
-    scene->addOptions(opts);
+  };
+  std::map<std::string, Demo> demos;
+  for (Entry& e : todo) {
+    Demo& d = demos[e.demo];
+    if (!d.scene) {
+      d.scene = ts::makeScene(e.demo);
+      d.scene->addOptions(d.opts);
+      d.opts.captureDefaults();
+    }
+    ts::Scene* scene = d.scene.get();
+    ts::Options& opts = d.opts;
+    opts.resetToDefaults();
     opts.parse(e.spec.flags);
     ts::Rendered got = ts::renderScene(*scene, r, e.spec.width, e.spec.height, true);
     std::string png = out + "/" + e.spec.id + ".png", json = out + "/" + e.spec.id + ".json";

@@ -2,6 +2,7 @@
 // in one file under demos/<name>/; everything else (flags, windows,
 // offscreen contexts, PNG, sidecars, the figure gallery) is shared.
 #pragma once
+#include <any>
 #include <functional>
 #include <memory>
 #include <string>
@@ -20,7 +21,20 @@ struct Measurement {
   double value = 0;
   std::string meaning;
 };
-using Measurements = std::vector<Measurement>;
+// What measure() found: the numbers (printed, written to the sidecar,
+// asserted by the tests) and, in `detail`, whatever else the demo's pictures
+// show of it (a value per variant, a plot's points) as the demo's own type.
+// build() is handed it: a picture is a function of the options and of this,
+// never of what a measurement left behind in the scene.  Empty = not
+// measured yet (the window draws before its first measurement ends).
+struct Measurements : std::vector<Measurement> {
+  using std::vector<Measurement>::vector;
+  std::any detail;
+  template <class T>
+  const T* detailAs() const {
+    return std::any_cast<T>(&detail);
+  }
+};
 std::string formatMeasurements(const Measurements& m);
 
 // A registered book figure: a state of a demo (its flags) at a size.
@@ -42,8 +56,10 @@ class Scene {
   virtual int defaultHeight() const { return 512; }
   // Binds the demo's state to flags and keys.  Called once, before parsing.
   virtual void addOptions(Options& o) = 0;
-  // The picture of the current state at a size.  Pure description: no GL.
-  virtual Frame build(int width, int height) = 0;
+  // The picture of the current state at a size, showing what `measured`
+  // found (empty before the first measurement).  Pure description: no GL,
+  // no state but the options and `measured`.
+  virtual Frame build(int width, int height, const Measurements& measured) const = 0;
   // Measures the figure's claim in the current state.  May render extra
   // passes with `r` into the current target (the caller redraws after).
   virtual Measurements measure(Renderer& r) = 0;

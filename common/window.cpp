@@ -323,7 +323,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       // With the GL pane open the figure is laid out in the rest of the window.
       int paneW = pane.visible ? glPaneWidth(ctx.width()) : 0;
       int figureW = std::max(1, ctx.width() - paneW);
-      Frame f = scene.build(figureW, ctx.height());
+      Frame f = scene.build(figureW, ctx.height(), m);
       if (pane.visible && (record || figureW != recordedW || ctx.height() != recordedH)) {
         pane.record(renderer, f, afterKey, now, true);  // draws the picture, recording its calls
         record = afterKey = false;

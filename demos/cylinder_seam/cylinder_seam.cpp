@@ -90,7 +90,7 @@ class CylinderSeam final : public ts::Scene {
          {"--view", "compare", "--slices", "5", "--seam", "front"}, 1280, 520},
     };
   }
-  ts::Frame build(int width, int height) override;
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
 
  private:
@@ -120,7 +120,7 @@ class CylinderSeam final : public ts::Scene {
   int coords_ = int(Coords::Wrong), seam_ = int(Seam::Front), slices_ = 5, view_ = 0;
   float turn_ = 0.0f;
   bool patch_ = true;
-  std::map<int, double> measuredSpan_;  // coords -> signed span of the seam patch, for labels
+  using Spans = std::map<int, double>;  // coords -> signed span of the seam patch: measure()'s detail
 };
 
 void CylinderSeam::addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const {
@@ -237,7 +237,7 @@ void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int t
   f.panels.push_back(p);
 }
 
-ts::Frame CylinderSeam::build(int width, int height) {
+ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& measured) const {
   ts::Frame f;
   f.width = width;
   f.height = height;
@@ -265,12 +265,13 @@ ts::Frame CylinderSeam::build(int width, int height) {
     addCylinder(f, {cx - w / 2, 2 * line, w, h}, shown[c], tex, scale);
     std::string title = shown[c] == Coords::Wrong ? "s reduced to [0,1): wrong" : "s winding tracked: right";
     f.labels.push_back({float(cx), float(line / 2), title, kWhite, scale, ts::Align::Center});
-    auto m = measuredSpan_.find(int(shown[c]));
-    if (m != measuredSpan_.end())
+    const Spans* spans = measured.detailAs<Spans>();
+    if (spans && spans->count(int(shown[c]))) {
+      double span = spans->at(int(shown[c]));
       f.labels.push_back({float(cx), float(height - line - line / 4),
-                          "seam patch: " + fmt("%.2f", std::abs(m->second)) + " of s, " +
-                              (m->second < 0 ? "reversed" : "forwards"),
+                          "seam patch: " + fmt("%.2f", std::abs(span)) + " of s, " + (span < 0 ? "reversed" : "forwards"),
                           kMeasured, scale, ts::Align::Center});
+    }
   }
   return f;
 }
@@ -344,7 +345,7 @@ ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
   std::vector<Coords> todo = view_ == 0 ? std::vector<Coords>{Coords(coords_)}
                                         : std::vector<Coords>{Coords::Wrong, Coords::Right};
   ts::Measurements out;
-  measuredSpan_.clear();
+  Spans spans;
   const int k = cylmap::seamPatch(params(Coords::Right));
   out.push_back({"seam_patch", double(k), "the patch the texture edges meet in (0 = the front one)"});
   for (Coords c : todo) {
@@ -353,7 +354,7 @@ ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
     int reversed = 0;
     double err = 0;
     for (const auto& pr : res) reversed += pr.span < 0, err = std::max(err, pr.texelErr);
-    measuredSpan_[int(c)] = res[size_t(k)].span;
+    spans[int(c)] = res[size_t(k)].span;
     out.push_back({"seam_patch_span_s" + n, std::abs(res[size_t(k)].span), "how much of the texture (in s) the seam patch shows"});
     out.push_back({"seam_patch_direction" + n, res[size_t(k)].span < 0 ? -1.0 : 1.0, "sign of ds/dx across it: -1 = backwards"});
     out.push_back({"front_patch_span_s" + n, std::abs(res[0].span), "the same for the patch facing +z (theta -180/n..180/n)"});
@@ -361,6 +362,7 @@ ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
     out.push_back({"reversed_patches" + n, double(reversed), "patches showing the texture backwards"});
     out.push_back({"texel_error_max" + n, err, "largest distance (texels of 2048) between the texel shown and the assigned s"});
   }
+  out.detail = spans;
   return out;
 }
 }  // namespace

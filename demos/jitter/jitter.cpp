@@ -149,7 +149,7 @@ class Jitter final : public ts::Scene {
   }
 
   ts::Measurements measure(ts::Renderer& r) override;
-  ts::Frame build(int width, int height) override;
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
 
  private:
   struct Result {
@@ -157,21 +157,31 @@ class Jitter final : public ts::Scene {
     jitter::ErrorStats stats;
     std::vector<double> error;
     ts::TextureDesc texture;
-    std::shared_ptr<ts::TextureDesc> errorTexture;  // made on first use
+    ts::TextureDesc errorTexture;  // the error x3, as a picture
     bool valid = false;
+  };
+  // The images measure() has made for the current seed and averaging (one
+  // per pattern kind and side, and the reference): its detail, which
+  // build() draws.
+  struct Found {
+    std::array<std::array<Result, kMaxSide>, 3> results;
+    Result reference;
+    const Result& at(int kind, int side) const { return results[size_t(kind)][size_t(side - 1)]; }
+    Result& at(int kind, int side) { return results[size_t(kind)][size_t(side - 1)]; }
   };
   void prepare(ts::Renderer& r);
   void ensure(ts::Renderer& r, int kind, int side);
-  Result& result(int kind, int side) { return results_[size_t(kind)][size_t(side - 1)]; }
-  Result* current();
-  const ts::TextureDesc& errorTextureOf(Result& res);
+  Result& result(int kind, int side) { return found_.at(kind, side); }
+  const Result* current(const Found& fd) const;
+  static ts::TextureDesc errorTextureOf(const Result& res);
 
   void addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const ts::TextureDesc& tex) const;
   void addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels) const;
-  void buildMode(ts::Frame& f, ts::Panel& canvas);
-  void buildCompare(ts::Frame& f, ts::Panel& canvas);
-  void buildPlot(ts::Frame& f, ts::Panel& canvas);
-  void addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::string& title, bool aliasing) const;
+  void buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
+  void buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
+  void buildPlot(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
+  void addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::string& title, bool aliasing,
+               const Found& fd) const;
 
   int mode_ = kJitterPixel, side_ = 3, seed_ = 1, view_ = kViewMode, average_ = kAuto;
   bool showError_ = false;
@@ -180,9 +190,8 @@ class Jitter final : public ts::Scene {
   bool accum_ = false;
   std::string path_, printedPath_;
   int preparedSeed_ = -1, preparedAverage_ = -1;
-  std::array<std::array<Result, kMaxSide>, 3> results_;
   jitter::FloatImage reference_;
-  Result referenceResult_;
+  Found found_;
 };
 
 // Starts over for the current seed and averaging: the reference (once), the
@@ -195,11 +204,13 @@ void Jitter::prepare(ts::Renderer& r) {
     for (size_t p = 0; p < size_t(cam.width) * size_t(cam.height); ++p)
       for (int ch = 0; ch < 3; ++ch)
         ref.pixels[p * 4 + size_t(ch)] = uint8_t(std::lround(reference_.rgb[p * 3 + size_t(ch)]));
-    referenceResult_.image = ref;
-    referenceResult_.error = jitter::errorImage(ref.pixels.data(), reference_);
-    referenceResult_.stats = jitter::analyse(referenceResult_.error, cam.width, cam.height);
-    referenceResult_.texture = imageTexture(ref, "reference", {{"samples", "16x16 stratified"}});
-    referenceResult_.valid = true;
+    Result& res = found_.reference;
+    res.image = ref;
+    res.error = jitter::errorImage(ref.pixels.data(), reference_);
+    res.stats = jitter::analyse(res.error, cam.width, cam.height);
+    res.texture = imageTexture(ref, "reference", {{"samples", "16x16 stratified"}});
+    res.errorTexture = errorTextureOf(res);
+    res.valid = true;
   }
   accum_ = false;
   if (average_ != kFbo) {
@@ -218,7 +229,7 @@ void Jitter::prepare(ts::Renderer& r) {
     ts::note("jitter: multi-pass images " + path_);
     printedPath_ = path_;
   }
-  for (auto& row : results_)
+  for (auto& row : found_.results)
     for (Result& res : row) res = Result();
   preparedSeed_ = seed_;
   preparedAverage_ = average_;
@@ -245,37 +256,33 @@ void Jitter::ensure(ts::Renderer& r, int kind, int side) {
                               {"averaging", kKinds[kind] == Pattern::JitterPixel ? "shader"
                                             : accum_                             ? "glAccum"
                                                                                  : "fbo"}});
-  res.errorTexture.reset();
+  res.errorTexture = errorTextureOf(res);
   res.valid = true;
 }
 
-Jitter::Result* Jitter::current() {
-  Result* res = &referenceResult_;
+const Jitter::Result* Jitter::current(const Found& fd) const {
+  const Result* res = &fd.reference;
   switch (mode_) {
-    case kOne: res = &result(0, 1); break;
-    case kRegular: res = &result(0, side_); break;
-    case kJitterGlobal: res = &result(1, side_); break;
-    case kJitterPixel: res = &result(2, side_); break;
+    case kOne: res = &fd.at(0, 1); break;
+    case kRegular: res = &fd.at(0, side_); break;
+    case kJitterGlobal: res = &fd.at(1, side_); break;
+    case kJitterPixel: res = &fd.at(2, side_); break;
     default: break;
   }
   return res->valid ? res : nullptr;
 }
 
-const ts::TextureDesc& Jitter::errorTextureOf(Result& res) {
-  if (!res.errorTexture) {
-    const jitter::Camera cam;
-    auto params = res.texture.params;
-    params.erase(std::remove_if(params.begin(), params.end(),
-                                [](const auto& p) {
-                                  return p.first == "digest" || p.first == "size" || p.first == "image" ||
-                                         p.first == "made_by";
-                                }),
-                 params.end());
-    params.push_back({"of", res.texture.params.front().second});
-    res.errorTexture = std::make_shared<ts::TextureDesc>(
-        imageTexture(errorPicture(res.error, cam.width, cam.height), "error_x3", params));
-  }
-  return *res.errorTexture;
+ts::TextureDesc Jitter::errorTextureOf(const Result& res) {
+  const jitter::Camera cam;
+  auto params = res.texture.params;
+  params.erase(std::remove_if(params.begin(), params.end(),
+                              [](const auto& p) {
+                                return p.first == "digest" || p.first == "size" || p.first == "image" ||
+                                       p.first == "made_by";
+                              }),
+               params.end());
+  params.push_back({"of", res.texture.params.front().second});
+  return imageTexture(errorPicture(res.error, cam.width, cam.height), "error_x3", params);
 }
 
 ts::Measurements Jitter::measure(ts::Renderer& r) {
@@ -311,6 +318,7 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
         out.push_back({"rms" + k, result(kind, side).stats.rms, "RMS error, " + std::to_string(side * side) + " samples"});
         out.push_back({"aliasing" + k, result(kind, side).stats.aliasing, "its predictable part"});
       }
+  out.detail = found_;
   return out;
 }
 
@@ -386,7 +394,9 @@ void Jitter::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode,
   }
 }
 
-ts::Frame Jitter::build(int width, int height) {
+ts::Frame Jitter::build(int width, int height, const ts::Measurements& measured) const {
+  const Found none, *found = measured.detailAs<Found>();
+  const Found& fd = found ? *found : none;
   ts::Frame f;
   f.width = width;
   f.height = height;
@@ -395,14 +405,14 @@ ts::Frame Jitter::build(int width, int height) {
   canvas.id = "canvas";
   canvas.viewport = {0, 0, width, height};
   canvas.projection = glm::ortho(0.0f, float(width), float(height), 0.0f, -1.0f, 1.0f);
-  if (view_ == kViewCompare) buildCompare(f, canvas);
-  else if (view_ == kViewPlot) buildPlot(f, canvas);
-  else buildMode(f, canvas);
+  if (view_ == kViewCompare) buildCompare(f, canvas, fd);
+  else if (view_ == kViewPlot) buildPlot(f, canvas, fd);
+  else buildMode(f, canvas, fd);
   f.panels.push_back(canvas);
   return f;
 }
 
-void Jitter::buildMode(ts::Frame& f, ts::Panel& canvas) {
+void Jitter::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
   const int W = jitter::kImageW, H = jitter::kImageH, line = 19;
   const int side = std::min(220, std::max(60, f.width / 4));
   std::string n = std::to_string(side_) + "x" + std::to_string(side_);
@@ -422,8 +432,8 @@ void Jitter::buildMode(ts::Frame& f, ts::Panel& canvas) {
     double s = std::min(double(availW) / W, double(availH) / H);
     rect = {16, 2 * line, std::max(1, int(W * s)), std::max(1, int(H * s))};
   }
-  Result* res = current();
-  if (res) addImage(f, "image", rect, showError_ ? errorTextureOf(*res) : res->texture);
+  const Result* res = current(fd);
+  if (res) addImage(f, "image", rect, showError_ ? res->errorTexture : res->texture);
   // The sample pattern and the numbers on the right.
   int x = rect.x + rect.w + 24;
   int box = std::min(side - 20, std::max(40, f.height / 3));
@@ -436,7 +446,7 @@ void Jitter::buildMode(ts::Frame& f, ts::Panel& canvas) {
   }
 }
 
-void Jitter::buildCompare(ts::Frame& f, ts::Panel& canvas) {
+void Jitter::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
   const int W = jitter::kImageW, H = jitter::kImageH, line = 17, gap = 24;
   // At 1:1 the figure needs four images and three gaps across, three images
   // and ten lines of text down; a smaller frame (a window) scales the images.
@@ -454,7 +464,7 @@ void Jitter::buildCompare(ts::Frame& f, ts::Panel& canvas) {
   f.labels.push_back({float(f.width / 2), 4.0f,
                       "Figure VI.7  jittered supersampling: " + n + " samples per pixel, seed " + std::to_string(seed_),
                       kWhite, 1, ts::Align::Center});
-  if (!result(0, 1).valid || !result(0, side_).valid || !result(1, side_).valid || !result(2, side_).valid)
+  if (!fd.at(0, 1).valid || !fd.at(0, side_).valid || !fd.at(1, side_).valid || !fd.at(2, side_).valid)
     return;  // measure() makes them
   const int modes[4] = {kOne, kRegular, kJitterGlobal, kJitterPixel};
   const std::string titles[4] = {narrow ? "1 sample" : "1 sample per pixel", n + " regular",
@@ -465,11 +475,11 @@ void Jitter::buildCompare(ts::Frame& f, ts::Panel& canvas) {
   const int rowB = rowA + h + (numberLines + 1) * line + 10;
   const int rowC = rowB + h + 2 * line;
   for (int k = 0; k < 4; ++k) {
-    Result& res = modes[k] == kOne ? result(0, 1)
-                                   : result(modes[k] == kRegular ? 0 : modes[k] == kJitterGlobal ? 1 : 2, side_);
+    const Result& res = modes[k] == kOne ? fd.at(0, 1)
+                                         : fd.at(modes[k] == kRegular ? 0 : modes[k] == kJitterGlobal ? 1 : 2, side_);
     int x = left + k * (w + g);
     addImage(f, std::string("image_") + kModeNames[modes[k]], {x, rowA, w, h}, res.texture);
-    addImage(f, std::string("error_") + kModeNames[modes[k]], {x, rowB, w, h}, errorTextureOf(res));
+    addImage(f, std::string("error_") + kModeNames[modes[k]], {x, rowB, w, h}, res.errorTexture);
     float cx = float(x + w / 2);
     f.labels.push_back({cx, float(rowA - line), titles[k], kWhite, 1, ts::Align::Center});
     float y = float(rowA + h + 4);
@@ -487,7 +497,7 @@ void Jitter::buildCompare(ts::Frame& f, ts::Panel& canvas) {
                       "error against the reference, x3 (orange: too bright, blue: too dark)", kGrey, 1,
                       ts::Align::Center});
   // Bottom row: the reference, then the sample patterns of Figure VI.7.
-  addImage(f, "image_reference", {left, rowC, w, h}, referenceResult_.texture);
+  addImage(f, "image_reference", {left, rowC, w, h}, fd.reference.texture);
   f.labels.push_back({float(left + w / 2), float(rowC + h + 4), "reference: 16x16 stratified", kWhite, 1,
                       ts::Align::Center});
   const int box = std::max(16, h - line);
@@ -498,7 +508,8 @@ void Jitter::buildCompare(ts::Frame& f, ts::Panel& canvas) {
   }
 }
 
-void Jitter::addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::string& title, bool aliasing) const {
+void Jitter::addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::string& title, bool aliasing,
+                     const Found& fd) const {
   const int line = 17;
   ts::Panel p;
   p.id = aliasing ? "plot_aliasing" : "plot_rms";
@@ -506,8 +517,8 @@ void Jitter::addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::
   double ymax = 0;
   for (int kind = 0; kind < 3; ++kind)
     for (int side = 1; side <= kMaxSide; ++side)
-      ymax = std::max(ymax, aliasing ? results_[size_t(kind)][size_t(side - 1)].stats.aliasing
-                                     : results_[size_t(kind)][size_t(side - 1)].stats.rms);
+      ymax = std::max(ymax, aliasing ? fd.at(kind, side).stats.aliasing
+                                     : fd.at(kind, side).stats.rms);
   double step = 0.01;
   for (double c : {0.005, 0.01, 0.02, 0.025, 0.05, 0.1})
     if (ymax / c <= 6) {
@@ -531,7 +542,7 @@ void Jitter::addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::
   for (int kind = 0; kind < 3; ++kind) {
     std::vector<glm::vec2> pts;
     for (int side = 1; side <= kMaxSide; ++side) {
-      const jitter::ErrorStats& s = results_[size_t(kind)][size_t(side - 1)].stats;
+      const jitter::ErrorStats& s = fd.at(kind, side).stats;
       pts.push_back({float(side * side), float(aliasing ? s.aliasing : s.rms)});
     }
     ts::Batch curve = ts::lineSegments(pts, kSeriesColour[kind], 2.0f, std::string("series_") + kKindKeys[kind]);
@@ -560,19 +571,19 @@ void Jitter::addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::
                       ts::Align::Center});
 }
 
-void Jitter::buildPlot(ts::Frame& f, ts::Panel& canvas) {
+void Jitter::buildPlot(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
   const int line = 17;
   f.labels.push_back({float(f.width / 2), 6.0f,
                       "Figure VI.7  error against a 256-sample reference, seed " + std::to_string(seed_),
                       kWhite, 1, ts::Align::Center});
-  for (const auto& row : results_)
+  for (const auto& row : fd.results)
     for (const Result& res : row)
       if (!res.valid) return;  // measure() makes them (view=plot)
   const int tableH = 6 * line + 8;
   const int plotH = std::max(60, f.height - 2 * line - tableH);
-  addPlot(f, canvas, {0, 2 * line, f.width / 2, plotH}, "RMS error (1 = full scale)", false);
+  addPlot(f, canvas, {0, 2 * line, f.width / 2, plotH}, "RMS error (1 = full scale)", false, fd);
   addPlot(f, canvas, {f.width / 2, 2 * line, f.width - f.width / 2, plotH}, "aliasing: the predictable part of the error",
-          true);
+          true, fd);
   // Legend and table: one row per pattern, RMS / aliasing at 1, 4, 9, 16.
   float y = float(2 * line + plotH + 4);
   const float nameW = 170.0f, colW = std::min(150.0f, float(f.width - 16 - 170) / 4.0f);
@@ -585,7 +596,7 @@ void Jitter::buildPlot(ts::Frame& f, ts::Panel& canvas) {
     y += float(line);
     f.labels.push_back({x0, y, kKindTitles[kind], kSeriesColour[kind], 1, ts::Align::Left});
     for (int side = 1; side <= kMaxSide; ++side) {
-      const jitter::ErrorStats& s = results_[size_t(kind)][size_t(side - 1)].stats;
+      const jitter::ErrorStats& s = fd.at(kind, side).stats;
       f.labels.push_back({x0 + nameW + colW * float(side - 1), y, fmt("%.4f", s.rms) + " / " + fmt("%.4f", s.aliasing),
                           kSeriesColour[kind], 1, ts::Align::Left});
     }

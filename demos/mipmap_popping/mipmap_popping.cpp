@@ -144,7 +144,7 @@ class MipmapPopping final : public ts::Scene {
     };
   }
 
-  ts::Frame build(int width, int height) override;
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
   void update(double) override {
     if (animate_) ++animFrames_;
@@ -161,42 +161,44 @@ class MipmapPopping final : public ts::Scene {
   }
   sweep::Look look() const { return {filter_, aniso_, bias_, texture_, linearLight_}; }
 
-  void buildSingle(ts::Frame& f) const;
-  void buildFilmstrip(ts::Frame& f) const;
-  void buildPlot(ts::Frame& f) const;
-  void buildSlant(ts::Frame& f) const;
+  struct Result;  // what measure() found (null: not measured yet)
+  void buildSingle(ts::Frame& f, const Result* m) const;
+  void buildFilmstrip(ts::Frame& f, const Result* m) const;
+  void buildPlot(ts::Frame& f, const Result* m) const;
+  void buildSlant(ts::Frame& f, const Result* m) const;
 
   int view_ = kSingle, filter_ = kNearestMipNearest, aniso_ = 16, levels_ = kSplit, texture_ = 0;
   float distLog2_ = 2.375f, bias_ = 0.0f;
   bool linearLight_ = false, animate_ = false;
   long animFrames_ = 0;
 
-  // The last measurement (for labels and the plot).
-  struct Measured {
-    bool valid = false;
-    double overhead = 0, topLevel = 0;
-    double levelObserved = 0, residual = 0;
-    std::vector<double> sweepLods;
-    std::vector<std::vector<Mean>> sweepMeans;  // [filter][distance]
-    double popping[kFilterCount] = {};
+};
+
+// What measure() found, for the labels and the plot: measure()'s detail.
+struct MipmapPopping::Result {
+  double overhead = 0, topLevel = 0;
+  double levelObserved = 0, residual = 0;
+  std::vector<double> sweepLods;
+  std::vector<std::vector<Mean>> sweepMeans;  // [filter][distance]
+  double popping[kFilterCount] = {};
     double farError[kFilterCount] = {};
     long farPixels = 0;
     bool anisotropy = false;
     float maxAnisotropy = 0;
     std::string renderer;
-  } m_;
 };
 
-ts::Frame MipmapPopping::build(int width, int height) {
+ts::Frame MipmapPopping::build(int width, int height, const ts::Measurements& measured) const {
+  const Result* m = measured.detailAs<Result>();
   ts::Frame f;
   f.width = width;
   f.height = height;
   f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
   switch (view_) {
-    case kSingle: buildSingle(f); break;
-    case kFilmstrip: buildFilmstrip(f); break;
-    case kPlot: buildPlot(f); break;
-    default: buildSlant(f); break;
+    case kSingle: buildSingle(f, m); break;
+    case kFilmstrip: buildFilmstrip(f, m); break;
+    case kPlot: buildPlot(f, m); break;
+    default: buildSlant(f, m); break;
   }
   return f;
 }
@@ -231,7 +233,7 @@ std::string levelText(int filter, double lambda) {
   return "level " + std::to_string(nearestLevel(lambda));
 }
 
-void MipmapPopping::buildSingle(ts::Frame& f) const {
+void MipmapPopping::buildSingle(ts::Frame& f, const Result* m) const {
   const int w = f.width, h = f.height;
   const int scale = std::max(1, std::min(2, std::min(w / 560, h / 300)));
   const int line = int(ts::text::height(scale)) + 6 * scale;
@@ -273,19 +275,19 @@ void MipmapPopping::buildSingle(ts::Frame& f) const {
     label(float(w / 4), float(h - 2 * line), "the texture", kWhite, ts::Align::Center);
     label(float(3 * w / 4), float(h - 2 * line), "levels coloured", kWhite, ts::Align::Center);
   }
-  if (m_.valid) {
-    label(float(w - 8 * scale), top, "mip chain +" + fmt("%.2f", 100 * m_.overhead) + "% memory", kWhite,
+  if (m) {
+    label(float(w - 8 * scale), top, "mip chain +" + fmt("%.2f", 100 * m->overhead) + "% memory", kWhite,
           ts::Align::Right);
     label(float(w - 8 * scale), top + float(line),
-          "popping " + fmt("%.1f", m_.popping[filter_]) + " (trilinear " + fmt("%.1f", m_.popping[kLinearMipLinear]) + ")",
+          "popping " + fmt("%.1f", m->popping[filter_]) + " (trilinear " + fmt("%.1f", m->popping[kLinearMipLinear]) + ")",
           kWhite, ts::Align::Right);
     if (!animate_)
-      label(float(w - 8 * scale), top + float(2 * line), "level read from the colours " + fmt("%.2f", m_.levelObserved), kAmber,
+      label(float(w - 8 * scale), top + float(2 * line), "level read from the colours " + fmt("%.2f", m->levelObserved), kAmber,
             ts::Align::Right);
   }
 }
 
-void MipmapPopping::buildFilmstrip(ts::Frame& f) const {
+void MipmapPopping::buildFilmstrip(ts::Frame& f, const Result* m) const {
   const int w = f.width, h = f.height;
   const int line = int(ts::text::height(1)) + 6;
   constexpr int kCols = 8;
@@ -304,7 +306,7 @@ void MipmapPopping::buildFilmstrip(ts::Frame& f) const {
     sweep::Look lk = look();
     lk.filter = rows[r];
     std::string name = std::string(filterGLName(rows[r])) + (rows[r] == kAnisotropic ? " x" + std::to_string(aniso_) : "");
-    if (m_.valid) name += "   popping " + fmt("%.1f", m_.popping[rows[r]]);
+    if (m) name += "   popping " + fmt("%.1f", m->popping[rows[r]]);
     f.labels.push_back({float(x0), float(y - line), name, r == 0 ? kAmber : kWhite, 1, ts::Align::Left});
     for (int c = 0; c < kCols; ++c) {
       double xc = x + 0.25 * (c - kCols / 2);
@@ -370,10 +372,10 @@ void plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, const std:
                         ts::Align::Right});
 }
 
-void MipmapPopping::buildPlot(ts::Frame& f) const {
+void MipmapPopping::buildPlot(ts::Frame& f, const Result* m) const {
   const int w = f.width, h = f.height;
   const int line = int(ts::text::height(1)) + 6;
-  if (!m_.valid || m_.sweepLods.empty()) {
+  if (!m || m->sweepLods.empty()) {
     f.labels.push_back({float(w / 2), float(h / 2), "(measuring...)", kWhite, 1, ts::Align::Center});
     return;
   }
@@ -385,11 +387,11 @@ void MipmapPopping::buildPlot(ts::Frame& f) const {
     if (usesMipmaps(fl))
       for (int k = 0; k < kLevels - 1; ++k) {
         double s = (blendsLevels(fl) ? k + 1.0 : k + 0.5) - bias_;  // log2 distance where the level changes
-        if (s > m_.sweepLods.front() && s < m_.sweepLods.back()) switches.push_back(s);
+        if (s > m->sweepLods.front() && s < m->sweepLods.back()) switches.push_back(s);
       }
     std::string title = (fl == kAnisotropic ? "anisotropic x" + std::to_string(aniso_) : std::string(filterGLName(fl))) +
-                        ": probe mean R, G, B vs log2 distance;  popping (largest jump) " + fmt("%.1f", m_.popping[fl]);
-    plotSweep(f, {0, r * plotH + line / 2, w, plotH}, title, m_.sweepLods, m_.sweepMeans[size_t(fl)], shownLog2(),
+                        ": probe mean R, G, B vs log2 distance;  popping (largest jump) " + fmt("%.1f", m->popping[fl]);
+    plotSweep(f, {0, r * plotH + line / 2, w, plotH}, title, m->sweepLods, m->sweepMeans[size_t(fl)], shownLog2(),
               switches);
   }
   f.labels.push_back({float(w / 2), float(h - 2 * line - 2),
@@ -440,7 +442,7 @@ ts::Panel farFieldOutline(const ts::Rect& vp) {
 
 // The slanted plane: the supersampled reference and the seven filters, four
 // panels a row (the current filter's title in amber).
-void MipmapPopping::buildSlant(ts::Frame& f) const {
+void MipmapPopping::buildSlant(ts::Frame& f, const Result* m) const {
   const int w = f.width, h = f.height;
   const int line = int(ts::text::height(1)) + 6;
   const int gap = 8;
@@ -470,10 +472,10 @@ void MipmapPopping::buildSlant(ts::Frame& f) const {
       f.panels.push_back(o);
     } else {
       t = fl == kAnisotropic ? "anisotropic x" + std::to_string(aniso_) : std::string(filterGLName(fl));
-      if (m_.valid)
+      if (m)
         f.labels.push_back({float(cx + 4), float(cy + 4),
-                            "error " + fmt("%.1f", m_.farError[fl]) +
-                                (fl == kAnisotropic && !m_.anisotropy ? " (no anisotropy here)" : ""),
+                            "error " + fmt("%.1f", m->farError[fl]) +
+                                (fl == kAnisotropic && !m->anisotropy ? " (no anisotropy here)" : ""),
                             fl == filter_ ? kAmber : kWhite, 1, ts::Align::Left, kBox});
     }
     // Titles: "GL_" goes, then the reference's detail, when the panel is narrow.
@@ -484,13 +486,13 @@ void MipmapPopping::buildSlant(ts::Frame& f) const {
   const std::string note1 = "error: RMS (R,G,B, 8-bit) against the reference in the far field, LOD " +
                             fmt("%g", sweep::kFarLodLo) + ".." + fmt("%g", sweep::kFarLodHi) + " (between the white lines)";
   std::string note2 = "measured at " + std::to_string(sweep::kSlantW) + "x" + std::to_string(sweep::kSlantH);
-  if (m_.valid) note2 += " on " + m_.renderer;
+  if (m) note2 += " on " + m->renderer;
   f.labels.push_back({float(w / 2), float(h - 2 * line), note1, kGrey, 1, ts::Align::Center});
   f.labels.push_back({float(w / 2), float(h - line), note2, kGrey, 1, ts::Align::Center});
 }
 
 ts::Measurements MipmapPopping::measure(ts::Renderer& r) {
-  Measured out;
+  Result out;
   out.renderer = ts::gl::rendererString();
   out.anisotropy = ts::gl::hasExtension("GL_EXT_texture_filter_anisotropic") ||
                    ts::gl::hasExtension("GL_ARB_texture_filter_anisotropic") || ts::gl::version() >= 46;
@@ -520,8 +522,6 @@ ts::Measurements MipmapPopping::measure(ts::Renderer& r) {
   sweep::SlantErrors se = sweep::slantErrors(r, look());
   for (int fl = 0; fl < kFilterCount; ++fl) out.farError[fl] = se.error[fl];
   out.farPixels = se.pixels;
-  out.valid = true;
-  m_ = out;
 
   const double lambda = distLog2_ + bias_;
   ts::Measurements ms;
@@ -546,6 +546,7 @@ ts::Measurements MipmapPopping::measure(ts::Renderer& r) {
   ms.push_back({"far_pixels", double(out.farPixels), "pixels in the far field"});
   ms.push_back({"anisotropy_supported", out.anisotropy ? 1.0 : 0.0,
                 "EXT/ARB_texture_filter_anisotropic (max " + fmt("%g", out.maxAnisotropy) + ")"});
+  ms.detail = out;
   return ms;
 }
 }  // namespace

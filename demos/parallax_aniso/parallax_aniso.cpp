@@ -195,15 +195,9 @@ class ParallaxAniso final : public ts::Scene {
       mo.accel = accel_;
       mo.gradScale = gradScale();
       mo.timingRuns = timeRuns_;
-      // One table per state for the whole process: make_figures makes a new
-      // scene for each figure, and two figures share a state (view differs).
-      static std::shared_ptr<Table> lastTable;
-      static std::string lastKey;
-      if (!lastTable || lastKey != key) {
-        lastTable = std::make_shared<Table>(measureAll(*gl_, camera(), rel, mo));
-        lastKey = key;
-      }
-      table_ = lastTable;
+      // One table per state: make_figures draws its figures of this demo
+      // with one scene, and two of them share a state (only the view differs).
+      table_ = std::make_shared<Table>(measureAll(*gl_, camera(), rel, mo));
       tableKey_ = key;
       textures_.clear();
       for (const Row& row : table_->rows) textures_.push_back(imageTexture(row.image, kModeKeys[row.mode]));
@@ -242,26 +236,39 @@ class ParallaxAniso final : public ts::Scene {
       m.push_back({"m2_grad_x4_changed_px", double(table_->gradChangeM2),
                    "pixels of M2 that change when textureGrad's gradients are x4 (0: the driver ignores them)"});
     }
+    m.detail = Shown{table_, textures_, errorTextures_};
     return m;
   }
 
-  ts::Frame build(int width, int height) override {
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override {
     ts::Frame f;
     f.width = width;
     f.height = height;
     f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
     if (view_ == kLive) {
-      buildLive(f);
+      buildLive(f, measured.detailAs<Live>());
       return f;
     }
-    if (!table_) return f;
-    if (view_ == kModes) buildModes(f);
-    else if (view_ == kError) buildError(f);
-    else buildSingle(f);
+    const Shown* shown = measured.detailAs<Shown>();
+    if (!shown) return f;
+    if (view_ == kModes) buildModes(f, *shown);
+    else if (view_ == kError) buildError(f, *shown);
+    else buildSingle(f, *shown);
     return f;
   }
 
  private:
+  // What measure() found, for the pictures (its detail): the table and its
+  // images as textures; or, in the live view, the texture it drew.
+  struct Shown {
+    std::shared_ptr<const Table> table;
+    std::vector<ts::TextureDesc> textures, errorTextures;
+    const ts::TextureDesc& of(int mode) const { return textures[size_t(mode == kReference ? 6 : mode)]; }
+  };
+  struct Live {
+    ts::TextureDesc texture;
+    glm::ivec2 size{0}, modes{-1};
+  };
   Camera camera() const {
     Camera c;
     c.width = res_;
@@ -281,7 +288,6 @@ class ParallaxAniso final : public ts::Scene {
     if (!relief_ || relief_->name != kMaps[map_]) relief_ = std::make_unique<Relief>(makeRelief(kMaps[map_]));
     return *relief_;
   }
-  const ts::TextureDesc& textureOf(int mode) const { return textures_[size_t(mode == kReference ? 6 : mode)]; }
 
   void addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const ts::TextureDesc& tex, float s0 = 0,
                 float s1 = 1) const {
@@ -301,37 +307,38 @@ class ParallaxAniso final : public ts::Scene {
     p.batches.push_back(b);
     f.panels.push_back(p);
   }
-  std::string numbers(int mode) const {
-    if (mode == kReference) return std::to_string(table_->refRays) + "x" + std::to_string(table_->refRays) + " rays, CPU";
-    const Row& r = table_->rows[size_t(mode)];
+  static std::string numbers(const Table& table, int mode) {
+    if (mode == kReference) return std::to_string(table.refRays) + "x" + std::to_string(table.refRays) + " rays, CPU";
+    const Row& r = table.rows[size_t(mode)];
     // A map with no occluding edge (flat) has an empty band: no number to show.
-    std::string band = table_->bandPixels ? "band " + fmtNum("%.1f", r.psnrBand) + " dB" : std::string("no band");
+    std::string band = table.bandPixels ? "band " + fmtNum("%.1f", r.psnrBand) + " dB" : std::string("no band");
     return fmtNum("%.1f", r.psnrAll) + " dB  " + band + "  " + fmtNum("%.0f", r.lookupsPerPixel) + " lk/px";
   }
-  std::string header() const {
+  std::string header(const Table& table) const {
     return std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) + " deg, height " +
-           fmtNum("%.2f", heightScale_) + gradientsNote() + ", " + table_->renderer;
+           fmtNum("%.2f", heightScale_) + gradientsNote() + ", " + table.renderer;
   }
   float gradScale() const { return gradients_ ? 4.0f : 1.0f; }
   // Said in the picture whenever M1/M2 are not given the true gradients.
   std::string gradientsNote() const { return gradients_ ? ", M1/M2 gradients x4" : ""; }
 
-  void buildSingle(ts::Frame& f) {
+  void buildSingle(ts::Frame& f, const Shown& shown) const {
+    const Table& table = *shown.table;
     const int line = 17;
     int availW = f.width - 32, availH = f.height - 4 * line;
-    double s = std::min(double(availW) / table_->cam.width, double(availH) / table_->cam.height);
-    int w = std::max(1, int(table_->cam.width * s)), h = std::max(1, int(table_->cam.height * s));
+    double s = std::min(double(availW) / table.cam.width, double(availH) / table.cam.height);
+    int w = std::max(1, int(table.cam.width * s)), h = std::max(1, int(table.cam.height * s));
     ts::Rect rect{(f.width - w) / 2, 2 * line, w, h};
-    f.labels.push_back({16.0f, 6.0f, header(), kWhite, 1, ts::Align::Left});
+    f.labels.push_back({16.0f, 6.0f, header(table), kWhite, 1, ts::Align::Left});
     if (!compare_) {
-      addImage(f, "image", rect, textureOf(mode_));
-      f.labels.push_back({float(f.width / 2), float(rect.y + h + 6), std::string(kModeLabels[mode_]) + ":  " + numbers(mode_),
+      addImage(f, "image", rect, shown.of(mode_));
+      f.labels.push_back({float(f.width / 2), float(rect.y + h + 6), std::string(kModeLabels[mode_]) + ":  " + numbers(table, mode_),
                           kAmber, 1, ts::Align::Center});
       return;
     }
     ts::Rect left{rect.x, rect.y, w / 2, h}, right{rect.x + w / 2, rect.y, w - w / 2, h};
-    addImage(f, "left", left, textureOf(mode_), 0.0f, 0.5f);
-    addImage(f, "right", right, textureOf(against_), 0.5f, 1.0f);
+    addImage(f, "left", left, shown.of(mode_), 0.0f, 0.5f);
+    addImage(f, "right", right, shown.of(against_), 0.5f, 1.0f);
     ts::Panel canvas;
     canvas.id = "divider";
     canvas.viewport = {0, 0, f.width, f.height};
@@ -339,10 +346,10 @@ class ParallaxAniso final : public ts::Scene {
     canvas.batches.push_back(ts::lineSegments({{float(right.x), float(rect.y)}, {float(right.x), float(rect.y + h)}},
                                               kWhite, 2.0f, "divider"));
     f.panels.push_back(canvas);
-    f.labels.push_back({float(rect.x + w / 4), float(rect.y + h + 6), std::string(kModeLabels[mode_]) + ": " + numbers(mode_),
+    f.labels.push_back({float(rect.x + w / 4), float(rect.y + h + 6), std::string(kModeLabels[mode_]) + ": " + numbers(table, mode_),
                         kAmber, 1, ts::Align::Center});
     f.labels.push_back({float(rect.x + 3 * w / 4), float(rect.y + h + 6),
-                        std::string(kModeLabels[against_]) + ": " + numbers(against_), kAmber, 1, ts::Align::Center});
+                        std::string(kModeLabels[against_]) + ": " + numbers(table, against_), kAmber, 1, ts::Align::Center});
   }
 
   // The live view: the chosen mode (M0..M5; R is the CPU reference, seconds
@@ -358,7 +365,6 @@ class ParallaxAniso final : public ts::Scene {
     int left = liveMode(mode_), right = compare_ ? liveMode(against_) : -1;
     if (left < 0) left = right, right = -1;  // the reference cannot be drawn live: the other half fills the view
     ts::Measurements m;
-    live_ = {};
     if (left < 0) return m;
     PassOptions o;
     o.accel = accel_;
@@ -372,15 +378,17 @@ class ParallaxAniso final : public ts::Scene {
     std::vector<double> sorted = liveMs_;
     std::sort(sorted.begin(), sorted.end());
     double median = sorted[sorted.size() / 2];
-    live_.name = "parallax_live";
-    live_.params = {{"left", kModeKeys[left]}, {"right", right < 0 ? "-" : kModeKeys[right]},
-                    {"size", std::to_string(c.width) + "x" + std::to_string(c.height)},
-                    {"made_by", "ReliefGL::drawLive in the parallax_aniso demo's measure()"}};
-    live_.glTexture = tex;
-    live_.minFilter = live_.magFilter = GL_NEAREST;
-    live_.wrapS = live_.wrapT = GL_CLAMP_TO_EDGE;
-    liveSize_ = {c.width, c.height};
-    liveModes_ = {left, right};
+    Live live;
+    live.texture.name = "parallax_live";
+    live.texture.params = {{"left", kModeKeys[left]}, {"right", right < 0 ? "-" : kModeKeys[right]},
+                           {"size", std::to_string(c.width) + "x" + std::to_string(c.height)},
+                           {"made_by", "ReliefGL::drawLive in the parallax_aniso demo's measure()"}};
+    live.texture.glTexture = tex;
+    live.texture.minFilter = live.texture.magFilter = GL_NEAREST;
+    live.texture.wrapS = live.texture.wrapT = GL_CLAMP_TO_EDGE;
+    live.size = {c.width, c.height};
+    live.modes = {left, right};
+    m.detail = live;
     m.push_back({"live_ms_per_frame", median, "the live view's draw, median of the last " +
                                                   std::to_string(liveMs_.size()) + " frames (glFinish)"});
     m.push_back({"live_fps", 1000.0 / median, "frames per second that draw allows (20 = interactive)"});
@@ -388,7 +396,7 @@ class ParallaxAniso final : public ts::Scene {
   }
 
   static constexpr int kLiveBar = 22;  // the dark bars under the live view's two lines of text
-  void buildLive(ts::Frame& f) {
+  void buildLive(ts::Frame& f, const Live* live) const {
     const int line = 17;
     auto bar = [&](const char* id, int y) {
       ts::Panel p;
@@ -401,24 +409,24 @@ class ParallaxAniso final : public ts::Scene {
     std::string head = std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) +
                        " deg, azimuth " + fmtNum("%.0f", azimuth_) + " deg, height " + fmtNum("%.2f", heightScale_) +
                        gradientsNote() + ", live";
-    if (!live_.glTexture) {
+    if (!live || !live->texture.glTexture) {
       f.labels.push_back({16.0f, 6.0f, head, kWhite, 1, ts::Align::Left});
       f.labels.push_back({16.0f, 6.0f + line, "R (the reference) is traced on the CPU and is not drawn live: m picks a mode",
                           kAmber, 1, ts::Align::Left});
       return;
     }
-    addImage(f, "live", {0, 0, f.width, f.height}, live_);
+    addImage(f, "live", {0, 0, f.width, f.height}, live->texture);
     bar("top_bar", 0);
     bar("bottom_bar", f.height - kLiveBar);
     f.labels.push_back({16.0f, 4.0f, head, kWhite, 1, ts::Align::Left});
-    std::string sizeText = std::to_string(liveSize_.x) + "x" + std::to_string(liveSize_.y);
-    if (liveModes_.y < 0) {
-      f.labels.push_back({float(f.width / 2), float(f.height - line - 2), std::string(kModeLabels[liveModes_.x]) + ", " + sizeText,
+    std::string sizeText = std::to_string(live->size.x) + "x" + std::to_string(live->size.y);
+    if (live->modes.y < 0) {
+      f.labels.push_back({float(f.width / 2), float(f.height - line - 2), std::string(kModeLabels[live->modes.x]) + ", " + sizeText,
                           kAmber, 1, ts::Align::Center});
       return;
     }
-    f.labels.push_back({float(f.width / 4), float(f.height - line - 2), kModeLabels[liveModes_.x], kAmber, 1, ts::Align::Center});
-    f.labels.push_back({float(3 * f.width / 4), float(f.height - line - 2), kModeLabels[liveModes_.y], kAmber, 1,
+    f.labels.push_back({float(f.width / 4), float(f.height - line - 2), kModeLabels[live->modes.x], kAmber, 1, ts::Align::Center});
+    f.labels.push_back({float(3 * f.width / 4), float(f.height - line - 2), kModeLabels[live->modes.y], kAmber, 1,
                         ts::Align::Center});
     ts::Panel canvas;
     canvas.id = "divider";
@@ -434,32 +442,33 @@ class ParallaxAniso final : public ts::Scene {
   // equal pixels: small --res renders stay readable and comparable).
   static double panelScale(double fit) { return fit >= 2.0 ? std::floor(fit) : std::min(1.0, fit); }
 
-  void buildModes(ts::Frame& f) {
+  void buildModes(ts::Frame& f, const Shown& shown) const {
+    const Table& table = *shown.table;
     const int line = 17, gap = 12, cols = 4;
-    const int W = table_->cam.width, H = table_->cam.height;
+    const int W = table.cam.width, H = table.cam.height;
     double s = panelScale(std::min(double(f.width - (cols + 1) * gap) / (cols * W),
                                    double(f.height - 2 * line - 2 * (3 * line + 6)) / (2 * H)));
     int w = std::max(1, int(W * s)), h = std::max(1, int(H * s));
     int left = std::max(0, (f.width - cols * w - (cols - 1) * gap) / 2);
-    f.labels.push_back({float(f.width / 2), 4.0f, header(), kWhite, 1, ts::Align::Center});
+    f.labels.push_back({float(f.width / 2), 4.0f, header(table), kWhite, 1, ts::Align::Center});
     const int order[7] = {kNaive, kTrilinear, kAniso16, kReference, kEwa, kEwaVis, kEwaRows};
     for (int k = 0; k < 7; ++k) {
       int col = k % cols, row = k / cols;
       int x = left + col * (w + gap), y = 2 * line + row * (h + 3 * line + 6) + line;
-      addImage(f, std::string("image_") + kModeKeys[order[k]], {x, y, w, h}, textureOf(order[k]));
+      addImage(f, std::string("image_") + kModeKeys[order[k]], {x, y, w, h}, shown.of(order[k]));
       f.labels.push_back({float(x + w / 2), float(y - line), kModeLabels[order[k]], kWhite, 1, ts::Align::Center});
-      f.labels.push_back({float(x + w / 2), float(y + h + 3), numbers(order[k]), kAmber, 1, ts::Align::Center});
+      f.labels.push_back({float(x + w / 2), float(y + h + 3), numbers(table, order[k]), kAmber, 1, ts::Align::Center});
     }
     // The eighth cell: the band in numbers.
     int x = left + 3 * (w + gap), y = 2 * line + (h + 3 * line + 6) + line;
-    f.labels.push_back({float(x), float(y), "occlusion band: " + std::to_string(table_->bandPixels) + " px", kGrey, 1,
+    f.labels.push_back({float(x), float(y), "occlusion band: " + std::to_string(table.bandPixels) + " px", kGrey, 1,
                         ts::Align::Left});
     f.labels.push_back({float(x), float(y + line), "mode     PSNR    SSIM", kGrey, 1, ts::Align::Left});
     for (int m = 0; m < kShaderModes; ++m) {
-      const Row& r = table_->rows[size_t(m)];
+      const Row& r = table.rows[size_t(m)];
       f.labels.push_back({float(x), float(y + (m + 2) * line),
                           std::string("M") + std::to_string(m) + "    " +
-                              (table_->bandPixels ? fmtNum("%6.2f", r.psnrBand) + "  " + fmtNum("%6.4f", r.ssimBand)
+                              (table.bandPixels ? fmtNum("%6.2f", r.psnrBand) + "  " + fmtNum("%6.4f", r.ssimBand)
                                                   : std::string("     -       -")),
                           m >= kEwa ? kAmber : kWhite, 1, ts::Align::Left});
     }
@@ -468,22 +477,23 @@ class ParallaxAniso final : public ts::Scene {
     f.labels.push_back({float(x), float(y + 10 * line), "lk/px: texture lookups per pixel", kGrey, 1, ts::Align::Left});
   }
 
-  void buildError(ts::Frame& f) {
+  void buildError(ts::Frame& f, const Shown& shown) const {
+    const Table& table = *shown.table;
     const int line = 17, gap = 12;
-    const int W = table_->cam.width, H = table_->cam.height;
+    const int W = table.cam.width, H = table.cam.height;
     double s = panelScale(std::min(double(f.width - 5 * gap) / (4 * W), double(f.height - 5 * line) / H));
     int w = std::max(1, int(W * s)), h = std::max(1, int(H * s));
     int left = std::max(0, (f.width - 4 * w - 3 * gap) / 2);
-    f.labels.push_back({float(f.width / 2), 4.0f, header(), kWhite, 1, ts::Align::Center});
+    f.labels.push_back({float(f.width / 2), 4.0f, header(table), kWhite, 1, ts::Align::Center});
     const char* titles[4] = {"occlusion band", "M2 aniso 16x |error|", "M3 EWA |error|", "M4 EWA visible |error|"};
     const int modes[4] = {-1, kAniso16, kEwa, kEwaVis};
     for (int k = 0; k < 4; ++k) {
       int x = left + k * (w + gap), y = 2 * line + line / 2;
-      addImage(f, std::string("error_") + std::to_string(k), {x, y, w, h}, errorTextures_[size_t(k == 0 ? 3 : k - 1)]);
+      addImage(f, std::string("error_") + std::to_string(k), {x, y, w, h}, shown.errorTextures[size_t(k == 0 ? 3 : k - 1)]);
       f.labels.push_back({float(x + w / 2), float(y - line), titles[k], kWhite, 1, ts::Align::Center});
-      std::string n = k == 0 ? std::to_string(table_->bandPixels) + " px"
-                             : "band PSNR " + fmtNum("%.2f", table_->rows[size_t(modes[k])].psnrBand) + " dB, SSIM " +
-                                   fmtNum("%.3f", table_->rows[size_t(modes[k])].ssimBand);
+      std::string n = k == 0 ? std::to_string(table.bandPixels) + " px"
+                             : "band PSNR " + fmtNum("%.2f", table.rows[size_t(modes[k])].psnrBand) + " dB, SSIM " +
+                                   fmtNum("%.3f", table.rows[size_t(modes[k])].ssimBand);
       f.labels.push_back({float(x + w / 2), float(y + h + 4), n, kAmber, 1, ts::Align::Center});
     }
   }
@@ -493,8 +503,6 @@ class ParallaxAniso final : public ts::Scene {
   bool compare_ = false, accel_ = true, animate_ = false;
   int gradients_ = 0;  // 0: x1, 1: x4
   int sweep_ = 1;
-  ts::TextureDesc live_;
-  glm::ivec2 liveSize_{0}, liveModes_{-1};
   std::vector<double> liveMs_;
   std::string csvPath_;
 

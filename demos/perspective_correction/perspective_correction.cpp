@@ -103,7 +103,7 @@ class PerspectiveCorrection final : public ts::Scene {
     };
   }
 
-  ts::Frame build(int width, int height) override;
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
 
  private:
@@ -118,25 +118,25 @@ class PerspectiveCorrection final : public ts::Scene {
     int maxIndexError = 0;         // largest index difference, texels of 2048
   };
   Pass measurePass(ts::Renderer& r, const persp::Setup& s, Variant v, GLenum hint, ts::Image* out = nullptr) const;
-  plot::Data plotData();
-  std::vector<plot::Point> curve_;
-  double curveDistance_ = -1;
+  struct Result;
+  plot::Data plotData(const Result* last) const;
 
   int view_ = kBoth, filter_ = 2;
   float tilt_ = 60.0f, distance_ = 1.5f;
   bool edges_ = false;
 
-  // The last measurement, for the labels and the plot (valid when its
-  // setup is the current one).
-  struct Measured {
-    bool valid = false;
-    persp::Setup setup;
-    Pass affine, perspective;
-    long hintDiffering = 0;
-    double hintFastestError = 0;
-    std::string driver;
-    std::vector<plot::Point> sweep;
-  } last_;
+};
+
+// What measure() found, for the labels and the plot (measure()'s detail;
+// the labels use it when its setup is the current one).
+struct PerspectiveCorrection::Result {
+  persp::Setup setup;
+  Pass affine, perspective;
+  long hintDiffering = 0;
+  double hintFastestError = 0;
+  std::string driver;
+  std::vector<plot::Point> sweep;
+  std::vector<plot::Point> curve;  // the analytic error, every 2.5 degrees of tilt at this distance
 };
 
 ts::TextureDesc PerspectiveCorrection::checker() const {
@@ -179,7 +179,7 @@ void PerspectiveCorrection::addSquare(ts::Panel& p, const persp::Setup& s, Varia
   }
 }
 
-ts::Frame PerspectiveCorrection::build(int width, int height) {
+ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurements& measured) const {
   ts::Frame f;
   f.width = width;
   f.height = height;
@@ -193,10 +193,11 @@ ts::Frame PerspectiveCorrection::build(int width, int height) {
   const glm::vec4 white{0.95f, 0.95f, 0.95f, 1.0f}, grey{0.75f, 0.75f, 0.78f, 1.0f}, amber{1.0f, 0.75f, 0.3f, 1.0f};
   const persp::Setup s = setup();
   const persp::Distances d = persp::distances(s);
-  const bool have = last_.valid && last_.setup.tiltDeg == s.tiltDeg && last_.setup.distance == s.distance;
+  const Result* last = measured.detailAs<Result>();
+  const bool have = last && last->setup.tiltDeg == s.tiltDeg && last->setup.distance == s.distance;
 
   if (view_ == kPlot) {
-    plot::draw(f, plotData(), {0, 0, width, height});
+    plot::draw(f, plotData(last), {0, 0, width, height});
     return f;
   }
   int tex = f.addTexture(checker());
@@ -224,14 +225,14 @@ ts::Frame PerspectiveCorrection::build(int width, int height) {
   // The notes: the hint test, and the measured error against the rule of thumb.
   float y = float(py + ph + line + 10);
   if (have) {
-    std::string hint = last_.hintDiffering == 0
-        ? last_.driver + " ignores GL_PERSPECTIVE_CORRECTION_HINT: its GL_FASTEST and GL_NICEST renders are identical"
-        : last_.driver + " honours GL_PERSPECTIVE_CORRECTION_HINT: GL_FASTEST changes " +
-          std::to_string(last_.hintDiffering) + " px (error up to " + fmt("%.1f", last_.hintFastestError) + " texels)";
+    std::string hint = last->hintDiffering == 0
+        ? last->driver + " ignores GL_PERSPECTIVE_CORRECTION_HINT: its GL_FASTEST and GL_NICEST renders are identical"
+        : last->driver + " honours GL_PERSPECTIVE_CORRECTION_HINT: GL_FASTEST changes " +
+          std::to_string(last->hintDiffering) + " px (error up to " + fmt("%.1f", last->hintFastestError) + " texels)";
     f.labels.push_back({float(width / 2), y, hint, amber, 1, ts::Align::Center});
     f.labels.push_back({float(width / 2), y + float(line),
-                        "Screen-linear image: largest (s,t) error " + fmt("%.1f", last_.affine.maxErrorTexels) +
-                            " texels of 256 (" + fmt("%.2f", last_.affine.maxErrorTexels / (persp::kTexels / persp::kChecks)) +
+                        "Screen-linear image: largest (s,t) error " + fmt("%.1f", last->affine.maxErrorTexels) +
+                            " texels of 256 (" + fmt("%.2f", last->affine.maxErrorTexels / (persp::kTexels / persp::kChecks)) +
                             " checks), measured from a texel-index render",
                         white, 1, ts::Align::Center});
   }
@@ -286,7 +287,7 @@ PerspectiveCorrection::Pass PerspectiveCorrection::measurePass(ts::Renderer& r, 
 ts::Measurements PerspectiveCorrection::measure(ts::Renderer& r) {
   const persp::Setup s = setup();
   const persp::Distances d = persp::distances(s);
-  Measured m;
+  Result m;
   m.setup = s;
   m.affine = measurePass(r, s, kAffineVariant, GL_FASTEST);
   // The hint test: GL's own projection under both hints, pixel by pixel.
@@ -321,12 +322,16 @@ ts::Measurements PerspectiveCorrection::measure(ts::Renderer& r) {
     out.push_back({key + "_error_texels", p.maxErrorTexels, "measured largest error of the screen-linear image"});
     out.push_back({key + "_predicted", p.predictedTexels, "analytic largest error at the same pixels"});
   }
-  m.valid = true;
-  last_ = m;
+  // The analytic curve, densely (2.5 degree steps), at the measurement's size.
+  for (double tilt = 0; tilt <= kSweepMaxDeg + 1e-9; tilt += 2.5) {
+    persp::Setup st{tilt, s.distance};
+    m.curve.push_back({persp::distances(st).ratio(), persp::maxAffineErrorTexels(st, kMeasureSize), tilt});
+  }
+  out.detail = m;
   return out;
 }
 
-plot::Data PerspectiveCorrection::plotData() {
+plot::Data PerspectiveCorrection::plotData(const Result* last) const {
   const persp::Setup s = setup();
   plot::Data data;
   data.title = "Largest (s,t) error of the screen-linear image vs (d2 - d1)/d1: tilts 0.." +
@@ -334,24 +339,14 @@ plot::Data PerspectiveCorrection::plotData() {
   data.xLabel = "(d2 - d1)/d1   (d1, d2: nearest and farthest distance from the eye to the square)";
   data.yLabel = "error, texels of 256 (one check = 32)";
   data.tagFormat = "t=%g";
-  // The analytic curve, densely (2.5 degree steps), at the measurement's
-  // size; kept while the distance stays (build() runs every window frame).
-  if (curveDistance_ != s.distance) {
-    curve_.clear();
-    for (double tilt = 0; tilt <= kSweepMaxDeg + 1e-9; tilt += 2.5) {
-      persp::Setup st{tilt, s.distance};
-      curve_.push_back({persp::distances(st).ratio(), persp::maxAffineErrorTexels(st, kMeasureSize), tilt});
-    }
-    curveDistance_ = s.distance;
-  }
-  data.curve = curve_;
-  if (!curve_.empty() && curve_.front().x >= 0.05)  // the rule of thumb's blind spot, when it shows
-    data.notes.push_back({curve_.front(), "<- tilt 0: facing the eye, all depths equal, no error although (d2 - d1)/d1 = " +
-                                              fmt("%.2f", curve_.front().x)});
-  if (last_.valid && last_.setup.distance == s.distance) data.measured = last_.sweep;
   data.current = {persp::distances(s).ratio(), persp::maxAffineErrorTexels(s, kMeasureSize), s.tiltDeg};
-  if (last_.valid && last_.setup.tiltDeg == s.tiltDeg && last_.setup.distance == s.distance)
-    data.current.y = last_.affine.maxErrorTexels;
+  if (!last || last->setup.distance != s.distance) return data;  // the curve and sweep come with a measurement
+  data.curve = last->curve;
+  if (!data.curve.empty() && data.curve.front().x >= 0.05)  // the rule of thumb's blind spot, when it shows
+    data.notes.push_back({data.curve.front(), "<- tilt 0: facing the eye, all depths equal, no error although (d2 - d1)/d1 = " +
+                                                  fmt("%.2f", data.curve.front().x)});
+  data.measured = last->sweep;
+  if (last->setup.tiltDeg == s.tiltDeg) data.current.y = last->affine.maxErrorTexels;
   return data;
 }
 }  // namespace

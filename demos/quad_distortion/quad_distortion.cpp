@@ -106,7 +106,7 @@ class QuadDistortion final : public ts::Scene {
   }
 
   ts::Measurements measure(ts::Renderer& r) override;
-  ts::Frame build(int width, int height) override;
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
 
   // Public for the tests: the texel-index render of one variant.
   struct Variant {
@@ -144,7 +144,7 @@ class QuadDistortion final : public ts::Scene {
   std::string cornersText_ = "0,0 1,0 0.75,0.75 0,1";  // the book's labels
   std::string texturePath_;
   ts::TextureDesc fileTexture_;
-  std::map<std::string, double> measured_;             // variant name -> kink, for labels
+  using Kinks = std::map<std::string, double>;  // variant name -> measured kink: measure()'s detail
 };
 
 quadmap::Corners QuadDistortion::parseCorners(const std::string& text) {
@@ -254,7 +254,7 @@ static std::string fmt(const char* f, double v) {
   return b;
 }
 
-ts::Frame QuadDistortion::build(int width, int height) {
+ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& measured) const {
   ts::Frame f;
   f.width = width;
   f.height = height;
@@ -266,6 +266,7 @@ ts::Frame QuadDistortion::build(int width, int height) {
   glm::mat4 unit = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
   quadmap::Corners st = corners();
   Variant current{Diagonal(diagonal_), Interp(interp_)};
+  const Kinks none, &kinks = measured.detailAs<Kinks>() ? *measured.detailAs<Kinks>() : none;
   auto cornerLabels = [&](const ts::Rect& r, bool withValues) {
     const auto& P = quadmap::squareCorners();
     for (int i = 0; i < 4; ++i) {
@@ -296,8 +297,8 @@ ts::Frame QuadDistortion::build(int width, int height) {
     f.labels.push_back({float(width / 4), float(line / 2), "texture space: the region", white, scale, ts::Align::Center});
     std::string name = variantName(current);
     f.labels.push_back({float(3 * width / 4), float(line / 2), "screen space: " + name, white, scale, ts::Align::Center});
-    auto m = measured_.find(name);
-    if (m != measured_.end())
+    auto m = kinks.find(name);
+    if (m != kinks.end())
       f.labels.push_back({float(width / 2), float(height - line), "kink along the diagonal: " + fmt("%.1f", m->second) +
                               " deg (predicted " + fmt("%.1f", predicted(current)) + ")", {1.0f, 0.75f, 0.3f, 1.0f},
                           scale, ts::Align::Center});
@@ -317,8 +318,8 @@ ts::Frame QuadDistortion::build(int width, int height) {
       std::string name = variantName(vs[k]);
       float cx = float((2 * k + 1) * width / 8);
       f.labels.push_back({cx, float(top - line - line / 2), name, white, scale, ts::Align::Center});
-      auto m = measured_.find(name);
-      if (m != measured_.end())
+      auto m = kinks.find(name);
+      if (m != kinks.end())
         f.labels.push_back({cx, float(top + side + line / 2), "kink " + fmt("%.1f", m->second) + " deg",
                             {1.0f, 0.75f, 0.3f, 1.0f}, scale, ts::Align::Center});
     }
@@ -402,12 +403,12 @@ ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
     todo = {{Diagonal::TopLeftBottomRight, kAffine}, {Diagonal::BottomLeftTopRight, kAffine},
             {Diagonal(diagonal_), kBilinear}, {Diagonal(diagonal_), kProjective}};
   ts::Measurements out;
-  measured_.clear();
+  Kinks kinks;
   for (const Variant& v : todo) {
     double texelError = 0;
     double kink = measureKink(r, v, &texelError);
     std::string name = variantName(v);
-    measured_[name] = kink;
+    kinks[name] = kink;
     std::string key = name;
     for (char& c : key)
       if (c == ' ' || c == '-') c = '_';
@@ -417,6 +418,7 @@ ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
   }
   out.push_back({"split_disagreement_texels", quadmap::splitDisagreement(corners(), current.diagonal) * 256.0,
                  "how far apart the two triangles' maps put one point (256 texels)"});
+  out.detail = kinks;
   return out;
 }
 }  // namespace

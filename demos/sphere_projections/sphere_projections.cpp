@@ -92,7 +92,7 @@ class SphereProjections final : public ts::Scene {
          {"--view", "plot", "--mapping", "both"}, 1024, 512},
     };
   }
-  ts::Frame build(int width, int height) override;
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
 
  private:
@@ -106,18 +106,26 @@ class SphereProjections final : public ts::Scene {
     return {Mapping::Latitude, Mapping::Cylinder};
   }
   Result measureMapping(ts::Renderer& r, Mapping m) const;
-  void addSphere(ts::Frame& f, const ts::Rect& vp, Mapping m, int texture, int scale, int line) const;
-  void addPlot(ts::Frame& f, int width, int height, int scale, int line) const;
+  using Results = std::map<std::pair<int, int>, Result>;  // (mapping, resolution) -> numbers
+  // What measure() found for this mapping at this resolution (null before it has).
+  const Result* found(const ts::Measurements& measured, Mapping m) const {
+    const Results* all = measured.detailAs<Results>();
+    if (!all) return nullptr;
+    auto it = all->find({int(m), resolution_});
+    return it == all->end() ? nullptr : &it->second;
+  }
+  void addSphere(ts::Frame& f, const ts::Rect& vp, Mapping m, int texture, int scale, int line, const Result* res) const;
+  void addPlot(ts::Frame& f, int width, int height, int scale, int line, const ts::Measurements& measured) const;
 
   int shown_ = kBoth, view_ = 0, rotation_ = 20, tilt_ = 20, resolution_ = 4;
-  std::map<std::pair<int, int>, Result> measured_;  // (mapping, resolution) -> numbers
+  Results cache_;  // measure()'s: rotation and tilt do not change the numbers
 };
 
 // ---------------------------------------------------------------------------
 // The picture.
 
 void SphereProjections::addSphere(ts::Frame& f, const ts::Rect& vp, Mapping m, int texture, int scale,
-                                  int line) const {
+                                  int line, const Result* res) const {
   ts::Panel p;
   p.id = std::string("sphere_") + kKey[int(m)];
   p.viewport = vp;
@@ -137,17 +145,16 @@ void SphereProjections::addSphere(ts::Frame& f, const ts::Rect& vp, Mapping m, i
   float cx = float(vp.x + vp.w / 2);
   f.labels.push_back({cx, float(vp.y - 2 * line), kEq[int(m)], kColour[int(m)], scale, ts::Align::Center});
   f.labels.push_back({cx, float(vp.y - line), kFormula[int(m)], kWhite, scale, ts::Align::Center});
-  auto it = measured_.find({int(m), resolution_});
-  if (it != measured_.end()) {
-    const Result& res = it->second;
+  if (res) {
     f.labels.push_back({cx, float(vp.y + vp.h + line / 3),
-                        "texture/surface area: equator band " + fmt("%.2f", res.render[kBands / 2]) + ", pole bands " +
-                            fmt("%.2f", res.render[kBands - 1]),
+                        "texture/surface area: equator band " + fmt("%.2f", res->render[kBands / 2]) + ", pole bands " +
+                            fmt("%.2f", res->render[kBands - 1]),
                         kWhite, scale, ts::Align::Center});
   }
 }
 
-void SphereProjections::addPlot(ts::Frame& f, int width, int height, int scale, int line) const {
+void SphereProjections::addPlot(ts::Frame& f, int width, int height, int scale, int line,
+                                const ts::Measurements& measured) const {
   // Plot area: latitude -90..90 across, ratio 0..kTop up.  The VI.2 curve
   // leaves the top near the poles (it is 1/cos φ); the viewport clips it.
   const double kTop = 4.5;
@@ -173,10 +180,9 @@ void SphereProjections::addPlot(ts::Frame& f, int width, int height, int scale, 
     ts::Batch a = ts::lineLoop(curve, c, 1.0f, std::string("analytic_") + kKey[int(m)]);
     a.prim = ts::Prim::LineStrip;
     p.batches.push_back(a);
-    auto it = measured_.find({int(m), resolution_});
     std::string legend = std::string(kEq[int(m)]) + "  " + kFormula[int(m)] + ":  analytic (line)";
-    if (it != measured_.end()) {
-      const Result& res = it->second;
+    if (const Result* got = found(measured, m)) {
+      const Result& res = *got;
       // Bars across each band and a 7-px square at its centre.  The squares
       // are two triangles each, not GL points: the sidecar does not record
       // a point size, and the oracle must be able to redraw the figure.
@@ -213,7 +219,7 @@ void SphereProjections::addPlot(ts::Frame& f, int width, int height, int scale, 
                       kWhite, scale, ts::Align::Left});
 }
 
-ts::Frame SphereProjections::build(int width, int height) {
+ts::Frame SphereProjections::build(int width, int height, const ts::Measurements& measured) const {
   ts::Frame f;
   f.width = width;
   f.height = height;
@@ -221,7 +227,7 @@ ts::Frame SphereProjections::build(int width, int height) {
   int scale = std::max(1, std::min(3, std::min(width, height) / 300));
   int line = int(ts::text::height(scale)) + 6 * scale;
   if (view_ == 1) {
-    addPlot(f, width, height, scale, line);
+    addPlot(f, width, height, scale, line, measured);
     return f;
   }
   // 16 x 16 checks: 22.5° of θ per check around, 11.25° of φ (VI.2) per
@@ -237,7 +243,8 @@ ts::Frame SphereProjections::build(int width, int height) {
   int side = std::max(1, std::min(width / n - 2 * line, height - 4 * line));
   int top = std::max(2 * line, (height - side) / 2);
   for (int k = 0; k < n; ++k)
-    addSphere(f, {(2 * k + 1) * width / (2 * n) - side / 2, top, side, side}, ms[size_t(k)], tex, scale, line);
+    addSphere(f, {(2 * k + 1) * width / (2 * n) - side / 2, top, side, side}, ms[size_t(k)], tex, scale, line,
+              found(measured, ms[size_t(k)]));
   return f;
 }
 
@@ -358,8 +365,8 @@ ts::Measurements SphereProjections::measure(ts::Renderer& r) {
   ts::Measurements out;
   for (Mapping m : mappings()) {
     auto key = std::make_pair(int(m), resolution_);
-    if (!measured_.count(key)) measured_[key] = measureMapping(r, m);  // rotation and tilt do not matter
-    const Result& res = measured_[key];
+    if (!cache_.count(key)) cache_[key] = measureMapping(r, m);  // rotation and tilt do not matter
+    const Result& res = cache_[key];
     const std::string k = kKey[int(m)];
     for (int b = 0; b < kBands; ++b) {
       std::string band = bandName(b), deg = fmt("%.0f", spheremap::bandLo(b)) + ".." + fmt("%.0f", spheremap::bandHi(b));
@@ -374,6 +381,7 @@ ts::Measurements SphereProjections::measure(ts::Renderer& r) {
     out.push_back({k + "_pole_s_span", res.poleSpan, "fraction of the texture's width (s) seen within 3 px of a pole"});
     out.push_back({k + "_front_s_span", res.frontSpan, "the same within 3 px of the front point (theta 0, phi 0)"});
   }
+  out.detail = cache_;
   return out;
 }
 }  // namespace

@@ -103,7 +103,7 @@ class Torus final : public ts::Scene {
          {"--view", "compare", "--texture", "grid"}, 1280, 520},
     };
   }
-  ts::Frame build(int width, int height) override;
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
 
   static glm::dvec2 parseRadii(const std::string& text) {
@@ -139,7 +139,8 @@ class Torus final : public ts::Scene {
   ts::TextureDesc picture() const {
     return texture_ == 0 ? ts::checkerboard(256, 16) : ts::labelledGrid(512, 8);
   }
-  void addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale) const;
+  // found: what measure() found for this mapping (null before it has).
+  void addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale, const Found* found) const;
   void addTexture(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const;
   Found find(ts::Renderer& r, Mapping m) const;
 
@@ -147,7 +148,7 @@ class Torus final : public ts::Scene {
   bool marker_ = true;
   float tilt_ = 35.0f, turn_ = 0.0f;
   std::string radiiText_ = "1,0.4";
-  std::map<int, Found> found_;  // mapping -> measurement, for labels
+  using Founds = std::map<int, Found>;  // mapping -> where the centre was found: measure()'s detail
 };
 
 void Torus::addTexture(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const {
@@ -173,7 +174,7 @@ void Torus::addTexture(ts::Frame& f, const ts::Rect& vp, int tex, int scale) con
   f.panels.push_back(p);
 }
 
-void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale) const {
+void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale, const Found* found) const {
   torusmap::Params tp = params(m);
   ts::Panel p;
   p.id = std::string("torus_") + kMappingNames[int(m)];
@@ -199,15 +200,14 @@ void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int s
       cross.vertices.push_back({glm::vec3(q), {0, 0, 0, 1}, kMarker});
     p.batches.push_back(cross);
     glm::vec2 q = ts::panelToPixels(p, p.projection * p.modelview * glm::vec4(glm::vec3(c), 1.0f));
-    auto it = found_.find(int(m));
-    bool hidden = it != found_.end() && !it->second.visible;
+    bool hidden = found && !found->visible;
     f.labels.push_back({q.x + 10.0f * float(scale), q.y + 6.0f * float(scale),
                         hidden ? "(1/2,1/2): hidden" : "(1/2,1/2)", kWhite, scale, ts::Align::Left, kMarkerBox});
   }
   f.panels.push_back(p);
 }
 
-ts::Frame Torus::build(int width, int height) {
+ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) const {
   ts::Frame f;
   f.width = width;
   f.height = height;
@@ -229,7 +229,9 @@ ts::Frame Torus::build(int width, int height) {
     const Mapping m = shown[k];
     const torusmap::Params tp = params(m);
     int x0 = texCol + int(k) * side;
-    addTorus(f, {x0, top, side, side}, m, tex, scale);
+    const Founds* founds = measured.detailAs<Founds>();
+    const Found* found = founds && founds->count(int(m)) ? &founds->at(int(m)) : nullptr;
+    addTorus(f, {x0, top, side, side}, m, tex, scale, found);
     float cx = float(x0 + side / 2);
     f.labels.push_back({cx, float(line / 2),
                         m == Mapping::Book ? "s=theta/360, t=phi/360" : "s=theta/360+1/2, t=phi/360+1/2",
@@ -239,10 +241,9 @@ ts::Frame Torus::build(int width, int height) {
                         "centre at (0, 0, " + fmt("%.2f", answer.z) + ")" +
                             (m == Mapping::Book ? " = -(R - r)" : " = R + r"),
                         kWhite, scale, ts::Align::Center});
-    auto it = found_.find(int(m));
-    if (it != found_.end())
+    if (found)
       f.labels.push_back({cx, float(height - line - line / 4),
-                          it->second.visible ? "measured: " + fmt("%.3f", glm::length(it->second.point - answer)) +
+                          found->visible ? "measured: " + fmt("%.3f", glm::length(found->point - answer)) +
                                                    " from the answer"
                                              : "measured: not visible from here",
                           kMeasured, scale, ts::Align::Center});
@@ -352,11 +353,11 @@ ts::Measurements Torus::measure(ts::Renderer& r) {
   std::vector<Mapping> todo = view_ == 0 ? std::vector<Mapping>{Mapping(mapping_)}
                                          : std::vector<Mapping>{Mapping::Book, Mapping::Front};
   ts::Measurements out;
-  found_.clear();
+  Founds founds;
   for (Mapping m : todo) {
     const torusmap::Params tp = params(m), other = params(m == Mapping::Book ? Mapping::Front : Mapping::Book);
     Found fd = find(r, m);
-    found_[int(m)] = fd;
+    founds[int(m)] = fd;
     const std::string n = std::string("[") + kMappingNames[int(m)] + "]";
     const glm::dvec3 answer = torusmap::centrePoint(tp);
     glm::mat4 mvp = projection() * modelview(tp);
@@ -378,6 +379,7 @@ ts::Measurements Torus::measure(ts::Renderer& r) {
                    fd.visible ? glm::distance(fd.point, torusmap::centrePoint(other)) : none,
                    "from the other mapping's answer (should be far)"});
   }
+  out.detail = founds;
   return out;
 }
 }  // namespace

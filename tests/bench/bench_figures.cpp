@@ -47,9 +47,9 @@ std::unique_ptr<ts::Context> makeContext(ts::Backend b, int w, int h) {
 struct Rig {
   Rig(const Figure& f, ts::Backend b)
       : w(f.spec.width), h(f.spec.height), ctx(makeContext(b, w, h)), renderer(*ctx), state(f) {
-    state.scene->measure(renderer);
+    measured = state.scene->measure(renderer);
     if (ctx->width() != w || ctx->height() != h) ctx->resize(w, h);
-    frame = state.scene->build(w, h);
+    frame = state.scene->build(w, h, measured);
     renderer.draw(frame);
     glFinish();
     ts::gl::check("the benchmark's first draw");
@@ -61,6 +61,7 @@ struct Rig {
   std::unique_ptr<ts::Context> ctx;
   ts::Renderer renderer;
   ts::bench::SceneState state;
+  ts::Measurements measured;
   ts::Frame frame;
 };
 
@@ -106,7 +107,7 @@ void benchBuild(benchmark::State& st, const Figure& f) {
   guarded(st, [&] {
     Rig rig(f, ts::Backend::Auto);  // measured first: labels show the measured numbers
     for (auto _ : st) {
-      ts::Frame fr = rig.scene().build(rig.w, rig.h);
+      ts::Frame fr = rig.scene().build(rig.w, rig.h, rig.measured);
       benchmark::DoNotOptimize(fr.panels.data());
     }
   });

@@ -86,9 +86,9 @@ void benchWindowDraw(benchmark::State& st, const Figure& f) {
   try {
     ts::Renderer r(*g_target);
     ts::bench::SceneState s(f);
-    s.scene->measure(r);  // once, as the window does when the state changes
+    ts::Measurements measured = s.scene->measure(r);  // once, as the window does when the state changes
     g_target->sync();
-    r.draw(s.scene->build(g_target->width(), g_target->height()));  // uploads textures, compiles shaders
+    r.draw(s.scene->build(g_target->width(), g_target->height(), measured));  // uploads textures, compiles shaders
     glfwSwapBuffers(g_window);
     auto last = Clock::now();
     auto start = last;
@@ -98,8 +98,8 @@ void benchWindowDraw(benchmark::State& st, const Figure& f) {
       s.scene->update(seconds(now - last));
       last = now;
       g_target->sync();
-      if (s.scene->live()) s.scene->measure(r);  // a live view draws itself every frame, as the window loop does
-      ts::Frame frame = s.scene->build(g_target->width(), g_target->height());
+      if (s.scene->live()) measured = s.scene->measure(r);  // a live view draws itself every frame, as the window loop does
+      ts::Frame frame = s.scene->build(g_target->width(), g_target->height(), measured);
       r.draw(frame);
       glfwSwapBuffers(g_window);
     }

@@ -168,7 +168,7 @@ TEST(MipmapPopping, LinearLightAveragesAreBrighter) {
   EXPECT_NEAR(b.back().at(0, 0).r, want, 2.0);
   EXPECT_GT(want, 150.0);
   // The demo's frames carry the flag to the renderer.
-  ts::Frame fs = srgb.scene->build(256, 128), fl = linear.scene->build(256, 128);
+  ts::Frame fs = srgb.frame(256, 128), fl = linear.frame(256, 128);
   ASSERT_FALSE(fs.textures.empty());
   EXPECT_FALSE(fs.textures[0].linearLightMips);
   EXPECT_TRUE(fl.textures[0].linearLightMips);
@@ -562,7 +562,7 @@ TEST(MipmapPopping, FilmstripFramesShowTheirLevels) {
 TEST(MipmapPopping, PlotDrawsTheMeasuredSweep) {
   Demo demo("mipmap_popping", {"--view", "plot"});
   demo.measure();
-  ts::Frame f = demo.scene->build(1024, 640);
+  ts::Frame f = demo.frame(1024, 640);
   int series = 0;
   const size_t n = sweep::sweepLods().size();
   for (const auto& p : f.panels)
@@ -612,7 +612,7 @@ TEST(MipmapPopping, BadFlagValuesAreOneLineErrors) {
 // same frame count always gives the same picture.
 TEST(MipmapPopping, AnimationIsFrameCountedAfterAPause) {
   auto planeProjection = [](ts::Scene& s) {
-    ts::Frame f = s.build(320, 200);
+    ts::Frame f = s.build(320, 200, {});
     return f.panel("plane")->projection;
   };
   Demo still("mipmap_popping", {}), moving("mipmap_popping", {"--animate"});

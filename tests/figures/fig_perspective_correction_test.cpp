@@ -139,7 +139,7 @@ TEST(VI2, BookViewIsTheTwoVariantsOfOneSquare) {
     EXPECT_EQ(a.batches[0].vertices[k].tex, p.batches[0].vertices[k].tex);
   }
   Demo affineOnly("perspective_correction", {"--view", "affine"});
-  EXPECT_EQ(affineOnly.scene->build(800, 480).perspectiveHint, GLenum(GL_FASTEST)) << "the book's 'without' call";
+  EXPECT_EQ(affineOnly.frame(800, 480).perspectiveHint, GLenum(GL_FASTEST)) << "the book's 'without' call";
 }
 
 // Claim: the right panel is perspective-correct: every probed pixel has the
@@ -296,7 +296,7 @@ TEST(VI2, HintDetectionIsReportedOnScreen) {
   std::string renderer = ts::test::rendererString();
   if (renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos)
     EXPECT_EQ(differ, 0.0) << renderer << " was measured to ignore the hint";
-  ts::Frame f = demo.scene->build(kW, kH);
+  ts::Frame f = demo.frame(kW, kH);
   std::string driver = renderer.substr(0, renderer.find(' '));
   bool said = false;
   for (const auto& l : f.labels)

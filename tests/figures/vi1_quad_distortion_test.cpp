@@ -131,7 +131,7 @@ TEST(VI1, MapsThe256TexelCheckerboard) {
     EXPECT_GT(p.viewport.w, 300);
   }
   Demo linear("quad_distortion", {"--filter", "linear"});
-  ts::Frame g = linear.scene->build(1024, 512);
+  ts::Frame g = linear.frame(1024, 512);
   EXPECT_EQ(g.textures.at(0).magFilter, GLenum(GL_LINEAR));
 }
 

@@ -75,7 +75,7 @@ ts::Frame quadFigure(const std::string& diagonal, int w, int h) {
   ts::Options o;
   s->addOptions(o);
   o.parse({"--view", "book", "--diagonal", diagonal, "--interp", "affine"});
-  return s->build(w, h);
+  return s->build(w, h, {});  // the picture before any measurement: labels without numbers
 }
 
 TEST(Negative, WrongDiagonalIsRejected) {

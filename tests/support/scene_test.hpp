@@ -19,6 +19,7 @@ namespace ts::test {
 struct Demo {
   std::unique_ptr<Scene> scene;
   Options opts;
+  Measurements measured;  // the last measure(); empty before it
   Demo(const std::string& id, const std::vector<std::string>& flags) : scene(makeScene(id)) {
     if (!scene) throw std::runtime_error(id + " is not registered (is its scene linked into this test?)");
     scene->addOptions(opts);
@@ -30,13 +31,14 @@ struct Demo {
   Demo(const std::string& id, const std::vector<std::string>& flags, Renderer& r) : Demo(id, flags) {
     own_ = &r;
   }
-  Measurements measure() { return scene->measure(drawWith()); }
+  // Measures, and keeps the result for frame() to draw, as the window does.
+  Measurements measure() { return measured = scene->measure(drawWith()); }
   // The frame at w x h; the test context is resized to it first, as a
   // --png render of that size would be.
   Frame frame(int w, int h) {
     Context& ctx = own_ ? own_->context() : context();
     if (ctx.width() != w || ctx.height() != h) ctx.resize(w, h);
-    return scene->build(w, h);
+    return scene->build(w, h, measured);
   }
   // frame() drawn and read back (labels off unless asked: the font is not
   // what the tests are about).
