@@ -32,6 +32,12 @@ void Options::addText(const std::string& name, std::string* v, const std::string
   items_.push_back({Item::Text, name, help, v, {}, 0, 0, 1, 0, 0, std::move(validate)});
 }
 
+void Options::addFile(const std::string& name, std::string* v, const std::string& help,
+                      std::function<void(const std::string&)> validate) {
+  addText(name, v, help, std::move(validate));
+  items_.back().metavar = "FILE";
+}
+
 Options::Item* Options::find(const std::string& name) {
   for (auto& it : items_)
     if (it.name == name) return &it;
@@ -205,7 +211,7 @@ std::string Options::helpText() const {
       }
       case Item::Int:
       case Item::Float: flag += " [" + formatNumber(it.lo) + ".." + formatNumber(it.hi) + "]"; break;
-      case Item::Text: flag += " TEXT"; break;
+      case Item::Text: flag += " " + it.metavar; break;
     }
     std::string keys;
     if (it.key) keys = "key " + keyName(it.key);

@@ -25,6 +25,9 @@ class Options {
   // Free text checked by `parse` (which throws ts::Error with a reason).
   void addText(const std::string& name, std::string* v, const std::string& help,
                std::function<void(const std::string&)> validate);
+  // A file name: the same as addText, shown as "--name FILE" in --help.
+  void addFile(const std::string& name, std::string* v, const std::string& help,
+               std::function<void(const std::string&)> validate);
 
   // Applies "--name value" / "--name=value" / "--flag" arguments; throws
   // ts::Error on anything unknown or invalid.
@@ -58,6 +61,7 @@ class Options {
     double lo = 0, hi = 0, step = 1;
     char key = 0, keyDown = 0;
     std::function<void(const std::string&)> validate;
+    std::string metavar = "TEXT";  // Text: what --help shows as its value
   };
   const std::vector<Item>& items() const { return items_; }
 

@@ -112,7 +112,8 @@ class MipmapPopping final : public ts::Scene {
     o.addInt("anisotropy", &aniso_, 2, 16, "GL_TEXTURE_MAX_ANISOTROPY of the anisotropic filter (2..16)", 'a', 'A', 2);
     o.addEnum("levels", &levels_, {"texture", "colours", "split"},
               "the texture | each mip level one colour | left texture, right colours", 'c');
-    o.addEnum("texture", &texture_, {"grid", "checker"}, "labelled grid or checkerboard (256 x 256)", 't');
+    o.addEnum("pattern", &texture_, {"grid", "checker"}, "labelled grid or checkerboard (256 x 256)", 't');
+    picture_.addOption(o, "the pattern (mip chain built from it)");
     o.addBool("linear-light", &linearLight_, "average the mip levels in linear light (gamma-correct) instead of sRGB",
               'g');
     o.addBool("animate", &animate_, "window: move the plane to and fro (starts after 30 frames)", 'm');
@@ -159,7 +160,7 @@ class MipmapPopping final : public ts::Scene {
     double p = std::fmod(x, 2 * span);
     return kMinLog2 + (p <= span ? p : 2 * span - p);
   }
-  sweep::Look look() const { return {filter_, aniso_, bias_, texture_, linearLight_}; }
+  sweep::Look look() const { return {filter_, aniso_, bias_, texture_, linearLight_, &picture_}; }
 
   void buildSingle(ts::Frame& f) const;
   void buildFilmstrip(ts::Frame& f) const;
@@ -167,6 +168,7 @@ class MipmapPopping final : public ts::Scene {
   void buildSlant(ts::Frame& f) const;
 
   int view_ = kSingle, filter_ = kNearestMipNearest, aniso_ = 16, levels_ = kSplit, texture_ = 0;
+  ts::UserTexture picture_;  // --texture FILE
   float distLog2_ = 2.375f, bias_ = 0.0f;
   bool linearLight_ = false, animate_ = false;
   long animFrames_ = 0;

@@ -27,6 +27,7 @@
 
 #include "common/render.hpp"
 #include "common/textures.hpp"
+#include "common/user_texture.hpp"
 #include "mip_math.hpp"
 
 namespace mipmath {
@@ -43,6 +44,7 @@ struct Look {
   float lodBias = 0;
   int texture = 0;  // 0 labelled grid, 1 checkerboard
   bool linearLight = false;
+  const ts::UserTexture* picture = nullptr;  // --texture FILE: its chain replaces the pattern's
 };
 
 // The texture (256 x 256, the book's 2x2 mip chain) with the look's filter.
@@ -51,7 +53,7 @@ inline ts::TextureDesc texture(const Look& l) {
   t.mipmaps = true;
   t.linearLightMips = l.linearLight;
   applyFilter(t, l.filter, l.anisotropy, l.lodBias);
-  return t;
+  return l.picture ? l.picture->orDefault(t) : t;
 }
 // Level k filled with ts::mipLevelColour(k).
 inline ts::TextureDesc colouredTexture(const Look& l) {

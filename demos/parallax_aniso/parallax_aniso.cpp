@@ -52,6 +52,7 @@
 #include "common/figure.hpp"
 #include "common/render.hpp"
 #include "common/textures.hpp"
+#include "common/user_texture.hpp"
 #include "common/scene.hpp"
 #include "measure.hpp"
 #include "parallax_gl.hpp"
@@ -139,7 +140,8 @@ class ParallaxAniso final : public ts::Scene {
               "the gradients M1 and M2 give textureGrad: x1 the unshifted coordinate's, x4 four times longer -- "
               "trilinear M1 turns blurrier; a filter that ignores them (llvmpipe's anisotropic M2) does not change",
               'g');
-    o.addText("csv", &csvPath_, "write the measured table as CSV to FILE", [](const std::string& v) {
+    picture_.addOption(o, "the albedo (resampled to 512x512)");
+    o.addFile("csv", &csvPath_, "write the measured table as CSV to FILE", [](const std::string& v) {
       if (!v.empty()) ts::checkWritable(v);
     });
   }
@@ -275,10 +277,20 @@ class ParallaxAniso final : public ts::Scene {
     char b[256];
     std::snprintf(b, sizeof b, "%d %.4f %.3f %.3f %d %d %d %d %d %d", map_, heightScale_, angle_, azimuth_, res_,
                   rays_, seed_, accel_ ? 1 : 0, timeRuns_, gradients_);
-    return b;
+    return b + picture_.path();
   }
   Relief& relief() {
-    if (!relief_ || relief_->name != kMaps[map_]) relief_ = std::make_unique<Relief>(makeRelief(kMaps[map_]));
+    // --texture FILE: the file is the albedo (its own 2x2 chain, at the
+    // heights' size, which the EWA shaders assume); the name keys the GL cache.
+    std::string name = picture_.active() ? std::string(kMaps[map_]) + " + " + picture_.path() : kMaps[map_];
+    if (!relief_ || relief_->name != name) {
+      relief_ = std::make_unique<Relief>(makeRelief(kMaps[map_]));
+      if (picture_.active()) {
+        const ts::Image& a0 = relief_->albedo[0];
+        relief_->albedo = ts::buildMipChain(ts::resizeBilinear(picture_.image(), a0.width, a0.height));
+        relief_->name = name;
+      }
+    }
     return *relief_;
   }
   const ts::TextureDesc& textureOf(int mode) const { return textures_[size_t(mode == kReference ? 6 : mode)]; }
@@ -499,6 +511,7 @@ class ParallaxAniso final : public ts::Scene {
   std::string csvPath_;
 
   std::unique_ptr<Relief> relief_;
+  ts::UserTexture picture_;  // --texture FILE: the albedo
   std::unique_ptr<ReliefGL> gl_;
   ts::Renderer* renderer_ = nullptr;
   std::shared_ptr<Table> table_;

@@ -40,6 +40,7 @@
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
+#include "common/user_texture.hpp"
 #include "perspective_map.hpp"
 #include "plot.hpp"
 
@@ -84,6 +85,7 @@ class PerspectiveCorrection final : public ts::Scene {
     o.addEnum("filter", &filter_, {"nearest", "linear", "mipmap"},
               "checkerboard filter (mipmap = trilinear over the book's 2x2 mip chain)", 'f');
     o.addBool("edges", &edges_, "draw the two triangles' edges (the affine error kinks along the diagonal)", 'e');
+    picture_.addOption(o, "the checkerboard");
   }
 
   std::vector<ts::FigureSpec> figures() const override {
@@ -124,6 +126,7 @@ class PerspectiveCorrection final : public ts::Scene {
 
   int view_ = kBoth, filter_ = 2;
   float tilt_ = 60.0f, distance_ = 1.5f;
+  ts::UserTexture picture_;  // --texture FILE
   bool edges_ = false;
 
   // The last measurement, for the labels and the plot (valid when its
@@ -144,7 +147,7 @@ ts::TextureDesc PerspectiveCorrection::checker() const {
   t.magFilter = filter_ == 0 ? GL_NEAREST : GL_LINEAR;
   t.minFilter = filter_ == 0 ? GL_NEAREST : filter_ == 1 ? GL_LINEAR : GL_LINEAR_MIPMAP_LINEAR;
   t.mipmaps = filter_ == 2;
-  return t;
+  return picture_.orDefault(t);
 }
 
 void PerspectiveCorrection::addSquare(ts::Panel& p, const persp::Setup& s, Variant v, int texture, bool edges) const {

@@ -30,6 +30,7 @@
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
+#include "common/user_texture.hpp"
 #include "sphere_map.hpp"
 
 namespace {
@@ -77,6 +78,7 @@ class SphereProjections final : public ts::Scene {
     o.addInt("tilt", &tilt_, -90, 90, "tilt of the north pole toward the viewer, degrees", 't', 'T', 10);
     o.addInt("resolution", &resolution_, 1, 16,
              "mesh cells per 20 deg band (stacks 9N, slices 18N; the book-like default 4 = 5 deg cells)", '+', '-');
+    picture_.addOption(o, "the checkerboard");
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
@@ -110,6 +112,7 @@ class SphereProjections final : public ts::Scene {
   void addPlot(ts::Frame& f, int width, int height, int scale, int line) const;
 
   int shown_ = kBoth, view_ = 0, rotation_ = 20, tilt_ = 20, resolution_ = 4;
+  ts::UserTexture picture_;  // --texture FILE
   std::map<std::pair<int, int>, Result> measured_;  // (mapping, resolution) -> numbers
 };
 
@@ -231,7 +234,7 @@ ts::Frame SphereProjections::build(int width, int height) {
   checker.mipmaps = true;
   checker.minFilter = GL_LINEAR_MIPMAP_LINEAR;
   checker.wrapT = GL_CLAMP_TO_EDGE;
-  int tex = f.addTexture(checker);
+  int tex = f.addTexture(picture_.orDefault(checker));
   std::vector<Mapping> ms = mappings();
   int n = int(ms.size());
   int side = std::max(1, std::min(width / n - 2 * line, height - 4 * line));
