@@ -181,6 +181,27 @@ char Options::keyOf(const std::vector<std::string>& names, bool up) const {
   return 0;
 }
 
+bool Options::adjust(const std::string& name, const std::function<double(double)>& f) {
+  Item* it = find(name);
+  if (!it || (it->kind != Item::Int && it->kind != Item::Float)) return false;
+  if (it->kind == Item::Int) {
+    int* v = static_cast<int*>(it->target);
+    double want = f(double(*v));
+    if (!std::isfinite(want)) return false;
+    int next = int(std::lround(std::clamp(want, it->lo, it->hi)));
+    if (next == *v) return false;
+    *v = next;
+    return true;
+  }
+  float* v = static_cast<float*>(it->target);
+  double want = f(double(*v));
+  if (!std::isfinite(want)) return false;
+  float next = float(std::clamp(want, it->lo, it->hi));
+  if (next == *v) return false;
+  *v = next;
+  return true;
+}
+
 std::string Options::valueOf(const Item& it) const {
   switch (it.kind) {
     case Item::Bool: return *static_cast<bool*>(it.target) ? "on" : "off";

@@ -43,6 +43,9 @@ class Options {
   // The key of the first option among `names` (its up key, or its down key):
   // the arrow keys turn and tilt through the demo's own options.  0: none.
   char keyOf(const std::vector<std::string>& names, bool up) const;
+  // The mouse: sets the number option `name` to f(its value), clamped to its
+  // range.  False when there is no such Int or Float option or nothing changed.
+  bool adjust(const std::string& name, const std::function<double(double)>& f);
 
   std::string helpText() const;   // one line per option, keys included
   std::string keysText() const;   // "d: diagonal  e: edges ..."

@@ -36,6 +36,7 @@
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
+#include "common/orbit_camera.hpp"
 #include "common/user_texture.hpp"
 #include "cylinder_map.hpp"
 
@@ -78,6 +79,7 @@ class CylinderSeam final : public ts::Scene {
     o.addBool("patch", &patch_, "outline the seam patch x,y,z,w and its regions in texture space", 'p');
     o.addEnum("view", &view_, {"book", "compare"}, "book: texture | cylinder; compare: texture | wrong | right", 'v');
     picture_.addOption(o, "the labelled grid");
+    camera_.addOptions(o);
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
@@ -122,6 +124,7 @@ class CylinderSeam final : public ts::Scene {
   int coords_ = int(Coords::Wrong), seam_ = int(Seam::Front), slices_ = 5, view_ = 0;
   float turn_ = 0.0f;
   ts::UserTexture picture_;  // --texture FILE
+  ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   bool patch_ = true;
   std::map<int, double> measuredSpan_;  // coords -> signed span of the seam patch, for labels
 };
@@ -209,6 +212,7 @@ void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int t
   p.viewport = vp;
   p.projection = glm::perspective(glm::radians(24.0f), float(vp.w) / float(vp.h), 2.0f, 12.0f);
   p.modelview = view();
+  camera_.apply(p);
   p.depthTest = true;
   // Light from the upper left in front, fixed to the viewer: expressed in the
   // cylinder's own coordinates by undoing the turn.

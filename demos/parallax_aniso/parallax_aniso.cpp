@@ -52,6 +52,7 @@
 #include "common/figure.hpp"
 #include "common/render.hpp"
 #include "common/textures.hpp"
+#include "common/orbit_camera.hpp"
 #include "common/user_texture.hpp"
 #include "common/scene.hpp"
 #include "measure.hpp"
@@ -141,6 +142,7 @@ class ParallaxAniso final : public ts::Scene {
               "trilinear M1 turns blurrier; a filter that ignores them (llvmpipe's anisotropic M2) does not change",
               'g');
     picture_.addOption(o, "the albedo (resampled to 512x512)");
+    camera_.addOptions(o);  // added to --azimuth and --angle; zoom narrows the field of view
     o.addFile("csv", &csvPath_, "write the measured table as CSV to FILE", [](const std::string& v) {
       if (!v.empty()) ts::checkWritable(v);
     });
@@ -271,13 +273,19 @@ class ParallaxAniso final : public ts::Scene {
     c.elevationDeg = angle_;
     c.azimuthDeg = azimuth_;
     c.heightScale = heightScale_;
+    if (!camera_.isDefault()) {  // the mouse: yaw turns, pitch raises the view ray, zoom is a longer lens
+      c.azimuthDeg += camera_.yaw;
+      c.elevationDeg = std::clamp(c.elevationDeg + camera_.pitch, 5.0, 89.0);
+      c.fovyDeg = glm::degrees(2 * std::atan(std::tan(glm::radians(c.fovyDeg) / 2) / camera_.zoom));
+    }
     return c;
   }
   std::string stateKey() const {
     char b[256];
     std::snprintf(b, sizeof b, "%d %.4f %.3f %.3f %d %d %d %d %d %d", map_, heightScale_, angle_, azimuth_, res_,
                   rays_, seed_, accel_ ? 1 : 0, timeRuns_, gradients_);
-    return b + picture_.path();
+    return b + picture_.path() + " " + std::to_string(camera_.yaw) + " " + std::to_string(camera_.pitch) + " " +
+           std::to_string(camera_.zoom);
   }
   Relief& relief() {
     // --texture FILE: the file is the albedo (its own 2x2 chain, at the
@@ -512,6 +520,7 @@ class ParallaxAniso final : public ts::Scene {
 
   std::unique_ptr<Relief> relief_;
   ts::UserTexture picture_;  // --texture FILE: the albedo
+  ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   std::unique_ptr<ReliefGL> gl_;
   ts::Renderer* renderer_ = nullptr;
   std::shared_ptr<Table> table_;

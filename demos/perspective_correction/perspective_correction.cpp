@@ -40,6 +40,7 @@
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
+#include "common/orbit_camera.hpp"
 #include "common/user_texture.hpp"
 #include "perspective_map.hpp"
 #include "plot.hpp"
@@ -86,6 +87,7 @@ class PerspectiveCorrection final : public ts::Scene {
               "checkerboard filter (mipmap = trilinear over the book's 2x2 mip chain)", 'f');
     o.addBool("edges", &edges_, "draw the two triangles' edges (the affine error kinks along the diagonal)", 'e');
     picture_.addOption(o, "the checkerboard");
+    camera_.addOptions(o);
   }
 
   std::vector<ts::FigureSpec> figures() const override {
@@ -127,6 +129,7 @@ class PerspectiveCorrection final : public ts::Scene {
   int view_ = kBoth, filter_ = 2;
   float tilt_ = 60.0f, distance_ = 1.5f;
   ts::UserTexture picture_;  // --texture FILE
+  ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse (the picture; the measurement keeps the setup's view)
   bool edges_ = false;
 
   // The last measurement, for the labels and the plot (valid when its
@@ -153,6 +156,8 @@ ts::TextureDesc PerspectiveCorrection::checker() const {
 void PerspectiveCorrection::addSquare(ts::Panel& p, const persp::Setup& s, Variant v, int texture, bool edges) const {
   double aspect = double(p.viewport.w) / p.viewport.h;
   persp::View view = persp::makeView(s, aspect);
+  view.mv = camera_.view(view.mv);  // both variants: the affine one projects with these on the CPU
+  view.proj = camera_.lens(view.proj);
   // Perspective: model coordinates through GL's projection (w = depth).
   // Affine: the same vertices projected here, sent with w = 1.
   auto position = [&](glm::dvec2 uv) {

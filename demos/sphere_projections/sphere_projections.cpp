@@ -30,6 +30,7 @@
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
+#include "common/orbit_camera.hpp"
 #include "common/user_texture.hpp"
 #include "sphere_map.hpp"
 
@@ -79,6 +80,7 @@ class SphereProjections final : public ts::Scene {
     o.addInt("resolution", &resolution_, 1, 16,
              "mesh cells per 20 deg band (stacks 9N, slices 18N; the book-like default 4 = 5 deg cells)", '+', '-');
     picture_.addOption(o, "the checkerboard");
+    camera_.addOptions(o);
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
@@ -113,6 +115,7 @@ class SphereProjections final : public ts::Scene {
 
   int shown_ = kBoth, view_ = 0, rotation_ = 20, tilt_ = 20, resolution_ = 4;
   ts::UserTexture picture_;  // --texture FILE
+  ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   std::map<std::pair<int, int>, Result> measured_;  // (mapping, resolution) -> numbers
 };
 
@@ -127,9 +130,10 @@ void SphereProjections::addSphere(ts::Frame& f, const ts::Rect& vp, Mapping m, i
   p.depthTest = true;
   // A narrow perspective (30°, eye 4.6 radii away): the sphere fills ~83% of
   // the panel and looks round, not fish-eyed.
-  p.projection = glm::perspective(float(spheremap::rad(30.0)), float(vp.w) / float(vp.h), 1.0f, 10.0f);
-  glm::mat4 turn = glm::rotate(glm::rotate(glm::mat4(1.0f), float(spheremap::rad(tilt_)), {1, 0, 0}),
-                               float(spheremap::rad(rotation_)), {0, 1, 0});
+  p.projection = camera_.lens(glm::perspective(float(spheremap::rad(30.0)), float(vp.w) / float(vp.h), 1.0f, 10.0f));
+  // The orbit turns the sphere about its centre, after its own turn.
+  glm::mat4 turn = camera_.view(glm::rotate(glm::rotate(glm::mat4(1.0f), float(spheremap::rad(tilt_)), {1, 0, 0}),
+                                            float(spheremap::rad(rotation_)), {0, 1, 0}));
   p.modelview = glm::translate(glm::mat4(1.0f), {0, 0, -4.6f}) * turn;
   // Light from the upper left, in front, fixed to the viewer: into model
   // coordinates with the inverse (transpose) of the rotation.

@@ -38,6 +38,7 @@
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
+#include "common/orbit_camera.hpp"
 #include "common/user_texture.hpp"
 #include "torus_map.hpp"
 
@@ -79,6 +80,7 @@ class Torus final : public ts::Scene {
     o.addEnum("pattern", &texture_, {"checker", "grid"}, "checker (Figure VI.6) or labelled grid (shows the centre)",
               'g');
     picture_.addOption(o, "the pattern");
+    camera_.addOptions(o);
     o.addBool("marker", &marker_, "mark the texture centre (1/2, 1/2) on the torus", 'm');
     o.addEnum("view", &view_, {"single", "compare"}, "single: texture | torus; compare: texture | book | front", 'v');
     // 0 = edge-on (the hole's far wall is hidden by the front of the ring),
@@ -149,6 +151,7 @@ class Torus final : public ts::Scene {
   bool marker_ = true;
   float tilt_ = 35.0f, turn_ = 0.0f;
   ts::UserTexture picture_;  // --texture FILE
+  ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   std::string radiiText_ = "1,0.4";
   std::map<int, Found> found_;  // mapping -> measurement, for labels
 };
@@ -183,6 +186,7 @@ void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int s
   p.viewport = vp;
   p.projection = projection();
   p.modelview = modelview(tp);
+  camera_.apply(p);
   p.depthTest = true;
   // Light from the upper left in front, fixed to the viewer.
   glm::dvec3 toLight = glm::dvec3(glm::inverse(glm::mat3(p.modelview)) * glm::vec3(-0.4f, 0.6f, 1.0f));
