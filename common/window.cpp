@@ -66,7 +66,7 @@ struct Input {
   // The mouse, gathered between frames: a left drag (pixels) and the wheel
   // (clicks) turn the orbit options (OrbitCamera's names); files dropped on
   // the window go to --texture.
-  bool dragging = false;
+  bool dragging = false, knowPos = false;
   double lastX = 0, lastY = 0, dragX = 0, dragY = 0, wheel = 0;
   std::vector<std::string> dropped;
 };
@@ -77,9 +77,8 @@ void mouseButton(Input* in, bool press, double x, double y) {
   in->lastX = x, in->lastY = y;
 }
 void mouseMove(Input* in, double x, double y) {
-  if (!in->dragging) return;
-  in->dragX += x - in->lastX, in->dragY += y - in->lastY;
-  in->lastX = x, in->lastY = y;
+  if (in->dragging) in->dragX += x - in->lastX, in->dragY += y - in->lastY;
+  in->lastX = x, in->lastY = y, in->knowPos = true;
 }
 void mouseWheel(Input* in, double clicks) { in->wheel += clicks; }
 bool mouseTaken() { return ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse; }
@@ -88,9 +87,10 @@ void onMouseButton(GLFWwindow* w, int button, int action, int) {
   auto* in = static_cast<Input*>(glfwGetWindowUserPointer(w));
   if (button != GLFW_MOUSE_BUTTON_LEFT) return;
   if (action == GLFW_PRESS && mouseTaken()) return;  // a drag on the overlay moves the overlay
-  double x = 0, y = 0;
-  glfwGetCursorPos(w, &x, &y);
-  mouseButton(in, action == GLFW_PRESS, x, y);
+  // Where the pointer was at the last motion event, not where it is now: a
+  // slow frame takes a whole drag's events at once, in order.
+  if (!in->knowPos) glfwGetCursorPos(w, &in->lastX, &in->lastY), in->knowPos = true;
+  mouseButton(in, action == GLFW_PRESS, in->lastX, in->lastY);
 }
 void onCursor(GLFWwindow* w, double x, double y) { mouseMove(static_cast<Input*>(glfwGetWindowUserPointer(w)), x, y); }
 void onScroll(GLFWwindow* w, double, double dy) {

@@ -329,7 +329,7 @@ class ParallaxAniso final : public ts::Scene {
     return fmtNum("%.1f", r.psnrAll) + " dB  " + band + "  " + fmtNum("%.0f", r.lookupsPerPixel) + " lk/px";
   }
   std::string header() const {
-    return std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) + " deg, height " +
+    return std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", camera().elevationDeg) + " deg, height " +
            fmtNum("%.2f", heightScale_) + gradientsNote() + ", " + table_->renderer;
   }
   float gradScale() const { return gradients_ ? 4.0f : 1.0f; }
@@ -418,8 +418,9 @@ class ParallaxAniso final : public ts::Scene {
       p.clearColor = f.clearColor;
       f.panels.push_back(p);
     };
-    std::string head = std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) +
-                       " deg, azimuth " + fmtNum("%.0f", azimuth_) + " deg, height " + fmtNum("%.2f", heightScale_) +
+    const Camera cam = camera();  // the mouse's orbit included
+    std::string head = std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", cam.elevationDeg) +
+                       " deg, azimuth " + fmtNum("%.0f", cam.azimuthDeg) + " deg, height " + fmtNum("%.2f", heightScale_) +
                        gradientsNote() + ", live";
     if (!live_.glTexture) {
       f.labels.push_back({16.0f, 6.0f, head, kWhite, 1, ts::Align::Left});

@@ -158,6 +158,13 @@ void PerspectiveCorrection::addSquare(ts::Panel& p, const persp::Setup& s, Varia
   persp::View view = persp::makeView(s, aspect);
   view.mv = camera_.view(view.mv);  // both variants: the affine one projects with these on the CPU
   view.proj = camera_.lens(view.proj);
+  if (camera_.yaw != 0 || camera_.pitch != 0) {
+    // Orbited, a corner can come nearer than the framing's near plane (half
+    // the nearest corner's depth): a wider depth range (no depth test here).
+    const double n = 0.01, far = 1000;
+    view.proj[2][2] = -(far + n) / (far - n);
+    view.proj[3][2] = -2 * far * n / (far - n);
+  }
   // Perspective: model coordinates through GL's projection (w = depth).
   // Affine: the same vertices projected here, sent with w = 1.
   auto position = [&](glm::dvec2 uv) {
