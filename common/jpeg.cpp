@@ -70,6 +70,9 @@ Image decodeJpeg(const uint8_t* data, size_t size, const std::string& name) {
   }
   jpeg_create_decompress(&cinfo);
   cinfo.progress = &progress.pub;
+  // A progressive file keeps every coefficient of the picture in memory
+  // (2 bytes a sample): bounded, so the worst allowed file fails cleanly.
+  cinfo.mem->max_memory_to_use = long(1) << 30;
   jpeg_mem_src(&cinfo, data, static_cast<unsigned long>(size));
   jpeg_read_header(&cinfo, TRUE);
   // The limits apply to the header's size, before anything is allocated.
