@@ -53,7 +53,6 @@ Image decodeJpeg(const uint8_t* data, size_t size, const std::string& name) {
   // Everything with a destructor exists before setjmp; longjmp skips the
   // destructors of anything made after it.
   Image img;
-  std::string why;
   jpeg_decompress_struct cinfo;
   ErrorManager err;
   std::memset(&cinfo, 0, sizeof cinfo);
@@ -64,10 +63,15 @@ Image decodeJpeg(const uint8_t* data, size_t size, const std::string& name) {
   Progress progress;
   progress.pub.progress_monitor = onProgress;
   progress.err = &err;
-  if (setjmp(err.back)) {
+  if (setjmp(err.back)) {  // from libjpeg (onError, onProgress): nothing made after this line is alive
     jpeg_destroy_decompress(&cinfo);
-    throw Error(name + ": malformed JPEG: " + (why.empty() ? std::string(err.message) : why));
+    throw Error(name + ": malformed JPEG: " + err.message);
   }
+  // Our own refusals throw directly (libjpeg is not on the stack then).
+  auto refuse = [&](const std::string& why) {
+    jpeg_destroy_decompress(&cinfo);
+    return Error(name + ": malformed JPEG: " + why);
+  };
   jpeg_create_decompress(&cinfo);
   cinfo.progress = &progress.pub;
   // A progressive file keeps every coefficient of the picture in memory
@@ -76,10 +80,9 @@ Image decodeJpeg(const uint8_t* data, size_t size, const std::string& name) {
   jpeg_mem_src(&cinfo, data, static_cast<unsigned long>(size));
   jpeg_read_header(&cinfo, TRUE);
   // The limits apply to the header's size, before anything is allocated.
-  std::string bad = checkImageSize(cinfo.image_width, cinfo.image_height);
-  if (!bad.empty()) {
-    why = bad;
-    std::longjmp(err.back, 1);
+  {  // scoped: a later longjmp must find no live string
+    std::string bad = checkImageSize(cinfo.image_width, cinfo.image_height);
+    if (!bad.empty()) throw refuse(bad);
   }
   // 8 bits per channel in, RGB out (grey, YCbCr; CMYK is refused below).
   if (cinfo.jpeg_color_space == JCS_CMYK || cinfo.jpeg_color_space == JCS_YCCK) {
@@ -92,19 +95,14 @@ Image decodeJpeg(const uint8_t* data, size_t size, const std::string& name) {
   // output, the same on every machine.
   jpeg_start_decompress(&cinfo);
   if (cinfo.output_components != 4 || cinfo.output_width != cinfo.image_width ||
-      cinfo.output_height != cinfo.image_height) {
-    why = "unexpected output layout";
-    std::longjmp(err.back, 1);
-  }
+      cinfo.output_height != cinfo.image_height)
+    throw refuse("unexpected output layout");
   img.width = int(cinfo.output_width);
   img.height = int(cinfo.output_height);
   img.pixels.resize(size_t(img.width) * size_t(img.height) * 4);
   while (cinfo.output_scanline < cinfo.output_height) {
     JSAMPROW row = &img.pixels[size_t(cinfo.output_scanline) * size_t(img.width) * 4];
-    if (jpeg_read_scanlines(&cinfo, &row, 1) != 1) {
-      why = "the file ends early (truncated)";
-      std::longjmp(err.back, 1);
-    }
+    if (jpeg_read_scanlines(&cinfo, &row, 1) != 1) throw refuse("the file ends early (truncated)");
   }
   jpeg_finish_decompress(&cinfo);
   jpeg_destroy_decompress(&cinfo);
