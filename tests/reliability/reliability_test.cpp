@@ -3,7 +3,8 @@
 //   * the committed corpus is exactly what corpus_gen.hpp makes;
 //   * every good file (PNG: grey 1/4/8/16-bit, grey+alpha, palette with tRNS,
 //     RGB, RGBA, 8 and 16 bits, interlaced; 24-bit BMP bottom-up and
-//     top-down; odd sizes) decodes to exactly the expected RGBA8 pixels;
+//     top-down; 32-bit BMP with alpha and bitfields; odd sizes) decodes to
+//     exactly the expected RGBA8 pixels, JPEG within its case's tolerance;
 //   * every malformed file throws one ts::Error line "<path>: ..." naming
 //     what is wrong (exit status 2), as do a missing file, a directory, a
 //     FIFO, a device and a file without read permission;
