@@ -13,6 +13,7 @@
 
 #include "bmp.hpp"
 #include "error.hpp"
+#include "jpeg.hpp"
 
 namespace ts {
 Image::Image(int w, int h, Rgba fill) : width(w), height(h) {
@@ -330,7 +331,8 @@ Image readPng(const std::string& path) {
 Image decodeImage(const uint8_t* data, size_t size, const std::string& name) {
   if (size >= 8 && data[0] == 0x89 && std::memcmp(data + 1, "PNG", 3) == 0) return decodePng(data, size, name);
   if (size >= 2 && data[0] == 'B' && data[1] == 'M') return decodeBmp(data, size, name);
-  throw Error(name + ": not a PNG or BMP file (unrecognised first bytes)");
+  if (size >= 3 && data[0] == 0xff && data[1] == 0xd8 && data[2] == 0xff) return decodeJpeg(data, size, name);
+  throw Error(name + ": not a PNG, JPEG or BMP file (unrecognised first bytes)");
 }
 
 Image readImage(const std::string& path) {

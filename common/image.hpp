@@ -48,8 +48,8 @@ std::vector<uint8_t> encodePng(const Image& img);
 Image readPng(const std::string& path);
 // The same from memory; `name` is what error messages call the data.
 Image decodePng(const uint8_t* data, size_t size, const std::string& name);
-// PNG or 24-bit BMP (common/bmp.hpp), recognised by the first bytes, not by
-// the file name.
+// PNG, JPEG (common/jpeg.hpp) or 24/32-bit BMP (common/bmp.hpp), recognised
+// by the first bytes, not by the file name.
 Image readImage(const std::string& path);
 Image decodeImage(const uint8_t* data, size_t size, const std::string& name);
 

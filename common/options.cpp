@@ -32,6 +32,12 @@ void Options::addText(const std::string& name, std::string* v, const std::string
   items_.push_back({Item::Text, name, help, v, {}, 0, 0, 1, 0, 0, std::move(validate)});
 }
 
+void Options::addFile(const std::string& name, std::string* v, const std::string& help,
+                      std::function<void(const std::string&)> validate) {
+  addText(name, v, help, std::move(validate));
+  items_.back().metavar = "FILE";
+}
+
 Options::Item* Options::find(const std::string& name) {
   for (auto& it : items_)
     if (it.name == name) return &it;
@@ -175,6 +181,27 @@ char Options::keyOf(const std::vector<std::string>& names, bool up) const {
   return 0;
 }
 
+bool Options::adjust(const std::string& name, const std::function<double(double)>& f) {
+  Item* it = find(name);
+  if (!it || (it->kind != Item::Int && it->kind != Item::Float)) return false;
+  if (it->kind == Item::Int) {
+    int* v = static_cast<int*>(it->target);
+    double want = f(double(*v));
+    if (!std::isfinite(want)) return false;
+    int next = int(std::lround(std::clamp(want, it->lo, it->hi)));
+    if (next == *v) return false;
+    *v = next;
+    return true;
+  }
+  float* v = static_cast<float*>(it->target);
+  double want = f(double(*v));
+  if (!std::isfinite(want)) return false;
+  float next = float(std::clamp(want, it->lo, it->hi));
+  if (next == *v) return false;
+  *v = next;
+  return true;
+}
+
 std::string Options::valueOf(const Item& it) const {
   switch (it.kind) {
     case Item::Bool: return *static_cast<bool*>(it.target) ? "on" : "off";
@@ -205,7 +232,7 @@ std::string Options::helpText() const {
       }
       case Item::Int:
       case Item::Float: flag += " [" + formatNumber(it.lo) + ".." + formatNumber(it.hi) + "]"; break;
-      case Item::Text: flag += " TEXT"; break;
+      case Item::Text: flag += " " + it.metavar; break;
     }
     std::string keys;
     if (it.key) keys = "key " + keyName(it.key);

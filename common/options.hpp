@@ -25,6 +25,9 @@ class Options {
   // Free text checked by `parse` (which throws ts::Error with a reason).
   void addText(const std::string& name, std::string* v, const std::string& help,
                std::function<void(const std::string&)> validate);
+  // A file name: the same as addText, shown as "--name FILE" in --help.
+  void addFile(const std::string& name, std::string* v, const std::string& help,
+               std::function<void(const std::string&)> validate);
 
   // Applies "--name value" / "--name=value" / "--flag" arguments; throws
   // ts::Error on anything unknown or invalid.
@@ -40,6 +43,9 @@ class Options {
   // The key of the first option among `names` (its up key, or its down key):
   // the arrow keys turn and tilt through the demo's own options.  0: none.
   char keyOf(const std::vector<std::string>& names, bool up) const;
+  // The mouse: sets the number option `name` to f(its value), clamped to its
+  // range.  False when there is no such Int or Float option or nothing changed.
+  bool adjust(const std::string& name, const std::function<double(double)>& f);
 
   std::string helpText() const;   // one line per option, keys included
   std::string keysText() const;   // "d: diagonal  e: edges ..."
@@ -58,6 +64,7 @@ class Options {
     double lo = 0, hi = 0, step = 1;
     char key = 0, keyDown = 0;
     std::function<void(const std::string&)> validate;
+    std::string metavar = "TEXT";  // Text: what --help shows as its value
   };
   const std::vector<Item>& items() const { return items_; }
 

@@ -81,7 +81,7 @@ TextureDesc renderedImageTexture(const Image& img, const std::string& generator,
 }
 
 TextureDesc fileTexture(const std::string& path) {
-  Image img = readImage(path);  // PNG or 24-bit BMP, by content
+  Image img = readImage(path);  // PNG, JPEG or 24/32-bit BMP, by content
   img.flipVertical();  // a picture's top row is t = 1
   TextureDesc t;
   t.name = "file";

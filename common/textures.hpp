@@ -37,7 +37,7 @@ TextureDesc renderedImageTexture(const Image& img, const std::string& generator,
                                  const std::string& demo,
                                  std::vector<std::pair<std::string, std::string>> extraParams = {});
 
-// A PNG or 24-bit BMP file as a texture (row 0 of the picture = the top =
+// A PNG, JPEG or 24/32-bit BMP file as a texture (row 0 of the picture = the top =
 // t = 1).  Throws ts::Error "<path>: <what is wrong>" for a missing,
 // unreadable or malformed file, and refuses sizes over the limits in
 // image.hpp before allocating.  Any size is kept as it is (no resampling):

@@ -8,15 +8,19 @@
 #include <algorithm>
 #include <sys/stat.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "context.hpp"
 #include "error.hpp"
 #include "gl.hpp"
 #include "figure.hpp"
 #include "gl_pane.hpp"
+#include "orbit_camera.hpp"
 #include "sidecar.hpp"
 #include "render.hpp"
 
@@ -59,7 +63,84 @@ struct Input {
   bool quit = false;
   bool overlay = true;
   bool help = false;
+  // The mouse, gathered between frames: a left drag (pixels) and the wheel
+  // (clicks) turn the orbit options (OrbitCamera's names); files dropped on
+  // the window go to --texture.
+  bool dragging = false, knowPos = false;
+  double lastX = 0, lastY = 0, dragX = 0, dragY = 0, wheel = 0;
+  std::vector<std::string> dropped;
 };
+
+// The mouse handlers, shared by GLFW's callbacks and the test hook below.
+void mouseButton(Input* in, bool press, double x, double y) {
+  in->dragging = press;
+  in->lastX = x, in->lastY = y;
+}
+void mouseMove(Input* in, double x, double y) {
+  if (in->dragging) in->dragX += x - in->lastX, in->dragY += y - in->lastY;
+  in->lastX = x, in->lastY = y, in->knowPos = true;
+}
+void mouseWheel(Input* in, double clicks) { in->wheel += clicks; }
+bool mouseTaken() { return ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse; }
+
+void onMouseButton(GLFWwindow* w, int button, int action, int) {
+  auto* in = static_cast<Input*>(glfwGetWindowUserPointer(w));
+  if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+  if (action == GLFW_PRESS && mouseTaken()) return;  // a drag on the overlay moves the overlay
+  // Where the pointer was at the last motion event, not where it is now: a
+  // slow frame takes a whole drag's events at once, in order.
+  if (!in->knowPos) glfwGetCursorPos(w, &in->lastX, &in->lastY), in->knowPos = true;
+  mouseButton(in, action == GLFW_PRESS, in->lastX, in->lastY);
+}
+void onCursor(GLFWwindow* w, double x, double y) { mouseMove(static_cast<Input*>(glfwGetWindowUserPointer(w)), x, y); }
+void onScroll(GLFWwindow* w, double, double dy) {
+  if (!mouseTaken()) mouseWheel(static_cast<Input*>(glfwGetWindowUserPointer(w)), dy);
+}
+void onDrop(GLFWwindow* w, int n, const char** paths) {
+  auto* in = static_cast<Input*>(glfwGetWindowUserPointer(w));
+  for (int i = 0; i < n; ++i) in->dropped.push_back(paths[i]);
+}
+
+// TS_TEST_MOUSE (tests only): mouse events given before the first frame, as
+// "press X Y; move X Y; release; wheel N; drop FILE", through the handlers
+// above (xdotool drives the same ones through GLFW in a real X session).
+void testMouse(Input* in) {
+  const char* spec = std::getenv("TS_TEST_MOUSE");
+  if (!spec) return;
+  std::stringstream all(spec);
+  for (std::string ev; std::getline(all, ev, ';');) {
+    std::istringstream e(ev);
+    std::string what;
+    double a = 0, b = 0;
+    e >> what;
+    if (what == "press" && e >> a >> b) mouseButton(in, true, a, b);
+    else if (what == "move" && e >> a >> b) mouseMove(in, a, b);
+    else if (what == "release") mouseButton(in, false, in->lastX, in->lastY);
+    else if (what == "wheel" && e >> a) mouseWheel(in, a);
+    else if (what == "drop" && e >> std::ws && std::getline(e, what)) in->dropped.push_back(what);
+    else if (!what.empty()) std::fprintf(stderr, "TS_TEST_MOUSE: cannot read '%s'\n", ev.c_str());
+  }
+}
+
+// The gathered drag and wheel as orbit options, by name (a demo without them
+// does not move).  Degrees per pixel of drag; 10 % of zoom per wheel click.
+// Values are rounded (0.1 degree, 0.001 zoom) so the printed state remakes
+// exactly the same picture.
+bool applyMouse(Input* in, Options& opts) {
+  constexpr double kDegreesPerPixel = 0.4;
+  bool changed = false;
+  if (in->dragX != 0)
+    changed |= opts.adjust(OrbitCamera::kYaw, [&](double v) {
+      return std::round(std::remainder(v + in->dragX * kDegreesPerPixel, 360.0) * 10) / 10;
+    });
+  if (in->dragY != 0)
+    changed |= opts.adjust(OrbitCamera::kPitch,
+                           [&](double v) { return std::round((v + in->dragY * kDegreesPerPixel) * 10) / 10; });
+  if (in->wheel != 0)
+    changed |= opts.adjust(OrbitCamera::kZoom, [&](double v) { return std::round(v * std::pow(1.1, in->wheel) * 1000) / 1000; });
+  in->dragX = in->dragY = in->wheel = 0;
+  return changed;
+}
 
 void onChar(GLFWwindow* w, unsigned int cp) {
   auto* in = static_cast<Input*>(glfwGetWindowUserPointer(w));
@@ -135,7 +216,8 @@ void drawHelp(Scene& scene, const Options& opts, int w, int h, bool* open) {
   }
   ImGui::Separator();
   ImGui::TextWrapped("Window keys: arrows turn and tilt (where the demo has them), = acts as +, Backspace resets every "
-                     "option, F12 saves the picture and its sidecar and prints the command that remakes them, l shows "
+                     "option, a left drag orbits and the wheel zooms (3D views: --yaw, --pitch, --zoom), a picture file dropped on "
+                     "the window is mapped (--texture), F12 saves the picture and its sidecar and prints the command that remakes them, l shows "
                      "the OpenGL calls beside the picture, h hides the overlay, ? or F1 this card, Esc or q quits.");
   ImGui::End();
 }
@@ -229,6 +311,11 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
   glfwSetWindowUserPointer(win, &input);
   glfwSetCharCallback(win, onChar);
   glfwSetKeyCallback(win, onKey);
+  glfwSetMouseButtonCallback(win, onMouseButton);
+  glfwSetCursorPosCallback(win, onCursor);
+  glfwSetScrollCallback(win, onScroll);
+  glfwSetDropCallback(win, onDrop);
+  testMouse(&input);
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -270,7 +357,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       // Idle is idle: with nothing animating, no key waiting and no test
       // counting frames, wait for an event instead of drawing again (while a
       // changed line of the GL pane is highlighted, wake to fade it).
-      bool busy = dirty || redraw || scene.live() || !input.keys.empty() || flags.frames;
+      bool busy = dirty || redraw || scene.live() || !input.keys.empty() || !input.dropped.empty() || flags.frames;
       if (busy) glfwPollEvents();
       else if (pane.visible && glfwGetTime() - keyAt < GlPane::kHighlightSeconds + 0.1)
         glfwWaitEventsTimeout(0.25);
@@ -278,6 +365,22 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         glfwWaitEvents();
       redraw = false;
       bool save = false;
+      // The mouse: a drag or the wheel turns the orbit options; a dropped
+      // file is --texture FILE (a bad one: one line, the picture stays).
+      if (applyMouse(&input, opts)) dirty = true, record = pane.visible, afterKey = true, keyAt = glfwGetTime();
+      for (const std::string& path : input.dropped) {
+        if (!opts.has("texture")) {
+          std::fprintf(stderr, "%s: %s: this demo maps no picture (--texture)\n", scene.id().c_str(), path.c_str());
+          continue;
+        }
+        try {
+          opts.set("texture", path);
+          dirty = true, record = pane.visible, afterKey = true;
+        } catch (const Error& e) {
+          std::fprintf(stderr, "%s: %s\n", scene.id().c_str(), e.what());
+        }
+      }
+      input.dropped.clear();
       // One synthesised or typed key per frame, through the same handler.
       if (!input.keys.empty()) {
         char k = input.keys.front();

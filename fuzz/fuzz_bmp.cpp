@@ -1,4 +1,4 @@
-// libFuzzer target: the 24-bit BMP loader.  Any input must decode or throw ts::Error
+// libFuzzer target: the 24/32-bit BMP loader.  Any input must decode or throw ts::Error
 // naming the input; anything else (a crash, a sanitizer report, another
 // exception, a hang) is a bug.
 #include <cstddef>

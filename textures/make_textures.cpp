@@ -25,15 +25,25 @@
 #include "common/relief_maps.hpp"
 
 namespace {
+// In memory a texture's row 0 is t = 0 (GL's order); in a file the top row
+// is t = 1, as in any picture and as --texture reads it (fileTexture).  So
+// each is flipped on the way out: labelled_grid_512_8.png reads the right
+// way up in an image viewer, and --texture with it shows A1 at the bottom
+// left, exactly as the built-in grid does.
+ts::Image asPicture(ts::Image texels) {
+  texels.flipVertical();
+  return texels;
+}
+
 std::vector<std::pair<std::string, ts::Image>> assets() {
   std::vector<std::pair<std::string, ts::Image>> out;
   for (const char* map : {"bricks", "step"}) {
     ts::relief::Relief r = ts::relief::makeRelief(map);
-    out.push_back({std::string(map) + "_albedo.png", r.albedo[0]});
-    out.push_back({std::string(map) + "_height.png", r.height[0]});
+    out.push_back({std::string(map) + "_albedo.png", asPicture(r.albedo[0])});
+    out.push_back({std::string(map) + "_height.png", asPicture(r.height[0])});
   }
-  out.push_back({"checkerboard_256_8.png", *ts::checkerboard(256, 8).image});
-  out.push_back({"labelled_grid_512_8.png", *ts::labelledGrid(512, 8).image});
+  out.push_back({"checkerboard_256_8.png", asPicture(*ts::checkerboard(256, 8).image)});
+  out.push_back({"labelled_grid_512_8.png", asPicture(*ts::labelledGrid(512, 8).image)});
   return out;
 }
 

@@ -36,6 +36,8 @@
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
+#include "common/orbit_camera.hpp"
+#include "common/user_texture.hpp"
 #include "cylinder_map.hpp"
 
 namespace {
@@ -76,6 +78,8 @@ class CylinderSeam final : public ts::Scene {
     o.addFloat("turn", &turn_, -180.0f, 180.0f, "turn the cylinder (degrees; 180 shows the back)", ']', '[', 30.0f);
     o.addBool("patch", &patch_, "outline the seam patch x,y,z,w and its regions in texture space", 'p');
     o.addEnum("view", &view_, {"book", "compare"}, "book: texture | cylinder; compare: texture | wrong | right", 'v');
+    picture_.addOption(o, "the labelled grid");
+    camera_.addOptions(o);
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
@@ -119,6 +123,8 @@ class CylinderSeam final : public ts::Scene {
 
   int coords_ = int(Coords::Wrong), seam_ = int(Seam::Front), slices_ = 5, view_ = 0;
   float turn_ = 0.0f;
+  ts::UserTexture picture_;  // --texture FILE
+  ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   bool patch_ = true;
   using Spans = std::map<int, double>;  // coords -> signed span of the seam patch: measure()'s detail
 };
@@ -206,6 +212,7 @@ void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int t
   p.viewport = vp;
   p.projection = glm::perspective(glm::radians(24.0f), float(vp.w) / float(vp.h), 2.0f, 12.0f);
   p.modelview = view();
+  camera_.apply(p);
   p.depthTest = true;
   // Light from the upper left in front, fixed to the viewer: expressed in the
   // cylinder's own coordinates by undoing the turn.
@@ -243,7 +250,8 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
   f.height = height;
   f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
   ts::TextureDesc t = label();
-  t.wrapS = GL_REPEAT;  // the fix needs it (and the wrong way does not care)
+  t.wrapS = GL_REPEAT;
+  t = picture_.orDefault(t);  // the fix needs it (and the wrong way does not care)
   int tex = f.addTexture(t);
   int scale = std::max(1, std::min(3, std::min(width, height) / 300));
   int line = int(ts::text::height(scale)) + 6 * scale;

@@ -253,12 +253,17 @@ inline double facingDistance(double lodBase) { return kFocalPixels / kTexelsPerU
 // length from a 60 degree horizontal field of view.  Texture: s = x, t = -z
 // (one repeat per world unit, t growing away from the eye).
 constexpr double kSlantFovX = 60.0;
-inline Camera slantCamera(int w, int h) {
+// yawDeg, pitchDeg, zoom: the mouse's orbit (common/orbit_camera.hpp): the
+// eye stays, the view turns about the vertical and tilts, the lens zooms.
+inline Camera slantCamera(int w, int h, double yawDeg = 0, double pitchDeg = 0, double zoom = 1) {
   Camera c;
   c.cx = w / 2.0, c.cy = h / 2.0;
   c.focal = (w / 2.0) / std::tan(glm::radians(kSlantFovX / 2));
   double pitch = std::atan(0.4 * h / c.focal);  // horizon at 0.4 h above the centre
+  pitch += glm::radians(pitchDeg);
+  c.focal *= zoom;
   c.rot = glm::dmat3(glm::rotate(glm::dmat4(1.0), pitch, glm::dvec3(1, 0, 0)));
+  if (yawDeg != 0) c.rot = c.rot * glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(yawDeg), glm::dvec3(0, 1, 0)));
   c.eye = {0, 1, 0};
   c.nearZ = 0.05;
   c.farZ = 4000;

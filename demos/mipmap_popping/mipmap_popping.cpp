@@ -112,7 +112,9 @@ class MipmapPopping final : public ts::Scene {
     o.addInt("anisotropy", &aniso_, 2, 16, "GL_TEXTURE_MAX_ANISOTROPY of the anisotropic filter (2..16)", 'a', 'A', 2);
     o.addEnum("levels", &levels_, {"texture", "colours", "split"},
               "the texture | each mip level one colour | left texture, right colours", 'c');
-    o.addEnum("texture", &texture_, {"grid", "checker"}, "labelled grid or checkerboard (256 x 256)", 't');
+    o.addEnum("pattern", &texture_, {"grid", "checker"}, "labelled grid or checkerboard (256 x 256)", 't');
+    picture_.addOption(o, "the pattern (mip chain built from it)");
+    camera_.addOptions(o);  // the slanted plane's view
     o.addBool("linear-light", &linearLight_, "average the mip levels in linear light (gamma-correct) instead of sRGB",
               'g');
     o.addBool("animate", &animate_, "window: move the plane to and fro (starts after 30 frames)", 'm');
@@ -159,7 +161,7 @@ class MipmapPopping final : public ts::Scene {
     double p = std::fmod(x, 2 * span);
     return kMinLog2 + (p <= span ? p : 2 * span - p);
   }
-  sweep::Look look() const { return {filter_, aniso_, bias_, texture_, linearLight_}; }
+  sweep::Look look() const { return {filter_, aniso_, bias_, texture_, linearLight_, &picture_, camera_}; }
 
   struct Result;  // what measure() found (null: not measured yet)
   void buildSingle(ts::Frame& f, const Result* m) const;
@@ -168,6 +170,8 @@ class MipmapPopping final : public ts::Scene {
   void buildSlant(ts::Frame& f, const Result* m) const;
 
   int view_ = kSingle, filter_ = kNearestMipNearest, aniso_ = 16, levels_ = kSplit, texture_ = 0;
+  ts::UserTexture picture_;  // --texture FILE
+  ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse, on the slanted plane
   float distLog2_ = 2.375f, bias_ = 0.0f;
   bool linearLight_ = false, animate_ = false;
   long animFrames_ = 0;
@@ -414,12 +418,12 @@ void MipmapPopping::buildPlot(ts::Frame& f, const Result* m) const {
 
 // The far field's bounds in a slant panel: the curves where the analytic
 // LOD is kFarLodLo and kFarLodHi (it grows towards the horizon).
-ts::Panel farFieldOutline(const ts::Rect& vp) {
+ts::Panel farFieldOutline(const ts::Rect& vp, const ts::OrbitCamera& orbit) {
   ts::Panel o;
   o.id = "far_field_outline";
   o.viewport = vp;
   o.projection = glm::ortho(0.0f, float(vp.w), float(vp.h), 0.0f, -1.0f, 1.0f);
-  Camera cam = slantCamera(vp.w, vp.h);
+  Camera cam = sweep::slantCamera(vp.w, vp.h, orbit);
   Plane ground = groundPlane();
   for (double lod : {sweep::kFarLodLo, sweep::kFarLodHi}) {
     std::vector<glm::vec2> pts;
@@ -463,7 +467,7 @@ void MipmapPopping::buildSlant(ts::Frame& f, const Result* m) const {
     if (fl < 0) {
       t = "reference: 8x8 samples/pixel (GLSL)";
       // The far field's two edges, labelled at the left.
-      ts::Panel o = farFieldOutline(p.viewport);
+      ts::Panel o = farFieldOutline(p.viewport, camera_);
       for (const auto& b : o.batches)
         f.labels.push_back({float(cx + 4), float(cy) + b.vertices.front().pos.y - 16.0f,
                             b.role == "far_field_near_edge" ? "LOD " + fmt("%g", sweep::kFarLodLo)

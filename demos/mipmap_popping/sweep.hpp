@@ -27,6 +27,8 @@
 
 #include "common/render.hpp"
 #include "common/textures.hpp"
+#include "common/orbit_camera.hpp"
+#include "common/user_texture.hpp"
 #include "mip_math.hpp"
 
 namespace mipmath {
@@ -43,7 +45,12 @@ struct Look {
   float lodBias = 0;
   int texture = 0;  // 0 labelled grid, 1 checkerboard
   bool linearLight = false;
+  const ts::UserTexture* picture = nullptr;  // --texture FILE: its chain replaces the pattern's
+  ts::OrbitCamera orbit{};                   // --yaw --pitch --zoom: the slanted plane's camera
 };
+inline Camera slantCamera(int w, int h, const ts::OrbitCamera& o) {
+  return mipmath::slantCamera(w, h, o.yaw, o.pitch, o.zoom);
+}
 
 // The texture (256 x 256, the book's 2x2 mip chain) with the look's filter.
 inline ts::TextureDesc texture(const Look& l) {
@@ -51,7 +58,7 @@ inline ts::TextureDesc texture(const Look& l) {
   t.mipmaps = true;
   t.linearLightMips = l.linearLight;
   applyFilter(t, l.filter, l.anisotropy, l.lodBias);
-  return t;
+  return l.picture ? l.picture->orDefault(t) : t;
 }
 // Level k filled with ts::mipLevelColour(k).
 inline ts::TextureDesc colouredTexture(const Look& l) {
@@ -191,7 +198,7 @@ inline glm::dmat3 groundHomography(const Camera& c) {
 // The ground plane in panel p (its viewport set), as strips at z = 0, -1, -2,
 // -4, ... so no triangle spans the whole depth range.
 inline void addSlant(ts::Frame& f, ts::Panel& p, const Look& l, SlantKind kind, int frameHeight) {
-  Camera cam = slantCamera(p.viewport.w, p.viewport.h);
+  Camera cam = slantCamera(p.viewport.w, p.viewport.h, l.orbit);
   p.projection = cam.projection(p.viewport.w, p.viewport.h);
   p.modelview = cam.modelview();
   p.clear = true;
@@ -237,8 +244,9 @@ inline void addSlant(ts::Frame& f, ts::Panel& p, const Look& l, SlantKind kind, 
 }
 
 // The far-field mask of a w x h slant panel: analytic LOD in [lo, hi].
-inline std::vector<char> farField(int w, int h, double lo = kFarLodLo, double hi = kFarLodHi) {
-  Camera cam = slantCamera(w, h);
+inline std::vector<char> farField(int w, int h, double lo = kFarLodLo, double hi = kFarLodHi,
+                                  const ts::OrbitCamera& orbit = {}) {
+  Camera cam = slantCamera(w, h, orbit);
   Plane ground = groundPlane();
   std::vector<char> mask(size_t(w) * size_t(h), 0);
   for (int y = 0; y < h; ++y)
@@ -282,7 +290,7 @@ struct SlantErrors {
 inline SlantErrors slantErrors(ts::Renderer& r, const Look& l) {
   SlantErrors e;
   ts::Image ref = slantReference(r, l);
-  std::vector<char> mask = farField(kSlantW, kSlantH);
+  std::vector<char> mask = farField(kSlantW, kSlantH, kFarLodLo, kFarLodHi, l.orbit);
   for (int fl = 0; fl < kFilterCount; ++fl) {
     Look lk = l;
     lk.filter = fl;

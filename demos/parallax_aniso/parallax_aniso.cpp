@@ -52,6 +52,8 @@
 #include "common/figure.hpp"
 #include "common/render.hpp"
 #include "common/textures.hpp"
+#include "common/orbit_camera.hpp"
+#include "common/user_texture.hpp"
 #include "common/scene.hpp"
 #include "measure.hpp"
 #include "parallax_gl.hpp"
@@ -139,7 +141,9 @@ class ParallaxAniso final : public ts::Scene {
               "the gradients M1 and M2 give textureGrad: x1 the unshifted coordinate's, x4 four times longer -- "
               "trilinear M1 turns blurrier; a filter that ignores them (llvmpipe's anisotropic M2) does not change",
               'g');
-    o.addText("csv", &csvPath_, "write the measured table as CSV to FILE", [](const std::string& v) {
+    picture_.addOption(o, "the albedo (resampled to 512x512)");
+    camera_.addOptions(o);  // added to --azimuth and --angle; zoom narrows the field of view
+    o.addFile("csv", &csvPath_, "write the measured table as CSV to FILE", [](const std::string& v) {
       if (!v.empty()) ts::checkWritable(v);
     });
   }
@@ -276,16 +280,32 @@ class ParallaxAniso final : public ts::Scene {
     c.elevationDeg = angle_;
     c.azimuthDeg = azimuth_;
     c.heightScale = heightScale_;
+    if (!camera_.isDefault()) {  // the mouse: yaw turns, pitch raises the view ray, zoom is a longer lens
+      c.azimuthDeg += camera_.yaw;
+      c.elevationDeg = std::clamp(c.elevationDeg + camera_.pitch, 5.0, 89.0);
+      c.fovyDeg = glm::degrees(2 * std::atan(std::tan(glm::radians(c.fovyDeg) / 2) / camera_.zoom));
+    }
     return c;
   }
   std::string stateKey() const {
     char b[256];
     std::snprintf(b, sizeof b, "%d %.4f %.3f %.3f %d %d %d %d %d %d", map_, heightScale_, angle_, azimuth_, res_,
                   rays_, seed_, accel_ ? 1 : 0, timeRuns_, gradients_);
-    return b;
+    return b + picture_.path() + " " + std::to_string(camera_.yaw) + " " + std::to_string(camera_.pitch) + " " +
+           std::to_string(camera_.zoom);
   }
   Relief& relief() {
-    if (!relief_ || relief_->name != kMaps[map_]) relief_ = std::make_unique<Relief>(makeRelief(kMaps[map_]));
+    // --texture FILE: the file is the albedo (its own 2x2 chain, at the
+    // heights' size, which the EWA shaders assume); the name keys the GL cache.
+    std::string name = picture_.active() ? std::string(kMaps[map_]) + " + " + picture_.path() : kMaps[map_];
+    if (!relief_ || relief_->name != name) {
+      relief_ = std::make_unique<Relief>(makeRelief(kMaps[map_]));
+      if (picture_.active()) {
+        const ts::Image& a0 = relief_->albedo[0];
+        relief_->albedo = ts::buildMipChain(ts::resizeBilinear(picture_.image(), a0.width, a0.height));
+        relief_->name = name;
+      }
+    }
     return *relief_;
   }
 
@@ -315,7 +335,7 @@ class ParallaxAniso final : public ts::Scene {
     return fmtNum("%.1f", r.psnrAll) + " dB  " + band + "  " + fmtNum("%.0f", r.lookupsPerPixel) + " lk/px";
   }
   std::string header(const Table& table) const {
-    return std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) + " deg, height " +
+    return std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", camera().elevationDeg) + " deg, height " +
            fmtNum("%.2f", heightScale_) + gradientsNote() + ", " + table.renderer;
   }
   float gradScale() const { return gradients_ ? 4.0f : 1.0f; }
@@ -406,8 +426,9 @@ class ParallaxAniso final : public ts::Scene {
       p.clearColor = f.clearColor;
       f.panels.push_back(p);
     };
-    std::string head = std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) +
-                       " deg, azimuth " + fmtNum("%.0f", azimuth_) + " deg, height " + fmtNum("%.2f", heightScale_) +
+    const Camera cam = camera();  // the mouse's orbit included
+    std::string head = std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", cam.elevationDeg) +
+                       " deg, azimuth " + fmtNum("%.0f", cam.azimuthDeg) + " deg, height " + fmtNum("%.2f", heightScale_) +
                        gradientsNote() + ", live";
     if (!live || !live->texture.glTexture) {
       f.labels.push_back({16.0f, 6.0f, head, kWhite, 1, ts::Align::Left});
@@ -507,6 +528,8 @@ class ParallaxAniso final : public ts::Scene {
   std::string csvPath_;
 
   std::unique_ptr<Relief> relief_;
+  ts::UserTexture picture_;  // --texture FILE: the albedo
+  ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   std::unique_ptr<ReliefGL> gl_;
   ts::Renderer* renderer_ = nullptr;
   std::shared_ptr<Table> table_;

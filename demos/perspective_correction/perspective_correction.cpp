@@ -40,6 +40,8 @@
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
+#include "common/orbit_camera.hpp"
+#include "common/user_texture.hpp"
 #include "perspective_map.hpp"
 #include "plot.hpp"
 
@@ -84,6 +86,8 @@ class PerspectiveCorrection final : public ts::Scene {
     o.addEnum("filter", &filter_, {"nearest", "linear", "mipmap"},
               "checkerboard filter (mipmap = trilinear over the book's 2x2 mip chain)", 'f');
     o.addBool("edges", &edges_, "draw the two triangles' edges (the affine error kinks along the diagonal)", 'e');
+    picture_.addOption(o, "the checkerboard");
+    camera_.addOptions(o);
   }
 
   std::vector<ts::FigureSpec> figures() const override {
@@ -123,6 +127,8 @@ class PerspectiveCorrection final : public ts::Scene {
 
   int view_ = kBoth, filter_ = 2;
   float tilt_ = 60.0f, distance_ = 1.5f;
+  ts::UserTexture picture_;  // --texture FILE
+  ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse (the picture; the measurement keeps the setup's view)
   bool edges_ = false;
 
 };
@@ -144,12 +150,21 @@ ts::TextureDesc PerspectiveCorrection::checker() const {
   t.magFilter = filter_ == 0 ? GL_NEAREST : GL_LINEAR;
   t.minFilter = filter_ == 0 ? GL_NEAREST : filter_ == 1 ? GL_LINEAR : GL_LINEAR_MIPMAP_LINEAR;
   t.mipmaps = filter_ == 2;
-  return t;
+  return picture_.orDefault(t);
 }
 
 void PerspectiveCorrection::addSquare(ts::Panel& p, const persp::Setup& s, Variant v, int texture, bool edges) const {
   double aspect = double(p.viewport.w) / p.viewport.h;
   persp::View view = persp::makeView(s, aspect);
+  view.mv = camera_.view(view.mv);  // both variants: the affine one projects with these on the CPU
+  view.proj = camera_.lens(view.proj);
+  if (camera_.yaw != 0 || camera_.pitch != 0) {
+    // Orbited, a corner can come nearer than the framing's near plane (half
+    // the nearest corner's depth): a wider depth range (no depth test here).
+    const double n = 0.01, far = 1000;
+    view.proj[2][2] = -(far + n) / (far - n);
+    view.proj[3][2] = -2 * far * n / (far - n);
+  }
   // Perspective: model coordinates through GL's projection (w = depth).
   // Affine: the same vertices projected here, sent with w = 1.
   auto position = [&](glm::dvec2 uv) {

@@ -34,6 +34,7 @@
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
+#include "common/user_texture.hpp"
 #include "quad_map.hpp"
 
 namespace {
@@ -82,11 +83,7 @@ class QuadDistortion final : public ts::Scene {
     o.addEnum("view", &view_, {"book", "compare"}, "book: texture | square; compare: four variants", 'v');
     o.addEnum("filter", &filter_, {"nearest", "linear"}, "texture magnification filter", 'f');
     o.addInt("checks", &checks_, 2, 32, "checks along each side of the texture", '+', '-');
-    o.addText("texture", &texturePath_, "a PNG file to map instead of the checkerboard",
-              [this](const std::string& v) {
-                if (v.empty()) throw ts::Error("--texture: the file name is empty");
-                fileTexture_ = ts::fileTexture(v);
-              });
+    picture_.addOption(o, "the checkerboard");
     o.addText("corners", &cornersText_,
               "(s,t) at the square's corners (0,0) (1,0) (1,1) (0,1): \"s,t s,t s,t s,t\"",
               [](const std::string& v) { parseCorners(v); });
@@ -121,9 +118,9 @@ class QuadDistortion final : public ts::Scene {
   void addSquare(ts::Frame& f, ts::Panel& p, Variant v, int texture, bool edges) const;
   void addTextureView(ts::Frame& f, ts::Panel& p, Variant v, int texture) const;
   ts::TextureDesc checker() const {
-    ts::TextureDesc t = texturePath_.empty() ? ts::checkerboard(256, checks_) : fileTexture_;
+    ts::TextureDesc t = ts::checkerboard(256, checks_);
     t.minFilter = t.magFilter = filter_ == 0 ? GL_NEAREST : GL_LINEAR;
-    return t;
+    return picture_.orDefault(t);
   }
   double measureKink(ts::Renderer& r, Variant v, double* texelError);
   // The bend the math predicts: closed form for the affine split, the same
@@ -142,8 +139,7 @@ class QuadDistortion final : public ts::Scene {
   int diagonal_ = 0, interp_ = kAffine, view_ = 0, filter_ = 1, checks_ = 8;
   bool edges_ = false;
   std::string cornersText_ = "0,0 1,0 0.75,0.75 0,1";  // the book's labels
-  std::string texturePath_;
-  ts::TextureDesc fileTexture_;
+  ts::UserTexture picture_;  // --texture FILE
   using Kinks = std::map<std::string, double>;  // variant name -> measured kink: measure()'s detail
 };
 

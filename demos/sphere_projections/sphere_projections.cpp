@@ -30,6 +30,8 @@
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
+#include "common/orbit_camera.hpp"
+#include "common/user_texture.hpp"
 #include "sphere_map.hpp"
 
 namespace {
@@ -77,6 +79,8 @@ class SphereProjections final : public ts::Scene {
     o.addInt("tilt", &tilt_, -90, 90, "tilt of the north pole toward the viewer, degrees", 't', 'T', 10);
     o.addInt("resolution", &resolution_, 1, 16,
              "mesh cells per 20 deg band (stacks 9N, slices 18N; the book-like default 4 = 5 deg cells)", '+', '-');
+    picture_.addOption(o, "the checkerboard");
+    camera_.addOptions(o);
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
@@ -118,7 +122,9 @@ class SphereProjections final : public ts::Scene {
   void addPlot(ts::Frame& f, int width, int height, int scale, int line, const ts::Measurements& measured) const;
 
   int shown_ = kBoth, view_ = 0, rotation_ = 20, tilt_ = 20, resolution_ = 4;
-  Results cache_;  // measure()'s: rotation and tilt do not change the numbers
+  ts::UserTexture picture_;  // --texture FILE
+  ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
+  Results cache_;            // measure()'s: rotation and tilt do not change the numbers
 };
 
 // ---------------------------------------------------------------------------
@@ -132,9 +138,10 @@ void SphereProjections::addSphere(ts::Frame& f, const ts::Rect& vp, Mapping m, i
   p.depthTest = true;
   // A narrow perspective (30°, eye 4.6 radii away): the sphere fills ~83% of
   // the panel and looks round, not fish-eyed.
-  p.projection = glm::perspective(float(spheremap::rad(30.0)), float(vp.w) / float(vp.h), 1.0f, 10.0f);
-  glm::mat4 turn = glm::rotate(glm::rotate(glm::mat4(1.0f), float(spheremap::rad(tilt_)), {1, 0, 0}),
-                               float(spheremap::rad(rotation_)), {0, 1, 0});
+  p.projection = camera_.lens(glm::perspective(float(spheremap::rad(30.0)), float(vp.w) / float(vp.h), 1.0f, 10.0f));
+  // The orbit turns the sphere about its centre, after its own turn.
+  glm::mat4 turn = camera_.view(glm::rotate(glm::rotate(glm::mat4(1.0f), float(spheremap::rad(tilt_)), {1, 0, 0}),
+                                            float(spheremap::rad(rotation_)), {0, 1, 0}));
   p.modelview = glm::translate(glm::mat4(1.0f), {0, 0, -4.6f}) * turn;
   // Light from the upper left, in front, fixed to the viewer: into model
   // coordinates with the inverse (transpose) of the rotation.
@@ -237,7 +244,7 @@ ts::Frame SphereProjections::build(int width, int height, const ts::Measurements
   checker.mipmaps = true;
   checker.minFilter = GL_LINEAR_MIPMAP_LINEAR;
   checker.wrapT = GL_CLAMP_TO_EDGE;
-  int tex = f.addTexture(checker);
+  int tex = f.addTexture(picture_.orDefault(checker));
   std::vector<Mapping> ms = mappings();
   int n = int(ms.size());
   int side = std::max(1, std::min(width / n - 2 * line, height - 4 * line));

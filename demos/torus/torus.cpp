@@ -38,6 +38,8 @@
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
+#include "common/orbit_camera.hpp"
+#include "common/user_texture.hpp"
 #include "torus_map.hpp"
 
 namespace {
@@ -75,8 +77,10 @@ class Torus final : public ts::Scene {
   void addOptions(ts::Options& o) override {
     o.addEnum("mapping", &mapping_, {kMappingNames[0], kMappingNames[1]},
               "book: s = theta/360, t = phi/360; front: s = theta/360 + 1/2, t = phi/360 + 1/2 (Exercise VI.2)", 'c');
-    o.addEnum("texture", &texture_, {"checker", "grid"}, "checker (Figure VI.6) or labelled grid (shows the centre)",
+    o.addEnum("pattern", &texture_, {"checker", "grid"}, "checker (Figure VI.6) or labelled grid (shows the centre)",
               'g');
+    picture_.addOption(o, "the pattern");
+    camera_.addOptions(o);
     o.addBool("marker", &marker_, "mark the texture centre (1/2, 1/2) on the torus", 'm');
     o.addEnum("view", &view_, {"single", "compare"}, "single: texture | torus; compare: texture | book | front", 'v');
     // 0 = edge-on (the hole's far wall is hidden by the front of the ring),
@@ -95,12 +99,12 @@ class Torus final : public ts::Scene {
         {"vi6_torus", "Figure VI.6",
          "A checkerboard texture map (left) applied to a torus by s = theta/360, t = phi/360 (right), the torus "
          "tilted towards the viewer.",
-         {"--mapping", "book", "--texture", "checker", "--marker=off"}, 1024, 512},
+         {"--mapping", "book", "--pattern", "checker", "--marker=off"}, 1024, 512},
         {"vi6_torus_centre", "Exercise VI.2",
          "Where the texture's centre (1/2, 1/2) lands. Middle: s = theta/360, t = phi/360 put it at theta = phi = 180 "
          "deg, (0, 0, -(R - r)), on the far inner wall of the hole. Right: s = theta/360 + 1/2, t = phi/360 + 1/2 "
          "put it at the front, (0, 0, R + r).",
-         {"--view", "compare", "--texture", "grid"}, 1280, 520},
+         {"--view", "compare", "--pattern", "grid"}, 1280, 520},
     };
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
@@ -137,7 +141,7 @@ class Torus final : public ts::Scene {
     return glm::rotate(m, glm::radians(-turn_), glm::vec3(0, 1, 0));
   }
   ts::TextureDesc picture() const {
-    return texture_ == 0 ? ts::checkerboard(256, 16) : ts::labelledGrid(512, 8);
+    return picture_.orDefault(texture_ == 0 ? ts::checkerboard(256, 16) : ts::labelledGrid(512, 8));
   }
   // found: what measure() found for this mapping (null before it has).
   void addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale, const Found* found) const;
@@ -147,6 +151,8 @@ class Torus final : public ts::Scene {
   int mapping_ = int(Mapping::Book), texture_ = 0, view_ = 0;
   bool marker_ = true;
   float tilt_ = 35.0f, turn_ = 0.0f;
+  ts::UserTexture picture_;  // --texture FILE
+  ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   std::string radiiText_ = "1,0.4";
   using Founds = std::map<int, Found>;  // mapping -> where the centre was found: measure()'s detail
 };
@@ -181,6 +187,7 @@ void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int s
   p.viewport = vp;
   p.projection = projection();
   p.modelview = modelview(tp);
+  camera_.apply(p);
   p.depthTest = true;
   // Light from the upper left in front, fixed to the viewer.
   glm::dvec3 toLight = glm::dvec3(glm::inverse(glm::mat3(p.modelview)) * glm::vec3(-0.4f, 0.6f, 1.0f));

@@ -160,8 +160,8 @@ TEST(MipmapPopping, LinearLightAveragesAreBrighter) {
   };
   double lin = (dec(32) + dec(224)) / 2;
   double want = 255 * (1.055 * std::pow(lin, 1 / 2.4) - 0.055);
-  Demo srgb("mipmap_popping", {"--texture", "checker"});
-  Demo linear("mipmap_popping", {"--texture", "checker", "--linear-light"});
+  Demo srgb("mipmap_popping", {"--pattern", "checker"});
+  Demo linear("mipmap_popping", {"--pattern", "checker", "--linear-light"});
   std::vector<ts::Image> a = ts::buildMipChain(*sweep::texture({kNearestMipNearest, 16, 0, 1, false}).image, false);
   std::vector<ts::Image> b = ts::buildMipChain(*sweep::texture({kNearestMipNearest, 16, 0, 1, true}).image, true);
   EXPECT_EQ(a.back().at(0, 0).r, 128);

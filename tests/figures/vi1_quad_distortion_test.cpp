@@ -402,6 +402,43 @@ TEST(VI1, TextureFileIsMappedUpright) {
   }
 }
 
+// Claim (issue 13.6): one orientation everywhere.  textures/ holds its files
+// with the top row at t = 1, so `--texture textures/labelled_grid_512_8.png`
+// shows A1 at the bottom left, reading the right way: the square (identity
+// corners) matches the built-in grid cell by cell (texel row 0 = t = 0), and
+// the file's own bottom-left cell is A1's colour.  A file written upside
+// down (row 0 at t = 0, as textures/ was) shows A8 there and fails.
+TEST(VI1, CommittedGridShowsA1AtTheBottomLeft) {
+  const std::string file = "textures/labelled_grid_512_8.png";  // tests run in the source tree
+  Demo demo("quad_distortion", {"--texture", file, "--corners", "0,0 1,0 1,1 0,1", "--filter", "nearest"});
+  ts::Frame f;
+  ts::Image img = demo.render(1024, 512, &f);
+  const ts::Rect vp = panelOf(f, "screen_space").viewport;
+  const ts::Image grid = *ts::labelledGrid(512, 8).image;  // row 0 = t = 0
+  const ts::Image picture = ts::readPng(file);              // row 0 = the top
+  int wrong = 0;
+  for (int row = 0; row < 8; ++row)      // row 0 = the bottom (A1's row)
+    for (int col = 0; col < 8; ++col) {  // col 0 = A
+      // A point in the cell clear of its label, border and the t = 0 bar.
+      double s = (col + 0.2) / 8, t = (row + 0.25) / 8;
+      ts::Rgba want = grid.at(int(s * 512), int(t * 512));
+      ts::Rgba got = img.at(vp.x + int(s * vp.w), vp.y + vp.h - 1 - int(t * vp.h));
+      if (!ts::probe::close(got, want, tol()) && wrong++ < 3)
+        ADD_FAILURE() << "cell " << char('A' + col) << row + 1 << " (s=" << s << ", t=" << t << ") is " << int(got.r)
+                      << "," << int(got.g) << "," << int(got.b) << ", the grid's is " << int(want.r) << ","
+                      << int(want.g) << "," << int(want.b);
+    }
+  EXPECT_EQ(wrong, 0);
+  // A1 is the blue-ish, dark cell (column A: most blue; row 1: least green);
+  // in the file it is at the bottom left, in the square too.
+  ts::Rgba a1 = grid.at(int(0.2 / 8 * 512), int(0.25 / 8 * 512)), a8 = grid.at(int(0.2 / 8 * 512), int(7.25 / 8 * 512));
+  EXPECT_GT(a8.g, a1.g + 50) << "A1 and A8 must differ for this test to see a flip";
+  EXPECT_TRUE(ts::probe::close(picture.at(int(0.2 / 8 * 512), 511 - int(0.25 / 8 * 512)), a1, 0))
+      << file << ": its bottom-left cell is not A1 (run make_textures textures)";
+  EXPECT_TRUE(ts::probe::close(img.at(vp.x + vp.w / 40, vp.y + vp.h - 1 - vp.h / 32), a1, tol()))
+      << "the square's bottom-left cell is not A1";
+}
+
 // Claim: rendering is deterministic: the same frame drawn twice, and the
 // frame rebuilt from the same state, give identical pixels and identical
 // PNG bytes.

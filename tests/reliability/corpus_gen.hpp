@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/bmp.hpp"
+#include "common/jpeg.hpp"
 #include "common/image.hpp"
 
 namespace corpus {
@@ -23,8 +24,9 @@ struct Case {
   std::string name;    // file name in the corpus
   Bytes bytes;
   bool good = false;   // must decode...
-  ts::Image expect;    // ...to exactly these pixels
+  ts::Image expect;    // ...to these pixels
   std::string error;   // bad: a phrase the error line must contain
+  int tolerance = 0;   // good: largest channel difference allowed (JPEG is lossy; 0 elsewhere)
 };
 
 inline void be32(Bytes& v, uint32_t x) {
@@ -247,6 +249,41 @@ inline size_t findChunk(const Bytes& png, const std::string& type) {
   return 0;
 }
 
+// A JPEG's first SOFn marker segment (its length field), or 0.
+inline size_t findSof(const Bytes& jpg) {
+  for (size_t at = 2; at + 9 < jpg.size(); ++at)
+    if (jpg[at] == 0xff && (jpg[at + 1] == 0xc0 || jpg[at + 1] == 0xc2)) return at + 2;
+  return 0;
+}
+// The JPEG of `img` with the SOF's height and width replaced.
+inline Bytes jpegWithSize(const ts::Image& img, uint16_t w, uint16_t h) {
+  Bytes b = ts::encodeJpeg(img, 90);
+  size_t sof = findSof(b);
+  if (sof + 6 < b.size())
+    b[sof + 3] = uint8_t(h >> 8), b[sof + 4] = uint8_t(h), b[sof + 5] = uint8_t(w >> 8), b[sof + 6] = uint8_t(w);
+  return b;
+}
+// A 32-bit BI_BITFIELDS BMP (40-byte header, three masks after it) of
+// w x h pixels all 0xffffffff, with the masks given.
+inline Bytes bmp32Masks(int32_t w, int32_t h, uint32_t r, uint32_t g, uint32_t b) {
+  Bytes out{'B', 'M'};
+  uint32_t pixels = uint32_t(w) * 4 * uint32_t(h);
+  le32(out, 66 + pixels);
+  le32(out, 0);
+  le32(out, 66);
+  le32(out, 40);
+  le32(out, uint32_t(w));
+  le32(out, uint32_t(h));
+  le16(out, 1);
+  le16(out, 32);
+  le32(out, 3);
+  le32(out, pixels);
+  for (int k = 0; k < 4; ++k) le32(out, 0);
+  le32(out, r), le32(out, g), le32(out, b);
+  out.insert(out.end(), pixels, 0xff);
+  return out;
+}
+
 inline std::vector<Case> makeCases() {
   std::vector<Case> cs;
   auto good = [&](const std::string& name, Bytes b, ts::Image img) { cs.push_back({name, std::move(b), true, std::move(img), ""}); };
@@ -268,6 +305,37 @@ inline std::vector<Case> makeCases() {
   good("good_rgba8_interlaced_3x2.png", makePng(3, 2, 8, 6, 1), expected(3, 2, 8, 6));  // passes with no pixels
   ts::Image pic = rgbPicture(5, 3);  // 15 bytes a row, padded to 16
   good("good_bmp24_5x3.bmp", ts::encodeBmp(pic), pic);
+  {
+    // 32-bit: B, G, R, A (alpha kept); the same as BI_ALPHABITFIELDS masks
+    // in another channel order; all-zero alpha = opaque; 5-bit masks scaled.
+    ts::Image alpha = rgbPicture(5, 3);
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 5; ++x) {
+        ts::Rgba c = alpha.at(x, y);
+        c.a = uint8_t(40 * x + 20 * y + 10);
+        alpha.set(x, y, c);
+      }
+    good("good_bmp32_alpha_5x3.bmp", ts::encodeBmp32(alpha, false), alpha);
+    good("good_bmp32_bitfields_alpha_5x3.bmp", ts::encodeBmp32(alpha, true), alpha);
+    Bytes zero = ts::encodeBmp32(pic, false);
+    for (size_t i = 54 + 3; i < zero.size(); i += 4) zero[i] = 0;
+    good("good_bmp32_zero_alpha_5x3.bmp", zero, pic);
+    ts::Image white(2, 2, {255, 255, 255, 255});
+    good("good_bmp32_bitfields_555_2x2.bmp", bmp32Masks(2, 2, 0x7c00, 0x03e0, 0x001f), white);
+  }
+  {
+    // JPEG is lossy: a flat colour and a picture of 8x8 flat blocks come
+    // back within a few levels (4:4:4, no chroma subsampling).
+    ts::Image flat(16, 8, {200, 120, 40, 255});
+    good("good_jpeg_flat_16x8.jpg", ts::encodeJpeg(flat, 95), flat);
+    cs.back().tolerance = 3;
+    ts::Image blocks(32, 24);
+    for (int y = 0; y < 24; ++y)
+      for (int x = 0; x < 32; ++x)
+        blocks.set(x, y, {uint8_t(64 + 40 * (x / 8)), uint8_t(60 + 60 * (y / 8)), 128, 255});
+    good("good_jpeg_blocks_32x24.jpg", ts::encodeJpeg(blocks, 100), blocks);
+    cs.back().tolerance = 4;
+  }
   good("good_bmp24_topdown_5x3.bmp", bmpTopDown(pic), pic);
   ts::Image big = rgbPicture(64, 33);
   good("good_bmp24_64x33.bmp", ts::encodeBmp(big), big);
@@ -280,13 +348,31 @@ inline std::vector<Case> makeCases() {
 
   // ---- malformed: nothing, or not an image
   bad("empty.png", {}, "is empty");
-  bad("text.png", Bytes{'h', 'e', 'l', 'l', 'o', '\n'}, "not a PNG or BMP");
-  bad("gif_magic.png", Bytes{'G', 'I', 'F', '8', '9', 'a', 1, 0, 1, 0, 0, 0, 0}, "not a PNG or BMP");
-  bad("jpeg_magic.jpg", Bytes{0xff, 0xd8, 0xff, 0xe0, 0, 16, 'J', 'F', 'I', 'F', 0}, "not a PNG or BMP");
+  bad("text.png", Bytes{'h', 'e', 'l', 'l', 'o', '\n'}, "not a PNG, JPEG or BMP");
+  bad("gif_magic.png", Bytes{'G', 'I', 'F', '8', '9', 'a', 1, 0, 1, 0, 0, 0, 0}, "not a PNG, JPEG or BMP");
+  bad("jpeg_magic.jpg", Bytes{0xff, 0xd8, 0xff, 0xe0, 0, 16, 'J', 'F', 'I', 'F', 0}, "malformed JPEG");
+  {
+    // ---- JPEG: libjpeg's own errors and warnings, as one line each
+    ts::Image img = rgbPicture(37, 23);
+    Bytes j = ts::encodeJpeg(img, 90);
+    bad("jpeg_cut_in_half.jpg", cut(j, j.size() / 2), "Premature end");
+    bad("jpeg_cut_in_header.jpg", cut(j, 40), "malformed JPEG");
+    bad("jpeg_huge_65000x65000.jpg", jpegWithSize(img, 65000, 65000), "over the limit");
+    bad("jpeg_16385x1.jpg", jpegWithSize(img, 16385, 1), "over the limit");
+    bad("jpeg_zero_width.jpg", jpegWithSize(img, 0, 23), "malformed JPEG");
+    bad("jpeg_no_image.jpg", Bytes{0xff, 0xd8, 0xff, 0xd9}, "malformed JPEG");
+    Bytes noise = j;
+    for (size_t i = noise.size() / 2; i < noise.size() / 2 + 40; ++i) noise[i] = uint8_t(i * 73);
+    bad("jpeg_corrupt_scan.jpg", noise, "malformed JPEG");
+    Bytes sof = j;
+    size_t at = findSof(sof);
+    if (at + 2 < sof.size()) sof[at + 2] = 12;  // 12-bit samples: not what libjpeg62 reads
+    bad("jpeg_12bit.jpg", sof, "malformed JPEG");
+  }
   {
     Bytes b = makePng(4, 4, 8, 2);
     b[1] = 'Q';
-    bad("png_wrong_magic.png", b, "not a PNG or BMP");
+    bad("png_wrong_magic.png", b, "not a PNG, JPEG or BMP");
     Bytes c = makePng(4, 4, 8, 2);
     c[4] = '\n';  // the CR-LF check of the signature (a file mangled by a text transfer)
     bad("png_crlf_mangled.png", c, "bad signature");
@@ -398,7 +484,12 @@ inline std::vector<Case> makeCases() {
         return b;
       }(), "truncated");
   bad("bmp_8bit_palette.bmp", bmpHeader(4, 4, 8, 0, 16), "8 bits per pixel");
-  bad("bmp_32bit.bmp", bmpHeader(4, 4, 32, 0, 64), "32 bits per pixel");
+  bad("bmp_16bit.bmp", bmpHeader(4, 4, 16, 0, 32), "16 bits per pixel");
+  bad("bmp32_cut_in_pixels.bmp", bmpHeader(4, 4, 32, 0, 60), "truncated");
+  bad("bmp32_mask_not_one_run.bmp", bmp32Masks(2, 2, 0x00ff00ff, 0x0000ff00, 0xff), "not one run");
+  bad("bmp32_masks_overlap.bmp", bmp32Masks(2, 2, 0x00ff0000, 0x00ffff00, 0xff), "overlap");
+  bad("bmp32_masks_all_zero.bmp", bmp32Masks(2, 2, 0, 0, 0), "all zero");
+  bad("bmp32_cut_in_masks.bmp", cut(bmp32Masks(2, 2, 0xff, 0xff00, 0xff0000), 60), "bitfield masks");
   bad("bmp_rle8.bmp", bmpHeader(4, 4, 24, 1, 16), "compression 1");
   bad("bmp_bitfields.bmp", bmpHeader(4, 4, 24, 3, 48), "compression 3");
   bad("bmp_os2_core_header.bmp", [] {

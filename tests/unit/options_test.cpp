@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "common/error.hpp"
 #include "common/options.hpp"
+#include "common/orbit_camera.hpp"
 #include "common/scene.hpp"
 
 namespace {
@@ -217,6 +219,66 @@ TEST(Options, StateFlagsOmitEmptyText) {
     if (v.empty()) throw ts::Error("--texture: empty");
   });
   EXPECT_NO_THROW(b.parse(a.stateFlags()));
+}
+
+// Claim: --help shows FILE for a file option and TEXT for other free text.
+TEST(Options, HelpShowsFileForFileOptions) {
+  std::string file, corners;
+  ts::Options o;
+  o.addFile("texture", &file, "a picture", [](const std::string&) {});
+  o.addText("corners", &corners, "corners", [](const std::string&) {});
+  std::string help = o.helpText();
+  EXPECT_NE(help.find("--texture FILE "), std::string::npos) << help;
+  EXPECT_NE(help.find("--corners TEXT "), std::string::npos) << help;
+  EXPECT_EQ(help.find("--texture TEXT"), std::string::npos) << help;
+}
+
+// Claim: adjust (the window's mouse) changes a number option by name within
+// its range, and nothing else: no option of that name, a non-number, or no
+// change gives false.
+TEST(Options, AdjustClampsAndFindsByName) {
+  State s;
+  ts::Options o;
+  s.bind(o);
+  EXPECT_TRUE(o.adjust("zoom", [](double v) { return v * 1.5; }));
+  EXPECT_FLOAT_EQ(s.zoom, 1.5f);
+  EXPECT_TRUE(o.adjust("zoom", [](double v) { return v * 100; }));
+  EXPECT_FLOAT_EQ(s.zoom, 4.0f);  // clamped to the range
+  EXPECT_FALSE(o.adjust("zoom", [](double v) { return v + 1; }));  // already at the top
+  EXPECT_TRUE(o.adjust("checks", [](double v) { return v + 2.6; }));
+  EXPECT_EQ(s.checks, 11);
+  EXPECT_FALSE(o.adjust("yaw", [](double v) { return v + 1; }));
+  EXPECT_FALSE(o.adjust("mode", [](double v) { return v + 1; }));
+  EXPECT_FALSE(o.adjust("corners", [](double v) { return v + 1; }));
+  EXPECT_FALSE(o.adjust("zoom", [](double) { return std::nan(""); }));
+  EXPECT_FLOAT_EQ(s.zoom, 4.0f);
+}
+
+// Claim: the orbit camera leaves a view untouched at its defaults (the book's
+// figures stay byte-identical), turns the model about its centre (which
+// stays where it was on screen), and zooms by scaling x and y only.
+TEST(OrbitCamera, IdentityAtDefaultsAndTurnsAboutTheCentre) {
+  ts::OrbitCamera cam;
+  ts::Options o;
+  cam.addOptions(o);
+  glm::mat4 mv = glm::rotate(glm::translate(glm::mat4(1.0f), {0.3f, -0.2f, -5.0f}), 0.7f, glm::vec3(1, 2, 3));
+  glm::mat4 pr = glm::perspective(0.6f, 1.5f, 1.0f, 10.0f);
+  EXPECT_TRUE(cam.view(mv, glm::vec3(0.1f, 0.2f, 0.3f)) == mv);
+  EXPECT_TRUE(cam.lens(pr) == pr);
+  o.parse({"--yaw=90", "--pitch=-30", "--zoom=2"});
+  glm::vec3 centre(0.1f, 0.2f, 0.3f);
+  glm::mat4 v = cam.view(mv, centre);
+  glm::vec4 c0 = mv * glm::vec4(centre, 1), c1 = v * glm::vec4(centre, 1);
+  EXPECT_NEAR(glm::length(c0 - c1), 0.0f, 1e-5f);
+  glm::vec4 p0 = mv * glm::vec4(1, 0, 0, 1), p1 = v * glm::vec4(1, 0, 0, 1);
+  EXPECT_NEAR(glm::length(glm::vec3(p0 - c0)), glm::length(glm::vec3(p1 - c1)), 1e-5f);  // a rotation
+  EXPECT_GT(glm::length(p0 - p1), 0.1f);
+  glm::mat4 z = cam.lens(pr);
+  glm::vec4 q(0.5f, -0.25f, -3.0f, 1.0f), a = pr * q, b = z * q;
+  EXPECT_FLOAT_EQ(b.x, 2 * a.x);
+  EXPECT_FLOAT_EQ(b.y, 2 * a.y);
+  EXPECT_FLOAT_EQ(b.z, a.z);
+  EXPECT_FLOAT_EQ(b.w, a.w);
 }
 
 // Claim: the same round trip through a real demo's options (Figure VI.1's

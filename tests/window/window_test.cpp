@@ -567,16 +567,19 @@ void paneBesideFigure(const std::string& id, const std::string& keys, const ts::
 }
 
 // A window run with --keys in `dir` (its working folder); returns when done.
-Proc windowRun(const std::string& id, const std::string& dir, const std::string& keys, bool overlayShot = false) {
+// `mouse`: TS_TEST_MOUSE, events fed to the window's mouse handlers.
+Proc windowRun(const std::string& id, const std::string& dir, const std::string& keys, bool overlayShot = false,
+               const std::string& mouse = "") {
   mkdirs(dir);
   Proc win;
-  win.argv = {"env", std::string("TS_SCREENSHOT_OVERLAY=") + (overlayShot ? "1" : "0"), "xvfb-run", "-a", "-s",
+  win.argv = {"env", std::string("TS_SCREENSHOT_OVERLAY=") + (overlayShot ? "1" : "0"), "TS_TEST_MOUSE=" + mouse,
+              "xvfb-run", "-a", "-s",
               kXvfbScreen, binDir() + "/" + id, "--size", std::to_string(gWidth) + "x" + std::to_string(gHeight),
               "--frames", std::to_string(kFrames), "--keys", keys, "--screenshot", dir + "/window.png"};
   // Relative to the run's folder: F12 writes there.
-  if (win.argv[6][0] != '/') {
+  if (win.argv[7][0] != '/') {
     char cwd[4096];
-    if (getcwd(cwd, sizeof cwd)) win.argv[6] = std::string(cwd) + "/" + win.argv[6];
+    if (getcwd(cwd, sizeof cwd)) win.argv[7] = std::string(cwd) + "/" + win.argv[7];
   }
   win.outPath = dir + "/window.stdout";
   win.errPath = dir + "/window.stderr";
@@ -661,6 +664,88 @@ void usualKeys(const std::string& id) {
   ASSERT_EQ(remake.exitCode, 0) << remake.describe();
   Diff r = compare(saved, ts::readPng(dir + "/remade.png"), &scratch);
   EXPECT_LE(double(r.overSmall) / double(r.pixels), kOsmesaBounds.maxFraction) << "F12's command does not remake it";
+}
+
+// The mouse (issue 13.5): a left drag and the wheel, fed through the
+// window's own mouse handlers (TS_TEST_MOUSE), turn --yaw/--pitch/--zoom;
+// the picture changes; F12's printed command (the state's flags) remakes the
+// same picture with --png.  In a demo without those options a drag changes
+// nothing.
+void mouseOrbit(const std::string& id) {
+  Fresh initial(id);
+  std::string base = outDir() + "/" + id + "/mouse";
+  const std::string drag = "press 400 240; move 430 250; move 500 270; release; wheel 2";
+  bool orbit = initial.opts.has("yaw") && initial.opts.has("pitch") && initial.opts.has("zoom");
+  std::string dir = base + "/drag";
+  for (const char* ext : {".png", ".json"})
+    for (int n = 1; n <= 3; ++n) std::remove((dir + "/" + id + "-" + std::to_string(n) + ext).c_str());
+  // mipmap_popping's orbit turns its slanted plane: v three times shows it.
+  const std::string view = id == "mipmap_popping" ? "vvv" : "";
+  Proc plain = windowRun(id, base + "/plain", view);
+  Proc moved = windowRun(id, dir, view + std::string(1, ts::keys::kSave), false, drag);
+  ASSERT_EQ(plain.exitCode, 0) << plain.describe();
+  ASSERT_EQ(moved.exitCode, 0) << moved.describe();
+  EXPECT_EQ(moved.err.find("TS_TEST_MOUSE"), std::string::npos) << moved.err;
+  std::vector<std::string> lines = stateLines(moved.out, initial.opts);
+  ASSERT_FALSE(lines.empty()) << moved.out;
+  ts::Image scratch;
+  Diff d = compare(ts::readPng(base + "/plain/window.png"), ts::readPng(dir + "/window.png"), &scratch);
+  if (!orbit) {
+    EXPECT_EQ(lines.back(), initial.opts.stateText()) << "a drag moved a demo without --yaw/--pitch/--zoom";
+    EXPECT_EQ(d.overSmall, 0) << "a drag changed the picture of a demo without an orbit";
+    return;
+  }
+  // 100 px right, 30 px down at 0.4 degree a pixel; two wheel clicks: 1.1^2.
+  Fresh want(id);
+  for (char k : view) want.opts.handleKey(k);
+  want.opts.set("yaw", "40");
+  want.opts.set("pitch", "12");
+  want.opts.set("zoom", "1.21");
+  EXPECT_EQ(lines.back(), want.opts.stateText()) << "the drag and the wheel did not turn the orbit";
+  EXPECT_GT(d.overSmall, long(gWidth) * gHeight / 50) << "the drag did not change the picture";
+  // F12's command remakes the dragged picture.
+  size_t at = moved.out.find("remake them with:\n  ");
+  ASSERT_NE(at, std::string::npos) << moved.out;
+  std::string command = moved.out.substr(at + 20, moved.out.find('\n', at + 20) - at - 20);
+  EXPECT_NE(command.find("--yaw=40 --pitch=12 --zoom=1.21"), std::string::npos) << command;
+  Proc remake;
+  remake.argv = {"bash", "-c", "cd \"$0\" && exec \"$1\"/" + id + command.substr(10 + id.size()) +
+                                   " --png remade.png --json remade.json --quiet", dir, binDir()};
+  remake.outPath = dir + "/remake.stdout";
+  remake.errPath = dir + "/remake.stderr";
+  remake.spawn();
+  while (!remake.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_EQ(remake.exitCode, 0) << remake.describe();
+  Diff r = compare(ts::readPng(dir + "/" + id + "-1.png"), ts::readPng(dir + "/remade.png"), &scratch);
+  EXPECT_LE(double(r.overSmall) / double(r.pixels), kOsmesaBounds.maxFraction) << "the printed flags do not remake it";
+}
+
+// A picture file dropped on the window is --texture FILE; a bad one is one
+// line on stderr and the window goes on (exit 0).
+void dropFile(const std::string& id) {
+  std::string dir = outDir() + "/" + id + "/drop";
+  mkdirs(dir);
+  char cwd[4096];
+  std::string here = getcwd(cwd, sizeof cwd) ? cwd : ".";
+  std::string good = here + "/tests/reliability/corpus/good_jpeg_blocks_32x24.jpg";
+  std::string bad = here + "/tests/reliability/corpus/jpeg_cut_in_half.jpg";
+  Proc run = windowRun(id, dir, "", false, "drop " + bad + "; drop " + good);
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  // Exactly one line names the bad file, and says what is wrong with it
+  // (some demos print notes of their own on stderr too).
+  int naming = 0;
+  std::istringstream errLines(run.err);
+  for (std::string l; std::getline(errLines, l);)
+    if (l.find(bad) != std::string::npos) {
+      ++naming;
+      EXPECT_NE(l.find("malformed JPEG"), std::string::npos) << l;
+    }
+  EXPECT_EQ(naming, 1) << run.err;
+  Fresh want(id);
+  want.opts.set("texture", good);
+  std::vector<std::string> lines = stateLines(run.out, want.opts);
+  ASSERT_FALSE(lines.empty()) << run.out;
+  EXPECT_EQ(lines.back(), want.opts.stateText()) << "the dropped file is not the texture";
 }
 
 // parse(stateFlags()) on a fresh Options must give back the state.
@@ -775,6 +860,8 @@ void registerAll() {
         paneBesideFigure(id, "lc", f.opts, "glTexCoord4f(1.1, ");
       });
     registerCase(id, "usual_keys", [id] { usualKeys(id); });
+    registerCase(id, "mouse_orbit", [id] { mouseOrbit(id); });
+    if (probe.opts.has("texture")) registerCase(id, "drop_file", [id] { dropFile(id); });
     registerCase(id, "state_flags_round_trip", [id, keys] {
       Fresh f(id);
       roundTrip(id, f.opts, "initial state");

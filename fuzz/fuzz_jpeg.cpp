@@ -1,0 +1,22 @@
+// libFuzzer target: the JPEG loader (libjpeg-turbo behind a setjmp/longjmp
+// error manager).  Any input must decode or throw ts::Error naming the input;
+// anything else (a crash, exit() from libjpeg, a sanitizer report, another
+// exception, a hang) is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+#include "common/error.hpp"
+#include "common/image.hpp"
+#include "common/jpeg.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  try {
+    ts::Image img = ts::decodeJpeg(data, size, "input");
+    if (img.pixels.size() != size_t(img.width) * size_t(img.height) * 4) std::abort();
+  } catch (const ts::Error& e) {
+    if (std::string(e.what()).rfind("input: ", 0) != 0) std::abort();
+  }
+  return 0;
+}
