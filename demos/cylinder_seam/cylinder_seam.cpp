@@ -66,6 +66,8 @@ class CylinderSeam final : public ts::Scene {
            "to [0,1), and the intended 0.2 with s = 0.9 -> 1.1 and GL_REPEAT.  Prints the span and direction of s\n"
            "measured across the patches from a render whose pixels name their texels.";
   }
+  std::vector<std::string> claim() const override { return {"seam_patch_span_s*", "seam_patch_direction*"}; }
+
   void addOptions(ts::Options& o) override {
     o.addEnum("coords", &coords_, {kCoordNames[0], kCoordNames[1]},
               "s per vertex: wrong = theta/360 reduced to [0,1); right = winding tracked (0.9 -> 1.1), GL_REPEAT", 'c');

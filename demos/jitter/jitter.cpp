@@ -115,6 +115,8 @@ class Jitter final : public ts::Scene {
   int defaultHeight() const override { return 560; }
   bool wantsAccumBuffer() const override { return true; }
 
+  std::vector<std::string> claim() const override { return {"aliasing[*"}; }
+
   void addOptions(ts::Options& o) override {
     o.addEnum("mode", &mode_, {kModeNames[0], kModeNames[1], kModeNames[2], kModeNames[3], kModeNames[4]},
               "one sample | regular n x n | jittered, one pattern for all pixels | jittered per pixel | reference",

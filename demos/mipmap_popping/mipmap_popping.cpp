@@ -99,6 +99,8 @@ class MipmapPopping final : public ts::Scene {
   int defaultWidth() const override { return 1024; }
   int defaultHeight() const override { return 512; }
 
+  std::vector<std::string> claim() const override { return {"popping_ratio", "mip_overhead"}; }
+
   void addOptions(ts::Options& o) override {
     o.addEnum("view", &view_, {"single", "filmstrip", "plot", "slant"},
               "single plane | frames at several distances | probe colour vs distance | slanted plane", 'v');

@@ -106,6 +106,8 @@ class ParallaxAniso final : public ts::Scene {
   int defaultWidth() const override { return 1360; }
   int defaultHeight() const override { return 660; }
 
+  std::vector<std::string> claim() const override { return {"ewa_psnr_all", "ewa_vis_psnr_all"}; }
+
   void addOptions(ts::Options& o) override {
     o.addEnum("mode", &mode_, {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5],
                                kModeKeys[6]},

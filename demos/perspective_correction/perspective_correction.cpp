@@ -75,6 +75,8 @@ class PerspectiveCorrection final : public ts::Scene {
   int defaultWidth() const override { return 1024; }
   int defaultHeight() const override { return 400; }
 
+  std::vector<std::string> claim() const override { return {"affine_error_texels", "d_ratio", "hint_honoured"}; }
+
   void addOptions(ts::Options& o) override {
     o.addEnum("view", &view_, {"both", "affine", "perspective", "plot"},
               "both: the book's figure; one variant large; plot: error vs (d2-d1)/d1 over tilts", 'v');

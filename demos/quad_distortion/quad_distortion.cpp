@@ -73,6 +73,8 @@ class QuadDistortion final : public ts::Scene {
            "that square as two triangles: each triangle's map is affine, so checker lines bend at the diagonal.\n"
            "Prints the bend measured from the render and the bend the math predicts.";
   }
+  std::vector<std::string> claim() const override { return {"kink_deg*"}; }
+
   void addOptions(ts::Options& o) override {
     o.addEnum("diagonal", &diagonal_, {kDiagNames[0], kDiagNames[1]},
               "which diagonal splits the square (the book: tl-br)", 'd');

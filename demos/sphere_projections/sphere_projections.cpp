@@ -70,6 +70,8 @@ class SphereProjections final : public ts::Scene {
            "latitude (whole-sphere mean 1): analytic, from the mesh, and measured from a texel-index render.\n"
            "VI.3 is 1 in every band (area-preserving); VI.2 grows like 1/cos(phi) toward the poles. Both pinch.";
   }
+  std::vector<std::string> claim() const override { return {"vi2[-10:10]_render", "vi2[70:90]_render", "vi3_spread"}; }
+
   void addOptions(ts::Options& o) override {
     o.addEnum("mapping", &shown_, {"both", "vi2", "vi3"}, "both spheres, or Eq. VI.2 or Eq. VI.3 alone", 'm');
     o.addEnum("view", &view_, {"spheres", "plot"}, "the spheres, or area ratio against latitude", 'v');

@@ -72,6 +72,8 @@ class Torus final : public ts::Scene {
            "it to (0, 0, R + r) at the front.  Prints where the centre is found in a render whose pixels name their\n"
            "texels: its screen position, the 3D point there, and its distance from the answer.";
   }
+  std::vector<std::string> claim() const override { return {"centre_3d_z*", "centre_distance_to_answer*"}; }
+
   void addOptions(ts::Options& o) override {
     o.addEnum("mapping", &mapping_, {kMappingNames[0], kMappingNames[1]},
               "book: s = theta/360, t = phi/360; front: s = theta/360 + 1/2, t = phi/360 + 1/2 (Exercise VI.2)", 'c');
