@@ -35,4 +35,62 @@ Box labelBox(const Label& l);
 
 // printf of one number ("%.2f") into a std::string.
 std::string fmt(const char* format, double v);
+
+// The text scale for captions of a picture this size: grows with the
+// picture, never with the window (1 below ~220 x 140 pixels).
+int scaleFor(const Rect& picture, int maxScale = 3);
+// One line of text's height at a scale, with its leading.
+inline float lineHeight(int scale) { return float(13 * scale + 4 * scale); }
+
+// n pictures of one aspect (width / height) in `area`: in a row when the
+// area is wide, in a column when it is tall (or a grid, whichever gives the
+// largest pictures), centred, `gap` apart, each with bands for `above` and
+// `below` lines of captions at the cell's scale (which is scaleFor(picture),
+// at most maxScale).
+struct Cell {
+  Rect picture;
+  Box above, below;  // the caption bands, as wide as the cell
+  int scale = 1;
+};
+struct FlowSpec {
+  int n = 1;
+  float aspect = 1.0f;
+  int linesAbove = 1, linesBelow = 1;
+  int gap = 12;
+  int maxScale = 3;
+};
+std::vector<Cell> flow(Box area, const FlowSpec& spec);
+
+// Text fitted to a box: at `scale` if it fits, else smaller, else wrapped at
+// spaces onto the lines the box has room for, else cut with "...".  Adds
+// the labels and returns the y below the last line (band.y0 when nothing
+// fits).  Never places text outside `band`.
+float caption(Frame& f, Box band, const std::string& text, glm::vec4 color, int scale,
+              Align align = Align::Center, glm::vec4 background = glm::vec4(0.0f));
+// The lines caption() would use at most: wrapped text at the scale that
+// fits `width` (for reserving a band's height before placing it).
+int captionLines(const std::string& text, int scale, float width);
+
+// Lines of text stacked downwards in a box (a figure's notes): each add()
+// takes the room its caption needs; what no longer fits is left out.
+class Column {
+ public:
+  Column(Frame& f, Box area) : f_(f), area_(area), y_(area.y0) {}
+  bool add(const std::string& text, glm::vec4 color, int scale, Align align = Align::Center);
+  float y() const { return y_; }
+
+ private:
+  Frame& f_;
+  Box area_;
+  float y_;
+};
+
+// Adds `l` where asked, moved the least it takes to lie inside `within`,
+// unless it is larger than `within` or would overlap a label already in the
+// frame: tags, ticks and notes that do not fit are left out, never drawn
+// over each other.  Returns whether it was placed.
+bool placeFree(Frame& f, Label l, Box within);
+
+// The panel named `id` in a frame, or nullptr.
+inline const Panel* findPanel(const Frame& f, const std::string& id) { return f.panel(id); }
 }  // namespace ts::layout

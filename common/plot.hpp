@@ -1,7 +1,9 @@
-// demos/perspective_correction/plot.hpp — a small x-y plot as Frame data:
-// one panel whose projection is the data's own coordinates, axes, grid and
-// series as line batches, tick and axis labels as ts::Label.  Candidate for
-// common/ once a second figure plots a measurement.
+// common/plot.hpp — a small x-y plot as Frame data, part of the layout kit
+// (common/layout.hpp): one panel whose projection is the data's own
+// coordinates, axes, grid and series as line batches, tick and axis labels
+// as ts::Label.  Titles and axis names are fitted to their bands (shrunk,
+// wrapped, cut); ticks, tags, notes and the legend that would overlap
+// another label or leave the plot are left out.
 #pragma once
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -12,9 +14,10 @@
 #include <vector>
 
 #include "common/frame.hpp"
+#include "common/layout.hpp"
 #include "common/text.hpp"
 
-namespace plot {
+namespace ts::plot {
 struct Point {
   double x = 0, y = 0;
   double tag = 0;  // shown beside measured points (here: the tilt)
@@ -106,25 +109,33 @@ inline void draw(ts::Frame& f, const Data& d, ts::Rect area) {
                                    1.0f, "axes"));
   f.panels.push_back(p);
 
-  // Labels: title, axis names, ticks, tags, legend.
-  f.labels.push_back({float(area.x + area.w / 2), float(area.y + 6), d.title, white, 1, ts::Align::Center});
-  f.labels.push_back({float(vp.x), float(vp.y - line - 4), d.yLabel, axis, 1, ts::Align::Left});
-  f.labels.push_back({float(vp.x + vp.w / 2), float(vp.y + vp.h + line + 6), d.xLabel, axis, 1, ts::Align::Center});
+  // Labels, the essential first: title, axis names, ticks, legend; then the
+  // tags and notes where they fit.
+  namespace L = ts::layout;
+  const L::Box all{float(area.x), float(area.y), float(area.x + area.w), float(area.y + area.h)}, inPlot = L::box(vp);
+  L::caption(f, {all.x0 + 4, all.y0 + 4, all.x1 - 4, float(vp.y - line - 6)}, d.title, white, 1);
+  L::caption(f, {all.x0 + 4, float(vp.y - line - 4), all.x1 - 4, float(vp.y - 1)}, d.yLabel, axis, 1,
+             ts::Align::Left);
+  L::caption(f, {all.x0 + 4, float(vp.y + vp.h + line + 4), all.x1 - 4, all.y1 - 1}, d.xLabel, axis, 1);
+  const L::Box below{all.x0, float(vp.y + vp.h + 1), all.x1, float(vp.y + vp.h + line + 3)};
+  const L::Box left{all.x0, float(vp.y - 7), float(vp.x - 1), float(vp.y + vp.h + 7)};
   for (double x = 0; x <= xmax + 1e-9; x += xs)
-    f.labels.push_back({px(x, 0).x, float(vp.y + vp.h + 5), num("%g", x), axis, 1, ts::Align::Center});
+    L::placeFree(f, {px(x, 0).x, float(vp.y + vp.h + 5), num("%g", x), axis, 1, ts::Align::Center}, below);
   for (double y = 0; y <= ymax + 1e-9; y += ys)
-    f.labels.push_back({float(vp.x - 6), px(0, y).y - 6, num("%g", y), axis, 1, ts::Align::Right});
-  for (const Point& q : d.measured)
-    f.labels.push_back({px(q.x, q.y).x + 8, px(q.x, q.y).y + 4, num(d.tagFormat.c_str(), q.tag), measuredC, 1,
-                        ts::Align::Left});
-  for (const auto& n : d.notes)
-    f.labels.push_back({px(n.at.x, n.at.y).x + 40, px(n.at.x, n.at.y).y - 20, n.text, axis, 1, ts::Align::Left,
-                        background});  // boxed: it crosses the dashed line
-  f.labels.push_back({px(d.xMarker, ymax).x + 6, float(vp.y + 6), d.xMarkerLabel, axis, 1, ts::Align::Left});
+    L::placeFree(f, {float(vp.x - 6), px(0, y).y - 6, num("%g", y), axis, 1, ts::Align::Right}, left);
   const float lx = float(vp.x + vp.w - 12), ly = float(vp.y + vp.h - 4 * line);
-  f.labels.push_back({lx, ly, "x  measured (texel-index render), tagged by tilt", measuredC, 1, ts::Align::Right});
-  f.labels.push_back({lx, ly + line, "-  analytic (ray-plane vs screen barycentrics)", curveC, 1, ts::Align::Right});
-  f.labels.push_back({lx, ly + 2 * line, "o  current state (" + num(d.tagFormat.c_str(), d.current.tag) + ")", currentC,
-                      1, ts::Align::Right});
+  L::placeFree(f, {lx, ly, "x  measured (texel-index render), tagged by tilt", measuredC, 1, ts::Align::Right}, inPlot);
+  L::placeFree(f, {lx, ly + line, "-  analytic (ray-plane vs screen barycentrics)", curveC, 1, ts::Align::Right}, inPlot);
+  L::placeFree(f, {lx, ly + 2 * line, "o  current state (" + num(d.tagFormat.c_str(), d.current.tag) + ")", currentC, 1,
+                   ts::Align::Right},
+               inPlot);
+  L::placeFree(f, {px(d.xMarker, ymax).x + 6, float(vp.y + 6), d.xMarkerLabel, axis, 1, ts::Align::Left}, inPlot);
+  for (const Point& q : d.measured)
+    L::placeFree(f, {px(q.x, q.y).x + 8, px(q.x, q.y).y + 4, num(d.tagFormat.c_str(), q.tag), measuredC, 1,
+                     ts::Align::Left},
+                 inPlot);
+  for (const auto& n : d.notes)  // boxed: it crosses the dashed line
+    L::placeFree(f, {px(n.at.x, n.at.y).x + 40, px(n.at.x, n.at.y).y - 20, n.text, axis, 1, ts::Align::Left, background},
+                 inPlot);
 }
-}  // namespace plot
+}  // namespace ts::plot
