@@ -82,7 +82,7 @@ float caption(Frame& f, Box band, const std::string& text, glm::vec4 color, int 
         x = std::min(x, band.x1 - p - w / 2);
       }
       f.labels.push_back({x, std::ceil(y), l, color, s, align, background});
-      y += lineHeight(s);
+      y += lineHeight(s) + 2 * p;  // boxed lines: their boxes must not overlap
     }
     return std::ceil(y) - float(4 * s) + p;
   };
@@ -95,7 +95,7 @@ float caption(Frame& f, Box band, const std::string& text, glm::vec4 color, int 
   // Wrapped at scale 1 onto the lines the band has room for; the last cut.
   float p = pad;
   float width = band.w() - 1 - 2 * p;
-  int room = int((band.h() - 2 * p + 4) / lineHeight(1));
+  int room = int((band.h() + 4) / (lineHeight(1) + 2 * p));
   if (room < 1 || width < text::width("...", 1)) return band.y0;
   std::vector<std::string> lines = wrap(text, 1, width);
   if (int(lines.size()) > room) {
@@ -126,10 +126,10 @@ bool placeFree(Frame& f, Label l, Box within) {
   return true;
 }
 
-bool Column::add(const std::string& text, glm::vec4 color, int scale, Align align) {
+bool Column::add(const std::string& text, glm::vec4 color, int scale, Align align, glm::vec4 background) {
   if (y_ >= area_.y1) return false;
   Box band{area_.x0, y_, area_.x1, area_.y1};
-  float y = caption(f_, band, text, color, scale, align);
+  float y = caption(f_, band, text, color, scale, align, background);
   if (y <= y_) return false;
   y_ = y + 4.0f;
   return true;

@@ -76,7 +76,8 @@ int captionLines(const std::string& text, int scale, float width);
 class Column {
  public:
   Column(Frame& f, Box area) : f_(f), area_(area), y_(area.y0) {}
-  bool add(const std::string& text, glm::vec4 color, int scale, Align align = Align::Center);
+  bool add(const std::string& text, glm::vec4 color, int scale, Align align = Align::Center,
+           glm::vec4 background = glm::vec4(0.0f));
   float y() const { return y_; }
 
  private:
