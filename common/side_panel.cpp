@@ -75,18 +75,26 @@ void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& 
     }
   }
   ImGui::Separator();
-  // The state, each option with the keys that change it.
+  // The state, each option with the keys that change it (right-aligned;
+  // on a line of their own when the panel is too narrow for both).
   auto state = opts.state();
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
   for (const auto& it : opts.items()) {
     std::string value;
     for (const auto& [n, v] : state)
       if (n == it.name) value = v;
-    ImGui::Text("%-12s %-10s", it.name.c_str(), value.c_str());
-    if (it.key || it.keyDown) {
-      std::string keys = it.keyDown ? std::string(1, it.key) + "/" + std::string(1, it.keyDown) : std::string(1, it.key);
-      ImGui::SameLine();
-      ImGui::TextColored(dim, "%s", keys.c_str());
-    }
+    char padded[256];
+    std::snprintf(padded, sizeof padded, "%-12s %s", it.name.c_str(), value.c_str());
+    std::string line = ImGui::CalcTextSize(padded).x <= ImGui::GetContentRegionAvail().x ? padded : it.name + " " + value;
+    std::string keys = !it.key && !it.keyDown ? ""
+                       : it.keyDown           ? std::string(1, it.key) + "/" + std::string(1, it.keyDown)
+                                              : std::string(1, it.key);
+    float avail = ImGui::GetContentRegionAvail().x, need = ImGui::CalcTextSize(keys.c_str()).x;
+    ImGui::TextWrapped("%s", line.c_str());
+    if (keys.empty()) continue;
+    if (ImGui::CalcTextSize(line.c_str()).x + spacing + need <= avail) ImGui::SameLine(avail - need + ImGui::GetStyle().WindowPadding.x);
+    else ImGui::SetCursorPosX(ImGui::GetCursorPosX() + std::max(0.0f, avail - need));
+    ImGui::TextColored(dim, "%s", keys.c_str());
   }
   ImGui::TextColored(dim, "%-12s %.1f%s", "fps", status.fps, status.idle ? " (idle)" : "");
   ImGui::PushStyleColor(ImGuiCol_Text, dim);
