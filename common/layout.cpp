@@ -138,6 +138,7 @@ bool Column::add(const std::string& text, glm::vec4 color, int scale, Align alig
 std::vector<Cell> flow(Box area, const FlowSpec& spec) {
   std::vector<Cell> best;
   double bestArea = -1;
+  bool bestFits = false;
   const int n = std::max(1, spec.n);
   for (int rows = 1; rows <= n; ++rows) {
     int cols = (n + rows - 1) / rows;
@@ -155,8 +156,11 @@ std::vector<Cell> flow(Box area, const FlowSpec& spec) {
       Rect pic{0, 0, std::max(1, int(pw)), std::max(1, int(ph))};
       if (s > 1 && scaleFor(pic, spec.maxScale) < s) continue;
       double a = double(pic.w) * pic.h;
-      if (a <= bestArea) break;
+      bool fits = cw >= spec.minCellWidth;
+      if (bestFits && !fits) break;
+      if (fits == bestFits && a <= bestArea) break;
       bestArea = a;
+      bestFits = fits;
       best.clear();
       // Centre the grid: the used width and height.
       float usedW = float(cols) * cw + float(cols - 1) * spec.gap;

@@ -58,6 +58,9 @@ struct FlowSpec {
   int linesAbove = 1, linesBelow = 1;
   int gap = 12;
   int maxScale = 3;
+  // The width a cell's captions need at scale 1: an arrangement whose cells
+  // are narrower is taken only when no other is wide enough.
+  float minCellWidth = 0;
 };
 std::vector<Cell> flow(Box area, const FlowSpec& spec);
 

@@ -328,6 +328,7 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
     L::FlowSpec spec;
     spec.n = 4;
     spec.gap = 16;
+    spec.minCellWidth = ts::text::width("kink 18.4 deg", 1) + 4;
     std::vector<L::Cell> cells = L::flow(all, spec);
     for (int k = 0; k < 4; ++k) {
       const L::Cell& c = cells[size_t(k)];
