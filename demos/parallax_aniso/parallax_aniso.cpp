@@ -53,6 +53,7 @@
 #include "common/render.hpp"
 #include "common/textures.hpp"
 #include "common/layout.hpp"
+#include "common/text.hpp"
 #include "common/scene.hpp"
 #include "measure.hpp"
 #include "parallax_gl.hpp"
@@ -424,6 +425,9 @@ class ParallaxAniso final : public ts::Scene {
     addImage(f, "live", {0, 0, f.width, f.height}, live->texture);
     bar("top_bar", 0);
     bar("bottom_bar", f.height - kLiveBar);
+    // A narrow window gets a shorter header, never one cut before its gradients note.
+    for (const std::string& h : {std::string(kMaps[map_]) + gradientsNote() + ", live", std::string(kMaps[map_]) + gradientsNote()})
+      if (ts::text::width(head, 1) > float(f.width - 21)) head = h;
     L::caption(f, {16, 4, float(f.width - 4), float(kLiveBar)}, head, kWhite, 1, ts::Align::Left);
     std::string sizeText = std::to_string(live->size.x) + "x" + std::to_string(live->size.y);
     if (live->modes.y < 0) {
