@@ -36,6 +36,32 @@ struct Data {
   std::vector<Note> notes;  // text beside a data point
 };
 
+// A tick: where on its axis (data units) and what it says.
+struct Tick {
+  double at = 0;
+  std::string text;
+};
+// The tick labels of a plot panel `vp` whose data range is [x0, x1] x [y0, y1]:
+// the x ticks under it, the y ticks left of it (right-aligned, centred on
+// their value), all inside `area`; a tick that would overlap another label
+// is left out.  The demos' plots share it (perspective_correction,
+// sphere_projections, mipmap_popping, jitter).
+inline void tickLabels(ts::Frame& f, const ts::Rect& vp, const ts::Rect& area, double x0, double x1, double y0, double y1,
+                       const std::vector<Tick>& xs, const std::vector<Tick>& ys, glm::vec4 color, int scale = 1) {
+  namespace L = ts::layout;
+  const float h = ts::text::height(scale), gap = 4.0f * float(scale);
+  const L::Box under{float(area.x), float(vp.y + vp.h + 1), float(area.x + area.w), float(vp.y + vp.h) + gap + h + 2},
+      leftOf{float(area.x), float(vp.y) - h, float(vp.x - 1), float(vp.y + vp.h) + h / 2 + 1};
+  for (const Tick& t : xs)
+    L::placeFree(f, {float(vp.x + (t.at - x0) / (x1 - x0) * vp.w), float(vp.y + vp.h) + gap, t.text, color, scale,
+                     ts::Align::Center},
+                 under);
+  for (const Tick& t : ys)
+    L::placeFree(f, {float(vp.x) - gap - 2, float(vp.y + (1 - (t.at - y0) / (y1 - y0)) * vp.h) - h / 2, t.text, color, scale,
+                     ts::Align::Right},
+                 leftOf);
+}
+
 // 1, 2 or 5 times a power of ten, about range/6.
 inline double niceStep(double range) {
   double raw = range / 6, p = std::pow(10.0, std::floor(std::log10(raw)));
@@ -117,12 +143,10 @@ inline void draw(ts::Frame& f, const Data& d, ts::Rect area) {
   L::caption(f, {all.x0 + 4, float(vp.y - line - 4), all.x1 - 4, float(vp.y - 1)}, d.yLabel, axis, 1,
              ts::Align::Left);
   L::caption(f, {all.x0 + 4, float(vp.y + vp.h + line + 4), all.x1 - 4, all.y1 - 1}, d.xLabel, axis, 1);
-  const L::Box below{all.x0, float(vp.y + vp.h + 1), all.x1, float(vp.y + vp.h + line + 3)};
-  const L::Box left{all.x0, float(vp.y - 7), float(vp.x - 1), float(vp.y + vp.h + 7)};
-  for (double x = 0; x <= xmax + 1e-9; x += xs)
-    L::placeFree(f, {px(x, 0).x, float(vp.y + vp.h + 5), num("%g", x), axis, 1, ts::Align::Center}, below);
-  for (double y = 0; y <= ymax + 1e-9; y += ys)
-    L::placeFree(f, {float(vp.x - 6), px(0, y).y - 6, num("%g", y), axis, 1, ts::Align::Right}, left);
+  std::vector<Tick> xt, yt;
+  for (double x = 0; x <= xmax + 1e-9; x += xs) xt.push_back({x, num("%g", x)});
+  for (double y = 0; y <= ymax + 1e-9; y += ys) yt.push_back({y, num("%g", y)});
+  tickLabels(f, vp, area, 0, xmax, 0, ymax, xt, yt, axis);
   const float lx = float(vp.x + vp.w - 12), ly = float(vp.y + vp.h - 4 * line);
   L::placeFree(f, {lx, ly, "x  measured (texel-index render), tagged by tilt", measuredC, 1, ts::Align::Right}, inPlot);
   L::placeFree(f, {lx, ly + line, "-  analytic (ray-plane vs screen barycentrics)", curveC, 1, ts::Align::Right}, inPlot);

@@ -53,6 +53,7 @@
 #include "common/error.hpp"
 #include "common/render.hpp"
 #include "common/layout.hpp"
+#include "common/plot.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
@@ -547,9 +548,6 @@ void Jitter::addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::
   p.clear = true;
   p.clearColor = {0.17f, 0.17f, 0.2f, 1.0f};
   const ts::Rect& vp = p.viewport;
-  auto px = [&](double x, double y) {
-    return glm::vec2(float(vp.x + x / xmax * vp.w), float(vp.y + (1 - y / ymax) * vp.h));
-  };
   std::vector<glm::vec2> grid;
   for (double y = step; y < ymax - 1e-9; y += step) grid.insert(grid.end(), {{0.0f, float(y)}, {float(xmax), float(y)}});
   for (int side = 1; side <= kMaxSide; ++side)
@@ -576,16 +574,10 @@ void Jitter::addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::
                                             {0.85f, 0.85f, 0.85f, 1.0f}, 1.0f, "axes"));
   namespace L = ts::layout;
   L::caption(f, {float(area.x + 4), float(area.y), float(area.x + area.w - 4), float(area.y + line)}, title, kWhite, 1);
-  const L::Box leftOf{float(area.x), float(vp.y - 8), float(vp.x - 2), float(vp.y + vp.h + 8)},
-      under{float(area.x), float(vp.y + vp.h + 2), float(area.x + area.w), float(vp.y + vp.h + line + 4)};
-  for (double y = 0; y <= ymax + 1e-9; y += step) {
-    glm::vec2 q = px(0, y);
-    L::placeFree(f, {q.x - 6, q.y - 6, fmt(step < 0.01 ? "%.3f" : "%.2f", y), kGrey, 1, ts::Align::Right}, leftOf);
-  }
-  for (int side = 1; side <= kMaxSide; ++side) {
-    glm::vec2 q = px(side * side, 0);
-    L::placeFree(f, {q.x, q.y + 6, std::to_string(side * side), kGrey, 1, ts::Align::Center}, under);
-  }
+  std::vector<ts::plot::Tick> xt, yt;
+  for (int side = 1; side <= kMaxSide; ++side) xt.push_back({double(side * side), std::to_string(side * side)});
+  for (double y = 0; y <= ymax + 1e-9; y += step) yt.push_back({y, fmt(step < 0.01 ? "%.3f" : "%.2f", y)});
+  ts::plot::tickLabels(f, vp, area, 0, xmax, 0, ymax, xt, yt, kGrey);
   L::caption(f, {float(area.x + 4), float(vp.y + vp.h + 6 + line), float(area.x + area.w - 4), float(area.y + area.h)},
              "samples per pixel", kGrey, 1);
 }

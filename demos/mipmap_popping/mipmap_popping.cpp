@@ -60,6 +60,7 @@
 #include "common/gl.hpp"
 #include "common/render.hpp"
 #include "common/layout.hpp"
+#include "common/plot.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
@@ -379,16 +380,10 @@ void plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, const std:
   namespace L = ts::layout;
   L::caption(f, {float(vp.x), float(area.y + 2), float(area.x + area.w - 2), float(vp.y - 2)}, title, kWhite, 1,
              ts::Align::Left);
-  const L::Box under{float(area.x), float(vp.y + vp.h + 2), float(area.x + area.w), float(vp.y + vp.h + line + 2)},
-      leftOf{float(area.x), float(vp.y - 8), float(vp.x - 2), float(vp.y + vp.h + 1)};
-  for (int k = int(std::ceil(x0)); k <= int(std::floor(x1)); ++k)
-    L::placeFree(f, {float(vp.x + (k - x0) / (x1 - x0) * vp.w), float(vp.y + vp.h + 4), std::to_string(k), axis, 1,
-                     ts::Align::Center},
-                 under);
-  for (int v = 0; v <= 255; v += 64)
-    L::placeFree(f, {float(vp.x - 6), float(vp.y + (1 - v / 255.0) * vp.h - 6), std::to_string(v), axis, 1,
-                     ts::Align::Right},
-                 leftOf);
+  std::vector<ts::plot::Tick> xt, yt;
+  for (int k = int(std::ceil(x0)); k <= int(std::floor(x1)); ++k) xt.push_back({double(k), std::to_string(k)});
+  for (int v = 0; v <= 255; v += 64) yt.push_back({double(v), std::to_string(v)});
+  ts::plot::tickLabels(f, vp, area, x0, x1, 0, 255, xt, yt, axis);
 }
 
 void MipmapPopping::buildPlot(ts::Frame& f, const Result* m) const {

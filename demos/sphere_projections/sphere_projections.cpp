@@ -28,6 +28,7 @@
 
 #include "common/render.hpp"
 #include "common/layout.hpp"
+#include "common/plot.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
@@ -212,16 +213,13 @@ void SphereProjections::addPlot(ts::Frame& f, int width, int height, const ts::M
   f.panels.push_back(p);
   // Axes' numbers, in frame pixels.
   const ts::Rect& vp = f.panels.back().viewport;
-  const L::Box leftOf{0, float(vp.y - line), float(vp.x - 2), float(vp.y + vp.h + line)},
-      under{0, float(vp.y + vp.h + 2), float(width), float(vp.y + vp.h + line)};
-  for (int y = 0; y <= int(kTop); ++y)
-    L::placeFree(f, {float(vp.x - line / 2), float(vp.y + vp.h - y * vp.h / kTop - line / 2.0), fmt("%.0f", y), kWhite,
-                     scale, ts::Align::Right},
-                 leftOf);
-  for (int b = 0; b <= kBands; ++b)
-    L::placeFree(f, {float(vp.x + b * vp.w / kBands), float(vp.y + vp.h + line / 3),
-                     fmt("%.0f", spheremap::bandLo(0) + spheremap::kBandDeg * b), kWhite, scale, ts::Align::Center},
-                 under);
+  std::vector<ts::plot::Tick> xt, yt;
+  for (int b = 0; b <= kBands; ++b) {
+    double x = spheremap::bandLo(0) + spheremap::kBandDeg * b;
+    xt.push_back({x, fmt("%.0f", x)});
+  }
+  for (int y = 0; y <= int(kTop); ++y) yt.push_back({double(y), fmt("%.0f", y)});
+  ts::plot::tickLabels(f, vp, {0, 0, width, height}, -90, 90, 0, kTop, xt, yt, kWhite, scale);
   L::caption(f, {0, float(vp.y + vp.h + line + 2), float(width), float(height)}, "latitude phi (degrees)", kWhite, scale);
   L::caption(f, {float(vp.x), float(vp.y - line - line / 4), float(width - 2), float(vp.y - 1)},
              "texture area / surface area (whole sphere = 1)", kWhite, scale, ts::Align::Left);
