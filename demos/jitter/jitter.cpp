@@ -444,11 +444,11 @@ void Jitter::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
   int x = column ? 16 : rect.x + rect.w + 24, y0 = column ? rect.y + rect.h + 12 : top + 4;
   int room = column ? under - 12 : f.height - y0 - 3 * line - 44;
   int box = std::max(16, std::min({sideW - 20, room - 44, f.height / 3}));
-  if (column) x = std::max(16, (f.width - (box + 24 + 150)) / 2);  // the pattern, then the numbers beside it
-  addPattern(f, canvas, {x, y0, box, box}, mode_, side_, true);
+  if (column) x = std::max(16, (f.width - (std::max(box, 160) + 24 + 150)) / 2);  // the pattern, then the numbers beside it
+  addPattern(f, canvas, {x, y0, box, box}, mode_, side_, true, 160.0f);
   if (res && mode_ != kReference) {
     // The numbers: right of the pattern in a column layout, under it beside the image.
-    float nx = column ? float(x + std::max(box, 120) + 24) : float(x), ny = column ? float(y0) : float(y0 + box + 44);
+    float nx = column ? float(x + std::max(box, 160) + 24) : float(x), ny = column ? float(y0) : float(y0 + box + 44);
     L::Column numbers(f, {nx, ny, float(f.width) - 4, float(f.height) - 2});
     numbers.add("RMS error " + fmt("%.4f", res->stats.rms), kAmber, 1, ts::Align::Left);
     numbers.add("aliasing  " + fmt("%.4f", res->stats.aliasing), kAmber, 1, ts::Align::Left);
