@@ -94,7 +94,4 @@ class Column {
 // frame: tags, ticks and notes that do not fit are left out, never drawn
 // over each other.  Returns whether it was placed.
 bool placeFree(Frame& f, Label l, Box within);
-
-// The panel named `id` in a frame, or nullptr.
-inline const Panel* findPanel(const Frame& f, const std::string& id) { return f.panel(id); }
 }  // namespace ts::layout
