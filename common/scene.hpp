@@ -64,6 +64,10 @@ class Scene {
   // passes with `r` into the current target (the caller redraws after).
   virtual Measurements measure(Renderer& r) = 0;
   virtual std::vector<FigureSpec> figures() const { return {}; }
+  // The names of the one or two measurements that prove the figure (its
+  // claim), shown first in the window's side panel; a name ending in '*' is
+  // a prefix ("kink_deg*": every variant's).  Default: the first two.
+  virtual std::vector<std::string> claim() const { return {}; }
   // An accumulation buffer (the Red Book's jitter method).  OSMesa and GLX
   // windows give one when asked; EGL contexts have none, so a scene must
   // check Context::hasAccumBuffer() and fall back (e.g. averaging in an FBO).

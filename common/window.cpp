@@ -21,6 +21,7 @@
 #include "figure.hpp"
 #include "gl_pane.hpp"
 #include "orbit_camera.hpp"
+#include "side_panel.hpp"
 #include "sidecar.hpp"
 #include "render.hpp"
 
@@ -218,7 +219,7 @@ void drawHelp(Scene& scene, const Options& opts, int w, int h, bool* open) {
   ImGui::TextWrapped("Window keys: arrows turn and tilt (where the demo has them), = acts as +, Backspace resets every "
                      "option, a left drag orbits and the wheel zooms (3D views: --yaw, --pitch, --zoom), a picture file dropped on "
                      "the window is mapped (--texture), F12 saves the picture and its sidecar and prints the command that remakes them, l shows "
-                     "the OpenGL calls beside the picture, h hides the overlay, ? or F1 this card, Esc or q quits.");
+                     "the OpenGL calls beside the picture, h hides the side panel, ? or F1 this card, Esc or q quits.");
   ImGui::End();
 }
 
@@ -337,7 +338,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
 
   WindowContext ctx(win);
   Renderer renderer(ctx);
-  std::printf("%s | %s\nkeys: %s  h: overlay  l: OpenGL calls  ?/F1: help  F12: save  Backspace: reset  "
+  std::printf("%s | %s\nkeys: %s  h: side panel  l: OpenGL calls  ?/F1: help  F12: save  Backspace: reset  "
               "arrows: turn/tilt  esc/q: quit\n",
               scene.title().c_str(),
               ctx.describe().c_str(), opts.keysText().c_str());
@@ -423,9 +424,10 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         }
         dirty = false;
       }
-      // With the GL pane open the figure is laid out in the rest of the window.
-      int paneW = pane.visible ? glPaneWidth(ctx.width()) : 0;
-      int figureW = std::max(1, ctx.width() - paneW);
+      // The side panel and the GL pane dock right of the figure, which is
+      // laid out in the rest of the window: nothing covers it.
+      WindowSplit split = splitWindow(ctx.width(), input.overlay, pane.visible);
+      int figureW = split.figureW;
       Frame f = scene.build(figureW, ctx.height(), m);
       if (pane.visible && (record || figureW != recordedW || ctx.height() != recordedH)) {
         pane.record(renderer, f, afterKey, now, true);  // draws the picture, recording its calls
@@ -448,19 +450,12 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
       }
-      if (pane.visible) pane.draw(figureW, paneW, ctx.height(), now);
+      if (pane.visible) pane.draw(split.paneX, split.paneW, ctx.height(), now);
       if (input.overlay) {
-        ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowBgAlpha(0.75f);
-        ImGui::Begin(scene.title().c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-        for (const auto& [name, value] : opts.state()) ImGui::Text("%-14s %s", name.c_str(), value.c_str());
-        ImGui::Text("%-14s %.1f%s", "fps", fps, busy ? "" : " (idle: drawn when something changes)");
-        ImGui::Separator();
-        for (const auto& x : m) ImGui::Text("%-22s %10.4f", x.name.c_str(), x.value);
-        ImGui::Separator();
-        ImGui::TextWrapped("keys: %s  h: overlay  l: OpenGL calls  ?: help  F12: save  Backspace: reset  esc/q: quit",
-                           opts.keysText().c_str());
-        ImGui::End();
+        PanelStatus status;
+        status.fps = fps;
+        status.idle = !busy;
+        drawSidePanel(scene, opts, m, status, split.panelX, split.panelW, ctx.height());
       }
       if (input.help) drawHelp(scene, opts, ctx.width(), ctx.height(), &input.help);
       if (imgui) {

@@ -33,6 +33,7 @@
 
 #include "common/probe.hpp"
 #include "common/render.hpp"
+#include "common/layout.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
@@ -52,11 +53,7 @@ const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kIntended{0.2f, 0.85f, 0.3f, 
 // cell edges, so the seam patch shows whole columns (J|A right, I..B wrong).
 ts::TextureDesc label() { return ts::labelledGrid(640, 10); }
 
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
+using ts::layout::fmt;
 
 class CylinderSeam final : public ts::Scene {
  public:
@@ -68,6 +65,8 @@ class CylinderSeam final : public ts::Scene {
            "to [0,1), and the intended 0.2 with s = 0.9 -> 1.1 and GL_REPEAT.  Prints the span and direction of s\n"
            "measured across the patches from a render whose pixels name their texels.";
   }
+  std::vector<std::string> claim() const override { return {"seam_patch_span_s*", "seam_patch_direction*"}; }
+
   void addOptions(ts::Options& o) override {
     o.addEnum("coords", &coords_, {kCoordNames[0], kCoordNames[1]},
               "s per vertex: wrong = theta/360 reduced to [0,1); right = winding tracked (0.9 -> 1.1), GL_REPEAT", 'c');
@@ -198,8 +197,9 @@ void CylinderSeam::addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int
     } names[] = {{"x", from, 0}, {"y", tip, 0}, {"z", tip, 1}, {"w", from, 1}};
     for (auto& v : names) {
       glm::vec2 q = at(v.s, v.t);
-      f.labels.push_back({q.x, v.t > 0.5 ? q.y - line - 4.0f * float(scale) : q.y + 4.0f * float(scale), v.n, kPatch,
-                          scale, ts::Align::Center});
+      ts::layout::placeFree(f, {q.x, v.t > 0.5 ? q.y - line - 4.0f * float(scale) : q.y + 4.0f * float(scale), v.n, kPatch,
+                                scale, ts::Align::Center},
+                            {0, 0, float(f.width), float(f.height)});
     }
   }
   f.panels.push_back(p);
@@ -238,7 +238,9 @@ void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int t
       glm::vec2 q = ts::panelToPixels(p, mvp * glm::vec4(glm::vec3(corner[i]), 1.0f));
       float dx = (i == 0 || i == 3 ? -1.0f : 1.0f) * 6.0f * float(scale);
       float dy = i < 2 ? 2.0f * float(scale) : -ts::text::height(scale) - 2.0f * float(scale);
-      f.labels.push_back({q.x + dx, q.y + dy, names[i], kPatch, scale, i == 0 || i == 3 ? ts::Align::Right : ts::Align::Left});
+      ts::layout::placeFree(
+          f, {q.x + dx, q.y + dy, names[i], kPatch, scale, i == 0 || i == 3 ? ts::Align::Right : ts::Align::Left},
+          ts::layout::box(vp));
     }
   }
   f.panels.push_back(p);
@@ -253,32 +255,37 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
   t.wrapS = GL_REPEAT;
   t = picture_.orDefault(t);  // the fix needs it (and the wrong way does not care)
   int tex = f.addTexture(t);
-  int scale = std::max(1, std::min(3, std::min(width, height) / 300));
-  int line = int(ts::text::height(scale)) + 6 * scale;
   const std::vector<Coords> shown =
       view_ == 0 ? std::vector<Coords>{Coords(coords_)} : std::vector<Coords>{Coords::Wrong, Coords::Right};
-  const int columns = 1 + int(shown.size()), colW = width / columns;
-  // Titles on the first line; the texture square below with a line above
-  // and below it for the x, y, z, w names; the cylinders fill their column
-  // down to the measurement line.
-  int side = std::max(1, std::min(colW - 2 * line, height - 7 * line));
-  int top = 3 * line + std::max(0, (height - 7 * line - side) / 2);
-  addTextureView(f, {colW / 2 - side / 2, top, side, side}, tex, scale);
-  f.labels.push_back({float(colW / 2), float(line / 2), "texture space", kWhite, scale, ts::Align::Center});
-  std::string seam = seam_ == 0 ? "seam at the front: s = theta/360" : "seam at the back: s = theta/360 + 1/2";
-  f.labels.push_back({float(colW / 2), float(top + side + line + line / 2), seam, kWhite, scale, ts::Align::Center});
+  // The texture square, then the cylinders, in a row (or a column when the
+  // window is tall); titles above, the seam's rule and the measurement below.
+  namespace L = ts::layout;
+  L::FlowSpec spec;
+  spec.n = 1 + int(shown.size());
+  spec.aspect = 1.1f;  // the cylinder's framing (24 degrees high) needs this width
+  spec.linesAbove = 1;
+  spec.linesBelow = 1;
+  spec.gap = 12;
+  std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
+  const L::Cell& tc = cells[0];
+  const int scale = tc.scale, names = int(L::lineHeight(scale));  // room for x, y, z, w above and below the square
+  const int side = std::max(1, std::min(tc.picture.w, tc.picture.h - 2 * names));
+  addTextureView(f, {tc.picture.x + (tc.picture.w - side) / 2, tc.picture.y + (tc.picture.h - side) / 2, side, side}, tex,
+                 scale);
+  L::caption(f, tc.above, "texture space", kWhite, scale);
+  L::caption(f, tc.below, seam_ == 0 ? "seam at the front: s = theta/360" : "seam at the back: s = theta/360 + 1/2",
+             kWhite, scale);
   for (size_t c = 0; c < shown.size(); ++c) {
-    int cx = int(2 * c + 3) * width / (2 * columns);
-    int w = std::max(1, colW - line), h = std::max(1, height - 4 * line - line / 2);
-    addCylinder(f, {cx - w / 2, 2 * line, w, h}, shown[c], tex, scale);
-    std::string title = shown[c] == Coords::Wrong ? "s reduced to [0,1): wrong" : "s winding tracked: right";
-    f.labels.push_back({float(cx), float(line / 2), title, kWhite, scale, ts::Align::Center});
+    const L::Cell& cell = cells[c + 1];
+    addCylinder(f, cell.picture, shown[c], tex, cell.scale);
+    L::caption(f, cell.above, shown[c] == Coords::Wrong ? "s reduced to [0,1): wrong" : "s winding tracked: right", kWhite,
+               cell.scale);
     const Spans* spans = measured.detailAs<Spans>();
     if (spans && spans->count(int(shown[c]))) {
       double span = spans->at(int(shown[c]));
-      f.labels.push_back({float(cx), float(height - line - line / 4),
-                          "seam patch: " + fmt("%.2f", std::abs(span)) + " of s, " + (span < 0 ? "reversed" : "forwards"),
-                          kMeasured, scale, ts::Align::Center});
+      L::caption(f, cell.below,
+                 "seam patch: " + fmt("%.2f", std::abs(span)) + " of s, " + (span < 0 ? "reversed" : "forwards"),
+                 kMeasured, cell.scale);
     }
   }
   return f;

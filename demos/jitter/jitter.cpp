@@ -52,6 +52,8 @@
 #include "common/context.hpp"
 #include "common/error.hpp"
 #include "common/render.hpp"
+#include "common/layout.hpp"
+#include "common/plot.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
@@ -75,11 +77,7 @@ const char* const kKindTitles[3] = {"regular", "jittered, one pattern", "jittere
 const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f}, kGrey{0.6f, 0.6f, 0.65f, 1.0f};
 const glm::vec4 kSeriesColour[3] = {{0.35f, 0.65f, 1.0f, 1.0f}, {1.0f, 0.55f, 0.2f, 1.0f}, {0.4f, 0.9f, 0.45f, 1.0f}};
 
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
+using ts::layout::fmt;
 
 ts::TextureDesc imageTexture(const ts::Image& img, const std::string& what,
                              std::vector<std::pair<std::string, std::string>> params) {
@@ -114,6 +112,8 @@ class Jitter final : public ts::Scene {
   int defaultWidth() const override { return 1024; }
   int defaultHeight() const override { return 560; }
   bool wantsAccumBuffer() const override { return true; }
+
+  std::vector<std::string> claim() const override { return {"aliasing[*"}; }
 
   void addOptions(ts::Options& o) override {
     o.addEnum("mode", &mode_, {kModeNames[0], kModeNames[1], kModeNames[2], kModeNames[3], kModeNames[4]},
@@ -176,7 +176,7 @@ class Jitter final : public ts::Scene {
   static ts::TextureDesc errorTextureOf(const Result& res);
 
   void addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const ts::TextureDesc& tex) const;
-  void addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels) const;
+  void addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels, float labelW = 0) const;
   void buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
   void buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
   void buildPlot(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
@@ -349,7 +349,8 @@ void Jitter::addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const 
 // A pixel square of `box` (canvas pixels, y down) with its subpixel grid and
 // the sample points of `mode` (jitter-pixel: a 2 x 2 block of pixels, each
 // with its own jitter).
-void Jitter::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels) const {
+void Jitter::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels,
+                        float labelW) const {
   const int n = mode == kOne ? 1 : mode == kReference ? jitter::kReferenceSide : side;
   const int cells = mode == kJitterPixel ? 2 : 1;
   const float cell = float(box.w) / float(cells);
@@ -388,9 +389,11 @@ void Jitter::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode,
                      : mode == kJitterGlobal ? "same in every pixel"
                      : mode == kJitterPixel ? "new in every pixel"
                                             : "jittered (the reference)";
-    float cx = float(box.x + box.w / 2), y = float(box.y + box.h + 5);
-    f.labels.push_back({cx, y, l1, kWhite, 1, ts::Align::Center});
-    f.labels.push_back({cx, y + 16, l2, kGrey, 1, ts::Align::Center});
+    // Under the box, in a band as wide as the box and its margins.
+    const float half = (labelW > 0 ? labelW : std::max(float(box.w), 120.0f)) / 2, cx = float(box.x + box.w / 2), y = float(box.y + box.h + 5);
+    const ts::layout::Box band{std::max(0.0f, cx - half), y, std::min(float(f.width), cx + half), y + 16};
+    ts::layout::caption(f, band, l1, kWhite, 1);
+    ts::layout::caption(f, {band.x0, y + 16, band.x1, y + 32}, l2, kGrey, 1);
   }
 }
 
@@ -413,57 +416,67 @@ ts::Frame Jitter::build(int width, int height, const ts::Measurements& measured)
 }
 
 void Jitter::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
-  const int W = jitter::kImageW, H = jitter::kImageH, line = 19;
-  const int side = std::min(220, std::max(60, f.width / 4));
+  namespace L = ts::layout;
+  const int W = jitter::kImageW, H = jitter::kImageH, line = 19, top = 2 * line;
   std::string n = std::to_string(side_) + "x" + std::to_string(side_);
   std::string what = mode_ == kOne ? "1 sample per pixel"
                      : mode_ == kRegular ? n + " regular samples per pixel"
                      : mode_ == kJitterGlobal ? n + " jittered, one pattern for all pixels"
                      : mode_ == kJitterPixel ? n + " jittered independently per pixel"
                                              : "reference: 16x16 stratified samples per pixel";
-  f.labels.push_back({12.0f, 8.0f, "Figure VI.7: " + what + (showError_ ? "  (error x3)" : ""), kWhite, 1, ts::Align::Left});
-  // The image, as large as an integer zoom allows (or scaled down to fit).
-  int availW = std::max(1, f.width - side - 48), availH = std::max(1, f.height - 4 * line);
-  int zoom = std::min(availW / W, availH / H);
-  ts::Rect rect;
-  if (zoom >= 1) {
-    rect = {16, 2 * line, W * zoom, H * zoom};
-  } else {
-    double s = std::min(double(availW) / W, double(availH) / H);
-    rect = {16, 2 * line, std::max(1, int(W * s)), std::max(1, int(H * s))};
-  }
+  L::caption(f, {12, 8, float(f.width) - 12, float(top - 2)}, "Figure VI.7: " + what + (showError_ ? "  (error x3)" : ""),
+             kWhite, 1, ts::Align::Left);
+  // The image as large as the window allows (whole zooms are pixel-exact;
+  // a zoom is rounded down to a whole one when that loses little), the
+  // sample pattern and the numbers beside it (a wide window) or under it.
+  const int sideW = std::min(220, std::max(130, f.width / 4)), under = 200;
+  auto fit = [&](int availW, int availH) {
+    double s = std::max(0.05, std::min(double(std::max(1, availW)) / W, double(std::max(1, availH)) / H));
+    if (s >= 1 && std::floor(s) >= 0.92 * s) s = std::floor(s);
+    return s;
+  };
+  double beside = fit(f.width - sideW - 48, f.height - top - 16), below = fit(f.width - 32, f.height - top - under - 16);
+  const bool column = below > beside;
+  const double s = column ? below : beside;
+  ts::Rect rect{16, top, std::max(1, int(W * s)), std::max(1, int(H * s))};
   const Result* res = current(fd);
   if (res) addImage(f, "image", rect, showError_ ? res->errorTexture : res->texture);
-  // The sample pattern and the numbers on the right.
-  int x = rect.x + rect.w + 24;
-  int box = std::min(side - 20, std::max(40, f.height / 3));
-  addPattern(f, canvas, {x, 2 * line + 4, box, box}, mode_, side_, true);
-  float y = float(2 * line + box + 48);
+  int x = column ? 16 : rect.x + rect.w + 24, y0 = column ? rect.y + rect.h + 12 : top + 4;
+  int room = column ? under - 12 : f.height - y0 - 3 * line - 44;
+  int box = std::max(16, std::min({sideW - 20, room - 44, f.height / 3}));
+  if (column) x = std::max(16, (f.width - (std::max(box, 160) + 24 + 150)) / 2);  // the pattern, then the numbers beside it
+  addPattern(f, canvas, {x, y0, box, box}, mode_, side_, true, 160.0f);
   if (res && mode_ != kReference) {
-    f.labels.push_back({float(x), y, "RMS error " + fmt("%.4f", res->stats.rms), kAmber, 1, ts::Align::Left});
-    f.labels.push_back({float(x), y + line, "aliasing  " + fmt("%.4f", res->stats.aliasing), kAmber, 1, ts::Align::Left});
-    f.labels.push_back({float(x), y + 2 * line, "noise     " + fmt("%.4f", res->stats.noise), kAmber, 1, ts::Align::Left});
+    // The numbers: right of the pattern in a column layout, under it beside the image.
+    float nx = column ? float(x + std::max(box, 160) + 24) : float(x), ny = column ? float(y0) : float(y0 + box + 44);
+    L::Column numbers(f, {nx, ny, float(f.width) - 4, float(f.height) - 2});
+    numbers.add("RMS error " + fmt("%.4f", res->stats.rms), kAmber, 1, ts::Align::Left);
+    numbers.add("aliasing  " + fmt("%.4f", res->stats.aliasing), kAmber, 1, ts::Align::Left);
+    numbers.add("noise     " + fmt("%.4f", res->stats.noise), kAmber, 1, ts::Align::Left);
   }
 }
 
 void Jitter::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
+  namespace L = ts::layout;
   const int W = jitter::kImageW, H = jitter::kImageH, line = 17, gap = 24;
   // At 1:1 the figure needs four images and three gaps across, three images
   // and ten lines of text down; a smaller frame (a window) scales the images.
-  // Text above, between and below the three rows (see the rows below).
-  auto scaleFor = [&](int numberLines) {
-    const int textH = 2 * line + 2 + (numberLines + 1) * line + 10 + 2 * line + 2 * line;
-    return std::min({1.0, double(f.width - 16) / (4 * W + 3 * gap), double(f.height - textH) / (3 * H)});
+  // A tall window puts two columns across, each row of four in two rows.
+  auto scaleFor = [&](int cols, int numberLines) {
+    const int R = 4 / cols;
+    const int textH = 2 * line + 2 + R * ((numberLines + 1) * line + 10) + 2 * line + R * (2 * line) + 8;
+    return std::min({1.0, double(f.width - 16 - (cols - 1) * gap) / (cols * W), double(f.height - textH) / (3 * R * H)});
   };
-  double s = scaleFor(2);
+  int cols = scaleFor(2, 3) > scaleFor(4, 2) * 1.05 ? 2 : 4;
+  double s = scaleFor(cols, 2);
   const bool narrow = W * s < 220;  // the numbers take three lines instead of two
-  if (narrow) s = scaleFor(3);
+  if (narrow) s = scaleFor(cols, 3);
+  const int R = 4 / cols;
   const int w = std::max(1, int(W * s)), h = std::max(1, int(H * s)), g = std::max(6, int(gap * s));
-  const int left = std::max(0, (f.width - (4 * w + 3 * g)) / 2);
+  const int left = std::max(0, (f.width - (cols * w + (cols - 1) * g)) / 2);
   const std::string n = std::to_string(side_) + "x" + std::to_string(side_);
-  f.labels.push_back({float(f.width / 2), 4.0f,
-                      "Figure VI.7  jittered supersampling: " + n + " samples per pixel, seed " + std::to_string(seed_),
-                      kWhite, 1, ts::Align::Center});
+  L::caption(f, {4, 4, float(f.width) - 4, float(line + 4)},
+             "Figure VI.7  jittered supersampling: " + n + " samples per pixel, seed " + std::to_string(seed_), kWhite, 1);
   if (!fd.at(0, 1).valid || !fd.at(0, side_).valid || !fd.at(1, side_).valid || !fd.at(2, side_).valid)
     return;  // measure() makes them
   const int modes[4] = {kOne, kRegular, kJitterGlobal, kJitterPixel};
@@ -471,40 +484,44 @@ void Jitter::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) cons
                                  n + (narrow ? " jitter, global" : " jittered, one pattern"),
                                  n + (narrow ? " jitter, per pixel" : " jittered per pixel")};
   const int numberLines = narrow ? 3 : 2;
+  const int blockA = line + h + numberLines * line + 10;  // title, image, numbers
   const int rowA = 2 * line + 2;
-  const int rowB = rowA + h + (numberLines + 1) * line + 10;
-  const int rowC = rowB + h + 2 * line;
+  const int rowB = rowA + R * blockA + line;
+  const int rowC = rowB + R * (h + g) + line / 2;
+  // A caption band: the column's width and half a gap each side, in the frame.
+  auto band = [&](int x, float y, float h2) {
+    return L::Box{std::max(0.0f, float(x - g / 2)), y, std::min(float(f.width), float(x + w + g / 2)), y + h2};
+  };
   for (int k = 0; k < 4; ++k) {
     const Result& res = modes[k] == kOne ? fd.at(0, 1)
                                          : fd.at(modes[k] == kRegular ? 0 : modes[k] == kJitterGlobal ? 1 : 2, side_);
-    int x = left + k * (w + g);
-    addImage(f, std::string("image_") + kModeNames[modes[k]], {x, rowA, w, h}, res.texture);
-    addImage(f, std::string("error_") + kModeNames[modes[k]], {x, rowB, w, h}, res.errorTexture);
-    float cx = float(x + w / 2);
-    f.labels.push_back({cx, float(rowA - line), titles[k], kWhite, 1, ts::Align::Center});
-    float y = float(rowA + h + 4);
-    f.labels.push_back({cx, y, "RMS error " + fmt("%.4f", res.stats.rms), kAmber, 1, ts::Align::Center});
+    int x = left + (k % cols) * (w + g), r = k / cols;
+    int ya = rowA + r * blockA + line, yb = rowB + r * (h + g);
+    addImage(f, std::string("image_") + kModeNames[modes[k]], {x, ya, w, h}, res.texture);
+    addImage(f, std::string("error_") + kModeNames[modes[k]], {x, yb, w, h}, res.errorTexture);
+    L::caption(f, band(x, float(ya - line), float(line)), titles[k], kWhite, 1);
+    L::Column numbers(f, band(x, float(ya + h + 4), float(numberLines * line + 6)));
+    numbers.add("RMS error " + fmt("%.4f", res.stats.rms), kAmber, 1);
     if (narrow) {
-      f.labels.push_back({cx, y + line, "aliasing " + fmt("%.4f", res.stats.aliasing), kAmber, 1, ts::Align::Center});
-      f.labels.push_back({cx, y + 2 * line, "noise " + fmt("%.4f", res.stats.noise), kAmber, 1, ts::Align::Center});
+      numbers.add("aliasing " + fmt("%.4f", res.stats.aliasing), kAmber, 1);
+      numbers.add("noise " + fmt("%.4f", res.stats.noise), kAmber, 1);
     } else {
-      f.labels.push_back({cx, y + line, "aliasing " + fmt("%.4f", res.stats.aliasing) + "  noise " +
-                                            fmt("%.4f", res.stats.noise),
-                          kAmber, 1, ts::Align::Center});
+      numbers.add("aliasing " + fmt("%.4f", res.stats.aliasing) + "  noise " + fmt("%.4f", res.stats.noise), kAmber, 1);
     }
   }
-  f.labels.push_back({float(f.width / 2), float(rowB - line - 2),
-                      "error against the reference, x3 (orange: too bright, blue: too dark)", kGrey, 1,
-                      ts::Align::Center});
-  // Bottom row: the reference, then the sample patterns of Figure VI.7.
-  addImage(f, "image_reference", {left, rowC, w, h}, fd.reference.texture);
-  f.labels.push_back({float(left + w / 2), float(rowC + h + 4), "reference: 16x16 stratified", kWhite, 1,
-                      ts::Align::Center});
+  L::caption(f, {4, float(rowB - line - 2), float(f.width) - 4, float(rowB - 1)},
+             "error against the reference, x3 (orange: too bright, blue: too dark)", kGrey, 1);
+  // Bottom rows: the reference, then the sample patterns of Figure VI.7.
   const int box = std::max(16, h - line);
   const int patterns[3] = {kRegular, kJitterGlobal, kJitterPixel};
-  for (int k = 0; k < 3; ++k) {
-    int x = left + (k + 1) * (w + g) + (w - box) / 2;
-    addPattern(f, canvas, {x, rowC, box, box}, patterns[k], side_, true);
+  for (int k = 0; k < 4; ++k) {
+    int x = left + (k % cols) * (w + g), y = rowC + (k / cols) * (h + 2 * line + 8);
+    if (k == 0) {
+      addImage(f, "image_reference", {x, y, w, h}, fd.reference.texture);
+      L::caption(f, band(x, float(y + h + 4), float(line)), "reference: 16x16 stratified", kWhite, 1);
+    } else {
+      addPattern(f, canvas, {x + (w - box) / 2, y, box, box}, patterns[k - 1], side_, true, float(w + g));
+    }
   }
 }
 
@@ -531,9 +548,6 @@ void Jitter::addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::
   p.clear = true;
   p.clearColor = {0.17f, 0.17f, 0.2f, 1.0f};
   const ts::Rect& vp = p.viewport;
-  auto px = [&](double x, double y) {
-    return glm::vec2(float(vp.x + x / xmax * vp.w), float(vp.y + (1 - y / ymax) * vp.h));
-  };
   std::vector<glm::vec2> grid;
   for (double y = step; y < ymax - 1e-9; y += step) grid.insert(grid.end(), {{0.0f, float(y)}, {float(xmax), float(y)}});
   for (int side = 1; side <= kMaxSide; ++side)
@@ -558,47 +572,60 @@ void Jitter::addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::
   canvas.batches.push_back(ts::lineSegments({{float(vp.x), float(vp.y + vp.h)}, {float(vp.x + vp.w), float(vp.y + vp.h)},
                                              {float(vp.x), float(vp.y)}, {float(vp.x), float(vp.y + vp.h)}},
                                             {0.85f, 0.85f, 0.85f, 1.0f}, 1.0f, "axes"));
-  f.labels.push_back({float(vp.x + vp.w / 2), float(area.y), title, kWhite, 1, ts::Align::Center});
-  for (double y = 0; y <= ymax + 1e-9; y += step) {
-    glm::vec2 q = px(0, y);
-    f.labels.push_back({q.x - 6, q.y - 6, fmt(step < 0.01 ? "%.3f" : "%.2f", y), kGrey, 1, ts::Align::Right});
-  }
-  for (int side = 1; side <= kMaxSide; ++side) {
-    glm::vec2 q = px(side * side, 0);
-    f.labels.push_back({q.x, q.y + 6, std::to_string(side * side), kGrey, 1, ts::Align::Center});
-  }
-  f.labels.push_back({float(vp.x + vp.w / 2), float(vp.y + vp.h + 6 + line), "samples per pixel", kGrey, 1,
-                      ts::Align::Center});
+  namespace L = ts::layout;
+  L::caption(f, {float(area.x + 4), float(area.y), float(area.x + area.w - 4), float(area.y + line)}, title, kWhite, 1);
+  std::vector<ts::plot::Tick> xt, yt;
+  for (int side = 1; side <= kMaxSide; ++side) xt.push_back({double(side * side), std::to_string(side * side)});
+  for (double y = 0; y <= ymax + 1e-9; y += step) yt.push_back({y, fmt(step < 0.01 ? "%.3f" : "%.2f", y)});
+  ts::plot::tickLabels(f, vp, area, 0, xmax, 0, ymax, xt, yt, kGrey);
+  L::caption(f, {float(area.x + 4), float(vp.y + vp.h + 6 + line), float(area.x + area.w - 4), float(area.y + area.h)},
+             "samples per pixel", kGrey, 1);
 }
 
 void Jitter::buildPlot(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
+  namespace L = ts::layout;
   const int line = 17;
-  f.labels.push_back({float(f.width / 2), 6.0f,
-                      "Figure VI.7  error against a 256-sample reference, seed " + std::to_string(seed_),
-                      kWhite, 1, ts::Align::Center});
+  L::caption(f, {4, 6, float(f.width) - 4, float(6 + line)},
+             "Figure VI.7  error against a 256-sample reference, seed " + std::to_string(seed_), kWhite, 1);
   for (const auto& row : fd.results)
     for (const Result& res : row)
       if (!res.valid) return;  // measure() makes them (view=plot)
-  const int tableH = 6 * line + 8;
-  const int plotH = std::max(60, f.height - 2 * line - tableH);
-  addPlot(f, canvas, {0, 2 * line, f.width / 2, plotH}, "RMS error (1 = full scale)", false, fd);
-  addPlot(f, canvas, {f.width / 2, 2 * line, f.width - f.width / 2, plotH}, "aliasing: the predictable part of the error",
-          true, fd);
-  // Legend and table: one row per pattern, RMS / aliasing at 1, 4, 9, 16.
-  float y = float(2 * line + plotH + 4);
-  const float nameW = 170.0f, colW = std::min(150.0f, float(f.width - 16 - 170) / 4.0f);
+  // The table: one row per pattern, RMS / aliasing at 1, 4, 9, 16 (on two
+  // lines, RMS then aliasing, when the columns are too narrow for both).
+  const float nameW = std::min(170.0f, float(f.width) / 4), colW = std::min(150.0f, (float(f.width) - 16 - nameW) / 4.0f);
+  const bool twoLines = colW < ts::text::width("0.0000 / 0.0000", 1) + 8;
+  const int tableH = (twoLines ? 7 : 4) * line + 8;
+  const int plotsH = std::max(60, f.height - 2 * line - tableH);
+  if (f.width >= f.height) {
+    addPlot(f, canvas, {0, 2 * line, f.width / 2, plotsH}, "RMS error (1 = full scale)", false, fd);
+    addPlot(f, canvas, {f.width / 2, 2 * line, f.width - f.width / 2, plotsH},
+            "aliasing: the predictable part of the error", true, fd);
+  } else {
+    addPlot(f, canvas, {0, 2 * line, f.width, plotsH / 2}, "RMS error (1 = full scale)", false, fd);
+    addPlot(f, canvas, {0, 2 * line + plotsH / 2, f.width, plotsH - plotsH / 2},
+            "aliasing: the predictable part of the error", true, fd);
+  }
+  float y = float(2 * line + plotsH + 4);
   const float x0 = std::max(8.0f, (float(f.width) - nameW - 4 * colW) / 2.0f);
-  f.labels.push_back({x0, y, "RMS error / aliasing", kGrey, 1, ts::Align::Left});
+  auto cell = [&](float x, float w2, const std::string& text, glm::vec4 c) {
+    L::caption(f, {x, y, x + w2 - 4, y + float(line)}, text, c, 1, ts::Align::Left);
+  };
+  cell(x0, nameW, twoLines ? "RMS, aliasing" : "RMS error / aliasing", kGrey);
   for (int side = 1; side <= kMaxSide; ++side)
-    f.labels.push_back({x0 + nameW + colW * float(side - 1), y,
-                        std::to_string(side * side) + (side == 1 ? " sample" : " samples"), kGrey, 1, ts::Align::Left});
+    cell(x0 + nameW + colW * float(side - 1), colW, std::to_string(side * side) + (side == 1 ? " sample" : " samples"),
+         kGrey);
   for (int kind = 0; kind < 3; ++kind) {
     y += float(line);
-    f.labels.push_back({x0, y, kKindTitles[kind], kSeriesColour[kind], 1, ts::Align::Left});
+    cell(x0, nameW, kKindTitles[kind], kSeriesColour[kind]);
     for (int side = 1; side <= kMaxSide; ++side) {
-      const jitter::ErrorStats& s = fd.at(kind, side).stats;
-      f.labels.push_back({x0 + nameW + colW * float(side - 1), y, fmt("%.4f", s.rms) + " / " + fmt("%.4f", s.aliasing),
-                          kSeriesColour[kind], 1, ts::Align::Left});
+      const jitter::ErrorStats& st = fd.at(kind, side).stats;
+      cell(x0 + nameW + colW * float(side - 1), colW,
+           twoLines ? fmt("%.4f", st.rms) : fmt("%.4f", st.rms) + " / " + fmt("%.4f", st.aliasing), kSeriesColour[kind]);
+    }
+    if (twoLines) {
+      y += float(line);
+      for (int side = 1; side <= kMaxSide; ++side)
+        cell(x0 + nameW + colW * float(side - 1), colW, fmt("%.4f", fd.at(kind, side).stats.aliasing), kSeriesColour[kind]);
     }
   }
 }

@@ -59,6 +59,8 @@
 #include "common/error.hpp"
 #include "common/gl.hpp"
 #include "common/render.hpp"
+#include "common/layout.hpp"
+#include "common/plot.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
@@ -71,11 +73,7 @@ using namespace mipmath;
 enum View { kSingle, kFilmstrip, kPlot, kSlant };
 enum Levels { kTextureOnly, kColoursOnly, kSplit };
 
-std::string fmt(const char* f, double v) {
-  char b[96];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
+using ts::layout::fmt;
 
 // The window's animation: after kHoldFrames frames at the chosen distance,
 // log2 distance moves kStepPerFrame per frame, bouncing between the ends of
@@ -98,6 +96,8 @@ class MipmapPopping final : public ts::Scene {
   }
   int defaultWidth() const override { return 1024; }
   int defaultHeight() const override { return 512; }
+
+  std::vector<std::string> claim() const override { return {"popping_ratio", "mip_overhead"}; }
 
   void addOptions(ts::Options& o) override {
     o.addEnum("view", &view_, {"single", "filmstrip", "plot", "slant"},
@@ -263,31 +263,40 @@ void MipmapPopping::buildSingle(ts::Frame& f, const Result* m) const {
   f.panels = {p, probe};
 
   const double lambda = x + bias_;
-  auto label = [&](float lx, float ly, const std::string& s, glm::vec4 c, ts::Align a = ts::Align::Left) {
-    f.labels.push_back({lx, ly, s, c, scale, a, kBox});
-  };
-  float left = float(8 * scale), top = float(6 * scale);
-  label(left, top, std::string(filterGLName(filter_)) + (filter_ == kAnisotropic ? " x" + std::to_string(aniso_) : ""),
-        kWhite);
-  label(left, top + float(line), "distance 2^" + fmt("%.3f", x) + " = " + fmt("%.3g", facingDistance(x)) +
-                                     " texels per pixel", kWhite);
-  label(left, top + float(2 * line),
-        "LOD = " + (bias_ != 0 ? fmt("%.3f", x) + " + bias " + fmt("%g", bias_) + " = " : std::string()) +
-            fmt("%.3f", lambda) + " -> " + levelText(filter_, lambda),
-        kAmber);
-  if (levels_ == kSplit) {
-    label(float(w / 4), float(h - 2 * line), "the texture", kWhite, ts::Align::Center);
-    label(float(3 * w / 4), float(h - 2 * line), "levels coloured", kWhite, ts::Align::Center);
-  }
+  // The state top left, the measurements top right; under it when the
+  // window is too narrow for both side by side.
+  namespace L = ts::layout;
+  std::vector<std::pair<std::string, glm::vec4>> left = {
+      {std::string(filterGLName(filter_)) + (filter_ == kAnisotropic ? " x" + std::to_string(aniso_) : ""), kWhite},
+      {"distance 2^" + fmt("%.3f", x) + " = " + fmt("%.3g", facingDistance(x)) + " texels per pixel", kWhite},
+      {"LOD = " + (bias_ != 0 ? fmt("%.3f", x) + " + bias " + fmt("%g", bias_) + " = " : std::string()) +
+           fmt("%.3f", lambda) + " -> " + levelText(filter_, lambda),
+       kAmber}};
+  std::vector<std::pair<std::string, glm::vec4>> right;
   if (m) {
-    label(float(w - 8 * scale), top, "mip chain +" + fmt("%.2f", 100 * m->overhead) + "% memory", kWhite,
-          ts::Align::Right);
-    label(float(w - 8 * scale), top + float(line),
-          "popping " + fmt("%.1f", m->popping[filter_]) + " (trilinear " + fmt("%.1f", m->popping[kLinearMipLinear]) + ")",
-          kWhite, ts::Align::Right);
-    if (!animate_)
-      label(float(w - 8 * scale), top + float(2 * line), "level read from the colours " + fmt("%.2f", m->levelObserved), kAmber,
-            ts::Align::Right);
+    right.push_back({"mip chain +" + fmt("%.2f", 100 * m->overhead) + "% memory", kWhite});
+    right.push_back({"popping " + fmt("%.1f", m->popping[filter_]) + " (trilinear " +
+                         fmt("%.1f", m->popping[kLinearMipLinear]) + ")",
+                     kWhite});
+    if (!animate_) right.push_back({"level read from the colours " + fmt("%.2f", m->levelObserved), kAmber});
+  }
+  auto widest = [&](const std::vector<std::pair<std::string, glm::vec4>>& v) {
+    float wd = 0;
+    for (const auto& t : v) wd = std::max(wd, ts::text::width(t.first, scale) + 6.0f * float(scale) + 2);
+    return wd;
+  };
+  const float pad = float(8 * scale), top = float(6 * scale), bottom = float(h - 2 * line);
+  const bool besides = widest(left) + widest(right) + 3 * pad <= float(w);
+  L::Column lc(f, {pad, top, besides ? float(w) - widest(right) - 2 * pad : float(w) - pad, bottom});
+  for (const auto& t : left) lc.add(t.first, t.second, scale, ts::Align::Left, kBox);
+  L::Column rc(f, besides ? L::Box{float(w) - widest(right) - pad, top, float(w) - pad, bottom}
+                          : L::Box{pad, lc.y(), float(w) - pad, bottom});
+  for (const auto& t : right) rc.add(t.first, t.second, scale, besides ? ts::Align::Right : ts::Align::Left, kBox);
+  if (levels_ == kSplit) {
+    L::caption(f, {0, float(h - 2 * line), float(w / 2), float(h - line)}, "the texture", kWhite, scale,
+               ts::Align::Center, kBox);
+    L::caption(f, {float(w / 2), float(h - 2 * line), float(w), float(h - line)}, "levels coloured", kWhite, scale,
+               ts::Align::Center, kBox);
   }
 }
 
@@ -302,16 +311,18 @@ void MipmapPopping::buildFilmstrip(ts::Frame& f, const Result* m) const {
   int rowsTop = std::max(2 * line, (h - (2 * cell + 3 * line + gap)) / 2);
   const int rows[2] = {filter_, kLinearMipLinear};
   const double x = shownLog2();
-  f.labels.push_back({float(w / 2), 4.0f,
-                      "the plane at 8 distances, 1/4 level apart (LOD bias " + fmt("%g", bias_) + ")", kWhite, 1,
-                      ts::Align::Center});
+  namespace L = ts::layout;
+  L::caption(f, {4, 4, float(w - 4), float(4 + line)},
+             "the plane at 8 distances, 1/4 level apart (LOD bias " + fmt("%g", bias_) + ")", kWhite, 1);
+  const bool narrow = float(cell + gap) < ts::text::width("top: level 1 ", 1);
   for (int r = 0; r < 2; ++r) {
     int y = rowsTop + r * (cell + line + gap) + line;
     sweep::Look lk = look();
     lk.filter = rows[r];
     std::string name = std::string(filterGLName(rows[r])) + (rows[r] == kAnisotropic ? " x" + std::to_string(aniso_) : "");
     if (m) name += "   popping " + fmt("%.1f", m->popping[rows[r]]);
-    f.labels.push_back({float(x0), float(y - line), name, r == 0 ? kAmber : kWhite, 1, ts::Align::Left});
+    L::caption(f, {float(x0), float(y - line), float(w - 2), float(y - 2)}, name, r == 0 ? kAmber : kWhite, 1,
+               ts::Align::Left);
     for (int c = 0; c < kCols; ++c) {
       double xc = x + 0.25 * (c - kCols / 2);
       ts::Panel p;
@@ -322,11 +333,14 @@ void MipmapPopping::buildFilmstrip(ts::Frame& f, const Result* m) const {
       if (r == 1) {
         double lambda = xc + bias_;
         float lx = float(p.viewport.x + cell / 2);
-        f.labels.push_back({lx, float(y + cell + 4), "LOD " + fmt("%.3f", lambda), kWhite, 1, ts::Align::Center});
+        // Under each frame, in its column: the LOD, and the level the top row shows.
+        const L::Box col{lx - float(cell + gap) / 2, float(y + cell + 4), lx + float(cell + gap) / 2,
+                         float(y + cell + 4 + line)};
+        L::caption(f, col, (narrow ? "" : "LOD ") + fmt("%.3f", lambda), kWhite, 1);
         std::string top = usesMipmaps(rows[0]) && !blendsLevels(rows[0])
-                              ? "level " + std::to_string(nearestLevel(lambda))
-                              : "level " + fmt("%.2f", effectiveLevel(rows[0], lambda));
-        f.labels.push_back({lx, float(y + cell + 4 + line), "top: " + top, kGrey, 1, ts::Align::Center});
+                              ? std::to_string(nearestLevel(lambda))
+                              : fmt("%.2f", effectiveLevel(rows[0], lambda));
+        L::caption(f, {col.x0, col.y1, col.x1, col.y1 + float(line)}, (narrow ? "L " : "top: level ") + top, kGrey, 1);
       }
     }
   }
@@ -367,13 +381,13 @@ void plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, const std:
                                    "axes"));
   const ts::Rect vp = p.viewport;
   f.panels.push_back(p);
-  f.labels.push_back({float(vp.x), float(area.y + 2), title, kWhite, 1, ts::Align::Left});
-  for (int k = int(std::ceil(x0)); k <= int(std::floor(x1)); ++k)
-    f.labels.push_back({float(vp.x + (k - x0) / (x1 - x0) * vp.w), float(vp.y + vp.h + 4), std::to_string(k), axis, 1,
-                        ts::Align::Center});
-  for (int v = 0; v <= 255; v += 64)
-    f.labels.push_back({float(vp.x - 6), float(vp.y + (1 - v / 255.0) * vp.h - 6), std::to_string(v), axis, 1,
-                        ts::Align::Right});
+  namespace L = ts::layout;
+  L::caption(f, {float(vp.x), float(area.y + 2), float(area.x + area.w - 2), float(vp.y - 2)}, title, kWhite, 1,
+             ts::Align::Left);
+  std::vector<ts::plot::Tick> xt, yt;
+  for (int k = int(std::ceil(x0)); k <= int(std::floor(x1)); ++k) xt.push_back({double(k), std::to_string(k)});
+  for (int v = 0; v <= 255; v += 64) yt.push_back({double(v), std::to_string(v)});
+  ts::plot::tickLabels(f, vp, area, x0, x1, 0, 255, xt, yt, axis);
 }
 
 void MipmapPopping::buildPlot(ts::Frame& f, const Result* m) const {
@@ -398,21 +412,25 @@ void MipmapPopping::buildPlot(ts::Frame& f, const Result* m) const {
     plotSweep(f, {0, r * plotH + line / 2, w, plotH}, title, m->sweepLods, m->sweepMeans[size_t(fl)], shownLog2(),
               switches);
   }
-  f.labels.push_back({float(w / 2), float(h - 2 * line - 2),
-                      "x: log2 distance = LOD - bias (" + fmt("%g", bias_) +
-                          ");  dashed: where GL's rule changes level;  amber: the current distance",
-                      kGrey, 1, ts::Align::Center});
-  // The level colours the probe sees, as a key.
+  namespace L = ts::layout;
+  L::caption(f, {4, float(h - 2 * line - 2), float(w - 4), float(h - line - 1)},
+             "x: log2 distance = LOD - bias (" + fmt("%g", bias_) +
+                 ");  dashed: where GL's rule changes level;  amber: the current distance",
+             kGrey, 1);
+  // The level colours the probe sees, as a key (its lead shortened when narrow).
   std::string lead = "the probe's texture, level by level:";
-  float x = float(w / 2) - (ts::text::width(lead, 1) + kLevels * 34.0f) / 2;
-  f.labels.push_back({x, float(h - line), lead, kGrey, 1, ts::Align::Left});
+  if (ts::text::width(lead, 1) + 10 + kLevels * 34.0f > float(w - 8)) lead = "levels:";
+  float x = std::max(4.0f, float(w / 2) - (ts::text::width(lead, 1) + 10 + kLevels * 34.0f) / 2);
+  const L::Box keyRow{0, float(h - line - 3), float(w), float(h)};
+  L::placeFree(f, {x, float(h - line), lead, kGrey, 1, ts::Align::Left}, keyRow);
   x += ts::text::width(lead, 1) + 10;
   for (int k = 0; k < kLevels; ++k) {
     ts::Rgba c = ts::mipLevelColour(k);
     glm::vec4 bg(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f);
     bool dark = c.r * 0.3 + c.g * 0.59 + c.b * 0.11 < 140;
-    f.labels.push_back({x + k * 34.0f, float(h - line), " " + std::to_string(k) + " ",
-                        dark ? kWhite : glm::vec4(0, 0, 0, 1), 1, ts::Align::Left, bg});
+    L::placeFree(f, {x + k * 34.0f, float(h - line), " " + std::to_string(k) + " ", dark ? kWhite : glm::vec4(0, 0, 0, 1),
+                     1, ts::Align::Left, bg},
+                 keyRow);
   }
 }
 
@@ -444,17 +462,26 @@ ts::Panel farFieldOutline(const ts::Rect& vp, const ts::OrbitCamera& orbit) {
   return o;
 }
 
+// Where the notes under the slant panels start.
+int cy0Notes(int h, int line, int rows, int ph, int gap) {
+  return std::min(h - 2 * line, 2 * line + rows * (ph + gap + line));
+}
+
 // The slanted plane: the supersampled reference and the seven filters, four
 // panels a row (the current filter's title in amber).
 void MipmapPopping::buildSlant(ts::Frame& f, const Result* m) const {
   const int w = f.width, h = f.height;
   const int line = int(ts::text::height(1)) + 6;
   const int gap = 8;
-  constexpr int kCols = 4;
-  const int pw = std::max(8, (w - (kCols + 1) * gap) / kCols), ph = std::max(8, (h - 2 * gap - 6 * line) / 2);
+  namespace L = ts::layout;
+  // Four panels a row, or two in a tall window (four rows).
+  const int kCols = w >= h ? 4 : 2, kRows = (kFilterCount + 1 + kCols - 1) / kCols;
+  const int pw = std::max(8, (w - (kCols + 1) * gap) / kCols),
+            ph = std::max(8, (h - kRows * gap - (2 + 2 * kRows) * line) / kRows);
   for (int k = 0; k <= kFilterCount; ++k) {
     const int fl = k - 1;  // -1: the reference
     int cx = gap + (k % kCols) * (pw + gap), cy = line + (k / kCols) * (ph + gap + line) + line;
+    const L::Box inPanel{float(cx), float(cy), float(cx + pw), float(cy + ph)};
     ts::Panel p;
     p.id = fl < 0 ? std::string("slant_reference") : "slant_" + filterKey(fl);
     p.viewport = {cx, cy, pw, ph};
@@ -469,30 +496,33 @@ void MipmapPopping::buildSlant(ts::Frame& f, const Result* m) const {
       // The far field's two edges, labelled at the left.
       ts::Panel o = farFieldOutline(p.viewport, camera_);
       for (const auto& b : o.batches)
-        f.labels.push_back({float(cx + 4), float(cy) + b.vertices.front().pos.y - 16.0f,
-                            b.role == "far_field_near_edge" ? "LOD " + fmt("%g", sweep::kFarLodLo)
-                                                            : "LOD " + fmt("%g", sweep::kFarLodHi),
-                            kWhite, 1, ts::Align::Left, kBox});
+        L::placeFree(f, {float(cx + 4), float(cy) + b.vertices.front().pos.y - 16.0f,
+                         b.role == "far_field_near_edge" ? "LOD " + fmt("%g", sweep::kFarLodLo)
+                                                         : "LOD " + fmt("%g", sweep::kFarLodHi),
+                         kWhite, 1, ts::Align::Left, kBox},
+                     inPanel);
       f.panels.push_back(o);
     } else {
       t = fl == kAnisotropic ? "anisotropic x" + std::to_string(aniso_) : std::string(filterGLName(fl));
       if (m)
-        f.labels.push_back({float(cx + 4), float(cy + 4),
-                            "error " + fmt("%.1f", m->farError[fl]) +
-                                (fl == kAnisotropic && !m->anisotropy ? " (no anisotropy here)" : ""),
-                            fl == filter_ ? kAmber : kWhite, 1, ts::Align::Left, kBox});
+        L::caption(f, {inPanel.x0 + 1, inPanel.y0 + 1, inPanel.x1 - 1, std::min(inPanel.y1, inPanel.y0 + 2 * float(line))},
+                   "error " + fmt("%.1f", m->farError[fl]) +
+                       (fl == kAnisotropic && !m->anisotropy ? " (no anisotropy here)" : ""),
+                   fl == filter_ ? kAmber : kWhite, 1, ts::Align::Left, kBox);
     }
     // Titles: "GL_" goes, then the reference's detail, when the panel is narrow.
     if (ts::text::width(t, 1) > float(pw) && t.rfind("GL_", 0) == 0) t = t.substr(3);
     if (ts::text::width(t, 1) > float(pw) && fl < 0) t = "reference (8x8 samples)";
-    f.labels.push_back({float(cx), float(cy - line + 2), t, fl == filter_ ? kAmber : kWhite, 1, ts::Align::Left});
+    L::caption(f, {float(cx), float(cy - line + 2), float(cx + pw), float(cy - 1)}, t, fl == filter_ ? kAmber : kWhite, 1,
+               ts::Align::Left);
   }
   const std::string note1 = "error: RMS (R,G,B, 8-bit) against the reference in the far field, LOD " +
                             fmt("%g", sweep::kFarLodLo) + ".." + fmt("%g", sweep::kFarLodHi) + " (between the white lines)";
   std::string note2 = "measured at " + std::to_string(sweep::kSlantW) + "x" + std::to_string(sweep::kSlantH);
   if (m) note2 += " on " + m->renderer;
-  f.labels.push_back({float(w / 2), float(h - 2 * line), note1, kGrey, 1, ts::Align::Center});
-  f.labels.push_back({float(w / 2), float(h - line), note2, kGrey, 1, ts::Align::Center});
+  L::Column notes(f, {4, float(cy0Notes(h, line, kRows, ph, gap)), float(w - 4), float(h)});
+  notes.add(note1, kGrey, 1);
+  notes.add(note2, kGrey, 1);
 }
 
 ts::Measurements MipmapPopping::measure(ts::Renderer& r) {

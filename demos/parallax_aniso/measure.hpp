@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/layout.hpp"
 #include "common/probe.hpp"
 #include "parallax_gl.hpp"
 #include "relief.hpp"
@@ -106,12 +107,7 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
 
 // printf of one number; a measure that does not exist (PSNR over an empty
 // mask) is NaN and prints as nothing, an empty CSV cell.
-inline std::string fmtNum(const char* f, double v) {
-  if (std::isnan(v)) return std::string();
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
+inline std::string fmtNum(const char* f, double v) { return std::isnan(v) ? std::string() : ts::layout::fmt(f, v); }
 
 inline std::string optCount(long n) { return n >= 0 ? std::to_string(n) : std::string(); }
 

@@ -52,7 +52,9 @@
 #include "common/figure.hpp"
 #include "common/render.hpp"
 #include "common/textures.hpp"
+#include "common/layout.hpp"
 #include "common/orbit_camera.hpp"
+#include "common/text.hpp"
 #include "common/user_texture.hpp"
 #include "common/scene.hpp"
 #include "measure.hpp"
@@ -107,6 +109,8 @@ class ParallaxAniso final : public ts::Scene {
   }
   int defaultWidth() const override { return 1360; }
   int defaultHeight() const override { return 660; }
+
+  std::vector<std::string> claim() const override { return {"ewa_psnr_all", "ewa_vis_psnr_all"}; }
 
   void addOptions(ts::Options& o) override {
     o.addEnum("mode", &mode_, {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5],
@@ -343,17 +347,18 @@ class ParallaxAniso final : public ts::Scene {
   std::string gradientsNote() const { return gradients_ ? ", M1/M2 gradients x4" : ""; }
 
   void buildSingle(ts::Frame& f, const Shown& shown) const {
+    namespace L = ts::layout;
     const Table& table = *shown.table;
     const int line = 17;
     int availW = f.width - 32, availH = f.height - 4 * line;
     double s = std::min(double(availW) / table.cam.width, double(availH) / table.cam.height);
     int w = std::max(1, int(table.cam.width * s)), h = std::max(1, int(table.cam.height * s));
     ts::Rect rect{(f.width - w) / 2, 2 * line, w, h};
-    f.labels.push_back({16.0f, 6.0f, header(table), kWhite, 1, ts::Align::Left});
+    L::caption(f, {16, 6, float(f.width - 4), float(2 * line - 2)}, header(table), kWhite, 1, ts::Align::Left);
+    const L::Box under{4, float(rect.y + h + 6), float(f.width - 4), float(f.height - 2)};
     if (!compare_) {
       addImage(f, "image", rect, shown.of(mode_));
-      f.labels.push_back({float(f.width / 2), float(rect.y + h + 6), std::string(kModeLabels[mode_]) + ":  " + numbers(table, mode_),
-                          kAmber, 1, ts::Align::Center});
+      L::caption(f, under, std::string(kModeLabels[mode_]) + ":  " + numbers(table, mode_), kAmber, 1);
       return;
     }
     ts::Rect left{rect.x, rect.y, w / 2, h}, right{rect.x + w / 2, rect.y, w - w / 2, h};
@@ -366,10 +371,11 @@ class ParallaxAniso final : public ts::Scene {
     canvas.batches.push_back(ts::lineSegments({{float(right.x), float(rect.y)}, {float(right.x), float(rect.y + h)}},
                                               kWhite, 2.0f, "divider"));
     f.panels.push_back(canvas);
-    f.labels.push_back({float(rect.x + w / 4), float(rect.y + h + 6), std::string(kModeLabels[mode_]) + ": " + numbers(table, mode_),
-                        kAmber, 1, ts::Align::Center});
-    f.labels.push_back({float(rect.x + 3 * w / 4), float(rect.y + h + 6),
-                        std::string(kModeLabels[against_]) + ": " + numbers(table, against_), kAmber, 1, ts::Align::Center});
+    const float mid = float(right.x);
+    L::caption(f, {under.x0, under.y0, mid - 4, under.y1}, std::string(kModeLabels[mode_]) + ": " + numbers(table, mode_),
+               kAmber, 1);
+    L::caption(f, {mid + 4, under.y0, under.x1, under.y1},
+               std::string(kModeLabels[against_]) + ": " + numbers(table, against_), kAmber, 1);
   }
 
   // The live view: the chosen mode (M0..M5; R is the CPU reference, seconds
@@ -430,25 +436,30 @@ class ParallaxAniso final : public ts::Scene {
     std::string head = std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", cam.elevationDeg) +
                        " deg, azimuth " + fmtNum("%.0f", cam.azimuthDeg) + " deg, height " + fmtNum("%.2f", heightScale_) +
                        gradientsNote() + ", live";
+    namespace L = ts::layout;
     if (!live || !live->texture.glTexture) {
-      f.labels.push_back({16.0f, 6.0f, head, kWhite, 1, ts::Align::Left});
-      f.labels.push_back({16.0f, 6.0f + line, "R (the reference) is traced on the CPU and is not drawn live: m picks a mode",
-                          kAmber, 1, ts::Align::Left});
+      L::Column c(f, {16, 6, float(f.width - 4), float(f.height - 2)});
+      c.add(head, kWhite, 1, ts::Align::Left);
+      c.add("R (the reference) is traced on the CPU and is not drawn live: m picks a mode", kAmber, 1, ts::Align::Left);
       return;
     }
     addImage(f, "live", {0, 0, f.width, f.height}, live->texture);
     bar("top_bar", 0);
     bar("bottom_bar", f.height - kLiveBar);
-    f.labels.push_back({16.0f, 4.0f, head, kWhite, 1, ts::Align::Left});
+    // A narrow window gets a shorter header, never one cut before its gradients note.
+    for (const std::string& h : {std::string(kMaps[map_]) + gradientsNote() + ", live", std::string(kMaps[map_]) + gradientsNote()})
+      if (ts::text::width(head, 1) > float(f.width - 21)) head = h;
+    L::caption(f, {16, 4, float(f.width - 4), float(kLiveBar)}, head, kWhite, 1, ts::Align::Left);
     std::string sizeText = std::to_string(live->size.x) + "x" + std::to_string(live->size.y);
     if (live->modes.y < 0) {
-      f.labels.push_back({float(f.width / 2), float(f.height - line - 2), std::string(kModeLabels[live->modes.x]) + ", " + sizeText,
-                          kAmber, 1, ts::Align::Center});
+      L::caption(f, {4, float(f.height - line - 2), float(f.width - 4), float(f.height)},
+                 std::string(kModeLabels[live->modes.x]) + ", " + sizeText, kAmber, 1);
       return;
     }
-    f.labels.push_back({float(f.width / 4), float(f.height - line - 2), kModeLabels[live->modes.x], kAmber, 1, ts::Align::Center});
-    f.labels.push_back({float(3 * f.width / 4), float(f.height - line - 2), kModeLabels[live->modes.y], kAmber, 1,
-                        ts::Align::Center});
+    L::caption(f, {4, float(f.height - line - 2), float(f.width / 2 - 4), float(f.height)}, kModeLabels[live->modes.x],
+               kAmber, 1);
+    L::caption(f, {float(f.width / 2 + 4), float(f.height - line - 2), float(f.width - 4), float(f.height)},
+               kModeLabels[live->modes.y], kAmber, 1);
     ts::Panel canvas;
     canvas.id = "divider";
     canvas.viewport = {0, 0, f.width, f.height};
@@ -464,58 +475,77 @@ class ParallaxAniso final : public ts::Scene {
   static double panelScale(double fit) { return fit >= 2.0 ? std::floor(fit) : std::min(1.0, fit); }
 
   void buildModes(ts::Frame& f, const Shown& shown) const {
+    namespace L = ts::layout;
     const Table& table = *shown.table;
-    const int line = 17, gap = 12, cols = 4;
+    const int line = 17, gap = 12;
     const int W = table.cam.width, H = table.cam.height;
-    double s = panelScale(std::min(double(f.width - (cols + 1) * gap) / (cols * W),
-                                   double(f.height - 2 * line - 2 * (3 * line + 6)) / (2 * H)));
+    // Four cells a row (two rows), or two (four rows) in a tall window.
+    auto fit = [&](int cols) {
+      int rows = 8 / cols;
+      return std::min(double(f.width - (cols + 1) * gap) / (cols * W),
+                      double(f.height - 2 * line - rows * (3 * line + 6)) / (rows * H));
+    };
+    const int cols = fit(2) > fit(4) * 1.05 ? 2 : 4;
+    double s = panelScale(fit(cols));
     int w = std::max(1, int(W * s)), h = std::max(1, int(H * s));
     int left = std::max(0, (f.width - cols * w - (cols - 1) * gap) / 2);
-    f.labels.push_back({float(f.width / 2), 4.0f, header(table), kWhite, 1, ts::Align::Center});
+    L::caption(f, {4, 4, float(f.width - 4), float(2 * line - 2)}, header(table), kWhite, 1);
+    auto column = [&](int x, float y0, float y1) {
+      return L::Box{std::max(0.0f, float(x - gap / 2)), y0, std::min(float(f.width), float(x + w + gap / 2)), y1};
+    };
     const int order[7] = {kNaive, kTrilinear, kAniso16, kReference, kEwa, kEwaVis, kEwaRows};
     for (int k = 0; k < 7; ++k) {
       int col = k % cols, row = k / cols;
       int x = left + col * (w + gap), y = 2 * line + row * (h + 3 * line + 6) + line;
       addImage(f, std::string("image_") + kModeKeys[order[k]], {x, y, w, h}, shown.of(order[k]));
-      f.labels.push_back({float(x + w / 2), float(y - line), kModeLabels[order[k]], kWhite, 1, ts::Align::Center});
-      f.labels.push_back({float(x + w / 2), float(y + h + 3), numbers(table, order[k]), kAmber, 1, ts::Align::Center});
+      L::caption(f, column(x, float(y - line), float(y - 1)), kModeLabels[order[k]], kWhite, 1);
+      L::caption(f, column(x, float(y + h + 3), float(y + h + 2 * line + 3)), numbers(table, order[k]), kAmber, 1);
     }
     // The eighth cell: the band in numbers.
-    int x = left + 3 * (w + gap), y = 2 * line + (h + 3 * line + 6) + line;
-    f.labels.push_back({float(x), float(y), "occlusion band: " + std::to_string(table.bandPixels) + " px", kGrey, 1,
-                        ts::Align::Left});
-    f.labels.push_back({float(x), float(y + line), "mode     PSNR    SSIM", kGrey, 1, ts::Align::Left});
+    int x = left + (7 % cols) * (w + gap), y = 2 * line + (7 / cols) * (h + 3 * line + 6) + line;
+    L::Column c(f, {float(x), float(y), std::min(float(f.width - 2), float(x + std::max(w, 240))), float(f.height - 2)});
+    c.add("occlusion band: " + std::to_string(table.bandPixels) + " px", kGrey, 1, ts::Align::Left);
+    c.add("mode     PSNR    SSIM", kGrey, 1, ts::Align::Left);
     for (int m = 0; m < kShaderModes; ++m) {
       const Row& r = table.rows[size_t(m)];
-      f.labels.push_back({float(x), float(y + (m + 2) * line),
-                          std::string("M") + std::to_string(m) + "    " +
-                              (table.bandPixels ? fmtNum("%6.2f", r.psnrBand) + "  " + fmtNum("%6.4f", r.ssimBand)
-                                                  : std::string("     -       -")),
-                          m >= kEwa ? kAmber : kWhite, 1, ts::Align::Left});
+      c.add(std::string("M") + std::to_string(m) + "    " +
+                (table.bandPixels ? fmtNum("%6.2f", r.psnrBand) + "  " + fmtNum("%6.4f", r.ssimBand)
+                                  : std::string("     -       -")),
+            m >= kEwa ? kAmber : kWhite, 1, ts::Align::Left);
     }
     // (Milliseconds are in the CSV, not here: the figure must regenerate byte-identically.)
-    f.labels.push_back({float(x), float(y + 9 * line), "PSNR in dB against R;", kGrey, 1, ts::Align::Left});
-    f.labels.push_back({float(x), float(y + 10 * line), "lk/px: texture lookups per pixel", kGrey, 1, ts::Align::Left});
+    c.add("PSNR in dB against R;", kGrey, 1, ts::Align::Left);
+    c.add("lk/px: texture lookups per pixel", kGrey, 1, ts::Align::Left);
   }
 
   void buildError(ts::Frame& f, const Shown& shown) const {
+    namespace L = ts::layout;
     const Table& table = *shown.table;
     const int line = 17, gap = 12;
     const int W = table.cam.width, H = table.cam.height;
-    double s = panelScale(std::min(double(f.width - 5 * gap) / (4 * W), double(f.height - 5 * line) / H));
+    // Four in a row, or 2 x 2 in a tall window.
+    auto fit = [&](int cols) {
+      int rows = 4 / cols;
+      return std::min(double(f.width - (cols + 1) * gap) / (cols * W), double(f.height - 2 * line - rows * 3 * line) / (rows * H));
+    };
+    const int cols = fit(2) > fit(4) * 1.05 ? 2 : 4;
+    double s = panelScale(fit(cols));
     int w = std::max(1, int(W * s)), h = std::max(1, int(H * s));
-    int left = std::max(0, (f.width - 4 * w - 3 * gap) / 2);
-    f.labels.push_back({float(f.width / 2), 4.0f, header(table), kWhite, 1, ts::Align::Center});
+    int left = std::max(0, (f.width - cols * w - (cols - 1) * gap) / 2);
+    L::caption(f, {4, 4, float(f.width - 4), float(2 * line - 2)}, header(table), kWhite, 1);
+    auto column = [&](int x, float y0, float y1) {
+      return L::Box{std::max(0.0f, float(x - gap / 2)), y0, std::min(float(f.width), float(x + w + gap / 2)), y1};
+    };
     const char* titles[4] = {"occlusion band", "M2 aniso 16x |error|", "M3 EWA |error|", "M4 EWA visible |error|"};
     const int modes[4] = {-1, kAniso16, kEwa, kEwaVis};
     for (int k = 0; k < 4; ++k) {
-      int x = left + k * (w + gap), y = 2 * line + line / 2;
+      int x = left + (k % cols) * (w + gap), y = 2 * line + line / 2 + (k / cols) * (h + 3 * line);
       addImage(f, std::string("error_") + std::to_string(k), {x, y, w, h}, shown.errorTextures[size_t(k == 0 ? 3 : k - 1)]);
-      f.labels.push_back({float(x + w / 2), float(y - line), titles[k], kWhite, 1, ts::Align::Center});
+      L::caption(f, column(x, float(y - line), float(y - 1)), titles[k], kWhite, 1);
       std::string n = k == 0 ? std::to_string(table.bandPixels) + " px"
                              : "band PSNR " + fmtNum("%.2f", table.rows[size_t(modes[k])].psnrBand) + " dB, SSIM " +
                                    fmtNum("%.3f", table.rows[size_t(modes[k])].ssimBand);
-      f.labels.push_back({float(x + w / 2), float(y + h + 4), n, kAmber, 1, ts::Align::Center});
+      L::caption(f, column(x, float(y + h + 4), float(y + h + 2 * line)), n, kAmber, 1);
     }
   }
 

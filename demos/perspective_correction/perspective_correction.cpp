@@ -36,6 +36,8 @@
 
 #include "common/error.hpp"
 #include "common/gl.hpp"
+#include "common/layout.hpp"
+#include "common/plot.hpp"
 #include "common/render.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
@@ -43,7 +45,6 @@
 #include "common/orbit_camera.hpp"
 #include "common/user_texture.hpp"
 #include "perspective_map.hpp"
-#include "plot.hpp"
 
 namespace {
 enum View { kBoth, kAffine, kPerspective, kPlot };
@@ -58,11 +59,8 @@ constexpr int kMeasureSize = 256, kIndexTexels = 2048;
 // be nearly edge-on and the square a sliver a few pixels high).
 constexpr int kSweepStepDeg = 10, kSweepMaxDeg = 80;
 
-std::string fmt(const char* f, double v) {
-  char b[96];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
+using ts::layout::fmt;
+namespace plot = ts::plot;
 
 class PerspectiveCorrection final : public ts::Scene {
  public:
@@ -76,6 +74,8 @@ class PerspectiveCorrection final : public ts::Scene {
   }
   int defaultWidth() const override { return 1024; }
   int defaultHeight() const override { return 400; }
+
+  std::vector<std::string> claim() const override { return {"affine_error_texels", "d_ratio", "hint_honoured"}; }
 
   void addOptions(ts::Options& o) override {
     o.addEnum("view", &view_, {"both", "affine", "perspective", "plot"},
@@ -203,8 +203,6 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
   // under GL_NICEST; the affine-only view asks for GL_FASTEST, which Mesa
   // ignores — and which cannot matter to it anyway, since w = 1 everywhere.
   f.perspectiveHint = view_ == kAffine ? GL_FASTEST : GL_NICEST;
-  const int scale = std::max(1, std::min(2, std::min(width / 480, height / 160)));
-  const int line = int(ts::text::height(1)) + 6;  // notes are always 13 px
   const glm::vec4 white{0.95f, 0.95f, 0.95f, 1.0f}, grey{0.75f, 0.75f, 0.78f, 1.0f}, amber{1.0f, 0.75f, 0.3f, 1.0f};
   const persp::Setup s = setup();
   const persp::Distances d = persp::distances(s);
@@ -216,46 +214,53 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
     return f;
   }
   int tex = f.addTexture(checker());
-  const int titleH = int(ts::text::height(scale)) + 8 * scale, notes = 3;
+  // The notes: the hint test, and the measured error against the rule of thumb.
+  std::vector<std::pair<std::string, glm::vec4>> notes;
+  if (have) {
+    notes.push_back({last->hintDiffering == 0
+                         ? last->driver + " ignores GL_PERSPECTIVE_CORRECTION_HINT: its GL_FASTEST and GL_NICEST renders are identical"
+                         : last->driver + " honours GL_PERSPECTIVE_CORRECTION_HINT: GL_FASTEST changes " +
+                               std::to_string(last->hintDiffering) + " px (error up to " +
+                               fmt("%.1f", last->hintFastestError) + " texels)",
+                     amber});
+    notes.push_back({"Screen-linear image: largest (s,t) error " + fmt("%.1f", last->affine.maxErrorTexels) +
+                         " texels of 256 (" + fmt("%.2f", last->affine.maxErrorTexels / (persp::kTexels / persp::kChecks)) +
+                         " checks), measured from a texel-index render",
+                     white});
+  }
+  notes.push_back({"tilt " + fmt("%g", s.tiltDeg) + " deg, distance " + fmt("%g", s.distance) + ": d1 = " + fmt("%.2f", d.d1) +
+                       ", d2 = " + fmt("%.2f", d.d2) + ", (d2 - d1)/d1 = " + fmt("%.2f", d.ratio()) +
+                       " (book: it matters from about 1)",
+                   grey});
+  // Room for the notes under the pictures (at most a third of the height).
+  const float margin = 8, noteW = float(width) - 2 * margin;
+  float notesH = 0;
+  for (const auto& n : notes) notesH += float(ts::layout::captionLines(n.first, 1, noteW)) * ts::layout::lineHeight(1) + 4;
+  notesH = std::min(notesH, float(height) / 3);
   const std::string how[2] = {"CPU-projected vertices, w = 1: screen-linear", "glHint(..., GL_NICEST): hyperbolic"};
   const char* titles[2] = {"Without hyperbolic interpolation", "With hyperbolic interpolation"};
   const Variant shown[2] = {view_ == kPerspective ? kPerspectiveVariant : kAffineVariant, kPerspectiveVariant};
-  const int n = view_ == kBoth ? 2 : 1, gap = 16;
-  // Panels as tall as the projected square needs (its framing adds the
-  // margin); titles, panels and notes centred vertically as one block.
-  const int extra = titleH + (1 + notes) * line + 12;
-  const int pw = std::max(1, (width - (n + 1) * gap) / n), avail = std::max(1, height - extra);
-  const int ph = std::max(1, std::min(avail, int(std::lround(pw / persp::boundsAspect(s)))));
-  const int py = (height - ph - extra) / 2 + titleH;
-  for (int k = 0; k < n; ++k) {
+  ts::layout::FlowSpec spec;
+  spec.n = view_ == kBoth ? 2 : 1;
+  spec.aspect = float(persp::boundsAspect(s));  // panels as tall as the projected square needs
+  spec.gap = 16;
+  spec.maxScale = 2;
+  std::vector<ts::layout::Cell> cells =
+      ts::layout::flow({margin, margin, float(width) - margin, float(height) - margin - notesH}, spec);
+  float bottom = margin;
+  for (int k = 0; k < spec.n; ++k) {
+    const ts::layout::Cell& c = cells[size_t(k)];
     ts::Panel p;
     p.id = shown[k] == kAffineVariant ? "affine" : "perspective";
-    p.viewport = {gap + k * (pw + gap), py, pw, ph};
+    p.viewport = c.picture;
     addSquare(p, s, shown[k], tex, edges_);
     f.panels.push_back(p);
-    float cx = float(p.viewport.x + pw / 2);
-    f.labels.push_back({cx, float(py - titleH), titles[shown[k]], white, scale, ts::Align::Center});
-    f.labels.push_back({cx, float(py + ph + 4), how[shown[k]], grey, 1, ts::Align::Center});
+    ts::layout::caption(f, c.above, titles[shown[k]], white, c.scale);
+    ts::layout::caption(f, c.below, how[shown[k]], grey, std::max(1, c.scale - 1));
+    bottom = std::max(bottom, c.below.y1);
   }
-  // The notes: the hint test, and the measured error against the rule of thumb.
-  float y = float(py + ph + line + 10);
-  if (have) {
-    std::string hint = last->hintDiffering == 0
-        ? last->driver + " ignores GL_PERSPECTIVE_CORRECTION_HINT: its GL_FASTEST and GL_NICEST renders are identical"
-        : last->driver + " honours GL_PERSPECTIVE_CORRECTION_HINT: GL_FASTEST changes " +
-          std::to_string(last->hintDiffering) + " px (error up to " + fmt("%.1f", last->hintFastestError) + " texels)";
-    f.labels.push_back({float(width / 2), y, hint, amber, 1, ts::Align::Center});
-    f.labels.push_back({float(width / 2), y + float(line),
-                        "Screen-linear image: largest (s,t) error " + fmt("%.1f", last->affine.maxErrorTexels) +
-                            " texels of 256 (" + fmt("%.2f", last->affine.maxErrorTexels / (persp::kTexels / persp::kChecks)) +
-                            " checks), measured from a texel-index render",
-                        white, 1, ts::Align::Center});
-  }
-  f.labels.push_back({float(width / 2), y + float(2 * line),
-                      "tilt " + fmt("%g", s.tiltDeg) + " deg, distance " + fmt("%g", s.distance) + ": d1 = " +
-                          fmt("%.2f", d.d1) + ", d2 = " + fmt("%.2f", d.d2) + ", (d2 - d1)/d1 = " + fmt("%.2f", d.ratio()) +
-                          " (book: it matters from about 1)",
-                      grey, 1, ts::Align::Center});
+  ts::layout::Column column(f, {margin, bottom + 4, float(width) - margin, float(height) - 2});
+  for (const auto& n : notes) column.add(n.first, n.second, 1);
   return f;
 }
 

@@ -29,6 +29,7 @@
 
 #include "common/context.hpp"
 #include "common/error.hpp"
+#include "common/layout.hpp"
 #include "common/probe.hpp"
 #include "common/render.hpp"
 #include "common/scene.hpp"
@@ -74,6 +75,8 @@ class QuadDistortion final : public ts::Scene {
            "that square as two triangles: each triangle's map is affine, so checker lines bend at the diagonal.\n"
            "Prints the bend measured from the render and the bend the math predicts.";
   }
+  std::vector<std::string> claim() const override { return {"kink_deg*"}; }
+
   void addOptions(ts::Options& o) override {
     o.addEnum("diagonal", &diagonal_, {kDiagNames[0], kDiagNames[1]},
               "which diagonal splits the square (the book: tl-br)", 'd');
@@ -244,11 +247,7 @@ void QuadDistortion::addTextureView(ts::Frame&, ts::Panel& p, Variant v, int tex
   p.batches.push_back(d);
 }
 
-static std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
+using ts::layout::fmt;
 
 ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& measured) const {
   ts::Frame f;
@@ -256,68 +255,89 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
   f.height = height;
   f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
   int checker = f.addTexture(this->checker());
-  int scale = std::max(1, std::min(3, std::min(width, height) / 300));
-  int line = int(ts::text::height(scale)) + 6 * scale;
-  glm::vec4 white{0.95f, 0.95f, 0.95f, 1.0f};
+  glm::vec4 white{0.95f, 0.95f, 0.95f, 1.0f}, amber{1.0f, 0.75f, 0.3f, 1.0f};
   glm::mat4 unit = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
   quadmap::Corners st = corners();
   Variant current{Diagonal(diagonal_), Interp(interp_)};
   const Kinks none, &kinks = measured.detailAs<Kinks>() ? *measured.detailAs<Kinks>() : none;
-  auto cornerLabels = [&](const ts::Rect& r, bool withValues) {
+  namespace L = ts::layout;
+  const float margin = 8;
+  const L::Box all{margin, margin, float(width) - margin, float(height) - margin};
+  // Corner labels beside each corner, in the cell's caption bands (left out
+  // where two would not fit side by side).
+  auto cornerLabels = [&](const L::Cell& c, bool withValues) {
     const auto& P = quadmap::squareCorners();
+    const ts::Rect& r = c.picture;
+    int scale = c.scale;
+    while (scale > 1 && 2 * ts::text::width("<0.75,0.75>", scale) + 8 > r.w) --scale;
     for (int i = 0; i < 4; ++i) {
-      glm::dvec2 c = P[size_t(i)];
-      std::string s = withValues ? "<" + fmt("%g", st[size_t(i)].x) + "," + fmt("%g", st[size_t(i)].y) + ">"
-                                 : "<" + fmt("%g", c.x) + "," + fmt("%g", c.y) + ">";
-      float x = float(r.x) + float(c.x) * float(r.w);
-      float y = c.y > 0.5 ? float(r.y) - float(line) : float(r.y + r.h) + 4.0f * float(scale);
-      f.labels.push_back({x, y, s, white, scale, c.x > 0.5 ? ts::Align::Right : ts::Align::Left});
+      glm::dvec2 q = P[size_t(i)];
+      std::string text = withValues ? "<" + fmt("%g", st[size_t(i)].x) + "," + fmt("%g", st[size_t(i)].y) + ">"
+                                    : "<" + fmt("%g", q.x) + "," + fmt("%g", q.y) + ">";
+      float x = float(r.x) + float(q.x) * float(r.w);
+      bool top = q.y > 0.5;
+      L::Box band = top ? L::Box{c.above.x0, c.above.y1 - L::lineHeight(scale), c.above.x1, c.above.y1}
+                        : L::Box{c.below.x0, c.below.y0, c.below.x1, c.below.y0 + L::lineHeight(scale)};
+      L::placeFree(f, {x, band.y0 + float(2 * scale), text, white, scale, q.x > 0.5 ? ts::Align::Right : ts::Align::Left},
+                   band);
     }
   };
   if (view_ == 0) {
-    // The book's layout: texture square left, rendered square right.
-    int side = std::max(1, std::min(width / 2 - 2 * line, height - 4 * line));
-    int top = (height - side) / 2;
+    // The book's layout: texture square left, rendered square right (or
+    // one above the other in a tall window), the kink underneath.
+    std::string name = variantName(current);
+    auto m = kinks.find(name);
+    std::string kink = m == kinks.end() ? std::string()
+                                        : "kink along the diagonal: " + fmt("%.1f", m->second) + " deg (predicted " +
+                                              fmt("%.1f", predicted(current)) + ")";
+    L::FlowSpec spec;
+    spec.n = 2;
+    spec.linesAbove = 2;  // title, top corners
+    spec.linesBelow = kink.empty() ? 1 : 2;  // bottom corners (and the kink, under the last)
+    spec.gap = 16;
+    std::vector<L::Cell> cells = L::flow(all, spec);
     ts::Panel left, right;
     left.id = "texture_space";
-    left.viewport = {width / 4 - side / 2, top, side, side};
+    left.viewport = cells[0].picture;
     left.projection = unit;
     addTextureView(f, left, current, checker);
     right.id = "screen_space";
-    right.viewport = {3 * width / 4 - side / 2, top, side, side};
+    right.viewport = cells[1].picture;
     right.projection = unit;
     addSquare(f, right, current, checker, edges_);
     f.panels = {left, right};
-    cornerLabels(left.viewport, false);
-    cornerLabels(right.viewport, true);
-    f.labels.push_back({float(width / 4), float(line / 2), "texture space: the region", white, scale, ts::Align::Center});
-    std::string name = variantName(current);
-    f.labels.push_back({float(3 * width / 4), float(line / 2), "screen space: " + name, white, scale, ts::Align::Center});
-    auto m = kinks.find(name);
-    if (m != kinks.end())
-      f.labels.push_back({float(width / 2), float(height - line), "kink along the diagonal: " + fmt("%.1f", m->second) +
-                              " deg (predicted " + fmt("%.1f", predicted(current)) + ")", {1.0f, 0.75f, 0.3f, 1.0f},
-                          scale, ts::Align::Center});
+    const std::string titles[2] = {"texture space: the region", "screen space: " + name};
+    for (int k = 0; k < 2; ++k) {
+      const L::Cell& c = cells[size_t(k)];
+      L::caption(f, {c.above.x0, c.above.y0, c.above.x1, c.above.y1 - L::lineHeight(c.scale)}, titles[k], white,
+                 c.scale);
+      cornerLabels(c, k == 1);
+    }
+    // The kink: under the pictures, across the window.
+    const L::Cell& c = cells[1];
+    float y = std::max(cells[0].below.y1, cells[1].below.y1) - L::lineHeight(c.scale);
+    L::caption(f, {all.x0, y, all.x1, all.y1}, kink, amber, c.scale);
   } else {
     // The four variants: both diagonals, then the two fixes.
     const Variant vs[4] = {{Diagonal::TopLeftBottomRight, kAffine}, {Diagonal::BottomLeftTopRight, kAffine},
                            {Diagonal(diagonal_), kBilinear}, {Diagonal(diagonal_), kProjective}};
-    int side = std::max(1, std::min(width / 4 - line, height - 5 * line));
-    int top = std::max(2 * line, (height - side) / 2);
+    L::FlowSpec spec;
+    spec.n = 4;
+    spec.gap = 16;
+    spec.minCellWidth = ts::text::width("kink 18.4 deg", 1) + 4;
+    std::vector<L::Cell> cells = L::flow(all, spec);
     for (int k = 0; k < 4; ++k) {
+      const L::Cell& c = cells[size_t(k)];
       ts::Panel p;
       p.id = "variant_" + std::to_string(k);
-      p.viewport = {(2 * k + 1) * width / 8 - side / 2, top, side, side};
+      p.viewport = c.picture;
       p.projection = unit;
       addSquare(f, p, vs[k], checker, edges_ && vs[k].interp == kAffine);
       f.panels.push_back(p);
       std::string name = variantName(vs[k]);
-      float cx = float((2 * k + 1) * width / 8);
-      f.labels.push_back({cx, float(top - line - line / 2), name, white, scale, ts::Align::Center});
+      L::caption(f, c.above, name, white, c.scale);
       auto m = kinks.find(name);
-      if (m != kinks.end())
-        f.labels.push_back({cx, float(top + side + line / 2), "kink " + fmt("%.1f", m->second) + " deg",
-                            {1.0f, 0.75f, 0.3f, 1.0f}, scale, ts::Align::Center});
+      if (m != kinks.end()) L::caption(f, c.below, "kink " + fmt("%.1f", m->second) + " deg", amber, c.scale);
     }
   }
   return f;

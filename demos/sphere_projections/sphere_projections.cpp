@@ -27,6 +27,8 @@
 #include <map>
 
 #include "common/render.hpp"
+#include "common/layout.hpp"
+#include "common/plot.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
@@ -53,11 +55,7 @@ const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kGrey{0.4f, 0.4f, 0.45f, 1.0f
 constexpr int kPanel = 384, kTexels = 2048;
 constexpr double kPinchRadiusPx = 3.0;
 
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
+using ts::layout::fmt;
 std::string bandName(int b) {
   return "[" + fmt("%.0f", spheremap::bandLo(b)) + ":" + fmt("%.0f", spheremap::bandHi(b)) + "]";
 }
@@ -72,6 +70,8 @@ class SphereProjections final : public ts::Scene {
            "latitude (whole-sphere mean 1): analytic, from the mesh, and measured from a texel-index render.\n"
            "VI.3 is 1 in every band (area-preserving); VI.2 grows like 1/cos(phi) toward the poles. Both pinch.";
   }
+  std::vector<std::string> claim() const override { return {"vi2[-10:10]_render", "vi2[70:90]_render", "vi3_spread"}; }
+
   void addOptions(ts::Options& o) override {
     o.addEnum("mapping", &shown_, {"both", "vi2", "vi3"}, "both spheres, or Eq. VI.2 or Eq. VI.3 alone", 'm');
     o.addEnum("view", &view_, {"spheres", "plot"}, "the spheres, or area ratio against latitude", 'v');
@@ -118,8 +118,8 @@ class SphereProjections final : public ts::Scene {
     auto it = all->find({int(m), resolution_});
     return it == all->end() ? nullptr : &it->second;
   }
-  void addSphere(ts::Frame& f, const ts::Rect& vp, Mapping m, int texture, int scale, int line, const Result* res) const;
-  void addPlot(ts::Frame& f, int width, int height, int scale, int line, const ts::Measurements& measured) const;
+  void addSphere(ts::Frame& f, const ts::layout::Cell& cell, Mapping m, int texture, const Result* res) const;
+  void addPlot(ts::Frame& f, int width, int height, const ts::Measurements& measured) const;
 
   int shown_ = kBoth, view_ = 0, rotation_ = 20, tilt_ = 20, resolution_ = 4;
   ts::UserTexture picture_;  // --texture FILE
@@ -130,8 +130,9 @@ class SphereProjections final : public ts::Scene {
 // ---------------------------------------------------------------------------
 // The picture.
 
-void SphereProjections::addSphere(ts::Frame& f, const ts::Rect& vp, Mapping m, int texture, int scale,
-                                  int line, const Result* res) const {
+void SphereProjections::addSphere(ts::Frame& f, const ts::layout::Cell& cell, Mapping m, int texture,
+                                  const Result* res) const {
+  const ts::Rect& vp = cell.picture;
   ts::Panel p;
   p.id = std::string("sphere_") + kKey[int(m)];
   p.viewport = vp;
@@ -149,23 +150,27 @@ void SphereProjections::addSphere(ts::Frame& f, const ts::Rect& vp, Mapping m, i
   p.batches.push_back(ts::litMeshBatch(spheremap::sphereMesh(m, resolution_), texture, toLight));
   f.panels.push_back(p);
 
-  float cx = float(vp.x + vp.w / 2);
-  f.labels.push_back({cx, float(vp.y - 2 * line), kEq[int(m)], kColour[int(m)], scale, ts::Align::Center});
-  f.labels.push_back({cx, float(vp.y - line), kFormula[int(m)], kWhite, scale, ts::Align::Center});
-  if (res) {
-    f.labels.push_back({cx, float(vp.y + vp.h + line / 3),
-                        "texture/surface area: equator band " + fmt("%.2f", res->render[kBands / 2]) + ", pole bands " +
-                            fmt("%.2f", res->render[kBands - 1]),
-                        kWhite, scale, ts::Align::Center});
-  }
+  // The equation and its formula above, the measured ratios below.
+  namespace L = ts::layout;
+  const L::Box& a = cell.above;
+  float mid = a.y0 + a.h() / 2;
+  L::caption(f, {a.x0, a.y0, a.x1, mid}, kEq[int(m)], kColour[int(m)], cell.scale);
+  L::caption(f, {a.x0, mid, a.x1, a.y1}, kFormula[int(m)], kWhite, cell.scale);
+  if (res)
+    L::caption(f, cell.below,
+               "texture/surface area: equator band " + fmt("%.2f", res->render[kBands / 2]) + ", pole bands " +
+                   fmt("%.2f", res->render[kBands - 1]),
+               kWhite, cell.scale);
 }
 
-void SphereProjections::addPlot(ts::Frame& f, int width, int height, int scale, int line,
-                                const ts::Measurements& measured) const {
+void SphereProjections::addPlot(ts::Frame& f, int width, int height, const ts::Measurements& measured) const {
+  namespace L = ts::layout;
+  const int scale = L::scaleFor({0, 0, width * 2 / 5, height * 2 / 5});
+  const int line = int(L::lineHeight(scale));
   // Plot area: latitude -90..90 across, ratio 0..kTop up.  The VI.2 curve
   // leaves the top near the poles (it is 1/cos φ); the viewport clips it.
   const double kTop = 4.5;
-  int left = 6 * line, right = 2 * line, top = 4 * line, bottom = 3 * line;
+  int left = 3 * line, right = line, top = 4 * line, bottom = 3 * line;
   ts::Panel p;
   p.id = "plot";
   p.viewport = {left, top, std::max(1, width - left - right), std::max(1, height - top - bottom)};
@@ -208,22 +213,23 @@ void SphereProjections::addPlot(ts::Frame& f, int width, int height, int scale, 
       p.batches.push_back(dots);
       legend += ", measured (bars): max/min " + fmt("%.2f", res.spread);
     }
-    f.labels.push_back({float(left), float(line / 2 + row * line), legend, c, scale, ts::Align::Left});
+    L::caption(f, {float(left), float(line / 2 + row * line), float(width - right), float(line / 2 + (row + 1) * line)},
+               legend, c, scale, ts::Align::Left);
     ++row;
   }
   f.panels.push_back(p);
   // Axes' numbers, in frame pixels.
   const ts::Rect& vp = f.panels.back().viewport;
-  for (int y = 0; y <= int(kTop); ++y)
-    f.labels.push_back({float(vp.x - line / 2), float(vp.y + vp.h - y * vp.h / kTop - line / 2.0), fmt("%.0f", y),
-                        kWhite, scale, ts::Align::Right});
-  for (int b = 0; b <= kBands; ++b)
-    f.labels.push_back({float(vp.x + b * vp.w / kBands), float(vp.y + vp.h + line / 3),
-                        fmt("%.0f", spheremap::bandLo(0) + spheremap::kBandDeg * b), kWhite, scale, ts::Align::Center});
-  f.labels.push_back({float(vp.x + vp.w / 2), float(vp.y + vp.h + line + line / 2), "latitude phi (degrees)", kWhite,
-                      scale, ts::Align::Center});
-  f.labels.push_back({float(vp.x), float(vp.y - line - line / 4), "texture area / surface area (whole sphere = 1)",
-                      kWhite, scale, ts::Align::Left});
+  std::vector<ts::plot::Tick> xt, yt;
+  for (int b = 0; b <= kBands; ++b) {
+    double x = spheremap::bandLo(0) + spheremap::kBandDeg * b;
+    xt.push_back({x, fmt("%.0f", x)});
+  }
+  for (int y = 0; y <= int(kTop); ++y) yt.push_back({double(y), fmt("%.0f", y)});
+  ts::plot::tickLabels(f, vp, {0, 0, width, height}, -90, 90, 0, kTop, xt, yt, kWhite, scale);
+  L::caption(f, {0, float(vp.y + vp.h + line + 2), float(width), float(height)}, "latitude phi (degrees)", kWhite, scale);
+  L::caption(f, {float(vp.x), float(vp.y - line - line / 4), float(width - 2), float(vp.y - 1)},
+             "texture area / surface area (whole sphere = 1)", kWhite, scale, ts::Align::Left);
 }
 
 ts::Frame SphereProjections::build(int width, int height, const ts::Measurements& measured) const {
@@ -231,10 +237,8 @@ ts::Frame SphereProjections::build(int width, int height, const ts::Measurements
   f.width = width;
   f.height = height;
   f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
-  int scale = std::max(1, std::min(3, std::min(width, height) / 300));
-  int line = int(ts::text::height(scale)) + 6 * scale;
   if (view_ == 1) {
-    addPlot(f, width, height, scale, line, measured);
+    addPlot(f, width, height, measured);
     return f;
   }
   // 16 x 16 checks: 22.5° of θ per check around, 11.25° of φ (VI.2) per
@@ -247,11 +251,13 @@ ts::Frame SphereProjections::build(int width, int height, const ts::Measurements
   int tex = f.addTexture(picture_.orDefault(checker));
   std::vector<Mapping> ms = mappings();
   int n = int(ms.size());
-  int side = std::max(1, std::min(width / n - 2 * line, height - 4 * line));
-  int top = std::max(2 * line, (height - side) / 2);
-  for (int k = 0; k < n; ++k)
-    addSphere(f, {(2 * k + 1) * width / (2 * n) - side / 2, top, side, side}, ms[size_t(k)], tex, scale, line,
-              found(measured, ms[size_t(k)]));
+  ts::layout::FlowSpec spec;
+  spec.n = n;
+  spec.linesAbove = 2;  // the equation, its formula
+  spec.linesBelow = 2;  // the measured ratios (wrapped when narrow)
+  spec.gap = 16;
+  std::vector<ts::layout::Cell> cells = ts::layout::flow({8, 8, float(width) - 8, float(height) - 8}, spec);
+  for (int k = 0; k < n; ++k) addSphere(f, cells[size_t(k)], ms[size_t(k)], tex, found(measured, ms[size_t(k)]));
   return f;
 }
 

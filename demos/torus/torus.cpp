@@ -35,6 +35,7 @@
 #include "common/error.hpp"
 #include "common/probe.hpp"
 #include "common/render.hpp"
+#include "common/layout.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
@@ -49,11 +50,7 @@ const char* const kMappingNames[] = {"book", "front"};
 const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kMarker{0.95f, 0.1f, 0.2f, 1.0f}, kMeasured{1.0f, 0.75f, 0.3f, 1.0f},
                 kMarkerBox{0.55f, 0.0f, 0.1f, 0.85f};
 
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
+using ts::layout::fmt;
 
 // Where the centre was found in one mapping (the measurement).
 struct Found {
@@ -74,6 +71,8 @@ class Torus final : public ts::Scene {
            "it to (0, 0, R + r) at the front.  Prints where the centre is found in a render whose pixels name their\n"
            "texels: its screen position, the 3D point there, and its distance from the answer.";
   }
+  std::vector<std::string> claim() const override { return {"centre_3d_z*", "centre_distance_to_answer*"}; }
+
   void addOptions(ts::Options& o) override {
     o.addEnum("mapping", &mapping_, {kMappingNames[0], kMappingNames[1]},
               "book: s = theta/360, t = phi/360; front: s = theta/360 + 1/2, t = phi/360 + 1/2 (Exercise VI.2)", 'c');
@@ -174,8 +173,12 @@ void Torus::addTexture(ts::Frame& f, const ts::Rect& vp, int tex, int scale) con
     const float a = 0.06f;
     p.batches.push_back(ts::lineSegments({{0.5f - a, 0.5f}, {0.5f + a, 0.5f}, {0.5f, 0.5f - a}, {0.5f, 0.5f + a}}, kMarker,
                                          3.0f, "centre_marker"));
-    f.labels.push_back({float(vp.x + vp.w / 2) + 8.0f * float(scale), float(vp.y + vp.h / 2) + 4.0f * float(scale),
-                        "(1/2, 1/2)", kWhite, scale, ts::Align::Left, kMarkerBox});
+    // Inside its panel, at the largest scale that fits (left out if none does).
+    for (int sc = scale; sc >= 1; --sc)
+      if (ts::layout::placeFree(f, {float(vp.x + vp.w / 2) + 8.0f * float(sc), float(vp.y + vp.h / 2) + 4.0f * float(sc),
+                                    "(1/2, 1/2)", kWhite, sc, ts::Align::Left, kMarkerBox},
+                                ts::layout::box(vp)))
+        break;
   }
   f.panels.push_back(p);
 }
@@ -208,8 +211,11 @@ void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int s
     p.batches.push_back(cross);
     glm::vec2 q = ts::panelToPixels(p, p.projection * p.modelview * glm::vec4(glm::vec3(c), 1.0f));
     bool hidden = found && !found->visible;
-    f.labels.push_back({q.x + 10.0f * float(scale), q.y + 6.0f * float(scale),
-                        hidden ? "(1/2,1/2): hidden" : "(1/2,1/2)", kWhite, scale, ts::Align::Left, kMarkerBox});
+    for (int sc = scale; sc >= 1; --sc)
+      if (ts::layout::placeFree(f, {q.x + 10.0f * float(sc), q.y + 6.0f * float(sc),
+                                    hidden ? "(1/2,1/2): hidden" : "(1/2,1/2)", kWhite, sc, ts::Align::Left, kMarkerBox},
+                                ts::layout::box(vp)))
+        break;
   }
   f.panels.push_back(p);
 }
@@ -220,40 +226,42 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
   f.height = height;
   f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
   int tex = f.addTexture(picture());
-  int scale = std::max(1, std::min(3, std::min(width, height) / 300));
-  int line = int(ts::text::height(scale)) + 6 * scale;
   const std::vector<Mapping> shown =
       view_ == 0 ? std::vector<Mapping>{Mapping(mapping_)} : std::vector<Mapping>{Mapping::Book, Mapping::Front};
-  // Columns: the texture (narrower), then one square torus panel per mapping.
-  const int columns = 1 + int(shown.size());
-  int side = std::max(1, std::min(width / columns, height - 5 * line));
-  int texSide = std::max(1, std::min(side * 3 / 4, width - int(shown.size()) * side - 2 * line));
-  int texCol = width - int(shown.size()) * side;  // the texture gets what the tori leave
-  int top = 2 * line + std::max(0, (height - 5 * line - side) / 2);
-  addTexture(f, {texCol / 2 - texSide / 2, top + (side - texSide) / 2, texSide, texSide}, tex, scale);
-  f.labels.push_back({float(texCol / 2), float(line / 2), "texture", kWhite, scale, ts::Align::Center});
+  // The texture, then one square torus panel per mapping, in a row (or a
+  // column in a tall window): each with its mapping and the answer above,
+  // the measurement below.
+  namespace L = ts::layout;
+  L::FlowSpec spec;
+  spec.n = 1 + int(shown.size());
+  spec.linesAbove = 2;
+  spec.linesBelow = 1;
+  spec.gap = 12;
+  std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
+  const L::Cell& tc = cells[0];
+  const int texSide = std::max(1, tc.picture.w * 3 / 4);  // the texture a little smaller than the tori
+  addTexture(f, {tc.picture.x + (tc.picture.w - texSide) / 2, tc.picture.y + (tc.picture.h - texSide) / 2, texSide, texSide},
+             tex, tc.scale);
+  L::caption(f, {tc.above.x0, tc.above.y0, tc.above.x1, tc.above.y0 + tc.above.h() / 2}, "texture", kWhite, tc.scale);
   for (size_t k = 0; k < shown.size(); ++k) {
     const Mapping m = shown[k];
     const torusmap::Params tp = params(m);
-    int x0 = texCol + int(k) * side;
+    const L::Cell& c = cells[k + 1];
     const Founds* founds = measured.detailAs<Founds>();
     const Found* found = founds && founds->count(int(m)) ? &founds->at(int(m)) : nullptr;
-    addTorus(f, {x0, top, side, side}, m, tex, scale, found);
-    float cx = float(x0 + side / 2);
-    f.labels.push_back({cx, float(line / 2),
-                        m == Mapping::Book ? "s=theta/360, t=phi/360" : "s=theta/360+1/2, t=phi/360+1/2",
-                        kWhite, scale, ts::Align::Center});
+    addTorus(f, c.picture, m, tex, c.scale, found);
+    const float mid = c.above.y0 + c.above.h() / 2;
+    L::caption(f, {c.above.x0, c.above.y0, c.above.x1, mid},
+               m == Mapping::Book ? "s=theta/360, t=phi/360" : "s=theta/360+1/2, t=phi/360+1/2", kWhite, c.scale);
     glm::dvec3 answer = torusmap::centrePoint(tp);
-    f.labels.push_back({cx, float(line / 2 + line),
-                        "centre at (0, 0, " + fmt("%.2f", answer.z) + ")" +
-                            (m == Mapping::Book ? " = -(R - r)" : " = R + r"),
-                        kWhite, scale, ts::Align::Center});
+    L::caption(f, {c.above.x0, mid, c.above.x1, c.above.y1},
+               "centre at (0, 0, " + fmt("%.2f", answer.z) + ")" + (m == Mapping::Book ? " = -(R - r)" : " = R + r"),
+               kWhite, c.scale);
     if (found)
-      f.labels.push_back({cx, float(height - line - line / 4),
-                          found->visible ? "measured: " + fmt("%.3f", glm::length(found->point - answer)) +
-                                                   " from the answer"
-                                             : "measured: not visible from here",
-                          kMeasured, scale, ts::Align::Center});
+      L::caption(f, c.below,
+                 found->visible ? "measured: " + fmt("%.3f", glm::length(found->point - answer)) + " from the answer"
+                                : "measured: not visible from here",
+                 kMeasured, c.scale);
   }
   return f;
 }

@@ -38,11 +38,7 @@ constexpr double kSpanTol = 2.0 / kN;    // see the header comment
 using ts::test::Demo;
 using ts::test::value;
 
-const ts::Panel& panelOf(const ts::Frame& f, const std::string& id) {
-  const ts::Panel* p = f.panel(id);
-  if (!p) throw std::runtime_error("frame has no panel " + id);
-  return *p;
-}
+using ts::test::panelOf;
 
 // The frame as the figure shows it, but every textured triangle batch reads
 // the texel-index texture (GL_NEAREST, GL_REPEAT, replace) and lines,

@@ -529,11 +529,7 @@ TEST(VI7Measure, ReferenceIsFarMoreAccurateThanTheModes) {
 
 // ------------------------------------------------------------ the figure
 
-const ts::Panel& panelOf(const ts::Frame& f, const std::string& id) {
-  const ts::Panel* p = f.panel(id);
-  if (!p) throw std::runtime_error("frame has no panel " + id);
-  return *p;
-}
+using ts::test::panelOf;
 
 // Claim (the figure vi7_jitter): its five images are the measured images at
 // 1:1 — every pixel of each 288x192 panel is the texel the demo computed —

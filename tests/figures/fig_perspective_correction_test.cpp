@@ -42,11 +42,7 @@ int tol() { return ts::probe::tolerance(8); }
 using ts::test::Demo;
 using ts::test::value;
 
-const ts::Panel& panelOf(const ts::Frame& f, const std::string& id) {
-  const ts::Panel* p = f.panel(id);
-  if (!p) throw std::runtime_error("frame has no panel " + id);
-  return *p;
-}
+using ts::test::panelOf;
 
 glm::dvec2 ndcOf(const ts::Rect& vp, int x, int y) {
   return {2.0 * (x + 0.5 - vp.x) / vp.w - 1.0, 1.0 - 2.0 * (y + 0.5 - vp.y) / vp.h};

@@ -41,11 +41,7 @@ constexpr int kN = 2048;
 
 using ts::test::Demo;
 using ts::test::value;
-const ts::Panel& panelOf(const ts::Frame& f, const std::string& id) {
-  const ts::Panel* p = f.panel(id);
-  if (!p) throw std::runtime_error("frame has no panel " + id);
-  return *p;
-}
+using ts::test::panelOf;
 torusmap::Params book(Mapping m) {
   torusmap::Params p;  // the demo's defaults: R = 1, r = 0.4
   p.mapping = m;

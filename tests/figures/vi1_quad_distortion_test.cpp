@@ -93,11 +93,7 @@ ts::probe::Result probePanel(const ts::Image& img, const ts::Rect& vp, const Map
   return r;
 }
 
-const ts::Panel& panelOf(const ts::Frame& f, const std::string& id) {
-  const ts::Panel* p = f.panel(id);
-  if (!p) throw std::runtime_error("frame has no panel " + id);
-  return *p;
-}
+using ts::test::panelOf;
 
 // Renders the book view (1024x512, the demo's default size) in one state and
 // probes its screen-space panel against `map`.

@@ -54,6 +54,13 @@ struct Demo {
   Renderer& drawWith() { return own_ ? *own_ : renderer(); }
 };
 
+// The panel `id` of a frame; throws (a test error naming it) when absent.
+inline const Panel& panelOf(const Frame& f, const std::string& id) {
+  const Panel* p = f.panel(id);
+  if (!p) throw std::runtime_error("frame has no panel " + id);
+  return *p;
+}
+
 // The value of the measurement `name`; a test failure (and NaN) when absent.
 inline double value(const Measurements& m, const std::string& name) {
   for (const auto& x : m)

@@ -4,7 +4,9 @@
 // by linking their scene, see CMakeLists.txt) and under a fresh Xvfb:
 //   <id>.window_matches_png       the window opens, draws 3 frames, exits 0
 //                                 quickly, prints the initial state line, and
-//                                 its screenshot matches the --png render.
+//                                 left of its side panel its screenshot
+//                                 matches the --png render at the figure's
+//                                 width (common/side_panel.hpp).
 //   <id>.key_<char>_<option>      for every key of every option (Item::key and
 //                                 Item::keyDown): --keys <char> changes the
 //                                 state the way Options::handleKey does on a
@@ -55,6 +57,7 @@
 
 #include "common/error.hpp"
 #include "common/gl_pane.hpp"
+#include "common/side_panel.hpp"
 #include "common/window.hpp"
 #include "common/image.hpp"
 #include "common/options.hpp"
@@ -415,6 +418,9 @@ void windowVsPng(const std::string& id, const std::string& testName, const std::
   std::remove(W.c_str());
   std::remove(P.c_str());
   std::string size = std::to_string(gWidth) + "x" + std::to_string(gHeight);
+  // The side panel is open: the figure takes the window left of it.
+  int figureW = ts::splitWindow(gWidth, true, false).figureW;
+  std::string figureSize = std::to_string(figureW) + "x" + std::to_string(gHeight);
 
   Proc win, png;
   win.argv = {"xvfb-run", "-a", "-s", kXvfbScreen, prog, "--size", size, "--frames", std::to_string(kFrames)};
@@ -424,7 +430,7 @@ void windowVsPng(const std::string& id, const std::string& testName, const std::
   win.argv.insert(win.argv.end(), {"--screenshot", W});
   win.outPath = dir + "/window.stdout";
   win.errPath = dir + "/window.stderr";
-  png.argv = {prog, "--size", size, "--png", P};
+  png.argv = {prog, "--size", figureSize, "--png", P};
   if (backend && *backend) png.argv.insert(png.argv.end(), {"--backend", backend});
   for (const auto& f : flagsFor(id, expected)) png.argv.push_back(f);
   png.outPath = dir + "/png.stdout";
@@ -470,12 +476,14 @@ void windowVsPng(const std::string& id, const std::string& testName, const std::
   } catch (const std::exception& e) {
     FAIL() << "no --png render: " << e.what() << "\n" << png.describe();
   }
-  ASSERT_EQ(p.width, gWidth);
+  ASSERT_EQ(p.width, figureW);
   ASSERT_EQ(p.height, gHeight);
-  ASSERT_EQ(w.width, p.width) << "the window's framebuffer is not the requested size (a window manager?)";
+  ASSERT_EQ(w.width, gWidth) << "the window's framebuffer is not the requested size (a window manager?)";
   ASSERT_EQ(w.height, p.height) << "the window's framebuffer is not the requested size (a window manager?)";
-  ts::Image picture;
-  Diff d = compare(w, p, &picture);
+  ts::Image left(figureW, gHeight), picture;  // the figure's part of the window
+  for (int y = 0; y < gHeight; ++y)
+    for (int x = 0; x < figureW; ++x) left.set(x, y, w.at(x, y));
+  Diff d = compare(left, p, &picture);
   double frac = double(d.overSmall) / double(d.pixels);
   std::printf("[ measured ] %s/%s: window %.2f s, png %.2f s; max channel diff %d at (%d,%d); %ld px differ at all, "
               "%ld px (%.4f%%) by more than %d, %ld with no match within one pixel; max alpha diff %d\n",
@@ -521,7 +529,7 @@ void paneBesideFigure(const std::string& id, const std::string& keys, const ts::
   std::string prog = binDir() + "/" + id, W = dir + "/window.png", P = dir + "/png.png";
   std::remove(W.c_str());
   std::remove(P.c_str());
-  int paneW = ts::glPaneWidth(gWidth), figureW = gWidth - paneW;
+  int figureW = ts::splitWindow(gWidth, true, true).figureW;  // side panel and GL pane open
   Proc win, png;
   win.argv = {"xvfb-run", "-a", "-s", kXvfbScreen, prog, "--size", std::to_string(gWidth) + "x" + std::to_string(gHeight),
               "--frames", std::to_string(kFrames), "--keys", keys, "--screenshot", W};

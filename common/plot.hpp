@@ -1,7 +1,9 @@
-// demos/perspective_correction/plot.hpp — a small x-y plot as Frame data:
-// one panel whose projection is the data's own coordinates, axes, grid and
-// series as line batches, tick and axis labels as ts::Label.  Candidate for
-// common/ once a second figure plots a measurement.
+// common/plot.hpp — a small x-y plot as Frame data, part of the layout kit
+// (common/layout.hpp): one panel whose projection is the data's own
+// coordinates, axes, grid and series as line batches, tick and axis labels
+// as ts::Label.  Titles and axis names are fitted to their bands (shrunk,
+// wrapped, cut); ticks, tags, notes and the legend that would overlap
+// another label or leave the plot are left out.
 #pragma once
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -12,9 +14,10 @@
 #include <vector>
 
 #include "common/frame.hpp"
+#include "common/layout.hpp"
 #include "common/text.hpp"
 
-namespace plot {
+namespace ts::plot {
 struct Point {
   double x = 0, y = 0;
   double tag = 0;  // shown beside measured points (here: the tilt)
@@ -32,6 +35,32 @@ struct Data {
   };
   std::vector<Note> notes;  // text beside a data point
 };
+
+// A tick: where on its axis (data units) and what it says.
+struct Tick {
+  double at = 0;
+  std::string text;
+};
+// The tick labels of a plot panel `vp` whose data range is [x0, x1] x [y0, y1]:
+// the x ticks under it, the y ticks left of it (right-aligned, centred on
+// their value), all inside `area`; a tick that would overlap another label
+// is left out.  The demos' plots share it (perspective_correction,
+// sphere_projections, mipmap_popping, jitter).
+inline void tickLabels(ts::Frame& f, const ts::Rect& vp, const ts::Rect& area, double x0, double x1, double y0, double y1,
+                       const std::vector<Tick>& xs, const std::vector<Tick>& ys, glm::vec4 color, int scale = 1) {
+  namespace L = ts::layout;
+  const float h = ts::text::height(scale), gap = 4.0f * float(scale);
+  const L::Box under{float(area.x), float(vp.y + vp.h + 1), float(area.x + area.w), float(vp.y + vp.h) + gap + h + 2},
+      leftOf{float(area.x), float(vp.y) - h, float(vp.x - 1), float(vp.y + vp.h) + h / 2 + 1};
+  for (const Tick& t : xs)
+    L::placeFree(f, {float(vp.x + (t.at - x0) / (x1 - x0) * vp.w), float(vp.y + vp.h) + gap, t.text, color, scale,
+                     ts::Align::Center},
+                 under);
+  for (const Tick& t : ys)
+    L::placeFree(f, {float(vp.x) - gap - 2, float(vp.y + (1 - (t.at - y0) / (y1 - y0)) * vp.h) - h / 2, t.text, color, scale,
+                     ts::Align::Right},
+                 leftOf);
+}
 
 // 1, 2 or 5 times a power of ten, about range/6.
 inline double niceStep(double range) {
@@ -106,25 +135,31 @@ inline void draw(ts::Frame& f, const Data& d, ts::Rect area) {
                                    1.0f, "axes"));
   f.panels.push_back(p);
 
-  // Labels: title, axis names, ticks, tags, legend.
-  f.labels.push_back({float(area.x + area.w / 2), float(area.y + 6), d.title, white, 1, ts::Align::Center});
-  f.labels.push_back({float(vp.x), float(vp.y - line - 4), d.yLabel, axis, 1, ts::Align::Left});
-  f.labels.push_back({float(vp.x + vp.w / 2), float(vp.y + vp.h + line + 6), d.xLabel, axis, 1, ts::Align::Center});
-  for (double x = 0; x <= xmax + 1e-9; x += xs)
-    f.labels.push_back({px(x, 0).x, float(vp.y + vp.h + 5), num("%g", x), axis, 1, ts::Align::Center});
-  for (double y = 0; y <= ymax + 1e-9; y += ys)
-    f.labels.push_back({float(vp.x - 6), px(0, y).y - 6, num("%g", y), axis, 1, ts::Align::Right});
-  for (const Point& q : d.measured)
-    f.labels.push_back({px(q.x, q.y).x + 8, px(q.x, q.y).y + 4, num(d.tagFormat.c_str(), q.tag), measuredC, 1,
-                        ts::Align::Left});
-  for (const auto& n : d.notes)
-    f.labels.push_back({px(n.at.x, n.at.y).x + 40, px(n.at.x, n.at.y).y - 20, n.text, axis, 1, ts::Align::Left,
-                        background});  // boxed: it crosses the dashed line
-  f.labels.push_back({px(d.xMarker, ymax).x + 6, float(vp.y + 6), d.xMarkerLabel, axis, 1, ts::Align::Left});
+  // Labels, the essential first: title, axis names, ticks, legend; then the
+  // tags and notes where they fit.
+  namespace L = ts::layout;
+  const L::Box all{float(area.x), float(area.y), float(area.x + area.w), float(area.y + area.h)}, inPlot = L::box(vp);
+  L::caption(f, {all.x0 + 4, all.y0 + 4, all.x1 - 4, float(vp.y - line - 6)}, d.title, white, 1);
+  L::caption(f, {all.x0 + 4, float(vp.y - line - 4), all.x1 - 4, float(vp.y - 1)}, d.yLabel, axis, 1,
+             ts::Align::Left);
+  L::caption(f, {all.x0 + 4, float(vp.y + vp.h + line + 4), all.x1 - 4, all.y1 - 1}, d.xLabel, axis, 1);
+  std::vector<Tick> xt, yt;
+  for (double x = 0; x <= xmax + 1e-9; x += xs) xt.push_back({x, num("%g", x)});
+  for (double y = 0; y <= ymax + 1e-9; y += ys) yt.push_back({y, num("%g", y)});
+  tickLabels(f, vp, area, 0, xmax, 0, ymax, xt, yt, axis);
   const float lx = float(vp.x + vp.w - 12), ly = float(vp.y + vp.h - 4 * line);
-  f.labels.push_back({lx, ly, "x  measured (texel-index render), tagged by tilt", measuredC, 1, ts::Align::Right});
-  f.labels.push_back({lx, ly + line, "-  analytic (ray-plane vs screen barycentrics)", curveC, 1, ts::Align::Right});
-  f.labels.push_back({lx, ly + 2 * line, "o  current state (" + num(d.tagFormat.c_str(), d.current.tag) + ")", currentC,
-                      1, ts::Align::Right});
+  L::placeFree(f, {lx, ly, "x  measured (texel-index render), tagged by tilt", measuredC, 1, ts::Align::Right}, inPlot);
+  L::placeFree(f, {lx, ly + line, "-  analytic (ray-plane vs screen barycentrics)", curveC, 1, ts::Align::Right}, inPlot);
+  L::placeFree(f, {lx, ly + 2 * line, "o  current state (" + num(d.tagFormat.c_str(), d.current.tag) + ")", currentC, 1,
+                   ts::Align::Right},
+               inPlot);
+  L::placeFree(f, {px(d.xMarker, ymax).x + 6, float(vp.y + 6), d.xMarkerLabel, axis, 1, ts::Align::Left}, inPlot);
+  for (const Point& q : d.measured)
+    L::placeFree(f, {px(q.x, q.y).x + 8, px(q.x, q.y).y + 4, num(d.tagFormat.c_str(), q.tag), measuredC, 1,
+                     ts::Align::Left},
+                 inPlot);
+  for (const auto& n : d.notes)  // boxed: it crosses the dashed line
+    L::placeFree(f, {px(n.at.x, n.at.y).x + 40, px(n.at.x, n.at.y).y - 20, n.text, axis, 1, ts::Align::Left, background},
+                 inPlot);
 }
-}  // namespace plot
+}  // namespace ts::plot

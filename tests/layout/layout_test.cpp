@@ -1,0 +1,153 @@
+// tests/layout/layout_test.cpp — every demo's layout at every window size.
+//
+// Each registered demo is measured once in each of its states (the default,
+// every choice of its `view` option, every book figure's flags) and its
+// frame is built at seven sizes from 400x300 to 1080x1920 (wide, tall,
+// tiny).  From the frame's own boxes (each label's text extent at its
+// scale, common/layout.hpp's labelBox) it asserts:
+//   - no label leaves the window;
+//   - a label that touches a panel lies inside it (no caption half over a
+//     picture, none cut at a panel's edge);
+//   - no two labels overlap;
+//   - no panel leaves the window.
+// Nothing is rendered but the measurements: the test reads layouts.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "common/layout.hpp"
+#include "tests/support/scene_test.hpp"
+
+namespace {
+using ts::layout::Box;
+
+const std::vector<std::pair<int, int>> kSizes = {{400, 300},  {640, 480},   {700, 1000}, {1024, 768},
+                                                 {1280, 720}, {1920, 1080}, {1080, 1920}};
+
+// Flags that make a demo's measurement cheap without changing what its
+// layout shows (parallax_aniso: small measured renders, few reference rays).
+std::vector<std::string> cheap(const std::string& id) {
+  if (id == "parallax_aniso") return {"--res", "80", "--rays", "2", "--time", "0"};
+  return {};
+}
+
+// The demo's states: default, each choice of `view`, each figure's flags.
+std::vector<std::vector<std::string>> states(const std::string& id) {
+  std::vector<std::vector<std::string>> out = {{}};
+  ts::test::Demo d(id, {});
+  for (const auto& it : d.opts.items())
+    if (it.name == "view" && it.kind == ts::Options::Item::Enum)
+      for (const auto& c : it.choices)
+        if (c != "live") out.push_back({"--view", c});  // live: drawn every frame, at the window's size
+  for (const auto& f : d.scene->figures()) out.push_back(f.flags);
+  std::set<std::vector<std::string>> seen;
+  std::vector<std::vector<std::string>> unique;
+  for (auto& s : out) {
+    for (const auto& c : cheap(id)) s.push_back(c);
+    if (seen.insert(s).second) unique.push_back(s);
+  }
+  return unique;
+}
+
+std::string str(const Box& b) {
+  std::ostringstream o;
+  o << "[" << b.x0 << "," << b.y0 << " .. " << b.x1 << "," << b.y1 << "]";
+  return o.str();
+}
+
+// The problems of one frame, one line each.
+std::vector<std::string> problems(const ts::Frame& f) {
+  std::vector<std::string> out;
+  const Box window{0, 0, float(f.width), float(f.height)};
+  std::vector<Box> boxes;
+  for (const auto& l : f.labels) boxes.push_back(ts::layout::labelBox(l));
+  for (const auto& p : f.panels)
+    if (!ts::layout::box(p.viewport).inside(window))
+      out.push_back("panel '" + p.id + "' " + str(ts::layout::box(p.viewport)) + " leaves the window");
+  for (size_t i = 0; i < f.labels.size(); ++i) {
+    const auto& l = f.labels[i];
+    const Box& b = boxes[i];
+    if (l.text.empty() || b.empty()) continue;
+    if (!b.inside(window)) out.push_back("label \"" + l.text + "\" " + str(b) + " leaves the window");
+    for (const auto& p : f.panels) {
+      Box pb = ts::layout::box(p.viewport);
+      // Panels as large as the frame are backgrounds (a plot's canvas).
+      if (pb.w() >= f.width && pb.h() >= f.height) continue;
+      if (b.overlaps(pb) && !b.inside(pb))
+        out.push_back("label \"" + l.text + "\" " + str(b) + " crosses the edge of panel '" + p.id + "' " + str(pb));
+    }
+    for (size_t j = i + 1; j < f.labels.size(); ++j)
+      if (!f.labels[j].text.empty() && b.overlaps(boxes[j]))
+        out.push_back("labels \"" + l.text + "\" " + str(b) + " and \"" + f.labels[j].text + "\" " + str(boxes[j]) +
+                      " overlap");
+  }
+  return out;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : " ") + x;
+  return s;
+}
+
+class Layout : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Layout, NoLabelLeavesItsPanelOrTheWindowOrOverlapsAnother) {
+  const std::string id = GetParam();
+  int failures = 0;
+  for (const auto& flags : states(id)) {
+    ts::test::Demo d(id, flags);
+    d.measure();
+    for (auto [w, h] : kSizes) {
+      ts::Frame f = d.scene->build(w, h, d.measured);
+      ASSERT_EQ(f.width, w);
+      ASSERT_EQ(f.height, h);
+      std::vector<std::string> p = problems(f);
+      if (p.empty()) continue;
+      ++failures;
+      std::string all;
+      for (size_t k = 0; k < p.size() && k < 6; ++k) all += "\n    " + p[k];
+      if (p.size() > 6) all += "\n    ... and " + std::to_string(p.size() - 6) + " more";
+      ADD_FAILURE() << id << " " << joined(flags) << " at " << w << "x" << h << ":" << all;
+    }
+  }
+  std::printf("[ layout   ] %s: %d failing layouts\n", id.c_str(), failures);
+}
+
+// The registry is filled by static initialisers in other objects: read it
+// when the tests are listed, not when this file's statics are made.
+std::vector<std::string> ids() {
+  std::vector<std::string> out;
+  for (const auto& r : ts::sceneRegistry()) out.push_back(r.id);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+INSTANTIATE_TEST_SUITE_P(Demos, Layout, ::testing::ValuesIn(ids()),
+                         [](const ::testing::TestParamInfo<std::string>& i) { return i.param; });
+
+// A layout test that cannot fail is no test: the checks find a caption
+// pushed over a panel's edge, one outside the window, and two on top of
+// each other.
+TEST(LayoutCheck, FindsWhatItLooksFor) {
+  ts::Frame f;
+  f.width = 200;
+  f.height = 100;
+  ts::Panel p;
+  p.id = "picture";
+  p.viewport = {10, 10, 80, 80};
+  f.panels.push_back(p);
+  f.labels.push_back({20, 20, "inside", glm::vec4(1), 1, ts::Align::Left});
+  EXPECT_TRUE(problems(f).empty()) << joined(problems(f));
+  f.labels.push_back({85, 40, "across", glm::vec4(1), 1, ts::Align::Left});
+  EXPECT_EQ(problems(f).size(), 1u);
+  f.labels.back() = {195, 40, "outside", glm::vec4(1), 1, ts::Align::Left};
+  EXPECT_EQ(problems(f).size(), 1u);
+  f.labels.back() = {25, 25, "onto", glm::vec4(1), 1, ts::Align::Left};
+  EXPECT_EQ(problems(f).size(), 1u);
+}
+}  // namespace
