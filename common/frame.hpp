@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "gl.hpp"
+#include "gl_enums.hpp"  // GL names only: the plain data never calls GL
 #include "image.hpp"
 
 namespace ts {

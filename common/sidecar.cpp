@@ -1,42 +1,37 @@
 #include "sidecar.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <cstdio>
-#include <sstream>
+#include <cstdlib>
+#include <string>
 
 namespace ts {
 namespace {
-std::string num(double v) {
-  if (!std::isfinite(v)) return "null";
-  if (v == 0) return "0";  // no "-0"
+// Written with nlohmann-json (ordered: keys stay in the order below).
+using Json = nlohmann::ordered_json;
+
+// A float as the shortest decimal that reads back as the same float (9
+// significant digits), whole numbers without a fraction, non-finite as null.
+Json num(double v) {
+  if (!std::isfinite(v)) return nullptr;
+  if (v == std::floor(v) && std::abs(v) < 1e15) return Json(static_cast<long long>(v));  // no "-0", no "1.0"
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
-std::string quote(const std::string& s) {
-  std::string o = "\"";
-  for (unsigned char c : s) {
-    if (c == '"' || c == '\\') o += '\\', o += char(c);
-    else if (c == '\n') o += "\\n";
-    else if (c < 0x20) {
-      char b[8];
-      std::snprintf(b, sizeof b, "\\u%04x", c);
-      o += b;
-    } else o += char(c);
-  }
-  return o + "\"";
+  return Json(std::strtod(buf, nullptr));
 }
 template <int N>
-std::string vec(const glm::vec<N, float>& v) {
-  std::string o = "[";
-  for (int i = 0; i < N; ++i) o += (i ? "," : "") + num(v[i]);
-  return o + "]";
+Json vec(const glm::vec<N, float>& v) {
+  Json a = Json::array();
+  for (int i = 0; i < N; ++i) a.push_back(num(v[i]));
+  return a;
 }
-std::string mat(const glm::mat4& m) {  // column-major, as glLoadMatrixf takes it
-  std::string o = "[";
+Json mat(const glm::mat4& m) {  // column-major, as glLoadMatrixf takes it
+  Json a = Json::array();
   for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) o += ((c || r) ? "," : "") + num(m[c][r]);
-  return o + "]";
+    for (int r = 0; r < 4; ++r) a.push_back(num(m[c][r]));
+  return a;
 }
 const char* primName(Prim p) {
   switch (p) {
@@ -47,6 +42,52 @@ const char* primName(Prim p) {
     case Prim::Points: return "points";
   }
   return "?";
+}
+
+// The layout: one line per top-level key, and one per element of the long
+// lists (textures, panels, batches, vertices, labels); everything else on
+// one line, so a student can read the file and diff two of them.
+bool listPerLine(const std::string& key) {
+  return key == "textures" || key == "panels" || key == "batches" || key == "vertices" || key == "labels";
+}
+bool hasListPerLine(const Json& v) {
+  if (v.is_object())
+    for (const auto& [k, x] : v.items())
+      if ((listPerLine(k) && x.is_array() && !x.empty()) || hasListPerLine(x)) return true;
+  return false;
+}
+void emit(std::string& out, const Json& v, const std::string& indent) {
+  if (v.is_object()) {
+    bool multi = hasListPerLine(v);
+    out += '{';
+    bool first = true;
+    for (const auto& [k, x] : v.items()) {
+      if (!first) out += multi && (listPerLine(k) && x.is_array() && !x.empty()) ? ",\n" + indent + " " : ", ";
+      first = false;
+      out += Json(k).dump() + ": ";
+      if (listPerLine(k) && x.is_array() && !x.empty()) {
+        out += '[';
+        std::string inner = indent + "  ";
+        for (size_t i = 0; i < x.size(); ++i) {
+          out += (i ? ",\n" : "\n") + inner;
+          emit(out, x[i], inner);
+        }
+        out += ']';
+      } else {
+        emit(out, x, indent);
+      }
+    }
+    out += '}';
+  } else if (v.is_array()) {
+    out += '[';
+    for (size_t i = 0; i < v.size(); ++i) {
+      if (i) out += v[i].is_primitive() ? "," : ", ";
+      emit(out, v[i], indent);
+    }
+    out += ']';
+  } else {
+    out += v.dump();
+  }
 }
 }  // namespace
 
@@ -81,87 +122,112 @@ std::string glEnumName(GLenum e) {
 }
 
 std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
-  std::ostringstream o;
-  o << "{\n";
-  o << "  \"figure\": " << quote(info.figureId) << ",\n";
-  o << "  \"book_number\": " << quote(info.bookNumber) << ",\n";
-  o << "  \"caption\": " << quote(info.caption) << ",\n";
-  o << "  \"demo\": " << quote(info.demo) << ",\n";
-  o << "  \"command\": " << quote(info.command) << ",\n";
-  o << "  \"state\": {";
-  for (size_t i = 0; i < info.state.size(); ++i)
-    o << (i ? ", " : "") << quote(info.state[i].first) << ": " << quote(info.state[i].second);
-  o << "},\n";
-  o << "  \"measurements\": {";
-  for (size_t i = 0; i < info.measurements.size(); ++i)
-    o << (i ? ", " : "") << quote(info.measurements[i].name) << ": " << num(info.measurements[i].value);
-  o << "},\n";
-  o << "  \"conventions\": \"matrices column-major as glLoadMatrixf takes them; viewports in pixels from the "
-       "top-left of the image; texture row 0 is t = 0; vertex tex is (s,t,r,q)\",\n";
-  if (!info.renderer.empty()) o << "  \"renderer\": " << quote(info.renderer) << ",\n";
-  o << "  \"size\": [" << f.width << "," << f.height << "],\n";
-  o << "  \"fixed_state\": {\"blend_func\": [" << quote(glEnumName(FixedState::blendSrc)) << ", "
-    << quote(glEnumName(FixedState::blendDst)) << ", " << quote(glEnumName(FixedState::blendSrcAlpha)) << ", "
-    << quote(glEnumName(FixedState::blendDstAlpha)) << "], \"depth_func\": " << quote(glEnumName(FixedState::depthFunc))
-    << ", \"shade_model\": " << quote(glEnumName(FixedState::shadeModel))
-    << ", \"cull_face\": " << (FixedState::cullFace ? "true" : "false")
-    << ", \"lighting\": " << (FixedState::lighting ? "true" : "false") << "},\n";
-  o << "  \"clear_color\": " << vec(f.clearColor) << ",\n";
-  o << "  \"perspective_correction_hint\": " << quote(f.perspectiveHint == GL_FASTEST ? "GL_FASTEST" : f.perspectiveHint == GL_NICEST ? "GL_NICEST" : "GL_DONT_CARE") << ",\n";
-  o << "  \"textures\": [\n";
-  for (size_t i = 0; i < f.textures.size(); ++i) {
-    const TextureDesc& t = f.textures[i];
-    o << "    {\"name\": " << quote(t.name) << ", \"params\": {";
-    for (size_t k = 0; k < t.params.size(); ++k)
-      o << (k ? ", " : "") << quote(t.params[k].first) << ": " << quote(t.params[k].second);
-    o << "}, \"width\": " << (t.image ? t.image->width : 0) << ", \"height\": " << (t.image ? t.image->height : 0)
-      << ", \"mipmaps\": " << (t.mipmaps ? (t.mipLevels ? "\"explicit\"" : t.linearLightMips ? "\"box_linear_light\"" : "\"box_2x2\"") : "false")
-      << ", \"min_filter\": " << quote(glEnumName(t.minFilter)) << ", \"mag_filter\": " << quote(glEnumName(t.magFilter))
-      << ", \"wrap_s\": " << quote(glEnumName(t.wrapS)) << ", \"wrap_t\": " << quote(glEnumName(t.wrapT))
-      << ", \"border\": " << vec(t.border) << ", \"max_anisotropy\": " << num(t.maxAnisotropy)
-      << ", \"lod_bias\": " << num(t.lodBias) << "}" << (i + 1 < f.textures.size() ? "," : "") << "\n";
+  Json d;
+  d["figure"] = info.figureId;
+  d["book_number"] = info.bookNumber;
+  d["caption"] = info.caption;
+  d["demo"] = info.demo;
+  d["command"] = info.command;
+  d["state"] = Json::object();
+  for (const auto& [k, v] : info.state) d["state"][k] = v;
+  d["measurements"] = Json::object();
+  for (const Measurement& m : info.measurements) d["measurements"][m.name] = num(m.value);
+  d["conventions"] =
+      "matrices column-major as glLoadMatrixf takes them; viewports in pixels from the top-left of the image; "
+      "texture row 0 is t = 0; vertex tex is (s,t,r,q)";
+  if (!info.renderer.empty()) d["renderer"] = info.renderer;
+  d["size"] = {f.width, f.height};
+  d["fixed_state"] = {
+      {"blend_func", {glEnumName(FixedState::blendSrc), glEnumName(FixedState::blendDst),
+                      glEnumName(FixedState::blendSrcAlpha), glEnumName(FixedState::blendDstAlpha)}},
+      {"depth_func", glEnumName(FixedState::depthFunc)},
+      {"shade_model", glEnumName(FixedState::shadeModel)},
+      {"cull_face", FixedState::cullFace},
+      {"lighting", FixedState::lighting}};
+  d["clear_color"] = vec(f.clearColor);
+  d["perspective_correction_hint"] = f.perspectiveHint == GL_FASTEST  ? "GL_FASTEST"
+                                     : f.perspectiveHint == GL_NICEST ? "GL_NICEST"
+                                                                      : "GL_DONT_CARE";
+  Json textures = Json::array();
+  for (const TextureDesc& t : f.textures) {
+    Json params = Json::object();
+    for (const auto& [k, v] : t.params) params[k] = v;
+    Json mips = t.mipmaps ? Json(t.mipLevels ? "explicit" : t.linearLightMips ? "box_linear_light" : "box_2x2") : Json(false);
+    textures.push_back({{"name", t.name},
+                        {"params", params},
+                        {"width", t.image ? t.image->width : 0},
+                        {"height", t.image ? t.image->height : 0},
+                        {"mipmaps", mips},
+                        {"min_filter", glEnumName(t.minFilter)},
+                        {"mag_filter", glEnumName(t.magFilter)},
+                        {"wrap_s", glEnumName(t.wrapS)},
+                        {"wrap_t", glEnumName(t.wrapT)},
+                        {"border", vec(t.border)},
+                        {"max_anisotropy", num(t.maxAnisotropy)},
+                        {"lod_bias", num(t.lodBias)}});
   }
-  o << "  ],\n";
-  o << "  \"programs\": [";
-  for (size_t i = 0; i < f.programs.size(); ++i)
-    o << (i ? ", " : "") << "{\"name\": " << quote(f.programs[i].first) << ", \"source\": " << quote(f.programs[i].second.file)
-      << "}";
-  o << "],\n";
-  o << "  \"panels\": [\n";
-  for (size_t pi = 0; pi < f.panels.size(); ++pi) {
-    const Panel& p = f.panels[pi];
-    o << "    {\"id\": " << quote(p.id) << ", \"viewport\": [" << p.viewport.x << "," << p.viewport.y << ","
-      << p.viewport.w << "," << p.viewport.h << "], \"depth_test\": " << (p.depthTest ? "true" : "false")
-      << ", \"clear\": " << (p.clear ? "true" : "false") << ", \"clear_color\": " << vec(p.clearColor)
-      << ",\n     \"projection\": " << mat(p.projection) << ",\n     \"modelview\": " << mat(p.modelview)
-      << ",\n     \"batches\": [\n";
-    for (size_t bi = 0; bi < p.batches.size(); ++bi) {
-      const Batch& b = p.batches[bi];
-      o << "       {\"role\": " << quote(b.role) << ", \"primitive\": \"" << primName(b.prim)
-        << "\", \"texture\": " << b.texture << ", \"tex_env\": " << quote(glEnumName(b.texEnv))
-        << ", \"program\": " << quote(b.program) << ", \"uniforms\": {";
-      for (size_t u = 0; u < b.uniforms.size(); ++u)
-        o << (u ? ", " : "") << quote(b.uniforms[u].name) << ": " << vec(b.uniforms[u].value);
-      o << "}, \"line_width\": " << num(b.lineWidth) << ", \"point_size\": " << num(b.pointSize)
-        << ", \"blend\": " << (b.blend ? "true" : "false")
-        << ",\n        \"vertices\": [";
-      for (size_t v = 0; v < b.vertices.size(); ++v) {
-        const Vertex& x = b.vertices[v];
-        o << (v ? ",\n          " : "\n          ") << "{\"pos\": " << vec(x.pos) << ", \"tex\": " << vec(x.tex)
-          << ", \"color\": " << vec(x.color) << "}";
-      }
-      o << "]}" << (bi + 1 < p.batches.size() ? "," : "") << "\n";
+  d["textures"] = textures;
+  Json programs = Json::array();
+  for (const auto& [name, prog] : f.programs) programs.push_back({{"name", name}, {"source", prog.file}});
+  d["programs"] = programs;
+  Json panels = Json::array();
+  for (const Panel& p : f.panels) {
+    Json batches = Json::array();
+    for (const Batch& b : p.batches) {
+      Json uniforms = Json::object();
+      for (const Uniform& u : b.uniforms) uniforms[u.name] = vec(u.value);
+      Json vertices = Json::array();
+      for (const Vertex& x : b.vertices)
+        vertices.push_back({{"pos", vec(x.pos)}, {"tex", vec(x.tex)}, {"color", vec(x.color)}});
+      batches.push_back({{"role", b.role},
+                         {"primitive", primName(b.prim)},
+                         {"texture", b.texture},
+                         {"tex_env", glEnumName(b.texEnv)},
+                         {"program", b.program},
+                         {"uniforms", uniforms},
+                         {"line_width", num(b.lineWidth)},
+                         {"point_size", num(b.pointSize)},
+                         {"blend", b.blend},
+                         {"vertices", vertices}});
     }
-    o << "     ]}" << (pi + 1 < f.panels.size() ? "," : "") << "\n";
+    panels.push_back({{"id", p.id},
+                      {"viewport", {p.viewport.x, p.viewport.y, p.viewport.w, p.viewport.h}},
+                      {"depth_test", p.depthTest},
+                      {"clear", p.clear},
+                      {"clear_color", vec(p.clearColor)},
+                      {"projection", mat(p.projection)},
+                      {"modelview", mat(p.modelview)},
+                      {"batches", batches}});
   }
-  o << "  ],\n";
-  o << "  \"labels\": [";
-  for (size_t i = 0; i < f.labels.size(); ++i)
-    o << (i ? ",\n    " : "\n    ") << "{\"x\": " << num(f.labels[i].x) << ", \"y\": " << num(f.labels[i].y)
-      << ", \"text\": " << quote(f.labels[i].text) << ", \"scale\": " << f.labels[i].scale << ", \"align\": \""
-      << (f.labels[i].align == Align::Left ? "left" : f.labels[i].align == Align::Center ? "center" : "right")
-      << "\", \"color\": " << vec(f.labels[i].color) << ", \"background\": " << vec(f.labels[i].background) << "}";
-  o << "]\n}\n";
-  return o.str();
+  d["panels"] = panels;
+  Json labels = Json::array();
+  for (const Label& l : f.labels)
+    labels.push_back({{"x", num(l.x)},
+                      {"y", num(l.y)},
+                      {"text", l.text},
+                      {"scale", l.scale},
+                      {"align", l.align == Align::Left ? "left" : l.align == Align::Center ? "center" : "right"},
+                      {"color", vec(l.color)},
+                      {"background", vec(l.background)}});
+  d["labels"] = labels;
+
+  std::string out = "{";
+  bool first = true;
+  for (const auto& [k, v] : d.items()) {
+    out += first ? "\n  " : ",\n  ";
+    first = false;
+    out += Json(k).dump() + ": ";
+    if (listPerLine(k) && v.is_array() && !v.empty()) {
+      out += '[';
+      for (size_t i = 0; i < v.size(); ++i) {
+        out += i ? ",\n    " : "\n    ";
+        emit(out, v[i], "    ");
+      }
+      out += "\n  ]";
+    } else {
+      emit(out, v, "  ");
+    }
+  }
+  return out + "\n}\n";
 }
 }  // namespace ts

@@ -1,61 +1,76 @@
 #include "sidecar_reader.hpp"
 
+#include <nlohmann/json.hpp>
+
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
 #include "common/error.hpp"
 #include "common/textures.hpp"
-#include "json.hpp"
 
 namespace ref {
 namespace {
-using json::Value;
+// The sidecar read with nlohmann-json; the key order is kept (ordered_json),
+// so "state" comes back in the order the demo lists its options.
+using Json = nlohmann::ordered_json;
 
 [[noreturn]] void fail(const std::string& where, const std::string& what) {
   throw ts::Error("sidecar: " + where + ": " + what);
 }
 
-const Value& member(const Value& v, const std::string& key, const std::string& where) {
-  const Value* m = v.find(key);
+// Member lookup: nullptr if absent (or `v` is not an object).
+const Json* find(const Json& v, const std::string& key) {
+  if (!v.is_object()) return nullptr;
+  auto it = v.find(key);
+  return it == v.end() ? nullptr : &*it;
+}
+const Json& member(const Json& v, const std::string& key, const std::string& where) {
+  if (!v.is_object()) fail(where, std::string("expected an object, found ") + v.type_name());
+  const Json* m = find(v, key);
   if (!m) fail(where, "missing key '" + key + "'");
   return *m;
 }
-
-double number(const Value& v, const std::string& where) {
-  try {
-    return v.asNumber();
-  } catch (const ts::Error& e) {
-    fail(where, e.what());
-  }
+const Json& array(const Json& v, const std::string& where) {
+  if (!v.is_array()) fail(where, std::string("expected an array, found ") + v.type_name());
+  return v;
 }
-// A whole number in [lo, hi]: checked before the conversion, since converting
-// a double outside int's range (a fuzzer's 1e300) is undefined behaviour.
-int integer(const Value& v, const std::string& where, double lo, double hi) {
+const Json& object(const Json& v, const std::string& where) {
+  if (!v.is_object()) fail(where, std::string("expected an object, found ") + v.type_name());
+  return v;
+}
+// A number; null reads as NaN (the writer writes non-finite floats as null).
+double number(const Json& v, const std::string& where) {
+  if (v.is_null()) return std::nan("");
+  if (!v.is_number()) fail(where, std::string("expected a number, found ") + v.type_name());
+  return v.get<double>();
+}
+int integer(const Json& v, const std::string& where, double lo, double hi) {
   double x = number(v, where);
   if (!(x >= lo && x <= hi)) fail(where, "expected a number in " + std::to_string(int(lo)) + ".." + std::to_string(int(hi)));
   return int(x);
 }
-std::string text(const Value& v, const std::string& where) {
-  if (!v.isString()) fail(where, std::string("expected a string, found ") + json::typeName(v.type));
-  return v.string;
+std::string text(const Json& v, const std::string& where) {
+  if (!v.is_string()) fail(where, std::string("expected a string, found ") + v.type_name());
+  return v.get<std::string>();
 }
-bool boolean(const Value& v, const std::string& where) {
-  if (v.type != Value::Type::Bool) fail(where, std::string("expected true/false, found ") + json::typeName(v.type));
-  return v.boolean;
+bool boolean(const Json& v, const std::string& where) {
+  if (!v.is_boolean()) fail(where, std::string("expected true/false, found ") + v.type_name());
+  return v.get<bool>();
 }
 template <int N>
-glm::vec<N, float> vec(const Value& v, const std::string& where) {
-  if (!v.isArray() || v.array.size() != size_t(N)) fail(where, "expected an array of " + std::to_string(N) + " numbers");
+glm::vec<N, float> vec(const Json& v, const std::string& where) {
+  if (!v.is_array() || v.size() != size_t(N)) fail(where, "expected an array of " + std::to_string(N) + " numbers");
   glm::vec<N, float> out;
-  for (int i = 0; i < N; ++i) out[i] = float(number(v.array[size_t(i)], where));
+  for (int i = 0; i < N; ++i) out[i] = float(number(v[size_t(i)], where));
   return out;
 }
-glm::mat4 mat(const Value& v, const std::string& where) {
-  if (!v.isArray() || v.array.size() != 16) fail(where, "expected 16 numbers (column-major)");
+glm::mat4 mat(const Json& v, const std::string& where) {
+  if (!v.is_array() || v.size() != 16) fail(where, "expected 16 numbers (column-major)");
   glm::mat4 m;
   for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) m[c][r] = float(number(v.array[size_t(c * 4 + r)], where));
+    for (int r = 0; r < 4; ++r) m[c][r] = float(number(v[size_t(c * 4 + r)], where));
   return m;
 }
 
@@ -150,27 +165,32 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
 }
 
 static SidecarScene read(const std::string& jsonText, const std::string& baseDir) {
-  Value doc = json::parse(jsonText);
-  if (!doc.isObject()) fail("document", "expected an object");
+  Json doc;
+  try {
+    doc = Json::parse(jsonText);
+  } catch (const Json::exception& e) {
+    throw ts::Error(std::string("json: ") + e.what());
+  }
+  if (!doc.is_object()) fail("document", "expected an object");
   SidecarScene out;
   auto optText = [&](const char* key, std::string* dst) {
-    if (const Value* v = doc.find(key)) *dst = text(*v, key);
+    if (const Json* v = find(doc, key)) *dst = text(*v, key);
   };
   optText("figure", &out.figure);
   optText("book_number", &out.bookNumber);
   optText("caption", &out.caption);
   optText("demo", &out.demo);
   optText("command", &out.command);
-  if (const Value* st = doc.find("state"))
-    for (const auto& [k, v] : st->object) out.state.emplace_back(k, text(v, "state." + k));
+  if (const Json* st = find(doc, "state"))
+    for (const auto& [k, v] : object(*st, "state").items()) out.state.emplace_back(k, text(v, "state." + k));
 
   ts::Frame& f = out.frame;
-  const Value& size = member(doc, "size", "document");
-  if (!size.isArray() || size.array.size() != 2) fail("size", "expected [width, height]");
-  f.width = integer(size.array[0], "size", 1, ts::kMaxImageDimension);
-  f.height = integer(size.array[1], "size", 1, ts::kMaxImageDimension);
-  if (const Value* c = doc.find("clear_color")) f.clearColor = vec<4>(*c, "clear_color");
-  if (const Value* h = doc.find("perspective_correction_hint")) {
+  const Json& size = member(doc, "size", "document");
+  if (!size.is_array() || size.size() != 2) fail("size", "expected [width, height]");
+  f.width = integer(size[0], "size", 1, ts::kMaxImageDimension);
+  f.height = integer(size[1], "size", 1, ts::kMaxImageDimension);
+  if (const Json* c = find(doc, "clear_color")) f.clearColor = vec<4>(*c, "clear_color");
+  if (const Json* h = find(doc, "perspective_correction_hint")) {
     try {
       f.perspectiveHint = glEnumFromName(text(*h, "perspective_correction_hint"));
     } catch (const ts::Error& e) {
@@ -178,17 +198,17 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
     }
   }
 
-  if (const Value* r = doc.find("renderer")) out.renderer = text(*r, "renderer");
+  if (const Json* r = find(doc, "renderer")) out.renderer = text(*r, "renderer");
   // The state every panel is drawn with: the reference models exactly this,
   // so a file that says otherwise is refused rather than misread.
-  if (const Value* fs = doc.find("fixed_state")) {
+  if (const Json* fs = find(doc, "fixed_state")) {
     auto expect = [&](const char* key, const std::string& want) {
       std::string got = text(member(*fs, key, "fixed_state"), std::string("fixed_state.") + key);
       if (got != want) fail(std::string("fixed_state.") + key, "'" + got + "', the reference models " + want + " only");
     };
-    const Value& bf = member(*fs, "blend_func", "fixed_state");
+    const Json& bf = member(*fs, "blend_func", "fixed_state");
     std::string blend;
-    for (size_t k = 0; k < bf.asArray().size(); ++k) blend += (k ? " " : "") + text(bf.array[k], "fixed_state.blend_func");
+    for (size_t k = 0; k < array(bf, "fixed_state.blend_func").size(); ++k) blend += (k ? " " : "") + text(bf[k], "fixed_state.blend_func");
     if (blend != "GL_SRC_ALPHA GL_ONE_MINUS_SRC_ALPHA GL_ZERO GL_ONE")
       fail("fixed_state.blend_func", "'" + blend + "', the reference models GL_SRC_ALPHA GL_ONE_MINUS_SRC_ALPHA GL_ZERO GL_ONE only");
     expect("depth_func", "GL_LESS");
@@ -201,27 +221,27 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
     out.missing.push_back("fixed_state");
   }
 
-  const Value& textures = member(doc, "textures", "document");
-  for (size_t i = 0; i < textures.asArray().size(); ++i) {
-    const Value& t = textures.array[i];
+  const Json& textures = member(doc, "textures", "document");
+  for (size_t i = 0; i < array(textures, "textures").size(); ++i) {
+    const Json& t = textures[i];
     std::string where = "textures[" + std::to_string(i) + "]";
     std::string name = text(member(t, "name", where), where + ".name");
     std::vector<std::pair<std::string, std::string>> params;
-    if (const Value* pv = t.find("params"))
-      for (const auto& [k, v] : pv->object) params.emplace_back(k, text(v, where + ".params." + k));
+    if (const Json* pv = find(t, "params"))
+      for (const auto& [k, v] : object(*pv, where + ".params").items()) params.emplace_back(k, text(v, where + ".params." + k));
     ts::TextureDesc d;
     try {
       d = remakeTexture(name, params, baseDir);
     } catch (const ts::Error& e) {
       fail(where, e.what());
     }
-    if (const Value* w = t.find("width"))
+    if (const Json* w = find(t, "width"))
       if (d.image && integer(*w, where + ".width", 0, ts::kMaxImageDimension) != d.image->width) fail(where, "the remade texture's width differs");
-    if (const Value* h = t.find("height"))
+    if (const Json* h = find(t, "height"))
       if (d.image && integer(*h, where + ".height", 0, ts::kMaxImageDimension) != d.image->height) fail(where, "the remade texture's height differs");
-    const Value& mips = member(t, "mipmaps", where);
-    if (mips.type == Value::Type::Bool) {
-      if (mips.boolean) fail(where, "mipmaps: true is not a kind of chain");
+    const Json& mips = member(t, "mipmaps", where);
+    if (mips.is_boolean()) {
+      if (mips.get<bool>()) fail(where, "mipmaps: true is not a kind of chain");
       d.mipmaps = false;
       d.mipLevels = nullptr;
     } else {
@@ -244,45 +264,45 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
     } catch (const ts::Error& e) {
       fail(where, e.what());
     }
-    if (const Value* b = t.find("border")) d.border = vec<4>(*b, where + ".border");
-    if (const Value* a = t.find("max_anisotropy")) d.maxAnisotropy = float(number(*a, where));
-    if (const Value* b = t.find("lod_bias")) d.lodBias = float(number(*b, where));
+    if (const Json* b = find(t, "border")) d.border = vec<4>(*b, where + ".border");
+    if (const Json* a = find(t, "max_anisotropy")) d.maxAnisotropy = float(number(*a, where));
+    if (const Json* b = find(t, "lod_bias")) d.lodBias = float(number(*b, where));
     f.textures.push_back(std::move(d));
   }
 
-  if (const Value* progs = doc.find("programs"))
-    for (size_t i = 0; i < progs->asArray().size(); ++i) {
-      const Value& p = progs->array[i];
+  if (const Json* progs = find(doc, "programs"))
+    for (size_t i = 0; i < array(*progs, "programs").size(); ++i) {
+      const Json& p = (*progs)[i];
       std::string where = "programs[" + std::to_string(i) + "]";
       ts::Program prog;
-      if (const Value* s = p.find("source")) prog.file = text(*s, where);
+      if (const Json* s = find(p, "source")) prog.file = text(*s, where);
       f.programs.emplace_back(text(member(p, "name", where), where), prog);
     }
 
-  const Value& panels = member(doc, "panels", "document");
-  for (size_t pi = 0; pi < panels.asArray().size(); ++pi) {
-    const Value& pv = panels.array[pi];
+  const Json& panels = member(doc, "panels", "document");
+  for (size_t pi = 0; pi < array(panels, "panels").size(); ++pi) {
+    const Json& pv = panels[pi];
     std::string where = "panels[" + std::to_string(pi) + "]";
     ts::Panel p;
-    if (const Value* id = pv.find("id")) p.id = text(*id, where + ".id");
-    const Value& vpv = member(pv, "viewport", where);
-    if (!vpv.isArray() || vpv.array.size() != 4) fail(where + ".viewport", "expected [x, y, width, height]");
+    if (const Json* id = find(pv, "id")) p.id = text(*id, where + ".id");
+    const Json& vpv = member(pv, "viewport", where);
+    if (!vpv.is_array() || vpv.size() != 4) fail(where + ".viewport", "expected [x, y, width, height]");
     auto coord = [&](int i, double lo) {  // x, y may lie off the target; w, h at most the largest image
-      return integer(vpv.array[size_t(i)], where + ".viewport", lo, ts::kMaxImageDimension);
+      return integer(vpv[size_t(i)], where + ".viewport", lo, ts::kMaxImageDimension);
     };
     p.viewport = {coord(0, -ts::kMaxImageDimension), coord(1, -ts::kMaxImageDimension), coord(2, 0), coord(3, 0)};
-    if (const Value* d = pv.find("depth_test")) p.depthTest = boolean(*d, where + ".depth_test");
-    if (const Value* c = pv.find("clear")) p.clear = boolean(*c, where + ".clear");
+    if (const Json* d = find(pv, "depth_test")) p.depthTest = boolean(*d, where + ".depth_test");
+    if (const Json* c = find(pv, "clear")) p.clear = boolean(*c, where + ".clear");
     else out.missing.push_back(where + ".clear");
-    if (const Value* c = pv.find("clear_color")) p.clearColor = vec<4>(*c, where + ".clear_color");
+    if (const Json* c = find(pv, "clear_color")) p.clearColor = vec<4>(*c, where + ".clear_color");
     p.projection = mat(member(pv, "projection", where), where + ".projection");
     p.modelview = mat(member(pv, "modelview", where), where + ".modelview");
-    const Value& batches = member(pv, "batches", where);
-    for (size_t bi = 0; bi < batches.asArray().size(); ++bi) {
-      const Value& bv = batches.array[bi];
+    const Json& batches = member(pv, "batches", where);
+    for (size_t bi = 0; bi < array(batches, where + ".batches").size(); ++bi) {
+      const Json& bv = batches[bi];
       std::string bw = where + ".batches[" + std::to_string(bi) + "]";
       ts::Batch b;
-      if (const Value* r = bv.find("role")) b.role = text(*r, bw + ".role");
+      if (const Json* r = find(bv, "role")) b.role = text(*r, bw + ".role");
       b.prim = primFromName(text(member(bv, "primitive", bw), bw + ".primitive"), bw);
       b.texture = integer(member(bv, "texture", bw), bw + ".texture", -1, double(f.textures.size()) - 1);
       try {
@@ -290,21 +310,21 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
       } catch (const ts::Error& e) {
         fail(bw, e.what());
       }
-      if (const Value* pr = bv.find("program")) b.program = text(*pr, bw + ".program");
-      if (const Value* us = bv.find("uniforms"))
-        for (const auto& [k, v] : us->object) b.uniforms.push_back({k, vec<4>(v, bw + ".uniforms." + k)});
-      if (const Value* lw = bv.find("line_width")) b.lineWidth = float(number(*lw, bw));
-      if (const Value* ps = bv.find("point_size")) b.pointSize = float(number(*ps, bw));
+      if (const Json* pr = find(bv, "program")) b.program = text(*pr, bw + ".program");
+      if (const Json* us = find(bv, "uniforms"))
+        for (const auto& [k, v] : object(*us, bw + ".uniforms").items()) b.uniforms.push_back({k, vec<4>(v, bw + ".uniforms." + k)});
+      if (const Json* lw = find(bv, "line_width")) b.lineWidth = float(number(*lw, bw));
+      if (const Json* ps = find(bv, "point_size")) b.pointSize = float(number(*ps, bw));
       else if (b.prim == ts::Prim::Points) out.missing.push_back(bw + ".point_size");
-      if (const Value* bl = bv.find("blend")) b.blend = boolean(*bl, bw + ".blend");
-      const Value& verts = member(bv, "vertices", bw);
-      for (size_t vi = 0; vi < verts.asArray().size(); ++vi) {
-        const Value& vv = verts.array[vi];
+      if (const Json* bl = find(bv, "blend")) b.blend = boolean(*bl, bw + ".blend");
+      const Json& verts = member(bv, "vertices", bw);
+      for (size_t vi = 0; vi < array(verts, bw + ".vertices").size(); ++vi) {
+        const Json& vv = verts[vi];
         std::string vw = bw + ".vertices[" + std::to_string(vi) + "]";
         ts::Vertex x;
         x.pos = vec<3>(member(vv, "pos", vw), vw + ".pos");
-        if (const Value* t = vv.find("tex")) x.tex = vec<4>(*t, vw + ".tex");
-        if (const Value* c = vv.find("color")) x.color = vec<4>(*c, vw + ".color");
+        if (const Json* t = find(vv, "tex")) x.tex = vec<4>(*t, vw + ".tex");
+        if (const Json* c = find(vv, "color")) x.color = vec<4>(*c, vw + ".color");
         b.vertices.push_back(x);
       }
       p.batches.push_back(std::move(b));
@@ -312,17 +332,17 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
     f.panels.push_back(std::move(p));
   }
 
-  if (const Value* labels = doc.find("labels"))
-    for (size_t i = 0; i < labels->asArray().size(); ++i) {
-      const Value& lv = labels->array[i];
+  if (const Json* labels = find(doc, "labels"))
+    for (size_t i = 0; i < array(*labels, "labels").size(); ++i) {
+      const Json& lv = (*labels)[i];
       std::string where = "labels[" + std::to_string(i) + "]";
       ts::Label l;
       l.x = float(number(member(lv, "x", where), where + ".x"));
       l.y = float(number(member(lv, "y", where), where + ".y"));
       l.text = text(member(lv, "text", where), where + ".text");
-      if (const Value* s = lv.find("scale")) l.scale = integer(*s, where + ".scale", 1, 64);
+      if (const Json* s = find(lv, "scale")) l.scale = integer(*s, where + ".scale", 1, 64);
       else out.labelGeometryKnown = false, out.missing.push_back(where + ".scale");
-      if (const Value* a = lv.find("align")) {
+      if (const Json* a = find(lv, "align")) {
         std::string al = text(*a, where + ".align");
         if (al == "left") l.align = ts::Align::Left;
         else if (al == "center" || al == "centre") l.align = ts::Align::Center;
@@ -332,8 +352,8 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
         out.labelGeometryKnown = false;
         out.missing.push_back(where + ".align");
       }
-      if (const Value* c = lv.find("color")) l.color = vec<4>(*c, where + ".color");
-      if (const Value* b = lv.find("background")) l.background = vec<4>(*b, where + ".background");
+      if (const Json* c = find(lv, "color")) l.color = vec<4>(*c, where + ".color");
+      if (const Json* b = find(lv, "background")) l.background = vec<4>(*b, where + ".background");
       f.labels.push_back(std::move(l));
     }
   return out;

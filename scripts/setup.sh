@@ -10,6 +10,7 @@ packages=(
   libegl1 libegl-mesa0 libgl1-mesa-dri   # EGL surfaceless backend and Mesa's llvmpipe/softpipe
   libgl1 libglx-mesa0                    # GLX for the window backend (GLFW dlopens libGL.so.1)
   libglfw3-dev libglm-dev libpng-dev libimgui-dev libstb-dev
+  nlohmann-json3-dev                     # JSON: the sidecars are written and read with it
   googletest libgtest-dev libbenchmark-dev
   xvfb xauth                             # window tests under a virtual X server
   clang libclang-rt-14-dev               # libFuzzer and its sanitizer runtimes (fuzz preset)

@@ -6,7 +6,7 @@
 //   step_albedo.png, step_height.png       its synthetic step/ridge map
 //   checkerboard_256_8.png                 the book's checkerboard (8x8 checks)
 //   labelled_grid_512_8.png                the orientation grid A1..H8
-// The demos make the same texels in code (demos/parallax_aniso/relief.hpp,
+// The demos make the same texels in code (common/relief_maps.hpp,
 // common/textures.hpp); these files are their output, not their input.
 //
 //   make_textures DIR           write the files into DIR
@@ -22,13 +22,13 @@
 #include "common/error.hpp"
 #include "common/image.hpp"
 #include "common/textures.hpp"
-#include "demos/parallax_aniso/relief.hpp"
+#include "common/relief_maps.hpp"
 
 namespace {
 std::vector<std::pair<std::string, ts::Image>> assets() {
   std::vector<std::pair<std::string, ts::Image>> out;
   for (const char* map : {"bricks", "step"}) {
-    pax::Relief r = pax::makeRelief(map);
+    ts::relief::Relief r = ts::relief::makeRelief(map);
     out.push_back({std::string(map) + "_albedo.png", r.albedo[0]});
     out.push_back({std::string(map) + "_height.png", r.height[0]});
   }

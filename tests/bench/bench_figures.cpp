@@ -5,6 +5,9 @@
 //   <figure>/measure/osmesa      scene->measure(renderer) of a new scene: the figure's numbers
 //   <figure>/build               scene->build(w, h): the Frame, no GL
 //   <figure>/render/<backend>    renderer.draw(frame) + glFinish (textures, shaders cached)
+//   <figure>/render_after_recording/osmesa  the same after a gl::Recording came and went (the
+//                                cost of the recorder when off: the pointers are the driver's again)
+//   <figure>/render_recording/osmesa        the same while recording (what the GL pane pays)
 //   <figure>/readback/<backend>  Context::readPixels (glReadPixels + row flip)
 //   <figure>/encode              ts::encodePng of the rendered image
 //   <figure>/warm/osmesa         new scene + renderScene + encodePng on a live context (make_figures' per figure)
@@ -26,6 +29,7 @@
 #include "common/error.hpp"
 #include "common/figure.hpp"
 #include "common/gl.hpp"
+#include "common/gl_record.hpp"
 #include "common/image.hpp"
 #include "common/render.hpp"
 
@@ -119,6 +123,25 @@ void benchRender(benchmark::State& st, const Figure& f, ts::Backend b) {
     for (auto _ : st) {
       rig.renderer.draw(rig.frame);
       glFinish();
+    }
+  });
+}
+
+// The recorder's cost: off (after a Recording ended) and on.
+void benchRenderRecorder(benchmark::State& st, const Figure& f, bool recording) {
+  guarded(st, [&] {
+    Rig rig(f, ts::Backend::OSMesa);
+    { ts::gl::Recording warmup; }
+    for (auto _ : st) {
+      if (recording) {
+        ts::gl::Recording rec;
+        rig.renderer.draw(rig.frame);
+        glFinish();
+        benchmark::DoNotOptimize(rec.calls().size());
+      } else {
+        rig.renderer.draw(rig.frame);
+        glFinish();
+      }
     }
   });
 }
@@ -262,6 +285,8 @@ int main(int argc, char** argv) {
       timed(benchmark::RegisterBenchmark(name(f, "render", b).c_str(), benchRender, f, b));
     for (ts::Backend b : kBackends)
       timed(benchmark::RegisterBenchmark(name(f, "readback", b).c_str(), benchReadback, f, b));
+    timed(benchmark::RegisterBenchmark(name(f, "render_after_recording", O).c_str(), benchRenderRecorder, f, false));
+    timed(benchmark::RegisterBenchmark(name(f, "render_recording", O).c_str(), benchRenderRecorder, f, true));
     timed(benchmark::RegisterBenchmark(name(f, "encode").c_str(), benchEncode, f));
     timed(benchmark::RegisterBenchmark(name(f, "warm", O).c_str(), benchWarm, f, O));
     for (ts::Backend b : kBackends) timed(benchmark::RegisterBenchmark(name(f, "cold", b).c_str(), benchCold, f, b));

@@ -110,4 +110,29 @@ TEST(GlRecord, OnlyThisThreadOnlyWhileAlive) {
   EXPECT_STREQ(calls[0].name, "glFlush");
   EXPECT_FALSE(ts::gl::Recording::active());
 }
+
+// Claim: with recording off the cost is nothing at all: once a Recording
+// ends, every pointer of the table is the very pointer it was before, so a
+// call goes straight to the driver (bench_figures' render_after_recording
+// times it beside render).
+TEST(GlRecord, EndingARecordingRestoresEveryPointer) {
+  ts::test::context();
+  std::vector<void*> before, during, after;
+#define TS_TAKE(name) before.push_back(reinterpret_cast<void*>(ts::gl::p_##name));
+  TM_GL_FUNCTIONS(TS_TAKE)
+#undef TS_TAKE
+  {
+    ts::gl::Recording rec;
+#define TS_TAKE(name) during.push_back(reinterpret_cast<void*>(ts::gl::p_##name));
+    TM_GL_FUNCTIONS(TS_TAKE)
+#undef TS_TAKE
+  }
+#define TS_TAKE(name) after.push_back(reinterpret_cast<void*>(ts::gl::p_##name));
+  TM_GL_FUNCTIONS(TS_TAKE)
+#undef TS_TAKE
+  EXPECT_EQ(before, after);
+  size_t swapped = 0;
+  for (size_t i = 0; i < before.size(); ++i) swapped += before[i] != during[i];
+  EXPECT_EQ(swapped, before.size()) << "while recording, every call goes through a wrapper";
+}
 }  // namespace
