@@ -143,4 +143,23 @@ inline glm::dvec4 texEnv(GLenum mode, glm::dvec4 f, glm::dvec4 t, glm::dvec4 c) 
   o[3] = mode == GL_REPLACE ? t[3] : mode == GL_DECAL ? f[3] : f[3] * t[3];
   return o;
 }
+// The lit surface of the environment view: per-vertex lighting computed on
+// the CPU (the suite draws with GL_LIGHTING off), the Phong model of Buss
+// III with a point light and a local viewer: diffuse part
+// Cm (ambient + (1 - ambient) max(0, n.l)) and specular part max(0, n.h)^e.
+// GL's single colour puts both in the primary colour (clamped), which
+// GL_MODULATE then multiplies by the texel; GL_SEPARATE_SPECULAR_COLOR sends
+// the specular part as the secondary colour, added after texturing.
+struct Lit {
+  glm::dvec3 diffuse{0.0};
+  double specular = 0;
+};
+inline Lit phong(glm::dvec3 p, glm::dvec3 n, glm::dvec3 light, glm::dvec3 eye, glm::dvec3 colour, double ambient,
+                 double shininess) {
+  glm::dvec3 l = glm::normalize(light - p), v = glm::normalize(eye - p), h = glm::normalize(l + v);
+  Lit o;
+  o.diffuse = colour * (ambient + (1 - ambient) * std::max(0.0, glm::dot(n, l)));
+  o.specular = glm::dot(n, l) > 0 ? std::pow(std::max(0.0, glm::dot(n, h)), shininess) : 0.0;
+  return o;
+}
 }  // namespace wrapmath

@@ -43,6 +43,10 @@
 namespace {
 const GLenum kModes[] = {GL_REPEAT, GL_MIRRORED_REPEAT, GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER};
 const char* const kModeNames[] = {"repeat", "mirrored", "clamp", "edge", "border"};
+const GLenum kEnvs[] = {GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD};
+const char* const kEnvNames[] = {"replace", "modulate", "decal", "blend", "add"};
+const char* const kEnvGL[] = {"GL_REPLACE", "GL_MODULATE", "GL_DECAL", "GL_BLEND", "GL_ADD"};
+const glm::vec4 kEnvColour{0.2f, 0.6f, 1.0f, 1.0f};  // GL_TEXTURE_ENV_COLOR for GL_BLEND
 const char* const kModeGL[] = {"GL_REPEAT", "GL_MIRRORED_REPEAT", "GL_CLAMP", "GL_CLAMP_TO_EDGE", "GL_CLAMP_TO_BORDER"};
 const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kSquare{1.0f, 0.85f, 0.1f, 1.0f}, kGrid{0.55f, 0.55f, 0.6f, 1.0f},
     kMeasured{1.0f, 0.75f, 0.3f, 1.0f}, kBorderColour{0.85f, 0.1f, 0.75f, 1.0f};
@@ -54,6 +58,8 @@ struct Found {
   std::map<int, double> borderAt0;    // mode index -> % border at s = 0 (linear)
   int seedDiffers = 0, integers = 0;  // seed 002's MIRROR vs GL at integer s
   int matrixMismatches = -1;
+  int envMismatches = -1;
+  double peak[2] = {-1, -1};  // the highlight's peak (mean of R, G, B): specular in the primary colour | separate
 };
 
 // A texel-index texture of any size (a crop of the square one): the NPOT
@@ -94,7 +100,11 @@ class WrapModes final : public ts::Scene {
   }
   std::vector<std::string> claim() const override { return {"wrap_texel_mismatches", "seed_mirror_differs"}; }
   void addOptions(ts::Options& o) override {
-    o.addEnum("view", &view_, {"modes", "single", "matrix"}, "modes: 5 modes x 2 filters; single: one state; matrix: the texture matrix", 'v');
+    o.addEnum("view", &view_, {"modes", "single", "matrix", "env"},
+              "modes: 5 modes x 2 filters; single: one state; matrix: the texture matrix; env: the texture environments", 'v');
+    o.addEnum("env", &env_, std::vector<std::string>(kEnvNames, kEnvNames + 5),
+              "texture environment of the single view's quad (on vertex colours)", 'e');
+    o.addBool("separate-specular", &separate_, "env view, last panel: GL_SEPARATE_SPECULAR_COLOR (specular added after texturing)", 'p');
     o.addEnum("wrap-s", &wrapS_, std::vector<std::string>(kModeNames, kModeNames + 5), "wrap mode of s (single and matrix views)", 's');
     o.addEnum("wrap-t", &wrapT_, std::vector<std::string>(kModeNames, kModeNames + 5), "wrap mode of t (single and matrix views)", 't');
     o.addEnum("filter", &filter_, {"nearest", "linear"}, "texture filter (single and matrix views)", 'f');
@@ -119,7 +129,12 @@ class WrapModes final : public ts::Scene {
             {"texture_matrix", "Buss VI.4 (seed 001)",
              "The texture matrix: (s,t) rotated by 30 degrees, scaled by 1.5 and sheared by 0.25 about the texture's "
              "centre (glMatrixMode(GL_TEXTURE)). Left: texture space with the image of the unit square; right: the quad.",
-             {"--view", "matrix", "--rotate", "30", "--scale", "1.5", "--shear", "0.25", "--wrap-s", "mirrored"}, 1024, 512}};
+             {"--view", "matrix", "--rotate", "30", "--scale", "1.5", "--shear", "0.25", "--wrap-s", "mirrored"}, 1024, 512},
+            {"texture_environment", "Buss VI.4 (texture environment)",
+             "A plane lit per vertex (orange, a white highlight) under an RGBA texture, combined by each texture "
+             "environment (GL_BLEND with GL_TEXTURE_ENV_COLOR light blue; GL_DECAL's texture has an alpha ramp). "
+             "GL_MODULATE multiplies the highlight by the texel; GL_SEPARATE_SPECULAR_COLOR adds it after texturing.",
+             {"--view", "env"}, 1200, 520}};
   }
   void update(double seconds) override {
     if (animate_) xf_.angleDeg = float(std::remainder(xf_.angleDeg + 20.0 * seconds, 360.0));
@@ -145,7 +160,12 @@ class WrapModes final : public ts::Scene {
   void addTextureSpace(ts::Frame& f, const ts::Rect& vp, const std::string& id, int tex, bool matrixOutline) const;
   int mismatchPass(ts::Renderer& r, GLenum mode, int w, int h, Found* found) const;
 
-  int view_ = 0, wrapS_ = 1, wrapT_ = 1, filter_ = 0;
+  // The environment view: a plane lit per vertex (wrap_math.hpp's phong)
+  // under the RGBA texture, in mode `env`; `separate` sends the specular part
+  // as the secondary colour (GL_COLOR_SUM), else it is in the primary colour.
+  ts::Frame envFrame(int width, int height, const Found* found) const;
+  int view_ = 0, wrapS_ = 1, wrapT_ = 1, filter_ = 0, env_ = 1;
+  bool separate_ = true;
   float range_ = 1.0f;
   bool npot_ = false, animate_ = false;
   wrapmath::TexTransform xf_;
@@ -196,6 +216,7 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
     }
     return f;
   }
+  if (view_ == 3) return envFrame(width, height, found);
   const GLenum ws = kModes[wrapS_], wt = kModes[wrapT_];
   int tex = f.addTexture(texture(ws, wt, filter_ == 1));
   const std::string state = std::string("s ") + kModeGL[wrapS_] + ", t " + kModeGL[wrapT_];
@@ -204,7 +225,13 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
     spec.n = 1, spec.linesAbove = 1, spec.linesBelow = 2;
     L::Cell c = L::flow(area, spec)[0];
     addTextureSpace(f, c.picture, "texture_space", tex, false);
-    L::caption(f, c.above, state + (filter_ ? ", linear" : ", nearest"), kWhite, c.scale);
+    // The quad's fragment colours run from orange to blue: the environment
+    // (key e) combines them with the texels, GL_BLEND with kEnvColour.
+    ts::Batch& q = f.panels.back().batches.front();
+    q.texEnv = kEnvs[env_];
+    q.envColor = kEnvColour;
+    for (auto& v : q.vertices) v.color = glm::mix(glm::vec4(0.95f, 0.6f, 0.2f, 1), glm::vec4(0.3f, 0.5f, 0.95f, 1), v.pos.x > 0.5f ? 1.0f : 0.0f);
+    L::caption(f, c.above, state + (filter_ ? ", linear, " : ", nearest, ") + kEnvGL[env_], kWhite, c.scale);
     if (found)
       L::caption(f, c.below,
                  fmt("seed 002's MIRROR differs from GL_MIRRORED_REPEAT at %.0f", found->seedDiffers) +
@@ -235,6 +262,67 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
   if (found && found->matrixMismatches >= 0)
     L::caption(f, cells[1].below, fmt("%.0f probe texels differ from M applied on the CPU", found->matrixMismatches),
                kMeasured, cells[1].scale);
+  return f;
+}
+
+ts::Frame WrapModes::envFrame(int width, int height, const Found* found) const {
+  namespace L = ts::layout;
+  ts::Frame f;
+  f.width = width, f.height = height;
+  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  L::FlowSpec spec;
+  spec.n = 6, spec.linesAbove = 1, spec.linesBelow = 1, spec.gap = 8;
+  std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
+  // The texture: RGBA with an alpha ramp for GL_DECAL (whose alpha is the
+  // fragment's, so the picture stays opaque); opaque for the others, whose
+  // alpha would be At or Af At and show the page through the figure (the
+  // measurement checks every mode's alpha on a grid instead).
+  ts::TextureDesc opaque = texture(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, true), ramp = opaque;
+  if (texturePath_.empty()) {
+    ramp = ts::gradientTexture(npot_ ? 7 : 8, npot_ ? 5 : 8, true);
+    ramp.wrapS = ramp.wrapT = GL_CLAMP_TO_EDGE;
+  }
+  const int texOpaque = f.addTexture(opaque), texRamp = f.addTexture(ramp);
+  const int n = 16;  // 16 x 16 cells; the highlight's centre is vertex (8, 8)
+  const glm::dvec3 light(0.5, 0.5, 0.6), colour(0.9, 0.55, 0.25);
+  for (int k = 0; k < 6; ++k) {
+    const GLenum env = k < 5 ? kEnvs[k] : GL_MODULATE;
+    const bool sep = k == 5 && separate_;
+    ts::Panel p;
+    p.id = k < 5 ? std::string("env_") + kEnvNames[k] : "env_separate_specular";
+    p.viewport = cells[size_t(k)].picture;
+    p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+    ts::Batch b;
+    b.role = "lit_surface";
+    b.texture = env == GL_DECAL ? texRamp : texOpaque;
+    b.texEnv = env;
+    b.envColor = kEnvColour;
+    b.colorSum = sep;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        for (glm::ivec2 c : {glm::ivec2(0, 0), {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}}) {
+          glm::dvec3 pos(double(i + c.x) / n, double(j + c.y) / n, 0.0);
+          wrapmath::Lit lit = wrapmath::phong(pos, {0, 0, 1}, light, light, colour, 0.25, 40.0);
+          ts::Vertex v;
+          v.pos = glm::vec3(pos);
+          v.tex = {pos.x, pos.y, 0, 1};
+          glm::dvec3 primary = sep ? lit.diffuse : glm::min(lit.diffuse + lit.specular, glm::dvec3(1.0));
+          v.color = glm::vec4(glm::vec3(primary), 1.0f);
+          v.secondary = glm::vec3(float(sep ? lit.specular : 0.0));
+          b.vertices.push_back(v);
+        }
+    p.batches.push_back(b);
+    f.panels.push_back(p);
+    const L::Cell& cell = cells[size_t(k)];
+    L::caption(f, cell.above, k < 5 ? kEnvGL[k] : sep ? "MODULATE + SEPARATE_SPECULAR" : "MODULATE (single colour)", kWhite,
+               cell.scale);
+    std::string note;
+    if (found && found->peak[0] >= 0 && (k == 1 || k == 5))
+      note = fmt("highlight peak %.2f", found->peak[k == 5 && separate_ ? 1 : 0]);
+    else if (found && k == 0 && found->envMismatches >= 0)
+      note = fmt("table: %.0f mismatches", found->envMismatches);
+    if (!note.empty()) L::caption(f, cell.below, note, kMeasured, cell.scale);
+  }
   return f;
 }
 
@@ -361,6 +449,75 @@ ts::Measurements WrapModes::measure(ts::Renderer& r) {
     found.matrixMismatches = bad;
     out.push_back({"texture_matrix_mismatches", double(bad), "probe pixels whose texel differs from M (s,t) on the CPU"});
     out.push_back({"texture_matrix_probes", double(checked), "probes compared (those a twentieth of a texel from an edge)"});
+  }
+  // The environment table: every mode on a grid of 6 fragment colours x 100
+  // texels (5 x 5 colours x 4 alphas), one pixel each, read back with its
+  // alpha and compared with the table; 1 step of 8 bits is rounding.
+  {
+    auto img = std::make_shared<ts::Image>(100, 1);
+    const int v[5] = {0, 64, 128, 191, 255}, a[4] = {0, 85, 170, 255};
+    for (int k = 0; k < 100; ++k) img->set(k, 0, {uint8_t(v[k % 5]), uint8_t(v[(k / 5) % 5]), uint8_t(v[4 - k % 5]), uint8_t(a[k / 25])});
+    ts::TextureDesc t;
+    t.name = "env_grid";
+    t.image = img;
+    t.minFilter = t.magFilter = GL_NEAREST;
+    const glm::vec4 frags[6] = {{1, 1, 1, 1}, {0, 0, 0, 1}, {0.2f, 0.6f, 1.0f, 0.4f}, {0.8f, 0.4f, 0.2f, 0.0f}, {0.6f, 0.6f, 0.6f, 0.8f}, {1.0f, 0.2f, 0.4f, 1.0f}};
+    ts::Frame f;
+    f.width = 100, f.height = 30;
+    int tex = f.addTexture(t);
+    ts::Panel p;
+    p.viewport = {0, 0, 100, 30};
+    p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 30.0f, -1.0f, 1.0f);
+    for (int m = 0; m < 5; ++m)
+      for (int c = 0; c < 6; ++c) {
+        ts::Batch b = stQuad({0, 29 - (m * 6 + c)}, {1, 30 - (m * 6 + c)}, {0, 0.5}, {1, 0.5}, tex);
+        b.texEnv = kEnvs[m];
+        b.envColor = kEnvColour;
+        for (auto& x : b.vertices) x.color = frags[c];
+        p.batches.push_back(b);
+      }
+    f.panels.push_back(p);
+    ts::Image got = r.renderOffscreen(f);
+    int bad = 0;
+    for (int m = 0; m < 5; ++m) {
+      int badMode = 0;
+      for (int c = 0; c < 6; ++c)
+        for (int k = 0; k < 100; ++k) {
+          ts::Rgba tx = img->at(k, 0), g = got.at(k, m * 6 + c);
+          glm::dvec4 want = wrapmath::texEnv(kEnvs[m], glm::dvec4(frags[c]), glm::dvec4(tx.r, tx.g, tx.b, tx.a) / 255.0,
+                                             glm::dvec4(kEnvColour)) * 255.0;
+          badMode += std::abs(g.r - want.r) > 1 || std::abs(g.g - want.g) > 1 || std::abs(g.b - want.b) > 1 ||
+                     std::abs(g.a - want.a) > 1;
+        }
+      bad += badMode;
+      out.push_back({std::string("env_mismatches[") + kEnvNames[m] + "]", double(badMode),
+                     "of 600 fragment x texel pairs: more than 1 step of 8 bits from the table"});
+    }
+    found.envMismatches = bad;
+    out.push_back({"env_table_mismatches", double(bad), "every mode: pairs more than 1 step of 8 bits from the table"});
+  }
+  // The highlight: the env view drawn without labels; the brightest pixel
+  // (mean of R, G, B) of the GL_MODULATE panel, specular in the primary
+  // colour, and of the same with GL_SEPARATE_SPECULAR_COLOR.
+  {
+    WrapModes v = *this;
+    v.view_ = 3;
+    for (int k = 0; k < 2; ++k) {
+      v.separate_ = k == 1;
+      ts::Frame f = v.envFrame(600, 400, nullptr);
+      f.labels.clear();
+      ts::Image img = r.renderOffscreen(f);
+      const ts::Rect vp = f.panel(k == 0 ? "env_modulate" : "env_separate_specular")->viewport;
+      double peak = 0;
+      for (int y = vp.y; y < vp.y + vp.h; ++y)
+        for (int x = vp.x; x < vp.x + vp.w; ++x) {
+          ts::Rgba c = img.at(x, y);
+          peak = std::max(peak, (c.r + c.g + c.b) / (3.0 * 255.0));
+        }
+      found.peak[k] = peak;
+    }
+    out.push_back({"highlight_peak[modulate]", found.peak[0], "brightest pixel (mean RGB) with the specular in the primary colour, times the texel"});
+    out.push_back({"highlight_peak[separate_specular]", found.peak[1], "the same with GL_SEPARATE_SPECULAR_COLOR: specular added after texturing"});
   }
   out.detail = found;
   return out;

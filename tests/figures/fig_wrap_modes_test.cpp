@@ -140,3 +140,28 @@ TEST(WrapModes, TextureMatrixAtProbes) {
   EXPECT_NEAR(std::atan2(e.y - 0.5, e.x - 0.5) * 180 / M_PI, 30.0, 1e-4);
 }
 }  // namespace
+
+namespace {
+// The texture environments: each mode's result on the grid of fragment
+// colours x texels x alphas against the table (0 beyond 8-bit rounding),
+// and the highlight: GL_MODULATE can never be brighter than the brightest
+// texel (Cf Ct <= Ct), GL_SEPARATE_SPECULAR_COLOR reaches white at the
+// highlight's centre (specular 1 added after texturing, clamped).
+TEST(WrapModes, TextureEnvironmentTableAndHighlight) {
+  Demo d("wrap_modes", {"--view", "env"});
+  ts::Measurements m = d.measure();
+  EXPECT_EQ(value(m, "env_table_mismatches"), 0);
+  for (const char* n : {"replace", "modulate", "decal", "blend", "add"})
+    EXPECT_EQ(value(m, std::string("env_mismatches[") + n + "]"), 0) << n;
+  const ts::TextureDesc tex = ts::gradientTexture(8, 8);
+  double brightest = 0;
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i) {
+      ts::Rgba c = tex.image->at(i, j);
+      brightest = std::max(brightest, (c.r + c.g + c.b) / (3.0 * 255.0));
+    }
+  EXPECT_LE(value(m, "highlight_peak[modulate]"), brightest + 2.0 / 255);
+  EXPECT_GE(value(m, "highlight_peak[separate_specular]"), 0.98);
+  EXPECT_GT(value(m, "highlight_peak[separate_specular]") - value(m, "highlight_peak[modulate]"), 0.2);
+}
+}  // namespace
