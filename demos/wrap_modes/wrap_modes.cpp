@@ -136,8 +136,13 @@ class WrapModes final : public ts::Scene {
              "GL_MODULATE multiplies the highlight by the texel; GL_SEPARATE_SPECULAR_COLOR adds it after texturing.",
              {"--view", "env"}, 1200, 520}};
   }
+  // The animation turns the `rotate` option itself, 30 degrees a second, so
+  // the window keeps drawing and F12 saves the state it shows; the frame the
+  // key is taken on is left still, so the state line printed for the key is
+  // the state the key made.
   void update(double seconds) override {
-    if (animate_) xf_.angleDeg = float(std::remainder(xf_.angleDeg + 20.0 * seconds, 360.0));
+    if (!animate_) animFrames_ = 0;
+    else if (++animFrames_ > 1) xf_.angleDeg = float(std::remainder(xf_.angleDeg + 30.0 * seconds, 360.0));
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
@@ -168,6 +173,7 @@ class WrapModes final : public ts::Scene {
   bool separate_ = true;
   float range_ = 1.0f;
   bool npot_ = false, animate_ = false;
+  long animFrames_ = 0;
   wrapmath::TexTransform xf_;
   std::string texturePath_;
   ts::TextureDesc fileTexture_;
