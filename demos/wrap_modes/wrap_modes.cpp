@@ -169,6 +169,16 @@ void WrapModes::addTextureSpace(ts::Frame& f, const ts::Rect& vp, const std::str
   ts::Panel p;
   p.id = id;
   p.viewport = vp;
+  // A whole number of pixels per texel where the picture is larger than the
+  // texels it shows: then no texel edge passes through a pixel centre, where
+  // GL may take either texel (and OSMesa and EGL do differ there).
+  const ts::TextureDesc& t = f.textures[size_t(tex)];
+  const int tw = int(std::lround(t.image ? t.image->width * (hi - lo) : 0.0)),
+            th = int(std::lround(t.image ? t.image->height * (hi - lo) : 0.0));
+  if (tw > 0 && th > 0 && tw <= vp.w && th <= vp.h) {
+    p.viewport.w = vp.w / tw * tw, p.viewport.h = vp.h / th * th;
+    p.viewport.x += (vp.w - p.viewport.w) / 2, p.viewport.y += (vp.h - p.viewport.h) / 2;
+  }
   p.projection = glm::ortho(lo, hi, lo, hi, -1.0f, 1.0f);
   p.batches.push_back(stQuad({lo, lo}, {hi, hi}, {lo, lo}, {hi, hi}, tex));
   std::vector<glm::vec2> grid;
