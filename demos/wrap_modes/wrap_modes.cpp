@@ -154,7 +154,7 @@ class WrapModes final : public ts::Scene {
   // under the RGBA texture, in mode `env`; `separate` sends the specular part
   // as the secondary colour (GL_COLOR_SUM), else it is in the primary colour.
   ts::Frame envFrame(int width, int height, const Found* found) const;
-  int view_ = 0, wrapS_ = 1, wrapT_ = 1, filter_ = 0, env_ = 1;
+  int view_ = 0, wrapS_ = 1, wrapT_ = 1, filter_ = 0, env_ = 0;
   bool separate_ = true;
   float range_ = 1.0f;
   bool npot_ = false, animate_ = false;
