@@ -25,7 +25,7 @@
 //   e  texture environment (single view)   p  separate specular colour (env view)
 //   s / t  wrap mode of s / of t (single and matrix views)   f  nearest | linear
 //   + / -  range: (s,t) run from -range to 1 + range          n  a 7x5 texture (NPOT)
-//   ] / [  shift s of the texture matrix   r / R  rotate   > / <  scale   k / K  shear
+//   ] / [  } / {  shift s / t of the texture matrix   r / R  rotate   > / <  scale   k / K  shear
 //   a  animate the rotation
 //
 // Measured (measure()): the quad drawn again with a texture whose texels hold
@@ -97,6 +97,7 @@ class WrapModes final : public ts::Scene {
     o.addFloat("range", &range_, 0.0f, 3.0f, "(s,t) run from -range to 1 + range", '+', '-', 0.5f);
     o.addBool("npot", &npot_, "a 7x5 texture instead of 8x8 (non-power-of-two)", 'n');
     o.addFloat("shift", &xf_.shift.x, -1.0f, 1.0f, "texture matrix: shift of s", ']', '[', 0.125f);
+    o.addFloat("shift-t", &xf_.shift.y, -1.0f, 1.0f, "texture matrix: shift of t", '}', '{', 0.125f);
     o.addFloat("rotate", &xf_.angleDeg, -180.0f, 180.0f, "texture matrix: rotation of (s,t) in degrees", 'r', 'R', 15.0f);
     o.addFloat("scale", &xf_.scale.x, 0.25f, 4.0f, "texture matrix: scale of s and t", '>', '<', 0.25f);
     o.addFloat("shear", &xf_.shear, -2.0f, 2.0f, "texture matrix: shear, s += shear t", 'k', 'K', 0.25f);
@@ -258,7 +259,7 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
   f.panels.push_back(q);
   L::caption(f, cells[1].above,
              fmt("glMatrixMode(GL_TEXTURE): rotate %.0f", xf_.angleDeg) + fmt(", scale %.2f", xf_.scale.x) +
-                 fmt(", shear %.2f", xf_.shear) + fmt(", shift %.3f", xf_.shift.x),
+                 fmt(", shear %.2f", xf_.shear) + fmt(", shift %.3f", xf_.shift.x) + fmt(", %.3f", xf_.shift.y),
              kWhite, cells[1].scale);
   if (found && found->matrixMismatches >= 0)
     L::caption(f, cells[1].below, fmt("%.0f probe texels differ from M applied on the CPU", found->matrixMismatches),

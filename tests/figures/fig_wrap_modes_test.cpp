@@ -120,7 +120,7 @@ TEST(WrapModes, ModesFigureShowsTheFormulasTexels) {
 TEST(WrapModes, TextureMatrixAtProbes) {
   const std::vector<std::vector<std::string>> states = {
       {"--rotate", "30", "--scale", "1.5", "--shear", "0.25"},
-      {"--shift", "0.375", "--rotate", "-75"},
+      {"--shift", "0.375", "--shift-t", "-0.625", "--rotate", "-75"},
       {"--scale", "0.5", "--shear", "-1"},
   };
   for (const auto& s : states) {
