@@ -21,6 +21,10 @@ struct Vertex {
   glm::vec3 pos{0.0f};
   glm::vec4 tex{0.0f, 0.0f, 0.0f, 1.0f};  // (s, t, r, q): q != 1 for projective maps
   glm::vec4 color{1.0f};
+  // The secondary colour (glSecondaryColor3f), added after texturing when the
+  // batch's colorSum is on: what GL_SEPARATE_SPECULAR_COLOR does with the
+  // specular term, computed on the CPU here so the reference can redo it.
+  glm::vec3 secondary{0.0f};
 };
 
 enum class Prim { Triangles, Lines, LineStrip, LineLoop, Points };
@@ -67,6 +71,15 @@ struct Batch {
   float lineWidth = 1.0f;
   float pointSize = 1.0f;
   bool blend = false;
+  // glMatrixMode(GL_TEXTURE) + glLoadMatrixf: GL multiplies every vertex's
+  // (s,t,r,q) by it before interpolation (render.cpp loads it for the batch
+  // and the identity after, so no other batch sees it; the sidecar writes it
+  // when it is not the identity and the reference applies it per vertex).
+  glm::mat4 textureMatrix{1.0f};
+  // GL_TEXTURE_ENV_COLOR (glTexEnvfv): the constant colour GL_BLEND mixes in.
+  glm::vec4 envColor{0.0f};
+  // GL_COLOR_SUM: add each vertex's secondary colour after texturing.
+  bool colorSum = false;
 };
 
 // Viewport in pixels of the frame, origin at the top-left (as in the PNG).

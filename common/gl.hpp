@@ -37,13 +37,13 @@
   X(glOrtho) X(glPixelStorei) X(glPointSize) X(glPopAttrib) X(glPopMatrix)     \
   X(glPushAttrib) X(glPushMatrix) X(glReadBuffer) X(glReadPixels)              \
   X(glScissor) X(glShadeModel) X(glTexCoord2f) X(glTexCoord4f)                 \
-  X(glTexCoordPointer) X(glTexEnvi) X(glTexImage2D) X(glTexParameterf)         \
+  X(glTexCoordPointer) X(glTexEnvfv) X(glTexEnvi) X(glTexImage2D) X(glTexParameterf)         \
   X(glTexParameterfv) X(glTexParameteri) X(glVertex2f) X(glVertex3f)           \
   X(glVertexPointer) X(glViewport) X(glDrawBuffer)                             \
   /* GL 1.3+ multitexture */                                                   \
   X(glActiveTexture)                                                           \
   /* GL 1.4 */                                                                 \
-  X(glBlendFuncSeparate)                                                       \
+  X(glBlendFuncSeparate) X(glSecondaryColor3f)                                 \
   /* GL 2.0+ shaders */                                                        \
   X(glAttachShader) X(glCompileShader) X(glCreateProgram) X(glCreateShader)    \
   X(glDeleteProgram) X(glDeleteShader) X(glGetProgramInfoLog)                  \
@@ -98,6 +98,7 @@ bool enableDebugOutput();
 #define glBindTexture ts::gl::p_glBindTexture
 #define glBlendFunc ts::gl::p_glBlendFunc
 #define glBlendFuncSeparate ts::gl::p_glBlendFuncSeparate
+#define glSecondaryColor3f ts::gl::p_glSecondaryColor3f
 #define glClear ts::gl::p_glClear
 #define glClearColor ts::gl::p_glClearColor
 #define glClearDepth ts::gl::p_glClearDepth
@@ -140,6 +141,7 @@ bool enableDebugOutput();
 #define glTexCoord2f ts::gl::p_glTexCoord2f
 #define glTexCoord4f ts::gl::p_glTexCoord4f
 #define glTexCoordPointer ts::gl::p_glTexCoordPointer
+#define glTexEnvfv ts::gl::p_glTexEnvfv
 #define glTexEnvi ts::gl::p_glTexEnvi
 #define glTexImage2D ts::gl::p_glTexImage2D
 #define glTexParameterf ts::gl::p_glTexParameterf

@@ -103,7 +103,7 @@ const std::map<std::string, std::string>& hints() {
       {"glDrawElements", "Pie-"}, {"glEnable", "e"}, {"glEnableClientState", "e"}, {"glFrontFace", "e"},
       {"glGenTextures", "io"}, {"glHint", "ee"}, {"glLoadMatrixf", "m"}, {"glMatrixMode", "e"},
       {"glMultMatrixf", "m"}, {"glPixelStorei", "e"}, {"glPolygonMode", "ee"}, {"glShadeModel", "e"},
-      {"glTexEnvf", "eex"}, {"glTexEnvi", "eex"}, {"glTexGenfv", "eev"}, {"glTexGeni", "eex"},
+      {"glTexEnvf", "eex"}, {"glTexEnvfv", "eev"}, {"glTexEnvi", "eex"}, {"glTexGenfv", "eev"}, {"glTexGeni", "eex"},
       {"glTexImage2D", "eieiiieeT"}, {"glTexSubImage2D", "eiiiiieeT"}, {"glTexParameterf", "eex"},
       {"glTexParameterfv", "eev"}, {"glTexParameteri", "eex"}, {"glLightfv", "eev"}, {"glLightModeli", "ex"},
       {"glMaterialfv", "eev"}, {"glReadBuffer", "e"}, {"glDrawBuffer", "e"}, {"glColorMask", "BBBB"},

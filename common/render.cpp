@@ -269,9 +269,24 @@ void Renderer::draw(const Frame& f, bool labels) {
         glEnable(GL_TEXTURE_2D);
         texture(f.textures.at(size_t(b.texture)));
         glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(b.texEnv));
+        // The constant colour only GL_BLEND reads: set where it is used, so
+        // every other batch's listing stays as it was.
+        if (b.texEnv == GL_BLEND) glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, glm::value_ptr(b.envColor));
       } else {
         glDisable(GL_TEXTURE_2D);
       }
+      // The texture matrix, for this batch only: loaded here, back to the
+      // identity after glEnd (only when it is not the identity, so the other
+      // figures' calls are unchanged).
+      const bool texMatrix = b.textureMatrix != glm::mat4(1.0f);
+      if (texMatrix) {
+        glMatrixMode(GL_TEXTURE);
+        glLoadMatrixf(glm::value_ptr(b.textureMatrix));
+        glMatrixMode(GL_MODELVIEW);
+      }
+      // GL_SEPARATE_SPECULAR_COLOR's second half: the secondary colour is
+      // added after texturing (GL 1.4 colour sum; lighting stays off here).
+      if (b.colorSum) glEnable(GL_COLOR_SUM);
       GLuint prog = 0;
       if (!b.program.empty()) {
         const Program* src = nullptr;
@@ -302,10 +317,17 @@ void Renderer::draw(const Frame& f, bool labels) {
       glBegin(glPrim(b.prim));
       for (const Vertex& v : b.vertices) {
         glColor4f(v.color.r, v.color.g, v.color.b, v.color.a);
+        if (b.colorSum) glSecondaryColor3f(v.secondary.r, v.secondary.g, v.secondary.b);
         glTexCoord4f(v.tex.x, v.tex.y, v.tex.z, v.tex.w);
         glVertex3f(v.pos.x, v.pos.y, v.pos.z);
       }
       glEnd();
+      if (b.colorSum) glDisable(GL_COLOR_SUM);
+      if (texMatrix) {
+        glMatrixMode(GL_TEXTURE);
+        glLoadIdentity();
+        glMatrixMode(GL_MODELVIEW);
+      }
       if (prog) glUseProgram(0);
     }
     gl::check(("drawing panel " + p.id).c_str());

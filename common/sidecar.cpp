@@ -103,6 +103,8 @@ std::string glEnumName(GLenum e) {
     case GL_MIRRORED_REPEAT: return "GL_MIRRORED_REPEAT";
     case GL_CLAMP_TO_EDGE: return "GL_CLAMP_TO_EDGE";
     case GL_CLAMP_TO_BORDER: return "GL_CLAMP_TO_BORDER";
+    case GL_CLAMP: return "GL_CLAMP";
+    case GL_ADD: return "GL_ADD";
     case GL_REPLACE: return "GL_REPLACE";
     case GL_MODULATE: return "GL_MODULATE";
     case GL_DECAL: return "GL_DECAL";
@@ -177,18 +179,28 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
       Json uniforms = Json::object();
       for (const Uniform& u : b.uniforms) uniforms[u.name] = vec(u.value);
       Json vertices = Json::array();
-      for (const Vertex& x : b.vertices)
-        vertices.push_back({{"pos", vec(x.pos)}, {"tex", vec(x.tex)}, {"color", vec(x.color)}});
-      batches.push_back({{"role", b.role},
-                         {"primitive", primName(b.prim)},
-                         {"texture", b.texture},
-                         {"tex_env", glEnumName(b.texEnv)},
-                         {"program", b.program},
-                         {"uniforms", uniforms},
-                         {"line_width", num(b.lineWidth)},
-                         {"point_size", num(b.pointSize)},
-                         {"blend", b.blend},
-                         {"vertices", vertices}});
+      for (const Vertex& x : b.vertices) {
+        Json v = {{"pos", vec(x.pos)}, {"tex", vec(x.tex)}, {"color", vec(x.color)}};
+        if (b.colorSum) v["secondary"] = vec(x.secondary);
+        vertices.push_back(v);
+      }
+      Json bj = {{"role", b.role},
+                 {"primitive", primName(b.prim)},
+                 {"texture", b.texture},
+                 {"tex_env", glEnumName(b.texEnv)},
+                 {"program", b.program},
+                 {"uniforms", uniforms},
+                 {"line_width", num(b.lineWidth)},
+                 {"point_size", num(b.pointSize)},
+                 {"blend", b.blend}};
+      // Written only when they matter, so sidecars of batches without them
+      // read exactly as before: the environment colour (GL_BLEND reads it),
+      // the texture matrix (not the identity), the colour sum.
+      if (b.texEnv == GL_BLEND || b.envColor != glm::vec4(0.0f)) bj["tex_env_color"] = vec(b.envColor);
+      if (b.textureMatrix != glm::mat4(1.0f)) bj["texture_matrix"] = mat(b.textureMatrix);
+      if (b.colorSum) bj["color_sum"] = true;
+      bj["vertices"] = vertices;
+      batches.push_back(bj);
     }
     panels.push_back({{"id", p.id},
                       {"viewport", {p.viewport.x, p.viewport.y, p.viewport.w, p.viewport.h}},

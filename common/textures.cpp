@@ -59,6 +59,20 @@ TextureDesc texelIndexTexture(int size) {
   return t;
 }
 
+TextureDesc gradientTexture(int width, int height, bool alphaRamp) {
+  if (width < 2 || height < 2 || width > 4096 || height > 4096) throw Error("gradient texture: sizes must be 2..4096");
+  auto img = std::make_shared<Image>(width, height);
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i)
+      img->set(i, j, {uint8_t(40 + 200 * i / (width - 1)), uint8_t(40 + 200 * j / (height - 1)),
+                      uint8_t((i + j) % 2 ? 50 : 150), uint8_t(alphaRamp ? 255 - 191 * i / (width - 1) : 255)});
+  TextureDesc t;
+  t.name = "gradient";
+  t.params = {{"width", str(width)}, {"height", str(height)}, {"alpha", alphaRamp ? "ramp" : "opaque"}};
+  t.image = img;
+  return t;
+}
+
 TextureDesc renderedImageTexture(const Image& img, const std::string& generator, const std::string& what,
                                  const std::string& demo, std::vector<std::pair<std::string, std::string>> extraParams) {
   uint64_t h = 1469598103934665603ull;  // FNV-1a 64

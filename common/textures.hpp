@@ -19,6 +19,13 @@ TextureDesc checkerboard(int size, int checks, Rgba a = {32, 32, 32, 255}, Rgba 
 // pixel took; decodeTexelIndex reads it back.
 TextureDesc texelIndexTexture(int size = 2048);
 void decodeTexelIndex(Rgba c, int* i, int* j);
+// width x height texels whose colour runs with the texel index, R with i
+// and G with j, B alternating like a checkerboard: a repeat, a mirror or a
+// clamp is visible at a glance, even at a few texels.  With alphaRamp the
+// alpha runs down with i (255 at i = 0 to 64 at the last column), so an
+// RGBA texture's alpha shows in GL_DECAL/GL_BLEND; else it is 255.
+// Texel (i, j): (40 + 200 i/(w-1), 40 + 200 j/(h-1), 150 - 100 [i+j odd], 255 - 191 i/(w-1) or 255).
+TextureDesc gradientTexture(int width, int height, bool alphaRamp = false);
 // A grid of size/cells cells labelled "A1".."H8" (column letter, row number
 // from the bottom): shows orientation and left/right in any mapping.
 TextureDesc labelledGrid(int size = 512, int cells = 8);

@@ -27,7 +27,7 @@
 #include <functional>
 
 namespace ref {
-constexpr int kMaxAttributes = 12;
+constexpr int kMaxAttributes = 16;
 
 struct ScreenVertex {
   double x = 0, y = 0;  // pixels, image orientation

@@ -10,11 +10,11 @@
 namespace ref {
 namespace {
 // Attribute slots of a screen vertex.
-enum : int { kS = 0, kT, kR, kQ, kCr, kCg, kCb, kCa, kW, kZ, kAttributes };
+enum : int { kS = 0, kT, kR, kQ, kCr, kCg, kCb, kCa, kSr, kSg, kSb, kW, kZ, kAttributes };
 
 struct ClipVertex {
   glm::dvec4 clip{0.0};
-  std::array<double, 8> attr{};  // s, t, r, q, colour rgba
+  std::array<double, 11> attr{};  // s, t, r, q, colour rgba, secondary rgb
 };
 
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double u) {
@@ -49,9 +49,6 @@ std::vector<ClipVertex> clipPolygon(std::vector<ClipVertex> poly) {
 
 double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
 
-Colour mul(const Colour& a, const Colour& b) {
-  return {a[0] * b[0], a[1] * b[1], a[2] * b[2], a[3] * b[3]};
-}
 }  // namespace
 
 const char* exemptName(Exempt e) {
@@ -107,6 +104,11 @@ struct Reference::Poly {
     double w = P[kW].at(x, y);
     return {float(clamp01(P[kCr].at(x, y) / w)), float(clamp01(P[kCg].at(x, y) / w)),
             float(clamp01(P[kCb].at(x, y) / w)), float(clamp01(P[kCa].at(x, y) / w))};
+  }
+  Colour secondary(double x, double y) const {
+    double w = P[kW].at(x, y);
+    return {float(clamp01(P[kSr].at(x, y) / w)), float(clamp01(P[kSg].at(x, y) / w)),
+            float(clamp01(P[kSb].at(x, y) / w)), 0.0f};
   }
   // Edge lines n.x x + n.y y + c, unit normals pointing inside.
   std::vector<std::array<double, 3>> edges;
@@ -270,8 +272,10 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     proto.kind = Candidate::Kind::Textured;
     proto.texture = b.texture;
     if (!bilinear) {
+      proto.env = b.texEnv;
+      proto.envColour = {b.envColor.r, b.envColor.g, b.envColor.b, b.envColor.a};
       if (b.texEnv == GL_MODULATE) proto.modulate = true;
-      else if (b.texEnv != GL_REPLACE) {
+      else if (!texEnvModelled(b.texEnv)) {
         proto.kind = Candidate::Kind::Exempt;
         proto.why = Exempt::Unsupported;
         note("texture environment " + std::to_string(b.texEnv) + " is not modelled: its pixels are exempt");
@@ -283,6 +287,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       note("anisotropic filtering is not modelled: its pixels are exempt");
     }
   }
+  proto.colorSum = b.colorSum;
   if (b.blend && proto.kind != Candidate::Kind::Exempt) {
     proto.kind = Candidate::Kind::Exempt;
     proto.why = Exempt::Blend;
@@ -294,7 +299,11 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     for (int k = 0; k < 3; ++k) {
       const ts::Vertex& vx = b.vertices[i + size_t(k)];
       tri[size_t(k)].clip = mvp * glm::dvec4(glm::dvec3(vx.pos), 1.0);
-      tri[size_t(k)].attr = {vx.tex.x, vx.tex.y, vx.tex.z, vx.tex.w, vx.color.r, vx.color.g, vx.color.b, vx.color.a};
+      // The texture matrix acts on (s,t,r,q) per vertex, before clipping and
+      // interpolation, as GL's vertex stage does.
+      const glm::dvec4 st = glm::dmat4(b.textureMatrix) * glm::dvec4(vx.tex);
+      tri[size_t(k)].attr = {st.x, st.y, st.z, st.w, vx.color.r, vx.color.g, vx.color.b, vx.color.a,
+                             vx.secondary.r, vx.secondary.g, vx.secondary.b};
     }
     std::vector<ClipVertex> poly = clipPolygon(tri);
     if (poly.size() < 3) continue;
@@ -308,7 +317,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       s.x = p.viewport.x + (ndc.x + 1.0) * 0.5 * p.viewport.w;
       s.y = H - (glY + (ndc.y + 1.0) * 0.5 * p.viewport.h);
       double k = persp ? 1.0 / w : 1.0;
-      for (int a = 0; a < 8; ++a) s.a[size_t(a)] = c.attr[size_t(a)] * k;
+      for (int a = 0; a < kW; ++a) s.a[size_t(a)] = c.attr[size_t(a)] * k;
       s.a[kW] = k;
       s.a[kZ] = (ndc.z + 1.0) * 0.5;
       P.v.push_back(s);
@@ -376,6 +385,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       Candidate c = proto;
       c.z = float(P.P[kZ].at(x, y));
       c.colour = P.colour(x, y);
+      if (c.colorSum) c.secondary = P.secondary(x, y);
       if (c.kind == Candidate::Kind::Textured) {
         P.coord(x, y, &c.s, &c.t);
         if (P.constantDeriv) c.lodLo = constLo, c.lodHi = constHi, c.rho = constRho;
@@ -397,10 +407,13 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
         double s, t;
         P.coordFrom(a[kS] / a[kQ], a[kT] / a[kQ], &s, &t);
         Colour texel = tex->sample(s, t, tex->lod(P.deriv(x + 0.5, y + 0.5)));
-        out = (bilinear || b.texEnv != GL_MODULATE) ? texel : mul(texel, col);
+        out = bilinear ? texel : texEnv(b.texEnv, col, texel, proto.envColour);
       } else {
         out = col;
       }
+      if (b.colorSum)
+        out = colourSum(out, {float(clamp01(a[kSr] / a[kW])), float(clamp01(a[kSg] / a[kW])),
+                              float(clamp01(a[kSb] / a[kW])), 0.0f});
       if (b.blend) {
         Colour dst = toColour(image_.at(x, y));
         float al = out[3];

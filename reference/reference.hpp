@@ -1,8 +1,11 @@
 // reference/reference.hpp — a Frame drawn on the CPU, without OpenGL, the
 // way a conformant OpenGL implementation draws it (common/render.cpp's
 // state: per-panel viewport and scissor, the panel's matrices, glBegin with
-// one glTexCoord4f/glColor4f per glVertex3f, fixed-function GL_REPLACE or
-// GL_MODULATE, or the "bilinear_quad" program of demos/quad_distortion).
+// one glTexCoord4f/glColor4f per glVertex3f, the fixed-function texture
+// environments GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD with the
+// environment colour, the texture matrix applied to each vertex's (s,t,r,q)
+// before interpolation, GL_COLOR_SUM with the secondary colour, or the
+// "bilinear_quad" program of demos/quad_distortion).
 //
 // It produces two things:
 //   * image(): the reference picture — each covered pixel centre (scanline
@@ -57,6 +60,10 @@ struct Candidate {
   Kind kind = Kind::Flat;
   Exempt why = Exempt::None;
   bool modulate = false;  // GL_MODULATE: texture times colour
+  GLenum env = GL_REPLACE;  // the texture environment (sampler.hpp's texEnv)
+  bool colorSum = false;    // GL_COLOR_SUM: `secondary` added after texturing
+  Colour envColour{};       // GL_TEXTURE_ENV_COLOR
+  Colour secondary{};       // the fragment's secondary colour (alpha unused)
   int texture = -1;       // index into Reference::textures()
   int next = -1;          // the next candidate of the same pixel
   Colour colour{};        // flat colour, or the fragment's primary colour

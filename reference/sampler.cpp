@@ -51,6 +51,55 @@ int wrapTexel(GLenum mode, int i, int size) {
   }
 }
 
+int wrapTexelNearest(GLenum mode, int i, int size) {
+  // GL_CLAMP with GL_NEAREST never reaches the border: s is clamped to
+  // [0, 1], u = s size, and at s = 1 (u = size) the last texel is taken.
+  return mode == GL_CLAMP ? std::clamp(i, 0, size - 1) : wrapTexel(mode, i, size);
+}
+
+bool texEnvModelled(GLenum mode) {
+  return mode == GL_REPLACE || mode == GL_MODULATE || mode == GL_DECAL || mode == GL_BLEND || mode == GL_ADD;
+}
+
+Colour texEnv(GLenum mode, const Colour& f, const Colour& t, const Colour& c) {
+  Colour o{};
+  for (size_t k = 0; k < 3; ++k) {
+    switch (mode) {
+      case GL_REPLACE: o[k] = t[k]; break;
+      case GL_MODULATE: o[k] = f[k] * t[k]; break;
+      case GL_DECAL: o[k] = f[k] * (1 - t[3]) + t[k] * t[3]; break;
+      case GL_BLEND: o[k] = f[k] * (1 - t[k]) + c[k] * t[k]; break;
+      case GL_ADD: o[k] = std::min(1.0f, f[k] + t[k]); break;
+      default: throw ts::Error("reference sampler: unsupported texture environment " + std::to_string(mode));
+    }
+  }
+  o[3] = mode == GL_REPLACE ? t[3] : mode == GL_DECAL ? f[3] : f[3] * t[3];
+  return o;
+}
+
+Box texEnvBox(GLenum mode, const Box& f, const Box& t, const Colour& c) {
+  Box o{{2, 2, 2, 2}, {-1, -1, -1, -1}};
+  for (int corner = 0; corner < 16; ++corner) {
+    Colour fc = f.lo, tc = t.lo;
+    // bit 0: Cf (all of R, G, B), bit 1: Ct, bit 2: Af, bit 3: At.  Every
+    // channel depends only on its own Cf, Ct and the alphas, so taking the
+    // same corner for R, G, B at once still visits each channel's corners.
+    for (size_t k = 0; k < 3; ++k) {
+      if (corner & 1) fc[k] = f.hi[k];
+      if (corner & 2) tc[k] = t.hi[k];
+    }
+    if (corner & 4) fc[3] = f.hi[3];
+    if (corner & 8) tc[3] = t.hi[3];
+    Colour v = texEnv(mode, fc, tc, c);
+    for (size_t k = 0; k < 4; ++k) o.lo[k] = std::min(o.lo[k], v[k]), o.hi[k] = std::max(o.hi[k], v[k]);
+  }
+  return o;
+}
+
+Colour colourSum(const Colour& c, const Colour& s) {
+  return {std::min(1.0f, c[0] + s[0]), std::min(1.0f, c[1] + s[1]), std::min(1.0f, c[2] + s[2]), c[3]};
+}
+
 Texture::Texture(const ts::TextureDesc& d) : desc_(d) {
   if (!d.image) throw ts::Error("reference sampler: texture '" + d.name + "' has no image");
   if (d.mipmaps)
@@ -93,9 +142,15 @@ Colour Texture::texel(int d, int i, int j) const {
 // GL_CLAMP clamps the coordinate itself to [0, 1] before the texel lookup.
 static double preClamp(GLenum mode, double s) { return mode == GL_CLAMP ? std::clamp(s, 0.0, 1.0) : s; }
 
+Colour Texture::texelNearest(int d, int i, int j) const {
+  const ts::Image& img = levels_[size_t(d)];
+  return texel(d, desc_.wrapS == GL_CLAMP ? wrapTexelNearest(GL_CLAMP, i, img.width) : i,
+               desc_.wrapT == GL_CLAMP ? wrapTexelNearest(GL_CLAMP, j, img.height) : j);
+}
+
 Colour Texture::nearest(int d, double s, double t) const {
   double u = preClamp(desc_.wrapS, s) * width(d), v = preClamp(desc_.wrapT, t) * height(d);
-  return texel(d, int(std::floor(u)), int(std::floor(v)));
+  return texelNearest(d, int(std::floor(u)), int(std::floor(v)));
 }
 
 Colour Texture::linear(int d, double s, double t) const {
@@ -148,7 +203,7 @@ void Texture::levelValues(GLenum filter, int d, double s, double t, double epsN,
       Box b{{2, 2, 2, 2}, {-1, -1, -1, -1}};
       for (int j = int(std::floor(v - epsN)); j <= int(std::floor(v + epsN)); ++j)
         for (int i = int(std::floor(u - epsN)); i <= int(std::floor(u + epsN)); ++i) {
-          Colour c = texel(d, i, j);
+          Colour c = texelNearest(d, i, j);
           for (size_t k = 0; k < 4; ++k) b.lo[k] = std::min(b.lo[k], c[k]), b.hi[k] = std::max(b.hi[k], c[k]);
         }
       out->push_back(b);
@@ -159,7 +214,7 @@ void Texture::levelValues(GLenum filter, int d, double s, double t, double epsN,
     size_t first = out->size();
     for (int a = 0; a < (is[0] == is[1] ? 1 : 2); ++a)
       for (int b = 0; b < (js[0] == js[1] ? 1 : 2); ++b) {
-        Colour c = texel(d, is[a], js[b]);
+        Colour c = texelNearest(d, is[a], js[b]);
         bool dup = false;
         for (size_t k = first; k < out->size() && !dup; ++k) dup = (*out)[k].lo == c;
         if (!dup) out->push_back(Box::point(c));

@@ -39,7 +39,10 @@ ts::Rgba toRgba(const Colour& c);  // round to nearest, clamped
 double wrapCoordSeed(GLenum mode, double s);
 // GL's integer wrap of a texel index for a level `size` texels wide.  For
 // GL_CLAMP_TO_BORDER (and GL_CLAMP) the result may be -1 or `size`, meaning
-// the border colour.
+// the border colour.  GL_CLAMP here is its GL_LINEAR row of the
+// compatibility profile's table 8.20 (clamp(coord, -1, size)); with
+// GL_NEAREST it is clamp(coord, 0, size - 1): wrapTexelNearest.
+int wrapTexelNearest(GLenum mode, int i, int size);
 int wrapTexel(GLenum mode, int i, int size);
 
 // The screen-space derivatives of (s, t) at a pixel (normalised texture
@@ -66,6 +69,8 @@ class Texture {
   bool mipmapped() const;  // the min filter uses mip levels
   // Texel (i, j) of level d after wrapping (border colour outside).
   Colour texel(int d, int i, int j) const;
+  // The same for a GL_NEAREST lookup (GL_CLAMP wraps differently there).
+  Colour texelNearest(int d, int i, int j) const;
   // Level d's filter at (s, t): the exact value.
   Colour nearest(int d, double s, double t) const;
   Colour linear(int d, double s, double t) const;
@@ -90,6 +95,22 @@ class Texture {
   std::vector<ts::Image> levels_;
   std::vector<Box> ranges_;
 };
+
+// The texture environment of OpenGL 1.x (GL 2.1 §3.8.13, table 3.22), for
+// an RGBA texture: the fragment's primary colour `f` (Cf, Af), the texel
+// `t` (Ct, At) and GL_TEXTURE_ENV_COLOR `c` (Cc):
+//   GL_REPLACE   C = Ct                    A = At
+//   GL_MODULATE  C = Cf Ct                 A = Af At
+//   GL_DECAL     C = Cf (1 - At) + Ct At   A = Af
+//   GL_BLEND     C = Cf (1 - Ct) + Cc Ct   A = Af At
+//   GL_ADD       C = min(1, Cf + Ct)       A = Af At
+Colour texEnv(GLenum mode, const Colour& f, const Colour& t, const Colour& c);
+// The same over boxes of fragment and texel colours: each channel is
+// multilinear in (Cf, Ct, Af, At), so its extremes lie on the corners.
+Box texEnvBox(GLenum mode, const Box& f, const Box& t, const Colour& c);
+bool texEnvModelled(GLenum mode);
+// GL_COLOR_SUM: the secondary colour added to RGB after texturing, clamped.
+Colour colourSum(const Colour& c, const Colour& secondary);
 
 // Combines two sets of level values with blend weights f in [f0, f1]:
 // (1 - f) a + f b for every pair, as boxes.

@@ -153,6 +153,7 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
   if (name == "texel_index") return ts::texelIndexTexture(intParam(p, "size", name));
   if (name == "labelled_grid") return ts::labelledGrid(intParam(p, "size", name), intParam(p, "cells", name));
   if (name == "mip_level_colours") return ts::mipLevelColours(intParam(p, "size", name));
+  if (name == "gradient") return ts::gradientTexture(intParam(p, "width", name), intParam(p, "height", name), strParam(p, "alpha", name) == "ramp");
   if (name == "file") {
     std::string path = strParam(p, "path", name);
     if (!baseDir.empty() && !path.empty() && path[0] != '/') path = baseDir + "/" + path;
@@ -161,7 +162,7 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
     return t;
   }
   throw ts::Error("sidecar: unknown texture generator '" + name +
-                  "' (known: checkerboard, texel_index, labelled_grid, mip_level_colours, file)");
+                  "' (known: checkerboard, texel_index, labelled_grid, mip_level_colours, gradient, file)");
 }
 
 static SidecarScene read(const std::string& jsonText, const std::string& baseDir) {
@@ -317,6 +318,11 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
       if (const Json* ps = find(bv, "point_size")) b.pointSize = float(number(*ps, bw));
       else if (b.prim == ts::Prim::Points) out.missing.push_back(bw + ".point_size");
       if (const Json* bl = find(bv, "blend")) b.blend = boolean(*bl, bw + ".blend");
+      // Optional (absent = GL's defaults): GL_TEXTURE_ENV_COLOR, the texture
+      // matrix, GL_COLOR_SUM with each vertex's secondary colour.
+      if (const Json* ec = find(bv, "tex_env_color")) b.envColor = vec<4>(*ec, bw + ".tex_env_color");
+      if (const Json* tm = find(bv, "texture_matrix")) b.textureMatrix = mat(*tm, bw + ".texture_matrix");
+      if (const Json* cs = find(bv, "color_sum")) b.colorSum = boolean(*cs, bw + ".color_sum");
       const Json& verts = member(bv, "vertices", bw);
       for (size_t vi = 0; vi < array(verts, bw + ".vertices").size(); ++vi) {
         const Json& vv = verts[vi];
@@ -325,6 +331,7 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
         x.pos = vec<3>(member(vv, "pos", vw), vw + ".pos");
         if (const Json* t = find(vv, "tex")) x.tex = vec<4>(*t, vw + ".tex");
         if (const Json* c = find(vv, "color")) x.color = vec<4>(*c, vw + ".color");
+        if (const Json* c = find(vv, "secondary")) x.secondary = vec<3>(*c, vw + ".secondary");
         b.vertices.push_back(x);
       }
       p.batches.push_back(std::move(b));

@@ -72,17 +72,28 @@ void legalAt(const Reference& r, int x, int y, const VerifyOptions& o, std::vect
         *why = c.why;
         out.clear();
         return;
-      case Candidate::Kind::Flat: out.push_back(widen(c.colour, o.colourEps)); break;
+      case Candidate::Kind::Flat: {
+        Box b = widen(c.colour, o.colourEps);
+        if (c.colorSum) {
+          Box sec = widen(c.secondary, o.colourEps);
+          b.lo = colourSum(b.lo, sec.lo), b.hi = colourSum(b.hi, sec.hi);
+        }
+        out.push_back(b);
+        break;
+      }
       case Candidate::Kind::Textured: {
         const Texture& t = r.textures()[size_t(c.texture)];
         double jitter = o.positionEpsPixels * double(c.rho);
         size_t first = out.size();
         t.legal(c.s, c.t, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter, o.linearEpsTexels + jitter, &out);
-        if (c.modulate) {
+        if (c.env != GL_REPLACE) {  // the environment's table over the boxes (exact for GL_MODULATE as before)
           Box col = widen(c.colour, o.colourEps);
+          for (size_t k = first; k < out.size(); ++k) out[k] = texEnvBox(c.env, col, out[k], c.envColour);
+        }
+        if (c.colorSum) {  // monotone in both: the sum of the boxes' ends
+          Box sec = widen(c.secondary, o.colourEps);
           for (size_t k = first; k < out.size(); ++k)
-            for (size_t ch = 0; ch < 4; ++ch)
-              out[k].lo[ch] *= col.lo[ch], out[k].hi[ch] *= col.hi[ch];
+            out[k].lo = colourSum(out[k].lo, sec.lo), out[k].hi = colourSum(out[k].hi, sec.hi);
         }
         break;
       }

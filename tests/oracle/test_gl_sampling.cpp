@@ -213,3 +213,129 @@ TEST(GLRasterization, CentreEdgesAreLegalOnEveryRasterizer) {
   EXPECT_EQ(r.invalid, 0) << r.summary();
 }
 }  // namespace
+
+// Issue 16: GL_CLAMP (the compatibility profile's clamp, border blended in
+// by GL_LINEAR), with pixel centres also exactly at integer s: each column
+// of the quad has one constant s, from -2 to 3 in steps of 1/4.
+TEST(GLSampling, LegacyClampAndIntegerCoordinates) {
+  for (GLenum wrap : {GL_CLAMP, GL_MIRRORED_REPEAT, GL_CLAMP_TO_BORDER, GL_REPEAT, GL_CLAMP_TO_EDGE})
+    for (GLenum filter : {GL_NEAREST, GL_LINEAR}) {
+      std::string n = std::string("integers_") + std::to_string(wrap) + "_" + name(filter);
+      SCOPED_TRACE(n);
+      ts::Frame f = wrapFrame(wrap, filter);
+      ts::Image img = oracle::render(f);
+      ref::VerifyResult r = ref::verifyImage(img, f, oracle::options(n, "sampling"));
+      EXPECT_EQ(r.invalid, 0) << r.summary();
+      // Columns of constant s: 21 one-pixel-wide quads.
+      ts::Frame g;
+      g.width = 21, g.height = 8;
+      ts::TextureDesc t = oracle::colourful(8);
+      t.wrapS = t.wrapT = wrap;
+      t.minFilter = t.magFilter = filter;
+      t.border = {1.0f, 0.5f, 0.0f, 1.0f};
+      int tex = g.addTexture(t);
+      ts::Panel p = oracle::unitPanel(21, 8);
+      for (int k = 0; k < 21; ++k) {
+        float s = -2.0f + 0.25f * float(k);
+        p.batches.push_back(oracle::quad({k / 21.0f, 0}, {(k + 1) / 21.0f, 1}, {s, 0.3f}, {s, 0.8f}, tex));
+      }
+      g.panels.push_back(p);
+      ref::VerifyOptions o = oracle::options(n + "_columns", "sampling");
+      ref::VerifyResult c = ref::verifyImage(oracle::render(g), g, o);
+      EXPECT_EQ(c.invalid, 0) << c.summary();
+      EXPECT_GT(c.checked, 21 * 8 / 2) << c.summary();
+    }
+  // GL_CLAMP with GL_LINEAR is not GL_CLAMP_TO_EDGE (the border shows).
+  ts::Frame f = wrapFrame(GL_CLAMP, GL_LINEAR);
+  ref::VerifyResult bad = ref::verifyImage(oracle::render(f), wrapFrame(GL_CLAMP_TO_EDGE, GL_LINEAR),
+                                           oracle::options("clamp_as_clamp_to_edge", "sampling_negative"));
+  EXPECT_GT(bad.invalid, bad.checked / 5) << bad.summary();
+}
+
+// The texture environments with vertex colours, an RGBA texture whose alpha
+// varies and GL_TEXTURE_ENV_COLOR; each against the reference's table, and
+// each told as GL_MODULATE must fail.
+TEST(GLSampling, TextureEnvironments) {
+  for (GLenum env : {GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD}) {
+    SCOPED_TRACE(env);
+    ts::Frame f;
+    f.width = f.height = 160;
+    ts::TextureDesc t = ts::gradientTexture(8, 8, true);
+    t.minFilter = t.magFilter = GL_NEAREST;
+    int tex = f.addTexture(t);
+    ts::Panel p = oracle::unitPanel(160, 160);
+    ts::Batch b = oracle::quad({0.05f, 0.05f}, {0.95f, 0.95f}, {0, 0}, {1, 1}, tex, env);
+    const glm::vec4 cols[] = {{0.9f, 0.3f, 0.2f, 1}, {0.2f, 0.8f, 0.4f, 0.6f}, {0.3f, 0.3f, 1, 0.8f}};
+    for (size_t i = 0; i < b.vertices.size(); ++i) b.vertices[i].color = cols[i % 3];
+    b.envColor = {0.1f, 0.6f, 0.95f, 1.0f};
+    p.batches.push_back(b);
+    f.panels.push_back(p);
+    ts::Image img = oracle::render(f);
+    ref::VerifyResult r = ref::verifyImage(img, f, oracle::options("env_" + std::to_string(env), "sampling"));
+    EXPECT_EQ(r.invalid, 0) << r.summary();
+    EXPECT_GT(r.textured, 160 * 160 / 2) << r.summary();
+    if (env == GL_MODULATE) continue;
+    ts::Frame g = f;
+    g.panels[0].batches[0].texEnv = GL_MODULATE;
+    ref::VerifyResult bad = ref::verifyImage(img, g, oracle::options("env_as_modulate", "sampling_negative"));
+    EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
+  }
+}
+
+// The texture matrix (glMatrixMode(GL_TEXTURE)): rotated, sheared, shifted
+// and projective (q row), applied by the reference per vertex; the same
+// picture described without it must fail.
+TEST(GLSampling, TextureMatrix) {
+  glm::mat4 m(1.0f);
+  m = glm::translate(m, glm::vec3(0.3f, -0.2f, 0.0f));
+  m = glm::rotate(m, glm::radians(35.0f), glm::vec3(0, 0, 1));
+  m[1][0] += 0.4f;  // shear
+  glm::mat4 projective = m;
+  projective[0][3] = 0.5f;  // q = 1 + s/2
+  for (const glm::mat4& tm : {m, projective}) {
+    ts::Frame f;
+    f.width = f.height = 160;
+    ts::TextureDesc t = ts::checkerboard(32, 8);
+    t.minFilter = t.magFilter = GL_NEAREST;
+    t.wrapS = GL_MIRRORED_REPEAT;
+    int tex = f.addTexture(t);
+    ts::Panel p = oracle::unitPanel(160, 160);
+    ts::Batch b = oracle::quad({0, 0}, {1, 1}, {-0.5f, -0.5f}, {1.5f, 1.5f}, tex);
+    b.textureMatrix = tm;
+    p.batches.push_back(b);
+    f.panels.push_back(p);
+    ts::Image img = oracle::render(f);
+    ref::VerifyResult r = ref::verifyImage(img, f, oracle::options("texture_matrix", "sampling"));
+    EXPECT_EQ(r.invalid, 0) << r.summary();
+    ts::Frame g = f;
+    g.panels[0].batches[0].textureMatrix = glm::mat4(1.0f);
+    ref::VerifyResult bad = ref::verifyImage(img, g, oracle::options("texture_matrix_as_identity", "sampling_negative"));
+    EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
+  }
+}
+
+// GL_COLOR_SUM: the secondary colour added after texturing (what
+// GL_SEPARATE_SPECULAR_COLOR does with the specular term).
+TEST(GLSampling, ColourSumAfterTexturing) {
+  ts::Frame f;
+  f.width = f.height = 120;
+  ts::TextureDesc t = ts::checkerboard(16, 4, {20, 20, 20, 255}, {120, 60, 30, 255});
+  t.minFilter = t.magFilter = GL_NEAREST;
+  int tex = f.addTexture(t);
+  ts::Panel p = oracle::unitPanel(120, 120);
+  ts::Batch b = oracle::quad({0, 0}, {1, 1}, {0, 0}, {1, 1}, tex, GL_MODULATE);
+  b.colorSum = true;
+  for (size_t i = 0; i < b.vertices.size(); ++i) {
+    b.vertices[i].color = {0.8f, 0.8f, 0.8f, 1};
+    b.vertices[i].secondary = glm::vec3(0.7f * b.vertices[i].pos.x * b.vertices[i].pos.y);
+  }
+  p.batches.push_back(b);
+  f.panels.push_back(p);
+  ts::Image img = oracle::render(f);
+  ref::VerifyResult r = ref::verifyImage(img, f, oracle::options("color_sum", "sampling"));
+  EXPECT_EQ(r.invalid, 0) << r.summary();
+  ts::Frame g = f;
+  g.panels[0].batches[0].colorSum = false;
+  ref::VerifyResult bad = ref::verifyImage(img, g, oracle::options("color_sum_off", "sampling_negative"));
+  EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
+}

@@ -226,4 +226,84 @@ TEST(Legal, BlendBoxes) {
   EXPECT_NEAR(out[0].lo[0], 0.25, 1e-6);
   EXPECT_NEAR(out[0].hi[0], 0.5, 1e-6);
 }
+// At integer coordinates, where the wrap modes part (issue 16): u = s N is a
+// texel boundary and GL_NEAREST takes floor(u), wrapped.  The 2x2 `tiny`:
+// row t = 0.25 is black (i = 0), white (i = 1); the border is green.
+TEST(Wrap, NearestAtIntegerCoordinates) {
+  const Colour black{0, 0, 0, 1}, white{1, 1, 1, 1}, green{0, 1, 0, 1};
+  struct Case {
+    GLenum mode;
+    double s;
+    Colour want;
+  } cases[] = {
+      // REPEAT: i mod 2; s = 1 starts the next copy.
+      {GL_REPEAT, 0.0, black}, {GL_REPEAT, 1.0, black}, {GL_REPEAT, -1.0, black}, {GL_REPEAT, 2.0, black},
+      // MIRRORED_REPEAT: s = 1 is the start of the mirrored copy (its first
+      // texel is the last one), s = 2 the start of the next forward copy,
+      // s = -1 the start (from below) of the mirrored copy before 0.
+      {GL_MIRRORED_REPEAT, 0.0, black}, {GL_MIRRORED_REPEAT, 1.0, white}, {GL_MIRRORED_REPEAT, 2.0, black},
+      {GL_MIRRORED_REPEAT, -1.0, white}, {GL_MIRRORED_REPEAT, 3.0, white},
+      // CLAMP_TO_EDGE: s = 1 is clamped to the last texel.
+      {GL_CLAMP_TO_EDGE, 1.0, white}, {GL_CLAMP_TO_EDGE, 0.0, black}, {GL_CLAMP_TO_EDGE, -1.0, black},
+      // CLAMP_TO_BORDER: u = N is index N, outside: the border (also for NEAREST).
+      {GL_CLAMP_TO_BORDER, 1.0, green}, {GL_CLAMP_TO_BORDER, 0.0, black}, {GL_CLAMP_TO_BORDER, -1.0, green},
+      // CLAMP with NEAREST: s clamped to [0, 1], then clamp(i, 0, N - 1): never the border.
+      {GL_CLAMP, 1.0, white}, {GL_CLAMP, 2.0, white}, {GL_CLAMP, 0.0, black}, {GL_CLAMP, -1.0, black},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(std::to_string(c.mode) + " s=" + std::to_string(c.s));
+    ref::Texture tex(tiny(c.mode, GL_NEAREST));
+    expectColour(tex.nearest(0, c.s, 0.25), c.want);
+    expectColour(tex.sample(c.s, 0.25, -1.0), c.want);  // through the full filter path
+  }
+  // The seed's MIRROR returns the opposite edge at every integer.
+  EXPECT_DOUBLE_EQ(ref::wrapCoordSeed(GL_MIRRORED_REPEAT, 1.0), 0.0);
+  EXPECT_DOUBLE_EQ(ref::wrapCoordSeed(GL_MIRRORED_REPEAT, 2.0), 1.0);
+  EXPECT_DOUBLE_EQ(ref::wrapCoordSeed(GL_MIRRORED_REPEAT, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(ref::wrapCoordSeed(GL_MIRRORED_REPEAT, -1.0), 0.0);
+}
+
+// GL_CLAMP with GL_LINEAR: s clamped to [0, 1], and at s = 0 and s = 1 (so
+// everywhere outside) the footprint is half border, half edge texel.
+TEST(Wrap, ClampLinearBlendsHalfTheBorder) {
+  ref::Texture l(tiny(GL_CLAMP, GL_LINEAR));
+  expectColour(l.linear(0, 0.0, 0.25), {0, 0.5f, 0, 1});     // black edge texel + green border
+  expectColour(l.linear(0, -3.0, 0.25), {0, 0.5f, 0, 1});    // clamped to 0 first
+  expectColour(l.linear(0, 1.0, 0.25), {0.5f, 1, 0.5f, 1});  // white + green
+  expectColour(l.linear(0, 7.0, 0.25), {0.5f, 1, 0.5f, 1});
+  ref::Texture b(tiny(GL_CLAMP_TO_BORDER, GL_LINEAR));
+  expectColour(b.linear(0, -3.0, 0.25), {0, 1, 0, 1});  // all border outside
+}
+
+// The texture environment's table on a grid of fragment colours x texel
+// colours x alphas, against the formulas written out here again.
+TEST(TexEnv, TableOnAGrid) {
+  const float vals[] = {0.0f, 0.25f, 0.6f, 1.0f};
+  const Colour env{0.2f, 0.7f, 0.9f, 0.5f};
+  for (float f : vals)
+    for (float t : vals)
+      for (float fa : vals)
+        for (float ta : vals) {
+          Colour cf{f, 1 - f, 0.5f, fa}, ct{t, 0.3f, 1 - t, ta};
+          for (size_t k = 0; k < 3; ++k) {
+            EXPECT_FLOAT_EQ(ref::texEnv(GL_REPLACE, cf, ct, env)[k], ct[k]);
+            EXPECT_FLOAT_EQ(ref::texEnv(GL_MODULATE, cf, ct, env)[k], cf[k] * ct[k]);
+            EXPECT_FLOAT_EQ(ref::texEnv(GL_DECAL, cf, ct, env)[k], cf[k] * (1 - ta) + ct[k] * ta);
+            EXPECT_FLOAT_EQ(ref::texEnv(GL_BLEND, cf, ct, env)[k], cf[k] * (1 - ct[k]) + env[k] * ct[k]);
+            EXPECT_FLOAT_EQ(ref::texEnv(GL_ADD, cf, ct, env)[k], std::min(1.0f, cf[k] + ct[k]));
+          }
+          EXPECT_FLOAT_EQ(ref::texEnv(GL_REPLACE, cf, ct, env)[3], ta);
+          EXPECT_FLOAT_EQ(ref::texEnv(GL_DECAL, cf, ct, env)[3], fa);
+          for (GLenum m : {GL_MODULATE, GL_BLEND, GL_ADD}) EXPECT_FLOAT_EQ(ref::texEnv(m, cf, ct, env)[3], fa * ta);
+          // The box of a point is the point.
+          for (GLenum m : {GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD}) {
+            ref::Box b = ref::texEnvBox(m, ref::Box::point(cf), ref::Box::point(ct), env);
+            Colour v = ref::texEnv(m, cf, ct, env);
+            for (size_t k = 0; k < 4; ++k) {
+              EXPECT_FLOAT_EQ(b.lo[k], v[k]);
+              EXPECT_FLOAT_EQ(b.hi[k], v[k]);
+            }
+          }
+        }
+}
 }  // namespace

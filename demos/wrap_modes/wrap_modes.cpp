@@ -1,0 +1,367 @@
+// Wrap modes, the texture matrix and the texture environment, measured
+// (Buss VI.4; seeds 001, 002).
+//
+// The claim: outside the unit square, what a texture shows is one
+// glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S/T, mode) call, and each
+// mode is a formula on the texel index (wrap_math.hpp, from the spec's table
+// 8.20): GL_REPEAT i mod N; GL_MIRRORED_REPEAT (N-1) - mirror((i mod 2N) - N);
+// GL_CLAMP_TO_EDGE clamp(i, 0, N-1); GL_CLAMP_TO_BORDER clamp(i, -1, N) with
+// the border colour outside; GL_CLAMP clamps s to [0,1], and GL_LINEAR then
+// blends the border in: half of it at s = 0 and s = 1 (the dark seam),
+// where GL_CLAMP_TO_EDGE blends none and GL_CLAMP_TO_BORDER all of it
+// outside.  Seed 002's MIRROR program agrees with GL_MIRRORED_REPEAT except
+// at integer s, where it returns the opposite edge.  The texture matrix
+// (glMatrixMode(GL_TEXTURE); glLoadMatrixf) moves (s,t) before all of it:
+// (s', t', r', q') = M (s, t, r, q), here T(shift) R(angle) Sh(shear) S(scale)
+// about the texture's centre.  The texture environment (glTexEnvi(
+// GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, mode)) combines fragment colour Cf and
+// texel Ct (GL 2.1 table 3.22, RGBA): REPLACE Ct; MODULATE Cf Ct; DECAL
+// Cf (1 - At) + Ct At; BLEND Cf (1 - Ct) + Cc Ct (Cc = GL_TEXTURE_ENV_COLOR);
+// ADD Cf + Ct.  GL_MODULATE after lighting darkens the highlight under a
+// dark texel; GL_SEPARATE_SPECULAR_COLOR adds the specular after texturing.
+//
+// Keys (each is also a flag, see --help):
+//   v  view: modes (5 modes x nearest/linear) | single | matrix | env
+//   e  texture environment (single view)   p  separate specular colour (env view)
+//   s / t  wrap mode of s / of t (single and matrix views)   f  nearest | linear
+//   + / -  range: (s,t) run from -range to 1 + range          n  a 7x5 texture (NPOT)
+//   ] / [  } / {  shift s / t of the texture matrix   r / R  rotate   > / <  scale   k / K  shear
+//   a  animate the rotation
+//
+// Measured (measure()): the quad drawn again with a texture whose texels hold
+// their indices (common/textures.hpp), every pixel's texel against the
+// formula, with pixel centres a quarter texel inside and, in a second pass,
+// exactly at every integer s (0 mismatches each, for 8x8 and 37x23 texels);
+// the texels seed 002's MIRROR picks at the integers (all differ); the share
+// of the border colour GL_LINEAR reads at s = -1/4, 0, 1, 5/4 against the
+// formula; the texel under probe points with the texture matrix on; each
+// texture environment on a grid of fragment colours x texels x alphas
+// against the table; the highlight's peak with and without
+// GL_SEPARATE_SPECULAR_COLOR.  The passes are in wrap_passes.hpp.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <map>
+
+#include "common/error.hpp"
+#include "common/layout.hpp"
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "common/textures.hpp"
+#include "wrap_math.hpp"
+#include "wrap_passes.hpp"
+
+namespace {
+const GLenum kModes[] = {GL_REPEAT, GL_MIRRORED_REPEAT, GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER};
+const char* const kModeNames[] = {"repeat", "mirrored", "clamp", "edge", "border"};
+const GLenum kEnvs[] = {GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD};
+const char* const kEnvNames[] = {"replace", "modulate", "decal", "blend", "add"};
+const char* const kEnvGL[] = {"GL_REPLACE", "GL_MODULATE", "GL_DECAL", "GL_BLEND", "GL_ADD"};
+const glm::vec4 kEnvColour{0.2f, 0.6f, 1.0f, 1.0f};  // GL_TEXTURE_ENV_COLOR for GL_BLEND
+const char* const kModeGL[] = {"GL_REPEAT", "GL_MIRRORED_REPEAT", "GL_CLAMP", "GL_CLAMP_TO_EDGE", "GL_CLAMP_TO_BORDER"};
+const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kSquare{1.0f, 0.85f, 0.1f, 1.0f}, kGrid{0.55f, 0.55f, 0.6f, 1.0f},
+    kMeasured{1.0f, 0.75f, 0.3f, 1.0f}, kBorderColour{0.85f, 0.1f, 0.75f, 1.0f};
+using ts::layout::fmt;
+using wrappass::stQuad;
+
+// What measure() found, for the captions.
+struct Found {
+  std::map<int, int> mismatches;      // mode index -> texel mismatches (both passes, both sizes)
+  std::map<int, double> borderAt0;    // mode index -> % border at s = 0 (linear)
+  int seedDiffers = 0, integers = 0;  // seed 002's MIRROR vs GL at integer s
+  int matrixMismatches = -1;
+  int envMismatches = -1;
+  double peak[2] = {-1, -1};  // the highlight's peak (mean of R, G, B): specular in the primary colour | separate
+};
+
+class WrapModes final : public ts::Scene {
+ public:
+  std::string id() const override { return "wrap_modes"; }
+  std::string title() const override { return "Wrap modes and the texture matrix (Buss VI.4)"; }
+  std::string about() const override {
+    return "A quad whose (s,t) run past the unit square, drawn with each wrap mode (GL_REPEAT, GL_MIRRORED_REPEAT,\n"
+           "GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER) and filter, and with a texture matrix.  Measured from\n"
+           "renders whose pixels name their texels: every pixel against the spec's wrap formula (also at integer s),\n"
+           "seed 002's MIRROR program against GL_MIRRORED_REPEAT, the border share of GL_LINEAR at the edges.";
+  }
+  std::vector<std::string> claim() const override { return {"wrap_texel_mismatches", "seed_mirror_differs"}; }
+  void addOptions(ts::Options& o) override {
+    o.addEnum("view", &view_, {"modes", "single", "matrix", "env"},
+              "modes: 5 modes x 2 filters; single: one state; matrix: the texture matrix; env: the texture environments", 'v');
+    o.addEnum("env", &env_, std::vector<std::string>(kEnvNames, kEnvNames + 5),
+              "texture environment of the single view's quad (on vertex colours)", 'e');
+    o.addBool("separate-specular", &separate_, "env view, last panel: GL_SEPARATE_SPECULAR_COLOR (specular added after texturing)", 'p');
+    o.addEnum("wrap-s", &wrapS_, std::vector<std::string>(kModeNames, kModeNames + 5), "wrap mode of s (single and matrix views)", 's');
+    o.addEnum("wrap-t", &wrapT_, std::vector<std::string>(kModeNames, kModeNames + 5), "wrap mode of t (single and matrix views)", 't');
+    o.addEnum("filter", &filter_, {"nearest", "linear"}, "texture filter (single and matrix views)", 'f');
+    o.addFloat("range", &range_, 0.0f, 3.0f, "(s,t) run from -range to 1 + range", '+', '-', 0.5f);
+    o.addBool("npot", &npot_, "a 7x5 texture instead of 8x8 (non-power-of-two)", 'n');
+    o.addFloat("shift", &xf_.shift.x, -1.0f, 1.0f, "texture matrix: shift of s", ']', '[', 0.125f);
+    o.addFloat("shift-t", &xf_.shift.y, -1.0f, 1.0f, "texture matrix: shift of t", '}', '{', 0.125f);
+    o.addFloat("rotate", &xf_.angleDeg, -180.0f, 180.0f, "texture matrix: rotation of (s,t) in degrees", 'r', 'R', 15.0f);
+    o.addFloat("scale", &xf_.scale.x, 0.25f, 4.0f, "texture matrix: scale of s and t", '>', '<', 0.25f);
+    o.addFloat("shear", &xf_.shear, -2.0f, 2.0f, "texture matrix: shear, s += shear t", 'k', 'K', 0.25f);
+    o.addBool("animate", &animate_, "turn the texture matrix's rotation (window)", 'a');
+    o.addText("texture", &texturePath_, "a PNG or BMP file to wrap instead of the gradient", [this](const std::string& v) {
+      if (v.empty()) throw ts::Error("--texture: the file name is empty");
+      fileTexture_ = ts::fileTexture(v);
+    });
+  }
+  std::vector<ts::FigureSpec> figures() const override {
+    return {{"wrap_modes", "Buss VI.4 (seeds 001, 002)",
+             "An 8x8 texture on a quad whose (s,t) run from -1 to 2, with the five wrap modes (columns) and GL_NEAREST "
+             "/ GL_LINEAR (rows); the unit square is outlined, the border colour is magenta. GL_CLAMP with GL_LINEAR "
+             "blends half the border in along the square's edges; GL_CLAMP_TO_EDGE none.",
+             {"--view", "modes"}, 1280, 640},
+            {"texture_matrix", "Buss VI.4 (seed 001)",
+             "The texture matrix: (s,t) rotated by 30 degrees, scaled by 1.5 and sheared by 0.25 about the texture's "
+             "centre (glMatrixMode(GL_TEXTURE)). Left: texture space with the image of the unit square; right: the quad.",
+             {"--view", "matrix", "--rotate", "30", "--scale", "1.5", "--shear", "0.25", "--wrap-s", "mirrored"}, 1024, 512},
+            {"texture_environment", "Buss VI.4 (texture environment)",
+             "A plane lit per vertex (orange, a white highlight) under an RGBA texture, combined by each texture "
+             "environment (GL_BLEND with GL_TEXTURE_ENV_COLOR light blue; GL_DECAL's texture has an alpha ramp). "
+             "GL_MODULATE multiplies the highlight by the texel; GL_SEPARATE_SPECULAR_COLOR adds it after texturing.",
+             {"--view", "env"}, 1200, 520}};
+  }
+  // The animation turns the `rotate` option itself, 30 degrees a second, so
+  // the window keeps drawing and F12 saves the state it shows; the frame the
+  // key is taken on is left still, so the state line printed for the key is
+  // the state the key made.
+  void update(double seconds) override {
+    if (!animate_) animFrames_ = 0;
+    else if (++animFrames_ > 1) xf_.angleDeg = float(std::remainder(xf_.angleDeg + 30.0 * seconds, 360.0));
+  }
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
+  ts::Measurements measure(ts::Renderer& r) override;
+
+ private:
+  ts::TextureDesc texture(GLenum s, GLenum t, bool linear) const {
+    ts::TextureDesc d = texturePath_.empty() ? ts::gradientTexture(npot_ ? 7 : 8, npot_ ? 5 : 8) : fileTexture_;
+    d.wrapS = s, d.wrapT = t;
+    d.minFilter = d.magFilter = linear ? GL_LINEAR : GL_NEAREST;
+    d.border = kBorderColour;
+    return d;
+  }
+  glm::mat4 matrix() const {
+    wrapmath::TexTransform x = xf_;
+    x.scale.y = x.scale.x;
+    return wrapmath::textureMatrix(x);
+  }
+  // The texture-space picture: the quad over [lo, hi]^2, the integer grid,
+  // the unit square (or its image under the texture matrix).
+  void addTextureSpace(ts::Frame& f, const ts::Rect& vp, const std::string& id, int tex, bool matrixOutline) const;
+
+  // The environment view: a plane lit per vertex (wrap_math.hpp's phong)
+  // under the RGBA texture, in mode `env`; `separate` sends the specular part
+  // as the secondary colour (GL_COLOR_SUM), else it is in the primary colour.
+  ts::Frame envFrame(int width, int height, const Found* found) const;
+  int view_ = 0, wrapS_ = 1, wrapT_ = 1, filter_ = 0, env_ = 0;
+  bool separate_ = true;
+  float range_ = 1.0f;
+  bool npot_ = false, animate_ = false;
+  long animFrames_ = 0;
+  wrapmath::TexTransform xf_;
+  std::string texturePath_;
+  ts::TextureDesc fileTexture_;
+};
+
+void WrapModes::addTextureSpace(ts::Frame& f, const ts::Rect& vp, const std::string& id, int tex, bool matrixOutline) const {
+  const float lo = -range_, hi = 1.0f + range_;
+  ts::Panel p;
+  p.id = id;
+  p.viewport = vp;
+  // A whole number of pixels per texel where the picture is larger than the
+  // texels it shows: then no texel edge passes through a pixel centre, where
+  // GL may take either texel (and OSMesa and EGL do differ there).
+  const ts::TextureDesc& t = f.textures[size_t(tex)];
+  const int tw = int(std::lround(t.image ? t.image->width * (hi - lo) : 0.0)),
+            th = int(std::lround(t.image ? t.image->height * (hi - lo) : 0.0));
+  if (tw > 0 && th > 0 && tw <= vp.w && th <= vp.h) {
+    p.viewport.w = vp.w / tw * tw, p.viewport.h = vp.h / th * th;
+    p.viewport.x += (vp.w - p.viewport.w) / 2, p.viewport.y += (vp.h - p.viewport.h) / 2;
+  }
+  p.projection = glm::ortho(lo, hi, lo, hi, -1.0f, 1.0f);
+  p.batches.push_back(stQuad({lo, lo}, {hi, hi}, {lo, lo}, {hi, hi}, tex));
+  std::vector<glm::vec2> grid;
+  for (int k = int(std::ceil(lo)); k <= int(std::floor(hi)); ++k)
+    grid.insert(grid.end(), {{float(k), lo}, {float(k), hi}, {lo, float(k)}, {hi, float(k)}});
+  p.batches.push_back(ts::lineSegments(grid, kGrid, 1.0f, "integer_grid"));
+  std::vector<glm::vec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  if (matrixOutline)  // where the quad's corners land in texture space: M (s, t, 0, 1)
+    for (auto& c : square) c = glm::vec2(wrapmath::transformST(matrix(), c.x, c.y));
+  p.batches.push_back(ts::lineLoop(square, kSquare, 2.0f, "unit_square"));
+  f.panels.push_back(p);
+}
+
+ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measured) const {
+  namespace L = ts::layout;
+  ts::Frame f;
+  f.width = width, f.height = height;
+  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  const Found* found = measured.detailAs<Found>();
+  const L::Box area{6, 6, float(width) - 6, float(height) - 6};
+  if (view_ == 0) {  // the book figure: columns = modes, rows = filters
+    L::FlowSpec spec;
+    spec.n = 10, spec.linesAbove = 1, spec.linesBelow = 1, spec.gap = 8;
+    std::vector<L::Cell> cells = L::flow(area, spec);
+    for (int k = 0; k < 10; ++k) {
+      const int m = k % 5;
+      const bool linear = k >= 5;
+      int tex = f.addTexture(texture(kModes[m], kModes[m], linear));
+      addTextureSpace(f, cells[size_t(k)].picture, std::string(kModeNames[m]) + (linear ? "_linear" : "_nearest"), tex, false);
+      L::caption(f, cells[size_t(k)].above, std::string(kModeGL[m]) + (linear ? " linear" : " nearest"), kWhite,
+                 cells[size_t(k)].scale);
+      std::string note;
+      if (found && linear && m >= 2) note = "border at s=0: " + fmt("%.0f%%", found->borderAt0.at(m));
+      else if (found && !linear) note = fmt("%.0f texel mismatches", found->mismatches.at(m));
+      if (!note.empty()) L::caption(f, cells[size_t(k)].below, note, kMeasured, cells[size_t(k)].scale);
+    }
+    return f;
+  }
+  if (view_ == 3) return envFrame(width, height, found);
+  const GLenum ws = kModes[wrapS_], wt = kModes[wrapT_];
+  int tex = f.addTexture(texture(ws, wt, filter_ == 1));
+  const std::string state = std::string("s ") + kModeGL[wrapS_] + ", t " + kModeGL[wrapT_];
+  if (view_ == 1) {
+    L::FlowSpec spec;
+    spec.n = 1, spec.linesAbove = 1, spec.linesBelow = 2;
+    L::Cell c = L::flow(area, spec)[0];
+    addTextureSpace(f, c.picture, "texture_space", tex, false);
+    // The quad's fragment colours run from orange to blue: the environment
+    // (key e) combines them with the texels, GL_BLEND with kEnvColour.
+    ts::Batch& q = f.panels.back().batches.front();
+    q.texEnv = kEnvs[env_];
+    q.envColor = kEnvColour;
+    for (auto& v : q.vertices) v.color = glm::mix(glm::vec4(0.95f, 0.6f, 0.2f, 1), glm::vec4(0.3f, 0.5f, 0.95f, 1), v.pos.x > 0.5f ? 1.0f : 0.0f);
+    L::caption(f, c.above, state + (filter_ ? ", linear, " : ", nearest, ") + kEnvGL[env_], kWhite, c.scale);
+    if (found)
+      L::caption(f, c.below,
+                 fmt("seed 002's MIRROR differs from GL_MIRRORED_REPEAT at %.0f", found->seedDiffers) +
+                     fmt(" of %.0f integer s (the opposite edge)", found->integers),
+                 kMeasured, c.scale);
+    return f;
+  }
+  // The texture matrix: texture space with the image of the unit square,
+  // and the quad (s,t in [0,1]) drawn with M on the texture matrix stack.
+  L::FlowSpec spec;
+  spec.n = 2, spec.linesAbove = 1, spec.linesBelow = 1;
+  std::vector<L::Cell> cells = L::flow(area, spec);
+  addTextureSpace(f, cells[0].picture, "texture_space", tex, true);
+  L::caption(f, cells[0].above, "texture space: M (unit square)", kWhite, cells[0].scale);
+  L::caption(f, cells[0].below, state, kWhite, cells[0].scale);
+  ts::Panel q;
+  q.id = "quad";
+  q.viewport = cells[1].picture;
+  q.projection = glm::ortho(-0.1f, 1.1f, -0.1f, 1.1f, -1.0f, 1.0f);
+  ts::Batch b = stQuad({0, 0}, {1, 1}, {0, 0}, {1, 1}, tex);
+  b.textureMatrix = matrix();
+  q.batches.push_back(b);
+  f.panels.push_back(q);
+  L::caption(f, cells[1].above,
+             fmt("glMatrixMode(GL_TEXTURE): rotate %.0f", xf_.angleDeg) + fmt(", scale %.2f", xf_.scale.x) +
+                 fmt(", shear %.2f", xf_.shear) + fmt(", shift %.3f", xf_.shift.x) + fmt(", %.3f", xf_.shift.y),
+             kWhite, cells[1].scale);
+  if (found && found->matrixMismatches >= 0)
+    L::caption(f, cells[1].below, fmt("%.0f probe texels differ from M applied on the CPU", found->matrixMismatches),
+               kMeasured, cells[1].scale);
+  return f;
+}
+
+ts::Frame WrapModes::envFrame(int width, int height, const Found* found) const {
+  namespace L = ts::layout;
+  ts::Frame f;
+  f.width = width, f.height = height;
+  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  L::FlowSpec spec;
+  spec.n = 6, spec.linesAbove = 1, spec.linesBelow = 1, spec.gap = 8;
+  std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
+  // The texture: RGBA with an alpha ramp for GL_DECAL (whose alpha is the
+  // fragment's, so the picture stays opaque); opaque for the others, whose
+  // alpha would be At or Af At and show the page through the figure (the
+  // measurement checks every mode's alpha on a grid instead).
+  ts::TextureDesc opaque = texture(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, true), ramp = opaque;
+  if (texturePath_.empty()) {
+    ramp = ts::gradientTexture(npot_ ? 7 : 8, npot_ ? 5 : 8, true);
+    ramp.wrapS = ramp.wrapT = GL_CLAMP_TO_EDGE;
+  }
+  const int texOpaque = f.addTexture(opaque), texRamp = f.addTexture(ramp);
+  for (int k = 0; k < 6; ++k) {
+    const GLenum env = k < 5 ? kEnvs[k] : GL_MODULATE;
+    const bool sep = k == 5 && separate_;
+    ts::Panel p;
+    p.id = k < 5 ? std::string("env_") + kEnvNames[k] : "env_separate_specular";
+    p.viewport = cells[size_t(k)].picture;
+    p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+    ts::Batch b = wrappass::litPlane(env == GL_DECAL ? texRamp : texOpaque, env, kEnvColour, sep);
+    p.batches.push_back(b);
+    f.panels.push_back(p);
+    const L::Cell& cell = cells[size_t(k)];
+    L::caption(f, cell.above, k < 5 ? kEnvGL[k] : sep ? "MODULATE + SEPARATE_SPECULAR" : "MODULATE (single colour)", kWhite,
+               cell.scale);
+    std::string note;
+    if (found && found->peak[0] >= 0 && (k == 1 || k == 5))
+      note = fmt("highlight peak %.2f", found->peak[k == 5 && separate_ ? 1 : 0]);
+    else if (found && k == 0 && found->envMismatches >= 0)
+      note = fmt("table: %.0f mismatches", found->envMismatches);
+    if (!note.empty()) L::caption(f, cell.below, note, kMeasured, cell.scale);
+  }
+  return f;
+}
+
+// Measured in small offscreen passes (wrap_passes.hpp), each read back and
+// compared with wrap_math.hpp's formulas.
+ts::Measurements WrapModes::measure(ts::Renderer& r) {
+  ts::Measurements out;
+  Found found;
+  const int lo = int(std::floor(-range_)), hi = int(std::ceil(1.0f + range_));
+  wrappass::SeedCount seed;
+  int total = 0;
+  for (int m = 0; m < 5; ++m) {
+    int bad = wrappass::texelMismatches(r, kModes[m], 8, 8, lo, hi, kModes[m] == GL_MIRRORED_REPEAT ? &seed : nullptr);
+    int npot = wrappass::texelMismatches(r, kModes[m], 37, 23, lo, hi, nullptr);
+    found.mismatches[m] = bad + npot;
+    total += bad + npot;
+    out.push_back({std::string("texel_mismatches[") + kModeNames[m] + "]", double(bad), "pixels whose texel differs from the formula (8x8)"});
+    out.push_back({std::string("npot_texel_mismatches[") + kModeNames[m] + "]", double(npot), "the same on a 37x23 texture"});
+  }
+  found.seedDiffers = seed.differs, found.integers = seed.integers;
+  out.insert(out.begin(), ts::Measurement{"wrap_texel_mismatches", double(total), "every mode, both passes and sizes: pixels whose texel differs from the spec's wrap formula"});
+  out.insert(out.begin() + 1, ts::Measurement{"seed_mirror_differs", double(seed.differs), "integer s where seed 002's MIRROR picks another texel than GL_MIRRORED_REPEAT"});
+  out.push_back({"seed_mirror_integers", double(seed.integers), "integer s compared"});
+  const char* const probeNames[] = {"-0.25", "0", "1", "1.25"};
+  for (int m = 2; m < 5; ++m) {
+    std::array<double, 4> pct = wrappass::borderPercent(r, kModes[m]);
+    found.borderAt0[m] = pct[1];
+    for (size_t k = 0; k < 4; ++k)
+      out.push_back({std::string("border_pct[") + kModeNames[m] + "@" + probeNames[k] + "]", pct[k],
+                     fmt("%% border colour read by GL_LINEAR (formula: %.0f)", 100.0 * wrapmath::borderShare(kModes[m], wrappass::kEdgeProbes[k], 8))});
+  }
+  int probes = 0;
+  found.matrixMismatches = wrappass::matrixMismatches(r, matrix(), &probes);
+  out.push_back({"texture_matrix_mismatches", double(found.matrixMismatches), "probe pixels whose texel differs from M (s,t) on the CPU"});
+  out.push_back({"texture_matrix_probes", double(probes), "probes compared (those a twentieth of a texel from an edge)"});
+  found.envMismatches = 0;
+  for (int m = 0; m < 5; ++m) {
+    int bad = wrappass::envMismatches(r, kEnvs[m], kEnvColour);
+    found.envMismatches += bad;
+    out.push_back({std::string("env_mismatches[") + kEnvNames[m] + "]", double(bad), "of 600 fragment x texel pairs: more than 1 step of 8 bits from the table"});
+  }
+  out.push_back({"env_table_mismatches", double(found.envMismatches), "every mode: pairs more than 1 step of 8 bits from the table"});
+  // The highlight: the env view without labels, the brightest pixel of the
+  // GL_MODULATE panel (specular in the primary colour) and of the same with
+  // GL_SEPARATE_SPECULAR_COLOR.
+  WrapModes v = *this;
+  for (int k = 0; k < 2; ++k) {
+    v.separate_ = k == 1;
+    ts::Frame f = v.envFrame(600, 400, nullptr);
+    f.labels.clear();
+    found.peak[k] = wrappass::peakBrightness(r.renderOffscreen(f), f.panel(k == 0 ? "env_modulate" : "env_separate_specular")->viewport);
+  }
+  out.push_back({"highlight_peak[modulate]", found.peak[0], "brightest pixel (mean RGB) with the specular in the primary colour, times the texel"});
+  out.push_back({"highlight_peak[separate_specular]", found.peak[1], "the same with GL_SEPARATE_SPECULAR_COLOR: specular added after texturing"});
+  out.detail = found;
+  return out;
+}
+}  // namespace
+
+TM_REGISTER_SCENE(WrapModes);
