@@ -6,8 +6,10 @@
 #include <backends/imgui_impl_glfw.h>
 
 #include <algorithm>
+#include <chrono>
 #include <sys/stat.h>
 
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -17,6 +19,7 @@
 #include "gl.hpp"
 #include "figure.hpp"
 #include "gl_pane.hpp"
+#include "measure_worker.hpp"
 #include "sidecar.hpp"
 #include "render.hpp"
 
@@ -83,6 +86,45 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
     default: break;
   }
 }
+
+// Test hooks (environment, tests and benchmarks only).
+// TS_TEST_FRAME_LOG=FILE: a line per event, times in seconds of the steady
+// clock (CLOCK_MONOTONIC, comparable across processes): "frame T M P" after
+// each swap (M 1 while a measurement is out, P its progress), "key T C" when
+// a key is taken, "result T" when a measurement is handed over.
+// TS_TEST_KEY_INTERVAL_MS=N: take a key at most every N ms (so --keys types
+// them while a measurement runs, as a student does), not one per frame.
+class TestLog {
+ public:
+  TestLog() {
+    const char* p = std::getenv("TS_TEST_FRAME_LOG");
+    if (p && *p) f_ = std::fopen(p, "w");
+    const char* k = std::getenv("TS_TEST_KEY_INTERVAL_MS");
+    keyInterval_ = k ? std::max(0.0, std::strtod(k, nullptr) / 1000.0) : 0.0;
+  }
+  ~TestLog() {
+    if (f_) std::fclose(f_);
+  }
+  static double clock() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  }
+  void line(const char* what, const std::string& rest = "") {
+    if (!f_) return;
+    std::fprintf(f_, "%s %.4f%s%s\n", what, clock(), rest.empty() ? "" : " ", rest.c_str());
+    std::fflush(f_);
+  }
+  bool keyDue() {
+    if (keyInterval_ <= 0) return true;
+    double now = clock();
+    if (now - lastKey_ < keyInterval_) return false;
+    lastKey_ = now;
+    return true;
+  }
+
+ private:
+  std::FILE* f_ = nullptr;
+  double keyInterval_ = 0, lastKey_ = -1e9;
+};
 
 // F12: the window's picture as PNG + sidecar under a name not yet taken
 // (<demo>-<n>.png in the working folder), and the command that remakes it.
@@ -256,6 +298,14 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
               ctx.describe().c_str(), opts.keysText().c_str());
   Measurements m;
   bool dirty = true;
+  // Measurements run on a worker thread with a context of its own (see
+  // measure_worker.hpp); the loop keeps drawing meanwhile.  If the worker
+  // cannot make a context, the loop measures itself, as it did before.
+  auto worker = std::make_unique<MeasureWorker>(scene.id(), scene.wantsAccumBuffer(), glfwPostEmptyEvent);
+  bool measuring = false;  // a request is out: the numbers shown are stale
+  double measureSince = 0; // when that request was made
+  bool measureHere = false;
+  TestLog testLog;
   GlPane pane;
   bool record = false, afterKey = false;  // the GL pane needs a new recording
   bool redraw = true;                      // draw again without waiting for an event
@@ -272,6 +322,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       // changed line of the GL pane is highlighted, wake to fade it).
       bool busy = dirty || redraw || scene.live() || !input.keys.empty() || flags.frames;
       if (busy) glfwPollEvents();
+      else if (measuring) glfwWaitEventsTimeout(1.0 / 30);  // the progress moves; the worker wakes us when done
       else if (pane.visible && glfwGetTime() - keyAt < GlPane::kHighlightSeconds + 0.1)
         glfwWaitEventsTimeout(0.25);
       else
@@ -279,8 +330,9 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       redraw = false;
       bool save = false;
       // One synthesised or typed key per frame, through the same handler.
-      if (!input.keys.empty()) {
+      if (!input.keys.empty() && testLog.keyDue()) {
         char k = input.keys.front();
+        testLog.line("key", std::string(1, std::isprint(static_cast<unsigned char>(k)) ? k : '?'));
         input.keys.erase(0, 1);
         // = is + (the same key without shift) where no option takes =.
         if (k == '=') {
@@ -312,13 +364,33 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       }
       ctx.sync();
       if (ctx.width() < 1 || ctx.height() < 1) continue;  // minimised
-      if (dirty || scene.live()) {
+      if (worker->failed() && !measureHere) {  // no context for the worker: measure here, as before
+        note("note: measuring in the window's thread (" + worker->failure() + ")");
+        measureHere = true;
+        dirty |= measuring;
+        measuring = false;
+      }
+      if (scene.live() || (dirty && measureHere)) {
+        if (measuring) worker->cancel(), measuring = false;  // a live view measures every frame itself
         m = scene.measure(renderer);
         if (dirty) {
           std::printf("%s\n%s", opts.stateText().c_str(), formatMeasurements(m).c_str());
           std::fflush(stdout);
         }
         dirty = false;
+      } else if (dirty) {
+        worker->request(opts.stateFlags(), ctx.width(), ctx.height());
+        if (!measuring) measureSince = now;
+        measuring = true;
+        dirty = false;
+      }
+      if (MeasureWorker::Result res; !scene.live() && worker->take(&res)) {
+        if (!res.error.empty()) throw Error(res.error, kExitFailure);
+        m = std::move(res.measured);
+        testLog.line("result");
+        measuring = worker->busy();
+        std::printf("%s\n%s", res.stateText.c_str(), formatMeasurements(m).c_str());
+        std::fflush(stdout);
       }
       // With the GL pane open the figure is laid out in the rest of the window.
       int paneW = pane.visible ? glPaneWidth(ctx.width()) : 0;
@@ -334,7 +406,8 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       }
       ++frame;
       if (save) saveState(scene, opts, f, ctx.readPixels());
-      bool lastFrame = flags.frames && frame >= flags.frames && input.keys.empty();
+      // --frames N (tests): the last frame shows the measurement of the last state.
+      bool lastFrame = flags.frames && frame >= flags.frames && input.keys.empty() && !measuring && !dirty;
       // The screenshot is the figure alone (it must match --png), unless
       // TS_SCREENSHOT_OVERLAY=1 asks for the window as the student sees it.
       const char* withOverlay = std::getenv("TS_SCREENSHOT_OVERLAY");
@@ -353,7 +426,14 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         for (const auto& [name, value] : opts.state()) ImGui::Text("%-14s %s", name.c_str(), value.c_str());
         ImGui::Text("%-14s %.1f%s", "fps", fps, busy ? "" : " (idle: drawn when something changes)");
         ImGui::Separator();
-        for (const auto& x : m) ImGui::Text("%-22s %10.4f", x.name.c_str(), x.value);
+        // The measurement's status (kept together: the side panel takes these).
+        if (measuring) ImGui::Text("measuring\u2026 %3.0f%%  (%.1f s)%s", 100.0 * worker->progress(), now - measureSince,
+                                   m.empty() ? "" : "  numbers below: stale");
+        for (const auto& x : m) {
+          if (measuring) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.6f, 0.6f, 0.6f, 1.0f));
+          ImGui::Text("%-22s %10.4f%s", x.name.c_str(), x.value, measuring ? " (stale)" : "");
+          if (measuring) ImGui::PopStyleColor();
+        }
         ImGui::Separator();
         ImGui::TextWrapped("keys: %s  h: overlay  l: OpenGL calls  ?: help  F12: save  Backspace: reset  esc/q: quit",
                            opts.keysText().c_str());
@@ -367,23 +447,30 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       if (lastFrame && !flags.screenshot.empty() && overlayShot) writePng(flags.screenshot, ctx.readPixels());
       gl::check("drawing the window");
       glfwSwapBuffers(win);
+      char progress[32];
+      std::snprintf(progress, sizeof progress, "%d %.3f", measuring ? 1 : 0, measuring ? worker->progress() : 1.0);
+      testLog.line("frame", progress);
       if (lastFrame) break;
     }
   } catch (const Error&) {
     status = -1;
+    worker->stop();
     renderer.release();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
     glfwDestroyWindow(win);
     glfwTerminate();
+    worker.reset();
     throw;
   }
+  worker->stop();  // a measurement still running stops at its next progress report
   renderer.release();
   glDeleteTextures(1, &fontTex);
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
-  glfwDestroyWindow(win);
+  glfwDestroyWindow(win);  // the window is gone at once ...
   glfwTerminate();
+  worker.reset();  // ... and the process ends when the worker has let go
   return status;
 }
 }  // namespace ts

@@ -103,8 +103,8 @@ class ParallaxAniso final : public ts::Scene {
            "reference of n x n traced rays per pixel (same Gaussian kernel): PSNR and SSIM over the frame, the\n"
            "high-anisotropy pixels and the occlusion band; ms per frame and texture lookups per pixel.";
   }
-  int defaultWidth() const override { return 1360; }
-  int defaultHeight() const override { return 660; }
+  int defaultWidth() const override { return 1024; }  // fits a laptop's 1280x720 (the figures are larger)
+  int defaultHeight() const override { return 560; }
 
   void addOptions(ts::Options& o) override {
     o.addEnum("mode", &mode_, {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5],
@@ -174,6 +174,7 @@ class ParallaxAniso final : public ts::Scene {
 
   bool live() const override { return view_ == kLive; }
   void update(double seconds) override {
+    windowed_ = true;  // a window: the live view may render smaller while it moves
     if (!animate_ || view_ != kLive) return;
     azimuth_ += float(sweep_ * 10.0 * seconds);
     if (azimuth_ > 30.0f) azimuth_ = 30.0f, sweep_ = -1;
@@ -268,6 +269,7 @@ class ParallaxAniso final : public ts::Scene {
   struct Live {
     ts::TextureDesc texture;
     glm::ivec2 size{0}, modes{-1};
+    double scale = 1, fps = 0;  // drawn smaller while the view moves (window only): shown in the picture
   };
   Camera camera() const {
     Camera c;
@@ -357,10 +359,32 @@ class ParallaxAniso final : public ts::Scene {
   // ReliefGL::drawLive straight into a texture, timed with glFinish.  The
   // milliseconds go to the measurements (stdout, the `h` overlay), not into
   // the picture, so a --png of the live view stays reproducible.
+  // In a window, while the view moves (--animate, or a key in the last half
+  // second) a mode too slow for 20 frames a second is drawn smaller and
+  // upscaled (the picture says the scale and the fps); still, it is drawn at
+  // full size again.  --png never scales.
   ts::Measurements measureLive(ts::Renderer& r) {
+    const int fullW = std::max(1, r.context().width()), fullH = std::max(1, r.context().height());
+    double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    // What the draw costs depends on all but the azimuth (which the sweep turns).
+    char key[160];
+    std::snprintf(key, sizeof key, "%d %.4f %.3f %d %d %d %d %d %d %dx%d", map_, heightScale_, angle_, accel_ ? 1 : 0,
+                  gradients_, mode_, compare_ ? 1 : 0, against_, view_, fullW, fullH);
+    if (key != liveKey_) {  // a new draw: its own timings (the fps printed after m is the new mode's)
+      liveMs_.clear();
+      liveSettled_ = false;
+      if (!liveKey_.empty()) liveMovedAt_ = now;  // (the first picture is no movement)
+      liveKey_ = key;
+    }
+    if (azimuth_ != liveAzimuth_) {
+      if (liveAzimuth_ < 1e9f) liveMovedAt_ = now;
+      liveAzimuth_ = azimuth_;
+    }
+    const bool moving = windowed_ && (animate_ || now - liveMovedAt_ < 0.5);
+    if (!moving) liveScale_ = 1.0;
     Camera c = camera();
-    c.width = std::max(1, r.context().width());
-    c.height = std::max(1, r.context().height());
+    c.width = std::max(1, int(std::lround(fullW * liveScale_)));
+    c.height = std::max(1, int(std::lround(fullH * liveScale_)));
     auto liveMode = [](int m) { return m == kReference ? -1 : m; };
     int left = liveMode(mode_), right = compare_ ? liveMode(against_) : -1;
     if (left < 0) left = right, right = -1;  // the reference cannot be drawn live: the other half fills the view
@@ -373,24 +397,39 @@ class ParallaxAniso final : public ts::Scene {
     GLuint tex = gl_->drawLive(c, relief(), left, right, o);
     glFinish();
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    liveMs_.push_back(ms);
+    // Per full-size pixel, so that samples at other scales compare.
+    liveMs_.push_back(ms / (liveScale_ * liveScale_));
     if (liveMs_.size() > 15) liveMs_.erase(liveMs_.begin());
     std::vector<double> sorted = liveMs_;
     std::sort(sorted.begin(), sorted.end());
     double median = sorted[sorted.size() / 2];
+    const double shownScale = liveScale_;
+    if (moving) {  // the next frame's scale: about 40 ms for the draw (20 fps with the rest of the frame)
+      double want = std::sqrt(kLiveBudgetMs / std::max(1e-3, ms / (liveScale_ * liveScale_)));
+      liveScale_ = std::clamp(std::floor(std::min(1.0, want) * 16.0) / 16.0, 0.25, 1.0);
+    }
+    if (windowed_ && !liveSettled_ && liveMs_.size() == 15) {  // the new state's speed, once it has settled
+      liveSettled_ = true;
+      std::printf("live: %s at %dx%d: %.1f ms a frame at full size (%.1f fps), median of 15 frames\n",
+                  kModeLabels[left], fullW, fullH, median, 1000.0 / median);
+      std::fflush(stdout);
+    }
     Live live;
     live.texture.name = "parallax_live";
     live.texture.params = {{"left", kModeKeys[left]}, {"right", right < 0 ? "-" : kModeKeys[right]},
                            {"size", std::to_string(c.width) + "x" + std::to_string(c.height)},
                            {"made_by", "ReliefGL::drawLive in the parallax_aniso demo's measure()"}};
     live.texture.glTexture = tex;
-    live.texture.minFilter = live.texture.magFilter = GL_NEAREST;
+    live.texture.minFilter = live.texture.magFilter = shownScale < 1.0 ? GL_LINEAR : GL_NEAREST;
     live.texture.wrapS = live.texture.wrapT = GL_CLAMP_TO_EDGE;
     live.size = {c.width, c.height};
     live.modes = {left, right};
+    live.scale = shownScale;
+    live.fps = 1000.0 / (ms + 1e-9);
     m.detail = live;
-    m.push_back({"live_ms_per_frame", median, "the live view's draw, median of the last " +
-                                                  std::to_string(liveMs_.size()) + " frames (glFinish)"});
+    m.push_back({"live_ms_per_frame", median, "the live view's draw at full size, median of the last " +
+                                                  std::to_string(liveMs_.size()) + " frames (glFinish; a smaller "
+                                                  "render while moving counts as ms / scale^2)"});
     m.push_back({"live_fps", 1000.0 / median, "frames per second that draw allows (20 = interactive)"});
     return m;
   }
@@ -420,6 +459,8 @@ class ParallaxAniso final : public ts::Scene {
     bar("bottom_bar", f.height - kLiveBar);
     f.labels.push_back({16.0f, 4.0f, head, kWhite, 1, ts::Align::Left});
     std::string sizeText = std::to_string(live->size.x) + "x" + std::to_string(live->size.y);
+    if (live->scale < 1.0)
+      sizeText += " (scale " + fmtNum("%.2f", live->scale) + " while moving, draw " + fmtNum("%.0f", live->fps) + " fps)";
     if (live->modes.y < 0) {
       f.labels.push_back({float(f.width / 2), float(f.height - line - 2), std::string(kModeLabels[live->modes.x]) + ", " + sizeText,
                           kAmber, 1, ts::Align::Center});
@@ -503,7 +544,12 @@ class ParallaxAniso final : public ts::Scene {
   bool compare_ = false, accel_ = true, animate_ = false;
   int gradients_ = 0;  // 0: x1, 1: x4
   int sweep_ = 1;
-  std::vector<double> liveMs_;
+  std::vector<double> liveMs_;  // the live draw's ms per frame, scaled to full size
+  static constexpr double kLiveBudgetMs = 40.0;
+  double liveScale_ = 1.0, liveMovedAt_ = -1e9;
+  float liveAzimuth_ = 1e9f;
+  std::string liveKey_;
+  bool windowed_ = false, liveSettled_ = false;
   std::string csvPath_;
 
   std::unique_ptr<Relief> relief_;
