@@ -120,6 +120,7 @@ class TestLog {
     lastKey_ = now;
     return true;
   }
+  double untilKey() const { return keyInterval_ <= 0 ? 0.0 : std::max(0.0, lastKey_ + keyInterval_ - clock()); }
 
  private:
   std::FILE* f_ = nullptr;
@@ -320,8 +321,14 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       // Idle is idle: with nothing animating, no key waiting and no test
       // counting frames, wait for an event instead of drawing again (while a
       // changed line of the GL pane is highlighted, wake to fade it).
-      bool busy = dirty || redraw || scene.live() || !input.keys.empty() || flags.frames;
+      // While a measurement runs (and nothing else asks for frames) the loop
+      // draws about 30 frames a second for the progress, leaving the cores to
+      // the worker; --frames (tests) counts those frames too.
+      double keyWait = input.keys.empty() ? 0.0 : testLog.untilKey();
+      bool busy = dirty || redraw || scene.live() || (!input.keys.empty() && keyWait <= 0) ||
+                  (flags.frames && !measuring && input.keys.empty());
       if (busy) glfwPollEvents();
+      else if (keyWait > 0) glfwWaitEventsTimeout(measuring ? std::min(keyWait, 1.0 / 30) : keyWait);
       else if (measuring) glfwWaitEventsTimeout(1.0 / 30);  // the progress moves; the worker wakes us when done
       else if (pane.visible && glfwGetTime() - keyAt < GlPane::kHighlightSeconds + 0.1)
         glfwWaitEventsTimeout(0.25);
@@ -388,6 +395,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         if (!res.error.empty()) throw Error(res.error, kExitFailure);
         m = std::move(res.measured);
         testLog.line("result");
+        if (pane.visible) record = afterKey = true;  // the picture with the new numbers: its calls again
         measuring = worker->busy();
         std::printf("%s\n%s", res.stateText.c_str(), formatMeasurements(m).c_str());
         std::fflush(stdout);
@@ -427,7 +435,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         ImGui::Text("%-14s %.1f%s", "fps", fps, busy ? "" : " (idle: drawn when something changes)");
         ImGui::Separator();
         // The measurement's status (kept together: the side panel takes these).
-        if (measuring) ImGui::Text("measuring\u2026 %3.0f%%  (%.1f s)%s", 100.0 * worker->progress(), now - measureSince,
+        if (measuring) ImGui::Text("measuring... %3.0f%%  (%.1f s)%s", 100.0 * worker->progress(), now - measureSince,
                                    m.empty() ? "" : "  numbers below: stale");
         for (const auto& x : m) {
           if (measuring) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.6f, 0.6f, 0.6f, 1.0f));
