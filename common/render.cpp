@@ -13,7 +13,8 @@
 
 namespace ts {
 Renderer::~Renderer() {
-  // The context may already be gone; GL objects die with it.
+  attachments_.clear();  // their destructors delete their objects
+  release();
 }
 
 void Renderer::release() {

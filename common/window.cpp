@@ -292,7 +292,10 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
   }
 
   WindowContext ctx(win);
-  Renderer renderer(ctx);
+  // Destroyed before the window (its GL objects, the demos' attachments
+  // among them, go while the window's context is current).
+  auto rendererOwner = std::make_unique<Renderer>(ctx);
+  Renderer& renderer = *rendererOwner;
   std::printf("%s | %s\nkeys: %s  h: overlay  l: OpenGL calls  ?/F1: help  F12: save  Backspace: reset  "
               "arrows: turn/tilt  esc/q: quit\n",
               scene.title().c_str(),
@@ -463,7 +466,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
   } catch (const Error&) {
     status = -1;
     worker->stop();
-    renderer.release();
+    rendererOwner.reset();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
     glfwDestroyWindow(win);
@@ -472,7 +475,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
     throw;
   }
   worker->stop();  // a measurement still running stops at its next progress report
-  renderer.release();
+  rendererOwner.reset();
   glDeleteTextures(1, &fontTex);
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();

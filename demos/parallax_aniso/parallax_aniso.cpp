@@ -182,11 +182,8 @@ class ParallaxAniso final : public ts::Scene {
   }
 
   ts::Measurements measure(ts::Renderer& r) override {
-    if (!gl_ || &r != renderer_) {
-      gl_ = std::make_unique<ReliefGL>(r);
-      renderer_ = &r;
-    }
-    if (view_ == kLive) return measureLive(r);
+    ReliefGL& gl = r.attachment<ReliefGL>();  // the passes' GL objects live as long as r
+    if (view_ == kLive) return measureLive(r, gl);
     std::string key = stateKey();
     if (!table_ || key != tableKey_) {
       Relief& rel = relief();
@@ -198,7 +195,7 @@ class ParallaxAniso final : public ts::Scene {
       mo.timingRuns = timeRuns_;
       // One table per state: make_figures draws its figures of this demo
       // with one scene, and two of them share a state (only the view differs).
-      table_ = std::make_shared<Table>(measureAll(*gl_, camera(), rel, mo));
+      table_ = std::make_shared<Table>(measureAll(gl, camera(), rel, mo));
       tableKey_ = key;
       textures_.clear();
       for (const Row& row : table_->rows) textures_.push_back(imageTexture(row.image, kModeKeys[row.mode]));
@@ -363,7 +360,7 @@ class ParallaxAniso final : public ts::Scene {
   // second) a mode too slow for 20 frames a second is drawn smaller and
   // upscaled (the picture says the scale and the fps); still, it is drawn at
   // full size again.  --png never scales.
-  ts::Measurements measureLive(ts::Renderer& r) {
+  ts::Measurements measureLive(ts::Renderer& r, ReliefGL& gl) {
     const int fullW = std::max(1, r.context().width()), fullH = std::max(1, r.context().height());
     double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
     // What the draw costs depends on all but the azimuth (which the sweep turns).
@@ -394,7 +391,7 @@ class ParallaxAniso final : public ts::Scene {
     o.accel = accel_;
     o.gradScale = gradScale();
     auto t0 = std::chrono::steady_clock::now();
-    GLuint tex = gl_->drawLive(c, relief(), left, right, o);
+    GLuint tex = gl.drawLive(c, relief(), left, right, o);
     glFinish();
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     liveMs_.push_back(ms);
@@ -557,8 +554,6 @@ class ParallaxAniso final : public ts::Scene {
   std::string csvPath_;
 
   std::unique_ptr<Relief> relief_;
-  std::unique_ptr<ReliefGL> gl_;
-  ts::Renderer* renderer_ = nullptr;
   std::shared_ptr<Table> table_;
   std::string tableKey_;
   std::vector<ts::TextureDesc> textures_, errorTextures_;
