@@ -309,6 +309,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
   bool measuring = false;  // a request is out: the numbers shown are stale
   double measureSince = 0; // when that request was made
   bool measureHere = false;
+  bool savePending = false;  // F12 pressed
   TestLog testLog;
   GlPane pane;
   bool record = false, afterKey = false;  // the GL pane needs a new recording
@@ -338,7 +339,6 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       else
         glfwWaitEvents();
       redraw = false;
-      bool save = false;
       // One synthesised or typed key per frame, through the same handler.
       if (!input.keys.empty() && testLog.keyDue()) {
         char k = input.keys.front();
@@ -355,7 +355,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         if (k == 'q') input.quit = true;
         else if (k == 'h') input.overlay = !input.overlay;
         else if (k == '?' || k == kKeyHelp) input.help = !input.help;
-        else if (k == kKeySave) save = true;
+        else if (k == kKeySave) savePending = true;
         else if (k == 'l') pane.visible = !pane.visible, record = pane.visible, afterKey = false;
         else if (k == kKeyReset) opts.resetToDefaults(), dirty = true, record = pane.visible, afterKey = true;
         else if (opts.handleKey(k)) dirty = true, record = pane.visible, afterKey = true;
@@ -416,9 +416,11 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         renderer.draw(f);
       }
       ++frame;
-      if (save) saveState(scene, opts, f, ctx.readPixels());
+      // F12 while measuring saves when the numbers are in: the picture, its
+      // sidecar and the command that remakes them must agree.
+      if (savePending && !measuring) saveState(scene, opts, f, ctx.readPixels()), savePending = false;
       // --frames N (tests): the last frame shows the measurement of the last state.
-      bool lastFrame = flags.frames && frame >= flags.frames && input.keys.empty() && !measuring && !dirty;
+      bool lastFrame = flags.frames && frame >= flags.frames && input.keys.empty() && !measuring && !dirty && !savePending;
       // The screenshot is the figure alone (it must match --png), unless
       // TS_SCREENSHOT_OVERLAY=1 asks for the window as the student sees it.
       const char* withOverlay = std::getenv("TS_SCREENSHOT_OVERLAY");
