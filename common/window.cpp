@@ -390,7 +390,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         dirty = false;
       } else if (dirty) {
         worker->request(opts.stateFlags(), ctx.width(), ctx.height());
-        if (!measuring) measureSince = now;
+        measureSince = now;  // the overlay counts this request's seconds
         measuring = true;
         dirty = false;
       }
@@ -437,7 +437,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         ImGui::SetNextWindowBgAlpha(0.75f);
         ImGui::Begin(scene.title().c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
         for (const auto& [name, value] : opts.state()) ImGui::Text("%-14s %s", name.c_str(), value.c_str());
-        ImGui::Text("%-14s %.1f%s", "fps", fps, busy ? "" : " (idle: drawn when something changes)");
+        ImGui::Text("%-14s %.1f%s", "fps", fps, busy || measuring ? "" : " (idle: drawn when something changes)");
         ImGui::Separator();
         // The measurement's status (kept together: the side panel takes these).
         if (measuring) ImGui::Text("measuring... %3.0f%%  (%.1f s)%s", 100.0 * worker->progress(), now - measureSince,

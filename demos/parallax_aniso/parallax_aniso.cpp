@@ -248,7 +248,15 @@ class ParallaxAniso final : public ts::Scene {
       return f;
     }
     const Shown* shown = measured.detailAs<Shown>();
-    if (!shown) return f;
+    if (!shown) {  // a window before the first measurement: what is coming
+      f.labels.push_back({16.0f, 6.0f,
+                          std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) +
+                              " deg, height " + fmtNum("%.2f", heightScale_) + gradientsNote(),
+                          kWhite, 1, ts::Align::Left});
+      f.labels.push_back({float(width / 2), float(height / 2), "rendering the modes and tracing the reference...",
+                          kAmber, 1, ts::Align::Center});
+      return f;
+    }
     if (view_ == kModes) buildModes(f, *shown);
     else if (view_ == kError) buildError(f, *shown);
     else buildSingle(f, *shown);
