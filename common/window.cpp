@@ -318,6 +318,10 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
   int fpsFrame = 0;
   int recordedW = 0, recordedH = 0;
   int frame = 0;
+  // --frames N counts the frames drawn once the first measurement is in (the
+  // start-up's frames while it runs vary with the machine's load).
+  int counted = 0;
+  bool measuredOnce = false;
   double last = glfwGetTime();
   int status = kExitOk;
   try {
@@ -383,6 +387,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       if (scene.live() || (dirty && measureHere)) {
         if (measuring) worker->cancel(), measuring = false;  // a live view measures every frame itself
         m = scene.measure(renderer);
+        measuredOnce = true;
         if (dirty) {
           std::printf("%s\n%s", opts.stateText().c_str(), formatMeasurements(m).c_str());
           std::fflush(stdout);
@@ -397,6 +402,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       if (MeasureWorker::Result res; !scene.live() && worker->take(&res)) {
         if (!res.error.empty()) throw Error(res.error, kExitFailure);
         m = std::move(res.measured);
+        measuredOnce = true;
         testLog.line("result");
         if (pane.visible) record = afterKey = true;  // the picture with the new numbers: its calls again
         measuring = worker->busy();
@@ -416,11 +422,12 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         renderer.draw(f);
       }
       ++frame;
+      if (measuredOnce) ++counted;
       // F12 while measuring saves when the numbers are in: the picture, its
       // sidecar and the command that remakes them must agree.
       if (savePending && !measuring) saveState(scene, opts, f, ctx.readPixels()), savePending = false;
       // --frames N (tests): the last frame shows the measurement of the last state.
-      bool lastFrame = flags.frames && frame >= flags.frames && input.keys.empty() && !measuring && !dirty && !savePending;
+      bool lastFrame = flags.frames && counted >= flags.frames && input.keys.empty() && !measuring && !dirty && !savePending;
       // The screenshot is the figure alone (it must match --png), unless
       // TS_SCREENSHOT_OVERLAY=1 asks for the window as the student sees it.
       const char* withOverlay = std::getenv("TS_SCREENSHOT_OVERLAY");

@@ -135,7 +135,8 @@ std::string binDir() {
 
 // Runs `<demo> --size 1024x768 --frames N <flags>` and returns the seconds from
 // its first output to its exit.  The window loop flushes its first output
-// right after the start-up measurement, before the first frame, so the
+// when the first measurement is handed over (from its worker, or a live
+// view's first frame), and --frames counts the frames from there, so the
 // start-up (window, context, Dear ImGui, measure), whose time varies far more
 // than a frame's, is left out; what remains is N frames and the teardown.
 // Throws if the demo fails.
