@@ -52,16 +52,8 @@ bool measureCancelled(double fraction) {
   return r && r->cancelled();
 }
 
-// The worker's own copies of what it reads without the lock.
-namespace {
-std::atomic<uint64_t> g_latest{0};
-std::atomic<bool> g_quit{false};
-}  // namespace
-
 MeasureWorker::MeasureWorker(std::string sceneId, bool accumBuffer, void (*wake)())
     : sceneId_(std::move(sceneId)), accum_(accumBuffer), wake_(wake) {
-  g_latest.store(0);
-  g_quit.store(false);
   thread_ = std::thread([this] { run(); });
 }
 
@@ -73,7 +65,7 @@ MeasureWorker::~MeasureWorker() {
 void MeasureWorker::stop() {
   std::lock_guard<std::mutex> lock(mu_);
   quit_ = true;
-  g_quit.store(true);
+  quitFlag_.store(true);
   cv_.notify_all();
 }
 
@@ -83,7 +75,7 @@ uint64_t MeasureWorker::request(std::vector<std::string> flags, int width, int h
   width_ = std::max(1, width);
   height_ = std::max(1, height);
   ++requested_;
-  g_latest.store(requested_);  // the running measurement stops at its next measureProgress
+  latest_.store(requested_);  // the running measurement stops at its next measureProgress
   progress_.store(0.0);
   cv_.notify_all();
   return requested_;
@@ -92,7 +84,7 @@ uint64_t MeasureWorker::request(std::vector<std::string> flags, int width, int h
 void MeasureWorker::cancel() {
   std::lock_guard<std::mutex> lock(mu_);
   finished_ = ++requested_;
-  g_latest.store(requested_);
+  latest_.store(requested_);
   haveResult_ = false;
 }
 
@@ -157,7 +149,7 @@ void MeasureWorker::run() {
       w = width_;
       h = height_;
     }
-    Running running{&g_latest, &g_quit, id, &progress_};
+    Running running{&latest_, &quitFlag_, id, &progress_};
     tl_running = &running;
     g_running.store(&running);
     Result r;
@@ -178,8 +170,13 @@ void MeasureWorker::run() {
       gl::check("a measurement");
     } catch (const MeasureCancelled&) {
       cancelled = true;
+    } catch (const Error& e) {
+      r.error = e.what();
+      r.errorCode = e.exit_code;
+      r.measured = Measurements();
     } catch (const std::exception& e) {
       r.error = e.what();
+      r.errorCode = kExitFailure;
       r.measured = Measurements();
     }
     g_running.store(nullptr);

@@ -49,6 +49,7 @@ class MeasureWorker {
     std::string stateText;  // Options::stateText() of the measured state
     Measurements measured;
     std::string error;      // a measurement failed: its message (measured is empty)
+    int errorCode = 0;      // and its ts::Error exit status
   };
   // The newest finished result not taken yet; false if none.
   bool take(Result* out);
@@ -79,6 +80,9 @@ class MeasureWorker {
   Result result_;
   std::string failure_;
   std::atomic<bool> failed_{false};
+  // What a running measurement reads without the lock (ts::measureProgress).
+  std::atomic<uint64_t> latest_{0};  // = requested_
+  std::atomic<bool> quitFlag_{false};
   std::atomic<double> progress_{0.0};
   std::thread thread_;
 };

@@ -400,7 +400,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         dirty = false;
       }
       if (MeasureWorker::Result res; !scene.live() && worker->take(&res)) {
-        if (!res.error.empty()) throw Error(res.error, kExitFailure);
+        if (!res.error.empty()) throw Error(res.error, res.errorCode);  // as if measured here
         m = std::move(res.measured);
         measuredOnce = true;
         testLog.line("result");
