@@ -402,6 +402,7 @@ class ParallaxAniso final : public ts::Scene {
     GLuint tex = gl.drawLive(c, relief(), left, right, o);
     glFinish();
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (liveScale_ != liveMsScale_) liveMs_.clear(), liveMsScale_ = liveScale_;  // a median at one scale
     liveMs_.push_back(ms);
     if (liveMs_.size() > 15) liveMs_.erase(liveMs_.begin());
     std::vector<double> sorted = liveMs_;
@@ -555,7 +556,7 @@ class ParallaxAniso final : public ts::Scene {
   int sweep_ = 1;
   std::vector<double> liveMs_;  // the live draw's ms per frame, scaled to full size
   static constexpr double kLiveBudgetMs = 35.0;
-  double liveScale_ = 1.0, liveMovedAt_ = -1e9;
+  double liveScale_ = 1.0, liveMsScale_ = 1.0, liveMovedAt_ = -1e9;
   float liveAzimuth_ = 1e9f;
   std::string liveKey_;
   bool windowed_ = false, liveSettled_ = false;
