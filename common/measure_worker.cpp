@@ -132,7 +132,7 @@ void MeasureWorker::run() {
     std::lock_guard<std::mutex> lock(mu_);
     failure_ = e.what();
     failed_.store(true);
-    if (wake_) wake_();
+    if (wake_ && !quit_) wake_();  // under the lock: never after stop() (the window may be gone)
     return;
   }
   const long slow = slowMs();
@@ -187,9 +187,9 @@ void MeasureWorker::run() {
       if (!cancelled && id == requested_) {  // a superseded result is not shown
         result_ = std::move(r);
         haveResult_ = true;
+        if (wake_ && !quit_) wake_();  // under the lock: never after stop() (the window may be gone)
       }
     }
-    if (!cancelled && wake_) wake_();
   }
   // The scene's GL objects go while its context is current, then the context.
   scene.reset();
