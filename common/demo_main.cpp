@@ -93,7 +93,7 @@ static int renderOffscreen(Scene& scene, Options& opts, const CommonFlags& f, Ba
     std::printf("%s | %s\n%s", scene.title().c_str(), ctx->describe().c_str(),
                 formatMeasurements(out.measurements).c_str());
   }
-  r.release();
+  // r goes before ctx: its GL objects with it (RAII).
   return kExitOk;
 }
 

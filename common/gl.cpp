@@ -6,12 +6,12 @@
 #include "error.hpp"
 
 namespace ts::gl {
-#define TM_GL_DEFINE_POINTER(name) decltype(p_##name) p_##name = nullptr;
+#define TM_GL_DEFINE_POINTER(name) thread_local decltype(p_##name) p_##name = nullptr;
 TM_GL_FUNCTIONS(TM_GL_DEFINE_POINTER)
 #undef TM_GL_DEFINE_POINTER
 
 namespace {
-bool g_loaded = false;
+thread_local bool g_loaded = false;  // per thread, as the table
 // Functions of GL <= 2.1 that every backend must give us; the rest is checked
 // by whoever needs it.
 const char* const kRequired[] = {
@@ -89,7 +89,7 @@ static const char* errorName(GLenum e) {
 // KHR_debug: the driver's own words for an error ("glTexImage2D(invalid
 // width)"), kept until the next check() so its message can quote them.
 namespace {
-std::string g_debugErrors;
+thread_local std::string g_debugErrors;  // the callback is synchronous: the failing call's thread
 void APIENTRY onDebugMessage(GLenum, GLenum type, GLuint, GLenum, GLsizei length, const GLchar* message,
                              const void*) {
   if (type != GL_DEBUG_TYPE_ERROR || !message || g_debugErrors.size() > 1024) return;

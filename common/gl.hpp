@@ -60,13 +60,18 @@
   X(glDebugMessageCallback)
 
 namespace ts::gl {
-#define TM_GL_DECLARE_POINTER(name) extern decltype(&::name) p_##name;
+// One table per thread: a thread's GL calls go to the context that thread
+// made current, through the pointers that thread loaded (the window's
+// thread from GLFW, a measurement worker from its own OSMesa or EGL context:
+// common/measure_worker.hpp).  OSMesa's entry points are its own, so one
+// table could not serve a window and an OSMesa context at once.
+#define TM_GL_DECLARE_POINTER(name) extern thread_local decltype(&::name) p_##name;
 TM_GL_FUNCTIONS(TM_GL_DECLARE_POINTER)
 #undef TM_GL_DECLARE_POINTER
 
 using ProcLoader = void* (*)(const char* name);
 
-// Fills every pointer from `loader`.  Returns false (and names the first
+// Fills every pointer of the calling thread's table from `loader`.  Returns false (and names the first
 // missing core function in *missing) if a function the suite needs for
 // GL 2.1 fixed function is absent.  Later functions may be null: callers that
 // need them check gl::has(...)/the GL version first.

@@ -180,7 +180,7 @@ int run(int argc, char** argv) {
     std::string regen = "scripts/figures.sh" + std::string(scale != 1.0 ? " --scale " + std::to_string(scale) : "");
     ts::writeFileAtomic(out + "/README.md", gallery(todo, regen));
   }
-  r.release();
+  // r goes before ctx: its GL objects with it (RAII).
   return 0;
 }
 }  // namespace

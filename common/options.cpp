@@ -355,7 +355,7 @@ std::string commonFlagsHelp() {
          "  --export-c FILE.c                  write a standalone C99 program making those calls (and FILE.texels)\n"
          "  --size WxH                         image or window size, 1..16384 each\n"
          "  --backend osmesa|egl|window|auto   auto: a window, or with --png OSMesa then EGL\n"
-         "  --frames N                         window: close after N frames (for tests)\n"
+         "  --frames N                         window: close after N frames once measured (tests)\n"
          "  --screenshot FILE                  window: save the last frame to FILE (before the overlay)\n"
          "  --keys STRING                      window: press these keys, one per frame (tests, demos)\n"
          "  --quiet                            do not print the measurement\n";

@@ -84,7 +84,7 @@ struct CommonFlags {
   std::string exportC;     // --export-c FILE.c: a standalone C program making those calls
   int width = 0, height = 0;  // --size WxH (0 = the demo's default)
   std::string backend = "auto";
-  int frames = 0;          // --frames N: window closes after N frames (tests)
+  int frames = 0;          // --frames N: window closes after N frames once measured (tests)
   std::string screenshot;  // --screenshot FILE: the window's last frame
   std::string keys;        // --keys STRING: typed into the window, one per frame
   bool quiet = false;      // --quiet: no measurement printout

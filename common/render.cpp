@@ -13,8 +13,12 @@
 
 namespace ts {
 Renderer::~Renderer() {
-  // The context may already be gone; GL objects die with it.
+  attachments_.clear();  // their destructors delete their objects
+  release();
 }
+
+int Renderer::pictureWidth() { return pictureW_ > 0 ? pictureW_ : ctx_.width(); }
+int Renderer::pictureHeight() { return pictureH_ > 0 ? pictureH_ : ctx_.height(); }
 
 void Renderer::release() {
   for (auto& [k, id] : textures_) glDeleteTextures(1, &id);

@@ -1,7 +1,10 @@
 // common/render.hpp — draws a Frame with OpenGL and measures what it drew.
 #pragma once
 #include <map>
+#include <memory>
 #include <string>
+#include <typeindex>
+#include <typeinfo>
 
 #include "frame.hpp"
 #include "gl.hpp"
@@ -19,6 +22,9 @@ std::string formatShaderLog(const std::string& log, const std::string& file, int
 class Renderer {
  public:
   explicit Renderer(Context& ctx) : ctx_(ctx) {}
+  // Deletes every GL object it owns, its attachments' too: destroy a
+  // Renderer while its context is still current (RAII: declare it after the
+  // context, or reset it before the context goes).
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -34,17 +40,40 @@ class Renderer {
   // and leave the window's own target untouched.
   Image renderOffscreen(const Frame& frame);
   Context& context() { return ctx_; }
+  // The size the picture will be drawn at: the context's, unless a window
+  // lays the figure out in part of it beside its panels (a live view, which
+  // draws its picture inside measure(), draws at this size).
+  int pictureWidth();
+  int pictureHeight();
+  void setPictureSize(int w, int h) { pictureW_ = w, pictureH_ = h; }  // 0, 0: the context's
   // The GL texture for a description (uploaded once per key, then cached;
   // filters and wrap modes are set on every bind).
   GLuint texture(const TextureDesc& t);
   GLuint program(const std::string& key, const Program& p);
-  // Drops every cached GL object (call before the context goes away, and
-  // before recording a picture: see recordPicture in gl_listing.hpp).
+  // Drops the cached textures and programs (before recording a picture, so
+  // that the record shows how each is made: see recordPicture in
+  // gl_listing.hpp).  Attachments stay.
   void release();
+
+  // GL objects a demo keeps for this renderer's context beyond a Frame (the
+  // parallax passes' programs, textures and target): made as T(*this) on
+  // first use, owned by the renderer, deleted by T's destructor when the
+  // renderer goes, while its context is still current.
+  struct Attachment {
+    virtual ~Attachment() = default;
+  };
+  template <class T>
+  T& attachment() {
+    std::unique_ptr<Attachment>& slot = attachments_[std::type_index(typeid(T))];
+    if (!slot) slot = std::make_unique<T>(*this);
+    return static_cast<T&>(*slot);
+  }
 
  private:
   void drawLabels(const Frame& frame);
   Context& ctx_;
+  std::map<std::type_index, std::unique_ptr<Attachment>> attachments_;
+  int pictureW_ = 0, pictureH_ = 0;
   std::map<std::string, GLuint> textures_;
   std::map<std::string, GLuint> programs_;
   GLuint fontTexture_ = 0;

@@ -37,6 +37,19 @@ struct Measurements : std::vector<Measurement> {
 };
 std::string formatMeasurements(const Measurements& m);
 
+// A long measure() says how far it is, between its passes: fraction 0..1.
+// In a window the measurement runs on a worker (measure_worker.hpp) and the
+// window shows "measuring NN%"; when a newer key or closing the window
+// supersedes it, this throws MeasureCancelled (let it pass: the worker
+// catches it and the scene stays usable).  Elsewhere (--png, figures, the
+// window's live views) it does nothing.
+struct MeasureCancelled {};
+void measureProgress(double fraction);
+// The same for loops that must not throw (threads a measurement starts
+// itself, which then stop early): reports `fraction` if >= 0 (from the
+// measuring thread) and returns true when the measurement is superseded.
+bool measureCancelled(double fraction = -1);
+
 // A registered book figure: a state of a demo (its flags) at a size.
 struct FigureSpec {
   std::string id;          // file name in book_figures/, e.g. "vi1_quad_distortion"

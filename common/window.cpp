@@ -6,8 +6,10 @@
 #include <backends/imgui_impl_glfw.h>
 
 #include <algorithm>
+#include <chrono>
 #include <sys/stat.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,6 +22,7 @@
 #include "gl.hpp"
 #include "figure.hpp"
 #include "gl_pane.hpp"
+#include "measure_worker.hpp"
 #include "orbit_camera.hpp"
 #include "side_panel.hpp"
 #include "sidecar.hpp"
@@ -165,6 +168,46 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
     default: break;
   }
 }
+
+// Test hooks (environment, tests and benchmarks only).
+// TS_TEST_FRAME_LOG=FILE: a line per event, times in seconds of the steady
+// clock (CLOCK_MONOTONIC, comparable across processes): "frame T M P" after
+// each swap (M 1 while a measurement is out, P its progress), "key T C" when
+// a key is taken, "result T" when a measurement is handed over.
+// TS_TEST_KEY_INTERVAL_MS=N: take a key at most every N ms (so --keys types
+// them while a measurement runs, as a student does), not one per frame.
+class TestLog {
+ public:
+  TestLog() {
+    const char* p = std::getenv("TS_TEST_FRAME_LOG");
+    if (p && *p) f_ = std::fopen(p, "w");
+    const char* k = std::getenv("TS_TEST_KEY_INTERVAL_MS");
+    keyInterval_ = k ? std::max(0.0, std::strtod(k, nullptr) / 1000.0) : 0.0;
+  }
+  ~TestLog() {
+    if (f_) std::fclose(f_);
+  }
+  static double clock() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  }
+  void line(const char* what, const std::string& rest = "") {
+    if (!f_) return;
+    std::fprintf(f_, "%s %.4f%s%s\n", what, clock(), rest.empty() ? "" : " ", rest.c_str());
+    std::fflush(f_);
+  }
+  bool keyDue() {
+    if (keyInterval_ <= 0) return true;
+    double now = clock();
+    if (now - lastKey_ < keyInterval_) return false;
+    lastKey_ = now;
+    return true;
+  }
+  double untilKey() const { return keyInterval_ <= 0 ? 0.0 : std::max(0.0, lastKey_ + keyInterval_ - clock()); }
+
+ private:
+  std::FILE* f_ = nullptr;
+  double keyInterval_ = 0, lastKey_ = -1e9;
+};
 
 // F12: the window's picture as PNG + sidecar under a name not yet taken
 // (<demo>-<n>.png in the working folder), and the command that remakes it.
@@ -337,13 +380,25 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
   }
 
   WindowContext ctx(win);
-  Renderer renderer(ctx);
+  // Destroyed before the window (its GL objects, the demos' attachments
+  // among them, go while the window's context is current).
+  auto rendererOwner = std::make_unique<Renderer>(ctx);
+  Renderer& renderer = *rendererOwner;
   std::printf("%s | %s\nkeys: %s  h: side panel  l: OpenGL calls  ?/F1: help  F12: save  Backspace: reset  "
               "arrows: turn/tilt  esc/q: quit\n",
               scene.title().c_str(),
               ctx.describe().c_str(), opts.keysText().c_str());
   Measurements m;
   bool dirty = true;
+  // Measurements run on a worker thread with a context of its own (see
+  // measure_worker.hpp); the loop keeps drawing meanwhile.  If the worker
+  // cannot make a context, the loop measures itself, as it did before.
+  auto worker = std::make_unique<MeasureWorker>(scene.id(), scene.wantsAccumBuffer(), glfwPostEmptyEvent);
+  bool measuring = false;  // a request is out: the numbers shown are stale
+  double measureSince = 0; // when that request was made
+  bool measureHere = false;
+  bool savePending = false;  // F12 pressed
+  TestLog testLog;
   GlPane pane;
   bool record = false, afterKey = false;  // the GL pane needs a new recording
   bool redraw = true;                      // draw again without waiting for an event
@@ -351,6 +406,10 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
   int fpsFrame = 0;
   int recordedW = 0, recordedH = 0;
   int frame = 0;
+  // --frames N counts the frames drawn once the first measurement is in (the
+  // start-up's frames while it runs vary with the machine's load).
+  int counted = 0;
+  bool measuredOnce = false;
   double last = glfwGetTime();
   int status = kExitOk;
   try {
@@ -358,8 +417,15 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       // Idle is idle: with nothing animating, no key waiting and no test
       // counting frames, wait for an event instead of drawing again (while a
       // changed line of the GL pane is highlighted, wake to fade it).
-      bool busy = dirty || redraw || scene.live() || !input.keys.empty() || !input.dropped.empty() || flags.frames;
+      // While a measurement runs (and nothing else asks for frames) the loop
+      // draws about 30 frames a second for the progress, leaving the cores to
+      // the worker; --frames (tests) counts those frames too.
+      double keyWait = input.keys.empty() ? 0.0 : testLog.untilKey();
+      bool busy = dirty || redraw || scene.live() || (!input.keys.empty() && keyWait <= 0) || !input.dropped.empty() ||
+                  (flags.frames && !measuring && input.keys.empty());
       if (busy) glfwPollEvents();
+      else if (keyWait > 0) glfwWaitEventsTimeout(measuring ? std::min(keyWait, 1.0 / 30) : keyWait);
+      else if (measuring) glfwWaitEventsTimeout(1.0 / 30);  // the progress moves; the worker wakes us when done
       else if (pane.visible && glfwGetTime() - keyAt < GlPane::kHighlightSeconds + 0.1)
         glfwWaitEventsTimeout(0.25);
       else
@@ -383,8 +449,9 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       }
       input.dropped.clear();
       // One synthesised or typed key per frame, through the same handler.
-      if (!input.keys.empty()) {
+      if (!input.keys.empty() && testLog.keyDue()) {
         char k = input.keys.front();
+        testLog.line("key", std::string(1, std::isprint(static_cast<unsigned char>(k)) ? k : '?'));
         input.keys.erase(0, 1);
         // = is + (the same key without shift) where no option takes =.
         if (k == '=') {
@@ -397,7 +464,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         if (k == 'q') input.quit = true;
         else if (k == 'h') input.overlay = !input.overlay;
         else if (k == '?' || k == kKeyHelp) input.help = !input.help;
-        else if (k == kKeySave) save = true;
+        else if (k == kKeySave) savePending = true;
         else if (k == 'l') pane.visible = !pane.visible, record = pane.visible, afterKey = false;
         else if (k == kKeyReset) opts.resetToDefaults(), dirty = true, record = pane.visible, afterKey = true;
         else if (opts.handleKey(k)) dirty = true, record = pane.visible, afterKey = true;
@@ -416,18 +483,42 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       }
       ctx.sync();
       if (ctx.width() < 1 || ctx.height() < 1) continue;  // minimised
-      if (dirty || scene.live()) {
-        m = scene.measure(renderer);
-        if (dirty) {
-          std::printf("%s\n%s", opts.stateText().c_str(), formatMeasurements(m).c_str());
-          std::fflush(stdout);
-        }
-        dirty = false;
+      if (worker->failed() && !measureHere) {  // no context for the worker: measure here, as before
+        note("note: measuring in the window's thread (" + worker->failure() + ")");
+        measureHere = true;
+        dirty |= measuring;
+        measuring = false;
       }
       // The side panel and the GL pane dock right of the figure, which is
       // laid out in the rest of the window: nothing covers it.
       WindowSplit split = splitWindow(ctx.width(), input.overlay, pane.visible);
       int figureW = split.figureW;
+      renderer.setPictureSize(figureW, ctx.height());  // a live view draws at the figure's size
+      if (scene.live() || (dirty && measureHere)) {
+        if (measuring) worker->cancel(), measuring = false;  // a live view measures every frame itself
+        m = scene.measure(renderer);
+        measuredOnce = true;
+        if (dirty) {
+          std::printf("%s\n%s", opts.stateText().c_str(), formatMeasurements(m).c_str());
+          std::fflush(stdout);
+        }
+        dirty = false;
+      } else if (dirty) {
+        worker->request(opts.stateFlags(), figureW, ctx.height());  // measured at the figure's size, as --png
+        measureSince = now;  // the overlay counts this request's seconds
+        measuring = true;
+        dirty = false;
+      }
+      if (MeasureWorker::Result res; !scene.live() && worker->take(&res)) {
+        if (!res.error.empty()) throw Error(res.error, res.errorCode);  // as if measured here
+        m = std::move(res.measured);
+        measuredOnce = true;
+        testLog.line("result");
+        if (pane.visible) record = afterKey = true;  // the picture with the new numbers: its calls again
+        measuring = worker->busy();
+        std::printf("%s\n%s", res.stateText.c_str(), formatMeasurements(m).c_str());
+        std::fflush(stdout);
+      }
       Frame f = scene.build(figureW, ctx.height(), m);
       if (pane.visible && (record || figureW != recordedW || ctx.height() != recordedH)) {
         pane.record(renderer, f, afterKey, now, true);  // draws the picture, recording its calls
@@ -438,8 +529,12 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         renderer.draw(f);
       }
       ++frame;
-      if (save) saveState(scene, opts, f, ctx.readPixels());
-      bool lastFrame = flags.frames && frame >= flags.frames && input.keys.empty();
+      if (measuredOnce) ++counted;
+      // F12 while measuring saves when the numbers are in: the picture, its
+      // sidecar and the command that remakes them must agree.
+      if (savePending && !measuring) saveState(scene, opts, f, ctx.readPixels()), savePending = false;
+      // --frames N (tests): the last frame shows the measurement of the last state.
+      bool lastFrame = flags.frames && counted >= flags.frames && input.keys.empty() && !measuring && !dirty && !savePending;
       // The screenshot is the figure alone (it must match --png), unless
       // TS_SCREENSHOT_OVERLAY=1 asks for the window as the student sees it.
       const char* withOverlay = std::getenv("TS_SCREENSHOT_OVERLAY");
@@ -454,7 +549,11 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       if (input.overlay) {
         PanelStatus status;
         status.fps = fps;
-        status.idle = !busy;
+        status.idle = !busy && !measuring;
+        // The measurement's status: running, how far, and whether the numbers shown are an older state's.
+        status.measuring = measuring;
+        status.progress = measuring ? worker->progress() : 0.0;
+        status.stale = measuring && !m.empty();
         drawSidePanel(scene, opts, m, status, split.panelX, split.panelW, ctx.height());
       }
       if (input.help) drawHelp(scene, opts, ctx.width(), ctx.height(), &input.help);
@@ -465,23 +564,30 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       if (lastFrame && !flags.screenshot.empty() && overlayShot) writePng(flags.screenshot, ctx.readPixels());
       gl::check("drawing the window");
       glfwSwapBuffers(win);
+      char progress[32];
+      std::snprintf(progress, sizeof progress, "%d %.3f", measuring ? 1 : 0, measuring ? worker->progress() : 1.0);
+      testLog.line("frame", progress);
       if (lastFrame) break;
     }
   } catch (const Error&) {
     status = -1;
-    renderer.release();
+    worker->stop();
+    rendererOwner.reset();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
     glfwDestroyWindow(win);
     glfwTerminate();
+    worker.reset();
     throw;
   }
-  renderer.release();
+  worker->stop();  // a measurement still running stops at its next progress report
+  rendererOwner.reset();
   glDeleteTextures(1, &fontTex);
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
-  glfwDestroyWindow(win);
+  glfwDestroyWindow(win);  // the window is gone at once ...
   glfwTerminate();
+  worker.reset();  // ... and the process ends when the worker has let go
   return status;
 }
 }  // namespace ts

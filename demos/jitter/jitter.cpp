@@ -289,11 +289,13 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
   if (preparedSeed_ != seed_ || preparedAverage_ != average_) prepare(r);
   // The images this state shows and prints: the four modes at n, and in the
   // plot view every pattern at n = 1..4.
+  // (A window shows the progress; a newer key stops the passes here.)
+  const double passes = view_ == kViewPlot ? 4 + 3 * kMaxSide : 4;
   ensure(r, 0, 1);
-  for (int kind = 0; kind < 3; ++kind) ensure(r, kind, side_);
+  for (int kind = 0; kind < 3; ++kind) ts::measureProgress((1 + kind) / passes), ensure(r, kind, side_);
   if (view_ == kViewPlot)
     for (int kind = 0; kind < 3; ++kind)
-      for (int side = 1; side <= kMaxSide; ++side) ensure(r, kind, side);
+      for (int side = 1; side <= kMaxSide; ++side) ts::measureProgress((4 + kind * kMaxSide + side - 1) / passes), ensure(r, kind, side);
   ts::Measurements out;
   const std::string n = std::to_string(side_) + "x" + std::to_string(side_);
   struct Row {

@@ -546,6 +546,7 @@ ts::Measurements MipmapPopping::measure(ts::Renderer& r) {
   // 3. Popping: every filter over the sweep.
   out.sweepLods = sweep::sweepLods();
   for (int fl = 0; fl < kFilterCount; ++fl) {
+    ts::measureProgress(0.1 + 0.6 * fl / kFilterCount);  // a window shows it; a newer key stops here
     sweep::Look lk = look();
     lk.filter = fl;
     out.sweepMeans.push_back(sweep::probeSweep(r, lk, out.sweepLods));
@@ -553,6 +554,7 @@ ts::Measurements MipmapPopping::measure(ts::Renderer& r) {
   }
 
   // 4. Far-field error on the slanted plane against the supersampled reference.
+  ts::measureProgress(0.7);
   sweep::SlantErrors se = sweep::slantErrors(r, look());
   for (int fl = 0; fl < kFilterCount; ++fl) out.farError[fl] = se.error[fl];
   out.farPixels = se.pixels;

@@ -60,7 +60,10 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
   t.seed = o.seed;
   t.gradScale = o.gradScale;
   auto t0 = std::chrono::steady_clock::now();
-  t.reference = renderReference(cam, rel, o.refRays, o.seed);
+  // Progress (a window shows it): the reference about 40 %, the modes the rest.
+  const double refShare = 0.4;
+  t.reference = renderReference(cam, rel, o.refRays, o.seed, [&](double f) { ts::measureCancelled(refShare * f); });
+  ts::measureProgress(refShare);
   t.refSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   t.referenceImage = t.reference.image();
   t.anisoMask = anisotropyMask(cam);
@@ -69,6 +72,7 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
   for (uint8_t m : t.bandMask) t.bandPixels += m;
   const ts::Image& ref = t.referenceImage;
   for (int mode : modes) {
+    ts::measureProgress(refShare + (1 - refShare) * 0.9 * double(t.rows.size()) / double(modes.size()));
     Row r;
     r.mode = mode;
     PassOptions po;
@@ -94,6 +98,7 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
     r.ms = o.timingRuns > 0 ? gl.timeMs(cam, rel, mode, o.timingRuns, po) : 0.0;
     t.rows.push_back(std::move(r));
   }
+  ts::measureProgress(refShare + (1 - refShare) * 0.9);
   for (const Row& r : t.rows)
     if (r.mode == kTrilinear || (r.mode == kAniso16 && ReliefGL::anisotropySupported())) {
       PassOptions po;

@@ -107,8 +107,8 @@ class ParallaxAniso final : public ts::Scene {
            "reference of n x n traced rays per pixel (same Gaussian kernel): PSNR and SSIM over the frame, the\n"
            "high-anisotropy pixels and the occlusion band; ms per frame and texture lookups per pixel.";
   }
-  int defaultWidth() const override { return 1360; }
-  int defaultHeight() const override { return 660; }
+  int defaultWidth() const override { return 1024; }  // fits a laptop's 1280x720 (the figures are larger)
+  int defaultHeight() const override { return 560; }
 
   std::vector<std::string> claim() const override { return {"ewa_psnr_all", "ewa_vis_psnr_all"}; }
 
@@ -182,6 +182,7 @@ class ParallaxAniso final : public ts::Scene {
 
   bool live() const override { return view_ == kLive; }
   void update(double seconds) override {
+    windowed_ = true;  // a window: the live view may render smaller while it moves
     if (!animate_ || view_ != kLive) return;
     azimuth_ += float(sweep_ * 10.0 * seconds);
     if (azimuth_ > 30.0f) azimuth_ = 30.0f, sweep_ = -1;
@@ -189,11 +190,8 @@ class ParallaxAniso final : public ts::Scene {
   }
 
   ts::Measurements measure(ts::Renderer& r) override {
-    if (!gl_ || &r != renderer_) {
-      gl_ = std::make_unique<ReliefGL>(r);
-      renderer_ = &r;
-    }
-    if (view_ == kLive) return measureLive(r);
+    ReliefGL& gl = r.attachment<ReliefGL>();  // the passes' GL objects live as long as r
+    if (view_ == kLive) return measureLive(r, gl);
     std::string key = stateKey();
     if (!table_ || key != tableKey_) {
       Relief& rel = relief();
@@ -205,7 +203,7 @@ class ParallaxAniso final : public ts::Scene {
       mo.timingRuns = timeRuns_;
       // One table per state: make_figures draws its figures of this demo
       // with one scene, and two of them share a state (only the view differs).
-      table_ = std::make_shared<Table>(measureAll(*gl_, camera(), rel, mo));
+      table_ = std::make_shared<Table>(measureAll(gl, camera(), rel, mo));
       tableKey_ = key;
       textures_.clear();
       for (const Row& row : table_->rows) textures_.push_back(imageTexture(row.image, kModeKeys[row.mode]));
@@ -258,7 +256,15 @@ class ParallaxAniso final : public ts::Scene {
       return f;
     }
     const Shown* shown = measured.detailAs<Shown>();
-    if (!shown) return f;
+    if (!shown) {  // a window before the first measurement: what is coming
+      f.labels.push_back({16.0f, 6.0f,
+                          std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", angle_) +
+                              " deg, height " + fmtNum("%.2f", heightScale_) + gradientsNote(),
+                          kWhite, 1, ts::Align::Left});
+      f.labels.push_back({float(width / 2), float(height / 2), "rendering the modes and tracing the reference...",
+                          kAmber, 1, ts::Align::Center});
+      return f;
+    }
     if (view_ == kModes) buildModes(f, *shown);
     else if (view_ == kError) buildError(f, *shown);
     else buildSingle(f, *shown);
@@ -276,6 +282,7 @@ class ParallaxAniso final : public ts::Scene {
   struct Live {
     ts::TextureDesc texture;
     glm::ivec2 size{0}, modes{-1};
+    double scale = 1, fps = 0;  // drawn smaller while the view moves (window only): shown in the picture
   };
   Camera camera() const {
     Camera c;
@@ -383,10 +390,32 @@ class ParallaxAniso final : public ts::Scene {
   // ReliefGL::drawLive straight into a texture, timed with glFinish.  The
   // milliseconds go to the measurements (stdout, the `h` overlay), not into
   // the picture, so a --png of the live view stays reproducible.
-  ts::Measurements measureLive(ts::Renderer& r) {
+  // In a window, while the view moves (--animate, or a key in the last half
+  // second) a mode too slow for 20 frames a second is drawn smaller and
+  // upscaled (the picture says the scale and the fps); still, it is drawn at
+  // full size again.  --png never scales.
+  ts::Measurements measureLive(ts::Renderer& r, ReliefGL& gl) {
+    const int fullW = std::max(1, r.pictureWidth()), fullH = std::max(1, r.pictureHeight());
+    double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    // What the draw costs depends on all but the azimuth (which the sweep turns).
+    char key[160];
+    std::snprintf(key, sizeof key, "%d %.4f %.3f %d %d %d %d %d %d %dx%d", map_, heightScale_, angle_, accel_ ? 1 : 0,
+                  gradients_, mode_, compare_ ? 1 : 0, against_, view_, fullW, fullH);
+    if (key != liveKey_) {  // a new draw: its own timings (the fps printed after m is the new mode's)
+      liveMs_.clear();
+      liveSettled_ = false;
+      if (!liveKey_.empty()) liveMovedAt_ = now;  // (the first picture is no movement)
+      liveKey_ = key;
+    }
+    if (azimuth_ != liveAzimuth_) {
+      if (liveAzimuth_ < 1e9f) liveMovedAt_ = now;
+      liveAzimuth_ = azimuth_;
+    }
+    const bool moving = windowed_ && (animate_ || now - liveMovedAt_ < 0.5);
+    if (!moving) liveScale_ = 1.0;
     Camera c = camera();
-    c.width = std::max(1, r.context().width());
-    c.height = std::max(1, r.context().height());
+    c.width = std::max(1, int(std::lround(fullW * liveScale_)));
+    c.height = std::max(1, int(std::lround(fullH * liveScale_)));
     auto liveMode = [](int m) { return m == kReference ? -1 : m; };
     int left = liveMode(mode_), right = compare_ ? liveMode(against_) : -1;
     if (left < 0) left = right, right = -1;  // the reference cannot be drawn live: the other half fills the view
@@ -396,28 +425,48 @@ class ParallaxAniso final : public ts::Scene {
     o.accel = accel_;
     o.gradScale = gradScale();
     auto t0 = std::chrono::steady_clock::now();
-    GLuint tex = gl_->drawLive(c, relief(), left, right, o);
+    GLuint tex = gl.drawLive(c, relief(), left, right, o);
     glFinish();
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (liveScale_ != liveMsScale_) liveMs_.clear(), liveMsScale_ = liveScale_;  // a median at one scale
     liveMs_.push_back(ms);
     if (liveMs_.size() > 15) liveMs_.erase(liveMs_.begin());
     std::vector<double> sorted = liveMs_;
     std::sort(sorted.begin(), sorted.end());
     double median = sorted[sorted.size() / 2];
+    const double shownScale = liveScale_;
+    // The next frame's scale while moving: the draw's time is about
+    // proportional to its pixels, so scale x sqrt(budget / ms) meets the
+    // budget (35 ms leaves the rest of a 20 fps frame to the window); left
+    // alone within 70-115 % of it (each new size is a new target texture).
+    if (moving && (ms > 1.15 * kLiveBudgetMs || (ms < 0.7 * kLiveBudgetMs && liveScale_ < 1.0))) {
+      double want = liveScale_ * std::sqrt(kLiveBudgetMs / std::max(1e-3, ms));
+      liveScale_ = std::clamp(std::floor(std::min(1.0, want) * 16.0) / 16.0, 0.25, 1.0);
+    }
+    if (windowed_ && !liveSettled_ && liveMs_.size() == 15) {  // the new state's speed, once it has settled
+      liveSettled_ = true;
+      std::printf("live: %s at %dx%d, drawn at scale %.2f: %.1f ms a draw (%.1f fps), median of 15 frames\n",
+                  kModeLabels[left], fullW, fullH, shownScale, median, 1000.0 / median);
+      std::fflush(stdout);
+    }
     Live live;
     live.texture.name = "parallax_live";
     live.texture.params = {{"left", kModeKeys[left]}, {"right", right < 0 ? "-" : kModeKeys[right]},
                            {"size", std::to_string(c.width) + "x" + std::to_string(c.height)},
                            {"made_by", "ReliefGL::drawLive in the parallax_aniso demo's measure()"}};
     live.texture.glTexture = tex;
-    live.texture.minFilter = live.texture.magFilter = GL_NEAREST;
+    live.texture.minFilter = live.texture.magFilter = shownScale < 1.0 ? GL_LINEAR : GL_NEAREST;
     live.texture.wrapS = live.texture.wrapT = GL_CLAMP_TO_EDGE;
     live.size = {c.width, c.height};
     live.modes = {left, right};
+    live.scale = shownScale;
+    live.fps = 1000.0 / (ms + 1e-9);
     m.detail = live;
     m.push_back({"live_ms_per_frame", median, "the live view's draw, median of the last " +
                                                   std::to_string(liveMs_.size()) + " frames (glFinish)"});
     m.push_back({"live_fps", 1000.0 / median, "frames per second that draw allows (20 = interactive)"});
+    m.push_back({"live_scale", shownScale, "the draw's size / the window's (below 1 while the view moves and the "
+                                           "mode is too slow for 20 fps; 1 at rest and in --png)"});
     return m;
   }
 
@@ -451,6 +500,8 @@ class ParallaxAniso final : public ts::Scene {
       if (ts::text::width(head, 1) > float(f.width - 21)) head = h;
     L::caption(f, {16, 4, float(f.width - 4), float(kLiveBar)}, head, kWhite, 1, ts::Align::Left);
     std::string sizeText = std::to_string(live->size.x) + "x" + std::to_string(live->size.y);
+    if (live->scale < 1.0)
+      sizeText += " (scale " + fmtNum("%.2f", live->scale) + " while moving, draw " + fmtNum("%.0f", live->fps) + " fps)";
     if (live->modes.y < 0) {
       L::caption(f, {4, float(f.height - line - 2), float(f.width - 4), float(f.height)},
                  std::string(kModeLabels[live->modes.x]) + ", " + sizeText, kAmber, 1);
@@ -554,14 +605,17 @@ class ParallaxAniso final : public ts::Scene {
   bool compare_ = false, accel_ = true, animate_ = false;
   int gradients_ = 0;  // 0: x1, 1: x4
   int sweep_ = 1;
-  std::vector<double> liveMs_;
+  std::vector<double> liveMs_;  // the live draw's ms per frame, scaled to full size
+  static constexpr double kLiveBudgetMs = 35.0;
+  double liveScale_ = 1.0, liveMsScale_ = 1.0, liveMovedAt_ = -1e9;
+  float liveAzimuth_ = 1e9f;
+  std::string liveKey_;
+  bool windowed_ = false, liveSettled_ = false;
   std::string csvPath_;
 
   std::unique_ptr<Relief> relief_;
   ts::UserTexture picture_;  // --texture FILE: the albedo
   ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
-  std::unique_ptr<ReliefGL> gl_;
-  ts::Renderer* renderer_ = nullptr;
   std::shared_ptr<Table> table_;
   std::string tableKey_;
   std::vector<ts::TextureDesc> textures_, errorTextures_;

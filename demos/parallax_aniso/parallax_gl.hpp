@@ -429,11 +429,15 @@ struct PassOptions {
 inline bool isSoftpipe() { return ts::gl::rendererString().find("softpipe") != std::string::npos; }
 
 // Everything the demo, the tests and the benchmark need on the GL side.
-class ReliefGL {
+// Made per renderer (Renderer::attachment<ReliefGL>()), so its GL objects
+// go with the renderer, while their context is current.
+class ReliefGL final : public ts::Renderer::Attachment {
  public:
   explicit ReliefGL(ts::Renderer& r) : r_(r) {}
-  ~ReliefGL() = default;
-  // Drops the GL objects (call while the context is alive).
+  ~ReliefGL() override { release(); }
+  ReliefGL(const ReliefGL&) = delete;
+  ReliefGL& operator=(const ReliefGL&) = delete;
+  // Drops the GL objects (the context must be current).
   void release() {
     for (auto& t : textures_) {
       GLuint ids[3] = {t.albedo, t.height, t.heightMax};

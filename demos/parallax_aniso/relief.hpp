@@ -32,6 +32,7 @@
 
 #include "common/image.hpp"
 #include "common/relief_maps.hpp"
+#include "common/scene.hpp"
 
 namespace pax {
 using ts::relief::kTexSize;          // every relief map is 512 x 512
@@ -219,14 +220,20 @@ struct Reference {
 // unit disc are traced (traceFine) and weighted exp(-alpha r^2): the same
 // Gaussian as the EWA (Q / F = r^2 is the screen distance squared).  The
 // albedo at each hit is bilinear at level 0.  Rows in parallel (2 threads).
-inline Reference renderReference(const Camera& cam, const Relief& r, int n, uint32_t seed) {
+// `progress` (may be null) is told the fraction of rows done, from the
+// calling thread; ts::measureCancelled() stops the rows early (a superseded
+// measurement in a window: the caller's next ts::measureProgress throws).
+inline Reference renderReference(const Camera& cam, const Relief& r, int n, uint32_t seed,
+                                 const std::function<void(double)>& progress = nullptr) {
   Reference out;
   out.width = cam.width;
   out.height = cam.height;
   out.rgb.assign(size_t(cam.width) * size_t(cam.height), glm::dvec3(0));
   out.depthSpread.assign(out.rgb.size(), 0.0);
   auto rows = [&](int y0, int step) {
-    for (int y = y0; y < cam.height; y += step)
+    for (int y = y0; y < cam.height; y += step) {
+      if (ts::measureCancelled()) return;
+      if (progress && y0 == 0) progress(double(y) / cam.height);
       for (int x = 0; x < cam.width; ++x) {
         const int gy = cam.height - 1 - y;  // GL row
         glm::dvec3 sum(0);
@@ -251,6 +258,7 @@ inline Reference renderReference(const Camera& cam, const Relief& r, int n, uint
         out.rgb[p] = wsum > 0 ? sum / wsum : glm::dvec3(0);
         out.depthSpread[p] = dmax - dmin;
       }
+    }
   };
   std::thread t(rows, 1, 2);
   rows(0, 2);

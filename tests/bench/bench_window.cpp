@@ -21,6 +21,17 @@
 //                         window_loop above; 20 frames per second is the
 //                         bar the parallax issue sets for M2
 //
+//   <demo>/responsiveness
+//                         never frozen (issue 13.3): the demo at its default
+//                         window size, every key of its options typed one a
+//                         second (TS_TEST_KEY_INTERVAL_MS) while the window
+//                         logs its frames (TS_TEST_FRAME_LOG): the time from
+//                         the spawn to the first picture (goal 0.5 s), and
+//                         after each key the longest wait for a frame until
+//                         the frame that shows the key's measurement (or the
+//                         next key): goal 100 ms.  Reported: the first
+//                         picture, the median and the worst key.
+//
 // Reported time is per frame; the fps counter is its inverse.  Medians of 5
 // repetitions by default; any benchmark flag overrides.
 #include <fcntl.h>
@@ -42,6 +53,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "bench_common.hpp"
@@ -123,7 +135,8 @@ std::string binDir() {
 
 // Runs `<demo> --size 1024x768 --frames N <flags>` and returns the seconds from
 // its first output to its exit.  The window loop flushes its first output
-// right after the start-up measurement, before the first frame, so the
+// when the first measurement is handed over (from its worker, or a live
+// view's first frame), and --frames counts the frames from there, so the
 // start-up (window, context, Dear ImGui, measure), whose time varies far more
 // than a frame's, is left out; what remains is N frames and the teardown.
 // Throws if the demo fails.
@@ -242,6 +255,153 @@ void benchIdleCpu(benchmark::State& st, const std::string& demo) {
   } catch (const std::exception& e) {
     st.SkipWithError(e.what());
   }
+}
+
+// ---- responsiveness
+struct Responsiveness {
+  double firstPicture = 0;             // seconds from the spawn to the first frame
+  std::vector<std::pair<char, double>> keyGaps;  // per key: longest wait for a frame, seconds
+  std::vector<double> measureSeconds;  // per key whose measurement was shown: key to result
+};
+std::map<std::string, std::vector<Responsiveness>> g_responsiveness;  // demo -> one per repetition
+
+std::string demoKeys(const std::string& demo) {
+  auto scene = ts::makeScene(demo);
+  ts::Options o;
+  scene->addOptions(o);
+  std::string keys;
+  for (const auto& it : o.items())
+    for (char k : {it.key, it.keyDown})
+      if (k && k != 'q' && k != 'h' && k != 'l') keys += k;
+  return keys;
+}
+
+Responsiveness runResponsiveness(const std::string& demo, const std::string& keys, double keyInterval) {
+  std::string exe = binDir() + "/" + demo;
+  char logPath[] = "/tmp/bench_window_frames_XXXXXX";
+  int fd = mkstemp(logPath);
+  if (fd < 0) throw ts::Error(std::string("mkstemp: ") + std::strerror(errno));
+  close(fd);
+  std::vector<std::string> args = {exe, "--keys", keys + "q", "--quiet"};
+  std::vector<std::string> env = {std::string("TS_TEST_FRAME_LOG=") + logPath,
+                                  "TS_TEST_KEY_INTERVAL_MS=" + std::to_string(int(keyInterval * 1000))};
+  for (char** e = environ; *e; ++e) env.push_back(*e);
+  std::vector<char*> argv, envp;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  for (auto& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  Clock::time_point spawned = Clock::now();
+  int err = posix_spawn(&pid, exe.c_str(), &fa, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&fa);
+  if (err != 0) throw ts::Error("cannot run " + exe + ": " + std::strerror(err));
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  std::FILE* f = std::fopen(logPath, "r");
+  std::vector<std::tuple<std::string, double, std::string>> log;
+  char what[16], rest[64];
+  double t = 0;
+  while (f && std::fscanf(f, "%15s %lf", what, &t) == 2) {
+    rest[0] = 0;
+    if (!std::fgets(rest, sizeof rest, f)) rest[0] = 0;
+    log.emplace_back(what, t, rest);
+  }
+  if (f) std::fclose(f);
+  std::remove(logPath);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw ts::Error(exe + " --keys " + keys + " failed (status " + std::to_string(status) + ")");
+  Responsiveness r;
+  double t0 = std::chrono::duration<double>(spawned.time_since_epoch()).count();  // steady clock, as the log
+  for (const auto& [w, tt, _] : log)
+    if (w == "frame") {
+      r.firstPicture = tt - t0;
+      break;
+    }
+  for (size_t i = 0; i < log.size(); ++i) {
+    if (std::get<0>(log[i]) != "key") continue;
+    char key = std::get<2>(log[i]).size() > 1 ? std::get<2>(log[i])[1] : '?';
+    if (key == 'q') break;
+    double prev = std::get<1>(log[i]), gap = 0;
+    bool shown = false;
+    for (size_t j = i + 1; j < log.size(); ++j) {
+      const auto& [w, tt, _] = log[j];
+      if (w == "key") break;
+      if (w == "result") {
+        shown = true;
+        r.measureSeconds.push_back(tt - std::get<1>(log[i]));
+        continue;
+      }
+      gap = std::max(gap, tt - prev);
+      prev = tt;
+      if (shown) break;  // the frame that shows the key's measurement
+    }
+    r.keyGaps.push_back({key, gap});
+  }
+  return r;
+}
+
+void benchResponsiveness(benchmark::State& st, const std::string& demo) {
+  try {
+    std::string keys = demoKeys(demo);
+    for (auto _ : st) {
+      Responsiveness r = runResponsiveness(demo, keys, 1.0);
+      double worst = 0;
+      for (const auto& kg : r.keyGaps) worst = std::max(worst, kg.second);
+      st.SetIterationTime(r.firstPicture);
+      st.counters["first_picture_s"] = r.firstPicture;
+      st.counters["worst_key_gap_ms"] = 1000.0 * worst;
+      g_responsiveness[demo].push_back(std::move(r));
+    }
+  } catch (const std::exception& e) {
+    st.SkipWithError(e.what());
+  }
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+void responsivenessSummary() {
+  if (g_responsiveness.empty()) return;
+  std::FILE* la = std::fopen("/proc/loadavg", "r");
+  char load[64] = "?";
+  if (la) {
+    if (!std::fgets(load, sizeof load, la)) std::snprintf(load, sizeof load, "?");
+    std::fclose(la);
+  }
+  std::printf("\n## Never frozen: first picture and frame intervals after each key (default window, keys 1 s apart)\n\n"
+              "Load average at the end: %s\n"
+              "| demo | first picture s (median) | key gap ms: median over keys | worst key (ms) | key to its numbers s "
+              "(median) | keys |\n|---|--:|--:|--:|--:|--:|\n",
+              load);
+  for (const auto& [demo, runs] : g_responsiveness) {
+    std::vector<double> first, gaps, measure;
+    std::map<char, std::vector<double>> perKey;
+    for (const Responsiveness& r : runs) {
+      first.push_back(r.firstPicture);
+      for (const auto& [k, g] : r.keyGaps) perKey[k].push_back(g);
+      measure.insert(measure.end(), r.measureSeconds.begin(), r.measureSeconds.end());
+    }
+    char worstKey = '?';
+    double worst = -1;
+    for (const auto& [k, v] : perKey) {
+      double m = median(v);
+      gaps.push_back(m);
+      if (m > worst) worst = m, worstKey = k;
+    }
+    std::printf("| `%s` | %.2f | %.0f | %c: %.0f | %.2f | %zu |\n", demo.c_str(), median(first), 1000.0 * median(gaps),
+                worstKey, 1000.0 * worst, median(measure), perKey.size());
+  }
+  std::printf("\nGoals: first picture <= 0.5 s, every key gap <= 100 ms (a key gap: from the key to its first frame, "
+              "and between frames until the frame that shows the key's measurement).\n\n");
 }
 
 constexpr double kExtraSeconds = 1.5;
@@ -372,6 +532,11 @@ int main(int argc, char** argv) {
         ->Unit(benchmark::kMillisecond)
         ->UseManualTime()
         ->Iterations(1);
+  for (const std::string& d : demos)
+    benchmark::RegisterBenchmark((d + "/responsiveness").c_str(), benchResponsiveness, d)
+        ->Unit(benchmark::kMillisecond)
+        ->UseManualTime()
+        ->Iterations(1);
   for (const char* m : kLiveModes)
     benchmark::RegisterBenchmark((std::string("parallax_live/") + m + "/window_loop").c_str(), benchLiveLoop,
                                  std::string(m))
@@ -379,8 +544,10 @@ int main(int argc, char** argv) {
         ->UseManualTime()
         ->Iterations(1)
         ->ComputeStatistics("min", ts::bench::minimum);
-  int status =
-      ts::bench::run(argc, argv, [&](const ts::bench::SummaryReporter& rep) { summary(rep, figs, renderer); });
+  int status = ts::bench::run(argc, argv, [&](const ts::bench::SummaryReporter& rep) {
+    summary(rep, figs, renderer);
+    responsivenessSummary();
+  });
   g_target.reset();
   glfwDestroyWindow(g_window);
   glfwTerminate();

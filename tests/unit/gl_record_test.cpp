@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <thread>
 
+#include "common/context.hpp"
+
 #include "common/gl_record.hpp"
 #include "tests/support/gl_test.hpp"
 
@@ -93,15 +95,29 @@ TEST(GlRecord, CallsAsCWithTheirValues) {
   EXPECT_TRUE(get->query);
 }
 
-// Claim: calls on another thread (a measurement on its own context) are not
-// the picture's, and nothing is kept once the Recording ends.
+// Claim: calls on another thread (a measurement on its own context, as the
+// window's measurement worker makes) are not the picture's, and nothing is
+// kept once the Recording ends.  Each thread has its own table of GL
+// pointers (gl.hpp): the other thread loads its own from its own context.
 TEST(GlRecord, OnlyThisThreadOnlyWhileAlive) {
   ts::test::context();
   std::vector<Call> calls;
   {
     ts::gl::Recording rec;
-    std::thread other([] { glGetError(); });
+    std::string otherError;
+    std::thread other([&] {
+      try {
+        ts::ContextOptions o;
+        o.width = o.height = 16;
+        auto ctx = ts::createOffscreenContext(ts::Backend::Auto, o);
+        glGetError();
+        glFlush();
+      } catch (const std::exception& e) {
+        otherError = e.what();
+      }
+    });
     other.join();
+    ASSERT_EQ(otherError, "");
     glFlush();
     calls = rec.take();
   }

@@ -769,6 +769,135 @@ void roundTrip(const std::string& id, const ts::Options& state, const std::strin
   EXPECT_EQ(f.opts.stateText(), state.stateText()) << what << ": stateFlags() " << commandLine(flags);
 }
 
+
+// --- never frozen (issue 13.3) ----------------------------------------------
+// The window's test hooks: TS_TEST_SLOW_MEASURE_MS makes every measurement of
+// the worker last that long (in 10 ms steps that report progress and stop when
+// superseded), TS_TEST_KEY_INTERVAL_MS types --keys that far apart (while a
+// measurement runs), TS_TEST_FRAME_LOG lists frames, keys and results with
+// steady-clock times (see common/window.cpp).
+struct LogEvent {
+  std::string what;  // frame | key | result
+  double t = 0;
+  int measuring = 0;
+  double progress = 0;
+  std::string key;
+};
+std::vector<LogEvent> readFrameLog(const std::string& path) {
+  std::vector<LogEvent> r;
+  std::istringstream in(readFile(path));
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream l(line);
+    LogEvent e;
+    l >> e.what >> e.t;
+    if (e.what == "frame") l >> e.measuring >> e.progress;
+    if (e.what == "key") l >> e.key;
+    r.push_back(e);
+  }
+  return r;
+}
+// The first two keys of a scene that change its state.
+std::string twoKeys(const std::string& id) {
+  Fresh f(id);
+  std::string k;
+  for (const auto& it : f.opts.items())
+    if (it.key && k.size() < 2 && it.key != 'v') k += it.key;
+  return k;
+}
+Proc hookedRun(const std::string& id, const std::string& dir, const std::vector<std::string>& env,
+               const std::vector<std::string>& args) {
+  mkdirs(dir);
+  Proc win;
+  win.argv = {"env", "TS_TEST_FRAME_LOG=" + dir + "/frames.log"};
+  for (const auto& e : env) win.argv.push_back(e);
+  for (const std::string& a : {std::string("xvfb-run"), std::string("-a"), std::string("-s"), std::string(kXvfbScreen),
+                               binDir() + "/" + id, std::string("--size"),
+                               std::to_string(gWidth) + "x" + std::to_string(gHeight)})
+    win.argv.push_back(a);
+  for (const auto& a : args) win.argv.push_back(a);
+  win.outPath = dir + "/window.stdout";
+  win.errPath = dir + "/window.stderr";
+  std::remove((dir + "/frames.log").c_str());
+  win.spawn();
+  while (!win.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  return win;
+}
+
+// Two keys typed 0.7 s apart while a measurement slowed to 2.5 s runs: the
+// first picture comes before the first measurement ends, frames keep coming
+// (with the progress) while it runs, the second key supersedes the first
+// one's measurement (only the last state's result is shown and printed), and
+// --frames' last frame waits for it.
+void framesKeepComing(const std::string& id) {
+  const double slow = 2.5;
+  std::string dir = outDir() + "/" + id + "/never_frozen", keys = twoKeys(id);
+  ASSERT_EQ(keys.size(), 2u);
+  Proc win = hookedRun(id, dir, {"TS_TEST_SLOW_MEASURE_MS=2500", "TS_TEST_KEY_INTERVAL_MS=700"},
+                       {"--frames", "3", "--keys", keys});
+  ASSERT_EQ(win.exitCode, 0) << win.describe();
+  std::vector<LogEvent> log = readFrameLog(dir + "/frames.log");
+  double firstFrame = -1, firstResult = -1, lastKey = -1, maxGap = 0;
+  int results = 0, keysTaken = 0, measuringFrames = 0;
+  bool midProgress = false;
+  double prevFrame = -1;
+  for (const auto& e : log) {
+    if (e.what == "frame") {
+      if (firstFrame < 0) firstFrame = e.t;
+      if (e.measuring) {
+        ++measuringFrames;
+        midProgress |= e.progress > 0.0 && e.progress < 1.0;
+        if (prevFrame >= 0) maxGap = std::max(maxGap, e.t - prevFrame);
+      }
+      prevFrame = e.t;
+    } else if (e.what == "result") {
+      if (firstResult < 0) firstResult = e.t;
+      ++results;
+    } else if (e.what == "key") {
+      ++keysTaken;
+      lastKey = e.t;
+    }
+  }
+  std::printf("[ measured ] %s/never_frozen: first frame %.2f s before the first result; %d frames while measuring, "
+              "longest interval %.3f s\n", id.c_str(), firstResult - firstFrame, measuringFrames, maxGap);
+  ASSERT_GE(firstFrame, 0) << "no frame logged\n" << win.describe();
+  ASSERT_GE(firstResult, 0) << "no measurement handed over\n" << win.describe();
+  EXPECT_LT(firstFrame, firstResult) << "the first picture waited for the measurement";
+  EXPECT_EQ(keysTaken, 2);
+  EXPECT_EQ(results, 1) << "the first key's measurement was not superseded by the second key";
+  EXPECT_GE(firstResult - lastKey, slow - 0.05) << "the result came before the last key's slowed measurement could end";
+  // 2.5 s of slowed measurement at 30 frames a second: tens of frames.  The
+  // bound on an interval is loose (a busy machine); bench_window measures it.
+  EXPECT_GE(measuringFrames, 10) << "the window did not keep drawing while measuring";
+  EXPECT_LT(maxGap, 1.0) << "a frame interval while measuring";
+  EXPECT_TRUE(midProgress) << "no frame showed the measurement's progress";
+  Fresh f(id);
+  for (char k : keys) f.opts.handleKey(k);
+  std::vector<std::string> lines = stateLines(win.out, f.opts);
+  ASSERT_EQ(lines.size(), 1u) << win.out;
+  EXPECT_EQ(lines.back(), f.opts.stateText());
+}
+
+// A key, then q one second later, while a measurement slowed to 30 s runs:
+// the window closes at once and the process ends (the measurement stops at
+// its next progress report), exit status 0, nothing on stderr about leaks.
+void closeDuringMeasurement(const std::string& id) {
+  std::string dir = outDir() + "/" + id + "/close_while_measuring", keys = twoKeys(id).substr(0, 1) + "q";
+  Proc win = hookedRun(id, dir, {"TS_TEST_SLOW_MEASURE_MS=30000", "TS_TEST_KEY_INTERVAL_MS=1000"}, {"--keys", keys});
+  ASSERT_EQ(win.exitCode, 0) << win.describe();
+  std::vector<LogEvent> log = readFrameLog(dir + "/frames.log");
+  double quitAt = -1, lastFrame = -1;
+  for (const auto& e : log) {
+    if (e.what == "key" && e.key == "q") quitAt = e.t;
+    if (e.what == "frame") lastFrame = e.t;
+    EXPECT_NE(e.what, "result") << "a 30 s measurement ended in a run that should have lasted about 2 s";
+  }
+  ASSERT_GE(quitAt, 0) << win.describe();
+  std::printf("[ measured ] %s/close_while_measuring: run %.2f s (measurement slowed to 30 s)\n", id.c_str(), win.seconds);
+  EXPECT_LE(lastFrame, quitAt + 0.2) << "frames after q";
+  EXPECT_LT(win.seconds, 12.0) << "closing waited for the measurement\n" << win.describe();
+  EXPECT_EQ(win.err.find("LeakSanitizer"), std::string::npos) << win.err;
+}
+
 class Case : public testing::Test {
  public:
   explicit Case(std::function<void()> body) : body_(std::move(body)) {}
@@ -870,6 +999,10 @@ void registerAll() {
     registerCase(id, "usual_keys", [id] { usualKeys(id); });
     registerCase(id, "mouse_orbit", [id] { mouseOrbit(id); });
     if (probe.opts.has("texture")) registerCase(id, "drop_file", [id] { dropFile(id); });
+    if (id == "quad_distortion" || id == "parallax_aniso") {
+      registerCase(id, "never_frozen", [id] { framesKeepComing(id); });
+      registerCase(id, "close_while_measuring", [id] { closeDuringMeasurement(id); });
+    }
     registerCase(id, "state_flags_round_trip", [id, keys] {
       Fresh f(id);
       roundTrip(id, f.opts, "initial state");
