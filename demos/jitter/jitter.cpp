@@ -179,9 +179,8 @@ class Jitter final : public ts::Scene {
   void addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels, float labelW = 0) const;
   void buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
   void buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
-  void buildPlot(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
-  void addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::string& title, bool aliasing,
-               const Found& fd) const;
+  void buildPlot(ts::Frame& f, const Found& fd) const;
+  void addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd) const;
 
   int mode_ = kJitterPixel, side_ = 3, seed_ = 1, view_ = kViewMode, average_ = kAuto;
   bool showError_ = false;
@@ -409,7 +408,7 @@ ts::Frame Jitter::build(int width, int height, const ts::Measurements& measured)
   canvas.viewport = {0, 0, width, height};
   canvas.projection = glm::ortho(0.0f, float(width), float(height), 0.0f, -1.0f, 1.0f);
   if (view_ == kViewCompare) buildCompare(f, canvas, fd);
-  else if (view_ == kViewPlot) buildPlot(f, canvas, fd);
+  else if (view_ == kViewPlot) buildPlot(f, fd);
   else buildMode(f, canvas, fd);
   f.panels.push_back(canvas);
   return f;
@@ -525,64 +524,39 @@ void Jitter::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) cons
   }
 }
 
-void Jitter::addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::string& title, bool aliasing,
-                     const Found& fd) const {
-  const int line = 17;
-  ts::Panel p;
+void Jitter::addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd) const {
+  namespace plot = ts::plot;
+  plot::Spec p;
   p.id = aliasing ? "plot_aliasing" : "plot_rms";
-  p.viewport = {area.x + 56, area.y + 2 * line, std::max(1, area.w - 72), std::max(1, area.h - 5 * line)};
-  double ymax = 0;
-  for (int kind = 0; kind < 3; ++kind)
-    for (int side = 1; side <= kMaxSide; ++side)
-      ymax = std::max(ymax, aliasing ? fd.at(kind, side).stats.aliasing
-                                     : fd.at(kind, side).stats.rms);
+  p.title = title;
+  p.xLabel = "samples per pixel";
+  p.titleColor = kWhite, p.textColor = kGrey;
+  p.y1 = 0;  // the largest value, then rounded up
+  for (int kind = 0; kind < 3; ++kind) {
+    plot::Series curve(std::string("series_") + kKindKeys[kind], kSeriesColour[kind]),
+        marks(std::string("points_") + kKindKeys[kind], kSeriesColour[kind], plot::Mark::Squares, {}, 1.0f, 3.5f);
+    for (int side = 1; side <= kMaxSide; ++side) {
+      const jitter::ErrorStats& s = fd.at(kind, side).stats;
+      curve.points.push_back({side * side, aliasing ? s.aliasing : s.rms});
+      p.y1 = std::max(p.y1, curve.points.back().y);
+    }
+    marks.points = curve.points;
+    p.series.insert(p.series.end(), {curve, marks});
+  }
+  // A round step giving at most six intervals, the top a little over the largest value.
   double step = 0.01;
   for (double c : {0.005, 0.01, 0.02, 0.025, 0.05, 0.1})
-    if (ymax / c <= 6) {
+    if (p.y1 / c <= 6) {
       step = c;
       break;
     }
-  ymax = std::max(step, step * std::ceil(ymax * 1.08 / step));
-  const double xmax = 17.0;
-  p.projection = glm::ortho(0.0f, float(xmax), 0.0f, float(ymax), -1.0f, 1.0f);
-  p.clear = true;
-  p.clearColor = {0.17f, 0.17f, 0.2f, 1.0f};
-  const ts::Rect& vp = p.viewport;
-  std::vector<glm::vec2> grid;
-  for (double y = step; y < ymax - 1e-9; y += step) grid.insert(grid.end(), {{0.0f, float(y)}, {float(xmax), float(y)}});
-  for (int side = 1; side <= kMaxSide; ++side)
-    grid.insert(grid.end(), {{float(side * side), 0.0f}, {float(side * side), float(ymax)}});
-  p.batches.push_back(ts::lineSegments(grid, {0.32f, 0.32f, 0.36f, 1.0f}, 1.0f, "grid"));
-  for (int kind = 0; kind < 3; ++kind) {
-    std::vector<glm::vec2> pts;
-    for (int side = 1; side <= kMaxSide; ++side) {
-      const jitter::ErrorStats& s = fd.at(kind, side).stats;
-      pts.push_back({float(side * side), float(aliasing ? s.aliasing : s.rms)});
-    }
-    ts::Batch curve = ts::lineSegments(pts, kSeriesColour[kind], 2.0f, std::string("series_") + kKindKeys[kind]);
-    curve.prim = ts::Prim::LineStrip;
-    p.batches.push_back(curve);
-    ts::Batch marks = ts::lineSegments(pts, kSeriesColour[kind], 1.0f, std::string("points_") + kKindKeys[kind]);
-    marks.prim = ts::Prim::Points;
-    marks.pointSize = 7.0f;
-    p.batches.push_back(marks);
-  }
-  f.panels.push_back(p);
-  // Axes on the canvas, labels.
-  canvas.batches.push_back(ts::lineSegments({{float(vp.x), float(vp.y + vp.h)}, {float(vp.x + vp.w), float(vp.y + vp.h)},
-                                             {float(vp.x), float(vp.y)}, {float(vp.x), float(vp.y + vp.h)}},
-                                            {0.85f, 0.85f, 0.85f, 1.0f}, 1.0f, "axes"));
-  namespace L = ts::layout;
-  L::caption(f, {float(area.x + 4), float(area.y), float(area.x + area.w - 4), float(area.y + line)}, title, kWhite, 1);
-  std::vector<ts::plot::Tick> xt, yt;
-  for (int side = 1; side <= kMaxSide; ++side) xt.push_back({double(side * side), std::to_string(side * side)});
-  for (double y = 0; y <= ymax + 1e-9; y += step) yt.push_back({y, fmt(step < 0.01 ? "%.3f" : "%.2f", y)});
-  ts::plot::tickLabels(f, vp, area, 0, xmax, 0, ymax, xt, yt, kGrey);
-  L::caption(f, {float(area.x + 4), float(vp.y + vp.h + 6 + line), float(area.x + area.w - 4), float(area.y + area.h)},
-             "samples per pixel", kGrey, 1);
+  p.x1 = 17, p.y1 = std::max(step, step * std::ceil(p.y1 * 1.08 / step));
+  for (int side = 1; side <= kMaxSide; ++side) p.xTicks.push_back({double(side * side), std::to_string(side * side)});
+  p.yTicks = plot::ticks(0, p.y1, step, step < 0.01 ? "%.3f" : "%.2f");
+  plot::draw(f, p, area);
 }
 
-void Jitter::buildPlot(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
+void Jitter::buildPlot(ts::Frame& f, const Found& fd) const {
   namespace L = ts::layout;
   const int line = 17;
   L::caption(f, {4, 6, float(f.width) - 4, float(6 + line)},
@@ -597,12 +571,12 @@ void Jitter::buildPlot(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
   const int tableH = (twoLines ? 7 : 4) * line + 8;
   const int plotsH = std::max(60, f.height - 2 * line - tableH);
   if (f.width >= f.height) {
-    addPlot(f, canvas, {0, 2 * line, f.width / 2, plotsH}, "RMS error (1 = full scale)", false, fd);
-    addPlot(f, canvas, {f.width / 2, 2 * line, f.width - f.width / 2, plotsH},
+    addPlot(f, {0, 2 * line, f.width / 2, plotsH}, "RMS error (1 = full scale)", false, fd);
+    addPlot(f, {f.width / 2, 2 * line, f.width - f.width / 2, plotsH},
             "aliasing: the predictable part of the error", true, fd);
   } else {
-    addPlot(f, canvas, {0, 2 * line, f.width, plotsH / 2}, "RMS error (1 = full scale)", false, fd);
-    addPlot(f, canvas, {0, 2 * line + plotsH / 2, f.width, plotsH - plotsH / 2},
+    addPlot(f, {0, 2 * line, f.width, plotsH / 2}, "RMS error (1 = full scale)", false, fd);
+    addPlot(f, {0, 2 * line + plotsH / 2, f.width, plotsH - plotsH / 2},
             "aliasing: the predictable part of the error", true, fd);
   }
   float y = float(2 * line + plotsH + 4);

@@ -346,48 +346,25 @@ void MipmapPopping::buildFilmstrip(ts::Frame& f, const Result* m) const {
   }
 }
 
-// A small x-y plot: probe means (R, G, B) against log2 distance.
+// A plot of the probe's mean R, G, B against log2 distance.
 void plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, const std::vector<double>& xs,
                const std::vector<Mean>& ys, double current, const std::vector<double>& switches) {
-  const int line = int(ts::text::height(1)) + 6;
-  ts::Panel p;
+  namespace plot = ts::plot;
+  plot::Spec p;
   p.id = "plot_" + std::to_string(f.panels.size());
-  p.viewport = {area.x + 48, area.y + line + 4, std::max(1, area.w - 64), std::max(1, area.h - 3 * line - 8)};
-  const double x0 = xs.front(), x1 = xs.back();
-  p.projection = glm::ortho(float(x0), float(x1), 0.0f, 255.0f, -1.0f, 1.0f);
-  p.clear = true;
-  p.clearColor = {0.17f, 0.17f, 0.2f, 1.0f};
-  const glm::vec4 grid{0.32f, 0.32f, 0.36f, 1.0f}, axis{0.85f, 0.85f, 0.85f, 1.0f};
-  std::vector<glm::vec2> g;
-  for (int k = int(std::ceil(x0)); k <= int(std::floor(x1)); ++k) g.insert(g.end(), {{float(k), 0.0f}, {float(k), 255.0f}});
-  for (int v = 64; v < 255; v += 64) g.insert(g.end(), {{float(x0), float(v)}, {float(x1), float(v)}});
-  p.batches.push_back(ts::lineSegments(g, grid, 1.0f, "grid"));
-  // Where the chosen level changes (dashed).
-  std::vector<glm::vec2> dash;
-  for (double s : switches)
-    for (double y = 0; y < 255; y += 16) dash.insert(dash.end(), {{float(s), float(y)}, {float(s), float(y + 8)}});
-  if (!dash.empty()) p.batches.push_back(ts::lineSegments(dash, {0.55f, 0.55f, 0.6f, 1.0f}, 1.0f, "level_switches"));
+  p.title = title;
+  p.x0 = xs.front(), p.x1 = xs.back(), p.y1 = 255;
+  p.xTicks = plot::ticks(std::ceil(p.x0), std::floor(p.x1), 1), p.yTicks = plot::ticks(0, 255, 64);
+  const char* roles[3] = {"mean_red", "mean_green", "mean_blue"};
   const glm::vec4 colours[3] = {{1.0f, 0.3f, 0.3f, 1.0f}, {0.3f, 0.95f, 0.3f, 1.0f}, {0.4f, 0.55f, 1.0f, 1.0f}};
   for (int c = 0; c < 3; ++c) {
-    std::vector<glm::vec2> pts;
-    for (size_t k = 0; k < xs.size() && k < ys.size(); ++k)
-      pts.push_back({float(xs[k]), float(c == 0 ? ys[k].r : c == 1 ? ys[k].g : ys[k].b)});
-    ts::Batch b = ts::lineSegments(pts, colours[c], 2.0f, c == 0 ? "mean_red" : c == 1 ? "mean_green" : "mean_blue");
-    b.prim = ts::Prim::LineStrip;
-    p.batches.push_back(b);
+    plot::Series se(roles[c], colours[c]);
+    for (size_t k = 0; k < xs.size() && k < ys.size(); ++k) se.points.push_back({xs[k], c == 0 ? ys[k].r : c == 1 ? ys[k].g : ys[k].b});
+    p.series.push_back(se);
   }
-  p.batches.push_back(ts::lineSegments({{float(current), 0.0f}, {float(current), 255.0f}}, kAmber, 2.0f, "current"));
-  p.batches.push_back(ts::lineLoop({{float(x0), 0}, {float(x1), 0}, {float(x1), 255}, {float(x0), 255}}, axis, 1.0f,
-                                   "axes"));
-  const ts::Rect vp = p.viewport;
-  f.panels.push_back(p);
-  namespace L = ts::layout;
-  L::caption(f, {float(vp.x), float(area.y + 2), float(area.x + area.w - 2), float(vp.y - 2)}, title, kWhite, 1,
-             ts::Align::Left);
-  std::vector<ts::plot::Tick> xt, yt;
-  for (int k = int(std::ceil(x0)); k <= int(std::floor(x1)); ++k) xt.push_back({double(k), std::to_string(k)});
-  for (int v = 0; v <= 255; v += 64) yt.push_back({double(v), std::to_string(v)});
-  ts::plot::tickLabels(f, vp, area, x0, x1, 0, 255, xt, yt, axis);
+  for (double sw : switches) p.markers.push_back({sw, {0.55f, 0.55f, 0.6f, 1.0f}, "level_switches"});  // where the level changes
+  p.markers.push_back({current, kAmber, "current", "", false, 2.0f});
+  plot::draw(f, p, area);
 }
 
 void MipmapPopping::buildPlot(ts::Frame& f, const Result* m) const {
