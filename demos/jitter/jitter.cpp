@@ -74,7 +74,8 @@ constexpr Pattern kKinds[3] = {Pattern::Regular, Pattern::JitterGlobal, Pattern:
 const char* const kKindKeys[3] = {"regular", "jitter_global", "jitter_pixel"};
 const char* const kKindTitles[3] = {"regular", "jittered, one pattern", "jittered per pixel"};
 
-const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f}, kGrey{0.6f, 0.6f, 0.65f, 1.0f};
+using ts::layout::kWhite, ts::layout::kAmber;
+const glm::vec4 kGrey{0.6f, 0.6f, 0.65f, 1.0f};
 const glm::vec4 kSeriesColour[3] = {{0.35f, 0.65f, 1.0f, 1.0f}, {1.0f, 0.55f, 0.2f, 1.0f}, {0.4f, 0.9f, 0.45f, 1.0f}};
 
 using ts::layout::fmt;
@@ -330,19 +331,7 @@ void Jitter::addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const 
   for (size_t i = 0; i < f.textures.size(); ++i)
     if (f.textures[i].key() == t.key() && f.textures[i].minFilter == t.minFilter) index = int(i);
   if (index < 0) index = f.addTexture(t);
-  ts::Panel p;
-  p.id = id;
-  p.viewport = rect;
-  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
-  ts::Batch b;
-  b.role = "image";
-  b.texture = index;
-  for (int i : {0, 1, 2, 0, 2, 3}) {
-    glm::vec2 c = i == 0 ? glm::vec2(0, 0) : i == 1 ? glm::vec2(1, 0) : i == 2 ? glm::vec2(1, 1) : glm::vec2(0, 1);
-    b.vertices.push_back({{c, 0.0f}, {c, 0.0f, 1.0f}, {1, 1, 1, 1}});
-  }
-  p.batches.push_back(b);
-  f.panels.push_back(p);
+  f.panels.push_back(ts::layout::texturePanel(id, rect, index));
 }
 
 // A pixel square of `box` (canvas pixels, y down) with its subpixel grid and

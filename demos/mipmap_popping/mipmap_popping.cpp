@@ -207,7 +207,8 @@ ts::Frame MipmapPopping::build(int width, int height, const ts::Measurements& me
   return f;
 }
 
-const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f}, kGrey{0.75f, 0.75f, 0.78f, 1.0f},
+using ts::layout::kWhite, ts::layout::kAmber;
+const glm::vec4 kGrey{0.75f, 0.75f, 0.78f, 1.0f},
     kBox{0.0f, 0.0f, 0.0f, 0.65f};
 
 // A facing-plane panel: the plane (split or not) at log2 distance x.

@@ -203,7 +203,7 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
   // under GL_NICEST; the affine-only view asks for GL_FASTEST, which Mesa
   // ignores — and which cannot matter to it anyway, since w = 1 everywhere.
   f.perspectiveHint = view_ == kAffine ? GL_FASTEST : GL_NICEST;
-  const glm::vec4 white{0.95f, 0.95f, 0.95f, 1.0f}, grey{0.75f, 0.75f, 0.78f, 1.0f}, amber{1.0f, 0.75f, 0.3f, 1.0f};
+  const glm::vec4 &white = ts::layout::kWhite, &amber = ts::layout::kAmber, grey{0.75f, 0.75f, 0.78f, 1.0f};
   const persp::Setup s = setup();
   const persp::Distances d = persp::distances(s);
   const Result* last = measured.detailAs<Result>();
@@ -353,7 +353,7 @@ ts::Measurements PerspectiveCorrection::measure(ts::Renderer& r) {
 
 plot::Spec PerspectiveCorrection::plotSpec(const Result* last) const {
   const persp::Setup s = setup();
-  const glm::vec4 curveC{0.35f, 0.7f, 1.0f, 1.0f}, measuredC{1.0f, 0.75f, 0.3f, 1.0f}, currentC{1.0f, 0.3f, 0.3f, 1.0f};
+  const glm::vec4 curveC{0.35f, 0.7f, 1.0f, 1.0f}, measuredC = ts::layout::kAmber, currentC{1.0f, 0.3f, 0.3f, 1.0f};
   plot::Spec p;
   p.title = "Largest (s,t) error of the screen-linear image vs (d2 - d1)/d1: tilts 0.." + std::to_string(kSweepMaxDeg) +
             " deg at distance " + fmt("%g", s.distance);

@@ -219,14 +219,7 @@ void QuadDistortion::addSquare(ts::Frame& f, ts::Panel& p, Variant v, int textur
 void QuadDistortion::addTextureView(ts::Frame&, ts::Panel& p, Variant v, int texture) const {
   quadmap::Corners st = corners();
   // The whole texture on the unit square: s, t = a, b.
-  ts::Batch tex;
-  tex.role = "texture";
-  tex.texture = texture;
-  for (int i : {0, 1, 2, 0, 2, 3}) {
-    glm::vec2 c = glm::vec2(quadmap::squareCorners()[size_t(i)]);
-    tex.vertices.push_back({{c, 0}, {c, 0, 1}, {1, 1, 1, 1}});
-  }
-  p.batches.push_back(tex);
+  p.batches.push_back(ts::layout::unitSquare(texture, "texture"));
   // The region the (s, t) corners select, and the screen diagonal's image.
   std::vector<glm::vec2> region;
   for (const auto& c : st) region.push_back(glm::vec2(c));

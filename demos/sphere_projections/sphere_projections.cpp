@@ -45,7 +45,7 @@ const char* const kKey[] = {"vi2", "vi3"};  // measurement names
 const char* const kEq[] = {"Eq. VI.2", "Eq. VI.3"};
 const char* const kFormula[] = {"s = theta/360,  t = phi/180 + 1/2", "s = theta/360,  t = (sin phi + 1)/2"};
 const glm::vec4 kColour[] = {{1.0f, 0.55f, 0.1f, 1.0f}, {0.35f, 0.7f, 1.0f, 1.0f}};
-const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kGrey{0.4f, 0.4f, 0.45f, 1.0f};
+using ts::layout::kWhite;
 
 // The measurement pass: 9 panels (one per band) of kPanel pixels, whatever
 // the window's size, each showing one band's region (sphere_map.hpp's
