@@ -88,10 +88,15 @@ Rect draw(Frame& f, const Spec& s, Rect area) {
   // The bands around the plot: title, legend and the y axis's name above,
   // tick numbers left and below, the x axis's name at the bottom.
   const float titleH = s.title.empty() ? 0.0f : float(std::min(2, L::captionLines(s.title, sc, x1 - x0 - 8))) * line;
-  const float legendH = s.legendInside ? 0.0f : float(s.legend.size()) * line;
   float tickW = 0, lastX = 0;
   for (const Tick& t : s.yTicks) tickW = std::max(tickW, text::width(t.text, sc));
   if (!s.xTicks.empty()) lastX = text::width(s.xTicks.back().text, sc) / 2;
+  // A legend line above the plot may wrap once when the plot is narrow.
+  std::vector<float> legendLines;
+  for (const Legend& l : s.legendInside ? std::vector<Legend>{} : s.legend)
+    legendLines.push_back(float(std::min(2, L::captionLines(l.text, sc, x1 - 4 - (x0 + 4 + tickW + gap + 4)))) * line);
+  float legendH = 0;
+  for (float h : legendLines) legendH += h;
   const int top = int(4 + titleH + legendH + (s.yLabel.empty() ? 0.0f : line) + th / 2 + 2);
   const int left = int(4 + tickW + gap + 4), right = int(std::max(line, lastX + 4));
   const int bottom = int(gap + th + 4 + (s.xLabel.empty() ? 0.0f : line + 2) + 2);
@@ -142,9 +147,9 @@ Rect draw(Frame& f, const Spec& s, Rect area) {
   float y = y0 + 4;
   if (!s.title.empty()) L::caption(f, {x0 + 4, y, x1 - 4, y + titleH}, s.title, s.titleColor, sc);
   y += titleH;
-  for (const Legend& l : s.legendInside ? std::vector<Legend>{} : s.legend) {
-    L::caption(f, {float(vp.x), y, x1 - 4, y + line}, l.text, l.color, sc, Align::Left);
-    y += line;
+  for (size_t k = 0; k < legendLines.size(); ++k) {
+    L::caption(f, {float(vp.x), y, x1 - 4, y + legendLines[k]}, s.legend[k].text, s.legend[k].color, sc, Align::Left);
+    y += legendLines[k];
   }
   if (!s.yLabel.empty())
     L::caption(f, {float(vp.x), float(vp.y) - th / 2 - 2 - line, x1 - 4, float(vp.y) - th / 2 - 2}, s.yLabel, s.textColor,
