@@ -19,6 +19,14 @@ Box labelBox(const Label& l) {
   return {x - pad, y - pad, x + w + pad, y + h + pad};
 }
 
+Frame blankFrame(int width, int height) {
+  Frame f;
+  f.width = width;
+  f.height = height;
+  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  return f;
+}
+
 Batch unitSquare(int texture, const std::string& role, float s0, float s1) {
   Batch b;
   b.role = role;

@@ -36,6 +36,9 @@ Box labelBox(const Label& l);
 // The demos' shared text colours: captions, and measured values / the current state.
 inline const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f};
 
+// An empty frame of this size on the demos' shared background.
+Frame blankFrame(int width, int height);
+
 // A texture on the unit square (s, t from 0 to 1 across and up; s from s0 to
 // s1 when a panel shows a part): the batch, and a panel `id` at `viewport`
 // showing only it (a texture-space view, a rendered image).

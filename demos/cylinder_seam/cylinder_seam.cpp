@@ -238,10 +238,7 @@ void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int t
 }
 
 ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& measured) const {
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   ts::TextureDesc t = label();
   t.wrapS = GL_REPEAT;
   t = picture_.orDefault(t);  // the fix needs it (and the wrong way does not care)

@@ -283,10 +283,7 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
 ts::Frame Jitter::build(int width, int height, const ts::Measurements& measured) const {
   const Found none, *found = measured.detailAs<Found>();
   const Found& fd = found ? *found : none;
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   ts::Panel canvas;
   canvas.id = "canvas";
   canvas.viewport = {0, 0, width, height};

@@ -178,10 +178,7 @@ class MipmapPopping final : public ts::Scene {
 
 ts::Frame MipmapPopping::build(int width, int height, const ts::Measurements& measured) const {
   const Result* m = measured.detailAs<Result>();
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   switch (view_) {
     case kSingle: views().buildSingle(f, m); break;
     case kFilmstrip: views().buildFilmstrip(f, m); break;

@@ -195,10 +195,7 @@ void PerspectiveCorrection::addSquare(ts::Panel& p, const persp::Setup& s, Varia
 }
 
 ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurements& measured) const {
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   // The book's call.  The right (and single perspective) image is drawn
   // under GL_NICEST; the affine-only view asks for GL_FASTEST, which Mesa
   // ignores — and which cannot matter to it anyway, since w = 1 everywhere.

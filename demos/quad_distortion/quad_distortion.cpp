@@ -214,10 +214,7 @@ void QuadDistortion::addTextureView(ts::Frame&, ts::Panel& p, Variant v, int tex
 using ts::layout::fmt;
 
 ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& measured) const {
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   int checker = f.addTexture(this->checker());
   const glm::vec4 &white = ts::layout::kWhite, &amber = ts::layout::kAmber;
   glm::mat4 unit = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);

@@ -198,10 +198,7 @@ void SphereProjections::addPlot(ts::Frame& f, int width, int height, const ts::M
 }
 
 ts::Frame SphereProjections::build(int width, int height, const ts::Measurements& measured) const {
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   if (view_ == 1) {
     addPlot(f, width, height, measured);
     return f;

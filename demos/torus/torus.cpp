@@ -211,10 +211,7 @@ void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int s
 }
 
 ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) const {
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   int tex = f.addTexture(picture());
   const std::vector<Mapping> shown =
       view_ == 0 ? std::vector<Mapping>{Mapping(mapping_)} : std::vector<Mapping>{Mapping::Book, Mapping::Front};
