@@ -1,5 +1,7 @@
 #include "layout.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +17,33 @@ Box labelBox(const Label& l) {
   float y = float(int(l.y));
   float pad = l.background.a > 0 ? 3.0f * float(l.scale) : 0.0f;
   return {x - pad, y - pad, x + w + pad, y + h + pad};
+}
+
+Frame blankFrame(int width, int height) {
+  Frame f;
+  f.width = width;
+  f.height = height;
+  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  return f;
+}
+
+Batch unitSquare(int texture, const std::string& role, float s0, float s1) {
+  Batch b;
+  b.role = role;
+  b.texture = texture;
+  const glm::vec2 c[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int i : {0, 1, 2, 0, 2, 3})
+    b.vertices.push_back({{c[i], 0.0f}, {s0 + c[i].x * (s1 - s0), c[i].y, 0.0f, 1.0f}, {1, 1, 1, 1}});
+  return b;
+}
+
+Panel texturePanel(const std::string& id, const Rect& viewport, int texture, const std::string& role, float s0, float s1) {
+  Panel p;
+  p.id = id;
+  p.viewport = viewport;
+  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+  p.batches.push_back(unitSquare(texture, role, s0, s1));
+  return p;
 }
 
 std::string fmt(const char* format, double v) {

@@ -33,6 +33,19 @@ inline Box box(const Rect& r) { return {float(r.x), float(r.y), float(r.x + r.w)
 // scale, placed by its alignment, plus the background box when it has one).
 Box labelBox(const Label& l);
 
+// The demos' shared text colours: captions, and measured values / the current state.
+inline const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f};
+
+// An empty frame of this size on the demos' shared background.
+Frame blankFrame(int width, int height);
+
+// A texture on the unit square (s, t from 0 to 1 across and up; s from s0 to
+// s1 when a panel shows a part): the batch, and a panel `id` at `viewport`
+// showing only it (a texture-space view, a rendered image).
+Batch unitSquare(int texture, const std::string& role, float s0 = 0.0f, float s1 = 1.0f);
+Panel texturePanel(const std::string& id, const Rect& viewport, int texture, const std::string& role = "image",
+                   float s0 = 0.0f, float s1 = 1.0f);
+
 // printf of one number ("%.2f") into a std::string.
 std::string fmt(const char* format, double v);
 

@@ -46,8 +46,10 @@ using cylmap::Coords;
 using cylmap::Seam;
 
 const char* const kCoordNames[] = {"wrong", "right"};
-const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kIntended{0.2f, 0.85f, 0.3f, 1.0f}, kActual{0.95f, 0.15f, 0.15f, 1.0f},
-    kPatch{1.0f, 0.55f, 0.0f, 1.0f}, kMeasured{1.0f, 0.75f, 0.3f, 1.0f};
+using ts::layout::kWhite;
+const glm::vec4 kIntended{0.2f, 0.85f, 0.3f, 1.0f}, kActual{0.95f, 0.15f, 0.15f, 1.0f},
+    kPatch{1.0f, 0.55f, 0.0f, 1.0f};
+const glm::vec4& kMeasured = ts::layout::kAmber;
 
 // 10 x 10 labelled cells, 64 texels each: the book's s = 0.1 and 0.9 fall on
 // cell edges, so the seam patch shows whole columns (J|A right, I..B wrong).
@@ -129,18 +131,7 @@ class CylinderSeam final : public ts::Scene {
 };
 
 void CylinderSeam::addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const {
-  ts::Panel p;
-  p.id = "texture_space";
-  p.viewport = vp;
-  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
-  ts::Batch t;
-  t.role = "texture";
-  t.texture = tex;
-  for (int i : {0, 1, 2, 0, 2, 3}) {
-    glm::vec2 c(i == 1 || i == 2, i >= 2);
-    t.vertices.push_back({{c, 0}, {c, 0, 1}, {1, 1, 1, 1}});
-  }
-  p.batches.push_back(t);
+  ts::Panel p = ts::layout::texturePanel("texture_space", vp, tex, "texture");
   if (patch_) {
     const int k = cylmap::seamPatch(params(Coords::Right));
     // Intended: [s_k, s_k+1] of the right coordinates, cut where it wraps.
@@ -247,10 +238,7 @@ void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int t
 }
 
 ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& measured) const {
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   ts::TextureDesc t = label();
   t.wrapS = GL_REPEAT;
   t = picture_.orDefault(t);  // the fix needs it (and the wrong way does not care)

@@ -53,29 +53,20 @@
 #include "common/error.hpp"
 #include "common/render.hpp"
 #include "common/layout.hpp"
-#include "common/plot.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
 #include "jitter_gl.hpp"
 #include "jitter_math.hpp"
+#include "jitter_views.hpp"
 
 namespace {
 using jitter::Pattern;
 
-enum Mode { kOne, kRegular, kJitterGlobal, kJitterPixel, kReference, kModes };
-const char* const kModeNames[] = {"one", "regular", "jitter-global", "jitter-pixel", "reference"};
+using namespace jitter::views;  // the modes, the results and their drawing
 enum View { kViewMode, kViewCompare, kViewPlot };
 enum Average { kAuto, kAccum, kFbo };
-constexpr int kMaxSide = 4;
-
-// The three n x n patterns the sweep covers, in the order of the arrays below.
-constexpr Pattern kKinds[3] = {Pattern::Regular, Pattern::JitterGlobal, Pattern::JitterPixel};
-const char* const kKindKeys[3] = {"regular", "jitter_global", "jitter_pixel"};
-const char* const kKindTitles[3] = {"regular", "jittered, one pattern", "jittered per pixel"};
-
-const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f}, kGrey{0.6f, 0.6f, 0.65f, 1.0f};
-const glm::vec4 kSeriesColour[3] = {{0.35f, 0.65f, 1.0f, 1.0f}, {1.0f, 0.55f, 0.2f, 1.0f}, {0.4f, 0.9f, 0.45f, 1.0f}};
+constexpr Pattern kKinds[3] = {Pattern::Regular, Pattern::JitterGlobal, Pattern::JitterPixel};  // kKindKeys' order
 
 using ts::layout::fmt;
 
@@ -152,36 +143,14 @@ class Jitter final : public ts::Scene {
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
 
  private:
-  struct Result {
-    ts::Image image;
-    jitter::ErrorStats stats;
-    std::vector<double> error;
-    ts::TextureDesc texture;
-    ts::TextureDesc errorTexture;  // the error x3, as a picture
-    bool valid = false;
-  };
-  // The images measure() has made for the current seed and averaging (one
-  // per pattern kind and side, and the reference): its detail, which
-  // build() draws.
-  struct Found {
-    std::array<std::array<Result, kMaxSide>, 3> results;
-    Result reference;
-    const Result& at(int kind, int side) const { return results[size_t(kind)][size_t(side - 1)]; }
-    Result& at(int kind, int side) { return results[size_t(kind)][size_t(side - 1)]; }
-  };
+  using Result = jitter::views::Result;
+  using Found = jitter::views::Found;
   void prepare(ts::Renderer& r);
   void ensure(ts::Renderer& r, int kind, int side);
   Result& result(int kind, int side) { return found_.at(kind, side); }
-  const Result* current(const Found& fd) const;
   static ts::TextureDesc errorTextureOf(const Result& res);
-
-  void addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const ts::TextureDesc& tex) const;
-  void addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels, float labelW = 0) const;
-  void buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
-  void buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
-  void buildPlot(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
-  void addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::string& title, bool aliasing,
-               const Found& fd) const;
+  // The drawing (jitter_views.hpp) for the current flags.
+  Views views() const { return {mode_, side_, seed_, showError_}; }
 
   int mode_ = kJitterPixel, side_ = 3, seed_ = 1, view_ = kViewMode, average_ = kAuto;
   bool showError_ = false;
@@ -260,17 +229,6 @@ void Jitter::ensure(ts::Renderer& r, int kind, int side) {
   res.valid = true;
 }
 
-const Jitter::Result* Jitter::current(const Found& fd) const {
-  const Result* res = &fd.reference;
-  switch (mode_) {
-    case kOne: res = &fd.at(0, 1); break;
-    case kRegular: res = &fd.at(0, side_); break;
-    case kJitterGlobal: res = &fd.at(1, side_); break;
-    case kJitterPixel: res = &fd.at(2, side_); break;
-    default: break;
-  }
-  return res->valid ? res : nullptr;
-}
 
 ts::TextureDesc Jitter::errorTextureOf(const Result& res) {
   const jitter::Camera cam;
@@ -324,313 +282,21 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
   return out;
 }
 
-// ---------------------------------------------------------------- drawing
-void Jitter::addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const ts::TextureDesc& tex) const {
-  ts::TextureDesc t = tex;
-  // Pixel-exact at 1:1; scaled down (a small window) it is filtered.
-  if (rect.w < t.image->width || rect.h < t.image->height) t.minFilter = GL_LINEAR;
-  int index = -1;
-  for (size_t i = 0; i < f.textures.size(); ++i)
-    if (f.textures[i].key() == t.key() && f.textures[i].minFilter == t.minFilter) index = int(i);
-  if (index < 0) index = f.addTexture(t);
-  ts::Panel p;
-  p.id = id;
-  p.viewport = rect;
-  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
-  ts::Batch b;
-  b.role = "image";
-  b.texture = index;
-  for (int i : {0, 1, 2, 0, 2, 3}) {
-    glm::vec2 c = i == 0 ? glm::vec2(0, 0) : i == 1 ? glm::vec2(1, 0) : i == 2 ? glm::vec2(1, 1) : glm::vec2(0, 1);
-    b.vertices.push_back({{c, 0.0f}, {c, 0.0f, 1.0f}, {1, 1, 1, 1}});
-  }
-  p.batches.push_back(b);
-  f.panels.push_back(p);
-}
-
-// A pixel square of `box` (canvas pixels, y down) with its subpixel grid and
-// the sample points of `mode` (jitter-pixel: a 2 x 2 block of pixels, each
-// with its own jitter).
-void Jitter::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels,
-                        float labelW) const {
-  const int n = mode == kOne ? 1 : mode == kReference ? jitter::kReferenceSide : side;
-  const int cells = mode == kJitterPixel ? 2 : 1;
-  const float cell = float(box.w) / float(cells);
-  std::vector<glm::vec2> grid, border, dots;
-  for (int cy = 0; cy < cells; ++cy)
-    for (int cx = 0; cx < cells; ++cx) {
-      float x0 = float(box.x) + cx * cell, y0 = float(box.y) + cy * cell;
-      border.insert(border.end(), {{x0, y0}, {x0 + cell, y0}, {x0 + cell, y0}, {x0 + cell, y0 + cell},
-                                   {x0 + cell, y0 + cell}, {x0, y0 + cell}, {x0, y0 + cell}, {x0, y0}});
-      if (mode != kOne && n <= 8)
-        for (int k = 1; k < n; ++k) {
-          float t = float(k) / float(n) * cell;
-          grid.insert(grid.end(), {{x0 + t, y0}, {x0 + t, y0 + cell}, {x0, y0 + t}, {x0 + cell, y0 + t}});
-        }
-      // The pixel shown: for jitter-pixel, (100 + cx, 100 + 1 - cy) of the image (GL rows from the bottom).
-      const int pi = 100 + cx, pj = 100 + (cells - 1 - cy);
-      Pattern p = mode == kJitterGlobal ? Pattern::JitterGlobal : mode == kJitterPixel ? Pattern::JitterPixel
-                  : mode == kReference ? Pattern::Reference : Pattern::Regular;
-      for (int k = 0; k < n * n; ++k) {
-        glm::dvec2 s = jitter::samplePos(p, n, uint32_t(seed_), pi, pj, k);
-        dots.push_back({x0 + float(s.x) * cell, y0 + float(1.0 - s.y) * cell});
-      }
-    }
-  canvas.batches.push_back(ts::lineSegments(grid, kGrey, 1.0f, "subpixel_grid"));
-  canvas.batches.push_back(ts::lineSegments(border, kWhite, 2.0f, "pixel_border"));
-  ts::Batch d = ts::lineSegments(dots, kAmber, 1.0f, "sample_points");
-  d.prim = ts::Prim::Points;
-  d.pointSize = n > 8 ? 3.0f : std::clamp(std::round(cell / float(4 * n)), 3.0f, 8.0f);
-  canvas.batches.push_back(d);
-  if (labels) {
-    std::string nn = std::to_string(n) + "x" + std::to_string(n);
-    std::string l1 = mode == kOne ? "1 sample" : mode == kReference ? "16x16 stratified" : mode == kRegular ? nn + " regular"
-                                                                                                     : nn + " jittered";
-    std::string l2 = mode == kOne ? "the pixel centre"
-                     : mode == kRegular ? "subpixel centres"
-                     : mode == kJitterGlobal ? "same in every pixel"
-                     : mode == kJitterPixel ? "new in every pixel"
-                                            : "jittered (the reference)";
-    // Under the box, in a band as wide as the box and its margins.
-    const float half = (labelW > 0 ? labelW : std::max(float(box.w), 120.0f)) / 2, cx = float(box.x + box.w / 2), y = float(box.y + box.h + 5);
-    const ts::layout::Box band{std::max(0.0f, cx - half), y, std::min(float(f.width), cx + half), y + 16};
-    ts::layout::caption(f, band, l1, kWhite, 1);
-    ts::layout::caption(f, {band.x0, y + 16, band.x1, y + 32}, l2, kGrey, 1);
-  }
-}
-
 ts::Frame Jitter::build(int width, int height, const ts::Measurements& measured) const {
   const Found none, *found = measured.detailAs<Found>();
   const Found& fd = found ? *found : none;
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   ts::Panel canvas;
   canvas.id = "canvas";
   canvas.viewport = {0, 0, width, height};
   canvas.projection = glm::ortho(0.0f, float(width), float(height), 0.0f, -1.0f, 1.0f);
-  if (view_ == kViewCompare) buildCompare(f, canvas, fd);
-  else if (view_ == kViewPlot) buildPlot(f, canvas, fd);
-  else buildMode(f, canvas, fd);
+  if (view_ == kViewCompare) views().buildCompare(f, canvas, fd);
+  else if (view_ == kViewPlot) views().buildPlot(f, fd);
+  else views().buildMode(f, canvas, fd);
   f.panels.push_back(canvas);
   return f;
 }
 
-void Jitter::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
-  namespace L = ts::layout;
-  const int W = jitter::kImageW, H = jitter::kImageH, line = 19, top = 2 * line;
-  std::string n = std::to_string(side_) + "x" + std::to_string(side_);
-  std::string what = mode_ == kOne ? "1 sample per pixel"
-                     : mode_ == kRegular ? n + " regular samples per pixel"
-                     : mode_ == kJitterGlobal ? n + " jittered, one pattern for all pixels"
-                     : mode_ == kJitterPixel ? n + " jittered independently per pixel"
-                                             : "reference: 16x16 stratified samples per pixel";
-  L::caption(f, {12, 8, float(f.width) - 12, float(top - 2)}, "Figure VI.7: " + what + (showError_ ? "  (error x3)" : ""),
-             kWhite, 1, ts::Align::Left);
-  // The image as large as the window allows (whole zooms are pixel-exact;
-  // a zoom is rounded down to a whole one when that loses little), the
-  // sample pattern and the numbers beside it (a wide window) or under it.
-  const int sideW = std::min(220, std::max(130, f.width / 4)), under = 200;
-  auto fit = [&](int availW, int availH) {
-    double s = std::max(0.05, std::min(double(std::max(1, availW)) / W, double(std::max(1, availH)) / H));
-    if (s >= 1 && std::floor(s) >= 0.92 * s) s = std::floor(s);
-    return s;
-  };
-  double beside = fit(f.width - sideW - 48, f.height - top - 16), below = fit(f.width - 32, f.height - top - under - 16);
-  const bool column = below > beside;
-  const double s = column ? below : beside;
-  ts::Rect rect{16, top, std::max(1, int(W * s)), std::max(1, int(H * s))};
-  const Result* res = current(fd);
-  if (res) addImage(f, "image", rect, showError_ ? res->errorTexture : res->texture);
-  int x = column ? 16 : rect.x + rect.w + 24, y0 = column ? rect.y + rect.h + 12 : top + 4;
-  int room = column ? under - 12 : f.height - y0 - 3 * line - 44;
-  int box = std::max(16, std::min({sideW - 20, room - 44, f.height / 3}));
-  if (column) x = std::max(16, (f.width - (std::max(box, 160) + 24 + 150)) / 2);  // the pattern, then the numbers beside it
-  addPattern(f, canvas, {x, y0, box, box}, mode_, side_, true, 160.0f);
-  if (res && mode_ != kReference) {
-    // The numbers: right of the pattern in a column layout, under it beside the image.
-    float nx = column ? float(x + std::max(box, 160) + 24) : float(x), ny = column ? float(y0) : float(y0 + box + 44);
-    L::Column numbers(f, {nx, ny, float(f.width) - 4, float(f.height) - 2});
-    numbers.add("RMS error " + fmt("%.4f", res->stats.rms), kAmber, 1, ts::Align::Left);
-    numbers.add("aliasing  " + fmt("%.4f", res->stats.aliasing), kAmber, 1, ts::Align::Left);
-    numbers.add("noise     " + fmt("%.4f", res->stats.noise), kAmber, 1, ts::Align::Left);
-  }
-}
-
-void Jitter::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
-  namespace L = ts::layout;
-  const int W = jitter::kImageW, H = jitter::kImageH, line = 17, gap = 24;
-  // At 1:1 the figure needs four images and three gaps across, three images
-  // and ten lines of text down; a smaller frame (a window) scales the images.
-  // A tall window puts two columns across, each row of four in two rows.
-  auto scaleFor = [&](int cols, int numberLines) {
-    const int R = 4 / cols;
-    const int textH = 2 * line + 2 + R * ((numberLines + 1) * line + 10) + 2 * line + R * (2 * line) + 8;
-    return std::min({1.0, double(f.width - 16 - (cols - 1) * gap) / (cols * W), double(f.height - textH) / (3 * R * H)});
-  };
-  int cols = scaleFor(2, 3) > scaleFor(4, 2) * 1.05 ? 2 : 4;
-  double s = scaleFor(cols, 2);
-  const bool narrow = W * s < 220;  // the numbers take three lines instead of two
-  if (narrow) s = scaleFor(cols, 3);
-  const int R = 4 / cols;
-  const int w = std::max(1, int(W * s)), h = std::max(1, int(H * s)), g = std::max(6, int(gap * s));
-  const int left = std::max(0, (f.width - (cols * w + (cols - 1) * g)) / 2);
-  const std::string n = std::to_string(side_) + "x" + std::to_string(side_);
-  L::caption(f, {4, 4, float(f.width) - 4, float(line + 4)},
-             "Figure VI.7  jittered supersampling: " + n + " samples per pixel, seed " + std::to_string(seed_), kWhite, 1);
-  if (!fd.at(0, 1).valid || !fd.at(0, side_).valid || !fd.at(1, side_).valid || !fd.at(2, side_).valid)
-    return;  // measure() makes them
-  const int modes[4] = {kOne, kRegular, kJitterGlobal, kJitterPixel};
-  const std::string titles[4] = {narrow ? "1 sample" : "1 sample per pixel", n + " regular",
-                                 n + (narrow ? " jitter, global" : " jittered, one pattern"),
-                                 n + (narrow ? " jitter, per pixel" : " jittered per pixel")};
-  const int numberLines = narrow ? 3 : 2;
-  const int blockA = line + h + numberLines * line + 10;  // title, image, numbers
-  const int rowA = 2 * line + 2;
-  const int rowB = rowA + R * blockA + line;
-  const int rowC = rowB + R * (h + g) + line / 2;
-  // A caption band: the column's width and half a gap each side, in the frame.
-  auto band = [&](int x, float y, float h2) {
-    return L::Box{std::max(0.0f, float(x - g / 2)), y, std::min(float(f.width), float(x + w + g / 2)), y + h2};
-  };
-  for (int k = 0; k < 4; ++k) {
-    const Result& res = modes[k] == kOne ? fd.at(0, 1)
-                                         : fd.at(modes[k] == kRegular ? 0 : modes[k] == kJitterGlobal ? 1 : 2, side_);
-    int x = left + (k % cols) * (w + g), r = k / cols;
-    int ya = rowA + r * blockA + line, yb = rowB + r * (h + g);
-    addImage(f, std::string("image_") + kModeNames[modes[k]], {x, ya, w, h}, res.texture);
-    addImage(f, std::string("error_") + kModeNames[modes[k]], {x, yb, w, h}, res.errorTexture);
-    L::caption(f, band(x, float(ya - line), float(line)), titles[k], kWhite, 1);
-    L::Column numbers(f, band(x, float(ya + h + 4), float(numberLines * line + 6)));
-    numbers.add("RMS error " + fmt("%.4f", res.stats.rms), kAmber, 1);
-    if (narrow) {
-      numbers.add("aliasing " + fmt("%.4f", res.stats.aliasing), kAmber, 1);
-      numbers.add("noise " + fmt("%.4f", res.stats.noise), kAmber, 1);
-    } else {
-      numbers.add("aliasing " + fmt("%.4f", res.stats.aliasing) + "  noise " + fmt("%.4f", res.stats.noise), kAmber, 1);
-    }
-  }
-  L::caption(f, {4, float(rowB - line - 2), float(f.width) - 4, float(rowB - 1)},
-             "error against the reference, x3 (orange: too bright, blue: too dark)", kGrey, 1);
-  // Bottom rows: the reference, then the sample patterns of Figure VI.7.
-  const int box = std::max(16, h - line);
-  const int patterns[3] = {kRegular, kJitterGlobal, kJitterPixel};
-  for (int k = 0; k < 4; ++k) {
-    int x = left + (k % cols) * (w + g), y = rowC + (k / cols) * (h + 2 * line + 8);
-    if (k == 0) {
-      addImage(f, "image_reference", {x, y, w, h}, fd.reference.texture);
-      L::caption(f, band(x, float(y + h + 4), float(line)), "reference: 16x16 stratified", kWhite, 1);
-    } else {
-      addPattern(f, canvas, {x + (w - box) / 2, y, box, box}, patterns[k - 1], side_, true, float(w + g));
-    }
-  }
-}
-
-void Jitter::addPlot(ts::Frame& f, ts::Panel& canvas, ts::Rect area, const std::string& title, bool aliasing,
-                     const Found& fd) const {
-  const int line = 17;
-  ts::Panel p;
-  p.id = aliasing ? "plot_aliasing" : "plot_rms";
-  p.viewport = {area.x + 56, area.y + 2 * line, std::max(1, area.w - 72), std::max(1, area.h - 5 * line)};
-  double ymax = 0;
-  for (int kind = 0; kind < 3; ++kind)
-    for (int side = 1; side <= kMaxSide; ++side)
-      ymax = std::max(ymax, aliasing ? fd.at(kind, side).stats.aliasing
-                                     : fd.at(kind, side).stats.rms);
-  double step = 0.01;
-  for (double c : {0.005, 0.01, 0.02, 0.025, 0.05, 0.1})
-    if (ymax / c <= 6) {
-      step = c;
-      break;
-    }
-  ymax = std::max(step, step * std::ceil(ymax * 1.08 / step));
-  const double xmax = 17.0;
-  p.projection = glm::ortho(0.0f, float(xmax), 0.0f, float(ymax), -1.0f, 1.0f);
-  p.clear = true;
-  p.clearColor = {0.17f, 0.17f, 0.2f, 1.0f};
-  const ts::Rect& vp = p.viewport;
-  std::vector<glm::vec2> grid;
-  for (double y = step; y < ymax - 1e-9; y += step) grid.insert(grid.end(), {{0.0f, float(y)}, {float(xmax), float(y)}});
-  for (int side = 1; side <= kMaxSide; ++side)
-    grid.insert(grid.end(), {{float(side * side), 0.0f}, {float(side * side), float(ymax)}});
-  p.batches.push_back(ts::lineSegments(grid, {0.32f, 0.32f, 0.36f, 1.0f}, 1.0f, "grid"));
-  for (int kind = 0; kind < 3; ++kind) {
-    std::vector<glm::vec2> pts;
-    for (int side = 1; side <= kMaxSide; ++side) {
-      const jitter::ErrorStats& s = fd.at(kind, side).stats;
-      pts.push_back({float(side * side), float(aliasing ? s.aliasing : s.rms)});
-    }
-    ts::Batch curve = ts::lineSegments(pts, kSeriesColour[kind], 2.0f, std::string("series_") + kKindKeys[kind]);
-    curve.prim = ts::Prim::LineStrip;
-    p.batches.push_back(curve);
-    ts::Batch marks = ts::lineSegments(pts, kSeriesColour[kind], 1.0f, std::string("points_") + kKindKeys[kind]);
-    marks.prim = ts::Prim::Points;
-    marks.pointSize = 7.0f;
-    p.batches.push_back(marks);
-  }
-  f.panels.push_back(p);
-  // Axes on the canvas, labels.
-  canvas.batches.push_back(ts::lineSegments({{float(vp.x), float(vp.y + vp.h)}, {float(vp.x + vp.w), float(vp.y + vp.h)},
-                                             {float(vp.x), float(vp.y)}, {float(vp.x), float(vp.y + vp.h)}},
-                                            {0.85f, 0.85f, 0.85f, 1.0f}, 1.0f, "axes"));
-  namespace L = ts::layout;
-  L::caption(f, {float(area.x + 4), float(area.y), float(area.x + area.w - 4), float(area.y + line)}, title, kWhite, 1);
-  std::vector<ts::plot::Tick> xt, yt;
-  for (int side = 1; side <= kMaxSide; ++side) xt.push_back({double(side * side), std::to_string(side * side)});
-  for (double y = 0; y <= ymax + 1e-9; y += step) yt.push_back({y, fmt(step < 0.01 ? "%.3f" : "%.2f", y)});
-  ts::plot::tickLabels(f, vp, area, 0, xmax, 0, ymax, xt, yt, kGrey);
-  L::caption(f, {float(area.x + 4), float(vp.y + vp.h + 6 + line), float(area.x + area.w - 4), float(area.y + area.h)},
-             "samples per pixel", kGrey, 1);
-}
-
-void Jitter::buildPlot(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
-  namespace L = ts::layout;
-  const int line = 17;
-  L::caption(f, {4, 6, float(f.width) - 4, float(6 + line)},
-             "Figure VI.7  error against a 256-sample reference, seed " + std::to_string(seed_), kWhite, 1);
-  for (const auto& row : fd.results)
-    for (const Result& res : row)
-      if (!res.valid) return;  // measure() makes them (view=plot)
-  // The table: one row per pattern, RMS / aliasing at 1, 4, 9, 16 (on two
-  // lines, RMS then aliasing, when the columns are too narrow for both).
-  const float nameW = std::min(170.0f, float(f.width) / 4), colW = std::min(150.0f, (float(f.width) - 16 - nameW) / 4.0f);
-  const bool twoLines = colW < ts::text::width("0.0000 / 0.0000", 1) + 8;
-  const int tableH = (twoLines ? 7 : 4) * line + 8;
-  const int plotsH = std::max(60, f.height - 2 * line - tableH);
-  if (f.width >= f.height) {
-    addPlot(f, canvas, {0, 2 * line, f.width / 2, plotsH}, "RMS error (1 = full scale)", false, fd);
-    addPlot(f, canvas, {f.width / 2, 2 * line, f.width - f.width / 2, plotsH},
-            "aliasing: the predictable part of the error", true, fd);
-  } else {
-    addPlot(f, canvas, {0, 2 * line, f.width, plotsH / 2}, "RMS error (1 = full scale)", false, fd);
-    addPlot(f, canvas, {0, 2 * line + plotsH / 2, f.width, plotsH - plotsH / 2},
-            "aliasing: the predictable part of the error", true, fd);
-  }
-  float y = float(2 * line + plotsH + 4);
-  const float x0 = std::max(8.0f, (float(f.width) - nameW - 4 * colW) / 2.0f);
-  auto cell = [&](float x, float w2, const std::string& text, glm::vec4 c) {
-    L::caption(f, {x, y, x + w2 - 4, y + float(line)}, text, c, 1, ts::Align::Left);
-  };
-  cell(x0, nameW, twoLines ? "RMS, aliasing" : "RMS error / aliasing", kGrey);
-  for (int side = 1; side <= kMaxSide; ++side)
-    cell(x0 + nameW + colW * float(side - 1), colW, std::to_string(side * side) + (side == 1 ? " sample" : " samples"),
-         kGrey);
-  for (int kind = 0; kind < 3; ++kind) {
-    y += float(line);
-    cell(x0, nameW, kKindTitles[kind], kSeriesColour[kind]);
-    for (int side = 1; side <= kMaxSide; ++side) {
-      const jitter::ErrorStats& st = fd.at(kind, side).stats;
-      cell(x0 + nameW + colW * float(side - 1), colW,
-           twoLines ? fmt("%.4f", st.rms) : fmt("%.4f", st.rms) + " / " + fmt("%.4f", st.aliasing), kSeriesColour[kind]);
-    }
-    if (twoLines) {
-      y += float(line);
-      for (int side = 1; side <= kMaxSide; ++side)
-        cell(x0 + nameW + colW * float(side - 1), colW, fmt("%.4f", fd.at(kind, side).stats.aliasing), kSeriesColour[kind]);
-    }
-  }
-}
 }  // namespace
 
 TM_REGISTER_SCENE(Jitter);

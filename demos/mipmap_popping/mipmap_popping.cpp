@@ -60,18 +60,17 @@
 #include "common/gl.hpp"
 #include "common/render.hpp"
 #include "common/layout.hpp"
-#include "common/plot.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
 #include "mip_math.hpp"
+#include "mipmap_views.hpp"
 #include "sweep.hpp"
 
 namespace {
 using namespace mipmath;
 
-enum View { kSingle, kFilmstrip, kPlot, kSlant };
-enum Levels { kTextureOnly, kColoursOnly, kSplit };
+using namespace mipviews;  // the views, their options' values, the results they draw
 
 using ts::layout::fmt;
 
@@ -161,13 +160,11 @@ class MipmapPopping final : public ts::Scene {
     double p = std::fmod(x, 2 * span);
     return kMinLog2 + (p <= span ? p : 2 * span - p);
   }
+  using Result = mipviews::Result;  // what measure() found (null: not measured yet)
+  // The drawing (mipmap_views.hpp) for the current flags.
+  mipviews::Views views() const { return {look(), levels_, animate_, shownLog2()}; }
   sweep::Look look() const { return {filter_, aniso_, bias_, texture_, linearLight_, &picture_, camera_}; }
 
-  struct Result;  // what measure() found (null: not measured yet)
-  void buildSingle(ts::Frame& f, const Result* m) const;
-  void buildFilmstrip(ts::Frame& f, const Result* m) const;
-  void buildPlot(ts::Frame& f, const Result* m) const;
-  void buildSlant(ts::Frame& f, const Result* m) const;
 
   int view_ = kSingle, filter_ = kNearestMipNearest, aniso_ = 16, levels_ = kSplit, texture_ = 0;
   ts::UserTexture picture_;  // --texture FILE
@@ -178,352 +175,19 @@ class MipmapPopping final : public ts::Scene {
 
 };
 
-// What measure() found, for the labels and the plot: measure()'s detail.
-struct MipmapPopping::Result {
-  double overhead = 0, topLevel = 0;
-  double levelObserved = 0, residual = 0;
-  std::vector<double> sweepLods;
-  std::vector<std::vector<Mean>> sweepMeans;  // [filter][distance]
-  double popping[kFilterCount] = {};
-    double farError[kFilterCount] = {};
-    long farPixels = 0;
-    bool anisotropy = false;
-    float maxAnisotropy = 0;
-    std::string renderer;
-};
 
 ts::Frame MipmapPopping::build(int width, int height, const ts::Measurements& measured) const {
   const Result* m = measured.detailAs<Result>();
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   switch (view_) {
-    case kSingle: buildSingle(f, m); break;
-    case kFilmstrip: buildFilmstrip(f, m); break;
-    case kPlot: buildPlot(f, m); break;
-    default: buildSlant(f, m); break;
+    case kSingle: views().buildSingle(f, m); break;
+    case kFilmstrip: views().buildFilmstrip(f, m); break;
+    case kPlot: views().buildPlot(f, m); break;
+    default: views().buildSlant(f, m); break;
   }
   return f;
 }
 
-const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f}, kGrey{0.75f, 0.75f, 0.78f, 1.0f},
-    kBox{0.0f, 0.0f, 0.0f, 0.65f};
-
-// A facing-plane panel: the plane (split or not) at log2 distance x.
-void addFacing(ts::Frame& f, ts::Panel& p, double x, const sweep::Look& look, int levels) {
-  Camera cam = facingCamera(p.viewport.w, p.viewport.h, facingDistance(x));
-  p.projection = cam.projection(p.viewport.w, p.viewport.h);
-  p.modelview = cam.modelview();
-  if (levels == kTextureOnly || levels == kColoursOnly) {
-    int t = f.addTexture(levels == kColoursOnly ? sweep::colouredTexture(look) : sweep::texture(look));
-    p.batches.push_back(sweep::facingBatch(facingDistance(x), t, -kPlaneHalf, kPlaneHalf));
-  } else {
-    int t = f.addTexture(sweep::texture(look)), c = f.addTexture(sweep::colouredTexture(look));
-    p.batches.push_back(sweep::facingBatch(facingDistance(x), t, -kPlaneHalf, 0));
-    p.batches.push_back(sweep::facingBatch(facingDistance(x), c, 0, kPlaneHalf));
-  }
-}
-
-std::string levelText(int filter, double lambda) {
-  if (!usesMipmaps(filter)) return "level 0 (no mipmaps)";
-  if (lambda <= 0) return "level 0 (magnified)";
-  if (blendsLevels(filter)) {
-    LevelBlend b = linearLevels(lambda);
-    if (b.lo == b.hi) return "level " + std::to_string(b.lo);
-    return "levels " + std::to_string(b.lo) + "+" + std::to_string(b.hi) + " (" + fmt("%.0f", 100 * b.weight) + "% of " +
-           std::to_string(b.hi) + ")";
-  }
-  return "level " + std::to_string(nearestLevel(lambda));
-}
-
-void MipmapPopping::buildSingle(ts::Frame& f, const Result* m) const {
-  const int w = f.width, h = f.height;
-  const int scale = std::max(1, std::min(2, std::min(w / 560, h / 300)));
-  const int line = int(ts::text::height(scale)) + 6 * scale;
-  const double x = shownLog2();
-  ts::Panel p;
-  p.id = "plane";
-  p.viewport = {0, 0, w, h};
-  addFacing(f, p, x, look(), levels_);
-  // The probe region of the popping measure, 32 x 32 pixels (in the
-  // coloured half when split): the LOD is the same all over the plane, so
-  // the measurement pass draws just that region.
-  ts::Panel probe;
-  probe.id = "probe_outline";
-  probe.viewport = {0, 0, w, h};
-  probe.projection = glm::ortho(0.0f, float(w), float(h), 0.0f, -1.0f, 1.0f);
-  float cx = float(levels_ == kSplit ? 3 * w / 4 : w / 2), cy = float(h / 2), r = float(sweep::kCell / 2) + 1.5f;
-  // Black under white: visible on every level colour.
-  for (float k : {1.0f, 0.0f}) {
-    float q = r + k;
-    probe.batches.push_back(ts::lineLoop({{cx - q, cy - q}, {cx + q, cy - q}, {cx + q, cy + q}, {cx - q, cy + q}},
-                                         k > 0 ? glm::vec4(0, 0, 0, 1) : kWhite, k > 0 ? 3.0f : 1.0f, "probe"));
-  }
-  f.panels = {p, probe};
-
-  const double lambda = x + bias_;
-  // The state top left, the measurements top right; under it when the
-  // window is too narrow for both side by side.
-  namespace L = ts::layout;
-  std::vector<std::pair<std::string, glm::vec4>> left = {
-      {std::string(filterGLName(filter_)) + (filter_ == kAnisotropic ? " x" + std::to_string(aniso_) : ""), kWhite},
-      {"distance 2^" + fmt("%.3f", x) + " = " + fmt("%.3g", facingDistance(x)) + " texels per pixel", kWhite},
-      {"LOD = " + (bias_ != 0 ? fmt("%.3f", x) + " + bias " + fmt("%g", bias_) + " = " : std::string()) +
-           fmt("%.3f", lambda) + " -> " + levelText(filter_, lambda),
-       kAmber}};
-  std::vector<std::pair<std::string, glm::vec4>> right;
-  if (m) {
-    right.push_back({"mip chain +" + fmt("%.2f", 100 * m->overhead) + "% memory", kWhite});
-    right.push_back({"popping " + fmt("%.1f", m->popping[filter_]) + " (trilinear " +
-                         fmt("%.1f", m->popping[kLinearMipLinear]) + ")",
-                     kWhite});
-    if (!animate_) right.push_back({"level read from the colours " + fmt("%.2f", m->levelObserved), kAmber});
-  }
-  auto widest = [&](const std::vector<std::pair<std::string, glm::vec4>>& v) {
-    float wd = 0;
-    for (const auto& t : v) wd = std::max(wd, ts::text::width(t.first, scale) + 6.0f * float(scale) + 2);
-    return wd;
-  };
-  const float pad = float(8 * scale), top = float(6 * scale), bottom = float(h - 2 * line);
-  const bool besides = widest(left) + widest(right) + 3 * pad <= float(w);
-  L::Column lc(f, {pad, top, besides ? float(w) - widest(right) - 2 * pad : float(w) - pad, bottom});
-  for (const auto& t : left) lc.add(t.first, t.second, scale, ts::Align::Left, kBox);
-  L::Column rc(f, besides ? L::Box{float(w) - widest(right) - pad, top, float(w) - pad, bottom}
-                          : L::Box{pad, lc.y(), float(w) - pad, bottom});
-  for (const auto& t : right) rc.add(t.first, t.second, scale, besides ? ts::Align::Right : ts::Align::Left, kBox);
-  if (levels_ == kSplit) {
-    L::caption(f, {0, float(h - 2 * line), float(w / 2), float(h - line)}, "the texture", kWhite, scale,
-               ts::Align::Center, kBox);
-    L::caption(f, {float(w / 2), float(h - 2 * line), float(w), float(h - line)}, "levels coloured", kWhite, scale,
-               ts::Align::Center, kBox);
-  }
-}
-
-void MipmapPopping::buildFilmstrip(ts::Frame& f, const Result* m) const {
-  const int w = f.width, h = f.height;
-  const int line = int(ts::text::height(1)) + 6;
-  constexpr int kCols = 8;
-  const int gap = 6;
-  int cell = std::min((w - 2 * gap) / kCols - gap, (h - 6 * line - gap) / 2);
-  cell = std::max(8, cell);
-  int x0 = (w - (kCols * (cell + gap) - gap)) / 2;
-  int rowsTop = std::max(2 * line, (h - (2 * cell + 3 * line + gap)) / 2);
-  const int rows[2] = {filter_, kLinearMipLinear};
-  const double x = shownLog2();
-  namespace L = ts::layout;
-  L::caption(f, {4, 4, float(w - 4), float(4 + line)},
-             "the plane at 8 distances, 1/4 level apart (LOD bias " + fmt("%g", bias_) + ")", kWhite, 1);
-  const bool narrow = float(cell + gap) < ts::text::width("top: level 1 ", 1);
-  for (int r = 0; r < 2; ++r) {
-    int y = rowsTop + r * (cell + line + gap) + line;
-    sweep::Look lk = look();
-    lk.filter = rows[r];
-    std::string name = std::string(filterGLName(rows[r])) + (rows[r] == kAnisotropic ? " x" + std::to_string(aniso_) : "");
-    if (m) name += "   popping " + fmt("%.1f", m->popping[rows[r]]);
-    L::caption(f, {float(x0), float(y - line), float(w - 2), float(y - 2)}, name, r == 0 ? kAmber : kWhite, 1,
-               ts::Align::Left);
-    for (int c = 0; c < kCols; ++c) {
-      double xc = x + 0.25 * (c - kCols / 2);
-      ts::Panel p;
-      p.id = "frame_" + std::to_string(r) + "_" + std::to_string(c);
-      p.viewport = {x0 + c * (cell + gap), y, cell, cell};
-      addFacing(f, p, xc, lk, levels_);
-      f.panels.push_back(p);
-      if (r == 1) {
-        double lambda = xc + bias_;
-        float lx = float(p.viewport.x + cell / 2);
-        // Under each frame, in its column: the LOD, and the level the top row shows.
-        const L::Box col{lx - float(cell + gap) / 2, float(y + cell + 4), lx + float(cell + gap) / 2,
-                         float(y + cell + 4 + line)};
-        L::caption(f, col, (narrow ? "" : "LOD ") + fmt("%.3f", lambda), kWhite, 1);
-        std::string top = usesMipmaps(rows[0]) && !blendsLevels(rows[0])
-                              ? std::to_string(nearestLevel(lambda))
-                              : fmt("%.2f", effectiveLevel(rows[0], lambda));
-        L::caption(f, {col.x0, col.y1, col.x1, col.y1 + float(line)}, (narrow ? "L " : "top: level ") + top, kGrey, 1);
-      }
-    }
-  }
-}
-
-// A small x-y plot: probe means (R, G, B) against log2 distance.
-void plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, const std::vector<double>& xs,
-               const std::vector<Mean>& ys, double current, const std::vector<double>& switches) {
-  const int line = int(ts::text::height(1)) + 6;
-  ts::Panel p;
-  p.id = "plot_" + std::to_string(f.panels.size());
-  p.viewport = {area.x + 48, area.y + line + 4, std::max(1, area.w - 64), std::max(1, area.h - 3 * line - 8)};
-  const double x0 = xs.front(), x1 = xs.back();
-  p.projection = glm::ortho(float(x0), float(x1), 0.0f, 255.0f, -1.0f, 1.0f);
-  p.clear = true;
-  p.clearColor = {0.17f, 0.17f, 0.2f, 1.0f};
-  const glm::vec4 grid{0.32f, 0.32f, 0.36f, 1.0f}, axis{0.85f, 0.85f, 0.85f, 1.0f};
-  std::vector<glm::vec2> g;
-  for (int k = int(std::ceil(x0)); k <= int(std::floor(x1)); ++k) g.insert(g.end(), {{float(k), 0.0f}, {float(k), 255.0f}});
-  for (int v = 64; v < 255; v += 64) g.insert(g.end(), {{float(x0), float(v)}, {float(x1), float(v)}});
-  p.batches.push_back(ts::lineSegments(g, grid, 1.0f, "grid"));
-  // Where the chosen level changes (dashed).
-  std::vector<glm::vec2> dash;
-  for (double s : switches)
-    for (double y = 0; y < 255; y += 16) dash.insert(dash.end(), {{float(s), float(y)}, {float(s), float(y + 8)}});
-  if (!dash.empty()) p.batches.push_back(ts::lineSegments(dash, {0.55f, 0.55f, 0.6f, 1.0f}, 1.0f, "level_switches"));
-  const glm::vec4 colours[3] = {{1.0f, 0.3f, 0.3f, 1.0f}, {0.3f, 0.95f, 0.3f, 1.0f}, {0.4f, 0.55f, 1.0f, 1.0f}};
-  for (int c = 0; c < 3; ++c) {
-    std::vector<glm::vec2> pts;
-    for (size_t k = 0; k < xs.size() && k < ys.size(); ++k)
-      pts.push_back({float(xs[k]), float(c == 0 ? ys[k].r : c == 1 ? ys[k].g : ys[k].b)});
-    ts::Batch b = ts::lineSegments(pts, colours[c], 2.0f, c == 0 ? "mean_red" : c == 1 ? "mean_green" : "mean_blue");
-    b.prim = ts::Prim::LineStrip;
-    p.batches.push_back(b);
-  }
-  p.batches.push_back(ts::lineSegments({{float(current), 0.0f}, {float(current), 255.0f}}, kAmber, 2.0f, "current"));
-  p.batches.push_back(ts::lineLoop({{float(x0), 0}, {float(x1), 0}, {float(x1), 255}, {float(x0), 255}}, axis, 1.0f,
-                                   "axes"));
-  const ts::Rect vp = p.viewport;
-  f.panels.push_back(p);
-  namespace L = ts::layout;
-  L::caption(f, {float(vp.x), float(area.y + 2), float(area.x + area.w - 2), float(vp.y - 2)}, title, kWhite, 1,
-             ts::Align::Left);
-  std::vector<ts::plot::Tick> xt, yt;
-  for (int k = int(std::ceil(x0)); k <= int(std::floor(x1)); ++k) xt.push_back({double(k), std::to_string(k)});
-  for (int v = 0; v <= 255; v += 64) yt.push_back({double(v), std::to_string(v)});
-  ts::plot::tickLabels(f, vp, area, x0, x1, 0, 255, xt, yt, axis);
-}
-
-void MipmapPopping::buildPlot(ts::Frame& f, const Result* m) const {
-  const int w = f.width, h = f.height;
-  const int line = int(ts::text::height(1)) + 6;
-  if (!m || m->sweepLods.empty()) {
-    f.labels.push_back({float(w / 2), float(h / 2), "(measuring...)", kWhite, 1, ts::Align::Center});
-    return;
-  }
-  const int rows[2] = {filter_, kLinearMipLinear};
-  const int plotH = (h - 4 * line) / 2;
-  for (int r = 0; r < 2; ++r) {
-    int fl = rows[r];
-    std::vector<double> switches;
-    if (usesMipmaps(fl))
-      for (int k = 0; k < kLevels - 1; ++k) {
-        double s = (blendsLevels(fl) ? k + 1.0 : k + 0.5) - bias_;  // log2 distance where the level changes
-        if (s > m->sweepLods.front() && s < m->sweepLods.back()) switches.push_back(s);
-      }
-    std::string title = (fl == kAnisotropic ? "anisotropic x" + std::to_string(aniso_) : std::string(filterGLName(fl))) +
-                        ": probe mean R, G, B vs log2 distance;  popping (largest jump) " + fmt("%.1f", m->popping[fl]);
-    plotSweep(f, {0, r * plotH + line / 2, w, plotH}, title, m->sweepLods, m->sweepMeans[size_t(fl)], shownLog2(),
-              switches);
-  }
-  namespace L = ts::layout;
-  L::caption(f, {4, float(h - 2 * line - 2), float(w - 4), float(h - line - 1)},
-             "x: log2 distance = LOD - bias (" + fmt("%g", bias_) +
-                 ");  dashed: where GL's rule changes level;  amber: the current distance",
-             kGrey, 1);
-  // The level colours the probe sees, as a key (its lead shortened when narrow).
-  std::string lead = "the probe's texture, level by level:";
-  if (ts::text::width(lead, 1) + 10 + kLevels * 34.0f > float(w - 8)) lead = "levels:";
-  float x = std::max(4.0f, float(w / 2) - (ts::text::width(lead, 1) + 10 + kLevels * 34.0f) / 2);
-  const L::Box keyRow{0, float(h - line - 3), float(w), float(h)};
-  L::placeFree(f, {x, float(h - line), lead, kGrey, 1, ts::Align::Left}, keyRow);
-  x += ts::text::width(lead, 1) + 10;
-  for (int k = 0; k < kLevels; ++k) {
-    ts::Rgba c = ts::mipLevelColour(k);
-    glm::vec4 bg(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f);
-    bool dark = c.r * 0.3 + c.g * 0.59 + c.b * 0.11 < 140;
-    L::placeFree(f, {x + k * 34.0f, float(h - line), " " + std::to_string(k) + " ", dark ? kWhite : glm::vec4(0, 0, 0, 1),
-                     1, ts::Align::Left, bg},
-                 keyRow);
-  }
-}
-
-// The far field's bounds in a slant panel: the curves where the analytic
-// LOD is kFarLodLo and kFarLodHi (it grows towards the horizon).
-ts::Panel farFieldOutline(const ts::Rect& vp, const ts::OrbitCamera& orbit) {
-  ts::Panel o;
-  o.id = "far_field_outline";
-  o.viewport = vp;
-  o.projection = glm::ortho(0.0f, float(vp.w), float(vp.h), 0.0f, -1.0f, 1.0f);
-  Camera cam = sweep::slantCamera(vp.w, vp.h, orbit);
-  Plane ground = groundPlane();
-  for (double lod : {sweep::kFarLodLo, sweep::kFarLodHi}) {
-    std::vector<glm::vec2> pts;
-    for (int x = 0; x <= vp.w; x += 4) {
-      for (int y = vp.h - 1; y >= 0; --y) {
-        Jacobian j;
-        if (!planeAt(cam, ground, x, vp.h - y - 0.5, nullptr, &j)) break;
-        if (std::log2(rhoExact(j)) >= lod) {
-          pts.push_back({float(x), float(y) + 0.5f});
-          break;
-        }
-      }
-    }
-    ts::Batch b = ts::lineSegments(pts, kWhite, 2.0f, lod == sweep::kFarLodLo ? "far_field_near_edge" : "far_field_far_edge");
-    b.prim = ts::Prim::LineStrip;
-    if (pts.size() > 1) o.batches.push_back(b);
-  }
-  return o;
-}
-
-// Where the notes under the slant panels start.
-int cy0Notes(int h, int line, int rows, int ph, int gap) {
-  return std::min(h - 2 * line, 2 * line + rows * (ph + gap + line));
-}
-
-// The slanted plane: the supersampled reference and the seven filters, four
-// panels a row (the current filter's title in amber).
-void MipmapPopping::buildSlant(ts::Frame& f, const Result* m) const {
-  const int w = f.width, h = f.height;
-  const int line = int(ts::text::height(1)) + 6;
-  const int gap = 8;
-  namespace L = ts::layout;
-  // Four panels a row, or two in a tall window (four rows).
-  const int kCols = w >= h ? 4 : 2, kRows = (kFilterCount + 1 + kCols - 1) / kCols;
-  const int pw = std::max(8, (w - (kCols + 1) * gap) / kCols),
-            ph = std::max(8, (h - kRows * gap - (2 + 2 * kRows) * line) / kRows);
-  for (int k = 0; k <= kFilterCount; ++k) {
-    const int fl = k - 1;  // -1: the reference
-    int cx = gap + (k % kCols) * (pw + gap), cy = line + (k / kCols) * (ph + gap + line) + line;
-    const L::Box inPanel{float(cx), float(cy), float(cx + pw), float(cy + ph)};
-    ts::Panel p;
-    p.id = fl < 0 ? std::string("slant_reference") : "slant_" + filterKey(fl);
-    p.viewport = {cx, cy, pw, ph};
-    sweep::Look lk = look();
-    if (fl >= 0) lk.filter = fl;
-    sweep::addSlant(f, p, lk, fl < 0 ? sweep::kReferenceProgram : levels_ == kColoursOnly ? sweep::kColoured : sweep::kTextured,
-                    h);
-    f.panels.push_back(p);
-    std::string t;
-    if (fl < 0) {
-      t = "reference: 8x8 samples/pixel (GLSL)";
-      // The far field's two edges, labelled at the left.
-      ts::Panel o = farFieldOutline(p.viewport, camera_);
-      for (const auto& b : o.batches)
-        L::placeFree(f, {float(cx + 4), float(cy) + b.vertices.front().pos.y - 16.0f,
-                         b.role == "far_field_near_edge" ? "LOD " + fmt("%g", sweep::kFarLodLo)
-                                                         : "LOD " + fmt("%g", sweep::kFarLodHi),
-                         kWhite, 1, ts::Align::Left, kBox},
-                     inPanel);
-      f.panels.push_back(o);
-    } else {
-      t = fl == kAnisotropic ? "anisotropic x" + std::to_string(aniso_) : std::string(filterGLName(fl));
-      if (m)
-        L::caption(f, {inPanel.x0 + 1, inPanel.y0 + 1, inPanel.x1 - 1, std::min(inPanel.y1, inPanel.y0 + 2 * float(line))},
-                   "error " + fmt("%.1f", m->farError[fl]) +
-                       (fl == kAnisotropic && !m->anisotropy ? " (no anisotropy here)" : ""),
-                   fl == filter_ ? kAmber : kWhite, 1, ts::Align::Left, kBox);
-    }
-    // Titles: "GL_" goes, then the reference's detail, when the panel is narrow.
-    if (ts::text::width(t, 1) > float(pw) && t.rfind("GL_", 0) == 0) t = t.substr(3);
-    if (ts::text::width(t, 1) > float(pw) && fl < 0) t = "reference (8x8 samples)";
-    L::caption(f, {float(cx), float(cy - line + 2), float(cx + pw), float(cy - 1)}, t, fl == filter_ ? kAmber : kWhite, 1,
-               ts::Align::Left);
-  }
-  const std::string note1 = "error: RMS (R,G,B, 8-bit) against the reference in the far field, LOD " +
-                            fmt("%g", sweep::kFarLodLo) + ".." + fmt("%g", sweep::kFarLodHi) + " (between the white lines)";
-  std::string note2 = "measured at " + std::to_string(sweep::kSlantW) + "x" + std::to_string(sweep::kSlantH);
-  if (m) note2 += " on " + m->renderer;
-  L::Column notes(f, {4, float(cy0Notes(h, line, kRows, ph, gap)), float(w - 4), float(h)});
-  notes.add(note1, kGrey, 1);
-  notes.add(note2, kGrey, 1);
-}
 
 ts::Measurements MipmapPopping::measure(ts::Renderer& r) {
   Result out;

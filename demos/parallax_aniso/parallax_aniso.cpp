@@ -65,7 +65,8 @@ namespace {
 using namespace pax;
 enum View { kSingle, kModes, kError, kLive };
 const char* const kMaps[] = {"bricks", "step", "flat"};
-const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f}, kGrey{0.62f, 0.62f, 0.66f, 1.0f};
+using ts::layout::kWhite, ts::layout::kAmber;
+const glm::vec4 kGrey{0.62f, 0.62f, 0.66f, 1.0f};
 
 ts::TextureDesc imageTexture(const ts::Image& img, const std::string& what) {
   return ts::renderedImageTexture(img, "parallax_render", what, "parallax_aniso");
@@ -322,21 +323,7 @@ class ParallaxAniso final : public ts::Scene {
 
   void addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const ts::TextureDesc& tex, float s0 = 0,
                 float s1 = 1) const {
-    int index = f.addTexture(tex);
-    ts::Panel p;
-    p.id = id;
-    p.viewport = rect;
-    p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
-    ts::Batch b;
-    b.role = "image";
-    b.texture = index;
-    const glm::vec2 c[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    for (int i : {0, 1, 2, 0, 2, 3}) {
-      float s = s0 + c[i].x * (s1 - s0);
-      b.vertices.push_back({{c[i], 0.0f}, {s, c[i].y, 0.0f, 1.0f}, {1, 1, 1, 1}});
-    }
-    p.batches.push_back(b);
-    f.panels.push_back(p);
+    f.panels.push_back(ts::layout::texturePanel(id, rect, f.addTexture(tex), "image", s0, s1));
   }
   static std::string numbers(const Table& table, int mode) {
     if (mode == kReference) return std::to_string(table.refRays) + "x" + std::to_string(table.refRays) + " rays, CPU";

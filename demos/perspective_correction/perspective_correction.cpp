@@ -123,7 +123,7 @@ class PerspectiveCorrection final : public ts::Scene {
   };
   Pass measurePass(ts::Renderer& r, const persp::Setup& s, Variant v, GLenum hint, ts::Image* out = nullptr) const;
   struct Result;
-  plot::Data plotData(const Result* last) const;
+  plot::Spec plotSpec(const Result* last) const;
 
   int view_ = kBoth, filter_ = 2;
   float tilt_ = 60.0f, distance_ = 1.5f;
@@ -141,8 +141,8 @@ struct PerspectiveCorrection::Result {
   long hintDiffering = 0;
   double hintFastestError = 0;
   std::string driver;
-  std::vector<plot::Point> sweep;
-  std::vector<plot::Point> curve;  // the analytic error, every 2.5 degrees of tilt at this distance
+  std::vector<glm::dvec3> sweep;  // ((d2 - d1)/d1, error in texels, tilt) per tilt
+  std::vector<glm::dvec3> curve;  // the analytic error, every 2.5 degrees of tilt at this distance
 };
 
 ts::TextureDesc PerspectiveCorrection::checker() const {
@@ -195,22 +195,19 @@ void PerspectiveCorrection::addSquare(ts::Panel& p, const persp::Setup& s, Varia
 }
 
 ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurements& measured) const {
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   // The book's call.  The right (and single perspective) image is drawn
   // under GL_NICEST; the affine-only view asks for GL_FASTEST, which Mesa
   // ignores — and which cannot matter to it anyway, since w = 1 everywhere.
   f.perspectiveHint = view_ == kAffine ? GL_FASTEST : GL_NICEST;
-  const glm::vec4 white{0.95f, 0.95f, 0.95f, 1.0f}, grey{0.75f, 0.75f, 0.78f, 1.0f}, amber{1.0f, 0.75f, 0.3f, 1.0f};
+  const glm::vec4 &white = ts::layout::kWhite, &amber = ts::layout::kAmber, grey{0.75f, 0.75f, 0.78f, 1.0f};
   const persp::Setup s = setup();
   const persp::Distances d = persp::distances(s);
   const Result* last = measured.detailAs<Result>();
   const bool have = last && last->setup.tiltDeg == s.tiltDeg && last->setup.distance == s.distance;
 
   if (view_ == kPlot) {
-    plot::draw(f, plotData(last), {0, 0, width, height});
+    plot::draw(f, plotSpec(last), {0, 0, width, height});
     return f;
   }
   int tex = f.addTexture(checker());
@@ -351,23 +348,38 @@ ts::Measurements PerspectiveCorrection::measure(ts::Renderer& r) {
   return out;
 }
 
-plot::Data PerspectiveCorrection::plotData(const Result* last) const {
+plot::Spec PerspectiveCorrection::plotSpec(const Result* last) const {
   const persp::Setup s = setup();
-  plot::Data data;
-  data.title = "Largest (s,t) error of the screen-linear image vs (d2 - d1)/d1: tilts 0.." +
-               std::to_string(kSweepMaxDeg) + " deg at distance " + fmt("%g", s.distance);
-  data.xLabel = "(d2 - d1)/d1   (d1, d2: nearest and farthest distance from the eye to the square)";
-  data.yLabel = "error, texels of 256 (one check = 32)";
-  data.tagFormat = "t=%g";
-  data.current = {persp::distances(s).ratio(), persp::maxAffineErrorTexels(s, kMeasureSize), s.tiltDeg};
-  if (!last || last->setup.distance != s.distance) return data;  // the curve and sweep come with a measurement
-  data.curve = last->curve;
-  if (!data.curve.empty() && data.curve.front().x >= 0.05)  // the rule of thumb's blind spot, when it shows
-    data.notes.push_back({data.curve.front(), "<- tilt 0: facing the eye, all depths equal, no error although (d2 - d1)/d1 = " +
-                                                  fmt("%.2f", data.curve.front().x)});
-  data.measured = last->sweep;
-  if (last->setup.tiltDeg == s.tiltDeg) data.current.y = last->affine.maxErrorTexels;
-  return data;
+  const glm::vec4 curveC{0.35f, 0.7f, 1.0f, 1.0f}, measuredC = ts::layout::kAmber, currentC{1.0f, 0.3f, 0.3f, 1.0f};
+  plot::Spec p;
+  p.title = "Largest (s,t) error of the screen-linear image vs (d2 - d1)/d1: tilts 0.." + std::to_string(kSweepMaxDeg) +
+            " deg at distance " + fmt("%g", s.distance);
+  p.xLabel = "(d2 - d1)/d1   (d1, d2: nearest and farthest distance from the eye to the square)";
+  p.yLabel = "error, texels of 256 (one check = 32)";
+  glm::dvec3 now{persp::distances(s).ratio(), persp::maxAffineErrorTexels(s, kMeasureSize), s.tiltDeg};
+  plot::Series curve{"analytic", curveC}, sweep{"measured", measuredC, plot::Mark::Crosses};
+  if (last && last->setup.distance == s.distance) {  // the curve and sweep come with a measurement
+    for (const glm::dvec3& q : last->curve) curve.points.push_back(glm::dvec2(q));
+    for (const glm::dvec3& q : last->sweep) sweep.points.push_back(glm::dvec2(q)), sweep.tags.push_back(fmt("t=%g", q.z));
+    if (!last->curve.empty() && last->curve.front().x >= 0.05)  // the rule of thumb's blind spot, when it shows
+      p.notes.push_back({glm::dvec2(last->curve.front()), "<- tilt 0: facing the eye, all depths equal, no error although (d2 - d1)/d1 = " +
+                                                  fmt("%.2f", last->curve.front().x)});
+    if (last->setup.tiltDeg == s.tiltDeg) now.y = last->affine.maxErrorTexels;
+  }
+  p.series = {curve, sweep, {"current", currentC, plot::Mark::Rings, {glm::dvec2(now)}, 2.0f, 8.0f}};
+  p.markers = {{1.0, p.textColor, "rule_of_thumb", "d2 - d1 = d1"}};
+  p.legend = {{"x  measured (texel-index render), tagged by tilt", measuredC},
+              {"-  analytic (ray-plane vs screen barycentrics)", curveC},
+              {"o  current state (" + fmt("t=%g", now.z) + ")", currentC}};
+  p.legendInside = true;
+  // Ranges: from 0 to a round number past the largest value.
+  double xmax = std::max(1.2, now.x), ymax = std::max(1.0, now.y);
+  for (const auto* se : {&curve.points, &sweep.points})
+    for (const glm::dvec2& q : *se) xmax = std::max(xmax, q.x), ymax = std::max(ymax, q.y);
+  const double xs = plot::niceStep(xmax * 1.05), ys = plot::niceStep(ymax * 1.1);
+  p.x1 = xs * std::ceil(xmax * 1.05 / xs), p.y1 = ys * std::ceil(ymax * 1.1 / ys);
+  p.xTicks = plot::ticks(0, p.x1, xs), p.yTicks = plot::ticks(0, p.y1, ys);
+  return p;
 }
 }  // namespace
 

@@ -89,7 +89,7 @@ class QuadDistortion final : public ts::Scene {
     picture_.addOption(o, "the checkerboard");
     o.addText("corners", &cornersText_,
               "(s,t) at the square's corners (0,0) (1,0) (1,1) (0,1): \"s,t s,t s,t s,t\"",
-              [](const std::string& v) { parseCorners(v); });
+              [](const std::string& v) { quadmap::parseCorners(v); });
   }
 
   std::vector<ts::FigureSpec> figures() const override {
@@ -113,8 +113,7 @@ class QuadDistortion final : public ts::Scene {
     Diagonal diagonal;
     Interp interp;
   };
-  quadmap::Corners corners() const { return parseCorners(cornersText_); }
-  static quadmap::Corners parseCorners(const std::string& text);
+  quadmap::Corners corners() const { return quadmap::parseCorners(cornersText_); }
 
  private:
   // The square with `interp` applied, as batches in a unit-square panel.
@@ -145,34 +144,6 @@ class QuadDistortion final : public ts::Scene {
   ts::UserTexture picture_;  // --texture FILE
   using Kinks = std::map<std::string, double>;  // variant name -> measured kink: measure()'s detail
 };
-
-quadmap::Corners QuadDistortion::parseCorners(const std::string& text) {
-  quadmap::Corners c{};
-  std::istringstream in(text);
-  for (int i = 0; i < 4; ++i) {
-    double s = 0, t = 0;
-    char comma = 0;
-    if (!(in >> s >> comma >> t) || comma != ',' || !std::isfinite(s) || !std::isfinite(t) || std::abs(s) > 64 ||
-        std::abs(t) > 64)
-      throw ts::Error("--corners: '" + text + "' is not four \"s,t\" pairs with |s|,|t| <= 64");
-    c[size_t(i)] = {s, t};
-  }
-  std::string rest;
-  if (in >> rest) throw ts::Error("--corners: '" + text + "' has more than four pairs");
-  // The projective fix needs a convex quadrilateral: only then is q of the
-  // homography positive over the whole square.  All four turns must have one
-  // sign (a zero turn is three corners in a line).
-  double turn[4];
-  for (int i = 0; i < 4; ++i) {
-    glm::dvec2 u = c[size_t((i + 1) % 4)] - c[size_t(i)], w = c[size_t((i + 2) % 4)] - c[size_t((i + 1) % 4)];
-    turn[i] = u.x * w.y - u.y * w.x;
-    if (std::abs(turn[i]) < 1e-9) throw ts::Error("--corners: '" + text + "' has three corners in a line");
-  }
-  for (int i = 1; i < 4; ++i)
-    if ((turn[i] > 0) != (turn[0] > 0))
-      throw ts::Error("--corners: '" + text + "' is not a convex quadrilateral");
-  return c;
-}
 
 std::string variantName(const QuadDistortion::Variant& v) {
   return v.interp == kAffine ? std::string("affine ") + kDiagNames[int(v.diagonal)] : kInterpNames[v.interp];
@@ -219,14 +190,7 @@ void QuadDistortion::addSquare(ts::Frame& f, ts::Panel& p, Variant v, int textur
 void QuadDistortion::addTextureView(ts::Frame&, ts::Panel& p, Variant v, int texture) const {
   quadmap::Corners st = corners();
   // The whole texture on the unit square: s, t = a, b.
-  ts::Batch tex;
-  tex.role = "texture";
-  tex.texture = texture;
-  for (int i : {0, 1, 2, 0, 2, 3}) {
-    glm::vec2 c = glm::vec2(quadmap::squareCorners()[size_t(i)]);
-    tex.vertices.push_back({{c, 0}, {c, 0, 1}, {1, 1, 1, 1}});
-  }
-  p.batches.push_back(tex);
+  p.batches.push_back(ts::layout::unitSquare(texture, "texture"));
   // The region the (s, t) corners select, and the screen diagonal's image.
   std::vector<glm::vec2> region;
   for (const auto& c : st) region.push_back(glm::vec2(c));
@@ -250,12 +214,9 @@ void QuadDistortion::addTextureView(ts::Frame&, ts::Panel& p, Variant v, int tex
 using ts::layout::fmt;
 
 ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& measured) const {
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   int checker = f.addTexture(this->checker());
-  glm::vec4 white{0.95f, 0.95f, 0.95f, 1.0f}, amber{1.0f, 0.75f, 0.3f, 1.0f};
+  const glm::vec4 &white = ts::layout::kWhite, &amber = ts::layout::kAmber;
   glm::mat4 unit = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
   quadmap::Corners st = corners();
   Variant current{Diagonal(diagonal_), Interp(interp_)};

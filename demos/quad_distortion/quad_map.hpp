@@ -16,6 +16,10 @@
 
 #include <array>
 #include <cmath>
+#include <sstream>
+#include <string>
+
+#include "common/error.hpp"
 
 namespace quadmap {
 using Corners = std::array<glm::dvec2, 4>;  // st at (0,0), (1,0), (1,1), (0,1)
@@ -40,6 +44,36 @@ inline Affine affineThrough(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, glm::dv
   A.m = S * glm::inverse(P);
   A.c = s0 - A.m * p0;
   return A;
+}
+
+// --corners: four "s,t" pairs (|s|, |t| <= 64) of a convex quadrilateral,
+// else ts::Error saying what is wrong.
+inline Corners parseCorners(const std::string& text) {
+  Corners c{};
+  std::istringstream in(text);
+  for (int i = 0; i < 4; ++i) {
+    double s = 0, t = 0;
+    char comma = 0;
+    if (!(in >> s >> comma >> t) || comma != ',' || !std::isfinite(s) || !std::isfinite(t) || std::abs(s) > 64 ||
+        std::abs(t) > 64)
+      throw ts::Error("--corners: '" + text + "' is not four \"s,t\" pairs with |s|,|t| <= 64");
+    c[size_t(i)] = {s, t};
+  }
+  std::string rest;
+  if (in >> rest) throw ts::Error("--corners: '" + text + "' has more than four pairs");
+  // The projective fix needs a convex quadrilateral: only then is q of the
+  // homography positive over the whole square.  All four turns must have one
+  // sign (a zero turn is three corners in a line).
+  double turn[4];
+  for (int i = 0; i < 4; ++i) {
+    glm::dvec2 u = c[size_t((i + 1) % 4)] - c[size_t(i)], w = c[size_t((i + 2) % 4)] - c[size_t((i + 1) % 4)];
+    turn[i] = u.x * w.y - u.y * w.x;
+    if (std::abs(turn[i]) < 1e-9) throw ts::Error("--corners: '" + text + "' has three corners in a line");
+  }
+  for (int i = 1; i < 4; ++i)
+    if ((turn[i] > 0) != (turn[0] > 0))
+      throw ts::Error("--corners: '" + text + "' is not a convex quadrilateral");
+  return c;
 }
 
 inline const std::array<glm::dvec2, 4>& squareCorners() {

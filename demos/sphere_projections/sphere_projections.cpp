@@ -45,7 +45,7 @@ const char* const kKey[] = {"vi2", "vi3"};  // measurement names
 const char* const kEq[] = {"Eq. VI.2", "Eq. VI.3"};
 const char* const kFormula[] = {"s = theta/360,  t = phi/180 + 1/2", "s = theta/360,  t = (sin phi + 1)/2"};
 const glm::vec4 kColour[] = {{1.0f, 0.55f, 0.1f, 1.0f}, {0.35f, 0.7f, 1.0f, 1.0f}};
-const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kGrey{0.4f, 0.4f, 0.45f, 1.0f};
+using ts::layout::kWhite;
 
 // The measurement pass: 9 panels (one per band) of kPanel pixels, whatever
 // the window's size, each showing one band's region (sphere_map.hpp's
@@ -164,79 +164,41 @@ void SphereProjections::addSphere(ts::Frame& f, const ts::layout::Cell& cell, Ma
 }
 
 void SphereProjections::addPlot(ts::Frame& f, int width, int height, const ts::Measurements& measured) const {
-  namespace L = ts::layout;
-  const int scale = L::scaleFor({0, 0, width * 2 / 5, height * 2 / 5});
-  const int line = int(L::lineHeight(scale));
-  // Plot area: latitude -90..90 across, ratio 0..kTop up.  The VI.2 curve
-  // leaves the top near the poles (it is 1/cos φ); the viewport clips it.
-  const double kTop = 4.5;
-  int left = 3 * line, right = line, top = 4 * line, bottom = 3 * line;
-  ts::Panel p;
-  p.id = "plot";
-  p.viewport = {left, top, std::max(1, width - left - right), std::max(1, height - top - bottom)};
-  p.projection = glm::ortho(-90.0f, 90.0f, 0.0f, float(kTop), -1.0f, 1.0f);
-  std::vector<glm::vec2> grid;
-  for (int y = 0; y <= int(kTop); ++y) grid.insert(grid.end(), {{-90.0f, float(y)}, {90.0f, float(y)}});
-  for (int b = 0; b <= kBands; ++b) {
-    float x = float(spheremap::bandLo(0) + spheremap::kBandDeg * b);
-    grid.insert(grid.end(), {{x, 0.0f}, {x, float(kTop)}});
-  }
-  p.batches.push_back(ts::lineSegments(grid, kGrey, 1.0f, "grid"));
-  int row = 0;
+  namespace plot = ts::plot;
+  // Latitude -90..90 across, ratio 0..4.5 up.  The VI.2 curve leaves the top
+  // near the poles (it is 1/cos φ); the viewport clips it.
+  plot::Spec p;
+  p.x0 = -90, p.x1 = 90, p.y1 = 4.5;
+  p.xLabel = "latitude phi (degrees)";
+  p.yLabel = "texture area / surface area (whole sphere = 1)";
+  p.xTicks = plot::ticks(spheremap::bandLo(0), spheremap::bandHi(kBands - 1), spheremap::kBandDeg, "%.0f");
+  p.yTicks = plot::ticks(0, 4, 1, "%.0f");
+  p.scale = ts::layout::scaleFor({0, 0, width * 2 / 5, height * 2 / 5});
+  p.titleColor = p.textColor = kWhite;
   for (Mapping m : mappings()) {
     const glm::vec4 c = kColour[int(m)];
     // Analytic ratio, every degree (±89.5°: 2/(π cos φ) = 73, far off the top).
-    std::vector<glm::vec2> curve;
-    for (double phi = -89.5; phi <= 89.5; phi += 1.0)
-      curve.push_back({float(phi), float(spheremap::ratioAt(m, phi))});
-    ts::Batch a = ts::lineLoop(curve, c, 1.0f, std::string("analytic_") + kKey[int(m)]);
-    a.prim = ts::Prim::LineStrip;
-    p.batches.push_back(a);
+    plot::Series analytic(std::string("analytic_") + kKey[int(m)], c, plot::Mark::Line, {}, 1.0f);
+    for (double phi = -89.5; phi <= 89.5; phi += 1.0) analytic.points.push_back({phi, spheremap::ratioAt(m, phi)});
+    p.series.push_back(analytic);
     std::string legend = std::string(kEq[int(m)]) + "  " + kFormula[int(m)] + ":  analytic (line)";
-    if (const Result* got = found(measured, m)) {
-      const Result& res = *got;
-      // Bars across each band and a 7-px square at its centre.  The squares
-      // are two triangles each, not GL points: the sidecar does not record
-      // a point size, and the oracle must be able to redraw the figure.
-      std::vector<glm::vec2> bars;
-      ts::Batch dots;
-      dots.role = std::string("measured_points_") + kKey[int(m)];
-      const float hx = 3.5f * 180.0f / float(p.viewport.w), hy = 3.5f * float(kTop) / float(p.viewport.h);
-      for (int b = 0; b < kBands; ++b) {
-        float x = float(spheremap::bandMid(b)), y = float(res.render[size_t(b)]);
-        bars.insert(bars.end(), {{float(spheremap::bandLo(b)) + 1.0f, y}, {float(spheremap::bandHi(b)) - 1.0f, y}});
-        for (glm::vec2 d : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, -1), glm::vec2(1, 1),
-                            glm::vec2(-1, 1)})
-          dots.vertices.push_back({{x + d.x * hx, y + d.y * hy, 0.0f}, {0, 0, 0, 1}, c});
-      }
-      p.batches.push_back(ts::lineSegments(bars, c, 3.0f, std::string("measured_") + kKey[int(m)]));
-      p.batches.push_back(dots);
-      legend += ", measured (bars): max/min " + fmt("%.2f", res.spread);
+    if (const Result* res = found(measured, m)) {
+      // Bars across each band and a 7-px square at its centre.
+      plot::Series bars(std::string("measured_") + kKey[int(m)], c, plot::Mark::Bars, {}, 3.0f),
+          dots(std::string("measured_points_") + kKey[int(m)], c, plot::Mark::Squares, {}, 1.0f, 3.5f);
+      for (int b = 0; b < kBands; ++b) bars.points.push_back({spheremap::bandMid(b), res->render[size_t(b)]});
+      bars.halfWidth = spheremap::kBandDeg / 2 - 1;
+      dots.points = bars.points;
+      p.series.insert(p.series.end(), {bars, dots});
+      legend += ", measured (bars): max/min " + fmt("%.2f", res->spread);
     }
-    L::caption(f, {float(left), float(line / 2 + row * line), float(width - right), float(line / 2 + (row + 1) * line)},
-               legend, c, scale, ts::Align::Left);
-    ++row;
+    p.legend.push_back({legend, c});
   }
-  f.panels.push_back(p);
-  // Axes' numbers, in frame pixels.
-  const ts::Rect& vp = f.panels.back().viewport;
-  std::vector<ts::plot::Tick> xt, yt;
-  for (int b = 0; b <= kBands; ++b) {
-    double x = spheremap::bandLo(0) + spheremap::kBandDeg * b;
-    xt.push_back({x, fmt("%.0f", x)});
-  }
-  for (int y = 0; y <= int(kTop); ++y) yt.push_back({double(y), fmt("%.0f", y)});
-  ts::plot::tickLabels(f, vp, {0, 0, width, height}, -90, 90, 0, kTop, xt, yt, kWhite, scale);
-  L::caption(f, {0, float(vp.y + vp.h + line + 2), float(width), float(height)}, "latitude phi (degrees)", kWhite, scale);
-  L::caption(f, {float(vp.x), float(vp.y - line - line / 4), float(width - 2), float(vp.y - 1)},
-             "texture area / surface area (whole sphere = 1)", kWhite, scale, ts::Align::Left);
+  plot::draw(f, p, {0, 0, width, height});
 }
 
 ts::Frame SphereProjections::build(int width, int height, const ts::Measurements& measured) const {
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   if (view_ == 1) {
     addPlot(f, width, height, measured);
     return f;

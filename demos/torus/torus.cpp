@@ -47,8 +47,9 @@ namespace {
 using torusmap::Mapping;
 
 const char* const kMappingNames[] = {"book", "front"};
-const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kMarker{0.95f, 0.1f, 0.2f, 1.0f}, kMeasured{1.0f, 0.75f, 0.3f, 1.0f},
-                kMarkerBox{0.55f, 0.0f, 0.1f, 0.85f};
+using ts::layout::kWhite;
+const glm::vec4& kMeasured = ts::layout::kAmber;
+const glm::vec4 kMarker{0.95f, 0.1f, 0.2f, 1.0f}, kMarkerBox{0.55f, 0.0f, 0.1f, 0.85f};
 
 using ts::layout::fmt;
 
@@ -157,18 +158,7 @@ class Torus final : public ts::Scene {
 };
 
 void Torus::addTexture(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const {
-  ts::Panel p;
-  p.id = "texture_space";
-  p.viewport = vp;
-  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
-  ts::Batch t;
-  t.role = "texture";
-  t.texture = tex;
-  for (int i : {0, 1, 2, 0, 2, 3}) {
-    glm::vec2 c(i == 1 || i == 2, i >= 2);
-    t.vertices.push_back({{c, 0}, {c, 0, 1}, {1, 1, 1, 1}});
-  }
-  p.batches.push_back(t);
+  ts::Panel p = ts::layout::texturePanel("texture_space", vp, tex, "texture");
   if (marker_) {
     const float a = 0.06f;
     p.batches.push_back(ts::lineSegments({{0.5f - a, 0.5f}, {0.5f + a, 0.5f}, {0.5f, 0.5f - a}, {0.5f, 0.5f + a}}, kMarker,
@@ -221,10 +211,7 @@ void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int s
 }
 
 ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) const {
-  ts::Frame f;
-  f.width = width;
-  f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = ts::layout::blankFrame(width, height);
   int tex = f.addTexture(picture());
   const std::vector<Mapping> shown =
       view_ == 0 ? std::vector<Mapping>{Mapping(mapping_)} : std::vector<Mapping>{Mapping::Book, Mapping::Front};
