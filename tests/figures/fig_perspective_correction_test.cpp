@@ -320,9 +320,15 @@ TEST(VI2, PlotShowsTheMeasuredSweep) {
     glm::vec2 c = (glm::vec2(crosses->vertices[size_t(4 * k)].pos) + glm::vec2(crosses->vertices[size_t(4 * k + 1)].pos)) / 2.0f;
     EXPECT_NEAR(c.x, value(m, std::string(key) + "_d_ratio"), 1e-4) << key;
     EXPECT_NEAR(c.y, value(m, std::string(key) + "_error_texels"), 1e-3) << key;
-    // The pixel at the cross's centre is the cross colour.
+    // The cross colour is at its centre, or within a pixel of it: the
+    // analytic curve passes through the centre too, and which line wins the
+    // centre pixel is the rasterizer's choice (softpipe gives it the curve).
     glm::vec2 at = ts::panelToPixels(p, p.projection * glm::vec4(c, 0, 1));
-    EXPECT_TRUE(ts::probe::close(img.at(int(at.x), int(at.y)), {255, 191, 77, 255}, 8)) << key;
+    bool crossColour = false;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        crossColour |= ts::probe::close(img.at(int(at.x) + dx, int(at.y) + dy), {255, 191, 77, 255}, 8);
+    EXPECT_TRUE(crossColour) << key << " at " << at.x << "," << at.y;
   }
 }
 }  // namespace
