@@ -6,7 +6,7 @@
 #include "error.hpp"
 
 namespace ts::gl {
-#define TM_GL_DEFINE_POINTER(name) thread_local decltype(p_##name) p_##name = nullptr;
+#define TM_GL_DEFINE_POINTER(name) __thread decltype(p_##name) p_##name = nullptr;
 TM_GL_FUNCTIONS(TM_GL_DEFINE_POINTER)
 #undef TM_GL_DEFINE_POINTER
 

@@ -64,8 +64,11 @@ namespace ts::gl {
 // made current, through the pointers that thread loaded (the window's
 // thread from GLFW, a measurement worker from its own OSMesa or EGL context:
 // common/measure_worker.hpp).  OSMesa's entry points are its own, so one
-// table could not serve a window and an OSMesa context at once.
-#define TM_GL_DECLARE_POINTER(name) extern thread_local decltype(&::name) p_##name;
+// table could not serve a window and an OSMesa context at once.  __thread,
+// not thread_local: the pointers need no constructor, and an extern
+// thread_local is read through a wrapper function that UBSan's null check
+// misreads as a null load (every GL call failed under ASan + UBSan).
+#define TM_GL_DECLARE_POINTER(name) extern __thread decltype(&::name) p_##name;
 TM_GL_FUNCTIONS(TM_GL_DECLARE_POINTER)
 #undef TM_GL_DECLARE_POINTER
 
