@@ -395,7 +395,6 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
   // cannot make a context, the loop measures itself, as it did before.
   auto worker = std::make_unique<MeasureWorker>(scene.id(), scene.wantsAccumBuffer(), glfwPostEmptyEvent);
   bool measuring = false;  // a request is out: the numbers shown are stale
-  double measureSince = 0; // when that request was made
   bool measureHere = false;
   bool savePending = false;  // F12 pressed
   TestLog testLog;
@@ -431,7 +430,6 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       else
         glfwWaitEvents();
       redraw = false;
-      bool save = false;
       // The mouse: a drag or the wheel turns the orbit options; a dropped
       // file is --texture FILE (a bad one: one line, the picture stays).
       if (applyMouse(&input, opts)) dirty = true, record = pane.visible, afterKey = true, keyAt = glfwGetTime();
@@ -505,7 +503,6 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         dirty = false;
       } else if (dirty) {
         worker->request(opts.stateFlags(), figureW, ctx.height());  // measured at the figure's size, as --png
-        measureSince = now;  // the overlay counts this request's seconds
         measuring = true;
         dirty = false;
       }
