@@ -601,6 +601,21 @@ Proc windowRun(const std::string& id, const std::string& dir, const std::string&
 // The usual window keys: Backspace resets every option, = is +, the arrows
 // turn and tilt, ? shows the help card, F12 saves the state and prints the
 // command that remakes it (which must give the same picture).
+// Runs a `build/bin/<id> ...` command as F12 printed it, with this build's
+// program, in `dir`, adding --png remade.png (and its sidecar): true when it
+// exited 0 (a test failure naming the run otherwise).
+bool runPrintedCommand(const std::string& id, const std::string& command, const std::string& dir) {
+  Proc remake;
+  remake.argv = {"bash", "-c", "cd \"$0\" && exec \"$1\"/" + id + command.substr(10 + id.size()) +
+                                   " --png remade.png --json remade.json --quiet", dir, binDir()};
+  remake.outPath = dir + "/remake.stdout";
+  remake.errPath = dir + "/remake.stderr";
+  remake.spawn();
+  while (!remake.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_EQ(remake.exitCode, 0) << remake.describe();
+  return remake.exitCode == 0;
+}
+
 void usualKeys(const std::string& id) {
   Fresh initial(id);
   std::string base = outDir() + "/" + id + "/usual_keys";
@@ -662,14 +677,7 @@ void usualKeys(const std::string& id) {
   ts::Image saved = ts::readPng(dir + "/" + id + "-1.png");
   ASSERT_EQ(access((dir + "/" + id + "-1.json").c_str(), R_OK), 0) << "no sidecar";
   // The command, run as printed (its program from this build), remakes the picture.
-  Proc remake;
-  remake.argv = {"bash", "-c", "cd \"$0\" && exec \"$1\"/" + id + command.substr(10 + id.size()) +
-                                   " --png remade.png --json remade.json --quiet", dir, binDir()};
-  remake.outPath = dir + "/remake.stdout";
-  remake.errPath = dir + "/remake.stderr";
-  remake.spawn();
-  while (!remake.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  ASSERT_EQ(remake.exitCode, 0) << remake.describe();
+  ASSERT_TRUE(runPrintedCommand(id, command, dir));
   Diff r = compare(saved, ts::readPng(dir + "/remade.png"), &scratch);
   EXPECT_LE(double(r.overSmall) / double(r.pixels), kOsmesaBounds.maxFraction) << "F12's command does not remake it";
 }
@@ -716,14 +724,7 @@ void mouseOrbit(const std::string& id) {
   ASSERT_NE(at, std::string::npos) << moved.out;
   std::string command = moved.out.substr(at + 20, moved.out.find('\n', at + 20) - at - 20);
   EXPECT_NE(command.find("--yaw=40 --pitch=12 --zoom=1.21"), std::string::npos) << command;
-  Proc remake;
-  remake.argv = {"bash", "-c", "cd \"$0\" && exec \"$1\"/" + id + command.substr(10 + id.size()) +
-                                   " --png remade.png --json remade.json --quiet", dir, binDir()};
-  remake.outPath = dir + "/remake.stdout";
-  remake.errPath = dir + "/remake.stderr";
-  remake.spawn();
-  while (!remake.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  ASSERT_EQ(remake.exitCode, 0) << remake.describe();
+  ASSERT_TRUE(runPrintedCommand(id, command, dir));
   Diff r = compare(ts::readPng(dir + "/" + id + "-1.png"), ts::readPng(dir + "/remade.png"), &scratch);
   EXPECT_LE(double(r.overSmall) / double(r.pixels), kOsmesaBounds.maxFraction) << "the printed flags do not remake it";
 }
