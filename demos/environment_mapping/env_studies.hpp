@@ -1,0 +1,163 @@
+// demos/environment_mapping/env_studies.hpp — the environment mapping demo's
+// measurements beyond the error table: seed 001's cube example read back from
+// the GL, a sphere map reused as the eye moves, seed 002's sphere-map formula
+// against GL_SPHERE_MAP off the view axis, and the flat mirror that cannot
+// reflect a nearby object.
+#pragma once
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <array>
+#include <vector>
+
+#include "common/orbit_camera.hpp"
+#include "env_gl.hpp"
+#include "env_measure.hpp"
+#include "env_world.hpp"
+
+namespace envstudy {
+using envmap::dvec3;
+
+// ---- seed 001's worked example -------------------------------------------
+// r = (-3.2, 5.1, -8.4): the face and (s, t) from the spec's table, the
+// seed's (s, t) (its faces are mirrored in both axes: sc = +r_x, tc = +r_y on
+// -Z where the GL has -r_x, -r_y), and what a GL_NEAREST lookup of r in an
+// n x n texel-index cube map returned.
+inline const dvec3 kSeedDirection{-3.2, 5.1, -8.4};
+struct SeedCube {
+  envmap::CubeST gl, seed;
+  glm::ivec3 readBack{-1};  // (i, j, face) the GL's texel
+  int n = 1000;
+};
+inline SeedCube seedCube(envgl::EnvGL& g) {
+  SeedCube c;
+  c.gl = envmap::cubeST(kSeedDirection);
+  c.seed = envmap::seedCubeST(kSeedDirection);
+  c.readBack = g.cubeTexelOf(kSeedDirection, c.n);
+  return c;
+}
+
+// ---- the camera every pass uses -------------------------------------------
+// The eye on +Z at distance 5 looking at the object (at the world's origin),
+// a 30° field of view; `yawDeg`/`pitchDeg` orbit it (common/orbit_camera.hpp's
+// convention: the world turns in front of the eye).
+constexpr float kEyeDistance = 5.0f, kFovDeg = 30.0f;
+inline glm::mat4 viewMatrix(float yawDeg, float pitchDeg) {
+  ts::OrbitCamera c;
+  c.yaw = yawDeg, c.pitch = pitchDeg;
+  return c.view(glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, -kEyeDistance)), glm::vec3(0.0f));
+}
+inline glm::mat4 projectionMatrix(float zoom) {
+  ts::OrbitCamera c;
+  c.zoom = zoom;
+  return c.lens(glm::perspective(glm::radians(kFovDeg), 1.0f, 1.0f, 20.0f));
+}
+
+// ---- view dependence -----------------------------------------------------
+// A sphere map made for the eye at yaw 0 read by the sphere from an eye
+// turned by each angle (per pixel, so only the stale view is measured): the
+// mean direction error against the reference.
+inline const std::array<float, 6> kEyeAngles{0, 5, 10, 20, 40, 80};
+inline std::vector<double> viewDependence(envgl::EnvGL& g, int faceTexels) {
+  std::vector<double> out;
+  for (float a : kEyeAngles) {
+    envgl::Pass p;
+    p.view = viewMatrix(a, 0), p.projection = projectionMatrix(1), p.faceTexels = faceTexels;
+    p.sphereView = glm::dmat3(glm::mat3(viewMatrix(0, 0)));
+    const envgl::Pixels ref = g.draw(p);
+    p.param = envmap::kSphere;
+    out.push_back(envmeasure::errorStats(p.param, g.draw(p), ref, p.eyeRotation()).mean);
+  }
+  return out;
+}
+
+// ---- seed 002's sphere map against GL_SPHERE_MAP ------------------------
+// Per pixel on the sphere: the direction the sphere map returns at seed
+// 002's (N_x/2 + 1/2, N_y/2 + 1/2) against the one at GL_SPHERE_MAP's (s, t),
+// binned by the angle between the pixel's line of sight and the view axis.
+// On the axis the two agree (I = (0,0,-1) there, and then s = r_x/m + 1/2 =
+// N_x/2 + 1/2); away from it the seed ignores where the eye is.
+inline const std::array<double, 6> kAxisBins{0, 0.5, 2, 5, 8, 12};
+struct SeedSphere {
+  std::array<double, 5> meanDeg{}, maxDeg{};
+  std::array<int, 5> pixels{};
+};
+inline SeedSphere seedSphere(envgl::EnvGL& g, int faceTexels) {
+  envgl::Pass p;
+  p.view = viewMatrix(0, 0), p.projection = projectionMatrix(1), p.faceTexels = faceTexels;
+  p.sphereView = glm::dmat3(glm::mat3(p.view));
+  p.param = envmap::kSphere;
+  const envgl::Pixels gl = g.draw(p);
+  p.param = envgl::kSeedSphere;
+  const envgl::Pixels seed = g.draw(p);
+  const glm::mat4 inv = glm::inverse(p.projection);
+  SeedSphere s;
+  for (int y = 0; y < gl.h; ++y)
+    for (int x = 0; x < gl.w; ++x) {
+      if (gl.at(x, y).a < 0.5f || seed.at(x, y).a < 0.5f) continue;
+      const glm::vec4 q = inv * glm::vec4(2 * (x + 0.5f) / gl.w - 1, 2 * (y + 0.5f) / gl.h - 1, -1, 1);
+      const double off = envmap::angleDeg(glm::dvec3(q) / double(q.w), dvec3(0, 0, -1));
+      const double e = envmap::angleDeg(gl.direction(x, y), seed.direction(x, y));
+      for (size_t b = 0; b + 1 < kAxisBins.size(); ++b)
+        if (off >= kAxisBins[b] && off < kAxisBins[b + 1]) {
+          s.meanDeg[b] += e, s.maxDeg[b] = std::max(s.maxDeg[b], e), ++s.pixels[b];
+        }
+    }
+  for (size_t b = 0; b < s.pixels.size(); ++b)
+    if (s.pixels[b]) s.meanDeg[b] /= s.pixels[b];
+  return s;
+}
+
+// ---- the flat mirror and a nearby ball ----------------------------------
+// An environment map is the world seen from one point, the object's centre
+// O: it holds directions only, as if everything were infinitely far.  A ball
+// near the mirror (centre kBall, radius kBallRadius: on the reflection of the
+// line of sight through the mirror's centre at the default view, 1.6 units
+// out, r0 = (0, 0.940, 0.342) for the 35° lean) is seen in a true mirror
+// from each mirror point P along r; a map made at O (even one that has the
+// ball in it) shows what is along r from O.  Per mirror pixel of the
+// reference read-back: P from the pixel's line of sight and the mirror's
+// plane, r read back; the ball's pixels in the true mirror and in the map,
+// and for the true ones the angle between r and the direction from O to the
+// ball point the mirror shows there (what the map would have to be read at).
+inline const dvec3 kBall{0.25, 1.5, 0.55};
+constexpr double kBallRadius = 0.35;
+inline bool hitsBall(dvec3 from, dvec3 dir, dvec3* hit) {
+  const dvec3 oc = from - kBall;
+  const double b = glm::dot(oc, dir), c = glm::dot(oc, oc) - kBallRadius * kBallRadius, disc = b * b - c;
+  if (disc < 0) return false;
+  const double t = -b - std::sqrt(disc);
+  if (t <= 0) return false;
+  if (hit) *hit = from + t * dir;
+  return true;
+}
+struct Mirror {
+  int truePixels = 0, mapPixels = 0, both = 0;
+  double meanDeg = 0, maxDeg = 0;
+  std::vector<char> trueMask;  // per read-back pixel (GL order): the ball in the true mirror
+};
+inline Mirror mirrorNear(const envgl::Pixels& ref, const glm::mat4& projection, const glm::mat4& view, const glm::mat4& model) {
+  Mirror m;
+  m.trueMask.assign(size_t(ref.w) * size_t(ref.h), 0);
+  const glm::dmat4 toWorld = glm::inverse(glm::dmat4(view)), invP = glm::inverse(glm::dmat4(projection));
+  const dvec3 eye(toWorld * glm::dvec4(0, 0, 0, 1));
+  const double a = envmap::rad(envgl::kMirrorTiltDeg);
+  const dvec3 n = glm::normalize(glm::dmat3(glm::dmat4(model)) * dvec3(0, std::sin(a), std::cos(a))), o(0.0);
+  for (int y = 0; y < ref.h; ++y)
+    for (int x = 0; x < ref.w; ++x) {
+      if (ref.at(x, y).a < 0.5f) continue;
+      const glm::dvec4 q = invP * glm::dvec4(2 * (x + 0.5) / ref.w - 1, 2 * (y + 0.5) / ref.h - 1, -1, 1);
+      const dvec3 d = glm::normalize(glm::dmat3(toWorld) * (dvec3(q) / q.w));
+      const dvec3 P = eye + (glm::dot(o - eye, n) / glm::dot(d, n)) * d, r = ref.direction(x, y);
+      dvec3 hit;
+      const bool truly = hitsBall(P, r, &hit), inMap = hitsBall(o, r, nullptr);
+      m.truePixels += truly, m.mapPixels += inMap, m.both += truly && inMap;
+      if (truly) {
+        m.trueMask[size_t(y) * size_t(ref.w) + size_t(x)] = 1;
+        const double e = envmap::angleDeg(r, hit - o);
+        m.meanDeg += e, m.maxDeg = std::max(m.maxDeg, e);
+      }
+    }
+  if (m.truePixels) m.meanDeg /= m.truePixels;
+  return m;
+}
+}  // namespace envstudy

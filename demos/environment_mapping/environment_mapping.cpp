@@ -1,0 +1,280 @@
+// Environment mapping: one world in four parameterizations, and where each
+// one is wrong (Buss VI.3; seeds 001, 002).
+//
+// The claim: a mirror-like object shows the world in the direction of the
+// reflected ray, r = v - 2 (v.n) n (Buss VI.3; v from the eye to the surface,
+// n the unit normal), and an environment map is a table of the world by
+// direction.  How the table is laid out decides where the picture is wrong:
+//   lat-long (Blinn–Newell)  s = λ/2π + 1/2, t = φ/π + 1/2: a seam where λ
+//       wraps and whole rows of texels at the poles
+//   cube map (GL_TEXTURE_CUBE_MAP)  face = the largest |r_i|, (s, t) from the
+//       other two over it (env_world.hpp has the spec's table); texels 3√3
+//       times larger in solid angle at a face's centre than at its corners
+//   sphere map (GL_SPHERE_MAP)  m = 2 sqrt(r_x^2 + r_y^2 + (r_z + 1)^2),
+//       s = r_x/m + 1/2: made for one eye; the whole back is squeezed into its rim
+//   dual paraboloid  s = r_x / (2 (1 + |r_z|)) + 1/2 on two discs: no seam
+//       inside a disc, a ring where they meet
+// and whether r is computed per vertex (texgen: glTexGeni(GL_S,
+// GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP) or GL_SPHERE_MAP, then (s,t,r)
+// interpolated) or per pixel (GLSL).  The world (env_world.hpp) is made so any
+// direction can be read: colour = direction, lines every 15°, the six cube
+// faces named.  Measured against the exact r per pixel: the direction error in
+// degrees of every parameterization x object x per vertex/pixel, and where
+// it is largest; texels per steradian, largest / smallest, at equal memory;
+// a sphere map reused as the eye turns; seed 001's cube example read back;
+// seed 002's u = N_x/2 + 1/2 against GL_SPHERE_MAP off the view axis; the
+// flat mirror that cannot show a nearby ball.
+//
+// Keys (each is also a flag, see --help):
+//   p  parameterization        o  object: sphere | torus | mirror
+//   e  evaluate r per pixel | per vertex      v  view: object | map | compare
+//   ] / [  turn the object     . / ,  tilt it (also the arrows)
+//   left drag, wheel: the eye orbits, zooms   s  sphere map made for: this eye | the first eye
+//   + / -  memory (texels a cube face side; the others as many texels)
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "common/layout.hpp"
+#include "common/orbit_camera.hpp"
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "common/textures.hpp"
+#include "env_gl.hpp"
+#include "env_measure.hpp"
+#include "env_studies.hpp"
+#include "env_world.hpp"
+
+namespace {
+using ts::layout::fmt;
+using ts::layout::kAmber;
+using ts::layout::kWhite;
+enum View { kObjectView, kMapView, kCompareView };
+const char* const kEval[] = {"pixel", "vertex"};
+
+// What measure() found: the numbers for the captions and the pictures.
+struct Found {
+  envmeasure::ErrorStats current;                    // the shown state
+  std::array<envmeasure::ErrorStats, 4> compare;     // each parameterization, this object and evaluation
+  ts::Image picture, reference, error, map;          // object view, map view
+  std::array<ts::Image, 4> pictures;                 // compare view
+  envstudy::Mirror mirror;
+};
+
+class EnvironmentMapping final : public ts::Scene {
+ public:
+  std::string id() const override { return "environment_mapping"; }
+  std::string title() const override { return "Environment mapping: four parameterizations (Buss VI.3)"; }
+  std::string about() const override {
+    return "A mirror sphere, torus or flat mirror reflecting one legible world (colour = direction, 15-degree grid,\n"
+           "cube faces named) stored as a lat-long map, a cube map (GL_REFLECTION_MAP texgen), a sphere map\n"
+           "(GL_SPHERE_MAP texgen) and a dual paraboloid (GLSL), at equal memory, r per vertex or per pixel.\n"
+           "Measured against the exact reflection per pixel: direction error in degrees and where it concentrates;\n"
+           "texels per steradian; a sphere map reused as the eye turns; seed 001's cube example; seed 002's sphere map.";
+  }
+  int defaultWidth() const override { return 1080; }
+  int defaultHeight() const override { return 440; }
+  std::vector<std::string> claim() const override { return {"error_mean_deg[shown]", "error_max_deg[shown]"}; }
+  void addOptions(ts::Options& o) override {
+    std::vector<std::string> params(envmap::kParamKeys, envmap::kParamKeys + 4);
+    o.addEnum("param", &param_, params, "how the world is stored: latlong | cube | sphere | paraboloid", 'p');
+    o.addEnum("object", &object_, {"sphere", "torus", "mirror"}, "the mirror object", 'o');
+    o.addEnum("eval", &eval_, {"pixel", "vertex"}, "r per pixel (GLSL) or per vertex (texgen / vertex shader), interpolated", 'e');
+    o.addEnum("view", &view_, {"object", "map", "compare"},
+              "object: picture | reference | error; map: the unwrapped map, the texels the object reads lit; compare: the four maps", 'v');
+    o.addFloat("turn", &turn_, -180.0f, 180.0f, "turn the object about the vertical, degrees", ']', '[', 15.0f);
+    o.addFloat("tilt", &tilt_, -90.0f, 90.0f, "tilt the object about the horizontal, degrees", '.', ',', 15.0f);
+    o.addEnum("sphere-eye", &sphereEye_, {"this", "first"},
+              "the sphere map is made for this eye, or for the first one (yaw 0, pitch 0) and reused", 's');
+    o.addInt("face", &face_, 16, 256, "memory: texels along a cube face's side (6 face^2 texels; the others as many)", '+', '-', 16);
+    o.addInt("render", &render_, 64, 1024, "side of the rendered pictures in pixels");
+    orbit_.addOptions(o);
+  }
+  std::vector<ts::FigureSpec> figures() const override {
+    return {{"environment_mapping", "Buss VI.3 (seeds 001, 002)",
+             "A mirror sphere reflecting the world stored as a cube map, r per vertex by GL_REFLECTION_MAP texgen: "
+             "the picture, the exact reflection per pixel, and the direction error in degrees (black 0, yellow 4).",
+             {"--eval", "vertex"}, 1080, 440},
+            {"environment_mapping_compare", "Buss VI.3 (seed 001)",
+             "The torus in the four parameterizations at equal memory (24,576 texels), r per vertex: lat-long tears at "
+             "its seam, the sphere map smears at its rim; the reference is the exact reflection per pixel.",
+             {"--view", "compare", "--object", "torus", "--eval", "vertex"}, 1280, 360},
+            {"environment_mapping_map", "Buss VI.3 (seed 001)",
+             "The lat-long map unwrapped, the texels the sphere reads lit: the poles are whole rows, the seam runs at +Z.",
+             {"--view", "map", "--param", "latlong"}, 1080, 440}};
+  }
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
+  ts::Measurements measure(ts::Renderer& r) override;
+
+ private:
+  envgl::Pass pass(int param, int object, bool perVertex, bool directions, int size) const {
+    envgl::Pass p;
+    p.param = param, p.object = object, p.perVertex = perVertex, p.directions = directions;
+    p.view = envstudy::viewMatrix(orbit_.yaw, orbit_.pitch);
+    p.projection = envstudy::projectionMatrix(orbit_.zoom);
+    p.model = glm::rotate(glm::mat4(1.0f), glm::radians(tilt_), glm::vec3(1, 0, 0)) *
+              glm::rotate(glm::mat4(1.0f), glm::radians(turn_), glm::vec3(0, 1, 0));
+    p.sphereView = glm::dmat3(glm::mat3(sphereEye_ ? envstudy::viewMatrix(0, 0) : p.view));
+    p.faceTexels = face_, p.w = p.h = size;
+    return p;
+  }
+  std::string stateName(int param) const {
+    return std::string(envmap::kParamLabels[param]) + ", r per " + kEval[eval_] +
+           (eval_ == 1 && param == envmap::kCube ? " (GL_REFLECTION_MAP)" : eval_ == 1 && param == envmap::kSphere ? " (GL_SPHERE_MAP)" : "");
+  }
+  int param_ = envmap::kCube, object_ = envgl::kSphereObject, eval_ = 0, view_ = kObjectView, sphereEye_ = 0;
+  int face_ = 64, render_ = 320;
+  float turn_ = 0, tilt_ = 0;
+  ts::OrbitCamera orbit_;
+};
+
+ts::TextureDesc image(const ts::Image& img, const std::string& what) {
+  return ts::renderedImageTexture(img, "environment_mapping_render", what, "environment_mapping");
+}
+std::string statsLine(const envmeasure::ErrorStats& s) {
+  return fmt("error mean %.2f", s.mean) + fmt(", 95%% %.2f", s.p95) + fmt(", max %.1f deg", s.max) + " (" + s.maxRegion + ")";
+}
+
+ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurements& measured) const {
+  namespace L = ts::layout;
+  ts::Frame f = L::blankFrame(width, height);
+  const Found* found = measured.detailAs<Found>();
+  const L::Box area{6, 6, float(width) - 6, float(height) - 6};
+  auto show = [&](const L::Cell& c, const std::string& id, const ts::Image* img, const std::string& above,
+                  const std::string& below) {
+    if (img && img->width > 0) f.panels.push_back(L::texturePanel(id, c.picture, f.addTexture(image(*img, id))));
+    L::caption(f, c.above, above, kWhite, c.scale);
+    if (!below.empty()) L::caption(f, c.below, below, kAmber, c.scale);
+  };
+  if (view_ == kCompareView) {
+    L::FlowSpec spec;
+    spec.n = 5, spec.linesAbove = 1, spec.linesBelow = 2, spec.gap = 8;
+    std::vector<L::Cell> cells = L::flow(area, spec);
+    for (int k = 0; k < 4; ++k)
+      show(cells[size_t(k)], envmap::kParamKeys[k], found ? &found->pictures[size_t(k)] : nullptr, stateName(k),
+           found ? fmt("mean %.2f", found->compare[size_t(k)].mean) + fmt(", max %.1f deg", found->compare[size_t(k)].max) : "");
+    show(cells[4], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel", "");
+    return f;
+  }
+  if (view_ == kMapView) {
+    const float mid = area.x0 + (area.x1 - area.x0) * 0.62f;
+    const envmap::Size sz = envmap::mapSize(envmap::Param(param_), face_);
+    L::FlowSpec spec;
+    spec.linesAbove = 1, spec.linesBelow = 2;
+    spec.aspect = param_ == envmap::kCube ? 1.5f : float(sz.w) / float(sz.h);
+    L::Cell m = L::flow({area.x0, area.y0, mid - 6, area.y1}, spec)[0];
+    show(m, "map", found ? &found->map : nullptr,
+         std::string(envmap::kParamLabels[param_]) + fmt(", %.0f texels", envmap::mapTexels(envmap::Param(param_), face_)) +
+             (param_ == envmap::kCube ? ": +X -X +Y / -Y +Z -Z, t down" : ""),
+         "lit: the texels the object reads");
+    spec.aspect = 1.0f;
+    show(L::flow({mid + 6, area.y0, area.x1, area.y1}, spec)[0], "picture", found ? &found->picture : nullptr,
+         stateName(param_), found ? statsLine(found->current) : "");
+    return f;
+  }
+  L::FlowSpec spec;
+  spec.n = 3, spec.linesAbove = 1, spec.linesBelow = 2, spec.gap = 8;
+  std::vector<L::Cell> cells = L::flow(area, spec);
+  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(found->current) : "");
+  std::string refNote;
+  if (found && object_ == envgl::kMirror)
+    refNote = fmt("red: a near ball, %.0f px; a map made at the centre shows it at ", found->mirror.truePixels) +
+              fmt("%.0f px", found->mirror.mapPixels) + fmt(", %.0f right", found->mirror.both);
+  show(cells[1], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel", refNote);
+  show(cells[2], "error", found ? &found->error : nullptr, "direction error (black 0, yellow 4 deg)",
+       found ? "worst in: " + found->current.maxRegion : "");
+  return f;
+}
+
+ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
+  envgl::EnvGL& g = r.attachment<envgl::EnvGL>();
+  ts::Measurements out;
+  Found found;
+  const int kMeasureSize = 256;
+  // The table: every parameterization x object x evaluation at 256 x 256.
+  for (int o = 0; o < envgl::kObjects; ++o) {
+    const envgl::Pixels ref = g.draw(pass(-1, o, false, true, kMeasureSize));
+    for (int p = 0; p < envmap::kParams; ++p)
+      for (int e = 0; e < 2; ++e) {
+        const envgl::Pass ps = pass(p, o, e == 1, true, kMeasureSize);
+        const envmeasure::ErrorStats s = envmeasure::errorStats(p, g.draw(ps), ref, ps.eyeRotation());
+        const std::string key = std::string(envmap::kParamKeys[p]) + "/" + envgl::kObjectKeys[o] + "/" + kEval[e];
+        out.push_back({"error_mean_deg[" + key + "]", s.mean, "mean direction error against the exact r, degrees"});
+        out.push_back({"error_p95_deg[" + key + "]", s.p95, "95th percentile of the direction error, degrees"});
+        out.push_back({"error_max_deg[" + key + "]", s.max, "largest direction error, degrees, in region " + s.maxRegion});
+        for (const auto& [region, mean] : s.regionMean)
+          out.push_back({"error_region_deg[" + key + "@" + region + "]", mean,
+                         fmt("mean error in this region of the map, degrees (%.0f pixels)", s.regionPixels.at(region))});
+        if (o == object_ && e == eval_) found.compare[size_t(p)] = s;
+      }
+    ts::measureProgress(0.15 * (o + 1));
+  }
+  // The pictures of the shown state.
+  const int n = render_;
+  const envgl::Pixels ref = g.draw(pass(-1, object_, false, true, n));
+  const envgl::Pass shown = pass(param_, object_, eval_ == 1, true, n);
+  const envgl::Pixels looked = g.draw(shown);
+  std::vector<float> perPixel;
+  found.current = envmeasure::errorStats(param_, looked, ref, shown.eyeRotation(), &perPixel);
+  out.insert(out.begin(), {"error_max_deg[shown]", found.current.max, "the picture shown: largest direction error, degrees"});
+  out.insert(out.begin(), {"error_mean_deg[shown]", found.current.mean, "the picture shown: mean direction error, degrees"});
+  found.picture = envmeasure::colourImage(g.draw(pass(param_, object_, eval_ == 1, false, n)));
+  found.reference = envmeasure::referenceImage(ref);
+  found.error = envmeasure::errorImage(perPixel, n, n, 4.0);
+  found.map = envmeasure::mapImage(param_, face_, shown.sphereView, &looked);
+  if (view_ == kCompareView)
+    for (int p = 0; p < 4; ++p) found.pictures[size_t(p)] = envmeasure::colourImage(g.draw(pass(p, object_, eval_ == 1, false, n)));
+  // The flat mirror: where a nearby ball should appear (drawn red in the reference).
+  if (object_ == envgl::kMirror) {
+    const envgl::Pass ps = pass(-1, object_, false, true, n);
+    found.mirror = envstudy::mirrorNear(ref, ps.projection, ps.view, ps.model);
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        if (found.mirror.trueMask[size_t(y) * size_t(n) + size_t(x)]) found.reference.set(x, n - 1 - y, {230, 40, 40, 255});
+  }
+  ts::measureProgress(0.6);
+  {  // the flat mirror at the measurement size and the default state
+    EnvironmentMapping d;
+    d.object_ = envgl::kMirror;
+    const envgl::Pass ps = d.pass(-1, envgl::kMirror, false, true, kMeasureSize);
+    const envstudy::Mirror m = envstudy::mirrorNear(g.draw(ps), ps.projection, ps.view, ps.model);
+    out.push_back({"mirror_ball_pixels", double(m.truePixels), "mirror pixels that show the near ball in a true mirror"});
+    out.push_back({"mirror_ball_pixels_centre_map", double(m.mapPixels), "pixels a map made at the mirror's centre, ball included, shows it at"});
+    out.push_back({"mirror_ball_pixels_both", double(m.both), "pixels where the true mirror and that map both show it"});
+    out.push_back({"mirror_ball_error_mean_deg", m.meanDeg, "mean angle between r and the direction from the centre to the ball point shown"});
+    out.push_back({"mirror_ball_error_max_deg", m.maxDeg, "largest such angle, degrees"});
+  }
+  // Seed 001's cube example: the spec's table, the seed's mirrored faces, the GL.
+  const envstudy::SeedCube c = envstudy::seedCube(g);
+  out.push_back({"seed_cube_face", double(c.gl.face), "face of (-3.2, 5.1, -8.4) by the spec's table (5 = -Z)"});
+  out.push_back({"seed_cube_gl_s", c.gl.s, "s by the spec's table"});
+  out.push_back({"seed_cube_gl_t", c.gl.t, "t by the spec's table"});
+  out.push_back({"seed_cube_seed_s", c.seed.s, "s as seed 001 computes it (sc = +r_x: the face mirrored)"});
+  out.push_back({"seed_cube_seed_t", c.seed.t, "t as seed 001 computes it (tc = +r_y)"});
+  out.push_back({"seed_cube_readback_face", double(c.readBack.z), "the face the GL's lookup read"});
+  out.push_back({"seed_cube_readback_s", (c.readBack.x + 0.5) / c.n, "the GL's texel centre s (1000 x 1000 faces, GL_NEAREST)"});
+  out.push_back({"seed_cube_readback_t", (c.readBack.y + 0.5) / c.n, "the GL's texel centre t"});
+  // Texels per steradian at equal memory.
+  for (int p = 0; p < envmap::kParams; ++p) {
+    const envmap::Uniformity u = envmap::uniformity(envmap::Param(p), face_);
+    const std::string k = envmap::kParamKeys[p];
+    out.push_back({"texel_solid_angle_ratio[" + k + "]", u.analyticRatio(), "largest / smallest texel solid angle, analytic"});
+    out.push_back({"texel_solid_angle_ratio_numeric[" + k + "]", u.numericRatio(), "the same by numeric integration"});
+    out.push_back({"texel_solid_angle_reldiff[" + k + "]", u.largestRelDiff, "largest |numeric - analytic| / analytic of a texel"});
+  }
+  ts::measureProgress(0.75);
+  const std::vector<double> vd = envstudy::viewDependence(g, face_);
+  for (size_t k = 0; k < vd.size(); ++k)
+    out.push_back({"sphere_stale_error_deg[" + fmt("%.0f", envstudy::kEyeAngles[k]) + "]", vd[k],
+                   "sphere map made at yaw 0, eye at this yaw: mean error on the sphere, degrees"});
+  const envstudy::SeedSphere ss = envstudy::seedSphere(g, face_);
+  for (size_t b = 0; b + 1 < envstudy::kAxisBins.size(); ++b) {
+    const std::string k = fmt("%g", envstudy::kAxisBins[b]) + "-" + fmt("%g", envstudy::kAxisBins[b + 1]);
+    out.push_back({"seed_sphere_vs_gl_deg[" + k + "]", ss.meanDeg[b], "seed 002's (N_x/2 + 1/2) against GL_SPHERE_MAP: mean angle, pixels this far off the view axis"});
+    out.push_back({"seed_sphere_vs_gl_max_deg[" + k + "]", ss.maxDeg[b], "the same, largest"});
+  }
+  out.push_back({"texels", double(envmap::mapTexels(envmap::Param(param_), face_)), "texels of the shown map"});
+  out.detail = found;
+  return out;
+}
+}  // namespace
+
+TM_REGISTER_SCENE(EnvironmentMapping);
