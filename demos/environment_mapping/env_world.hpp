@@ -194,7 +194,7 @@ inline dvec3 worldColour(dvec3 d) {
   dvec3 c = 0.2 + 0.6 * (d + 1.0) / 2.0;
   const double lat = deg(std::asin(std::clamp(d.y, -1.0, 1.0))), lon = deg(std::atan2(-d.x, -d.z));
   auto off = [](double a) { return std::abs(a - 15.0 * std::round(a / 15.0)); };
-  const double lineDeg = 0.55, cosLat = std::cos(rad(lat));
+  const double lineDeg = 0.9, cosLat = std::cos(rad(lat));
   const bool latLine = off(lat) < lineDeg, lonLine = off(lon) * cosLat < lineDeg && std::abs(lat) < 82.5;
   if (latLine || lonLine) {
     const bool main = (latLine && std::abs(lat) < lineDeg) || (lonLine && std::abs(lon) < lineDeg);

@@ -89,17 +89,27 @@ class EnvironmentMapping final : public ts::Scene {
     orbit_.addOptions(o);
   }
   std::vector<ts::FigureSpec> figures() const override {
-    return {{"environment_mapping", "Buss VI.3 (seeds 001, 002)",
+    return {{"env_cube_sphere", "Buss VI.3 (seeds 001, 002)",
              "A mirror sphere reflecting the world stored as a cube map, r per vertex by GL_REFLECTION_MAP texgen: "
              "the picture, the exact reflection per pixel, and the direction error in degrees (black 0, yellow 4).",
              {"--eval", "vertex"}, 1080, 440},
-            {"environment_mapping_compare", "Buss VI.3 (seed 001)",
-             "The torus in the four parameterizations at equal memory (24,576 texels), r per vertex: lat-long tears at "
-             "its seam, the sphere map smears at its rim; the reference is the exact reflection per pixel.",
-             {"--view", "compare", "--object", "torus", "--eval", "vertex"}, 1280, 360},
-            {"environment_mapping_map", "Buss VI.3 (seed 001)",
-             "The lat-long map unwrapped, the texels the sphere reads lit: the poles are whole rows, the seam runs at +Z.",
-             {"--view", "map", "--param", "latlong"}, 1080, 440}};
+            {"env_compare_torus", "Buss VI.3 (seed 001)",
+             "A torus in the four parameterizations at equal memory (24,576 texels), r per vertex: lat-long tears at "
+             "its seam, the sphere map smears toward its rim; the reference is the exact reflection per pixel.",
+             {"--view", "compare", "--object", "torus", "--eval", "vertex", "--tilt", "30"}, 1280, 360},
+            {"env_latlong_map", "Buss VI.3 (seed 001)",
+             "The lat-long map unwrapped, the texels the flat mirror reads lit: a region at the +Y pole, spread along "
+             "whole rows and cut in two by the seam at the map's left and right edges.",
+             {"--view", "map", "--param", "latlong", "--object", "mirror"}, 1080, 440},
+            {"env_cube_map", "Buss VI.3 (seed 001)",
+             "The cube map's six faces as GL stores them (s right, t down), the texels the flat mirror reads lit: one "
+             "small patch of +Y, magnified across the whole mirror, texels visible.",
+             {"--view", "map", "--param", "cube", "--object", "mirror"}, 1080, 440},
+            {"env_flat_mirror", "Buss VI.3 (seed 001)",
+             "A flat mirror leaning back 35 degrees, lat-long with r per vertex: the seam runs across it, and a ball "
+             "near the mirror (red in the reference) is in no environment map; one made at the mirror's centre would "
+             "show it many times too large.",
+             {"--object", "mirror", "--param", "latlong", "--eval", "vertex"}, 1080, 440}};
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
@@ -149,9 +159,11 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     spec.n = 5, spec.linesAbove = 1, spec.linesBelow = 2, spec.gap = 8;
     std::vector<L::Cell> cells = L::flow(area, spec);
     for (int k = 0; k < 4; ++k)
-      show(cells[size_t(k)], envmap::kParamKeys[k], found ? &found->pictures[size_t(k)] : nullptr, stateName(k),
+      show(cells[size_t(k)], envmap::kParamKeys[k], found ? &found->pictures[size_t(k)] : nullptr,
+           std::string(envmap::kParamLabels[k]) + (eval_ == 1 && (k == envmap::kCube || k == envmap::kSphere) ? " (texgen)" : ""),
            found ? fmt("mean %.2f", found->compare[size_t(k)].mean) + fmt(", max %.1f deg", found->compare[size_t(k)].max) : "");
-    show(cells[4], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel", "");
+    show(cells[4], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel",
+         std::string("the maps: r per ") + kEval[eval_]);
     return f;
   }
   if (view_ == kMapView) {

@@ -1,7 +1,8 @@
 // Figures whose sidecar cannot remake every texture: their panels are
 // pictures that OpenGL itself rendered in the demo's measure() pass (Figure
 // VI.7 shows GL's own multi-pass and per-pixel-jitter renders side by side;
-// the parallax figures show GLSL renders of the filtering modes and errors),
+// the parallax figures show GLSL renders of the filtering modes and errors;
+// the environment mapping figures show texgen and GLSL renders of mirrors),
 // so the sidecar records them by digest and by the command that makes them.
 // Every other figure must be reproducible from its JSON alone; a new figure
 // that is not fails the oracle tests until it is made reproducible or listed
@@ -12,8 +13,10 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 4> kFiguresDrawnFromGlRenders = {
-    "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step"};
+inline constexpr std::array<const char*, 9> kFiguresDrawnFromGlRenders = {
+    "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step",
+    // environment_mapping: its object pictures are GL renders with texgen and GLSL
+    "env_cube_sphere", "env_compare_torus", "env_latlong_map", "env_cube_map", "env_flat_mirror"};
 
 // Figures whose measure() takes minutes on softpipe (the parallax table: twelve
 // full-frame GLSL passes and a CPU reference per state).  The oracle checks
