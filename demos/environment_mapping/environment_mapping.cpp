@@ -201,8 +201,8 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
   ts::Measurements out;
   Found found;
   const int kMeasureSize = 256;
-  // The table: every parameterization x object x evaluation at 256 x 256.
-  for (int o = 0; o < envgl::kObjects; ++o) {
+  // The table: every parameterization x evaluation for this object at 256 x 256.
+  for (int o = object_; o == object_; ++o) {
     const envgl::Pixels ref = g.draw(pass(-1, o, false, true, kMeasureSize));
     for (int p = 0; p < envmap::kParams; ++p)
       for (int e = 0; e < 2; ++e) {
@@ -217,7 +217,7 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
                          fmt("mean error in this region of the map, degrees (%.0f pixels)", s.regionPixels.at(region))});
         if (o == object_ && e == eval_) found.compare[size_t(p)] = s;
       }
-    ts::measureProgress(0.15 * (o + 1));
+    ts::measureProgress(0.4);
   }
   // The pictures of the shown state.
   const int n = render_;
