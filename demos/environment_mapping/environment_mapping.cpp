@@ -91,7 +91,7 @@ class EnvironmentMapping final : public ts::Scene {
   std::vector<ts::FigureSpec> figures() const override {
     return {{"env_cube_sphere", "Buss VI.3 (seeds 001, 002)",
              "A mirror sphere reflecting the world stored as a cube map, r per vertex by GL_REFLECTION_MAP texgen: "
-             "the picture, the exact reflection per pixel, and the direction error in degrees (black 0, yellow 4).",
+             "the picture, the exact reflection per pixel, and the direction error in degrees (black 0, yellow 4 or more).",
              {"--eval", "vertex"}, 1080, 440},
             {"env_compare_torus", "Buss VI.3 (seed 001)",
              "A torus in the four parameterizations at equal memory (24,576 texels), r per vertex: lat-long tears at "
@@ -130,6 +130,9 @@ class EnvironmentMapping final : public ts::Scene {
     return std::string(envmap::kParamLabels[param]) + ", r per " + kEval[eval_] +
            (eval_ == 1 && param == envmap::kCube ? " (GL_REFLECTION_MAP)" : eval_ == 1 && param == envmap::kSphere ? " (GL_SPHERE_MAP)" : "");
   }
+  // The error picture's scale: per pixel the maps are off by hundredths of a
+  // degree, per vertex by degrees.
+  double errorScale() const { return eval_ == 1 ? 4.0 : 0.25; }
   int param_ = envmap::kCube, object_ = envgl::kSphereObject, eval_ = 0, view_ = kObjectView, sphereEye_ = 0;
   int face_ = 64, render_ = 320;
   float turn_ = 0, tilt_ = 0;
@@ -191,7 +194,7 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     refNote = fmt("red: a near ball, %.0f px; a map made at the centre shows it at ", found->mirror.truePixels) +
               fmt("%.0f px", found->mirror.mapPixels) + fmt(", %.0f right", found->mirror.both);
   show(cells[1], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel", refNote);
-  show(cells[2], "error", found ? &found->error : nullptr, "direction error (black 0, yellow 4 deg)",
+  show(cells[2], "error", found ? &found->error : nullptr, fmt("direction error (black 0, yellow %g deg)", errorScale()),
        found ? "worst in: " + found->current.maxRegion : "");
   return f;
 }
@@ -230,7 +233,7 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
   out.insert(out.begin(), {"error_mean_deg[shown]", found.current.mean, "the picture shown: mean direction error, degrees"});
   found.picture = envmeasure::colourImage(g.draw(pass(param_, object_, eval_ == 1, false, n)));
   found.reference = envmeasure::referenceImage(ref);
-  found.error = envmeasure::errorImage(perPixel, n, n, 4.0);
+  found.error = envmeasure::errorImage(perPixel, n, n, errorScale());
   found.map = envmeasure::mapImage(param_, face_, shown.sphereView, &looked);
   if (view_ == kCompareView)
     for (int p = 0; p < 4; ++p) found.pictures[size_t(p)] = envmeasure::colourImage(g.draw(pass(p, object_, eval_ == 1, false, n)));
