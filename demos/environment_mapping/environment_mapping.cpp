@@ -57,6 +57,7 @@ struct Found {
   ts::Image picture, reference, error, map;          // object view, map view
   std::array<ts::Image, 4> pictures;                 // compare view
   envstudy::Mirror mirror;
+  double errorScale = 1;  // degrees shown yellow in the error picture
 };
 
 class EnvironmentMapping final : public ts::Scene {
@@ -131,8 +132,15 @@ class EnvironmentMapping final : public ts::Scene {
            (eval_ == 1 && param == envmap::kCube ? " (GL_REFLECTION_MAP)" : eval_ == 1 && param == envmap::kSphere ? " (GL_SPHERE_MAP)" : "");
   }
   // The error picture's scale: per pixel the maps are off by hundredths of a
-  // degree, per vertex by degrees.
-  double errorScale() const { return eval_ == 1 ? 4.0 : 0.25; }
+  // degree, per vertex by degrees; a larger 95th percentile (a stale sphere
+  // map) takes the next of 1, 2, 5 x 10^k above it.
+  double errorScale(double p95) const {
+    double scale = eval_ == 1 ? 4.0 : 0.25;
+    for (double step = 1; scale < p95; step *= 10)
+      for (double m : {1.0, 2.0, 5.0})
+        if (scale < p95) scale = std::max(scale, m * step);
+    return scale;
+  }
   int param_ = envmap::kCube, object_ = envgl::kSphereObject, eval_ = 0, view_ = kObjectView, sphereEye_ = 0;
   int face_ = 64, render_ = 320;
   float turn_ = 0, tilt_ = 0;
@@ -194,7 +202,8 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     refNote = fmt("red: a near ball, %.0f px; a map made at the centre shows it at ", found->mirror.truePixels) +
               fmt("%.0f px", found->mirror.mapPixels) + fmt(", %.0f right", found->mirror.both);
   show(cells[1], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel", refNote);
-  show(cells[2], "error", found ? &found->error : nullptr, fmt("direction error (black 0, yellow %g deg)", errorScale()),
+  show(cells[2], "error", found ? &found->error : nullptr,
+       fmt("direction error (black 0, yellow %g deg)", found ? found->errorScale : errorScale(0)),
        found ? "worst in: " + found->current.maxRegion : "");
   return f;
 }
@@ -233,7 +242,8 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
   out.insert(out.begin(), {"error_mean_deg[shown]", found.current.mean, "the picture shown: mean direction error, degrees"});
   found.picture = envmeasure::colourImage(g.draw(pass(param_, object_, eval_ == 1, false, n)));
   found.reference = envmeasure::referenceImage(ref);
-  found.error = envmeasure::errorImage(perPixel, n, n, errorScale());
+  found.errorScale = errorScale(found.current.p95);
+  found.error = envmeasure::errorImage(perPixel, n, n, found.errorScale);
   found.map = envmeasure::mapImage(param_, face_, shown.sphereView, &looked);
   if (view_ == kCompareView)
     for (int p = 0; p < 4; ++p) found.pictures[size_t(p)] = envmeasure::colourImage(g.draw(pass(p, object_, eval_ == 1, false, n)));
