@@ -40,7 +40,9 @@ namespace envgl {
 using envmap::Param;
 enum Object { kSphereObject, kTorus, kMirror, kObjects };
 inline const char* const kObjectKeys[] = {"sphere", "torus", "mirror"};
-constexpr int kSeedSphere = 4;
+constexpr int kSeedSphere = 4, kSeedCube = 5;
+// The map a pass reads: the seeds' variants read the sphere and the cube map.
+inline int mapOf(int param) { return param == kSeedSphere ? envmap::kSphere : param == kSeedCube ? envmap::kCube : param; }
 constexpr double kMirrorTiltDeg = 35.0;  // the mirror leans back: it reflects the upper world
 
 // Meshes coarse enough that per-vertex interpolation shows.
@@ -61,7 +63,8 @@ inline ts::Mesh objectMesh(int object) {
 }
 
 struct Pass {
-  int param = -1;  // -1: the reference, r itself; kSeedSphere: seed 002's (N_x/2 + 1/2, N_y/2 + 1/2) on the sphere map
+  int param = -1;  // -1: the reference, r itself; kSeedSphere: seed 002's (N_x/2 + 1/2, N_y/2 + 1/2) on the sphere map;
+                   // kSeedCube: seed 002's R = 2 N_z N - I on the cube map (per pixel)
   int object = kSphereObject;
   bool perVertex = false;
   bool directions = true;         // texels hold directions (measure) | the world's colours (picture)
@@ -138,6 +141,10 @@ void main() {
   gl_FragColor = vec4(normalize(r) * 0.5 + 0.5, 1.0);
 #elif PARAM == 1
   gl_FragColor = texture(mapCube, r);
+#elif PARAM == 5
+  // seed 002: R = 2 N_z N - I, I the unit vector to the eye (eye space)
+  vec3 n = normalize(nEye);
+  gl_FragColor = texture(mapCube, toWorld * (2.0 * n.z * n + normalize(posEye)));
 #else
 #if PER_VERTEX && PARAM == 3
   vec2 st = paraboloid(coord.xy, coord.zw, side);
@@ -195,7 +202,7 @@ class EnvGL : public ts::Renderer::Attachment {
     const glm::mat3 toWorld = glm::transpose(glm::mat3(p.view));
     const bool fixedFunction = p.perVertex && (p.param == envmap::kCube || p.param == envmap::kSphere);
     GLuint tex = p.param >= 0 ? texture(p) : 0;
-    const GLenum target = p.param == envmap::kCube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+    const GLenum target = mapOf(p.param) == envmap::kCube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
     glActiveTexture(GL_TEXTURE0);
     if (tex) glBindTexture(target, tex);
     if (fixedFunction) {
@@ -217,7 +224,7 @@ class EnvGL : public ts::Renderer::Attachment {
       // for another eye (sphereView) is read as if it were this one's.
       const glm::mat3 sphereEye(p.view);
       glUniformMatrix3fv(glGetUniformLocation(prog, "sphereEye"), 1, GL_FALSE, glm::value_ptr(sphereEye));
-      glUniform1i(glGetUniformLocation(prog, p.param == envmap::kCube ? "mapCube" : "map2d"), 0);
+      glUniform1i(glGetUniformLocation(prog, target == GL_TEXTURE_CUBE_MAP ? "mapCube" : "map2d"), 0);
     }
     const ts::Mesh m = objectMesh(p.object);
     glBegin(GL_TRIANGLES);
@@ -301,7 +308,7 @@ class EnvGL : public ts::Renderer::Attachment {
   // The map of a pass, baked once per (parameterization, contents, size,
   // sphere view) and kept.
   GLuint texture(Pass p) {
-    if (p.param == kSeedSphere) p.param = envmap::kSphere;  // the seed's coordinates read the same sphere map
+    p.param = mapOf(p.param);  // the seeds' coordinates read the same maps
     const envmap::Size sz = envmap::mapSize(Param(p.param), p.faceTexels);
     std::string key = std::string(envmap::kParamKeys[p.param]) + (p.directions ? "_dir_" : "_colour_") + std::to_string(p.faceTexels);
     if (p.param == envmap::kSphere)

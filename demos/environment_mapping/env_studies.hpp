@@ -2,14 +2,16 @@
 // measurements beyond the error table: seed 001's cube example read back from
 // the GL, a sphere map reused as the eye moves, seed 002's sphere-map formula
 // against GL_SPHERE_MAP off the view axis, and the flat mirror that cannot
-// reflect a nearby object.
+// reflect a nearby object; and addStudies, which prints them all.
 #pragma once
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <array>
 #include <vector>
 
+#include "common/layout.hpp"
 #include "common/orbit_camera.hpp"
+#include "common/scene.hpp"
 #include "env_gl.hpp"
 #include "env_measure.hpp"
 #include "env_world.hpp"
@@ -70,27 +72,31 @@ inline std::vector<double> viewDependence(envgl::EnvGL& g, int faceTexels) {
   return out;
 }
 
-// ---- seed 002's sphere map against GL_SPHERE_MAP ------------------------
-// Per pixel on the sphere: the direction the sphere map returns at seed
-// 002's (N_x/2 + 1/2, N_y/2 + 1/2) against the one at GL_SPHERE_MAP's (s, t),
-// binned by the angle between the pixel's line of sight and the view axis.
-// On the axis the two agree (I = (0,0,-1) there, and then s = r_x/m + 1/2 =
-// N_x/2 + 1/2); away from it the seed ignores where the eye is.
+// ---- seed 002's formulas against the GL's ----------------------------------
+// Per pixel on the sphere: the direction a map returns for seed 002's formula
+// against the one it returns for the GL's, binned by the angle between the
+// pixel's line of sight and the view axis.
+//   sphere map: u = N_x/2 + 1/2, v = N_y/2 + 1/2 against GL_SPHERE_MAP's (s,t).
+//     On the axis they agree (I = (0,0,-1) there, and then s = r_x/m + 1/2 =
+//     N_x/2 + 1/2); elsewhere the seed ignores where the eye is, and the
+//     two reflections are as far apart as the two lines of sight.
+//   cube map: R = 2 N_z N - I against r = 2 (N.I) N - I (I to the eye): equal
+//     where N.I = N_z, on the axis; apart elsewhere.
 inline const std::array<double, 6> kAxisBins{0, 0.5, 2, 5, 8, 12};
-struct SeedSphere {
+struct SeedVsGl {
   std::array<double, 5> meanDeg{}, maxDeg{};
   std::array<int, 5> pixels{};
 };
-inline SeedSphere seedSphere(envgl::EnvGL& g, int faceTexels) {
+inline SeedVsGl seedVsGl(envgl::EnvGL& g, int faceTexels, int glParam, int seedParam) {
   envgl::Pass p;
   p.view = viewMatrix(0, 0), p.projection = projectionMatrix(1), p.faceTexels = faceTexels;
   p.sphereView = glm::dmat3(glm::mat3(p.view));
-  p.param = envmap::kSphere;
+  p.param = glParam;
   const envgl::Pixels gl = g.draw(p);
-  p.param = envgl::kSeedSphere;
+  p.param = seedParam;
   const envgl::Pixels seed = g.draw(p);
   const glm::mat4 inv = glm::inverse(p.projection);
-  SeedSphere s;
+  SeedVsGl s;
   for (int y = 0; y < gl.h; ++y)
     for (int x = 0; x < gl.w; ++x) {
       if (gl.at(x, y).a < 0.5f || seed.at(x, y).a < 0.5f) continue;
@@ -159,5 +165,50 @@ inline Mirror mirrorNear(const envgl::Pixels& ref, const glm::mat4& projection, 
     }
   if (m.truePixels) m.meanDeg /= m.truePixels;
   return m;
+}
+
+// ---- all of the above, as the demo prints them -----------------------------
+inline void addStudies(envgl::EnvGL& g, int face, ts::Measurements& out) {
+  {  // the flat mirror in the default view
+    envgl::Pass ps;
+    ps.object = envgl::kMirror, ps.view = viewMatrix(0, 0), ps.projection = projectionMatrix(1);
+    const Mirror m = mirrorNear(g.draw(ps), ps.projection, ps.view, ps.model);
+    out.push_back({"mirror_ball_pixels", double(m.truePixels), "mirror pixels that show the near ball in a true mirror"});
+    out.push_back({"mirror_ball_pixels_centre_map", double(m.mapPixels), "pixels a map made at the mirror's centre, ball included, shows it at"});
+    out.push_back({"mirror_ball_pixels_both", double(m.both), "pixels where the true mirror and that map both show it"});
+    out.push_back({"mirror_ball_error_mean_deg", m.meanDeg, "mean angle between r and the direction from the centre to the ball point shown"});
+    out.push_back({"mirror_ball_error_max_deg", m.maxDeg, "largest such angle, degrees"});
+  }
+  // Seed 001's cube example: the spec's table, the seed's mirrored faces, the GL.
+  const SeedCube c = seedCube(g);
+  out.push_back({"seed_cube_face", double(c.gl.face), "face of (-3.2, 5.1, -8.4) by the spec's table (5 = -Z)"});
+  out.push_back({"seed_cube_gl_s", c.gl.s, "s by the spec's table"});
+  out.push_back({"seed_cube_gl_t", c.gl.t, "t by the spec's table"});
+  out.push_back({"seed_cube_seed_s", c.seed.s, "s as seed 001 computes it (sc = +r_x: the face mirrored)"});
+  out.push_back({"seed_cube_seed_t", c.seed.t, "t as seed 001 computes it (tc = +r_y)"});
+  out.push_back({"seed_cube_readback_face", double(c.readBack.z), "the face the GL's lookup read"});
+  out.push_back({"seed_cube_readback_s", (c.readBack.x + 0.5) / c.n, "the GL's texel centre s (1000 x 1000 faces, GL_NEAREST)"});
+  out.push_back({"seed_cube_readback_t", (c.readBack.y + 0.5) / c.n, "the GL's texel centre t"});
+  // Texels per steradian at equal memory.
+  for (int p = 0; p < envmap::kParams; ++p) {
+    const envmap::Uniformity u = envmap::uniformity(envmap::Param(p), face);
+    const std::string k = envmap::kParamKeys[p];
+    out.push_back({"texel_solid_angle_ratio[" + k + "]", u.analyticRatio(), "largest / smallest texel solid angle, analytic"});
+    out.push_back({"texel_solid_angle_ratio_numeric[" + k + "]", u.numericRatio(), "the same by numeric integration"});
+    out.push_back({"texel_solid_angle_reldiff[" + k + "]", u.largestRelDiff, "largest |numeric - analytic| / analytic of a texel"});
+  }
+  ts::measureProgress(0.8);
+  const std::vector<double> vd = viewDependence(g, face);
+  for (size_t k = 0; k < vd.size(); ++k)
+    out.push_back({"sphere_stale_error_deg[" + ts::layout::fmt("%.0f", kEyeAngles[k]) + "]", vd[k],
+                   "sphere map made at yaw 0, eye at this yaw: mean error on the sphere, degrees"});
+  const SeedVsGl ss = seedVsGl(g, face, envmap::kSphere, envgl::kSeedSphere),
+                 sc = seedVsGl(g, face, envmap::kCube, envgl::kSeedCube);
+  for (size_t b = 0; b + 1 < kAxisBins.size(); ++b) {
+    const std::string k = ts::layout::fmt("%g", kAxisBins[b]) + "-" + ts::layout::fmt("%g", kAxisBins[b + 1]);
+    out.push_back({"seed_sphere_vs_gl_deg[" + k + "]", ss.meanDeg[b], "seed 002's (N_x/2 + 1/2) against GL_SPHERE_MAP: mean angle, pixels this far off the view axis"});
+    out.push_back({"seed_sphere_vs_gl_max_deg[" + k + "]", ss.maxDeg[b], "the same, largest"});
+    out.push_back({"seed_cube_r_vs_gl_deg[" + k + "]", sc.meanDeg[b], "seed 002's R = 2 N_z N - I against r = 2 (N.I) N - I on the cube map: mean angle"});
+  }
 }
 }  // namespace envstudy

@@ -22,8 +22,8 @@
 // degrees of every parameterization x object x per vertex/pixel, and where
 // it is largest; texels per steradian, largest / smallest, at equal memory;
 // a sphere map reused as the eye turns; seed 001's cube example read back;
-// seed 002's u = N_x/2 + 1/2 against GL_SPHERE_MAP off the view axis; the
-// flat mirror that cannot show a nearby ball.
+// seed 002's u = N_x/2 + 1/2 against GL_SPHERE_MAP and its R = 2 N_z N - I
+// against r off the view axis; the flat mirror that cannot show a nearby ball.
 //
 // Keys (each is also a flag, see --help):
 //   p  parameterization        o  object: sphere | torus | mirror
@@ -256,46 +256,7 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
         if (found.mirror.trueMask[size_t(y) * size_t(n) + size_t(x)]) found.reference.set(x, n - 1 - y, {230, 40, 40, 255});
   }
   ts::measureProgress(0.6);
-  {  // the flat mirror at the measurement size and the default state
-    EnvironmentMapping d;
-    d.object_ = envgl::kMirror;
-    const envgl::Pass ps = d.pass(-1, envgl::kMirror, false, true, kMeasureSize);
-    const envstudy::Mirror m = envstudy::mirrorNear(g.draw(ps), ps.projection, ps.view, ps.model);
-    out.push_back({"mirror_ball_pixels", double(m.truePixels), "mirror pixels that show the near ball in a true mirror"});
-    out.push_back({"mirror_ball_pixels_centre_map", double(m.mapPixels), "pixels a map made at the mirror's centre, ball included, shows it at"});
-    out.push_back({"mirror_ball_pixels_both", double(m.both), "pixels where the true mirror and that map both show it"});
-    out.push_back({"mirror_ball_error_mean_deg", m.meanDeg, "mean angle between r and the direction from the centre to the ball point shown"});
-    out.push_back({"mirror_ball_error_max_deg", m.maxDeg, "largest such angle, degrees"});
-  }
-  // Seed 001's cube example: the spec's table, the seed's mirrored faces, the GL.
-  const envstudy::SeedCube c = envstudy::seedCube(g);
-  out.push_back({"seed_cube_face", double(c.gl.face), "face of (-3.2, 5.1, -8.4) by the spec's table (5 = -Z)"});
-  out.push_back({"seed_cube_gl_s", c.gl.s, "s by the spec's table"});
-  out.push_back({"seed_cube_gl_t", c.gl.t, "t by the spec's table"});
-  out.push_back({"seed_cube_seed_s", c.seed.s, "s as seed 001 computes it (sc = +r_x: the face mirrored)"});
-  out.push_back({"seed_cube_seed_t", c.seed.t, "t as seed 001 computes it (tc = +r_y)"});
-  out.push_back({"seed_cube_readback_face", double(c.readBack.z), "the face the GL's lookup read"});
-  out.push_back({"seed_cube_readback_s", (c.readBack.x + 0.5) / c.n, "the GL's texel centre s (1000 x 1000 faces, GL_NEAREST)"});
-  out.push_back({"seed_cube_readback_t", (c.readBack.y + 0.5) / c.n, "the GL's texel centre t"});
-  // Texels per steradian at equal memory.
-  for (int p = 0; p < envmap::kParams; ++p) {
-    const envmap::Uniformity u = envmap::uniformity(envmap::Param(p), face_);
-    const std::string k = envmap::kParamKeys[p];
-    out.push_back({"texel_solid_angle_ratio[" + k + "]", u.analyticRatio(), "largest / smallest texel solid angle, analytic"});
-    out.push_back({"texel_solid_angle_ratio_numeric[" + k + "]", u.numericRatio(), "the same by numeric integration"});
-    out.push_back({"texel_solid_angle_reldiff[" + k + "]", u.largestRelDiff, "largest |numeric - analytic| / analytic of a texel"});
-  }
-  ts::measureProgress(0.75);
-  const std::vector<double> vd = envstudy::viewDependence(g, face_);
-  for (size_t k = 0; k < vd.size(); ++k)
-    out.push_back({"sphere_stale_error_deg[" + fmt("%.0f", envstudy::kEyeAngles[k]) + "]", vd[k],
-                   "sphere map made at yaw 0, eye at this yaw: mean error on the sphere, degrees"});
-  const envstudy::SeedSphere ss = envstudy::seedSphere(g, face_);
-  for (size_t b = 0; b + 1 < envstudy::kAxisBins.size(); ++b) {
-    const std::string k = fmt("%g", envstudy::kAxisBins[b]) + "-" + fmt("%g", envstudy::kAxisBins[b + 1]);
-    out.push_back({"seed_sphere_vs_gl_deg[" + k + "]", ss.meanDeg[b], "seed 002's (N_x/2 + 1/2) against GL_SPHERE_MAP: mean angle, pixels this far off the view axis"});
-    out.push_back({"seed_sphere_vs_gl_max_deg[" + k + "]", ss.maxDeg[b], "the same, largest"});
-  }
+  envstudy::addStudies(g, face_, out);  // the seeds' examples, solid angle, the stale sphere map, the near ball
   out.push_back({"texels", double(envmap::mapTexels(envmap::Param(param_), face_)), "texels of the shown map"});
   out.detail = found;
   return out;

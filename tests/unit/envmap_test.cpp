@@ -82,6 +82,18 @@ TEST(EnvMap, SeedSphereMapEqualsGlOnTheAxisOnly) {
   }
 }
 
+// Seed 002's cube-map reflection R = 2 N_z N - I (I to the eye) is r = 2 (N.I) N - I
+// when the eye looks along the axis (I = (0,0,1)), and differs otherwise.
+TEST(EnvMap, SeedCubeReflectionIsExactOnTheAxisOnly) {
+  for (const dvec3& n0 : directions(300)) {
+    const dvec3 n = n0.z < 0 ? -n0 : n0;
+    const dvec3 axis(0, 0, 1), off = glm::normalize(dvec3(0.2, -0.1, 1));
+    EXPECT_LT(angleDeg(2 * n.z * n - axis, 2 * glm::dot(n, axis) * n - axis), 1e-9);
+    if (std::abs(glm::dot(n, off) - n.z) > 0.05)
+      EXPECT_GT(angleDeg(2 * n.z * n - off, 2 * glm::dot(n, off) * n - off), 0.1);
+  }
+}
+
 // Equal memory: every map within a row and a column of the cube's 6 face^2 texels.
 TEST(EnvMap, MapsHaveEqualMemory) {
   for (int face : {16, 64, 128})
