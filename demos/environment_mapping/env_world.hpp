@@ -189,25 +189,39 @@ inline const ts::Image& faceLabel(int face) {
 //   - each cube face's name in a white box at its centre, written in the
 //     face's GL (s, t) with t downwards, the way the face images are stored:
 //     it reads the right way round in the map views and in a mirror.
+//   Every edge (lines, boxes, letters) is a ramp about a quarter of a degree
+//   wide instead of a step, so a direction that moves by a rounding error
+//   changes its colour by as little: two rasterizers' pictures then agree to
+//   a level or two instead of flipping whole pixels along every line.
 inline dvec3 worldColour(dvec3 d) {
   d = glm::normalize(d);
   dvec3 c = 0.2 + 0.6 * (d + 1.0) / 2.0;
   const double lat = deg(std::asin(std::clamp(d.y, -1.0, 1.0))), lon = deg(std::atan2(-d.x, -d.z));
   auto off = [](double a) { return std::abs(a - 15.0 * std::round(a / 15.0)); };
-  const double lineDeg = 0.9, cosLat = std::cos(rad(lat));
-  const bool latLine = off(lat) < lineDeg, lonLine = off(lon) * cosLat < lineDeg && std::abs(lat) < 82.5;
-  if (latLine || lonLine) {
-    const bool main = (latLine && std::abs(lat) < lineDeg) || (lonLine && std::abs(lon) < lineDeg);
-    c = main ? dvec3(0.97) : c * 0.3;
-  }
+  auto ramp = [](double insideDeg) { return std::clamp(insideDeg / 0.25 + 0.5, 0.0, 1.0); };
+  const double lineDeg = 0.9;
+  const double wLat = ramp(lineDeg - off(lat)),
+               wLon = ramp(lineDeg - off(lon) * std::cos(rad(lat))) * ramp(82.5 - std::abs(lat));
+  const dvec3 dark = c * 0.3, white(0.97);
+  c = glm::mix(c, std::abs(lat) < 7.5 ? white : dark, wLat);  // the equator white
+  c = glm::mix(c, std::abs(lon) < 7.5 ? white : dark, wLon);  // the meridian through -Z white
   const CubeST f = cubeST(d);
   const ts::Image& label = faceLabel(f.face);
-  // The text spans s in 0.5 -/+ 0.15 (t in proportion); the box 1.2 times that.
+  // The text spans s in 0.5 -/+ 0.15 (t in proportion); the box 1.2 times
+  // that.  A unit of a is about 17 degrees at a face's centre.
   const double a = (f.s - 0.5) / 0.15, b = (f.t - 0.5) / 0.15 * label.width / label.height;
-  if (std::abs(a) < 1.2 && std::abs(b) < 1.2) {
-    c = dvec3(0.95);
-    const int x = int(std::floor((a + 1) / 2 * label.width)), y = int(std::floor((b + 1) / 2 * label.height));
-    if (x >= 0 && y >= 0 && x < label.width && y < label.height && label.at(x, y).r > 127) c = dvec3(0.05);
+  const double box = std::clamp((1.2 - std::max(std::abs(a), std::abs(b))) / 0.015 + 0.5, 0.0, 1.0);
+  if (box > 0) {
+    // The letters' coverage, bilinear between the bitmap's pixels, then sharpened.
+    const double u = (a + 1) / 2 * label.width - 0.5, v = (b + 1) / 2 * label.height - 0.5;
+    const int x0 = int(std::floor(u)), y0 = int(std::floor(v));
+    auto at = [&](int x, int y) {
+      return x >= 0 && y >= 0 && x < label.width && y < label.height ? label.at(x, y).r / 255.0 : 0.0;
+    };
+    const double fx = u - x0, fy = v - y0;
+    const double cov = glm::mix(glm::mix(at(x0, y0), at(x0 + 1, y0), fx), glm::mix(at(x0, y0 + 1), at(x0 + 1, y0 + 1), fx), fy);
+    const double ink = std::clamp((cov - 0.5) * 4 + 0.5, 0.0, 1.0);
+    c = glm::mix(c, glm::mix(dvec3(0.95), dvec3(0.05), ink), box);
   }
   return c;
 }
