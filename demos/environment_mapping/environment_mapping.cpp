@@ -161,7 +161,14 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   const L::Box area{6, 6, float(width) - 6, float(height) - 6};
   auto show = [&](const L::Cell& c, const std::string& id, const ts::Image* img, const std::string& above,
                   const std::string& below) {
-    if (img && img->width > 0) f.panels.push_back(L::texturePanel(id, c.picture, f.addTexture(image(*img, id))));
+    if (img && img->width > 0) {
+      // The object pictures are resampled to the panel with GL_LINEAR: with
+      // GL_NEAREST the panel's middle row and column sample exactly between
+      // two pixels, where backends round apart.  The map keeps its texels sharp.
+      ts::TextureDesc t = image(*img, id);
+      if (id != "map") t.minFilter = t.magFilter = GL_LINEAR;
+      f.panels.push_back(L::texturePanel(id, c.picture, f.addTexture(t)));
+    }
     L::caption(f, c.above, above, kWhite, c.scale);
     if (!below.empty()) L::caption(f, c.below, below, kAmber, c.scale);
   };
