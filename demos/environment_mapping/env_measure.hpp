@@ -9,8 +9,9 @@
 // in degrees: colours would say less (two directions can share a colour, and
 // 8 bits quantise), a direction is what a map stores.
 // Where it concentrates: each pixel is put in a region of its map by its
-// reference r: lat-long "pole" (|latitude| > 75°) / "seam" (within 7.5° of
-// λ = ±180°) / "body"; cube "edge" (second largest |component| > 0.9 of the
+// reference r: lat-long "pole" (|latitude| > 75°) / "seam" (within 30° of
+// λ = ±180°: a triangle of the coarse meshes spans that much of r, and per
+// vertex the whole triangle tears) / "body"; cube "edge" (second largest |component| > 0.9 of the
 // largest) / "face"; sphere "rim" (radius in the map > 0.9) / "centre";
 // paraboloid "rim" (|r_z| < 0.15, where the two discs meet) / "centre".
 #pragma once
@@ -32,7 +33,7 @@ inline std::string regionOf(int param, dvec3 r, const glm::dmat3& sphereEye) {
   switch (param) {
     case envmap::kLatLong: {
       const double lat = envmap::deg(std::asin(std::clamp(r.y, -1.0, 1.0))), lon = envmap::deg(std::atan2(-r.x, -r.z));
-      return std::abs(lat) > 75 ? "pole" : std::abs(lon) > 172.5 ? "seam" : "body";
+      return std::abs(lat) > 75 ? "pole" : std::abs(lon) > 150 ? "seam" : "body";
     }
     case envmap::kCube: {
       dvec3 a = glm::abs(r);
