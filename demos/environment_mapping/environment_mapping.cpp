@@ -69,7 +69,8 @@ class EnvironmentMapping final : public ts::Scene {
            "cube faces named) stored as a lat-long map, a cube map (GL_REFLECTION_MAP texgen), a sphere map\n"
            "(GL_SPHERE_MAP texgen) and a dual paraboloid (GLSL), at equal memory, r per vertex or per pixel.\n"
            "Measured against the exact reflection per pixel: direction error in degrees and where it concentrates;\n"
-           "texels per steradian; a sphere map reused as the eye turns; seed 001's cube example; seed 002's sphere map.";
+           "texels per steradian; a sphere map reused as the eye turns; seed 001's cube example; seed 002's sphere and\n"
+           "cube formulas off the view axis; a ball near the flat mirror that no environment map can show.";
   }
   int defaultWidth() const override { return 1080; }
   int defaultHeight() const override { return 440; }
