@@ -19,8 +19,8 @@
 // interpolated) or per pixel (GLSL).  The world (env_world.hpp) is made so any
 // direction can be read: colour = direction, lines every 15°, the six cube
 // faces named.  Measured against the exact r per pixel: the direction error in
-// degrees of every parameterization x object x per vertex/pixel, and where
-// it is largest; texels per steradian, largest / smallest, at equal memory;
+// degrees of every parameterization x per vertex/pixel for the object shown,
+// and where it is largest (env_measure.hpp); texels per steradian, largest / smallest, at equal memory;
 // a sphere map reused as the eye turns; seed 001's cube example read back;
 // seed 002's u = N_x/2 + 1/2 against GL_SPHERE_MAP and its R = 2 N_z N - I
 // against r off the view axis; the flat mirror that cannot show a nearby ball.
