@@ -83,6 +83,41 @@ inline ErrorStats errorStats(int param, const envgl::Pixels& lookup, const envgl
   return s;
 }
 
+// Resolution: how large, in degrees, the texel a pixel reads is along its
+// longer side (the angle between the directions at its opposite edges, in s
+// and in t), and its aspect (longer / shorter side).  The direction error above says a map points the right way;
+// this says how coarse the world is where it points: a sphere map's rim
+// texels are long and thin (each still spans 4 (2/n)^2 sr), a cube face's
+// centre texels are larger than its corners', lat-long's shrink along λ
+// toward the poles.  Averaged per region over the pixels of `ref`, at their
+// exact r.
+struct TexelShape {
+  double extentDeg = 0, aspect = 0;
+};
+inline std::map<std::string, TexelShape> texelShape(int param, int faceTexels, const envgl::Pixels& ref,
+                                                    const glm::dmat3& sphereView, const glm::dmat3& eye) {
+  const envmap::Size sz = envmap::mapSize(Param(param), faceTexels);
+  const glm::dmat3 toWorld = glm::transpose(sphereView);
+  std::map<std::string, TexelShape> sum;
+  std::map<std::string, int> n;
+  for (int y = 0; y < ref.h; ++y)
+    for (int x = 0; x < ref.w; ++x) {
+      if (ref.at(x, y).a < 0.5f) continue;
+      const dvec3 r = ref.direction(x, y);
+      int face = 0;
+      const glm::dvec2 st = envmap::mapST(Param(param), r, sphereView, &face);
+      const double hs = 0.5 / sz.w, ht = 0.5 / sz.h;
+      auto dir = [&](double s, double t) { return envmap::texelDir(Param(param), face, s, t, toWorld); };
+      const double a = envmap::angleDeg(dir(st.x - hs, st.y), dir(st.x + hs, st.y)),
+                   b = envmap::angleDeg(dir(st.x, st.y - ht), dir(st.x, st.y + ht));
+      const std::string region = regionOf(param, r, eye);
+      sum[region].extentDeg += std::max(a, b), sum[region].aspect += std::max(a, b) / std::max(1e-9, std::min(a, b));
+      n[region] += 1;
+    }
+  for (auto& [k, v] : sum) v.extentDeg /= n[k], v.aspect /= n[k];
+  return sum;
+}
+
 // ---- pictures (ts::Image, row 0 at the top) -------------------------------
 const glm::dvec3 kBackground{0.12, 0.12, 0.14};
 inline ts::Image colourImage(const envgl::Pixels& p) {

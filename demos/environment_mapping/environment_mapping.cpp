@@ -237,6 +237,14 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
                          fmt("mean error in this region of the map, degrees (%.0f pixels)", s.regionPixels.at(region))});
         if (o == object_ && e == eval_) found.compare[size_t(p)] = s;
       }
+    for (int p = 0; p < envmap::kParams; ++p) {
+      const envgl::Pass ps = pass(p, o, false, true, kMeasureSize);
+      for (const auto& [region, t] : envmeasure::texelShape(p, face_, ref, ps.sphereView, ps.eyeRotation())) {
+        const std::string k = std::string(envmap::kParamKeys[p]) + "@" + region;
+        out.push_back({"texel_extent_deg[" + k + "]", t.extentDeg, "mean size of the texel read here, degrees along its longer side"});
+        out.push_back({"texel_aspect[" + k + "]", t.aspect, "mean longer / shorter side of the texel read here"});
+      }
+    }
     ts::measureProgress(0.4);
   }
   // The pictures of the shown state.

@@ -78,6 +78,21 @@ TEST(EnvironmentMapping, ErrorsConcentrateWhereTheMapsAreWeak) {
   }
 }
 
+// How coarse the world is where the sphere reads it: the sphere map's rim
+// texels are long and thin, lat-long's polar texels thin (all as long as a
+// row is high, 180/h degrees), a cube face's centre texels larger than those
+// at its edges.
+TEST(EnvironmentMapping, TexelShapeWhereTheObjectReads) {
+  auto ext = [](const std::string& k) { return v("texel_extent_deg[" + k + "]"); };
+  auto asp = [](const std::string& k) { return v("texel_aspect[" + k + "]"); };
+  EXPECT_GT(ext("sphere@rim"), 2 * ext("sphere@centre"));
+  EXPECT_GT(asp("sphere@rim"), 2 * asp("sphere@centre"));
+  EXPECT_GT(asp("latlong@pole"), 3 * asp("latlong@body"));
+  const double rowDeg = 180.0 / envmap::mapSize(envmap::kLatLong, 64).h;
+  for (const char* r : {"body", "pole", "seam"}) EXPECT_NEAR(ext(std::string("latlong@") + r), rowDeg, 0.01 * rowDeg) << r;
+  EXPECT_GT(ext("cube@face"), ext("cube@edge"));
+}
+
 // A sphere map made at yaw 0 and read from an eye turned by a: the error
 // grows with a and never exceeds it (a rotation by a moves a direction by at
 // most a), and is more than half of it.
