@@ -25,7 +25,7 @@ Rendered renderScene(Scene& scene, Renderer& r, int width, int height, bool reco
 }
 
 std::string glListingFile(const Rendered& got, const std::string& state) {
-  return listingText(listing(got.calls, nullptr, 3),
+  return listingText(listing(pictureSections(got.frame, got.calls), nullptr, 3),
                      "The OpenGL calls that draw this picture, recorded as they were made by\n"
                      "       " + state + " --gl-listing FILE\n"
                      "   Object names are numbered in order of creation; queries (glGet*) are left out;\n"

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "gl_call.hpp"   // recorded calls as plain data, no GL headers
 #include "gl_enums.hpp"  // GL names only: the plain data never calls GL
 #include "image.hpp"
 
@@ -46,6 +47,11 @@ struct TextureDesc {
   // Scene::live): bound as it is, never uploaded, cached or hashed; `image`
   // stays empty and the parameters above are still applied.
   GLuint glTexture = 0;
+  // The GL calls that rendered `image`, when a scene rendered it itself in
+  // measure() (recordRender in gl_listing.hpp): the listings and the GL pane
+  // print them, under a comment naming the panel, before the frame's own.
+  // Not part of the texels: never in key(), the sidecar or an export.
+  gl::CallList renderedBy;
   // Identifies the texel contents (name + params), for caching uploads.
   std::string key() const;
 };

@@ -17,14 +17,44 @@ std::vector<gl::Call> recordPicture(Renderer& r, const Frame& frame) {
   return rec.take();
 }
 
+gl::CallList recordRender(Renderer& r, const std::function<void()>& draw) {
+  r.release();
+  gl::Recording rec;
+  draw();
+  return std::make_shared<const std::vector<gl::Call>>(rec.take());
+}
+
+std::vector<CallSection> pictureSections(const Frame& frame, std::vector<gl::Call> frameCalls) {
+  std::vector<CallSection> out;
+  for (size_t t = 0; t < frame.textures.size(); ++t) {
+    const TextureDesc& d = frame.textures[t];
+    if (!d.renderedBy) continue;
+    std::string panels;
+    for (const Panel& p : frame.panels)
+      for (const Batch& b : p.batches)
+        if (b.texture == int(t) && panels.find("'" + p.id + "'") == std::string::npos)
+          panels += (panels.empty() ? "'" : ", '") + p.id + "'";
+    std::string size = d.image ? std::to_string(d.image->width) + "x" + std::to_string(d.image->height) : "";
+    out.push_back({"the picture in " + (panels.empty() ? std::string("no panel") : "panel " + panels) +
+                       (size.empty() ? "" : " (a " + size + " texture)") + " was rendered by:",
+                   d.renderedBy});
+  }
+  std::string heading = out.empty() ? "" : "the frame, drawn with those pictures as textures:";
+  out.push_back({heading, std::make_shared<const std::vector<gl::Call>>(std::move(frameCalls))});
+  return out;
+}
+
 namespace {
 bool is(const gl::Call& c, const char* name) { return std::strcmp(c.name, name) == 0; }
 
-// Which arguments of a call name a texture ('t') or a program/shader ('p').
+// Which arguments of a call name a texture ('t'), a program/shader ('p'), a
+// framebuffer ('f') or a renderbuffer ('r').
 const char* nameRoles(const gl::Call& c) {
   static const std::map<std::string, const char*> roles = {
       {"glBindTexture", " t"}, {"glDeleteTextures", " t"}, {"glGenTextures", " t"},
-      {"glFramebufferTexture2D", "   t"}, {"glUseProgram", "p"}, {"glAttachShader", "pp"},
+      {"glFramebufferTexture2D", "   t"}, {"glGenFramebuffers", " f"}, {"glBindFramebuffer", " f"},
+      {"glDeleteFramebuffers", " f"}, {"glGenRenderbuffers", " r"}, {"glBindRenderbuffer", " r"},
+      {"glDeleteRenderbuffers", " r"}, {"glFramebufferRenderbuffer", "   r"}, {"glUseProgram", "p"}, {"glAttachShader", "pp"},
       {"glShaderSource", "p"}, {"glCompileShader", "p"}, {"glLinkProgram", "p"}, {"glDeleteShader", "p"},
       {"glDeleteProgram", "p"}, {"glGetUniformLocation", "p"}, {"glGetAttribLocation", "p"},
       {"glBindAttribLocation", "p"}, {"glGetProgramiv", "p"}, {"glGetShaderiv", "p"},
@@ -34,32 +64,43 @@ const char* nameRoles(const gl::Call& c) {
 }
 }  // namespace
 
-std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls) {
-  std::unordered_map<long long, long long> textures, programs;
-  auto number = [](std::unordered_map<long long, long long>& m, long long name) {
+namespace {
+// The numbers given so far, per kind: a later section numbers on from them.
+struct Numbered {
+  std::map<char, long long> last;  // per role letter of nameRoles
+};
+std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls, Numbered* given) {
+  std::map<char, std::unordered_map<long long, long long>> names;  // per role: GL name -> number
+  auto number = [given, &names](char role, long long name) {
     if (name == 0) return 0LL;
+    auto& m = names[role];
     auto it = m.find(name);
     if (it != m.end()) return it->second;
-    long long n = (long long)(m.size()) + 1;
+    long long n = ++given->last[role];
     m.emplace(name, n);
     return n;
   };
   std::vector<gl::Call> out = calls;
   for (gl::Call& c : out) {
     // Creation first, so names are numbered in the order they were made.
-    if (c.hasResult && (is(c, "glCreateProgram") || is(c, "glCreateShader"))) c.result = number(programs, c.result);
+    if (c.hasResult && (is(c, "glCreateProgram") || is(c, "glCreateShader"))) c.result = number('p', c.result);
     const char* roles = nameRoles(c);
     for (size_t k = 0; roles[k] && k < c.args.size(); ++k) {
       if (roles[k] == ' ') continue;
-      auto& m = roles[k] == 't' ? textures : programs;
       gl::Arg& a = c.args[k];
       if (a.kind == gl::Arg::Kind::Ints)
-        for (long long& v : a.ints) v = number(m, v);
+        for (long long& v : a.ints) v = number(roles[k], v);
       else
-        a.i = number(m, a.i);
+        a.i = number(roles[k], a.i);
     }
   }
   return out;
+}
+}  // namespace
+
+std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls) {
+  Numbered given;
+  return numberObjects(calls, &given);
 }
 
 namespace {
@@ -71,15 +112,22 @@ struct Entry {
   bool vertex = false;  // a glVertex*: ends one vertex's group of calls
 };
 
-std::vector<Entry> entries(const std::vector<gl::Call>& numbered) {
-  std::vector<Entry> out;
+void addEntries(const std::vector<gl::Call>& numbered, std::vector<Entry>* out) {
   for (const gl::Call& c : numbered) {
     if (c.query) continue;
     Entry e;
     e.text = gl::formatCall(c);
     e.vertex = std::strncmp(c.name, "glVertex", 8) == 0 && std::strcmp(c.name, "glVertexPointer") != 0 &&
                std::strncmp(c.name, "glVertexAttrib", 14) != 0;
-    out.push_back(std::move(e));
+    out->push_back(std::move(e));
+  }
+}
+std::vector<Entry> entries(const std::vector<CallSection>& sections) {
+  std::vector<Entry> out;
+  Numbered given;
+  for (const CallSection& s : sections) {
+    if (!s.heading.empty()) out.push_back({"/* " + s.heading + " */"});
+    if (s.calls) addEntries(numberObjects(*s.calls, &given), &out);
   }
   return out;
 }
@@ -127,8 +175,18 @@ void markChanged(const std::vector<Entry>& before, std::vector<Entry>* now) {
 
 std::vector<ListingLine> listing(const std::vector<gl::Call>& calls, const std::vector<gl::Call>* previous,
                                  int keepVertices) {
-  std::vector<Entry> now = entries(numberObjects(calls));
-  if (previous) markChanged(entries(numberObjects(*previous)), &now);
+  auto section = [](const std::vector<gl::Call>& c) {
+    return std::vector<CallSection>{{"", std::make_shared<const std::vector<gl::Call>>(c)}};
+  };
+  if (!previous) return listing(section(calls), nullptr, keepVertices);
+  std::vector<CallSection> before = section(*previous);
+  return listing(section(calls), &before, keepVertices);
+}
+
+std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const std::vector<CallSection>* previous,
+                                 int keepVertices) {
+  std::vector<Entry> now = entries(sections);
+  if (previous) markChanged(entries(*previous), &now);
   std::vector<ListingLine> out;
   auto emit = [&](const Entry& e) {
     // One listing line per source line (a shader's source spans many).

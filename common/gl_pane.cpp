@@ -15,7 +15,8 @@ int glPaneWidth(int windowWidth) {
 }
 
 void GlPane::record(Renderer& r, const Frame& f, bool afterKey, double now, bool print) {
-  std::vector<gl::Call> calls = recordPicture(r, f);
+  // The pictures the scene rendered itself first, then the frame's calls.
+  std::vector<CallSection> calls = pictureSections(f, recordPicture(r, f));
   lines_ = listing(calls, afterKey && !calls_.empty() ? &calls_ : nullptr, 3);
   calls_ = std::move(calls);
   firstChanged_ = -1;

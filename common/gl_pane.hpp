@@ -32,7 +32,7 @@ class GlPane {
   void draw(int x, int w, int h, double now);
 
  private:
-  std::vector<gl::Call> calls_;
+  std::vector<CallSection> calls_;
   std::vector<ListingLine> lines_;
   double changedAt_ = -1e9;
   int firstChanged_ = -1;

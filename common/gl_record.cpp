@@ -13,7 +13,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
-#include <thread>
 #include <type_traits>
 #include <unordered_map>
 
@@ -93,11 +92,12 @@ Raw toRaw(T v) {
 //   T texture pixels read (size from the call's width, height, format, type)
 //   o names written (count = first argument)   n names read (count = first argument)
 //   S shader strings (count, strings, lengths)   s one C string read
-//   M count x 16 floats read   V count x 4 floats read   - pointer, not kept
+//   M count x 16 floats read   N count x 9 floats read   V count x 4 floats read
+//   - pointer, not kept
 // A leading '?' marks a query: it reads state and draws nothing.
 const std::map<std::string, std::string>& hints() {
   static const std::map<std::string, std::string> h = {
-      {"glAccum", "e"}, {"glBegin", "P"}, {"glBindTexture", "eu"}, {"glBlendFunc", "FF"}, {"glBlendFuncSeparate", "FFFF"}, {"glClear", "b"},
+      {"glAccum", "e"}, {"glBegin", "P"}, {"glBindTexture", "eu"}, {"glBlendFunc", "FF"}, {"glBlendFuncSeparate", "FFFF"}, {"glClear", "b"}, {"glPushAttrib", "b"},
       {"glCopyTexImage2D", "eie"}, {"glCullFace", "e"}, {"glDeleteTextures", "in"}, {"glDepthFunc", "e"},
       {"glDepthMask", "B"}, {"glDisable", "e"}, {"glDisableClientState", "e"}, {"glDrawArrays", "P"},
       {"glDrawElements", "Pie-"}, {"glEnable", "e"}, {"glEnableClientState", "e"}, {"glFrontFace", "e"},
@@ -110,7 +110,7 @@ const std::map<std::string, std::string>& hints() {
       {"glStencilFunc", "eiu"}, {"glStencilOp", "eee"}, {"glActiveTexture", "e"}, {"glClientActiveTexture", "e"},
       {"glMultiTexCoord4f", "e"}, {"glCreateShader", "e"}, {"glShaderSource", "uiS"},
       {"glGetUniformLocation", "us"}, {"glGetAttribLocation", "us"}, {"glBindAttribLocation", "uus"},
-      {"glUniformMatrix4fv", "iiBM"}, {"glUniform4fv", "iiV"}, {"glGenerateMipmap", "e"},
+      {"glUniformMatrix4fv", "iiBM"}, {"glUniformMatrix3fv", "iiBN"}, {"glUniform4fv", "iiV"}, {"glGenerateMipmap", "e"},
       {"glBindFramebuffer", "eu"}, {"glBindRenderbuffer", "eu"}, {"glRenderbufferStorage", "eeii"},
       {"glFramebufferTexture2D", "eeeui"}, {"glFramebufferRenderbuffer", "eeeu"}, {"glGenFramebuffers", "io"},
       {"glGenRenderbuffers", "io"}, {"glDeleteFramebuffers", "in"}, {"glDeleteRenderbuffers", "in"},
@@ -208,6 +208,7 @@ Arg describe(char hint, const Raw& r, const std::vector<Raw>& all, size_t index,
     case 'm': floatsAt(16); return a;
     case 'v': floatsAt(size_t(vectorLength(index > 0 ? all[index - 1].i : 0))); return a;
     case 'M': floatsAt(size_t(std::max<long long>(0, all[1].i)) * 16); return a;
+    case 'N': floatsAt(size_t(std::max<long long>(0, all[1].i)) * 9); return a;
     case 'V': floatsAt(size_t(std::max<long long>(0, all[1].i)) * 4); return a;
     case 'n': {
       a.kind = Arg::Kind::Ints;
@@ -276,10 +277,11 @@ const char* const kNames[] = {
     TM_GL_FUNCTIONS(TM_GL_NAME)
 #undef TM_GL_NAME
 };
-void* g_real[kFunctionCount];
-Recording* g_recording = nullptr;
-std::thread::id g_thread;
-std::atomic<bool> g_active{false};
+// Per thread, as the pointer table they stand in for (gl.hpp): each thread's
+// real pointers and innermost Recording.
+__thread void* g_real[kFunctionCount];
+__thread Recording* g_recording = nullptr;
+std::atomic<int> g_alive{0};  // Recordings alive, all threads
 
 // The hint of each function, looked up once (vertices are many).
 const std::string& hintOf(int index) {
@@ -327,7 +329,7 @@ template <int Index, typename R, typename... A>
 struct Wrapper<Index, R (*)(A...)> {
   static R APIENTRY call(A... a) {
     auto real = reinterpret_cast<R (*)(A...)>(g_real[Index]);
-    if (!g_active.load(std::memory_order_relaxed) || std::this_thread::get_id() != g_thread) return real(a...);
+    if (!g_recording) return real(a...);  // a Recording ending on this thread
     std::vector<Raw> raws{toRaw(a)...};
     Call c = begin(Index, raws);
     if constexpr (std::is_void_v<R>) {
@@ -409,6 +411,7 @@ std::string enumText(const Arg& a, char group) {
 }
 
 std::string bitfieldText(long long v) {
+  if (v == 0xFFFFFFFFLL) return "GL_ALL_ATTRIB_BITS";  // glPushAttrib's everything
   static const std::pair<long long, const char*> kBits[] = {
       {GL_COLOR_BUFFER_BIT, "GL_COLOR_BUFFER_BIT"}, {GL_DEPTH_BUFFER_BIT, "GL_DEPTH_BUFFER_BIT"},
       {GL_STENCIL_BUFFER_BIT, "GL_STENCIL_BUFFER_BIT"}, {GL_ACCUM_BUFFER_BIT, "GL_ACCUM_BUFFER_BIT"}};
@@ -518,19 +521,23 @@ std::string formatCall(const Call& c, bool floatSuffix) {
   return out;
 }
 
-Recording::Recording() {
-  if (g_active.load()) throw Error("a GL recording is already running", kExitFailure);
+Recording::Recording() : outer_(g_recording) {
+  if (!outer_) swapIn();  // this thread's table: another thread's stays as it is
   g_recording = this;
-  g_thread = std::this_thread::get_id();
-  swapIn();
-  g_active.store(true);
+  g_alive.fetch_add(1);
 }
 
 Recording::~Recording() {
-  g_active.store(false);
-  swapOut();
-  g_recording = nullptr;
+  g_recording = outer_;
+  if (!outer_) swapOut();
+  g_alive.fetch_sub(1);
 }
 
-bool Recording::active() { return g_active.load(); }
+void Recording::append(Call c) {
+  if (outer_) outer_->append(c);  // nested: the outer Recording keeps it too
+  calls_.push_back(std::move(c));
+}
+
+bool Recording::active() { return g_alive.load() > 0; }
+bool Recording::activeHere() { return g_recording != nullptr; }
 }  // namespace ts::gl

@@ -7,10 +7,14 @@
 // as usual.  When the Recording ends the real pointers are back, so with no
 // recording the cost is exactly nothing (no branch on any call).
 //
-// Only calls made on the thread that started the recording are kept: a
-// measurement on another thread's context is not the picture's.  Callers
-// scope a Recording around the drawing of a picture and never around the
-// measurement passes (texel-index renders, readbacks), so the two stay apart.
+// Recording is per thread, as the pointer table is: a Recording keeps the
+// calls of the thread that made it, and threads record independently (the
+// window's GL pane while a measurement worker records a picture it renders,
+// common/measure_worker.hpp).  Recordings on one thread nest: a call is kept
+// by every Recording alive on its thread, so an outer one still holds all
+// that was drawn while it lived.  Callers scope a Recording around the
+// drawing of a picture and never around the measurement passes (texel-index
+// renders, readbacks), so the two stay apart.
 //
 //   ts::gl::Recording rec;          // from here on, calls are kept
 //   renderer.draw(frame);
@@ -21,43 +25,9 @@
 #include <vector>
 
 #include "gl.hpp"
+#include "gl_call.hpp"
 
 namespace ts::gl {
-
-// One argument, as a C programmer would write it back.
-struct Arg {
-  enum class Kind {
-    Int,       // GLint, GLsizei: 256
-    Uint,      // an object name (texture 3, program 2) or an unsigned count
-    Float,     // 0.5f (GLdouble arguments too)
-    Enum,      // GL_LINEAR_MIPMAP_LINEAR; `i` holds the value
-    Bitfield,  // GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT
-    Boolean,   // GL_TRUE / GL_FALSE
-    Floats,    // an array the call reads: glLoadMatrixf's 16, a colour's 4
-    Ints,      // an array of integers the call reads or writes (glGenTextures' names)
-    Text,      // strings the call reads (glShaderSource, glGetUniformLocation's name)
-    Pixels,    // image data the call reads (glTexImage2D): `bytes` holds a copy
-    Pointer,   // anything else (null, client arrays, query outputs): not kept
-    Code,      // C code standing for the argument (`text[0]`): set by a program
-               // generator, never by the recorder (e.g. "texture[1]")
-  };
-  Kind kind = Kind::Int;
-  bool isDouble = false;  // a GLdouble parameter (glOrtho, glClearDepth)
-  long long i = 0;
-  double f = 0;
-  std::vector<float> floats;
-  std::vector<long long> ints;
-  std::vector<std::string> text;
-  std::shared_ptr<const std::vector<unsigned char>> bytes;
-};
-
-struct Call {
-  const char* name = "";   // "glTexParameteri"
-  std::vector<Arg> args;
-  bool hasResult = false;  // glGenLists, glCreateShader, glGetUniformLocation ...
-  long long result = 0;
-  bool query = false;      // glGet*, glIsEnabled, glCheckFramebufferStatus: reads state, draws nothing
-};
 
 // The name of an enum value (the first core name the GL headers give it:
 // GL_TEXTURE_MAX_ANISOTROPY rather than ..._EXT), or "" when unknown.
@@ -79,18 +49,21 @@ std::string formatCall(const Call& c, bool floatSuffix = false);
 
 class Recording {
  public:
-  Recording();   // starts recording on this thread (one Recording at a time)
-  ~Recording();  // restores the real pointers
+  Recording();   // starts recording on this thread (inside another: both keep the calls)
+  ~Recording();  // the outermost restores this thread's real pointers
   Recording(const Recording&) = delete;
   Recording& operator=(const Recording&) = delete;
   const std::vector<Call>& calls() const { return calls_; }
   std::vector<Call> take() { return std::move(calls_); }
   // Used by the wrappers: one call made while recording.
-  void append(Call c) { calls_.push_back(std::move(c)); }
-  // True while any Recording is alive.
+  void append(Call c);
+  // True while any Recording is alive on any thread.
   static bool active();
+  // True while a Recording is alive on the calling thread.
+  static bool activeHere();
 
  private:
   std::vector<Call> calls_;
+  Recording* outer_ = nullptr;  // the Recording this one is inside (same thread)
 };
 }  // namespace ts::gl

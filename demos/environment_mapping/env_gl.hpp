@@ -253,6 +253,16 @@ class EnvGL : public ts::Renderer::Attachment {
     return out;
   }
 
+  // Drops the map pass `p` reads and the target: the next draw makes them
+  // again, so that its recorded calls (ts::recordRender) show how.
+  void forget(const Pass& p) {
+    freeTarget();
+    auto it = textures_.find(mapKey(p));
+    if (it == textures_.end()) return;
+    glDeleteTextures(1, &it->second);
+    textures_.erase(it);
+  }
+
   // One cube-map lookup of direction r read back: the texel colour of a
   // texel-index cube (face in B, (i, j) in R and G) at n x n per face,
   // GL_NEAREST: which face and texel the GL chose (seed 001's example).
@@ -307,13 +317,19 @@ class EnvGL : public ts::Renderer::Attachment {
  private:
   // The map of a pass, baked once per (parameterization, contents, size,
   // sphere view) and kept.
-  GLuint texture(Pass p) {
+  static std::string mapKey(Pass p) {
     p.param = mapOf(p.param);  // the seeds' coordinates read the same maps
-    const envmap::Size sz = envmap::mapSize(Param(p.param), p.faceTexels);
+    if (p.param < 0) return "";
     std::string key = std::string(envmap::kParamKeys[p.param]) + (p.directions ? "_dir_" : "_colour_") + std::to_string(p.faceTexels);
     if (p.param == envmap::kSphere)
       for (int c = 0; c < 3; ++c)
         for (int k = 0; k < 3; ++k) key += "_" + std::to_string(p.sphereView[c][k]);
+    return key;
+  }
+  GLuint texture(Pass p) {
+    const std::string key = mapKey(p);
+    p.param = mapOf(p.param);
+    const envmap::Size sz = envmap::mapSize(Param(p.param), p.faceTexels);
     auto it = textures_.find(key);
     if (it != textures_.end()) return it->second;
     const glm::dmat3 toWorld = glm::transpose(p.sphereView);

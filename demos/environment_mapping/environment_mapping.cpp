@@ -33,6 +33,7 @@
 //   + / -  memory (texels a cube face side; the others as many texels)
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "common/gl_listing.hpp"
 #include "common/layout.hpp"
 #include "common/orbit_camera.hpp"
 #include "common/render.hpp"
@@ -56,6 +57,8 @@ struct Found {
   std::array<envmeasure::ErrorStats, 4> compare;     // each parameterization, this object and evaluation
   ts::Image picture, reference, error, map;          // object view, map view
   std::array<ts::Image, 4> pictures;                 // compare view
+  ts::gl::CallList pictureGL, referenceGL;           // the GL calls that rendered them (the listings show them)
+  std::array<ts::gl::CallList, 4> picturesGL;
   envstudy::Mirror mirror;
   double errorScale = 1;  // degrees shown yellow in the error picture
 };
@@ -161,13 +164,14 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   const Found* found = measured.detailAs<Found>();
   const L::Box area{6, 6, float(width) - 6, float(height) - 6};
   auto show = [&](const L::Cell& c, const std::string& id, const ts::Image* img, const std::string& above,
-                  const std::string& below) {
+                  const std::string& below, ts::gl::CallList gl = nullptr) {
     if (img && img->width > 0) {
       // The object pictures are resampled to the panel with GL_LINEAR: with
       // GL_NEAREST the panel's middle row and column sample exactly between
       // two pixels, where backends round apart.  The map keeps its texels sharp.
       ts::TextureDesc t = image(*img, id);
       if (id != "map") t.minFilter = t.magFilter = GL_LINEAR;
+      t.renderedBy = std::move(gl);
       f.panels.push_back(L::texturePanel(id, c.picture, f.addTexture(t)));
     }
     L::caption(f, c.above, above, kWhite, c.scale);
@@ -180,9 +184,10 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     for (int k = 0; k < 4; ++k)
       show(cells[size_t(k)], envmap::kParamKeys[k], found ? &found->pictures[size_t(k)] : nullptr,
            std::string(envmap::kParamLabels[k]) + (eval_ == 1 && (k == envmap::kCube || k == envmap::kSphere) ? " (texgen)" : ""),
-           found ? fmt("mean %.2f", found->compare[size_t(k)].mean) + fmt(", max %.1f deg", found->compare[size_t(k)].max) : "");
+           found ? fmt("mean %.2f", found->compare[size_t(k)].mean) + fmt(", max %.1f deg", found->compare[size_t(k)].max) : "",
+           found ? found->picturesGL[size_t(k)] : nullptr);
     show(cells[4], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel",
-         std::string("the maps: r per ") + kEval[eval_]);
+         std::string("the maps: r per ") + kEval[eval_], found ? found->referenceGL : nullptr);
     return f;
   }
   if (view_ == kMapView) {
@@ -198,18 +203,20 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
          "lit: the texels the object reads");
     spec.aspect = 1.0f;
     show(L::flow({mid + 6, area.y0, area.x1, area.y1}, spec)[0], "picture", found ? &found->picture : nullptr,
-         stateName(param_), found ? statsLine(found->current) : "");
+         stateName(param_), found ? statsLine(found->current) : "", found ? found->pictureGL : nullptr);
     return f;
   }
   L::FlowSpec spec;
   spec.n = 3, spec.linesAbove = 1, spec.linesBelow = 2, spec.gap = 8;
   std::vector<L::Cell> cells = L::flow(area, spec);
-  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(found->current) : "");
+  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(found->current) : "",
+       found ? found->pictureGL : nullptr);
   std::string refNote;
   if (found && object_ == envgl::kMirror)
     refNote = fmt("red: a near ball, %.0f px; a map made at the centre shows it at ", found->mirror.truePixels) +
               fmt("%.0f px", found->mirror.mapPixels) + fmt(", %.0f right", found->mirror.both);
-  show(cells[1], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel", refNote);
+  show(cells[1], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel", refNote,
+       found ? found->referenceGL : nullptr);
   show(cells[2], "error", found ? &found->error : nullptr,
        fmt("direction error (black 0, yellow %g deg)", found ? found->errorScale : errorScale(0)),
        found ? "worst in: " + found->current.maxRegion : "");
@@ -247,22 +254,31 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
     }
     ts::measureProgress(0.4);
   }
-  // The pictures of the shown state.
+  // The pictures of the shown state, their GL calls recorded for the
+  // listings (the map and target each uses made again: its calls show how).
   const int n = render_;
-  const envgl::Pixels ref = g.draw(pass(-1, object_, false, true, n));
+  auto recorded = [&](const envgl::Pass& ps, ts::gl::CallList* calls) {
+    envgl::Pixels px;
+    g.forget(ps);
+    *calls = ts::recordRender(r, [&] { px = g.draw(ps); });
+    return px;
+  };
+  const envgl::Pixels ref = recorded(pass(-1, object_, false, true, n), &found.referenceGL);
   const envgl::Pass shown = pass(param_, object_, eval_ == 1, true, n);
   const envgl::Pixels looked = g.draw(shown);
   std::vector<float> perPixel;
   found.current = envmeasure::errorStats(param_, looked, ref, shown.eyeRotation(), &perPixel);
   out.insert(out.begin(), {"error_max_deg[shown]", found.current.max, "the picture shown: largest direction error, degrees"});
   out.insert(out.begin(), {"error_mean_deg[shown]", found.current.mean, "the picture shown: mean direction error, degrees"});
-  found.picture = envmeasure::colourImage(g.draw(pass(param_, object_, eval_ == 1, false, n)));
+  found.picture = envmeasure::colourImage(recorded(pass(param_, object_, eval_ == 1, false, n), &found.pictureGL));
   found.reference = envmeasure::referenceImage(ref);
   found.errorScale = errorScale(found.current.p95);
   found.error = envmeasure::errorImage(perPixel, n, n, found.errorScale);
   found.map = envmeasure::mapImage(param_, face_, shown.sphereView, &looked);
   if (view_ == kCompareView)
-    for (int p = 0; p < 4; ++p) found.pictures[size_t(p)] = envmeasure::colourImage(g.draw(pass(p, object_, eval_ == 1, false, n)));
+    for (int p = 0; p < 4; ++p)
+      found.pictures[size_t(p)] =
+          envmeasure::colourImage(recorded(pass(p, object_, eval_ == 1, false, n), &found.picturesGL[size_t(p)]));
   // The flat mirror: where a nearby ball should appear (drawn red in the reference).
   if (object_ == envgl::kMirror) {
     const envgl::Pass ps = pass(-1, object_, false, true, n);

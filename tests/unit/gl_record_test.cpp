@@ -127,6 +127,74 @@ TEST(GlRecord, OnlyThisThreadOnlyWhileAlive) {
   EXPECT_FALSE(ts::gl::Recording::active());
 }
 
+// Claim: threads record at once, each its own calls (the window's GL pane
+// records the frame while the measurement worker records a picture it
+// renders on its own context): neither sees the other's calls, and neither's
+// end takes the other's wrappers away.
+TEST(GlRecord, TwoThreadsRecordAtOnce) {
+  ts::test::context();
+  std::vector<Call> mine, theirs;
+  std::string otherError;
+  {
+    ts::gl::Recording rec;
+    glFlush();
+    std::thread other([&] {
+      try {
+        ts::ContextOptions o;
+        o.width = o.height = 16;
+        auto ctx = ts::createOffscreenContext(ts::Backend::Auto, o);
+        ts::gl::Recording theirRec;
+        EXPECT_TRUE(ts::gl::Recording::activeHere());
+        glFinish();
+        glFinish();
+        theirs = theirRec.take();
+      } catch (const std::exception& e) {
+        otherError = e.what();
+      }
+    });
+    other.join();
+    glClear(GL_COLOR_BUFFER_BIT);  // still recorded here: the other's end did not touch this thread's table
+    mine = rec.take();
+  }
+  ASSERT_EQ(otherError, "");
+  ASSERT_EQ(mine.size(), 2u);
+  EXPECT_STREQ(mine[0].name, "glFlush");
+  EXPECT_STREQ(mine[1].name, "glClear");
+  ASSERT_EQ(theirs.size(), 2u);
+  EXPECT_STREQ(theirs[0].name, "glFinish");
+  EXPECT_FALSE(ts::gl::Recording::active());
+}
+
+// Claim: recordings nest on one thread (a scene records a picture's render
+// inside a recording already running): the inner keeps its calls, the outer
+// keeps everything made while it lived, even what the inner took, and the
+// real pointers come back only when the outer ends.
+TEST(GlRecord, RecordingsNest) {
+  ts::test::context();
+  std::vector<Call> outer, inner;
+  void* real = reinterpret_cast<void*>(ts::gl::p_glFlush);
+  {
+    ts::gl::Recording o;
+    glFlush();
+    {
+      ts::gl::Recording i;
+      glFinish();
+      inner = i.take();
+    }
+    EXPECT_NE(reinterpret_cast<void*>(ts::gl::p_glFlush), real) << "the outer recording still runs";
+    glClear(GL_COLOR_BUFFER_BIT);
+    outer = o.take();
+  }
+  EXPECT_EQ(reinterpret_cast<void*>(ts::gl::p_glFlush), real);
+  EXPECT_FALSE(ts::gl::Recording::activeHere());
+  ASSERT_EQ(inner.size(), 1u);
+  EXPECT_STREQ(inner[0].name, "glFinish");
+  ASSERT_EQ(outer.size(), 3u);
+  EXPECT_STREQ(outer[0].name, "glFlush");
+  EXPECT_STREQ(outer[1].name, "glFinish");
+  EXPECT_STREQ(outer[2].name, "glClear");
+}
+
 // Claim: with recording off the cost is nothing at all: once a Recording
 // ends, every pointer of the table is the very pointer it was before, so a
 // call goes straight to the driver (bench_figures' render_after_recording
