@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/figure.hpp"
 #include "common/gl_listing.hpp"
 #include "tests/support/scene_test.hpp"
 
@@ -48,6 +49,87 @@ TEST(GlListing, FilterChangesExactlyTheFilterLines) {
 TEST(GlListing, PerspectiveCorrectionSetsTheHint) {
   auto l = listingOf("perspective_correction", {}, 512, 256);
   EXPECT_NE(std::find(l.begin(), l.end(), "glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);"), l.end());
+}
+
+// ---- pictures a scene renders itself ----------------------------------------
+// The --gl-listing file of a state: what `environment_mapping --gl-listing F`
+// writes (renderScene records, glListingFile formats), split into lines.
+std::vector<std::string> listingFileOf(const std::string& demo, const std::vector<std::string>& flags, int w, int h) {
+  ts::test::Demo d(demo, flags);
+  ts::Rendered got = ts::renderScene(*d.scene, ts::test::renderer(), w, h, true);
+  std::istringstream text(ts::glListingFile(got, demo));
+  std::vector<std::string> out;
+  for (std::string l; std::getline(text, l);) out.push_back(l);
+  return out;
+}
+// The lines of the section headed by a comment starting with `heading`, up to the next heading.
+std::vector<std::string> section(const std::vector<std::string>& l, const std::string& heading) {
+  auto at = std::find_if(l.begin(), l.end(), [&](const std::string& s) { return s.rfind(heading, 0) == 0; });
+  std::vector<std::string> out;
+  for (auto it = at == l.end() ? at : at + 1; it != l.end() && it->rfind("/* the ", 0) != 0; ++it) out.push_back(*it);
+  return out;
+}
+bool has(const std::vector<std::string>& l, const std::string& part) {
+  return std::any_of(l.begin(), l.end(), [&](const std::string& s) { return s.find(part) != std::string::npos; });
+}
+
+// Claim: environment mapping's pictures are GL renders made in measure() and
+// shown as textures; the listing holds the calls that rendered them, under a
+// comment naming the panel, before the frame's own: GL_SPHERE_MAP texgen for
+// the sphere map per vertex, GL_REFLECTION_MAP texgen on a bound cube map for
+// the cube map per vertex, a GLSL program and no texgen per pixel.
+TEST(GlListing, EnvironmentMappingListsTheTexgenThatRenderedThePicture) {
+  auto sphere = listingFileOf("environment_mapping", {"--param", "sphere", "--eval", "vertex"}, 540, 220);
+  auto picture = section(sphere, "/* the picture in panel 'picture'");
+  ASSERT_FALSE(picture.empty()) << "no section for panel 'picture'";
+  EXPECT_TRUE(has(picture, "glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);"));
+  EXPECT_TRUE(has(picture, "glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);"));
+  EXPECT_FALSE(has(picture, "GL_REFLECTION_MAP"));
+  EXPECT_FALSE(has(section(sphere, "/* the frame, drawn with those pictures"), "glTexGeni"))
+      << "the frame only shows the pictures: the texgen is the render's";
+  auto heading = [&](const std::vector<std::string>& l, const std::string& h) {
+    return std::find_if(l.begin(), l.end(), [&](const std::string& s) { return s.rfind(h, 0) == 0; }) - l.begin();
+  };
+  EXPECT_LT(heading(sphere, "/* the picture in panel 'picture'"), heading(sphere, "/* the frame, drawn"));
+  EXPECT_LT(heading(sphere, "/* the picture in panel 'reference'"), heading(sphere, "/* the frame, drawn"));
+
+  auto cube = listingFileOf("environment_mapping", {"--param", "cube", "--eval", "vertex"}, 540, 220);
+  picture = section(cube, "/* the picture in panel 'picture'");
+  for (const char* coord : {"GL_S", "GL_T", "GL_R"})
+    EXPECT_TRUE(has(picture, std::string("glTexGeni(") + coord + ", GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);")) << coord;
+  EXPECT_TRUE(has(picture, "glBindTexture(GL_TEXTURE_CUBE_MAP, "));
+  EXPECT_TRUE(has(picture, "glTexImage2D(GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, ")) << "the map is made in the section";
+  EXPECT_TRUE(has(picture, "glMatrixMode(GL_TEXTURE);"));
+
+  auto perPixel = listingFileOf("environment_mapping", {"--param", "cube", "--eval", "pixel"}, 540, 220);
+  picture = section(perPixel, "/* the picture in panel 'picture'");
+  EXPECT_FALSE(has(picture, "glTexGeni"));
+  EXPECT_TRUE(has(picture, "glShaderSource("));
+  EXPECT_TRUE(has(picture, "texture(mapCube, r)")) << "the fragment shader's lookup is in the listing";
+}
+
+// Claim: the pane's highlight covers the render's lines: from r per pixel to
+// r per vertex, the texgen lines are marked changed (yellow in the pane).
+TEST(GlListing, TheRenderedPicturesLinesAreMarkedWhenAKeyChangesThem) {
+  auto sections = [](const std::vector<std::string>& flags) {
+    ts::test::Demo d("environment_mapping", flags);
+    ts::Rendered got = ts::renderScene(*d.scene, ts::test::renderer(), 540, 220, true);
+    return ts::pictureSections(got.frame, got.calls);
+  };
+  auto before = sections({"--eval", "pixel"});
+  auto after = sections({"--eval", "vertex"});
+  bool texgen = false, frameLine = false;
+  bool inFrame = false;
+  for (const ts::ListingLine& l : ts::listing(after, &before, 3)) {
+    inFrame |= l.text.rfind("/* the frame", 0) == 0;
+    if (l.changed && l.text == "glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);") texgen = true;
+    if (l.changed && inFrame && l.text.find("glTexGen") != std::string::npos) frameLine = true;
+  }
+  EXPECT_TRUE(texgen);
+  EXPECT_FALSE(frameLine);
+  // A frame without such pictures lists as before: no section comments.
+  auto quad = listingFileOf("quad_distortion", {}, 512, 256);
+  EXPECT_FALSE(has(quad, "/* the frame, drawn")) << "a plain frame's listing must not change";
 }
 
 // ---- reading a listing back as C -------------------------------------------
