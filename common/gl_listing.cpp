@@ -39,7 +39,7 @@ std::vector<CallSection> pictureSections(const Frame& frame, std::vector<gl::Cal
                        (size.empty() ? "" : " (a " + size + " texture)") + " was rendered by:",
                    d.renderedBy});
   }
-  std::string heading = out.empty() ? "" : "the frame, drawn with those pictures as textures:";
+  std::string heading = out.empty() ? "" : "the frame, drawn with those pictures as textures (object names numbered anew):";
   out.push_back({heading, std::make_shared<const std::vector<gl::Call>>(std::move(frameCalls))});
   return out;
 }
@@ -64,19 +64,14 @@ const char* nameRoles(const gl::Call& c) {
 }
 }  // namespace
 
-namespace {
-// The numbers given so far, per kind: a later section numbers on from them.
-struct Numbered {
-  std::map<char, long long> last;  // per role letter of nameRoles
-};
-std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls, Numbered* given) {
-  std::map<char, std::unordered_map<long long, long long>> names;  // per role: GL name -> number
-  auto number = [given, &names](char role, long long name) {
+std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls) {
+  std::map<char, std::unordered_map<long long, long long>> names;  // per role letter: GL name -> number
+  auto number = [&names](char role, long long name) {
     if (name == 0) return 0LL;
     auto& m = names[role];
     auto it = m.find(name);
     if (it != m.end()) return it->second;
-    long long n = ++given->last[role];
+    long long n = (long long)(m.size()) + 1;
     m.emplace(name, n);
     return n;
   };
@@ -95,12 +90,6 @@ std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls, Numbered
     }
   }
   return out;
-}
-}  // namespace
-
-std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls) {
-  Numbered given;
-  return numberObjects(calls, &given);
 }
 
 namespace {
@@ -124,10 +113,9 @@ void addEntries(const std::vector<gl::Call>& numbered, std::vector<Entry>* out) 
 }
 std::vector<Entry> entries(const std::vector<CallSection>& sections) {
   std::vector<Entry> out;
-  Numbered given;
   for (const CallSection& s : sections) {
     if (!s.heading.empty()) out.push_back({"/* " + s.heading + " */"});
-    if (s.calls) addEntries(numberObjects(*s.calls, &given), &out);
+    if (s.calls) addEntries(numberObjects(*s.calls), &out);
   }
   return out;
 }
@@ -209,7 +197,8 @@ std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const
     // group with a changed call; the rest become "... N more vertices".
     size_t end = i;
     while (end < now.size() && now[end].text.rfind("glEnd(", 0) != 0) ++end;
-    int vertex = 0, skipped = 0;
+    int vertex = 0, skipped = 0, keptChanged = 0;
+    constexpr int kMaxChanged = 64;
     size_t groupStart = i;
     auto flushSkipped = [&] {
       if (skipped > 0)
@@ -220,7 +209,9 @@ std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const
       if (!now[k].vertex && k + 1 < end) continue;
       bool changed = false;
       for (size_t g = groupStart; g <= k; ++g) changed |= now[g].changed;
-      if (keepVertices < 0 || vertex < keepVertices || changed) {
+      // Changed groups are kept for the highlight, but not a whole new
+      // mesh: past kMaxChanged they fold like the rest.
+      if (keepVertices < 0 || vertex < keepVertices || (changed && ++keptChanged <= kMaxChanged)) {
         flushSkipped();
         for (size_t g = groupStart; g <= k; ++g) emit(now[g]);
       } else {

@@ -46,7 +46,8 @@ struct ListingLine {
 
 // The listing of `calls`.  `previous` (may be null): the listing before the
 // last change; lines whose call was not made then are marked changed, and a
-// shortened glBegin ... glEnd keeps its changed vertices too.  `keepVertices`:
+// shortened glBegin ... glEnd keeps its changed vertices too (up to 64: a
+// whole new mesh folds like an unchanged one).  `keepVertices`:
 // vertices shown at the start of each glBegin (all when negative).
 std::vector<ListingLine> listing(const std::vector<gl::Call>& calls, const std::vector<gl::Call>* previous = nullptr,
                                  int keepVertices = 3);
@@ -61,8 +62,10 @@ struct CallSection {
 // panels that show it, then the frame's own calls (headed only after such
 // renders: a frame with none lists as before).
 std::vector<CallSection> pictureSections(const Frame& frame, std::vector<gl::Call> frameCalls);
-// The listing of sections, as listing() above; object names are numbered on
-// across sections, never shared (another pass's texture 2 is not this one's).
+// The listing of sections, as listing() above.  Object names are numbered
+// per section: each render is a program of its own (in a window it ran on
+// the measurement worker's context), and a change in one section leaves the
+// names of the others as they were.
 std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const std::vector<CallSection>* previous,
                                  int keepVertices = 3);
 // The listing as a file: a header comment, then one line per entry.

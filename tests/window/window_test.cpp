@@ -526,7 +526,7 @@ void windowVsPng(const std::string& id, const std::string& testName, const std::
 // right of it; the pane's stdout lines must name the calls the key changed
 // (`mustChange`: a substring of one of them; "" = any).
 void paneBesideFigure(const std::string& id, const std::string& keys, const ts::Options& expected,
-                      const std::string& mustChange) {
+                      const std::string& mustChange, const std::vector<std::string>& env = {}) {
   std::string dir = outDir() + "/" + id + "/gl_pane_" + keyLabel(keys.size() > 1 ? keys[1] : 'l');
   mkdirs(dir);
   std::string prog = binDir() + "/" + id, W = dir + "/window.png", P = dir + "/png.png";
@@ -536,6 +536,10 @@ void paneBesideFigure(const std::string& id, const std::string& keys, const ts::
   Proc win, png;
   win.argv = {"xvfb-run", "-a", "-s", kXvfbScreen, prog, "--size", std::to_string(gWidth) + "x" + std::to_string(gHeight),
               "--frames", std::to_string(kFrames), "--keys", keys, "--screenshot", W};
+  if (!env.empty()) {
+    win.argv.insert(win.argv.begin(), env.begin(), env.end());
+    win.argv.insert(win.argv.begin(), "env");
+  }
   win.outPath = dir + "/window.stdout";
   win.errPath = dir + "/window.stderr";
   png.argv = {prog, "--size", std::to_string(figureW) + "x" + std::to_string(gHeight), "--png", P};
@@ -1078,6 +1082,18 @@ void registerAll() {
         Fresh f(id);
         f.opts.handleKey('c');
         paneBesideFigure(id, "lc", f.opts, "glTexCoord4f(1.1, ");
+      });
+    // A picture the scene rendered itself (environment mapping's object):
+    // e turns r per pixel into texgen, and the pane marks the render's
+    // glTexGeni lines.  The keys are 5 s apart so that the first measurement
+    // is in before e: the lines are compared with a recording that had the
+    // per-pixel render, not with the picture-less frame before it.
+    if (id == "environment_mapping")
+      registerCase(id, "gl_pane_shows_the_texgen_change", [id] {
+        Fresh f(id);
+        f.opts.handleKey('e');
+        paneBesideFigure(id, "le", f.opts, "glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);",
+                         {"TS_TEST_KEY_INTERVAL_MS=5000"});
       });
     registerCase(id, "resize_sequence", [id] { resizeSequence(id); });
     registerCase(id, "usual_keys", [id] { usualKeys(id); });
