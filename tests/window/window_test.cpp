@@ -1085,15 +1085,15 @@ void registerAll() {
       });
     // A picture the scene rendered itself (environment mapping's object):
     // e turns r per pixel into texgen, and the pane marks the render's
-    // glTexGeni lines.  The keys are 5 s apart so that the first measurement
-    // is in before e: the lines are compared with a recording that had the
-    // per-pixel render, not with the picture-less frame before it.
+    // glTexGeni lines.  The keys are 8 s apart so that the first measurement
+    // (~1 s) is in before e: the lines are compared with a recording that had
+    // the per-pixel render, not with the picture-less frame before it.
     if (id == "environment_mapping")
       registerCase(id, "gl_pane_shows_the_texgen_change", [id] {
         Fresh f(id);
         f.opts.handleKey('e');
         paneBesideFigure(id, "le", f.opts, "glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);",
-                         {"TS_TEST_KEY_INTERVAL_MS=5000"});
+                         {"TS_TEST_KEY_INTERVAL_MS=8000"});
       });
     registerCase(id, "resize_sequence", [id] { resizeSequence(id); });
     registerCase(id, "usual_keys", [id] { usualKeys(id); });
