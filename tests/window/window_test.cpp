@@ -834,9 +834,10 @@ void resizeSequence(const std::string& id) {
   std::vector<Number> wm = measurements(win.out, f.opts, true), pm = measurements(pngs.back().out, f.opts, false);
   EXPECT_EQ(names(wm), names(pm)) << "after the resizes the window and --png print different measurements";
   for (size_t i = 0; i < std::min(wm.size(), pm.size()); ++i)
-    if (wm[i].name == pm[i].name && !isTiming(wm[i].name))
+    if (wm[i].name == pm[i].name && !isTiming(wm[i].name)) {
       EXPECT_NEAR(wm[i].value, pm[i].value, kMeasurementAbs + kMeasurementRel * std::abs(pm[i].value))
           << wm[i].name << " after the resizes: the window measured " << wm[i].value << ", --png " << pm[i].value;
+    }
 }
 
 // parse(stateFlags()) on a fresh Options must give back the state.
