@@ -210,23 +210,31 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
     p.column = below > beside;
     const double k = p.column ? below : beside;
     p.rect = {16, p.top, std::max(1, int(W * k)), std::max(1, int(H * k))};
+    // The pattern's labels and the numbers must fit beside each other (a
+    // column layout) or in the side column at this scale, else it is too large.
+    const float numbersW = ts::text::width("RMS error 0.0000", sc) + 8;
+    if (p.column ? float(160 * sc + 24) + numbersW > float(f.width - 32) : numbersW > float(p.sideW)) p.rect.w = 0;
     return p;
   };
   const int sc = L::fitScale([&](int s) { return placeAt(s).rect; });
   const Place p = placeAt(sc);
   const ts::Rect rect = p.rect;
-  L::caption(f, {12, 8, float(f.width) - 12, float(p.top - 2)}, "Figure VI.7: " + what + (showError_ ? "  (error x3)" : ""),
-             kWhite, sc, ts::Align::Left);
+  std::string title = "Figure VI.7: " + what + (showError_ ? "  (error x3)" : "");
+  if (ts::text::width(title, sc) > float(f.width - 25)) title = title.substr(7);  // "Figure " goes before the scale does
+  L::caption(f, {12, 8, float(f.width) - 12, float(p.top - 2)}, title, kWhite, sc, ts::Align::Left);
   const Result* res = current(fd);
   if (res) addImage(f, "image", rect, showError_ ? res->errorTexture : res->texture);
-  const int sideX = rect.x + rect.w + 24;
+  int sideX = rect.x + rect.w + 24;  // where the numbers start
   int x = p.column ? 16 : sideX, y0 = p.column ? rect.y + rect.h + 12 : p.top + 4;
   int room = p.column ? p.under - 12 : f.height - y0 - 3 * p.line - 44 * sc;
   int box = std::max(16, std::min({p.sideW - 20, room - 44 * sc, f.height / 3}));
   int labelW = 160 * sc;
   const int numbersW = 150 * sc;
   if (p.column) {
-    x = std::max(16, (f.width - (std::max(box, labelW) + 24 + numbersW)) / 2);  // the pattern, then the numbers beside it
+    // The pattern (centred over its labels), then the numbers beside it.
+    x = std::max(16, (f.width - (std::max(box, labelW) + 24 + numbersW)) / 2);
+    sideX = x + std::max(box, labelW) + 24;
+    x += (std::max(box, labelW) - box) / 2;
   } else {
     // Beside the image: the pattern centred in the column right of it, its labels as wide as the column.
     labelW = std::max(box, f.width - 4 - x);
@@ -235,7 +243,7 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   addPattern(f, canvas, {x, y0, box, box}, mode_, side_, true, float(labelW), sc);
   if (res && mode_ != kReference) {
     // The numbers: right of the pattern in a column layout, under it beside the image.
-    float nx = p.column ? float(x + std::max(box, labelW) + 24) : float(sideX), ny = p.column ? float(y0) : float(y0 + box + 44 * sc);
+    float nx = float(sideX), ny = p.column ? float(y0) : float(y0 + box + 44 * sc);
     L::Column numbers(f, {nx, ny, float(f.width) - 4, float(f.height) - 2});
     numbers.add("RMS error " + fmt("%.4f", res->stats.rms), kAmber, sc, ts::Align::Left);
     numbers.add("aliasing  " + fmt("%.4f", res->stats.aliasing), kAmber, sc, ts::Align::Left);
@@ -349,9 +357,11 @@ inline void Views::addPlot(ts::Frame& f, ts::Rect area, const std::string& title
 inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
   namespace L = ts::layout;
   // The two plots side by side (a wide window) or one over the other, the
-  // table under them; the text at the scale a plot's area asks for.
+  // table under them; the text at the scale a plot's area asks for, the
+  // table's at the largest scale at most that whose columns hold its rows
+  // on one line each.
   struct Place {
-    int line;
+    int line, tableScale, tableLine;
     float nameW, colW;
     bool twoLines;
     int plotsH;
@@ -361,9 +371,16 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
     p.line = int(L::lineHeight(sc));
     // The table: one row per pattern, RMS / aliasing at 1, 4, 9, 16 (on two
     // lines, RMS then aliasing, when the columns are too narrow for both).
-    p.nameW = std::min(170.0f * float(sc), float(f.width) / 4), p.colW = std::min(150.0f * float(sc), (float(f.width) - 16 - p.nameW) / 4.0f);
-    p.twoLines = p.colW < ts::text::width("0.0000 / 0.0000", sc) + 8;
-    const int tableH = (p.twoLines ? 7 : 4) * p.line + 8;
+    for (p.tableScale = sc; p.tableScale >= 1; --p.tableScale) {
+      const int t = p.tableScale;
+      p.nameW = std::min(ts::text::width(kKindTitles[1], t) + 12, float(f.width) / 3);
+      p.colW = std::min(150.0f * float(t), (float(f.width) - 16 - p.nameW) / 4.0f);
+      p.twoLines = p.colW < ts::text::width("0.0000 / 0.0000", t) + 8;
+      // Above scale 1 only on one line a row: the plots, the figure's claim, keep the height.
+      if (t == 1 || (!p.twoLines && ts::text::width(kKindTitles[1], t) <= p.nameW - 4)) break;
+    }
+    p.tableLine = int(L::lineHeight(p.tableScale));
+    const int tableH = (p.twoLines ? 7 : 4) * p.tableLine + 8;
     p.plotsH = std::max(60, f.height - 2 * p.line - tableH);
     return p;
   };
@@ -383,23 +400,23 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
   if (f.width >= f.height) {
     addPlot(f, {0, 2 * line, f.width / 2, plotsH}, "RMS error (1 = full scale)", false, fd, sc);
     addPlot(f, {f.width / 2, 2 * line, f.width - f.width / 2, plotsH},
-            "aliasing: the predictable part of the error", true, fd, sc);
+            "aliasing (the predictable part)", true, fd, sc);
   } else {
     addPlot(f, {0, 2 * line, f.width, plotsH / 2}, "RMS error (1 = full scale)", false, fd, sc);
     addPlot(f, {0, 2 * line + plotsH / 2, f.width, plotsH - plotsH / 2},
-            "aliasing: the predictable part of the error", true, fd, sc);
+            "aliasing (the predictable part)", true, fd, sc);
   }
   float y = float(2 * line + plotsH + 4);
   const float x0 = std::max(8.0f, (float(f.width) - nameW - 4 * colW) / 2.0f);
   auto cell = [&](float x, float w2, const std::string& text, glm::vec4 c) {
-    L::caption(f, {x, y, x + w2 - 4, y + float(line)}, text, c, sc, ts::Align::Left);
+    L::caption(f, {x, y, x + w2 - 4, y + float(pl.tableLine)}, text, c, pl.tableScale, ts::Align::Left);
   };
   cell(x0, nameW, twoLines ? "RMS, aliasing" : "RMS error / aliasing", kGrey);
   for (int side = 1; side <= kMaxSide; ++side)
     cell(x0 + nameW + colW * float(side - 1), colW, std::to_string(side * side) + (side == 1 ? " sample" : " samples"),
          kGrey);
   for (int kind = 0; kind < 3; ++kind) {
-    y += float(line);
+    y += float(pl.tableLine);
     cell(x0, nameW, kKindTitles[kind], kSeriesColour[kind]);
     for (int side = 1; side <= kMaxSide; ++side) {
       const jitter::ErrorStats& st = fd.at(kind, side).stats;
@@ -407,7 +424,7 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
            twoLines ? fmt("%.4f", st.rms) : fmt("%.4f", st.rms) + " / " + fmt("%.4f", st.aliasing), kSeriesColour[kind]);
     }
     if (twoLines) {
-      y += float(line);
+      y += float(pl.tableLine);
       for (int side = 1; side <= kMaxSide; ++side)
         cell(x0 + nameW + colW * float(side - 1), colW, fmt("%.4f", fd.at(kind, side).stats.aliasing), kSeriesColour[kind]);
     }

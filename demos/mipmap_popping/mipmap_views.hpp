@@ -243,14 +243,13 @@ inline void Views::buildPlot(ts::Frame& f, const Result* m) const {
         if (s > m->sweepLods.front() && s < m->sweepLods.back()) switches.push_back(s);
       }
     std::string title = (fl == kAnisotropic ? "anisotropic x" + std::to_string(look_.anisotropy) : std::string(filterGLName(fl))) +
-                        ": probe mean R, G, B vs log2 distance;  popping (largest jump) " + fmt("%.1f", m->popping[fl]);
+                        ":  popping (largest jump) " + fmt("%.1f", m->popping[fl]);
     plotSweep(f, {0, r * plotH + line / 2, w, plotH}, title, m->sweepLods, m->sweepMeans[size_t(fl)], shown_,
               switches, sc);
   }
-  L::caption(f, {4, float(h - 2 * line - 2), float(w - 4), float(h - line - 1)},
-             "x: log2 distance = LOD - bias (" + fmt("%g", look_.lodBias) +
-                 ");  dashed: where GL's rule changes level;  amber: the current distance",
-             kGrey, sc);
+  L::Column notes(f, {4, float(h - 3 * line), float(w - 4), float(h - line - 1)});
+  notes.add("the probe's mean R, G, B against x = log2 distance = LOD - bias (" + fmt("%g", look_.lodBias) + ")", kGrey, sc);
+  notes.add("dashed: GL's rule changes level;  amber: the current distance", kGrey, sc);
   // The level colours the probe sees, as a key (its lead shortened when narrow).
   std::string lead = "the probe's texture, level by level:";
   const float step = 34.0f * float(sc);  // a level's box
