@@ -150,53 +150,59 @@ inline void Views::buildSingle(ts::Frame& f, const Result* m) const {
 
 inline void Views::buildFilmstrip(ts::Frame& f, const Result* m) const {
   const int w = f.width, h = f.height;
-  constexpr int kCols = 8;
+  constexpr int kFrames = 8;
   const int gap = 6;
   namespace L = ts::layout;
-  // Square frames as large as fit with six lines of text (the caption, two
-  // row titles, three under the frames) at the scale the frames ask for.
+  // Square frames as large as fit, in one band of 8 (a wide window) or two
+  // bands of 4 (a tall one); a band is the current filter's row over
+  // trilinear's, each with its title, and two lines under the frames; the
+  // text at the scale the frames ask for.
   auto lineAt = [](int s) { return int(ts::text::height(s)) + 6 * s; };
-  auto cellAt = [&](int s) {
-    int c = std::max(8, std::min((w - 2 * gap) / kCols - gap, (h - 6 * lineAt(s) - gap) / 2));
-    return ts::Rect{0, 0, c, c};
+  auto cellAt = [&](int s, int bands) {
+    int c = std::min((w - 2 * gap) / (kFrames / bands) - gap, (h - 2 * lineAt(s) - bands * (4 * lineAt(s) + 3 * gap) + 2 * gap) / (2 * bands));
+    return ts::Rect{0, 0, std::max(8, c), std::max(8, c)};
   };
-  const int sc = L::fitScale(cellAt), line = lineAt(sc), cell = cellAt(sc).w;
-  int x0 = (w - (kCols * (cell + gap) - gap)) / 2;
-  int rowsTop = std::max(2 * line, (h - (2 * cell + 3 * line + gap)) / 2);
+  auto scaleOf = [&](int bands) { return L::fitScale([&](int s) { return cellAt(s, bands); }); };
+  const int bands = cellAt(scaleOf(2), 2).w > cellAt(scaleOf(1), 1).w ? 2 : 1, cols = kFrames / bands;
+  const int sc = scaleOf(bands), line = lineAt(sc), cell = cellAt(sc, bands).w;
+  const int bandH = 2 * cell + 4 * line + gap + 2 * gap;  // (and the gap to the next band)
+  const int x0 = (w - (cols * (cell + gap) - gap)) / 2;
+  const int rowsTop = std::max(2 * line, (h - (bands * bandH - 2 * gap - line)) / 2);
   const int rows[2] = {look_.filter, kLinearMipLinear};
   const double x = shown_;
   L::caption(f, {4, 4, float(w - 4), float(4 + line)},
              "the plane at 8 distances, 1/4 level apart (LOD bias " + fmt("%g", look_.lodBias) + ")", kWhite, sc);
   const bool narrow = float(cell + gap) < ts::text::width("top: level 1 ", sc);
-  for (int r = 0; r < 2; ++r) {
-    int y = rowsTop + r * (cell + line + gap) + line;
-    sweep::Look lk = look_;
-    lk.filter = rows[r];
-    std::string name = std::string(filterGLName(rows[r])) + (rows[r] == kAnisotropic ? " x" + std::to_string(look_.anisotropy) : "");
-    if (m) name += "   popping " + fmt("%.1f", m->popping[rows[r]]);
-    L::caption(f, {float(x0), float(y - line), float(w - 2), float(y - 2)}, name, r == 0 ? kAmber : kWhite, sc,
-               ts::Align::Left);
-    for (int c = 0; c < kCols; ++c) {
-      double xc = x + 0.25 * (c - kCols / 2);
-      ts::Panel p;
-      p.id = "frame_" + std::to_string(r) + "_" + std::to_string(c);
-      p.viewport = {x0 + c * (cell + gap), y, cell, cell};
-      addFacing(f, p, xc, lk, levels_);
-      f.panels.push_back(p);
-      if (r == 1) {
-        double lambda = xc + look_.lodBias;
-        float lx = float(p.viewport.x + cell / 2);
-        // Under each frame, in its column: the LOD, and the level the top row shows.
-        const L::Box col{lx - float(cell + gap) / 2, float(y + cell + 4), lx + float(cell + gap) / 2,
-                         float(y + cell + 4 + line)};
-        L::caption(f, col, (narrow ? "" : "LOD ") + fmt("%.3f", lambda), kWhite, sc);
-        std::string top = usesMipmaps(rows[0]) && !blendsLevels(rows[0])
-                              ? std::to_string(nearestLevel(lambda))
-                              : fmt("%.2f", effectiveLevel(rows[0], lambda));
-        L::caption(f, {col.x0, col.y1, col.x1, col.y1 + float(line)}, (narrow ? "L " : "top: level ") + top, kGrey, sc);
+  for (int b = 0; b < bands; ++b)
+    for (int r = 0; r < 2; ++r) {
+      int y = rowsTop + b * bandH + r * (cell + line + gap) + line;
+      sweep::Look lk = look_;
+      lk.filter = rows[r];
+      std::string name = std::string(filterGLName(rows[r])) + (rows[r] == kAnisotropic ? " x" + std::to_string(look_.anisotropy) : "");
+      if (m) name += "   popping " + fmt("%.1f", m->popping[rows[r]]);
+      L::caption(f, {float(x0), float(y - line), float(w - 2), float(y - 2)}, name, r == 0 ? kAmber : kWhite, sc,
+                 ts::Align::Left);
+      for (int c = b * cols; c < (b + 1) * cols; ++c) {
+        double xc = x + 0.25 * (c - kFrames / 2);
+        ts::Panel p;
+        p.id = "frame_" + std::to_string(r) + "_" + std::to_string(c);
+        p.viewport = {x0 + (c % cols) * (cell + gap), y, cell, cell};
+        addFacing(f, p, xc, lk, levels_);
+        f.panels.push_back(p);
+        if (r == 1) {
+          double lambda = xc + look_.lodBias;
+          float lx = float(p.viewport.x + cell / 2);
+          // Under each frame, in its column: the LOD, and the level the top row shows.
+          const L::Box col{lx - float(cell + gap) / 2, float(y + cell + 4), lx + float(cell + gap) / 2,
+                           float(y + cell + 4 + line)};
+          L::caption(f, col, (narrow ? "" : "LOD ") + fmt("%.3f", lambda), kWhite, sc);
+          std::string top = usesMipmaps(rows[0]) && !blendsLevels(rows[0])
+                                ? std::to_string(nearestLevel(lambda))
+                                : fmt("%.2f", effectiveLevel(rows[0], lambda));
+          L::caption(f, {col.x0, col.y1, col.x1, col.y1 + float(line)}, (narrow ? "L " : "top: level ") + top, kGrey, sc);
+        }
       }
     }
-  }
 }
 
 // A plot of the probe's mean R, G, B against log2 distance.

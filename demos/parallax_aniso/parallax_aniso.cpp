@@ -37,6 +37,11 @@
 // overlay, h, shows live_ms_per_frame and live_fps).
 // Flags only: --rays N (reference rays per side), --seed, --time N (time each
 // mode, median of N frames, for the CSV), --csv FILE.
+//
+// The files: this one (the options, measure(), build()); parallax_gl.hpp (the
+// shaders and passes), relief.hpp (the CPU reference), measure.hpp (the
+// table), parallax_views.hpp (the views' layout), parallax_live.hpp (the live
+// view's draw and timing).
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -176,14 +181,7 @@ class ParallaxAniso final : public ts::Scene {
       // with one scene, and two of them share a state (only the view differs).
       table_ = std::make_shared<Table>(measureAll(gl, camera(), rel, mo));
       tableKey_ = key;
-      textures_.clear();
-      for (const Row& row : table_->rows) textures_.push_back(imageTexture(row.image, kModeKeys[row.mode]));
-      textures_.push_back(imageTexture(table_->referenceImage, "reference"));
-      errorTextures_.clear();
-      for (int m : {kAniso16, kEwa, kEwaVis})
-        errorTextures_.push_back(imageTexture(bandError(table_->rows[size_t(m)].image, *table_),
-                                              std::string("band_error_") + kModeKeys[m]));
-      errorTextures_.push_back(imageTexture(bandPicture(*table_), "occlusion_band"));
+      shown_ = shownOf(table_);  // its pictures as textures
       if (!csvPath_.empty()) ts::writeFileAtomic(csvPath_, csv(*table_));
       std::string table = textTable(*table_);
       if (!table.empty() && table.back() == '\n') table.pop_back();
@@ -207,7 +205,7 @@ class ParallaxAniso final : public ts::Scene {
       m.push_back({"m2_grad_x4_changed_px", double(table_->gradChangeM2),
                    "pixels of M2 that change when textureGrad's gradients are x4 (0: the driver ignores them)"});
     }
-    m.detail = Shown{table_, textures_, errorTextures_};
+    m.detail = shown_;
     return m;
   }
 
@@ -296,7 +294,7 @@ class ParallaxAniso final : public ts::Scene {
   ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   std::shared_ptr<Table> table_;
   std::string tableKey_;
-  std::vector<ts::TextureDesc> textures_, errorTextures_;
+  Shown shown_;
 };
 }  // namespace
 

@@ -74,6 +74,19 @@ struct Shown {
   std::vector<ts::TextureDesc> textures, errorTextures;
   const ts::TextureDesc& of(int mode) const { return textures[size_t(mode == kReference ? 6 : mode)]; }
 };
+// A table's pictures as textures: each mode's image and the reference; the
+// band's error for M2, M3 and M4, and the band itself.
+inline Shown shownOf(std::shared_ptr<const Table> table) {
+  Shown s;
+  for (const Row& row : table->rows) s.textures.push_back(imageTexture(row.image, kModeKeys[row.mode]));
+  s.textures.push_back(imageTexture(table->referenceImage, "reference"));
+  for (int m : {kAniso16, kEwa, kEwaVis})
+    s.errorTextures.push_back(
+        imageTexture(bandError(table->rows[size_t(m)].image, *table), std::string("band_error_") + kModeKeys[m]));
+  s.errorTextures.push_back(imageTexture(bandPicture(*table), "occlusion_band"));
+  s.table = std::move(table);
+  return s;
+}
 struct Live {
   ts::TextureDesc texture;
   glm::ivec2 size{0}, modes{-1};
@@ -275,11 +288,13 @@ inline void Views::buildLive(ts::Frame& f, const Live* live) const {
   };
   addBar("top_bar", 0);
   addBar("bottom_bar", f.height - bar);
-  // A narrow window gets a shorter header, never one cut before its gradients note.
+  // A narrow window gets a smaller header, then a shorter one, never one cut before its gradients note.
+  int hs = s;
+  while (hs > 1 && ts::text::width(head, hs) > float(f.width - 21)) --hs;
   for (const std::string& h : {std::string(kMaps[map_]) + gradientsNote() + ", live", std::string(kMaps[map_]) + gradientsNote()})
-    if (ts::text::width(head, s) > float(f.width - 21)) head = h;
+    if (ts::text::width(head, hs) > float(f.width - 21)) head = h;
   const float top = float(2 * s), bottom = float(f.height - bar + 2 * s);
-  L::caption(f, {16, top, float(f.width - 4), float(bar)}, head, kWhite, s, ts::Align::Left);
+  L::caption(f, {16, top, float(f.width - 4), float(bar)}, head, kWhite, hs, ts::Align::Left);
   std::string sizeText = std::to_string(live->size.x) + "x" + std::to_string(live->size.y);
   if (live->scale < 1.0)
     sizeText += " (scale " + fmtNum("%.2f", live->scale) + " while moving, draw " + fmtNum("%.0f", live->fps) + " fps)";
