@@ -211,19 +211,23 @@ inline void Views::buildModes(ts::Frame& f, const Shown& shown) const {
   }
   // The eighth cell: the band in numbers.
   int x = left + (7 % cols) * (w + gap), y = 2 * line + (7 / cols) * (h + 3 * line + 6) + line;
-  L::Column c(f, {float(x), float(y), std::min(float(f.width - 2), float(x + std::max(w, 240 * s))), float(f.height - 2)});
-  c.add("occlusion band: " + std::to_string(table.bandPixels) + " px", kGrey, s, ts::Align::Left);
-  c.add("mode     PSNR    SSIM", kGrey, s, ts::Align::Left);
+  const float cellW = std::min(float(f.width - 2), float(x + std::max(w, 240 * s))) - float(x);
+  // A narrow cell gets the short form of each line (never a row wrapped in two).
+  const bool brief = ts::text::width("M0     17.17  0.6129", s) > cellW - 1;
+  L::Column c(f, {float(x), float(y), float(x) + cellW, float(f.height - 2)});
+  c.add((brief ? "band: " : "occlusion band: ") + std::to_string(table.bandPixels) + " px", kGrey, s, ts::Align::Left);
+  c.add(brief ? "   PSNR  SSIM" : "mode     PSNR    SSIM", kGrey, s, ts::Align::Left);
   for (int m = 0; m < kShaderModes; ++m) {
     const Row& r = table.rows[size_t(m)];
-    c.add(std::string("M") + std::to_string(m) + "    " +
-              (table.bandPixels ? fmtNum("%6.2f", r.psnrBand) + "  " + fmtNum("%6.4f", r.ssimBand)
-                                : std::string("     -       -")),
+    std::string values = brief ? fmtNum("%.2f", r.psnrBand) + " " + fmtNum("%.3f", r.ssimBand)
+                               : fmtNum("%6.2f", r.psnrBand) + "  " + fmtNum("%6.4f", r.ssimBand);
+    c.add(std::string("M") + std::to_string(m) + (brief ? " " : "    ") +
+              (table.bandPixels ? values : std::string(brief ? "  -     -" : "     -       -")),
           m >= kEwa ? kAmber : kWhite, s, ts::Align::Left);
   }
   // (Milliseconds are in the CSV, not here: the figure must regenerate byte-identically.)
-  c.add("PSNR in dB against R;", kGrey, s, ts::Align::Left);
-  c.add("lk/px: texture lookups per pixel", kGrey, s, ts::Align::Left);
+  c.add(brief ? "PSNR: dB vs R" : "PSNR in dB against R;", kGrey, s, ts::Align::Left);
+  c.add(brief ? "lk/px: lookups" : "lk/px: texture lookups per pixel", kGrey, s, ts::Align::Left);
 }
 
 inline void Views::buildError(ts::Frame& f, const Shown& shown) const {
