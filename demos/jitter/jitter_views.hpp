@@ -100,7 +100,8 @@ struct Views {
   void buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
   void buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
   void buildPlot(ts::Frame& f, const Found& fd) const;
-  void addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd, int scale) const;
+  // Draws one plot of the sweep in `area`; returns its data area.
+  ts::Rect addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd, int scale) const;
 };
 
 inline const Result* Views::current(const Found& fd) const {
@@ -320,7 +321,7 @@ inline void Views::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd
   }
 }
 
-inline void Views::addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd,
+inline ts::Rect Views::addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd,
                            int scale) const {
   namespace plot = ts::plot;
   plot::Spec p;
@@ -351,7 +352,7 @@ inline void Views::addPlot(ts::Frame& f, ts::Rect area, const std::string& title
   p.x1 = 17, p.y1 = std::max(step, step * std::ceil(p.y1 * 1.08 / step));
   for (int side = 1; side <= kMaxSide; ++side) p.xTicks.push_back({double(side * side), std::to_string(side * side)});
   p.yTicks = plot::ticks(0, p.y1, step, step < 0.01 ? "%.3f" : "%.2f");
-  plot::draw(f, p, area);
+  return plot::draw(f, p, area);
 }
 
 inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
@@ -387,7 +388,11 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
   auto plotArea = [&](const Place& p) {
     return f.width >= f.height ? ts::Rect{0, 2 * p.line, f.width / 2, p.plotsH} : ts::Rect{0, 2 * p.line, f.width, p.plotsH / 2};
   };
-  const int sc = L::fitScale([&](int s) { return plotArea(placeAt(s)); });
+  // The scale the plots' data areas ask for, each laid out on a scratch frame (the wider title).
+  const int sc = L::fitScale([&](int s) {
+    ts::Frame scratch = L::blankFrame(f.width, f.height);
+    return addPlot(scratch, plotArea(placeAt(s)), "aliasing (the predictable part)", true, fd, s);
+  });
   const Place pl = placeAt(sc);
   const int line = pl.line, plotsH = pl.plotsH;
   const float nameW = pl.nameW, colW = pl.colW;

@@ -205,8 +205,8 @@ inline void Views::buildFilmstrip(ts::Frame& f, const Result* m) const {
     }
 }
 
-// A plot of the probe's mean R, G, B against log2 distance.
-inline void plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, const std::vector<double>& xs,
+// A plot of the probe's mean R, G, B against log2 distance; returns its data area.
+inline ts::Rect plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, const std::vector<double>& xs,
                const std::vector<Mean>& ys, double current, const std::vector<double>& switches, int scale) {
   namespace plot = ts::plot;
   plot::Spec p;
@@ -224,21 +224,29 @@ inline void plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, con
   }
   for (double sw : switches) p.markers.push_back({sw, {0.55f, 0.55f, 0.6f, 1.0f}, "level_switches"});  // where the level changes
   p.markers.push_back({current, kAmber, "current", "", false, 2.0f});
-  plot::draw(f, p, area);
+  return plot::draw(f, p, area);
 }
 
 inline void Views::buildPlot(ts::Frame& f, const Result* m) const {
   const int w = f.width, h = f.height;
   namespace L = ts::layout;
   // Two plots one over the other, two lines of key under them, the text at
-  // the scale a plot's area asks for.
+  // the scale a plot's data area asks for (laid out on a scratch frame).
   auto lineAt = [](int s) { return int(ts::text::height(s)) + 6 * s; };
-  auto plotAt = [&](int s) { return ts::Rect{0, 0, w, (h - 4 * lineAt(s)) / 2}; };
-  const int sc = L::fitScale(plotAt), line = lineAt(sc), plotH = plotAt(sc).h;
   if (!m || m->sweepLods.empty()) {
-    L::caption(f, {4, float(h / 2), float(w - 4), float(h)}, "(measuring...)", kWhite, sc);
+    L::caption(f, {4, float(h / 2), float(w - 4), float(h)}, "(measuring...)", kWhite, 1);
     return;
   }
+  auto title = [&](int fl) {
+    return (fl == kAnisotropic ? "anisotropic x" + std::to_string(look_.anisotropy) : std::string(filterGLName(fl))) +
+           ":  popping (largest jump) " + fmt("%.1f", m->popping[fl]);
+  };
+  auto plotAt = [&](int s) {
+    ts::Frame scratch = L::blankFrame(w, h);
+    return plotSweep(scratch, {0, 0, w, (h - 4 * lineAt(s)) / 2}, title(look_.filter), m->sweepLods,
+                     m->sweepMeans[size_t(look_.filter)], shown_, {}, s);
+  };
+  const int sc = L::fitScale(plotAt), line = lineAt(sc), plotH = (h - 4 * line) / 2;
   const int rows[2] = {look_.filter, kLinearMipLinear};
   for (int r = 0; r < 2; ++r) {
     int fl = rows[r];
@@ -248,9 +256,7 @@ inline void Views::buildPlot(ts::Frame& f, const Result* m) const {
         double s = (blendsLevels(fl) ? k + 1.0 : k + 0.5) - look_.lodBias;  // log2 distance where the level changes
         if (s > m->sweepLods.front() && s < m->sweepLods.back()) switches.push_back(s);
       }
-    std::string title = (fl == kAnisotropic ? "anisotropic x" + std::to_string(look_.anisotropy) : std::string(filterGLName(fl))) +
-                        ":  popping (largest jump) " + fmt("%.1f", m->popping[fl]);
-    plotSweep(f, {0, r * plotH + line / 2, w, plotH}, title, m->sweepLods, m->sweepMeans[size_t(fl)], shown_,
+    plotSweep(f, {0, r * plotH + line / 2, w, plotH}, title(fl), m->sweepLods, m->sweepMeans[size_t(fl)], shown_,
               switches, sc);
   }
   L::Column notes(f, {4, float(h - 3 * line), float(w - 4), float(h - line - 1)});

@@ -156,7 +156,12 @@ inline void Views::buildSingle(ts::Frame& f, const Shown& shown) const {
     int w = std::max(1, int(table.cam.width * k)), h = std::max(1, int(table.cam.height * k));
     return ts::Rect{(f.width - w) / 2, 2 * line, w, h};
   };
-  const int s = L::fitScale(pictureAt);
+  // The split screen's captions sit under its halves: their scale is a half's.
+  const int s = L::fitScale([&](int sc) {
+    ts::Rect r = pictureAt(sc);
+    if (compare_) r.w /= 2;
+    return r;
+  });
   const ts::Rect rect = pictureAt(s);
   const float line = L::lineHeight(s);
   L::caption(f, {16, 6, float(f.width - 4), 2 * line - 2}, header(table.renderer), kWhite, s, ts::Align::Left);
