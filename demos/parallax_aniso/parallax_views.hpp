@@ -164,7 +164,16 @@ inline void Views::buildSingle(ts::Frame& f, const Shown& shown) const {
   });
   const ts::Rect rect = pictureAt(s);
   const float line = L::lineHeight(s);
-  L::caption(f, {16, 6, float(f.width - 4), 2 * line - 2}, header(table.renderer), kWhite, s, ts::Align::Left);
+  // The header on one line if it fits at the scale, else the state and the renderer on two.
+  if (ts::text::width(header(table.renderer), s) <= float(f.width - 21)) {
+    L::caption(f, {16, 6, float(f.width - 4), 2 * line - 2}, header(table.renderer), kWhite, s, ts::Align::Left);
+  } else {
+    int hs = s;  // both lines at one scale, the state's
+    while (hs > 1 && ts::text::width(header(""), hs) > float(f.width - 21)) --hs;
+    L::Column head(f, {16, 2, float(f.width - 4), 2 * line - 2});
+    head.add(header(""), kWhite, hs, ts::Align::Left);
+    head.add(table.renderer, kGrey, hs, ts::Align::Left);
+  }
   const L::Box under{4, float(rect.y + rect.h + 6), float(f.width - 4), float(f.height - 2)};
   if (!compare_) {
     addImage(f, "image", rect, shown.of(mode_));
