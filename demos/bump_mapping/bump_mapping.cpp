@@ -49,7 +49,7 @@ using ts::layout::kAmber;
 using ts::layout::kWhite;
 const char* const kMethods[] = {"flat", "blinn", "seed002", "normalmap", "reference"};
 const char* const kMethodTitles[] = {"flat (no bumps)", "B1 Blinn (seed 004)", "B2 seed 002 literally",
-                                     "B3 normal map", "R displaced geometry"};
+                                     "B3 normal map", "R displaced"};
 const int kMethodIds[] = {bump::kFlat, bump::kBlinn, bump::kSeed002, bump::kNormalMap, bump::kReference};
 constexpr int kMeasureSize = 480;
 
@@ -149,7 +149,7 @@ class BumpMapping final : public ts::Scene {
 
 ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, int method, bool normals) const {
   torusmap::Params tp;
-  tp.R = objectScale_, tp.r = 0.4 * objectScale_, tp.nu = 96, tp.nv = 48;
+  tp.R = objectScale_, tp.r = 0.4 * objectScale_, tp.nu = 64, tp.nv = 32;
   ts::Panel p;
   p.id = std::string("torus_") + kMethods[method];
   p.viewport = vp;
@@ -183,7 +183,7 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
   for (size_t k = 0; k < cells.size(); ++k) {
     const L::Cell& c = cells[k];
     const int m = k == 0 ? method_ : 4;
-    const std::string what = std::string(kMethodTitles[m]) + (normals ? ": normals as colour" : "");
+    const std::string what = std::string(kMethodTitles[m]) + (normals ? ", normals" : "");
     if (m != 4) {
       f.panels.push_back(torusPanel(f, c.picture, m, normals));
     } else if (found && found->refShaded) {
@@ -198,7 +198,14 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
     auto it = found ? found->cmp.find(m) : std::map<int, bump::Compare>::const_iterator();
     if (found && it != found->cmp.end() && m == 4)
       L::caption(f, c.below,
-                 fmt("R's own normals on the smooth torus reach %.1f dB against it: the rest is geometry", it->second.psnr),
+                 normals ? fmt("R's normals on the smooth torus: %.1f deg off in the same pixel (the geometry's share)",
+                               it->second.screenNormalDeg)
+                         : fmt("R's own normals on the smooth torus reach %.1f dB against it: the rest is geometry", it->second.psnr),
+                 kAmber, c.scale);
+    else if (found && it != found->cmp.end() && normals)
+      L::caption(f, c.below,
+                 fmt("normal off by %.1f deg at the same (s,t)", it->second.normalDeg) +
+                     fmt(", %.1f deg in the same pixel", it->second.screenNormalDeg),
                  kAmber, c.scale);
     else if (found && it != found->cmp.end())
       L::caption(f, c.below,
@@ -225,6 +232,7 @@ ts::Measurements BumpMapping::measure(ts::Renderer& r) {
     bump::Compare c = bump::compare(shaded, normals[m], *refShaded, *refNormals);
     bump::Compare atPoint = bump::compare(shaded, normals[m], shaded, exactNormals);
     found.cmp[m] = c;
+    found.cmp[m].screenNormalDeg = c.normalDeg;
     found.cmp[m].normalDeg = atPoint.normalDeg;
     const std::string k = std::string("[") + (ideal ? "ideal" : kMethods[m]) + "]";
     if (!ideal)
@@ -286,7 +294,7 @@ std::vector<ts::FigureSpec> BumpMapping::figures() const {
   return {{"bump_two_lights", "Buss VI.2 (seed 002, Fig. 1)",
            "Seed 002's figure: a torus under Phong shading and two lights, bump mapped per pixel (Blinn's perturbed normal, "
            "seed 004), beside the same heights displacing a 1024x512 grid (R). Captions: the shading and normal error against R.",
-           {"--view", "compare", "--method", "blinn"}, 1024, 560},
+           {"--view", "compare", "--method", "blinn", "--heights", "bricks"}, 1024, 560},
           {"bump_seed002", "Buss VI.2 (seed 002)",
            "Seed 002's shortcut taken literally: the 8-bit height differences added to the eye-space normal's x and y. "
            "Its tilt along x runs against the true surface's and does not grow with the height scale: measured.",

@@ -132,6 +132,7 @@ inline double angleDeg(glm::dvec3 a, glm::dvec3 b) {
 // differ by design, are measured apart).
 struct Compare {
   double psnr = 0, mad = 0, normalDeg = 0;
+  double screenNormalDeg = 0;  // the demo's captions: normalDeg in the same pixel, when normalDeg is at the same (s,t)
   long pixels = 0;
 };
 inline Compare compare(const ts::Image& shaded, const ts::Image& normals, const ts::Image& refShaded,

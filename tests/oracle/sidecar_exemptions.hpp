@@ -1,7 +1,9 @@
 // Figures whose sidecar cannot remake every texture: their panels are
 // pictures that OpenGL itself rendered in the demo's measure() pass (Figure
 // VI.7 shows GL's own multi-pass and per-pixel-jitter renders side by side;
-// the parallax figures show GLSL renders of the filtering modes and errors),
+// the parallax figures show GLSL renders of the filtering modes and errors;
+// the bump-mapping figures show the displaced reference torus R, drawn from a
+// 1024 x 512 grid in a vertex array by its measure()),
 // so the sidecar records them by digest and by the command that makes them.
 // Every other figure must be reproducible from its JSON alone; a new figure
 // that is not fails the oracle tests until it is made reproducible or listed
@@ -12,8 +14,9 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 4> kFiguresDrawnFromGlRenders = {
-    "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step"};
+inline constexpr std::array<const char*, 7> kFiguresDrawnFromGlRenders = {
+    "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step",
+    "bump_two_lights", "bump_seed002", "bump_normals"};
 
 // Figures whose measure() takes minutes on softpipe (the parallax table: twelve
 // full-frame GLSL passes and a CPU reference per state).  The oracle checks
