@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include "common/context.hpp"
+
 #include "common/error.hpp"
 #include "common/frame.hpp"
 #include "common/gl.hpp"
@@ -36,7 +38,7 @@ enum Method { kFlat = 0, kBlinn = 1, kSeed002 = 2, kNormalMap = 3, kReference = 
 
 // Uniforms (all vec4): torus = (R, r, height scale, method), rep = (repeats
 // along s, along t, texture width, height), l0/l1 = (eye-space direction to
-// the light, intensity), opts = (normals as colour, 0, 0, 0).
+// the light, intensity), opts = (normals as colour, no specular, 0, 0).
 inline const char* const kCommonGLSL = R"(#version 130
 uniform sampler2D tex;
 uniform vec4 torus, rep, l0, l1, opts;
@@ -98,7 +100,7 @@ vec3 phong(vec3 n, vec3 L, float I) {
   vec3 albedo = vec3(0.78, 0.74, 0.68), V = normalize(-peye);
   float d = max(dot(n, L), 0.0);
   float sp = d > 0.0 ? pow(max(dot(reflect(-L, n), V), 0.0), 40.0) : 0.0;
-  return I * (albedo * d + vec3(0.35) * sp);
+  return I * (albedo * d + vec3(0.35) * sp * (1.0 - opts.y));
 }
 void main() {
   vec3 Q, N, Qs, Qt, Ns, Nt, n;
@@ -157,13 +159,11 @@ struct ReferencePass : ts::Renderer::Attachment {
   std::vector<unsigned> idx;
 };
 
-// R as an image: the frame `f` (its first panel holds the torus batch whose
-// uniforms and height texture R takes) drawn with that panel's matrices,
-// the displaced grid in place of the torus, into a target of the frame's size.
-inline ts::Image renderReference(ts::Renderer& r, const ts::Frame& f) {
-  ReferencePass& pass = r.attachment<ReferencePass>();
-  const ts::Panel& p = f.panels.front();
-  const ts::Batch& b = p.batches.front();
+// A pass of the demo's own into a framebuffer of the frame's size, cleared
+// to its colour, with the viewport of its first panel: `draw` makes the GL
+// calls; the picture is read back (row 0 = top).
+template <class Draw>
+ts::Image offscreen(const ts::Frame& f, const char* what, Draw draw) {
   GLint boundFbo = 0;
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &boundFbo);
   GLuint fbo = 0, rb[2] = {0, 0};
@@ -179,24 +179,52 @@ inline ts::Image renderReference(ts::Renderer& r, const ts::Frame& f) {
   glDrawBuffer(GL_COLOR_ATTACHMENT0);
   ts::Image img(f.width, f.height);
   const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  std::string failure;
   if (complete) {
+    const ts::Panel& p = f.panels.front();
     glDisable(GL_SCISSOR_TEST);
     glViewport(0, 0, f.width, f.height);
     glClearColor(f.clearColor.r, f.clearColor.g, f.clearColor.b, f.clearColor.a);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glViewport(p.viewport.x, f.height - p.viewport.y - p.viewport.h, p.viewport.w, p.viewport.h);
-    GLuint prog = r.program("bump_reference", referenceProgram());
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_BLEND);
-    glActiveTexture(GL_TEXTURE0);
-    glEnable(GL_TEXTURE_2D);
-    glBindTexture(GL_TEXTURE_2D, r.texture(f.textures.at(size_t(b.texture))));
     glMatrixMode(GL_PROJECTION);
     glLoadMatrixf(glm::value_ptr(p.projection));
     glMatrixMode(GL_MODELVIEW);
     glLoadMatrixf(glm::value_ptr(p.modelview));
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_BLEND);
+    try {
+      draw();
+    } catch (const ts::Error& e) {
+      failure = e.what();
+    }
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, f.width, f.height, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
+    img.flipVertical();
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(boundFbo));
+  glDeleteFramebuffers(1, &fbo);
+  glDeleteRenderbuffers(2, rb);
+  if (!complete) throw ts::Error(std::string("the framebuffer of ") + what + " is incomplete", ts::kExitFailure);
+  if (!failure.empty()) throw ts::Error(failure, ts::kExitFailure);
+  ts::gl::check(what);
+  return img;
+}
+
+// R as an image: the frame `f` (its first panel holds the torus batch whose
+// uniforms and height texture R takes) drawn with that panel's matrices,
+// the displaced grid in place of the torus.
+inline ts::Image renderReference(ts::Renderer& r, const ts::Frame& f) {
+  ReferencePass& pass = r.attachment<ReferencePass>();
+  const ts::Batch& b = f.panels.front().batches.front();
+  return offscreen(f, "drawing the displaced reference torus", [&] {
+    GLuint prog = r.program("bump_reference", referenceProgram());
+    glActiveTexture(GL_TEXTURE0);
+    glEnable(GL_TEXTURE_2D);
+    glBindTexture(GL_TEXTURE_2D, r.texture(f.textures.at(size_t(b.texture))));
     glUseProgram(prog);
     glUniform1i(glGetUniformLocation(prog, "tex"), 0);
     for (const ts::Uniform& u : b.uniforms) {
@@ -211,16 +239,6 @@ inline ts::Image renderReference(ts::Renderer& r, const ts::Frame& f) {
     glDisableClientState(GL_VERTEX_ARRAY);
     glUseProgram(0);
     glDisable(GL_TEXTURE_2D);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, f.width, f.height, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
-    img.flipVertical();
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(boundFbo));
-  glDeleteFramebuffers(1, &fbo);
-  glDeleteRenderbuffers(2, rb);
-  if (!complete) throw ts::Error("the reference's framebuffer is incomplete", ts::kExitFailure);
-  ts::gl::check("drawing the displaced reference torus");
-  return img;
+  });
 }
 }  // namespace bump

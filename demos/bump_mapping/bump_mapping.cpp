@@ -11,30 +11,39 @@
 //   B2  seed 002, literally: g_x = j(x+1,y) - j(x-1,y), g_y = j(x,y+1) - j(x,y-1),
 //       added / 255 to the x and y of the interpolated normal;
 //   B3  a tangent-space normal map baked from the same heights;
+//   B4  emboss (seed 001), fixed function, three passes: the heights, minus
+//       the heights shifted toward the light, times the diffuse light;
+//   B5  DOT3: GL_COMBINE with GL_DOT3_RGB, the normal map dotted with the
+//       light in tangent space sent as each vertex's colour;
 //   R   the reference: the heights displacing a 1024 x 512 grid.
 // Measured (measure()): each method's shading against R (PSNR, mean absolute
 // difference over the pixels both cover), the normal error in degrees (a
 // render that writes the normal as its colour), which way each method tilts
 // the normals against R along the eye's x and y (+1 with it, -1 against),
-// and how the tilt answers doubling the height scale and doubling the object
-// (seed 004: the normal grows 4x, its perturbation 2x: bumps look half as deep).
+// how the tilt answers doubling the height scale and doubling the object
+// (seed 004: the normal grows 4x, its perturbation 2x: bumps look half as
+// deep), emboss's contrast against the light's angle to the normal (0 with
+// the light along it), DOT3 against the shader's diffuse sum.
 //
 // Keys (each is also a flag, see --help):
-//   m  method: flat | B1 blinn | B2 seed002 | B3 normalmap | R reference
+//   m  method: flat | B1 blinn | B2 seed002 | B3 normalmap | R reference | B4 emboss | B5 dot3
 //   v  view: single | compare (the method beside R) | normals (both as colours)
 //   t  heights: procedural | bricks (--texture FILE: a picture's luminance)
 //   + / -  height scale   s / S  object scale (seed 004's claim)
 //   a / A, e / E  light 1 azimuth, elevation   b / B, d / D  light 2   . / ,  tilt
-// What the GL does: one GLSL 1.30 program (bump_gl.hpp) for every method,
-// the method a uniform; the heights (or the normal map) in texture unit 0.
+// What the GL does: one GLSL 1.30 program (bump_gl.hpp) for B1-B3, the
+// method a uniform, the heights (or the normal map) in texture unit 0; R,
+// B4 and B5 are passes of their own (bump_gl.hpp, bump_ff.hpp) drawn by
+// measure() and shown as pictures.  The numbers: bump_measure.hpp.
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
-#include <map>
 #include <memory>
 
+#include "bump_ff.hpp"
 #include "bump_gl.hpp"
 #include "bump_math.hpp"
+#include "bump_measure.hpp"
 #include "common/layout.hpp"
 #include "common/orbit_camera.hpp"
 #include "common/render.hpp"
@@ -47,31 +56,25 @@ namespace {
 using ts::layout::fmt;
 using ts::layout::kAmber;
 using ts::layout::kWhite;
-const char* const kMethods[] = {"flat", "blinn", "seed002", "normalmap", "reference"};
-const char* const kMethodTitles[] = {"flat (no bumps)", "B1 Blinn (seed 004)", "B2 seed 002 literally",
-                                     "B3 normal map", "R displaced"};
-const int kMethodIds[] = {bump::kFlat, bump::kBlinn, bump::kSeed002, bump::kNormalMap, bump::kReference};
+using bump::Found;
+const char* const kMethodTitles[] = {"flat (no bumps)", "B1 Blinn (seed 004)", "B2 seed 002 literally", "B3 normal map",
+                                     "R displaced",     "B4 emboss (seed 001)", "B5 DOT3"};
+const int kShaderIds[] = {bump::kFlat, bump::kBlinn, bump::kSeed002, bump::kNormalMap, bump::kReference, 0, 0};
 constexpr int kMeasureSize = 480;
-
-// What measure() found: per method its comparison with R, and R's renders.
-struct Found {
-  std::map<int, bump::Compare> cmp;  // method index -> against R
-  std::shared_ptr<const ts::Image> refShaded, refNormals;
-};
 
 class BumpMapping final : public ts::Scene {
  public:
   std::string id() const override { return "bump_mapping"; }
-  std::string title() const override { return "Bump mapping on the torus (Buss VI.2; seeds 002, 004)"; }
+  std::string title() const override { return "Bump mapping on the torus (Buss VI.2; seeds 001, 002, 004)"; }
   std::string about() const override {
     return "A torus with dimples and ridges (or bricks), lit by two lights, bump mapped per pixel by Blinn's perturbed\n"
-           "normal (seed 004), seed 002's height differences, and a normal map; each measured against the same heights\n"
-           "displacing a finely tessellated torus: PSNR, mean difference, normal error in degrees, tilt direction.";
+           "normal (seed 004), seed 002's height differences, a normal map, emboss and DOT3; each measured against the\n"
+           "same heights displacing a finely tessellated torus: PSNR, mean difference, normal error in degrees.";
   }
   std::vector<std::string> claim() const override { return {"normal_err_deg*"}; }
   void addOptions(ts::Options& o) override {
-    o.addEnum("method", &method_, std::vector<std::string>(kMethods, kMethods + 5),
-              "flat | B1 Blinn (seed 004) | B2 seed 002 | B3 normal map | R the displaced reference", 'm');
+    o.addEnum("method", &method_, std::vector<std::string>(bump::kMethodNames, bump::kMethodNames + bump::kMethodCount),
+              "flat | B1 Blinn (seed 004) | B2 seed 002 | B3 normal map | R the displaced reference | B4 emboss | B5 DOT3", 'm');
     o.addEnum("view", &view_, {"single", "compare", "normals"}, "single | compare: the method beside R | normals as colours", 'v');
     o.addEnum("heights", &heights_, {"procedural", "bricks"}, "the height field: dimples and ridges | bricks", 't');
     o.addFloat("height-scale", &heightScale_, 0.0f, 0.12f, "P = scale h: the bumps' height in the torus's units (r = 0.4)", '+', '-', 0.01f);
@@ -86,7 +89,9 @@ class BumpMapping final : public ts::Scene {
   }
   std::vector<ts::FigureSpec> figures() const override;
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
-  ts::Measurements measure(ts::Renderer& r) override;
+  ts::Measurements measure(ts::Renderer& r) override {
+    return bump::measureAll([&](const bump::RenderSpec& s) { return render(r, s); }, toLight(0));
+  }
 
  private:
   const bump::Heights& heights() const {
@@ -99,44 +104,20 @@ class BumpMapping final : public ts::Scene {
     }
     return *cache_;
   }
-  ts::TextureDesc heightTexture() const {
-    const bump::Heights& H = heights();
-    ts::TextureDesc t;
-    t.name = "bump_heights";
-    t.params = {{"source", cacheKey_}};
-    t.image = std::make_shared<const ts::Image>(bump::heightImage(H));
-    t.minFilter = t.magFilter = GL_LINEAR;
-    return t;
-  }
-  ts::TextureDesc normalTexture() const {
-    const bump::Heights& H = heights();
-    ts::TextureDesc t;
-    t.name = "bump_normal_map";
-    t.params = {{"source", cacheKey_}, {"height_scale", fmt("%.4f", heightScale_)}, {"baked_for_R", "1"}, {"r", "0.4"}};
-    t.image = std::make_shared<const ts::Image>(bump::normalMap(H, 1.0, 0.4, heightScale_));
-    t.minFilter = t.magFilter = GL_LINEAR;
-    return t;
-  }
   glm::vec3 toLight(int k) const {
     float az = glm::radians(light_[k].x), el = glm::radians(light_[k].y);
     return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
   }
-  // The torus panel of a method at `vp`; `normals`: the normal render.
-  // The torus is the demo's own torus (R = 1, r = 0.4) times the object scale.
-  ts::Panel torusPanel(ts::Frame& f, const ts::Rect& vp, int method, bool normals) const;
+  torusmap::Params torus() const {
+    torusmap::Params tp;
+    tp.R = objectScale_, tp.r = 0.4 * objectScale_, tp.nu = 64, tp.nv = 32;
+    return tp;
+  }
+  // The torus panel of a GLSL method at `vp` (its matrices serve every
+  // method); the demo's own torus (R = 1, r = 0.4) times the object scale.
+  ts::Panel torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::RenderSpec& s) const;
   // One method's picture alone at the measurement size (no labels).
-  ts::Frame single(int method, bool normals) const {
-    ts::Frame f = ts::layout::blankFrame(kMeasureSize, kMeasureSize);
-    if (normals) f.clearColor = {0.0f, 0.0f, 0.0f, 1.0f};  // "covered" = not black
-    f.panels.push_back(torusPanel(f, {0, 0, kMeasureSize, kMeasureSize}, method, normals));
-    return f;
-  }
-  // Method 4 is R, the displaced grid; with `smoothGeometry` it is R's
-  // normal on the smooth torus: the best any bump map can do.
-  ts::Image renderMethod(ts::Renderer& r, int method, bool normals, bool smoothGeometry = false) const {
-    ts::Frame f = single(method, normals);
-    return method == 4 && !smoothGeometry ? bump::renderReference(r, f) : r.renderOffscreen(f);
-  }
+  ts::Image render(ts::Renderer& r, const bump::RenderSpec& s) const;
 
   int method_ = 1, view_ = 1, heights_ = 0;
   float heightScale_ = 0.04f, objectScale_ = 1.0f, tilt_ = 30.0f;
@@ -147,11 +128,10 @@ class BumpMapping final : public ts::Scene {
   mutable std::string cacheKey_;
 };
 
-ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, int method, bool normals) const {
-  torusmap::Params tp;
-  tp.R = objectScale_, tp.r = 0.4 * objectScale_, tp.nu = 64, tp.nv = 32;
+ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::RenderSpec& s) const {
+  const torusmap::Params tp = torus();
   ts::Panel p;
-  p.id = std::string("torus_") + kMethods[method];
+  p.id = std::string("torus_") + bump::kMethodNames[s.method];
   p.viewport = vp;
   p.depthTest = true;
   p.projection = glm::perspective(glm::radians(35.0f), float(vp.w) / float(vp.h), 0.5f * objectScale_, 20.0f * objectScale_);
@@ -159,17 +139,33 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, int method, 
   p.modelview = glm::rotate(p.modelview, glm::radians(tilt_), glm::vec3(1, 0, 0));
   camera_.apply(p);
   const bump::Heights& H = heights();
-  ts::Batch b = ts::meshBatch(torusmap::mesh(tp), f.addTexture(method == 3 ? normalTexture() : heightTexture()));
+  ts::TextureDesc tex = s.method == bump::iNormalMap ? bump::normalTexture(H, cacheKey_, heightScale_) : bump::heightTexture(H, cacheKey_);
+  ts::Batch b = ts::meshBatch(torusmap::mesh(tp), f.addTexture(tex));
   b.role = "torus";
   b.program = "bump";
-  b.uniforms = {{"torus", {float(tp.R), float(tp.r), heightScale_, float(kMethodIds[method])}},
+  b.uniforms = {{"torus", {float(tp.R), float(tp.r), heightScale_, float(kShaderIds[s.method])}},
                 {"rep", {H.rep.x, H.rep.y, float(H.w), float(H.h)}},
                 {"l0", glm::vec4(toLight(0), 0.75f)},
                 {"l1", glm::vec4(toLight(1), 0.5f)},
-                {"opts", {normals ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f}}};
+                {"opts", {s.normals ? 1.0f : 0.0f, s.noSpecular ? 1.0f : 0.0f, 0.0f, 0.0f}}};
   if (f.programs.empty()) f.programs.push_back({"bump", bump::meshProgram()});
   p.batches.push_back(b);
   return p;
+}
+
+ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const {
+  BumpMapping v = *this;
+  v.heightScale_ *= s.heightFactor, v.objectScale_ *= s.objectFactor;
+  ts::Frame f = ts::layout::blankFrame(kMeasureSize, kMeasureSize);
+  if (s.normals || s.embossTermOnly) f.clearColor = {0.0f, 0.0f, 0.0f, 1.0f};  // "covered" = not black
+  f.panels.push_back(v.torusPanel(f, {0, 0, kMeasureSize, kMeasureSize}, s));
+  if (s.method == bump::iReference && !s.smoothGeometry) return bump::renderReference(r, f);
+  if (s.method < bump::iEmboss) return r.renderOffscreen(f);
+  const bump::Heights& H = v.heights();
+  bump::FixedInputs in{v.torus(), H.rep, glm::vec2(float(H.w), float(H.h)), {v.toLight(0), v.toLight(1)}, {0.75f, 0.5f},
+                       bump::heightTexture(H, v.cacheKey_), bump::heightTexture(H, v.cacheKey_, true),
+                       bump::normalTexture(H, v.cacheKey_, v.heightScale_), s.embossTermOnly};
+  return bump::renderFixedFunction(r, f, s.method, in);
 }
 
 ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& measured) const {
@@ -182,112 +178,38 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
   const bool normals = view_ == 2;
   for (size_t k = 0; k < cells.size(); ++k) {
     const L::Cell& c = cells[k];
-    const int m = k == 0 ? method_ : 4;
-    const std::string what = std::string(kMethodTitles[m]) + (normals ? ", normals" : "");
-    if (m != 4) {
-      f.panels.push_back(torusPanel(f, c.picture, m, normals));
-    } else if (found && found->refShaded) {
-      f.panels.push_back(L::texturePanel("reference", c.picture,
-                                         f.addTexture(ts::renderedImageTexture(normals ? *found->refNormals : *found->refShaded,
-                                                                               "bump_reference", normals ? "R normals" : "R shaded",
+    const int m = k == 0 ? method_ : int(bump::iReference);
+    const bool picture = m == bump::iReference || m >= bump::iEmboss;  // drawn by measure()
+    const bool noNormals = normals && m >= bump::iEmboss;
+    L::caption(f, c.above, std::string(kMethodTitles[m]) + (normals && !noNormals ? ", normals" : ""), kWhite, c.scale);
+    if (!picture) {
+      f.panels.push_back(torusPanel(f, c.picture, {m, normals}));
+    } else if (found && found->pictures.count(m)) {
+      const bool n = normals && m == bump::iReference;
+      f.panels.push_back(L::texturePanel(std::string("picture_") + bump::kMethodNames[m], c.picture,
+                                         f.addTexture(ts::renderedImageTexture(n ? *found->refNormals : *found->pictures.at(m),
+                                                                               "bump_render", std::string(bump::kMethodNames[m]) + (n ? " normals" : ""),
                                                                                "bump_mapping"))));
     } else {
-      L::caption(f, L::box(c.picture), "R: measuring...", kWhite, c.scale);
+      L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
     }
-    L::caption(f, c.above, what, kWhite, c.scale);
-    auto it = found ? found->cmp.find(m) : std::map<int, bump::Compare>::const_iterator();
-    if (found && it != found->cmp.end() && m == 4)
-      L::caption(f, c.below,
-                 normals ? fmt("R's normals on the smooth torus: %.1f deg off in the same pixel (the geometry's share)",
-                               it->second.screenNormalDeg)
-                         : fmt("R's own normals on the smooth torus reach %.1f dB against it: the rest is geometry", it->second.psnr),
-                 kAmber, c.scale);
-    else if (found && it != found->cmp.end() && normals)
-      L::caption(f, c.below,
-                 fmt("normal off by %.1f deg at the same (s,t)", it->second.normalDeg) +
-                     fmt(", %.1f deg in the same pixel", it->second.screenNormalDeg),
-                 kAmber, c.scale);
-    else if (found && it != found->cmp.end())
-      L::caption(f, c.below,
-                 fmt("against R: PSNR %.1f dB", it->second.psnr) + fmt(", mean |diff| %.1f", it->second.mad) +
-                     fmt(", normal off by %.1f deg", it->second.normalDeg),
-                 kAmber, c.scale);
-
+    if (!found || !found->cmp.count(m)) continue;
+    const auto it = found->cmp.find(m);
+    const bump::Compare& q = it->second;
+    std::string note;
+    if (m == bump::iReference)
+      note = normals ? fmt("R's normals on the smooth torus: %.1f deg off in the same pixel (the geometry's share)", q.screenNormalDeg)
+                     : fmt("R's own normals on the smooth torus reach %.1f dB against it: the rest is geometry", q.psnr);
+    else if (noNormals)
+      note = "fixed function: no normal to show (the shaded picture)" + fmt(", %.1f dB against R", q.psnr);
+    else if (normals)
+      note = fmt("normal off by %.1f deg at the same (s,t)", q.normalDeg) + fmt(", %.1f deg in the same pixel", q.screenNormalDeg);
+    else
+      note = fmt("against R: PSNR %.1f dB", q.psnr) + fmt(", mean |diff| %.1f", q.mad) +
+             (m < bump::iEmboss ? fmt(", normal off by %.1f deg", q.normalDeg) : std::string());
+    L::caption(f, c.below, note, kAmber, c.scale);
   }
   return f;
-}
-
-ts::Measurements BumpMapping::measure(ts::Renderer& r) {
-  ts::Measurements out;
-  Found found;
-  auto refShaded = std::make_shared<ts::Image>(renderMethod(r, 4, false));
-  auto refNormals = std::make_shared<ts::Image>(renderMethod(r, 4, true));
-  const ts::Image exactNormals = renderMethod(r, 4, true, true), smooth = renderMethod(r, 0, true);
-  ts::measureProgress(0.2);
-  std::map<int, ts::Image> normals;
-  for (int m = 0; m < 5; ++m) {
-    const bool ideal = m == 4;
-    ts::Image shaded = renderMethod(r, m, false, true);
-    normals[m] = m == 0 ? smooth : ideal ? exactNormals : renderMethod(r, m, true);
-    bump::Compare c = bump::compare(shaded, normals[m], *refShaded, *refNormals);
-    bump::Compare atPoint = bump::compare(shaded, normals[m], shaded, exactNormals);
-    found.cmp[m] = c;
-    found.cmp[m].screenNormalDeg = c.normalDeg;
-    found.cmp[m].normalDeg = atPoint.normalDeg;
-    const std::string k = std::string("[") + (ideal ? "ideal" : kMethods[m]) + "]";
-    if (!ideal)
-      out.push_back({"normal_err_deg" + k, atPoint.normalDeg,
-                     "mean angle between the method's normal and the displaced surface's at the same (s,t), degrees"});
-    out.push_back({"psnr_db" + k, c.psnr, "shading against R's picture over the pixels both cover, dB"});
-    out.push_back({"mad" + k, c.mad, "mean absolute difference from R's picture, 8-bit units"});
-    out.push_back({"screen_normal_err_deg" + k, c.normalDeg, "mean angle between the normal and R's in the same pixel, degrees"});
-    ts::measureProgress(0.2 + 0.1 * m);
-  }
-  // Seed 002 adds to the eye's x and y, not along the surface: on the near
-  // side of the ring s runs along +x, on the far side along -x.
-  const glm::ivec2 rows = bump::coveredRows(smooth);
-  const int third = (rows.y - rows.x) / 3;
-  for (int m = 1; m < 4; ++m)
-    for (int side = 0; side < 2; ++side) {
-      glm::ivec2 band = side == 0 ? glm::ivec2(rows.y - third, rows.y) : glm::ivec2(rows.x, rows.x + third);
-      glm::dvec2 a = bump::perturbationAgreement(normals[m], exactNormals, smooth, band);
-      const std::string where = side == 0 ? "near" : "far";
-      out.push_back({"tilt_agreement_x_" + where + "[" + kMethods[m] + "]", a.x,
-                     "+1: tilts the normal along eye x as the true surface does, -1: the opposite way (" + where + " side)"});
-      out.push_back({"tilt_agreement_y_" + where + "[" + kMethods[m] + "]", a.y, "the same along eye y (" + where + " side)"});
-    }
-  out.push_back({"tilt_deg[reference]", bump::meanTiltDeg(exactNormals, smooth), "mean angle of R's normal from the smooth torus's"});
-  for (int m = 1; m < 4; ++m)
-    out.push_back({std::string("tilt_deg[") + kMethods[m] + "]", bump::meanTiltDeg(normals[m], smooth), "mean angle from the smooth normal"});
-  // Doubling the height scale: B1 and R tilt about twice as far, seed 002's
-  // formula has no scale in it.
-  {
-    BumpMapping twice = *this;
-    twice.heightScale_ = 2 * heightScale_;
-    for (int m : {1, 2, 4}) {
-      double t1 = bump::meanTiltDeg(normals[m], smooth);
-      double t2 = bump::meanTiltDeg(twice.renderMethod(r, m, true, true), smooth);
-      out.push_back({std::string("tilt_ratio_height_x2[") + kMethods[m] + "]", t1 > 0 ? t2 / t1 : 0,
-                     "mean tilt with twice the height scale / with it"});
-    }
-  }
-  ts::measureProgress(0.85);
-  // Seed 004's scale claim: the object twice as large (and the eye twice as
-  // far, so the picture is the same size), the bumps as high as before.
-  {
-    BumpMapping big = *this;
-    big.objectScale_ = 2 * objectScale_;
-    const ts::Image bigSmooth = big.renderMethod(r, 0, true);
-    for (int m : {1, 3, 4}) {
-      double t1 = bump::meanTiltDeg(normals[m], smooth);
-      double t2 = bump::meanTiltDeg(big.renderMethod(r, m, true, true), bigSmooth);
-      out.push_back({std::string("tilt_ratio_object_x2[") + kMethods[m] + "]", t1 > 0 ? t2 / t1 : 0,
-                     "mean tilt of the object twice as large / as it is (seed 004 predicts 1/2 for Blinn's form)"});
-    }
-  }
-  found.refShaded = refShaded, found.refNormals = refNormals;
-  out.detail = found;
-  return out;
 }
 
 std::vector<ts::FigureSpec> BumpMapping::figures() const {

@@ -12,9 +12,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "common/frame.hpp"
 #include "common/image.hpp"
 #include "common/relief_maps.hpp"
 
@@ -110,6 +113,31 @@ inline ts::Image normalMap(const Heights& H, double R, double r, double scale, b
       img.set(x, y, {u8(0.5 + 0.5 * n.x), u8(0.5 + 0.5 * n.y), u8(0.5 + 0.5 * n.z), 255});
     }
   return img;
+}
+
+// The textures the passes bind: the heights (or 1 - h, emboss's second
+// pass) as grey, and the normal map; `key` names the source for the cache.
+inline ts::TextureDesc heightTexture(const Heights& H, const std::string& key, bool inverted = false) {
+  ts::Image img = heightImage(H);
+  if (inverted)
+    for (size_t k = 0; k < img.pixels.size(); ++k)
+      if (k % 4 != 3) img.pixels[k] = uint8_t(255 - img.pixels[k]);
+  ts::TextureDesc t;
+  t.name = inverted ? "bump_heights_inverted" : "bump_heights";
+  t.params = {{"source", key}};
+  t.image = std::make_shared<const ts::Image>(std::move(img));
+  t.minFilter = t.magFilter = GL_LINEAR;
+  return t;
+}
+inline ts::TextureDesc normalTexture(const Heights& H, const std::string& key, double scale) {
+  ts::TextureDesc t;
+  t.name = "bump_normal_map";
+  char sc[32];
+  std::snprintf(sc, sizeof sc, "%.4f", scale);
+  t.params = {{"source", key}, {"height_scale", sc}, {"baked_for", "R = 1, r = 0.4"}};
+  t.image = std::make_shared<const ts::Image>(normalMap(H, 1.0, 0.4, scale));
+  t.minFilter = t.magFilter = GL_LINEAR;
+  return t;
 }
 
 // ---- image statistics ---------------------------------------------------

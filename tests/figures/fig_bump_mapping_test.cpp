@@ -91,6 +91,26 @@ TEST(BumpMapping, Seed004ScaleClaim) {
   EXPECT_NEAR(value(m, "tilt_ratio_object_x2[normalmap]"), 1.0, 0.02);
 }
 
+// Emboss (seed 001) shifts the heights by the light's part along the
+// surface: with the light along the normal the shift, and so the bump, is 0.
+// Its contrast grows with the angle between light and normal (as its sine).
+TEST(BumpMapping, EmbossFadesWithTheLightOverhead) {
+  const ts::Measurements& m = defaults();
+  const double overhead = value(m, "emboss_contrast[0-10deg]"), grazing = value(m, "emboss_contrast[60-90deg]");
+  ASSERT_GT(grazing, 0.01);  // there are bumps to see
+  EXPECT_LT(overhead, 0.3 * grazing);
+  EXPECT_LT(value(m, "emboss_contrast[10-30deg]"), value(m, "emboss_contrast[30-60deg]"));
+  EXPECT_LT(value(m, "emboss_contrast[30-60deg]"), grazing);
+}
+
+// GL_DOT3_RGB computes 4 (t - 1/2).(c - 1/2): with the normal map as t and
+// the tangent-space light as the colour c it is the shader's diffuse sum,
+// within the rounding of 8-bit colours (2 levels of 255) and of the light
+// vector interpolated per vertex rather than per pixel.
+TEST(BumpMapping, Dot3IsTheShadersDiffuseSum) {
+  EXPECT_LT(value(defaults(), "dot3_vs_shader_mad"), 2.0);
+}
+
 // The CPU side: the baked normal map of a flat field is straight up, and a
 // slope of the heights tilts it against the slope (n = (-dP/dx, -dP/dy, 1)).
 TEST(BumpMapping, NormalMapBakesTheSlope) {
