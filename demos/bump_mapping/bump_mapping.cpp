@@ -90,7 +90,9 @@ class BumpMapping final : public ts::Scene {
   std::vector<ts::FigureSpec> figures() const override;
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override {
-    return bump::measureAll([&](const bump::RenderSpec& s) { return render(r, s); }, toLight(0));
+    const bump::Heights& H = heights();
+    return bump::measureAll([&](const bump::RenderSpec& s) { return render(r, s); }, toLight(0),
+                            bump::normalMap(H, 1.0, 0.4, heightScale_, true), bump::normalMap(H, 1.0, 0.4, heightScale_, false));
   }
 
  private:

@@ -155,6 +155,38 @@ inline double angleDeg(glm::dvec3 a, glm::dvec3 b) {
   return std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) * 180.0 / kPi;
 }
 
+// The outline: pixels covered by one normal render and not the other,
+// divided by the length of `smooth`'s outline (its covered pixels with an
+// uncovered 4-neighbour): the mean distance between the outlines, pixels.
+inline double outlineDeviationPx(const ts::Image& a, const ts::Image& smooth) {
+  long differ = 0, edge = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      const bool cs = covered(smooth, x, y);
+      differ += covered(a, x, y) != cs;
+      if (cs && (x == 0 || y == 0 || x + 1 == a.width || y + 1 == a.height || !covered(smooth, x - 1, y) ||
+                 !covered(smooth, x + 1, y) || !covered(smooth, x, y - 1) || !covered(smooth, x, y + 1)))
+        ++edge;
+    }
+  return edge ? double(differ) / double(edge) : 0.0;
+}
+
+// The seam where the texture repeats (and where s wraps, at theta = 0): the
+// mean angle between the normal-map texels on either side of the edge
+// x = W-1 | x = 0, and the mean between all other neighbouring columns.
+// Baked without `wrap` the slopes at the edge are one-sided.
+inline glm::dvec2 seamJumpDeg(const ts::Image& normalMap) {
+  auto n = [&](int x, int y) {
+    ts::Rgba c = normalMap.at(x, y);
+    return glm::normalize(glm::dvec3(c.r, c.g, c.b) / 255.0 * 2.0 - 1.0);
+  };
+  glm::dvec2 sum(0.0);
+  for (int y = 0; y < normalMap.height; ++y)
+    for (int x = 0; x < normalMap.width; ++x)
+      (x + 1 == normalMap.width ? sum.x : sum.y) += angleDeg(n(x, y), n((x + 1) % normalMap.width, y));
+  return {sum.x / normalMap.height, sum.y / (double(normalMap.height) * (normalMap.width - 1))};
+}
+
 // A method's render against the reference's, over the pixels both cover
 // (a 2-pixel margin in from either outline, so that the silhouettes, which
 // differ by design, are measured apart).

@@ -37,7 +37,9 @@ struct Found {
   std::shared_ptr<const ts::Image> refNormals;
 };
 
-inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye) {
+// `seam`: the normal map baked with and without wrapping differences.
+inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye, const ts::Image& wrapped,
+                                   const ts::Image& unwrapped) {
   ts::Measurements out;
   Found found;
   auto refShaded = std::make_shared<const ts::Image>(render({iReference}));
@@ -127,6 +129,11 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye)
       out.push_back({"emboss_contrast[" + std::to_string(int(kEmbossBands[b])) + "-" + std::to_string(int(kEmbossBands[b + 1])) + "deg]",
                      cnt[b] ? sum[b] / cnt[b] : -1.0, "mean |H - H'| where the light is this far from the normal (-1: no pixels)"});
   }
+  // The outline: the bump methods keep the smooth torus's, R does not.
+  out.push_back({"outline_deviation_px[blinn]", outlineDeviationPx(normals[iBlinn], smooth),
+                 "mean distance of B1's outline from the smooth torus's, pixels"});
+  out.push_back({"outline_deviation_px[reference]", outlineDeviationPx(*refNormals, smooth),
+                 "mean distance of R's outline from the smooth torus's, pixels"});
   // DOT3 against the shader's own diffuse sum with the same normal map.
   {
     RenderSpec s{iNormalMap};
@@ -134,6 +141,12 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye)
     Compare c = compare(render(s), smooth, *found.pictures[iDot3], smooth);
     out.push_back({"dot3_vs_shader_mad", c.mad, "GL_DOT3_RGB's picture against the GLSL diffuse sum of the same normal map, 8-bit units"});
   }
+  // The seam of the normal map where the texture repeats (s wraps at the
+  // front of the ring): one-sided differences at the edge make a crease.
+  const glm::dvec2 seamBad = seamJumpDeg(unwrapped), seamFixed = seamJumpDeg(wrapped);
+  out.push_back({"seam_jump_deg[unwrapped]", seamBad.x, "mean normal-map angle across the texture's edge, slopes baked one-sided there, degrees"});
+  out.push_back({"seam_jump_deg[wrapped]", seamFixed.x, "the same baked with differences that wrap (the fix)"});
+  out.push_back({"neighbour_jump_deg", seamFixed.y, "mean angle between any other two neighbouring columns, degrees"});
   out.detail = found;
   return out;
 }

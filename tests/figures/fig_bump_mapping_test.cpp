@@ -111,6 +111,25 @@ TEST(BumpMapping, Dot3IsTheShadersDiffuseSum) {
   EXPECT_LT(value(defaults(), "dot3_vs_shader_mad"), 2.0);
 }
 
+// Seed 001's limit: no bumps on the silhouette.  B1 draws the smooth torus,
+// so its outline is the smooth one to the pixel; R's moves by the heights
+// (about P / distance * focal length: 0.5 to 0.9 of the scale, several pixels).
+TEST(BumpMapping, OnlyTheDisplacedSurfaceChangesTheOutline) {
+  const ts::Measurements& m = defaults();
+  EXPECT_EQ(value(m, "outline_deviation_px[blinn]"), 0.0);
+  EXPECT_GT(value(m, "outline_deviation_px[reference]"), 2.0);
+}
+
+// The seam where the texture repeats (and s wraps): baked with one-sided
+// slopes at the edge the normal map creases there; with slopes that wrap
+// the step across the edge is like any other column's.
+TEST(BumpMapping, NormalMapSeamAndItsFix) {
+  const ts::Measurements& m = defaults();
+  const double other = value(m, "neighbour_jump_deg");
+  EXPECT_GT(value(m, "seam_jump_deg[unwrapped]"), 1.5 * other);
+  EXPECT_LT(value(m, "seam_jump_deg[wrapped]"), 1.3 * other);
+}
+
 // The CPU side: the baked normal map of a flat field is straight up, and a
 // slope of the heights tilts it against the slope (n = (-dP/dx, -dP/dy, 1)).
 TEST(BumpMapping, NormalMapBakesTheSlope) {
