@@ -71,7 +71,7 @@ class BumpMapping final : public ts::Scene {
            "normal (seed 004), seed 002's height differences, a normal map, emboss and DOT3; each measured against the\n"
            "same heights displacing a finely tessellated torus: PSNR, mean difference, normal error in degrees.";
   }
-  std::vector<std::string> claim() const override { return {"normal_err_deg*"}; }
+  std::vector<std::string> claim() const override { return {"normal_err_deg[blinn]", "normal_err_deg[seed002]"}; }
   void addOptions(ts::Options& o) override {
     o.addEnum("method", &method_, std::vector<std::string>(bump::kMethodNames, bump::kMethodNames + bump::kMethodCount),
               "flat | B1 Blinn (seed 004) | B2 seed 002 | B3 normal map | R the displaced reference | B4 emboss | B5 DOT3", 'm');
