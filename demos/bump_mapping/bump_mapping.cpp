@@ -23,7 +23,9 @@
 // how the tilt answers doubling the height scale and doubling the object
 // (seed 004: the normal grows 4x, its perturbation 2x: bumps look half as
 // deep), emboss's contrast against the light's angle to the normal (0 with
-// the light along it), DOT3 against the shader's diffuse sum.
+// the light along it), DOT3 against the shader's diffuse sum, the outline
+// (seed 001: no bumps on the silhouette) and the normal map's seam where
+// the texture repeats (slopes baked one-sided at its edge, and the fix).
 //
 // Keys (each is also a flag, see --help):
 //   m  method: flat | B1 blinn | B2 seed002 | B3 normalmap | R reference | B4 emboss | B5 dot3
