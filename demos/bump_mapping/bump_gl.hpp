@@ -38,7 +38,7 @@ enum Method { kFlat = 0, kBlinn = 1, kSeed002 = 2, kNormalMap = 3, kReference = 
 
 // Uniforms (all vec4): torus = (R, r, height scale, method), rep = (repeats
 // along s, along t, texture width, height), l0/l1 = (eye-space direction to
-// the light, intensity), opts = (normals as colour, no specular, 0, 0).
+// the light, intensity), opts = (normals as colour, no specular, mipmaps, 0).
 inline const char* const kCommonGLSL = R"(#version 130
 uniform sampler2D tex;
 uniform vec4 torus, rep, l0, l1, opts;
@@ -54,12 +54,14 @@ void frameAt(vec2 st, out vec3 Q, out vec3 N, out vec3 Qs, out vec3 Qt, out vec3
   Ns = TAU * cos(ph) * dTh;
   Nt = TAU * dPh;
 }
-// P = scale h and its partials in s and t (central differences, one texel).
-vec3 heightAt(vec2 st) {
-  vec2 uv = st * rep.xy, du = vec2(1.0 / rep.z, 0.0), dv = vec2(0.0, 1.0 / rep.w);
-  float P = torus.z * textureLod(tex, uv, 0.0).r;
-  float Ps = torus.z * (textureLod(tex, uv + du, 0.0).r - textureLod(tex, uv - du, 0.0).r) * rep.z * rep.x / 2.0;
-  float Pt = torus.z * (textureLod(tex, uv + dv, 0.0).r - textureLod(tex, uv - dv, 0.0).r) * rep.w * rep.y / 2.0;
+// P = scale h and its partials in s and t: central differences over one
+// texel of mip level `lod` (2^lod texels of level 0), read at that level.
+vec3 heightAt(vec2 st, float lod) {
+  float k = exp2(lod);
+  vec2 uv = st * rep.xy, du = vec2(k / rep.z, 0.0), dv = vec2(0.0, k / rep.w);
+  float P = torus.z * textureLod(tex, uv, lod).r;
+  float Ps = torus.z * (textureLod(tex, uv + du, lod).r - textureLod(tex, uv - du, lod).r) * rep.z * rep.x / (2.0 * k);
+  float Pt = torus.z * (textureLod(tex, uv + dv, lod).r - textureLod(tex, uv - dv, lod).r) * rep.w * rep.y / (2.0 * k);
   return vec3(P, Ps, Pt);
 }
 )";
@@ -86,7 +88,7 @@ void main() {
   vec3 Q, N, Qs, Qt, Ns, Nt;
   st = gl_Vertex.xy;
   frameAt(st, Q, N, Qs, Qt, Ns, Nt);
-  vec4 p = vec4(Q + heightAt(st).x * N, 1.0);
+  vec4 p = vec4(Q + heightAt(st, 0.0).x * N, 1.0);
   tT = tB = tN = vec3(0.0);
   peye = (gl_ModelViewMatrix * p).xyz;
   gl_Position = gl_ModelViewProjectionMatrix * p;
@@ -96,6 +98,13 @@ void main() {
 inline const char* const kFS = R"(
 in vec2 st;
 in vec3 peye, tT, tB, tN;
+// The mip level a pixel's footprint asks for (opts.z = 1: mipmapped
+// heights or normal map), else level 0.
+float lodHere() {
+  vec2 t = st * rep.xy * rep.zw;
+  float m = max(length(dFdx(t)), length(dFdy(t)));
+  return opts.z > 0.5 ? max(0.0, log2(max(m, 1e-6))) : 0.0;
+}
 vec3 phong(vec3 n, vec3 L, float I) {
   vec3 albedo = vec3(0.78, 0.74, 0.68), V = normalize(-peye);
   float d = max(dot(n, L), 0.0);
@@ -108,7 +117,7 @@ void main() {
   mat3 m = mat3(gl_ModelViewMatrix);
   int method = int(torus.w + 0.5);
   if (method == 1) {                     // B1: seed 004, Blinn
-    vec3 P = heightAt(st), nv = cross(Qs, Qt);
+    vec3 P = heightAt(st, lodHere()), nv = cross(Qs, Qt);
     float len = length(nv);
     n = m * (nv + P.y * cross(nv, Qt) / len + P.z * cross(Qs, nv) / len);
   } else if (method == 2) {              // B2: seed 002, literally
@@ -119,10 +128,10 @@ void main() {
     n = normalize(tN);
     n.x += gx, n.y += gy;
   } else if (method == 3) {              // B3: the normal map in the per-vertex tangent frame
-    vec3 t = textureLod(tex, st * rep.xy, 0.0).rgb * 2.0 - 1.0;
+    vec3 t = textureLod(tex, st * rep.xy, lodHere()).rgb * 2.0 - 1.0;
     n = normalize(tT) * t.x + normalize(tB) * t.y + normalize(tN) * t.z;
   } else if (method == 9) {              // R: the displaced surface's own normal
-    vec3 P = heightAt(st);
+    vec3 P = heightAt(st, 0.0);
     n = m * cross(Qs + P.y * N + P.x * Ns, Qt + P.z * N + P.x * Nt);
   } else {
     n = m * N;

@@ -25,7 +25,9 @@
 // deep), emboss's contrast against the light's angle to the normal (0 with
 // the light along it), DOT3 against the shader's diffuse sum, the outline
 // (seed 001: no bumps on the silhouette) and the normal map's seam where
-// the texture repeats (slopes baked one-sided at its edge, and the fix).
+// the texture repeats (slopes baked one-sided at its edge, and the fix),
+// minification (the mean tilt at 2, 4, 8 times the distance, mipmapped
+// heights against a mipmapped normal map).
 //
 // Keys (each is also a flag, see --help):
 //   m  method: flat | B1 blinn | B2 seed002 | B3 normalmap | R reference | B4 emboss | B5 dot3
@@ -125,6 +127,7 @@ class BumpMapping final : public ts::Scene {
 
   int method_ = 1, view_ = 1, heights_ = 0;
   float heightScale_ = 0.04f, objectScale_ = 1.0f, tilt_ = 30.0f;
+  float distance_ = 1.0f;  // measurements only: the eye this many times as far
   glm::vec2 light_[2] = {{-45.0f, 40.0f}, {60.0f, -10.0f}};
   ts::OrbitCamera camera_;
   ts::UserTexture file_;
@@ -138,12 +141,13 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
   p.id = std::string("torus_") + bump::kMethodNames[s.method];
   p.viewport = vp;
   p.depthTest = true;
-  p.projection = glm::perspective(glm::radians(35.0f), float(vp.w) / float(vp.h), 0.5f * objectScale_, 20.0f * objectScale_);
-  p.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -4.8f * objectScale_));
+  p.projection = glm::perspective(glm::radians(35.0f), float(vp.w) / float(vp.h), 0.5f * objectScale_, 20.0f * objectScale_ * distance_);
+  p.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -4.8f * objectScale_ * distance_));
   p.modelview = glm::rotate(p.modelview, glm::radians(tilt_), glm::vec3(1, 0, 0));
   camera_.apply(p);
   const bump::Heights& H = heights();
-  ts::TextureDesc tex = s.method == bump::iNormalMap ? bump::normalTexture(H, cacheKey_, heightScale_) : bump::heightTexture(H, cacheKey_);
+  ts::TextureDesc tex = s.method == bump::iNormalMap ? bump::normalTexture(H, cacheKey_, heightScale_, s.mipmaps)
+                                                     : bump::heightTexture(H, cacheKey_, false, s.mipmaps);
   ts::Batch b = ts::meshBatch(torusmap::mesh(tp), f.addTexture(tex));
   b.role = "torus";
   b.program = "bump";
@@ -151,7 +155,7 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
                 {"rep", {H.rep.x, H.rep.y, float(H.w), float(H.h)}},
                 {"l0", glm::vec4(toLight(0), 0.75f)},
                 {"l1", glm::vec4(toLight(1), 0.5f)},
-                {"opts", {s.normals ? 1.0f : 0.0f, s.noSpecular ? 1.0f : 0.0f, 0.0f, 0.0f}}};
+                {"opts", {s.normals ? 1.0f : 0.0f, s.noSpecular ? 1.0f : 0.0f, s.mipmaps ? 1.0f : 0.0f, 0.0f}}};
   if (f.programs.empty()) f.programs.push_back({"bump", bump::meshProgram()});
   p.batches.push_back(b);
   return p;
@@ -159,7 +163,7 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
 
 ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const {
   BumpMapping v = *this;
-  v.heightScale_ *= s.heightFactor, v.objectScale_ *= s.objectFactor;
+  v.heightScale_ *= s.heightFactor, v.objectScale_ *= s.objectFactor, v.distance_ = s.distanceFactor;
   ts::Frame f = ts::layout::blankFrame(kMeasureSize, kMeasureSize);
   if (s.normals || s.embossTermOnly) f.clearColor = {0.0f, 0.0f, 0.0f, 1.0f};  // "covered" = not black
   f.panels.push_back(v.torusPanel(f, {0, 0, kMeasureSize, kMeasureSize}, s));

@@ -117,7 +117,14 @@ inline ts::Image normalMap(const Heights& H, double R, double r, double scale, b
 
 // The textures the passes bind: the heights (or 1 - h, emboss's second
 // pass) as grey, and the normal map; `key` names the source for the cache.
-inline ts::TextureDesc heightTexture(const Heights& H, const std::string& key, bool inverted = false) {
+// `mip`: with the book's 2x2-average mip chain, trilinear.
+inline void withMipmaps(ts::TextureDesc& t, bool mip) {
+  if (!mip) return;
+  t.mipmaps = true;
+  t.minFilter = GL_LINEAR_MIPMAP_LINEAR;
+  t.params.push_back({"mipmaps", "2x2 average"});
+}
+inline ts::TextureDesc heightTexture(const Heights& H, const std::string& key, bool inverted = false, bool mip = false) {
   ts::Image img = heightImage(H);
   if (inverted)
     for (size_t k = 0; k < img.pixels.size(); ++k)
@@ -127,9 +134,10 @@ inline ts::TextureDesc heightTexture(const Heights& H, const std::string& key, b
   t.params = {{"source", key}};
   t.image = std::make_shared<const ts::Image>(std::move(img));
   t.minFilter = t.magFilter = GL_LINEAR;
+  withMipmaps(t, mip);
   return t;
 }
-inline ts::TextureDesc normalTexture(const Heights& H, const std::string& key, double scale) {
+inline ts::TextureDesc normalTexture(const Heights& H, const std::string& key, double scale, bool mip = false) {
   ts::TextureDesc t;
   t.name = "bump_normal_map";
   char sc[32];
@@ -137,6 +145,7 @@ inline ts::TextureDesc normalTexture(const Heights& H, const std::string& key, d
   t.params = {{"source", key}, {"height_scale", sc}, {"baked_for", "R = 1, r = 0.4"}};
   t.image = std::make_shared<const ts::Image>(normalMap(H, 1.0, 0.4, scale));
   t.minFilter = t.magFilter = GL_LINEAR;
+  withMipmaps(t, mip);
   return t;
 }
 

@@ -24,6 +24,8 @@ struct RenderSpec {
   bool embossTermOnly = false;  // B4's 0.5 + 0.5 (H - H') alone
   bool noSpecular = false;      // the shader's diffuse sum only (to compare with DOT3)
   float heightFactor = 1.0f, objectFactor = 1.0f;
+  float distanceFactor = 1.0f;  // the eye this many times as far
+  bool mipmaps = false;         // mipmapped heights (B1) or normal map (B3), trilinear
 };
 using RenderFn = std::function<ts::Image(const RenderSpec&)>;
 
@@ -140,6 +142,25 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
     s.noSpecular = true;
     Compare c = compare(render(s), smooth, *found.pictures[iDot3], smooth);
     out.push_back({"dot3_vs_shader_mad", c.mad, "GL_DOT3_RGB's picture against the GLSL diffuse sum of the same normal map, 8-bit units"});
+  }
+  // Minification: the torus further away, its texels smaller than pixels.
+  // Mipmapped heights (B1: slopes from the averaged heights) and a
+  // mipmapped normal map (B3: averaged normals) both flatten the bumps; the
+  // mean tilt relative to the nearest view, per distance.
+  for (float dist : {2.0f, 4.0f, 8.0f}) {
+    RenderSpec s{iFlat, true};
+    s.distanceFactor = dist, s.mipmaps = true;
+    const ts::Image far = render(s);
+    for (int m : {iBlinn, iNormalMap}) {
+      RenderSpec near = s;
+      near.method = m, near.distanceFactor = 1.0f;
+      s.method = m;
+      double t1 = meanTiltDeg(render(near), smooth), t2 = meanTiltDeg(render(s), far);
+      out.push_back({std::string("mip_tilt_ratio[") + kMethodNames[m] + "@" + std::to_string(int(dist)) + "x]", t1 > 0 ? t2 / t1 : 0,
+                     std::string("mean tilt at this distance / at the nearest, mipmapped ") + (m == iBlinn ? "heights" : "normal map")});
+      s.method = iFlat;
+    }
+    ts::measureProgress(0.85 + 0.03 * dist / 2);
   }
   // The seam of the normal map where the texture repeats (s wraps at the
   // front of the ring): one-sided differences at the edge make a crease.

@@ -130,6 +130,22 @@ TEST(BumpMapping, NormalMapSeamAndItsFix) {
   EXPECT_LT(value(m, "seam_jump_deg[wrapped]"), 1.3 * other);
 }
 
+// Minification flattens bumps: with the torus 2, 4, 8 times as far the
+// texels shrink below the pixels and trilinear mipmapping averages them.
+// Averaged heights lose their slopes faster than averaged normals (a
+// normal map's mip level keeps the mean direction of its texels; the
+// heights' level keeps their mean height, whose differences shrink).
+TEST(BumpMapping, MinificationFlattensTheBumps) {
+  const ts::Measurements& m = defaults();
+  for (const char* method : {"blinn", "normalmap"}) {
+    const std::string k = std::string("mip_tilt_ratio[") + method + "@";
+    EXPECT_LT(value(m, k + "8x]"), value(m, k + "4x]")) << method;
+    EXPECT_LT(value(m, k + "4x]"), value(m, k + "2x]")) << method;
+    EXPECT_LT(value(m, k + "8x]"), 0.85) << method;
+  }
+  EXPECT_LT(value(m, "mip_tilt_ratio[blinn@8x]"), value(m, "mip_tilt_ratio[normalmap@8x]"));
+}
+
 // The CPU side: the baked normal map of a flat field is straight up, and a
 // slope of the heights tilts it against the slope (n = (-dP/dx, -dP/dy, 1)).
 TEST(BumpMapping, NormalMapBakesTheSlope) {
