@@ -34,7 +34,7 @@
 //   v  view: single | compare (the method beside R) | normals (both as colours)
 //   t  heights: procedural | bricks (--texture FILE: a picture's luminance)
 //   + / -  height scale   s / S  object scale (seed 004's claim)
-//   a / A, e / E  light 1 azimuth, elevation   b / B, d / D  light 2   . / ,  tilt
+//   a / A, e / E  light 1 azimuth, elevation (or a right drag)   b / B, d / D  light 2   . / ,  tilt
 // What the GL does: one GLSL 1.30 program (bump_gl.hpp) for B1-B3, the
 // method a uniform, the heights (or the normal map) in texture unit 0; R,
 // B4 and B5 are passes of their own (bump_gl.hpp, bump_ff.hpp) drawn by
