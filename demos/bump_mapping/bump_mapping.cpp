@@ -33,7 +33,7 @@
 //   m  method: flat | B1 blinn | B2 seed002 | B3 normalmap | R reference | B4 emboss | B5 dot3
 //   v  view: single | compare (the method beside R) | normals (both as colours)
 //   t  heights: procedural | bricks (--texture FILE: a picture's luminance)
-//   + / -  height scale   s / S  object scale (seed 004's claim)
+//   + / -  height scale   s / S  object scale (seed 004's claim)   w  the normal map's edge slopes wrap (the seam's fix)
 //   a / A, e / E  light 1 azimuth, elevation (or a right drag)   b / B, d / D  light 2   . / ,  tilt
 // What the GL does: one GLSL 1.30 program (bump_gl.hpp) for B1-B3, the
 // method a uniform, the heights (or the normal map) in texture unit 0; R,
@@ -87,6 +87,7 @@ class BumpMapping final : public ts::Scene {
     o.addFloat("light1-el", &light_[0].y, -90.0f, 90.0f, "light 1 elevation, degrees", 'e', 'E', 15.0f);
     o.addFloat("light2-az", &light_[1].x, -180.0f, 180.0f, "light 2 azimuth, degrees", 'b', 'B', 15.0f);
     o.addFloat("light2-el", &light_[1].y, -90.0f, 90.0f, "light 2 elevation, degrees", 'd', 'D', 15.0f);
+    o.addBool("wrap-slopes", &wrapSlopes_, "the normal map's slopes wrap across the texture's edge (off: one-sided there, the seam)", 'w');
     o.addFloat("tilt", &tilt_, -90.0f, 90.0f, "the eye's height above the torus's plane, degrees", '.', ',', 5.0f);
     camera_.addOptions(o);
     file_.addOption(o, "the built-in heights (its luminance is the height)");
@@ -126,6 +127,7 @@ class BumpMapping final : public ts::Scene {
   ts::Image render(ts::Renderer& r, const bump::RenderSpec& s) const;
 
   int method_ = 1, view_ = 1, heights_ = 0;
+  bool wrapSlopes_ = true;
   float heightScale_ = 0.04f, objectScale_ = 1.0f, tilt_ = 30.0f;
   float distance_ = 1.0f;  // measurements only: the eye this many times as far
   glm::vec2 light_[2] = {{-45.0f, 40.0f}, {60.0f, -10.0f}};
@@ -146,7 +148,7 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
   p.modelview = glm::rotate(p.modelview, glm::radians(tilt_), glm::vec3(1, 0, 0));
   camera_.apply(p);
   const bump::Heights& H = heights();
-  ts::TextureDesc tex = s.method == bump::iNormalMap ? bump::normalTexture(H, cacheKey_, heightScale_, s.mipmaps)
+  ts::TextureDesc tex = s.method == bump::iNormalMap ? bump::normalTexture(H, cacheKey_, heightScale_, s.mipmaps, wrapSlopes_)
                                                      : bump::heightTexture(H, cacheKey_, false, s.mipmaps);
   ts::Batch b = ts::meshBatch(torusmap::mesh(tp), f.addTexture(tex));
   b.role = "torus";
@@ -172,7 +174,7 @@ ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const 
   const bump::Heights& H = v.heights();
   bump::FixedInputs in{v.torus(), H.rep, glm::vec2(float(H.w), float(H.h)), {v.toLight(0), v.toLight(1)}, {0.75f, 0.5f},
                        bump::heightTexture(H, v.cacheKey_), bump::heightTexture(H, v.cacheKey_, true),
-                       bump::normalTexture(H, v.cacheKey_, v.heightScale_), s.embossTermOnly};
+                       bump::normalTexture(H, v.cacheKey_, v.heightScale_, false, wrapSlopes_), s.embossTermOnly};
   return bump::renderFixedFunction(r, f, s.method, in);
 }
 

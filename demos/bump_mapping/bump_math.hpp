@@ -137,13 +137,14 @@ inline ts::TextureDesc heightTexture(const Heights& H, const std::string& key, b
   withMipmaps(t, mip);
   return t;
 }
-inline ts::TextureDesc normalTexture(const Heights& H, const std::string& key, double scale, bool mip = false) {
+inline ts::TextureDesc normalTexture(const Heights& H, const std::string& key, double scale, bool mip = false,
+                                     bool wrap = true) {
   ts::TextureDesc t;
   t.name = "bump_normal_map";
   char sc[32];
   std::snprintf(sc, sizeof sc, "%.4f", scale);
-  t.params = {{"source", key}, {"height_scale", sc}, {"baked_for", "R = 1, r = 0.4"}};
-  t.image = std::make_shared<const ts::Image>(normalMap(H, 1.0, 0.4, scale));
+  t.params = {{"source", key}, {"height_scale", sc}, {"baked_for", "R = 1, r = 0.4"}, {"edge_slopes", wrap ? "wrapped" : "one-sided"}};
+  t.image = std::make_shared<const ts::Image>(normalMap(H, 1.0, 0.4, scale, wrap));
   t.minFilter = t.magFilter = GL_LINEAR;
   withMipmaps(t, mip);
   return t;
