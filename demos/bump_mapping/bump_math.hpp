@@ -97,7 +97,10 @@ inline ts::Image heightImage(const Heights& H) {
 // with central differences over one texel.  A texture has one texel size,
 // the torus does not: a texel spans 2 pi (R + r cos phi) / (rep.x W) along
 // the ring, so the map is baked for the ring's mean circle (phi = +-90
-// degrees, radius R) and is too flat outside, too steep inside: measured.
+// degrees, radius R): its slopes along the ring are (R + r cos phi) / R
+// times the true ones, 1.4x too steep on the outer equator and 0.6x too
+// flat on the inner one (one source of B3's normal error at the same
+// (s,t), 1.3 degrees against Blinn's 0.5; its 8-bit texels are another).
 // `wrap` takes the differences across the texture's edges from the other
 // side (the field repeats); without it they are one-sided there, the seam.
 inline ts::Image normalMap(const Heights& H, double R, double r, double scale, bool wrap = true) {
