@@ -217,6 +217,9 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
     else
       note = fmt("against R: PSNR %.1f dB", q.psnr) + fmt(", mean |diff| %.1f", q.mad) +
              (m < bump::iEmboss ? fmt(", normal off by %.1f deg", q.normalDeg) : std::string());
+    if (m == bump::iEmboss && !normals && found->embossContrast[3] >= 0)
+      note += fmt("; bump contrast %.3f with the light within 10 deg of the normal", found->embossContrast[0]) +
+              fmt(", %.3f beyond 60", found->embossContrast[3]);
     L::caption(f, c.below, note, kAmber, c.scale);
   }
   return f;
@@ -229,11 +232,17 @@ std::vector<ts::FigureSpec> BumpMapping::figures() const {
            {"--view", "compare", "--method", "blinn", "--heights", "bricks"}, 1024, 560},
           {"bump_seed002", "Buss VI.2 (seed 002)",
            "Seed 002's shortcut taken literally: the 8-bit height differences added to the eye-space normal's x and y. "
-           "Its tilt along x runs against the true surface's and does not grow with the height scale: measured.",
+           "Its tilt along x runs against the true surface's on the near side of the ring and with it on the far side, and "
+           "does not grow with the height scale: measured.",
            {"--view", "compare", "--method", "seed002"}, 1024, 560},
           {"bump_normals", "Buss VI.2 (normal map)",
            "Normals as colours (0.5 + 0.5 n, eye space): the normal map baked from the same heights (B3) beside R's.",
-           {"--view", "normals", "--method", "normalmap", "--heights", "bricks"}, 1024, 560}};
+           {"--view", "normals", "--method", "normalmap", "--heights", "bricks"}, 1024, 560},
+          {"bump_emboss_overhead", "Buss VI.2 (seed 001, emboss)",
+           "Emboss (seed 001), three fixed-function passes, with light 1 at the eye: where the light falls along the normal "
+           "(the middle of the ring) the shift toward it is 0 and the bricks vanish; R keeps them. The contrast is measured per "
+           "band of the light-normal angle.",
+           {"--view", "compare", "--method", "emboss", "--heights", "bricks", "--light1-az", "0", "--light1-el", "0"}, 1024, 560}};
 }
 }  // namespace
 

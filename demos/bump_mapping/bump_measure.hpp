@@ -37,6 +37,7 @@ struct Found {
   std::map<int, Compare> cmp;  // method -> against R (normalDeg: at the same (s,t); screenNormalDeg: same pixel)
   std::map<int, std::shared_ptr<const ts::Image>> pictures;  // R and the fixed-function methods, shaded
   std::shared_ptr<const ts::Image> refNormals;
+  double embossContrast[4] = {-1, -1, -1, -1};  // per band of kEmbossBands
 };
 
 // `seam`: the normal map baked with and without wrapping differences.
@@ -127,9 +128,10 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
         for (int b = 0; b < 4; ++b)
           if (a >= kEmbossBands[b] && a < kEmbossBands[b + 1]) sum[b] += std::fabs(term.at(x, y).r - 127.5) / 127.5, cnt[b] += 1;
       }
+    for (int b = 0; b < 4; ++b) found.embossContrast[b] = cnt[b] ? sum[b] / cnt[b] : -1.0;
     for (int b = 0; b < 4; ++b)
       out.push_back({"emboss_contrast[" + std::to_string(int(kEmbossBands[b])) + "-" + std::to_string(int(kEmbossBands[b + 1])) + "deg]",
-                     cnt[b] ? sum[b] / cnt[b] : -1.0, "mean |H - H'| where the light is this far from the normal (-1: no pixels)"});
+                     found.embossContrast[b], "mean |H - H'| where the light is this far from the normal (-1: no pixels)"});
   }
   // The outline: the bump methods keep the smooth torus's, R does not.
   out.push_back({"outline_deviation_px[blinn]", outlineDeviationPx(normals[iBlinn], smooth),
