@@ -275,6 +275,8 @@ void drawHelp(Scene& scene, const Options& opts, int w, int h, bool* open) {
                      "option, a left drag orbits and the wheel zooms (3D views: --yaw, --pitch, --zoom), a picture file dropped on "
                      "the window is mapped (--texture), F12 saves the picture and its sidecar and prints the command that remakes them, l shows "
                      "the OpenGL calls beside the picture, h hides the side panel, ? or F1 this card, Esc or q quits.");
+  if (opts.has("light1-az") && opts.has("light1-el"))
+    ImGui::TextWrapped("A right drag moves light 1 (--light1-az left and right, --light1-el up and down).");
   ImGui::End();
 }
 
