@@ -31,7 +31,7 @@
 //
 // Keys (each is also a flag, see --help):
 //   m  method: flat | B1 blinn | B2 seed002 | B3 normalmap | R reference | B4 emboss | B5 dot3
-//   v  view: single | compare (the method beside R) | normals (both as colours)
+//   v  view: single | compare (the method beside R) | normals (both as colours) | all (B1-B5 and R)
 //   t  heights: procedural | bricks (--texture FILE: a picture's luminance)
 //   + / -  height scale   s / S  object scale (seed 004's claim)   w  the normal map's edge slopes wrap (the seam's fix)
 //   a / A, e / E  light 1 azimuth, elevation (or a right drag)   b / B, d / D  light 2   . / ,  tilt
@@ -79,7 +79,8 @@ class BumpMapping final : public ts::Scene {
   void addOptions(ts::Options& o) override {
     o.addEnum("method", &method_, std::vector<std::string>(bump::kMethodNames, bump::kMethodNames + bump::kMethodCount),
               "flat | B1 Blinn (seed 004) | B2 seed 002 | B3 normal map | R the displaced reference | B4 emboss | B5 DOT3", 'm');
-    o.addEnum("view", &view_, {"single", "compare", "normals"}, "single | compare: the method beside R | normals as colours", 'v');
+    o.addEnum("view", &view_, {"single", "compare", "normals", "all"},
+              "single | compare: the method beside R | normals as colours | all: B1-B5 and R side by side", 'v');
     o.addEnum("heights", &heights_, {"procedural", "bricks"}, "the height field: dimples and ridges | bricks", 't');
     o.addFloat("height-scale", &heightScale_, 0.0f, 0.12f, "P = scale h: the bumps' height in the torus's units (r = 0.4)", '+', '-', 0.01f);
     o.addFloat("object-scale", &objectScale_, 1.0f, 4.0f, "the torus scaled (R, r and the eye's distance), the bumps not", 's', 'S', 1.0f);
@@ -183,12 +184,13 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
   ts::Frame f = L::blankFrame(width, height);
   const Found* found = measured.detailAs<Found>();
   L::FlowSpec spec;
-  spec.n = view_ == 0 ? 1 : 2, spec.linesAbove = 1, spec.linesBelow = 2;
+  const int kAll[] = {bump::iBlinn, bump::iSeed002, bump::iNormalMap, bump::iEmboss, bump::iDot3, bump::iReference};
+  spec.n = view_ == 0 ? 1 : view_ == 3 ? 6 : 2, spec.linesAbove = 1, spec.linesBelow = 2;
   std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
   const bool normals = view_ == 2;
   for (size_t k = 0; k < cells.size(); ++k) {
     const L::Cell& c = cells[k];
-    const int m = k == 0 ? method_ : int(bump::iReference);
+    const int m = view_ == 3 ? kAll[k] : k == 0 ? method_ : int(bump::iReference);
     const bool picture = m == bump::iReference || m >= bump::iEmboss;  // drawn by measure()
     const bool noNormals = normals && m >= bump::iEmboss;
     L::caption(f, c.above, std::string(kMethodTitles[m]) + (normals && !noNormals ? ", normals" : ""), kWhite, c.scale);
@@ -238,6 +240,10 @@ std::vector<ts::FigureSpec> BumpMapping::figures() const {
           {"bump_normals", "Buss VI.2 (normal map)",
            "Normals as colours (0.5 + 0.5 n, eye space): the normal map baked from the same heights (B3) beside R's.",
            {"--view", "normals", "--method", "normalmap", "--heights", "bricks"}, 1024, 560},
+          {"bump_methods", "Buss VI.2 (seeds 001, 002, 004)",
+           "Every method side by side on bricks under two lights: B1 Blinn (seed 004), B2 seed 002's shortcut, B3 a normal map "
+           "(GLSL), B4 emboss and B5 DOT3 (fixed function), and R, the heights displacing a 1024x512 grid.",
+           {"--view", "all", "--heights", "bricks"}, 1280, 720},
           {"bump_emboss_overhead", "Buss VI.2 (seed 001, emboss)",
            "Emboss (seed 001), three fixed-function passes, with light 1 at the eye: where the light falls along the normal "
            "(the middle of the ring) the shift toward it is 0 and the bricks vanish; R keeps them. The contrast is measured per "

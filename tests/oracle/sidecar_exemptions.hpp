@@ -14,9 +14,9 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 8> kFiguresDrawnFromGlRenders = {
-    "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step",
-    "bump_two_lights", "bump_seed002", "bump_normals", "bump_emboss_overhead"};
+inline constexpr std::array<const char*, 9> kFiguresDrawnFromGlRenders = {
+    "vi7_jitter",      "parallax_modes", "parallax_error_band", "parallax_step",       "bump_two_lights",
+    "bump_seed002",    "bump_normals",   "bump_methods",        "bump_emboss_overhead"};
 
 // Figures whose measure() takes minutes on softpipe (the parallax table: twelve
 // full-frame GLSL passes and a CPU reference per state).  The oracle checks
