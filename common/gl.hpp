@@ -40,6 +40,7 @@
   X(glTexCoordPointer) X(glTexEnvfv) X(glTexEnvi) X(glTexImage2D) X(glTexParameterf)         \
   X(glTexParameterfv) X(glTexParameteri) X(glVertex2f) X(glVertex3f)           \
   X(glVertexPointer) X(glViewport) X(glDrawBuffer)                             \
+  X(glNormal3f) X(glTexCoord3f) X(glTexGeni)                                   \
   /* GL 1.3+ multitexture */                                                   \
   X(glActiveTexture)                                                           \
   /* GL 1.4 */                                                                 \
@@ -51,6 +52,7 @@
   X(glGetUniformLocation) X(glLinkProgram) X(glShaderSource) X(glUniform1f)    \
   X(glUniform1i) X(glUniform2f) X(glUniform3f) X(glUniform4f) X(glUseProgram)  \
   X(glBindAttribLocation) X(glGetAttribLocation)                               \
+  X(glUniformMatrix3fv)                                                        \
   /* GL 3.0+ framebuffer objects */                                            \
   X(glBindFramebuffer) X(glBindRenderbuffer) X(glCheckFramebufferStatus)       \
   X(glDeleteFramebuffers) X(glDeleteRenderbuffers)                             \
@@ -179,6 +181,10 @@ bool enableDebugOutput();
 #define glUniform2f ts::gl::p_glUniform2f
 #define glUniform3f ts::gl::p_glUniform3f
 #define glUniform4f ts::gl::p_glUniform4f
+#define glUniformMatrix3fv ts::gl::p_glUniformMatrix3fv
+#define glNormal3f ts::gl::p_glNormal3f
+#define glTexCoord3f ts::gl::p_glTexCoord3f
+#define glTexGeni ts::gl::p_glTexGeni
 #define glUseProgram ts::gl::p_glUseProgram
 #define glBindAttribLocation ts::gl::p_glBindAttribLocation
 #define glGetAttribLocation ts::gl::p_glGetAttribLocation

@@ -37,11 +37,16 @@ Batch unitSquare(int texture, const std::string& role, float s0, float s1) {
   return b;
 }
 
-Panel texturePanel(const std::string& id, const Rect& viewport, int texture, const std::string& role, float s0, float s1) {
+Panel unitPanel(const std::string& id, const Rect& viewport) {
   Panel p;
   p.id = id;
   p.viewport = viewport;
   p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+  return p;
+}
+
+Panel texturePanel(const std::string& id, const Rect& viewport, int texture, const std::string& role, float s0, float s1) {
+  Panel p = unitPanel(id, viewport);
   p.batches.push_back(unitSquare(texture, role, s0, s1));
   return p;
 }

@@ -11,6 +11,7 @@
 // check that no label leaves its panel or the window and no two overlap.
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "frame.hpp"
@@ -45,6 +46,20 @@ Frame blankFrame(int width, int height);
 Batch unitSquare(int texture, const std::string& role, float s0 = 0.0f, float s1 = 1.0f);
 Panel texturePanel(const std::string& id, const Rect& viewport, int texture, const std::string& role = "image",
                    float s0 = 0.0f, float s1 = 1.0f);
+// An empty panel `id` at `viewport` that shows the unit square (x, y from 0
+// to 1 across and up): what texturePanel starts from, and the flat figures'
+// panels (a quad in screen space, a lit plane).
+Panel unitPanel(const std::string& id, const Rect& viewport);
+
+// A w x h picture centred in `r` (whole pixels, as the demos place a square
+// texture view inside a cell sized for a wider picture).
+inline Rect centred(const Rect& r, int w, int h) { return {r.x + (r.w - w) / 2, r.y + (r.h - h) / 2, w, h}; }
+// A two-line caption band cut into its upper and lower line (a title above a
+// formula, an equation above its text).
+inline std::pair<Box, Box> halves(const Box& b) {
+  const float mid = b.y0 + b.h() / 2;
+  return {{b.x0, b.y0, b.x1, mid}, {b.x0, mid, b.x1, b.y1}};
+}
 
 // printf of one number ("%.2f") into a std::string.
 std::string fmt(const char* format, double v);

@@ -182,6 +182,28 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
 }
 
 // Test hooks (environment, tests and benchmarks only).
+// TS_TEST_RESIZE="WxH WxH ...": once the window would have ended (--frames),
+// resize it to each size in turn and draw --frames frames again; the last
+// frame at each size, the first included, is written as <screenshot>.WxH.png
+// (the figure alone; WxH: the window's size then).
+std::vector<std::pair<int, int>> testResizes() {
+  std::vector<std::pair<int, int>> sizes;
+  const char* spec = std::getenv("TS_TEST_RESIZE");
+  std::istringstream in(spec ? spec : "");
+  for (std::string s; in >> s;) {
+    int w = 0, h = 0;
+    char x = 0;
+    std::istringstream one(s);
+    if (one >> w >> x >> h && x == 'x' && w > 0 && h > 0) sizes.push_back({w, h});
+    else std::fprintf(stderr, "TS_TEST_RESIZE: cannot read '%s'\n", s.c_str());
+  }
+  return sizes;
+}
+std::string sizedName(const std::string& png, int w, int h) {
+  std::string stem = png.size() > 4 && png.compare(png.size() - 4, 4, ".png") == 0 ? png.substr(0, png.size() - 4) : png;
+  return stem + "." + std::to_string(w) + "x" + std::to_string(h) + ".png";
+}
+
 // TS_TEST_FRAME_LOG=FILE: a line per event, times in seconds of the steady
 // clock (CLOCK_MONOTONIC, comparable across processes): "frame T M P" after
 // each swap (M 1 while a measurement is out, P its progress), "key T C" when
@@ -411,7 +433,10 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
   bool measuring = false;  // a request is out: the numbers shown are stale
   bool measureHere = false;
   bool savePending = false;  // F12 pressed
+  int measuredW = 0, measuredH = 0;  // the figure size the numbers shown were (or are being) measured at
   TestLog testLog;
+  std::vector<std::pair<int, int>> resizes = testResizes();
+  const bool resizing = !resizes.empty();
   GlPane pane;
   bool record = false, afterKey = false;  // the GL pane needs a new recording
   bool redraw = true;                      // draw again without waiting for an event
@@ -506,10 +531,14 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       WindowSplit split = splitWindow(ctx.width(), input.overlay, pane.visible);
       int figureW = split.figureW;
       renderer.setPictureSize(figureW, ctx.height());  // a live view draws at the figure's size
+      // The numbers belong to the picture at its size (as --png at that size
+      // measures them): a resized figure is measured again.
+      if (!scene.live() && measuredW && (figureW != measuredW || ctx.height() != measuredH)) dirty = true;
       if (scene.live() || (dirty && measureHere)) {
         if (measuring) worker->cancel(), measuring = false;  // a live view measures every frame itself
         m = scene.measure(renderer);
         measuredOnce = true;
+        measuredW = figureW, measuredH = ctx.height();
         if (dirty) {
           std::printf("%s\n%s", opts.stateText().c_str(), formatMeasurements(m).c_str());
           std::fflush(stdout);
@@ -517,6 +546,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
         dirty = false;
       } else if (dirty) {
         worker->request(opts.stateFlags(), figureW, ctx.height());  // measured at the figure's size, as --png
+        measuredW = figureW, measuredH = ctx.height();
         measuring = true;
         dirty = false;
       }
@@ -550,6 +580,16 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       // TS_SCREENSHOT_OVERLAY=1 asks for the window as the student sees it.
       const char* withOverlay = std::getenv("TS_SCREENSHOT_OVERLAY");
       bool overlayShot = withOverlay && *withOverlay == '1';
+      // TS_TEST_RESIZE (tests): at what would be the last frame, keep that
+      // frame as <screenshot>.WxH.png, resize to the next size and go on.
+      if (lastFrame && resizing && !flags.screenshot.empty())
+        writePng(sizedName(flags.screenshot, ctx.width(), ctx.height()), ctx.readPixels());
+      if (lastFrame && !resizes.empty()) {
+        glfwSetWindowSize(win, resizes.front().first, resizes.front().second);
+        resizes.erase(resizes.begin());
+        counted = 0;
+        lastFrame = false;
+      }
       if (lastFrame && !flags.screenshot.empty() && !overlayShot) writePng(flags.screenshot, ctx.readPixels());
       bool imgui = input.overlay || pane.visible || input.help;
       if (imgui) {

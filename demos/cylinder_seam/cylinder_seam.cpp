@@ -31,7 +31,6 @@
 #include <cstdio>
 #include <map>
 
-#include "common/probe.hpp"
 #include "common/render.hpp"
 #include "common/layout.hpp"
 #include "common/scene.hpp"
@@ -40,6 +39,8 @@
 #include "common/orbit_camera.hpp"
 #include "common/user_texture.hpp"
 #include "cylinder_map.hpp"
+#include "cylinder_measure.hpp"  // the patches drawn head-on and read back
+#include "cylinder_views.hpp"    // the texture-space view: the seam patch's regions
 
 namespace {
 using cylmap::Coords;
@@ -47,8 +48,7 @@ using cylmap::Seam;
 
 const char* const kCoordNames[] = {"wrong", "right"};
 using ts::layout::kWhite;
-const glm::vec4 kIntended{0.2f, 0.85f, 0.3f, 1.0f}, kActual{0.95f, 0.15f, 0.15f, 1.0f},
-    kPatch{1.0f, 0.55f, 0.0f, 1.0f};
+using cylview::kPatch;
 const glm::vec4& kMeasured = ts::layout::kAmber;
 
 // 10 x 10 labelled cells, 64 texels each: the book's s = 0.1 and 0.9 fall on
@@ -116,12 +116,6 @@ class CylinderSeam final : public ts::Scene {
     return glm::rotate(m, glm::radians(-turn_), glm::vec3(0, 1, 0));
   }
 
-  struct PatchResult {
-    double span = 0;       // signed Δs from left edge to right edge
-    double texelErr = 0;   // largest distance (texels) from the assigned s
-  };
-  std::vector<PatchResult> measurePatches(ts::Renderer& r, Coords c) const;
-
   int coords_ = int(Coords::Wrong), seam_ = int(Seam::Front), slices_ = 5, view_ = 0;
   float turn_ = 0.0f;
   ts::UserTexture picture_;  // --texture FILE
@@ -132,67 +126,10 @@ class CylinderSeam final : public ts::Scene {
 
 void CylinderSeam::addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const {
   ts::Panel p = ts::layout::texturePanel("texture_space", vp, tex, "texture");
-  if (patch_) {
-    const int k = cylmap::seamPatch(params(Coords::Right));
-    // Intended: [s_k, s_k+1] of the right coordinates, cut where it wraps.
-    cylmap::Params right = params(Coords::Right);
-    double a = cylmap::sOf(right, k), b = cylmap::sOf(right, k + 1);
-    double fa = a - std::floor(a);
-    std::vector<std::pair<double, double>> pieces;
-    if (fa + (b - a) <= 1.0 + 1e-12) pieces = {{fa, fa + (b - a)}};
-    else pieces = {{fa, 1.0}, {0.0, fa + (b - a) - 1.0}};
-    for (auto [lo, hi] : pieces) {
-      ts::Batch shade;
-      shade.role = "intended_region";
-      shade.blend = true;
-      for (int i : {0, 1, 2, 0, 2, 3}) {
-        glm::vec2 c(float(i == 1 || i == 2 ? hi : lo), float(i >= 2));
-        shade.vertices.push_back({{c, 0}, {0, 0, 0, 1}, {kIntended.r, kIntended.g, kIntended.b, 0.45f}});
-      }
-      p.batches.push_back(shade);
-      p.batches.push_back(ts::lineLoop({{float(lo), 0.003f}, {float(hi), 0.003f}, {float(hi), 0.997f}, {float(lo), 0.997f}},
-                                       kIntended, 3.0f, "intended_outline"));
-    }
-    // Actual: from column k's s to column k+1's s, walked left to right on
-    // screen; an arrow at mid-height shows the way.  The compare view shows
-    // the wrong way here (the right one is the green region itself).
-    const Coords shown = view_ == 1 ? Coords::Wrong : Coords(coords_);
-    cylmap::Params cur = params(shown);
-    double sa = cylmap::sOf(cur, k), sb = cylmap::sOf(cur, k + 1);
-    if (shown == Coords::Wrong) {
-      float lo = float(std::min(sa, sb)), hi = float(std::max(sa, sb));
-      p.batches.push_back(ts::lineLoop({{lo, 0.01f}, {hi, 0.01f}, {hi, 0.99f}, {lo, 0.99f}}, kActual, 3.0f, "actual_region"));
-      std::vector<glm::vec2> hatch;  // the book's cross-hatching
-      for (float u = lo + 0.05f; u < hi; u += 0.1f) hatch.insert(hatch.end(), {{u, 0.01f}, {std::min(u + 0.05f, hi), 0.99f}});
-      p.batches.push_back(ts::lineSegments(hatch, {kActual.r, kActual.g, kActual.b, 1.0f}, 1.0f, "actual_hatch"));
-    }
-    // The arrow: s from x (left edge) to y (right edge), as GL_REPEAT reads
-    // it: right = from + 0.2, continued from the left edge if it passes 1.
-    const float from = float(sa - std::floor(sa));
-    const float to = shown == Coords::Right ? from + float(sb - sa) : float(sb);
-    const float y0 = 0.5f, ah = 0.03f, dir = to > from ? 1.0f : -1.0f;
-    const float tip = to > 1.0f ? to - 1.0f : to;
-    std::vector<glm::vec2> arrow;
-    if (to > 1.0f) arrow = {{from, y0}, {1.0f, y0}, {0.0f, y0}, {tip, y0}};
-    else arrow = {{from, y0}, {to, y0}};
-    arrow.insert(arrow.end(), {{tip, y0}, {tip - dir * ah, y0 + ah}, {tip, y0}, {tip - dir * ah, y0 - ah}});
-    p.batches.push_back(ts::lineSegments(arrow, kPatch, 3.0f, "direction"));
-    // Vertex names at the corners of the region actually shown.
-    auto at = [&](double s, double t) {
-      return glm::vec2(float(vp.x) + float(s) * float(vp.w), float(vp.y) + float(1.0 - t) * float(vp.h));
-    };
-    float line = ts::text::height(scale);
-    struct {
-      const char* n;
-      double s, t;
-    } names[] = {{"x", from, 0}, {"y", tip, 0}, {"z", tip, 1}, {"w", from, 1}};
-    for (auto& v : names) {
-      glm::vec2 q = at(v.s, v.t);
-      ts::layout::placeFree(f, {q.x, v.t > 0.5 ? q.y - line - 4.0f * float(scale) : q.y + 4.0f * float(scale), v.n, kPatch,
-                                scale, ts::Align::Center},
-                            {0, 0, float(f.width), float(f.height)});
-    }
-  }
+  // The seam patch's intended region (green) and the one the shown
+  // coordinates select (cylinder_views.hpp).  The compare view shows the
+  // wrong way here (the right one is the green region itself).
+  if (patch_) cylview::markSeamPatch(f, p, params(Coords::Right), params(view_ == 1 ? Coords::Wrong : Coords(coords_)), scale);
   f.panels.push_back(p);
 }
 
@@ -258,8 +195,7 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
   const L::Cell& tc = cells[0];
   const int scale = tc.scale, names = int(L::lineHeight(scale));  // room for x, y, z, w above and below the square
   const int side = std::max(1, std::min(tc.picture.w, tc.picture.h - 2 * names));
-  addTextureView(f, {tc.picture.x + (tc.picture.w - side) / 2, tc.picture.y + (tc.picture.h - side) / 2, side, side}, tex,
-                 scale);
+  addTextureView(f, L::centred(tc.picture, side, side), tex, scale);
   L::caption(f, tc.above, "texture space", kWhite, scale);
   L::caption(f, tc.below, seam_ == 0 ? "seam at the front: s = theta/360" : "seam at the back: s = theta/360 + 1/2",
              kWhite, scale);
@@ -279,71 +215,8 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
   return f;
 }
 
-// Each patch is drawn head-on in its own W x H panel: turned by -θ_mid about
-// y so it faces +z, and an orthographic projection that maps its chord onto
-// exactly the panel's width (left edge = column k, right edge = column k+1).
-// Then screen x is linear in s, every pixel centre lies inside the patch,
-// and the s a pixel shows is (texel index + 1/2) / N.
-std::vector<CylinderSeam::PatchResult> CylinderSeam::measurePatches(ts::Renderer& r, Coords c) const {
-  // 2048 texels: s is read to 1/2048 per pixel; 256 px across a patch make
-  // the fitted span good to far better than a texel; 32 rows are plenty (s
-  // does not depend on y).  The frame's size depends only on the slices.
-  const int N = 2048, W = 256, H = 32;
-  const cylmap::Params cp = params(c);
-  const ts::Mesh mesh = cylmap::mesh(cp);
-  ts::Frame mf;
-  mf.width = W;
-  mf.height = H * cp.slices;
-  int tex = mf.addTexture(ts::texelIndexTexture(N));  // GL_NEAREST, GL_REPEAT
-  ts::Batch all = ts::meshBatch(mesh, tex);
-  all.texEnv = GL_REPLACE;
-  const double half = 180.0 / cp.slices, chord = cp.r * std::sin(ts::degToRad(half));
-  for (int k = 0; k < cp.slices; ++k) {
-    ts::Panel p;
-    p.id = "patch_" + std::to_string(k);
-    p.viewport = {0, k * H, W, H};
-    p.projection = glm::ortho(float(-chord), float(chord), float(-cp.h / 2), float(cp.h / 2), float(-2 * cp.r),
-                              float(2 * cp.r));
-    p.modelview = glm::rotate(glm::mat4(1.0f), float(-ts::degToRad(cylmap::thetaDeg(cp.slices, k) + half)),
-                              glm::vec3(0, 1, 0));
-    ts::Batch b = all;  // only column k's cells: 6 vertices per cell, row-major in j
-    b.vertices.clear();
-    for (int j = 0; j < cp.stacks; ++j)
-      for (int v = 0; v < 6; ++v) b.vertices.push_back(all.vertices[size_t((j * cp.slices + k) * 6 + v)]);
-    p.batches.push_back(b);
-    mf.panels.push_back(p);
-  }
-  ts::Image img = r.renderOffscreen(mf);
-
-  std::vector<PatchResult> out;
-  for (int k = 0; k < cp.slices; ++k) {
-    const double sa = cylmap::sOf(cp, k), sb = cylmap::sOf(cp, k + 1);
-    std::vector<ts::probe::Sample> samples;
-    PatchResult pr;
-    for (int y = k * H; y < (k + 1) * H; ++y) {
-      double prev = 0, unwrapped = 0;
-      for (int x = 0; x < W; ++x) {
-        int i = 0, j = 0;
-        ts::decodeTexelIndex(img.at(x, y), &i, &j);
-        double s = (i + 0.5) / N;
-        // Unwrap along the row: neighbouring pixels differ by far less than
-        // half the texture, so a jump of more than 1/2 is a wrap (GL_REPEAT).
-        unwrapped = x == 0 ? s : unwrapped + (s - prev) - std::round(s - prev);
-        prev = s;
-        double u = (x + 0.5) / W;
-        samples.push_back({u, (y - k * H + 0.5) / H, unwrapped});
-        // Against the assignment, interpolated linearly across the patch.
-        double want = sa + u * (sb - sa), d = (unwrapped - want) - std::round(unwrapped - want);
-        pr.texelErr = std::max(pr.texelErr, std::abs(d) * N);
-      }
-    }
-    ts::probe::Fit fit = ts::probe::fit(samples, false);  // s = c0 + c1 u + c2 v: c1 is the span
-    pr.span = fit.c[1];
-    out.push_back(pr);
-  }
-  return out;
-}
-
+// Each patch is drawn head-on with a texel-index texture and the s it shows
+// fitted across it (cylinder_measure.hpp): the seam patch's span and sign.
 ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
   std::vector<Coords> todo = view_ == 0 ? std::vector<Coords>{Coords(coords_)}
                                         : std::vector<Coords>{Coords::Wrong, Coords::Right};
@@ -352,7 +225,7 @@ ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
   const int k = cylmap::seamPatch(params(Coords::Right));
   out.push_back({"seam_patch", double(k), "the patch the texture edges meet in (0 = the front one)"});
   for (Coords c : todo) {
-    std::vector<PatchResult> res = measurePatches(r, c);
+    std::vector<cylmeasure::PatchResult> res = cylmeasure::measurePatches(r, params(c));
     std::string n = std::string("[") + kCoordNames[int(c)] + "]";
     int reversed = 0;
     double err = 0;

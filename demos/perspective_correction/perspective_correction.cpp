@@ -45,19 +45,14 @@
 #include "common/orbit_camera.hpp"
 #include "common/user_texture.hpp"
 #include "perspective_map.hpp"
+#include "perspective_measure.hpp"  // the texel-index comparison, the results and the plot
 
 namespace {
 enum View { kBoth, kAffine, kPerspective, kPlot };
 enum Variant { kAffineVariant, kPerspectiveVariant };
 
-// Measurement passes: a square N x N render (aspect 1, so the sweep's numbers
-// do not depend on the window) of a 2048-texel index texture: one texel of it
-// is 1/8 texel of the 256-texel checkerboard, so each pixel's (s, t) is known
-// to well under the errors measured.
-constexpr int kMeasureSize = 256, kIndexTexels = 2048;
-// The sweep: tilts 0, 10, ... 80 degrees at the current distance (85 would
-// be nearly edge-on and the square a sliver a few pixels high).
-constexpr int kSweepStepDeg = 10, kSweepMaxDeg = 80;
+// The measurement's sizes and sweep (perspective_measure.hpp).
+using perspmeasure::kMeasureSize, perspmeasure::kIndexTexels, perspmeasure::kSweepStepDeg, perspmeasure::kSweepMaxDeg;
 
 using ts::layout::fmt;
 namespace plot = ts::plot;
@@ -116,33 +111,15 @@ class PerspectiveCorrection final : public ts::Scene {
   ts::TextureDesc checker() const;
   // The texel-index render of one variant at kMeasureSize, and the largest
   // error of the texels it took against the perspective-correct (s, t).
-  struct Pass {
-    double maxErrorTexels = 0;     // |(s,t) taken - correct|, texels of 256
-    double predictedTexels = 0;    // the analytic error at the same pixels
-    int maxIndexError = 0;         // largest index difference, texels of 2048
-  };
+  using Pass = perspmeasure::Pass;
   Pass measurePass(ts::Renderer& r, const persp::Setup& s, Variant v, GLenum hint, ts::Image* out = nullptr) const;
-  struct Result;
-  plot::Spec plotSpec(const Result* last) const;
+  using Result = perspmeasure::Result;  // what measure() found: the labels and the plot
 
   int view_ = kBoth, filter_ = 2;
   float tilt_ = 60.0f, distance_ = 1.5f;
   ts::UserTexture picture_;  // --texture FILE
   ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse (the picture; the measurement keeps the setup's view)
   bool edges_ = false;
-
-};
-
-// What measure() found, for the labels and the plot (measure()'s detail;
-// the labels use it when its setup is the current one).
-struct PerspectiveCorrection::Result {
-  persp::Setup setup;
-  Pass affine, perspective;
-  long hintDiffering = 0;
-  double hintFastestError = 0;
-  std::string driver;
-  std::vector<glm::dvec3> sweep;  // ((d2 - d1)/d1, error in texels, tilt) per tilt
-  std::vector<glm::dvec3> curve;  // the analytic error, every 2.5 degrees of tilt at this distance
 };
 
 ts::TextureDesc PerspectiveCorrection::checker() const {
@@ -200,35 +177,19 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
   // under GL_NICEST; the affine-only view asks for GL_FASTEST, which Mesa
   // ignores — and which cannot matter to it anyway, since w = 1 everywhere.
   f.perspectiveHint = view_ == kAffine ? GL_FASTEST : GL_NICEST;
-  const glm::vec4 &white = ts::layout::kWhite, &amber = ts::layout::kAmber, grey{0.75f, 0.75f, 0.78f, 1.0f};
+  const glm::vec4 &white = ts::layout::kWhite, &grey = perspmeasure::kGrey;
   const persp::Setup s = setup();
-  const persp::Distances d = persp::distances(s);
   const Result* last = measured.detailAs<Result>();
   const bool have = last && last->setup.tiltDeg == s.tiltDeg && last->setup.distance == s.distance;
 
   if (view_ == kPlot) {
-    plot::draw(f, plotSpec(last), {0, 0, width, height});
+    plot::draw(f, perspmeasure::plotSpec(s, last), {0, 0, width, height});
     return f;
   }
   int tex = f.addTexture(checker());
-  // The notes: the hint test, and the measured error against the rule of thumb.
-  std::vector<std::pair<std::string, glm::vec4>> notes;
-  if (have) {
-    notes.push_back({last->hintDiffering == 0
-                         ? last->driver + " ignores GL_PERSPECTIVE_CORRECTION_HINT: its GL_FASTEST and GL_NICEST renders are identical"
-                         : last->driver + " honours GL_PERSPECTIVE_CORRECTION_HINT: GL_FASTEST changes " +
-                               std::to_string(last->hintDiffering) + " px (error up to " +
-                               fmt("%.1f", last->hintFastestError) + " texels)",
-                     amber});
-    notes.push_back({"Screen-linear image: largest (s,t) error " + fmt("%.1f", last->affine.maxErrorTexels) +
-                         " texels of 256 (" + fmt("%.2f", last->affine.maxErrorTexels / (persp::kTexels / persp::kChecks)) +
-                         " checks), measured from a texel-index render",
-                     white});
-  }
-  notes.push_back({"tilt " + fmt("%g", s.tiltDeg) + " deg, distance " + fmt("%g", s.distance) + ": d1 = " + fmt("%.2f", d.d1) +
-                       ", d2 = " + fmt("%.2f", d.d2) + ", (d2 - d1)/d1 = " + fmt("%.2f", d.ratio()) +
-                       " (book: it matters from about 1)",
-                   grey});
+  // The notes: the hint test, and the measured error against the rule of
+  // thumb (perspective_measure.hpp).
+  const auto notes = perspmeasure::notes(s, have ? last : nullptr);
   // Room for the notes under the pictures (at most a third of the height).
   const float margin = 8, noteW = float(width) - 2 * margin;
   float notesH = 0;
@@ -264,7 +225,6 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
 PerspectiveCorrection::Pass PerspectiveCorrection::measurePass(ts::Renderer& r, const persp::Setup& s, Variant v,
                                                                GLenum hint, ts::Image* out) const {
   const int N = kMeasureSize;
-  const double T = kIndexTexels;
   ts::Frame mf;
   mf.width = mf.height = N;
   mf.clearColor = glm::vec4(0.0f);  // alpha 0 marks pixels the square does not cover
@@ -280,23 +240,8 @@ PerspectiveCorrection::Pass PerspectiveCorrection::measurePass(ts::Renderer& r, 
   addSquare(p, s, v, tex, false);
   mf.panels.push_back(p);
   ts::Image img = r.renderOffscreen(mf);
-  persp::View view = persp::makeView(s, 1.0);
-  Pass pass;
-  for (int y = 0; y < N; ++y)
-    for (int x = 0; x < N; ++x) {
-      ts::Rgba c = img.at(x, y);
-      if (c.a == 0) continue;
-      glm::dvec2 xy(2 * (x + 0.5) / N - 1, 1 - 2 * (y + 0.5) / N);
-      glm::dvec2 want = glm::clamp(persp::perspectiveST(view, xy), 0.0, 1.0);
-      int i = 0, j = 0;
-      ts::decodeTexelIndex(c, &i, &j);
-      glm::dvec2 took((i + 0.5) / T, (j + 0.5) / T);
-      pass.maxErrorTexels = std::max(pass.maxErrorTexels, glm::length(took - want) * persp::kTexels);
-      int wi = std::min(int(T) - 1, int(want.x * T)), wj = std::min(int(T) - 1, int(want.y * T));
-      pass.maxIndexError = std::max({pass.maxIndexError, std::abs(i - wi), std::abs(j - wj)});
-      if (v == kAffineVariant)
-        pass.predictedTexels = std::max(pass.predictedTexels, persp::affineErrorTexels(view, xy));
-    }
+  // Every covered pixel's texel against the ray through it (perspective_measure.hpp).
+  Pass pass = perspmeasure::compare(img, s, v == kAffineVariant);
   if (out) *out = std::move(img);
   return pass;
 }
@@ -348,39 +293,6 @@ ts::Measurements PerspectiveCorrection::measure(ts::Renderer& r) {
   return out;
 }
 
-plot::Spec PerspectiveCorrection::plotSpec(const Result* last) const {
-  const persp::Setup s = setup();
-  const glm::vec4 curveC{0.35f, 0.7f, 1.0f, 1.0f}, measuredC = ts::layout::kAmber, currentC{1.0f, 0.3f, 0.3f, 1.0f};
-  plot::Spec p;
-  p.title = "Largest (s,t) error of the screen-linear image vs (d2 - d1)/d1: tilts 0.." + std::to_string(kSweepMaxDeg) +
-            " deg at distance " + fmt("%g", s.distance);
-  p.xLabel = "(d2 - d1)/d1   (d1, d2: nearest and farthest distance from the eye to the square)";
-  p.yLabel = "error, texels of 256 (one check = 32)";
-  glm::dvec3 now{persp::distances(s).ratio(), persp::maxAffineErrorTexels(s, kMeasureSize), s.tiltDeg};
-  plot::Series curve{"analytic", curveC}, sweep{"measured", measuredC, plot::Mark::Crosses};
-  if (last && last->setup.distance == s.distance) {  // the curve and sweep come with a measurement
-    for (const glm::dvec3& q : last->curve) curve.points.push_back(glm::dvec2(q));
-    for (const glm::dvec3& q : last->sweep) sweep.points.push_back(glm::dvec2(q)), sweep.tags.push_back(fmt("t=%g", q.z));
-    if (!last->curve.empty() && last->curve.front().x >= 0.05)  // the rule of thumb's blind spot, when it shows
-      p.notes.push_back({glm::dvec2(last->curve.front()), "<- tilt 0: facing the eye, all depths equal, no error although (d2 - d1)/d1 = " +
-                                                  fmt("%.2f", last->curve.front().x)});
-    if (last->setup.tiltDeg == s.tiltDeg) now.y = last->affine.maxErrorTexels;
-  }
-  p.series = {curve, sweep, {"current", currentC, plot::Mark::Rings, {glm::dvec2(now)}, 2.0f, 8.0f}};
-  p.markers = {{1.0, p.textColor, "rule_of_thumb", "d2 - d1 = d1"}};
-  p.legend = {{"x  measured (texel-index render), tagged by tilt", measuredC},
-              {"-  analytic (ray-plane vs screen barycentrics)", curveC},
-              {"o  current state (" + fmt("t=%g", now.z) + ")", currentC}};
-  p.legendInside = true;
-  // Ranges: from 0 to a round number past the largest value.
-  double xmax = std::max(1.2, now.x), ymax = std::max(1.0, now.y);
-  for (const auto* se : {&curve.points, &sweep.points})
-    for (const glm::dvec2& q : *se) xmax = std::max(xmax, q.x), ymax = std::max(ymax, q.y);
-  const double xs = plot::niceStep(xmax * 1.05), ys = plot::niceStep(ymax * 1.1);
-  p.x1 = xs * std::ceil(xmax * 1.05 / xs), p.y1 = ys * std::ceil(ymax * 1.1 / ys);
-  p.xTicks = plot::ticks(0, p.x1, xs), p.yTicks = plot::ticks(0, p.y1, ys);
-  return p;
-}
 }  // namespace
 
 TM_REGISTER_SCENE(PerspectiveCorrection);

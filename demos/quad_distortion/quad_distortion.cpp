@@ -20,23 +20,18 @@
 // Measured: the kink — the angle between the checker lines on the two sides
 // of the diagonal, fitted from a render that shows which texel each pixel
 // took — next to the angle the math predicts.
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <cmath>
-#include <cstdio>
 #include <map>
-#include <sstream>
 
-#include "common/context.hpp"
-#include "common/error.hpp"
 #include "common/layout.hpp"
-#include "common/probe.hpp"
 #include "common/render.hpp"
 #include "common/scene.hpp"
 #include "common/text.hpp"
 #include "common/textures.hpp"
 #include "common/user_texture.hpp"
 #include "quad_map.hpp"
+#include "quad_measure.hpp"  // the kink fitted from a texel-index render
+#include "quad_views.hpp"    // the texture-space view and the corner labels
 
 namespace {
 using quadmap::Diagonal;
@@ -114,11 +109,17 @@ class QuadDistortion final : public ts::Scene {
     Interp interp;
   };
   quadmap::Corners corners() const { return quadmap::parseCorners(cornersText_); }
+  // The variants the view shows: the current one (book), or both diagonals
+  // and then the two fixes (compare).
+  std::vector<Variant> shown() const {
+    if (view_ == 0) return {{Diagonal(diagonal_), Interp(interp_)}};
+    return {{Diagonal::TopLeftBottomRight, kAffine}, {Diagonal::BottomLeftTopRight, kAffine},
+            {Diagonal(diagonal_), kBilinear}, {Diagonal(diagonal_), kProjective}};
+  }
 
  private:
   // The square with `interp` applied, as batches in a unit-square panel.
   void addSquare(ts::Frame& f, ts::Panel& p, Variant v, int texture, bool edges) const;
-  void addTextureView(ts::Frame& f, ts::Panel& p, Variant v, int texture) const;
   ts::TextureDesc checker() const {
     ts::TextureDesc t = ts::checkerboard(256, checks_);
     t.minFilter = t.magFilter = filter_ == 0 ? GL_NEAREST : GL_LINEAR;
@@ -187,62 +188,17 @@ void QuadDistortion::addSquare(ts::Frame& f, ts::Panel& p, Variant v, int textur
   }
 }
 
-void QuadDistortion::addTextureView(ts::Frame&, ts::Panel& p, Variant v, int texture) const {
-  quadmap::Corners st = corners();
-  // The whole texture on the unit square: s, t = a, b.
-  p.batches.push_back(ts::layout::unitSquare(texture, "texture"));
-  // The region the (s, t) corners select, and the screen diagonal's image.
-  std::vector<glm::vec2> region;
-  for (const auto& c : st) region.push_back(glm::vec2(c));
-  p.batches.push_back(ts::lineLoop(region, {0.9f, 0.1f, 0.1f, 1.0f}, 3.0f, "region"));
-  glm::dvec2 a = v.diagonal == Diagonal::TopLeftBottomRight ? glm::dvec2(0, 1) : glm::dvec2(0, 0);
-  glm::dvec2 b = v.diagonal == Diagonal::TopLeftBottomRight ? glm::dvec2(1, 0) : glm::dvec2(1, 1);
-  std::vector<glm::vec2> diag;
-  glm::dmat3 H = quadmap::homography(st);
-  quadmap::Split sp = quadmap::split(st, v.diagonal);
-  for (int k = 0; k <= 32; ++k) {
-    glm::dvec2 q = glm::mix(a, b, k / 32.0);
-    glm::dvec2 m = v.interp == kAffine ? sp.first(q) : v.interp == kBilinear ? quadmap::bilinear(st, q)
-                                                                              : quadmap::projective(H, q);
-    diag.push_back(glm::vec2(m));
-  }
-  ts::Batch d = ts::lineLoop(diag, {1.0f, 0.55f, 0.0f, 1.0f}, 2.0f, "diagonal_image");
-  d.prim = ts::Prim::LineStrip;
-  p.batches.push_back(d);
-}
-
 using ts::layout::fmt;
 
 ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& measured) const {
   ts::Frame f = ts::layout::blankFrame(width, height);
   int checker = f.addTexture(this->checker());
   const glm::vec4 &white = ts::layout::kWhite, &amber = ts::layout::kAmber;
-  glm::mat4 unit = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
-  quadmap::Corners st = corners();
   Variant current{Diagonal(diagonal_), Interp(interp_)};
   const Kinks none, &kinks = measured.detailAs<Kinks>() ? *measured.detailAs<Kinks>() : none;
   namespace L = ts::layout;
   const float margin = 8;
   const L::Box all{margin, margin, float(width) - margin, float(height) - margin};
-  // Corner labels beside each corner, in the cell's caption bands (left out
-  // where two would not fit side by side).
-  auto cornerLabels = [&](const L::Cell& c, bool withValues) {
-    const auto& P = quadmap::squareCorners();
-    const ts::Rect& r = c.picture;
-    int scale = c.scale;
-    while (scale > 1 && 2 * ts::text::width("<0.75,0.75>", scale) + 8 > r.w) --scale;
-    for (int i = 0; i < 4; ++i) {
-      glm::dvec2 q = P[size_t(i)];
-      std::string text = withValues ? "<" + fmt("%g", st[size_t(i)].x) + "," + fmt("%g", st[size_t(i)].y) + ">"
-                                    : "<" + fmt("%g", q.x) + "," + fmt("%g", q.y) + ">";
-      float x = float(r.x) + float(q.x) * float(r.w);
-      bool top = q.y > 0.5;
-      L::Box band = top ? L::Box{c.above.x0, c.above.y1 - L::lineHeight(scale), c.above.x1, c.above.y1}
-                        : L::Box{c.below.x0, c.below.y0, c.below.x1, c.below.y0 + L::lineHeight(scale)};
-      L::placeFree(f, {x, band.y0 + float(2 * scale), text, white, scale, q.x > 0.5 ? ts::Align::Right : ts::Align::Left},
-                   band);
-    }
-  };
   if (view_ == 0) {
     // The book's layout: texture square left, rendered square right (or
     // one above the other in a tall window), the kink underneath.
@@ -257,14 +213,13 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
     spec.linesBelow = kink.empty() ? 1 : 2;  // bottom corners (and the kink, under the last)
     spec.gap = 16;
     std::vector<L::Cell> cells = L::flow(all, spec);
-    ts::Panel left, right;
-    left.id = "texture_space";
-    left.viewport = cells[0].picture;
-    left.projection = unit;
-    addTextureView(f, left, current, checker);
-    right.id = "screen_space";
-    right.viewport = cells[1].picture;
-    right.projection = unit;
+    ts::Panel left = L::unitPanel("texture_space", cells[0].picture), right = L::unitPanel("screen_space", cells[1].picture);
+    // The texture, the region the corners select and the image of the screen
+    // diagonal (quad_views.hpp); the affine split's along its first triangle.
+    const quadmap::Split sp = quadmap::split(corners(), current.diagonal);
+    quadview::addTextureView(left, corners(), current.diagonal, checker, [&](glm::dvec2 q) {
+      return current.interp == kAffine ? sp.first(q) : analytic(current, q);
+    });
     addSquare(f, right, current, checker, edges_);
     f.panels = {left, right};
     const std::string titles[2] = {"texture space: the region", "screen space: " + name};
@@ -272,7 +227,7 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
       const L::Cell& c = cells[size_t(k)];
       L::caption(f, {c.above.x0, c.above.y0, c.above.x1, c.above.y1 - L::lineHeight(c.scale)}, titles[k], white,
                  c.scale);
-      cornerLabels(c, k == 1);
+      quadview::cornerLabels(f, c, corners(), k == 1);
     }
     // The kink: under the pictures, across the window.
     const L::Cell& c = cells[1];
@@ -280,8 +235,7 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
     L::caption(f, {all.x0, y, all.x1, all.y1}, kink, amber, c.scale);
   } else {
     // The four variants: both diagonals, then the two fixes.
-    const Variant vs[4] = {{Diagonal::TopLeftBottomRight, kAffine}, {Diagonal::BottomLeftTopRight, kAffine},
-                           {Diagonal(diagonal_), kBilinear}, {Diagonal(diagonal_), kProjective}};
+    const std::vector<Variant> vs = shown();
     L::FlowSpec spec;
     spec.n = 4;
     spec.gap = 16;
@@ -289,13 +243,10 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
     std::vector<L::Cell> cells = L::flow(all, spec);
     for (int k = 0; k < 4; ++k) {
       const L::Cell& c = cells[size_t(k)];
-      ts::Panel p;
-      p.id = "variant_" + std::to_string(k);
-      p.viewport = c.picture;
-      p.projection = unit;
-      addSquare(f, p, vs[k], checker, edges_ && vs[k].interp == kAffine);
+      ts::Panel p = L::unitPanel("variant_" + std::to_string(k), c.picture);
+      addSquare(f, p, vs[size_t(k)], checker, edges_ && vs[size_t(k)].interp == kAffine);
       f.panels.push_back(p);
-      std::string name = variantName(vs[k]);
+      std::string name = variantName(vs[size_t(k)]);
       L::caption(f, c.above, name, white, c.scale);
       auto m = kinks.find(name);
       if (m != kinks.end()) L::caption(f, c.below, "kink " + fmt("%.1f", m->second) + " deg", amber, c.scale);
@@ -305,83 +256,28 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
 }
 
 // The measurement.  The square is drawn once more, full-frame, with a
-// texture whose texel (i, j) holds R = i, G = j (GL_NEAREST): the picture
-// then says which texel every pixel took.  Two things follow:
-//  * the texel each pixel took is compared with the analytic map (the
-//    triangles' affine maps, the bilinear map or the homography);
-//  * the diagonal is cut into 8 segments; beside each, on either side, in a
-//    band 1.5 .. N/16 pixels wide, s and t (in texels) are fitted by
-//    quadratics in (a, b); the gradients of the two fits at the segment's
-//    centre give the angle between the checker lines on either side.  Affine triangles: the angle of predictedKinkDeg;
-//    bilinear and projective: ~0, the gradient is continuous.
-static glm::dvec2 segmentCentre(Diagonal d, int seg, int segments) {
-  double u = (seg + 0.5) / segments;
-  return d == Diagonal::TopLeftBottomRight ? glm::dvec2(u, 1 - u) : glm::dvec2(u, u);
-}
-
+// texture whose texel (i, j) holds R = i, G = j (GL_NEAREST); the kink is
+// fitted from the texels the pixels took on either side of the diagonal
+// (quad_measure.hpp).
 double QuadDistortion::measureKink(ts::Renderer& r, Variant v, double* texelError) {
   const int N = 512;  // the same at any figure or window size
   ts::Frame mf;
   mf.width = mf.height = N;
   // 2048 texels across 512 pixels: each pixel's texel is known to 1/4 pixel.
-  const double T = 2048.0;
-  int tex = mf.addTexture(ts::texelIndexTexture(int(T)));
-  ts::Panel p;
-  p.id = "texel_index";
-  p.viewport = {0, 0, N, N};
-  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+  const int T = 2048;
+  int tex = mf.addTexture(ts::texelIndexTexture(T));
+  ts::Panel p = ts::layout::unitPanel("texel_index", {0, 0, N, N});
   addSquare(mf, p, v, tex, false);
   mf.panels.push_back(p);
   ts::Image img = r.renderOffscreen(mf);
-
-  // Samples per diagonal segment and side: [segment][side][s or t].
-  constexpr int kSegments = 8;
-  std::vector<ts::probe::Sample> samples[kSegments][2][2];
-  const double band = N / 16.0;
-  double worst = 0;
-  for (int y = 0; y < N; ++y)
-    for (int x = 0; x < N; ++x) {
-      glm::dvec2 ab((x + 0.5) / N, 1.0 - (y + 0.5) / N);
-      glm::dvec2 want = analytic(v, ab) * T;
-      int i = 0, j = 0;
-      ts::decodeTexelIndex(img.at(x, y), &i, &j);
-      // Unwrap the index to the repeat the analytic value is in.
-      double si = i + T * std::round((want.x - i - 0.5) / T) + 0.5;
-      double ti = j + T * std::round((want.y - j - 0.5) / T) + 0.5;
-      worst = std::max({worst, std::abs(std::floor(want.x) + 0.5 - si), std::abs(std::floor(want.y) + 0.5 - ti)});
-      // Signed distance (pixels) from the diagonal, positive in the second
-      // triangle, and position along it in [0, 1].
-      bool tlbr = v.diagonal == Diagonal::TopLeftBottomRight;
-      double d = (tlbr ? ab.x + ab.y - 1.0 : ab.y - ab.x) * N / std::sqrt(2.0);
-      double along = tlbr ? (ab.x - ab.y + 1.0) / 2.0 : (ab.x + ab.y) / 2.0;
-      if (std::abs(d) < 1.5 || std::abs(d) > band || along <= 0 || along >= 1) continue;
-      int seg = std::min(kSegments - 1, int(along * kSegments));
-      glm::dvec2 c = segmentCentre(v.diagonal, seg, kSegments);
-      int side = d < 0 ? 0 : 1;
-      // Local coordinates around the segment's centre keep the fit well
-      // conditioned and its gradient at (0, 0) the gradient on the diagonal.
-      samples[seg][side][0].push_back({ab.x - c.x, ab.y - c.y, si});
-      samples[seg][side][1].push_back({ab.x - c.x, ab.y - c.y, ti});
-    }
-  *texelError = worst;
-  double kink = 0;
-  for (auto& seg : samples)
-    for (int k = 0; k < 2; ++k) {
-      ts::probe::Fit a = ts::probe::fit(seg[0][k], true), b = ts::probe::fit(seg[1][k], true);
-      kink = std::max(kink, quadmap::angleDeg({a.c[1], a.c[2]}, {b.c[1], b.c[2]}));
-    }
-  return kink;
+  return quadmeasure::kinkDeg(img, T, v.diagonal, [&](glm::dvec2 ab) { return analytic(v, ab); }, texelError);
 }
 
 ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
   Variant current{Diagonal(diagonal_), Interp(interp_)};
-  std::vector<Variant> todo{current};
-  if (view_ == 1)
-    todo = {{Diagonal::TopLeftBottomRight, kAffine}, {Diagonal::BottomLeftTopRight, kAffine},
-            {Diagonal(diagonal_), kBilinear}, {Diagonal(diagonal_), kProjective}};
   ts::Measurements out;
   Kinks kinks;
-  for (const Variant& v : todo) {
+  for (const Variant& v : shown()) {
     double texelError = 0;
     double kink = measureKink(r, v, &texelError);
     std::string name = variantName(v);

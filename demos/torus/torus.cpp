@@ -28,12 +28,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <map>
 #include <sstream>
 
 #include "common/error.hpp"
-#include "common/probe.hpp"
 #include "common/render.hpp"
 #include "common/layout.hpp"
 #include "common/scene.hpp"
@@ -42,6 +40,7 @@
 #include "common/orbit_camera.hpp"
 #include "common/user_texture.hpp"
 #include "torus_map.hpp"
+#include "torus_measure.hpp"  // the centre found in a texel-index render, and the ray to the mesh
 
 namespace {
 using torusmap::Mapping;
@@ -53,14 +52,8 @@ const glm::vec4 kMarker{0.95f, 0.1f, 0.2f, 1.0f}, kMarkerBox{0.55f, 0.0f, 0.1f, 
 
 using ts::layout::fmt;
 
-// Where the centre was found in one mapping (the measurement).
-struct Found {
-  bool visible = false;
-  glm::dvec2 screen{-1.0};  // pixels of the kMeasureSize render, top-left origin
-  glm::dvec2 nearestPixel{-1.0};
-  glm::dvec3 point{0.0};    // the mesh point a ray through `screen` hits
-};
-constexpr int kMeasureSize = 512;
+using torusmeasure::Found;  // where the centre was found in one mapping (the measurement)
+using torusmeasure::kMeasureSize;
 
 class Torus final : public ts::Scene {
  public:
@@ -146,7 +139,6 @@ class Torus final : public ts::Scene {
   // found: what measure() found for this mapping (null before it has).
   void addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale, const Found* found) const;
   void addTexture(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const;
-  Found find(ts::Renderer& r, Mapping m) const;
 
   int mapping_ = int(Mapping::Book), texture_ = 0, view_ = 0;
   bool marker_ = true;
@@ -227,9 +219,8 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
   std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
   const L::Cell& tc = cells[0];
   const int texSide = std::max(1, tc.picture.w * 3 / 4);  // the texture a little smaller than the tori
-  addTexture(f, {tc.picture.x + (tc.picture.w - texSide) / 2, tc.picture.y + (tc.picture.h - texSide) / 2, texSide, texSide},
-             tex, tc.scale);
-  L::caption(f, {tc.above.x0, tc.above.y0, tc.above.x1, tc.above.y0 + tc.above.h() / 2}, "texture", kWhite, tc.scale);
+  addTexture(f, L::centred(tc.picture, texSide, texSide), tex, tc.scale);
+  L::caption(f, L::halves(tc.above).first, "texture", kWhite, tc.scale);
   for (size_t k = 0; k < shown.size(); ++k) {
     const Mapping m = shown[k];
     const torusmap::Params tp = params(m);
@@ -237,11 +228,11 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
     const Founds* founds = measured.detailAs<Founds>();
     const Found* found = founds && founds->count(int(m)) ? &founds->at(int(m)) : nullptr;
     addTorus(f, c.picture, m, tex, c.scale, found);
-    const float mid = c.above.y0 + c.above.h() / 2;
-    L::caption(f, {c.above.x0, c.above.y0, c.above.x1, mid},
-               m == Mapping::Book ? "s=theta/360, t=phi/360" : "s=theta/360+1/2, t=phi/360+1/2", kWhite, c.scale);
+    const auto [mapping, centre] = L::halves(c.above);
+    L::caption(f, mapping, m == Mapping::Book ? "s=theta/360, t=phi/360" : "s=theta/360+1/2, t=phi/360+1/2", kWhite,
+               c.scale);
     glm::dvec3 answer = torusmap::centrePoint(tp);
-    L::caption(f, {c.above.x0, mid, c.above.x1, c.above.y1},
+    L::caption(f, centre,
                "centre at (0, 0, " + fmt("%.2f", answer.z) + ")" + (m == Mapping::Book ? " = -(R - r)" : " = R + r"),
                kWhite, c.scale);
     if (found)
@@ -253,104 +244,8 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
   return f;
 }
 
-// Möller–Trumbore: distance along the ray to the triangle, or +inf.
-double hit(glm::dvec3 o, glm::dvec3 d, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
-  glm::dvec3 e1 = b - a, e2 = c - a, pv = glm::cross(d, e2);
-  double det = glm::dot(e1, pv);
-  if (std::abs(det) < 1e-14) return std::numeric_limits<double>::infinity();
-  glm::dvec3 tv = o - a;
-  double u = glm::dot(tv, pv) / det;
-  glm::dvec3 qv = glm::cross(tv, e1);
-  double v = glm::dot(d, qv) / det, t = glm::dot(e2, qv) / det;
-  if (u < -1e-9 || v < -1e-9 || u + v > 1 + 1e-9 || t <= 0) return std::numeric_limits<double>::infinity();
-  return t;
-}
-
-// Where (1/2, 1/2) is on the screen and on the torus, from a render with the
-// texel-index texture (N = 2048, GL_NEAREST, GL_REPEAT) at a fixed size.
-Found Torus::find(ts::Renderer& r, Mapping m) const {
-  const int N = 2048, S = kMeasureSize;
-  const torusmap::Params tp = params(m);
-  const ts::Mesh mesh = torusmap::mesh(tp);
-  ts::Frame mf;
-  mf.width = mf.height = S;
-  mf.clearColor = glm::vec4(0.0f);  // alpha 0: not the torus (every texel has alpha 255)
-  int tex = mf.addTexture(ts::texelIndexTexture(N));
-  ts::Panel p;
-  p.id = "texel_index";
-  p.viewport = {0, 0, S, S};
-  p.projection = projection();
-  p.modelview = modelview(tp);
-  p.depthTest = true;
-  ts::Batch b = ts::meshBatch(mesh, tex);
-  b.texEnv = GL_REPLACE;
-  p.batches.push_back(b);
-  mf.panels.push_back(p);
-  ts::Image img = r.renderOffscreen(mf);
-
-  // Pixels within 0.02 of the centre in s and t (7.2° of θ and of φ): a
-  // neighbourhood of some hundred pixels where s and t are nearly linear in
-  // the pixel position.  Fit them and solve s = t = 1/2.
-  const double near = 0.02;
-  std::vector<ts::probe::Sample> ss, st;
-  double best = 1e9;
-  Found out;
-  glm::dvec2 mean(0.0);
-  std::vector<glm::dvec4> px;  // x, y, ds, dt
-  for (int y = 0; y < S; ++y)
-    for (int x = 0; x < S; ++x) {
-      ts::Rgba c = img.at(x, y);
-      if (c.a == 0) continue;
-      int i = 0, j = 0;
-      ts::decodeTexelIndex(c, &i, &j);
-      double ds = (i + 0.5) / N - 0.5, dt = (j + 0.5) / N - 0.5;
-      ds -= std::round(ds), dt -= std::round(dt);  // GL_REPEAT: 1.5 is 0.5
-      double d = std::hypot(ds, dt);
-      if (d < best) best = d, out.nearestPixel = {x + 0.5, y + 0.5};
-      if (std::abs(ds) < near && std::abs(dt) < near) px.push_back({x + 0.5, y + 0.5, ds, dt}), mean += glm::dvec2(x + 0.5, y + 0.5);
-    }
-  if (px.size() < 12) return out;  // too few pixels show it: hidden (or off screen)
-  mean /= double(px.size());
-  for (const auto& q : px) {
-    ss.push_back({q.x - mean.x, q.y - mean.y, q.z});
-    st.push_back({q.x - mean.x, q.y - mean.y, q.w});
-  }
-  // Quadratics absorb the perspective and the curvature over the
-  // neighbourhood; Newton's method from its middle finds s = t = 1/2.
-  ts::probe::Fit fs = ts::probe::fit(ss, true), ft = ts::probe::fit(st, true);
-  glm::dvec2 d(0.0);
-  for (int it = 0; it < 8; ++it) {
-    double a = fs.dx(d.x, d.y), b = fs.dy(d.x, d.y), c = ft.dx(d.x, d.y), e = ft.dy(d.x, d.y), det = a * e - b * c;
-    if (std::abs(det) < 1e-12) return out;
-    double fsv = fs.at(d.x, d.y), ftv = ft.at(d.x, d.y);
-    d -= glm::dvec2((e * fsv - b * ftv) / det, (a * ftv - c * fsv) / det);
-  }
-  out.screen = mean + d;
-  // Half hidden (the near rim covers the solution, e.g. at a low tilt): the
-  // pixel there shows some other texel, and the point is not what is seen.
-  {
-    int x = int(std::floor(out.screen.x)), y = int(std::floor(out.screen.y)), i = 0, j = 0;
-    if (x < 0 || y < 0 || x >= S || y >= S || img.at(x, y).a == 0) return out;
-    ts::decodeTexelIndex(img.at(x, y), &i, &j);
-    double ds = (i + 0.5) / N - 0.5, dt = (j + 0.5) / N - 0.5;
-    if (std::abs(ds - std::round(ds)) >= near || std::abs(dt - std::round(dt)) >= near) return out;
-  }
-  // Unproject: the pixel position to normalised device coordinates, the
-  // near and far points back to the torus's coordinates; nearest hit.
-  glm::dmat4 inv = glm::inverse(glm::dmat4(p.projection) * glm::dmat4(p.modelview));
-  glm::dvec2 ndc(2.0 * out.screen.x / S - 1.0, 1.0 - 2.0 * out.screen.y / S);
-  glm::dvec4 a = inv * glm::dvec4(ndc, -1.0, 1.0), z = inv * glm::dvec4(ndc, 1.0, 1.0);
-  glm::dvec3 o = glm::dvec3(a) / a.w, dir = glm::normalize(glm::dvec3(z) / z.w - o);
-  double tBest = std::numeric_limits<double>::infinity();
-  std::vector<unsigned> tri = mesh.triangles();
-  for (size_t k = 0; k + 2 < tri.size(); k += 3)
-    tBest = std::min(tBest, hit(o, dir, mesh.points[tri[k]].pos, mesh.points[tri[k + 1]].pos, mesh.points[tri[k + 2]].pos));
-  if (!std::isfinite(tBest)) return out;
-  out.point = o + tBest * dir;
-  out.visible = true;
-  return out;
-}
-
+// The centre is found in a texel-index render with the picture's camera, and
+// a ray through it cast against the mesh (torus_measure.hpp).
 ts::Measurements Torus::measure(ts::Renderer& r) {
   std::vector<Mapping> todo = view_ == 0 ? std::vector<Mapping>{Mapping(mapping_)}
                                          : std::vector<Mapping>{Mapping::Book, Mapping::Front};
@@ -358,7 +253,7 @@ ts::Measurements Torus::measure(ts::Renderer& r) {
   Founds founds;
   for (Mapping m : todo) {
     const torusmap::Params tp = params(m), other = params(m == Mapping::Book ? Mapping::Front : Mapping::Book);
-    Found fd = find(r, m);
+    Found fd = torusmeasure::find(r, tp, projection(), modelview(tp));
     founds[int(m)] = fd;
     const std::string n = std::string("[") + kMappingNames[int(m)] + "]";
     const glm::dvec3 answer = torusmap::centrePoint(tp);

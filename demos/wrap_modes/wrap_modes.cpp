@@ -50,29 +50,18 @@
 #include "common/textures.hpp"
 #include "wrap_math.hpp"
 #include "wrap_passes.hpp"
+#include "wrap_views.hpp"  // the texture-space panel and the env view's lit planes
 
 namespace {
 const GLenum kModes[] = {GL_REPEAT, GL_MIRRORED_REPEAT, GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER};
 const char* const kModeNames[] = {"repeat", "mirrored", "clamp", "edge", "border"};
-const GLenum kEnvs[] = {GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD};
-const char* const kEnvNames[] = {"replace", "modulate", "decal", "blend", "add"};
-const char* const kEnvGL[] = {"GL_REPLACE", "GL_MODULATE", "GL_DECAL", "GL_BLEND", "GL_ADD"};
-const glm::vec4 kEnvColour{0.2f, 0.6f, 1.0f, 1.0f};  // GL_TEXTURE_ENV_COLOR for GL_BLEND
 const char* const kModeGL[] = {"GL_REPEAT", "GL_MIRRORED_REPEAT", "GL_CLAMP", "GL_CLAMP_TO_EDGE", "GL_CLAMP_TO_BORDER"};
-const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kSquare{1.0f, 0.85f, 0.1f, 1.0f}, kGrid{0.55f, 0.55f, 0.6f, 1.0f},
-    kMeasured{1.0f, 0.75f, 0.3f, 1.0f}, kBorderColour{0.85f, 0.1f, 0.75f, 1.0f};
+const glm::vec4 kBorderColour{0.85f, 0.1f, 0.75f, 1.0f};
+const glm::vec4 &kWhite = ts::layout::kWhite, &kMeasured = ts::layout::kAmber;
 using ts::layout::fmt;
 using wrappass::stQuad;
-
-// What measure() found, for the captions.
-struct Found {
-  std::map<int, int> mismatches;      // mode index -> texel mismatches (both passes, both sizes)
-  std::map<int, double> borderAt0;    // mode index -> % border at s = 0 (linear)
-  int seedDiffers = 0, integers = 0;  // seed 002's MIRROR vs GL at integer s
-  int matrixMismatches = -1;
-  int envMismatches = -1;
-  double peak[2] = {-1, -1};  // the highlight's peak (mean of R, G, B): specular in the primary colour | separate
-};
+using wrapview::kEnvs, wrapview::kEnvNames, wrapview::kEnvGL, wrapview::kEnvColour;
+using wrapview::Found;  // what measure() found, for the captions
 
 class WrapModes final : public ts::Scene {
  public:
@@ -147,13 +136,9 @@ class WrapModes final : public ts::Scene {
     x.scale.y = x.scale.x;
     return wrapmath::textureMatrix(x);
   }
-  // The texture-space picture: the quad over [lo, hi]^2, the integer grid,
-  // the unit square (or its image under the texture matrix).
-  void addTextureSpace(ts::Frame& f, const ts::Rect& vp, const std::string& id, int tex, bool matrixOutline) const;
-
-  // The environment view: a plane lit per vertex (wrap_math.hpp's phong)
-  // under the RGBA texture, in mode `env`; `separate` sends the specular part
-  // as the secondary colour (GL_COLOR_SUM), else it is in the primary colour.
+  // The environment view (wrap_views.hpp): a plane lit per vertex under the
+  // RGBA texture in each mode; separate_ sends the specular part as the
+  // secondary colour (GL_COLOR_SUM), else it is in the primary colour.
   ts::Frame envFrame(int width, int height, const Found* found) const;
   int view_ = 0, wrapS_ = 1, wrapT_ = 1, filter_ = 0, env_ = 0;
   bool separate_ = true;
@@ -165,39 +150,9 @@ class WrapModes final : public ts::Scene {
   ts::TextureDesc fileTexture_;
 };
 
-void WrapModes::addTextureSpace(ts::Frame& f, const ts::Rect& vp, const std::string& id, int tex, bool matrixOutline) const {
-  const float lo = -range_, hi = 1.0f + range_;
-  ts::Panel p;
-  p.id = id;
-  p.viewport = vp;
-  // A whole number of pixels per texel where the picture is larger than the
-  // texels it shows: then no texel edge passes through a pixel centre, where
-  // GL may take either texel (and OSMesa and EGL do differ there).
-  const ts::TextureDesc& t = f.textures[size_t(tex)];
-  const int tw = int(std::lround(t.image ? t.image->width * (hi - lo) : 0.0)),
-            th = int(std::lround(t.image ? t.image->height * (hi - lo) : 0.0));
-  if (tw > 0 && th > 0 && tw <= vp.w && th <= vp.h) {
-    p.viewport.w = vp.w / tw * tw, p.viewport.h = vp.h / th * th;
-    p.viewport.x += (vp.w - p.viewport.w) / 2, p.viewport.y += (vp.h - p.viewport.h) / 2;
-  }
-  p.projection = glm::ortho(lo, hi, lo, hi, -1.0f, 1.0f);
-  p.batches.push_back(stQuad({lo, lo}, {hi, hi}, {lo, lo}, {hi, hi}, tex));
-  std::vector<glm::vec2> grid;
-  for (int k = int(std::ceil(lo)); k <= int(std::floor(hi)); ++k)
-    grid.insert(grid.end(), {{float(k), lo}, {float(k), hi}, {lo, float(k)}, {hi, float(k)}});
-  p.batches.push_back(ts::lineSegments(grid, kGrid, 1.0f, "integer_grid"));
-  std::vector<glm::vec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  if (matrixOutline)  // where the quad's corners land in texture space: M (s, t, 0, 1)
-    for (auto& c : square) c = glm::vec2(wrapmath::transformST(matrix(), c.x, c.y));
-  p.batches.push_back(ts::lineLoop(square, kSquare, 2.0f, "unit_square"));
-  f.panels.push_back(p);
-}
-
 ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measured) const {
   namespace L = ts::layout;
-  ts::Frame f;
-  f.width = width, f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  ts::Frame f = L::blankFrame(width, height);
   const Found* found = measured.detailAs<Found>();
   const L::Box area{6, 6, float(width) - 6, float(height) - 6};
   if (view_ == 0) {  // the book figure: columns = modes, rows = filters
@@ -208,7 +163,8 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
       const int m = k % 5;
       const bool linear = k >= 5;
       int tex = f.addTexture(texture(kModes[m], kModes[m], linear));
-      addTextureSpace(f, cells[size_t(k)].picture, std::string(kModeNames[m]) + (linear ? "_linear" : "_nearest"), tex, false);
+      wrapview::addTextureSpace(f, cells[size_t(k)].picture, std::string(kModeNames[m]) + (linear ? "_linear" : "_nearest"), tex,
+                                range_);
       L::caption(f, cells[size_t(k)].above, std::string(kModeGL[m]) + (linear ? " linear" : " nearest"), kWhite,
                  cells[size_t(k)].scale);
       std::string note;
@@ -226,7 +182,7 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
     L::FlowSpec spec;
     spec.n = 1, spec.linesAbove = 1, spec.linesBelow = 2;
     L::Cell c = L::flow(area, spec)[0];
-    addTextureSpace(f, c.picture, "texture_space", tex, false);
+    wrapview::addTextureSpace(f, c.picture, "texture_space", tex, range_);
     // The quad's fragment colours run from orange to blue: the environment
     // (key e) combines them with the texels, GL_BLEND with kEnvColour.
     ts::Batch& q = f.panels.back().batches.front();
@@ -246,7 +202,8 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
   L::FlowSpec spec;
   spec.n = 2, spec.linesAbove = 1, spec.linesBelow = 1;
   std::vector<L::Cell> cells = L::flow(area, spec);
-  addTextureSpace(f, cells[0].picture, "texture_space", tex, true);
+  const glm::mat4 m = matrix();
+  wrapview::addTextureSpace(f, cells[0].picture, "texture_space", tex, range_, &m);
   L::caption(f, cells[0].above, "texture space: M (unit square)", kWhite, cells[0].scale);
   L::caption(f, cells[0].below, state, kWhite, cells[0].scale);
   ts::Panel q;
@@ -268,13 +225,6 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
 }
 
 ts::Frame WrapModes::envFrame(int width, int height, const Found* found) const {
-  namespace L = ts::layout;
-  ts::Frame f;
-  f.width = width, f.height = height;
-  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
-  L::FlowSpec spec;
-  spec.n = 6, spec.linesAbove = 1, spec.linesBelow = 1, spec.gap = 8;
-  std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
   // The texture: RGBA with an alpha ramp for GL_DECAL (whose alpha is the
   // fragment's, so the picture stays opaque); opaque for the others, whose
   // alpha would be At or Af At and show the page through the figure (the
@@ -284,28 +234,7 @@ ts::Frame WrapModes::envFrame(int width, int height, const Found* found) const {
     ramp = ts::gradientTexture(npot_ ? 7 : 8, npot_ ? 5 : 8, true);
     ramp.wrapS = ramp.wrapT = GL_CLAMP_TO_EDGE;
   }
-  const int texOpaque = f.addTexture(opaque), texRamp = f.addTexture(ramp);
-  for (int k = 0; k < 6; ++k) {
-    const GLenum env = k < 5 ? kEnvs[k] : GL_MODULATE;
-    const bool sep = k == 5 && separate_;
-    ts::Panel p;
-    p.id = k < 5 ? std::string("env_") + kEnvNames[k] : "env_separate_specular";
-    p.viewport = cells[size_t(k)].picture;
-    p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
-    ts::Batch b = wrappass::litPlane(env == GL_DECAL ? texRamp : texOpaque, env, kEnvColour, sep);
-    p.batches.push_back(b);
-    f.panels.push_back(p);
-    const L::Cell& cell = cells[size_t(k)];
-    L::caption(f, cell.above, k < 5 ? kEnvGL[k] : sep ? "MODULATE + SEPARATE_SPECULAR" : "MODULATE (single colour)", kWhite,
-               cell.scale);
-    std::string note;
-    if (found && found->peak[0] >= 0 && (k == 1 || k == 5))
-      note = fmt("highlight peak %.2f", found->peak[k == 5 && separate_ ? 1 : 0]);
-    else if (found && k == 0 && found->envMismatches >= 0)
-      note = fmt("table: %.0f mismatches", found->envMismatches);
-    if (!note.empty()) L::caption(f, cell.below, note, kMeasured, cell.scale);
-  }
-  return f;
+  return wrapview::envFrame(width, height, opaque, ramp, separate_, found);
 }
 
 // Measured in small offscreen passes (wrap_passes.hpp), each read back and

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <set>
 #include <sstream>
@@ -149,5 +150,36 @@ TEST(LayoutCheck, FindsWhatItLooksFor) {
   EXPECT_EQ(problems(f).size(), 1u);
   f.labels.back() = {25, 25, "onto", glm::vec4(1), 1, ts::Align::Left};
   EXPECT_EQ(problems(f).size(), 1u);
+}
+
+// The kit's small pieces the demos share: a picture centred in a cell keeps
+// its size, lies inside the cell with margins at most a pixel apart; a band
+// cut in halves is covered exactly by two equal, disjoint halves; a unit
+// panel maps (0, 0) and (1, 1) to its viewport's bottom-left and top-right.
+TEST(LayoutKit, CentredHalvesAndUnitPanel) {
+  const ts::Rect cell{10, 20, 101, 60};
+  const ts::Rect r = ts::layout::centred(cell, 40, 25);
+  EXPECT_EQ(r.w, 40);
+  EXPECT_EQ(r.h, 25);
+  EXPECT_TRUE(ts::layout::box(r).inside(ts::layout::box(cell)));
+  EXPECT_LE(std::abs((r.x - cell.x) - (cell.x + cell.w - r.x - r.w)), 1);
+  EXPECT_LE(std::abs((r.y - cell.y) - (cell.y + cell.h - r.y - r.h)), 1);
+  const Box band{3.5f, 7.25f, 90.0f, 41.75f};
+  const auto [top, bottom] = ts::layout::halves(band);
+  EXPECT_EQ(top.y0, band.y0);
+  EXPECT_EQ(top.y1, bottom.y0);
+  EXPECT_EQ(bottom.y1, band.y1);
+  EXPECT_FLOAT_EQ(top.h(), bottom.h());
+  EXPECT_EQ(top.x0, band.x0);
+  EXPECT_EQ(bottom.x1, band.x1);
+  EXPECT_FALSE(top.overlaps(bottom));
+  const ts::Panel p = ts::layout::unitPanel("unit", {30, 40, 100, 50});
+  const glm::vec2 lo = ts::panelToPixels(p, p.projection * glm::vec4(0, 0, 0, 1));
+  const glm::vec2 hi = ts::panelToPixels(p, p.projection * glm::vec4(1, 1, 0, 1));
+  EXPECT_NEAR(lo.x, 30.0f, 1e-4f);
+  EXPECT_NEAR(lo.y, 90.0f, 1e-4f);
+  EXPECT_NEAR(hi.x, 130.0f, 1e-4f);
+  EXPECT_NEAR(hi.y, 40.0f, 1e-4f);
+  EXPECT_TRUE(p.batches.empty());
 }
 }  // namespace

@@ -16,6 +16,9 @@
 //   <id>.live_view_matches_png    for a demo with a live view (Scene::live,
 //                                 started with --view live): as above, in
 //                                 that view (clock readings not compared)
+//   <id>.resize_sequence          the window resized to 640x480, 700x1000 and
+//                                 1280x720 in turn: at each size the figure
+//                                 is the --png render at its new size.
 //   <id>.mouse_light              a right drag moves --light1-az/--light1-el
 //                                 (demos that have them: bump_mapping).
 //   <id>.state_flags_round_trip   parse(stateFlags()) reproduces the state,
@@ -787,6 +790,86 @@ void dropFile(const std::string& id) {
   EXPECT_EQ(lines.back(), want.opts.stateText()) << "the dropped file is not the texture";
 }
 
+// A resize sequence (issue 13.2): the window opened at the tests' size is
+// resized to a small landscape, a portrait and a laptop's size in turn
+// (TS_TEST_RESIZE); at each size the figure left of the side panel must be
+// the --png render at the figure's size then (so the layout and the numbers
+// follow the window), and nothing of the figure is drawn under the panel.
+void resizeSequence(const std::string& id) {
+  const std::vector<std::pair<int, int>> sizes = {{gWidth, gHeight}, {640, 480}, {700, 1000}, {1280, 720}};
+  std::string dir = outDir() + "/" + id + "/resize";
+  mkdirs(dir);
+  std::string prog = binDir() + "/" + id, W = dir + "/window.png";
+  std::string seq;
+  for (size_t i = 1; i < sizes.size(); ++i) seq += std::to_string(sizes[i].first) + "x" + std::to_string(sizes[i].second) + " ";
+  Proc win;
+  win.argv = {"env", "TS_TEST_RESIZE=" + seq, "xvfb-run", "-a", "-s", kXvfbScreen, prog,
+              "--size", std::to_string(gWidth) + "x" + std::to_string(gHeight), "--frames", std::to_string(kFrames),
+              "--screenshot", W};
+  win.outPath = dir + "/window.stdout";
+  win.errPath = dir + "/window.stderr";
+  win.spawn();
+  // The --png renders of each size run beside the window.
+  std::vector<Proc> pngs(sizes.size());
+  for (size_t i = 0; i < sizes.size(); ++i) {
+    int figureW = ts::splitWindow(sizes[i].first, true, false).figureW;
+    std::string tag = std::to_string(sizes[i].first) + "x" + std::to_string(sizes[i].second);
+    pngs[i].argv = {prog, "--size", std::to_string(figureW) + "x" + std::to_string(sizes[i].second), "--png",
+                    dir + "/png." + tag + ".png"};
+    pngs[i].outPath = dir + "/png." + tag + ".stdout";
+    pngs[i].errPath = dir + "/png." + tag + ".stderr";
+  }
+  for (auto& p : pngs) {
+    p.spawn();
+    while (!p.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  while (!win.poll()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_EQ(win.exitCode, 0) << win.describe();
+  for (size_t i = 0; i < sizes.size(); ++i) {
+    const auto [ww, wh] = sizes[i];
+    std::string tag = std::to_string(ww) + "x" + std::to_string(wh);
+    ASSERT_EQ(pngs[i].exitCode, 0) << pngs[i].describe();
+    ts::Image w, p, picture;
+    try {
+      w = ts::readPng(dir + "/window." + tag + ".png");
+      p = ts::readPng(dir + "/png." + tag + ".png");
+    } catch (const std::exception& e) {
+      FAIL() << "at " << tag << ": " << e.what() << "\n" << win.describe();
+    }
+    ASSERT_EQ(w.width, ww) << "the window was not resized to " << tag << " (a window manager?)";
+    ASSERT_EQ(w.height, wh) << "the window was not resized to " << tag;
+    int figureW = p.width;
+    ts::Image left(figureW, wh);
+    for (int y = 0; y < wh; ++y)
+      for (int x = 0; x < figureW; ++x) left.set(x, y, w.at(x, y));
+    Diff d = compare(left, p, &picture);
+    if (d.anyDiff) ts::writePng(dir + "/diff." + tag + ".png", picture);
+    bool egl = pngs[i].out.find(" | egl | ") != std::string::npos;
+    Bounds bounds = egl ? kEglBounds : kOsmesaBounds;
+    std::printf("[ measured ] %s/resize %s: %ld px (%.4f%%) differ by more than %d, %ld with no match within one pixel\n",
+                id.c_str(), tag.c_str(), d.overSmall, 100.0 * double(d.overSmall) / double(d.pixels), kSmallDiff,
+                d.unexplained);
+    EXPECT_LE(double(d.overSmall) / double(d.pixels), bounds.maxFraction)
+        << "after resizing to " << tag << " the figure is not the --png render at " << figureW << "x" << wh << " ("
+        << dir << ")";
+    EXPECT_LE(d.unexplained, bounds.maxUnexplained) << "at " << tag << " (" << dir << ")";
+    ts::Rgba clear = w.at(ww - 1, wh - 1);
+    long other = 0;
+    for (int y = 0; y < wh; ++y)
+      for (int x = figureW; x < ww; ++x) other += channelDiff(w.at(x, y), clear) > kSmallDiff;
+    EXPECT_EQ(other, 0) << "at " << tag << " the figure reaches under the side panel (x >= " << figureW << ")";
+  }
+  // The numbers printed last (measured again at the last size) are --png's at that size.
+  Fresh f(id);
+  std::vector<Number> wm = measurements(win.out, f.opts, true), pm = measurements(pngs.back().out, f.opts, false);
+  EXPECT_EQ(names(wm), names(pm)) << "after the resizes the window and --png print different measurements";
+  for (size_t i = 0; i < std::min(wm.size(), pm.size()); ++i)
+    if (wm[i].name == pm[i].name && !isTiming(wm[i].name)) {
+      EXPECT_NEAR(wm[i].value, pm[i].value, kMeasurementAbs + kMeasurementRel * std::abs(pm[i].value))
+          << wm[i].name << " after the resizes: the window measured " << wm[i].value << ", --png " << pm[i].value;
+    }
+}
+
 // parse(stateFlags()) on a fresh Options must give back the state.
 void roundTrip(const std::string& id, const ts::Options& state, const std::string& what) {
   Fresh f(id);
@@ -1027,6 +1110,7 @@ void registerAll() {
         f.opts.handleKey('c');
         paneBesideFigure(id, "lc", f.opts, "glTexCoord4f(1.1, ");
       });
+    registerCase(id, "resize_sequence", [id] { resizeSequence(id); });
     registerCase(id, "usual_keys", [id] { usualKeys(id); });
     registerCase(id, "mouse_orbit", [id] { mouseOrbit(id); });
     if (probe.opts.has("light1-az") && probe.opts.has("light1-el")) registerCase(id, "mouse_light", [id] { mouseLight(id); });

@@ -1,0 +1,282 @@
+// Environment mapping: one world in four parameterizations, and where each
+// one is wrong (Buss VI.3; seeds 001, 002).
+//
+// The claim: a mirror-like object shows the world in the direction of the
+// reflected ray, r = v - 2 (v.n) n (Buss VI.3; v from the eye to the surface,
+// n the unit normal), and an environment map is a table of the world by
+// direction.  How the table is laid out decides where the picture is wrong:
+//   lat-long (Blinn–Newell)  s = λ/2π + 1/2, t = φ/π + 1/2: a seam where λ
+//       wraps and whole rows of texels at the poles
+//   cube map (GL_TEXTURE_CUBE_MAP)  face = the largest |r_i|, (s, t) from the
+//       other two over it (env_world.hpp has the spec's table); texels 3√3
+//       times larger in solid angle at a face's centre than at its corners
+//   sphere map (GL_SPHERE_MAP)  m = 2 sqrt(r_x^2 + r_y^2 + (r_z + 1)^2),
+//       s = r_x/m + 1/2: made for one eye; the whole back is squeezed into its rim
+//   dual paraboloid  s = r_x / (2 (1 + |r_z|)) + 1/2 on two discs: no seam
+//       inside a disc, a ring where they meet
+// and whether r is computed per vertex (texgen: glTexGeni(GL_S,
+// GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP) or GL_SPHERE_MAP, then (s,t,r)
+// interpolated) or per pixel (GLSL).  The world (env_world.hpp) is made so any
+// direction can be read: colour = direction, lines every 15°, the six cube
+// faces named.  Measured against the exact r per pixel: the direction error in
+// degrees of every parameterization x per vertex/pixel for the object shown,
+// and where it is largest (env_measure.hpp); texels per steradian, largest / smallest, at equal memory;
+// a sphere map reused as the eye turns; seed 001's cube example read back;
+// seed 002's u = N_x/2 + 1/2 against GL_SPHERE_MAP and its R = 2 N_z N - I
+// against r off the view axis; the flat mirror that cannot show a nearby ball.
+//
+// Keys (each is also a flag, see --help):
+//   p  parameterization        o  object: sphere | torus | mirror
+//   e  evaluate r per pixel | per vertex      v  view: object | map | compare
+//   ] / [  turn the object     . / ,  tilt it (also the arrows)
+//   left drag, wheel: the eye orbits, zooms   s  sphere map made for: this eye | the first eye
+//   + / -  memory (texels a cube face side; the others as many texels)
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "common/layout.hpp"
+#include "common/orbit_camera.hpp"
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "common/textures.hpp"
+#include "env_gl.hpp"
+#include "env_measure.hpp"
+#include "env_studies.hpp"
+#include "env_world.hpp"
+
+namespace {
+using ts::layout::fmt;
+using ts::layout::kAmber;
+using ts::layout::kWhite;
+enum View { kObjectView, kMapView, kCompareView };
+const char* const kEval[] = {"pixel", "vertex"};
+
+// What measure() found: the numbers for the captions and the pictures.
+struct Found {
+  envmeasure::ErrorStats current;                    // the shown state
+  std::array<envmeasure::ErrorStats, 4> compare;     // each parameterization, this object and evaluation
+  ts::Image picture, reference, error, map;          // object view, map view
+  std::array<ts::Image, 4> pictures;                 // compare view
+  envstudy::Mirror mirror;
+  double errorScale = 1;  // degrees shown yellow in the error picture
+};
+
+class EnvironmentMapping final : public ts::Scene {
+ public:
+  std::string id() const override { return "environment_mapping"; }
+  std::string title() const override { return "Environment mapping: four parameterizations (Buss VI.3)"; }
+  std::string about() const override {
+    return "A mirror sphere, torus or flat mirror reflecting one legible world (colour = direction, 15-degree grid,\n"
+           "cube faces named) stored as a lat-long map, a cube map (GL_REFLECTION_MAP texgen), a sphere map\n"
+           "(GL_SPHERE_MAP texgen) and a dual paraboloid (GLSL), at equal memory, r per vertex or per pixel.\n"
+           "Measured against the exact reflection per pixel: direction error in degrees and where it concentrates;\n"
+           "texels per steradian; a sphere map reused as the eye turns; seed 001's cube example; seed 002's sphere and\n"
+           "cube formulas off the view axis; a ball near the flat mirror that no environment map can show.";
+  }
+  int defaultWidth() const override { return 1080; }
+  int defaultHeight() const override { return 440; }
+  std::vector<std::string> claim() const override { return {"error_mean_deg[shown]", "error_max_deg[shown]"}; }
+  void addOptions(ts::Options& o) override {
+    std::vector<std::string> params(envmap::kParamKeys, envmap::kParamKeys + 4);
+    o.addEnum("param", &param_, params, "how the world is stored: latlong | cube | sphere | paraboloid", 'p');
+    o.addEnum("object", &object_, {"sphere", "torus", "mirror"}, "the mirror object", 'o');
+    o.addEnum("eval", &eval_, {"pixel", "vertex"}, "r per pixel (GLSL) or per vertex (texgen / vertex shader), interpolated", 'e');
+    o.addEnum("view", &view_, {"object", "map", "compare"},
+              "object: picture | reference | error; map: the unwrapped map, the texels the object reads lit; compare: the four maps", 'v');
+    o.addFloat("turn", &turn_, -180.0f, 180.0f, "turn the object about the vertical, degrees", ']', '[', 15.0f);
+    o.addFloat("tilt", &tilt_, -90.0f, 90.0f, "tilt the object about the horizontal, degrees", '.', ',', 15.0f);
+    o.addEnum("sphere-eye", &sphereEye_, {"this", "first"},
+              "the sphere map is made for this eye, or for the first one (yaw 0, pitch 0) and reused", 's');
+    o.addInt("face", &face_, 16, 256, "memory: texels along a cube face's side (6 face^2 texels; the others as many)", '+', '-', 16);
+    o.addInt("render", &render_, 64, 1024, "side of the rendered pictures in pixels");
+    orbit_.addOptions(o);
+  }
+  std::vector<ts::FigureSpec> figures() const override {
+    return {{"env_cube_sphere", "Buss VI.3 (seeds 001, 002)",
+             "A mirror sphere reflecting the world stored as a cube map, r per vertex by GL_REFLECTION_MAP texgen: "
+             "the picture, the exact reflection per pixel, and the direction error in degrees (black 0, yellow 4 or more).",
+             {"--eval", "vertex"}, 1080, 440},
+            {"env_compare_torus", "Buss VI.3 (seed 001)",
+             "A torus in the four parameterizations at equal memory (24,576 texels), r per vertex: lat-long tears at "
+             "its seam, the sphere map smears toward its rim; the reference is the exact reflection per pixel.",
+             {"--view", "compare", "--object", "torus", "--eval", "vertex", "--tilt", "30"}, 1280, 360},
+            {"env_latlong_map", "Buss VI.3 (seed 001)",
+             "The lat-long map unwrapped, the texels the flat mirror reads lit: a region at the +Y pole, spread along "
+             "whole rows and cut in two by the seam at the map's left and right edges.",
+             {"--view", "map", "--param", "latlong", "--object", "mirror"}, 1080, 440},
+            {"env_cube_map", "Buss VI.3 (seed 001)",
+             "The cube map's six faces as GL stores them (s right, t down), the texels the flat mirror reads lit: one "
+             "small patch of +Y, magnified across the whole mirror, texels visible.",
+             {"--view", "map", "--param", "cube", "--object", "mirror"}, 1080, 440},
+            {"env_flat_mirror", "Buss VI.3 (seed 001)",
+             "A flat mirror leaning back 35 degrees, lat-long with r per vertex: the seam runs across it, and a ball "
+             "near the mirror (red in the reference) is in no environment map; one made at the mirror's centre would "
+             "show it many times too large.",
+             {"--object", "mirror", "--param", "latlong", "--eval", "vertex"}, 1080, 440}};
+  }
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
+  ts::Measurements measure(ts::Renderer& r) override;
+
+ private:
+  envgl::Pass pass(int param, int object, bool perVertex, bool directions, int size) const {
+    envgl::Pass p;
+    p.param = param, p.object = object, p.perVertex = perVertex, p.directions = directions;
+    p.view = envstudy::viewMatrix(orbit_.yaw, orbit_.pitch);
+    p.projection = envstudy::projectionMatrix(orbit_.zoom);
+    p.model = glm::rotate(glm::mat4(1.0f), glm::radians(tilt_), glm::vec3(1, 0, 0)) *
+              glm::rotate(glm::mat4(1.0f), glm::radians(turn_), glm::vec3(0, 1, 0));
+    p.sphereView = glm::dmat3(glm::mat3(sphereEye_ ? envstudy::viewMatrix(0, 0) : p.view));
+    p.faceTexels = face_, p.w = p.h = size;
+    return p;
+  }
+  std::string stateName(int param) const {
+    return std::string(envmap::kParamLabels[param]) + ", r per " + kEval[eval_] +
+           (eval_ == 1 && param == envmap::kCube ? " (GL_REFLECTION_MAP)" : eval_ == 1 && param == envmap::kSphere ? " (GL_SPHERE_MAP)" : "");
+  }
+  // The error picture's scale: per pixel the maps are off by hundredths of a
+  // degree, per vertex by degrees; a larger 95th percentile (a stale sphere
+  // map) takes the next of 1, 2, 5 x 10^k above it.
+  double errorScale(double p95) const {
+    double scale = eval_ == 1 ? 4.0 : 0.25;
+    for (double step = 1; scale < p95; step *= 10)
+      for (double m : {1.0, 2.0, 5.0})
+        if (scale < p95) scale = std::max(scale, m * step);
+    return scale;
+  }
+  int param_ = envmap::kCube, object_ = envgl::kSphereObject, eval_ = 0, view_ = kObjectView, sphereEye_ = 0;
+  int face_ = 64, render_ = 320;
+  float turn_ = 0, tilt_ = 0;
+  ts::OrbitCamera orbit_;
+};
+
+ts::TextureDesc image(const ts::Image& img, const std::string& what) {
+  return ts::renderedImageTexture(img, "environment_mapping_render", what, "environment_mapping");
+}
+std::string statsLine(const envmeasure::ErrorStats& s) {
+  return fmt("error mean %.2f", s.mean) + fmt(", 95%% %.2f", s.p95) + fmt(", max %.1f deg", s.max) + " (" + s.maxRegion + ")";
+}
+
+ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurements& measured) const {
+  namespace L = ts::layout;
+  ts::Frame f = L::blankFrame(width, height);
+  const Found* found = measured.detailAs<Found>();
+  const L::Box area{6, 6, float(width) - 6, float(height) - 6};
+  auto show = [&](const L::Cell& c, const std::string& id, const ts::Image* img, const std::string& above,
+                  const std::string& below) {
+    if (img && img->width > 0) {
+      // The object pictures are resampled to the panel with GL_LINEAR: with
+      // GL_NEAREST the panel's middle row and column sample exactly between
+      // two pixels, where backends round apart.  The map keeps its texels sharp.
+      ts::TextureDesc t = image(*img, id);
+      if (id != "map") t.minFilter = t.magFilter = GL_LINEAR;
+      f.panels.push_back(L::texturePanel(id, c.picture, f.addTexture(t)));
+    }
+    L::caption(f, c.above, above, kWhite, c.scale);
+    if (!below.empty()) L::caption(f, c.below, below, kAmber, c.scale);
+  };
+  if (view_ == kCompareView) {
+    L::FlowSpec spec;
+    spec.n = 5, spec.linesAbove = 1, spec.linesBelow = 2, spec.gap = 8;
+    std::vector<L::Cell> cells = L::flow(area, spec);
+    for (int k = 0; k < 4; ++k)
+      show(cells[size_t(k)], envmap::kParamKeys[k], found ? &found->pictures[size_t(k)] : nullptr,
+           std::string(envmap::kParamLabels[k]) + (eval_ == 1 && (k == envmap::kCube || k == envmap::kSphere) ? " (texgen)" : ""),
+           found ? fmt("mean %.2f", found->compare[size_t(k)].mean) + fmt(", max %.1f deg", found->compare[size_t(k)].max) : "");
+    show(cells[4], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel",
+         std::string("the maps: r per ") + kEval[eval_]);
+    return f;
+  }
+  if (view_ == kMapView) {
+    const float mid = area.x0 + (area.x1 - area.x0) * 0.62f;
+    const envmap::Size sz = envmap::mapSize(envmap::Param(param_), face_);
+    L::FlowSpec spec;
+    spec.linesAbove = 1, spec.linesBelow = 2;
+    spec.aspect = param_ == envmap::kCube ? 1.5f : float(sz.w) / float(sz.h);
+    L::Cell m = L::flow({area.x0, area.y0, mid - 6, area.y1}, spec)[0];
+    show(m, "map", found ? &found->map : nullptr,
+         std::string(envmap::kParamLabels[param_]) + fmt(", %.0f texels", envmap::mapTexels(envmap::Param(param_), face_)) +
+             (param_ == envmap::kCube ? ": +X -X +Y / -Y +Z -Z, t down" : ""),
+         "lit: the texels the object reads");
+    spec.aspect = 1.0f;
+    show(L::flow({mid + 6, area.y0, area.x1, area.y1}, spec)[0], "picture", found ? &found->picture : nullptr,
+         stateName(param_), found ? statsLine(found->current) : "");
+    return f;
+  }
+  L::FlowSpec spec;
+  spec.n = 3, spec.linesAbove = 1, spec.linesBelow = 2, spec.gap = 8;
+  std::vector<L::Cell> cells = L::flow(area, spec);
+  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(found->current) : "");
+  std::string refNote;
+  if (found && object_ == envgl::kMirror)
+    refNote = fmt("red: a near ball, %.0f px; a map made at the centre shows it at ", found->mirror.truePixels) +
+              fmt("%.0f px", found->mirror.mapPixels) + fmt(", %.0f right", found->mirror.both);
+  show(cells[1], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel", refNote);
+  show(cells[2], "error", found ? &found->error : nullptr,
+       fmt("direction error (black 0, yellow %g deg)", found ? found->errorScale : errorScale(0)),
+       found ? "worst in: " + found->current.maxRegion : "");
+  return f;
+}
+
+ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
+  envgl::EnvGL& g = r.attachment<envgl::EnvGL>();
+  ts::Measurements out;
+  Found found;
+  const int kMeasureSize = 256;
+  // The table: every parameterization x evaluation for this object at 256 x 256.
+  for (int o = object_; o == object_; ++o) {
+    const envgl::Pixels ref = g.draw(pass(-1, o, false, true, kMeasureSize));
+    for (int p = 0; p < envmap::kParams; ++p)
+      for (int e = 0; e < 2; ++e) {
+        const envgl::Pass ps = pass(p, o, e == 1, true, kMeasureSize);
+        const envmeasure::ErrorStats s = envmeasure::errorStats(p, g.draw(ps), ref, ps.eyeRotation());
+        const std::string key = std::string(envmap::kParamKeys[p]) + "/" + envgl::kObjectKeys[o] + "/" + kEval[e];
+        out.push_back({"error_mean_deg[" + key + "]", s.mean, "mean direction error against the exact r, degrees"});
+        out.push_back({"error_p95_deg[" + key + "]", s.p95, "95th percentile of the direction error, degrees"});
+        out.push_back({"error_max_deg[" + key + "]", s.max, "largest direction error, degrees, in region " + s.maxRegion});
+        for (const auto& [region, mean] : s.regionMean)
+          out.push_back({"error_region_deg[" + key + "@" + region + "]", mean,
+                         fmt("mean error in this region of the map, degrees (%.0f pixels)", s.regionPixels.at(region))});
+        if (o == object_ && e == eval_) found.compare[size_t(p)] = s;
+      }
+    for (int p = 0; p < envmap::kParams; ++p) {
+      const envgl::Pass ps = pass(p, o, false, true, kMeasureSize);
+      for (const auto& [region, t] : envmeasure::texelShape(p, face_, ref, ps.sphereView, ps.eyeRotation())) {
+        const std::string k = std::string(envmap::kParamKeys[p]) + "@" + region;
+        out.push_back({"texel_extent_deg[" + k + "]", t.extentDeg, "mean size of the texel read here, degrees along its longer side"});
+        out.push_back({"texel_aspect[" + k + "]", t.aspect, "mean longer / shorter side of the texel read here"});
+      }
+    }
+    ts::measureProgress(0.4);
+  }
+  // The pictures of the shown state.
+  const int n = render_;
+  const envgl::Pixels ref = g.draw(pass(-1, object_, false, true, n));
+  const envgl::Pass shown = pass(param_, object_, eval_ == 1, true, n);
+  const envgl::Pixels looked = g.draw(shown);
+  std::vector<float> perPixel;
+  found.current = envmeasure::errorStats(param_, looked, ref, shown.eyeRotation(), &perPixel);
+  out.insert(out.begin(), {"error_max_deg[shown]", found.current.max, "the picture shown: largest direction error, degrees"});
+  out.insert(out.begin(), {"error_mean_deg[shown]", found.current.mean, "the picture shown: mean direction error, degrees"});
+  found.picture = envmeasure::colourImage(g.draw(pass(param_, object_, eval_ == 1, false, n)));
+  found.reference = envmeasure::referenceImage(ref);
+  found.errorScale = errorScale(found.current.p95);
+  found.error = envmeasure::errorImage(perPixel, n, n, found.errorScale);
+  found.map = envmeasure::mapImage(param_, face_, shown.sphereView, &looked);
+  if (view_ == kCompareView)
+    for (int p = 0; p < 4; ++p) found.pictures[size_t(p)] = envmeasure::colourImage(g.draw(pass(p, object_, eval_ == 1, false, n)));
+  // The flat mirror: where a nearby ball should appear (drawn red in the reference).
+  if (object_ == envgl::kMirror) {
+    const envgl::Pass ps = pass(-1, object_, false, true, n);
+    found.mirror = envstudy::mirrorNear(ref, ps.projection, ps.view, ps.model);
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        if (found.mirror.trueMask[size_t(y) * size_t(n) + size_t(x)]) found.reference.set(x, n - 1 - y, {230, 40, 40, 255});
+  }
+  ts::measureProgress(0.6);
+  envstudy::addStudies(g, face_, out);  // the seeds' examples, solid angle, the stale sphere map, the near ball
+  out.push_back({"texels", double(envmap::mapTexels(envmap::Param(param_), face_)), "texels of the shown map"});
+  out.detail = found;
+  return out;
+}
+}  // namespace
+
+TM_REGISTER_SCENE(EnvironmentMapping);
