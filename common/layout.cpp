@@ -61,6 +61,12 @@ int scaleFor(const Rect& picture, int maxScale) {
   return std::clamp(std::min(picture.w / 220, picture.h / 140), 1, std::max(1, maxScale));
 }
 
+int fitScale(const std::function<Rect(int)>& pictureAt, int maxScale) {
+  for (int s = std::max(1, maxScale); s > 1; --s)
+    if (scaleFor(pictureAt(s), maxScale) >= s) return s;
+  return 1;
+}
+
 namespace {
 // Words of `text` on lines no wider than `width` at `scale`; a word wider
 // than the line stays alone on its line (the caller cuts it).

@@ -10,6 +10,7 @@
 // The layout tests (tests/layout) read back the same boxes (labelBox) and
 // check that no label leaves its panel or the window and no two overlap.
 #pragma once
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -69,6 +70,12 @@ std::string fmt(const char* format, double v);
 int scaleFor(const Rect& picture, int maxScale = 3);
 // One line of text's height at a scale, with its leading.
 inline float lineHeight(int scale) { return float(13 * scale + 4 * scale); }
+// The text scale of a layout whose picture depends on the room its text
+// takes: the largest s (maxScale down to 1) for which the picture laid out
+// with text at s, pictureAt(s), asks for at least s (scaleFor).  For views
+// that place their pictures themselves (whole zooms, fixed grids) and
+// still want their text to grow with the pictures, as flow() does.
+int fitScale(const std::function<Rect(int scale)>& pictureAt, int maxScale = 3);
 
 // n pictures of one aspect (width / height) in `area`: in a row when the
 // area is wide, in a column when it is tall (or a grid, whichever gives the

@@ -72,6 +72,10 @@ struct Input {
   // the window go to --texture.
   bool dragging = false, knowPos = false;
   double lastX = 0, lastY = 0, dragX = 0, dragY = 0, wheel = 0;
+  // A right drag moves the demo's light instead (options light1-az and
+  // light1-el, degrees, where a demo has them: bump_mapping).
+  bool lightDrag = false;
+  double lightX = 0, lightY = 0;
   std::vector<std::string> dropped;
 };
 
@@ -81,7 +85,7 @@ void mouseButton(Input* in, bool press, double x, double y) {
   in->lastX = x, in->lastY = y;
 }
 void mouseMove(Input* in, double x, double y) {
-  if (in->dragging) in->dragX += x - in->lastX, in->dragY += y - in->lastY;
+  if (in->dragging) (in->lightDrag ? in->lightX : in->dragX) += x - in->lastX, (in->lightDrag ? in->lightY : in->dragY) += y - in->lastY;
   in->lastX = x, in->lastY = y, in->knowPos = true;
 }
 void mouseWheel(Input* in, double clicks) { in->wheel += clicks; }
@@ -89,8 +93,9 @@ bool mouseTaken() { return ImGui::GetCurrentContext() && ImGui::GetIO().WantCapt
 
 void onMouseButton(GLFWwindow* w, int button, int action, int) {
   auto* in = static_cast<Input*>(glfwGetWindowUserPointer(w));
-  if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+  if (button != GLFW_MOUSE_BUTTON_LEFT && button != GLFW_MOUSE_BUTTON_RIGHT) return;
   if (action == GLFW_PRESS && mouseTaken()) return;  // a drag on the overlay moves the overlay
+  if (action == GLFW_PRESS) in->lightDrag = button == GLFW_MOUSE_BUTTON_RIGHT;
   // Where the pointer was at the last motion event, not where it is now: a
   // slow frame takes a whole drag's events at once, in order.
   if (!in->knowPos) glfwGetCursorPos(w, &in->lastX, &in->lastY), in->knowPos = true;
@@ -106,7 +111,8 @@ void onDrop(GLFWwindow* w, int n, const char** paths) {
 }
 
 // TS_TEST_MOUSE (tests only): mouse events given before the first frame, as
-// "press X Y; move X Y; release; wheel N; drop FILE", through the handlers
+// "press X Y; move X Y; release; wheel N; drop FILE" ("rpress X Y": the
+// right button), through the handlers
 // above (xdotool drives the same ones through GLFW in a real X session).
 void testMouse(Input* in) {
   const char* spec = std::getenv("TS_TEST_MOUSE");
@@ -117,7 +123,7 @@ void testMouse(Input* in) {
     std::string what;
     double a = 0, b = 0;
     e >> what;
-    if (what == "press" && e >> a >> b) mouseButton(in, true, a, b);
+    if ((what == "press" || what == "rpress") && e >> a >> b) in->lightDrag = what == "rpress", mouseButton(in, true, a, b);
     else if (what == "move" && e >> a >> b) mouseMove(in, a, b);
     else if (what == "release") mouseButton(in, false, in->lastX, in->lastY);
     else if (what == "wheel" && e >> a) mouseWheel(in, a);
@@ -142,7 +148,13 @@ bool applyMouse(Input* in, Options& opts) {
                            [&](double v) { return std::round((v + in->dragY * kDegreesPerPixel) * 10) / 10; });
   if (in->wheel != 0)
     changed |= opts.adjust(OrbitCamera::kZoom, [&](double v) { return std::round(v * std::pow(1.1, in->wheel) * 1000) / 1000; });
-  in->dragX = in->dragY = in->wheel = 0;
+  if (in->lightX != 0)
+    changed |= opts.adjust("light1-az", [&](double v) {
+      return std::round(std::remainder(v + in->lightX * kDegreesPerPixel, 360.0) * 10) / 10;
+    });
+  if (in->lightY != 0)
+    changed |= opts.adjust("light1-el", [&](double v) { return std::round((v - in->lightY * kDegreesPerPixel) * 10) / 10; });
+  in->dragX = in->dragY = in->wheel = in->lightX = in->lightY = 0;
   return changed;
 }
 
@@ -285,6 +297,8 @@ void drawHelp(Scene& scene, const Options& opts, int w, int h, bool* open) {
                      "option, a left drag orbits and the wheel zooms (3D views: --yaw, --pitch, --zoom), a picture file dropped on "
                      "the window is mapped (--texture), F12 saves the picture and its sidecar and prints the command that remakes them, l shows "
                      "the OpenGL calls beside the picture, h hides the side panel, ? or F1 this card, Esc or q quits.");
+  if (opts.has("light1-az") && opts.has("light1-el"))
+    ImGui::TextWrapped("A right drag moves light 1 (--light1-az left and right, --light1-el up and down).");
   ImGui::End();
 }
 

@@ -70,25 +70,6 @@ constexpr Pattern kKinds[3] = {Pattern::Regular, Pattern::JitterGlobal, Pattern:
 
 using ts::layout::fmt;
 
-ts::TextureDesc imageTexture(const ts::Image& img, const std::string& what,
-                             std::vector<std::pair<std::string, std::string>> params) {
-  return ts::renderedImageTexture(img, "jitter_render", what, "jitter", std::move(params));
-}
-
-// Signed error, 3x: orange where the image is brighter than the reference,
-// blue where darker, grey where equal.
-ts::Image errorPicture(const std::vector<double>& e, int w, int h) {
-  ts::Image out(w, h);
-  const glm::dvec3 mid(96, 96, 100), pos(255, 150, 40), neg(60, 140, 255);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      double v = std::clamp(3.0 * e[size_t(y) * size_t(w) + size_t(x)], -1.0, 1.0);
-      glm::dvec3 c = v >= 0 ? glm::mix(mid, pos, v) : glm::mix(mid, neg, -v);
-      out.set(x, y, {uint8_t(std::lround(c.r)), uint8_t(std::lround(c.g)), uint8_t(std::lround(c.b)), 255});
-    }
-  return out;
-}
-
 class Jitter final : public ts::Scene {
  public:
   std::string id() const override { return "jitter"; }
@@ -148,7 +129,6 @@ class Jitter final : public ts::Scene {
   void prepare(ts::Renderer& r);
   void ensure(ts::Renderer& r, int kind, int side);
   Result& result(int kind, int side) { return found_.at(kind, side); }
-  static ts::TextureDesc errorTextureOf(const Result& res);
   // The drawing (jitter_views.hpp) for the current flags.
   Views views() const { return {mode_, side_, seed_, showError_}; }
 
@@ -178,7 +158,7 @@ void Jitter::prepare(ts::Renderer& r) {
     res.error = jitter::errorImage(ref.pixels.data(), reference_);
     res.stats = jitter::analyse(res.error, cam.width, cam.height);
     res.texture = imageTexture(ref, "reference", {{"samples", "16x16 stratified"}});
-    res.errorTexture = errorTextureOf(res);
+    res.errorTexture = errorTexture(res);
     res.valid = true;
   }
   accum_ = false;
@@ -225,22 +205,8 @@ void Jitter::ensure(ts::Renderer& r, int kind, int side) {
                               {"averaging", kKinds[kind] == Pattern::JitterPixel ? "shader"
                                             : accum_                             ? "glAccum"
                                                                                  : "fbo"}});
-  res.errorTexture = errorTextureOf(res);
+  res.errorTexture = errorTexture(res);
   res.valid = true;
-}
-
-
-ts::TextureDesc Jitter::errorTextureOf(const Result& res) {
-  const jitter::Camera cam;
-  auto params = res.texture.params;
-  params.erase(std::remove_if(params.begin(), params.end(),
-                              [](const auto& p) {
-                                return p.first == "digest" || p.first == "size" || p.first == "image" ||
-                                       p.first == "made_by";
-                              }),
-               params.end());
-  params.push_back({"of", res.texture.params.front().second});
-  return imageTexture(errorPicture(res.error, cam.width, cam.height), "error_x3", params);
 }
 
 ts::Measurements Jitter::measure(ts::Renderer& r) {

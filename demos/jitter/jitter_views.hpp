@@ -16,6 +16,7 @@
 #include "common/layout.hpp"
 #include "common/plot.hpp"
 #include "common/text.hpp"
+#include "common/textures.hpp"
 #include "jitter_math.hpp"
 
 namespace jitter::views {
@@ -53,6 +54,40 @@ struct Found {
   Result& at(int kind, int side) { return results[size_t(kind)][size_t(side - 1)]; }
 };
 
+inline ts::TextureDesc imageTexture(const ts::Image& img, const std::string& what,
+                                    std::vector<std::pair<std::string, std::string>> params) {
+  return ts::renderedImageTexture(img, "jitter_render", what, "jitter", std::move(params));
+}
+
+// Signed error, 3x: orange where the image is brighter than the reference,
+// blue where darker, grey where equal.
+inline ts::Image errorPicture(const std::vector<double>& e, int w, int h) {
+  ts::Image out(w, h);
+  const glm::dvec3 mid(96, 96, 100), pos(255, 150, 40), neg(60, 140, 255);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      double v = std::clamp(3.0 * e[size_t(y) * size_t(w) + size_t(x)], -1.0, 1.0);
+      glm::dvec3 c = v >= 0 ? glm::mix(mid, pos, v) : glm::mix(mid, neg, -v);
+      out.set(x, y, {uint8_t(std::lround(c.r)), uint8_t(std::lround(c.g)), uint8_t(std::lround(c.b)), 255});
+    }
+  return out;
+}
+
+// A result's error as a texture: its image's parameters (not its digest,
+// size or maker), and which image it is the error of.
+inline ts::TextureDesc errorTexture(const Result& res) {
+  const jitter::Camera cam;
+  auto params = res.texture.params;
+  params.erase(std::remove_if(params.begin(), params.end(),
+                              [](const auto& p) {
+                                return p.first == "digest" || p.first == "size" || p.first == "image" ||
+                                       p.first == "made_by";
+                              }),
+               params.end());
+  params.push_back({"of", res.texture.params.front().second});
+  return imageTexture(errorPicture(res.error, cam.width, cam.height), "error_x3", params);
+}
+
 // The demo's state as the views see it (its flags), and how it draws them.
 struct Views {
   int mode_ = kJitterPixel, side_ = 3, seed_ = 1;
@@ -60,11 +95,13 @@ struct Views {
 
   const Result* current(const Found& fd) const;
   void addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const ts::TextureDesc& tex) const;
-  void addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels, float labelW = 0) const;
+  void addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels, float labelW = 0,
+                  int scale = 1) const;
   void buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
   void buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
   void buildPlot(ts::Frame& f, const Found& fd) const;
-  void addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd) const;
+  // Draws one plot of the sweep in `area`; returns its data area.
+  ts::Rect addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd, int scale) const;
 };
 
 inline const Result* Views::current(const Found& fd) const {
@@ -94,7 +131,7 @@ inline void Views::addImage(ts::Frame& f, const std::string& id, ts::Rect rect, 
 // the sample points of `mode` (jitter-pixel: a 2 x 2 block of pixels, each
 // with its own jitter).
 inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels,
-                        float labelW) const {
+                              float labelW, int scale) const {
   const int n = mode == kOne ? 1 : mode == kReference ? jitter::kReferenceSide : side;
   const int cells = mode == kJitterPixel ? 2 : 1;
   const float cell = float(box.w) / float(cells);
@@ -133,52 +170,85 @@ inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int
                      : mode == kJitterGlobal ? "same in every pixel"
                      : mode == kJitterPixel ? "new in every pixel"
                                             : "jittered (the reference)";
-    // Under the box, in a band as wide as the box and its margins.
-    const float half = (labelW > 0 ? labelW : std::max(float(box.w), 120.0f)) / 2, cx = float(box.x + box.w / 2), y = float(box.y + box.h + 5);
-    const ts::layout::Box band{std::max(0.0f, cx - half), y, std::min(float(f.width), cx + half), y + 16};
-    ts::layout::caption(f, band, l1, kWhite, 1);
-    ts::layout::caption(f, {band.x0, y + 16, band.x1, y + 32}, l2, kGrey, 1);
+    // Under the box, in a band as wide as the box and its margins, two lines at `scale`.
+    const float half = (labelW > 0 ? labelW : std::max(float(box.w), 120.0f * float(scale))) / 2,
+                cx = float(box.x + box.w / 2), y = float(box.y + box.h + 5), line = float(16 * scale);
+    const ts::layout::Box band{std::max(0.0f, cx - half), y, std::min(float(f.width), cx + half), y + line};
+    ts::layout::caption(f, band, l1, kWhite, scale);
+    ts::layout::caption(f, {band.x0, y + line, band.x1, y + 2 * line}, l2, kGrey, scale);
   }
 }
 
 inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
   namespace L = ts::layout;
-  const int W = jitter::kImageW, H = jitter::kImageH, line = 19, top = 2 * line;
+  const int W = jitter::kImageW, H = jitter::kImageH;
   std::string n = std::to_string(side_) + "x" + std::to_string(side_);
   std::string what = mode_ == kOne ? "1 sample per pixel"
                      : mode_ == kRegular ? n + " regular samples per pixel"
                      : mode_ == kJitterGlobal ? n + " jittered, one pattern for all pixels"
                      : mode_ == kJitterPixel ? n + " jittered independently per pixel"
                                              : "reference: 16x16 stratified samples per pixel";
-  L::caption(f, {12, 8, float(f.width) - 12, float(top - 2)}, "Figure VI.7: " + what + (showError_ ? "  (error x3)" : ""),
-             kWhite, 1, ts::Align::Left);
   // The image as large as the window allows (whole zooms are pixel-exact;
   // a zoom is rounded down to a whole one when that loses little), the
-  // sample pattern and the numbers beside it (a wide window) or under it.
-  const int sideW = std::min(220, std::max(130, f.width / 4)), under = 200;
-  auto fit = [&](int availW, int availH) {
-    double s = std::max(0.05, std::min(double(std::max(1, availW)) / W, double(std::max(1, availH)) / H));
-    if (s >= 1 && std::floor(s) >= 0.92 * s) s = std::floor(s);
-    return s;
+  // sample pattern and the numbers beside it (a wide window) or under it,
+  // all text at the scale the image asks for (fitScale).
+  struct Place {
+    int line, top, sideW, under;
+    bool column;
+    ts::Rect rect;
   };
-  double beside = fit(f.width - sideW - 48, f.height - top - 16), below = fit(f.width - 32, f.height - top - under - 16);
-  const bool column = below > beside;
-  const double s = column ? below : beside;
-  ts::Rect rect{16, top, std::max(1, int(W * s)), std::max(1, int(H * s))};
+  auto placeAt = [&](int sc) {
+    Place p;
+    p.line = int(L::lineHeight(sc)) + 2 * sc, p.top = 2 * p.line;
+    p.sideW = std::min(220 * sc, std::max(130 * sc, f.width / 4)), p.under = 156 + 44 * sc;
+    auto fit = [&](int availW, int availH) {
+      double k = std::max(0.05, std::min(double(std::max(1, availW)) / W, double(std::max(1, availH)) / H));
+      if (k >= 1 && std::floor(k) >= 0.92 * k) k = std::floor(k);
+      return k;
+    };
+    double beside = fit(f.width - p.sideW - 48, f.height - p.top - 16),
+           below = fit(f.width - 32, f.height - p.top - p.under - 16);
+    p.column = below > beside;
+    const double k = p.column ? below : beside;
+    p.rect = {16, p.top, std::max(1, int(W * k)), std::max(1, int(H * k))};
+    // The pattern's labels and the numbers must fit beside each other (a
+    // column layout) or in the side column at this scale, else it is too large.
+    const float numbersW = ts::text::width("RMS error 0.0000", sc) + 8;
+    if (p.column ? float(160 * sc + 24) + numbersW > float(f.width - 32) : numbersW > float(p.sideW)) p.rect.w = 0;
+    return p;
+  };
+  const int sc = L::fitScale([&](int s) { return placeAt(s).rect; });
+  const Place p = placeAt(sc);
+  const ts::Rect rect = p.rect;
+  std::string title = "Figure VI.7: " + what + (showError_ ? "  (error x3)" : "");
+  if (ts::text::width(title, sc) > float(f.width - 25)) title = title.substr(7);  // "Figure " goes before the scale does
+  L::caption(f, {12, 8, float(f.width) - 12, float(p.top - 2)}, title, kWhite, sc, ts::Align::Left);
   const Result* res = current(fd);
   if (res) addImage(f, "image", rect, showError_ ? res->errorTexture : res->texture);
-  int x = column ? 16 : rect.x + rect.w + 24, y0 = column ? rect.y + rect.h + 12 : top + 4;
-  int room = column ? under - 12 : f.height - y0 - 3 * line - 44;
-  int box = std::max(16, std::min({sideW - 20, room - 44, f.height / 3}));
-  if (column) x = std::max(16, (f.width - (std::max(box, 160) + 24 + 150)) / 2);  // the pattern, then the numbers beside it
-  addPattern(f, canvas, {x, y0, box, box}, mode_, side_, true, 160.0f);
+  int sideX = rect.x + rect.w + 24;  // where the numbers start
+  int x = p.column ? 16 : sideX, y0 = p.column ? rect.y + rect.h + 12 : p.top + 4;
+  int room = p.column ? p.under - 12 : f.height - y0 - 3 * p.line - 44 * sc;
+  int box = std::max(16, std::min({p.sideW - 20, room - 44 * sc, f.height / 3}));
+  int labelW = 160 * sc;
+  const int numbersW = 150 * sc;
+  if (p.column) {
+    // The pattern (centred over its labels), then the numbers beside it.
+    x = std::max(16, (f.width - (std::max(box, labelW) + 24 + numbersW)) / 2);
+    sideX = x + std::max(box, labelW) + 24;
+    x += (std::max(box, labelW) - box) / 2;
+  } else {
+    // Beside the image: the pattern centred in the column right of it, its labels as wide as the column.
+    labelW = std::max(box, f.width - 4 - x);
+    x += (labelW - box) / 2;  // (the numbers stay at the column's left, sideX)
+  }
+  addPattern(f, canvas, {x, y0, box, box}, mode_, side_, true, float(labelW), sc);
   if (res && mode_ != kReference) {
     // The numbers: right of the pattern in a column layout, under it beside the image.
-    float nx = column ? float(x + std::max(box, 160) + 24) : float(x), ny = column ? float(y0) : float(y0 + box + 44);
+    float nx = float(sideX), ny = p.column ? float(y0) : float(y0 + box + 44 * sc);
     L::Column numbers(f, {nx, ny, float(f.width) - 4, float(f.height) - 2});
-    numbers.add("RMS error " + fmt("%.4f", res->stats.rms), kAmber, 1, ts::Align::Left);
-    numbers.add("aliasing  " + fmt("%.4f", res->stats.aliasing), kAmber, 1, ts::Align::Left);
-    numbers.add("noise     " + fmt("%.4f", res->stats.noise), kAmber, 1, ts::Align::Left);
+    numbers.add("RMS error " + fmt("%.4f", res->stats.rms), kAmber, sc, ts::Align::Left);
+    numbers.add("aliasing  " + fmt("%.4f", res->stats.aliasing), kAmber, sc, ts::Align::Left);
+    numbers.add("noise     " + fmt("%.4f", res->stats.noise), kAmber, sc, ts::Align::Left);
   }
 }
 
@@ -251,13 +321,15 @@ inline void Views::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd
   }
 }
 
-inline void Views::addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd) const {
+inline ts::Rect Views::addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd,
+                           int scale) const {
   namespace plot = ts::plot;
   plot::Spec p;
   p.id = aliasing ? "plot_aliasing" : "plot_rms";
   p.title = title;
   p.xLabel = "samples per pixel";
   p.titleColor = kWhite, p.textColor = kGrey;
+  p.scale = scale;
   p.y1 = 0;  // the largest value, then rounded up
   for (int kind = 0; kind < 3; ++kind) {
     plot::Series curve(std::string("series_") + kKindKeys[kind], kSeriesColour[kind]),
@@ -280,43 +352,76 @@ inline void Views::addPlot(ts::Frame& f, ts::Rect area, const std::string& title
   p.x1 = 17, p.y1 = std::max(step, step * std::ceil(p.y1 * 1.08 / step));
   for (int side = 1; side <= kMaxSide; ++side) p.xTicks.push_back({double(side * side), std::to_string(side * side)});
   p.yTicks = plot::ticks(0, p.y1, step, step < 0.01 ? "%.3f" : "%.2f");
-  plot::draw(f, p, area);
+  return plot::draw(f, p, area);
 }
 
 inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
   namespace L = ts::layout;
-  const int line = 17;
+  // The two plots side by side (a wide window) or one over the other, the
+  // table under them; the text at the scale a plot's area asks for, the
+  // table's at the largest scale at most that whose columns hold its rows
+  // on one line each.
+  struct Place {
+    int line, tableScale, tableLine;
+    float nameW, colW;
+    bool twoLines;
+    int plotsH;
+  };
+  auto placeAt = [&](int sc) {
+    Place p;
+    p.line = int(L::lineHeight(sc));
+    // The table: one row per pattern, RMS / aliasing at 1, 4, 9, 16 (on two
+    // lines, RMS then aliasing, when the columns are too narrow for both).
+    for (p.tableScale = sc; p.tableScale >= 1; --p.tableScale) {
+      const int t = p.tableScale;
+      p.nameW = std::min(ts::text::width(kKindTitles[1], t) + 12, float(f.width) / 3);
+      p.colW = std::min(150.0f * float(t), (float(f.width) - 16 - p.nameW) / 4.0f);
+      p.twoLines = p.colW < ts::text::width("0.0000 / 0.0000", t) + 8;
+      // Above scale 1 only on one line a row: the plots, the figure's claim, keep the height.
+      if (t == 1 || (!p.twoLines && ts::text::width(kKindTitles[1], t) <= p.nameW - 4)) break;
+    }
+    p.tableLine = int(L::lineHeight(p.tableScale));
+    const int tableH = (p.twoLines ? 7 : 4) * p.tableLine + 8;
+    p.plotsH = std::max(60, f.height - 2 * p.line - tableH);
+    return p;
+  };
+  auto plotArea = [&](const Place& p) {
+    return f.width >= f.height ? ts::Rect{0, 2 * p.line, f.width / 2, p.plotsH} : ts::Rect{0, 2 * p.line, f.width, p.plotsH / 2};
+  };
+  // The scale the plots' data areas ask for, each laid out on a scratch frame (the wider title).
+  const int sc = L::fitScale([&](int s) {
+    ts::Frame scratch = L::blankFrame(f.width, f.height);
+    return addPlot(scratch, plotArea(placeAt(s)), "aliasing (the predictable part)", true, fd, s);
+  });
+  const Place pl = placeAt(sc);
+  const int line = pl.line, plotsH = pl.plotsH;
+  const float nameW = pl.nameW, colW = pl.colW;
+  const bool twoLines = pl.twoLines;
   L::caption(f, {4, 6, float(f.width) - 4, float(6 + line)},
-             "Figure VI.7  error against a 256-sample reference, seed " + std::to_string(seed_), kWhite, 1);
+             "Figure VI.7  error against a 256-sample reference, seed " + std::to_string(seed_), kWhite, sc);
   for (const auto& row : fd.results)
     for (const Result& res : row)
       if (!res.valid) return;  // measure() makes them (view=plot)
-  // The table: one row per pattern, RMS / aliasing at 1, 4, 9, 16 (on two
-  // lines, RMS then aliasing, when the columns are too narrow for both).
-  const float nameW = std::min(170.0f, float(f.width) / 4), colW = std::min(150.0f, (float(f.width) - 16 - nameW) / 4.0f);
-  const bool twoLines = colW < ts::text::width("0.0000 / 0.0000", 1) + 8;
-  const int tableH = (twoLines ? 7 : 4) * line + 8;
-  const int plotsH = std::max(60, f.height - 2 * line - tableH);
   if (f.width >= f.height) {
-    addPlot(f, {0, 2 * line, f.width / 2, plotsH}, "RMS error (1 = full scale)", false, fd);
+    addPlot(f, {0, 2 * line, f.width / 2, plotsH}, "RMS error (1 = full scale)", false, fd, sc);
     addPlot(f, {f.width / 2, 2 * line, f.width - f.width / 2, plotsH},
-            "aliasing: the predictable part of the error", true, fd);
+            "aliasing (the predictable part)", true, fd, sc);
   } else {
-    addPlot(f, {0, 2 * line, f.width, plotsH / 2}, "RMS error (1 = full scale)", false, fd);
+    addPlot(f, {0, 2 * line, f.width, plotsH / 2}, "RMS error (1 = full scale)", false, fd, sc);
     addPlot(f, {0, 2 * line + plotsH / 2, f.width, plotsH - plotsH / 2},
-            "aliasing: the predictable part of the error", true, fd);
+            "aliasing (the predictable part)", true, fd, sc);
   }
   float y = float(2 * line + plotsH + 4);
   const float x0 = std::max(8.0f, (float(f.width) - nameW - 4 * colW) / 2.0f);
   auto cell = [&](float x, float w2, const std::string& text, glm::vec4 c) {
-    L::caption(f, {x, y, x + w2 - 4, y + float(line)}, text, c, 1, ts::Align::Left);
+    L::caption(f, {x, y, x + w2 - 4, y + float(pl.tableLine)}, text, c, pl.tableScale, ts::Align::Left);
   };
   cell(x0, nameW, twoLines ? "RMS, aliasing" : "RMS error / aliasing", kGrey);
   for (int side = 1; side <= kMaxSide; ++side)
     cell(x0 + nameW + colW * float(side - 1), colW, std::to_string(side * side) + (side == 1 ? " sample" : " samples"),
          kGrey);
   for (int kind = 0; kind < 3; ++kind) {
-    y += float(line);
+    y += float(pl.tableLine);
     cell(x0, nameW, kKindTitles[kind], kSeriesColour[kind]);
     for (int side = 1; side <= kMaxSide; ++side) {
       const jitter::ErrorStats& st = fd.at(kind, side).stats;
@@ -324,7 +429,7 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
            twoLines ? fmt("%.4f", st.rms) : fmt("%.4f", st.rms) + " / " + fmt("%.4f", st.aliasing), kSeriesColour[kind]);
     }
     if (twoLines) {
-      y += float(line);
+      y += float(pl.tableLine);
       for (int side = 1; side <= kMaxSide; ++side)
         cell(x0 + nameW + colW * float(side - 1), colW, fmt("%.4f", fd.at(kind, side).stats.aliasing), kSeriesColour[kind]);
     }

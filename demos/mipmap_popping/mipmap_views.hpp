@@ -150,57 +150,69 @@ inline void Views::buildSingle(ts::Frame& f, const Result* m) const {
 
 inline void Views::buildFilmstrip(ts::Frame& f, const Result* m) const {
   const int w = f.width, h = f.height;
-  const int line = int(ts::text::height(1)) + 6;
-  constexpr int kCols = 8;
+  constexpr int kFrames = 8;
   const int gap = 6;
-  int cell = std::min((w - 2 * gap) / kCols - gap, (h - 6 * line - gap) / 2);
-  cell = std::max(8, cell);
-  int x0 = (w - (kCols * (cell + gap) - gap)) / 2;
-  int rowsTop = std::max(2 * line, (h - (2 * cell + 3 * line + gap)) / 2);
+  namespace L = ts::layout;
+  // Square frames as large as fit, in one band of 8 (a wide window) or two
+  // bands of 4 (a tall one); a band is the current filter's row over
+  // trilinear's, each with its title, and two lines under the frames; the
+  // text at the scale the frames ask for.
+  auto lineAt = [](int s) { return int(ts::text::height(s)) + 6 * s; };
+  auto cellAt = [&](int s, int bands) {
+    int c = std::min((w - 2 * gap) / (kFrames / bands) - gap, (h - 2 * lineAt(s) - bands * (4 * lineAt(s) + 3 * gap) + 2 * gap) / (2 * bands));
+    return ts::Rect{0, 0, std::max(8, c), std::max(8, c)};
+  };
+  auto scaleOf = [&](int bands) { return L::fitScale([&](int s) { return cellAt(s, bands); }); };
+  const int bands = cellAt(scaleOf(2), 2).w > cellAt(scaleOf(1), 1).w ? 2 : 1, cols = kFrames / bands;
+  const int sc = scaleOf(bands), line = lineAt(sc), cell = cellAt(sc, bands).w;
+  const int bandH = 2 * cell + 4 * line + gap + 2 * gap;  // (and the gap to the next band)
+  const int x0 = (w - (cols * (cell + gap) - gap)) / 2;
+  const int rowsTop = std::max(2 * line, (h - (bands * bandH - 2 * gap - line)) / 2);
   const int rows[2] = {look_.filter, kLinearMipLinear};
   const double x = shown_;
-  namespace L = ts::layout;
   L::caption(f, {4, 4, float(w - 4), float(4 + line)},
-             "the plane at 8 distances, 1/4 level apart (LOD bias " + fmt("%g", look_.lodBias) + ")", kWhite, 1);
-  const bool narrow = float(cell + gap) < ts::text::width("top: level 1 ", 1);
-  for (int r = 0; r < 2; ++r) {
-    int y = rowsTop + r * (cell + line + gap) + line;
-    sweep::Look lk = look_;
-    lk.filter = rows[r];
-    std::string name = std::string(filterGLName(rows[r])) + (rows[r] == kAnisotropic ? " x" + std::to_string(look_.anisotropy) : "");
-    if (m) name += "   popping " + fmt("%.1f", m->popping[rows[r]]);
-    L::caption(f, {float(x0), float(y - line), float(w - 2), float(y - 2)}, name, r == 0 ? kAmber : kWhite, 1,
-               ts::Align::Left);
-    for (int c = 0; c < kCols; ++c) {
-      double xc = x + 0.25 * (c - kCols / 2);
-      ts::Panel p;
-      p.id = "frame_" + std::to_string(r) + "_" + std::to_string(c);
-      p.viewport = {x0 + c * (cell + gap), y, cell, cell};
-      addFacing(f, p, xc, lk, levels_);
-      f.panels.push_back(p);
-      if (r == 1) {
-        double lambda = xc + look_.lodBias;
-        float lx = float(p.viewport.x + cell / 2);
-        // Under each frame, in its column: the LOD, and the level the top row shows.
-        const L::Box col{lx - float(cell + gap) / 2, float(y + cell + 4), lx + float(cell + gap) / 2,
-                         float(y + cell + 4 + line)};
-        L::caption(f, col, (narrow ? "" : "LOD ") + fmt("%.3f", lambda), kWhite, 1);
-        std::string top = usesMipmaps(rows[0]) && !blendsLevels(rows[0])
-                              ? std::to_string(nearestLevel(lambda))
-                              : fmt("%.2f", effectiveLevel(rows[0], lambda));
-        L::caption(f, {col.x0, col.y1, col.x1, col.y1 + float(line)}, (narrow ? "L " : "top: level ") + top, kGrey, 1);
+             "the plane at 8 distances, 1/4 level apart (LOD bias " + fmt("%g", look_.lodBias) + ")", kWhite, sc);
+  const bool narrow = float(cell + gap) < ts::text::width("top: level 1 ", sc);
+  for (int b = 0; b < bands; ++b)
+    for (int r = 0; r < 2; ++r) {
+      int y = rowsTop + b * bandH + r * (cell + line + gap) + line;
+      sweep::Look lk = look_;
+      lk.filter = rows[r];
+      std::string name = std::string(filterGLName(rows[r])) + (rows[r] == kAnisotropic ? " x" + std::to_string(look_.anisotropy) : "");
+      if (m) name += "   popping " + fmt("%.1f", m->popping[rows[r]]);
+      L::caption(f, {float(x0), float(y - line), float(w - 2), float(y - 2)}, name, r == 0 ? kAmber : kWhite, sc,
+                 ts::Align::Left);
+      for (int c = b * cols; c < (b + 1) * cols; ++c) {
+        double xc = x + 0.25 * (c - kFrames / 2);
+        ts::Panel p;
+        p.id = "frame_" + std::to_string(r) + "_" + std::to_string(c);
+        p.viewport = {x0 + (c % cols) * (cell + gap), y, cell, cell};
+        addFacing(f, p, xc, lk, levels_);
+        f.panels.push_back(p);
+        if (r == 1) {
+          double lambda = xc + look_.lodBias;
+          float lx = float(p.viewport.x + cell / 2);
+          // Under each frame, in its column: the LOD, and the level the top row shows.
+          const L::Box col{lx - float(cell + gap) / 2, float(y + cell + 4), lx + float(cell + gap) / 2,
+                           float(y + cell + 4 + line)};
+          L::caption(f, col, (narrow ? "" : "LOD ") + fmt("%.3f", lambda), kWhite, sc);
+          std::string top = usesMipmaps(rows[0]) && !blendsLevels(rows[0])
+                                ? std::to_string(nearestLevel(lambda))
+                                : fmt("%.2f", effectiveLevel(rows[0], lambda));
+          L::caption(f, {col.x0, col.y1, col.x1, col.y1 + float(line)}, (narrow ? "L " : "top: level ") + top, kGrey, sc);
+        }
       }
     }
-  }
 }
 
-// A plot of the probe's mean R, G, B against log2 distance.
-inline void plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, const std::vector<double>& xs,
-               const std::vector<Mean>& ys, double current, const std::vector<double>& switches) {
+// A plot of the probe's mean R, G, B against log2 distance; returns its data area.
+inline ts::Rect plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, const std::vector<double>& xs,
+               const std::vector<Mean>& ys, double current, const std::vector<double>& switches, int scale) {
   namespace plot = ts::plot;
   plot::Spec p;
   p.id = "plot_" + std::to_string(f.panels.size());
   p.title = title;
+  p.scale = scale;
   p.x0 = xs.front(), p.x1 = xs.back(), p.y1 = 255;
   p.xTicks = plot::ticks(std::ceil(p.x0), std::floor(p.x1), 1), p.yTicks = plot::ticks(0, 255, 64);
   const char* roles[3] = {"mean_red", "mean_green", "mean_blue"};
@@ -212,18 +224,30 @@ inline void plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, con
   }
   for (double sw : switches) p.markers.push_back({sw, {0.55f, 0.55f, 0.6f, 1.0f}, "level_switches"});  // where the level changes
   p.markers.push_back({current, kAmber, "current", "", false, 2.0f});
-  plot::draw(f, p, area);
+  return plot::draw(f, p, area);
 }
 
 inline void Views::buildPlot(ts::Frame& f, const Result* m) const {
   const int w = f.width, h = f.height;
-  const int line = int(ts::text::height(1)) + 6;
+  namespace L = ts::layout;
+  // Two plots one over the other, two lines of key under them, the text at
+  // the scale a plot's data area asks for (laid out on a scratch frame).
+  auto lineAt = [](int s) { return int(ts::text::height(s)) + 6 * s; };
   if (!m || m->sweepLods.empty()) {
-    f.labels.push_back({float(w / 2), float(h / 2), "(measuring...)", kWhite, 1, ts::Align::Center});
+    L::caption(f, {4, float(h / 2), float(w - 4), float(h)}, "(measuring...)", kWhite, 1);
     return;
   }
+  auto title = [&](int fl) {
+    return (fl == kAnisotropic ? "anisotropic x" + std::to_string(look_.anisotropy) : std::string(filterGLName(fl))) +
+           ":  popping (largest jump) " + fmt("%.1f", m->popping[fl]);
+  };
+  auto plotAt = [&](int s) {
+    ts::Frame scratch = L::blankFrame(w, h);
+    return plotSweep(scratch, {0, 0, w, (h - 4 * lineAt(s)) / 2}, title(look_.filter), m->sweepLods,
+                     m->sweepMeans[size_t(look_.filter)], shown_, {}, s);
+  };
+  const int sc = L::fitScale(plotAt), line = lineAt(sc), plotH = (h - 4 * line) / 2;
   const int rows[2] = {look_.filter, kLinearMipLinear};
-  const int plotH = (h - 4 * line) / 2;
   for (int r = 0; r < 2; ++r) {
     int fl = rows[r];
     std::vector<double> switches;
@@ -232,29 +256,27 @@ inline void Views::buildPlot(ts::Frame& f, const Result* m) const {
         double s = (blendsLevels(fl) ? k + 1.0 : k + 0.5) - look_.lodBias;  // log2 distance where the level changes
         if (s > m->sweepLods.front() && s < m->sweepLods.back()) switches.push_back(s);
       }
-    std::string title = (fl == kAnisotropic ? "anisotropic x" + std::to_string(look_.anisotropy) : std::string(filterGLName(fl))) +
-                        ": probe mean R, G, B vs log2 distance;  popping (largest jump) " + fmt("%.1f", m->popping[fl]);
-    plotSweep(f, {0, r * plotH + line / 2, w, plotH}, title, m->sweepLods, m->sweepMeans[size_t(fl)], shown_,
-              switches);
+    plotSweep(f, {0, r * plotH + line / 2, w, plotH}, title(fl), m->sweepLods, m->sweepMeans[size_t(fl)], shown_,
+              switches, sc);
   }
-  namespace L = ts::layout;
-  L::caption(f, {4, float(h - 2 * line - 2), float(w - 4), float(h - line - 1)},
-             "x: log2 distance = LOD - bias (" + fmt("%g", look_.lodBias) +
-                 ");  dashed: where GL's rule changes level;  amber: the current distance",
-             kGrey, 1);
+  L::Column notes(f, {4, float(h - 3 * line), float(w - 4), float(h - line - 1)});
+  notes.add("the probe's mean R, G, B against x = log2 distance = LOD - bias (" + fmt("%g", look_.lodBias) + ")", kGrey, sc);
+  notes.add("dashed: GL's rule changes level;  amber: the current distance", kGrey, sc);
   // The level colours the probe sees, as a key (its lead shortened when narrow).
   std::string lead = "the probe's texture, level by level:";
-  if (ts::text::width(lead, 1) + 10 + kLevels * 34.0f > float(w - 8)) lead = "levels:";
-  float x = std::max(4.0f, float(w / 2) - (ts::text::width(lead, 1) + 10 + kLevels * 34.0f) / 2);
+  const float step = 34.0f * float(sc);  // a level's box
+  if (ts::text::width(lead, sc) + 10 + kLevels * step > float(w - 8)) lead = "levels:";
+  float x = std::max(4.0f, float(w / 2) - (ts::text::width(lead, sc) + 10 + kLevels * step) / 2);
   const L::Box keyRow{0, float(h - line - 3), float(w), float(h)};
-  L::placeFree(f, {x, float(h - line), lead, kGrey, 1, ts::Align::Left}, keyRow);
-  x += ts::text::width(lead, 1) + 10;
+  const float y = float(h - line + 3 * (sc - 1));  // the row's 3 px margin, the box's 3 px a scale
+  L::placeFree(f, {x, y, lead, kGrey, sc, ts::Align::Left}, keyRow);
+  x += ts::text::width(lead, sc) + 10;
   for (int k = 0; k < kLevels; ++k) {
     ts::Rgba c = ts::mipLevelColour(k);
     glm::vec4 bg(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f);
     bool dark = c.r * 0.3 + c.g * 0.59 + c.b * 0.11 < 140;
-    L::placeFree(f, {x + k * 34.0f, float(h - line), " " + std::to_string(k) + " ", dark ? kWhite : glm::vec4(0, 0, 0, 1),
-                     1, ts::Align::Left, bg},
+    L::placeFree(f, {x + float(k) * step, y, " " + std::to_string(k) + " ", dark ? kWhite : glm::vec4(0, 0, 0, 1), sc,
+                     ts::Align::Left, bg},
                  keyRow);
   }
 }
@@ -287,26 +309,26 @@ inline ts::Panel farFieldOutline(const ts::Rect& vp, const ts::OrbitCamera& orbi
   return o;
 }
 
-// Where the notes under the slant panels start.
-inline int cy0Notes(int h, int line, int rows, int ph, int gap) {
-  return std::min(h - 2 * line, 2 * line + rows * (ph + gap + line));
-}
-
 // The slanted plane: the supersampled reference and the seven filters, four
-// panels a row (the current filter's title in amber).
+// panels a row (the current filter's title in amber), each with its title
+// above and its far-field error below, the text at the scale the panels ask
+// for (fitScale); the notes under them.
 inline void Views::buildSlant(ts::Frame& f, const Result* m) const {
   const int w = f.width, h = f.height;
-  const int line = int(ts::text::height(1)) + 6;
   const int gap = 8;
   namespace L = ts::layout;
   // Four panels a row, or two in a tall window (four rows).
   const int kCols = w >= h ? 4 : 2, kRows = (kFilterCount + 1 + kCols - 1) / kCols;
-  const int pw = std::max(8, (w - (kCols + 1) * gap) / kCols),
-            ph = std::max(8, (h - kRows * gap - (2 + 2 * kRows) * line) / kRows);
+  auto lineAt = [](int s) { return int(ts::text::height(s)) + 6 * s; };
+  auto panelAt = [&](int s) {
+    const int line = lineAt(s);
+    return ts::Rect{0, 0, std::max(8, (w - (kCols + 1) * gap) / kCols),
+                    std::max(8, (h - line / 2 - kRows * (2 * line + gap) - 2 * line) / kRows)};
+  };
+  const int sc = L::fitScale(panelAt), line = lineAt(sc), pw = panelAt(sc).w, ph = panelAt(sc).h;
   for (int k = 0; k <= kFilterCount; ++k) {
     const int fl = k - 1;  // -1: the reference
-    int cx = gap + (k % kCols) * (pw + gap), cy = line + (k / kCols) * (ph + gap + line) + line;
-    const L::Box inPanel{float(cx), float(cy), float(cx + pw), float(cy + ph)};
+    int cx = gap + (k % kCols) * (pw + gap), cy = line / 2 + (k / kCols) * (ph + 2 * line + gap) + line;
     ts::Panel p;
     p.id = fl < 0 ? std::string("slant_reference") : "slant_" + filterKey(fl);
     p.viewport = {cx, cy, pw, ph};
@@ -315,38 +337,32 @@ inline void Views::buildSlant(ts::Frame& f, const Result* m) const {
     sweep::addSlant(f, p, lk, fl < 0 ? sweep::kReferenceProgram : levels_ == kColoursOnly ? sweep::kColoured : sweep::kTextured,
                     h);
     f.panels.push_back(p);
+    const L::Box above{float(cx), float(cy - line + 2), float(cx + pw), float(cy - 1)},
+        below{float(cx), float(cy + ph + 2), float(cx + pw), float(cy + ph + line)};
     std::string t;
     if (fl < 0) {
       t = "reference: 8x8 samples/pixel (GLSL)";
-      // The far field's two edges, labelled at the left.
-      ts::Panel o = farFieldOutline(p.viewport, look_.orbit);
-      for (const auto& b : o.batches)
-        L::placeFree(f, {float(cx + 4), float(cy) + b.vertices.front().pos.y - 16.0f,
-                         b.role == "far_field_near_edge" ? "LOD " + fmt("%g", sweep::kFarLodLo)
-                                                         : "LOD " + fmt("%g", sweep::kFarLodHi),
-                         kWhite, 1, ts::Align::Left, kBox},
-                     inPanel);
-      f.panels.push_back(o);
+      f.panels.push_back(farFieldOutline(p.viewport, look_.orbit));  // the far field's two edges
+      L::caption(f, below, "far field: LOD " + fmt("%g", sweep::kFarLodLo) + " to " + fmt("%g", sweep::kFarLodHi), kWhite,
+                 sc, ts::Align::Left);
     } else {
       t = fl == kAnisotropic ? "anisotropic x" + std::to_string(look_.anisotropy) : std::string(filterGLName(fl));
       if (m)
-        L::caption(f, {inPanel.x0 + 1, inPanel.y0 + 1, inPanel.x1 - 1, std::min(inPanel.y1, inPanel.y0 + 2 * float(line))},
-                   "error " + fmt("%.1f", m->farError[fl]) +
-                       (fl == kAnisotropic && !m->anisotropy ? " (no anisotropy here)" : ""),
-                   fl == look_.filter ? kAmber : kWhite, 1, ts::Align::Left, kBox);
+        L::caption(f, below, "error " + fmt("%.1f", m->farError[fl]) +
+                                 (fl == kAnisotropic && !m->anisotropy ? " (no anisotropy here)" : ""),
+                   fl == look_.filter ? kAmber : kWhite, sc, ts::Align::Left);
     }
     // Titles: "GL_" goes, then the reference's detail, when the panel is narrow.
-    if (ts::text::width(t, 1) > float(pw) && t.rfind("GL_", 0) == 0) t = t.substr(3);
-    if (ts::text::width(t, 1) > float(pw) && fl < 0) t = "reference (8x8 samples)";
-    L::caption(f, {float(cx), float(cy - line + 2), float(cx + pw), float(cy - 1)}, t, fl == look_.filter ? kAmber : kWhite, 1,
-               ts::Align::Left);
+    if (ts::text::width(t, sc) > float(pw) && t.rfind("GL_", 0) == 0) t = t.substr(3);
+    if (ts::text::width(t, sc) > float(pw) && fl < 0) t = "reference (8x8 samples)";
+    L::caption(f, above, t, fl == look_.filter ? kAmber : kWhite, sc, ts::Align::Left);
   }
   const std::string note1 = "error: RMS (R,G,B, 8-bit) against the reference in the far field, LOD " +
                             fmt("%g", sweep::kFarLodLo) + ".." + fmt("%g", sweep::kFarLodHi) + " (between the white lines)";
   std::string note2 = "measured at " + std::to_string(sweep::kSlantW) + "x" + std::to_string(sweep::kSlantH);
   if (m) note2 += " on " + m->renderer;
-  L::Column notes(f, {4, float(cy0Notes(h, line, kRows, ph, gap)), float(w - 4), float(h)});
-  notes.add(note1, kGrey, 1);
-  notes.add(note2, kGrey, 1);
+  L::Column notes(f, {4, float(std::min(h - 2 * line, line / 2 + kRows * (ph + 2 * line + gap))), float(w - 4), float(h)});
+  notes.add(note1, kGrey, sc);
+  notes.add(note2, kGrey, sc);
 }
 }  // namespace mipviews

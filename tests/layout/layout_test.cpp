@@ -37,7 +37,17 @@ std::vector<std::string> cheap(const std::string& id) {
   return {};
 }
 
-// The demo's states: default, each choice of `view`, each figure's flags.
+// States whose text no `view` choice or figure shows: the split screen, a
+// longer header, the error pictures, the reference's numbers.
+std::vector<std::vector<std::string>> extra(const std::string& id) {
+  if (id == "parallax_aniso") return {{"--compare"}, {"--gradients", "x4"}, {"--view", "modes", "--map", "flat"}};
+  if (id == "jitter") return {{"--error"}, {"--mode", "reference"}, {"--mode", "one", "--samples", "1"}};
+  if (id == "mipmap_popping") return {{"--levels", "texture"}, {"--filter", "anisotropic", "--view", "filmstrip"}};
+  return {};
+}
+
+// The demo's states: default, each choice of `view`, each figure's flags,
+// and the extra states above.
 std::vector<std::vector<std::string>> states(const std::string& id) {
   std::vector<std::vector<std::string>> out = {{}};
   ts::test::Demo d(id, {});
@@ -46,6 +56,7 @@ std::vector<std::vector<std::string>> states(const std::string& id) {
       for (const auto& c : it.choices)
         if (c != "live") out.push_back({"--view", c});  // live: drawn every frame, at the window's size
   for (const auto& f : d.scene->figures()) out.push_back(f.flags);
+  for (const auto& e : extra(id)) out.push_back(e);
   std::set<std::vector<std::string>> seen;
   std::vector<std::vector<std::string>> unique;
   for (auto& s : out) {
@@ -130,6 +141,37 @@ std::vector<std::string> ids() {
 }
 INSTANTIATE_TEST_SUITE_P(Demos, Layout, ::testing::ValuesIn(ids()),
                          [](const ::testing::TestParamInfo<std::string>& i) { return i.param; });
+
+// Text scales with its pictures, not the window (common/layout.hpp): in
+// views whose pictures grow with the window, a 1920x1080 frame has text
+// above scale 1, a 400x300 frame none, and no label is larger than the
+// largest picture asks for (layout::scaleFor).  Before the views used the
+// kit, jitter's and parallax_aniso's stayed at 1 at every size.
+TEST(TextScale, GrowsWithThePicturesNotBeyond) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> views = {
+      {"jitter", {"--view", "mode"}},          {"jitter", {"--view", "plot"}},
+      {"parallax_aniso", {"--view", "single"}}, {"parallax_aniso", {"--view", "single", "--compare"}},
+      {"mipmap_popping", {"--view", "slant"}},  {"mipmap_popping", {"--view", "plot"}}};
+  for (const auto& [id, flags] : views) {
+    std::vector<std::string> all = flags;
+    for (const auto& c : cheap(id)) all.push_back(c);
+    ts::test::Demo d(id, all);
+    d.measure();
+    auto largest = [](const ts::Frame& f, int* labelScale, int* pictureScale) {
+      *labelScale = 0, *pictureScale = 1;
+      for (const auto& l : f.labels) *labelScale = std::max(*labelScale, l.scale);
+      for (const auto& p : f.panels)
+        if (p.viewport.w < f.width || p.viewport.h < f.height)  // not a background
+          *pictureScale = std::max(*pictureScale, ts::layout::scaleFor(p.viewport));
+    };
+    int big = 0, bigPicture = 0, small = 0, smallPicture = 0;
+    largest(d.scene->build(1920, 1080, d.measured), &big, &bigPicture);
+    largest(d.scene->build(400, 300, d.measured), &small, &smallPicture);
+    EXPECT_GE(big, 2) << id << " " << joined(flags) << ": text at 1920x1080";
+    EXPECT_LE(big, bigPicture) << id << " " << joined(flags) << ": text larger than its pictures ask for";
+    EXPECT_EQ(small, 1) << id << " " << joined(flags) << ": text at 400x300";
+  }
+}
 
 // A layout test that cannot fail is no test: the checks find a caption
 // pushed over a panel's edge, one outside the window, and two on top of

@@ -2,7 +2,9 @@
 // pictures that OpenGL itself rendered in the demo's measure() pass (Figure
 // VI.7 shows GL's own multi-pass and per-pixel-jitter renders side by side;
 // the parallax figures show GLSL renders of the filtering modes and errors;
-// the environment mapping figures show texgen and GLSL renders of mirrors),
+// the environment mapping figures show texgen and GLSL renders of mirrors;
+// the bump-mapping figures show the displaced reference torus R, drawn from a
+// 1024 x 512 grid in a vertex array by its measure()),
 // so the sidecar records them by digest and by the command that makes them.
 // Every other figure must be reproducible from its JSON alone; a new figure
 // that is not fails the oracle tests until it is made reproducible or listed
@@ -13,10 +15,12 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 9> kFiguresDrawnFromGlRenders = {
+inline constexpr std::array<const char*, 14> kFiguresDrawnFromGlRenders = {
     "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step",
     // environment_mapping: its object pictures are GL renders with texgen and GLSL
-    "env_cube_sphere", "env_compare_torus", "env_latlong_map", "env_cube_map", "env_flat_mirror"};
+    "env_cube_sphere", "env_compare_torus", "env_latlong_map", "env_cube_map", "env_flat_mirror",
+    // bump_mapping: R, emboss and DOT3 are pictures its measure() draws
+    "bump_two_lights", "bump_seed002", "bump_normals", "bump_methods", "bump_emboss_overhead"};
 
 // Figures whose measure() takes minutes on softpipe (the parallax table: twelve
 // full-frame GLSL passes and a CPU reference per state).  The oracle checks

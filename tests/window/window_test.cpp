@@ -19,6 +19,8 @@
 //   <id>.resize_sequence          the window resized to 640x480, 700x1000 and
 //                                 1280x720 in turn: at each size the figure
 //                                 is the --png render at its new size.
+//   <id>.mouse_light              a right drag moves --light1-az/--light1-el
+//                                 (demos that have them: bump_mapping).
 //   <id>.state_flags_round_trip   parse(stateFlags()) reproduces the state,
 //                                 for the initial state and after each key
 //                                 (the flags a figure's sidecar command uses).
@@ -48,6 +50,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -60,6 +63,7 @@
 
 #include "common/error.hpp"
 #include "common/gl_pane.hpp"
+#include "common/layout.hpp"
 #include "common/side_panel.hpp"
 #include "common/window.hpp"
 #include "common/image.hpp"
@@ -689,6 +693,32 @@ void usualKeys(const std::string& id) {
   EXPECT_LE(double(r.overSmall) / double(r.pixels), kOsmesaBounds.maxFraction) << "F12's command does not remake it";
 }
 
+// A right drag moves the light (demos with --light1-az/--light1-el:
+// bump_mapping): 100 px right, 50 px up at 0.4 degree a pixel turns the
+// azimuth by +40 and raises the elevation by 20; the picture changes.
+void mouseLight(const std::string& id) {
+  Fresh initial(id);
+  std::string base = outDir() + "/" + id + "/mouse_light";
+  Proc plain = windowRun(id, base + "/plain", "");
+  Proc moved = windowRun(id, base + "/drag", "", false, "rpress 400 240; move 450 215; move 500 190; release");
+  ASSERT_EQ(plain.exitCode, 0) << plain.describe();
+  ASSERT_EQ(moved.exitCode, 0) << moved.describe();
+  std::vector<std::string> lines = stateLines(moved.out, initial.opts);
+  ASSERT_FALSE(lines.empty()) << moved.out;
+  Fresh want(id);
+  double az = 0, el = 0;
+  for (const auto& [n, v] : initial.opts.state()) {
+    if (n == "light1-az") az = std::stod(v);
+    if (n == "light1-el") el = std::stod(v);
+  }
+  want.opts.set("light1-az", ts::layout::fmt("%g", std::remainder(az + 40.0, 360.0)));
+  want.opts.set("light1-el", ts::layout::fmt("%g", el + 20.0));
+  EXPECT_EQ(lines.back(), want.opts.stateText()) << "the right drag did not move the light";
+  ts::Image scratch;
+  Diff d = compare(ts::readPng(base + "/plain/window.png"), ts::readPng(base + "/drag/window.png"), &scratch);
+  EXPECT_GT(d.overSmall, long(gWidth) * gHeight / 100) << "moving the light did not change the picture";
+}
+
 // The mouse (issue 13.5): a left drag and the wheel, fed through the
 // window's own mouse handlers (TS_TEST_MOUSE), turn --yaw/--pitch/--zoom;
 // the picture changes; F12's printed command (the state's flags) remakes the
@@ -838,9 +868,10 @@ void resizeSequence(const std::string& id) {
   std::vector<Number> wm = measurements(win.out, f.opts, true), pm = measurements(pngs.back().out, f.opts, false);
   EXPECT_EQ(names(wm), names(pm)) << "after the resizes the window and --png print different measurements";
   for (size_t i = 0; i < std::min(wm.size(), pm.size()); ++i)
-    if (wm[i].name == pm[i].name && !isTiming(wm[i].name))
+    if (wm[i].name == pm[i].name && !isTiming(wm[i].name)) {
       EXPECT_NEAR(wm[i].value, pm[i].value, kMeasurementAbs + kMeasurementRel * std::abs(pm[i].value))
           << wm[i].name << " after the resizes: the window measured " << wm[i].value << ", --png " << pm[i].value;
+    }
 }
 
 // parse(stateFlags()) on a fresh Options must give back the state.
@@ -1098,6 +1129,7 @@ void registerAll() {
     registerCase(id, "resize_sequence", [id] { resizeSequence(id); });
     registerCase(id, "usual_keys", [id] { usualKeys(id); });
     registerCase(id, "mouse_orbit", [id] { mouseOrbit(id); });
+    if (probe.opts.has("light1-az") && probe.opts.has("light1-el")) registerCase(id, "mouse_light", [id] { mouseLight(id); });
     if (probe.opts.has("texture")) registerCase(id, "drop_file", [id] { dropFile(id); });
     if (id == "quad_distortion" || id == "parallax_aniso") {
       registerCase(id, "never_frozen", [id] { framesKeepComing(id); });

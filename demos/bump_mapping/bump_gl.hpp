@@ -1,0 +1,253 @@
+// demos/bump_mapping/bump_gl.hpp — the GLSL of the bump-mapping demo: one
+// fragment shader for every method (which one is a uniform), the torus
+// drawn as a Frame batch for B1-B3, and the reference R, the same heights
+// displacing a finely tessellated torus, drawn by a pass of its own (a
+// vertex buffer of a 1024 x 512 grid: too many vertices for a sidecar).
+//
+// Everything is per pixel from the interpolated (s, t): the torus point
+// Q(s, t), its partials Q_s, Q_t, the unit normal N and its partials, in
+// model coordinates, then turned into eye space, where the two lights are.
+//   B1  seed 004 (Blinn): n' = n + P_u (n x Q_t)/|n| + P_w (Q_s x n)/|n|,
+//       n = Q_s x Q_t, P_u, P_w central differences of P = scale h over a texel.
+//   B2  seed 002 literally: g_x = j(x+1, y) - j(x-1, y), g_y = j(x, y+1) -
+//       j(x, y-1) on the 8-bit texels (y counts raster rows downwards), divided
+//       by 255 and added to the x and y of the interpolated eye-space normal.
+//   B3  a tangent-space normal map (bump_math.hpp's normalMap) in the tangent
+//       frame (T, B, N) computed per vertex and interpolated.
+//   R   Q' = Q + P N, drawn as geometry; its normal the exact Q'_s x Q'_t
+//       with Q'_s = Q_s + P_s N + P N_s (the term seed 004 drops).
+// Lighting: Phong, two directional lights, ambient + sum of diffuse and
+// specular (exponent 40).  `opts.x` = 1 writes the eye-space normal as the
+// colour 0.5 + 0.5 n instead (the measurements' normal renders).
+#pragma once
+#include <glm/gtc/type_ptr.hpp>
+
+#include <string>
+#include <vector>
+
+#include "common/context.hpp"
+
+#include "common/error.hpp"
+#include "common/frame.hpp"
+#include "common/gl.hpp"
+#include "common/render.hpp"
+
+namespace bump {
+constexpr const char* kSourceFile = "demos/bump_mapping/bump_gl.hpp";
+enum Method { kFlat = 0, kBlinn = 1, kSeed002 = 2, kNormalMap = 3, kReference = 9 };
+
+// Uniforms (all vec4): torus = (R, r, height scale, method), rep = (repeats
+// along s, along t, texture width, height), l0/l1 = (eye-space direction to
+// the light, intensity), opts = (normals as colour, no specular, mipmaps, 0).
+inline const char* const kCommonGLSL = R"(#version 130
+uniform sampler2D tex;
+uniform vec4 torus, rep, l0, l1, opts;
+const float TAU = 6.28318530718;
+// The torus and its partials at (s, t), model coordinates.
+void frameAt(vec2 st, out vec3 Q, out vec3 N, out vec3 Qs, out vec3 Qt, out vec3 Ns, out vec3 Nt) {
+  float th = TAU * st.x, ph = TAU * st.y, R = torus.x, r = torus.y;
+  vec3 dTh = vec3(cos(th), 0.0, -sin(th)), dPh = vec3(-sin(ph) * sin(th), cos(ph), -sin(ph) * cos(th));
+  N = vec3(cos(ph) * sin(th), sin(ph), cos(ph) * cos(th));
+  Q = vec3((R + r * cos(ph)) * sin(th), r * sin(ph), (R + r * cos(ph)) * cos(th));
+  Qs = TAU * (R + r * cos(ph)) * dTh;
+  Qt = TAU * r * dPh;
+  Ns = TAU * cos(ph) * dTh;
+  Nt = TAU * dPh;
+}
+// P = scale h and its partials in s and t: central differences over one
+// texel of mip level `lod` (2^lod texels of level 0), read at that level.
+vec3 heightAt(vec2 st, float lod) {
+  float k = exp2(lod);
+  vec2 uv = st * rep.xy, du = vec2(k / rep.z, 0.0), dv = vec2(0.0, k / rep.w);
+  float P = torus.z * textureLod(tex, uv, lod).r;
+  float Ps = torus.z * (textureLod(tex, uv + du, lod).r - textureLod(tex, uv - du, lod).r) * rep.z * rep.x / (2.0 * k);
+  float Pt = torus.z * (textureLod(tex, uv + dv, lod).r - textureLod(tex, uv - dv, lod).r) * rep.w * rep.y / (2.0 * k);
+  return vec3(P, Ps, Pt);
+}
+)";
+
+inline const char* const kMeshVS = R"(
+out vec2 st;
+out vec3 peye, tT, tB, tN;
+void main() {
+  vec3 Q, N, Qs, Qt, Ns, Nt;
+  st = gl_MultiTexCoord0.xy;
+  frameAt(st, Q, N, Qs, Qt, Ns, Nt);
+  mat3 m = mat3(gl_ModelViewMatrix);
+  tT = m * normalize(Qs), tB = m * normalize(Qt), tN = m * N;  // the tangent frame, per vertex
+  peye = (gl_ModelViewMatrix * gl_Vertex).xyz;
+  gl_Position = ftransform();
+}
+)";
+
+// The reference's grid: gl_Vertex.xy is (s, t); the vertex is displaced.
+inline const char* const kReferenceVS = R"(
+out vec2 st;
+out vec3 peye, tT, tB, tN;
+void main() {
+  vec3 Q, N, Qs, Qt, Ns, Nt;
+  st = gl_Vertex.xy;
+  frameAt(st, Q, N, Qs, Qt, Ns, Nt);
+  vec4 p = vec4(Q + heightAt(st, 0.0).x * N, 1.0);
+  tT = tB = tN = vec3(0.0);
+  peye = (gl_ModelViewMatrix * p).xyz;
+  gl_Position = gl_ModelViewProjectionMatrix * p;
+}
+)";
+
+inline const char* const kFS = R"(
+in vec2 st;
+in vec3 peye, tT, tB, tN;
+// The mip level a pixel's footprint asks for (opts.z = 1: mipmapped
+// heights or normal map), else level 0.
+float lodHere() {
+  vec2 t = st * rep.xy * rep.zw;
+  float m = max(length(dFdx(t)), length(dFdy(t)));
+  return opts.z > 0.5 ? max(0.0, log2(max(m, 1e-6))) : 0.0;
+}
+vec3 phong(vec3 n, vec3 L, float I) {
+  vec3 albedo = vec3(0.78, 0.74, 0.68), V = normalize(-peye);
+  float d = max(dot(n, L), 0.0);
+  float sp = d > 0.0 ? pow(max(dot(reflect(-L, n), V), 0.0), 40.0) : 0.0;
+  return I * (albedo * d + vec3(0.35) * sp * (1.0 - opts.y));
+}
+void main() {
+  vec3 Q, N, Qs, Qt, Ns, Nt, n;
+  frameAt(st, Q, N, Qs, Qt, Ns, Nt);
+  mat3 m = mat3(gl_ModelViewMatrix);
+  int method = int(torus.w + 0.5);
+  if (method == 1) {                     // B1: seed 004, Blinn
+    vec3 P = heightAt(st, lodHere()), nv = cross(Qs, Qt);
+    float len = length(nv);
+    n = m * (nv + P.y * cross(nv, Qt) / len + P.z * cross(Qs, nv) / len);
+  } else if (method == 2) {              // B2: seed 002, literally
+    ivec2 size = ivec2(rep.zw), x = ivec2(floor(st * rep.xy * rep.zw));
+    #define J(dx, dy) texelFetch(tex, ivec2((x.x + dx + 4 * size.x) % size.x, (x.y + dy + 4 * size.y) % size.y), 0).r
+    float gx = J(1, 0) - J(-1, 0);       // j(x+1, y) - j(x-1, y), / 255
+    float gy = J(0, -1) - J(0, 1);       // j(x, y+1) - j(x, y-1): raster row y+1 is texel row y-1
+    n = normalize(tN);
+    n.x += gx, n.y += gy;
+  } else if (method == 3) {              // B3: the normal map in the per-vertex tangent frame
+    vec3 t = textureLod(tex, st * rep.xy, lodHere()).rgb * 2.0 - 1.0;
+    n = normalize(tT) * t.x + normalize(tB) * t.y + normalize(tN) * t.z;
+  } else if (method == 9) {              // R: the displaced surface's own normal
+    vec3 P = heightAt(st, 0.0);
+    n = m * cross(Qs + P.y * N + P.x * Ns, Qt + P.z * N + P.x * Nt);
+  } else {
+    n = m * N;
+  }
+  n = normalize(n);
+  if (opts.x > 0.5) {
+    gl_FragColor = vec4(0.5 + 0.5 * n, 1.0);
+    return;
+  }
+  vec3 c = vec3(0.78, 0.74, 0.68) * 0.1 + phong(n, normalize(l0.xyz), l0.w) + phong(n, normalize(l1.xyz), l1.w);
+  gl_FragColor = vec4(c, 1.0);
+}
+)";
+
+inline ts::Program meshProgram() { return {kSourceFile, std::string(kCommonGLSL) + kMeshVS, std::string(kCommonGLSL) + kFS}; }
+inline ts::Program referenceProgram() {
+  return {kSourceFile, std::string(kCommonGLSL) + kReferenceVS, std::string(kCommonGLSL) + kFS};
+}
+
+// The reference R: a (nu + 1) x (nv + 1) grid of (s, t), drawn from client
+// arrays with glDrawElements into a framebuffer of its own and read back.
+struct ReferencePass : ts::Renderer::Attachment {
+  static constexpr int kNu = 1024, kNv = 512;
+  explicit ReferencePass(ts::Renderer&) {
+    for (int j = 0; j <= kNv; ++j)
+      for (int i = 0; i <= kNu; ++i) st.push_back(float(i) / kNu), st.push_back(float(j) / kNv);
+    for (int j = 0; j < kNv; ++j)
+      for (int i = 0; i < kNu; ++i) {
+        unsigned a = unsigned(j * (kNu + 1) + i), b = a + 1, c = a + unsigned(kNu + 1), d = c + 1;
+        idx.insert(idx.end(), {a, b, d, a, d, c});
+      }
+  }
+  std::vector<float> st;
+  std::vector<unsigned> idx;
+};
+
+// A pass of the demo's own into a framebuffer of the frame's size, cleared
+// to its colour, with the viewport of its first panel: `draw` makes the GL
+// calls; the picture is read back (row 0 = top).
+template <class Draw>
+ts::Image offscreen(const ts::Frame& f, const char* what, Draw draw) {
+  GLint boundFbo = 0;
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &boundFbo);
+  GLuint fbo = 0, rb[2] = {0, 0};
+  glGenFramebuffers(1, &fbo);
+  glGenRenderbuffers(2, rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, f.width, f.height);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, f.width, f.height);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  ts::Image img(f.width, f.height);
+  const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  std::string failure;
+  if (complete) {
+    const ts::Panel& p = f.panels.front();
+    glDisable(GL_SCISSOR_TEST);
+    glViewport(0, 0, f.width, f.height);
+    glClearColor(f.clearColor.r, f.clearColor.g, f.clearColor.b, f.clearColor.a);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glViewport(p.viewport.x, f.height - p.viewport.y - p.viewport.h, p.viewport.w, p.viewport.h);
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixf(glm::value_ptr(p.projection));
+    glMatrixMode(GL_MODELVIEW);
+    glLoadMatrixf(glm::value_ptr(p.modelview));
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_BLEND);
+    try {
+      draw();
+    } catch (const ts::Error& e) {
+      failure = e.what();
+    }
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, f.width, f.height, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
+    img.flipVertical();
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(boundFbo));
+  glDeleteFramebuffers(1, &fbo);
+  glDeleteRenderbuffers(2, rb);
+  if (!complete) throw ts::Error(std::string("the framebuffer of ") + what + " is incomplete", ts::kExitFailure);
+  if (!failure.empty()) throw ts::Error(failure, ts::kExitFailure);
+  ts::gl::check(what);
+  return img;
+}
+
+// R as an image: the frame `f` (its first panel holds the torus batch whose
+// uniforms and height texture R takes) drawn with that panel's matrices,
+// the displaced grid in place of the torus.
+inline ts::Image renderReference(ts::Renderer& r, const ts::Frame& f) {
+  ReferencePass& pass = r.attachment<ReferencePass>();
+  const ts::Batch& b = f.panels.front().batches.front();
+  return offscreen(f, "drawing the displaced reference torus", [&] {
+    GLuint prog = r.program("bump_reference", referenceProgram());
+    glActiveTexture(GL_TEXTURE0);
+    glEnable(GL_TEXTURE_2D);
+    glBindTexture(GL_TEXTURE_2D, r.texture(f.textures.at(size_t(b.texture))));
+    glUseProgram(prog);
+    glUniform1i(glGetUniformLocation(prog, "tex"), 0);
+    for (const ts::Uniform& u : b.uniforms) {
+      glm::vec4 v = u.value;
+      if (u.name == "torus") v.w = float(kReference);
+      GLint loc = glGetUniformLocation(prog, u.name.c_str());
+      if (loc >= 0) glUniform4f(loc, v.x, v.y, v.z, v.w);
+    }
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, pass.st.data());
+    glDrawElements(GL_TRIANGLES, GLsizei(pass.idx.size()), GL_UNSIGNED_INT, pass.idx.data());
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glUseProgram(0);
+    glDisable(GL_TEXTURE_2D);
+  });
+}
+}  // namespace bump

@@ -1,0 +1,255 @@
+// Bump mapping on the torus, two lights, measured against the truly
+// displaced surface (Buss VI.2, "bump mapping"; seeds 001, 002, 004).
+//
+// The claim: a bump map changes the normal the lighting sees, not the
+// surface.  With a height field P(s, t) (procedural dimples and ridges, or
+// bricks) the true surface is Q' = Q + P n; its normal is Q'_s x Q'_t.
+// Each method approximates that normal per pixel on the smooth torus of
+// Figure VI.6 (demos/torus/torus_map.hpp), lit by two lights (Phong, GLSL):
+//   B1  seed 004, Blinn:   n' = n + P_u (n x Q_w)/|n| + P_w (Q_u x n)/|n|
+//       (it drops P (n/|n|)_u: exact for small P and flat Q);
+//   B2  seed 002, literally: g_x = j(x+1,y) - j(x-1,y), g_y = j(x,y+1) - j(x,y-1),
+//       added / 255 to the x and y of the interpolated normal;
+//   B3  a tangent-space normal map baked from the same heights;
+//   B4  emboss (seed 001), fixed function, three passes: the heights, minus
+//       the heights shifted toward the light, times the diffuse light;
+//   B5  DOT3: GL_COMBINE with GL_DOT3_RGB, the normal map dotted with the
+//       light in tangent space sent as each vertex's colour;
+//   R   the reference: the heights displacing a 1024 x 512 grid.
+// Measured (measure()): each method's shading against R (PSNR, mean absolute
+// difference over the pixels both cover), the normal error in degrees (a
+// render that writes the normal as its colour), which way each method tilts
+// the normals against R along the eye's x and y (+1 with it, -1 against),
+// how the tilt answers doubling the height scale and doubling the object
+// (seed 004: the normal grows 4x, its perturbation 2x: bumps look half as
+// deep), emboss's contrast against the light's angle to the normal (0 with
+// the light along it), DOT3 against the shader's diffuse sum, the outline
+// (seed 001: no bumps on the silhouette) and the normal map's seam where
+// the texture repeats (slopes baked one-sided at its edge, and the fix),
+// minification (the mean tilt at 2, 4, 8 times the distance, mipmapped
+// heights against a mipmapped normal map).
+//
+// Keys (each is also a flag, see --help):
+//   m  method: flat | B1 blinn | B2 seed002 | B3 normalmap | R reference | B4 emboss | B5 dot3
+//   v  view: single | compare (the method beside R) | normals (both as colours) | all (B1-B5 and R)
+//   t  heights: procedural | bricks (--texture FILE: a picture's luminance)
+//   + / -  height scale   s / S  object scale (seed 004's claim)   w  the normal map's edge slopes wrap (the seam's fix)
+//   a / A, e / E  light 1 azimuth, elevation (or a right drag)   b / B, d / D  light 2   . / ,  tilt
+// What the GL does: one GLSL 1.30 program (bump_gl.hpp) for B1-B3, the
+// method a uniform, the heights (or the normal map) in texture unit 0; R,
+// B4 and B5 are passes of their own (bump_gl.hpp, bump_ff.hpp) drawn by
+// measure() and shown as pictures.  The numbers: bump_measure.hpp.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <memory>
+
+#include "bump_ff.hpp"
+#include "bump_gl.hpp"
+#include "bump_math.hpp"
+#include "bump_measure.hpp"
+#include "common/layout.hpp"
+#include "common/orbit_camera.hpp"
+#include "common/render.hpp"
+#include "common/scene.hpp"
+#include "common/textures.hpp"
+#include "common/user_texture.hpp"
+#include "demos/torus/torus_map.hpp"
+
+namespace {
+using ts::layout::fmt;
+using ts::layout::kAmber;
+using ts::layout::kWhite;
+using bump::Found;
+const char* const kMethodTitles[] = {"flat (no bumps)", "B1 Blinn (seed 004)", "B2 seed 002 literally", "B3 normal map",
+                                     "R displaced",     "B4 emboss (seed 001)", "B5 DOT3"};
+const int kShaderIds[] = {bump::kFlat, bump::kBlinn, bump::kSeed002, bump::kNormalMap, bump::kReference, 0, 0};
+constexpr int kMeasureSize = 480;
+
+class BumpMapping final : public ts::Scene {
+ public:
+  std::string id() const override { return "bump_mapping"; }
+  std::string title() const override { return "Bump mapping on the torus (Buss VI.2; seeds 001, 002, 004)"; }
+  std::string about() const override {
+    return "A torus with dimples and ridges (or bricks), lit by two lights, bump mapped per pixel by Blinn's perturbed\n"
+           "normal (seed 004), seed 002's height differences, a normal map, emboss and DOT3; each measured against the\n"
+           "same heights displacing a finely tessellated torus: PSNR, mean difference, normal error in degrees.";
+  }
+  std::vector<std::string> claim() const override { return {"normal_err_deg[blinn]", "normal_err_deg[seed002]"}; }
+  void addOptions(ts::Options& o) override {
+    o.addEnum("method", &method_, std::vector<std::string>(bump::kMethodNames, bump::kMethodNames + bump::kMethodCount),
+              "flat | B1 Blinn (seed 004) | B2 seed 002 | B3 normal map | R the displaced reference | B4 emboss | B5 DOT3", 'm');
+    o.addEnum("view", &view_, {"single", "compare", "normals", "all"},
+              "single | compare: the method beside R | normals as colours | all: B1-B5 and R side by side", 'v');
+    o.addEnum("heights", &heights_, {"procedural", "bricks"}, "the height field: dimples and ridges | bricks", 't');
+    o.addFloat("height-scale", &heightScale_, 0.0f, 0.12f, "P = scale h: the bumps' height in the torus's units (r = 0.4)", '+', '-', 0.01f);
+    o.addFloat("object-scale", &objectScale_, 1.0f, 4.0f, "the torus scaled (R, r and the eye's distance), the bumps not", 's', 'S', 1.0f);
+    o.addFloat("light1-az", &light_[0].x, -180.0f, 180.0f, "light 1 azimuth, degrees, 0 = from the eye", 'a', 'A', 15.0f);
+    o.addFloat("light1-el", &light_[0].y, -90.0f, 90.0f, "light 1 elevation, degrees", 'e', 'E', 15.0f);
+    o.addFloat("light2-az", &light_[1].x, -180.0f, 180.0f, "light 2 azimuth, degrees", 'b', 'B', 15.0f);
+    o.addFloat("light2-el", &light_[1].y, -90.0f, 90.0f, "light 2 elevation, degrees", 'd', 'D', 15.0f);
+    o.addBool("wrap-slopes", &wrapSlopes_, "the normal map's slopes wrap across the texture's edge (off: one-sided there, the seam)", 'w');
+    o.addFloat("tilt", &tilt_, -90.0f, 90.0f, "the eye's height above the torus's plane, degrees", '.', ',', 5.0f);
+    camera_.addOptions(o);
+    file_.addOption(o, "the built-in heights (its luminance is the height)");
+  }
+  std::vector<ts::FigureSpec> figures() const override;
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
+  ts::Measurements measure(ts::Renderer& r) override {
+    const bump::Heights& H = heights();
+    return bump::measureAll([&](const bump::RenderSpec& s) { return render(r, s); }, toLight(0),
+                            bump::normalMap(H, 1.0, 0.4, heightScale_, true), bump::normalMap(H, 1.0, 0.4, heightScale_, false));
+  }
+
+ private:
+  const bump::Heights& heights() const {
+    const std::string want = file_.active() ? file_.path() : heights_ ? "bricks" : "procedural";
+    if (!cache_ || cacheKey_ != want) {
+      cache_ = std::make_shared<bump::Heights>(file_.active() ? bump::fromImage(file_.image())
+                                               : heights_      ? bump::bricks()
+                                                               : bump::procedural());
+      cacheKey_ = want;
+    }
+    return *cache_;
+  }
+  glm::vec3 toLight(int k) const {
+    float az = glm::radians(light_[k].x), el = glm::radians(light_[k].y);
+    return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
+  }
+  torusmap::Params torus() const {
+    torusmap::Params tp;
+    tp.R = objectScale_, tp.r = 0.4 * objectScale_, tp.nu = 64, tp.nv = 32;
+    return tp;
+  }
+  // The torus panel of a GLSL method at `vp` (its matrices serve every
+  // method); the demo's own torus (R = 1, r = 0.4) times the object scale.
+  ts::Panel torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::RenderSpec& s) const;
+  // One method's picture alone at the measurement size (no labels).
+  ts::Image render(ts::Renderer& r, const bump::RenderSpec& s) const;
+
+  int method_ = 1, view_ = 1, heights_ = 0;
+  bool wrapSlopes_ = true;
+  float heightScale_ = 0.04f, objectScale_ = 1.0f, tilt_ = 30.0f;
+  float distance_ = 1.0f;  // measurements only: the eye this many times as far
+  glm::vec2 light_[2] = {{-45.0f, 40.0f}, {60.0f, -10.0f}};
+  ts::OrbitCamera camera_;
+  ts::UserTexture file_;
+  mutable std::shared_ptr<const bump::Heights> cache_;
+  mutable std::string cacheKey_;
+};
+
+ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::RenderSpec& s) const {
+  const torusmap::Params tp = torus();
+  ts::Panel p;
+  p.id = std::string("torus_") + bump::kMethodNames[s.method];
+  p.viewport = vp;
+  p.depthTest = true;
+  p.projection = glm::perspective(glm::radians(35.0f), float(vp.w) / float(vp.h), 0.5f * objectScale_, 20.0f * objectScale_ * distance_);
+  p.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -4.8f * objectScale_ * distance_));
+  p.modelview = glm::rotate(p.modelview, glm::radians(tilt_), glm::vec3(1, 0, 0));
+  camera_.apply(p);
+  const bump::Heights& H = heights();
+  ts::TextureDesc tex = s.method == bump::iNormalMap ? bump::normalTexture(H, cacheKey_, heightScale_, s.mipmaps, wrapSlopes_)
+                                                     : bump::heightTexture(H, cacheKey_, false, s.mipmaps);
+  ts::Batch b = ts::meshBatch(torusmap::mesh(tp), f.addTexture(tex));
+  b.role = "torus";
+  b.program = "bump";
+  b.uniforms = {{"torus", {float(tp.R), float(tp.r), heightScale_, float(kShaderIds[s.method])}},
+                {"rep", {H.rep.x, H.rep.y, float(H.w), float(H.h)}},
+                {"l0", glm::vec4(toLight(0), 0.75f)},
+                {"l1", glm::vec4(toLight(1), 0.5f)},
+                {"opts", {s.normals ? 1.0f : 0.0f, s.noSpecular ? 1.0f : 0.0f, s.mipmaps ? 1.0f : 0.0f, 0.0f}}};
+  if (f.programs.empty()) f.programs.push_back({"bump", bump::meshProgram()});
+  p.batches.push_back(b);
+  return p;
+}
+
+ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const {
+  BumpMapping v = *this;
+  v.heightScale_ *= s.heightFactor, v.objectScale_ *= s.objectFactor, v.distance_ = s.distanceFactor;
+  ts::Frame f = ts::layout::blankFrame(kMeasureSize, kMeasureSize);
+  if (s.normals || s.embossTermOnly) f.clearColor = {0.0f, 0.0f, 0.0f, 1.0f};  // "covered" = not black
+  f.panels.push_back(v.torusPanel(f, {0, 0, kMeasureSize, kMeasureSize}, s));
+  if (s.method == bump::iReference && !s.smoothGeometry) return bump::renderReference(r, f);
+  if (s.method < bump::iEmboss) return r.renderOffscreen(f);
+  const bump::Heights& H = v.heights();
+  bump::FixedInputs in{v.torus(), H.rep, glm::vec2(float(H.w), float(H.h)), {v.toLight(0), v.toLight(1)}, {0.75f, 0.5f},
+                       bump::heightTexture(H, v.cacheKey_), bump::heightTexture(H, v.cacheKey_, true),
+                       bump::normalTexture(H, v.cacheKey_, v.heightScale_, false, wrapSlopes_), s.embossTermOnly};
+  return bump::renderFixedFunction(r, f, s.method, in);
+}
+
+ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& measured) const {
+  namespace L = ts::layout;
+  ts::Frame f = L::blankFrame(width, height);
+  const Found* found = measured.detailAs<Found>();
+  L::FlowSpec spec;
+  const int kAll[] = {bump::iBlinn, bump::iSeed002, bump::iNormalMap, bump::iEmboss, bump::iDot3, bump::iReference};
+  spec.n = view_ == 0 ? 1 : view_ == 3 ? 6 : 2, spec.linesAbove = 1, spec.linesBelow = 2;
+  std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
+  const bool normals = view_ == 2;
+  for (size_t k = 0; k < cells.size(); ++k) {
+    const L::Cell& c = cells[k];
+    const int m = view_ == 3 ? kAll[k] : k == 0 ? method_ : int(bump::iReference);
+    const bool picture = m == bump::iReference || m >= bump::iEmboss;  // drawn by measure()
+    const bool noNormals = normals && m >= bump::iEmboss;
+    L::caption(f, c.above, std::string(kMethodTitles[m]) + (normals && !noNormals ? ", normals" : ""), kWhite, c.scale);
+    if (!picture) {
+      f.panels.push_back(torusPanel(f, c.picture, {m, normals}));
+    } else if (found && found->pictures.count(m)) {
+      const bool n = normals && m == bump::iReference;
+      f.panels.push_back(L::texturePanel(std::string("picture_") + bump::kMethodNames[m], c.picture,
+                                         f.addTexture(ts::renderedImageTexture(n ? *found->refNormals : *found->pictures.at(m),
+                                                                               "bump_render", std::string(bump::kMethodNames[m]) + (n ? " normals" : ""),
+                                                                               "bump_mapping"))));
+    } else {
+      L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
+    }
+    if (!found || !found->cmp.count(m)) continue;
+    const auto it = found->cmp.find(m);
+    const bump::Compare& q = it->second;
+    std::string note;
+    if (m == bump::iReference)
+      note = normals ? fmt("R's normals on the smooth torus: %.1f deg off in the same pixel (the geometry's share)", q.screenNormalDeg)
+                     : fmt("R's own normals on the smooth torus reach %.1f dB against it: the rest is geometry", q.psnr);
+    else if (noNormals)
+      note = "fixed function: no normal to show (the shaded picture)" + fmt(", %.1f dB against R", q.psnr);
+    else if (normals)
+      note = fmt("normal off by %.1f deg at the same (s,t)", q.normalDeg) + fmt(", %.1f deg in the same pixel", q.screenNormalDeg);
+    else
+      note = fmt("against R: PSNR %.1f dB", q.psnr) + fmt(", mean |diff| %.1f", q.mad) +
+             (m < bump::iEmboss ? fmt(", normal off by %.1f deg", q.normalDeg) : std::string());
+    if (m == bump::iEmboss && !normals && found->embossContrast[3] >= 0)
+      note += fmt("; bump contrast %.3f with the light within 10 deg of the normal", found->embossContrast[0]) +
+              fmt(", %.3f beyond 60", found->embossContrast[3]);
+    L::caption(f, c.below, note, kAmber, c.scale);
+  }
+  return f;
+}
+
+std::vector<ts::FigureSpec> BumpMapping::figures() const {
+  return {{"bump_two_lights", "Buss VI.2 (seed 002, Fig. 1)",
+           "Seed 002's figure: a torus under Phong shading and two lights, bump mapped per pixel (Blinn's perturbed normal, "
+           "seed 004), beside the same heights displacing a 1024x512 grid (R). Captions: the shading and normal error against R.",
+           {"--view", "compare", "--method", "blinn", "--heights", "bricks"}, 1024, 560},
+          {"bump_seed002", "Buss VI.2 (seed 002)",
+           "Seed 002's shortcut taken literally: the 8-bit height differences added to the eye-space normal's x and y. "
+           "Its tilt along x runs against the true surface's on the near side of the ring and with it on the far side, and "
+           "does not grow with the height scale: measured.",
+           {"--view", "compare", "--method", "seed002"}, 1024, 560},
+          {"bump_normals", "Buss VI.2 (normal map)",
+           "Normals as colours (0.5 + 0.5 n, eye space): the normal map baked from the same heights (B3) beside R's.",
+           {"--view", "normals", "--method", "normalmap", "--heights", "bricks"}, 1024, 560},
+          {"bump_methods", "Buss VI.2 (seeds 001, 002, 004)",
+           "Every method side by side on bricks under two lights: B1 Blinn (seed 004), B2 seed 002's shortcut, B3 a normal map "
+           "(GLSL), B4 emboss and B5 DOT3 (fixed function), and R, the heights displacing a 1024x512 grid.",
+           {"--view", "all", "--heights", "bricks"}, 1280, 720},
+          {"bump_emboss_overhead", "Buss VI.2 (seed 001, emboss)",
+           "Emboss (seed 001), three fixed-function passes, with light 1 at the eye: where the light falls along the normal "
+           "(the middle of the ring) the shift toward it is 0 and the bricks vanish; R keeps them. The contrast is measured per "
+           "band of the light-normal angle.",
+           {"--view", "compare", "--method", "emboss", "--heights", "bricks", "--light1-az", "0", "--light1-el", "0"}, 1024, 560}};
+}
+}  // namespace
+
+TM_REGISTER_SCENE(BumpMapping);

@@ -1,0 +1,176 @@
+// demos/bump_mapping/bump_measure.hpp — what the bump-mapping demo measures,
+// from renders the scene makes on request (RenderSpec): every method
+// against R, the tilt each gives and how it answers the height and the
+// object's size, emboss's contrast against the light's angle to the
+// normal, and DOT3 against the shader doing the same diffuse sum.
+#pragma once
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "bump_math.hpp"
+#include "common/scene.hpp"
+
+namespace bump {
+// Methods, in the order of the demo's --method.
+enum Index { iFlat, iBlinn, iSeed002, iNormalMap, iReference, iEmboss, iDot3, kMethodCount };
+inline const char* const kMethodNames[] = {"flat", "blinn", "seed002", "normalmap", "reference", "emboss", "dot3"};
+
+struct RenderSpec {
+  int method = iFlat;
+  bool normals = false;         // the normal as colour (GLSL methods)
+  bool smoothGeometry = false;  // R's normal on the smooth torus (iReference)
+  bool embossTermOnly = false;  // B4's 0.5 + 0.5 (H - H') alone
+  bool noSpecular = false;      // the shader's diffuse sum only (to compare with DOT3)
+  float heightFactor = 1.0f, objectFactor = 1.0f;
+  float distanceFactor = 1.0f;  // the eye this many times as far
+  bool mipmaps = false;         // mipmapped heights (B1) or normal map (B3), trilinear
+};
+using RenderFn = std::function<ts::Image(const RenderSpec&)>;
+
+// Emboss's contrast per band of the angle between the smooth normal and light 1.
+inline const double kEmbossBands[] = {0, 10, 30, 60, 90};
+
+// What measure() found, for the pictures.
+struct Found {
+  std::map<int, Compare> cmp;  // method -> against R (normalDeg: at the same (s,t); screenNormalDeg: same pixel)
+  std::map<int, std::shared_ptr<const ts::Image>> pictures;  // R and the fixed-function methods, shaded
+  std::shared_ptr<const ts::Image> refNormals;
+  double embossContrast[4] = {-1, -1, -1, -1};  // per band of kEmbossBands
+};
+
+// `seam`: the normal map baked with and without wrapping differences.
+inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye, const ts::Image& wrapped,
+                                   const ts::Image& unwrapped) {
+  ts::Measurements out;
+  Found found;
+  auto refShaded = std::make_shared<const ts::Image>(render({iReference}));
+  auto refNormals = std::make_shared<const ts::Image>(render({iReference, true}));
+  const ts::Image exact = render({iReference, true, true}), smooth = render({iFlat, true});
+  found.pictures[iReference] = refShaded, found.refNormals = refNormals;
+  ts::measureProgress(0.15);
+  std::map<int, ts::Image> normals;
+  for (int m = 0; m < kMethodCount; ++m) {
+    const bool ideal = m == iReference, fixed = m >= iEmboss;
+    ts::Image shaded = render({m, false, ideal});
+    normals[m] = m == iFlat ? smooth : ideal ? exact : fixed ? smooth : render({m, true});
+    Compare c = compare(shaded, normals[m], *refShaded, *refNormals);
+    const std::string k = std::string("[") + (ideal ? "ideal" : kMethodNames[m]) + "]";
+    if (!fixed) {
+      c.screenNormalDeg = c.normalDeg;
+      c.normalDeg = compare(shaded, normals[m], shaded, exact).normalDeg;
+      if (!ideal)
+        out.push_back({"normal_err_deg" + k, c.normalDeg,
+                       "mean angle between the method's normal and the displaced surface's at the same (s,t), degrees"});
+      out.push_back({"screen_normal_err_deg" + k, c.screenNormalDeg, "mean angle between the normal and R's in the same pixel, degrees"});
+    } else {
+      found.pictures[m] = std::make_shared<const ts::Image>(shaded);
+    }
+    out.push_back({"psnr_db" + k, c.psnr, "shading against R's picture over the pixels both cover, dB"});
+    out.push_back({"mad" + k, c.mad, "mean absolute difference from R's picture, 8-bit units"});
+    found.cmp[m] = c;
+    ts::measureProgress(0.15 + 0.06 * m);
+  }
+  // Seed 002 adds to the eye's x and y, not along the surface: on the near
+  // side of the ring s runs along +x, on the far side along -x.
+  const glm::ivec2 rows = coveredRows(smooth);
+  const int third = (rows.y - rows.x) / 3;
+  for (int m = iBlinn; m <= iNormalMap; ++m)
+    for (int side = 0; side < 2; ++side) {
+      glm::ivec2 band = side == 0 ? glm::ivec2(rows.y - third, rows.y) : glm::ivec2(rows.x, rows.x + third);
+      glm::dvec2 a = perturbationAgreement(normals[m], exact, smooth, band);
+      const std::string where = side == 0 ? "near" : "far";
+      out.push_back({"tilt_agreement_x_" + where + "[" + kMethodNames[m] + "]", a.x,
+                     "+1: tilts the normal along eye x as the true surface does, -1: the opposite way (" + where + " side)"});
+      out.push_back({"tilt_agreement_y_" + where + "[" + kMethodNames[m] + "]", a.y, "the same along eye y (" + where + " side)"});
+    }
+  out.push_back({"tilt_deg[reference]", meanTiltDeg(exact, smooth), "mean angle of the displaced surface's normal from the smooth torus's"});
+  for (int m = iBlinn; m <= iNormalMap; ++m)
+    out.push_back({std::string("tilt_deg[") + kMethodNames[m] + "]", meanTiltDeg(normals[m], smooth), "mean angle from the smooth normal"});
+  // Twice the height scale: B1 and R tilt about twice as far (small angles);
+  // seed 002's formula has no scale in it.
+  for (int m : {iBlinn, iSeed002, iReference}) {
+    RenderSpec s{m, true, true};
+    s.heightFactor = 2;
+    double t1 = meanTiltDeg(normals[m], smooth), t2 = meanTiltDeg(render(s), smooth);
+    out.push_back({std::string("tilt_ratio_height_x2[") + kMethodNames[m] + "]", t1 > 0 ? t2 / t1 : 0,
+                   "mean tilt with twice the height scale / with it"});
+  }
+  ts::measureProgress(0.65);
+  // Seed 004's scale claim: the object twice as large (the eye twice as far,
+  // so the picture is the same), the bumps as high as before.
+  {
+    RenderSpec s{iFlat, true};
+    s.objectFactor = 2;
+    const ts::Image bigSmooth = render(s);
+    for (int m : {iBlinn, iNormalMap, iReference}) {
+      s.method = m, s.smoothGeometry = true;
+      double t1 = meanTiltDeg(normals[m], smooth), t2 = meanTiltDeg(render(s), bigSmooth);
+      out.push_back({std::string("tilt_ratio_object_x2[") + kMethodNames[m] + "]", t1 > 0 ? t2 / t1 : 0,
+                     "mean tilt of the object twice as large / as it is (seed 004: 1/2 for Blinn's form)"});
+    }
+  }
+  ts::measureProgress(0.8);
+  // Emboss: its term 0.5 + 0.5 (H - H') alone; the contrast |E - 1/2| / (1/2)
+  // per band of the angle between the smooth normal and light 1.  The shift
+  // is the light's part along the surface: 0 with the light along the normal.
+  {
+    RenderSpec s{iEmboss};
+    s.embossTermOnly = true;
+    const ts::Image term = render(s);
+    double sum[4] = {0, 0, 0, 0}, cnt[4] = {0, 0, 0, 0};
+    const glm::dvec3 L = glm::normalize(light1Eye);
+    for (int y = 0; y < term.height; ++y)
+      for (int x = 0; x < term.width; ++x) {
+        if (!covered(smooth, x, y)) continue;
+        double a = angleDeg(normalAt(smooth, x, y), L);
+        for (int b = 0; b < 4; ++b)
+          if (a >= kEmbossBands[b] && a < kEmbossBands[b + 1]) sum[b] += std::fabs(term.at(x, y).r - 127.5) / 127.5, cnt[b] += 1;
+      }
+    for (int b = 0; b < 4; ++b) found.embossContrast[b] = cnt[b] ? sum[b] / cnt[b] : -1.0;
+    for (int b = 0; b < 4; ++b)
+      out.push_back({"emboss_contrast[" + std::to_string(int(kEmbossBands[b])) + "-" + std::to_string(int(kEmbossBands[b + 1])) + "deg]",
+                     found.embossContrast[b], "mean |H - H'| where the light is this far from the normal (-1: no pixels)"});
+  }
+  // The outline: the bump methods keep the smooth torus's, R does not.
+  out.push_back({"outline_deviation_px[blinn]", outlineDeviationPx(normals[iBlinn], smooth),
+                 "mean distance of B1's outline from the smooth torus's, pixels"});
+  out.push_back({"outline_deviation_px[reference]", outlineDeviationPx(*refNormals, smooth),
+                 "mean distance of R's outline from the smooth torus's, pixels"});
+  // DOT3 against the shader's own diffuse sum with the same normal map.
+  {
+    RenderSpec s{iNormalMap};
+    s.noSpecular = true;
+    Compare c = compare(render(s), smooth, *found.pictures[iDot3], smooth);
+    out.push_back({"dot3_vs_shader_mad", c.mad, "GL_DOT3_RGB's picture against the GLSL diffuse sum of the same normal map, 8-bit units"});
+  }
+  // Minification: the torus further away, its texels smaller than pixels.
+  // Mipmapped heights (B1: slopes from the averaged heights) and a
+  // mipmapped normal map (B3: averaged normals) both flatten the bumps; the
+  // mean tilt relative to the nearest view, per distance.
+  for (float dist : {2.0f, 4.0f, 8.0f}) {
+    RenderSpec s{iFlat, true};
+    s.distanceFactor = dist, s.mipmaps = true;
+    const ts::Image far = render(s);
+    for (int m : {iBlinn, iNormalMap}) {
+      RenderSpec near = s;
+      near.method = m, near.distanceFactor = 1.0f;
+      s.method = m;
+      double t1 = meanTiltDeg(render(near), smooth), t2 = meanTiltDeg(render(s), far);
+      out.push_back({std::string("mip_tilt_ratio[") + kMethodNames[m] + "@" + std::to_string(int(dist)) + "x]", t1 > 0 ? t2 / t1 : 0,
+                     std::string("mean tilt at this distance / at the nearest, mipmapped ") + (m == iBlinn ? "heights" : "normal map")});
+      s.method = iFlat;
+    }
+    ts::measureProgress(0.85 + 0.03 * dist / 2);
+  }
+  // The seam of the normal map where the texture repeats (s wraps at the
+  // front of the ring): one-sided differences at the edge make a crease.
+  const glm::dvec2 seamBad = seamJumpDeg(unwrapped), seamFixed = seamJumpDeg(wrapped);
+  out.push_back({"seam_jump_deg[unwrapped]", seamBad.x, "mean normal-map angle across the texture's edge, slopes baked one-sided there, degrees"});
+  out.push_back({"seam_jump_deg[wrapped]", seamFixed.x, "the same baked with differences that wrap (the fix)"});
+  out.push_back({"neighbour_jump_deg", seamFixed.y, "mean angle between any other two neighbouring columns, degrees"});
+  out.detail = found;
+  return out;
+}
+}  // namespace bump
