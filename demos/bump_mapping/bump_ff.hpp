@@ -18,7 +18,8 @@
 //       4 ((t - 0.5) . (c - 0.5)) = I n.L, clamped to [0, 1], per pixel; unit 1
 //       multiplies by the albedo (GL_CONSTANT).  One additive pass per light
 //       over an ambient pass.  No specular term.
-// Drawn from client arrays of the same torus mesh the shaders use, into a
+// Drawn in immediate mode (the GL listing shows the first vertices of each
+// pass) from the same torus mesh the shaders use, into a
 // framebuffer of its own (bump_gl.hpp's offscreen), and read back.
 #pragma once
 #include <glm/glm.hpp>
