@@ -18,7 +18,8 @@
 //       4 ((t - 0.5) . (c - 0.5)) = I n.L, clamped to [0, 1], per pixel; unit 1
 //       multiplies by the albedo (GL_CONSTANT).  One additive pass per light
 //       over an ambient pass.  No specular term.
-// Drawn from client arrays of the same torus mesh the shaders use, into a
+// Drawn in immediate mode (the GL listing shows the first vertices of each
+// pass) from the same torus mesh the shaders use, into a
 // framebuffer of its own (bump_gl.hpp's offscreen), and read back.
 #pragma once
 #include <glm/glm.hpp>
@@ -74,22 +75,18 @@ inline ts::Image renderFixedFunction(ts::Renderer& r, const ts::Frame& f, int me
   std::vector<FixedVertex> vs = fixedVertices(in.torus, in.rep);
   const glm::mat3 toModel = glm::transpose(glm::mat3(f.panels.front().modelview));  // a rotation: its inverse
   glm::vec3 L[2] = {glm::normalize(toModel * in.light[0]), glm::normalize(toModel * in.light[1])};
-  std::vector<unsigned> idx(vs.size());
-  for (size_t k = 0; k < idx.size(); ++k) idx[k] = unsigned(k);
+  // Immediate mode, one call per attribute: the GL listing then shows the
+  // first vertices of each pass, emboss's shifted (s, t) and DOT3's light
+  // colour among them.
   auto drawWith = [&](bool shiftedCoords, bool textured) {
-    const FixedVertex* v0 = vs.data();
-    glEnableClientState(GL_VERTEX_ARRAY);
-    glEnableClientState(GL_COLOR_ARRAY);
-    glVertexPointer(3, GL_FLOAT, sizeof(FixedVertex), &v0->pos);
-    glColorPointer(4, GL_FLOAT, sizeof(FixedVertex), &v0->colour);
-    if (textured) {
-      glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-      glTexCoordPointer(2, GL_FLOAT, sizeof(FixedVertex), shiftedCoords ? &v0->shifted : &v0->st);
+    glBegin(GL_TRIANGLES);
+    for (const FixedVertex& v : vs) {
+      glColor4f(v.colour.r, v.colour.g, v.colour.b, v.colour.a);
+      const glm::vec2& c = shiftedCoords ? v.shifted : v.st;
+      if (textured) glTexCoord2f(c.x, c.y);
+      glVertex3f(v.pos.x, v.pos.y, v.pos.z);
     }
-    glDrawElements(GL_TRIANGLES, GLsizei(idx.size()), GL_UNSIGNED_INT, idx.data());
-    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
-    glDisableClientState(GL_COLOR_ARRAY);
-    glDisableClientState(GL_VERTEX_ARRAY);
+    glEnd();
   };
   auto bind = [&](const ts::TextureDesc& d) {
     glEnable(GL_TEXTURE_2D);

@@ -48,6 +48,7 @@
 #include "bump_gl.hpp"
 #include "bump_math.hpp"
 #include "bump_measure.hpp"
+#include "common/gl_listing.hpp"
 #include "common/layout.hpp"
 #include "common/orbit_camera.hpp"
 #include "common/render.hpp"
@@ -165,6 +166,13 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
 }
 
 ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const {
+  if (s.recordTo) {  // a picture shown: the same render, its calls kept for the listing
+    bump::RenderSpec plain = s;
+    plain.recordTo = nullptr;
+    ts::Image img;
+    *s.recordTo = ts::recordRender(r, [&] { img = render(r, plain); });
+    return img;
+  }
   BumpMapping v = *this;
   v.heightScale_ *= s.heightFactor, v.objectScale_ *= s.objectFactor, v.distance_ = s.distanceFactor;
   ts::Frame f = ts::layout::blankFrame(kMeasureSize, kMeasureSize);
@@ -198,10 +206,11 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
       f.panels.push_back(torusPanel(f, c.picture, {m, normals}));
     } else if (found && found->pictures.count(m)) {
       const bool n = normals && m == bump::iReference;
-      f.panels.push_back(L::texturePanel(std::string("picture_") + bump::kMethodNames[m], c.picture,
-                                         f.addTexture(ts::renderedImageTexture(n ? *found->refNormals : *found->pictures.at(m),
-                                                                               "bump_render", std::string(bump::kMethodNames[m]) + (n ? " normals" : ""),
-                                                                               "bump_mapping"))));
+      ts::TextureDesc t = ts::renderedImageTexture(n ? *found->refNormals : *found->pictures.at(m), "bump_render",
+                                                   std::string(bump::kMethodNames[m]) + (n ? " normals" : ""), "bump_mapping");
+      const auto gl = found->picturesGL.find(m);
+      t.renderedBy = n ? found->refNormalsGL : gl != found->picturesGL.end() ? gl->second : nullptr;
+      f.panels.push_back(L::texturePanel(std::string("picture_") + bump::kMethodNames[m], c.picture, f.addTexture(t)));
     } else {
       L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
     }

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "bump_math.hpp"
+#include "common/gl_call.hpp"
 #include "common/scene.hpp"
 
 namespace bump {
@@ -26,6 +27,7 @@ struct RenderSpec {
   float heightFactor = 1.0f, objectFactor = 1.0f;
   float distanceFactor = 1.0f;  // the eye this many times as far
   bool mipmaps = false;         // mipmapped heights (B1) or normal map (B3), trilinear
+  ts::gl::CallList* recordTo = nullptr;  // a picture shown: its GL calls recorded here (ts::recordRender)
 };
 using RenderFn = std::function<ts::Image(const RenderSpec&)>;
 
@@ -37,6 +39,8 @@ struct Found {
   std::map<int, Compare> cmp;  // method -> against R (normalDeg: at the same (s,t); screenNormalDeg: same pixel)
   std::map<int, std::shared_ptr<const ts::Image>> pictures;  // R and the fixed-function methods, shaded
   std::shared_ptr<const ts::Image> refNormals;
+  std::map<int, ts::gl::CallList> picturesGL;  // the calls that rendered each picture (the GL listing)
+  ts::gl::CallList refNormalsGL;
   double embossContrast[4] = {-1, -1, -1, -1};  // per band of kEmbossBands
 };
 
@@ -45,15 +49,21 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
                                    const ts::Image& unwrapped) {
   ts::Measurements out;
   Found found;
-  auto refShaded = std::make_shared<const ts::Image>(render({iReference}));
-  auto refNormals = std::make_shared<const ts::Image>(render({iReference, true}));
+  // The pictures shown (R, its normals, B4, B5) are rendered with their GL
+  // calls recorded, for the listing.
+  auto recorded = [&](RenderSpec s, ts::gl::CallList* calls) {
+    s.recordTo = calls;
+    return render(s);
+  };
+  auto refShaded = std::make_shared<const ts::Image>(recorded({iReference}, &found.picturesGL[iReference]));
+  auto refNormals = std::make_shared<const ts::Image>(recorded({iReference, true}, &found.refNormalsGL));
   const ts::Image exact = render({iReference, true, true}), smooth = render({iFlat, true});
   found.pictures[iReference] = refShaded, found.refNormals = refNormals;
   ts::measureProgress(0.15);
   std::map<int, ts::Image> normals;
   for (int m = 0; m < kMethodCount; ++m) {
     const bool ideal = m == iReference, fixed = m >= iEmboss;
-    ts::Image shaded = render({m, false, ideal});
+    ts::Image shaded = fixed ? recorded({m}, &found.picturesGL[m]) : render({m, false, ideal});
     normals[m] = m == iFlat ? smooth : ideal ? exact : fixed ? smooth : render({m, true});
     Compare c = compare(shaded, normals[m], *refShaded, *refNormals);
     const std::string k = std::string("[") + (ideal ? "ideal" : kMethodNames[m]) + "]";

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/gl_listing.hpp"
 #include "common/layout.hpp"
 #include "common/probe.hpp"
 #include "parallax_gl.hpp"
@@ -20,6 +21,7 @@ struct Row {
   double lookupsPerPixel = 0;  // texture lookups (calls) per pixel, counted by the shader
   double excludedPerPixel = 0;
   ts::Image image;
+  ts::gl::CallList calls;  // the GL calls that rendered `image` (MeasureOptions::record)
 };
 struct Table {
   Camera cam;
@@ -48,6 +50,7 @@ struct MeasureOptions {
   int timingRuns = 5;   // 0 = do not time
   bool accel = true;
   float gradScale = 1;  // the gradients M1 and M2 hand their lookup (PassOptions::gradScale)
+  ts::Renderer* record = nullptr;  // set: each mode's picture is drawn anew with its GL calls recorded (Row::calls)
 };
 
 inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, const MeasureOptions& o,
@@ -78,7 +81,12 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
     PassOptions po;
     po.accel = o.accel;
     po.gradScale = o.gradScale;
-    r.image = gl.render(cam, rel, mode, po);
+    if (o.record) {  // the textures, target and program made again, so that the calls show how
+      gl.release();
+      r.calls = ts::recordRender(*o.record, [&] { r.image = gl.render(cam, rel, mode, po); });
+    } else {
+      r.image = gl.render(cam, rel, mode, po);
+    }
     r.psnrAll = psnr(r.image, ref, nullptr);
     r.ssimAll = ssim(r.image, ref, nullptr);
     r.psnrAniso = psnr(r.image, ref, &t.anisoMask);

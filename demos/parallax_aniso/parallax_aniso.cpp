@@ -177,6 +177,7 @@ class ParallaxAniso final : public ts::Scene {
       mo.accel = accel_;
       mo.gradScale = gradScale();
       mo.timingRuns = timeRuns_;
+      mo.record = &r;  // the pictures' calls for the GL listing (not the live view's: it draws every frame)
       // One table per state: make_figures draws its figures of this demo
       // with one scene, and two of them share a state (only the view differs).
       table_ = std::make_shared<Table>(measureAll(gl, camera(), rel, mo));

@@ -78,7 +78,10 @@ struct Shown {
 // band's error for M2, M3 and M4, and the band itself.
 inline Shown shownOf(std::shared_ptr<const Table> table) {
   Shown s;
-  for (const Row& row : table->rows) s.textures.push_back(imageTexture(row.image, kModeKeys[row.mode]));
+  for (const Row& row : table->rows) {
+    s.textures.push_back(imageTexture(row.image, kModeKeys[row.mode]));
+    s.textures.back().renderedBy = row.calls;
+  }
   s.textures.push_back(imageTexture(table->referenceImage, "reference"));
   for (int m : {kAniso16, kEwa, kEwaVis})
     s.errorTextures.push_back(

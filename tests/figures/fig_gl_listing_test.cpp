@@ -132,6 +132,93 @@ TEST(GlListing, TheRenderedPicturesLinesAreMarkedWhenAKeyChangesThem) {
   EXPECT_FALSE(has(quad, "/* the frame, drawn")) << "a plain frame's listing must not change";
 }
 
+// The glBegin ... glEnd blocks of a section, each as its lines.
+std::vector<std::vector<std::string>> blocks(const std::vector<std::string>& l) {
+  std::vector<std::vector<std::string>> out;
+  bool in = false;
+  for (const std::string& s : l) {
+    if (s.rfind("glBegin(", 0) == 0) out.emplace_back(), in = true;
+    if (in) out.back().push_back(s);
+    if (s == "glEnd();") in = false;
+  }
+  return out;
+}
+std::vector<std::string> linesStarting(const std::vector<std::string>& l, const std::string& prefix) {
+  std::vector<std::string> out;
+  for (const std::string& s : l)
+    if (s.rfind(prefix, 0) == 0) out.push_back(s);
+  return out;
+}
+
+// Claim: bump mapping's B4 picture is seed 001's three passes, and the
+// listing shows them: the heights, then with glBlendFunc(GL_ONE, GL_ONE) the
+// same triangles with their texture coordinates shifted toward the light,
+// then the diffuse light multiplied in.  B5's is GL_COMBINE's GL_DOT3_RGB of
+// the normal map and the vertex colour; R's is a shader on the 1024 x 512
+// grid, its vertex list not in the listing.
+TEST(GlListing, BumpMappingListsTheEmbossPassesAndTheDot3Combiner) {
+  auto emboss = listingFileOf("bump_mapping", {"--method", "emboss"}, 1024, 512);
+  auto picture = section(emboss, "/* the picture in panel 'picture_emboss'");
+  ASSERT_FALSE(picture.empty()) << "no section for panel 'picture_emboss'";
+  EXPECT_TRUE(has(picture, "glBlendFunc(GL_ONE, GL_ONE);"));
+  EXPECT_TRUE(has(picture, "glBlendFunc(GL_DST_COLOR, GL_SRC_COLOR);"));
+  auto passes = blocks(picture);
+  ASSERT_EQ(passes.size(), 3u) << "emboss draws the torus three times";
+  auto st0 = linesStarting(passes[0], "glTexCoord2f("), st1 = linesStarting(passes[1], "glTexCoord2f(");
+  ASSERT_FALSE(st0.empty());
+  ASSERT_EQ(st0.size(), st1.size());
+  EXPECT_EQ(linesStarting(passes[0], "glVertex3f("), linesStarting(passes[1], "glVertex3f(")) << "the same triangles";
+  for (size_t k = 0; k < st0.size(); ++k) EXPECT_NE(st0[k], st1[k]) << "the second pass's (s, t) are shifted";
+  EXPECT_TRUE(linesStarting(passes[2], "glTexCoord2f(").empty()) << "the light pass is untextured";
+  EXPECT_FALSE(has(emboss, "GL_DOT3_RGB"));
+  EXPECT_FALSE(has(section(emboss, "/* the frame, drawn with those pictures"), "GL_DST_COLOR"))
+      << "the frame only shows the picture: the passes are the render's";
+
+  auto dot3 = listingFileOf("bump_mapping", {"--method", "dot3"}, 1024, 512);
+  picture = section(dot3, "/* the picture in panel 'picture_dot3'");
+  ASSERT_FALSE(picture.empty()) << "no section for panel 'picture_dot3'";
+  for (const char* line : {"glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);",
+                           "glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_DOT3_RGB);",
+                           "glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_TEXTURE);",
+                           "glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_PRIMARY_COLOR);"})
+    EXPECT_TRUE(has(picture, line)) << line;
+  EXPECT_FALSE(has(picture, "GL_DST_COLOR"));
+
+  auto reference = section(dot3, "/* the picture in panel 'picture_reference'");
+  ASSERT_FALSE(reference.empty()) << "no section for panel 'picture_reference'";
+  EXPECT_TRUE(has(reference, "glShaderSource("));
+  EXPECT_TRUE(has(reference, "glDrawElements(GL_TRIANGLES, " + std::to_string(1024 * 512 * 6) + ", "))
+      << "R: two triangles per cell of the 1024 x 512 grid";
+  EXPECT_LT(dot3.size(), 2000u) << "vertex lists stay folded";
+}
+
+// Claim: parallax_aniso's measured pictures list the program that drew each
+// (its source with the mode's #define, glUseProgram) and the filter it set:
+// M2 asks for 16x anisotropy, M0 for none.  The live view draws every frame
+// and is not recorded.
+TEST(GlListing, ParallaxListsTheProgramOfEachMeasuredPicture) {
+  const std::vector<std::string> flags = {"--view", "modes", "--map", "bricks", "--res", "80", "--rays", "2"};
+  auto l = listingFileOf("parallax_aniso", flags, 1360, 660);
+  auto naive = section(l, "/* the picture in panel 'image_naive'");
+  auto aniso = section(l, "/* the picture in panel 'image_aniso16'");
+  ASSERT_FALSE(naive.empty());
+  ASSERT_FALSE(aniso.empty());
+  for (const auto* s : {&naive, &aniso}) {
+    EXPECT_TRUE(has(*s, "glShaderSource("));
+    EXPECT_TRUE(has(*s, "glUseProgram("));
+  }
+  EXPECT_TRUE(has(naive, "#define MODE 0"));
+  EXPECT_TRUE(has(aniso, "#define MODE 2"));
+  EXPECT_TRUE(has(naive, "GL_TEXTURE_MAX_ANISOTROPY, 1);"));
+  EXPECT_TRUE(has(aniso, "GL_TEXTURE_MAX_ANISOTROPY, 16);"));
+  EXPECT_FALSE(has(naive, "GL_TEXTURE_MAX_ANISOTROPY, 16);"));
+  EXPECT_EQ(std::count_if(l.begin(), l.end(), [](const std::string& s) { return s.find("was rendered by:") != std::string::npos; }), 6)
+      << "a section per GL mode, M0-M5; the reference is traced on the CPU";
+
+  auto live = listingFileOf("parallax_aniso", {"--view", "live", "--map", "bricks", "--res", "80"}, 320, 240);
+  EXPECT_FALSE(has(live, "was rendered by:")) << "the live view is not recorded";
+}
+
 // ---- reading a listing back as C -------------------------------------------
 // The statements of a listing: comments dropped, string literals kept whole,
 // split at the ';' that ends each call.
