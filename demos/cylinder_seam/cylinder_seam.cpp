@@ -20,6 +20,15 @@
 //   + / -  slices (patches around the cylinder)      [ / ]  turn the cylinder
 //   p  outline the seam patch and its regions         v  view: book | compare
 //
+// What the GL does: each cylinder is one glBegin(GL_TRIANGLES) sent by
+// common/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
+// per vertex, s from cylinder_map.hpp's sOf: across the book's seam patch
+// 0.9 and 0.1 reduced, 0.9 and 1.1 tracked.  glTexParameteri(GL_TEXTURE_2D,
+// GL_TEXTURE_WRAP_S, GL_REPEAT), made by Renderer::texture, reads 1.1 as
+// 0.1: the fix.  Listings: book_figures/vi3_cylinder.gl.txt and
+// vi4_seam_patch.gl.txt (its two cylinders' first vertices: s = 0.9, 0.1 and
+// s = 0.9, 1.1).
+//
 // Measured: the cylinder is drawn once more, each patch head-on in its own
 // orthographic panel, with a texture whose texels hold their own indices;
 // along each patch the s it shows is read from the pixels and fitted: the
@@ -145,6 +154,7 @@ void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int t
   // Light from the upper left in front, fixed to the viewer: expressed in the
   // cylinder's own coordinates by undoing the turn.
   glm::dvec3 toLight = glm::dvec3(glm::inverse(glm::mat3(p.modelview)) * glm::vec3(-0.4f, 0.5f, 1.0f));
+  // The mesh's (s, t) (cylmap::sOf, tOf) become glTexCoord4f(s, t, 0, 1) in Renderer::draw.
   p.batches.push_back(ts::litMeshBatch(cylmap::mesh(cp), tex, toLight, 0.45, 0.55, "cylinder"));
   if (patch_) {
     // The seam patch's outline, 1% outside the surface so the depth test

@@ -14,16 +14,23 @@
 //       s = r_x/m + 1/2: made for one eye; the whole back is squeezed into its rim
 //   dual paraboloid  s = r_x / (2 (1 + |r_z|)) + 1/2 on two discs: no seam
 //       inside a disc, a ring where they meet
-// and whether r is computed per vertex (texgen: glTexGeni(GL_S,
-// GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP) or GL_SPHERE_MAP, then (s,t,r)
-// interpolated) or per pixel (GLSL).  The world (env_world.hpp) is made so any
-// direction can be read: colour = direction, lines every 15°, the six cube
-// faces named.  Measured against the exact r per pixel: the direction error in
-// degrees of every parameterization x per vertex/pixel for the object shown,
-// and where it is largest (env_measure.hpp); texels per steradian, largest / smallest, at equal memory;
-// a sphere map reused as the eye turns; seed 001's cube example read back;
-// seed 002's u = N_x/2 + 1/2 against GL_SPHERE_MAP and its R = 2 N_z N - I
+// and whether r is computed per vertex, (s,t,r) then interpolated, or per pixel.  The
+// world (env_world.hpp) is made so any direction can be read: colour = direction, lines
+// every 15°, the six cube faces named.  Measured against the exact r per pixel: the
+// direction error in degrees of every parameterization x per vertex/pixel for the object
+// shown, and where it is largest (env_measure.hpp); texels per steradian, largest /
+// smallest, at equal memory; a sphere map reused as the eye turns; seed 001's cube example
+// read back; seed 002's u = N_x/2 + 1/2 against GL_SPHERE_MAP and its R = 2 N_z N - I
 // against r off the view axis; the flat mirror that cannot show a nearby ball.
+//
+// What the GL does (env_gl.hpp: EnvGL::draw, into a float FBO read back): the mesh as
+// glNormal3f + glVertex3f, no glTexCoord.  Cube and sphere maps per vertex are fixed
+// function: glTexGeni(GL_S/T/R, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP or GL_SPHERE_MAP)
+// and glEnable(GL_TEXTURE_GEN_S/T/R) make r from the normal and the modelview; the rest
+// is a GLSL program, r = reflect(...) per vertex or per pixel, then texture(mapCube, r)
+// or texture(map2d, st).  Listings (each picture's pass, then the frame): book_figures/
+// env_cube_sphere.gl.txt, env_compare_torus.gl.txt, env_latlong_map.gl.txt,
+// env_cube_map.gl.txt, env_flat_mirror.gl.txt.
 //
 // Keys (each is also a flag, see --help):
 //   p  parameterization        o  object: sphere | torus | mirror
@@ -51,8 +58,7 @@ using ts::layout::kWhite;
 enum View { kObjectView, kMapView, kCompareView };
 const char* const kEval[] = {"pixel", "vertex"};
 
-// What measure() found: the numbers for the captions and the pictures.
-struct Found {
+struct Found {  // what measure() found: the numbers for the captions and the pictures
   envmeasure::ErrorStats current;                    // the shown state
   std::array<envmeasure::ErrorStats, 4> compare;     // each parameterization, this object and evaluation
   ts::Image picture, reference, error, map;          // object view, map view
@@ -125,6 +131,7 @@ class EnvironmentMapping final : public ts::Scene {
     p.param = param, p.object = object, p.perVertex = perVertex, p.directions = directions;
     p.view = envstudy::viewMatrix(orbit_.yaw, orbit_.pitch);
     p.projection = envstudy::projectionMatrix(orbit_.zoom);
+    // No texture coordinates: view * model becomes glLoadMatrixf(GL_MODELVIEW) in EnvGL::draw, r comes from it.
     p.model = glm::rotate(glm::mat4(1.0f), glm::radians(tilt_), glm::vec3(1, 0, 0)) *
               glm::rotate(glm::mat4(1.0f), glm::radians(turn_), glm::vec3(0, 1, 0));
     p.sphereView = glm::dmat3(glm::mat3(sphereEye_ ? envstudy::viewMatrix(0, 0) : p.view));
@@ -135,9 +142,8 @@ class EnvironmentMapping final : public ts::Scene {
     return std::string(envmap::kParamLabels[param]) + ", r per " + kEval[eval_] +
            (eval_ == 1 && param == envmap::kCube ? " (GL_REFLECTION_MAP)" : eval_ == 1 && param == envmap::kSphere ? " (GL_SPHERE_MAP)" : "");
   }
-  // The error picture's scale: per pixel the maps are off by hundredths of a
-  // degree, per vertex by degrees; a larger 95th percentile (a stale sphere
-  // map) takes the next of 1, 2, 5 x 10^k above it.
+  // The error picture's scale: per pixel the maps are off by hundredths of a degree, per vertex by
+  // degrees; a larger 95th percentile (a stale sphere map) takes the next of 1, 2, 5 x 10^k above it.
   double errorScale(double p95) const {
     double scale = eval_ == 1 ? 4.0 : 0.25;
     for (double step = 1; scale < p95; step *= 10)
@@ -166,9 +172,8 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   auto show = [&](const L::Cell& c, const std::string& id, const ts::Image* img, const std::string& above,
                   const std::string& below, ts::gl::CallList gl = nullptr) {
     if (img && img->width > 0) {
-      // The object pictures are resampled to the panel with GL_LINEAR: with
-      // GL_NEAREST the panel's middle row and column sample exactly between
-      // two pixels, where backends round apart.  The map keeps its texels sharp.
+      // The object pictures are resampled to the panel with GL_LINEAR: with GL_NEAREST the panel's middle
+      // row and column sample exactly between two pixels, where backends round apart.  The map keeps its texels sharp.
       ts::TextureDesc t = image(*img, id);
       if (id != "map") t.minFilter = t.magFilter = GL_LINEAR;
       t.renderedBy = std::move(gl);
@@ -227,8 +232,7 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
   envgl::EnvGL& g = r.attachment<envgl::EnvGL>();
   ts::Measurements out;
   Found found;
-  const int kMeasureSize = 256;
-  // The table: every parameterization x evaluation for this object at 256 x 256.
+  const int kMeasureSize = 256;  // the table: every parameterization x evaluation for this object at 256 x 256
   for (int o = object_; o == object_; ++o) {
     const envgl::Pixels ref = g.draw(pass(-1, o, false, true, kMeasureSize));
     for (int p = 0; p < envmap::kParams; ++p)
@@ -254,8 +258,7 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
     }
     ts::measureProgress(0.4);
   }
-  // The pictures of the shown state, their GL calls recorded for the
-  // listings (the map and target each uses made again: its calls show how).
+  // The shown state's pictures, their GL calls recorded for the listings (map and target made again: the calls show how).
   const int n = render_;
   auto recorded = [&](const envgl::Pass& ps, ts::gl::CallList* calls) {
     envgl::Pixels px;
@@ -279,8 +282,7 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
     for (int p = 0; p < 4; ++p)
       found.pictures[size_t(p)] =
           envmeasure::colourImage(recorded(pass(p, object_, eval_ == 1, false, n), &found.picturesGL[size_t(p)]));
-  // The flat mirror: where a nearby ball should appear (drawn red in the reference).
-  if (object_ == envgl::kMirror) {
+  if (object_ == envgl::kMirror) {  // the flat mirror: where a nearby ball should appear (red in the reference)
     const envgl::Pass ps = pass(-1, object_, false, true, n);
     found.mirror = envstudy::mirrorNear(ref, ps.projection, ps.view, ps.model);
     for (int y = 0; y < n; ++y)

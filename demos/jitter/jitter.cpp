@@ -28,6 +28,20 @@
 //   e  show the image's error against the reference instead of the image
 // Flag only: --average auto|accum|fbo (how the passes are averaged).
 //
+// What the GL does (jitter_gl.hpp): regular and jitter-global are n*n passes
+// of groundPass, each drawn by common/render.cpp: Renderer::draw with the
+// projection shifted by its sample's offset (glMatrixMode(GL_PROJECTION);
+// glLoadMatrixf(pixelShift · P), the Red Book's accPerspective), summed by
+// accumulateWithAccumBuffer: glAccum(GL_LOAD, 1/n²) for the first pass,
+// glAccum(GL_ACCUM, 1/n²) for the others, glAccum(GL_RETURN, 1) (or by
+// accumulateWithFbo on the CPU).  jitter-pixel is one full-viewport pass of
+// a fragment shader that hashes (seed, pixel, sample) and averages its n x n
+// colourAt() calls.  Both shade the analytic checkerboard in GLSL, no
+// texture lookups: no filtering enters.  The passes run in measure() and
+// are not in the listings: book_figures/vi7_jitter.gl.txt shows the finished
+// 288 x 192 images drawn as GL_NEAREST textures, vi7_error_vs_samples.gl.txt
+// only the plot.
+//
 // Measured, per mode, against the reference: the RMS error, split into
 // "aliasing" — the part of each pixel's error that one linear rule predicts
 // from its 24 neighbours' errors: interference patterns repeat, so they are
@@ -193,6 +207,7 @@ void Jitter::ensure(ts::Renderer& r, int kind, int side) {
     res.image = r.renderOffscreen(jitter::pixelJitterPass(cam, side, seed));
   } else {
     std::vector<ts::Frame> passes;
+    // Each offset o becomes the projection's shift: glLoadMatrixf(pixelShift(o) P) in Renderer::draw.
     for (glm::dvec2 o : jitter::passOffsets(kKinds[kind], side, seed)) passes.push_back(jitter::groundPass(cam, o));
     res.image = accum_ ? jitter::accumulateWithAccumBuffer(r, passes) : jitter::accumulateWithFbo(r, passes);
   }

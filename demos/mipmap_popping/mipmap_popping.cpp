@@ -25,6 +25,21 @@
 //   t  texture: labelled grid | checkerboard         g  gamma-correct (linear-light) mip averages
 //   m  move: animate the distance (after a 30-frame pause; counted in frames)
 //
+// What the GL does: common/render.cpp: Renderer::texture uploads the chain
+// built on the CPU, one glTexImage2D(GL_TEXTURE_2D, k, ...) per level k, and
+// sets glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter),
+// glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, bias) and
+// glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, n) (where
+// the extension is; n = 1 but for the anisotropic filter); Renderer::draw
+// sends each plane (sweep.hpp: facingBatch, probeBatch, addSlant) as
+// glTexCoord4f(s, t, 0, 1) + glVertex3f, (s, t) the plane's own (x, y) (the
+// slant's (x, -z)), and GL picks the level from their screen derivatives.
+// The slant's reference panel is a GLSL program (sweep.hpp: referenceFS,
+// 8 x 8 texture2D lookups of level 0 per pixel).  Listings:
+// book_figures/mip_popping_filmstrip.gl.txt, mip_anisotropic.gl.txt;
+// mip_popping_plot.gl.txt draws only the plot (the sweep's renders are
+// sweep.hpp's, through Renderer::renderOffscreen).
+//
 // The distance: the camera's focal length is 256 pixels and the 256-texel
 // texture repeats once per world unit, so at distance d a pixel covers d
 // texels and --distance-log2 x is the LOD (mip_math.hpp derives it).
@@ -179,6 +194,7 @@ class MipmapPopping final : public ts::Scene {
 ts::Frame MipmapPopping::build(int width, int height, const ts::Measurements& measured) const {
   const Result* m = measured.detailAs<Result>();
   ts::Frame f = ts::layout::blankFrame(width, height);
+  // The planes' (s, t) are their (x, y) or (x, -z): glTexCoord4f(s, t, 0, 1) in Renderer::draw (sweep.hpp).
   switch (view_) {
     case kSingle: views().buildSingle(f, m); break;
     case kFilmstrip: views().buildFilmstrip(f, m); break;

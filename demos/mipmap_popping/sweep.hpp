@@ -75,6 +75,7 @@ inline ts::Batch facingBatch(double d, int texture, double x0, double x1) {
   b.texture = texture;
   const float z = float(-d), y0 = float(-kPlaneHalf), y1 = float(kPlaneHalf);
   const glm::vec2 c[4] = {{float(x0), y0}, {float(x1), y0}, {float(x1), y1}, {float(x0), y1}};
+  // (s, t) = (x, y): glTexCoord4f(x, y, 0, 1) in Renderer::draw (common/render.cpp)
   for (int k : {0, 1, 2, 0, 2, 3}) b.vertices.push_back({{c[k], z}, {c[k], 0, 1}, glm::vec4(1.0f)});
   return b;
 }
@@ -100,6 +101,7 @@ inline ts::Batch probeBatch(double d, int texture) {
                           {float(88 * k), float(-88 * k)},
                           {float(88 * k), float(24 * k)},
                           {float(-24 * k), float(24 * k)}};
+  // (s, t) = (x, y): glTexCoord4f(x, y, 0, 1) in Renderer::draw (common/render.cpp)
   for (int i : {0, 1, 2, 0, 2, 3}) b.vertices.push_back({{c[i], z}, {c[i], 0, 1}, glm::vec4(1.0f)});
   return b;
 }
@@ -224,6 +226,7 @@ inline void addSlant(ts::Frame& f, ts::Panel& p, const Look& l, SlantKind kind, 
   for (size_t k = 0; k + 1 < zs.size(); ++k) {
     float z0 = float(zs[k]), z1 = float(zs[k + 1]), w0 = half(zs[k]), w1 = half(zs[k + 1]);
     const glm::vec3 c[4] = {{-w0, 0, z0}, {w0, 0, z0}, {w1, 0, z1}, {-w1, 0, z1}};
+    // (s, t) = (x, -z): glTexCoord4f(x, -z, 0, 1) in Renderer::draw (the reference's shader ignores them)
     for (int i : {0, 1, 2, 0, 2, 3}) b.vertices.push_back({c[i], {c[i].x, -c[i].z, 0, 1}, glm::vec4(1.0f)});
   }
   if (kind == kReferenceProgram) {

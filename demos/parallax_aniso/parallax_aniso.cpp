@@ -9,39 +9,39 @@
 // demo does.  A relief plane (bricks with deep mortar, a synthetic step/ridge
 // map, or a flat map) is seen at a grazing angle through parallax occlusion
 // mapping (parallax_gl.hpp) and filtered six ways:
-//   M0 naive (implicit derivatives of the shifted coordinate: the artifact),
-//   M1 trilinear and M2 hardware anisotropic 16x (textureGrad with the
-//   unshifted gradients; whether the driver's anisotropic filter uses them is
-//   measured: llvmpipe's does not),
-//   M3 EWA in the shader (Heckbert), M4 EWA without hidden texels (every
-//   texel traced), M5 the seed's row walk,
-// and compared with R, a reference of n x n (--rays; the figures 12 x 12) stratified jittered rays per
-// pixel traced finely on the CPU and weighted by the same Gaussian kernel
-// (relief.hpp).  Printed and written as CSV (--csv FILE; make_figures writes
-// parallax_modes.csv beside the figure): PSNR and SSIM over the whole frame,
-// over the high-anisotropy pixels and over the occlusion band (pixels whose
-// footprint crosses an occluding edge), milliseconds per frame and texture
-// lookups per pixel, and the renderer.
+//   M0 naive, texture() (implicit derivatives of the shifted coordinate: the
+//   artifact), M1 trilinear and M2 hardware anisotropic 16x (textureGrad with
+//   the unshifted gradients; whether the driver's anisotropic filter uses them
+//   is measured: llvmpipe's does not), M3 EWA in the shader (Heckbert,
+//   texelFetch), M4 EWA without hidden texels (every texel traced), M5 the
+//   seed's row walk,
+// and compared with R, n x n (--rays; the figures 12 x 12) stratified jittered
+// rays per pixel traced finely on the CPU, weighted by the same Gaussian
+// kernel (relief.hpp).  Printed and written as CSV (measure.hpp; --csv FILE,
+// make_figures writes parallax_modes.csv): PSNR and SSIM over the whole
+// frame, the high-anisotropy pixels and the occlusion band (footprints that
+// cross an occluding edge), ms per frame, lookups per pixel, the renderer.
 //
 // Keys (each is also a flag, see --help):
-//   m  mode            t  map: bricks | step | flat
+//   m  mode            t  map: bricks | step | flat      a  live view: sweep the azimuth
 //   + / -  height scale          ] / [  view angle (elevation)
 //   z / Z  azimuth               c  split-screen compare (mode | --against)
 //   b  the mode compared against  v  view: single | modes | error | live
 //   r / R  render width          x  max-height pyramid acceleration
-//   a  live view: sweep the azimuth
 //   g  gradients M1/M2 give textureGrad: x1 | x4 (does the filter use them?
 //      trilinear blurs; llvmpipe's anisotropic filter does not change)
-// The live view (v until "live", or --view live) draws the mode every frame at
-// the window's size: M2 there is what "interactive" is measured on (the
-// overlay, h, shows live_ms_per_frame and live_fps).
-// Flags only: --rays N (reference rays per side), --seed, --time N (time each
-// mode, median of N frames, for the CSV), --csv FILE.
+// The live view (parallax_live.hpp) draws the mode every frame at the
+// window's size: M2 there is what "interactive" is measured on (the overlay,
+// h, shows live_ms_per_frame and live_fps).  Flags only: --rays N, --seed,
+// --time N (each mode's median of N frames, for the CSV), --csv FILE.
 //
-// The files: this one (the options, measure(), build()); parallax_gl.hpp (the
-// shaders and passes), relief.hpp (the CPU reference), measure.hpp (the
-// table), parallax_views.hpp (the views' layout), parallax_live.hpp (the live
-// view's draw and timing).
+// What the GL does (parallax_gl.hpp: ReliefGL::pass, into an FBO): a GLSL
+// program per mode over one glBegin(GL_TRIANGLES) of glVertex2f(±1, ±1), no
+// texture coordinates: the camera comes as glUniform3f (eye, fwd, rightV,
+// upV), each fragment marches its own ray.  M2 is M1 plus ReliefGL::bind's
+// glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 16).
+// Listings: book_figures/parallax_modes.gl.txt, parallax_step.gl.txt (each
+// mode's pass, then the frame), parallax_error_band.gl.txt (the frame only).
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -178,8 +178,7 @@ class ParallaxAniso final : public ts::Scene {
       mo.gradScale = gradScale();
       mo.timingRuns = timeRuns_;
       mo.record = &r;  // the pictures' calls for the GL listing (not the live view's: it draws every frame)
-      // One table per state: make_figures draws its figures of this demo
-      // with one scene, and two of them share a state (only the view differs).
+      // One table per state: make_figures draws this demo's figures with one scene; two differ only in view.
       table_ = std::make_shared<Table>(measureAll(gl, camera(), rel, mo));
       tableKey_ = key;
       shown_ = shownOf(table_);  // its pictures as textures
@@ -227,7 +226,7 @@ class ParallaxAniso final : public ts::Scene {
  private:
   // The drawing (parallax_views.hpp) for the current flags.
   Views views() const { return {map_, mode_, against_, gradients_, compare_, heightScale_, camera()}; }
-  Camera camera() const {
+  Camera camera() const {  // no texture coordinates: it becomes glUniform3f(eye, fwd, rightV, upV) in ReliefGL::pass
     Camera c;
     c.width = res_;
     c.height = std::max(1, res_ * 3 / 4);
@@ -249,8 +248,7 @@ class ParallaxAniso final : public ts::Scene {
            std::to_string(camera_.zoom);
   }
   Relief& relief() {
-    // --texture FILE: the file is the albedo (its own 2x2 chain, at the
-    // heights' size, which the EWA shaders assume); the name keys the GL cache.
+    // --texture FILE: the albedo (its own 2x2 chain at the heights' size, as EWA assumes); the name keys the GL cache.
     std::string name = picture_.active() ? std::string(kMaps[map_]) + " + " + picture_.path() : kMaps[map_];
     if (!relief_ || relief_->name != name) {
       relief_ = std::make_unique<Relief>(makeRelief(kMaps[map_]));

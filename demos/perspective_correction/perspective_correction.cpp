@@ -7,27 +7,29 @@
 // a slant — roughly when d2 - d1 (farthest minus nearest distance from the
 // eye to the polygon) is comparable to d1 or larger.
 //
-// The book turns it on with glHint(GL_PERSPECTIVE_CORRECTION_HINT,
-// GL_NICEST).  The demo sets the hint as the book does, and checks whether
-// the driver honours it: it renders the plane through GL's projection once
-// with GL_FASTEST and once with GL_NICEST and compares.  Mesa (llvmpipe,
-// softpipe) ignores it and always interpolates hyperbolically, so the
-// "without" image is made another way, the same on every driver: the
-// vertices are projected on the CPU and sent as (x/w, y/w, z/w, 1) with an
-// identity projection.  GL's hyperbolic interpolation divides by w = 1 at
-// every vertex, which is exactly linear interpolation in screen space.  The
-// square is one quad — two triangles — as in the book: subdividing it would
-// hide the error the figure is about.
+// What the GL does (common/render.cpp: Renderer::draw): the book's
+// glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST), then the square as one
+// glBegin(GL_TRIANGLES) of six glTexCoord4f(s, t, 0, 1) + glVertex3f — one
+// quad, two triangles, as in the book: subdividing it would hide the error.
+// Right: model coordinates under glMatrixMode(GL_PROJECTION); glLoadMatrixf:
+// w is the depth and GL interpolates (s/w, t/w, 1/w).  Does the driver honour
+// the hint?  measure() renders that square under GL_FASTEST and GL_NICEST and
+// compares.  Mesa (llvmpipe, softpipe) ignores it and always interpolates
+// hyperbolically, so the left image is made the same on every driver: the
+// vertices projected on the CPU and sent as glVertex3f(x/w, y/w, z/w) under
+// an identity projection; dividing by w = 1 at every vertex is exactly
+// linear interpolation in screen space.  Listings:
+// book_figures/vi2_perspective_correction.gl.txt (both squares) and
+// vi2_error_vs_depth_ratio.gl.txt (only the plot of the measured sweep).
 //
 // Keys (each is also a flag, see --help):
 //   v  view: both (the book's figure) | affine | perspective | plot (the sweep)
 //   t / T  tilt up / down (0 = facing the eye)   d / D  distance up / down
 //   f  filter: nearest | linear | mipmap         e  the two triangles' edges
 //
-// Measured: the square is drawn once more with a texture whose texels hold
-// their own indices (texelIndexTexture), so each pixel says which texel it
-// took; compared with the perspective-correct (s, t) of the ray through the
-// pixel this gives the affine image's largest error in texels, at the
+// Measured: the square drawn again with texelIndexTexture (each pixel says
+// which texel it took) against the perspective-correct (s, t) of the ray
+// through the pixel: the affine image's largest error in texels, at the
 // current state and over a sweep of tilts, against the book's (d2 - d1)/d1.
 #include <algorithm>
 #include <cmath>
@@ -156,6 +158,7 @@ void PerspectiveCorrection::addSquare(ts::Panel& p, const persp::Setup& s, Varia
   b.texture = texture;
   for (size_t k : {0, 1, 2, 0, 2, 3}) {
     glm::dvec2 uv = persp::corners()[k];
+    // becomes glTexCoord4f(s, t, 0, 1) + glVertex3f(position) in Renderer::draw
     b.vertices.push_back({position(uv), glm::vec4(glm::vec2(persp::texCoord(uv)), 0, 1), glm::vec4(1.0f)});
   }
   p.batches.push_back(b);
@@ -173,9 +176,8 @@ void PerspectiveCorrection::addSquare(ts::Panel& p, const persp::Setup& s, Varia
 
 ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurements& measured) const {
   ts::Frame f = ts::layout::blankFrame(width, height);
-  // The book's call.  The right (and single perspective) image is drawn
-  // under GL_NICEST; the affine-only view asks for GL_FASTEST, which Mesa
-  // ignores — and which cannot matter to it anyway, since w = 1 everywhere.
+  // The book's call.  The right (and single perspective) image is drawn under GL_NICEST; the affine-only
+  // view asks for GL_FASTEST, which Mesa ignores — and which cannot matter to it anyway, since w = 1 everywhere.
   f.perspectiveHint = view_ == kAffine ? GL_FASTEST : GL_NICEST;
   const glm::vec4 &white = ts::layout::kWhite, &grey = perspmeasure::kGrey;
   const persp::Setup s = setup();
@@ -187,8 +189,7 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
     return f;
   }
   int tex = f.addTexture(checker());
-  // The notes: the hint test, and the measured error against the rule of
-  // thumb (perspective_measure.hpp).
+  // The notes: the hint test, and the measured error against the rule of thumb (perspective_measure.hpp).
   const auto notes = perspmeasure::notes(s, have ? last : nullptr);
   // Room for the notes under the pictures (at most a third of the height).
   const float margin = 8, noteW = float(width) - 2 * margin;

@@ -17,6 +17,14 @@
 //   v  view: the book's figure | the four variants side by side
 //   f  texture filter nearest | linear      + / -  checks per side
 //
+// What the GL does: common/render.cpp: Renderer::draw sends the square as
+// one glBegin(GL_TRIANGLES) of six glTexCoord4f(s, t, 0, 1) + glVertex3f
+// (addSquare below), and GL interpolates (s, t) linearly in each triangle.
+// Projective: glTexCoord4f(s·q, t·q, 0, q) from quad_map.hpp's homography,
+// divided by q per pixel.  Bilinear: a GLSL program, texture2D(tex,
+// mix(bottom, top, ab.y)), the corners sent by glUniform4f.  Listings:
+// book_figures/vi1_quad_distortion.gl.txt, vi1_quad_variants.gl.txt.
+//
 // Measured: the kink — the angle between the checker lines on the two sides
 // of the diagonal, fitted from a render that shows which texel each pixel
 // took — next to the angle the math predicts.
@@ -40,11 +48,8 @@ enum Interp { kAffine, kBilinear, kProjective };
 const char* const kInterpNames[] = {"affine", "bilinear", "projective"};
 const char* const kDiagNames[] = {"tl-br", "bl-tr"};
 
-// Bilinear interpolation of (s, t) over the quad cannot be done by fixed
-// function: the vertices carry the square's own (a, b) as texture
-// coordinates (affine over the square, so exact per triangle) and the
-// fragment shader blends the four corner (s, t) with them.  GLSL 1.20 so it
-// runs on softpipe's GL 3.3 compatibility context as well.
+// Bilinear is beyond fixed function: the vertices carry the square's (a, b) (affine, so exact per
+// triangle), the shader blends the corners' (s, t) by them.  GLSL 1.20: softpipe runs it too.
 const char* const kBilinearVS = R"(#version 120
 void main() {
   gl_TexCoord[0] = gl_MultiTexCoord0;   // (a, b) in [0,1]^2
@@ -109,8 +114,7 @@ class QuadDistortion final : public ts::Scene {
     Interp interp;
   };
   quadmap::Corners corners() const { return quadmap::parseCorners(cornersText_); }
-  // The variants the view shows: the current one (book), or both diagonals
-  // and then the two fixes (compare).
+  // The variants the view shows: the current one (book), or both diagonals and then the two fixes (compare).
   std::vector<Variant> shown() const {
     if (view_ == 0) return {{Diagonal(diagonal_), Interp(interp_)}};
     return {{Diagonal::TopLeftBottomRight, kAffine}, {Diagonal::BottomLeftTopRight, kAffine},
@@ -164,6 +168,7 @@ void QuadDistortion::addSquare(ts::Frame& f, ts::Panel& p, Variant v, int textur
     int i = idx[k];
     ts::Vertex vert;
     vert.pos = glm::vec3(glm::vec2(P[size_t(i)]), 0.0f);
+    // vert.tex becomes glTexCoord4f(s, t, 0, 1), (a, b, 0, 1) or (s·q, t·q, 0, q) in Renderer::draw
     switch (v.interp) {
       case kAffine: vert.tex = glm::vec4(glm::vec2(st[size_t(i)]), 0, 1); break;
       case kBilinear: vert.tex = glm::vec4(glm::vec2(P[size_t(i)]), 0, 1); break;  // (a, b); shader maps
@@ -200,8 +205,7 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
   const float margin = 8;
   const L::Box all{margin, margin, float(width) - margin, float(height) - margin};
   if (view_ == 0) {
-    // The book's layout: texture square left, rendered square right (or
-    // one above the other in a tall window), the kink underneath.
+    // The book's layout: texture left, square right (one above the other when tall), kink underneath.
     std::string name = variantName(current);
     auto m = kinks.find(name);
     std::string kink = m == kinks.end() ? std::string()
@@ -214,8 +218,8 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
     spec.gap = 16;
     std::vector<L::Cell> cells = L::flow(all, spec);
     ts::Panel left = L::unitPanel("texture_space", cells[0].picture), right = L::unitPanel("screen_space", cells[1].picture);
-    // The texture, the region the corners select and the image of the screen
-    // diagonal (quad_views.hpp); the affine split's along its first triangle.
+    // The texture, the corners' region and the screen diagonal's image (quad_views.hpp; the affine
+    // split's along its first triangle).
     const quadmap::Split sp = quadmap::split(corners(), current.diagonal);
     quadview::addTextureView(left, corners(), current.diagonal, checker, [&](glm::dvec2 q) {
       return current.interp == kAffine ? sp.first(q) : analytic(current, q);
@@ -255,16 +259,13 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
   return f;
 }
 
-// The measurement.  The square is drawn once more, full-frame, with a
-// texture whose texel (i, j) holds R = i, G = j (GL_NEAREST); the kink is
-// fitted from the texels the pixels took on either side of the diagonal
-// (quad_measure.hpp).
+// The measurement: the square drawn again, full-frame, texel (i, j) holding R = i, G = j
+// (GL_NEAREST); the kink fitted from the texels taken either side of the diagonal (quad_measure.hpp).
 double QuadDistortion::measureKink(ts::Renderer& r, Variant v, double* texelError) {
   const int N = 512;  // the same at any figure or window size
   ts::Frame mf;
   mf.width = mf.height = N;
-  // 2048 texels across 512 pixels: each pixel's texel is known to 1/4 pixel.
-  const int T = 2048;
+  const int T = 2048;  // 2048 texels across 512 pixels: each pixel's texel is known to 1/4 pixel
   int tex = mf.addTexture(ts::texelIndexTexture(T));
   ts::Panel p = ts::layout::unitPanel("texel_index", {0, 0, N, N});
   addSquare(mf, p, v, tex, false);

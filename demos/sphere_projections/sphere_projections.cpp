@@ -14,6 +14,17 @@
 //   t / T  tilt toward / away from the viewer (10° steps)
 //   + / -  mesh resolution: cells per 20° band (cells of 20/N degrees)
 //
+// What the GL does: each sphere is one glBegin(GL_TRIANGLES) sent by
+// common/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
+// per vertex, (s, t) from sphere_map.hpp's texCoord (Eq. VI.2 or VI.3) at the
+// grid's corners, interpolated by GL inside each cell; the two spheres differ
+// only in those t (book_figures/vi5_sphere_projections.gl.txt: the first
+// vertices' t = 0.0278 against 0.0019).  Renderer::texture uploads the
+// mipmapped checkerboard (GL_LINEAR_MIPMAP_LINEAR) and makes
+// glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE).
+// vi5_area_ratio.gl.txt draws only the plot; its numbers come from
+// sphere_measure.hpp's texel-index renders (Renderer::renderOffscreen).
+//
 // Measured, per 20° band of latitude and per mapping: texture area / surface
 // area, normalised to a whole-sphere mean of 1 — analytic (sphere_map.hpp),
 // exact from the mesh's triangles, and from a render that shows which texel
@@ -136,6 +147,7 @@ void SphereProjections::addSphere(ts::Frame& f, const ts::layout::Cell& cell, Ma
   // Light from the upper left, in front, fixed to the viewer: into model
   // coordinates with the inverse (transpose) of the rotation.
   glm::dvec3 toLight = glm::transpose(glm::dmat3(glm::mat3(turn))) * glm::dvec3(-0.45, 0.55, 0.7);
+  // The mesh's (s, t) (spheremap::texCoord) become glTexCoord4f(s, t, 0, 1) in Renderer::draw.
   p.batches.push_back(ts::litMeshBatch(spheremap::sphereMesh(m, resolution_), texture, toLight));
   f.panels.push_back(p);
 

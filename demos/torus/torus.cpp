@@ -19,6 +19,14 @@
 //   m  the centre marker            v  view: single | compare (both mappings)
 //   . / ,  tilt towards the viewer   ] / [  turn about the torus's axis
 //
+// What the GL does: each torus is one glBegin(GL_TRIANGLES) sent by
+// common/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
+// per vertex, (s, t) = torus_map.hpp's texcoord, (i/nu, j/nv) plus (1/2, 1/2)
+// for front; glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S/T, GL_REPEAT),
+// made by Renderer::texture, reads s, t in [1/2, 3/2) as the texture shifted.
+// Listings: book_figures/vi6_torus.gl.txt and vi6_torus_centre.gl.txt (its
+// front torus starts at glTexCoord4f(0.5, 0.5, 0, 1)).
+//
 // Measured: the torus is drawn once more with a texture whose texels hold
 // their own indices; the pixels whose texel is near (1/2, 1/2) are fitted to
 // find where on the screen the centre is, a ray through that point is cast
@@ -176,6 +184,7 @@ void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int s
   p.depthTest = true;
   // Light from the upper left in front, fixed to the viewer.
   glm::dvec3 toLight = glm::dvec3(glm::inverse(glm::mat3(p.modelview)) * glm::vec3(-0.4f, 0.6f, 1.0f));
+  // The mesh's (s, t) (torusmap::texcoord) become glTexCoord4f(s, t, 0, 1) in Renderer::draw.
   p.batches.push_back(ts::litMeshBatch(torusmap::mesh(tp), tex, toLight, 0.4, 0.6, "torus"));
   if (marker_) {
     // A cross in the tangent plane at the answer, lifted 2% of r along the

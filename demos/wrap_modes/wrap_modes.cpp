@@ -28,6 +28,16 @@
 //   ] / [  } / {  shift s / t of the texture matrix   r / R  rotate   > / <  scale   k / K  shear
 //   a  animate the rotation
 //
+// What the GL does, all in common/render.cpp: Renderer::texture makes the
+// glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S/T, mode) and
+// GL_TEXTURE_BORDER_COLOR calls; Renderer::draw sends each quad
+// (wrap_passes.hpp: stQuad) as glTexCoord4f(s, t, 0, 1) + glVertex3f, s and
+// t from -range to 1 + range, loads a batch's texture matrix around it, and
+// makes glTexEnvi (with glTexEnvfv(GL_TEXTURE_ENV_COLOR) for GL_BLEND; for
+// the separate specular glEnable(GL_COLOR_SUM) and glSecondaryColor3f per
+// vertex, lit on the CPU).  Listings: book_figures/wrap_modes.gl.txt,
+// texture_matrix.gl.txt, texture_environment.gl.txt.
+//
 // Measured (measure()): the quad drawn again with a texture whose texels hold
 // their indices (common/textures.hpp), every pixel's texel against the
 // formula, with pixel centres a quarter texel inside and, in a second pass,
@@ -112,10 +122,9 @@ class WrapModes final : public ts::Scene {
              "GL_MODULATE multiplies the highlight by the texel; GL_SEPARATE_SPECULAR_COLOR adds it after texturing.",
              {"--view", "env"}, 1200, 520}};
   }
-  // The animation turns the `rotate` option itself, 30 degrees a second, so
-  // the window keeps drawing and F12 saves the state it shows; the frame the
-  // key is taken on is left still, so the state line printed for the key is
-  // the state the key made.
+  // The animation turns the `rotate` option itself, 30 degrees a second, so the window keeps drawing and
+  // F12 saves the state it shows; the frame the key is taken on is left still, so the state line printed
+  // for the key is the state the key made.
   void update(double seconds) override {
     if (!animate_) animFrames_ = 0;
     else if (++animFrames_ > 1) xf_.angleDeg = float(std::remainder(xf_.angleDeg + 30.0 * seconds, 360.0));
@@ -136,9 +145,8 @@ class WrapModes final : public ts::Scene {
     x.scale.y = x.scale.x;
     return wrapmath::textureMatrix(x);
   }
-  // The environment view (wrap_views.hpp): a plane lit per vertex under the
-  // RGBA texture in each mode; separate_ sends the specular part as the
-  // secondary colour (GL_COLOR_SUM), else it is in the primary colour.
+  // The environment view (wrap_views.hpp): a plane lit per vertex under the RGBA texture in each mode;
+  // separate_ sends the specular part as the secondary colour (GL_COLOR_SUM), else it is in the primary colour.
   ts::Frame envFrame(int width, int height, const Found* found) const;
   int view_ = 0, wrapS_ = 1, wrapT_ = 1, filter_ = 0, env_ = 0;
   bool separate_ = true;
@@ -183,8 +191,7 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
     spec.n = 1, spec.linesAbove = 1, spec.linesBelow = 2;
     L::Cell c = L::flow(area, spec)[0];
     wrapview::addTextureSpace(f, c.picture, "texture_space", tex, range_);
-    // The quad's fragment colours run from orange to blue: the environment
-    // (key e) combines them with the texels, GL_BLEND with kEnvColour.
+    // Fragment colours orange to blue: the environment (key e) combines them with the texels, GL_BLEND with kEnvColour.
     ts::Batch& q = f.panels.back().batches.front();
     q.texEnv = kEnvs[env_];
     q.envColor = kEnvColour;
@@ -210,7 +217,7 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
   q.id = "quad";
   q.viewport = cells[1].picture;
   q.projection = glm::ortho(-0.1f, 1.1f, -0.1f, 1.1f, -1.0f, 1.0f);
-  ts::Batch b = stQuad({0, 0}, {1, 1}, {0, 0}, {1, 1}, tex);
+  ts::Batch b = stQuad({0, 0}, {1, 1}, {0, 0}, {1, 1}, tex);  // glTexCoord4f(s, t, 0, 1) in Renderer::draw, GL then applies M
   b.textureMatrix = matrix();
   q.batches.push_back(b);
   f.panels.push_back(q);
@@ -225,10 +232,9 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
 }
 
 ts::Frame WrapModes::envFrame(int width, int height, const Found* found) const {
-  // The texture: RGBA with an alpha ramp for GL_DECAL (whose alpha is the
-  // fragment's, so the picture stays opaque); opaque for the others, whose
-  // alpha would be At or Af At and show the page through the figure (the
-  // measurement checks every mode's alpha on a grid instead).
+  // The texture: RGBA with an alpha ramp for GL_DECAL (whose alpha is the fragment's, so the picture stays
+  // opaque); opaque for the others, whose alpha would be At or Af At and show the page through the figure
+  // (the measurement checks every mode's alpha on a grid instead).
   ts::TextureDesc opaque = texture(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, true), ramp = opaque;
   if (texturePath_.empty()) {
     ramp = ts::gradientTexture(npot_ ? 7 : 8, npot_ ? 5 : 8, true);
@@ -237,8 +243,7 @@ ts::Frame WrapModes::envFrame(int width, int height, const Found* found) const {
   return wrapview::envFrame(width, height, opaque, ramp, separate_, found);
 }
 
-// Measured in small offscreen passes (wrap_passes.hpp), each read back and
-// compared with wrap_math.hpp's formulas.
+// Measured in small offscreen passes (wrap_passes.hpp), each read back and compared with wrap_math.hpp's formulas.
 ts::Measurements WrapModes::measure(ts::Renderer& r) {
   ts::Measurements out;
   Found found;
@@ -276,9 +281,8 @@ ts::Measurements WrapModes::measure(ts::Renderer& r) {
     out.push_back({std::string("env_mismatches[") + kEnvNames[m] + "]", double(bad), "of 600 fragment x texel pairs: more than 1 step of 8 bits from the table"});
   }
   out.push_back({"env_table_mismatches", double(found.envMismatches), "every mode: pairs more than 1 step of 8 bits from the table"});
-  // The highlight: the env view without labels, the brightest pixel of the
-  // GL_MODULATE panel (specular in the primary colour) and of the same with
-  // GL_SEPARATE_SPECULAR_COLOR.
+  // The highlight: the env view without labels, the brightest pixel of the GL_MODULATE panel (specular in
+  // the primary colour) and of the same with GL_SEPARATE_SPECULAR_COLOR.
   WrapModes v = *this;
   for (int k = 0; k < 2; ++k) {
     v.separate_ = k == 1;
