@@ -13,6 +13,7 @@
 #include "gl.hpp"
 #include "options.hpp"
 #include "render.hpp"
+#include "test_hooks.hpp"
 
 namespace ts {
 namespace {
@@ -29,14 +30,6 @@ struct Running {
 thread_local Running* tl_running = nullptr;
 std::atomic<Running*> g_running{nullptr};
 
-// TS_TEST_SLOW_MEASURE_MS=N (tests only): every measurement of the worker
-// first spends N ms in 10 ms steps, reporting progress and stopping when
-// superseded, as a long measurement does; so a test can press keys and close
-// the window while one runs, on a machine of any speed.
-long slowMs() {
-  const char* v = std::getenv("TS_TEST_SLOW_MEASURE_MS");
-  return v ? std::max(0L, std::strtol(v, nullptr, 10)) : 0L;
-}
 }  // namespace
 
 void measureProgress(double fraction) {
@@ -135,7 +128,10 @@ void MeasureWorker::run() {
     if (wake_ && !quit_) wake_();  // under the lock: never after stop() (the window may be gone)
     return;
   }
-  const long slow = slowMs();
+  // TS_TEST_SLOW_MEASURE_MS / _FRAMES (common/test_hooks.hpp): a slowed
+  // measurement, so a test can press keys and close the window while one
+  // runs, on a machine of any speed and load.
+  const long slow = test_hooks::slowMeasureMs(), slowFrames = test_hooks::slowMeasureFrames();
   for (;;) {
     std::vector<std::string> flags;
     int w = 1, h = 1;
@@ -156,8 +152,9 @@ void MeasureWorker::run() {
     r.id = id;
     bool cancelled = false;
     try {
-      for (long t = 0; t < slow; t += 10) {
-        measureProgress(double(t) / double(slow));
+      const long frame0 = test_hooks::framesDrawn();
+      for (long t = 0; t < slow || test_hooks::framesDrawn() - frame0 < slowFrames; t += 10) {
+        measureProgress(std::min(0.99, double(t + 10) / double(std::max(slow, 10L))));
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
       }
       measureProgress(0.0);

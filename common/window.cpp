@@ -26,6 +26,7 @@
 #include "orbit_camera.hpp"
 #include "side_panel.hpp"
 #include "sidecar.hpp"
+#include "test_hooks.hpp"
 #include "render.hpp"
 
 namespace ts {
@@ -110,25 +111,16 @@ void onDrop(GLFWwindow* w, int n, const char** paths) {
   for (int i = 0; i < n; ++i) in->dropped.push_back(paths[i]);
 }
 
-// TS_TEST_MOUSE (tests only): mouse events given before the first frame, as
-// "press X Y; move X Y; release; wheel N; drop FILE" ("rpress X Y": the
-// right button), through the handlers
-// above (xdotool drives the same ones through GLFW in a real X session).
+// TS_TEST_MOUSE (common/test_hooks.hpp): mouse events given before the
+// first frame, through the handlers above (xdotool drives the same ones
+// through GLFW in a real X session).
 void testMouse(Input* in) {
-  const char* spec = std::getenv("TS_TEST_MOUSE");
-  if (!spec) return;
-  std::stringstream all(spec);
-  for (std::string ev; std::getline(all, ev, ';');) {
-    std::istringstream e(ev);
-    std::string what;
-    double a = 0, b = 0;
-    e >> what;
-    if ((what == "press" || what == "rpress") && e >> a >> b) in->lightDrag = what == "rpress", mouseButton(in, true, a, b);
-    else if (what == "move" && e >> a >> b) mouseMove(in, a, b);
-    else if (what == "release") mouseButton(in, false, in->lastX, in->lastY);
-    else if (what == "wheel" && e >> a) mouseWheel(in, a);
-    else if (what == "drop" && e >> std::ws && std::getline(e, what)) in->dropped.push_back(what);
-    else if (!what.empty()) std::fprintf(stderr, "TS_TEST_MOUSE: cannot read '%s'\n", ev.c_str());
+  for (const test_hooks::MouseEvent& m : test_hooks::mouseEvents()) {
+    if (m.what == "press" || m.what == "rpress") in->lightDrag = m.what == "rpress", mouseButton(in, true, m.a, m.b);
+    else if (m.what == "move") mouseMove(in, m.a, m.b);
+    else if (m.what == "release") mouseButton(in, false, in->lastX, in->lastY);
+    else if (m.what == "wheel") mouseWheel(in, m.a);
+    else if (m.what == "drop") in->dropped.push_back(m.path);
   }
 }
 
@@ -180,68 +172,6 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
     default: break;
   }
 }
-
-// Test hooks (environment, tests and benchmarks only).
-// TS_TEST_RESIZE="WxH WxH ...": once the window would have ended (--frames),
-// resize it to each size in turn and draw --frames frames again; the last
-// frame at each size, the first included, is written as <screenshot>.WxH.png
-// (the figure alone; WxH: the window's size then).
-std::vector<std::pair<int, int>> testResizes() {
-  std::vector<std::pair<int, int>> sizes;
-  const char* spec = std::getenv("TS_TEST_RESIZE");
-  std::istringstream in(spec ? spec : "");
-  for (std::string s; in >> s;) {
-    int w = 0, h = 0;
-    char x = 0;
-    std::istringstream one(s);
-    if (one >> w >> x >> h && x == 'x' && w > 0 && h > 0) sizes.push_back({w, h});
-    else std::fprintf(stderr, "TS_TEST_RESIZE: cannot read '%s'\n", s.c_str());
-  }
-  return sizes;
-}
-std::string sizedName(const std::string& png, int w, int h) {
-  std::string stem = png.size() > 4 && png.compare(png.size() - 4, 4, ".png") == 0 ? png.substr(0, png.size() - 4) : png;
-  return stem + "." + std::to_string(w) + "x" + std::to_string(h) + ".png";
-}
-
-// TS_TEST_FRAME_LOG=FILE: a line per event, times in seconds of the steady
-// clock (CLOCK_MONOTONIC, comparable across processes): "frame T M P" after
-// each swap (M 1 while a measurement is out, P its progress), "key T C" when
-// a key is taken, "result T" when a measurement is handed over.
-// TS_TEST_KEY_INTERVAL_MS=N: take a key at most every N ms (so --keys types
-// them while a measurement runs, as a student does), not one per frame.
-class TestLog {
- public:
-  TestLog() {
-    const char* p = std::getenv("TS_TEST_FRAME_LOG");
-    if (p && *p) f_ = std::fopen(p, "w");
-    const char* k = std::getenv("TS_TEST_KEY_INTERVAL_MS");
-    keyInterval_ = k ? std::max(0.0, std::strtod(k, nullptr) / 1000.0) : 0.0;
-  }
-  ~TestLog() {
-    if (f_) std::fclose(f_);
-  }
-  static double clock() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-  }
-  void line(const char* what, const std::string& rest = "") {
-    if (!f_) return;
-    std::fprintf(f_, "%s %.4f%s%s\n", what, clock(), rest.empty() ? "" : " ", rest.c_str());
-    std::fflush(f_);
-  }
-  bool keyDue() {
-    if (keyInterval_ <= 0) return true;
-    double now = clock();
-    if (now - lastKey_ < keyInterval_) return false;
-    lastKey_ = now;
-    return true;
-  }
-  double untilKey() const { return keyInterval_ <= 0 ? 0.0 : std::max(0.0, lastKey_ + keyInterval_ - clock()); }
-
- private:
-  std::FILE* f_ = nullptr;
-  double keyInterval_ = 0, lastKey_ = -1e9;
-};
 
 // F12: the window's picture as PNG + sidecar under a name not yet taken
 // (<demo>-<n>.png in the working folder), and the command that remakes it.
@@ -434,8 +364,8 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
   bool measureHere = false;
   bool savePending = false;  // F12 pressed
   int measuredW = 0, measuredH = 0;  // the figure size the numbers shown were (or are being) measured at
-  TestLog testLog;
-  std::vector<std::pair<int, int>> resizes = testResizes();
+  test_hooks::KeyLog testLog;  // TS_TEST_FRAME_LOG, TS_TEST_KEY_WHEN
+  std::vector<std::pair<int, int>> resizes = test_hooks::resizes();
   const bool resizing = !resizes.empty();
   GlPane pane;
   bool record = false, afterKey = false;  // the GL pane needs a new recording
@@ -458,12 +388,15 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       // While a measurement runs (and nothing else asks for frames) the loop
       // draws about 30 frames a second for the progress, leaving the cores to
       // the worker; --frames (tests) counts those frames too.
+      // A --keys key may wait for an event (TS_TEST_KEY_WHEN) or a time
+      // (TS_TEST_KEY_INTERVAL_MS): the loop then waits instead of spinning.
+      bool keyReady = !input.keys.empty() && testLog.keyDue(measuring, worker->progress(), measuredOnce);
       double keyWait = input.keys.empty() ? 0.0 : testLog.untilKey();
-      bool busy = dirty || redraw || scene.live() || (!input.keys.empty() && keyWait <= 0) || !input.dropped.empty() ||
+      bool busy = dirty || redraw || scene.live() || keyReady || !input.dropped.empty() ||
                   (flags.frames && !measuring && input.keys.empty());
       if (busy) glfwPollEvents();
       else if (keyWait > 0) glfwWaitEventsTimeout(measuring ? std::min(keyWait, 1.0 / 30) : keyWait);
-      else if (measuring) glfwWaitEventsTimeout(1.0 / 30);  // the progress moves; the worker wakes us when done
+      else if (measuring || !input.keys.empty()) glfwWaitEventsTimeout(1.0 / 30);  // the progress moves; the worker wakes us when done
       else if (pane.visible && glfwGetTime() - keyAt < GlPane::kHighlightSeconds + 0.1)
         glfwWaitEventsTimeout(0.25);
       else
@@ -486,7 +419,8 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       }
       input.dropped.clear();
       // One synthesised or typed key per frame, through the same handler.
-      if (!input.keys.empty() && testLog.keyDue()) {
+      if (!input.keys.empty() && testLog.keyDue(measuring, worker->progress(), measuredOnce)) {
+        testLog.keyTaken();
         char k = input.keys.front();
         testLog.line("key", std::string(1, std::isprint(static_cast<unsigned char>(k)) ? k : '?'));
         input.keys.erase(0, 1);
@@ -583,7 +517,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       // TS_TEST_RESIZE (tests): at what would be the last frame, keep that
       // frame as <screenshot>.WxH.png, resize to the next size and go on.
       if (lastFrame && resizing && !flags.screenshot.empty())
-        writePng(sizedName(flags.screenshot, ctx.width(), ctx.height()), ctx.readPixels());
+        writePng(test_hooks::sizedName(flags.screenshot, ctx.width(), ctx.height()), ctx.readPixels());
       if (lastFrame && !resizes.empty()) {
         glfwSetWindowSize(win, resizes.front().first, resizes.front().second);
         resizes.erase(resizes.begin());
@@ -618,6 +552,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       char progress[32];
       std::snprintf(progress, sizeof progress, "%d %.3f", measuring ? 1 : 0, measuring ? worker->progress() : 1.0);
       testLog.line("frame", progress);
+      test_hooks::frameDrawn();
       if (lastFrame) break;
     }
   } catch (const Error&) {

@@ -78,12 +78,17 @@ for round in 1 2 3; do
   TS_TEST_WRITE_PAUSE_MS=400 "$FIGS" --backend osmesa --out "$out" >/dev/null 2>&1 &
   pid=$!
   caught=0
-  # Skip $round writes first, so the kill lands on different files.
-  for _ in $(seq 1 600); do
+  # Skip $round writes first, so the kill lands on different files.  Waits
+  # on the event (a write in progress), for as long as the process runs: no
+  # count of polls that a busy machine could exhaust.  After a catch, waits
+  # for that file to be written (its unnamed file gone) before looking again.
+  while kill -0 "$pid" 2>/dev/null; do
     if ls -l /proc/$pid/fd 2>/dev/null | grep -q "$out/.*(deleted)\|$out/#"; then
       caught=$((caught + 1))
       [ "$caught" -ge "$round" ] && break
-      sleep 0.45
+      while kill -0 "$pid" 2>/dev/null && ls -l /proc/$pid/fd 2>/dev/null | grep -q "$out/.*(deleted)\|$out/#"; do
+        sleep 0.02
+      done
     else
       sleep 0.02
     fi

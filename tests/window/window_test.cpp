@@ -84,20 +84,18 @@ constexpr int kFrames = 3;
 // The window and --png size: 800x480 unless TS_WINDOW_SIZE=WxH says otherwise.
 int gWidth = 800, gHeight = 480;
 
-// How long a window run may take.  Measured: 0.5-1.5 s (Xvfb start,
-// context, 3 frames, the measurement passes; 1.5-4.5 s for view=compare's
-// four measurements) on 2 busy shared llvmpipe cores.  Anything
-// over kSlowSeconds is a failure ("quickly"); at kKillSeconds the process
-// group (xvfb-run, Xvfb, the demo) is killed.  TS_WINDOW_SLOW_SECONDS=S
-// raises the first (and the second to 3 S) for slow builds: the asan-window
-// preset, where every program runs under AddressSanitizer.
+// No verdict here depends on how long anything takes (the machine may be
+// busy; bench_window times the window).  A run that has not ended after
+// kHangSeconds is a hang: its process group (xvfb-run, Xvfb, the demo) is
+// killed and the case fails.  Measured quiet: 0.5-4.5 s a run, 28 s under a
+// two-loop load, up to 20 s under ASan; TS_WINDOW_HANG_SECONDS=S changes it.
 double envSeconds(const char* name, double fallback) {
   const char* e = std::getenv(name);
   char* end = nullptr;
   double v = e && *e ? std::strtod(e, &end) : 0.0;
   return e && *e && end && !*end && v > 0 ? v : fallback;
 }
-const double kSlowSeconds = envSeconds("TS_WINDOW_SLOW_SECONDS", 15.0), kKillSeconds = 3.0 * kSlowSeconds;
+const double kHangSeconds = envSeconds("TS_WINDOW_HANG_SECONDS", 300.0);
 
 // --- window vs --png tolerance ------------------------------------------
 // Measured on Debian 12 / Mesa 22.3.6 / llvmpipe, 800x480, every state this
@@ -240,7 +238,7 @@ struct Proc {
     waitid(P_PID, id_t(pid), &info, WEXITED | WNOHANG | WNOWAIT);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (info.si_pid != pid) {
-      if (seconds <= kKillSeconds) return false;
+      if (seconds <= kHangSeconds) return false;
       timedOut = true;
     }
     kill(-pid, SIGKILL);
@@ -254,7 +252,7 @@ struct Proc {
   bool done = false;
   std::string describe() const {
     std::ostringstream o;
-    o << "$ " << commandLine(argv) << "\n  exit " << exitCode << (timedOut ? " (killed: timeout)" : "") << " after "
+    o << "$ " << commandLine(argv) << "\n  exit " << exitCode << (timedOut ? " (killed: no end after TS_WINDOW_HANG_SECONDS)" : "") << " after "
       << seconds << " s\n  stderr: " << (err.empty() ? "(empty)" : err) << "\n";
     return o.str();
   }
@@ -449,7 +447,6 @@ void windowVsPng(const std::string& id, const std::string& testName, const std::
   std::ofstream(dir + "/commands.txt") << commandLine(win.argv) << "\n" << commandLine(png.argv) << "\n";
 
   ASSERT_EQ(win.exitCode, 0) << win.describe();
-  EXPECT_LT(win.seconds, kSlowSeconds) << "the window run is slow\n" << win.describe();
   ASSERT_EQ(png.exitCode, 0) << png.describe();
 
   // The state lines: the window prints stateText() on its first frame and
@@ -627,7 +624,8 @@ bool runPrintedCommand(const std::string& id, const std::string& command, const 
   return remake.exitCode == 0;
 }
 
-void usualKeys(const std::string& id) {
+// Backspace, = and the right arrow (the full level).
+void resetEqualsArrow(const std::string& id) {
   Fresh initial(id);
   std::string base = outDir() + "/" + id + "/usual_keys";
   // Backspace after a change: the state line is the defaults again.
@@ -666,21 +664,35 @@ void usualKeys(const std::string& id) {
     ASSERT_FALSE(lines.empty());
     EXPECT_EQ(lines.back(), f.opts.stateText()) << "the right arrow did not turn";
   }
-  // ? shows the help card: the window as seen changes, the state does not.
-  Proc plain = windowRun(id, base + "/plain", "", true), help = windowRun(id, base + "/help", "?", true);
-  ASSERT_EQ(help.exitCode, 0) << help.describe();
-  lines = stateLines(help.out, initial.opts);
-  ASSERT_FALSE(lines.empty());
-  EXPECT_EQ(lines.back(), initial.opts.stateText()) << "? changed the state";
-  ts::Image scratch;
-  Diff d = compare(ts::readPng(base + "/plain/window.png"), ts::readPng(base + "/help/window.png"), &scratch);
-  EXPECT_GT(d.overSmall, long(gWidth) * gHeight / 20) << "the help card is not on screen";
+}
+
+// The smoke level's second case: a key, then F12 saves the state and prints
+// the command that remakes it (which must give the same picture); the same
+// key, then ? shows the help card: the window as seen changes, the state
+// does not.  Two window runs, with the window as the student sees it.
+void helpAndSave(const std::string& id) {
+  Fresh initial(id);
+  std::string base = outDir() + "/" + id + "/help_and_save";
+  std::string change;
+  for (const auto& it : initial.opts.items())
+    if (it.key && change.empty()) change = std::string(1, it.key);
+  ASSERT_FALSE(change.empty());
+  Fresh changed(id);
+  changed.opts.handleKey(change[0]);
   // F12: PNG + sidecar under a new name, and a command that remakes them.
   std::string dir = base + "/save";
   std::remove((dir + "/" + id + "-1.png").c_str());
   std::remove((dir + "/" + id + "-1.json").c_str());
-  Proc save = windowRun(id, dir, change + std::string(1, ts::keys::kSave));
+  Proc save = windowRun(id, dir, change + std::string(1, ts::keys::kSave), true);
+  Proc help = windowRun(id, base + "/help", change + "?", true);
   ASSERT_EQ(save.exitCode, 0) << save.describe();
+  ASSERT_EQ(help.exitCode, 0) << help.describe();
+  std::vector<std::string> lines = stateLines(help.out, initial.opts);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines.back(), changed.opts.stateText()) << "? changed the state";
+  ts::Image scratch;
+  Diff d = compare(ts::readPng(dir + "/window.png"), ts::readPng(base + "/help/window.png"), &scratch);
+  EXPECT_GT(d.overSmall, long(gWidth) * gHeight / 20) << "the help card is not on screen";
   size_t at = save.out.find("remake them with:\n  ");
   ASSERT_NE(at, std::string::npos) << save.out;
   std::string command = save.out.substr(at + 20, save.out.find('\n', at + 20) - at - 20);
@@ -889,11 +901,14 @@ void roundTrip(const std::string& id, const ts::Options& state, const std::strin
 
 
 // --- never frozen (issue 13.3) ----------------------------------------------
-// The window's test hooks: TS_TEST_SLOW_MEASURE_MS makes every measurement of
-// the worker last that long (in 10 ms steps that report progress and stop when
-// superseded), TS_TEST_KEY_INTERVAL_MS types --keys that far apart (while a
-// measurement runs), TS_TEST_FRAME_LOG lists frames, keys and results with
-// steady-clock times (see common/window.cpp).
+// The window's test hooks (common/test_hooks.hpp): TS_TEST_SLOW_MEASURE_MS
+// and _FRAMES make every measurement of the worker last at least that long
+// and that many window frames (in 10 ms steps that report progress and stop
+// when superseded), TS_TEST_KEY_WHEN=measuring types each --keys key after the
+// first while a measurement runs (=measured: once it is in),
+// TS_TEST_FRAME_LOG lists frames, keys and results in order, with
+// steady-clock times.  Every check below is on the order of events, never on
+// how long they took.
 struct LogEvent {
   std::string what;  // frame | key | result
   double t = 0;
@@ -941,21 +956,26 @@ Proc hookedRun(const std::string& id, const std::string& dir, const std::vector<
   return win;
 }
 
-// Two keys typed 0.7 s apart while a measurement slowed to 2.5 s runs: the
-// first picture comes before the first measurement ends, frames keep coming
-// (with the progress) while it runs, the second key supersedes the first
-// one's measurement (only the last state's result is shown and printed), and
-// --frames' last frame waits for it.
+// Two keys, the second typed while the first one's measurement (slowed to
+// at least 2.5 s and 10 window frames) runs: the first picture comes before
+// the first measurement ends, frames keep coming (with the progress) while it
+// runs, the second key supersedes the first one's measurement (only the last
+// state's result is shown and printed), and --frames' last frame waits for
+// it.  A window that stopped drawing while measuring would never get its
+// result (the slowed measurement waits for 10 frames): the run would hang.
 void framesKeepComing(const std::string& id) {
   const double slow = 2.5;
+  const int slowFrames = 10;
   std::string dir = outDir() + "/" + id + "/never_frozen", keys = twoKeys(id);
   ASSERT_EQ(keys.size(), 2u);
-  Proc win = hookedRun(id, dir, {"TS_TEST_SLOW_MEASURE_MS=2500", "TS_TEST_KEY_INTERVAL_MS=700"},
+  Proc win = hookedRun(id, dir,
+                       {"TS_TEST_SLOW_MEASURE_MS=2500", "TS_TEST_SLOW_MEASURE_FRAMES=" + std::to_string(slowFrames),
+                        "TS_TEST_KEY_WHEN=measuring"},
                        {"--frames", "3", "--keys", keys});
   ASSERT_EQ(win.exitCode, 0) << win.describe();
   std::vector<LogEvent> log = readFrameLog(dir + "/frames.log");
   double firstFrame = -1, firstResult = -1, lastKey = -1, maxGap = 0;
-  int results = 0, keysTaken = 0, measuringFrames = 0;
+  int results = 0, keysTaken = 0, measuringFrames = 0, framesBeforeSecondKey = 0;
   bool midProgress = false;
   double prevFrame = -1;
   for (const auto& e : log) {
@@ -965,6 +985,7 @@ void framesKeepComing(const std::string& id) {
         ++measuringFrames;
         midProgress |= e.progress > 0.0 && e.progress < 1.0;
         if (prevFrame >= 0) maxGap = std::max(maxGap, e.t - prevFrame);
+        if (keysTaken == 1) ++framesBeforeSecondKey;
       }
       prevFrame = e.t;
     } else if (e.what == "result") {
@@ -975,18 +996,19 @@ void framesKeepComing(const std::string& id) {
       lastKey = e.t;
     }
   }
+  // Timings are printed for the reader, not checked (bench_window times them).
   std::printf("[ measured ] %s/never_frozen: first frame %.2f s before the first result; %d frames while measuring, "
-              "longest interval %.3f s\n", id.c_str(), firstResult - firstFrame, measuringFrames, maxGap);
+              "longest interval %.3f s (not checked: bench_window times it)\n",
+              id.c_str(), firstResult - firstFrame, measuringFrames, maxGap);
   ASSERT_GE(firstFrame, 0) << "no frame logged\n" << win.describe();
   ASSERT_GE(firstResult, 0) << "no measurement handed over\n" << win.describe();
   EXPECT_LT(firstFrame, firstResult) << "the first picture waited for the measurement";
   EXPECT_EQ(keysTaken, 2);
+  EXPECT_GE(framesBeforeSecondKey, 1) << "the second key was not typed while the first one's measurement ran";
   EXPECT_EQ(results, 1) << "the first key's measurement was not superseded by the second key";
+  // The slowed measurement lasts at least 2.5 s after the key that asked for it.
   EXPECT_GE(firstResult - lastKey, slow - 0.05) << "the result came before the last key's slowed measurement could end";
-  // 2.5 s of slowed measurement at 30 frames a second: tens of frames.  The
-  // bound on an interval is loose (a busy machine); bench_window measures it.
-  EXPECT_GE(measuringFrames, 10) << "the window did not keep drawing while measuring";
-  EXPECT_LT(maxGap, 1.0) << "a frame interval while measuring";
+  EXPECT_GE(measuringFrames, slowFrames) << "the window did not keep drawing while measuring";
   EXPECT_TRUE(midProgress) << "no frame showed the measurement's progress";
   Fresh f(id);
   for (char k : keys) f.opts.handleKey(k);
@@ -995,24 +1017,30 @@ void framesKeepComing(const std::string& id) {
   EXPECT_EQ(lines.back(), f.opts.stateText());
 }
 
-// A key, then q one second later, while a measurement slowed to 30 s runs:
-// the window closes at once and the process ends (the measurement stops at
-// its next progress report), exit status 0, nothing on stderr about leaks.
+// A key, then q while its measurement (slowed to 10 minutes) runs: the window
+// closes at once and the process ends (the measurement stops at its next
+// progress report), exit status 0, nothing on stderr about leaks.  Had
+// closing waited for the measurement, the run would outlast the hang guard
+// (kHangSeconds) and be killed: a failure, whatever the machine's load.
 void closeDuringMeasurement(const std::string& id) {
   std::string dir = outDir() + "/" + id + "/close_while_measuring", keys = twoKeys(id).substr(0, 1) + "q";
-  Proc win = hookedRun(id, dir, {"TS_TEST_SLOW_MEASURE_MS=30000", "TS_TEST_KEY_INTERVAL_MS=1000"}, {"--keys", keys});
+  Proc win = hookedRun(id, dir, {"TS_TEST_SLOW_MEASURE_MS=600000", "TS_TEST_KEY_WHEN=measuring"}, {"--keys", keys});
+  ASSERT_FALSE(win.timedOut) << "closing waited for the measurement\n" << win.describe();
   ASSERT_EQ(win.exitCode, 0) << win.describe();
   std::vector<LogEvent> log = readFrameLog(dir + "/frames.log");
-  double quitAt = -1, lastFrame = -1;
-  for (const auto& e : log) {
-    if (e.what == "key" && e.key == "q") quitAt = e.t;
-    if (e.what == "frame") lastFrame = e.t;
-    EXPECT_NE(e.what, "result") << "a 30 s measurement ended in a run that should have lasted about 2 s";
+  int quitAt = -1, framesAfterQuit = 0, measuringBeforeQuit = 0;
+  for (size_t i = 0; i < log.size(); ++i) {
+    const auto& e = log[i];
+    if (e.what == "key" && e.key == "q") quitAt = int(i);
+    if (e.what == "frame" && quitAt >= 0) ++framesAfterQuit;
+    if (e.what == "frame" && quitAt < 0 && e.measuring) ++measuringBeforeQuit;
+    EXPECT_NE(e.what, "result") << "a 10-minute measurement ended in a run that should have lasted seconds";
   }
   ASSERT_GE(quitAt, 0) << win.describe();
-  std::printf("[ measured ] %s/close_while_measuring: run %.2f s (measurement slowed to 30 s)\n", id.c_str(), win.seconds);
-  EXPECT_LE(lastFrame, quitAt + 0.2) << "frames after q";
-  EXPECT_LT(win.seconds, 12.0) << "closing waited for the measurement\n" << win.describe();
+  std::printf("[ measured ] %s/close_while_measuring: run %.2f s (measurement slowed to 10 min)\n", id.c_str(), win.seconds);
+  EXPECT_GE(measuringBeforeQuit, 1) << "q was not typed while the measurement ran";
+  // The frame in which q is taken is finished; none follows it.
+  EXPECT_LE(framesAfterQuit, 1) << "frames after q";
   EXPECT_EQ(win.err.find("LeakSanitizer"), std::string::npos) << win.err;
 }
 
@@ -1030,10 +1058,24 @@ void registerCase(const std::string& suite, const std::string& name, std::functi
                         [body]() -> testing::Test* { return new Case(body); });
 }
 
+// The two levels: smoke (the quick level: each demo opens, takes its first
+// key, matches --png, saves with F12, shows the help card and closes; the
+// state flags round-trip) and full (every other case).  A case is in one of
+// them, never both.  `only`: one demo's cases ("" = every demo).
+enum class Subset { Smoke, Full, All };
+Subset gSubset = Subset::All;
+std::string gOnly;
+
 void registerAll() {
+  const bool smoke = gSubset != Subset::Full, full = gSubset != Subset::Smoke;
   for (const auto& reg : ts::sceneRegistry()) {
     const std::string id = reg.id;
-    registerCase(id, "window_matches_png", [id] {
+    if (!gOnly.empty() && id != gOnly) continue;
+    // registerCase for the full level only.
+    auto fullCase = [full](const std::string& suite, const std::string& name, std::function<void()> body) {
+      if (full) registerCase(suite, name, std::move(body));
+    };
+    fullCase(id, "window_matches_png", [id] {
       Fresh f(id);
       ASSERT_TRUE(f.scene);
       windowVsPng(id, "window_matches_png", "", f.opts, "");
@@ -1043,10 +1085,13 @@ void registerAll() {
     for (const auto& it : probe.opts.items())
       for (char k : {it.key, it.keyDown})
         if (k) keys.push_back({k, it.name});
-    for (const auto& [k, name] : keys) {
+    for (size_t n = 0; n < keys.size(); ++n) {
+      const auto& [k, name] = keys[n];
       std::string test = "key_" + keyLabel(k) + "_" + name;
       char key = k;
       std::string option = name;
+      // The first key is the smoke level's; the others the full level's.
+      if (n == 0 ? !smoke : !full) continue;
       registerCase(id, test, [id, test, key, option] {
         // The window takes q and h itself (quit, overlay) before the demo's
         // handler: an option bound to either could never be reached.
@@ -1082,7 +1127,7 @@ void registerAll() {
             viewKeys += it.key;
           }
       if (g.scene->live())
-        registerCase(id, "live_view_matches_png", [id, viewKeys] {
+        fullCase(id, "live_view_matches_png", [id, viewKeys] {
           Fresh f(id);
           for (char k : viewKeys) f.opts.handleKey(k);
           windowVsPng(id, "live_view_matches_png", "", f.opts, "", true);
@@ -1091,7 +1136,7 @@ void registerAll() {
     // The GL pane beside the figure, opened, then the demo's first key.
     if (!keys.empty()) {
       char first = keys.front().first;
-      registerCase(id, "gl_pane_beside_figure", [id, first] {
+      fullCase(id, "gl_pane_beside_figure", [id, first] {
         Fresh f(id);
         f.opts.handleKey(first);
         paneBesideFigure(id, std::string("l") + first, f.opts, "");
@@ -1100,7 +1145,7 @@ void registerAll() {
     // The issue's two examples: f in quad_distortion changes the filter
     // lines; c in cylinder_seam the seam's s from 0.1 to 1.1.
     if (id == "quad_distortion")
-      registerCase(id, "gl_pane_shows_the_filter_change", [id] {
+      fullCase(id, "gl_pane_shows_the_filter_change", [id] {
         Fresh f(id);
         f.opts.handleKey('f');
         std::string filter;
@@ -1109,33 +1154,35 @@ void registerAll() {
         paneBesideFigure(id, "lf", f.opts, "GL_TEXTURE_MAG_FILTER, " + filter + ")");
       });
     if (id == "cylinder_seam")
-      registerCase(id, "gl_pane_shows_the_seam_change", [id] {
+      fullCase(id, "gl_pane_shows_the_seam_change", [id] {
         Fresh f(id);
         f.opts.handleKey('c');
         paneBesideFigure(id, "lc", f.opts, "glTexCoord4f(1.1, ");
       });
     // A picture the scene rendered itself (environment mapping's object):
     // e turns r per pixel into texgen, and the pane marks the render's
-    // glTexGeni lines.  The keys are 8 s apart so that the first measurement
-    // (~1 s) is in before e: the lines are compared with a recording that had
-    // the per-pixel render, not with the picture-less frame before it.
+    // glTexGeni lines.  Each key waits for the measurement of the state
+    // before it (TS_TEST_KEY_WHEN=measured), so the lines are compared with a
+    // recording that had the per-pixel render, not with the picture-less
+    // frame before it.
     if (id == "environment_mapping")
-      registerCase(id, "gl_pane_shows_the_texgen_change", [id] {
+      fullCase(id, "gl_pane_shows_the_texgen_change", [id] {
         Fresh f(id);
         f.opts.handleKey('e');
         paneBesideFigure(id, "le", f.opts, "glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);",
-                         {"TS_TEST_KEY_INTERVAL_MS=8000"});
+                         {"TS_TEST_KEY_WHEN=measured"});
       });
-    registerCase(id, "resize_sequence", [id] { resizeSequence(id); });
-    registerCase(id, "usual_keys", [id] { usualKeys(id); });
-    registerCase(id, "mouse_orbit", [id] { mouseOrbit(id); });
-    if (probe.opts.has("light1-az") && probe.opts.has("light1-el")) registerCase(id, "mouse_light", [id] { mouseLight(id); });
-    if (probe.opts.has("texture")) registerCase(id, "drop_file", [id] { dropFile(id); });
+    fullCase(id, "resize_sequence", [id] { resizeSequence(id); });
+    fullCase(id, "reset_equals_arrow", [id] { resetEqualsArrow(id); });
+    if (smoke) registerCase(id, "help_and_save", [id] { helpAndSave(id); });
+    fullCase(id, "mouse_orbit", [id] { mouseOrbit(id); });
+    if (probe.opts.has("light1-az") && probe.opts.has("light1-el")) fullCase(id, "mouse_light", [id] { mouseLight(id); });
+    if (probe.opts.has("texture")) fullCase(id, "drop_file", [id] { dropFile(id); });
     if (id == "quad_distortion" || id == "parallax_aniso") {
-      registerCase(id, "never_frozen", [id] { framesKeepComing(id); });
-      registerCase(id, "close_while_measuring", [id] { closeDuringMeasurement(id); });
+      fullCase(id, "never_frozen", [id] { framesKeepComing(id); });
+      fullCase(id, "close_while_measuring", [id] { closeDuringMeasurement(id); });
     }
-    registerCase(id, "state_flags_round_trip", [id, keys] {
+    if (smoke) registerCase(id, "state_flags_round_trip", [id, keys] {
       Fresh f(id);
       roundTrip(id, f.opts, "initial state");
       for (const auto& kv : keys) {
@@ -1184,6 +1231,23 @@ int main(int argc, char** argv) {
       std::printf("TS_WINDOW_SIZE: %s\n", e.what());
       return 1;
     }
+  }
+  // --subset=smoke|full|all (default all) and --demo=ID: which cases.
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--subset=smoke") gSubset = Subset::Smoke;
+    else if (a == "--subset=full") gSubset = Subset::Full;
+    else if (a == "--subset=all") gSubset = Subset::All;
+    else if (a.rfind("--demo=", 0) == 0) gOnly = a.substr(7);
+    else {
+      std::fprintf(stderr, "window_test: unknown argument '%s' (--subset=smoke|full|all, --demo=ID, gtest flags)\n",
+                   a.c_str());
+      return 2;
+    }
+  }
+  if (!gOnly.empty() && !ts::makeScene(gOnly)) {
+    std::fprintf(stderr, "window_test: --demo=%s: no such scene\n", gOnly.c_str());
+    return 2;
   }
   if (ts::sceneRegistry().empty()) {
     std::printf("no scene is registered: nothing links into this program\n");
