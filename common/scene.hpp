@@ -1,6 +1,8 @@
-// common/scene.hpp — what a demo implements.  One Scene subclass per figure,
-// in one file under demos/<name>/; everything else (flags, windows,
-// offscreen contexts, PNG, sidecars, the figure gallery) is shared.
+// common/scene.hpp — what a demo implements.  One Scene subclass per demo,
+// in demos/<name>/<name>.cpp (its math, GL and measurement in headers beside
+// it); figures() lists the book figures it renders, each a set of flags.
+// Everything else (flags, windows, offscreen contexts, PNG, sidecars, the
+// figure gallery) is shared.
 #pragma once
 #include <any>
 #include <functional>

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # scripts/durations.sh — measures every CTest test's duration and prints the
 # table tests/durations.tsv holds (each test's TIMEOUT is 4x its row): the
-# slowest of the release presets (default, softpipe, egl) and, when build-asan/
+# slowest of the release presets (default, full, softpipe, egl) and, when build-asan/
 # exists, the ASan + UBSan run (asan, asan-window).  Run it on a quiet machine
 # (nothing else building or testing: `uptime` near 0 before it starts) after
 # adding a test or a demo, and commit the table:
@@ -16,7 +16,7 @@ run() {  # run NAME PRESET: one preset's log, "name seconds" per line
   ctest --preset "$2" >"$T/$1.log" 2>&1 || echo "note: preset $2 had failures (durations still recorded)" >&2
   sed -n 's/^.*Test *#[0-9]*: \([A-Za-z0-9_]*\) .*Passed *\([0-9.]*\) sec.*$/\1 \2/p' "$T/$1.log" >"$T/$1.txt"
 }
-for p in default softpipe egl; do run "$p" "$p"; done
+for p in default full softpipe egl; do run "$p" "$p"; done
 asan=0
 if [ -d build-asan ]; then
   asan=1
@@ -27,13 +27,13 @@ load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 cat <<EOF
 # Each CTest test's measured duration in seconds, from which its TIMEOUT is
 # set (CMakeLists.txt, ts_apply_timeouts): 4x the slowest of the release
-# presets (default, softpipe, egl) for the release build, 4x the ASan + UBSan
+# presets (default, full, softpipe, egl) for the release build, 4x the ASan + UBSan
 # run for the asan build, at least 120 s.  Written by scripts/durations.sh on
 # $(date -u +%F), load average $load_before before and $load_after after.
 # A test missing here gets 600 s and a note at configure time.
 # test	release_s	asan_s
 EOF
-cat "$T"/default.txt "$T"/softpipe.txt "$T"/egl.txt | sort -k1,1 -k2,2gr | awk '!seen[$1]++' >"$T/release"
+cat "$T"/default.txt "$T"/full.txt "$T"/softpipe.txt "$T"/egl.txt | sort -k1,1 -k2,2gr | awk '!seen[$1]++' >"$T/release"
 if [ "$asan" = 1 ]; then cat "$T"/asan.txt "$T"/asan-window.txt | sort -k1,1 -k2,2gr | awk '!seen[$1]++' >"$T/asan"
 else : >"$T/asan"; fi
 join -a1 -e - -o 0,1.2,2.2 "$T/release" "$T/asan" | awk '{ printf "%s\t%s\t%s\n", $1, $2, ($3 == "-" ? $2 * 5 : $3) }'

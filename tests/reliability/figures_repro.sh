@@ -1,54 +1,64 @@
 #!/usr/bin/env bash
-# tests/reliability/figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL — figures
-# are reproducible and written atomically:
-#   1. two runs into two folders give byte-identical PNGs, GL listings (and
-#      sidecars, once the folder name in their commands is replaced);
-#   2. OSMesa and EGL give byte-identical PNGs except the figures listed in
-#      backend_bounds.tsv, whose differences stay within the stated bounds
-#      (pixels that differ, largest channel difference);
+# tests/reliability/figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL FIRST_RUN [--backends]
+# — figures are reproducible and written atomically.  FIRST_RUN is the folder
+# the figures_render fixture wrote (make_figures --backend osmesa --out
+# FIRST_RUN --export-c: the one regeneration the quick level's figure tests
+# share).
+#   1. a second run into another folder gives byte-identical PNGs, GL
+#      listings (and sidecars, once the folder name in their commands is
+#      replaced);
 #   3. runs killed (SIGKILL) while a file is being written leave no partial
 #      PNG and no temporary file: every *.png present decodes completely.
+# With --backends (the full level), instead:
+#   2. OSMesa and EGL give byte-identical PNGs except the figures listed in
+#      backend_bounds.tsv, whose differences stay within the stated bounds
+#      (pixels that differ, largest channel difference).
 set -u
-FIGS=$(readlink -f "${1:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL}")
-TOOL=$(readlink -f "${2:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL}")
+FIGS=$(readlink -f "${1:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL FIRST_RUN [--backends]}")
+TOOL=$(readlink -f "${2:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL FIRST_RUN [--backends]}")
+A=$(readlink -f "${3:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL FIRST_RUN [--backends]}")
+part=${4:-}
 HERE=$(cd "$(dirname "$0")" && pwd)
 T=$(mktemp -d "${TMPDIR:-/tmp}/ts_figures_repro.XXXXXX")
 trap 'rm -rf "$T"' EXIT
 failures=0 checks=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 pass() { checks=$((checks + 1)); }
+[ -n "$(ls "$A"/*.png 2>/dev/null)" ] || { echo "FAIL: no figures in $A (the figures_render fixture)"; exit 1; }
 
-figs() { timeout 600 "$FIGS" --out "$@" >"$T/log" 2>&1 || fail "make_figures --out $*: $(tail -3 "$T/log")"; }
+figs() { "$FIGS" --out "$@" >"$T/log" 2>&1 || fail "make_figures --out $*: $(tail -3 "$T/log")"; }
 
+if [ "$part" != --backends ]; then
 # ---------------------------------------------------- 1. run to run
-# TS_REPRO_ONE_RUN=1 (the ASan + UBSan preset): one OSMesa run, its files
-# checked for presence only: the sanitizer learns nothing from a second run,
-# and the release presets check run-to-run identity.
+# TS_REPRO_ONE_RUN=1 (the ASan + UBSan preset): the fixture's run alone, its
+# files checked for presence only: the sanitizer learns nothing from a second
+# run, and the release presets check run-to-run identity.
 one=${TS_REPRO_ONE_RUN:-0}
-figs "$T/a" --backend osmesa
 [ "$one" = 1 ] || figs "$T/b" --backend osmesa
 n=0
-for f in "$T/a"/*.png; do
+for f in "$A"/*.png; do
   n=$((n + 1))
   name=$(basename "$f")
   if [ "$one" = 1 ]; then
     for g in "${name%.png}.json" "${name%.png}.gl.txt"; do
-      if [ -f "$T/a/$g" ]; then pass; else fail "$g was not written"; fi
+      if [ -f "$A/$g" ]; then pass; else fail "$g was not written"; fi
     done
     continue
   fi
   if cmp -s "$f" "$T/b/$name"; then pass; else fail "$name differs between two OSMesa runs"; fi
   json=${name%.png}.json
-  if cmp -s <(sed "s|$T/a|OUT|g" "$T/a/$json") <(sed "s|$T/b|OUT|g" "$T/b/$json"); then pass
+  if cmp -s <(sed "s|$A|OUT|g" "$A/$json") <(sed "s|$T/b|OUT|g" "$T/b/$json"); then pass
   else fail "$json differs between two runs (beyond the --out folder)"; fi
   listing=${name%.png}.gl.txt
-  if [ ! -f "$T/a/$listing" ]; then fail "$listing was not written"
-  elif cmp -s "$T/a/$listing" "$T/b/$listing"; then pass
+  if [ ! -f "$A/$listing" ]; then fail "$listing was not written"
+  elif cmp -s "$A/$listing" "$T/b/$listing"; then pass
   else fail "$listing differs between two runs"; fi
 done
 [ "$n" -gt 0 ] || fail "make_figures wrote no PNG"
 if [ "$one" = 1 ]; then echo "one run (TS_REPRO_ONE_RUN=1): $n figures written"; else echo "run to run: $n figures byte-identical"; fi
+fi
 
+if [ "$part" = --backends ]; then
 # ---------------------------------------------------- 2. OSMesa vs EGL
 figs "$T/e" --backend egl
 declare -A maxpx maxdiff
@@ -57,7 +67,7 @@ while read -r name px diff _; do
   maxpx[$name]=$px maxdiff[$name]=$diff
 done <"$HERE/backend_bounds.tsv"
 same=0 bounded=0
-for f in "$T/a"/*.png; do
+for f in "$A"/*.png; do
   name=$(basename "$f" .png)
   if cmp -s "$f" "$T/e/$name.png"; then same=$((same + 1)); pass; continue; fi
   read -r px diff < <("$TOOL" diff "$f" "$T/e/$name.png") || { fail "$name: cannot compare"; continue; }
@@ -67,6 +77,10 @@ for f in "$T/a"/*.png; do
   else bounded=$((bounded + 1)); pass; echo "  $name: $px pixels differ, by up to $diff (bound ${maxpx[$name]} / ${maxdiff[$name]})"; fi
 done
 echo "OSMesa vs EGL: $same figures byte-identical, $bounded within their stated bounds"
+echo "figures_repro --backends: $checks checks passed, $failures failed"
+[ "$failures" -eq 0 ]
+exit
+fi
 
 # ---------------------------------------------------- 3. killed mid-write
 # TS_TEST_WRITE_PAUSE_MS makes every write pause half-way, while the data is
