@@ -253,6 +253,14 @@ void readFromMemory(png_structp png, png_bytep out, png_size_t len) {
   src->pos += len;
 }
 uint32_t be32(const uint8_t* p) { return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | p[3]; }
+// Row y of the pixels, the buffer grown (zeroed, within its capacity) to
+// hold it.  Not inlined: no temporary of vector::resize lives in
+// decodePng's frame between its setjmp and libpng's longjmp.
+[[gnu::noinline]] uint8_t* pngRow(std::vector<uint8_t>& pixels, png_uint_32 y, size_t rowBytes) {
+  size_t end = (size_t(y) + 1) * rowBytes;
+  if (pixels.size() < end) pixels.resize(end);
+  return &pixels[end - rowBytes];
+}
 }  // namespace
 
 Image decodePng(const uint8_t* data, size_t size, const std::string& name) {
@@ -291,14 +299,14 @@ Image decodePng(const uint8_t* data, size_t size, const std::string& name) {
   Image img;
   img.width = int(w);
   img.height = int(h);
-  img.pixels.resize(size_t(w) * h * 4);
-  std::vector<png_bytep> rows(h);
-  for (png_uint_32 y = 0; y < h; ++y) rows[y] = &img.pixels[size_t(y) * w * 4];
+  const size_t rowBytes = size_t(w) * 4;
+  std::vector<uint8_t> firstRow(rowBytes, 0);  // (not firstRow(rowBytes): g++ -O3 -Wclobbered)
   PngSource src{data, size, 8, &why};
-  if (setjmp(png_jmpbuf(png))) {
+  auto fail = [&] {
     png_destroy_read_struct(&png, &info, nullptr);
     throw Error(name + ": malformed PNG: " + why);
-  }
+  };
+  if (setjmp(png_jmpbuf(png))) fail();
   png_set_read_fn(png, &src, readFromMemory);
   png_set_sig_bytes(png, 8);
   png_set_user_limits(png, kMaxImageDimension, kMaxImageDimension);
@@ -316,8 +324,23 @@ Image decodePng(const uint8_t* data, size_t size, const std::string& name) {
   if (!(type & PNG_COLOR_MASK_ALPHA) && !trns) png_set_filler(png, 0xff, PNG_FILLER_AFTER);
   png_set_interlace_handling(png);
   png_read_update_info(png, info);
-  if (png_get_rowbytes(png, info) != size_t(w) * 4) png_error(png, "unsupported pixel layout after conversion");
-  png_read_image(png, rows.data());
+  if (png_get_rowbytes(png, info) != rowBytes) png_error(png, "unsupported pixel layout after conversion");
+  // What png_read_image does (every row of every pass, in order), except
+  // that the pixels are not allocated before the data has shown it holds
+  // rows: the first row is decoded into firstRow, and only then is the
+  // image's buffer reserved (address space, not memory), each row being
+  // added, zeroed as before, just before libpng first writes it.  A header
+  // that claims a large image over data that fails early costs the rows
+  // decoded, not w*h*4 bytes.
+  int passes = png_set_interlace_handling(png);
+  png_read_row(png, firstRow.data(), nullptr);
+  img.pixels.reserve(rowBytes * h);
+  img.pixels.assign(firstRow.begin(), firstRow.end());
+  // setjmp again: from here on the buffer's address and capacity stay as
+  // they are now; only its length changes (and the rows' contents).
+  if (setjmp(png_jmpbuf(png))) fail();
+  for (int pass = 0; pass < passes; ++pass)
+    for (png_uint_32 y = pass == 0 ? 1 : 0; y < h; ++y) png_read_row(png, pngRow(img.pixels, y, rowBytes), nullptr);
   png_read_end(png, nullptr);
   png_destroy_read_struct(&png, &info, nullptr);
   return img;
