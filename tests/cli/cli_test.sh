@@ -156,8 +156,13 @@ mkdir -p "$T/figs" "$T/figs.first" "$T/figs.other"
 run figs1 "$FIGS" --backend "$BACKEND" --out "$T/figs" --only quad_distortion
 if [ "$rc" -ne 0 ]; then fail "make_figures --out: exit status $rc: $(cat "$err")"; else pass; fi
 cp -p "$T/figs"/* "$T/figs.first/" 2>/dev/null
-run figs2 "$FIGS" --backend "$BACKEND" --out "$T/figs" --only quad_distortion
+# The second run exports the figures as C programs too (--export-c: what
+# export_c builds and runs; here the export code runs under the ASan preset).
+run figs2 "$FIGS" --backend "$BACKEND" --out "$T/figs" --only quad_distortion --export-c
 if [ "$rc" -ne 0 ]; then fail "make_figures --out (again): exit status $rc: $(cat "$err")"; else pass; fi
+for f in vi1_quad_distortion.c vi1_quad_variants.c; do
+  if [ -s "$T/figs/$f" ]; then pass; else fail "make_figures --export-c did not write $f"; fi
+done
 for f in vi1_quad_distortion.png vi1_quad_distortion.json vi1_quad_distortion.gl.txt vi1_quad_variants.png \
          vi1_quad_variants.json vi1_quad_variants.gl.txt; do
   if [ ! -s "$T/figs.first/$f" ]; then fail "make_figures did not write $f"; continue; fi
