@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "common/error.hpp"
-#include "common/bmp.hpp"
+#include "common/core/error.hpp"
+#include "common/core/bmp.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {

@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "common/error.hpp"
-#include "common/image.hpp"
-#include "common/jpeg.hpp"
+#include "common/core/error.hpp"
+#include "common/core/image.hpp"
+#include "common/core/jpeg.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {

@@ -17,8 +17,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "common/error.hpp"
-#include "common/textures.hpp"
+#include "common/core/error.hpp"
+#include "common/core/textures.hpp"
 #include "reference/sidecar_reader.hpp"
 
 namespace {

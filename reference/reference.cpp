@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "common/error.hpp"
-#include "common/text.hpp"
+#include "common/core/error.hpp"
+#include "common/core/text.hpp"
 
 namespace ref {
 namespace {

@@ -1,5 +1,5 @@
 // reference/reference.hpp — a Frame drawn on the CPU, without OpenGL, the
-// way a conformant OpenGL implementation draws it (common/render.cpp's
+// way a conformant OpenGL implementation draws it (common/gl/render.cpp's
 // state: per-panel viewport and scissor, the panel's matrices, glBegin with
 // one glTexCoord4f/glColor4f per glVertex3f, the fixed-function texture
 // environments GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD with the
@@ -28,8 +28,8 @@
 #include <string>
 #include <vector>
 
-#include "common/frame.hpp"
-#include "common/image.hpp"
+#include "common/core/frame.hpp"
+#include "common/core/image.hpp"
 #include "raster.hpp"
 #include "sampler.hpp"
 

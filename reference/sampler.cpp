@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/error.hpp"
-#include "common/textures.hpp"
+#include "common/core/error.hpp"
+#include "common/core/textures.hpp"
 
 namespace ref {
 Colour toColour(ts::Rgba c) { return {c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, c.a / 255.0f}; }

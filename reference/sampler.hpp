@@ -18,8 +18,8 @@
 #include <memory>
 #include <vector>
 
-#include "common/frame.hpp"
-#include "common/image.hpp"
+#include "common/core/frame.hpp"
+#include "common/core/image.hpp"
 
 namespace ref {
 using Colour = std::array<float, 4>;  // RGBA in [0, 1]

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "common/error.hpp"
-#include "common/textures.hpp"
+#include "common/core/error.hpp"
+#include "common/core/textures.hpp"
 
 namespace ref {
 namespace {

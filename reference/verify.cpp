@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "common/error.hpp"
+#include "common/core/error.hpp"
 
 namespace ref {
 namespace {

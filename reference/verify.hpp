@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "common/frame.hpp"
-#include "common/image.hpp"
-#include "common/probe.hpp"
+#include "common/core/frame.hpp"
+#include "common/core/image.hpp"
+#include "common/core/probe.hpp"
 #include "reference.hpp"
 
 namespace ref {

@@ -6,8 +6,8 @@
 //   step_albedo.png, step_height.png       its synthetic step/ridge map
 //   checkerboard_256_8.png                 the book's checkerboard (8x8 checks)
 //   labelled_grid_512_8.png                the orientation grid A1..H8
-// The demos make the same texels in code (common/relief_maps.hpp,
-// common/textures.hpp); these files are their output, not their input.
+// The demos make the same texels in code (common/core/relief_maps.hpp,
+// common/core/textures.hpp); these files are their output, not their input.
 //
 //   make_textures DIR           write the files into DIR
 //   make_textures --check DIR   exit 1 if any file in DIR differs from what
@@ -19,10 +19,10 @@
 #include <utility>
 #include <vector>
 
-#include "common/error.hpp"
-#include "common/image.hpp"
-#include "common/textures.hpp"
-#include "common/relief_maps.hpp"
+#include "common/core/error.hpp"
+#include "common/core/image.hpp"
+#include "common/core/textures.hpp"
+#include "common/core/relief_maps.hpp"
 
 namespace {
 // In memory a texture's row 0 is t = 0 (GL's order); in a file the top row

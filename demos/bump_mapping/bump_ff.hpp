@@ -28,8 +28,8 @@
 
 #include "bump_gl.hpp"
 #include "bump_math.hpp"
-#include "common/mesh.hpp"
-#include "common/render.hpp"
+#include "common/core/mesh.hpp"
+#include "common/gl/render.hpp"
 #include "demos/torus/torus_map.hpp"
 
 namespace bump {
@@ -92,7 +92,7 @@ inline ts::Image renderFixedFunction(ts::Renderer& r, const ts::Frame& f, int me
     glEnable(GL_TEXTURE_2D);
     glBindTexture(GL_TEXTURE_2D, r.texture(d));
   };
-  return ts::Image(offscreen(f, method == 5 ? "drawing the emboss passes" : "drawing the DOT3 passes", [&] {
+  return ts::Image(offscreen(r, f, method == 5 ? "drawing the emboss passes" : "drawing the DOT3 passes", [&] {
     glActiveTexture(GL_TEXTURE0);
     if (method == 5) {
       for (FixedVertex& v : vs) {

@@ -25,12 +25,12 @@
 #include <string>
 #include <vector>
 
-#include "common/context.hpp"
+#include "common/gl/context.hpp"
 
-#include "common/error.hpp"
-#include "common/frame.hpp"
-#include "common/gl.hpp"
-#include "common/render.hpp"
+#include "common/core/error.hpp"
+#include "common/core/frame.hpp"
+#include "common/gl/gl.hpp"
+#include "common/gl/render.hpp"
 
 namespace bump {
 constexpr const char* kSourceFile = "demos/bump_mapping/bump_gl.hpp";
@@ -168,28 +168,13 @@ struct ReferencePass : ts::Renderer::Attachment {
   std::vector<unsigned> idx;
 };
 
-// A pass of the demo's own into a framebuffer of the frame's size, cleared
-// to its colour, with the viewport of its first panel: `draw` makes the GL
-// calls; the picture is read back (row 0 = top).
+// A pass of the demo's own into the renderer's render target
+// (Renderer::offscreen) of the frame's size, cleared to its colour, with the
+// viewport of its first panel: `draw` makes the GL calls; the picture is
+// read back (row 0 = top).
 template <class Draw>
-ts::Image offscreen(const ts::Frame& f, const char* what, Draw draw) {
-  GLint boundFbo = 0;
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &boundFbo);
-  GLuint fbo = 0, rb[2] = {0, 0};
-  glGenFramebuffers(1, &fbo);
-  glGenRenderbuffers(2, rb);
-  glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, f.width, f.height);
-  glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, f.width, f.height);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
-  glDrawBuffer(GL_COLOR_ATTACHMENT0);
-  ts::Image img(f.width, f.height);
-  const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-  std::string failure;
-  if (complete) {
+ts::Image offscreen(ts::Renderer& r, const ts::Frame& f, const char* what, Draw draw) {
+  return r.offscreen(f.width, f.height, what, [&](GLuint) {
     const ts::Panel& p = f.panels.front();
     glDisable(GL_SCISSOR_TEST);
     glViewport(0, 0, f.width, f.height);
@@ -204,23 +189,8 @@ ts::Image offscreen(const ts::Frame& f, const char* what, Draw draw) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
-    try {
-      draw();
-    } catch (const ts::Error& e) {
-      failure = e.what();
-    }
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, f.width, f.height, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
-    img.flipVertical();
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(boundFbo));
-  glDeleteFramebuffers(1, &fbo);
-  glDeleteRenderbuffers(2, rb);
-  if (!complete) throw ts::Error(std::string("the framebuffer of ") + what + " is incomplete", ts::kExitFailure);
-  if (!failure.empty()) throw ts::Error(failure, ts::kExitFailure);
-  ts::gl::check(what);
-  return img;
+    draw();
+  });
 }
 
 // R as an image: the frame `f` (its first panel holds the torus batch whose
@@ -229,7 +199,7 @@ ts::Image offscreen(const ts::Frame& f, const char* what, Draw draw) {
 inline ts::Image renderReference(ts::Renderer& r, const ts::Frame& f) {
   ReferencePass& pass = r.attachment<ReferencePass>();
   const ts::Batch& b = f.panels.front().batches.front();
-  return offscreen(f, "drawing the displaced reference torus", [&] {
+  return offscreen(r, f, "drawing the displaced reference torus", [&] {
     GLuint prog = r.program("bump_reference", referenceProgram());
     glActiveTexture(GL_TEXTURE0);
     glEnable(GL_TEXTURE_2D);

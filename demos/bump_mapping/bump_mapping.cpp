@@ -36,7 +36,7 @@
 //   + / -  height scale   s / S  object scale (seed 004's claim)   w  the normal map's edge slopes wrap (the seam's fix)
 //   a / A, e / E  light 1 azimuth, elevation (or a right drag)   b / B, d / D  light 2   . / ,  tilt
 // What the GL does: one GLSL 1.30 program (bump_gl.hpp: kFS) for B1-B3, the
-// method a uniform: common/render.cpp: Renderer::draw sends the torus as
+// method a uniform: common/gl/render.cpp: Renderer::draw sends the torus as
 // glTexCoord4f(s, t, 0, 1) + glVertex3f after glUseProgram and glUniform4f,
 // and the shader reads the heights (or the normal map) in texture unit 0 with
 // textureLod (B2: texelFetch of the 8-bit texels).  R, B4 and B5 are passes
@@ -58,13 +58,13 @@
 #include "bump_gl.hpp"
 #include "bump_math.hpp"
 #include "bump_measure.hpp"
-#include "common/gl_listing.hpp"
-#include "common/layout.hpp"
-#include "common/orbit_camera.hpp"
-#include "common/render.hpp"
-#include "common/scene.hpp"
-#include "common/textures.hpp"
-#include "common/user_texture.hpp"
+#include "common/gl/gl_listing.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/orbit_camera.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/textures.hpp"
+#include "common/core/user_texture.hpp"
 #include "demos/torus/torus_map.hpp"
 
 namespace {

@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "common/frame.hpp"
-#include "common/image.hpp"
-#include "common/relief_maps.hpp"
+#include "common/core/frame.hpp"
+#include "common/core/image.hpp"
+#include "common/core/relief_maps.hpp"
 
 namespace bump {
 constexpr double kPi = 3.14159265358979323846;
@@ -53,7 +53,7 @@ inline Heights procedural(int n = 256) {
   return H;
 }
 
-// The parallax demo's bricks (common/relief_maps.hpp), 512 x 512.
+// The parallax demo's bricks (common/core/relief_maps.hpp), 512 x 512.
 inline Heights bricks() {
   const int n = ts::relief::kTexSize;
   Heights H{"bricks", n, n, std::vector<float>(size_t(n) * size_t(n)), {4.0f, 2.0f}};

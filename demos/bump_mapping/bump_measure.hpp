@@ -10,8 +10,8 @@
 #include <string>
 
 #include "bump_math.hpp"
-#include "common/gl_call.hpp"
-#include "common/scene.hpp"
+#include "common/core/gl_call.hpp"
+#include "common/core/scene.hpp"
 
 namespace bump {
 // Methods, in the order of the demo's --method.

@@ -28,7 +28,7 @@
 
 #include <cmath>
 
-#include "common/mesh.hpp"
+#include "common/core/mesh.hpp"
 
 namespace cylmap {
 enum class Coords { Wrong, Right };

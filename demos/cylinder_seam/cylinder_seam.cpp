@@ -21,7 +21,7 @@
 //   p  outline the seam patch and its regions         v  view: book | compare
 //
 // What the GL does: each cylinder is one glBegin(GL_TRIANGLES) sent by
-// common/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
+// common/gl/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
 // per vertex, s from cylinder_map.hpp's sOf: across the book's seam patch
 // 0.9 and 0.1 reduced, 0.9 and 1.1 tracked.  glTexParameteri(GL_TEXTURE_2D,
 // GL_TEXTURE_WRAP_S, GL_REPEAT), made by Renderer::texture, reads 1.1 as
@@ -40,13 +40,13 @@
 #include <cstdio>
 #include <map>
 
-#include "common/render.hpp"
-#include "common/layout.hpp"
-#include "common/scene.hpp"
-#include "common/text.hpp"
-#include "common/textures.hpp"
-#include "common/orbit_camera.hpp"
-#include "common/user_texture.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/text.hpp"
+#include "common/core/textures.hpp"
+#include "common/core/orbit_camera.hpp"
+#include "common/core/user_texture.hpp"
 #include "cylinder_map.hpp"
 #include "cylinder_measure.hpp"  // the patches drawn head-on and read back
 #include "cylinder_views.hpp"    // the texture-space view: the seam patch's regions

@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
-#include "common/frame.hpp"
-#include "common/layout.hpp"
-#include "common/text.hpp"
+#include "common/core/frame.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/text.hpp"
 #include "cylinder_map.hpp"
 
 namespace cylview {

@@ -30,10 +30,10 @@
 #include <string>
 #include <vector>
 
-#include "common/error.hpp"
-#include "common/gl.hpp"
-#include "common/mesh.hpp"
-#include "common/render.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/gl.hpp"
+#include "common/core/mesh.hpp"
+#include "common/gl/render.hpp"
 #include "env_world.hpp"
 
 namespace envgl {

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "common/image.hpp"
+#include "common/core/image.hpp"
 #include "env_gl.hpp"
 #include "env_world.hpp"
 

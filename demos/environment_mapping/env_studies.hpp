@@ -9,9 +9,9 @@
 #include <array>
 #include <vector>
 
-#include "common/layout.hpp"
-#include "common/orbit_camera.hpp"
-#include "common/scene.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/orbit_camera.hpp"
+#include "common/core/scene.hpp"
 #include "env_gl.hpp"
 #include "env_measure.hpp"
 #include "env_world.hpp"
@@ -40,7 +40,7 @@ inline SeedCube seedCube(envgl::EnvGL& g) {
 
 // ---- the camera every pass uses -------------------------------------------
 // The eye on +Z at distance 5 looking at the object (at the world's origin),
-// a 30° field of view; `yawDeg`/`pitchDeg` orbit it (common/orbit_camera.hpp's
+// a 30° field of view; `yawDeg`/`pitchDeg` orbit it (common/core/orbit_camera.hpp's
 // convention: the world turns in front of the eye).
 constexpr float kEyeDistance = 5.0f, kFovDeg = 30.0f;
 inline glm::mat4 viewMatrix(float yawDeg, float pitchDeg) {

@@ -33,8 +33,8 @@
 #include <string>
 #include <vector>
 
-#include "common/image.hpp"
-#include "common/text.hpp"
+#include "common/core/image.hpp"
+#include "common/core/text.hpp"
 
 namespace envmap {
 using glm::dvec2;

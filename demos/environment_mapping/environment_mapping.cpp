@@ -40,12 +40,12 @@
 //   + / -  memory (texels a cube face side; the others as many texels)
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "common/gl_listing.hpp"
-#include "common/layout.hpp"
-#include "common/orbit_camera.hpp"
-#include "common/render.hpp"
-#include "common/scene.hpp"
-#include "common/textures.hpp"
+#include "common/gl/gl_listing.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/orbit_camera.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/textures.hpp"
 #include "env_gl.hpp"
 #include "env_measure.hpp"
 #include "env_studies.hpp"

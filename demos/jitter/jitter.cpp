@@ -29,7 +29,7 @@
 // Flag only: --average auto|accum|fbo (how the passes are averaged).
 //
 // What the GL does (jitter_gl.hpp): regular and jitter-global are n*n passes
-// of groundPass, each drawn by common/render.cpp: Renderer::draw with the
+// of groundPass, each drawn by common/gl/render.cpp: Renderer::draw with the
 // projection shifted by its sample's offset (glMatrixMode(GL_PROJECTION);
 // glLoadMatrixf(pixelShift · P), the Red Book's accPerspective), summed by
 // accumulateWithAccumBuffer: glAccum(GL_LOAD, 1/n²) for the first pass,
@@ -63,13 +63,13 @@
 #include <string>
 #include <vector>
 
-#include "common/context.hpp"
-#include "common/error.hpp"
-#include "common/render.hpp"
-#include "common/layout.hpp"
-#include "common/scene.hpp"
-#include "common/text.hpp"
-#include "common/textures.hpp"
+#include "common/gl/context.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/text.hpp"
+#include "common/core/textures.hpp"
 #include "jitter_gl.hpp"
 #include "jitter_math.hpp"
 #include "jitter_views.hpp"

@@ -31,11 +31,11 @@
 #include <string>
 #include <vector>
 
-#include "common/context.hpp"
-#include "common/error.hpp"
-#include "common/frame.hpp"
-#include "common/gl.hpp"
-#include "common/render.hpp"
+#include "common/gl/context.hpp"
+#include "common/core/error.hpp"
+#include "common/core/frame.hpp"
+#include "common/gl/gl.hpp"
+#include "common/gl/render.hpp"
 #include "jitter_math.hpp"
 
 namespace jitter {

@@ -27,7 +27,7 @@
 // each pixel's error that its neighbours' errors predict — interference,
 // structured aliasing — and the unpredictable rest — noise.
 #pragma once
-#include "common/hash.hpp"
+#include "common/core/hash.hpp"
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -116,7 +116,7 @@ inline glm::dvec3 colourAt(const Camera& c, const glm::dmat3& h, double px, doub
 }
 
 // ---------------------------------------------------------------- patterns
-// Chris Wellons' "lowbias32" integer hash (common/hash.hpp); the GLSL copy is
+// Chris Wellons' "lowbias32" integer hash (common/core/hash.hpp); the GLSL copy is
 // in jitter_gl.hpp.
 using ts::hash32;
 // 24 random bits as a float in [0, 1): exact in single precision, so the GPU

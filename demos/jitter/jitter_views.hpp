@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "common/frame.hpp"
-#include "common/layout.hpp"
-#include "common/plot.hpp"
-#include "common/text.hpp"
-#include "common/textures.hpp"
+#include "common/core/frame.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/plot.hpp"
+#include "common/core/text.hpp"
+#include "common/core/textures.hpp"
 #include "jitter_math.hpp"
 
 namespace jitter::views {

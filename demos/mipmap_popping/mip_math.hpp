@@ -61,9 +61,9 @@
 #include <string>
 #include <vector>
 
-#include "common/frame.hpp"
-#include "common/image.hpp"
-#include "common/textures.hpp"
+#include "common/core/frame.hpp"
+#include "common/core/image.hpp"
+#include "common/core/textures.hpp"
 
 namespace mipmath {
 constexpr int kTexels = 256;             // the textures are 256 x 256: levels 0..8
@@ -253,7 +253,7 @@ inline double facingDistance(double lodBase) { return kFocalPixels / kTexelsPerU
 // length from a 60 degree horizontal field of view.  Texture: s = x, t = -z
 // (one repeat per world unit, t growing away from the eye).
 constexpr double kSlantFovX = 60.0;
-// yawDeg, pitchDeg, zoom: the mouse's orbit (common/orbit_camera.hpp): the
+// yawDeg, pitchDeg, zoom: the mouse's orbit (common/core/orbit_camera.hpp): the
 // eye stays, the view turns about the vertical and tilts, the lens zooms.
 inline Camera slantCamera(int w, int h, double yawDeg = 0, double pitchDeg = 0, double zoom = 1) {
   Camera c;

@@ -25,7 +25,7 @@
 //   t  texture: labelled grid | checkerboard         g  gamma-correct (linear-light) mip averages
 //   m  move: animate the distance (after a 30-frame pause; counted in frames)
 //
-// What the GL does: common/render.cpp: Renderer::texture uploads the chain
+// What the GL does: common/gl/render.cpp: Renderer::texture uploads the chain
 // built on the CPU, one glTexImage2D(GL_TEXTURE_2D, k, ...) per level k, and
 // sets glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter),
 // glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, bias) and
@@ -71,13 +71,13 @@
 #include <string>
 #include <vector>
 
-#include "common/error.hpp"
-#include "common/gl.hpp"
-#include "common/render.hpp"
-#include "common/layout.hpp"
-#include "common/scene.hpp"
-#include "common/text.hpp"
-#include "common/textures.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/gl.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/text.hpp"
+#include "common/core/textures.hpp"
 #include "mip_math.hpp"
 #include "mipmap_views.hpp"
 #include "sweep.hpp"

@@ -25,10 +25,10 @@
 #include <string>
 #include <vector>
 
-#include "common/render.hpp"
-#include "common/textures.hpp"
-#include "common/orbit_camera.hpp"
-#include "common/user_texture.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/textures.hpp"
+#include "common/core/orbit_camera.hpp"
+#include "common/core/user_texture.hpp"
 #include "mip_math.hpp"
 
 namespace mipmath {
@@ -75,7 +75,7 @@ inline ts::Batch facingBatch(double d, int texture, double x0, double x1) {
   b.texture = texture;
   const float z = float(-d), y0 = float(-kPlaneHalf), y1 = float(kPlaneHalf);
   const glm::vec2 c[4] = {{float(x0), y0}, {float(x1), y0}, {float(x1), y1}, {float(x0), y1}};
-  // (s, t) = (x, y): glTexCoord4f(x, y, 0, 1) in Renderer::draw (common/render.cpp)
+  // (s, t) = (x, y): glTexCoord4f(x, y, 0, 1) in Renderer::draw (common/gl/render.cpp)
   for (int k : {0, 1, 2, 0, 2, 3}) b.vertices.push_back({{c[k], z}, {c[k], 0, 1}, glm::vec4(1.0f)});
   return b;
 }
@@ -101,7 +101,7 @@ inline ts::Batch probeBatch(double d, int texture) {
                           {float(88 * k), float(-88 * k)},
                           {float(88 * k), float(24 * k)},
                           {float(-24 * k), float(24 * k)}};
-  // (s, t) = (x, y): glTexCoord4f(x, y, 0, 1) in Renderer::draw (common/render.cpp)
+  // (s, t) = (x, y): glTexCoord4f(x, y, 0, 1) in Renderer::draw (common/gl/render.cpp)
   for (int i : {0, 1, 2, 0, 2, 3}) b.vertices.push_back({{c[i], z}, {c[i], 0, 1}, glm::vec4(1.0f)});
   return b;
 }

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "common/gl_listing.hpp"
-#include "common/layout.hpp"
-#include "common/probe.hpp"
+#include "common/gl/gl_listing.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/probe.hpp"
 #include "parallax_gl.hpp"
 #include "relief.hpp"
 

@@ -56,9 +56,9 @@
 #include <string>
 #include <vector>
 
-#include "common/error.hpp"
-#include "common/gl.hpp"
-#include "common/render.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/gl.hpp"
+#include "common/gl/render.hpp"
 #include "relief.hpp"
 
 namespace pax {

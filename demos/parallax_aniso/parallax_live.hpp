@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "common/render.hpp"
-#include "common/scene.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/scene.hpp"
 #include "parallax_gl.hpp"
 #include "parallax_views.hpp"
 

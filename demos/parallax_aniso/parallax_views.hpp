@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "common/frame.hpp"
-#include "common/layout.hpp"
-#include "common/render.hpp"
-#include "common/text.hpp"
-#include "common/textures.hpp"
+#include "common/core/frame.hpp"
+#include "common/core/layout.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/text.hpp"
+#include "common/core/textures.hpp"
 #include "measure.hpp"
 #include "parallax_gl.hpp"
 

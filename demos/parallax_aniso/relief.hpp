@@ -2,7 +2,7 @@
 // anisotropic-filtering demo, free of OpenGL so tests can check it by hand:
 //
 //  * (the relief textures themselves, bricks, step and flat, are made in
-//    common/relief_maps.hpp);
+//    common/core/relief_maps.hpp);
 //  * the camera: a relief plane z = 0 seen from a height at a grazing angle;
 //    the view ray of any window point, its texture coordinate on the top of
 //    the relief and the parallax offset per unit of depth;
@@ -30,9 +30,9 @@
 #include <thread>
 #include <vector>
 
-#include "common/image.hpp"
-#include "common/relief_maps.hpp"
-#include "common/scene.hpp"
+#include "common/core/image.hpp"
+#include "common/core/relief_maps.hpp"
+#include "common/core/scene.hpp"
 
 namespace pax {
 using ts::relief::kTexSize;          // every relief map is 512 x 512

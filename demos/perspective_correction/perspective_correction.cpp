@@ -7,7 +7,7 @@
 // a slant — roughly when d2 - d1 (farthest minus nearest distance from the
 // eye to the polygon) is comparable to d1 or larger.
 //
-// What the GL does (common/render.cpp: Renderer::draw): the book's
+// What the GL does (common/gl/render.cpp: Renderer::draw): the book's
 // glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST), then the square as one
 // glBegin(GL_TRIANGLES) of six glTexCoord4f(s, t, 0, 1) + glVertex3f — one
 // quad, two triangles, as in the book: subdividing it would hide the error.
@@ -36,16 +36,16 @@
 #include <cstdio>
 #include <cstring>
 
-#include "common/error.hpp"
-#include "common/gl.hpp"
-#include "common/layout.hpp"
-#include "common/plot.hpp"
-#include "common/render.hpp"
-#include "common/scene.hpp"
-#include "common/text.hpp"
-#include "common/textures.hpp"
-#include "common/orbit_camera.hpp"
-#include "common/user_texture.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/gl.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/plot.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/text.hpp"
+#include "common/core/textures.hpp"
+#include "common/core/orbit_camera.hpp"
+#include "common/core/user_texture.hpp"
 #include "perspective_map.hpp"
 #include "perspective_measure.hpp"  // the texel-index comparison, the results and the plot
 

@@ -13,10 +13,10 @@
 #include <utility>
 #include <vector>
 
-#include "common/image.hpp"
-#include "common/layout.hpp"
-#include "common/plot.hpp"
-#include "common/textures.hpp"
+#include "common/core/image.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/plot.hpp"
+#include "common/core/textures.hpp"
 #include "perspective_map.hpp"
 
 namespace perspmeasure {

@@ -17,7 +17,7 @@
 //   v  view: the book's figure | the four variants side by side
 //   f  texture filter nearest | linear      + / -  checks per side
 //
-// What the GL does: common/render.cpp: Renderer::draw sends the square as
+// What the GL does: common/gl/render.cpp: Renderer::draw sends the square as
 // one glBegin(GL_TRIANGLES) of six glTexCoord4f(s, t, 0, 1) + glVertex3f
 // (addSquare below), and GL interpolates (s, t) linearly in each triangle.
 // Projective: glTexCoord4f(s·q, t·q, 0, q) from quad_map.hpp's homography,
@@ -31,12 +31,12 @@
 #include <cmath>
 #include <map>
 
-#include "common/layout.hpp"
-#include "common/render.hpp"
-#include "common/scene.hpp"
-#include "common/text.hpp"
-#include "common/textures.hpp"
-#include "common/user_texture.hpp"
+#include "common/core/layout.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/text.hpp"
+#include "common/core/textures.hpp"
+#include "common/core/user_texture.hpp"
 #include "quad_map.hpp"
 #include "quad_measure.hpp"  // the kink fitted from a texel-index render
 #include "quad_views.hpp"    // the texture-space view and the corner labels

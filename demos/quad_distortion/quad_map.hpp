@@ -19,7 +19,7 @@
 #include <sstream>
 #include <string>
 
-#include "common/error.hpp"
+#include "common/core/error.hpp"
 
 namespace quadmap {
 using Corners = std::array<glm::dvec2, 4>;  // st at (0,0), (1,0), (1,1), (0,1)

@@ -18,9 +18,9 @@
 #include <cmath>
 #include <vector>
 
-#include "common/image.hpp"
-#include "common/probe.hpp"
-#include "common/textures.hpp"
+#include "common/core/image.hpp"
+#include "common/core/probe.hpp"
+#include "common/core/textures.hpp"
 #include "quad_map.hpp"
 
 namespace quadmeasure {

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "common/layout.hpp"
-#include "common/render.hpp"
-#include "common/text.hpp"
+#include "common/core/layout.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/text.hpp"
 #include "quad_map.hpp"
 
 namespace quadview {

@@ -30,7 +30,7 @@
 #include <cmath>
 #include <vector>
 
-#include "common/mesh.hpp"
+#include "common/core/mesh.hpp"
 
 namespace spheremap {
 constexpr double kPi = 3.14159265358979323846;
@@ -70,7 +70,7 @@ inline double bandMid(int b) { return bandLo(b) + kBandDeg / 2; }
 
 // The mesh: `resolution` cells per 20° band, so every band edge is a row of
 // grid vertices (stacks = 9 N) and cells are square at the equator
-// (slices = 2 stacks).  The shared grid (common/mesh.hpp) computes positions
+// (slices = 2 stacks).  The shared grid (common/core/mesh.hpp) computes positions
 // from the wrapped column and (s, t) from the unwrapped one: the seam column
 // carries s = 1.
 inline int stacksFor(int resolution) { return kBands * resolution; }

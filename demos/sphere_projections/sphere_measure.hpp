@@ -11,8 +11,8 @@
 #include <cmath>
 #include <vector>
 
-#include "common/render.hpp"
-#include "common/textures.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/textures.hpp"
 #include "sphere_map.hpp"
 
 namespace spheremeasure {

@@ -15,7 +15,7 @@
 //   + / -  mesh resolution: cells per 20° band (cells of 20/N degrees)
 //
 // What the GL does: each sphere is one glBegin(GL_TRIANGLES) sent by
-// common/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
+// common/gl/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
 // per vertex, (s, t) from sphere_map.hpp's texCoord (Eq. VI.2 or VI.3) at the
 // grid's corners, interpolated by GL inside each cell; the two spheres differ
 // only in those t (book_figures/vi5_sphere_projections.gl.txt: the first
@@ -37,14 +37,14 @@
 #include <cstdio>
 #include <map>
 
-#include "common/render.hpp"
-#include "common/layout.hpp"
-#include "common/plot.hpp"
-#include "common/scene.hpp"
-#include "common/text.hpp"
-#include "common/textures.hpp"
-#include "common/orbit_camera.hpp"
-#include "common/user_texture.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/plot.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/text.hpp"
+#include "common/core/textures.hpp"
+#include "common/core/orbit_camera.hpp"
+#include "common/core/user_texture.hpp"
 #include "sphere_map.hpp"
 #include "sphere_measure.hpp"  // the band ratios and the pinch, from a texel-index render
 

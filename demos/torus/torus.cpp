@@ -20,7 +20,7 @@
 //   . / ,  tilt towards the viewer   ] / [  turn about the torus's axis
 //
 // What the GL does: each torus is one glBegin(GL_TRIANGLES) sent by
-// common/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
+// common/gl/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
 // per vertex, (s, t) = torus_map.hpp's texcoord, (i/nu, j/nv) plus (1/2, 1/2)
 // for front; glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S/T, GL_REPEAT),
 // made by Renderer::texture, reads s, t in [1/2, 3/2) as the texture shifted.
@@ -39,14 +39,14 @@
 #include <map>
 #include <sstream>
 
-#include "common/error.hpp"
-#include "common/render.hpp"
-#include "common/layout.hpp"
-#include "common/scene.hpp"
-#include "common/text.hpp"
-#include "common/textures.hpp"
-#include "common/orbit_camera.hpp"
-#include "common/user_texture.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/text.hpp"
+#include "common/core/textures.hpp"
+#include "common/core/orbit_camera.hpp"
+#include "common/core/user_texture.hpp"
 #include "torus_map.hpp"
 #include "torus_measure.hpp"  // the centre found in a texel-index render, and the ray to the mesh
 

@@ -22,7 +22,7 @@
 
 #include <cmath>
 
-#include "common/mesh.hpp"
+#include "common/core/mesh.hpp"
 
 namespace torusmap {
 enum class Mapping { Book, Front };

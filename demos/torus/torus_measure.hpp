@@ -11,9 +11,9 @@
 #include <limits>
 #include <vector>
 
-#include "common/probe.hpp"
-#include "common/render.hpp"
-#include "common/textures.hpp"
+#include "common/core/probe.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/textures.hpp"
 #include "torus_map.hpp"
 
 namespace torusmeasure {

@@ -22,7 +22,7 @@
 
 #include <glm/glm.hpp>
 
-#include "common/gl_enums.hpp"
+#include "common/core/gl_enums.hpp"
 
 namespace wrapmath {
 constexpr int kBorder = -1;  // "the border colour" as a texel index

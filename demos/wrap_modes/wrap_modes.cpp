@@ -28,7 +28,7 @@
 //   ] / [  } / {  shift s / t of the texture matrix   r / R  rotate   > / <  scale   k / K  shear
 //   a  animate the rotation
 //
-// What the GL does, all in common/render.cpp: Renderer::texture makes the
+// What the GL does, all in common/gl/render.cpp: Renderer::texture makes the
 // glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S/T, mode) and
 // GL_TEXTURE_BORDER_COLOR calls; Renderer::draw sends each quad
 // (wrap_passes.hpp: stQuad) as glTexCoord4f(s, t, 0, 1) + glVertex3f, s and
@@ -39,7 +39,7 @@
 // texture_matrix.gl.txt, texture_environment.gl.txt.
 //
 // Measured (measure()): the quad drawn again with a texture whose texels hold
-// their indices (common/textures.hpp), every pixel's texel against the
+// their indices (common/core/textures.hpp), every pixel's texel against the
 // formula, with pixel centres a quarter texel inside and, in a second pass,
 // exactly at every integer s (0 mismatches each, for 8x8 and 37x23 texels);
 // the texels seed 002's MIRROR picks at the integers (all differ); the share
@@ -53,11 +53,11 @@
 #include <cmath>
 #include <map>
 
-#include "common/error.hpp"
-#include "common/layout.hpp"
-#include "common/render.hpp"
-#include "common/scene.hpp"
-#include "common/textures.hpp"
+#include "common/core/error.hpp"
+#include "common/core/layout.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/textures.hpp"
 #include "wrap_math.hpp"
 #include "wrap_passes.hpp"
 #include "wrap_views.hpp"  // the texture-space panel and the env view's lit planes

@@ -1,7 +1,7 @@
 // demos/wrap_modes/wrap_passes.hpp — the measurement passes of
 // demos/wrap_modes: small frames rendered offscreen with GL and read back,
 // each compared with the formulas of wrap_math.hpp.  Every pass draws with
-// ts::Renderer (common/render.cpp), the same calls as the figures.
+// ts::Renderer (common/gl/render.cpp), the same calls as the figures.
 #pragma once
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -11,8 +11,8 @@
 #include <memory>
 #include <vector>
 
-#include "common/render.hpp"
-#include "common/textures.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/textures.hpp"
 #include "wrap_math.hpp"
 
 namespace wrappass {

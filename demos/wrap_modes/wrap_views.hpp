@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "common/layout.hpp"
-#include "common/render.hpp"
+#include "common/core/layout.hpp"
+#include "common/gl/render.hpp"
 #include "wrap_math.hpp"
 #include "wrap_passes.hpp"
 

@@ -19,8 +19,8 @@
 #include <utility>
 #include <vector>
 
-#include "common/options.hpp"
-#include "common/scene.hpp"
+#include "common/core/options.hpp"
+#include "common/core/scene.hpp"
 
 namespace ts::bench {
 // One registered book figure and the demo (scene) it belongs to.

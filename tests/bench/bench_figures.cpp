@@ -25,13 +25,13 @@
 #include <vector>
 
 #include "bench_common.hpp"
-#include "common/context.hpp"
-#include "common/error.hpp"
-#include "common/figure.hpp"
-#include "common/gl.hpp"
-#include "common/gl_record.hpp"
-#include "common/image.hpp"
-#include "common/render.hpp"
+#include "common/gl/context.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/figure.hpp"
+#include "common/gl/gl.hpp"
+#include "common/gl/gl_record.hpp"
+#include "common/core/image.hpp"
+#include "common/gl/render.hpp"
 
 namespace {
 using ts::bench::Figure;

@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "bench_common.hpp"
-#include "common/context.hpp"
-#include "common/gl.hpp"
-#include "common/render.hpp"
+#include "common/gl/context.hpp"
+#include "common/gl/gl.hpp"
+#include "common/gl/render.hpp"
 #include "demos/jitter/jitter_gl.hpp"
 
 namespace {

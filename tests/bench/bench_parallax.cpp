@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "bench_common.hpp"
-#include "common/context.hpp"
-#include "common/render.hpp"
+#include "common/gl/context.hpp"
+#include "common/gl/render.hpp"
 #include "demos/parallax_aniso/parallax_gl.hpp"
 #include "demos/parallax_aniso/relief.hpp"
 

@@ -58,10 +58,10 @@
 #include <vector>
 
 #include "bench_common.hpp"
-#include "common/context.hpp"
-#include "common/error.hpp"
-#include "common/gl.hpp"
-#include "common/render.hpp"
+#include "common/gl/context.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/gl.hpp"
+#include "common/gl/render.hpp"
 
 extern char** environ;
 
@@ -489,7 +489,7 @@ int main(int argc, char** argv) {
                  g_glfwError.c_str());
     return 2;
   }
-  // The same hints as common/window.cpp: a compatibility context.
+  // The same hints as common/app/window.cpp: a compatibility context.
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 2);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
   glfwWindowHint(GLFW_DOUBLEBUFFER, GLFW_TRUE);

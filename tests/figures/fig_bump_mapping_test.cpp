@@ -19,7 +19,7 @@
 #include <cmath>
 #include <string>
 
-#include "common/image.hpp"
+#include "common/core/image.hpp"
 #include "demos/bump_mapping/bump_math.hpp"
 #include "tests/support/scene_test.hpp"
 

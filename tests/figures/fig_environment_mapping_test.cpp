@@ -13,7 +13,7 @@
 #include <map>
 #include <string>
 
-#include "common/layout.hpp"
+#include "common/core/layout.hpp"
 #include "demos/environment_mapping/env_studies.hpp"
 #include "demos/environment_mapping/env_world.hpp"
 #include "tests/support/scene_test.hpp"

@@ -10,8 +10,8 @@
 #include <set>
 #include <sstream>
 
-#include "common/figure.hpp"
-#include "common/gl_listing.hpp"
+#include "common/gl/figure.hpp"
+#include "common/gl/gl_listing.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {

@@ -33,12 +33,12 @@
 #include <string>
 #include <vector>
 
-#include "common/context.hpp"
-#include "common/error.hpp"
-#include "common/image.hpp"
-#include "common/options.hpp"
-#include "common/render.hpp"
-#include "common/scene.hpp"
+#include "common/gl/context.hpp"
+#include "common/core/error.hpp"
+#include "common/core/image.hpp"
+#include "common/core/options.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/scene.hpp"
 #include "demos/jitter/jitter_gl.hpp"
 #include "demos/jitter/jitter_math.hpp"
 #include "tests/support/scene_test.hpp"

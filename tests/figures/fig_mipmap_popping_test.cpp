@@ -24,13 +24,13 @@
 #include <string>
 #include <vector>
 
-#include "common/error.hpp"
-#include "common/gl.hpp"
-#include "common/image.hpp"
-#include "common/probe.hpp"
-#include "common/render.hpp"
-#include "common/scene.hpp"
-#include "common/textures.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/gl.hpp"
+#include "common/core/image.hpp"
+#include "common/core/probe.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/textures.hpp"
 #include "demos/mipmap_popping/mip_math.hpp"
 #include "demos/mipmap_popping/sweep.hpp"
 #include "tests/support/gl_test.hpp"

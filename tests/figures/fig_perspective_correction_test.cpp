@@ -20,11 +20,11 @@
 #include <string>
 #include <vector>
 
-#include "common/image.hpp"
-#include "common/probe.hpp"
-#include "common/render.hpp"
-#include "common/scene.hpp"
-#include "common/textures.hpp"
+#include "common/core/image.hpp"
+#include "common/core/probe.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/textures.hpp"
 #include "demos/perspective_correction/perspective_map.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"

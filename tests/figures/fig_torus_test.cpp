@@ -24,13 +24,13 @@
 #include <string>
 #include <vector>
 
-#include "common/error.hpp"
-#include "common/image.hpp"
-#include "common/mesh.hpp"
-#include "common/probe.hpp"
-#include "common/render.hpp"
-#include "common/scene.hpp"
-#include "common/textures.hpp"
+#include "common/core/error.hpp"
+#include "common/core/image.hpp"
+#include "common/core/mesh.hpp"
+#include "common/core/probe.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/textures.hpp"
 #include "demos/torus/torus_map.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "common/image.hpp"
-#include "common/textures.hpp"
+#include "common/core/image.hpp"
+#include "common/core/textures.hpp"
 #include "demos/wrap_modes/wrap_math.hpp"
 #include "tests/support/scene_test.hpp"
 

@@ -4,7 +4,7 @@
 // every choice of its `view` option, every book figure's flags) and its
 // frame is built at seven sizes from 400x300 to 1080x1920 (wide, tall,
 // tiny).  From the frame's own boxes (each label's text extent at its
-// scale, common/layout.hpp's labelBox) it asserts:
+// scale, common/core/layout.hpp's labelBox) it asserts:
 //   - no label leaves the window;
 //   - a label that touches a panel lies inside it (no caption half over a
 //     picture, none cut at a panel's edge);
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "common/layout.hpp"
+#include "common/core/layout.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
@@ -142,7 +142,7 @@ std::vector<std::string> ids() {
 INSTANTIATE_TEST_SUITE_P(Demos, Layout, ::testing::ValuesIn(ids()),
                          [](const ::testing::TestParamInfo<std::string>& i) { return i.param; });
 
-// Text scales with its pictures, not the window (common/layout.hpp): in
+// Text scales with its pictures, not the window (common/core/layout.hpp): in
 // views whose pictures grow with the window, a 1920x1080 frame has text
 // above scale 1, a 400x300 frame none, and no label is larger than the
 // largest picture asks for (layout::scaleFor).  Before the views used the

@@ -7,10 +7,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
-#include "common/context.hpp"
-#include "common/frame.hpp"
-#include "common/render.hpp"
-#include "common/textures.hpp"
+#include "common/gl/context.hpp"
+#include "common/core/frame.hpp"
+#include "common/gl/render.hpp"
+#include "common/core/textures.hpp"
 #include "reference/verify.hpp"
 #include "tests/support/gl_test.hpp"
 

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "common/image.hpp"
+#include "common/core/image.hpp"
 #include "reference/sidecar_reader.hpp"
 #include "reference/verify.hpp"
 #include "sidecar_exemptions.hpp"

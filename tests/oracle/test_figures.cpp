@@ -15,11 +15,11 @@
 #include <map>
 #include <stdexcept>
 
-#include "common/error.hpp"
-#include "common/figure.hpp"
-#include "common/options.hpp"
-#include "common/scene.hpp"
-#include "common/sidecar.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/figure.hpp"
+#include "common/core/options.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/sidecar.hpp"
 #include "oracle_support.hpp"
 #include "sidecar_exemptions.hpp"
 #include "reference/sidecar_reader.hpp"

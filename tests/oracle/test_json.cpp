@@ -5,9 +5,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "common/error.hpp"
-#include "common/sidecar.hpp"
-#include "common/textures.hpp"
+#include "common/core/error.hpp"
+#include "common/core/sidecar.hpp"
+#include "common/core/textures.hpp"
 #include "reference/sidecar_reader.hpp"
 
 namespace {

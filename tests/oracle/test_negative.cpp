@@ -9,8 +9,8 @@
 
 #include <cstdio>
 
-#include "common/options.hpp"
-#include "common/scene.hpp"
+#include "common/core/options.hpp"
+#include "common/core/scene.hpp"
 #include "oracle_support.hpp"
 
 namespace {

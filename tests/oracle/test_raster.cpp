@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "common/textures.hpp"
+#include "common/core/textures.hpp"
 #include "reference/raster.hpp"
 #include "reference/reference.hpp"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "common/textures.hpp"
+#include "common/core/textures.hpp"
 #include "reference/sampler.hpp"
 
 namespace {

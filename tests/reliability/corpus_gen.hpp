@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "common/bmp.hpp"
-#include "common/jpeg.hpp"
-#include "common/image.hpp"
+#include "common/core/bmp.hpp"
+#include "common/core/jpeg.hpp"
+#include "common/core/image.hpp"
 
 namespace corpus {
 using Bytes = std::vector<uint8_t>;

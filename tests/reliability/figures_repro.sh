@@ -30,9 +30,8 @@ figs() { "$FIGS" --out "$@" >"$T/log" 2>&1 || fail "make_figures --out $*: $(tai
 
 if [ "$part" != --backends ]; then
 # ---------------------------------------------------- 1. run to run
-# TS_REPRO_ONE_RUN=1 (the ASan + UBSan preset): the fixture's run alone, its
-# files checked for presence only: the sanitizer learns nothing from a second
-# run, and the release presets check run-to-run identity.
+# TS_REPRO_ONE_RUN=1 (by hand, e.g. under a sanitizer or valgrind): the
+# fixture's run alone, its files checked for presence only.
 one=${TS_REPRO_ONE_RUN:-0}
 [ "$one" = 1 ] || figs "$T/b" --backend osmesa
 n=0

@@ -28,9 +28,9 @@
 #include <iterator>
 #include <map>
 
-#include "common/bmp.hpp"
-#include "common/error.hpp"
-#include "common/textures.hpp"
+#include "common/core/bmp.hpp"
+#include "common/core/error.hpp"
+#include "common/core/textures.hpp"
 #include "corpus_gen.hpp"
 #include "tests/support/gl_test.hpp"
 

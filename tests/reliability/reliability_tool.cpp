@@ -17,7 +17,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "common/error.hpp"
+#include "common/core/error.hpp"
 #include "corpus_gen.hpp"
 
 // A binary PPM (P6, maxval 255) as an opaque image; anything else: readImage.

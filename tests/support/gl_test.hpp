@@ -9,9 +9,9 @@
 #include <memory>
 #include <string>
 
-#include "common/context.hpp"
-#include "common/gl.hpp"
-#include "common/render.hpp"
+#include "common/gl/context.hpp"
+#include "common/gl/gl.hpp"
+#include "common/gl/render.hpp"
 
 namespace ts::test {
 // The process-wide context and renderer (created on first use, 512x512).

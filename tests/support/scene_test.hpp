@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "common/scene.hpp"
+#include "common/core/scene.hpp"
 #include "tests/support/gl_test.hpp"
 
 namespace ts::test {

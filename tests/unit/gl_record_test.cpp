@@ -1,4 +1,4 @@
-// tests/unit/gl_record_test.cpp — the GL call recorder (common/gl_record.hpp)
+// tests/unit/gl_record_test.cpp — the GL call recorder (common/gl/gl_record.hpp)
 // on the test context: calls are kept with their arguments as a C programmer
 // reads them, only while a Recording lives, only on its thread.
 #include <gtest/gtest.h>
@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <thread>
 
-#include "common/context.hpp"
+#include "common/gl/context.hpp"
 
-#include "common/gl_record.hpp"
+#include "common/gl/gl_record.hpp"
 #include "tests/support/gl_test.hpp"
 
 namespace {

@@ -1,4 +1,4 @@
-// tests/unit/image_test.cpp — ts::Image and PNG in and out (common/image.cpp).
+// tests/unit/image_test.cpp — ts::Image and PNG in and out (common/core/image.cpp).
 // No GL.  Files go into a fresh directory under $TMPDIR, removed at the end.
 #include <dirent.h>
 #include <gtest/gtest.h>
@@ -15,9 +15,9 @@
 
 #include <zlib.h>
 
-#include "common/error.hpp"
-#include "common/figure.hpp"
-#include "common/image.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/figure.hpp"
+#include "common/core/image.hpp"
 
 namespace {
 class TempDir {
@@ -278,7 +278,7 @@ TEST(CheckWritable, GoodAndMissingFolder) {
 }
 
 // Claim: checkWritable also refuses a path that is an existing folder, so
-// "--png somedir" fails before rendering.  KNOWN BUG (common/figure.cpp,
+// "--png somedir" fails before rendering.  KNOWN BUG (common/gl/figure.cpp,
 // checkWritable): it only probes "<path>.tmp-<pid>" beside the folder, which
 // succeeds; the demo renders the whole figure and only then fails at the
 // rename ("cannot write somedir: Is a directory").  Enable once

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "common/error.hpp"
-#include "common/options.hpp"
-#include "common/orbit_camera.hpp"
-#include "common/scene.hpp"
+#include "common/core/error.hpp"
+#include "common/core/options.hpp"
+#include "common/core/orbit_camera.hpp"
+#include "common/core/scene.hpp"
 
 namespace {
 // A demo-like state with one option of each kind.
@@ -333,7 +333,7 @@ TEST(Options, QuadDistortionRefusesNonConvexCorners) {
 }
 
 // Claim: flags that take no value (--quiet, --help) refuse "=value" rather
-// than ignore it.  KNOWN BUG (common/options.cpp, parseCommonFlags, the
+// than ignore it.  KNOWN BUG (common/core/options.cpp, parseCommonFlags, the
 // "--help" and "--quiet" branches): "--quiet=off" turns quiet ON and
 // "--help=no" prints the help.  Enable once they reject an inline value.
 TEST(CommonFlags, ValuelessFlagsRefuseAValue) {

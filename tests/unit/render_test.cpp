@@ -1,4 +1,4 @@
-// tests/unit/render_test.cpp — the Frame renderer (common/render.cpp) on the
+// tests/unit/render_test.cpp — the Frame renderer (common/gl/render.cpp) on the
 // test context.  The one unit program that needs GL: it checks the
 // conventions every figure test relies on (viewports from the top-left,
 // texture row 0 = t = 0, cropping, measurement passes) on tiny frames.
@@ -8,10 +8,10 @@
 
 #include <memory>
 
-#include "common/error.hpp"
-#include "common/frame.hpp"
-#include "common/probe.hpp"
-#include "common/render.hpp"
+#include "common/core/error.hpp"
+#include "common/core/frame.hpp"
+#include "common/core/probe.hpp"
+#include "common/gl/render.hpp"
 #include "tests/support/gl_test.hpp"
 
 namespace {

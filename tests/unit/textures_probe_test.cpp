@@ -1,14 +1,14 @@
 // tests/unit/textures_probe_test.cpp — the procedural textures, the book's
-// mip chain (common/textures.cpp) and the probe helpers (common/probe.cpp).
+// mip chain (common/core/textures.cpp) and the probe helpers (common/core/probe.cpp).
 // No GL.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "common/error.hpp"
-#include "common/probe.hpp"
-#include "common/textures.hpp"
+#include "common/core/error.hpp"
+#include "common/core/probe.hpp"
+#include "common/core/textures.hpp"
 
 namespace {
 const ts::Rgba kA{32, 32, 32, 255}, kB{224, 224, 224, 255};  // checkerboard()'s defaults

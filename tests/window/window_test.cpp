@@ -1,29 +1,40 @@
 // tests/window/window_test.cpp — the "real windows" tests.
 //
 // For every registered scene (so every demo program; new demos are covered
-// by linking their scene, see CMakeLists.txt) and under a fresh Xvfb:
-//   <id>.window_matches_png       the window opens, draws 3 frames, exits 0
-//                                 quickly, prints the initial state line, and
-//                                 left of its side panel its screenshot
-//                                 matches the --png render at the figure's
-//                                 width (common/side_panel.hpp).
-//   <id>.key_<char>_<option>      for every key of every option (Item::key and
-//                                 Item::keyDown): --keys <char> changes the
-//                                 state the way Options::handleKey does on a
-//                                 fresh Options; the window's stdout state
-//                                 line says so; its screenshot matches the
-//                                 --png render of that state.
-//   <id>.live_view_matches_png    for a demo with a live view (Scene::live,
-//                                 started with --view live): as above, in
-//                                 that view (clock readings not compared)
-//   <id>.resize_sequence          the window resized to 640x480, 700x1000 and
-//                                 1280x720 in turn: at each size the figure
-//                                 is the --png render at its new size.
-//   <id>.mouse_light              a right drag moves --light1-az/--light1-el
-//                                 (demos that have them: bump_mapping).
+// by linking their scene, see CMakeLists.txt) and under a fresh Xvfb, in two
+// levels (--subset=smoke|full, --demo=ID for one demo's cases):
+// smoke (CTest window_smoke, the quick level):
+//   <id>.key_<char>_<option>      the demo's first key: --keys <char> changes
+//                                 the state the way Options::handleKey does
+//                                 on a fresh Options; the window's stdout
+//                                 state line says so; its screenshot matches
+//                                 the --png render of that state, and so do
+//                                 the numbers it prints.
+//   <id>.help_and_save            the key, then F12: PNG + sidecar, and the
+//                                 printed command remakes the picture; the
+//                                 key, then ?: the help card is on screen.
 //   <id>.state_flags_round_trip   parse(stateFlags()) reproduces the state,
 //                                 for the initial state and after each key
 //                                 (the flags a figure's sidecar command uses).
+// full (CTest window_full_<id>, the full level):
+//   <id>.window_matches_png       the window opens, draws 3 frames, exits 0,
+//                                 and left of its side panel its screenshot
+//                                 matches the --png render (side_panel.hpp).
+//   <id>.key_<char>_<option>      every other key of every option, as above.
+//   <id>.live_view_matches_png    for a demo with a live view (Scene::live,
+//                                 started with --view live): as above, in
+//                                 that view (clock readings not compared)
+//   <id>.gl_pane_*                the GL pane beside the figure, and the calls
+//                                 a key changed marked in it.
+//   <id>.resize_sequence          the window resized to 640x480, 700x1000 and
+//                                 1280x720 in turn: at each size the figure
+//                                 is the --png render at its new size.
+//   <id>.reset_equals_arrow       Backspace resets, = is +, the right arrow turns.
+//   <id>.mouse_orbit, mouse_light a left drag and the wheel turn the orbit; a
+//                                 right drag moves the light (bump_mapping).
+//   <id>.drop_file                a dropped picture is --texture FILE.
+//   <id>.never_frozen, close_while_measuring   (quad_distortion, parallax_aniso)
+// No case's verdict depends on how long a run takes (see kHangSeconds).
 //
 // Each window run is exactly what a student would type:
 //   xvfb-run -a -s "-screen 0 1600x1200x24" build/bin/<id> --size 800x480 --frames 3
@@ -61,14 +72,14 @@
 #include <thread>
 #include <vector>
 
-#include "common/error.hpp"
-#include "common/gl_pane.hpp"
-#include "common/layout.hpp"
-#include "common/side_panel.hpp"
-#include "common/window.hpp"
-#include "common/image.hpp"
-#include "common/options.hpp"
-#include "common/scene.hpp"
+#include "common/core/error.hpp"
+#include "common/app/gl_pane.hpp"
+#include "common/core/layout.hpp"
+#include "common/app/side_panel.hpp"
+#include "common/app/window.hpp"
+#include "common/core/image.hpp"
+#include "common/core/options.hpp"
+#include "common/core/scene.hpp"
 
 #ifndef TS_BIN_DIR
 #define TS_BIN_DIR "build/bin"
@@ -624,14 +635,19 @@ bool runPrintedCommand(const std::string& id, const std::string& command, const 
   return remake.exitCode == 0;
 }
 
+// The first key of the first option that has one ("" if none).
+std::string firstKey(const ts::Options& o) {
+  for (const auto& it : o.items())
+    if (it.key) return std::string(1, it.key);
+  return "";
+}
+
 // Backspace, = and the right arrow (the full level).
 void resetEqualsArrow(const std::string& id) {
   Fresh initial(id);
   std::string base = outDir() + "/" + id + "/usual_keys";
   // Backspace after a change: the state line is the defaults again.
-  std::string change;
-  for (const auto& it : initial.opts.items())
-    if (it.key && change.empty()) change = std::string(1, it.key);
+  std::string change = firstKey(initial.opts);
   ASSERT_FALSE(change.empty());
   Proc reset = windowRun(id, base + "/reset", change + std::string(1, ts::keys::kReset));
   ASSERT_EQ(reset.exitCode, 0) << reset.describe();
@@ -673,9 +689,7 @@ void resetEqualsArrow(const std::string& id) {
 void helpAndSave(const std::string& id) {
   Fresh initial(id);
   std::string base = outDir() + "/" + id + "/help_and_save";
-  std::string change;
-  for (const auto& it : initial.opts.items())
-    if (it.key && change.empty()) change = std::string(1, it.key);
+  std::string change = firstKey(initial.opts);
   ASSERT_FALSE(change.empty());
   Fresh changed(id);
   changed.opts.handleKey(change[0]);
@@ -901,7 +915,7 @@ void roundTrip(const std::string& id, const ts::Options& state, const std::strin
 
 
 // --- never frozen (issue 13.3) ----------------------------------------------
-// The window's test hooks (common/test_hooks.hpp): TS_TEST_SLOW_MEASURE_MS
+// The window's test hooks (common/app/test_hooks.hpp): TS_TEST_SLOW_MEASURE_MS
 // and _FRAMES make every measurement of the worker last at least that long
 // and that many window frames (in 10 ms steps that report progress and stop
 // when superseded), TS_TEST_KEY_WHEN=measuring types each --keys key after the

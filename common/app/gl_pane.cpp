@@ -1,0 +1,72 @@
+#include "common/app/gl_pane.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "common/gl/render.hpp"
+
+namespace ts {
+int glPaneWidth(int windowWidth) {
+  // About 40% of the window: a listing line is ~60 characters of 7 pixels;
+  // never so wide that the figure gets less than half.
+  return std::clamp(windowWidth * 2 / 5, std::min(240, windowWidth / 2), 620);
+}
+
+void GlPane::record(Renderer& r, const Frame& f, bool afterKey, double now, bool print) {
+  // The pictures the scene rendered itself first, then the frame's calls.
+  std::vector<CallSection> calls = pictureSections(f, recordPicture(r, f));
+  lines_ = listing(calls, afterKey && !calls_.empty() ? &calls_ : nullptr, 3);
+  calls_ = std::move(calls);
+  firstChanged_ = -1;
+  int changed = 0;
+  for (size_t k = 0; k < lines_.size(); ++k)
+    if (lines_[k].changed) {
+      if (firstChanged_ < 0) firstChanged_ = int(k);
+      if (print && ++changed <= 24) std::printf("gl pane: changed: %s\n", lines_[k].text.c_str());
+    }
+  if (print) {
+    std::printf("gl pane: %zu lines, %d changed by the last key\n", lines_.size(), changed);
+    std::fflush(stdout);
+  }
+  if (firstChanged_ >= 0) {
+    changedAt_ = now;
+    scroll_ = true;
+  }
+}
+
+void GlPane::draw(int x, int w, int h, double now) {
+  ImGui::SetNextWindowPos(ImVec2(float(x), 0.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(float(w), float(h)), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(1.0f);  // beside the figure: nothing shows through
+  ImGui::Begin("OpenGL calls of this picture (l: hide)", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+  bool fresh = now - changedAt_ < kHighlightSeconds;
+  ImGui::TextWrapped("%zu lines, recorded as drawn. %s", lines_.size(),
+                     fresh ? "Yellow: changed by the last key." : "Press a key of the demo: what it changes turns yellow.");
+  ImGui::Separator();
+  ImGui::BeginChild("listing", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
+  float lineHeight = ImGui::GetTextLineHeightWithSpacing();
+  if (scroll_ && firstChanged_ >= 0) {
+    ImGui::SetScrollY(std::max(0.0f, float(firstChanged_) * lineHeight - ImGui::GetWindowHeight() / 3));
+    scroll_ = false;
+  }
+  ImGuiListClipper clipper;
+  clipper.Begin(int(lines_.size()), lineHeight);
+  while (clipper.Step())
+    for (int k = clipper.DisplayStart; k < clipper.DisplayEnd; ++k) {
+      const ListingLine& l = lines_[size_t(k)];
+      if (l.changed && fresh)
+        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.2f, 1.0f), "%s", l.text.c_str());
+      else if (l.text.rfind("/*", 0) == 0 || l.text.rfind("    \"", 0) == 0)
+        ImGui::TextColored(ImVec4(0.6f, 0.7f, 0.6f, 1.0f), "%s", l.text.c_str());
+      else
+        ImGui::TextUnformatted(l.text.c_str());
+    }
+  clipper.End();
+  ImGui::EndChild();
+  ImGui::End();
+}
+}  // namespace ts

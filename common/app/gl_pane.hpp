@@ -1,0 +1,41 @@
+// common/app/gl_pane.hpp — the window's GL pane (key `l`): the OpenGL calls that
+// drew the current picture, beside it, never over it (the figure is laid
+// out in the rest of the window).  The anchor is Nate Robins' texture tutor,
+// whose command pane shows glTexCoord2f and glTexParameteri with their live
+// values.  The calls are recorded (common/gl/gl_record.hpp), so what the pane
+// shows is what drew the picture; lines a key press changed stay highlighted
+// for a few seconds (press `f` in quad_distortion: GL_TEXTURE_MAG_FILTER
+// turns from GL_NEAREST to GL_LINEAR).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "common/core/frame.hpp"
+#include "common/gl/gl_listing.hpp"
+
+namespace ts {
+class Renderer;
+
+// The pane's width in a window `windowWidth` pixels wide: the figure gets
+// the rest, from x = 0.  The window tests use it to find the figure's box.
+int glPaneWidth(int windowWidth);
+
+class GlPane {
+ public:
+  static constexpr double kHighlightSeconds = 4.0;
+  bool visible = false;
+  // Draws `f` with its calls recorded and keeps their listing.  afterKey: the
+  // picture changed because of a key, so lines differing from the last
+  // recording are highlighted (and printed to stdout, for tests and logs).
+  void record(Renderer& r, const Frame& f, bool afterKey, double now, bool print);
+  // The pane as a Dear ImGui window at (x, 0), w x h pixels.
+  void draw(int x, int w, int h, double now);
+
+ private:
+  std::vector<CallSection> calls_;
+  std::vector<ListingLine> lines_;
+  double changedAt_ = -1e9;
+  int firstChanged_ = -1;
+  bool scroll_ = false;
+};
+}  // namespace ts

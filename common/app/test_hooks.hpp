@@ -1,0 +1,88 @@
+// common/app/test_hooks.hpp — the window's test hooks, in one place.
+//
+// Environment variables read by the window and the measurement worker for
+// tests and benchmarks only; a student never sets them.  Every hook waits on
+// an event (a frame drawn, a measurement handed over, a measurement under
+// way), never on the clock alone, so that a test's verdict does not depend on
+// how busy the machine is.
+//
+//   TS_TEST_MOUSE="press X Y; move X Y; release; wheel N; drop FILE"
+//       mouse events given before the first frame ("rpress X Y": the right
+//       button), through the window's own mouse handlers.
+//   TS_TEST_RESIZE="WxH WxH ..."
+//       once the window would have ended (--frames), resize it to each size
+//       in turn and draw --frames frames again; the last frame at each size,
+//       the first included, is written as <screenshot>.WxH.png.
+//   TS_TEST_FRAME_LOG=FILE
+//       a line per event, times in seconds of the steady clock: "frame T M P"
+//       after each swap (M 1 while a measurement is out, P its progress),
+//       "key T C" when a key is taken, "result T" when a measurement is
+//       handed over.
+//   TS_TEST_KEY_WHEN=measured|measuring
+//       when --keys takes its next key: "measured" once the numbers of the
+//       state so far are in (no measurement out); "measuring" (after the
+//       first key) once a measurement is out and has reported progress, so
+//       the key lands while it runs, as a student's does.  Unset: one key a
+//       frame.
+//   TS_TEST_KEY_INTERVAL_MS=N
+//       (benchmarks: bench_window) take a key at most every N ms, so that a
+//       key's latency is timed one key at a time.  No test uses it: a test
+//       waits on events.
+//   TS_TEST_SLOW_MEASURE_MS=N, TS_TEST_SLOW_MEASURE_FRAMES=F
+//       every measurement of the worker first spends at least N ms, in 10 ms
+//       steps that report progress and stop when superseded, and does not
+//       end before the window has drawn F frames since it began: a window
+//       that stopped drawing while measuring never gets its result.
+#pragma once
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ts::test_hooks {
+
+// TS_TEST_MOUSE, parsed.  what: press | rpress | move | release | wheel | drop.
+struct MouseEvent {
+  std::string what;
+  double a = 0, b = 0;
+  std::string path;  // drop
+};
+std::vector<MouseEvent> mouseEvents();
+
+// TS_TEST_RESIZE, parsed; and the screenshot's name at a size.
+std::vector<std::pair<int, int>> resizes();
+std::string sizedName(const std::string& png, int w, int h);
+
+// The frame log and the pacing of --keys.
+class KeyLog {
+ public:
+  KeyLog();
+  ~KeyLog();
+  KeyLog(const KeyLog&) = delete;
+  KeyLog& operator=(const KeyLog&) = delete;
+  static double clock();  // seconds of the steady clock
+  void line(const char* what, const std::string& rest = "");
+  // Whether --keys may take its next key now.  measuring: a measurement is
+  // out; progress: its progress; measuredOnce: a result has been handed over.
+  // No side effect: keyTaken() says a key was taken.
+  bool keyDue(bool measuring, double progress, bool measuredOnce) const;
+  void keyTaken();
+  double untilKey() const;  // seconds until TS_TEST_KEY_INTERVAL_MS allows a key
+
+ private:
+  enum class When { Frame, Measured, Measuring };
+  std::FILE* f_ = nullptr;
+  When when_ = When::Frame;
+  int taken_ = 0;
+  double keyInterval_ = 0, lastKey_ = -1e9;
+};
+
+// The slowed measurement (TS_TEST_SLOW_MEASURE_MS / _FRAMES).
+long slowMeasureMs();
+long slowMeasureFrames();
+// The window calls this after every frame it shows; the slowed measurement
+// counts them.
+void frameDrawn();
+long framesDrawn();
+
+}  // namespace ts::test_hooks

@@ -1,0 +1,155 @@
+// common/core/frame.hpp — a demo describes what to draw as data, not GL calls.
+//
+// A Frame is the whole picture: textures, panels (viewport + matrices +
+// batches of vertices), and text labels.  common/gl/render.cpp turns it into
+// fixed-function OpenGL (glBegin/glTexCoord4f/glVertex3f) or GLSL, and
+// common/core/sidecar.cpp writes the very same data as JSON beside every figure,
+// so anyone (the CPU reference rasterizer, a student with a calculator) can
+// recompute the image without running OpenGL.
+#pragma once
+#include <glm/glm.hpp>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/core/gl_call.hpp"   // recorded calls as plain data, no GL headers
+#include "common/core/gl_enums.hpp"  // GL names only: the plain data never calls GL
+#include "common/core/image.hpp"
+
+namespace ts {
+struct Vertex {
+  glm::vec3 pos{0.0f};
+  glm::vec4 tex{0.0f, 0.0f, 0.0f, 1.0f};  // (s, t, r, q): q != 1 for projective maps
+  glm::vec4 color{1.0f};
+  // The secondary colour (glSecondaryColor3f), added after texturing when the
+  // batch's colorSum is on: what GL_SEPARATE_SPECULAR_COLOR does with the
+  // specular term, computed on the CPU here so the reference can redo it.
+  glm::vec3 secondary{0.0f};
+};
+
+enum class Prim { Triangles, Lines, LineStrip, LineLoop, Points };
+
+struct TextureDesc {
+  std::string name;                                         // "checkerboard"
+  std::vector<std::pair<std::string, std::string>> params;  // how it was made
+  std::shared_ptr<const Image> image;                       // level 0
+  bool mipmaps = false;  // levels built on the CPU by the book's 2x2 average
+  bool linearLightMips = false;  // average in linear light instead of sRGB values
+  // Explicit levels 0..n (then `mipmaps` must be on); overrides the 2x2 average.
+  std::shared_ptr<const std::vector<Image>> mipLevels;
+  GLenum minFilter = GL_LINEAR, magFilter = GL_LINEAR;
+  GLenum wrapS = GL_REPEAT, wrapT = GL_REPEAT;
+  glm::vec4 border{0.0f};
+  float maxAnisotropy = 1.0f;
+  float lodBias = 0.0f;
+  // A texture the scene drew itself for this frame (a live view, see
+  // Scene::live): bound as it is, never uploaded, cached or hashed; `image`
+  // stays empty and the parameters above are still applied.
+  GLuint glTexture = 0;
+  // The GL calls that rendered `image`, when a scene rendered it itself in
+  // measure() (recordRender in gl_listing.hpp): the listings and the GL pane
+  // print them, under a comment naming the panel, before the frame's own.
+  // Not part of the texels: never in key(), the sidecar or an export.
+  gl::CallList renderedBy;
+  // Identifies the texel contents (name + params), for caching uploads.
+  std::string key() const;
+};
+
+struct Uniform {
+  std::string name;
+  glm::vec4 value{0.0f};
+};
+
+struct Program {
+  std::string file;  // where the source lives, for error messages ("demos/x/x.cpp")
+  std::string vertex, fragment;
+};
+
+struct Batch {
+  std::string role;  // what it is, for the sidecar: "surface", "outline", ...
+  Prim prim = Prim::Triangles;
+  std::vector<Vertex> vertices;
+  int texture = -1;            // index into Frame::textures, -1 = untextured
+  GLenum texEnv = GL_REPLACE;  // fixed-function combine mode
+  std::string program;         // "" = fixed function; else a Frame::programs key
+  std::vector<Uniform> uniforms;
+  float lineWidth = 1.0f;
+  float pointSize = 1.0f;
+  bool blend = false;
+  // glMatrixMode(GL_TEXTURE) + glLoadMatrixf: GL multiplies every vertex's
+  // (s,t,r,q) by it before interpolation (render.cpp loads it for the batch
+  // and the identity after, so no other batch sees it; the sidecar writes it
+  // when it is not the identity and the reference applies it per vertex).
+  glm::mat4 textureMatrix{1.0f};
+  // GL_TEXTURE_ENV_COLOR (glTexEnvfv): the constant colour GL_BLEND mixes in.
+  glm::vec4 envColor{0.0f};
+  // GL_COLOR_SUM: add each vertex's secondary colour after texturing.
+  bool colorSum = false;
+};
+
+// Viewport in pixels of the frame, origin at the top-left (as in the PNG).
+struct Rect {
+  int x = 0, y = 0, w = 0, h = 0;
+  bool contains(int px, int py) const { return px >= x && py >= y && px < x + w && py < y + h; }
+};
+
+struct Panel {
+  std::string id;
+  Rect viewport;
+  glm::mat4 projection{1.0f}, modelview{1.0f};
+  bool depthTest = false;
+  bool clear = false;
+  glm::vec4 clearColor{0.0f};
+  std::vector<Batch> batches;
+};
+
+enum class Align { Left, Center, Right };
+
+struct Label {
+  float x = 0, y = 0;  // pixels, top-left origin; y is the top of the text
+  std::string text;
+  glm::vec4 color{1.0f};
+  int scale = 1;  // multiples of the 13-pixel base font
+  Align align = Align::Left;
+  glm::vec4 background{0.0f};  // alpha 0 = no box
+};
+
+// The fixed state common/gl/render.cpp draws every Frame with, written into the
+// sidecar so that a reader knows it without reading the renderer.
+struct FixedState {
+  static constexpr GLenum blendSrc = GL_SRC_ALPHA, blendDst = GL_ONE_MINUS_SRC_ALPHA;  // colour
+  static constexpr GLenum blendSrcAlpha = GL_ZERO, blendDstAlpha = GL_ONE;            // alpha: stays opaque
+  static constexpr GLenum depthFunc = GL_LESS;
+  static constexpr GLenum shadeModel = GL_SMOOTH;
+  static constexpr bool cullFace = false, lighting = false;
+};
+
+struct Frame {
+  int width = 0, height = 0;
+  glm::vec4 clearColor{0.0f, 0.0f, 0.0f, 1.0f};
+  // glHint(GL_PERSPECTIVE_CORRECTION_HINT, ...) as the book sets it.  Mesa
+  // ignores it (PLATFORM.md); Figure VI.2 detects that and says so.
+  GLenum perspectiveHint = GL_NICEST;
+  std::vector<TextureDesc> textures;
+  std::vector<std::pair<std::string, Program>> programs;
+  std::vector<Panel> panels;
+  std::vector<Label> labels;
+
+  int addTexture(TextureDesc t) {
+    textures.push_back(std::move(t));
+    return int(textures.size()) - 1;
+  }
+  const Panel* panel(const std::string& id) const {
+    for (const auto& p : panels)
+      if (p.id == id) return &p;
+    return nullptr;
+  }
+};
+
+// Builders for the common shapes.
+Batch lineLoop(const std::vector<glm::vec2>& pts, glm::vec4 color, float width, std::string role);
+Batch lineSegments(const std::vector<glm::vec2>& pts, glm::vec4 color, float width, std::string role);
+// Maps a point of a panel's normalised device coordinates to frame pixels.
+glm::vec2 panelToPixels(const Panel& p, glm::vec4 clip);
+}  // namespace ts

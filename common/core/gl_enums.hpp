@@ -1,0 +1,42 @@
+// common/core/gl_enums.hpp — the OpenGL names the plain data uses, without OpenGL.
+//
+// A Frame (common/core/frame.hpp), its sidecar and the CPU reference (reference/)
+// name GL state by the GL's own enum values (GL_LINEAR, GL_REPEAT, ...), but
+// they never call GL: they include this header, not the loader (gl.hpp) or
+// the GL headers.  The values are the OpenGL specification's, spelled as in
+// <GL/gl.h> and <GL/glext.h>, so a file that includes both sees identical
+// definitions (a differing one is a compiler diagnostic, "redefined").
+#pragma once
+
+typedef unsigned int GLenum;
+typedef unsigned int GLuint;
+
+// Blending, depth, shading, hints (FixedState, Frame::perspectiveHint).
+#define GL_ZERO 0
+#define GL_ONE 1
+#define GL_SRC_ALPHA 0x0302
+#define GL_ONE_MINUS_SRC_ALPHA 0x0303
+#define GL_LESS 0x0201
+#define GL_SMOOTH 0x1D01
+#define GL_DONT_CARE 0x1100
+#define GL_FASTEST 0x1101
+#define GL_NICEST 0x1102
+// Texture filters.
+#define GL_NEAREST 0x2600
+#define GL_LINEAR 0x2601
+#define GL_NEAREST_MIPMAP_NEAREST 0x2700
+#define GL_LINEAR_MIPMAP_NEAREST 0x2701
+#define GL_NEAREST_MIPMAP_LINEAR 0x2702
+#define GL_LINEAR_MIPMAP_LINEAR 0x2703
+// Wrap modes.
+#define GL_REPEAT 0x2901
+#define GL_CLAMP 0x2900
+#define GL_CLAMP_TO_EDGE 0x812F
+#define GL_CLAMP_TO_BORDER 0x812D
+#define GL_MIRRORED_REPEAT 0x8370
+// Texture environment modes.
+#define GL_REPLACE 0x1E01
+#define GL_MODULATE 0x2100
+#define GL_DECAL 0x2101
+#define GL_BLEND 0x0BE2
+#define GL_ADD 0x0104

@@ -1,0 +1,230 @@
+#include "common/core/layout.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "common/core/text.hpp"
+
+namespace ts::layout {
+Box labelBox(const Label& l) {
+  // As Renderer::drawLabels places it: left edge and top truncated to whole pixels.
+  float w = text::width(l.text, l.scale), h = text::height(l.scale);
+  float x = l.align == Align::Left ? l.x : l.align == Align::Center ? l.x - w / 2 : l.x - w;
+  x = float(int(x));
+  float y = float(int(l.y));
+  float pad = l.background.a > 0 ? 3.0f * float(l.scale) : 0.0f;
+  return {x - pad, y - pad, x + w + pad, y + h + pad};
+}
+
+Frame blankFrame(int width, int height) {
+  Frame f;
+  f.width = width;
+  f.height = height;
+  f.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  return f;
+}
+
+Batch unitSquare(int texture, const std::string& role, float s0, float s1) {
+  Batch b;
+  b.role = role;
+  b.texture = texture;
+  const glm::vec2 c[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int i : {0, 1, 2, 0, 2, 3})
+    b.vertices.push_back({{c[i], 0.0f}, {s0 + c[i].x * (s1 - s0), c[i].y, 0.0f, 1.0f}, {1, 1, 1, 1}});
+  return b;
+}
+
+Panel unitPanel(const std::string& id, const Rect& viewport) {
+  Panel p;
+  p.id = id;
+  p.viewport = viewport;
+  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+  return p;
+}
+
+Panel texturePanel(const std::string& id, const Rect& viewport, int texture, const std::string& role, float s0, float s1) {
+  Panel p = unitPanel(id, viewport);
+  p.batches.push_back(unitSquare(texture, role, s0, s1));
+  return p;
+}
+
+std::string fmt(const char* format, double v) {
+  char b[128];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
+int scaleFor(const Rect& picture, int maxScale) {
+  return std::clamp(std::min(picture.w / 220, picture.h / 140), 1, std::max(1, maxScale));
+}
+
+int fitScale(const std::function<Rect(int)>& pictureAt, int maxScale) {
+  for (int s = std::max(1, maxScale); s > 1; --s)
+    if (scaleFor(pictureAt(s), maxScale) >= s) return s;
+  return 1;
+}
+
+namespace {
+// Words of `text` on lines no wider than `width` at `scale`; a word wider
+// than the line stays alone on its line (the caller cuts it).
+std::vector<std::string> wrap(const std::string& text, int scale, float width) {
+  std::vector<std::string> lines;
+  std::string line, word;
+  auto flush = [&] {
+    if (word.empty()) return;
+    std::string joined = line.empty() ? word : line + " " + word;
+    if (!line.empty() && text::width(joined, scale) > width) {
+      lines.push_back(line);
+      line = word;
+    } else {
+      line = joined;
+    }
+    word.clear();
+  };
+  for (char c : text) {
+    if (c == ' ') flush();
+    else word += c;
+  }
+  flush();
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+std::string cut(std::string s, int scale, float width) {
+  if (text::width(s, scale) <= width) return s;
+  while (!s.empty() && text::width(s + "...", scale) > width) s.pop_back();
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s.empty() ? std::string() : s + "...";
+}
+}  // namespace
+
+int captionLines(const std::string& text, int scale, float width) {
+  for (int s = std::max(1, scale); s >= 1; --s)
+    if (text::width(text, s) <= width) return 1;
+  return int(wrap(text, 1, width).size());
+}
+
+float caption(Frame& f, Box band, const std::string& text, glm::vec4 color, int scale, Align align,
+              glm::vec4 background) {
+  if (text.empty()) return band.y0;
+  float pad = background.a > 0 ? 3.0f : 0.0f;  // the background box grows 3 px per scale each side
+  auto place = [&](const std::vector<std::string>& lines, int s) {
+    float p = pad * float(s), y = band.y0 + p;
+    for (const std::string& l : lines) {
+      float x = align == Align::Left ? band.x0 + p : align == Align::Right ? band.x1 - p : (band.x0 + band.x1) / 2;
+      if (align == Align::Center) {
+        // Whole pixels as the renderer places it, kept inside the band.
+        float w = text::width(l, s);
+        x = std::max(x, band.x0 + p + w / 2);
+        x = std::min(x, band.x1 - p - w / 2);
+      }
+      f.labels.push_back({x, std::ceil(y), l, color, s, align, background});
+      y += lineHeight(s) + 2 * p;  // boxed lines: their boxes must not overlap
+    }
+    return std::ceil(y) - float(4 * s) + p;
+  };
+  // One line, as large as fits (at most `scale`).
+  for (int s = std::max(1, scale); s >= 1; --s) {
+    float p = pad * float(s);
+    if (text::width(text, s) + 2 * p <= band.w() - 1 && text::height(s) + 2 * p <= band.h())
+      return place({text}, s);
+  }
+  // Wrapped at scale 1 onto the lines the band has room for; the last cut.
+  float p = pad;
+  float width = band.w() - 1 - 2 * p;
+  int room = int((band.h() + 4) / (lineHeight(1) + 2 * p));
+  if (room < 1 || width < text::width("...", 1)) return band.y0;
+  std::vector<std::string> lines = wrap(text, 1, width);
+  if (int(lines.size()) > room) {
+    std::string rest;
+    for (size_t k = size_t(room) - 1; k < lines.size(); ++k) rest += (rest.empty() ? "" : " ") + lines[k];
+    lines.resize(size_t(room));
+    lines.back() = rest;  // cut below
+  }
+  for (auto& l : lines) l = cut(l, 1, width);
+  return place(lines, 1);
+}
+
+bool placeFree(Frame& f, Label l, Box within) {
+  Box b = labelBox(l);
+  if (l.text.empty() || b.w() > within.w() || b.h() > within.h()) return false;
+  float dx = 0, dy = 0;
+  if (b.x0 < within.x0) dx = std::ceil(within.x0 - b.x0);
+  else if (b.x1 > within.x1) dx = -std::ceil(b.x1 - within.x1);
+  if (b.y0 < within.y0) dy = std::ceil(within.y0 - b.y0);
+  else if (b.y1 > within.y1) dy = -std::ceil(b.y1 - within.y1);
+  l.x += dx;
+  l.y += dy;
+  b = labelBox(l);
+  if (!b.inside(within)) return false;
+  for (const Label& o : f.labels)
+    if (!o.text.empty() && labelBox(o).overlaps(b)) return false;
+  f.labels.push_back(l);
+  return true;
+}
+
+bool Column::add(const std::string& text, glm::vec4 color, int scale, Align align, glm::vec4 background) {
+  if (y_ >= area_.y1) return false;
+  Box band{area_.x0, y_, area_.x1, area_.y1};
+  float y = caption(f_, band, text, color, scale, align, background);
+  if (y <= y_) return false;
+  y_ = y + 4.0f;
+  return true;
+}
+
+std::vector<Cell> flow(Box area, const FlowSpec& spec) {
+  std::vector<Cell> best;
+  double bestArea = -1;
+  bool bestFits = false;
+  const int n = std::max(1, spec.n);
+  for (int rows = 1; rows <= n; ++rows) {
+    int cols = (n + rows - 1) / rows;
+    if ((rows - 1) * cols >= n) continue;  // an empty row
+    // The scale is found with the picture: try large first, keep the first
+    // whose picture asks for at least that scale.
+    for (int s = std::max(1, spec.maxScale); s >= 1; --s) {
+      float bandA = float(spec.linesAbove) * lineHeight(s), bandB = float(spec.linesBelow) * lineHeight(s);
+      float cw = (area.w() - float(cols - 1) * spec.gap) / float(cols);
+      float ch = (area.h() - float(rows - 1) * spec.gap) / float(rows);
+      float ph = ch - bandA - bandB, pw = cw;
+      if (pw < 1 || ph < 1) continue;
+      if (pw / ph > spec.aspect) pw = ph * spec.aspect;
+      else ph = pw / spec.aspect;
+      Rect pic{0, 0, std::max(1, int(pw)), std::max(1, int(ph))};
+      if (s > 1 && scaleFor(pic, spec.maxScale) < s) continue;
+      double a = double(pic.w) * pic.h;
+      bool fits = cw >= spec.minCellWidth;
+      if (bestFits && !fits) break;
+      if (fits == bestFits && a <= bestArea) break;
+      bestArea = a;
+      bestFits = fits;
+      best.clear();
+      // Centre the grid: the used width and height.
+      float usedW = float(cols) * cw + float(cols - 1) * spec.gap;
+      float cellH = bandA + float(pic.h) + bandB;
+      float usedH = float(rows) * cellH + float(rows - 1) * spec.gap;
+      float y0 = area.y0 + (area.h() - usedH) / 2;
+      for (int k = 0; k < n; ++k) {
+        int r = k / cols, c = k % cols;
+        int inRow = std::min(cols, n - r * cols);  // a short last row is centred too
+        float x0 = area.x0 + (area.w() - usedW) / 2 + (float(cols - inRow) * (cw + spec.gap)) / 2 +
+                   float(c) * (cw + spec.gap);
+        float cy = y0 + float(r) * (cellH + spec.gap);
+        Cell cell;
+        cell.scale = s;
+        cell.picture = {int(std::lround(x0 + (cw - float(pic.w)) / 2)), int(std::lround(cy + bandA)), pic.w, pic.h};
+        cell.above = {x0, cy, x0 + cw, float(cell.picture.y)};
+        cell.below = {x0, float(cell.picture.y + pic.h), x0 + cw, float(cell.picture.y + pic.h) + bandB};
+        best.push_back(cell);
+      }
+      break;
+    }
+  }
+  if (best.empty())
+    for (int k = 0; k < n; ++k) best.push_back({{int(area.x0), int(area.y0), 1, 1}, {}, {}, 1});
+  return best;
+}
+}  // namespace ts::layout

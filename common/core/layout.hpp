@@ -1,0 +1,132 @@
+// common/core/layout.hpp — the demos' one layout kit: where a figure's panels,
+// captions and plots go in a rectangle of any size and aspect.
+//
+//   - panels flow in a row when the rectangle is wide and in a column when
+//     it is tall (flow), each keeping its aspect;
+//   - text scales with its panel, not the window (scaleFor);
+//   - a caption shrinks, then wraps, then is cut with "..." rather than run
+//     outside its box (fitText / caption);
+//   - nothing is placed outside the rectangle it was given.
+// The layout tests (tests/layout) read back the same boxes (labelBox) and
+// check that no label leaves its panel or the window and no two overlap.
+#pragma once
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/core/frame.hpp"
+
+namespace ts::layout {
+// A box in frame pixels, top-left origin, as floats (labels sit on halves).
+struct Box {
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  float w() const { return x1 - x0; }
+  float h() const { return y1 - y0; }
+  bool empty() const { return x1 <= x0 || y1 <= y0; }
+  bool overlaps(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+  bool inside(const Box& o, float slack = 0) const {
+    return x0 >= o.x0 - slack && y0 >= o.y0 - slack && x1 <= o.x1 + slack && y1 <= o.y1 + slack;
+  }
+};
+inline Box box(const Rect& r) { return {float(r.x), float(r.y), float(r.x + r.w), float(r.y + r.h)}; }
+
+// The pixels a label covers as common/gl/render.cpp draws it (its text at its
+// scale, placed by its alignment, plus the background box when it has one).
+Box labelBox(const Label& l);
+
+// The demos' shared text colours: captions, and measured values / the current state.
+inline const glm::vec4 kWhite{0.95f, 0.95f, 0.95f, 1.0f}, kAmber{1.0f, 0.75f, 0.3f, 1.0f};
+
+// An empty frame of this size on the demos' shared background.
+Frame blankFrame(int width, int height);
+
+// A texture on the unit square (s, t from 0 to 1 across and up; s from s0 to
+// s1 when a panel shows a part): the batch, and a panel `id` at `viewport`
+// showing only it (a texture-space view, a rendered image).
+Batch unitSquare(int texture, const std::string& role, float s0 = 0.0f, float s1 = 1.0f);
+Panel texturePanel(const std::string& id, const Rect& viewport, int texture, const std::string& role = "image",
+                   float s0 = 0.0f, float s1 = 1.0f);
+// An empty panel `id` at `viewport` that shows the unit square (x, y from 0
+// to 1 across and up): what texturePanel starts from, and the flat figures'
+// panels (a quad in screen space, a lit plane).
+Panel unitPanel(const std::string& id, const Rect& viewport);
+
+// A w x h picture centred in `r` (whole pixels, as the demos place a square
+// texture view inside a cell sized for a wider picture).
+inline Rect centred(const Rect& r, int w, int h) { return {r.x + (r.w - w) / 2, r.y + (r.h - h) / 2, w, h}; }
+// A two-line caption band cut into its upper and lower line (a title above a
+// formula, an equation above its text).
+inline std::pair<Box, Box> halves(const Box& b) {
+  const float mid = b.y0 + b.h() / 2;
+  return {{b.x0, b.y0, b.x1, mid}, {b.x0, mid, b.x1, b.y1}};
+}
+
+// printf of one number ("%.2f") into a std::string.
+std::string fmt(const char* format, double v);
+
+// The text scale for captions of a picture this size: grows with the
+// picture, never with the window (1 below ~220 x 140 pixels).
+int scaleFor(const Rect& picture, int maxScale = 3);
+// One line of text's height at a scale, with its leading.
+inline float lineHeight(int scale) { return float(13 * scale + 4 * scale); }
+// The text scale of a layout whose picture depends on the room its text
+// takes: the largest s (maxScale down to 1) for which the picture laid out
+// with text at s, pictureAt(s), asks for at least s (scaleFor).  For views
+// that place their pictures themselves (whole zooms, fixed grids) and
+// still want their text to grow with the pictures, as flow() does.
+int fitScale(const std::function<Rect(int scale)>& pictureAt, int maxScale = 3);
+
+// n pictures of one aspect (width / height) in `area`: in a row when the
+// area is wide, in a column when it is tall (or a grid, whichever gives the
+// largest pictures), centred, `gap` apart, each with bands for `above` and
+// `below` lines of captions at the cell's scale (which is scaleFor(picture),
+// at most maxScale).
+struct Cell {
+  Rect picture;
+  Box above, below;  // the caption bands, as wide as the cell
+  int scale = 1;
+};
+struct FlowSpec {
+  int n = 1;
+  float aspect = 1.0f;
+  int linesAbove = 1, linesBelow = 1;
+  int gap = 12;
+  int maxScale = 3;
+  // The width a cell's captions need at scale 1: an arrangement whose cells
+  // are narrower is taken only when no other is wide enough.
+  float minCellWidth = 0;
+};
+std::vector<Cell> flow(Box area, const FlowSpec& spec);
+
+// Text fitted to a box: at `scale` if it fits, else smaller, else wrapped at
+// spaces onto the lines the box has room for, else cut with "...".  Adds
+// the labels and returns the y below the last line (band.y0 when nothing
+// fits).  Never places text outside `band`.
+float caption(Frame& f, Box band, const std::string& text, glm::vec4 color, int scale,
+              Align align = Align::Center, glm::vec4 background = glm::vec4(0.0f));
+// The lines caption() would use at most: wrapped text at the scale that
+// fits `width` (for reserving a band's height before placing it).
+int captionLines(const std::string& text, int scale, float width);
+
+// Lines of text stacked downwards in a box (a figure's notes): each add()
+// takes the room its caption needs; what no longer fits is left out.
+class Column {
+ public:
+  Column(Frame& f, Box area) : f_(f), area_(area), y_(area.y0) {}
+  bool add(const std::string& text, glm::vec4 color, int scale, Align align = Align::Center,
+           glm::vec4 background = glm::vec4(0.0f));
+  float y() const { return y_; }
+
+ private:
+  Frame& f_;
+  Box area_;
+  float y_;
+};
+
+// Adds `l` where asked, moved the least it takes to lie inside `within`,
+// unless it is larger than `within` or would overlap a label already in the
+// frame: tags, ticks and notes that do not fit are left out, never drawn
+// over each other.  Returns whether it was placed.
+bool placeFree(Frame& f, Label l, Box within);
+}  // namespace ts::layout

@@ -1,0 +1,245 @@
+#include "common/core/sidecar.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace ts {
+namespace {
+// Written with nlohmann-json (ordered: keys stay in the order below).
+using Json = nlohmann::ordered_json;
+
+// A float as the shortest decimal that reads back as the same float (9
+// significant digits), whole numbers without a fraction, non-finite as null.
+Json num(double v) {
+  if (!std::isfinite(v)) return nullptr;
+  if (v == std::floor(v) && std::abs(v) < 1e15) return Json(static_cast<long long>(v));  // no "-0", no "1.0"
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return Json(std::strtod(buf, nullptr));
+}
+template <int N>
+Json vec(const glm::vec<N, float>& v) {
+  Json a = Json::array();
+  for (int i = 0; i < N; ++i) a.push_back(num(v[i]));
+  return a;
+}
+Json mat(const glm::mat4& m) {  // column-major, as glLoadMatrixf takes it
+  Json a = Json::array();
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) a.push_back(num(m[c][r]));
+  return a;
+}
+const char* primName(Prim p) {
+  switch (p) {
+    case Prim::Triangles: return "triangles";
+    case Prim::Lines: return "lines";
+    case Prim::LineStrip: return "line_strip";
+    case Prim::LineLoop: return "line_loop";
+    case Prim::Points: return "points";
+  }
+  return "?";
+}
+
+// The layout: one line per top-level key, and one per element of the long
+// lists (textures, panels, batches, vertices, labels); everything else on
+// one line, so a student can read the file and diff two of them.
+bool listPerLine(const std::string& key) {
+  return key == "textures" || key == "panels" || key == "batches" || key == "vertices" || key == "labels";
+}
+bool hasListPerLine(const Json& v) {
+  if (v.is_object())
+    for (const auto& [k, x] : v.items())
+      if ((listPerLine(k) && x.is_array() && !x.empty()) || hasListPerLine(x)) return true;
+  return false;
+}
+void emit(std::string& out, const Json& v, const std::string& indent) {
+  if (v.is_object()) {
+    bool multi = hasListPerLine(v);
+    out += '{';
+    bool first = true;
+    for (const auto& [k, x] : v.items()) {
+      if (!first) out += multi && (listPerLine(k) && x.is_array() && !x.empty()) ? ",\n" + indent + " " : ", ";
+      first = false;
+      out += Json(k).dump() + ": ";
+      if (listPerLine(k) && x.is_array() && !x.empty()) {
+        out += '[';
+        std::string inner = indent + "  ";
+        for (size_t i = 0; i < x.size(); ++i) {
+          out += (i ? ",\n" : "\n") + inner;
+          emit(out, x[i], inner);
+        }
+        out += ']';
+      } else {
+        emit(out, x, indent);
+      }
+    }
+    out += '}';
+  } else if (v.is_array()) {
+    out += '[';
+    for (size_t i = 0; i < v.size(); ++i) {
+      if (i) out += v[i].is_primitive() ? "," : ", ";
+      emit(out, v[i], indent);
+    }
+    out += ']';
+  } else {
+    out += v.dump();
+  }
+}
+}  // namespace
+
+std::string glEnumName(GLenum e) {
+  switch (e) {
+    case GL_NEAREST: return "GL_NEAREST";
+    case GL_LINEAR: return "GL_LINEAR";
+    case GL_NEAREST_MIPMAP_NEAREST: return "GL_NEAREST_MIPMAP_NEAREST";
+    case GL_LINEAR_MIPMAP_NEAREST: return "GL_LINEAR_MIPMAP_NEAREST";
+    case GL_NEAREST_MIPMAP_LINEAR: return "GL_NEAREST_MIPMAP_LINEAR";
+    case GL_LINEAR_MIPMAP_LINEAR: return "GL_LINEAR_MIPMAP_LINEAR";
+    case GL_REPEAT: return "GL_REPEAT";
+    case GL_MIRRORED_REPEAT: return "GL_MIRRORED_REPEAT";
+    case GL_CLAMP_TO_EDGE: return "GL_CLAMP_TO_EDGE";
+    case GL_CLAMP_TO_BORDER: return "GL_CLAMP_TO_BORDER";
+    case GL_CLAMP: return "GL_CLAMP";
+    case GL_ADD: return "GL_ADD";
+    case GL_REPLACE: return "GL_REPLACE";
+    case GL_MODULATE: return "GL_MODULATE";
+    case GL_DECAL: return "GL_DECAL";
+    case GL_BLEND: return "GL_BLEND";
+    case GL_ZERO: return "GL_ZERO";
+    case GL_ONE: return "GL_ONE";
+    case GL_SRC_ALPHA: return "GL_SRC_ALPHA";
+    case GL_ONE_MINUS_SRC_ALPHA: return "GL_ONE_MINUS_SRC_ALPHA";
+    case GL_LESS: return "GL_LESS";
+    case GL_SMOOTH: return "GL_SMOOTH";
+    default: {
+      char b[16];
+      std::snprintf(b, sizeof b, "0x%04X", e);
+      return b;
+    }
+  }
+}
+
+std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
+  Json d;
+  d["figure"] = info.figureId;
+  d["book_number"] = info.bookNumber;
+  d["caption"] = info.caption;
+  d["demo"] = info.demo;
+  d["command"] = info.command;
+  d["state"] = Json::object();
+  for (const auto& [k, v] : info.state) d["state"][k] = v;
+  d["measurements"] = Json::object();
+  for (const Measurement& m : info.measurements) d["measurements"][m.name] = num(m.value);
+  d["conventions"] =
+      "matrices column-major as glLoadMatrixf takes them; viewports in pixels from the top-left of the image; "
+      "texture row 0 is t = 0; vertex tex is (s,t,r,q)";
+  if (!info.renderer.empty()) d["renderer"] = info.renderer;
+  d["size"] = {f.width, f.height};
+  d["fixed_state"] = {
+      {"blend_func", {glEnumName(FixedState::blendSrc), glEnumName(FixedState::blendDst),
+                      glEnumName(FixedState::blendSrcAlpha), glEnumName(FixedState::blendDstAlpha)}},
+      {"depth_func", glEnumName(FixedState::depthFunc)},
+      {"shade_model", glEnumName(FixedState::shadeModel)},
+      {"cull_face", FixedState::cullFace},
+      {"lighting", FixedState::lighting}};
+  d["clear_color"] = vec(f.clearColor);
+  d["perspective_correction_hint"] = f.perspectiveHint == GL_FASTEST  ? "GL_FASTEST"
+                                     : f.perspectiveHint == GL_NICEST ? "GL_NICEST"
+                                                                      : "GL_DONT_CARE";
+  Json textures = Json::array();
+  for (const TextureDesc& t : f.textures) {
+    Json params = Json::object();
+    for (const auto& [k, v] : t.params) params[k] = v;
+    Json mips = t.mipmaps ? Json(t.mipLevels ? "explicit" : t.linearLightMips ? "box_linear_light" : "box_2x2") : Json(false);
+    textures.push_back({{"name", t.name},
+                        {"params", params},
+                        {"width", t.image ? t.image->width : 0},
+                        {"height", t.image ? t.image->height : 0},
+                        {"mipmaps", mips},
+                        {"min_filter", glEnumName(t.minFilter)},
+                        {"mag_filter", glEnumName(t.magFilter)},
+                        {"wrap_s", glEnumName(t.wrapS)},
+                        {"wrap_t", glEnumName(t.wrapT)},
+                        {"border", vec(t.border)},
+                        {"max_anisotropy", num(t.maxAnisotropy)},
+                        {"lod_bias", num(t.lodBias)}});
+  }
+  d["textures"] = textures;
+  Json programs = Json::array();
+  for (const auto& [name, prog] : f.programs) programs.push_back({{"name", name}, {"source", prog.file}});
+  d["programs"] = programs;
+  Json panels = Json::array();
+  for (const Panel& p : f.panels) {
+    Json batches = Json::array();
+    for (const Batch& b : p.batches) {
+      Json uniforms = Json::object();
+      for (const Uniform& u : b.uniforms) uniforms[u.name] = vec(u.value);
+      Json vertices = Json::array();
+      for (const Vertex& x : b.vertices) {
+        Json v = {{"pos", vec(x.pos)}, {"tex", vec(x.tex)}, {"color", vec(x.color)}};
+        if (b.colorSum) v["secondary"] = vec(x.secondary);
+        vertices.push_back(v);
+      }
+      Json bj = {{"role", b.role},
+                 {"primitive", primName(b.prim)},
+                 {"texture", b.texture},
+                 {"tex_env", glEnumName(b.texEnv)},
+                 {"program", b.program},
+                 {"uniforms", uniforms},
+                 {"line_width", num(b.lineWidth)},
+                 {"point_size", num(b.pointSize)},
+                 {"blend", b.blend}};
+      // Written only when they matter, so sidecars of batches without them
+      // read exactly as before: the environment colour (GL_BLEND reads it),
+      // the texture matrix (not the identity), the colour sum.
+      if (b.texEnv == GL_BLEND || b.envColor != glm::vec4(0.0f)) bj["tex_env_color"] = vec(b.envColor);
+      if (b.textureMatrix != glm::mat4(1.0f)) bj["texture_matrix"] = mat(b.textureMatrix);
+      if (b.colorSum) bj["color_sum"] = true;
+      bj["vertices"] = vertices;
+      batches.push_back(bj);
+    }
+    panels.push_back({{"id", p.id},
+                      {"viewport", {p.viewport.x, p.viewport.y, p.viewport.w, p.viewport.h}},
+                      {"depth_test", p.depthTest},
+                      {"clear", p.clear},
+                      {"clear_color", vec(p.clearColor)},
+                      {"projection", mat(p.projection)},
+                      {"modelview", mat(p.modelview)},
+                      {"batches", batches}});
+  }
+  d["panels"] = panels;
+  Json labels = Json::array();
+  for (const Label& l : f.labels)
+    labels.push_back({{"x", num(l.x)},
+                      {"y", num(l.y)},
+                      {"text", l.text},
+                      {"scale", l.scale},
+                      {"align", l.align == Align::Left ? "left" : l.align == Align::Center ? "center" : "right"},
+                      {"color", vec(l.color)},
+                      {"background", vec(l.background)}});
+  d["labels"] = labels;
+
+  std::string out = "{";
+  bool first = true;
+  for (const auto& [k, v] : d.items()) {
+    out += first ? "\n  " : ",\n  ";
+    first = false;
+    out += Json(k).dump() + ": ";
+    if (listPerLine(k) && v.is_array() && !v.empty()) {
+      out += '[';
+      for (size_t i = 0; i < v.size(); ++i) {
+        out += i ? ",\n    " : "\n    ";
+        emit(out, v[i], "    ");
+      }
+      out += "\n  ]";
+    } else {
+      emit(out, v, "  ");
+    }
+  }
+  return out + "\n}\n";
+}
+}  // namespace ts

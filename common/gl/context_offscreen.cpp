@@ -1,0 +1,275 @@
+// OSMesa and EGL-surfaceless contexts.  Both libraries are opened with
+// dlopen(), not linked, so that (a) a machine without OSMesa (Mesa >= 25.1)
+// still runs every program through EGL, and (b) no GL entry point binds at
+// link time (see gl.hpp for why).
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <dlfcn.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "common/gl/context.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/gl.hpp"
+
+namespace ts {
+Backend parseBackend(const std::string& name) {
+  if (name == "auto") return Backend::Auto;
+  if (name == "osmesa") return Backend::OSMesa;
+  if (name == "egl") return Backend::EGL;
+  if (name == "window") return Backend::Window;
+  throw Error("unknown backend '" + name + "' (expected osmesa, egl, window or auto)");
+}
+
+const char* backendName(Backend b) {
+  switch (b) {
+    case Backend::Auto: return "auto";
+    case Backend::OSMesa: return "osmesa";
+    case Backend::EGL: return "egl";
+    case Backend::Window: return "window";
+  }
+  return "?";
+}
+
+Image Context::readPixels() const {
+  Image img(width_, height_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
+  gl::check("glReadPixels");
+  img.flipVertical();  // GL's row 0 is the bottom one
+  return img;
+}
+
+std::string Context::describe() const {
+  return std::string(backendName(backend())) + " | " + gl::versionString() + " | " + gl::rendererString();
+}
+
+namespace {
+// TS_HIDE_GL_LIBS=osmesa,egl (tests): behave as if that library were not
+// installed, so the fallback and the "install these packages" paths run on
+// a machine that has everything.
+bool hidden(const char* lib) {
+  const char* v = std::getenv("TS_HIDE_GL_LIBS");
+  if (!v) return false;
+  std::string list = std::string(",") + v + ",";
+  return list.find(std::string(",") + lib + ",") != std::string::npos;
+}
+
+// ---------------------------------------------------------------- OSMesa
+// Values from GL/osmesa.h (stable ABI); spelled out so that the suite builds
+// where the header is gone too.
+constexpr int kOsmesaFormat = 0x22, kOsmesaDepthBits = 0x30, kOsmesaStencilBits = 0x31,
+              kOsmesaAccumBits = 0x32, kOsmesaProfile = 0x33, kOsmesaCompatProfile = 0x35;
+using OSMesaContextHandle = void*;
+using PfnCreateAttribs = OSMesaContextHandle (*)(const int*, OSMesaContextHandle);
+using PfnDestroy = void (*)(OSMesaContextHandle);
+using PfnMakeCurrent = unsigned char (*)(OSMesaContextHandle, void*, GLenum, GLsizei, GLsizei);
+using PfnGetProc = void* (*)(const char*);
+
+PfnGetProc g_osmesaGetProc = nullptr;
+void* osmesaProc(const char* name) { return g_osmesaGetProc(name); }
+
+class OSMesaContext final : public Context {
+ public:
+  static std::unique_ptr<Context> create(const ContextOptions& o, std::string* why) {
+    void* lib = hidden("osmesa") ? nullptr : dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
+    if (!lib && !hidden("osmesa")) lib = dlopen("libOSMesa.so", RTLD_NOW | RTLD_LOCAL);
+    if (!lib) {
+      *why = hidden("osmesa") ? "libOSMesa.so.8 hidden by TS_HIDE_GL_LIBS" : "libOSMesa.so.8 not found";
+      return nullptr;
+    }
+    auto create = reinterpret_cast<PfnCreateAttribs>(dlsym(lib, "OSMesaCreateContextAttribs"));
+    auto destroy = reinterpret_cast<PfnDestroy>(dlsym(lib, "OSMesaDestroyContext"));
+    auto make = reinterpret_cast<PfnMakeCurrent>(dlsym(lib, "OSMesaMakeCurrent"));
+    auto getProc = reinterpret_cast<PfnGetProc>(dlsym(lib, "OSMesaGetProcAddress"));
+    if (!create || !destroy || !make || !getProc) {
+      *why = "libOSMesa lacks OSMesaCreateContextAttribs";
+      return nullptr;
+    }
+    const int attribs[] = {kOsmesaFormat, GL_RGBA, kOsmesaDepthBits, 24, kOsmesaStencilBits, 8,
+                           kOsmesaAccumBits, o.accumBuffer ? 16 : 0, kOsmesaProfile,
+                           kOsmesaCompatProfile, 0};
+    OSMesaContextHandle ctx = create(attribs, nullptr);
+    if (!ctx) {
+      *why = "OSMesaCreateContextAttribs failed";
+      return nullptr;
+    }
+    std::unique_ptr<OSMesaContext> c(new OSMesaContext(ctx, destroy, make, o.accumBuffer));
+    c->resize(o.width, o.height);
+    g_osmesaGetProc = getProc;
+    std::string missing;
+    if (!gl::load(osmesaProc, &missing)) {
+      *why = "OSMesa context lacks " + missing;
+      return nullptr;
+    }
+    gl::enableDebugOutput();
+    return c;
+  }
+  ~OSMesaContext() override { destroy_(ctx_); }
+  Backend backend() const override { return Backend::OSMesa; }
+  bool hasAccumBuffer() const override { return accum_; }
+  void resize(int w, int h) override {
+    buffer_.assign(size_t(w) * size_t(h) * 4, 0);
+    if (!make_(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, w, h))
+      throw Error("OSMesaMakeCurrent failed for " + std::to_string(w) + "x" + std::to_string(h), kExitFailure);
+    width_ = w;
+    height_ = h;
+  }
+
+ private:
+  OSMesaContext(OSMesaContextHandle c, PfnDestroy d, PfnMakeCurrent m, bool accum)
+      : ctx_(c), destroy_(d), make_(m), accum_(accum) {}
+  OSMesaContextHandle ctx_;
+  PfnDestroy destroy_;
+  PfnMakeCurrent make_;
+  bool accum_;
+  std::vector<uint8_t> buffer_;
+};
+
+// ---------------------------------------------------------------- EGL
+struct EglApi {
+  PFNEGLGETPROCADDRESSPROC getProcAddress = nullptr;
+  PFNEGLINITIALIZEPROC initialize = nullptr;
+  PFNEGLTERMINATEPROC terminate = nullptr;
+  PFNEGLBINDAPIPROC bindAPI = nullptr;
+  PFNEGLCREATECONTEXTPROC createContext = nullptr;
+  PFNEGLDESTROYCONTEXTPROC destroyContext = nullptr;
+  PFNEGLMAKECURRENTPROC makeCurrent = nullptr;
+  PFNEGLQUERYSTRINGPROC queryString = nullptr;
+  PFNEGLGETPLATFORMDISPLAYEXTPROC getPlatformDisplay = nullptr;
+  PFNEGLQUERYDEVICESEXTPROC queryDevices = nullptr;
+};
+EglApi g_egl;
+void* eglProc(const char* name) { return reinterpret_cast<void*>(g_egl.getProcAddress(name)); }
+
+class EglContext final : public Context {
+ public:
+  static std::unique_ptr<Context> create(const ContextOptions& o, std::string* why) {
+    void* lib = hidden("egl") ? nullptr : dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
+    if (!lib) {
+      *why = hidden("egl") ? "libEGL.so.1 hidden by TS_HIDE_GL_LIBS" : "libEGL.so.1 not found";
+      return nullptr;
+    }
+    EglApi& e = g_egl;
+    e.getProcAddress = reinterpret_cast<PFNEGLGETPROCADDRESSPROC>(dlsym(lib, "eglGetProcAddress"));
+    if (!e.getProcAddress) {
+      *why = "libEGL lacks eglGetProcAddress";
+      return nullptr;
+    }
+#define TM_EGL(field, name) e.field = reinterpret_cast<decltype(e.field)>(dlsym(lib, name));
+    TM_EGL(initialize, "eglInitialize") TM_EGL(terminate, "eglTerminate") TM_EGL(bindAPI, "eglBindAPI")
+    TM_EGL(createContext, "eglCreateContext") TM_EGL(destroyContext, "eglDestroyContext")
+    TM_EGL(makeCurrent, "eglMakeCurrent") TM_EGL(queryString, "eglQueryString")
+#undef TM_EGL
+    e.getPlatformDisplay =
+        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(e.getProcAddress("eglGetPlatformDisplayEXT"));
+    e.queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(e.getProcAddress("eglQueryDevicesEXT"));
+    if (!e.initialize || !e.createContext || !e.makeCurrent || !e.getPlatformDisplay) {
+      *why = "libEGL lacks EGL_EXT_platform_base";
+      return nullptr;
+    }
+    // Surfaceless first (no device node needed); the device platform second.
+    EGLDisplay dpy = e.getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLint major = 0, minor = 0;
+    if (dpy == EGL_NO_DISPLAY || !e.initialize(dpy, &major, &minor)) {
+      dpy = EGL_NO_DISPLAY;
+      EGLDeviceEXT devices[4];
+      EGLint n = 0;
+      if (e.queryDevices && e.queryDevices(4, devices, &n) && n > 0) {
+        dpy = e.getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[0], nullptr);
+        if (dpy != EGL_NO_DISPLAY && !e.initialize(dpy, &major, &minor)) dpy = EGL_NO_DISPLAY;
+      }
+    }
+    if (dpy == EGL_NO_DISPLAY) {
+      *why = "no EGL surfaceless or device display";
+      return nullptr;
+    }
+    if (!e.bindAPI(EGL_OPENGL_API)) {
+      *why = "EGL cannot bind desktop OpenGL";
+      return nullptr;
+    }
+    const EGLint attribs[] = {EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
+                              EGL_NONE};
+    EGLContext ctx = e.createContext(dpy, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
+    if (ctx == EGL_NO_CONTEXT || !e.makeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
+      *why = "eglCreateContext (compatibility profile, no config) failed";
+      return nullptr;
+    }
+    std::string missing;
+    if (!gl::load(eglProc, &missing) || !gl::p_glGenFramebuffers) {
+      *why = "EGL context lacks " + (missing.empty() ? std::string("framebuffer objects") : missing);
+      return nullptr;
+    }
+    gl::enableDebugOutput();
+    std::unique_ptr<EglContext> c(new EglContext(dpy, ctx));
+    c->resize(o.width, o.height);
+    return c;
+  }
+  ~EglContext() override {
+    release();
+    g_egl.makeCurrent(dpy_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    g_egl.destroyContext(dpy_, ctx_);
+  }
+  Backend backend() const override { return Backend::EGL; }
+  void resize(int w, int h) override {
+    release();
+    glGenFramebuffers(1, &fbo_);
+    glGenRenderbuffers(2, rb_);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb_[0]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb_[1]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb_[0]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb_[1]);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw Error("EGL framebuffer " + std::to_string(w) + "x" + std::to_string(h) + " is incomplete",
+                  kExitFailure);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl::check("creating the EGL framebuffer");
+    width_ = w;
+    height_ = h;
+  }
+  void bindTarget() override { glBindFramebuffer(GL_FRAMEBUFFER, fbo_); }
+
+ private:
+  EglContext(EGLDisplay d, EGLContext c) : dpy_(d), ctx_(c) {}
+  void release() {
+    if (fbo_) glDeleteFramebuffers(1, &fbo_);
+    if (rb_[0]) glDeleteRenderbuffers(2, rb_);
+    fbo_ = 0;
+    rb_[0] = rb_[1] = 0;
+  }
+  EGLDisplay dpy_;
+  EGLContext ctx_;
+  GLuint fbo_ = 0, rb_[2] = {0, 0};
+};
+}  // namespace
+
+std::unique_ptr<Context> createOffscreenContext(Backend backend, const ContextOptions& opts) {
+  std::string whyOsmesa, whyEgl;
+  if (backend == Backend::OSMesa || backend == Backend::Auto) {
+    if (auto c = OSMesaContext::create(opts, &whyOsmesa)) return c;
+    if (backend == Backend::OSMesa)
+      throw Error("OSMesa backend unavailable (" + whyOsmesa +
+                  "); install Debian's libosmesa6 or use --backend egl");
+  }
+  if (backend == Backend::EGL || backend == Backend::Auto) {
+    if (auto c = EglContext::create(opts, &whyEgl)) {
+      // The note only when the fallback worked: a failure is one line.
+      if (backend == Backend::Auto && opts.verbose)
+        note("note: " + whyOsmesa + "; using the EGL backend");
+      return c;
+    }
+    if (backend == Backend::EGL)
+      throw Error("EGL backend unavailable (" + whyEgl + "); install Debian's libegl1 libegl-mesa0 libgl1-mesa-dri");
+    throw Error("no offscreen OpenGL context: OSMesa: " + whyOsmesa + "; EGL: " + whyEgl +
+                "; install Debian's libosmesa6, or libegl1 libegl-mesa0 libgl1-mesa-dri");
+  }
+  throw Error("backend 'window' is not an offscreen backend");
+}
+}  // namespace ts

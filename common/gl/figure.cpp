@@ -1,0 +1,69 @@
+#include "common/gl/figure.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "common/gl/context.hpp"
+#include "common/core/error.hpp"
+#include "common/gl/gl_listing.hpp"
+#include "common/gl/render.hpp"
+
+namespace ts {
+Rendered renderScene(Scene& scene, Renderer& r, int width, int height, bool record) {
+  Context& ctx = r.context();
+  Rendered out;
+  out.measurements = scene.measure(r);  // may resize the target for itself
+  if (ctx.width() != width || ctx.height() != height) ctx.resize(width, height);
+  out.frame = scene.build(width, height, out.measurements);
+  if (record) out.calls = recordPicture(r, out.frame);  // the same picture, drawn once more
+  out.image = r.render(out.frame);
+  return out;
+}
+
+std::string glListingFile(const Rendered& got, const std::string& state) {
+  return listingText(listing(pictureSections(got.frame, got.calls), nullptr, 3),
+                     "The OpenGL calls that draw this picture, recorded as they were made by\n"
+                     "       " + state + " --gl-listing FILE\n"
+                     "   Object names are numbered in order of creation; queries (glGet*) are left out;\n"
+                     "   each glBegin shows its first 3 vertices. Every line is C.");
+}
+
+void checkWritable(const std::string& path) {
+  if (path.empty()) throw Error("empty output path");
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) throw Error("cannot write " + path + ": it is a directory");
+  std::string probe = path + ".tmp-" + std::to_string(::getpid());
+  std::FILE* f = std::fopen(probe.c_str(), "wb");
+  if (!f) throw Error("cannot write " + path + ": " + std::strerror(errno));
+  std::fclose(f);
+  std::remove(probe.c_str());
+}
+
+// Single-quotes an argument for a POSIX shell when it needs it.
+static std::string shellQuote(const std::string& a) {
+  if (!a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_=./,:+") ==
+                        std::string::npos)
+    return a;
+  std::string q = "'";
+  for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+std::string stateCommand(const std::string& demo, int w, int h, const std::vector<std::string>& flags) {
+  std::string c = "build/bin/" + demo + " --size " + std::to_string(w) + "x" + std::to_string(h);
+  for (const auto& f : flags) c += " " + shellQuote(f);
+  return c;
+}
+
+std::string figureCommand(const std::string& demo, const std::string& png, int w, int h,
+                          const std::vector<std::string>& flags) {
+  std::string c = "build/bin/" + demo + " --png " + shellQuote(png) + " --size " + std::to_string(w) + "x" +
+                  std::to_string(h);
+  for (const auto& f : flags) c += " " + shellQuote(f);
+  return c;
+}
+}  // namespace ts

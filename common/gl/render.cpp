@@ -1,0 +1,472 @@
+#include "common/gl/render.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "common/gl/context.hpp"
+#include "common/core/error.hpp"
+#include "common/core/text.hpp"
+#include "common/core/textures.hpp"
+
+namespace ts {
+Renderer::~Renderer() {
+  attachments_.clear();  // their destructors delete their objects
+  release();
+}
+
+int Renderer::pictureWidth() { return pictureW_ > 0 ? pictureW_ : ctx_.width(); }
+int Renderer::pictureHeight() { return pictureH_ > 0 ? pictureH_ : ctx_.height(); }
+
+void Renderer::release() {
+  for (auto& [k, id] : textures_) glDeleteTextures(1, &id);
+  for (auto& [k, id] : programs_) glDeleteProgram(id);
+  if (fontTexture_) glDeleteTextures(1, &fontTexture_);
+  textures_.clear();
+  programs_.clear();
+  fontTexture_ = 0;
+}
+
+static bool powerOfTwo(int v) { return v > 0 && (v & (v - 1)) == 0; }
+static int nextPowerOfTwo(int v) {
+  int p = 1;
+  while (p < v) p *= 2;
+  return p;
+}
+
+static void upload(const Image& img, int level) {
+  glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               img.pixels.data());
+}
+
+GLuint Renderer::texture(const TextureDesc& t) {
+  auto it = textures_.find(t.key());
+  GLuint id = 0;
+  if (t.glTexture) {
+    id = t.glTexture;
+    glBindTexture(GL_TEXTURE_2D, id);
+  } else if (it != textures_.end()) {
+    id = it->second;
+    glBindTexture(GL_TEXTURE_2D, id);
+  } else {
+    if (!t.image) throw Error("texture '" + t.name + "' has no image", kExitFailure);
+    // Sizes the context cannot take are refused with the reason, not left to
+    // a GL error (or, worse, an incomplete texture that samples black).
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (maxSize > 0 && (t.image->width > maxSize || t.image->height > maxSize))
+      throw Error("texture '" + t.name + "' is " + std::to_string(t.image->width) + "x" +
+                  std::to_string(t.image->height) + ", over this context's GL_MAX_TEXTURE_SIZE " +
+                  std::to_string(maxSize));
+    std::shared_ptr<const Image> level0 = t.image;
+    // TS_GL_NO_NPOT=1 takes this path on any context: the tests' way to run
+    // it on real GL, where every context here has NPOT textures.
+    const char* noNpot = std::getenv("TS_GL_NO_NPOT");
+    bool npot = !(noNpot && *noNpot && *noNpot != '0') &&
+                (gl::version() >= 20 || gl::hasExtension("GL_ARB_texture_non_power_of_two"));
+    if ((!powerOfTwo(level0->width) || !powerOfTwo(level0->height)) && !npot) {
+      // GL 1.x without NPOT support: resample to powers of two, and say so.
+      int w = nextPowerOfTwo(level0->width), h = nextPowerOfTwo(level0->height);
+      note("note: texture '" + t.name + "' " + std::to_string(level0->width) + "x" + std::to_string(level0->height) +
+           " resized bilinearly to " + std::to_string(w) + "x" + std::to_string(h) +
+           " (the context lacks non-power-of-two textures)");
+      level0 = std::make_shared<Image>(resizeBilinear(*level0, w, h));
+    }
+    glGenTextures(1, &id);
+    glBindTexture(GL_TEXTURE_2D, id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (t.mipmaps) {
+      // The book's chain, built on the CPU so it is the same on every driver.
+      std::vector<Image> chain = t.mipLevels ? *t.mipLevels : buildMipChain(*level0, t.linearLightMips);
+      for (size_t k = 0; k < chain.size(); ++k) upload(chain[k], int(k));
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, int(chain.size()) - 1);
+    } else {
+      upload(*level0, 0);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    }
+    gl::check(("uploading texture " + t.key()).c_str());
+    textures_[t.key()] = id;
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(t.minFilter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GLint(t.magFilter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(t.wrapS));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(t.wrapT));
+  glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, glm::value_ptr(t.border));
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, t.lodBias);
+  if (gl::hasExtension("GL_EXT_texture_filter_anisotropic") || gl::version() >= 46)
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, t.maxAnisotropy);
+  gl::check(("setting the parameters of texture " + t.key()).c_str());
+  return id;
+}
+
+// The 1-based line of `file` where the shader text `src` begins (it is a raw
+// string literal there), or 0 when the file cannot be read or does not hold
+// the text.  Looked up only to word an error message.
+static int sourceLine(const std::string& file, const std::string& src) {
+  if (file.empty() || src.empty()) return 0;
+  std::vector<std::string> candidates{file};
+#ifdef TM_SOURCE_DIR
+  candidates.push_back(std::string(TM_SOURCE_DIR) + "/" + file);
+#endif
+  for (const std::string& path : candidates) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) continue;
+    std::string text;
+    char buf[4096];
+    size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0 && text.size() < (size_t(8) << 20)) text.append(buf, n);
+    std::fclose(f);
+    size_t at = text.find(src);
+    if (at == std::string::npos) continue;
+    return 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
+  }
+  return 0;
+}
+
+// A GL info log as one line: each "0:LINE(COL): ..." message (Mesa's form;
+// "0(LINE) : ..." is also understood) becomes "file:LINE':COL: ..." with
+// LINE' counted in the C++ file holding the shader, when that is known.
+std::string formatShaderLog(const std::string& log, const std::string& file, int firstLine, const char* stage) {
+  std::string out;
+  size_t pos = 0;
+  while (pos < log.size()) {
+    size_t end = log.find('\n', pos);
+    if (end == std::string::npos) end = log.size();
+    std::string line = log.substr(pos, end - pos);
+    pos = end + 1;
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
+    if (line.empty()) continue;
+    int src = 0, ln = 0, col = 0, used = 0;
+    std::string where;
+    if (std::sscanf(line.c_str(), "%d:%d(%d)%n", &src, &ln, &col, &used) == 3 && used > 0) {
+    } else if (std::sscanf(line.c_str(), "%d(%d)%n", &src, &ln, &used) == 2 && used > 0) {
+      col = 0;
+    } else {
+      used = 0;
+      ln = 0;
+    }
+    std::string msg = line.substr(size_t(used));
+    while (!msg.empty() && (msg[0] == ':' || msg[0] == ' ')) msg.erase(0, 1);
+    if (ln > 0 && firstLine > 0)
+      where = file + ":" + std::to_string(firstLine + ln - 1) + (col > 0 ? ":" + std::to_string(col) : "");
+    else if (ln > 0)
+      where = file + ": " + stage + " shader line " + std::to_string(ln);
+    else
+      where = file;
+    if (!out.empty()) out += "; ";
+    out += where + ": " + msg;
+  }
+  return out.empty() ? file + ": (the driver gave no log)" : out;
+}
+
+static GLuint compile(GLenum type, const Program& p, const std::string& key) {
+  const std::string& src = type == GL_VERTEX_SHADER ? p.vertex : p.fragment;
+  const char* stage = type == GL_VERTEX_SHADER ? "vertex" : "fragment";
+  GLuint s = glCreateShader(type);
+  const char* text = src.c_str();
+  glShaderSource(s, 1, &text, nullptr);
+  glCompileShader(s);
+  GLint ok = 0;
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint len = 0;
+    glGetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
+    std::string log(size_t(std::clamp(len, 1, 1 << 16)), '\0');
+    glGetShaderInfoLog(s, GLsizei(log.size()), nullptr, log.data());
+    log.resize(std::strlen(log.c_str()));
+    glDeleteShader(s);
+    throw Error(std::string(stage) + " shader of program '" + key + "' does not compile: " +
+                    formatShaderLog(log, p.file, sourceLine(p.file, src), stage),
+                kExitFailure);
+  }
+  gl::check((std::string("compiling the ") + stage + " shader of program " + key).c_str());
+  return s;
+}
+
+GLuint Renderer::program(const std::string& key, const Program& p) {
+  auto it = programs_.find(key);
+  if (it != programs_.end()) return it->second;
+  GLuint vs = compile(GL_VERTEX_SHADER, p, key), fs = 0;
+  try {
+    fs = compile(GL_FRAGMENT_SHADER, p, key);
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
+  GLuint prog = glCreateProgram();
+  glAttachShader(prog, vs);
+  glAttachShader(prog, fs);
+  glLinkProgram(prog);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = 0;
+  glGetProgramiv(prog, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint len = 0;
+    glGetProgramiv(prog, GL_INFO_LOG_LENGTH, &len);
+    std::string log(size_t(std::clamp(len, 1, 1 << 16)), '\0');
+    glGetProgramInfoLog(prog, GLsizei(log.size()), nullptr, log.data());
+    log.resize(std::strlen(log.c_str()));
+    glDeleteProgram(prog);
+    throw Error("program '" + key + "' does not link: " + formatShaderLog(log, p.file, 0, "linked"), kExitFailure);
+  }
+  gl::check(("linking program " + key).c_str());
+  programs_[key] = prog;
+  return prog;
+}
+
+static GLenum glPrim(Prim p) {
+  switch (p) {
+    case Prim::Triangles: return GL_TRIANGLES;
+    case Prim::Lines: return GL_LINES;
+    case Prim::LineStrip: return GL_LINE_STRIP;
+    case Prim::LineLoop: return GL_LINE_LOOP;
+    case Prim::Points: return GL_POINTS;
+  }
+  return GL_TRIANGLES;
+}
+
+void Renderer::draw(const Frame& f, bool labels) {
+  if (overrideTarget_) {
+    glBindFramebuffer(GL_FRAMEBUFFER, overrideTarget_);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  } else {
+    if (f.width > ctx_.width() || f.height > ctx_.height())
+      throw Error("frame " + std::to_string(f.width) + "x" + std::to_string(f.height) + " is larger than the target",
+                  kExitFailure);
+    ctx_.bindTarget();
+  }
+  glDisable(GL_SCISSOR_TEST);
+  glViewport(0, 0, f.width, f.height);
+  glClearColor(f.clearColor.r, f.clearColor.g, f.clearColor.b, f.clearColor.a);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  static_assert(!FixedState::lighting && !FixedState::cullFace, "the sidecar says what is drawn with");
+  glDisable(GL_LIGHTING);
+  glDisable(GL_CULL_FACE);
+  glShadeModel(FixedState::shadeModel);
+  glHint(GL_PERSPECTIVE_CORRECTION_HINT, f.perspectiveHint);
+  for (const Panel& p : f.panels) {
+    // The frame's rows count from the top; GL's from the bottom.
+    int glY = f.height - p.viewport.y - p.viewport.h;
+    glViewport(p.viewport.x, glY, p.viewport.w, p.viewport.h);
+    glScissor(p.viewport.x, glY, p.viewport.w, p.viewport.h);
+    glEnable(GL_SCISSOR_TEST);
+    if (p.clear) {
+      glClearColor(p.clearColor.r, p.clearColor.g, p.clearColor.b, p.clearColor.a);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixf(glm::value_ptr(p.projection));
+    glMatrixMode(GL_MODELVIEW);
+    glLoadMatrixf(glm::value_ptr(p.modelview));
+    if (p.depthTest) {
+      glEnable(GL_DEPTH_TEST);
+      glDepthFunc(FixedState::depthFunc);
+    } else {
+      glDisable(GL_DEPTH_TEST);
+    }
+    for (const Batch& b : p.batches) {
+      if (b.texture >= 0) {
+        glEnable(GL_TEXTURE_2D);
+        texture(f.textures.at(size_t(b.texture)));
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(b.texEnv));
+        // The constant colour only GL_BLEND reads: set where it is used, so
+        // every other batch's listing stays as it was.
+        if (b.texEnv == GL_BLEND) glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, glm::value_ptr(b.envColor));
+      } else {
+        glDisable(GL_TEXTURE_2D);
+      }
+      // The texture matrix, for this batch only: loaded here, back to the
+      // identity after glEnd (only when it is not the identity, so the other
+      // figures' calls are unchanged).
+      const bool texMatrix = b.textureMatrix != glm::mat4(1.0f);
+      if (texMatrix) {
+        glMatrixMode(GL_TEXTURE);
+        glLoadMatrixf(glm::value_ptr(b.textureMatrix));
+        glMatrixMode(GL_MODELVIEW);
+      }
+      // GL_SEPARATE_SPECULAR_COLOR's second half: the secondary colour is
+      // added after texturing (GL 1.4 colour sum; lighting stays off here).
+      if (b.colorSum) glEnable(GL_COLOR_SUM);
+      GLuint prog = 0;
+      if (!b.program.empty()) {
+        const Program* src = nullptr;
+        for (const auto& [k, pr] : f.programs)
+          if (k == b.program) src = &pr;
+        if (!src) throw Error("batch uses unknown program '" + b.program + "'", kExitFailure);
+        prog = program(b.program, *src);
+        glUseProgram(prog);
+        GLint tex = glGetUniformLocation(prog, "tex");
+        if (tex >= 0) glUniform1i(tex, 0);
+        for (const Uniform& u : b.uniforms) {
+          GLint loc = glGetUniformLocation(prog, u.name.c_str());
+          if (loc >= 0) glUniform4f(loc, u.value.x, u.value.y, u.value.z, u.value.w);
+        }
+      }
+      if (b.blend) {
+        glEnable(GL_BLEND);
+        // Colour blends over what is there; alpha stays the clear's (opaque):
+        // a figure must not let the page show through where it blends.
+        glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
+      } else {
+        glDisable(GL_BLEND);
+      }
+      glLineWidth(b.lineWidth);
+      glPointSize(b.pointSize);
+      // The book's way: one glTexCoord per glVertex.  (s, t, r, q) are all
+      // sent; q != 1 gives projective texture mapping.
+      glBegin(glPrim(b.prim));
+      for (const Vertex& v : b.vertices) {
+        glColor4f(v.color.r, v.color.g, v.color.b, v.color.a);
+        if (b.colorSum) glSecondaryColor3f(v.secondary.r, v.secondary.g, v.secondary.b);
+        glTexCoord4f(v.tex.x, v.tex.y, v.tex.z, v.tex.w);
+        glVertex3f(v.pos.x, v.pos.y, v.pos.z);
+      }
+      glEnd();
+      if (b.colorSum) glDisable(GL_COLOR_SUM);
+      if (texMatrix) {
+        glMatrixMode(GL_TEXTURE);
+        glLoadIdentity();
+        glMatrixMode(GL_MODELVIEW);
+      }
+      if (prog) glUseProgram(0);
+    }
+    gl::check(("drawing panel " + p.id).c_str());
+  }
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_TEXTURE_2D);
+  if (labels) drawLabels(f);
+}
+
+void Renderer::drawLabels(const Frame& f) {
+  if (f.labels.empty()) return;
+  const Image& atlas = text::atlas();
+  if (!fontTexture_) {
+    glGenTextures(1, &fontTexture_);
+    glBindTexture(GL_TEXTURE_2D, fontTexture_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    upload(atlas, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  }
+  glViewport(0, 0, f.width, f.height);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, f.width, f.height, 0, -1, 1);  // pixels, y down, like the PNG
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);  // alpha stays opaque
+  for (const Label& l : f.labels) {
+    float w = text::width(l.text, l.scale), h = text::height(l.scale);
+    float x = l.align == Align::Left ? l.x : l.align == Align::Center ? l.x - w / 2 : l.x - w;
+    x = float(int(x));
+    float y = float(int(l.y));
+    if (l.background.a > 0) {
+      glDisable(GL_TEXTURE_2D);
+      glColor4f(l.background.r, l.background.g, l.background.b, l.background.a);
+      float pad = 3.0f * float(l.scale);
+      glBegin(GL_QUADS);
+      glVertex2f(x - pad, y - pad);
+      glVertex2f(x + w + pad, y - pad);
+      glVertex2f(x + w + pad, y + h + pad);
+      glVertex2f(x - pad, y + h + pad);
+      glEnd();
+    }
+    glEnable(GL_TEXTURE_2D);
+    glBindTexture(GL_TEXTURE_2D, fontTexture_);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glColor4f(l.color.r, l.color.g, l.color.b, l.color.a);
+    glBegin(GL_QUADS);
+    float pen = x;
+    text::Glyph g;
+    for (char c : l.text) {
+      if (!text::glyph(c, l.scale, &g)) continue;
+      glTexCoord2f(g.u0, g.v0), glVertex2f(pen + g.x0, y + g.y0);
+      glTexCoord2f(g.u1, g.v0), glVertex2f(pen + g.x1, y + g.y0);
+      glTexCoord2f(g.u1, g.v1), glVertex2f(pen + g.x1, y + g.y1);
+      glTexCoord2f(g.u0, g.v1), glVertex2f(pen + g.x0, y + g.y1);
+      pen += g.advance;
+    }
+    glEnd();
+  }
+  glDisable(GL_TEXTURE_2D);
+  glDisable(GL_BLEND);
+  gl::check("drawing labels");
+}
+
+Image Renderer::offscreen(int w, int h, const char* what, const std::function<void(GLuint fbo)>& draw) {
+  if (!gl::p_glGenFramebuffers)
+    throw Error(std::string(what) + " needs framebuffer objects (GL 3.0)", kExitFailure);
+  GLint drawBuffer = 0, readBuffer = 0, boundFbo = 0;
+  glGetIntegerv(GL_DRAW_BUFFER, &drawBuffer);
+  glGetIntegerv(GL_READ_BUFFER, &readBuffer);
+  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &boundFbo);
+  GLuint fbo = 0, rb[2] = {0, 0};
+  glGenFramebuffers(1, &fbo);
+  glGenRenderbuffers(2, rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  Image img(w, h);
+  std::string failure;
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    failure = "the " + std::to_string(w) + "x" + std::to_string(h) + " framebuffer of " + what + " is incomplete";
+  } else {
+    try {
+      draw(fbo);
+    } catch (const Error& e) {
+      failure = e.what();
+    }
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
+    img.flipVertical();
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(boundFbo));
+  glDeleteFramebuffers(1, &fbo);
+  glDeleteRenderbuffers(2, rb);
+  glDrawBuffer(GLenum(drawBuffer));
+  glReadBuffer(GLenum(readBuffer));
+  if (!failure.empty()) throw Error(failure, kExitFailure);
+  gl::check(what);
+  return img;
+}
+
+Image Renderer::renderOffscreen(const Frame& f) {
+  return offscreen(f.width, f.height, "a measurement pass", [&](GLuint fbo) {
+    overrideTarget_ = fbo;  // draw() binds it instead of the context's target
+    try {
+      draw(f, false);
+    } catch (...) {
+      overrideTarget_ = 0;
+      throw;
+    }
+    overrideTarget_ = 0;
+  });
+}
+
+Image Renderer::render(const Frame& f, bool labels) {
+  draw(f, labels);
+  glFinish();
+  Image full = ctx_.readPixels();
+  if (full.width == f.width && full.height == f.height) return full;
+  // The target may be larger than the frame (a shared context): crop the
+  // bottom-left f.width x f.height, which is where GL drew.
+  Image out(f.width, f.height);
+  for (int y = 0; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x) out.set(x, y, full.at(x, full.height - f.height + y));
+  return out;
+}
+}  // namespace ts

@@ -1,0 +1,90 @@
+// common/gl/render.hpp — draws a Frame with OpenGL and measures what it drew.
+#pragma once
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <typeindex>
+#include <typeinfo>
+
+#include "common/core/frame.hpp"
+#include "common/gl/gl.hpp"
+#include "common/core/image.hpp"
+
+namespace ts {
+class Context;
+
+// A shader or program info log as one line, each message prefixed with
+// "file:line:col" counted in the C++ file that holds the shader source
+// (firstLine = the line where the source starts; 0 = unknown, then
+// "file: <stage> shader line N").  Used in compile and link errors.
+std::string formatShaderLog(const std::string& log, const std::string& file, int firstLine, const char* stage);
+
+class Renderer {
+ public:
+  explicit Renderer(Context& ctx) : ctx_(ctx) {}
+  // Deletes every GL object it owns, its attachments' too: destroy a
+  // Renderer while its context is still current (RAII: declare it after the
+  // context, or reset it before the context goes).
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Draws the whole frame into the context's current target.  The target
+  // must be at least frame.width x frame.height.  `labels` off leaves the
+  // text out (measurement passes).
+  void draw(const Frame& frame, bool labels = true);
+  // draw() and read back: the picture as the PNG will hold it.
+  Image render(const Frame& frame, bool labels = true);
+  // Draws into a private framebuffer object of the frame's size and reads it
+  // back: measurement passes get the same pixels whatever the window's size,
+  // and leave the window's own target untouched.
+  Image renderOffscreen(const Frame& frame);
+  // The one render target of the suite for a pass of one's own: a private
+  // framebuffer object of w x h (RGBA8 colour, 24-bit depth, 8-bit stencil),
+  // bound with its colour attachment as the draw buffer while `draw(fbo)`
+  // makes the GL calls, then read back (row 0 = top).  It saves and restores
+  // what it changes: the framebuffer binding, the draw and read buffers.
+  // `what` names the pass in errors.
+  Image offscreen(int w, int h, const char* what, const std::function<void(GLuint fbo)>& draw);
+  Context& context() { return ctx_; }
+  // The size the picture will be drawn at: the context's, unless a window
+  // lays the figure out in part of it beside its panels (a live view, which
+  // draws its picture inside measure(), draws at this size).
+  int pictureWidth();
+  int pictureHeight();
+  void setPictureSize(int w, int h) { pictureW_ = w, pictureH_ = h; }  // 0, 0: the context's
+  // The GL texture for a description (uploaded once per key, then cached;
+  // filters and wrap modes are set on every bind).
+  GLuint texture(const TextureDesc& t);
+  GLuint program(const std::string& key, const Program& p);
+  // Drops the cached textures and programs (before recording a picture, so
+  // that the record shows how each is made: see recordPicture in
+  // gl_listing.hpp).  Attachments stay.
+  void release();
+
+  // GL objects a demo keeps for this renderer's context beyond a Frame (the
+  // parallax passes' programs, textures and target): made as T(*this) on
+  // first use, owned by the renderer, deleted by T's destructor when the
+  // renderer goes, while its context is still current.
+  struct Attachment {
+    virtual ~Attachment() = default;
+  };
+  template <class T>
+  T& attachment() {
+    std::unique_ptr<Attachment>& slot = attachments_[std::type_index(typeid(T))];
+    if (!slot) slot = std::make_unique<T>(*this);
+    return static_cast<T&>(*slot);
+  }
+
+ private:
+  void drawLabels(const Frame& frame);
+  Context& ctx_;
+  std::map<std::type_index, std::unique_ptr<Attachment>> attachments_;
+  int pictureW_ = 0, pictureH_ = 0;
+  std::map<std::string, GLuint> textures_;
+  std::map<std::string, GLuint> programs_;
+  GLuint fontTexture_ = 0;
+  GLuint overrideTarget_ = 0;  // set while renderOffscreen draws
+};
+}  // namespace ts
