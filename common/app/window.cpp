@@ -6,7 +6,6 @@
 #include <backends/imgui_impl_glfw.h>
 
 #include <algorithm>
-#include <chrono>
 #include <sys/stat.h>
 
 #include <cctype>
