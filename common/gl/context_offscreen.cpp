@@ -14,6 +14,7 @@
 #include "common/gl/context.hpp"
 #include "common/core/error.hpp"
 #include "common/gl/gl.hpp"
+#include "common/gl/render_target.hpp"
 
 namespace ts {
 Backend parseBackend(const std::string& name) {
@@ -215,38 +216,24 @@ class EglContext final : public Context {
   }
   Backend backend() const override { return Backend::EGL; }
   void resize(int w, int h) override {
-    release();
-    glGenFramebuffers(1, &fbo_);
-    glGenRenderbuffers(2, rb_);
-    glBindRenderbuffer(GL_RENDERBUFFER, rb_[0]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
-    glBindRenderbuffer(GL_RENDERBUFFER, rb_[1]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb_[0]);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb_[1]);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      throw Error("EGL framebuffer " + std::to_string(w) + "x" + std::to_string(h) + " is incomplete",
-                  kExitFailure);
+    // No window system: the picture goes to a framebuffer object, the
+    // suite's one render target (render_target.hpp), bound for good.
+    target_.make({w, h}, "the EGL context");
+    glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer());
     glDrawBuffer(GL_COLOR_ATTACHMENT0);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     gl::check("creating the EGL framebuffer");
     width_ = w;
     height_ = h;
   }
-  void bindTarget() override { glBindFramebuffer(GL_FRAMEBUFFER, fbo_); }
+  void bindTarget() override { glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer()); }
 
  private:
   EglContext(EGLDisplay d, EGLContext c) : dpy_(d), ctx_(c) {}
-  void release() {
-    if (fbo_) glDeleteFramebuffers(1, &fbo_);
-    if (rb_[0]) glDeleteRenderbuffers(2, rb_);
-    fbo_ = 0;
-    rb_[0] = rb_[1] = 0;
-  }
+  void release() { target_.free(); }
   EGLDisplay dpy_;
   EGLContext ctx_;
-  GLuint fbo_ = 0, rb_[2] = {0, 0};
+  RenderTarget target_;
 };
 }  // namespace
 

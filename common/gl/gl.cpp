@@ -51,6 +51,11 @@ int version() {
   return major * 10 + minor;
 }
 
+bool hasAnisotropicFiltering() {
+  return version() >= 46 || hasExtension("GL_EXT_texture_filter_anisotropic") ||
+         hasExtension("GL_ARB_texture_filter_anisotropic");
+}
+
 bool hasExtension(const char* name) {
   if (!g_loaded) return false;
   if (version() >= 30 && p_glGetStringi) {

@@ -88,6 +88,9 @@ std::string rendererString();
 // Parsed major*10+minor of GL_VERSION, e.g. 45.
 int version();
 bool hasExtension(const char* name);
+// Whether GL_TEXTURE_MAX_ANISOTROPY may be set: GL 4.6, or either extension
+// that offers it (EXT or ARB: the same enum, 0x84FE).  The suite's one query.
+bool hasAnisotropicFiltering();
 
 // Checks glGetError(); returns "" or a description like
 // "GL_INVALID_ENUM after upload texture".

@@ -1,4 +1,5 @@
 #include "common/gl/render.hpp"
+#include "common/gl/render_target.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -95,10 +96,17 @@ GLuint Renderer::texture(const TextureDesc& t) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(t.wrapT));
   glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, glm::value_ptr(t.border));
   glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, t.lodBias);
-  if (gl::hasExtension("GL_EXT_texture_filter_anisotropic") || gl::version() >= 46)
+  if (gl::hasAnisotropicFiltering())
     glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, t.maxAnisotropy);
   gl::check(("setting the parameters of texture " + t.key()).c_str());
   return id;
+}
+
+void Renderer::forgetTexture(const TextureDesc& t) {
+  auto it = textures_.find(t.key());
+  if (it == textures_.end()) return;
+  glDeleteTextures(1, &it->second);
+  textures_.erase(it);
 }
 
 // The 1-based line of `file` where the shader text `src` begins (it is a raw
@@ -402,43 +410,22 @@ void Renderer::drawLabels(const Frame& f) {
 }
 
 Image Renderer::offscreen(int w, int h, const char* what, const std::function<void(GLuint fbo)>& draw) {
-  if (!gl::p_glGenFramebuffers)
-    throw Error(std::string(what) + " needs framebuffer objects (GL 3.0)", kExitFailure);
-  GLint drawBuffer = 0, readBuffer = 0, boundFbo = 0;
-  glGetIntegerv(GL_DRAW_BUFFER, &drawBuffer);
-  glGetIntegerv(GL_READ_BUFFER, &readBuffer);
-  glGetIntegerv(GL_FRAMEBUFFER_BINDING, &boundFbo);
-  GLuint fbo = 0, rb[2] = {0, 0};
-  glGenFramebuffers(1, &fbo);
-  glGenRenderbuffers(2, rb);
-  glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
-  glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
-  glDrawBuffer(GL_COLOR_ATTACHMENT0);
-  Image img(w, h);
+  // A target of its own for each pass (made, drawn, read, deleted): a pass
+  // inside a pass (a measurement that renders a frame) cannot clobber it.
+  RenderTarget target;
+  target.make({w, h}, what);
+  Image img;
   std::string failure;
-  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-    failure = "the " + std::to_string(w) + "x" + std::to_string(h) + " framebuffer of " + what + " is incomplete";
-  } else {
+  {
+    RenderTarget::Bind bound(target);
     try {
-      draw(fbo);
+      draw(target.framebuffer());
     } catch (const Error& e) {
       failure = e.what();
     }
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
-    img.flipVertical();
+    if (failure.empty()) img = target.readRGBA8();
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(boundFbo));
-  glDeleteFramebuffers(1, &fbo);
-  glDeleteRenderbuffers(2, rb);
-  glDrawBuffer(GLenum(drawBuffer));
-  glReadBuffer(GLenum(readBuffer));
+  target.free();
   if (!failure.empty()) throw Error(failure, kExitFailure);
   gl::check(what);
   return img;

@@ -36,16 +36,16 @@ class Renderer {
   void draw(const Frame& frame, bool labels = true);
   // draw() and read back: the picture as the PNG will hold it.
   Image render(const Frame& frame, bool labels = true);
-  // Draws into a private framebuffer object of the frame's size and reads it
-  // back: measurement passes get the same pixels whatever the window's size,
+  // Draws into a private framebuffer object (render_target.hpp) of the
+  // frame's size and reads it back: measurement passes get the same pixels whatever the window's size,
   // and leave the window's own target untouched.
   Image renderOffscreen(const Frame& frame);
-  // The one render target of the suite for a pass of one's own: a private
-  // framebuffer object of w x h (RGBA8 colour, 24-bit depth, 8-bit stencil),
-  // bound with its colour attachment as the draw buffer while `draw(fbo)`
-  // makes the GL calls, then read back (row 0 = top).  It saves and restores
-  // what it changes: the framebuffer binding, the draw and read buffers.
-  // `what` names the pass in errors.
+  // A pass of one's own into a private RenderTarget (render_target.hpp) of
+  // w x h (RGBA8 colour, 24-bit depth, 8-bit stencil), bound with its colour
+  // attachment as the draw buffer and the viewport over it while `draw(fbo)`
+  // makes the GL calls, then read back (row 0 = top).  It restores what it
+  // changes: the framebuffer binding, the draw and read buffers, the
+  // viewport.  `what` names the pass in errors.
   Image offscreen(int w, int h, const char* what, const std::function<void(GLuint fbo)>& draw);
   Context& context() { return ctx_; }
   // The size the picture will be drawn at: the context's, unless a window
@@ -57,6 +57,9 @@ class Renderer {
   // The GL texture for a description (uploaded once per key, then cached;
   // filters and wrap modes are set on every bind).
   GLuint texture(const TextureDesc& t);
+  // Deletes the cached texture of this description, if any: the next
+  // texture() uploads it again (and a recorded pass shows how).
+  void forgetTexture(const TextureDesc& t);
   GLuint program(const std::string& key, const Program& p);
   // Drops the cached textures and programs (before recording a picture, so
   // that the record shows how each is made: see recordPicture in

@@ -26,6 +26,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@
 #include "common/gl/gl.hpp"
 #include "common/core/mesh.hpp"
 #include "common/gl/render.hpp"
+#include "common/gl/render_target.hpp"
 #include "env_world.hpp"
 
 namespace envgl {
@@ -177,78 +179,76 @@ class EnvGL : public ts::Renderer::Attachment {
   EnvGL& operator=(const EnvGL&) = delete;
 
   Pixels draw(const Pass& p) {
-    if (!ts::gl::p_glGenFramebuffers) throw ts::Error("environment mapping needs framebuffer objects (GL 3.0)", ts::kExitFailure);
-    GLint prevFbo = 0, prevProgram = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prevFbo);
+    GLint prevProgram = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &prevProgram);
     glPushAttrib(GL_ALL_ATTRIB_BITS);
-    bindTarget(p.w, p.h);
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_LIGHTING);
-    glMatrixMode(GL_PROJECTION);
-    glPushMatrix();
-    glLoadMatrixf(glm::value_ptr(p.projection));
-    glMatrixMode(GL_MODELVIEW);
-    glPushMatrix();
-    glLoadMatrixf(glm::value_ptr(p.view * p.model));
-    glMatrixMode(GL_TEXTURE);
-    glPushMatrix();
-    glLoadIdentity();
-    const glm::mat3 toWorld = glm::transpose(glm::mat3(p.view));
-    const bool fixedFunction = p.perVertex && (p.param == envmap::kCube || p.param == envmap::kSphere);
-    GLuint tex = p.param >= 0 ? texture(p) : 0;
-    const GLenum target = mapOf(p.param) == envmap::kCube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
-    glActiveTexture(GL_TEXTURE0);
-    if (tex) glBindTexture(target, tex);
-    if (fixedFunction) {
-      glUseProgram(0);
-      const GLint mode = p.param == envmap::kCube ? GL_REFLECTION_MAP : GL_SPHERE_MAP;
-      glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, mode), glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, mode);
-      if (p.param == envmap::kCube) glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, mode);  // GL_SPHERE_MAP is for s and t only
-      glEnable(GL_TEXTURE_GEN_S), glEnable(GL_TEXTURE_GEN_T);
-      if (p.param == envmap::kCube) glEnable(GL_TEXTURE_GEN_R);
-      glEnable(target);
-      glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-      if (p.param == envmap::kCube) glLoadMatrixf(glm::value_ptr(glm::mat4(toWorld)));  // eye-space r -> the world's
-    } else {
-      const std::string key = "envmap_p" + std::to_string(p.param) + (p.perVertex ? "_v" : "_f");
-      GLuint prog = r_.program(key, {kFile, vertexShader(p.param, p.perVertex), fragmentShader(p.param, p.perVertex)});
-      glUseProgram(prog);
-      glUniformMatrix3fv(glGetUniformLocation(prog, "toWorld"), 1, GL_FALSE, glm::value_ptr(toWorld));
-      // The lookup is in this eye's space, as GL_SPHERE_MAP's is: a map made
-      // for another eye (sphereView) is read as if it were this one's.
-      const glm::mat3 sphereEye(p.view);
-      glUniformMatrix3fv(glGetUniformLocation(prog, "sphereEye"), 1, GL_FALSE, glm::value_ptr(sphereEye));
-      glUniform1i(glGetUniformLocation(prog, target == GL_TEXTURE_CUBE_MAP ? "mapCube" : "map2d"), 0);
-    }
-    const ts::Mesh m = objectMesh(p.object);
-    glBegin(GL_TRIANGLES);
-    for (unsigned i : m.triangles()) {
-      const ts::SurfacePoint& v = m.points[i];
-      glNormal3f(float(v.normal.x), float(v.normal.y), float(v.normal.z));
-      glVertex3f(float(v.pos.x), float(v.pos.y), float(v.pos.z));
-    }
-    glEnd();
-    Pixels out{p.w, p.h, std::vector<float>(size_t(p.w) * size_t(p.h) * 4)};
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, p.w, p.h, GL_RGBA, GL_FLOAT, out.v.data());
-    glUseProgram(GLuint(prevProgram));
-    glMatrixMode(GL_TEXTURE);
-    glPopMatrix();
-    glMatrixMode(GL_MODELVIEW);
-    glPopMatrix();
-    glMatrixMode(GL_PROJECTION);
-    glPopMatrix();
-    glMatrixMode(GL_MODELVIEW);
-    glBindTexture(target, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(prevFbo));
-    glPopAttrib();  // after the framebuffer: it restores the draw and read buffers too
+    Pixels out{p.w, p.h, {}};
+    {
+      ts::RenderTarget::Bind bound(target(p.w, p.h));
+      glDisable(GL_SCISSOR_TEST);
+      glClearColor(0, 0, 0, 0);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      glEnable(GL_DEPTH_TEST);
+      glDepthFunc(GL_LESS);
+      glDisable(GL_BLEND);
+      glDisable(GL_CULL_FACE);
+      glDisable(GL_LIGHTING);
+      glMatrixMode(GL_PROJECTION);
+      glPushMatrix();
+      glLoadMatrixf(glm::value_ptr(p.projection));
+      glMatrixMode(GL_MODELVIEW);
+      glPushMatrix();
+      glLoadMatrixf(glm::value_ptr(p.view * p.model));
+      glMatrixMode(GL_TEXTURE);
+      glPushMatrix();
+      glLoadIdentity();
+      const glm::mat3 toWorld = glm::transpose(glm::mat3(p.view));
+      const bool fixedFunction = p.perVertex && (p.param == envmap::kCube || p.param == envmap::kSphere);
+      GLuint tex = p.param >= 0 ? texture(p) : 0;
+      const GLenum target = mapOf(p.param) == envmap::kCube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+      glActiveTexture(GL_TEXTURE0);
+      if (tex) glBindTexture(target, tex);
+      if (fixedFunction) {
+        glUseProgram(0);
+        const GLint mode = p.param == envmap::kCube ? GL_REFLECTION_MAP : GL_SPHERE_MAP;
+        glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, mode), glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, mode);
+        if (p.param == envmap::kCube) glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, mode);  // GL_SPHERE_MAP is for s and t only
+        glEnable(GL_TEXTURE_GEN_S), glEnable(GL_TEXTURE_GEN_T);
+        if (p.param == envmap::kCube) glEnable(GL_TEXTURE_GEN_R);
+        glEnable(target);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+        if (p.param == envmap::kCube) glLoadMatrixf(glm::value_ptr(glm::mat4(toWorld)));  // eye-space r -> the world's
+      } else {
+        const std::string key = "envmap_p" + std::to_string(p.param) + (p.perVertex ? "_v" : "_f");
+        GLuint prog = r_.program(key, {kFile, vertexShader(p.param, p.perVertex), fragmentShader(p.param, p.perVertex)});
+        glUseProgram(prog);
+        glUniformMatrix3fv(glGetUniformLocation(prog, "toWorld"), 1, GL_FALSE, glm::value_ptr(toWorld));
+        // The lookup is in this eye's space, as GL_SPHERE_MAP's is: a map made
+        // for another eye (sphereView) is read as if it were this one's.
+        const glm::mat3 sphereEye(p.view);
+        glUniformMatrix3fv(glGetUniformLocation(prog, "sphereEye"), 1, GL_FALSE, glm::value_ptr(sphereEye));
+        glUniform1i(glGetUniformLocation(prog, target == GL_TEXTURE_CUBE_MAP ? "mapCube" : "map2d"), 0);
+      }
+      const ts::Mesh m = objectMesh(p.object);
+      glBegin(GL_TRIANGLES);
+      for (unsigned i : m.triangles()) {
+        const ts::SurfacePoint& v = m.points[i];
+        glNormal3f(float(v.normal.x), float(v.normal.y), float(v.normal.z));
+        glVertex3f(float(v.pos.x), float(v.pos.y), float(v.pos.z));
+      }
+      glEnd();
+      out.v = target_.readFloat();
+      glUseProgram(GLuint(prevProgram));
+      glMatrixMode(GL_TEXTURE);
+      glPopMatrix();
+      glMatrixMode(GL_MODELVIEW);
+      glPopMatrix();
+      glMatrixMode(GL_PROJECTION);
+      glPopMatrix();
+      glMatrixMode(GL_MODELVIEW);
+      glBindTexture(target, 0);
+    }  // the previous framebuffer, buffers and viewport
+    glPopAttrib();
     ts::gl::check("an environment mapping pass");
     return out;
   }
@@ -285,30 +285,30 @@ class EnvGL : public ts::Renderer::Attachment {
     if (textures_.count("cube_index")) glDeleteTextures(1, &textures_["cube_index"]);
     textures_["cube_index"] = t;  // deleted with the others
     // A one-pixel pass: a fixed-function point whose (s,t,r) is r itself.
-    GLint prevFbo = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prevFbo);
     glPushAttrib(GL_ALL_ATTRIB_BITS);
-    bindTarget(1, 1);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glUseProgram(0);
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_TEXTURE_CUBE_MAP);
-    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-    glMatrixMode(GL_PROJECTION), glPushMatrix(), glLoadIdentity();
-    glMatrixMode(GL_MODELVIEW), glPushMatrix(), glLoadIdentity();
-    glBegin(GL_TRIANGLES);
-    for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(3, -1), glm::vec2(-1, 3)}) {
-      glTexCoord3f(float(r.x), float(r.y), float(r.z));
-      glVertex2f(c.x, c.y);
-    }
-    glEnd();
     float px[4] = {0, 0, 0, 0};
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, px);
-    glMatrixMode(GL_PROJECTION), glPopMatrix();
-    glMatrixMode(GL_MODELVIEW), glPopMatrix();
-    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(prevFbo));
+    {
+      ts::RenderTarget::Bind bound(target(1, 1));
+      glDisable(GL_SCISSOR_TEST);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      glUseProgram(0);
+      glDisable(GL_DEPTH_TEST);
+      glEnable(GL_TEXTURE_CUBE_MAP);
+      glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+      glMatrixMode(GL_PROJECTION), glPushMatrix(), glLoadIdentity();
+      glMatrixMode(GL_MODELVIEW), glPushMatrix(), glLoadIdentity();
+      glBegin(GL_TRIANGLES);
+      for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(3, -1), glm::vec2(-1, 3)}) {
+        glTexCoord3f(float(r.x), float(r.y), float(r.z));
+        glVertex2f(c.x, c.y);
+      }
+      glEnd();
+      const std::vector<float> v = target_.readFloat();
+      std::copy(v.begin(), v.begin() + 4, px);
+      glMatrixMode(GL_PROJECTION), glPopMatrix();
+      glMatrixMode(GL_MODELVIEW), glPopMatrix();
+      glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    }
     glPopAttrib();
     ts::gl::check("the cube-map read-back");
     return {int(px[0]), int(px[1]), int(px[2])};
@@ -362,42 +362,15 @@ class EnvGL : public ts::Renderer::Attachment {
     textures_[key] = t;
     return t;
   }
-  void bindTarget(int w, int h) {
-    if (w != tw_ || h != th_) {
-      freeTarget();
-      glGenTextures(1, &colour_);
-      glBindTexture(GL_TEXTURE_2D, colour_);
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-      glBindTexture(GL_TEXTURE_2D, 0);
-      glGenRenderbuffers(1, &depth_);
-      glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-      glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
-      glGenFramebuffers(1, &fbo_);
-      glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
-      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw ts::Error("environment mapping framebuffer " + std::to_string(w) + "x" + std::to_string(h) + " is incomplete",
-                        ts::kExitFailure);
-      tw_ = w, th_ = h;
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glDrawBuffer(GL_COLOR_ATTACHMENT0);
-    glViewport(0, 0, w, h);
-    glDisable(GL_SCISSOR_TEST);
+  // The passes' target: RGBA32F colour (the measurements read floats) and a
+  // depth buffer, remade when the size changes.
+  ts::RenderTarget& target(int w, int h) {
+    target_.make({w, h, ts::TargetFormat::kRGBA32F, ts::TargetFormat::kDepth24}, "an environment mapping pass");
+    return target_;
   }
-  void freeTarget() {
-    if (fbo_) glDeleteFramebuffers(1, &fbo_);
-    if (depth_) glDeleteRenderbuffers(1, &depth_);
-    if (colour_) glDeleteTextures(1, &colour_);
-    fbo_ = depth_ = colour_ = 0;
-    tw_ = th_ = 0;
-  }
+  void freeTarget() { target_.free(); }
   ts::Renderer& r_;
   std::map<std::string, GLuint> textures_;
-  GLuint fbo_ = 0, depth_ = 0, colour_ = 0;
-  int tw_ = 0, th_ = 0;
+  ts::RenderTarget target_;
 };
 }  // namespace envgl

@@ -108,7 +108,7 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
   }
   ts::measureProgress(refShare + (1 - refShare) * 0.9);
   for (const Row& r : t.rows)
-    if (r.mode == kTrilinear || (r.mode == kAniso16 && ReliefGL::anisotropySupported())) {
+    if (r.mode == kTrilinear || (r.mode == kAniso16 && ts::gl::hasAnisotropicFiltering())) {
       PassOptions po;
       po.accel = o.accel;
       po.gradScale = o.gradScale * 4;

@@ -59,6 +59,7 @@
 #include "common/core/error.hpp"
 #include "common/gl/gl.hpp"
 #include "common/gl/render.hpp"
+#include "common/gl/render_target.hpp"
 #include "relief.hpp"
 
 namespace pax {
@@ -396,11 +397,12 @@ void main() {
 )";
 }
 
-// The GL objects of one relief map: albedo, heights and the max-height
-// pyramid, every level uploaded from the CPU chains (the same on every driver).
+// The textures of one relief map, described for Renderer::texture (the
+// suite's one upload path): albedo, heights and the max-height pyramid, every
+// level uploaded from the CPU chains (the same on every driver).
 struct ReliefTextures {
   std::string name;
-  GLuint albedo = 0, height = 0, heightMax = 0;
+  ts::TextureDesc albedo, height, heightMax;
   int levels = 0;
 };
 
@@ -437,14 +439,12 @@ class ReliefGL final : public ts::Renderer::Attachment {
   ~ReliefGL() override { release(); }
   ReliefGL(const ReliefGL&) = delete;
   ReliefGL& operator=(const ReliefGL&) = delete;
-  // Drops the GL objects (the context must be current).
+  // Drops the GL objects (the context must be current): the next pass makes
+  // them again, so that a recorded pass (ts::recordRender) shows how.
   void release() {
-    for (auto& t : textures_) {
-      GLuint ids[3] = {t.albedo, t.height, t.heightMax};
-      glDeleteTextures(3, ids);
-    }
-    textures_.clear();
-    freeTarget();
+    for (auto& t : textures_)
+      for (const ts::TextureDesc* d : {&t.albedo, &t.height, &t.heightMax}) r_.forgetTexture(*d);
+    target_.free();
   }
 
   const ReliefTextures& textures(const Relief& rel) {
@@ -453,48 +453,31 @@ class ReliefGL final : public ts::Renderer::Attachment {
     ReliefTextures t;
     t.name = rel.name;
     t.levels = int(rel.albedo.size());
-    auto upload = [](const std::vector<ts::Image>& chain, GLenum minFilter) {
-      GLuint id = 0;
-      glGenTextures(1, &id);
-      glBindTexture(GL_TEXTURE_2D, id);
-      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-      for (size_t k = 0; k < chain.size(); ++k)
-        glTexImage2D(GL_TEXTURE_2D, GLint(k), GL_RGBA8, chain[k].width, chain[k].height, 0, GL_RGBA,
-                     GL_UNSIGNED_BYTE, chain[k].pixels.data());
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(chain.size()) - 1);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(minFilter));
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, minFilter == GL_NEAREST_MIPMAP_NEAREST ? GL_NEAREST : GL_LINEAR);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-      return id;
+    auto describe = [&](const char* map, const std::vector<ts::Image>& chain, GLenum minFilter) {
+      ts::TextureDesc d;
+      d.name = "relief_" + rel.name + "_" + map;
+      d.image = std::make_shared<ts::Image>(chain.front());
+      d.mipmaps = true;
+      d.mipLevels = std::make_shared<std::vector<ts::Image>>(chain);
+      d.minFilter = minFilter;
+      d.magFilter = minFilter == GL_NEAREST_MIPMAP_NEAREST ? GL_NEAREST : GL_LINEAR;
+      d.wrapS = d.wrapT = GL_REPEAT;
+      return d;
     };
-    t.albedo = upload(rel.albedo, GL_LINEAR_MIPMAP_LINEAR);
-    t.height = upload(rel.height, GL_LINEAR_MIPMAP_LINEAR);
-    t.heightMax = upload(rel.heightMax, GL_NEAREST_MIPMAP_NEAREST);
-    ts::gl::check("uploading the relief textures");
+    t.albedo = describe("albedo", rel.albedo, GL_LINEAR_MIPMAP_LINEAR);
+    t.height = describe("height", rel.height, GL_LINEAR_MIPMAP_LINEAR);
+    t.heightMax = describe("height_max", rel.heightMax, GL_NEAREST_MIPMAP_NEAREST);
     textures_.push_back(t);
     return textures_.back();
   }
 
-  static bool anisotropySupported() {
-    return ts::gl::hasExtension("GL_EXT_texture_filter_anisotropic") ||
-           ts::gl::hasExtension("GL_ARB_texture_filter_anisotropic") || ts::gl::version() >= 46;
-  }
-
-  // Draws one mode into an RGBA8 target of the camera's size (bound and left
-  // bound; read with readColour).  Returns nothing: timing wraps this.
-  void draw(const Camera& cam, const Relief& rel, int mode, const PassOptions& o) {
-    bindTarget(cam.width, cam.height, false);
-    glDisable(GL_SCISSOR_TEST);
-    pass(cam, rel, mode, o);
-  }
   // The live view: `left` over the whole camera, or with right >= 0 `left` on
   // the left half and `right` on the right half (split-screen compare: one
   // frame's work, each pixel drawn once), into the passes' own RGBA8 target
   // texture (GL_NEAREST), returned; valid until the next draw.  The previous
   // framebuffer is bound again on return.
   GLuint drawLive(const Camera& cam, const Relief& rel, int left, int right, const PassOptions& o) {
-    bindTarget(cam.width, cam.height, false);
+    ts::RenderTarget::Bind bound(target(cam.width, cam.height, false));
     if (right < 0) {
       glDisable(GL_SCISSOR_TEST);
       pass(cam, rel, left, o);
@@ -506,8 +489,7 @@ class ReliefGL final : public ts::Renderer::Attachment {
       pass(cam, rel, right, o);
       glDisable(GL_SCISSOR_TEST);
     }
-    restore();
-    return tex_;
+    return target_.colourTexture();
   }
 
  private:
@@ -537,29 +519,27 @@ class ReliefGL final : public ts::Renderer::Attachment {
   }
 
  public:
-  // draw() and read back (row 0 = top).
+  // One mode drawn into an RGBA8 target of the camera's size and read back
+  // (row 0 = top).
   ts::Image render(const Camera& cam, const Relief& rel, int mode, const PassOptions& o = {}) {
-    draw(cam, rel, mode, o);
-    ts::Image img(cam.width, cam.height);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, cam.width, cam.height, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
-    restore();
-    img.flipVertical();
-    return img;
+    ts::RenderTarget::Bind bound(target(cam.width, cam.height, false));
+    glDisable(GL_SCISSOR_TEST);
+    pass(cam, rel, mode, o);
+    return target_.readRGBA8();
   }
   // Milliseconds per frame: the median of `runs` draws, each finished.
   double timeMs(const Camera& cam, const Relief& rel, int mode, int runs, const PassOptions& o = {}) {
-    draw(cam, rel, mode, o);  // warm: compile, upload, first JIT
+    ts::RenderTarget::Bind bound(target(cam.width, cam.height, false));
+    glDisable(GL_SCISSOR_TEST);
+    pass(cam, rel, mode, o);  // warm: compile, upload, first JIT
     glFinish();
     std::vector<double> ms;
     for (int k = 0; k < runs; ++k) {
       auto t0 = std::chrono::steady_clock::now();
-      draw(cam, rel, mode, o);
+      pass(cam, rel, mode, o);
       glFinish();
       ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     }
-    restore();
     std::sort(ms.begin(), ms.end());
     return ms[ms.size() / 2];
   }
@@ -594,16 +574,18 @@ class ReliefGL final : public ts::Renderer::Attachment {
     glUniform2f(glGetUniformLocation(prog, "viewport"), float(cam.width), float(cam.height));
   }
   void bind(GLuint prog, const ReliefTextures& t, float aniso) {
-    const GLuint ids[3] = {t.albedo, t.height, t.heightMax};
+    const ts::TextureDesc* maps[3] = {&t.albedo, &t.height, &t.heightMax};
     const char* names[3] = {"albedo", "heightTex", "heightMax"};
+    GLuint albedo = 0;
     for (int k = 0; k < 3; ++k) {
       glActiveTexture(GLenum(GL_TEXTURE0 + k));
-      glBindTexture(GL_TEXTURE_2D, ids[k]);
+      const GLuint id = r_.texture(*maps[k]);  // uploads once, binds, sets the filters
+      if (k == 0) albedo = id;
       glUniform1i(glGetUniformLocation(prog, names[k]), k);
     }
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, t.albedo);
-    if (anisotropySupported()) glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, aniso);
+    glBindTexture(GL_TEXTURE_2D, albedo);
+    if (ts::gl::hasAnisotropicFiltering()) glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, aniso);
   }
   void quad() {  // the caller sets the scissor test
     glDisable(GL_DEPTH_TEST);
@@ -613,52 +595,16 @@ class ReliefGL final : public ts::Renderer::Attachment {
     for (const auto& v : c) glVertex2f(v[0], v[1]);
     glEnd();
   }
-  // An FBO of w x h (RGBA8 or RGBA32F), bound for drawing.
-  void bindTarget(int w, int h, bool floatTarget) {
-    if (!ts::gl::p_glGenFramebuffers) throw ts::Error("the parallax passes need framebuffer objects (GL 3.0)", ts::kExitFailure);
-    if (!saved_) {
-      glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prevFbo_);
-      glGetIntegerv(GL_DRAW_BUFFER, &prevDraw_);
-      glGetIntegerv(GL_READ_BUFFER, &prevRead_);
-      saved_ = true;
-    }
-    if (w != tw_ || h != th_ || floatTarget != tfloat_) {
-      freeTarget();
-      // A texture, not a renderbuffer: the live view shows it as it is.
-      glGenTextures(1, &tex_);
-      glBindTexture(GL_TEXTURE_2D, tex_);
-      glTexImage2D(GL_TEXTURE_2D, 0, floatTarget ? GL_RGBA32F : GL_RGBA8, w, h, 0, GL_RGBA,
-                   floatTarget ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-      glGenFramebuffers(1, &fbo_);
-      glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex_, 0);
-      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw ts::Error("parallax framebuffer " + std::to_string(w) + "x" + std::to_string(h) + " is incomplete",
-                        ts::kExitFailure);
-      tw_ = w, th_ = h, tfloat_ = floatTarget;
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glDrawBuffer(GL_COLOR_ATTACHMENT0);
-    glViewport(0, 0, w, h);
-  }
-  void restore() {
-    if (!saved_) return;
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(prevFbo_));
-    glDrawBuffer(GLenum(prevDraw_));
-    glReadBuffer(GLenum(prevRead_));
-    saved_ = false;
-  }
-  void freeTarget() {
-    if (fbo_) glDeleteFramebuffers(1, &fbo_);
-    if (tex_) glDeleteTextures(1, &tex_);
-    fbo_ = tex_ = 0;
-    tw_ = th_ = 0;
+  // The passes' target: colour only, RGBA8 (pictures) or RGBA32F (probes),
+  // a texture so that the live view can show it; remade when that changes.
+  ts::RenderTarget& target(int w, int h, bool floatTarget) {
+    target_.make({w, h, floatTarget ? ts::TargetFormat::kRGBA32F : ts::TargetFormat::kRGBA8,
+                  ts::TargetFormat::kNoDepth, true},
+                 "a parallax pass");
+    return target_;
   }
   std::vector<float> probePass(int w, int h, glm::dvec4 a, glm::dvec4 b, const Relief* rel, bool accel) {
-    bindTarget(w, h, true);
+    ts::RenderTarget::Bind bound(target(w, h, true));
     glDisable(GL_SCISSOR_TEST);
     Variant pv;
     pv.mode = -1;     // the probe program: `probe` picks the probe
@@ -679,20 +625,13 @@ class ReliefGL final : public ts::Renderer::Attachment {
     glUniform4f(glGetUniformLocation(prog, "probeB"), float(b.x), float(b.y), float(b.z), float(b.w));
     quad();
     glUseProgram(0);
-    std::vector<float> v(size_t(w) * size_t(h) * 4);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, v.data());
-    restore();
+    std::vector<float> v = target_.readFloat();
     ts::gl::check("a parallax probe pass");
     return v;
   }
 
   ts::Renderer& r_;
   std::vector<ReliefTextures> textures_;
-  GLuint fbo_ = 0, tex_ = 0;
-  int tw_ = 0, th_ = 0;
-  bool tfloat_ = false, saved_ = false;
-  GLint prevFbo_ = 0, prevDraw_ = 0, prevRead_ = 0;
+  ts::RenderTarget target_;
 };
 }  // namespace pax

@@ -369,7 +369,7 @@ TEST(Frames, ShaderEwaMatchesTheReferenceOnAFlatMap) {
 TEST(Frames, GradientTestSeesWhetherTheFilterUsesTheGradients) {
   ts::test::context();
   TS_REQUIRE_GL_VERSION(30);
-  if (!ReliefGL::anisotropySupported()) GTEST_SKIP() << "no anisotropic filtering";
+  if (!ts::gl::hasAnisotropicFiltering()) GTEST_SKIP() << "no anisotropic filtering";
   const Relief& bricks = relief("bricks");
   Camera cam = glCamera();
   MeasureOptions o;
