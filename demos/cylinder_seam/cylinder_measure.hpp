@@ -14,9 +14,9 @@
 #include "common/core/probe.hpp"
 #include "common/gl/render.hpp"
 #include "common/core/textures.hpp"
-#include "cylinder_map.hpp"
+#include "cylinder_math.hpp"
 
-namespace cylmeasure {
+namespace cylinder {
 struct PatchResult {
   double span = 0;      // signed Δs from left edge to right edge
   double texelErr = 0;  // largest distance (texels) from the assigned s
@@ -27,12 +27,12 @@ struct PatchResult {
 // exactly the panel's width (left edge = column k, right edge = column k+1).
 // Then screen x is linear in s, every pixel centre lies inside the patch,
 // and the s a pixel shows is (texel index + 1/2) / N.
-inline std::vector<PatchResult> measurePatches(ts::Renderer& r, const cylmap::Params& cp) {
+inline std::vector<PatchResult> measurePatches(ts::Renderer& r, const cylinder::Params& cp) {
   // 2048 texels: s is read to 1/2048 per pixel; 256 px across a patch make
   // the fitted span good to far better than a texel; 32 rows are plenty (s
   // does not depend on y).  The frame's size depends only on the slices.
   const int N = 2048, W = 256, H = 32;
-  const ts::Mesh mesh = cylmap::mesh(cp);
+  const ts::Mesh mesh = cylinder::mesh(cp);
   ts::Frame mf;
   mf.width = W;
   mf.height = H * cp.slices;
@@ -46,7 +46,7 @@ inline std::vector<PatchResult> measurePatches(ts::Renderer& r, const cylmap::Pa
     p.viewport = {0, k * H, W, H};
     p.projection = glm::ortho(float(-chord), float(chord), float(-cp.h / 2), float(cp.h / 2), float(-2 * cp.r),
                               float(2 * cp.r));
-    p.modelview = glm::rotate(glm::mat4(1.0f), float(-ts::degToRad(cylmap::thetaDeg(cp.slices, k) + half)),
+    p.modelview = glm::rotate(glm::mat4(1.0f), float(-ts::degToRad(cylinder::thetaDeg(cp.slices, k) + half)),
                               glm::vec3(0, 1, 0));
     ts::Batch b = all;  // only column k's cells: 6 vertices per cell, row-major in j
     b.vertices.clear();
@@ -59,7 +59,7 @@ inline std::vector<PatchResult> measurePatches(ts::Renderer& r, const cylmap::Pa
 
   std::vector<PatchResult> out;
   for (int k = 0; k < cp.slices; ++k) {
-    const double sa = cylmap::sOf(cp, k), sb = cylmap::sOf(cp, k + 1);
+    const double sa = cylinder::sOf(cp, k), sb = cylinder::sOf(cp, k + 1);
     std::vector<ts::probe::Sample> samples;
     PatchResult pr;
     for (int y = k * H; y < (k + 1) * H; ++y) {
@@ -85,4 +85,4 @@ inline std::vector<PatchResult> measurePatches(ts::Renderer& r, const cylmap::Pa
   }
   return out;
 }
-}  // namespace cylmeasure
+}  // namespace cylinder

@@ -22,7 +22,7 @@
 //
 // What the GL does: each cylinder is one glBegin(GL_TRIANGLES) sent by
 // common/gl/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
-// per vertex, s from cylinder_map.hpp's sOf: across the book's seam patch
+// per vertex, s from cylinder_math.hpp's sOf: across the book's seam patch
 // 0.9 and 0.1 reduced, 0.9 and 1.1 tracked.  glTexParameteri(GL_TEXTURE_2D,
 // GL_TEXTURE_WRAP_S, GL_REPEAT), made by Renderer::texture, reads 1.1 as
 // 0.1: the fix.  Listings: book_figures/vi3_cylinder.gl.txt and
@@ -47,17 +47,17 @@
 #include "common/core/textures.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/core/user_texture.hpp"
-#include "cylinder_map.hpp"
+#include "cylinder_math.hpp"
 #include "cylinder_measure.hpp"  // the patches drawn head-on and read back
 #include "cylinder_views.hpp"    // the texture-space view: the seam patch's regions
 
 namespace {
-using cylmap::Coords;
-using cylmap::Seam;
+using cylinder::Coords;
+using cylinder::Seam;
 
 const char* const kCoordNames[] = {"wrong", "right"};
 using ts::layout::kWhite;
-using cylview::kPatch;
+using cylinder::views::kPatch;
 const glm::vec4& kMeasured = ts::layout::kAmber;
 
 // 10 x 10 labelled cells, 64 texels each: the book's s = 0.1 and 0.9 fall on
@@ -108,8 +108,8 @@ class CylinderSeam final : public ts::Scene {
   ts::Measurements measure(ts::Renderer& r) override;
 
  private:
-  cylmap::Params params(Coords c) const {
-    cylmap::Params p;
+  cylinder::Params params(Coords c) const {
+    cylinder::Params p;
     p.slices = slices_;
     p.coords = c;
     p.seam = Seam(seam_);
@@ -138,12 +138,12 @@ void CylinderSeam::addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int
   // The seam patch's intended region (green) and the one the shown
   // coordinates select (cylinder_views.hpp).  The compare view shows the
   // wrong way here (the right one is the green region itself).
-  if (patch_) cylview::markSeamPatch(f, p, params(Coords::Right), params(view_ == 1 ? Coords::Wrong : Coords(coords_)), scale);
+  if (patch_) cylinder::views::markSeamPatch(f, p, params(Coords::Right), params(view_ == 1 ? Coords::Wrong : Coords(coords_)), scale);
   f.panels.push_back(p);
 }
 
 void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int tex, int scale) const {
-  cylmap::Params cp = params(c);
+  cylinder::Params cp = params(c);
   ts::Panel p;
   p.id = std::string("cylinder_") + kCoordNames[int(c)];
   p.viewport = vp;
@@ -154,16 +154,16 @@ void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int t
   // Light from the upper left in front, fixed to the viewer: expressed in the
   // cylinder's own coordinates by undoing the turn.
   glm::dvec3 toLight = glm::dvec3(glm::inverse(glm::mat3(p.modelview)) * glm::vec3(-0.4f, 0.5f, 1.0f));
-  // The mesh's (s, t) (cylmap::sOf, tOf) become glTexCoord4f(s, t, 0, 1) in Renderer::draw.
-  p.batches.push_back(ts::litMeshBatch(cylmap::mesh(cp), tex, toLight, 0.45, 0.55, "cylinder"));
+  // The mesh's (s, t) (cylinder::sOf, tOf) become glTexCoord4f(s, t, 0, 1) in Renderer::draw.
+  p.batches.push_back(ts::litMeshBatch(cylinder::mesh(cp), tex, toLight, 0.45, 0.55, "cylinder"));
   if (patch_) {
     // The seam patch's outline, 1% outside the surface so the depth test
     // keeps it in front of its own patch but behind the rest of the cylinder.
-    const int k = cylmap::seamPatch(cp);
-    double ta = cylmap::thetaDeg(cp.slices, k), tb = cylmap::thetaDeg(cp.slices, k + 1);
+    const int k = cylinder::seamPatch(cp);
+    double ta = cylinder::thetaDeg(cp.slices, k), tb = cylinder::thetaDeg(cp.slices, k + 1);
     const double R = cp.r * 1.01, hh = cp.h / 2;
-    glm::dvec3 corner[4] = {cylmap::point(R, ta, -hh), cylmap::point(R, tb, -hh), cylmap::point(R, tb, hh),
-                            cylmap::point(R, ta, hh)};
+    glm::dvec3 corner[4] = {cylinder::point(R, ta, -hh), cylinder::point(R, tb, -hh), cylinder::point(R, tb, hh),
+                            cylinder::point(R, ta, hh)};
     ts::Batch outline = ts::lineLoop({}, kPatch, 3.0f, "seam_patch");
     for (const auto& q : corner) outline.vertices.push_back({glm::vec3(q), {0, 0, 0, 1}, kPatch});
     p.batches.push_back(outline);
@@ -232,10 +232,10 @@ ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
                                         : std::vector<Coords>{Coords::Wrong, Coords::Right};
   ts::Measurements out;
   Spans spans;
-  const int k = cylmap::seamPatch(params(Coords::Right));
+  const int k = cylinder::seamPatch(params(Coords::Right));
   out.push_back({"seam_patch", double(k), "the patch the texture edges meet in (0 = the front one)"});
   for (Coords c : todo) {
-    std::vector<cylmeasure::PatchResult> res = cylmeasure::measurePatches(r, params(c));
+    std::vector<cylinder::PatchResult> res = cylinder::measurePatches(r, params(c));
     std::string n = std::string("[") + kCoordNames[int(c)] + "]";
     int reversed = 0;
     double err = 0;

@@ -15,9 +15,9 @@
 #include "common/core/frame.hpp"
 #include "common/core/layout.hpp"
 #include "common/core/text.hpp"
-#include "cylinder_map.hpp"
+#include "cylinder_math.hpp"
 
-namespace cylview {
+namespace cylinder::views {
 // The figure's colours: the intended region, the region actually shown, the
 // seam patch (its outline on the cylinder, the arrow, the vertex names).
 inline const glm::vec4 kIntended{0.2f, 0.85f, 0.3f, 1.0f}, kActual{0.95f, 0.15f, 0.15f, 1.0f},
@@ -26,12 +26,12 @@ inline const glm::vec4 kIntended{0.2f, 0.85f, 0.3f, 1.0f}, kActual{0.95f, 0.15f,
 // Adds to `p` (a texturePanel of the label at p.viewport) the seam patch's
 // regions: intended from the winding-tracked coordinates `right`, actual and
 // the arrow from `shown`; the vertex names go into `f` at `scale`.
-inline void markSeamPatch(ts::Frame& f, ts::Panel& p, const cylmap::Params& right, const cylmap::Params& shown,
+inline void markSeamPatch(ts::Frame& f, ts::Panel& p, const cylinder::Params& right, const cylinder::Params& shown,
                           int scale) {
   const ts::Rect& vp = p.viewport;
-  const int k = cylmap::seamPatch(right);
+  const int k = cylinder::seamPatch(right);
   // Intended: [s_k, s_k+1] of the right coordinates, cut where it wraps.
-  double a = cylmap::sOf(right, k), b = cylmap::sOf(right, k + 1);
+  double a = cylinder::sOf(right, k), b = cylinder::sOf(right, k + 1);
   double fa = a - std::floor(a);
   std::vector<std::pair<double, double>> pieces;
   if (fa + (b - a) <= 1.0 + 1e-12) pieces = {{fa, fa + (b - a)}};
@@ -50,8 +50,8 @@ inline void markSeamPatch(ts::Frame& f, ts::Panel& p, const cylmap::Params& righ
   }
   // Actual: from column k's s to column k+1's s, walked left to right on
   // screen; an arrow at mid-height shows the way.
-  double sa = cylmap::sOf(shown, k), sb = cylmap::sOf(shown, k + 1);
-  if (shown.coords == cylmap::Coords::Wrong) {
+  double sa = cylinder::sOf(shown, k), sb = cylinder::sOf(shown, k + 1);
+  if (shown.coords == cylinder::Coords::Wrong) {
     float lo = float(std::min(sa, sb)), hi = float(std::max(sa, sb));
     p.batches.push_back(ts::lineLoop({{lo, 0.01f}, {hi, 0.01f}, {hi, 0.99f}, {lo, 0.99f}}, kActual, 3.0f, "actual_region"));
     std::vector<glm::vec2> hatch;  // the book's cross-hatching
@@ -61,7 +61,7 @@ inline void markSeamPatch(ts::Frame& f, ts::Panel& p, const cylmap::Params& righ
   // The arrow: s from x (left edge) to y (right edge), as GL_REPEAT reads
   // it: right = from + 0.2, continued from the left edge if it passes 1.
   const float from = float(sa - std::floor(sa));
-  const float to = shown.coords == cylmap::Coords::Right ? from + float(sb - sa) : float(sb);
+  const float to = shown.coords == cylinder::Coords::Right ? from + float(sb - sa) : float(sb);
   const float y0 = 0.5f, ah = 0.03f, dir = to > from ? 1.0f : -1.0f;
   const float tip = to > 1.0f ? to - 1.0f : to;
   std::vector<glm::vec2> arrow;
@@ -85,4 +85,4 @@ inline void markSeamPatch(ts::Frame& f, ts::Panel& p, const cylmap::Params& righ
                           {0, 0, float(f.width), float(f.height)});
   }
 }
-}  // namespace cylview
+}  // namespace cylinder::views

@@ -10,13 +10,13 @@
 //       VI.3's r = v - 2(v.n)n), GL interpolates (s,t,r) and picks the face per
 //       fragment; the texture matrix turns eye space into the world's.
 //   per vertex, sphere map fixed function: GL_SPHERE_MAP texgen, the (s,t) of
-//       env_world.hpp's formula per vertex, interpolated linearly.
+//       env_math.hpp's formula per vertex, interpolated linearly.
 //   per vertex, lat-long and paraboloid: the same in a vertex shader (there is
 //       no texgen for them): (s,t) per vertex, interpolated.
 //   per pixel, all four: a fragment shader computes r from the interpolated
 //       position and normal, then the map's (s,t) (or the cube lookup) itself.
 //   the reference: the same r per pixel, written out as a direction (no map).
-// The maps are GL_LINEAR, no mipmaps, at equal memory (env_world.hpp's
+// The maps are GL_LINEAR, no mipmaps, at equal memory (env_math.hpp's
 // mapSize).  A pass either reads the world's colours (the pictures) or maps
 // whose texels hold their own directions (d + 1)/2 in RGBA32F (the
 // measurement): then each pixel of the read-back is the direction the map
@@ -36,9 +36,9 @@
 #include "common/core/mesh.hpp"
 #include "common/gl/render.hpp"
 #include "common/gl/render_target.hpp"
-#include "env_world.hpp"
+#include "env_math.hpp"
 
-namespace envgl {
+namespace envmap {
 using envmap::Param;
 enum Object { kSphereObject, kTorus, kMirror, kObjects };
 inline const char* const kObjectKeys[] = {"sphere", "torus", "mirror"};
@@ -91,7 +91,7 @@ struct Pixels {
 };
 
 constexpr const char* kFile = "demos/environment_mapping/env_gl.hpp";
-// GLSL shared by both stages: the map coordinates of env_world.hpp.
+// GLSL shared by both stages: the map coordinates of env_math.hpp.
 inline const char* mapFunctions() {
   return R"(
 const float PI = 3.14159265358979;
@@ -373,4 +373,4 @@ class EnvGL : public ts::Renderer::Attachment {
   std::map<std::string, GLuint> textures_;
   ts::RenderTarget target_;
 };
-}  // namespace envgl
+}  // namespace envmap

@@ -22,9 +22,9 @@
 
 #include "common/core/image.hpp"
 #include "env_gl.hpp"
-#include "env_world.hpp"
+#include "env_math.hpp"
 
-namespace envmeasure {
+namespace envmap {
 using envmap::dvec3;
 using envmap::Param;
 
@@ -57,7 +57,7 @@ struct ErrorStats {
 };
 // Pixels covered in both read-backs; `perPixel` (optional) gets each pixel's
 // error, -1 off the object.
-inline ErrorStats errorStats(int param, const envgl::Pixels& lookup, const envgl::Pixels& ref, const glm::dmat3& sphereEye,
+inline ErrorStats errorStats(int param, const envmap::Pixels& lookup, const envmap::Pixels& ref, const glm::dmat3& sphereEye,
                              std::vector<float>* perPixel = nullptr) {
   ErrorStats s;
   std::vector<double> all;
@@ -94,7 +94,7 @@ inline ErrorStats errorStats(int param, const envgl::Pixels& lookup, const envgl
 struct TexelShape {
   double extentDeg = 0, aspect = 0;
 };
-inline std::map<std::string, TexelShape> texelShape(int param, int faceTexels, const envgl::Pixels& ref,
+inline std::map<std::string, TexelShape> texelShape(int param, int faceTexels, const envmap::Pixels& ref,
                                                     const glm::dmat3& sphereView, const glm::dmat3& eye) {
   const envmap::Size sz = envmap::mapSize(Param(param), faceTexels);
   const glm::dmat3 toWorld = glm::transpose(sphereView);
@@ -120,7 +120,7 @@ inline std::map<std::string, TexelShape> texelShape(int param, int faceTexels, c
 
 // ---- pictures (ts::Image, row 0 at the top) -------------------------------
 const glm::dvec3 kBackground{0.12, 0.12, 0.14};
-inline ts::Image colourImage(const envgl::Pixels& p) {
+inline ts::Image colourImage(const envmap::Pixels& p) {
   ts::Image img(p.w, p.h);
   for (int y = 0; y < p.h; ++y)
     for (int x = 0; x < p.w; ++x) {
@@ -130,7 +130,7 @@ inline ts::Image colourImage(const envgl::Pixels& p) {
   return img;
 }
 // The reference read-back (directions) shown as the world's colours there.
-inline ts::Image referenceImage(const envgl::Pixels& p) {
+inline ts::Image referenceImage(const envmap::Pixels& p) {
   ts::Image img(p.w, p.h);
   for (int y = 0; y < p.h; ++y)
     for (int x = 0; x < p.w; ++x) {
@@ -158,7 +158,7 @@ inline ts::Image errorImage(const std::vector<float>& e, int w, int h, double sc
 // GL's order (+X -X +Y / -Y +Z -Z, each with s right and t down as stored),
 // the sphere's disc, the paraboloid's two discs), dimmed except the texels
 // the object's pixels read: the region the object samples.
-inline ts::Image mapImage(int param, int faceTexels, const glm::dmat3& sphereView, const envgl::Pixels* looked) {
+inline ts::Image mapImage(int param, int faceTexels, const glm::dmat3& sphereView, const envmap::Pixels* looked) {
   const envmap::Size sz = envmap::mapSize(Param(param), faceTexels);
   const int W = param == envmap::kCube ? 3 * sz.w : sz.w, H = param == envmap::kCube ? 2 * sz.h : sz.h;
   std::vector<char> hit(size_t(W) * size_t(H), 0);
@@ -209,4 +209,4 @@ inline ts::Image mapImage(int param, int faceTexels, const glm::dmat3& sphereVie
       }
   return img;
 }
-}  // namespace envmeasure
+}  // namespace envmap

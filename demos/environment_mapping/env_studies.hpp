@@ -14,9 +14,9 @@
 #include "common/core/scene.hpp"
 #include "env_gl.hpp"
 #include "env_measure.hpp"
-#include "env_world.hpp"
+#include "env_math.hpp"
 
-namespace envstudy {
+namespace envmap {
 using envmap::dvec3;
 
 // ---- seed 001's worked example -------------------------------------------
@@ -30,7 +30,7 @@ struct SeedCube {
   glm::ivec3 readBack{-1};  // (i, j, face) the GL's texel
   int n = 1000;
 };
-inline SeedCube seedCube(envgl::EnvGL& g) {
+inline SeedCube seedCube(envmap::EnvGL& g) {
   SeedCube c;
   c.gl = envmap::cubeST(kSeedDirection);
   c.seed = envmap::seedCubeST(kSeedDirection);
@@ -59,15 +59,15 @@ inline glm::mat4 projectionMatrix(float zoom) {
 // turned by each angle (per pixel, so only the stale view is measured): the
 // mean direction error against the reference.
 inline const std::array<float, 6> kEyeAngles{0, 5, 10, 20, 40, 80};
-inline std::vector<double> viewDependence(envgl::EnvGL& g, int faceTexels) {
+inline std::vector<double> viewDependence(envmap::EnvGL& g, int faceTexels) {
   std::vector<double> out;
   for (float a : kEyeAngles) {
-    envgl::Pass p;
+    envmap::Pass p;
     p.view = viewMatrix(a, 0), p.projection = projectionMatrix(1), p.faceTexels = faceTexels;
     p.sphereView = glm::dmat3(glm::mat3(viewMatrix(0, 0)));
-    const envgl::Pixels ref = g.draw(p);
+    const envmap::Pixels ref = g.draw(p);
     p.param = envmap::kSphere;
-    out.push_back(envmeasure::errorStats(p.param, g.draw(p), ref, p.eyeRotation()).mean);
+    out.push_back(envmap::errorStats(p.param, g.draw(p), ref, p.eyeRotation()).mean);
   }
   return out;
 }
@@ -87,14 +87,14 @@ struct SeedVsGl {
   std::array<double, 5> meanDeg{}, maxDeg{};
   std::array<int, 5> pixels{};
 };
-inline SeedVsGl seedVsGl(envgl::EnvGL& g, int faceTexels, int glParam, int seedParam) {
-  envgl::Pass p;
+inline SeedVsGl seedVsGl(envmap::EnvGL& g, int faceTexels, int glParam, int seedParam) {
+  envmap::Pass p;
   p.view = viewMatrix(0, 0), p.projection = projectionMatrix(1), p.faceTexels = faceTexels;
   p.sphereView = glm::dmat3(glm::mat3(p.view));
   p.param = glParam;
-  const envgl::Pixels gl = g.draw(p);
+  const envmap::Pixels gl = g.draw(p);
   p.param = seedParam;
-  const envgl::Pixels seed = g.draw(p);
+  const envmap::Pixels seed = g.draw(p);
   const glm::mat4 inv = glm::inverse(p.projection);
   SeedVsGl s;
   for (int y = 0; y < gl.h; ++y)
@@ -141,12 +141,12 @@ struct Mirror {
   double meanDeg = 0, maxDeg = 0;
   std::vector<char> trueMask;  // per read-back pixel (GL order): the ball in the true mirror
 };
-inline Mirror mirrorNear(const envgl::Pixels& ref, const glm::mat4& projection, const glm::mat4& view, const glm::mat4& model) {
+inline Mirror mirrorNear(const envmap::Pixels& ref, const glm::mat4& projection, const glm::mat4& view, const glm::mat4& model) {
   Mirror m;
   m.trueMask.assign(size_t(ref.w) * size_t(ref.h), 0);
   const glm::dmat4 toWorld = glm::inverse(glm::dmat4(view)), invP = glm::inverse(glm::dmat4(projection));
   const dvec3 eye(toWorld * glm::dvec4(0, 0, 0, 1));
-  const double a = envmap::rad(envgl::kMirrorTiltDeg);
+  const double a = envmap::rad(envmap::kMirrorTiltDeg);
   const dvec3 n = glm::normalize(glm::dmat3(glm::dmat4(model)) * dvec3(0, std::sin(a), std::cos(a))), o(0.0);
   for (int y = 0; y < ref.h; ++y)
     for (int x = 0; x < ref.w; ++x) {
@@ -168,10 +168,10 @@ inline Mirror mirrorNear(const envgl::Pixels& ref, const glm::mat4& projection, 
 }
 
 // ---- all of the above, as the demo prints them -----------------------------
-inline void addStudies(envgl::EnvGL& g, int face, ts::Measurements& out) {
+inline void addStudies(envmap::EnvGL& g, int face, ts::Measurements& out) {
   {  // the flat mirror in the default view
-    envgl::Pass ps;
-    ps.object = envgl::kMirror, ps.view = viewMatrix(0, 0), ps.projection = projectionMatrix(1);
+    envmap::Pass ps;
+    ps.object = envmap::kMirror, ps.view = viewMatrix(0, 0), ps.projection = projectionMatrix(1);
     const Mirror m = mirrorNear(g.draw(ps), ps.projection, ps.view, ps.model);
     out.push_back({"mirror_ball_pixels", double(m.truePixels), "mirror pixels that show the near ball in a true mirror"});
     out.push_back({"mirror_ball_pixels_centre_map", double(m.mapPixels), "pixels a map made at the mirror's centre, ball included, shows it at"});
@@ -202,8 +202,8 @@ inline void addStudies(envgl::EnvGL& g, int face, ts::Measurements& out) {
   for (size_t k = 0; k < vd.size(); ++k)
     out.push_back({"sphere_stale_error_deg[" + ts::layout::fmt("%.0f", kEyeAngles[k]) + "]", vd[k],
                    "sphere map made at yaw 0, eye at this yaw: mean error on the sphere, degrees"});
-  const SeedVsGl ss = seedVsGl(g, face, envmap::kSphere, envgl::kSeedSphere),
-                 sc = seedVsGl(g, face, envmap::kCube, envgl::kSeedCube);
+  const SeedVsGl ss = seedVsGl(g, face, envmap::kSphere, envmap::kSeedSphere),
+                 sc = seedVsGl(g, face, envmap::kCube, envmap::kSeedCube);
   for (size_t b = 0; b + 1 < kAxisBins.size(); ++b) {
     const std::string k = ts::layout::fmt("%g", kAxisBins[b]) + "-" + ts::layout::fmt("%g", kAxisBins[b + 1]);
     out.push_back({"seed_sphere_vs_gl_deg[" + k + "]", ss.meanDeg[b], "seed 002's (N_x/2 + 1/2) against GL_SPHERE_MAP: mean angle, pixels this far off the view axis"});
@@ -211,4 +211,4 @@ inline void addStudies(envgl::EnvGL& g, int face, ts::Measurements& out) {
     out.push_back({"seed_cube_r_vs_gl_deg[" + k + "]", sc.meanDeg[b], "seed 002's R = 2 N_z N - I against r = 2 (N.I) N - I on the cube map: mean angle"});
   }
 }
-}  // namespace envstudy
+}  // namespace envmap

@@ -8,14 +8,14 @@
 //   lat-long (Blinn–Newell)  s = λ/2π + 1/2, t = φ/π + 1/2: a seam where λ
 //       wraps and whole rows of texels at the poles
 //   cube map (GL_TEXTURE_CUBE_MAP)  face = the largest |r_i|, (s, t) from the
-//       other two over it (env_world.hpp has the spec's table); texels 3√3
+//       other two over it (env_math.hpp has the spec's table); texels 3√3
 //       times larger in solid angle at a face's centre than at its corners
 //   sphere map (GL_SPHERE_MAP)  m = 2 sqrt(r_x^2 + r_y^2 + (r_z + 1)^2),
 //       s = r_x/m + 1/2: made for one eye; the whole back is squeezed into its rim
 //   dual paraboloid  s = r_x / (2 (1 + |r_z|)) + 1/2 on two discs: no seam
 //       inside a disc, a ring where they meet
 // and whether r is computed per vertex, (s,t,r) then interpolated, or per pixel.  The
-// world (env_world.hpp) is made so any direction can be read: colour = direction, lines
+// world (env_math.hpp) is made so any direction can be read: colour = direction, lines
 // every 15°, the six cube faces named.  Measured against the exact r per pixel: the
 // direction error in degrees of every parameterization x per vertex/pixel for the object
 // shown, and where it is largest (env_measure.hpp); texels per steradian, largest /
@@ -49,7 +49,7 @@
 #include "env_gl.hpp"
 #include "env_measure.hpp"
 #include "env_studies.hpp"
-#include "env_world.hpp"
+#include "env_math.hpp"
 
 namespace {
 using ts::layout::fmt;
@@ -59,13 +59,13 @@ enum View { kObjectView, kMapView, kCompareView };
 const char* const kEval[] = {"pixel", "vertex"};
 
 struct Found {  // what measure() found: the numbers for the captions and the pictures
-  envmeasure::ErrorStats current;                    // the shown state
-  std::array<envmeasure::ErrorStats, 4> compare;     // each parameterization, this object and evaluation
+  envmap::ErrorStats current;                    // the shown state
+  std::array<envmap::ErrorStats, 4> compare;     // each parameterization, this object and evaluation
   ts::Image picture, reference, error, map;          // object view, map view
   std::array<ts::Image, 4> pictures;                 // compare view
   ts::gl::CallList pictureGL, referenceGL;           // the GL calls that rendered them (the listings show them)
   std::array<ts::gl::CallList, 4> picturesGL;
-  envstudy::Mirror mirror;
+  envmap::Mirror mirror;
   double errorScale = 1;  // degrees shown yellow in the error picture
 };
 
@@ -126,15 +126,15 @@ class EnvironmentMapping final : public ts::Scene {
   ts::Measurements measure(ts::Renderer& r) override;
 
  private:
-  envgl::Pass pass(int param, int object, bool perVertex, bool directions, int size) const {
-    envgl::Pass p;
+  envmap::Pass pass(int param, int object, bool perVertex, bool directions, int size) const {
+    envmap::Pass p;
     p.param = param, p.object = object, p.perVertex = perVertex, p.directions = directions;
-    p.view = envstudy::viewMatrix(orbit_.yaw, orbit_.pitch);
-    p.projection = envstudy::projectionMatrix(orbit_.zoom);
+    p.view = envmap::viewMatrix(orbit_.yaw, orbit_.pitch);
+    p.projection = envmap::projectionMatrix(orbit_.zoom);
     // No texture coordinates: view * model becomes glLoadMatrixf(GL_MODELVIEW) in EnvGL::draw, r comes from it.
     p.model = glm::rotate(glm::mat4(1.0f), glm::radians(tilt_), glm::vec3(1, 0, 0)) *
               glm::rotate(glm::mat4(1.0f), glm::radians(turn_), glm::vec3(0, 1, 0));
-    p.sphereView = glm::dmat3(glm::mat3(sphereEye_ ? envstudy::viewMatrix(0, 0) : p.view));
+    p.sphereView = glm::dmat3(glm::mat3(sphereEye_ ? envmap::viewMatrix(0, 0) : p.view));
     p.faceTexels = face_, p.w = p.h = size;
     return p;
   }
@@ -151,7 +151,7 @@ class EnvironmentMapping final : public ts::Scene {
         if (scale < p95) scale = std::max(scale, m * step);
     return scale;
   }
-  int param_ = envmap::kCube, object_ = envgl::kSphereObject, eval_ = 0, view_ = kObjectView, sphereEye_ = 0;
+  int param_ = envmap::kCube, object_ = envmap::kSphereObject, eval_ = 0, view_ = kObjectView, sphereEye_ = 0;
   int face_ = 64, render_ = 320;
   float turn_ = 0, tilt_ = 0;
   ts::OrbitCamera orbit_;
@@ -160,7 +160,7 @@ class EnvironmentMapping final : public ts::Scene {
 ts::TextureDesc image(const ts::Image& img, const std::string& what) {
   return ts::renderedImageTexture(img, "environment_mapping_render", what, "environment_mapping");
 }
-std::string statsLine(const envmeasure::ErrorStats& s) {
+std::string statsLine(const envmap::ErrorStats& s) {
   return fmt("error mean %.2f", s.mean) + fmt(", 95%% %.2f", s.p95) + fmt(", max %.1f deg", s.max) + " (" + s.maxRegion + ")";
 }
 
@@ -217,7 +217,7 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(found->current) : "",
        found ? found->pictureGL : nullptr);
   std::string refNote;
-  if (found && object_ == envgl::kMirror)
+  if (found && object_ == envmap::kMirror)
     refNote = fmt("red: a near ball, %.0f px; a map made at the centre shows it at ", found->mirror.truePixels) +
               fmt("%.0f px", found->mirror.mapPixels) + fmt(", %.0f right", found->mirror.both);
   show(cells[1], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel", refNote,
@@ -229,17 +229,17 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
 }
 
 ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
-  envgl::EnvGL& g = r.attachment<envgl::EnvGL>();
+  envmap::EnvGL& g = r.attachment<envmap::EnvGL>();
   ts::Measurements out;
   Found found;
   const int kMeasureSize = 256;  // the table: every parameterization x evaluation for this object at 256 x 256
   for (int o = object_; o == object_; ++o) {
-    const envgl::Pixels ref = g.draw(pass(-1, o, false, true, kMeasureSize));
+    const envmap::Pixels ref = g.draw(pass(-1, o, false, true, kMeasureSize));
     for (int p = 0; p < envmap::kParams; ++p)
       for (int e = 0; e < 2; ++e) {
-        const envgl::Pass ps = pass(p, o, e == 1, true, kMeasureSize);
-        const envmeasure::ErrorStats s = envmeasure::errorStats(p, g.draw(ps), ref, ps.eyeRotation());
-        const std::string key = std::string(envmap::kParamKeys[p]) + "/" + envgl::kObjectKeys[o] + "/" + kEval[e];
+        const envmap::Pass ps = pass(p, o, e == 1, true, kMeasureSize);
+        const envmap::ErrorStats s = envmap::errorStats(p, g.draw(ps), ref, ps.eyeRotation());
+        const std::string key = std::string(envmap::kParamKeys[p]) + "/" + envmap::kObjectKeys[o] + "/" + kEval[e];
         out.push_back({"error_mean_deg[" + key + "]", s.mean, "mean direction error against the exact r, degrees"});
         out.push_back({"error_p95_deg[" + key + "]", s.p95, "95th percentile of the direction error, degrees"});
         out.push_back({"error_max_deg[" + key + "]", s.max, "largest direction error, degrees, in region " + s.maxRegion});
@@ -249,8 +249,8 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
         if (o == object_ && e == eval_) found.compare[size_t(p)] = s;
       }
     for (int p = 0; p < envmap::kParams; ++p) {
-      const envgl::Pass ps = pass(p, o, false, true, kMeasureSize);
-      for (const auto& [region, t] : envmeasure::texelShape(p, face_, ref, ps.sphereView, ps.eyeRotation())) {
+      const envmap::Pass ps = pass(p, o, false, true, kMeasureSize);
+      for (const auto& [region, t] : envmap::texelShape(p, face_, ref, ps.sphereView, ps.eyeRotation())) {
         const std::string k = std::string(envmap::kParamKeys[p]) + "@" + region;
         out.push_back({"texel_extent_deg[" + k + "]", t.extentDeg, "mean size of the texel read here, degrees along its longer side"});
         out.push_back({"texel_aspect[" + k + "]", t.aspect, "mean longer / shorter side of the texel read here"});
@@ -260,37 +260,37 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
   }
   // The shown state's pictures, their GL calls recorded for the listings (map and target made again: the calls show how).
   const int n = render_;
-  auto recorded = [&](const envgl::Pass& ps, ts::gl::CallList* calls) {
-    envgl::Pixels px;
+  auto recorded = [&](const envmap::Pass& ps, ts::gl::CallList* calls) {
+    envmap::Pixels px;
     g.forget(ps);
     *calls = ts::recordRender(r, [&] { px = g.draw(ps); });
     return px;
   };
-  const envgl::Pixels ref = recorded(pass(-1, object_, false, true, n), &found.referenceGL);
-  const envgl::Pass shown = pass(param_, object_, eval_ == 1, true, n);
-  const envgl::Pixels looked = g.draw(shown);
+  const envmap::Pixels ref = recorded(pass(-1, object_, false, true, n), &found.referenceGL);
+  const envmap::Pass shown = pass(param_, object_, eval_ == 1, true, n);
+  const envmap::Pixels looked = g.draw(shown);
   std::vector<float> perPixel;
-  found.current = envmeasure::errorStats(param_, looked, ref, shown.eyeRotation(), &perPixel);
+  found.current = envmap::errorStats(param_, looked, ref, shown.eyeRotation(), &perPixel);
   out.insert(out.begin(), {"error_max_deg[shown]", found.current.max, "the picture shown: largest direction error, degrees"});
   out.insert(out.begin(), {"error_mean_deg[shown]", found.current.mean, "the picture shown: mean direction error, degrees"});
-  found.picture = envmeasure::colourImage(recorded(pass(param_, object_, eval_ == 1, false, n), &found.pictureGL));
-  found.reference = envmeasure::referenceImage(ref);
+  found.picture = envmap::colourImage(recorded(pass(param_, object_, eval_ == 1, false, n), &found.pictureGL));
+  found.reference = envmap::referenceImage(ref);
   found.errorScale = errorScale(found.current.p95);
-  found.error = envmeasure::errorImage(perPixel, n, n, found.errorScale);
-  found.map = envmeasure::mapImage(param_, face_, shown.sphereView, &looked);
+  found.error = envmap::errorImage(perPixel, n, n, found.errorScale);
+  found.map = envmap::mapImage(param_, face_, shown.sphereView, &looked);
   if (view_ == kCompareView)
     for (int p = 0; p < 4; ++p)
       found.pictures[size_t(p)] =
-          envmeasure::colourImage(recorded(pass(p, object_, eval_ == 1, false, n), &found.picturesGL[size_t(p)]));
-  if (object_ == envgl::kMirror) {  // the flat mirror: where a nearby ball should appear (red in the reference)
-    const envgl::Pass ps = pass(-1, object_, false, true, n);
-    found.mirror = envstudy::mirrorNear(ref, ps.projection, ps.view, ps.model);
+          envmap::colourImage(recorded(pass(p, object_, eval_ == 1, false, n), &found.picturesGL[size_t(p)]));
+  if (object_ == envmap::kMirror) {  // the flat mirror: where a nearby ball should appear (red in the reference)
+    const envmap::Pass ps = pass(-1, object_, false, true, n);
+    found.mirror = envmap::mirrorNear(ref, ps.projection, ps.view, ps.model);
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x)
         if (found.mirror.trueMask[size_t(y) * size_t(n) + size_t(x)]) found.reference.set(x, n - 1 - y, {230, 40, 40, 255});
   }
   ts::measureProgress(0.6);
-  envstudy::addStudies(g, face_, out);  // the seeds' examples, solid angle, the stale sphere map, the near ball
+  envmap::addStudies(g, face_, out);  // the seeds' examples, solid angle, the stale sphere map, the near ball
   out.push_back({"texels", double(envmap::mapTexels(envmap::Param(param_), face_)), "texels of the shown map"});
   out.detail = found;
   return out;

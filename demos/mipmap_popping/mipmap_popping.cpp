@@ -31,21 +31,21 @@
 // glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, bias) and
 // glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, n) (where
 // the extension is; n = 1 but for the anisotropic filter); Renderer::draw
-// sends each plane (sweep.hpp: facingBatch, probeBatch, addSlant) as
+// sends each plane (mipmap_sweep.hpp: facingBatch, probeBatch, addSlant) as
 // glTexCoord4f(s, t, 0, 1) + glVertex3f, (s, t) the plane's own (x, y) (the
 // slant's (x, -z)), and GL picks the level from their screen derivatives.
-// The slant's reference panel is a GLSL program (sweep.hpp: referenceFS,
+// The slant's reference panel is a GLSL program (mipmap_sweep.hpp: referenceFS,
 // 8 x 8 texture2D lookups of level 0 per pixel).  Listings:
 // book_figures/mip_popping_filmstrip.gl.txt, mip_anisotropic.gl.txt;
 // mip_popping_plot.gl.txt draws only the plot (the sweep's renders are
-// sweep.hpp's, through Renderer::renderOffscreen).
+// mipmap_sweep.hpp's, through Renderer::renderOffscreen).
 //
 // The distance: the camera's focal length is 256 pixels and the 256-texel
 // texture repeats once per world unit, so at distance d a pixel covers d
-// texels and --distance-log2 x is the LOD (mip_math.hpp derives it).
+// texels and --distance-log2 x is the LOD (mipmap_math.hpp derives it).
 //
 // Measured (printed, and on screen), every pass at a fixed size through
-// Renderer::renderOffscreen (sweep.hpp): the chain's memory overhead (~1/3);
+// Renderer::renderOffscreen (mipmap_sweep.hpp): the chain's memory overhead (~1/3);
 // the level GL used at the current distance, read back from the coloured
 // levels, next to the analytic LOD; the popping measure of every filter —
 // the largest jump of the probe's mean colour (coloured levels, 32 x 32
@@ -78,14 +78,14 @@
 #include "common/core/scene.hpp"
 #include "common/core/text.hpp"
 #include "common/core/textures.hpp"
-#include "mip_math.hpp"
+#include "mipmap_math.hpp"
 #include "mipmap_views.hpp"
-#include "sweep.hpp"
+#include "mipmap_sweep.hpp"
 
 namespace {
-using namespace mipmath;
+using namespace mipmap;
 
-using namespace mipviews;  // the views, their options' values, the results they draw
+using namespace mipmap::views;  // the views, their options' values, the results they draw
 
 using ts::layout::fmt;
 
@@ -175,10 +175,10 @@ class MipmapPopping final : public ts::Scene {
     double p = std::fmod(x, 2 * span);
     return kMinLog2 + (p <= span ? p : 2 * span - p);
   }
-  using Result = mipviews::Result;  // what measure() found (null: not measured yet)
+  using Result = mipmap::views::Result;  // what measure() found (null: not measured yet)
   // The drawing (mipmap_views.hpp) for the current flags.
-  mipviews::Views views() const { return {look(), levels_, animate_, shownLog2()}; }
-  sweep::Look look() const { return {filter_, aniso_, bias_, texture_, linearLight_, &picture_, camera_}; }
+  mipmap::views::Views views() const { return {look(), levels_, animate_, shownLog2()}; }
+  mipmap::Look look() const { return {filter_, aniso_, bias_, texture_, linearLight_, &picture_, camera_}; }
 
 
   int view_ = kSingle, filter_ = kNearestMipNearest, aniso_ = 16, levels_ = kSplit, texture_ = 0;
@@ -194,7 +194,7 @@ class MipmapPopping final : public ts::Scene {
 ts::Frame MipmapPopping::build(int width, int height, const ts::Measurements& measured) const {
   const Result* m = measured.detailAs<Result>();
   ts::Frame f = ts::layout::blankFrame(width, height);
-  // The planes' (s, t) are their (x, y) or (x, -z): glTexCoord4f(s, t, 0, 1) in Renderer::draw (sweep.hpp).
+  // The planes' (s, t) are their (x, y) or (x, -z): glTexCoord4f(s, t, 0, 1) in Renderer::draw (mipmap_sweep.hpp).
   switch (view_) {
     case kSingle: views().buildSingle(f, m); break;
     case kFilmstrip: views().buildFilmstrip(f, m); break;
@@ -213,29 +213,29 @@ ts::Measurements MipmapPopping::measure(ts::Renderer& r) {
   if (out.anisotropy) glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &out.maxAnisotropy);
 
   // 1. The chain's memory.
-  ts::TextureDesc tex = sweep::texture(look());
+  ts::TextureDesc tex = mipmap::texture(look());
   std::vector<ts::Image> chain = ts::buildMipChain(*tex.image, linearLight_);
   out.overhead = ts::mipChainOverhead(chain);
   ts::Rgba top = chain.back().at(0, 0);
   out.topLevel = (top.r + top.g + top.b) / 3.0;
 
   // 2. The level observed at the current distance.
-  Mean now = sweep::probeAt(r, look(), distLog2_);
+  Mean now = mipmap::probeAt(r, look(), distLog2_);
   out.levelObserved = levelFromColour(now, kLevels, &out.residual);
 
   // 3. Popping: every filter over the sweep.
-  out.sweepLods = sweep::sweepLods();
+  out.sweepLods = mipmap::sweepLods();
   for (int fl = 0; fl < kFilterCount; ++fl) {
     ts::measureProgress(0.1 + 0.6 * fl / kFilterCount);  // a window shows it; a newer key stops here
-    sweep::Look lk = look();
+    mipmap::Look lk = look();
     lk.filter = fl;
-    out.sweepMeans.push_back(sweep::probeSweep(r, lk, out.sweepLods));
+    out.sweepMeans.push_back(mipmap::probeSweep(r, lk, out.sweepLods));
     out.popping[fl] = poppingMeasure(out.sweepMeans.back());
   }
 
   // 4. Far-field error on the slanted plane against the supersampled reference.
   ts::measureProgress(0.7);
-  sweep::SlantErrors se = sweep::slantErrors(r, look());
+  mipmap::SlantErrors se = mipmap::slantErrors(r, look());
   for (int fl = 0; fl < kFilterCount; ++fl) out.farError[fl] = se.error[fl];
   out.farPixels = se.pixels;
 

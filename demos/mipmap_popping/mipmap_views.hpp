@@ -17,11 +17,11 @@
 #include "common/core/plot.hpp"
 #include "common/core/text.hpp"
 #include "common/core/textures.hpp"
-#include "mip_math.hpp"
-#include "sweep.hpp"
+#include "mipmap_math.hpp"
+#include "mipmap_sweep.hpp"
 
-namespace mipviews {
-using namespace mipmath;
+namespace mipmap::views {
+using namespace mipmap;
 using ts::layout::fmt;
 
 enum View { kSingle, kFilmstrip, kPlot, kSlant };
@@ -43,7 +43,7 @@ struct Result {
 
 // The demo's state as the views see it (its flags), and how it draws them.
 struct Views {
-  sweep::Look look_;      // filter, anisotropy, bias, texture, camera
+  mipmap::Look look_;      // filter, anisotropy, bias, texture, camera
   int levels_ = kSplit;   // how the level colours show
   bool animate_ = false;
   double shown_ = 0;      // the plane's log2 distance as drawn
@@ -59,17 +59,17 @@ const glm::vec4 kGrey{0.75f, 0.75f, 0.78f, 1.0f},
     kBox{0.0f, 0.0f, 0.0f, 0.65f};
 
 // A facing-plane panel: the plane (split or not) at log2 distance x.
-inline void addFacing(ts::Frame& f, ts::Panel& p, double x, const sweep::Look& look, int levels) {
+inline void addFacing(ts::Frame& f, ts::Panel& p, double x, const mipmap::Look& look, int levels) {
   Camera cam = facingCamera(p.viewport.w, p.viewport.h, facingDistance(x));
   p.projection = cam.projection(p.viewport.w, p.viewport.h);
   p.modelview = cam.modelview();
   if (levels == kTextureOnly || levels == kColoursOnly) {
-    int t = f.addTexture(levels == kColoursOnly ? sweep::colouredTexture(look) : sweep::texture(look));
-    p.batches.push_back(sweep::facingBatch(facingDistance(x), t, -kPlaneHalf, kPlaneHalf));
+    int t = f.addTexture(levels == kColoursOnly ? mipmap::colouredTexture(look) : mipmap::texture(look));
+    p.batches.push_back(mipmap::facingBatch(facingDistance(x), t, -kPlaneHalf, kPlaneHalf));
   } else {
-    int t = f.addTexture(sweep::texture(look)), c = f.addTexture(sweep::colouredTexture(look));
-    p.batches.push_back(sweep::facingBatch(facingDistance(x), t, -kPlaneHalf, 0));
-    p.batches.push_back(sweep::facingBatch(facingDistance(x), c, 0, kPlaneHalf));
+    int t = f.addTexture(mipmap::texture(look)), c = f.addTexture(mipmap::colouredTexture(look));
+    p.batches.push_back(mipmap::facingBatch(facingDistance(x), t, -kPlaneHalf, 0));
+    p.batches.push_back(mipmap::facingBatch(facingDistance(x), c, 0, kPlaneHalf));
   }
 }
 
@@ -101,7 +101,7 @@ inline void Views::buildSingle(ts::Frame& f, const Result* m) const {
   probe.id = "probe_outline";
   probe.viewport = {0, 0, w, h};
   probe.projection = glm::ortho(0.0f, float(w), float(h), 0.0f, -1.0f, 1.0f);
-  float cx = float(levels_ == kSplit ? 3 * w / 4 : w / 2), cy = float(h / 2), r = float(sweep::kCell / 2) + 1.5f;
+  float cx = float(levels_ == kSplit ? 3 * w / 4 : w / 2), cy = float(h / 2), r = float(mipmap::kCell / 2) + 1.5f;
   // Black under white: visible on every level colour.
   for (float k : {1.0f, 0.0f}) {
     float q = r + k;
@@ -176,7 +176,7 @@ inline void Views::buildFilmstrip(ts::Frame& f, const Result* m) const {
   for (int b = 0; b < bands; ++b)
     for (int r = 0; r < 2; ++r) {
       int y = rowsTop + b * bandH + r * (cell + line + gap) + line;
-      sweep::Look lk = look_;
+      mipmap::Look lk = look_;
       lk.filter = rows[r];
       std::string name = std::string(filterGLName(rows[r])) + (rows[r] == kAnisotropic ? " x" + std::to_string(look_.anisotropy) : "");
       if (m) name += "   popping " + fmt("%.1f", m->popping[rows[r]]);
@@ -288,9 +288,9 @@ inline ts::Panel farFieldOutline(const ts::Rect& vp, const ts::OrbitCamera& orbi
   o.id = "far_field_outline";
   o.viewport = vp;
   o.projection = glm::ortho(0.0f, float(vp.w), float(vp.h), 0.0f, -1.0f, 1.0f);
-  Camera cam = sweep::slantCamera(vp.w, vp.h, orbit);
+  Camera cam = mipmap::slantCamera(vp.w, vp.h, orbit);
   Plane ground = groundPlane();
-  for (double lod : {sweep::kFarLodLo, sweep::kFarLodHi}) {
+  for (double lod : {mipmap::kFarLodLo, mipmap::kFarLodHi}) {
     std::vector<glm::vec2> pts;
     for (int x = 0; x <= vp.w; x += 4) {
       for (int y = vp.h - 1; y >= 0; --y) {
@@ -302,7 +302,7 @@ inline ts::Panel farFieldOutline(const ts::Rect& vp, const ts::OrbitCamera& orbi
         }
       }
     }
-    ts::Batch b = ts::lineSegments(pts, kWhite, 2.0f, lod == sweep::kFarLodLo ? "far_field_near_edge" : "far_field_far_edge");
+    ts::Batch b = ts::lineSegments(pts, kWhite, 2.0f, lod == mipmap::kFarLodLo ? "far_field_near_edge" : "far_field_far_edge");
     b.prim = ts::Prim::LineStrip;
     if (pts.size() > 1) o.batches.push_back(b);
   }
@@ -332,9 +332,9 @@ inline void Views::buildSlant(ts::Frame& f, const Result* m) const {
     ts::Panel p;
     p.id = fl < 0 ? std::string("slant_reference") : "slant_" + filterKey(fl);
     p.viewport = {cx, cy, pw, ph};
-    sweep::Look lk = look_;
+    mipmap::Look lk = look_;
     if (fl >= 0) lk.filter = fl;
-    sweep::addSlant(f, p, lk, fl < 0 ? sweep::kReferenceProgram : levels_ == kColoursOnly ? sweep::kColoured : sweep::kTextured,
+    mipmap::addSlant(f, p, lk, fl < 0 ? mipmap::kReferenceProgram : levels_ == kColoursOnly ? mipmap::kColoured : mipmap::kTextured,
                     h);
     f.panels.push_back(p);
     const L::Box above{float(cx), float(cy - line + 2), float(cx + pw), float(cy - 1)},
@@ -343,7 +343,7 @@ inline void Views::buildSlant(ts::Frame& f, const Result* m) const {
     if (fl < 0) {
       t = "reference: 8x8 samples/pixel (GLSL)";
       f.panels.push_back(farFieldOutline(p.viewport, look_.orbit));  // the far field's two edges
-      L::caption(f, below, "far field: LOD " + fmt("%g", sweep::kFarLodLo) + " to " + fmt("%g", sweep::kFarLodHi), kWhite,
+      L::caption(f, below, "far field: LOD " + fmt("%g", mipmap::kFarLodLo) + " to " + fmt("%g", mipmap::kFarLodHi), kWhite,
                  sc, ts::Align::Left);
     } else {
       t = fl == kAnisotropic ? "anisotropic x" + std::to_string(look_.anisotropy) : std::string(filterGLName(fl));
@@ -358,11 +358,11 @@ inline void Views::buildSlant(ts::Frame& f, const Result* m) const {
     L::caption(f, above, t, fl == look_.filter ? kAmber : kWhite, sc, ts::Align::Left);
   }
   const std::string note1 = "error: RMS (R,G,B, 8-bit) against the reference in the far field, LOD " +
-                            fmt("%g", sweep::kFarLodLo) + ".." + fmt("%g", sweep::kFarLodHi) + " (between the white lines)";
-  std::string note2 = "measured at " + std::to_string(sweep::kSlantW) + "x" + std::to_string(sweep::kSlantH);
+                            fmt("%g", mipmap::kFarLodLo) + ".." + fmt("%g", mipmap::kFarLodHi) + " (between the white lines)";
+  std::string note2 = "measured at " + std::to_string(mipmap::kSlantW) + "x" + std::to_string(mipmap::kSlantH);
   if (m) note2 += " on " + m->renderer;
   L::Column notes(f, {4, float(std::min(h - 2 * line, line / 2 + kRows * (ph + 2 * line + gap))), float(w - 4), float(h)});
   notes.add(note1, kGrey, sc);
   notes.add(note2, kGrey, sc);
 }
-}  // namespace mipviews
+}  // namespace mipmap::views

@@ -17,7 +17,7 @@
 //   seed's row walk,
 // and compared with R, n x n (--rays; the figures 12 x 12) stratified jittered
 // rays per pixel traced finely on the CPU, weighted by the same Gaussian
-// kernel (relief.hpp).  Printed and written as CSV (measure.hpp; --csv FILE,
+// kernel (parallax_math.hpp).  Printed and written as CSV (parallax_measure.hpp; --csv FILE,
 // make_figures writes parallax_modes.csv): PSNR and SSIM over the whole
 // frame, the high-anisotropy pixels and the occlusion band (footprints that
 // cross an occluding edge), ms per frame, lookups per pixel, the renderer.
@@ -61,11 +61,11 @@
 #include "common/core/text.hpp"
 #include "common/core/user_texture.hpp"
 #include "common/core/scene.hpp"
-#include "measure.hpp"
+#include "parallax_measure.hpp"
 #include "parallax_gl.hpp"
 #include "parallax_live.hpp"
 #include "parallax_views.hpp"
-#include "relief.hpp"
+#include "parallax_math.hpp"
 
 namespace {
 using namespace pax;

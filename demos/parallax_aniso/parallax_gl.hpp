@@ -60,7 +60,7 @@
 #include "common/gl/gl.hpp"
 #include "common/gl/render.hpp"
 #include "common/gl/render_target.hpp"
-#include "relief.hpp"
+#include "parallax_math.hpp"
 
 namespace pax {
 constexpr const char* kSourceFile = "demos/parallax_aniso/parallax_gl.hpp";

@@ -19,7 +19,7 @@
 #include "common/gl/render.hpp"
 #include "common/core/text.hpp"
 #include "common/core/textures.hpp"
-#include "measure.hpp"
+#include "parallax_measure.hpp"
 #include "parallax_gl.hpp"
 
 namespace pax::views {

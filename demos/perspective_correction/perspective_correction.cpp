@@ -46,7 +46,7 @@
 #include "common/core/textures.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/core/user_texture.hpp"
-#include "perspective_map.hpp"
+#include "perspective_math.hpp"
 #include "perspective_measure.hpp"  // the texel-index comparison, the results and the plot
 
 namespace {
@@ -54,7 +54,7 @@ enum View { kBoth, kAffine, kPerspective, kPlot };
 enum Variant { kAffineVariant, kPerspectiveVariant };
 
 // The measurement's sizes and sweep (perspective_measure.hpp).
-using perspmeasure::kMeasureSize, perspmeasure::kIndexTexels, perspmeasure::kSweepStepDeg, perspmeasure::kSweepMaxDeg;
+using persp::kMeasureSize, persp::kIndexTexels, persp::kSweepStepDeg, persp::kSweepMaxDeg;
 
 using ts::layout::fmt;
 namespace plot = ts::plot;
@@ -113,9 +113,9 @@ class PerspectiveCorrection final : public ts::Scene {
   ts::TextureDesc checker() const;
   // The texel-index render of one variant at kMeasureSize, and the largest
   // error of the texels it took against the perspective-correct (s, t).
-  using Pass = perspmeasure::Pass;
+  using Pass = persp::Pass;
   Pass measurePass(ts::Renderer& r, const persp::Setup& s, Variant v, GLenum hint, ts::Image* out = nullptr) const;
-  using Result = perspmeasure::Result;  // what measure() found: the labels and the plot
+  using Result = persp::Result;  // what measure() found: the labels and the plot
 
   int view_ = kBoth, filter_ = 2;
   float tilt_ = 60.0f, distance_ = 1.5f;
@@ -179,18 +179,18 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
   // The book's call.  The right (and single perspective) image is drawn under GL_NICEST; the affine-only
   // view asks for GL_FASTEST, which Mesa ignores — and which cannot matter to it anyway, since w = 1 everywhere.
   f.perspectiveHint = view_ == kAffine ? GL_FASTEST : GL_NICEST;
-  const glm::vec4 &white = ts::layout::kWhite, &grey = perspmeasure::kGrey;
+  const glm::vec4 &white = ts::layout::kWhite, &grey = persp::kGrey;
   const persp::Setup s = setup();
   const Result* last = measured.detailAs<Result>();
   const bool have = last && last->setup.tiltDeg == s.tiltDeg && last->setup.distance == s.distance;
 
   if (view_ == kPlot) {
-    plot::draw(f, perspmeasure::plotSpec(s, last), {0, 0, width, height});
+    plot::draw(f, persp::plotSpec(s, last), {0, 0, width, height});
     return f;
   }
   int tex = f.addTexture(checker());
   // The notes: the hint test, and the measured error against the rule of thumb (perspective_measure.hpp).
-  const auto notes = perspmeasure::notes(s, have ? last : nullptr);
+  const auto notes = persp::notes(s, have ? last : nullptr);
   // Room for the notes under the pictures (at most a third of the height).
   const float margin = 8, noteW = float(width) - 2 * margin;
   float notesH = 0;
@@ -242,7 +242,7 @@ PerspectiveCorrection::Pass PerspectiveCorrection::measurePass(ts::Renderer& r, 
   mf.panels.push_back(p);
   ts::Image img = r.renderOffscreen(mf);
   // Every covered pixel's texel against the ray through it (perspective_measure.hpp).
-  Pass pass = perspmeasure::compare(img, s, v == kAffineVariant);
+  Pass pass = persp::compare(img, s, v == kAffineVariant);
   if (out) *out = std::move(img);
   return pass;
 }

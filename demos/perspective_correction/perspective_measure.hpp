@@ -1,7 +1,7 @@
 // demos/perspective_correction/perspective_measure.hpp — the measurement of
 // demos/perspective_correction and its plot: what a texel-index render of
 // the square says about each pixel's (s, t) against the perspective-correct
-// value (perspective_map.hpp), the results measure() keeps, and the plot of
+// value (perspective_math.hpp), the results measure() keeps, and the plot of
 // the screen-linear error against the book's (d2 - d1)/d1.  Kept out of
 // perspective_correction.cpp so that file shows the figure first.
 #pragma once
@@ -17,9 +17,9 @@
 #include "common/core/layout.hpp"
 #include "common/core/plot.hpp"
 #include "common/core/textures.hpp"
-#include "perspective_map.hpp"
+#include "perspective_math.hpp"
 
-namespace perspmeasure {
+namespace persp {
 // Measurement passes: a square N x N render (aspect 1, so the sweep's numbers
 // do not depend on the window) of a 2048-texel index texture: one texel of it
 // is 1/8 texel of the 256-texel checkerboard, so each pixel's (s, t) is known
@@ -138,4 +138,4 @@ inline ts::plot::Spec plotSpec(const persp::Setup& s, const Result* last) {
   p.xTicks = plot::ticks(0, p.x1, xs), p.yTicks = plot::ticks(0, p.y1, ys);
   return p;
 }
-}  // namespace perspmeasure
+}  // namespace persp

@@ -20,7 +20,7 @@
 // What the GL does: common/gl/render.cpp: Renderer::draw sends the square as
 // one glBegin(GL_TRIANGLES) of six glTexCoord4f(s, t, 0, 1) + glVertex3f
 // (addSquare below), and GL interpolates (s, t) linearly in each triangle.
-// Projective: glTexCoord4f(s·q, t·q, 0, q) from quad_map.hpp's homography,
+// Projective: glTexCoord4f(s·q, t·q, 0, q) from quad_math.hpp's homography,
 // divided by q per pixel.  Bilinear: a GLSL program, texture2D(tex,
 // mix(bottom, top, ab.y)), the corners sent by glUniform4f.  Listings:
 // book_figures/vi1_quad_distortion.gl.txt, vi1_quad_variants.gl.txt.
@@ -37,12 +37,12 @@
 #include "common/core/text.hpp"
 #include "common/core/textures.hpp"
 #include "common/core/user_texture.hpp"
-#include "quad_map.hpp"
+#include "quad_math.hpp"
 #include "quad_measure.hpp"  // the kink fitted from a texel-index render
 #include "quad_views.hpp"    // the texture-space view and the corner labels
 
 namespace {
-using quadmap::Diagonal;
+using quad::Diagonal;
 
 enum Interp { kAffine, kBilinear, kProjective };
 const char* const kInterpNames[] = {"affine", "bilinear", "projective"};
@@ -89,7 +89,7 @@ class QuadDistortion final : public ts::Scene {
     picture_.addOption(o, "the checkerboard");
     o.addText("corners", &cornersText_,
               "(s,t) at the square's corners (0,0) (1,0) (1,1) (0,1): \"s,t s,t s,t s,t\"",
-              [](const std::string& v) { quadmap::parseCorners(v); });
+              [](const std::string& v) { quad::parseCorners(v); });
   }
 
   std::vector<ts::FigureSpec> figures() const override {
@@ -113,7 +113,7 @@ class QuadDistortion final : public ts::Scene {
     Diagonal diagonal;
     Interp interp;
   };
-  quadmap::Corners corners() const { return quadmap::parseCorners(cornersText_); }
+  quad::Corners corners() const { return quad::parseCorners(cornersText_); }
   // The variants the view shows: the current one (book), or both diagonals and then the two fixes (compare).
   std::vector<Variant> shown() const {
     if (view_ == 0) return {{Diagonal(diagonal_), Interp(interp_)}};
@@ -133,14 +133,14 @@ class QuadDistortion final : public ts::Scene {
   // The bend the math predicts: closed form for the affine split, the same
   // angle measured on the analytic map for the others (smooth: about 0).
   double predicted(Variant v) const {
-    if (v.interp == kAffine) return quadmap::predictedKinkDeg(corners(), v.diagonal);
-    return quadmap::kinkAcrossDiagonalDeg([&](glm::dvec2 p) { return analytic(v, p); }, v.diagonal);
+    if (v.interp == kAffine) return quad::predictedKinkDeg(corners(), v.diagonal);
+    return quad::kinkAcrossDiagonalDeg([&](glm::dvec2 p) { return analytic(v, p); }, v.diagonal);
   }
   glm::dvec2 analytic(Variant v, glm::dvec2 p) const {
-    quadmap::Corners st = corners();
-    if (v.interp == kBilinear) return quadmap::bilinear(st, p);
-    if (v.interp == kProjective) return quadmap::projective(quadmap::homography(st), p);
-    return quadmap::split(st, v.diagonal).at(p, v.diagonal)(p);
+    quad::Corners st = corners();
+    if (v.interp == kBilinear) return quad::bilinear(st, p);
+    if (v.interp == kProjective) return quad::projective(quad::homography(st), p);
+    return quad::split(st, v.diagonal).at(p, v.diagonal)(p);
   }
 
   int diagonal_ = 0, interp_ = kAffine, view_ = 0, filter_ = 1, checks_ = 8;
@@ -155,15 +155,15 @@ std::string variantName(const QuadDistortion::Variant& v) {
 }
 
 void QuadDistortion::addSquare(ts::Frame& f, ts::Panel& p, Variant v, int texture, bool edges) const {
-  quadmap::Corners st = corners();
-  const auto& P = quadmap::squareCorners();
+  quad::Corners st = corners();
+  const auto& P = quad::squareCorners();
   // Vertex order of the two triangles for each diagonal.
   const int tlbr[6] = {0, 1, 3, 1, 2, 3}, bltr[6] = {0, 1, 2, 0, 2, 3};
   const int* idx = v.diagonal == Diagonal::TopLeftBottomRight ? tlbr : bltr;
   ts::Batch b;
   b.role = "surface";
   b.texture = texture;
-  glm::dmat3 H = quadmap::homography(st);
+  glm::dmat3 H = quad::homography(st);
   for (int k = 0; k < 6; ++k) {
     int i = idx[k];
     ts::Vertex vert;
@@ -172,7 +172,7 @@ void QuadDistortion::addSquare(ts::Frame& f, ts::Panel& p, Variant v, int textur
     switch (v.interp) {
       case kAffine: vert.tex = glm::vec4(glm::vec2(st[size_t(i)]), 0, 1); break;
       case kBilinear: vert.tex = glm::vec4(glm::vec2(P[size_t(i)]), 0, 1); break;  // (a, b); shader maps
-      case kProjective: vert.tex = glm::vec4(quadmap::projectiveTexCoord(H, P[size_t(i)])); break;
+      case kProjective: vert.tex = glm::vec4(quad::projectiveTexCoord(H, P[size_t(i)])); break;
     }
     b.vertices.push_back(vert);
   }
@@ -220,8 +220,8 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
     ts::Panel left = L::unitPanel("texture_space", cells[0].picture), right = L::unitPanel("screen_space", cells[1].picture);
     // The texture, the corners' region and the screen diagonal's image (quad_views.hpp; the affine
     // split's along its first triangle).
-    const quadmap::Split sp = quadmap::split(corners(), current.diagonal);
-    quadview::addTextureView(left, corners(), current.diagonal, checker, [&](glm::dvec2 q) {
+    const quad::Split sp = quad::split(corners(), current.diagonal);
+    quad::views::addTextureView(left, corners(), current.diagonal, checker, [&](glm::dvec2 q) {
       return current.interp == kAffine ? sp.first(q) : analytic(current, q);
     });
     addSquare(f, right, current, checker, edges_);
@@ -231,7 +231,7 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
       const L::Cell& c = cells[size_t(k)];
       L::caption(f, {c.above.x0, c.above.y0, c.above.x1, c.above.y1 - L::lineHeight(c.scale)}, titles[k], white,
                  c.scale);
-      quadview::cornerLabels(f, c, corners(), k == 1);
+      quad::views::cornerLabels(f, c, corners(), k == 1);
     }
     // The kink: under the pictures, across the window.
     const L::Cell& c = cells[1];
@@ -271,7 +271,7 @@ double QuadDistortion::measureKink(ts::Renderer& r, Variant v, double* texelErro
   addSquare(mf, p, v, tex, false);
   mf.panels.push_back(p);
   ts::Image img = r.renderOffscreen(mf);
-  return quadmeasure::kinkDeg(img, T, v.diagonal, [&](glm::dvec2 ab) { return analytic(v, ab); }, texelError);
+  return quad::kinkDeg(img, T, v.diagonal, [&](glm::dvec2 ab) { return analytic(v, ab); }, texelError);
 }
 
 ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
@@ -290,7 +290,7 @@ ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
     out.push_back({"kink_predicted_deg[" + key + "]", predicted(v), "the same angle from the analytic maps (closed form for the affine split)"});
     out.push_back({"texel_error_max[" + key + "]", texelError, "largest distance (texels of 2048) between the texel taken and the analytic one"});
   }
-  out.push_back({"split_disagreement_texels", quadmap::splitDisagreement(corners(), current.diagonal) * 256.0,
+  out.push_back({"split_disagreement_texels", quad::splitDisagreement(corners(), current.diagonal) * 256.0,
                  "how far apart the two triangles' maps put one point (256 texels)"});
   out.detail = kinks;
   return out;

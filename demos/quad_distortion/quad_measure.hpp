@@ -21,12 +21,12 @@
 #include "common/core/image.hpp"
 #include "common/core/probe.hpp"
 #include "common/core/textures.hpp"
-#include "quad_map.hpp"
+#include "quad_math.hpp"
 
-namespace quadmeasure {
-inline glm::dvec2 segmentCentre(quadmap::Diagonal d, int seg, int segments) {
+namespace quad {
+inline glm::dvec2 segmentCentre(quad::Diagonal d, int seg, int segments) {
   double u = (seg + 0.5) / segments;
-  return d == quadmap::Diagonal::TopLeftBottomRight ? glm::dvec2(u, 1 - u) : glm::dvec2(u, u);
+  return d == quad::Diagonal::TopLeftBottomRight ? glm::dvec2(u, 1 - u) : glm::dvec2(u, u);
 }
 
 // The kink (degrees) in `img`, an N x N texel-index render of the unit square
@@ -34,7 +34,7 @@ inline glm::dvec2 segmentCentre(quadmap::Diagonal d, int seg, int segments) {
 // (a, b) to the (s, t) the variant should show.  *texelError: the largest
 // distance (texels of T) between the texel taken and the analytic one.
 template <typename Analytic>
-double kinkDeg(const ts::Image& img, int T, quadmap::Diagonal diagonal, Analytic analytic, double* texelError) {
+double kinkDeg(const ts::Image& img, int T, quad::Diagonal diagonal, Analytic analytic, double* texelError) {
   const int N = img.width;
   // Samples per diagonal segment and side: [segment][side][s or t].
   constexpr int kSegments = 8;
@@ -53,7 +53,7 @@ double kinkDeg(const ts::Image& img, int T, quadmap::Diagonal diagonal, Analytic
       worst = std::max({worst, std::abs(std::floor(want.x) + 0.5 - si), std::abs(std::floor(want.y) + 0.5 - ti)});
       // Signed distance (pixels) from the diagonal, positive in the second
       // triangle, and position along it in [0, 1].
-      bool tlbr = diagonal == quadmap::Diagonal::TopLeftBottomRight;
+      bool tlbr = diagonal == quad::Diagonal::TopLeftBottomRight;
       double d = (tlbr ? ab.x + ab.y - 1.0 : ab.y - ab.x) * N / std::sqrt(2.0);
       double along = tlbr ? (ab.x - ab.y + 1.0) / 2.0 : (ab.x + ab.y) / 2.0;
       if (std::abs(d) < 1.5 || std::abs(d) > band || along <= 0 || along >= 1) continue;
@@ -70,8 +70,8 @@ double kinkDeg(const ts::Image& img, int T, quadmap::Diagonal diagonal, Analytic
   for (auto& seg : samples)
     for (int k = 0; k < 2; ++k) {
       ts::probe::Fit a = ts::probe::fit(seg[0][k], true), b = ts::probe::fit(seg[1][k], true);
-      kink = std::max(kink, quadmap::angleDeg({a.c[1], a.c[2]}, {b.c[1], b.c[2]}));
+      kink = std::max(kink, quad::angleDeg({a.c[1], a.c[2]}, {b.c[1], b.c[2]}));
     }
   return kink;
 }
-}  // namespace quadmeasure
+}  // namespace quad

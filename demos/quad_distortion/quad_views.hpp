@@ -12,20 +12,20 @@
 #include "common/core/layout.hpp"
 #include "common/gl/render.hpp"
 #include "common/core/text.hpp"
-#include "quad_map.hpp"
+#include "quad_math.hpp"
 
-namespace quadview {
+namespace quad::views {
 // Adds to `p` (a unit-square panel) the whole texture on the unit square (s,
 // t = a, b), the region the corners `st` select (red) and the image under
 // `map` ((a, b) -> (s, t)) of the screen diagonal `d` (orange).
 template <typename Map>
-void addTextureView(ts::Panel& p, const quadmap::Corners& st, quadmap::Diagonal d, int texture, Map map) {
+void addTextureView(ts::Panel& p, const quad::Corners& st, quad::Diagonal d, int texture, Map map) {
   p.batches.push_back(ts::layout::unitSquare(texture, "texture"));
   std::vector<glm::vec2> region;
   for (const auto& c : st) region.push_back(glm::vec2(c));
   p.batches.push_back(ts::lineLoop(region, {0.9f, 0.1f, 0.1f, 1.0f}, 3.0f, "region"));
-  glm::dvec2 a = d == quadmap::Diagonal::TopLeftBottomRight ? glm::dvec2(0, 1) : glm::dvec2(0, 0);
-  glm::dvec2 b = d == quadmap::Diagonal::TopLeftBottomRight ? glm::dvec2(1, 0) : glm::dvec2(1, 1);
+  glm::dvec2 a = d == quad::Diagonal::TopLeftBottomRight ? glm::dvec2(0, 1) : glm::dvec2(0, 0);
+  glm::dvec2 b = d == quad::Diagonal::TopLeftBottomRight ? glm::dvec2(1, 0) : glm::dvec2(1, 1);
   std::vector<glm::vec2> diag;
   for (int k = 0; k <= 32; ++k) diag.push_back(glm::vec2(map(glm::mix(a, b, k / 32.0))));
   ts::Batch line = ts::lineLoop(diag, {1.0f, 0.55f, 0.0f, 1.0f}, 2.0f, "diagonal_image");
@@ -37,9 +37,9 @@ void addTextureView(ts::Panel& p, const quadmap::Corners& st, quadmap::Diagonal 
 // corner of cell c's picture, in the cell's caption bands: the top corners
 // on the last line above, the bottom ones on the first line below (left out
 // where two would not fit side by side).
-inline void cornerLabels(ts::Frame& f, const ts::layout::Cell& c, const quadmap::Corners& st, bool withValues) {
+inline void cornerLabels(ts::Frame& f, const ts::layout::Cell& c, const quad::Corners& st, bool withValues) {
   namespace L = ts::layout;
-  const auto& P = quadmap::squareCorners();
+  const auto& P = quad::squareCorners();
   const ts::Rect& r = c.picture;
   int scale = c.scale;
   while (scale > 1 && 2 * ts::text::width("<0.75,0.75>", scale) + 8 > r.w) --scale;
@@ -55,4 +55,4 @@ inline void cornerLabels(ts::Frame& f, const ts::layout::Cell& c, const quadmap:
                  band);
   }
 }
-}  // namespace quadview
+}  // namespace quad::views

@@ -2,7 +2,7 @@
 // demos/sphere_projections: texture area / surface area per 20° band of
 // latitude, from a render whose pixels name their texels, and the pinch at
 // the poles.  Kept out of sphere_projections.cpp so that file shows the
-// figure first; the analytic values are in sphere_map.hpp.
+// figure first; the analytic values are in sphere_math.hpp.
 #pragma once
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -13,14 +13,14 @@
 
 #include "common/gl/render.hpp"
 #include "common/core/textures.hpp"
-#include "sphere_map.hpp"
+#include "sphere_math.hpp"
 
-namespace spheremeasure {
-using spheremap::kBands;
-using spheremap::Mapping;
+namespace sphere {
+using sphere::kBands;
+using sphere::Mapping;
 
 // The measurement pass: 9 panels (one per band) of kPanel pixels, whatever
-// the window's size, each showing one band's region (sphere_map.hpp's
+// the window's size, each showing one band's region (sphere_math.hpp's
 // regionBox).  2048 texels around the sphere: a texel is smaller than the
 // region's pixels except right at the poles, so a texel index pins every
 // pixel's (s, t) — and so its band, column and mesh cell — to < 1 pixel.
@@ -37,15 +37,15 @@ struct Result {
 // face-on (ortho, the sphere turned by rotateX(band centre)); the sphere is
 // drawn with a texture whose texels hold their own indices (GL_NEAREST), so
 // every pixel says which texel it took.  A region of the texture — the
-// band's rows, and the columns with |θ| <= spheremap::thetaHalfWidth — has a
+// band's rows, and the columns with |θ| <= sphere::thetaHalfWidth — has a
 // known area; the surface it landed on is the sum, over the pixels that took
 // one of its texels, of the pixel's area / |n·v| (n the normal of the mesh
 // cell the texel belongs to).  No derivatives: a pixel right at a pole, where
 // every s meets, counts like any other.
 inline Result measureMapping(ts::Renderer& r, Mapping m, int resolution) {
   Result res;
-  const ts::Mesh mesh = spheremap::sphereMesh(m, resolution);
-  const spheremap::MeshRatios mr = spheremap::meshRatios(mesh);
+  const ts::Mesh mesh = sphere::sphereMesh(m, resolution);
+  const sphere::MeshRatios mr = sphere::meshRatios(mesh);
   const int stacks = mesh.nv, slices = mesh.nu;
 
   ts::Frame f;
@@ -61,9 +61,9 @@ inline Result measureMapping(ts::Renderer& r, Mapping m, int resolution) {
     ts::Panel p;
     p.id = "band_" + std::to_string(b);
     p.viewport = {(b % 3) * kPanel, (b / 3) * kPanel, kPanel, kPanel};
-    glm::vec4 box(spheremap::regionBox(b));
+    glm::vec4 box(sphere::regionBox(b));
     p.projection = glm::ortho(box.x, box.y, box.z, box.w, -2.0f, 2.0f);
-    p.modelview = glm::rotate(glm::mat4(1.0f), float(spheremap::rad(spheremap::bandMid(b))), {1, 0, 0});
+    p.modelview = glm::rotate(glm::mat4(1.0f), float(sphere::rad(sphere::bandMid(b))), {1, 0, 0});
     p.depthTest = true;
     p.batches.push_back(surface);
     f.panels.push_back(p);
@@ -74,7 +74,7 @@ inline Result measureMapping(ts::Renderer& r, Mapping m, int resolution) {
   std::vector<int> rowBand(kTexels);
   for (int j = 0; j < kTexels; ++j)
     rowBand[size_t(j)] =
-        std::clamp(int((spheremap::phiFromT(m, (j + 0.5) / kTexels) + 90.0) / spheremap::kBandDeg), 0, kBands - 1);
+        std::clamp(int((sphere::phiFromT(m, (j + 0.5) / kTexels) + 90.0) / sphere::kBandDeg), 0, kBands - 1);
   auto thetaOf = [](int i) {  // texel column centre, degrees in (-180, 180]
     double th = 360.0 * (i + 0.5) / kTexels;
     return th > 180.0 ? th - 360.0 : th;
@@ -91,13 +91,13 @@ inline Result measureMapping(ts::Renderer& r, Mapping m, int resolution) {
   const double norm = mr.totalArea / mr.totalTexArea;  // the mesh's whole-sphere mean -> 1
   double lo = 1e300, hi = 0;
   for (int b = 0; b < kBands; ++b) {
-    const double halfWidth = spheremap::thetaHalfWidth(b), e = spheremap::rad(spheremap::bandMid(b));
+    const double halfWidth = sphere::thetaHalfWidth(b), e = sphere::rad(sphere::bandMid(b));
     const glm::dvec3 view(0.0, std::sin(e), std::cos(e));  // toward the camera, model coordinates
     long rows = 0, cols = 0;
     for (int j = 0; j < kTexels; ++j) rows += rowBand[size_t(j)] == b;
     for (int i = 0; i < kTexels; ++i) cols += std::abs(thetaOf(i)) <= halfWidth;
     const double texArea = double(rows) * double(cols) / (double(kTexels) * kTexels);
-    const glm::dvec4 box = spheremap::regionBox(b);
+    const glm::dvec4 box = sphere::regionBox(b);
     const double pixelArea = (box.y - box.x) / kPanel * (box.w - box.z) / kPanel;  // model units
     double surfArea = 0;
     const ts::Rect& vp = f.panels[size_t(b)].viewport;
@@ -108,12 +108,12 @@ inline Result measureMapping(ts::Renderer& r, Mapping m, int resolution) {
         ts::decodeTexelIndex(c, &i, &j);
         if (c.a != 255 || i >= kTexels || j >= kTexels) continue;
         if (rowBand[size_t(j)] != b || std::abs(thetaOf(i)) > halfWidth) continue;
-        double phi = spheremap::phiFromT(m, (j + 0.5) / kTexels);
+        double phi = sphere::phiFromT(m, (j + 0.5) / kTexels);
         int ci = std::min(slices - 1, i * slices / kTexels);
         int cj = std::clamp(int((phi + 90.0) / 180.0 * stacks), 0, stacks - 1);
         surfArea += pixelArea / std::abs(glm::dot(normal[size_t(cj) * size_t(slices) + size_t(ci)], view));
       }
-    res.analytic[size_t(b)] = spheremap::bandRatio(m, spheremap::bandLo(b), spheremap::bandHi(b));
+    res.analytic[size_t(b)] = sphere::bandRatio(m, sphere::bandLo(b), sphere::bandHi(b));
     res.mesh[size_t(b)] = mr.ratio[size_t(b)];
     res.render[size_t(b)] = surfArea > 0 ? texArea / surfArea * norm : 0.0;
     lo = std::min(lo, res.render[size_t(b)]);
@@ -137,10 +137,10 @@ inline Result measureMapping(ts::Renderer& r, Mapping m, int resolution) {
         ts::decodeTexelIndex(px, &i, &j);
         if (px.a == 255 && i < kTexels) s.push_back((i + 0.5) / kTexels);
       }
-    return spheremap::circularSpan(s);
+    return sphere::circularSpan(s);
   };
   res.poleSpan = std::min(span(kBands - 1, {0, 1, 0}), span(0, {0, -1, 0}));
   res.frontSpan = span(kBands / 2, {0, 0, 1});
   return res;
 }
-}  // namespace spheremeasure
+}  // namespace sphere

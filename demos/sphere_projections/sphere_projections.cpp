@@ -16,7 +16,7 @@
 //
 // What the GL does: each sphere is one glBegin(GL_TRIANGLES) sent by
 // common/gl/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
-// per vertex, (s, t) from sphere_map.hpp's texCoord (Eq. VI.2 or VI.3) at the
+// per vertex, (s, t) from sphere_math.hpp's texCoord (Eq. VI.2 or VI.3) at the
 // grid's corners, interpolated by GL inside each cell; the two spheres differ
 // only in those t (book_figures/vi5_sphere_projections.gl.txt: the first
 // vertices' t = 0.0278 against 0.0019).  Renderer::texture uploads the
@@ -26,7 +26,7 @@
 // sphere_measure.hpp's texel-index renders (Renderer::renderOffscreen).
 //
 // Measured, per 20° band of latitude and per mapping: texture area / surface
-// area, normalised to a whole-sphere mean of 1 — analytic (sphere_map.hpp),
+// area, normalised to a whole-sphere mean of 1 — analytic (sphere_math.hpp),
 // exact from the mesh's triangles, and from a render that shows which texel
 // every pixel took; plus the pinch (how much of the texture's width meets
 // within 3 px of a pole) and the texture the pole triangles draw nowhere.
@@ -45,12 +45,12 @@
 #include "common/core/textures.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/core/user_texture.hpp"
-#include "sphere_map.hpp"
+#include "sphere_math.hpp"
 #include "sphere_measure.hpp"  // the band ratios and the pinch, from a texel-index render
 
 namespace {
-using spheremap::Mapping;
-using spheremap::kBands;
+using sphere::Mapping;
+using sphere::kBands;
 
 enum Shown { kBoth, kVI2, kVI3 };
 const char* const kKey[] = {"vi2", "vi3"};  // measurement names
@@ -61,7 +61,7 @@ using ts::layout::kWhite;
 
 using ts::layout::fmt;
 std::string bandName(int b) {
-  return "[" + fmt("%.0f", spheremap::bandLo(b)) + ":" + fmt("%.0f", spheremap::bandHi(b)) + "]";
+  return "[" + fmt("%.0f", sphere::bandLo(b)) + ":" + fmt("%.0f", sphere::bandHi(b)) + "]";
 }
 
 class SphereProjections final : public ts::Scene {
@@ -104,7 +104,7 @@ class SphereProjections final : public ts::Scene {
   ts::Measurements measure(ts::Renderer& r) override;
 
  private:
-  using Result = spheremeasure::Result;
+  using Result = sphere::Result;
   std::vector<Mapping> mappings() const {
     if (shown_ == kVI2) return {Mapping::Latitude};
     if (shown_ == kVI3) return {Mapping::Cylinder};
@@ -139,16 +139,16 @@ void SphereProjections::addSphere(ts::Frame& f, const ts::layout::Cell& cell, Ma
   p.depthTest = true;
   // A narrow perspective (30°, eye 4.6 radii away): the sphere fills ~83% of
   // the panel and looks round, not fish-eyed.
-  p.projection = camera_.lens(glm::perspective(float(spheremap::rad(30.0)), float(vp.w) / float(vp.h), 1.0f, 10.0f));
+  p.projection = camera_.lens(glm::perspective(float(sphere::rad(30.0)), float(vp.w) / float(vp.h), 1.0f, 10.0f));
   // The orbit turns the sphere about its centre, after its own turn.
-  glm::mat4 turn = camera_.view(glm::rotate(glm::rotate(glm::mat4(1.0f), float(spheremap::rad(tilt_)), {1, 0, 0}),
-                                            float(spheremap::rad(rotation_)), {0, 1, 0}));
+  glm::mat4 turn = camera_.view(glm::rotate(glm::rotate(glm::mat4(1.0f), float(sphere::rad(tilt_)), {1, 0, 0}),
+                                            float(sphere::rad(rotation_)), {0, 1, 0}));
   p.modelview = glm::translate(glm::mat4(1.0f), {0, 0, -4.6f}) * turn;
   // Light from the upper left, in front, fixed to the viewer: into model
   // coordinates with the inverse (transpose) of the rotation.
   glm::dvec3 toLight = glm::transpose(glm::dmat3(glm::mat3(turn))) * glm::dvec3(-0.45, 0.55, 0.7);
-  // The mesh's (s, t) (spheremap::texCoord) become glTexCoord4f(s, t, 0, 1) in Renderer::draw.
-  p.batches.push_back(ts::litMeshBatch(spheremap::sphereMesh(m, resolution_), texture, toLight));
+  // The mesh's (s, t) (sphere::texCoord) become glTexCoord4f(s, t, 0, 1) in Renderer::draw.
+  p.batches.push_back(ts::litMeshBatch(sphere::sphereMesh(m, resolution_), texture, toLight));
   f.panels.push_back(p);
 
   // The equation and its formula above, the measured ratios below.
@@ -171,7 +171,7 @@ void SphereProjections::addPlot(ts::Frame& f, int width, int height, const ts::M
   p.x0 = -90, p.x1 = 90, p.y1 = 4.5;
   p.xLabel = "latitude phi (degrees)";
   p.yLabel = "texture area / surface area (whole sphere = 1)";
-  p.xTicks = plot::ticks(spheremap::bandLo(0), spheremap::bandHi(kBands - 1), spheremap::kBandDeg, "%.0f");
+  p.xTicks = plot::ticks(sphere::bandLo(0), sphere::bandHi(kBands - 1), sphere::kBandDeg, "%.0f");
   p.yTicks = plot::ticks(0, 4, 1, "%.0f");
   p.scale = ts::layout::scaleFor({0, 0, width * 2 / 5, height * 2 / 5});
   p.titleColor = p.textColor = kWhite;
@@ -179,15 +179,15 @@ void SphereProjections::addPlot(ts::Frame& f, int width, int height, const ts::M
     const glm::vec4 c = kColour[int(m)];
     // Analytic ratio, every degree (±89.5°: 2/(π cos φ) = 73, far off the top).
     plot::Series analytic(std::string("analytic_") + kKey[int(m)], c, plot::Mark::Line, {}, 1.0f);
-    for (double phi = -89.5; phi <= 89.5; phi += 1.0) analytic.points.push_back({phi, spheremap::ratioAt(m, phi)});
+    for (double phi = -89.5; phi <= 89.5; phi += 1.0) analytic.points.push_back({phi, sphere::ratioAt(m, phi)});
     p.series.push_back(analytic);
     std::string legend = std::string(kEq[int(m)]) + "  " + kFormula[int(m)] + ":  analytic (line)";
     if (const Result* res = found(measured, m)) {
       // Bars across each band and a 7-px square at its centre.
       plot::Series bars(std::string("measured_") + kKey[int(m)], c, plot::Mark::Bars, {}, 3.0f),
           dots(std::string("measured_points_") + kKey[int(m)], c, plot::Mark::Squares, {}, 1.0f, 3.5f);
-      for (int b = 0; b < kBands; ++b) bars.points.push_back({spheremap::bandMid(b), res->render[size_t(b)]});
-      bars.halfWidth = spheremap::kBandDeg / 2 - 1;
+      for (int b = 0; b < kBands; ++b) bars.points.push_back({sphere::bandMid(b), res->render[size_t(b)]});
+      bars.halfWidth = sphere::kBandDeg / 2 - 1;
       dots.points = bars.points;
       p.series.insert(p.series.end(), {bars, dots});
       legend += ", measured (bars): max/min " + fmt("%.2f", res->spread);
@@ -232,11 +232,11 @@ ts::Measurements SphereProjections::measure(ts::Renderer& r) {
   ts::Measurements out;
   for (Mapping m : mappings()) {
     auto key = std::make_pair(int(m), resolution_);
-    if (!cache_.count(key)) cache_[key] = spheremeasure::measureMapping(r, m, resolution_);  // rotation and tilt do not matter
+    if (!cache_.count(key)) cache_[key] = sphere::measureMapping(r, m, resolution_);  // rotation and tilt do not matter
     const Result& res = cache_[key];
     const std::string k = kKey[int(m)];
     for (int b = 0; b < kBands; ++b) {
-      std::string band = bandName(b), deg = fmt("%.0f", spheremap::bandLo(b)) + ".." + fmt("%.0f", spheremap::bandHi(b));
+      std::string band = bandName(b), deg = fmt("%.0f", sphere::bandLo(b)) + ".." + fmt("%.0f", sphere::bandHi(b));
       out.push_back({k + band + "_analytic", res.analytic[size_t(b)],
                      "texture/surface area, latitudes " + deg + ", whole sphere = 1: exact for the sphere"});
       out.push_back({k + band + "_mesh", res.mesh[size_t(b)], "the same from the mesh's triangles ((s,t) area / 3D area)"});

@@ -24,7 +24,7 @@
 
 #include "common/core/gl_enums.hpp"
 
-namespace wrapmath {
+namespace wrap {
 constexpr int kBorder = -1;  // "the border colour" as a texel index
 
 inline int floorMod(int a, int m) {
@@ -162,4 +162,4 @@ inline Lit phong(glm::dvec3 p, glm::dvec3 n, glm::dvec3 light, glm::dvec3 eye, g
   o.specular = glm::dot(n, l) > 0 ? std::pow(std::max(0.0, glm::dot(n, h)), shininess) : 0.0;
   return o;
 }
-}  // namespace wrapmath
+}  // namespace wrap

@@ -31,7 +31,7 @@
 // What the GL does, all in common/gl/render.cpp: Renderer::texture makes the
 // glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S/T, mode) and
 // GL_TEXTURE_BORDER_COLOR calls; Renderer::draw sends each quad
-// (wrap_passes.hpp: stQuad) as glTexCoord4f(s, t, 0, 1) + glVertex3f, s and
+// (wrap_gl.hpp: stQuad) as glTexCoord4f(s, t, 0, 1) + glVertex3f, s and
 // t from -range to 1 + range, loads a batch's texture matrix around it, and
 // makes glTexEnvi (with glTexEnvfv(GL_TEXTURE_ENV_COLOR) for GL_BLEND; for
 // the separate specular glEnable(GL_COLOR_SUM) and glSecondaryColor3f per
@@ -47,7 +47,7 @@
 // formula; the texel under probe points with the texture matrix on; each
 // texture environment on a grid of fragment colours x texels x alphas
 // against the table; the highlight's peak with and without
-// GL_SEPARATE_SPECULAR_COLOR.  The passes are in wrap_passes.hpp.
+// GL_SEPARATE_SPECULAR_COLOR.  The passes are in wrap_gl.hpp.
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -59,7 +59,7 @@
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
 #include "wrap_math.hpp"
-#include "wrap_passes.hpp"
+#include "wrap_gl.hpp"
 #include "wrap_views.hpp"  // the texture-space panel and the env view's lit planes
 
 namespace {
@@ -69,9 +69,9 @@ const char* const kModeGL[] = {"GL_REPEAT", "GL_MIRRORED_REPEAT", "GL_CLAMP", "G
 const glm::vec4 kBorderColour{0.85f, 0.1f, 0.75f, 1.0f};
 const glm::vec4 &kWhite = ts::layout::kWhite, &kMeasured = ts::layout::kAmber;
 using ts::layout::fmt;
-using wrappass::stQuad;
-using wrapview::kEnvs, wrapview::kEnvNames, wrapview::kEnvGL, wrapview::kEnvColour;
-using wrapview::Found;  // what measure() found, for the captions
+using wrap::stQuad;
+using wrap::views::kEnvs, wrap::views::kEnvNames, wrap::views::kEnvGL, wrap::views::kEnvColour;
+using wrap::views::Found;  // what measure() found, for the captions
 
 class WrapModes final : public ts::Scene {
  public:
@@ -141,9 +141,9 @@ class WrapModes final : public ts::Scene {
     return d;
   }
   glm::mat4 matrix() const {
-    wrapmath::TexTransform x = xf_;
+    wrap::TexTransform x = xf_;
     x.scale.y = x.scale.x;
-    return wrapmath::textureMatrix(x);
+    return wrap::textureMatrix(x);
   }
   // The environment view (wrap_views.hpp): a plane lit per vertex under the RGBA texture in each mode;
   // separate_ sends the specular part as the secondary colour (GL_COLOR_SUM), else it is in the primary colour.
@@ -153,7 +153,7 @@ class WrapModes final : public ts::Scene {
   float range_ = 1.0f;
   bool npot_ = false, animate_ = false;
   long animFrames_ = 0;
-  wrapmath::TexTransform xf_;
+  wrap::TexTransform xf_;
   std::string texturePath_;
   ts::TextureDesc fileTexture_;
 };
@@ -171,7 +171,7 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
       const int m = k % 5;
       const bool linear = k >= 5;
       int tex = f.addTexture(texture(kModes[m], kModes[m], linear));
-      wrapview::addTextureSpace(f, cells[size_t(k)].picture, std::string(kModeNames[m]) + (linear ? "_linear" : "_nearest"), tex,
+      wrap::views::addTextureSpace(f, cells[size_t(k)].picture, std::string(kModeNames[m]) + (linear ? "_linear" : "_nearest"), tex,
                                 range_);
       L::caption(f, cells[size_t(k)].above, std::string(kModeGL[m]) + (linear ? " linear" : " nearest"), kWhite,
                  cells[size_t(k)].scale);
@@ -190,7 +190,7 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
     L::FlowSpec spec;
     spec.n = 1, spec.linesAbove = 1, spec.linesBelow = 2;
     L::Cell c = L::flow(area, spec)[0];
-    wrapview::addTextureSpace(f, c.picture, "texture_space", tex, range_);
+    wrap::views::addTextureSpace(f, c.picture, "texture_space", tex, range_);
     // Fragment colours orange to blue: the environment (key e) combines them with the texels, GL_BLEND with kEnvColour.
     ts::Batch& q = f.panels.back().batches.front();
     q.texEnv = kEnvs[env_];
@@ -210,7 +210,7 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
   spec.n = 2, spec.linesAbove = 1, spec.linesBelow = 1;
   std::vector<L::Cell> cells = L::flow(area, spec);
   const glm::mat4 m = matrix();
-  wrapview::addTextureSpace(f, cells[0].picture, "texture_space", tex, range_, &m);
+  wrap::views::addTextureSpace(f, cells[0].picture, "texture_space", tex, range_, &m);
   L::caption(f, cells[0].above, "texture space: M (unit square)", kWhite, cells[0].scale);
   L::caption(f, cells[0].below, state, kWhite, cells[0].scale);
   ts::Panel q;
@@ -240,19 +240,19 @@ ts::Frame WrapModes::envFrame(int width, int height, const Found* found) const {
     ramp = ts::gradientTexture(npot_ ? 7 : 8, npot_ ? 5 : 8, true);
     ramp.wrapS = ramp.wrapT = GL_CLAMP_TO_EDGE;
   }
-  return wrapview::envFrame(width, height, opaque, ramp, separate_, found);
+  return wrap::views::envFrame(width, height, opaque, ramp, separate_, found);
 }
 
-// Measured in small offscreen passes (wrap_passes.hpp), each read back and compared with wrap_math.hpp's formulas.
+// Measured in small offscreen passes (wrap_gl.hpp), each read back and compared with wrap_math.hpp's formulas.
 ts::Measurements WrapModes::measure(ts::Renderer& r) {
   ts::Measurements out;
   Found found;
   const int lo = int(std::floor(-range_)), hi = int(std::ceil(1.0f + range_));
-  wrappass::SeedCount seed;
+  wrap::SeedCount seed;
   int total = 0;
   for (int m = 0; m < 5; ++m) {
-    int bad = wrappass::texelMismatches(r, kModes[m], 8, 8, lo, hi, kModes[m] == GL_MIRRORED_REPEAT ? &seed : nullptr);
-    int npot = wrappass::texelMismatches(r, kModes[m], 37, 23, lo, hi, nullptr);
+    int bad = wrap::texelMismatches(r, kModes[m], 8, 8, lo, hi, kModes[m] == GL_MIRRORED_REPEAT ? &seed : nullptr);
+    int npot = wrap::texelMismatches(r, kModes[m], 37, 23, lo, hi, nullptr);
     found.mismatches[m] = bad + npot;
     total += bad + npot;
     out.push_back({std::string("texel_mismatches[") + kModeNames[m] + "]", double(bad), "pixels whose texel differs from the formula (8x8)"});
@@ -264,19 +264,19 @@ ts::Measurements WrapModes::measure(ts::Renderer& r) {
   out.push_back({"seed_mirror_integers", double(seed.integers), "integer s compared"});
   const char* const probeNames[] = {"-0.25", "0", "1", "1.25"};
   for (int m = 2; m < 5; ++m) {
-    std::array<double, 4> pct = wrappass::borderPercent(r, kModes[m]);
+    std::array<double, 4> pct = wrap::borderPercent(r, kModes[m]);
     found.borderAt0[m] = pct[1];
     for (size_t k = 0; k < 4; ++k)
       out.push_back({std::string("border_pct[") + kModeNames[m] + "@" + probeNames[k] + "]", pct[k],
-                     fmt("%% border colour read by GL_LINEAR (formula: %.0f)", 100.0 * wrapmath::borderShare(kModes[m], wrappass::kEdgeProbes[k], 8))});
+                     fmt("%% border colour read by GL_LINEAR (formula: %.0f)", 100.0 * wrap::borderShare(kModes[m], wrap::kEdgeProbes[k], 8))});
   }
   int probes = 0;
-  found.matrixMismatches = wrappass::matrixMismatches(r, matrix(), &probes);
+  found.matrixMismatches = wrap::matrixMismatches(r, matrix(), &probes);
   out.push_back({"texture_matrix_mismatches", double(found.matrixMismatches), "probe pixels whose texel differs from M (s,t) on the CPU"});
   out.push_back({"texture_matrix_probes", double(probes), "probes compared (those a twentieth of a texel from an edge)"});
   found.envMismatches = 0;
   for (int m = 0; m < 5; ++m) {
-    int bad = wrappass::envMismatches(r, kEnvs[m], kEnvColour);
+    int bad = wrap::envMismatches(r, kEnvs[m], kEnvColour);
     found.envMismatches += bad;
     out.push_back({std::string("env_mismatches[") + kEnvNames[m] + "]", double(bad), "of 600 fragment x texel pairs: more than 1 step of 8 bits from the table"});
   }
@@ -288,7 +288,7 @@ ts::Measurements WrapModes::measure(ts::Renderer& r) {
     v.separate_ = k == 1;
     ts::Frame f = v.envFrame(600, 400, nullptr);
     f.labels.clear();
-    found.peak[k] = wrappass::peakBrightness(r.renderOffscreen(f), f.panel(k == 0 ? "env_modulate" : "env_separate_specular")->viewport);
+    found.peak[k] = wrap::peakBrightness(r.renderOffscreen(f), f.panel(k == 0 ? "env_modulate" : "env_separate_specular")->viewport);
   }
   out.push_back({"highlight_peak[modulate]", found.peak[0], "brightest pixel (mean RGB) with the specular in the primary colour, times the texel"});
   out.push_back({"highlight_peak[separate_specular]", found.peak[1], "the same with GL_SEPARATE_SPECULAR_COLOR: specular added after texturing"});

@@ -14,9 +14,9 @@
 #include "common/core/layout.hpp"
 #include "common/gl/render.hpp"
 #include "wrap_math.hpp"
-#include "wrap_passes.hpp"
+#include "wrap_gl.hpp"
 
-namespace wrapview {
+namespace wrap::views {
 // The texture environments, in the order of the env view's panels.
 inline const GLenum kEnvs[] = {GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD};
 inline const char* const kEnvNames[] = {"replace", "modulate", "decal", "blend", "add"};
@@ -51,14 +51,14 @@ inline void addTextureSpace(ts::Frame& f, const ts::Rect& vp, const std::string&
             th = int(std::lround(t.image ? t.image->height * (hi - lo) : 0.0));
   if (tw > 0 && th > 0 && tw <= vp.w && th <= vp.h) p.viewport = ts::layout::centred(vp, vp.w / tw * tw, vp.h / th * th);
   p.projection = glm::ortho(lo, hi, lo, hi, -1.0f, 1.0f);
-  p.batches.push_back(wrappass::stQuad({lo, lo}, {hi, hi}, {lo, lo}, {hi, hi}, tex));
+  p.batches.push_back(wrap::stQuad({lo, lo}, {hi, hi}, {lo, lo}, {hi, hi}, tex));
   std::vector<glm::vec2> grid;
   for (int k = int(std::ceil(lo)); k <= int(std::floor(hi)); ++k)
     grid.insert(grid.end(), {{float(k), lo}, {float(k), hi}, {lo, float(k)}, {hi, float(k)}});
   p.batches.push_back(ts::lineSegments(grid, kGrid, 1.0f, "integer_grid"));
   std::vector<glm::vec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   if (matrix)  // where the quad's corners land in texture space: M (s, t, 0, 1)
-    for (auto& c : square) c = glm::vec2(wrapmath::transformST(*matrix, c.x, c.y));
+    for (auto& c : square) c = glm::vec2(wrap::transformST(*matrix, c.x, c.y));
   p.batches.push_back(ts::lineLoop(square, kSquare, 2.0f, "unit_square"));
   f.panels.push_back(p);
 }
@@ -80,7 +80,7 @@ inline ts::Frame envFrame(int width, int height, const ts::TextureDesc& opaque, 
     const GLenum env = k < 5 ? kEnvs[k] : GL_MODULATE;
     const bool sep = k == 5 && separate;
     ts::Panel p = L::unitPanel(k < 5 ? std::string("env_") + kEnvNames[k] : "env_separate_specular", cells[size_t(k)].picture);
-    ts::Batch b = wrappass::litPlane(env == GL_DECAL ? texRamp : texOpaque, env, kEnvColour, sep);
+    ts::Batch b = wrap::litPlane(env == GL_DECAL ? texRamp : texOpaque, env, kEnvColour, sep);
     p.batches.push_back(b);
     f.panels.push_back(p);
     const L::Cell& cell = cells[size_t(k)];
@@ -95,4 +95,4 @@ inline ts::Frame envFrame(int width, int height, const ts::TextureDesc& opaque, 
   }
   return f;
 }
-}  // namespace wrapview
+}  // namespace wrap::views

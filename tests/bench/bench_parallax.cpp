@@ -30,7 +30,7 @@
 #include "common/gl/context.hpp"
 #include "common/gl/render.hpp"
 #include "demos/parallax_aniso/parallax_gl.hpp"
-#include "demos/parallax_aniso/relief.hpp"
+#include "demos/parallax_aniso/parallax_math.hpp"
 
 namespace {
 struct Rig {

@@ -1,7 +1,7 @@
 // tests/figures/fig_cylinder_seam_test.cpp — Figures VI.3, VI.4 and Exercise
 // VI.1 (demos/cylinder_seam): the label on the cylinder and the patch across
 // the seam, checked from renders against the mathematics in
-// demos/cylinder_seam/cylinder_map.hpp, never against a stored image.
+// demos/cylinder_seam/cylinder_math.hpp, never against a stored image.
 //
 // Tolerances.  The demo's measurement reads s from a texel-index texture of
 // N = 2048 texels (GL_NEAREST): each pixel's s is the centre of the texel it
@@ -27,7 +27,7 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
-#include "demos/cylinder_seam/cylinder_map.hpp"
+#include "demos/cylinder_seam/cylinder_math.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 
@@ -136,24 +136,24 @@ TEST(CylinderSeam, BackSeamLeavesTheFrontPatchForwards) {
 // give s = 0.9 and 0.1 reduced, 0.9 and 1.1 with the winding tracked; the
 // seam column i = slices repeats column 0 as 0.9 (wrong) or 1.9 (right).
 TEST(CylinderSeam, BookTextureCoordinates) {
-  cylmap::Params p;
-  EXPECT_DOUBLE_EQ(cylmap::thetaDeg(5, 0), -36.0);
-  EXPECT_DOUBLE_EQ(cylmap::thetaDeg(5, 1), 36.0);
-  p.coords = cylmap::Coords::Wrong;
-  EXPECT_DOUBLE_EQ(cylmap::sOf(p, 0), 0.9);
-  EXPECT_DOUBLE_EQ(cylmap::sOf(p, 1), 0.1);
-  EXPECT_DOUBLE_EQ(cylmap::sOf(p, 5), 0.9);
-  EXPECT_DOUBLE_EQ(cylmap::patchSpan(p, 0), 0.1 - 0.9);
-  p.coords = cylmap::Coords::Right;
-  EXPECT_DOUBLE_EQ(cylmap::sOf(p, 0), 0.9);
-  EXPECT_DOUBLE_EQ(cylmap::sOf(p, 1), 1.1);
-  EXPECT_DOUBLE_EQ(cylmap::sOf(p, 5), 1.9);
-  EXPECT_DOUBLE_EQ(cylmap::tOf(p, 0), 0.0);
-  EXPECT_DOUBLE_EQ(cylmap::tOf(p, 1), 1.0);
+  cylinder::Params p;
+  EXPECT_DOUBLE_EQ(cylinder::thetaDeg(5, 0), -36.0);
+  EXPECT_DOUBLE_EQ(cylinder::thetaDeg(5, 1), 36.0);
+  p.coords = cylinder::Coords::Wrong;
+  EXPECT_DOUBLE_EQ(cylinder::sOf(p, 0), 0.9);
+  EXPECT_DOUBLE_EQ(cylinder::sOf(p, 1), 0.1);
+  EXPECT_DOUBLE_EQ(cylinder::sOf(p, 5), 0.9);
+  EXPECT_DOUBLE_EQ(cylinder::patchSpan(p, 0), 0.1 - 0.9);
+  p.coords = cylinder::Coords::Right;
+  EXPECT_DOUBLE_EQ(cylinder::sOf(p, 0), 0.9);
+  EXPECT_DOUBLE_EQ(cylinder::sOf(p, 1), 1.1);
+  EXPECT_DOUBLE_EQ(cylinder::sOf(p, 5), 1.9);
+  EXPECT_DOUBLE_EQ(cylinder::tOf(p, 0), 0.0);
+  EXPECT_DOUBLE_EQ(cylinder::tOf(p, 1), 1.0);
   // Exercise VI.1: s = θ/360 + 1/2: column 0 at 0.4, the front patch 0.4..0.6.
-  p.seam = cylmap::Seam::Back;
-  EXPECT_DOUBLE_EQ(cylmap::sOf(p, 0), 0.4);
-  EXPECT_DOUBLE_EQ(cylmap::sOf(p, 1), 0.6);
+  p.seam = cylinder::Seam::Back;
+  EXPECT_DOUBLE_EQ(cylinder::sOf(p, 0), 0.4);
+  EXPECT_DOUBLE_EQ(cylinder::sOf(p, 1), 0.6);
 }
 
 // Claim (Buss III.3.2): vertices shared by neighbouring patches have
@@ -163,11 +163,11 @@ TEST(CylinderSeam, SharedVerticesAreBitIdentical) {
   for (int slices : {3, 5, 8, 24, 36})
     for (int stacks : {1, 4}) {
       SCOPED_TRACE("slices " + std::to_string(slices) + " stacks " + std::to_string(stacks));
-      cylmap::Params p;
+      cylinder::Params p;
       p.slices = slices;
       p.stacks = stacks;
-      p.coords = cylmap::Coords::Right;
-      ts::Mesh m = cylmap::mesh(p);
+      p.coords = cylinder::Coords::Right;
+      ts::Mesh m = cylinder::mesh(p);
       ASSERT_EQ(m.nu, slices);
       for (int j = 0; j <= stacks; ++j) {
         const auto& a = m.points[size_t(m.at(0, j))].pos;
@@ -192,11 +192,11 @@ TEST(CylinderSeam, SharedVerticesAreBitIdentical) {
 // not the same bits: sin(-36°) and sin(324°) differ in the last place.  (So
 // the memcmp above is a real check.)
 TEST(CylinderSeam, NegativeControlSeamColumnFrom360DegreesIsNotBitIdentical) {
-  cylmap::Params p;  // the book's 5 slices, θ0 = -36°
+  cylinder::Params p;  // the book's 5 slices, θ0 = -36°
   int differ = 0;
   for (int j = 0; j <= p.stacks; ++j) {
-    ts::SurfacePoint a = ts::cylinderPoint(p.r, p.h, p.slices, p.stacks, 0, j, cylmap::theta0Deg(p.slices));
-    ts::SurfacePoint b = ts::cylinderPoint(p.r, p.h, p.slices, p.stacks, p.slices, j, cylmap::theta0Deg(p.slices));
+    ts::SurfacePoint a = ts::cylinderPoint(p.r, p.h, p.slices, p.stacks, 0, j, cylinder::theta0Deg(p.slices));
+    ts::SurfacePoint b = ts::cylinderPoint(p.r, p.h, p.slices, p.stacks, p.slices, j, cylinder::theta0Deg(p.slices));
     EXPECT_LT(glm::length(a.pos - b.pos), 1e-12) << "the same point up to round-off";
     differ += std::memcmp(&a.pos, &b.pos, sizeof a.pos) != 0;
   }
@@ -218,10 +218,10 @@ TEST(CylinderSeam, DisplayedFrontPatchShowsTheAssignedRegion) {
     ts::Frame f = demo.frame(1024, 512);
     const ts::Panel& p = panelOf(f, std::string("cylinder_") + c);
     ts::Image img = renderTexelIndex(f);
-    cylmap::Params cp;
+    cylinder::Params cp;
     auto screenOf = [&](double along) {
       // The point of the chord from θ = -36° to θ = 36° at fraction `along`.
-      glm::dvec3 a = cylmap::point(cp.r, -36.0, 0.0), b = cylmap::point(cp.r, 36.0, 0.0);
+      glm::dvec3 a = cylinder::point(cp.r, -36.0, 0.0), b = cylinder::point(cp.r, 36.0, 0.0);
       glm::dvec3 q = a + along * (b - a);
       return ts::panelToPixels(p, p.projection * p.modelview * glm::vec4(glm::vec3(q), 1.0f));
     };

@@ -15,7 +15,7 @@
 
 #include "common/core/layout.hpp"
 #include "demos/environment_mapping/env_studies.hpp"
-#include "demos/environment_mapping/env_world.hpp"
+#include "demos/environment_mapping/env_math.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
@@ -39,7 +39,7 @@ std::string key(const char* p, const char* o, const char* e) { return std::strin
 // spec's table names (1000 x 1000 faces: within half a texel), and the seed's
 // answer is that point mirrored in both axes.
 TEST(EnvironmentMapping, SeedCubeExampleReadBack) {
-  const envmap::CubeST c = envmap::cubeST(envstudy::kSeedDirection);
+  const envmap::CubeST c = envmap::cubeST(envmap::kSeedDirection);
   EXPECT_EQ(v("seed_cube_face"), c.face);
   EXPECT_EQ(v("seed_cube_readback_face"), c.face);
   EXPECT_NEAR(v("seed_cube_readback_s"), v("seed_cube_gl_s"), 0.5 / 1000 + 1e-9);
@@ -98,7 +98,7 @@ TEST(EnvironmentMapping, TexelShapeWhereTheObjectReads) {
 // most a), and is more than half of it.
 TEST(EnvironmentMapping, StaleSphereMapErrorFollowsTheEye) {
   double last = -1;
-  for (float a : envstudy::kEyeAngles) {
+  for (float a : envmap::kEyeAngles) {
     const double e = v("sphere_stale_error_deg[" + ts::layout::fmt("%.0f", a) + "]");
     EXPECT_GT(e, last) << a;
     EXPECT_LE(e, a + 0.1) << a;
@@ -110,11 +110,11 @@ TEST(EnvironmentMapping, StaleSphereMapErrorFollowsTheEye) {
 // Seed 002's u = N_x/2 + 1/2 against GL_SPHERE_MAP: per pixel the two
 // directions are as far apart as the pixel's line of sight is from the axis.
 TEST(EnvironmentMapping, SeedSphereMapDriftsOffAxis) {
-  for (size_t b = 0; b + 1 < envstudy::kAxisBins.size(); ++b) {
-    const std::string k = ts::layout::fmt("%g", envstudy::kAxisBins[b]) + "-" + ts::layout::fmt("%g", envstudy::kAxisBins[b + 1]);
+  for (size_t b = 0; b + 1 < envmap::kAxisBins.size(); ++b) {
+    const std::string k = ts::layout::fmt("%g", envmap::kAxisBins[b]) + "-" + ts::layout::fmt("%g", envmap::kAxisBins[b + 1]);
     SCOPED_TRACE(k);
-    EXPECT_GE(v("seed_sphere_vs_gl_deg[" + k + "]"), envstudy::kAxisBins[b] - 0.1);
-    EXPECT_LE(v("seed_sphere_vs_gl_deg[" + k + "]"), envstudy::kAxisBins[b + 1] + 0.1);
+    EXPECT_GE(v("seed_sphere_vs_gl_deg[" + k + "]"), envmap::kAxisBins[b] - 0.1);
+    EXPECT_LE(v("seed_sphere_vs_gl_deg[" + k + "]"), envmap::kAxisBins[b + 1] + 0.1);
   }
 }
 
@@ -123,8 +123,8 @@ TEST(EnvironmentMapping, SeedSphereMapDriftsOffAxis) {
 // every band further out.
 TEST(EnvironmentMapping, SeedCubeFormulaDriftsOffAxis) {
   double last = -1;
-  for (size_t b = 0; b + 1 < envstudy::kAxisBins.size(); ++b) {
-    const std::string k = ts::layout::fmt("%g", envstudy::kAxisBins[b]) + "-" + ts::layout::fmt("%g", envstudy::kAxisBins[b + 1]);
+  for (size_t b = 0; b + 1 < envmap::kAxisBins.size(); ++b) {
+    const std::string k = ts::layout::fmt("%g", envmap::kAxisBins[b]) + "-" + ts::layout::fmt("%g", envmap::kAxisBins[b + 1]);
     const double e = v("seed_cube_r_vs_gl_deg[" + k + "]");
     EXPECT_GT(e, last) << k;
     if (b == 0) EXPECT_LT(e, 0.05);
@@ -157,7 +157,7 @@ TEST(EnvironmentMapping, FlatMirrorCannotReflectWhatIsNear) {
   EXPECT_LT(v("error_mean_deg[" + key("cube", "mirror", "vertex") + "]"), v("error_mean_deg[" + key("cube", "sphere", "vertex") + "]") / 10);
 }
 
-// The fixed-function texgen computes what the shaders and env_world.hpp say
+// The fixed-function texgen computes what the shaders and env_math.hpp say
 // it does: on the flat mirror (r nearly linear across each triangle) the
 // GL's GL_REFLECTION_MAP (through the texture matrix into the world) and
 // GL_SPHERE_MAP per vertex land within a tenth of a degree of the GLSL

@@ -1,6 +1,6 @@
 // tests/figures/fig_mipmap_popping_test.cpp — Section VI.1.3 (mipmapping and
 // popping), rendered offscreen and checked against the mathematics of
-// demos/mipmap_popping/mip_math.hpp, never against a stored image:
+// demos/mipmap_popping/mipmap_math.hpp, never against a stored image:
 //   * the mip chain GL samples is the book's 2x2 average and costs ~1/3;
 //   * with coloured levels, the level GL used at every probe is the level the
 //     analytic derivatives give (GL 4.6 §8.14), allowing the neighbouring
@@ -31,13 +31,13 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
-#include "demos/mipmap_popping/mip_math.hpp"
-#include "demos/mipmap_popping/sweep.hpp"
+#include "demos/mipmap_popping/mipmap_math.hpp"
+#include "demos/mipmap_popping/mipmap_sweep.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
-using namespace mipmath;
+using namespace mipmap;
 
 // Within this many levels of a level boundary (k + 1/2 for the
 // MIPMAP_NEAREST filters) either neighbouring level is legal.  It covers
@@ -86,9 +86,9 @@ bool contains(const std::vector<int>& v, int x) { return std::find(v.begin(), v.
 TEST(MipmapPopping, GLSamplesTheBooks2x2AverageChain) {
   for (bool linear : {false, true}) {
     SCOPED_TRACE(linear ? "linear light" : "sRGB values");
-    sweep::Look l;
+    mipmap::Look l;
     l.linearLight = linear;
-    ts::TextureDesc t = sweep::texture(l);
+    ts::TextureDesc t = mipmap::texture(l);
     ASSERT_TRUE(t.mipmaps);
     ASSERT_FALSE(t.mipLevels) << "the chain must be the 2x2 average, not explicit levels";
     EXPECT_EQ(t.linearLightMips, linear);
@@ -162,8 +162,8 @@ TEST(MipmapPopping, LinearLightAveragesAreBrighter) {
   double want = 255 * (1.055 * std::pow(lin, 1 / 2.4) - 0.055);
   Demo srgb("mipmap_popping", {"--pattern", "checker"});
   Demo linear("mipmap_popping", {"--pattern", "checker", "--linear-light"});
-  std::vector<ts::Image> a = ts::buildMipChain(*sweep::texture({kNearestMipNearest, 16, 0, 1, false}).image, false);
-  std::vector<ts::Image> b = ts::buildMipChain(*sweep::texture({kNearestMipNearest, 16, 0, 1, true}).image, true);
+  std::vector<ts::Image> a = ts::buildMipChain(*mipmap::texture({kNearestMipNearest, 16, 0, 1, false}).image, false);
+  std::vector<ts::Image> b = ts::buildMipChain(*mipmap::texture({kNearestMipNearest, 16, 0, 1, true}).image, true);
   EXPECT_EQ(a.back().at(0, 0).r, 128);
   EXPECT_NEAR(b.back().at(0, 0).r, want, 2.0);
   EXPECT_GT(want, 150.0);
@@ -177,7 +177,7 @@ TEST(MipmapPopping, LinearLightAveragesAreBrighter) {
 
 // ---------------------------------------------------------------------------
 // The facing plane at many distances (1/32 level apart, LOD -1 .. 7.5) and
-// three LOD biases: the LOD from the analytic derivatives (mip_math.hpp:
+// three LOD biases: the LOD from the analytic derivatives (mipmap_math.hpp:
 // planeAt, the ray-plane Jacobian, not the closed form) against the level
 // whose colour every pixel of the 32 x 32 probe shows.
 struct SweepCheck {
@@ -185,11 +185,11 @@ struct SweepCheck {
   std::string first;
 };
 SweepCheck checkFacingSweep(int filter, float bias, double shift = 0) {
-  sweep::Look l;
+  mipmap::Look l;
   l.filter = filter;
   l.lodBias = bias;
-  std::vector<double> lods = sweep::sweepLods(kMinLog2, kMaxLog2, 1.0 / 32);
-  ts::Frame f = sweep::sweepFrame(l, lods);
+  std::vector<double> lods = mipmap::sweepLods(kMinLog2, kMaxLog2, 1.0 / 32);
+  ts::Frame f = mipmap::sweepFrame(l, lods);
   ts::Image img = ts::test::renderer().renderOffscreen(f);
   SweepCheck r;
   for (size_t k = 0; k < lods.size(); ++k) {
@@ -265,10 +265,10 @@ TEST(MipmapPopping, FacingPlaneCheckFailsForAWrongLod) {
 TEST(MipmapPopping, TrilinearBlendWeightIsTheFractionOfTheLod) {
   for (int filter : {kLinearMipLinear, kNearestMipLinear}) {
     SCOPED_TRACE(filterName(filter));
-    sweep::Look l;
+    mipmap::Look l;
     l.filter = filter;
-    std::vector<double> lods = sweep::sweepLods(kMinLog2, kMaxLog2, 1.0 / 32);
-    std::vector<Mean> means = sweep::probeSweep(ts::test::renderer(), l, lods);
+    std::vector<double> lods = mipmap::sweepLods(kMinLog2, kMaxLog2, 1.0 / 32);
+    std::vector<Mean> means = mipmap::probeSweep(ts::test::renderer(), l, lods);
     double worst = 0, worstAt = 0, worstResidual = 0;
     for (size_t k = 0; k < lods.size(); ++k) {
       double residual = 0;
@@ -297,10 +297,10 @@ struct SlantCheck {
   std::string first;
 };
 SlantCheck checkSlant(int filter, double shift) {
-  const int w = sweep::kSlantW, h = sweep::kSlantH;
-  sweep::Look l;
+  const int w = mipmap::kSlantW, h = mipmap::kSlantH;
+  mipmap::Look l;
   l.filter = filter;
-  ts::Image img = ts::test::renderer().renderOffscreen(sweep::slantFrame(l, sweep::kColoured, w, h));
+  ts::Image img = ts::test::renderer().renderOffscreen(mipmap::slantFrame(l, mipmap::kColoured, w, h));
   Camera cam = slantCamera(w, h);
   Plane ground = groundPlane();
   // LOD interval at GL pixel (x, y) (y up).
@@ -411,18 +411,18 @@ TEST(MipmapPopping, PoppingOfNearestMipIsSeveralTimesTrilinear) {
 // NEAREST_MIPMAP_NEAREST's (a step).
 TEST(MipmapPopping, PoppingMeasureSeesLevelSwitchesOnly) {
   ts::Renderer& r = ts::test::renderer();
-  sweep::Look nmn;
+  mipmap::Look nmn;
   nmn.filter = kNearestMipNearest;
-  EXPECT_LT(poppingMeasure(sweep::probeSweep(r, nmn, sweep::sweepLods(2.55, 3.45, 1.0 / 16))), 0.5);
-  sweep::Look nearest;
+  EXPECT_LT(poppingMeasure(mipmap::probeSweep(r, nmn, mipmap::sweepLods(2.55, 3.45, 1.0 / 16))), 0.5);
+  mipmap::Look nearest;
   nearest.filter = kNearest;
-  EXPECT_EQ(poppingMeasure(sweep::probeSweep(r, nearest, sweep::sweepLods(-1, 7.5, 1.0 / 16))), 0.0);
-  sweep::Look lml;
+  EXPECT_EQ(poppingMeasure(mipmap::probeSweep(r, nearest, mipmap::sweepLods(-1, 7.5, 1.0 / 16))), 0.0);
+  mipmap::Look lml;
   lml.filter = kLinearMipLinear;
-  double big = poppingMeasure(sweep::probeSweep(r, lml, sweep::sweepLods(0.5, 6.5, 1.0 / 8)));
-  double small = poppingMeasure(sweep::probeSweep(r, lml, sweep::sweepLods(0.5, 6.5, 1.0 / 32)));
-  double stepBig = poppingMeasure(sweep::probeSweep(r, nmn, sweep::sweepLods(0.55, 6.55, 1.0 / 8)));
-  double stepSmall = poppingMeasure(sweep::probeSweep(r, nmn, sweep::sweepLods(0.55, 6.55, 1.0 / 32)));
+  double big = poppingMeasure(mipmap::probeSweep(r, lml, mipmap::sweepLods(0.5, 6.5, 1.0 / 8)));
+  double small = poppingMeasure(mipmap::probeSweep(r, lml, mipmap::sweepLods(0.5, 6.5, 1.0 / 32)));
+  double stepBig = poppingMeasure(mipmap::probeSweep(r, nmn, mipmap::sweepLods(0.55, 6.55, 1.0 / 8)));
+  double stepSmall = poppingMeasure(mipmap::probeSweep(r, nmn, mipmap::sweepLods(0.55, 6.55, 1.0 / 32)));
   std::printf("[ info ] step 1/8 -> 1/32: trilinear %.1f -> %.1f, nearest-mip %.1f -> %.1f\n", big, small, stepBig,
               stepSmall);
   EXPECT_NEAR(big / small, 4.0, 1.5);
@@ -457,14 +457,14 @@ TEST(MipmapPopping, FarFieldErrorFallsFromTrilinearToAnisotropic) {
   EXPECT_GE(t, 1.25 * a);
   // Control: anisotropic filtering limited to 1 is trilinear (same error),
   // so the gain is the anisotropy's.
-  sweep::Look one;
+  mipmap::Look one;
   one.filter = kAnisotropic;
   one.anisotropy = 1;
-  sweep::Look tri;
+  mipmap::Look tri;
   tri.filter = kLinearMipLinear;
   ts::Renderer& r = ts::test::renderer();
-  ts::Image a1 = r.renderOffscreen(sweep::slantFrame(one, sweep::kTextured, sweep::kSlantW, sweep::kSlantH));
-  ts::Image t1 = r.renderOffscreen(sweep::slantFrame(tri, sweep::kTextured, sweep::kSlantW, sweep::kSlantH));
+  ts::Image a1 = r.renderOffscreen(mipmap::slantFrame(one, mipmap::kTextured, mipmap::kSlantW, mipmap::kSlantH));
+  ts::Image t1 = r.renderOffscreen(mipmap::slantFrame(tri, mipmap::kTextured, mipmap::kSlantW, mipmap::kSlantH));
   EXPECT_EQ(ts::probe::countDiffering(a1, t1, 0), 0);
 }
 
@@ -485,11 +485,11 @@ double horizontalDetail(const ts::Image& img, const std::vector<char>& mask) {
 }
 TEST(MipmapPopping, TrilinearOverBlursTheFarField) {
   ts::Renderer& r = ts::test::renderer();
-  sweep::Look l;
-  ts::Image ref = sweep::slantReference(r, l);
-  std::vector<char> mask = sweep::farField(sweep::kSlantW, sweep::kSlantH);
+  mipmap::Look l;
+  ts::Image ref = mipmap::slantReference(r, l);
+  std::vector<char> mask = mipmap::farField(mipmap::kSlantW, mipmap::kSlantH);
   l.filter = kLinearMipLinear;
-  ts::Image tri = r.renderOffscreen(sweep::slantFrame(l, sweep::kTextured, sweep::kSlantW, sweep::kSlantH));
+  ts::Image tri = r.renderOffscreen(mipmap::slantFrame(l, mipmap::kTextured, mipmap::kSlantW, mipmap::kSlantH));
   double dr = horizontalDetail(ref, mask), dt = horizontalDetail(tri, mask);
   std::printf("[ info ] far-field horizontal detail: reference %.2f, trilinear %.2f (%s)\n", dr, dt, renderer().c_str());
   EXPECT_LT(dt, 0.7 * dr);
@@ -507,10 +507,10 @@ TEST(MipmapPopping, TrilinearOverBlursTheFarField) {
 // sample sets stop agreeing.
 TEST(MipmapPopping, GLSLReferenceAgreesWithTheDownsampledRender) {
   ts::Renderer& r = ts::test::renderer();
-  sweep::Look l;
-  ts::Image down = sweep::slantReference(r, l);
-  ts::Image glsl = r.renderOffscreen(sweep::slantFrame(l, sweep::kReferenceProgram, sweep::kSlantW, sweep::kSlantH));
-  std::vector<char> all = sweep::farField(sweep::kSlantW, sweep::kSlantH, -10, 8);
+  mipmap::Look l;
+  ts::Image down = mipmap::slantReference(r, l);
+  ts::Image glsl = r.renderOffscreen(mipmap::slantFrame(l, mipmap::kReferenceProgram, mipmap::kSlantW, mipmap::kSlantH));
+  std::vector<char> all = mipmap::farField(mipmap::kSlantW, mipmap::kSlantH, -10, 8);
   long n = 0, differ = 0;
   double rms = rmsError(glsl, down, all, &n);
   for (int y = 0; y < glsl.height; ++y)
@@ -523,7 +523,7 @@ TEST(MipmapPopping, GLSLReferenceAgreesWithTheDownsampledRender) {
   EXPECT_LE(differ, n / 1000);
   // Negative control: a trilinear render is not the reference.
   l.filter = kLinearMipLinear;
-  ts::Image tri = r.renderOffscreen(sweep::slantFrame(l, sweep::kTextured, sweep::kSlantW, sweep::kSlantH));
+  ts::Image tri = r.renderOffscreen(mipmap::slantFrame(l, mipmap::kTextured, mipmap::kSlantW, mipmap::kSlantH));
   EXPECT_GT(rmsError(tri, down, all), 3 * rms);
 }
 
@@ -564,7 +564,7 @@ TEST(MipmapPopping, PlotDrawsTheMeasuredSweep) {
   demo.measure();
   ts::Frame f = demo.frame(1024, 640);
   int series = 0;
-  const size_t n = sweep::sweepLods().size();
+  const size_t n = mipmap::sweepLods().size();
   for (const auto& p : f.panels)
     for (const auto& b : p.batches)
       if (b.role == "mean_red" || b.role == "mean_green" || b.role == "mean_blue") {

@@ -2,7 +2,7 @@
 // projections): the formulas, the area ratio by latitude band (analytic,
 // from the mesh, measured from a render), the pinch at the poles, and the
 // pictures, checked against the mathematics of
-// demos/sphere_projections/sphere_map.hpp — never against a stored image.
+// demos/sphere_projections/sphere_math.hpp — never against a stored image.
 //
 // Tolerances:
 //  * mesh vs analytic: the mesh's flat cells are inscribed in the sphere;
@@ -35,14 +35,14 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
-#include "demos/sphere_projections/sphere_map.hpp"
+#include "demos/sphere_projections/sphere_math.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
-using spheremap::kBands;
-using spheremap::Mapping;
-constexpr double kPi = spheremap::kPi;
+using sphere::kBands;
+using sphere::Mapping;
+constexpr double kPi = sphere::kPi;
 constexpr double kMeshTol = 0.003, kRenderTol = 0.01;
 
 using ts::test::Demo;
@@ -50,7 +50,7 @@ using ts::test::value;
 std::string key(Mapping m) { return m == Mapping::Latitude ? "vi2" : "vi3"; }
 std::string bandName(int b) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "[%.0f:%.0f]", spheremap::bandLo(b), spheremap::bandHi(b));
+  std::snprintf(buf, sizeof buf, "[%.0f:%.0f]", sphere::bandLo(b), sphere::bandHi(b));
   return buf;
 }
 std::vector<double> column(const ts::Measurements& m, Mapping map, const std::string& what) {
@@ -84,7 +84,7 @@ bool matches(const std::vector<double>& got, const std::vector<double>& want, do
 }
 std::vector<double> analyticBands(Mapping m) {
   std::vector<double> v;
-  for (int b = 0; b < kBands; ++b) v.push_back(spheremap::bandRatio(m, spheremap::bandLo(b), spheremap::bandHi(b)));
+  for (int b = 0; b < kBands; ++b) v.push_back(sphere::bandRatio(m, sphere::bandLo(b), sphere::bandHi(b)));
   return v;
 }
 
@@ -93,28 +93,28 @@ std::vector<double> analyticBands(Mapping m) {
 TEST(VI5, FormulasAtKnownPoints) {
   for (Mapping m : {Mapping::Latitude, Mapping::Cylinder}) {
     SCOPED_TRACE(key(m));
-    EXPECT_EQ(spheremap::texCoord(m, 0, 0), glm::dvec2(0.0, 0.5));
-    EXPECT_NEAR(spheremap::texCoord(m, 90, 0).x, 0.25, 1e-15);
-    EXPECT_NEAR(spheremap::texCoord(m, 180, 33).x, 0.5, 1e-15);
-    EXPECT_NEAR(spheremap::texCoord(m, 0, 90).y, 1.0, 1e-15);
-    EXPECT_NEAR(spheremap::texCoord(m, 0, -90).y, 0.0, 1e-15);
+    EXPECT_EQ(sphere::texCoord(m, 0, 0), glm::dvec2(0.0, 0.5));
+    EXPECT_NEAR(sphere::texCoord(m, 90, 0).x, 0.25, 1e-15);
+    EXPECT_NEAR(sphere::texCoord(m, 180, 33).x, 0.5, 1e-15);
+    EXPECT_NEAR(sphere::texCoord(m, 0, 90).y, 1.0, 1e-15);
+    EXPECT_NEAR(sphere::texCoord(m, 0, -90).y, 0.0, 1e-15);
     for (double phi : {-90.0, -61.0, -12.5, 0.0, 30.0, 89.0})
-      EXPECT_NEAR(spheremap::phiFromT(m, spheremap::texCoord(m, 0, phi).y), phi, 1e-9);
+      EXPECT_NEAR(sphere::phiFromT(m, sphere::texCoord(m, 0, phi).y), phi, 1e-9);
   }
-  EXPECT_NEAR(spheremap::texCoord(Mapping::Latitude, 0, 45).y, 0.75, 1e-15);
-  EXPECT_NEAR(spheremap::texCoord(Mapping::Cylinder, 0, 30).y, 0.75, 1e-15);  // sin 30° = 1/2
-  EXPECT_NEAR(spheremap::texCoord(Mapping::Cylinder, 0, 45).y, (1 + std::sqrt(0.5)) / 2, 1e-15);
-  EXPECT_NEAR(spheremap::texCoord(Mapping::Latitude, 0, 30).y, 2.0 / 3.0, 1e-15);
+  EXPECT_NEAR(sphere::texCoord(Mapping::Latitude, 0, 45).y, 0.75, 1e-15);
+  EXPECT_NEAR(sphere::texCoord(Mapping::Cylinder, 0, 30).y, 0.75, 1e-15);  // sin 30° = 1/2
+  EXPECT_NEAR(sphere::texCoord(Mapping::Cylinder, 0, 45).y, (1 + std::sqrt(0.5)) / 2, 1e-15);
+  EXPECT_NEAR(sphere::texCoord(Mapping::Latitude, 0, 30).y, 2.0 / 3.0, 1e-15);
 
   // The mesh carries the formulas at its vertices and the sphere's points:
   // θ = 90° at the equator is (r, 0, 0), θ = 0 is (0, 0, r), the pole (0, r, 0).
   for (Mapping m : {Mapping::Latitude, Mapping::Cylinder}) {
-    ts::Mesh mesh = spheremap::sphereMesh(m, 4, 2.0);
+    ts::Mesh mesh = sphere::sphereMesh(m, 4, 2.0);
     ASSERT_EQ(mesh.nv, 36);
     ASSERT_EQ(mesh.nu, 72);
     for (int j = 0; j <= mesh.nv; ++j)
       for (int i = 0; i <= mesh.nu; ++i) {
-        glm::dvec2 want = spheremap::texCoord(m, 5.0 * i, -90.0 + 5.0 * j);
+        glm::dvec2 want = sphere::texCoord(m, 5.0 * i, -90.0 + 5.0 * j);
         ASSERT_NEAR(mesh.st[size_t(mesh.at(i, j))].x, want.x, 1e-12);
         ASSERT_NEAR(mesh.st[size_t(mesh.at(i, j))].y, want.y, 1e-12);
       }
@@ -128,7 +128,7 @@ TEST(VI5, FormulasAtKnownPoints) {
   }
 }
 
-// Claim (the derivation in sphere_map.hpp): the analytic ratio is the
+// Claim (the derivation in sphere_math.hpp): the analytic ratio is the
 // Jacobian of (θ, φ) -> (s, t) over the sphere's area element cos φ,
 // normalised by 4π: checked against finite differences of the formulas, the
 // band values against a numerical integral, and the whole-sphere mean is 1.
@@ -137,27 +137,27 @@ TEST(VI5, AnalyticRatioIsTheJacobian) {
     SCOPED_TRACE(key(m));
     for (double phi : {-80.0, -45.0, -10.0, 0.0, 25.0, 60.0, 85.0}) {
       const double h = 1e-4;  // degrees
-      glm::dvec2 ds = (spheremap::texCoord(m, 10 + h, phi) - spheremap::texCoord(m, 10 - h, phi)) / spheremap::rad(2 * h);
-      glm::dvec2 dt = (spheremap::texCoord(m, 10, phi + h) - spheremap::texCoord(m, 10, phi - h)) / spheremap::rad(2 * h);
-      double jac = std::abs(ds.x * dt.y - ds.y * dt.x) / std::cos(spheremap::rad(phi));
-      EXPECT_NEAR(jac * 4 * kPi, spheremap::ratioAt(m, phi), 1e-6 * spheremap::ratioAt(m, phi)) << phi;
+      glm::dvec2 ds = (sphere::texCoord(m, 10 + h, phi) - sphere::texCoord(m, 10 - h, phi)) / sphere::rad(2 * h);
+      glm::dvec2 dt = (sphere::texCoord(m, 10, phi + h) - sphere::texCoord(m, 10, phi - h)) / sphere::rad(2 * h);
+      double jac = std::abs(ds.x * dt.y - ds.y * dt.x) / std::cos(sphere::rad(phi));
+      EXPECT_NEAR(jac * 4 * kPi, sphere::ratioAt(m, phi), 1e-6 * sphere::ratioAt(m, phi)) << phi;
     }
     double mean = 0;
     for (int b = 0; b < kBands; ++b) {
-      double lo = spheremap::bandLo(b), hi = spheremap::bandHi(b), num = 0, den = 0;
+      double lo = sphere::bandLo(b), hi = sphere::bandHi(b), num = 0, den = 0;
       for (int k = 0; k < 20000; ++k) {  // midpoint rule over the band, area-weighted
-        double phi = lo + (hi - lo) * (k + 0.5) / 20000, w = std::cos(spheremap::rad(phi));
-        num += spheremap::ratioAt(m, phi) * w;
+        double phi = lo + (hi - lo) * (k + 0.5) / 20000, w = std::cos(sphere::rad(phi));
+        num += sphere::ratioAt(m, phi) * w;
         den += w;
       }
-      EXPECT_NEAR(spheremap::bandRatio(m, lo, hi), num / den, 1e-6) << bandName(b);
-      mean += spheremap::bandRatio(m, lo, hi) * (std::sin(spheremap::rad(hi)) - std::sin(spheremap::rad(lo))) / 2;
+      EXPECT_NEAR(sphere::bandRatio(m, lo, hi), num / den, 1e-6) << bandName(b);
+      mean += sphere::bandRatio(m, lo, hi) * (std::sin(sphere::rad(hi)) - std::sin(sphere::rad(lo))) / 2;
     }
     EXPECT_NEAR(mean, 1.0, 1e-12);
   }
-  EXPECT_NEAR(spheremap::ratioAt(Mapping::Latitude, 0), 2 / kPi, 1e-15);
-  EXPECT_NEAR(spheremap::bandRatio(Mapping::Latitude, 70, 90), 2 * spheremap::rad(20) / (kPi * (1 - std::sin(spheremap::rad(70)))), 1e-12);
-  EXPECT_NEAR(spheremap::bandRatio(Mapping::Latitude, 70, 90), 3.6848, 1e-4);
+  EXPECT_NEAR(sphere::ratioAt(Mapping::Latitude, 0), 2 / kPi, 1e-15);
+  EXPECT_NEAR(sphere::bandRatio(Mapping::Latitude, 70, 90), 2 * sphere::rad(20) / (kPi * (1 - std::sin(sphere::rad(70)))), 1e-12);
+  EXPECT_NEAR(sphere::bandRatio(Mapping::Latitude, 70, 90), 3.6848, 1e-4);
 }
 
 // Claim: the ratio summed over the mesh's own triangles matches the analytic
@@ -169,10 +169,10 @@ TEST(VI5, MeshRatiosMatchTheAnalyticValues) {
     SCOPED_TRACE(key(m));
     std::vector<double> want = analyticBands(m);
     auto worst = [&](int res) {
-      spheremap::MeshRatios r = spheremap::meshRatios(spheremap::sphereMesh(m, res));
+      sphere::MeshRatios r = sphere::meshRatios(sphere::sphereMesh(m, res));
       double w = 0;
       for (int b = 0; b < kBands; ++b) w = std::max(w, std::abs(r.ratio[size_t(b)] - want[size_t(b)]) / want[size_t(b)]);
-      EXPECT_NEAR(r.pinchLost / r.totalTexArea, spheremap::pinchLostExact(m, res), 1e-12) << res;
+      EXPECT_NEAR(r.pinchLost / r.totalTexArea, sphere::pinchLostExact(m, res), 1e-12) << res;
       EXPECT_NEAR(r.totalTexArea, 1.0, 1e-12);
       return w;
     };
@@ -184,8 +184,8 @@ TEST(VI5, MeshRatiosMatchTheAnalyticValues) {
     EXPECT_TRUE(matches(column(defaultMeasurements(), m, "mesh"), want, kMeshTol, &why)) << why;
     EXPECT_TRUE(matches(column(defaultMeasurements(), m, "analytic"), want, 1e-12, &why)) << why;
   }
-  EXPECT_NEAR(spheremap::pinchLostExact(Mapping::Latitude, 4), 1.0 / 36, 1e-15);
-  EXPECT_NEAR(spheremap::pinchLostExact(Mapping::Cylinder, 4), (1 - std::cos(spheremap::rad(5))) / 2, 1e-15);
+  EXPECT_NEAR(sphere::pinchLostExact(Mapping::Latitude, 4), 1.0 / 36, 1e-15);
+  EXPECT_NEAR(sphere::pinchLostExact(Mapping::Cylinder, 4), (1 - std::cos(sphere::rad(5))) / 2, 1e-15);
 }
 
 // Claim (the figure's): measured from a render, Eq. VI.3 preserves area —
@@ -239,7 +239,7 @@ TEST(VI5, BothPinchAtThePoles) {
     const ts::Measurements& ms = defaultMeasurements();
     EXPECT_GT(value(ms, key(m) + "_pole_s_span"), 0.8);
     EXPECT_LT(value(ms, key(m) + "_front_s_span"), 0.02);
-    EXPECT_NEAR(value(ms, key(m) + "_pinch_lost"), spheremap::pinchLostExact(m, 4), 1e-9);
+    EXPECT_NEAR(value(ms, key(m) + "_pinch_lost"), sphere::pinchLostExact(m, 4), 1e-9);
   }
   // VI.2 gives the pole row 5/180 of the texture, VI.3 only (1 - cos 5°)/2.
   EXPECT_GT(value(defaultMeasurements(), "vi2_pinch_lost"), 10 * value(defaultMeasurements(), "vi3_pinch_lost"));
@@ -280,11 +280,11 @@ ProbeResult probeSphere(const ts::Image& img, const ts::Panel& p, Mapping m) {
       if (disc <= 0) continue;
       glm::dvec3 q = a + (-bq - std::sqrt(disc)) * d;  // the near hit, model coordinates
       if (-glm::dot(q, d) < 0.4) continue;
-      double phi = spheremap::deg(std::asin(std::clamp(q.y, -1.0, 1.0)));
-      double theta = spheremap::deg(std::atan2(q.x, q.z));
+      double phi = sphere::deg(std::asin(std::clamp(q.y, -1.0, 1.0)));
+      double theta = sphere::deg(std::atan2(q.x, q.z));
       if (theta < 0) theta += 360;
       if (std::abs(phi) > 60) continue;
-      glm::dvec2 st = spheremap::texCoord(m, theta, phi) * double(size);
+      glm::dvec2 st = sphere::texCoord(m, theta, phi) * double(size);
       const double check = double(size) / checks;
       auto edge = [&](double u) { return std::abs(u - check * std::round(u / check)); };
       if (std::min(edge(st.x), edge(st.y)) < 3.0) continue;
@@ -344,7 +344,7 @@ TEST(VI5, PlotShowsTheMeasuredRatios) {
     for (int b = 0; b < kBands; ++b) {
       glm::vec3 v(0.0f);
       for (int k = 0; k < 6; ++k) v += dots->vertices[size_t(6 * b + k)].pos / 6.0f;
-      EXPECT_NEAR(v.x, spheremap::bandMid(b), 1e-4);
+      EXPECT_NEAR(v.x, sphere::bandMid(b), 1e-4);
       EXPECT_NEAR(v.y, r[size_t(b)], 1e-5);
       glm::vec2 px = ts::panelToPixels(*plot, plot->projection * plot->modelview * glm::vec4(v, 1.0f));
       ts::Rgba got = img.at(int(px.x), int(px.y));
@@ -358,7 +358,7 @@ TEST(VI5, PlotShowsTheMeasuredRatios) {
   ts::Frame g;
   ts::Image img3 = only3.render(1024, 512, &g);
   glm::vec2 px = ts::panelToPixels(*g.panel("plot"), g.panel("plot")->projection *
-                                                          glm::vec4(spheremap::bandMid(8), value(m, "vi2[70:90]_render"), 0, 1));
+                                                          glm::vec4(sphere::bandMid(8), value(m, "vi2[70:90]_render"), 0, 1));
   EXPECT_FALSE(ts::probe::close(img3.at(int(px.x), int(px.y)), orange, 40));
 }
 

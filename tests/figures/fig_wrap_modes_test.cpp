@@ -51,7 +51,7 @@ TEST(WrapModes, SeedMirrorDiffersAtIntegersOnly) {
   int integers = 0, differ = 0;
   for (int k = -1; k <= 2; ++k) {
     ++integers;
-    differ += wrapmath::seedMirrorTexel(k, 8) != wrapmath::nearestTexel(GL_MIRRORED_REPEAT, k, 8);
+    differ += wrap::seedMirrorTexel(k, 8) != wrap::nearestTexel(GL_MIRRORED_REPEAT, k, 8);
   }
   EXPECT_EQ(differ, integers);  // the opposite edge at every integer
   EXPECT_EQ(value(m, "seed_mirror_integers"), integers);
@@ -59,7 +59,7 @@ TEST(WrapModes, SeedMirrorDiffersAtIntegersOnly) {
   // Away from integers they agree (a fine sweep of u, not at texel edges).
   for (double s = -2.0; s < 3.0; s += 1.0 / 128 + 1e-4)
     if (std::abs(s - std::round(s)) > 1e-3)
-      ASSERT_EQ(wrapmath::seedMirrorTexel(s, 8), wrapmath::nearestTexel(GL_MIRRORED_REPEAT, s, 8)) << s;
+      ASSERT_EQ(wrap::seedMirrorTexel(s, 8), wrap::nearestTexel(GL_MIRRORED_REPEAT, s, 8)) << s;
 }
 
 // The border colour's share with GL_LINEAR at s = -1/4, 0, 1, 5/4: from the
@@ -72,7 +72,7 @@ TEST(WrapModes, BorderShareAtTheEdges) {
   for (int mode = 2; mode < 5; ++mode)
     for (int k = 0; k < 4; ++k) {
       std::string n = std::string("border_pct[") + kNames[mode] + "@" + probeNames[k] + "]";
-      EXPECT_NEAR(value(m, n), 100.0 * wrapmath::borderShare(kModes[mode], probes[k], 8), kPctTol) << n;
+      EXPECT_NEAR(value(m, n), 100.0 * wrap::borderShare(kModes[mode], probes[k], 8), kPctTol) << n;
     }
   // GL_CLAMP: half the border at the edges and outside; CLAMP_TO_EDGE none;
   // CLAMP_TO_BORDER all of it outside.
@@ -101,8 +101,8 @@ TEST(WrapModes, ModesFigureShowsTheFormulasTexels) {
         double us = s * 8, ut = t * 8;
         // Skip texel edges and the lines of the integer grid and the square.
         if (std::abs(us - std::round(us)) < 0.2 || std::abs(ut - std::round(ut)) < 0.2) continue;
-        int i = wrapmath::nearestTexel(kModes[m], s, 8), j = wrapmath::nearestTexel(kModes[m], t, 8);
-        ts::Rgba want = i == wrapmath::kBorder || j == wrapmath::kBorder
+        int i = wrap::nearestTexel(kModes[m], s, 8), j = wrap::nearestTexel(kModes[m], t, 8);
+        ts::Rgba want = i == wrap::kBorder || j == wrap::kBorder
                             ? ts::Rgba{217, 26, 191, 255}  // the border colour (0.85, 0.1, 0.75) in 8 bits
                             : tex.image->at(i, j);
         ts::Rgba got = img.at(x, y);
@@ -131,10 +131,10 @@ TEST(WrapModes, TextureMatrixAtProbes) {
     EXPECT_EQ(value(m, "texture_matrix_mismatches"), 0) << s[1];
     EXPECT_GT(value(m, "texture_matrix_probes"), 40) << s[1];
   }
-  wrapmath::TexTransform x;
+  wrap::TexTransform x;
   x.angleDeg = 30;
-  glm::mat4 m = wrapmath::textureMatrix(x);
-  glm::dvec2 c = wrapmath::transformST(m, 0.5, 0.5), e = wrapmath::transformST(m, 1.0, 0.5);
+  glm::mat4 m = wrap::textureMatrix(x);
+  glm::dvec2 c = wrap::transformST(m, 0.5, 0.5), e = wrap::transformST(m, 1.0, 0.5);
   EXPECT_NEAR(c.x, 0.5, 1e-6);  // about the centre
   EXPECT_NEAR(c.y, 0.5, 1e-6);
   EXPECT_NEAR(std::atan2(e.y - 0.5, e.x - 0.5) * 180 / M_PI, 30.0, 1e-4);

@@ -1,7 +1,7 @@
 // tests/figures/vi1_quad_distortion_test.cpp — Figure VI.1 (quad distortion),
 // rendered offscreen and checked the way conformance suites check pictures:
 // probe pixels whose correct colour is known from the mathematics
-// (demos/quad_distortion/quad_map.hpp) with a tolerance from the channel
+// (demos/quad_distortion/quad_math.hpp) with a tolerance from the channel
 // bits, never against a stored image.
 //
 // Geometry used throughout: in a panel (viewport in image pixels, top-left
@@ -28,13 +28,13 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
-#include "demos/quad_distortion/quad_map.hpp"
+#include "demos/quad_distortion/quad_math.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
-using quadmap::Corners;
-using quadmap::Diagonal;
+using quad::Corners;
+using quad::Diagonal;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kTexels = 256, kChecks = 8;
@@ -48,15 +48,15 @@ double deg(double rad) { return rad * 180.0 / kPi; }
 
 using Map = std::function<glm::dvec2(glm::dvec2)>;
 Map affineMap(const Corners& st, Diagonal d) {
-  quadmap::Split s = quadmap::split(st, d);
+  quad::Split s = quad::split(st, d);
   return [s, d](glm::dvec2 p) { return s.at(p, d)(p); };
 }
 Map bilinearMap(const Corners& st) {
-  return [st](glm::dvec2 p) { return quadmap::bilinear(st, p); };
+  return [st](glm::dvec2 p) { return quad::bilinear(st, p); };
 }
 Map projectiveMap(const Corners& st) {
-  glm::dmat3 H = quadmap::homography(st);
-  return [H](glm::dvec2 p) { return quadmap::projective(H, p); };
+  glm::dmat3 H = quad::homography(st);
+  return [H](glm::dvec2 p) { return quad::projective(H, p); };
 }
 
 using ts::test::Demo;
@@ -353,14 +353,14 @@ TEST(VI1, TextureSpacePanelShowsTheTextureAndTheRegion) {
     };
     const ts::Rgba red{230, 26, 26, 255}, orange{255, 140, 0, 255};
     EXPECT_TRUE(ts::probe::close(pixelAt({0.875, 0.375}), red, tol()));
-    glm::dvec2 mid = quadmap::split(kBook, d).first({0.5, 0.5});
+    glm::dvec2 mid = quad::split(kBook, d).first({0.5, 0.5});
     EXPECT_NEAR(mid.x, tlbr ? 0.5 : 0.375, 1e-12);
     EXPECT_TRUE(ts::probe::close(pixelAt(mid), orange, tol()));
     // A point on the other diagonal's image, away from where the two images
     // cross, is not orange (tl-br render: (0.25,0.25) on the bl-tr image;
     // bl-tr render: (0.25,0.75) on the tl-br image).
-    glm::dvec2 other = tlbr ? quadmap::split(kBook, Diagonal::BottomLeftTopRight).first({1.0 / 3, 1.0 / 3})
-                            : quadmap::split(kBook, Diagonal::TopLeftBottomRight).first({0.25, 0.75});
+    glm::dvec2 other = tlbr ? quad::split(kBook, Diagonal::BottomLeftTopRight).first({1.0 / 3, 1.0 / 3})
+                            : quad::split(kBook, Diagonal::TopLeftBottomRight).first({0.25, 0.75});
     EXPECT_NEAR(other.x, 0.25, 1e-12);
     EXPECT_FALSE(ts::probe::close(pixelAt(other), orange, tol()));
   }
@@ -468,10 +468,10 @@ TEST(VI1, CheckerLinesBendByThePredictedAngle) {
     ts::Frame f;
     ts::Image img = demo.render(1024, 512, &f);
     const ts::Rect vp = panelOf(f, "screen_space").viewport;
-    quadmap::Split sp = quadmap::split(kBook, d);
+    quad::Split sp = quad::split(kBook, d);
     double slope[2];
     for (int side = 0; side < 2; ++side) {
-      const quadmap::Affine& A = side == 0 ? sp.first : sp.second;
+      const quad::Affine& A = side == 0 ? sp.first : sp.second;
       glm::dvec2 g = A.gradient(0);  // (ds/da, ds/db)
       const double s0 = 0.5, window = 10.0;
       double n = 0, sb = 0, sa = 0, sbb = 0, sab = 0;
@@ -497,7 +497,7 @@ TEST(VI1, CheckerLinesBendByThePredictedAngle) {
       EXPECT_NEAR(slope[side], -g.y / g.x, 0.01) << "side " << side;
     }
     double measured = deg(std::abs(std::atan(slope[0]) - std::atan(slope[1])));
-    double predicted = quadmap::angleDeg(sp.first.gradient(0), sp.second.gradient(0));
+    double predicted = quad::angleDeg(sp.first.gradient(0), sp.second.gradient(0));
     EXPECT_NEAR(predicted, deg(std::atan(tlbr ? 1.0 / 3.0 : 0.25)), 1e-9);
     EXPECT_NEAR(measured, predicted, 0.5);
     std::printf("[ info ] %s: s = 1/2 edge bends by %.3f deg in the image, %.3f predicted\n",

@@ -1,4 +1,4 @@
-// tests/unit/envmap_test.cpp — demos/environment_mapping/env_world.hpp: the
+// tests/unit/envmap_test.cpp — demos/environment_mapping/env_math.hpp: the
 // four parameterizations, the world and the solid-angle integrals, on the
 // CPU.  Every check is a relation (a map and its inverse, one convention
 // against another, analytic against numeric), never a stored number.
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "demos/environment_mapping/env_world.hpp"
+#include "demos/environment_mapping/env_math.hpp"
 
 namespace {
 using namespace envmap;

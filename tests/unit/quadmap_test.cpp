@@ -1,16 +1,16 @@
 // tests/unit/quadmap_test.cpp — the mathematics of Figure VI.1
-// (demos/quad_distortion/quad_map.hpp), checked against values derived by
+// (demos/quad_distortion/quad_math.hpp), checked against values derived by
 // hand and against each other.  No GL.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "demos/quad_distortion/quad_map.hpp"
+#include "demos/quad_distortion/quad_math.hpp"
 
 namespace {
-using quadmap::Corners;
-using quadmap::Diagonal;
+using quad::Corners;
+using quad::Diagonal;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kEps = 1e-12;
@@ -31,7 +31,7 @@ void expectNear(glm::dvec2 got, glm::dvec2 want, double eps, const char* what) {
 Corners randomQuad(std::mt19937& rng) {
   std::uniform_real_distribution<double> j(-0.3, 0.3);
   Corners c;
-  const auto& P = quadmap::squareCorners();
+  const auto& P = quad::squareCorners();
   for (size_t i = 0; i < 4; ++i) c[i] = P[i] + glm::dvec2(j(rng), j(rng));
   return c;
 }
@@ -47,7 +47,7 @@ TEST(QuadMap, AffineThroughReproducesItsThreeCorners) {
     for (auto& v : s) v = {u(rng), u(rng)};
     glm::dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
     if (std::abs(e1.x * e2.y - e1.y * e2.x) < 0.1) continue;  // nearly degenerate: skip
-    quadmap::Affine A = quadmap::affineThrough(p[0], p[1], p[2], s[0], s[1], s[2]);
+    quad::Affine A = quad::affineThrough(p[0], p[1], p[2], s[0], s[1], s[2]);
     for (int k = 0; k < 3; ++k) expectNear(A(p[k]), s[k], 1e-9, "corner");
     // ... and the gradients are its matrix's rows: a step along a moves s by m[0][0].
     glm::dvec2 q(u(rng), u(rng));
@@ -60,16 +60,16 @@ TEST(QuadMap, AffineThroughReproducesItsThreeCorners) {
 // corners of their own triangles and agree with each other along the
 // diagonal (the texture is continuous; only its gradient jumps).
 TEST(QuadMap, SplitMapsReproduceCornersAndAgreeOnTheDiagonal) {
-  const auto& P = quadmap::squareCorners();
+  const auto& P = quad::squareCorners();
   std::mt19937 rng(2);
   for (int n = 0; n < 50; ++n) {
     Corners st = n == 0 ? kBook : randomQuad(rng);
     // tl-br: first = (00,10,01), second = (10,11,01); diagonal (0,1)-(1,0).
-    quadmap::Split a = quadmap::split(st, Diagonal::TopLeftBottomRight);
+    quad::Split a = quad::split(st, Diagonal::TopLeftBottomRight);
     for (int i : {0, 1, 3}) expectNear(a.first(P[size_t(i)]), st[size_t(i)], 1e-9, "tl-br first");
     for (int i : {1, 2, 3}) expectNear(a.second(P[size_t(i)]), st[size_t(i)], 1e-9, "tl-br second");
     // bl-tr: first = (00,10,11), second = (00,11,01); diagonal (0,0)-(1,1).
-    quadmap::Split b = quadmap::split(st, Diagonal::BottomLeftTopRight);
+    quad::Split b = quad::split(st, Diagonal::BottomLeftTopRight);
     for (int i : {0, 1, 2}) expectNear(b.first(P[size_t(i)]), st[size_t(i)], 1e-9, "bl-tr first");
     for (int i : {0, 2, 3}) expectNear(b.second(P[size_t(i)]), st[size_t(i)], 1e-9, "bl-tr second");
     for (double u = 0; u <= 1.0; u += 0.125) {
@@ -82,7 +82,7 @@ TEST(QuadMap, SplitMapsReproduceCornersAndAgreeOnTheDiagonal) {
 // Claim: Split::inFirst puts each corner's neighbourhood in the triangle the
 // header documents (tl-br: (0,0) side first; bl-tr: (1,0) side first).
 TEST(QuadMap, SplitSidesAreTheDocumentedTriangles) {
-  quadmap::Split s = quadmap::split(kBook, Diagonal::TopLeftBottomRight);
+  quad::Split s = quad::split(kBook, Diagonal::TopLeftBottomRight);
   EXPECT_TRUE(s.inFirst({0.1, 0.1}, Diagonal::TopLeftBottomRight));
   EXPECT_FALSE(s.inFirst({0.9, 0.9}, Diagonal::TopLeftBottomRight));
   EXPECT_TRUE(s.inFirst({0.9, 0.1}, Diagonal::BottomLeftTopRight));
@@ -98,14 +98,14 @@ TEST(QuadMap, SplitSidesAreTheDocumentedTriangles) {
 // corners (checked through projective() and through the (sq,tq,0,q) vertex
 // coordinates GL receives), for the book's quad and random convex quads.
 TEST(QuadMap, HomographyMapsSquareCornersToTheQuad) {
-  const auto& P = quadmap::squareCorners();
+  const auto& P = quad::squareCorners();
   std::mt19937 rng(3);
   for (int n = 0; n < 50; ++n) {
     Corners st = n == 0 ? kBook : randomQuad(rng);
-    glm::dmat3 H = quadmap::homography(st);
+    glm::dmat3 H = quad::homography(st);
     for (size_t i = 0; i < 4; ++i) {
-      expectNear(quadmap::projective(H, P[i]), st[i], 1e-9, "corner");
-      glm::dvec4 v = quadmap::projectiveTexCoord(H, P[i]);
+      expectNear(quad::projective(H, P[i]), st[i], 1e-9, "corner");
+      glm::dvec4 v = quad::projectiveTexCoord(H, P[i]);
       EXPECT_EQ(v.z, 0.0);
       EXPECT_GT(v.w, 0.0) << "q must stay positive over a convex quad";
       expectNear(glm::dvec2(v.x, v.y) / v.w, st[i], 1e-9, "(sq,tq)/q");
@@ -117,15 +117,15 @@ TEST(QuadMap, HomographyMapsSquareCornersToTheQuad) {
 // every point, and the map equals the (then identical) triangle maps.  The
 // book's quad is not a parallelogram and its q differs from 1 inside.
 TEST(QuadMap, HomographyOfAParallelogramIsAffine) {
-  glm::dmat3 H = quadmap::homography(kParallelogram);
-  quadmap::Split s = quadmap::split(kParallelogram, Diagonal::TopLeftBottomRight);
+  glm::dmat3 H = quad::homography(kParallelogram);
+  quad::Split s = quad::split(kParallelogram, Diagonal::TopLeftBottomRight);
   for (double a = 0; a <= 1.0; a += 0.25)
     for (double b = 0; b <= 1.0; b += 0.25) {
-      EXPECT_EQ(quadmap::projectiveTexCoord(H, {a, b}).w, 1.0);
-      expectNear(quadmap::projective(H, {a, b}), s.first({a, b}), 1e-12, "affine");
+      EXPECT_EQ(quad::projectiveTexCoord(H, {a, b}).w, 1.0);
+      expectNear(quad::projective(H, {a, b}), s.first({a, b}), 1e-12, "affine");
     }
-  glm::dmat3 B = quadmap::homography(kBook);
-  EXPECT_GT(std::abs(quadmap::projectiveTexCoord(B, {0.5, 0.5}).w - 1.0), 0.01);
+  glm::dmat3 B = quad::homography(kBook);
+  EXPECT_GT(std::abs(quad::projectiveTexCoord(B, {0.5, 0.5}).w - 1.0), 0.01);
 }
 
 // Claim: the kink for the book's corners, split tl-br, is atan(1/3).
@@ -140,36 +140,36 @@ TEST(QuadMap, HomographyOfAParallelogramIsAffine) {
 // atan(1/4) = 14.0362 deg.  A parallelogram: one affine map, no kink.
 TEST(QuadMap, PredictedKinkMatchesHandDerivation) {
   const double tlbr = std::atan(1.0 / 3.0) * 180.0 / kPi, bltr = std::atan(0.25) * 180.0 / kPi;
-  EXPECT_NEAR(quadmap::predictedKinkDeg(kBook, Diagonal::TopLeftBottomRight), tlbr, 1e-9);
-  EXPECT_NEAR(quadmap::predictedKinkDeg(kBook, Diagonal::BottomLeftTopRight), bltr, 1e-9);
+  EXPECT_NEAR(quad::predictedKinkDeg(kBook, Diagonal::TopLeftBottomRight), tlbr, 1e-9);
+  EXPECT_NEAR(quad::predictedKinkDeg(kBook, Diagonal::BottomLeftTopRight), bltr, 1e-9);
   EXPECT_NEAR(tlbr, 18.4349488, 1e-6);
-  quadmap::Split s = quadmap::split(kBook, Diagonal::TopLeftBottomRight);
+  quad::Split s = quad::split(kBook, Diagonal::TopLeftBottomRight);
   expectNear(s.first.gradient(0), {1.0, 0.0}, 1e-12, "grad s lower-left");
   expectNear(s.second.gradient(0), {0.75, -0.25}, 1e-12, "grad s upper-right");
   expectNear(s.second.gradient(1), {-0.25, 0.75}, 1e-12, "grad t upper-right");
   for (Diagonal d : {Diagonal::TopLeftBottomRight, Diagonal::BottomLeftTopRight})
-    EXPECT_NEAR(quadmap::predictedKinkDeg(kParallelogram, d), 0.0, 1e-5);
+    EXPECT_NEAR(quad::predictedKinkDeg(kParallelogram, d), 0.0, 1e-5);
 }
 
 // Claim: angleDeg is the angle between two vectors, whatever their lengths.
 TEST(QuadMap, AngleDeg) {
-  EXPECT_NEAR(quadmap::angleDeg({1, 0}, {0, 3}), 90.0, 1e-12);
-  EXPECT_NEAR(quadmap::angleDeg({2, 0}, {-1, 0}), 180.0, 1e-12);
-  EXPECT_NEAR(quadmap::angleDeg({1, 1}, {5, 5}), 0.0, 1e-5);  // acos near 1: ~1e-6 deg of round-off
-  EXPECT_NEAR(quadmap::angleDeg({1, 0}, {1, 1}), 45.0, 1e-12);
+  EXPECT_NEAR(quad::angleDeg({1, 0}, {0, 3}), 90.0, 1e-12);
+  EXPECT_NEAR(quad::angleDeg({2, 0}, {-1, 0}), 180.0, 1e-12);
+  EXPECT_NEAR(quad::angleDeg({1, 1}, {5, 5}), 0.0, 1e-5);  // acos near 1: ~1e-6 deg of round-off
+  EXPECT_NEAR(quad::angleDeg({1, 0}, {1, 1}), 45.0, 1e-12);
 }
 
 // Claim: bilinear interpolation takes the corner values at the corners, the
 // mean at the centre, and the edge midpoints' means on the edges.
 TEST(QuadMap, BilinearAtCornersCentreAndEdges) {
-  const auto& P = quadmap::squareCorners();
+  const auto& P = quad::squareCorners();
   std::mt19937 rng(4);
   for (int n = 0; n < 20; ++n) {
     Corners st = n == 0 ? kBook : randomQuad(rng);
-    for (size_t i = 0; i < 4; ++i) expectNear(quadmap::bilinear(st, P[i]), st[i], kEps, "corner");
-    expectNear(quadmap::bilinear(st, {0.5, 0.5}), (st[0] + st[1] + st[2] + st[3]) / 4.0, kEps, "centre");
-    expectNear(quadmap::bilinear(st, {0.5, 0.0}), (st[0] + st[1]) / 2.0, kEps, "bottom edge");
-    expectNear(quadmap::bilinear(st, {1.0, 0.5}), (st[1] + st[2]) / 2.0, kEps, "right edge");
+    for (size_t i = 0; i < 4; ++i) expectNear(quad::bilinear(st, P[i]), st[i], kEps, "corner");
+    expectNear(quad::bilinear(st, {0.5, 0.5}), (st[0] + st[1] + st[2] + st[3]) / 4.0, kEps, "centre");
+    expectNear(quad::bilinear(st, {0.5, 0.0}), (st[0] + st[1]) / 2.0, kEps, "bottom edge");
+    expectNear(quad::bilinear(st, {1.0, 0.5}), (st[1] + st[2]) / 2.0, kEps, "right edge");
   }
 }
 
@@ -177,8 +177,8 @@ TEST(QuadMap, BilinearAtCornersCentreAndEdges) {
 // quad split tl-br, |(0.25,0.25)| = 0.3536 (identity vs. the upper-right map
 // at corner (0,0): the upper-right map sends (0,0) to (0.25, 0.25)).
 TEST(QuadMap, SplitDisagreement) {
-  EXPECT_NEAR(quadmap::splitDisagreement(kParallelogram, Diagonal::TopLeftBottomRight), 0.0, 1e-9);
-  EXPECT_NEAR(quadmap::splitDisagreement(kBook, Diagonal::TopLeftBottomRight), std::sqrt(0.125), 1e-9);
+  EXPECT_NEAR(quad::splitDisagreement(kParallelogram, Diagonal::TopLeftBottomRight), 0.0, 1e-9);
+  EXPECT_NEAR(quad::splitDisagreement(kBook, Diagonal::TopLeftBottomRight), std::sqrt(0.125), 1e-9);
 }
 }  // namespace
 
@@ -187,14 +187,14 @@ TEST(QuadMap, SplitDisagreement) {
 // diagonals, and no bend for the maps that are smooth across it — so the
 // demo's predictions for bilinear and projective are computed, not assumed.
 TEST(QuadMap, KinkAcrossTheDiagonalAgreesWithTheClosedForm) {
-  const quadmap::Corners st = {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(0.75, 0.75), glm::dvec2(0, 1)};
-  for (quadmap::Diagonal d : {quadmap::Diagonal::TopLeftBottomRight, quadmap::Diagonal::BottomLeftTopRight}) {
-    quadmap::Split s = quadmap::split(st, d);
-    double numeric = quadmap::kinkAcrossDiagonalDeg([&](glm::dvec2 p) { return s.at(p, d)(p); }, d);
-    EXPECT_NEAR(numeric, quadmap::predictedKinkDeg(st, d), 1e-3);
+  const quad::Corners st = {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(0.75, 0.75), glm::dvec2(0, 1)};
+  for (quad::Diagonal d : {quad::Diagonal::TopLeftBottomRight, quad::Diagonal::BottomLeftTopRight}) {
+    quad::Split s = quad::split(st, d);
+    double numeric = quad::kinkAcrossDiagonalDeg([&](glm::dvec2 p) { return s.at(p, d)(p); }, d);
+    EXPECT_NEAR(numeric, quad::predictedKinkDeg(st, d), 1e-3);
     EXPECT_GT(numeric, 10.0);  // the book's corners bend by 14 or 18 degrees
-    EXPECT_LT(quadmap::kinkAcrossDiagonalDeg([&](glm::dvec2 p) { return quadmap::bilinear(st, p); }, d), 1e-2);
-    glm::dmat3 h = quadmap::homography(st);
-    EXPECT_LT(quadmap::kinkAcrossDiagonalDeg([&](glm::dvec2 p) { return quadmap::projective(h, p); }, d), 1e-2);
+    EXPECT_LT(quad::kinkAcrossDiagonalDeg([&](glm::dvec2 p) { return quad::bilinear(st, p); }, d), 1e-2);
+    glm::dmat3 h = quad::homography(st);
+    EXPECT_LT(quad::kinkAcrossDiagonalDeg([&](glm::dvec2 p) { return quad::projective(h, p); }, d), 1e-2);
   }
 }

@@ -1,4 +1,4 @@
-// demos/mipmap_popping/mip_math.hpp — the mathematics of mipmapping and
+// demos/mipmap_popping/mipmap_math.hpp — the mathematics of mipmapping and
 // popping (Buss VI.1.3), shared by the demo and its tests.
 //
 // 1. Level of detail from the analytic derivatives.
@@ -65,7 +65,7 @@
 #include "common/core/image.hpp"
 #include "common/core/textures.hpp"
 
-namespace mipmath {
+namespace mipmap {
 constexpr int kTexels = 256;             // the textures are 256 x 256: levels 0..8
 constexpr int kLevels = 9;
 constexpr double kTexelsPerUnit = 256;   // D: the texture repeats once per world unit
@@ -371,4 +371,4 @@ inline double rmsError(const ts::Image& a, const ts::Image& b, const std::vector
   if (count) *count = n / 3;
   return n ? std::sqrt(sum / double(n)) : 0.0;
 }
-}  // namespace mipmath
+}  // namespace mipmap

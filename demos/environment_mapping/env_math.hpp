@@ -1,4 +1,4 @@
-// demos/environment_mapping/env_world.hpp — the world around the object and
+// demos/environment_mapping/env_math.hpp — the world around the object and
 // the four ways of storing it (Buss VI.3; seed 001's lat-long, cube, sphere
 // and paraboloid maps; seed 002's sphere and cube formulas).  Pure CPU, no
 // GL: the demo bakes its textures from here, the tests check it, and the

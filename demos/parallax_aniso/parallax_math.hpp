@@ -1,4 +1,4 @@
-// demos/parallax_aniso/relief.hpp — the mathematics of the parallax /
+// demos/parallax_aniso/parallax_math.hpp — the mathematics of the parallax /
 // anisotropic-filtering demo, free of OpenGL so tests can check it by hand:
 //
 //  * (the relief textures themselves, bricks, step and flat, are made in

@@ -1,4 +1,4 @@
-// demos/sphere_projections/sphere_map.hpp — the mathematics of Figure VI.5.
+// demos/sphere_projections/sphere_math.hpp — the mathematics of Figure VI.5.
 //
 // The sphere p(θ, φ) = (r sin θ cos φ, r sin φ, r cos θ cos φ), θ in
 // [0°, 360°), φ in [-90°, 90°], gets texture coordinates two ways (Buss VI.1.2):
@@ -32,7 +32,7 @@
 
 #include "common/core/mesh.hpp"
 
-namespace spheremap {
+namespace sphere {
 constexpr double kPi = 3.14159265358979323846;
 inline double rad(double deg) { return deg * kPi / 180.0; }
 inline double deg(double r) { return r * 180.0 / kPi; }
@@ -176,4 +176,4 @@ inline double circularSpan(std::vector<double> s) {
   for (size_t k = 1; k < s.size(); ++k) gap = std::max(gap, s[k] - s[k - 1]);
   return 1.0 - gap;
 }
-}  // namespace spheremap
+}  // namespace sphere

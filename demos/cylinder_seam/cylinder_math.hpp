@@ -1,4 +1,4 @@
-// demos/cylinder_seam/cylinder_map.hpp — the mathematics of Figures VI.3 and
+// demos/cylinder_seam/cylinder_math.hpp — the mathematics of Figures VI.3 and
 // VI.4 and Exercise VI.1 (Buss, VI.1.2).
 //
 // The side of a cylinder, p(θ, y) = (r sin θ, y, r cos θ), -h/2 <= y <= h/2,
@@ -30,7 +30,7 @@
 
 #include "common/core/mesh.hpp"
 
-namespace cylmap {
+namespace cylinder {
 enum class Coords { Wrong, Right };
 enum class Seam { Front, Back };
 
@@ -90,4 +90,4 @@ inline glm::dvec3 point(double r, double thetaDegrees, double y) {
   double th = ts::degToRad(thetaDegrees);
   return {r * std::sin(th), y, r * std::cos(th)};
 }
-}  // namespace cylmap
+}  // namespace cylinder

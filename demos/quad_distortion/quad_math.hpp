@@ -1,4 +1,4 @@
-// demos/quad_distortion/quad_map.hpp — the mathematics of Figure VI.1.
+// demos/quad_distortion/quad_math.hpp — the mathematics of Figure VI.1.
 //
 // A unit square, (a, b) in [0,1]^2 with a to the right and b up, gets texture
 // coordinates st[0..3] at its corners (0,0), (1,0), (1,1), (0,1).  Three ways
@@ -21,7 +21,7 @@
 
 #include "common/core/error.hpp"
 
-namespace quadmap {
+namespace quad {
 using Corners = std::array<glm::dvec2, 4>;  // st at (0,0), (1,0), (1,1), (0,1)
 
 // The diagonal that splits the square into two triangles.
@@ -181,4 +181,4 @@ inline double splitDisagreement(const Corners& st, Diagonal d) {
   for (const auto& p : squareCorners()) worst = std::fmax(worst, glm::length(s.first(p) - s.second(p)));
   return worst;
 }
-}  // namespace quadmap
+}  // namespace quad

@@ -1,4 +1,4 @@
-// demos/wrap_modes/wrap_passes.hpp — the measurement passes of
+// demos/wrap_modes/wrap_gl.hpp — the measurement passes of
 // demos/wrap_modes: small frames rendered offscreen with GL and read back,
 // each compared with the formulas of wrap_math.hpp.  Every pass draws with
 // ts::Renderer (common/gl/render.cpp), the same calls as the figures.
@@ -15,7 +15,7 @@
 #include "common/core/textures.hpp"
 #include "wrap_math.hpp"
 
-namespace wrappass {
+namespace wrap {
 // A texel-index texture of any size (a crop of the square one): the NPOT
 // case.  Border (1,1,1,1) decodes to index 4095, which no texel has.
 inline ts::TextureDesc indexTexture(int w, int h, GLenum mode) {
@@ -63,7 +63,7 @@ inline int texelMismatches(ts::Renderer& r, GLenum mode, int w, int h, int lo, i
   auto decoded = [](ts::Rgba c) {
     int i, j;
     ts::decodeTexelIndex(c, &i, &j);  // the border (1,1,1,1) decodes to 4095
-    return glm::ivec2(i == 4095 ? wrapmath::kBorder : i, j == 4095 ? wrapmath::kBorder : j);
+    return glm::ivec2(i == 4095 ? wrap::kBorder : i, j == 4095 ? wrap::kBorder : j);
   };
   int bad = 0;
   {
@@ -77,10 +77,10 @@ inline int texelMismatches(ts::Renderer& r, GLenum mode, int w, int h, int lo, i
     for (int y = 0; y < f.height; ++y)
       for (int x = 0; x < f.width; ++x) {
         double s = lo + n * (x + 0.5) / f.width, t = lo + n * (f.height - y - 0.5) / f.height;
-        glm::ivec2 want(wrapmath::nearestTexel(mode, s, w), wrapmath::nearestTexel(mode, t, h));
+        glm::ivec2 want(wrap::nearestTexel(mode, s, w), wrap::nearestTexel(mode, t, h));
         glm::ivec2 got = decoded(img.at(x, y));
-        if (want.x == wrapmath::kBorder || want.y == wrapmath::kBorder) want = glm::ivec2(wrapmath::kBorder);
-        if (got.x == wrapmath::kBorder || got.y == wrapmath::kBorder) got = glm::ivec2(wrapmath::kBorder);
+        if (want.x == wrap::kBorder || want.y == wrap::kBorder) want = glm::ivec2(wrap::kBorder);
+        if (got.x == wrap::kBorder || got.y == wrap::kBorder) got = glm::ivec2(wrap::kBorder);
         bad += got != want;
       }
   }
@@ -93,10 +93,10 @@ inline int texelMismatches(ts::Renderer& r, GLenum mode, int w, int h, int lo, i
   ts::Image img = r.renderOffscreen(f);
   for (int k = 0; k <= n; ++k) {
     int got = decoded(img.at(k, 0)).x;
-    bad += got != wrapmath::nearestTexel(mode, lo + k, w);
+    bad += got != wrap::nearestTexel(mode, lo + k, w);
     if (seed) {
       ++seed->integers;
-      seed->differs += got != wrapmath::seedMirrorTexel(lo + k, w);
+      seed->differs += got != wrap::seedMirrorTexel(lo + k, w);
     }
   }
   return bad;
@@ -143,12 +143,12 @@ inline int matrixMismatches(ts::Renderer& r, const glm::mat4& m, int* checked) {
   *checked = 0;
   for (int py = 4; py < W; py += 8)
     for (int px = 4; px < W; px += 8) {
-      glm::dvec2 st = wrapmath::transformST(m, (px + 0.5) / W, (W - py - 0.5) / W), u = st * double(N);
+      glm::dvec2 st = wrap::transformST(m, (px + 0.5) / W, (W - py - 0.5) / W), u = st * double(N);
       if (std::abs(u.x - std::round(u.x)) < 0.05 || std::abs(u.y - std::round(u.y)) < 0.05) continue;
       int i, j;
       ts::decodeTexelIndex(img.at(px, py), &i, &j);
       ++*checked;
-      bad += i != wrapmath::nearestTexel(GL_REPEAT, st.x, N) || j != wrapmath::nearestTexel(GL_REPEAT, st.y, N);
+      bad += i != wrap::nearestTexel(GL_REPEAT, st.x, N) || j != wrap::nearestTexel(GL_REPEAT, st.y, N);
     }
   return bad;
 }
@@ -184,7 +184,7 @@ inline int envMismatches(ts::Renderer& r, GLenum mode, glm::vec4 envColour) {
   for (int c = 0; c < 6; ++c)
     for (int k = 0; k < 100; ++k) {
       ts::Rgba tx = img->at(k, 0), g = got.at(k, c);
-      glm::dvec4 want = wrapmath::texEnv(mode, glm::dvec4(frags[c]), glm::dvec4(tx.r, tx.g, tx.b, tx.a) / 255.0,
+      glm::dvec4 want = wrap::texEnv(mode, glm::dvec4(frags[c]), glm::dvec4(tx.r, tx.g, tx.b, tx.a) / 255.0,
                                          glm::dvec4(envColour)) * 255.0;
       bad += std::abs(g.r - want.r) > 1 || std::abs(g.g - want.g) > 1 || std::abs(g.b - want.b) > 1 ||
              std::abs(g.a - want.a) > 1;
@@ -193,7 +193,7 @@ inline int envMismatches(ts::Renderer& r, GLenum mode, glm::vec4 envColour) {
 }
 
 // The lit plane of the environment view: 16 x 16 cells of the unit square,
-// lit per vertex (wrapmath::phong: point light and eye at (1/2, 1/2, 0.6),
+// lit per vertex (wrap::phong: point light and eye at (1/2, 1/2, 0.6),
 // so the specular peak, 1, is at vertex (8, 8)).  `separate`: the specular
 // part as the secondary colour with GL_COLOR_SUM; else in the primary colour.
 inline ts::Batch litPlane(int tex, GLenum env, glm::vec4 envColour, bool separate) {
@@ -209,7 +209,7 @@ inline ts::Batch litPlane(int tex, GLenum env, glm::vec4 envColour, bool separat
     for (int i = 0; i < n; ++i)
       for (glm::ivec2 c : {glm::ivec2(0, 0), {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}}) {
         glm::dvec3 pos(double(i + c.x) / n, double(j + c.y) / n, 0.0);
-        wrapmath::Lit lit = wrapmath::phong(pos, {0, 0, 1}, light, light, colour, 0.25, 40.0);
+        wrap::Lit lit = wrap::phong(pos, {0, 0, 1}, light, light, colour, 0.25, 40.0);
         ts::Vertex v;
         v.pos = glm::vec3(pos);
         v.tex = {pos.x, pos.y, 0, 1};
@@ -231,4 +231,4 @@ inline double peakBrightness(const ts::Image& img, const ts::Rect& vp) {
     }
   return peak;
 }
-}  // namespace wrappass
+}  // namespace wrap

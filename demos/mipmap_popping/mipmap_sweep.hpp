@@ -1,4 +1,4 @@
-// demos/mipmap_popping/sweep.hpp — the demo's pictures as Frame data and its
+// demos/mipmap_popping/mipmap_sweep.hpp — the demo's pictures as Frame data and its
 // measurement passes (GL renders through Renderer::renderOffscreen at fixed
 // sizes, so the numbers do not depend on the window).  Shared by the demo
 // and its tests.
@@ -6,7 +6,7 @@
 //  * Popping: a grid of 32 x 32 panels, each the facing plane at one
 //    distance of a sweep (log2 distance -1 .. 7.5 in steps of 1/16), drawn
 //    with the mip-level-colours texture.  The LOD is uniform over each panel
-//    (mip_math.hpp, 2), so its mean colour says which level(s) GL used; the
+//    (mipmap_math.hpp, 2), so its mean colour says which level(s) GL used; the
 //    popping measure is the largest jump of that mean between neighbours.
 //  * Far-field error: a ground plane seen at a slant (384 x 192), rendered
 //    with each filter and compared with a supersampled reference: the same
@@ -29,14 +29,14 @@
 #include "common/core/textures.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/core/user_texture.hpp"
-#include "mip_math.hpp"
+#include "mipmap_math.hpp"
 
-namespace mipmath {
+namespace mipmap {
 constexpr double kMinLog2 = -1.0, kMaxLog2 = 7.5;  // the distance range (log2)
 }
 
-namespace sweep {
-using namespace mipmath;
+namespace mipmap {
+using namespace mipmap;
 
 // How the texture is sampled: the demo's state that matters to a pass.
 struct Look {
@@ -49,7 +49,7 @@ struct Look {
   ts::OrbitCamera orbit{};                   // --yaw --pitch --zoom: the slanted plane's camera
 };
 inline Camera slantCamera(int w, int h, const ts::OrbitCamera& o) {
-  return mipmath::slantCamera(w, h, o.yaw, o.pitch, o.zoom);
+  return mipmap::slantCamera(w, h, o.yaw, o.pitch, o.zoom);
 }
 
 // The texture (256 x 256, the book's 2x2 mip chain) with the look's filter.
@@ -241,7 +241,7 @@ inline void addSlant(ts::Frame& f, ts::Panel& p, const Look& l, SlantKind kind, 
                   {"background", p.clearColor}};
     bool have = false;
     for (const auto& pr : f.programs) have |= pr.first == b.program;
-    if (!have) f.programs.push_back({b.program, {"demos/mipmap_popping/sweep.hpp", referenceVS(), referenceFS()}});
+    if (!have) f.programs.push_back({b.program, {"demos/mipmap_popping/mipmap_sweep.hpp", referenceVS(), referenceFS()}});
   }
   p.batches.push_back(b);
 }
@@ -302,4 +302,4 @@ inline SlantErrors slantErrors(ts::Renderer& r, const Look& l) {
   }
   return e;
 }
-}  // namespace sweep
+}  // namespace mipmap

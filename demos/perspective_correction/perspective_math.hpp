@@ -1,4 +1,4 @@
-// demos/perspective_correction/perspective_map.hpp — the mathematics of Figure VI.2.
+// demos/perspective_correction/perspective_math.hpp — the mathematics of Figure VI.2.
 //
 // A square of side 2, model coordinates (u, v, 0) with u, v in [-1, 1] and
 // texture coordinates (s, t) = ((u + 1)/2, (v + 1)/2), is tilted back by

@@ -1,4 +1,4 @@
-// demos/parallax_aniso/measure.hpp — the measurement of every mode against
+// demos/parallax_aniso/parallax_measure.hpp — the measurement of every mode against
 // the reference: the table the demo prints and writes as CSV, the tests
 // regenerate and bound, and the figure shows.
 #pragma once
@@ -11,7 +11,7 @@
 #include "common/core/layout.hpp"
 #include "common/core/probe.hpp"
 #include "parallax_gl.hpp"
-#include "relief.hpp"
+#include "parallax_math.hpp"
 
 namespace pax {
 struct Row {
