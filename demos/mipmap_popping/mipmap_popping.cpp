@@ -10,16 +10,16 @@
 // texture direction and short in the other: anisotropic filtering addresses
 // that.
 //
-// Views: single — a textured plane facing the eye at a distance (left half
-// the texture, right half a texture whose mip levels are coloured, so the
-// level GL chose is visible; the outlined square is the probe's size);
-// filmstrip — frames 1/4 level apart, the current filter above, trilinear
-// below; plot — the mean colour of the probe against distance (steps =
+// Views: filmstrip (the first: the popping itself) — frames 1/4 level
+// apart, the current filter above, trilinear below; single — a textured
+// plane facing the eye at a distance (left half the texture, right half a
+// texture whose mip levels are coloured, so the level GL chose is visible;
+// the outlined square is the probe's size); plot — the mean colour of the probe against distance (steps =
 // popping, ramps = none); slant — a ground plane to the horizon: an 8x8
 // supersampled reference and the seven filters.
 //
 // Keys (each is also a flag, see --help):
-//   v  view: single | filmstrip | plot | slant      f  minification filter
+//   v  view: filmstrip | single | plot | slant      f  minification filter
 //   d / D  farther / nearer (log2 distance +-1/8)    b / B  LOD bias +-1/4
 //   a / A  max anisotropy +-2 (2..16)                c  levels: texture | colours | split
 //   t  texture: labelled grid | checkerboard         g  gamma-correct (linear-light) mip averages
@@ -114,8 +114,8 @@ class MipmapPopping final : public ts::Scene {
   std::vector<std::string> claim() const override { return {"popping_ratio", "mip_overhead"}; }
 
   void addOptions(ts::Options& o) override {
-    o.addEnum("view", &view_, {"single", "filmstrip", "plot", "slant"},
-              "single plane | frames at several distances | probe colour vs distance | slanted plane", 'v');
+    o.addEnum("view", &view_, {"filmstrip", "single", "plot", "slant"},
+              "frames at several distances | single plane | probe colour vs distance | slanted plane", 'v');
     std::vector<std::string> names;
     for (int f = 0; f < kFilterCount; ++f) names.push_back(filterName(f));
     o.addEnum("filter", &filter_, names, "minification filter (anisotropic = trilinear + max anisotropy)", 'f');
@@ -181,7 +181,7 @@ class MipmapPopping final : public ts::Scene {
   mipmap::Look look() const { return {filter_, aniso_, bias_, texture_, linearLight_, &picture_, camera_}; }
 
 
-  int view_ = kSingle, filter_ = kNearestMipNearest, aniso_ = 16, levels_ = kSplit, texture_ = 0;
+  int view_ = kFilmstrip, filter_ = kNearestMipNearest, aniso_ = 16, levels_ = kSplit, texture_ = 0;
   ts::UserTexture picture_;  // --texture FILE
   ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse, on the slanted plane
   float distLog2_ = 2.375f, bias_ = 0.0f;

@@ -24,7 +24,7 @@ namespace mipmap::views {
 using namespace mipmap;
 using ts::layout::fmt;
 
-enum View { kSingle, kFilmstrip, kPlot, kSlant };
+enum View { kFilmstrip, kSingle, kPlot, kSlant };  // the filmstrip first: it shows the popping
 enum Levels { kTextureOnly, kColoursOnly, kSplit };
 
 // What measure() found, for the labels and the plot: measure()'s detail.
