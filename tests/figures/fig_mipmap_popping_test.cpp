@@ -615,14 +615,14 @@ TEST(MipmapPopping, AnimationIsFrameCountedAfterAPause) {
     ts::Frame f = s.build(320, 200, {});
     return f.panel("plane")->projection;
   };
-  Demo still("mipmap_popping", {}), moving("mipmap_popping", {"--animate"});
+  Demo still("mipmap_popping", {"--view", "single"}), moving("mipmap_popping", {"--view", "single", "--animate"});
   glm::mat4 p0 = planeProjection(*still.scene);
   for (int k = 0; k < 30; ++k) moving.scene->update(1.0);  // a second per frame: wall time does not matter
   EXPECT_EQ(planeProjection(*moving.scene), p0);
   for (int k = 0; k < 10; ++k) moving.scene->update(0.001);
   glm::mat4 p40 = planeProjection(*moving.scene);
   EXPECT_NE(p40, p0);
-  Demo again("mipmap_popping", {"--animate"});
+  Demo again("mipmap_popping", {"--view", "single", "--animate"});
   for (int k = 0; k < 40; ++k) again.scene->update(0.5);
   EXPECT_EQ(planeProjection(*again.scene), p40);
   // Turning it off returns to the chosen distance.
