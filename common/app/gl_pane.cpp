@@ -14,11 +14,24 @@ int glPaneWidth(int windowWidth) {
   return std::clamp(windowWidth * 2 / 5, std::min(240, windowWidth / 2), 620);
 }
 
-void GlPane::record(Renderer& r, const Frame& f, bool afterKey, double now, bool print) {
+void GlPane::keyPressed(double now) {
+  if (!calls_.empty()) baseline_ = calls_;
+  keyAt_ = now;
+  awaitingResult_ = true;
+  markedSinceKey_ = false;
+}
+
+void GlPane::record(Renderer& r, const Frame& f, double now, bool print, bool result) {
   // The pictures the scene rendered itself first, then the frame's calls.
   std::vector<CallSection> calls = pictureSections(f, recordPicture(r, f));
-  lines_ = listing(calls, afterKey && !calls_.empty() ? &calls_ : nullptr, 3);
+  // Compared with the listing before the key until its marks have had their
+  // time: re-recording (the measurement arrives, the window is resized)
+  // must not clear them.
+  const bool compare = !baseline_.empty() && (awaitingResult_ || now - keyAt_ < kHighlightSeconds ||
+                                              (markedSinceKey_ && now - changedAt_ < kHighlightSeconds));
+  lines_ = listing(calls, compare ? &baseline_ : nullptr, 3);
   calls_ = std::move(calls);
+  if (result) awaitingResult_ = false;
   firstChanged_ = -1;
   int changed = 0;
   for (size_t k = 0; k < lines_.size(); ++k)
@@ -30,7 +43,8 @@ void GlPane::record(Renderer& r, const Frame& f, bool afterKey, double now, bool
     std::printf("gl pane: %zu lines, %d changed by the last key\n", lines_.size(), changed);
     std::fflush(stdout);
   }
-  if (firstChanged_ >= 0) {
+  if (firstChanged_ >= 0 && !markedSinceKey_) {  // the marks appear: they hold from now
+    markedSinceKey_ = true;
     changedAt_ = now;
     scroll_ = true;
   }

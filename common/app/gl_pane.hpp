@@ -24,17 +24,26 @@ class GlPane {
  public:
   static constexpr double kHighlightSeconds = 4.0;
   bool visible = false;
-  // Draws `f` with its calls recorded and keeps their listing.  afterKey: the
-  // picture changed because of a key, so lines differing from the last
-  // recording are highlighted (and printed to stdout, for tests and logs).
-  void record(Renderer& r, const Frame& f, bool afterKey, double now, bool print);
+  // A key (or a drag) changed the state at `now`: what the next recordings
+  // draw differently from the listing before it is marked yellow, for
+  // kHighlightSeconds after the marks first appear, across every recording
+  // in between (the measurement's pictures arriving, a resize).
+  void keyPressed(double now);
+  // Draws `f` with its calls recorded and keeps their listing, its lines
+  // compared with the listing before the last key while the marks last
+  // (changed lines are printed to stdout, for tests and logs).  `result`:
+  // this picture carries a new measurement (the marks wait for it, however
+  // long the measurement takes).
+  void record(Renderer& r, const Frame& f, double now, bool print, bool result);
   // The pane as a Dear ImGui window at (x, 0), w x h pixels.
   void draw(int x, int w, int h, double now);
 
  private:
-  std::vector<CallSection> calls_;
+  std::vector<CallSection> calls_;     // the last recording
+  std::vector<CallSection> baseline_;  // the recording before the last key
   std::vector<ListingLine> lines_;
-  double changedAt_ = -1e9;
+  double keyAt_ = -1e9, changedAt_ = -1e9;
+  bool awaitingResult_ = false, markedSinceKey_ = false;
   int firstChanged_ = -1;
   bool scroll_ = false;
 };

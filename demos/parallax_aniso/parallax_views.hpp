@@ -132,6 +132,38 @@ struct Views {
   // whole factor when two or more fit (each rendered pixel stays a block of
   // equal pixels: small --res renders stay readable and comparable).
   static double panelScale(double fit) { return fit >= 2.0 ? std::floor(fit) : std::min(1.0, fit); }
+  // The cells of those views: `cells` pictures of the camera's size in two
+  // or four columns (two in a tall window), centred under the header line,
+  // each row a picture, its title line above and `below` pixels under it
+  // (`belowLines` text lines + `belowPixels`), at the text scale that fits.
+  struct Grid {
+    int gap = 12, s = 1, line = 0, cols = 4, w = 0, h = 0, left = 0, width = 0;
+    // The box of column x's captions, from y0 to y1, reaching into the gaps.
+    ts::layout::Box column(int x, float y0, float y1) const {
+      return {std::max(0.0f, float(x - gap / 2)), y0, std::min(float(width), float(x + w + gap / 2)), y1};
+    }
+  };
+  static Grid grid(const ts::Frame& f, const Table& table, int cells, int belowLines, int belowPixels) {
+    namespace L = ts::layout;
+    Grid g;
+    g.width = f.width;
+    const int W = table.cam.width, H = table.cam.height;
+    auto fit = [&](int cols, int line) {
+      int rows = cells / cols;
+      return std::min(double(f.width - (cols + 1) * g.gap) / (cols * W),
+                      double(f.height - 2 * line - rows * ((belowLines + 1) * line + belowPixels)) / (rows * H));
+    };
+    auto colsAt = [&](int line) { return fit(2, line) > fit(4, line) * 1.05 ? 2 : 4; };
+    auto pictureAt = [&](int s) {
+      const int line = int(L::lineHeight(s));
+      double k = panelScale(fit(colsAt(line), line));
+      return ts::Rect{0, 0, std::max(1, int(W * k)), std::max(1, int(H * k))};
+    };
+    g.s = L::fitScale(pictureAt), g.line = int(L::lineHeight(g.s)), g.cols = colsAt(g.line);
+    g.w = pictureAt(g.s).w, g.h = pictureAt(g.s).h;
+    g.left = std::max(0, (f.width - g.cols * g.w - (g.cols - 1) * g.gap) / 2);
+    return g;
+  }
 
   void buildWaiting(ts::Frame& f) const;
   void buildSingle(ts::Frame& f, const Shown& shown) const;
@@ -197,27 +229,12 @@ inline void Views::buildSingle(ts::Frame& f, const Shown& shown) const {
 inline void Views::buildModes(ts::Frame& f, const Shown& shown) const {
   namespace L = ts::layout;
   const Table& table = *shown.table;
-  const int gap = 12, W = table.cam.width, H = table.cam.height;
   // Four cells a row (two rows), or two (four rows) in a tall window; under
-  // each picture its title's line and two of numbers, at the text's scale.
-  auto fit = [&](int cols, int line) {
-    int rows = 8 / cols;
-    return std::min(double(f.width - (cols + 1) * gap) / (cols * W),
-                    double(f.height - 2 * line - rows * (3 * line + 6)) / (rows * H));
-  };
-  auto colsAt = [&](int line) { return fit(2, line) > fit(4, line) * 1.05 ? 2 : 4; };
-  auto pictureAt = [&](int s) {
-    const int line = int(L::lineHeight(s));
-    double k = panelScale(fit(colsAt(line), line));
-    return ts::Rect{0, 0, std::max(1, int(W * k)), std::max(1, int(H * k))};
-  };
-  const int s = L::fitScale(pictureAt), line = int(L::lineHeight(s)), cols = colsAt(line);
-  const int w = pictureAt(s).w, h = pictureAt(s).h;
-  const int left = std::max(0, (f.width - cols * w - (cols - 1) * gap) / 2);
+  // each picture two lines of numbers, at the text's scale.
+  const Grid g = grid(f, table, 8, 2, 6);
+  const int gap = g.gap, s = g.s, line = g.line, cols = g.cols, w = g.w, h = g.h, left = g.left;
   L::caption(f, {4, 4, float(f.width - 4), float(2 * line - 2)}, header(table.renderer), kWhite, s);
-  auto column = [&](int x, float y0, float y1) {
-    return L::Box{std::max(0.0f, float(x - gap / 2)), y0, std::min(float(f.width), float(x + w + gap / 2)), y1};
-  };
+  auto column = [&](int x, float y0, float y1) { return g.column(x, y0, y1); };
   const int order[7] = {kNaive, kTrilinear, kAniso16, kReference, kEwa, kEwaVis, kEwaRows};
   for (int k = 0; k < 7; ++k) {
     int col = k % cols, row = k / cols;
@@ -250,26 +267,11 @@ inline void Views::buildModes(ts::Frame& f, const Shown& shown) const {
 inline void Views::buildError(ts::Frame& f, const Shown& shown) const {
   namespace L = ts::layout;
   const Table& table = *shown.table;
-  const int gap = 12, W = table.cam.width, H = table.cam.height;
-  // Four in a row, or 2 x 2 in a tall window.
-  auto fit = [&](int cols, int line) {
-    int rows = 4 / cols;
-    return std::min(double(f.width - (cols + 1) * gap) / (cols * W),
-                    double(f.height - 2 * line - rows * 3 * line) / (rows * H));
-  };
-  auto colsAt = [&](int line) { return fit(2, line) > fit(4, line) * 1.05 ? 2 : 4; };
-  auto pictureAt = [&](int s) {
-    const int line = int(L::lineHeight(s));
-    double k = panelScale(fit(colsAt(line), line));
-    return ts::Rect{0, 0, std::max(1, int(W * k)), std::max(1, int(H * k))};
-  };
-  const int s = L::fitScale(pictureAt), line = int(L::lineHeight(s)), cols = colsAt(line);
-  const int w = pictureAt(s).w, h = pictureAt(s).h;
-  const int left = std::max(0, (f.width - cols * w - (cols - 1) * gap) / 2);
+  // Four in a row, or 2 x 2 in a tall window; two lines under each.
+  const Grid g = grid(f, table, 4, 2, 0);
+  const int gap = g.gap, s = g.s, line = g.line, cols = g.cols, w = g.w, h = g.h, left = g.left;
   L::caption(f, {4, 4, float(f.width - 4), float(2 * line - 2)}, header(table.renderer), kWhite, s);
-  auto column = [&](int x, float y0, float y1) {
-    return L::Box{std::max(0.0f, float(x - gap / 2)), y0, std::min(float(f.width), float(x + w + gap / 2)), y1};
-  };
+  auto column = [&](int x, float y0, float y1) { return g.column(x, y0, y1); };
   const char* titles[4] = {"occlusion band", "M2 aniso 16x |error|", "M3 EWA |error|", "M4 EWA visible |error|"};
   const int modes[4] = {-1, kAniso16, kEwa, kEwaVis};
   for (int k = 0; k < 4; ++k) {
