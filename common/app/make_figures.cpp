@@ -5,6 +5,8 @@
 //   make_figures [--out DIR] [--backend auto|osmesa|egl] [--scale F] [--only ID] [--list]
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -13,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "common/app/side_panel.hpp"
 #include "common/gl/context.hpp"
 #include "common/core/error.hpp"
 #include "common/gl/figure.hpp"
@@ -26,7 +29,148 @@ struct Entry {
   ts::FigureSpec spec;
   std::string demo, command;
   ts::Measurements measurements;
+  std::string claim;  // the contents' line: spec.claim, its numbers filled in
 };
+
+// A number as the measurement tables print it.
+std::string fixed3(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3f", v);
+  return b;
+}
+
+// The same without the zeros that say nothing, for prose: 0.800 -> 0.8,
+// 24299.000 -> 24299.
+std::string shortNumber(double v) {
+  std::string s = fixed3(v);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
+// Text for a markdown table cell: '|' would end the cell.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
+// The figure's one-line claim with each {name} replaced by that
+// measurement's value (bold).  A name the figure did not measure is an
+// error: the contents would state a number nobody checked.  A figure with
+// no claim line shows its demo's claim measurements (Scene::claim).
+std::string claimLine(const ts::FigureSpec& spec, const ts::Scene& scene, const ts::Measurements& m) {
+  if (spec.claim.empty()) {
+    std::string line;
+    for (const ts::Measurement* c : ts::claimed(scene, m))
+      line += std::string(line.empty() ? "" : "; ") + "`" + c->name + "` **" + shortNumber(c->value) + "**";
+    return line;
+  }
+  std::string line;
+  size_t at = 0;
+  while (at < spec.claim.size()) {
+    size_t open = spec.claim.find_first_of("{}", at);
+    if (open == std::string::npos) {
+      line += spec.claim.substr(at);
+      break;
+    }
+    size_t close = spec.claim.find('}', open);
+    if (spec.claim[open] == '}' || close == std::string::npos)
+      throw ts::Error(spec.id + ": unbalanced braces in its claim \"" + spec.claim + "\"");
+    std::string name = spec.claim.substr(open + 1, close - open - 1);
+    auto it = std::find_if(m.begin(), m.end(), [&](const ts::Measurement& x) { return x.name == name; });
+    if (it == m.end()) throw ts::Error(spec.id + "'s claim names '" + name + "', which it does not measure");
+    line += spec.claim.substr(at, open - at) + "**" + shortNumber(it->value) + "**";
+    at = close + 1;
+  }
+  return line;
+}
+
+// Where a figure goes in the gallery: the chapter's order, read from its
+// book number.  "Figure VI.n" (the book's figures) come first, then "Section
+// VI.n.m" and "Buss VI.n" (the figures of the sections), then "Seed n" (the
+// lecture seeds'); within each, by the numbers, part by part (VI.10 after
+// VI.9).  A book number that names none of these (an exercise) goes after
+// the figure before it in its demo: Exercise VI.2 asks about Figure VI.6's torus.
+struct Place {
+  int part = 3;  // 0 figures, 1 sections, 2 seeds, 3 unknown (last)
+  std::vector<int> numbers;
+  bool operator<(const Place& o) const { return part != o.part ? part < o.part : numbers < o.numbers; }
+};
+
+// "VI" -> 6, "003" -> 3; -1 for anything else.
+int numberOrRoman(const std::string& s) {
+  if (s.empty() || s.size() > 6) return -1;
+  if (std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+    return std::stoi(s);
+  const std::string roman = "IVXLC";
+  const int values[] = {1, 5, 10, 50, 100};
+  int total = 0;
+  for (size_t i = 0; i < s.size(); ++i) {
+    size_t k = roman.find(s[i]);
+    if (k == std::string::npos) return -1;
+    size_t next = i + 1 < s.size() ? roman.find(s[i + 1]) : std::string::npos;
+    total += next != std::string::npos && values[next] > values[k] ? -values[k] : values[k];
+  }
+  return total;
+}
+
+bool placeOf(const std::string& bookNumber, Place& place) {
+  size_t space = bookNumber.find(' ');
+  std::string kind = bookNumber.substr(0, space);
+  for (char& c : kind) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (kind == "figure") place.part = 0;
+  else if (kind == "section" || kind == "buss") place.part = 1;
+  else if (kind == "seed") place.part = 2;
+  else return false;
+  // The reference after the word: "VI.1.3", "003:".
+  size_t from = space == std::string::npos ? bookNumber.size() : space + 1;
+  size_t to = bookNumber.find_first_of(" :(,", from);
+  std::string ref = bookNumber.substr(from, to == std::string::npos ? std::string::npos : to - from);
+  place.numbers.clear();
+  for (size_t at = 0; at <= ref.size();) {
+    size_t dot = std::min(ref.find('.', at), ref.size());
+    int n = numberOrRoman(ref.substr(at, dot - at));
+    if (n < 0) return false;
+    place.numbers.push_back(n);
+    at = dot + 1;
+  }
+  return true;
+}
+
+std::vector<const Entry*> chapterOrder(const std::vector<Entry>& entries) {
+  std::vector<std::pair<Place, const Entry*>> placed;
+  for (size_t i = 0; i < entries.size(); ++i) {
+    Place p;
+    if (!placeOf(entries[i].spec.bookNumber, p))
+      for (size_t j = i; j-- > 0;)
+        if (entries[j].demo == entries[i].demo) {
+          p = placed[j].first;
+          break;
+        }
+    placed.push_back({p, &entries[i]});
+  }
+  std::stable_sort(placed.begin(), placed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<const Entry*> out;
+  for (const auto& p : placed) out.push_back(p.second);
+  return out;
+}
+
+// GitHub's anchor for a heading: lower case; punctuation but '-' and '_'
+// dropped; each space a '-' (two spaces give two).  Other bytes (UTF-8
+// letters) are kept as they are.
+std::string anchor(const std::string& heading) {
+  std::string out;
+  for (char c : heading) {
+    unsigned char u = static_cast<unsigned char>(c);
+    if (std::isalnum(u)) out += char(std::tolower(u));
+    else if (c == ' ' || c == '-') out += '-';
+    else if (c == '_' || u >= 0x80) out += c;
+  }
+  return out;
+}
+
+std::string heading(const Entry& e) { return e.spec.bookNumber + ": `" + e.spec.id + "`"; }
 
 std::string gallery(const std::vector<Entry>& entries, const std::string& regenerate) {
   std::string md =
@@ -36,21 +180,26 @@ std::string gallery(const std::vector<Entry>& entries, const std::string& regene
       "Each PNG has a sidecar `.json` beside it with every parameter needed to recompute it without OpenGL:\n"
       "size, projection and modelview matrices, textures (how they were made, filters, wrap modes), and every\n"
       "vertex with its (s,t,r,q). The measured numbers below are the figure's claim, checked by the tests.\n\n";
-  for (const Entry& e : entries) {
-    md += "## " + e.spec.bookNumber + ": `" + e.spec.id + "`\n\n";
+  std::vector<const Entry*> order = chapterOrder(entries);
+  md += "## Contents\n\n"
+        "In the chapter's order: Buss's Figures VI.1-VI.7, then the figures of his sections, then those of the "
+        "lecture seeds.\n\n"
+        "| figure | claim, measured |\n|---|---|\n";
+  for (const Entry* e : order)
+    md += "| [" + cell(e->spec.bookNumber) + " `" + e->spec.id + "`](#" + anchor(heading(*e)) + ") | " +
+          cell(e->claim) + " |\n";
+  md += "\n";
+  for (const Entry* p : order) {
+    const Entry& e = *p;
+    md += "## " + heading(e) + "\n\n";
     md += "![" + e.spec.bookNumber + "](" + e.spec.id + ".png)\n\n";
     md += e.spec.caption + "\n\n";
     md += "Source: [`demos/" + e.demo + "/" + e.demo + ".cpp`](../demos/" + e.demo + "/" + e.demo + ".cpp). ";
     md += "The OpenGL calls that draw it: [`" + e.spec.id + ".gl.txt`](" + e.spec.id + ".gl.txt). ";
     md += "Make just this one:\n\n    " + e.command + "\n\n";
     md += "| measured | value | meaning |\n|---|---|---|\n";
-    for (const auto& m : e.measurements) {
-      char v[32];
-      std::snprintf(v, sizeof v, "%.3f", m.value);
-      std::string meaning;
-      for (char c : m.meaning) meaning += c == '|' ? std::string("\\|") : std::string(1, c);
-      md += "| `" + m.name + "` | " + v + " | " + meaning + " |\n";
-    }
+    for (const auto& m : e.measurements)
+      md += "| `" + m.name + "` | " + fixed3(m.value) + " | " + cell(m.meaning) + " |\n";
     md += "\n";
   }
   return md;
@@ -106,7 +255,7 @@ int run(int argc, char** argv) {
   for (const auto& reg : ts::sceneRegistry())
     for (const auto& spec : reg.make()->figures()) {
       if (!only.empty() && !selected(only, spec.id, reg.id)) continue;
-      Entry e{spec, reg.id, "", {}};
+      Entry e{spec, reg.id, "", {}, ""};
       e.spec.width = std::max(1, int(std::lround(spec.width * scale)));
       e.spec.height = std::max(1, int(std::lround(spec.height * scale)));
       if (e.spec.width > ts::kMaxImageDimension || e.spec.height > ts::kMaxImageDimension)
@@ -156,6 +305,7 @@ int run(int argc, char** argv) {
     flags.insert(flags.end(), e.spec.flags.begin(), e.spec.flags.end());
     e.command = ts::figureCommand(e.demo, png, e.spec.width, e.spec.height, flags);
     e.measurements = got.measurements;
+    e.claim = claimLine(e.spec, *scene, got.measurements);
     ts::SidecarInfo info{e.spec.id, e.spec.bookNumber, e.spec.caption, e.demo, e.command, opts.state(), got.measurements,
                          ts::gl::rendererString() + " | " + ts::gl::versionString()};
     ts::writePng(png, got.image);

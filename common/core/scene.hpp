@@ -59,6 +59,9 @@ struct FigureSpec {
   std::string caption;
   std::vector<std::string> flags;  // demo options that set the state
   int width = 1024, height = 512;
+  // The claim in one line for the gallery's contents, measurement names in
+  // braces standing for their values: "the lines kink by {kink_deg[affine_tl_br]} deg".
+  std::string claim;
 };
 
 class Scene {

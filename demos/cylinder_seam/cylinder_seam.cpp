@@ -96,12 +96,16 @@ class CylinderSeam final : public ts::Scene {
         {"vi3_cylinder", "Figure VI.3",
          "A texture map (left) wrapped around the side of a cylinder by Eq. VI.1 (right): its left and right edges "
          "meet on the front line x = 0, z = r, where column J meets column A.",
-         {"--coords", "right", "--slices", "24", "--patch=off"}, 1024, 512},
+         {"--coords", "right", "--slices", "24", "--patch=off"}, 1024, 512,
+         "Wrapped by Eq. VI.1 with the winding tracked, {reversed_patches[right]} patches show the texture "
+         "backwards; the seam patch shows {seam_patch_span_s[right]} of s, one slice of 24."},
         {"vi4_seam_patch", "Figure VI.4",
          "The patch x, y, z, w across the seam (theta = -36 deg at x, w; +36 deg at y, z). Left: the intended region "
          "0.9..1.1 (green, wrapping) and the region 0.1..0.9 that s = 0.9 and 0.1 select (red). Middle: s reduced "
          "to [0,1) shows 0.8 of the texture backwards. Right: s = 0.9 -> 1.1 with GL_REPEAT.",
-         {"--view", "compare", "--slices", "5", "--seam", "front"}, 1280, 520},
+         {"--view", "compare", "--slices", "5", "--seam", "front"}, 1280, 520,
+         "s = 0.9 and 0.1 make the seam patch show {seam_patch_span_s[wrong]} of the texture backwards; s = 0.9 -> "
+         "1.1 with GL_REPEAT shows the {seam_patch_span_s[right]} intended."},
     };
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;

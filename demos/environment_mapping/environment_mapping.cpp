@@ -103,24 +103,38 @@ class EnvironmentMapping final : public ts::Scene {
     return {{"env_cube_sphere", "Buss VI.3 (seeds 001, 002)",
              "A mirror sphere reflecting the world stored as a cube map, r per vertex by GL_REFLECTION_MAP texgen: "
              "the picture, the exact reflection per pixel, and the direction error in degrees (black 0, yellow 4 or more).",
-             {"--eval", "vertex"}, 1080, 440},
+             {"--eval", "vertex"}, 1080, 440,
+             "r per vertex, interpolated, through the cube map: {error_mean_deg[shown]} deg mean and "
+             "{error_max_deg[shown]} deg largest direction error (r per pixel: {error_mean_deg[cube/sphere/pixel]})."},
             {"env_compare_torus", "Buss VI.3 (seed 001)",
              "A torus in the four parameterizations at equal memory (24,576 texels), r per vertex: lat-long tears at "
              "its seam, the sphere map smears toward its rim; the reference is the exact reflection per pixel.",
-             {"--view", "compare", "--object", "torus", "--eval", "vertex", "--tilt", "30"}, 1280, 360},
+             {"--view", "compare", "--object", "torus", "--eval", "vertex", "--tilt", "30"}, 1280, 360,
+             "Mean direction error, r per vertex: lat-long {error_mean_deg[latlong/torus/vertex]} deg "
+             "({error_region_deg[latlong/torus/vertex@seam]} at its seam), sphere map "
+             "{error_mean_deg[sphere/torus/vertex]}, cube {error_mean_deg[cube/torus/vertex]}, paraboloid "
+             "{error_mean_deg[paraboloid/torus/vertex]}."},
             {"env_latlong_map", "Buss VI.3 (seed 001)",
              "The lat-long map unwrapped, the texels the flat mirror reads lit: a region at the +Y pole, spread along "
              "whole rows and cut in two by the seam at the map's left and right edges.",
-             {"--view", "map", "--param", "latlong", "--object", "mirror"}, 1080, 440},
+             {"--view", "map", "--param", "latlong", "--object", "mirror"}, 1080, 440,
+             "The mirror reads lat-long texels {texel_aspect[latlong@pole]} times longer than wide at the pole "
+             "({texel_aspect[latlong@body]} elsewhere); the map's texel solid angles differ "
+             "{texel_solid_angle_ratio[latlong]}x."},
             {"env_cube_map", "Buss VI.3 (seed 001)",
              "The cube map's six faces as GL stores them (s right, t down), the texels the flat mirror reads lit: one "
              "small patch of +Y, magnified across the whole mirror, texels visible.",
-             {"--view", "map", "--param", "cube", "--object", "mirror"}, 1080, 440},
+             {"--view", "map", "--param", "cube", "--object", "mirror"}, 1080, 440,
+             "Cube-map texels stay near square ({texel_aspect[cube@face]} on a face) and differ in solid angle at "
+             "most {texel_solid_angle_ratio[cube]}x (lat-long: {texel_solid_angle_ratio[latlong]}x)."},
             {"env_flat_mirror", "Buss VI.3 (seed 001)",
              "A flat mirror leaning back 35 degrees, lat-long with r per vertex: the seam runs across it, and a ball "
              "near the mirror (red in the reference) is in no environment map; one made at the mirror's centre would "
              "show it many times too large.",
-             {"--object", "mirror", "--param", "latlong", "--eval", "vertex"}, 1080, 440}};
+             {"--object", "mirror", "--param", "latlong", "--eval", "vertex"}, 1080, 440,
+             "Lat-long, r per vertex, across the seam: {error_mean_deg[shown]} deg mean, {error_max_deg[shown]} deg "
+             "largest error; a map made at the centre shows the near ball at {mirror_ball_pixels_centre_map} pixels, "
+             "not {mirror_ball_pixels}."}};
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;

@@ -124,13 +124,17 @@ class Jitter final : public ts::Scene {
          "and one jitter pattern for all pixels keep interference patterns; jitter chosen per pixel turns them into "
          "grain. Bottom: the reference, and the sample patterns of Figure VI.7: regular; jittered, one pattern for "
          "every pixel; jittered anew in each pixel (2x2 pixels shown).",
-         {"--view", "compare", "--samples", "3", "--seed", "1"}, 1320, 760},
+         {"--view", "compare", "--samples", "3", "--seed", "1"}, 1320, 760,
+         "Aliasing (the error the neighbours' errors predict) at 3x3 samples: regular {aliasing[regular]}, one "
+         "jitter pattern {aliasing[jitter_global]}, jittered per pixel {aliasing[jitter_pixel]}."},
         {"vi7_error_vs_samples", "Figure VI.7 (error vs samples)",
          "RMS error against the reference, and its aliasing (the part of each pixel's error its neighbours' errors "
          "predict), for 1, 4, 9 and 16 samples per pixel: "
          "the error falls as samples rise; jitter per pixel leaves almost no aliasing; one jitter pattern for all "
          "pixels keeps much of it (with seed 1 about as much as regular sampling; how much depends on the pattern).",
-         {"--view", "plot", "--seed", "1"}, 1024, 600},
+         {"--view", "plot", "--seed", "1"}, 1024, 600,
+         "Jittered per pixel, the RMS error falls from {rms[jitter_pixel_1x1]} (1 sample) to {rms[jitter_pixel_4x4]} "
+         "(16) with aliasing {aliasing[jitter_pixel_4x4]}; regular 4x4 keeps {aliasing[regular_4x4]}."},
     };
   }
 

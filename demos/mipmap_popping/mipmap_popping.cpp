@@ -142,13 +142,17 @@ class MipmapPopping final : public ts::Scene {
          "LOD k + 1/2 (popping). Bottom: GL_LINEAR_MIPMAP_LINEAR blends the two nearest levels: the colour, and the "
          "blur, change smoothly.",
          {"--view", "filmstrip", "--filter", "nearest-mipmap-nearest", "--distance-log2", "2.875", "--levels", "split"},
-         1024, 400},
+         1024, 400,
+         "One level per pixel pops: the colour jumps by {popping[nearest_mipmap_nearest]} (8-bit) at a level change, "
+         "{popping_ratio} times trilinear's largest step; the chain costs {mip_overhead} more memory."},
         {"mip_popping_plot", "Section VI.1.3",
          "Mean colour of a probe region (coloured mip levels) against log2 distance, in steps of 1/16 level. "
          "GL_NEAREST_MIPMAP_NEAREST (top) steps from one level's colour to the next: popping. "
          "GL_LINEAR_MIPMAP_LINEAR (bottom) ramps between them. The popping measure is the largest jump between "
          "neighbouring distances.",
-         {"--view", "plot", "--filter", "nearest-mipmap-nearest", "--distance-log2", "2.875"}, 1024, 640},
+         {"--view", "plot", "--filter", "nearest-mipmap-nearest", "--distance-log2", "2.875"}, 1024, 640,
+         "Largest step of the probe's mean colour, distances 1/16 level apart: {popping[nearest_mipmap_nearest]} "
+         "with GL_NEAREST_MIPMAP_NEAREST, {popping[linear_mipmap_linear]} with GL_LINEAR_MIPMAP_LINEAR."},
         {"mip_anisotropic", "Section VI.1.3",
          "A ground plane seen at a slant: the supersampled reference (8x8 samples of level 0 per pixel) and the "
          "seven filters. GL_NEAREST and GL_LINEAR alias; the mipmap filters choose their level from the long side "
@@ -156,7 +160,9 @@ class MipmapPopping final : public ts::Scene {
          "(GL_LINEAR_MIPMAP_LINEAR); anisotropic filtering (16) keeps the detail across the view. Numbers: RMS "
          "error against the reference in the far field (LOD 1.5 to 5, between the white lines).",
          {"--view", "slant", "--filter", "linear-mipmap-linear", "--anisotropy", "16", "--levels", "texture"}, 1280,
-         640},
+         640,
+         "Far-field RMS error against the supersampled reference: trilinear {far_error[linear_mipmap_linear]} "
+         "(over-blur), anisotropic 16x {far_error[anisotropic]}, GL_NEAREST {far_error[nearest]} (aliasing)."},
     };
   }
 

@@ -97,11 +97,14 @@ class QuadDistortion final : public ts::Scene {
         {"vi1_quad_distortion", "Figure VI.1",
          "The texture with the region chosen by the (s,t) corners (left) and that region drawn on a square as two "
          "linearly mapped triangles (right): the checker lines bend along the diagonal.",
-         {"--view", "book", "--diagonal", "tl-br", "--interp", "affine"}, 1024, 560},
+         {"--view", "book", "--diagonal", "tl-br", "--interp", "affine"}, 1024, 560,
+         "Two linearly mapped triangles bend the checker lines by {kink_deg[affine_tl_br]} deg along the diagonal."},
         {"vi1_quad_variants", "Figure VI.1 (variants)",
          "The same region four ways: split along either diagonal (the kink moves and changes), bilinear "
          "interpolation of (s,t) over the quad, and projective (s,t,r,q) coordinates (no kink).",
-         {"--view", "compare", "--edges"}, 1280, 420},
+         {"--view", "compare", "--edges"}, 1280, 420,
+         "Split along the other diagonal the kink changes ({kink_deg[affine_tl_br]} -> {kink_deg[affine_bl_tr]} "
+         "deg); bilinear and projective (s,t,r,q) remove it ({kink_deg[bilinear]}, {kink_deg[projective]} deg)."},
     };
   }
 

@@ -92,12 +92,16 @@ class SphereProjections final : public ts::Scene {
          "A checkerboard on two spheres, drawn with a tilt and a small rotation. Left: t = phi/180 + 1/2 "
          "(Eq. VI.2), the checks shrink toward the poles. Right: t = (sin phi + 1)/2 (Eq. VI.3), the cylinder "
          "projection: every check has the same area. Both pinch at the poles.",
-         {"--view", "spheres", "--mapping", "both"}, 1024, 512},
+         {"--view", "spheres", "--mapping", "both"}, 1024, 512,
+         "Texture area per surface area varies {vi2_spread}x between latitude bands with Eq. VI.2, {vi3_spread}x "
+         "with Eq. VI.3 (area-preserving)."},
         {"vi5_area_ratio", "Figure VI.5 (measured)",
          "Texture area / surface area by 20 deg band of latitude, measured from texel-index renders (bars and "
          "dots) against the analytic ratio (lines): 2/(pi cos phi) for Eq. VI.2, 1 for Eq. VI.3 (whole-sphere "
          "mean 1).",
-         {"--view", "plot", "--mapping", "both"}, 1024, 512},
+         {"--view", "plot", "--mapping", "both"}, 1024, 512,
+         "Eq. VI.2 gives the bands near the poles {vi2[70:90]_render}x the mean texture area per surface area "
+         "(analytic {vi2[70:90]_analytic}), the equator {vi2[-10:10]_render}x; Eq. VI.3 varies {vi3_spread}x."},
     };
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;

@@ -100,12 +100,16 @@ class Torus final : public ts::Scene {
         {"vi6_torus", "Figure VI.6",
          "A checkerboard texture map (left) applied to a torus by s = theta/360, t = phi/360 (right), the torus "
          "tilted towards the viewer.",
-         {"--mapping", "book", "--pattern", "checker", "--marker=off"}, 1024, 512},
+         {"--mapping", "book", "--pattern", "checker", "--marker=off"}, 1024, 512,
+         "With s = theta/360, t = phi/360 the texture's centre lands at z = {centre_3d_z[book]} = -(R - r), on the "
+         "far inner wall of the hole."},
         {"vi6_torus_centre", "Exercise VI.2",
          "Where the texture's centre (1/2, 1/2) lands. Middle: s = theta/360, t = phi/360 put it at theta = phi = 180 "
          "deg, (0, 0, -(R - r)), on the far inner wall of the hole. Right: s = theta/360 + 1/2, t = phi/360 + 1/2 "
          "put it at the front, (0, 0, R + r).",
-         {"--view", "compare", "--pattern", "grid"}, 1280, 520},
+         {"--view", "compare", "--pattern", "grid"}, 1280, 520,
+         "Adding 1/2 to s and t moves the texture's centre from z = {centre_3d_z[book]} to z = {centre_3d_z[front]} "
+         "= R + r, the front."},
     };
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;

@@ -111,16 +111,24 @@ class WrapModes final : public ts::Scene {
              "An 8x8 texture on a quad whose (s,t) run from -1 to 2, with the five wrap modes (columns) and GL_NEAREST "
              "/ GL_LINEAR (rows); the unit square is outlined, the border colour is magenta. GL_CLAMP with GL_LINEAR "
              "blends half the border in along the square's edges; GL_CLAMP_TO_EDGE none.",
-             {"--view", "modes"}, 1280, 640},
+             {"--view", "modes"}, 1280, 640,
+             "{wrap_texel_mismatches} pixels differ from the wrap formulas; seed 002's MIRROR is wrong at "
+             "{seed_mirror_differs} of {seed_mirror_integers} integer s; GL_CLAMP with GL_LINEAR reads "
+             "{border_pct[clamp@0]}% border at the edge."},
             {"texture_matrix", "Buss VI.4 (seed 001)",
              "The texture matrix: (s,t) rotated by 30 degrees, scaled by 1.5 and sheared by 0.25 about the texture's "
              "centre (glMatrixMode(GL_TEXTURE)). Left: texture space with the image of the unit square; right: the quad.",
-             {"--view", "matrix", "--rotate", "30", "--scale", "1.5", "--shear", "0.25", "--wrap-s", "mirrored"}, 1024, 512},
+             {"--view", "matrix", "--rotate", "30", "--scale", "1.5", "--shear", "0.25", "--wrap-s", "mirrored"}, 1024, 512,
+             "The texture matrix maps (s,t) as M (s,t) on the CPU does: {texture_matrix_mismatches} of "
+             "{texture_matrix_probes} probes differ."},
             {"texture_environment", "Buss VI.4 (texture environment)",
              "A plane lit per vertex (orange, a white highlight) under an RGBA texture, combined by each texture "
              "environment (GL_BLEND with GL_TEXTURE_ENV_COLOR light blue; GL_DECAL's texture has an alpha ramp). "
              "GL_MODULATE multiplies the highlight by the texel; GL_SEPARATE_SPECULAR_COLOR adds it after texturing.",
-             {"--view", "env"}, 1200, 520}};
+             {"--view", "env"}, 1200, 520,
+             "Every environment matches its table ({env_table_mismatches} mismatches); GL_MODULATE dims the "
+             "highlight to {highlight_peak[modulate]}, GL_SEPARATE_SPECULAR_COLOR keeps "
+             "{highlight_peak[separate_specular]}."}};
   }
   // The animation turns the `rotate` option itself, 30 degrees a second, so the window keeps drawing and
   // F12 saves the state it shows; the frame the key is taken on is left still, so the state line printed
