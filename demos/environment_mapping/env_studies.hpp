@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/core/layout.hpp"
+#include "common/gl/gl_listing.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/core/scene.hpp"
 #include "env_gl.hpp"
@@ -211,4 +212,16 @@ inline void addStudies(envmap::EnvGL& g, int face, ts::Measurements& out) {
     out.push_back({"seed_cube_r_vs_gl_deg[" + k + "]", sc.meanDeg[b], "seed 002's R = 2 N_z N - I against r = 2 (N.I) N - I on the cube map: mean angle"});
   }
 }
+
+// What the demo's measure() found: the numbers for the captions and the pictures.
+struct Found {
+  ErrorStats current;                    // the shown state
+  std::array<ErrorStats, 4> compare;     // each parameterization, this object and evaluation
+  ts::Image picture, reference, error, map;          // object view, map view
+  std::array<ts::Image, 4> pictures;                 // compare view
+  ts::gl::CallList pictureGL, referenceGL;           // the GL calls that rendered them (the listings show them)
+  std::array<ts::gl::CallList, 4> picturesGL;
+  Mirror mirror;
+  double errorScale = 1;  // degrees shown yellow in the error picture
+};
 }  // namespace envmap

@@ -28,9 +28,8 @@
 // function: glTexGeni(GL_S/T/R, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP or GL_SPHERE_MAP)
 // and glEnable(GL_TEXTURE_GEN_S/T/R) make r from the normal and the modelview; the rest
 // is a GLSL program, r = reflect(...) per vertex or per pixel, then texture(mapCube, r)
-// or texture(map2d, st).  Listings (each picture's pass, then the frame): book_figures/
-// env_cube_sphere.gl.txt, env_compare_torus.gl.txt, env_latlong_map.gl.txt,
-// env_cube_map.gl.txt, env_flat_mirror.gl.txt.
+// or texture(map2d, st).  Listings: book_figures/env_cube_sphere.gl.txt (and the other
+// env_*.gl.txt: each picture's pass, then the frame).
 //
 // Keys (each is also a flag, see --help):
 //   p  parameterization        o  object: sphere | torus | mirror
@@ -52,23 +51,10 @@
 #include "env_math.hpp"
 
 namespace {
-using ts::layout::fmt;
-using ts::layout::kAmber;
-using ts::layout::kWhite;
+using ts::layout::fmt, ts::layout::kAmber, ts::layout::kWhite;
 enum View { kObjectView, kMapView, kCompareView };
 const char* const kEval[] = {"pixel", "vertex"};
-
-struct Found {  // what measure() found: the numbers for the captions and the pictures
-  envmap::ErrorStats current;                    // the shown state
-  std::array<envmap::ErrorStats, 4> compare;     // each parameterization, this object and evaluation
-  ts::Image picture, reference, error, map;          // object view, map view
-  std::array<ts::Image, 4> pictures;                 // compare view
-  ts::gl::CallList pictureGL, referenceGL;           // the GL calls that rendered them (the listings show them)
-  std::array<ts::gl::CallList, 4> picturesGL;
-  envmap::Mirror mirror;
-  double errorScale = 1;  // degrees shown yellow in the error picture
-};
-
+using envmap::Found;  // what measure() found (env_studies.hpp)
 class EnvironmentMapping final : public ts::Scene {
  public:
   std::string id() const override { return "environment_mapping"; }
