@@ -11,9 +11,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <sstream>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/gl/context.hpp"
@@ -561,9 +561,7 @@ class FrameLoop {
   // TS_SCREENSHOT_OVERLAY=1 asks for the window as the student sees it.
   void takeScreenshot(bool lastFrame, bool overlayDrawn) {
     if (!lastFrame || flags.screenshot.empty()) return;
-    const char* withOverlay = std::getenv("TS_SCREENSHOT_OVERLAY");
-    bool overlayShot = withOverlay && *withOverlay == '1';
-    if (overlayShot == overlayDrawn) writePng(flags.screenshot, ctx.readPixels());
+    if (test_hooks::screenshotWithOverlay() == overlayDrawn) writePng(flags.screenshot, ctx.readPixels());
   }
 
   // The side panel, the GL pane and the help card (Dear ImGui), each if open.
