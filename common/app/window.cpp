@@ -658,13 +658,13 @@ void closeWindow(GLFWwindow* win, std::unique_ptr<Renderer>& renderer, std::uniq
 }  // namespace
 
 int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, int height) {
-  GLFWwindow* win = openWindow(scene, flags, width, height);
+  GLFWwindow* win = openWindow(scene, flags, width, height);  // the window and its GL context
   Input input;
-  connectInput(win, flags, &input);
-  GLuint fontTex = startImGui(win);
+  connectInput(win, flags, &input);  // keys, mouse, dropped files; --keys, TS_TEST_MOUSE
+  GLuint fontTex = startImGui(win);  // the overlay's Dear ImGui and its font texture
   WindowContext ctx(win);
   auto renderer = std::make_unique<Renderer>(ctx);  // destroyed before the window, by closeWindow
-  printGreeting(scene, opts, ctx);
+  printGreeting(scene, opts, ctx);  // the demo, its GL and its keys on stdout
   // Measurements run on a worker thread with a context of its own (see
   // measure_worker.hpp); the loop keeps drawing meanwhile.  If the worker
   // cannot make a context, the loop measures itself.
@@ -690,10 +690,10 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       if (last) break;
     }
   } catch (const Error&) {
-    closeWindow(win, renderer, worker, nullptr);
+    closeWindow(win, renderer, worker, nullptr);  // then the error goes on to the demo's main
     throw;
   }
-  closeWindow(win, renderer, worker, &fontTex);
+  closeWindow(win, renderer, worker, &fontTex);  // Esc, q, the close button or --frames N
   return kExitOk;
 }
 }  // namespace ts
