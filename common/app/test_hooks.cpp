@@ -99,4 +99,9 @@ long slowMeasureFrames() {
 void frameDrawn() { g_frames.fetch_add(1); }
 long framesDrawn() { return g_frames.load(); }
 
+bool screenshotWithOverlay() {
+  const char* v = env("TS_SCREENSHOT_OVERLAY");
+  return v && *v == '1';
+}
+
 }  // namespace ts::test_hooks

@@ -33,6 +33,9 @@
 //       steps that report progress and stop when superseded, and does not
 //       end before the window has drawn F frames since it began: a window
 //       that stopped drawing while measuring never gets its result.
+//   TS_SCREENSHOT_OVERLAY=1
+//       --screenshot takes the window as the student sees it (side panel,
+//       GL pane, help card) instead of the figure alone.
 #pragma once
 #include <cstdio>
 #include <string>
@@ -84,5 +87,8 @@ long slowMeasureFrames();
 // counts them.
 void frameDrawn();
 long framesDrawn();
+
+// TS_SCREENSHOT_OVERLAY=1: the screenshot with the overlay.
+bool screenshotWithOverlay();
 
 }  // namespace ts::test_hooks

@@ -11,9 +11,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <sstream>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/gl/context.hpp"
@@ -127,7 +127,7 @@ void testMouse(Input* in) {
 // does not move).  Degrees per pixel of drag; 10 % of zoom per wheel click.
 // Values are rounded (0.1 degree, 0.001 zoom) so the printed state remakes
 // exactly the same picture.
-bool applyMouse(Input* in, Options& opts) {
+bool mouseToOptions(Input* in, Options& opts) {
   constexpr double kDegreesPerPixel = 0.4;
   bool changed = false;
   if (in->dragX != 0)
@@ -283,9 +283,12 @@ void drawImGui(ImDrawData* d, int fbw, int fbh) {
   glPopMatrix();
   glPopAttrib();
 }
-}  // namespace
 
-int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, int height) {
+// ---- The steps of runWindow, in the order it takes them ----
+
+// Opens a width x height window with a compatibility-profile GL context (an
+// accumulation buffer where the demo wants one) and loads GL's entry points.
+GLFWwindow* openWindow(Scene& scene, const CommonFlags& flags, int width, int height) {
   glfwSetErrorCallback(onGlfwError);
   if (!glfwInit())
     throw Error("no display to open a window on (" + g_glfwError + "); render offscreen with --png FILE");
@@ -308,271 +311,389 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
                 "); render offscreen with --png FILE");
   }
   glfwMakeContextCurrent(win);
-  glfwSwapInterval(flags.frames ? 0 : 1);
+  glfwSwapInterval(flags.frames ? 0 : 1);  // --frames (tests) does not wait for the display's refresh
   std::string missing;
   if (!gl::load(glfwProc, &missing)) {
     glfwDestroyWindow(win);
     glfwTerminate();
     throw Error("the window's OpenGL context lacks " + missing);
   }
-  Input input;
-  input.keys = flags.keys;
-  glfwSetWindowUserPointer(win, &input);
+  return win;
+}
+
+// Sends the window's keys, mouse and dropped files to `in`, queues --keys,
+// and replays TS_TEST_MOUSE, all before the first frame.
+void connectInput(GLFWwindow* win, const CommonFlags& flags, Input* in) {
+  in->keys = flags.keys;
+  glfwSetWindowUserPointer(win, in);
   glfwSetCharCallback(win, onChar);
   glfwSetKeyCallback(win, onKey);
   glfwSetMouseButtonCallback(win, onMouseButton);
   glfwSetCursorPosCallback(win, onCursor);
   glfwSetScrollCallback(win, onScroll);
   glfwSetDropCallback(win, onDrop);
-  testMouse(&input);
+  testMouse(in);
+}
 
+// Starts Dear ImGui on the window (side panel, GL pane, help card) and
+// uploads its font atlas; returns that texture, which closeWindow deletes.
+GLuint startImGui(GLFWwindow* win) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the student's folder
-  ImGui_ImplGlfw_InitForOpenGL(win, true);  // chains to the callbacks above
+  ImGui_ImplGlfw_InitForOpenGL(win, true);  // chains to the callbacks of connectInput
   GLuint fontTex = 0;
-  {
-    unsigned char* px = nullptr;
-    int w = 0, h = 0;
-    ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&px, &w, &h);
-    glGenTextures(1, &fontTex);
-    glBindTexture(GL_TEXTURE_2D, fontTex);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
-    ImGui::GetIO().Fonts->SetTexID(reinterpret_cast<ImTextureID>(intptr_t(fontTex)));
-  }
+  unsigned char* px = nullptr;
+  int w = 0, h = 0;
+  ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&px, &w, &h);
+  glGenTextures(1, &fontTex);
+  glBindTexture(GL_TEXTURE_2D, fontTex);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  ImGui::GetIO().Fonts->SetTexID(reinterpret_cast<ImTextureID>(intptr_t(fontTex)));
+  return fontTex;
+}
 
-  WindowContext ctx(win);
-  // Destroyed before the window (its GL objects, the demos' attachments
-  // among them, go while the window's context is current).
-  auto rendererOwner = std::make_unique<Renderer>(ctx);
-  Renderer& renderer = *rendererOwner;
+// The first lines on stdout: the demo, the GL it runs on, and its keys.
+void printGreeting(const Scene& scene, const Options& opts, const WindowContext& ctx) {
   std::printf("%s | %s\nkeys: %s  h: side panel  l: OpenGL calls  ?/F1: help  F12: save  Backspace: reset  "
               "arrows: turn/tilt  esc/q: quit\n",
               scene.title().c_str(),
               ctx.describe().c_str(), opts.keysText().c_str());
+}
+
+// The frame loop: what it carries from one frame to the next, and a method
+// per step of a frame, declared in the order runWindow calls them.
+class FrameLoop {
+ public:
+  FrameLoop(Scene& sc, Options& op, const CommonFlags& fl, GLFWwindow* w, WindowContext& c, Renderer& r,
+            MeasureWorker* wk, Input& in)
+      : scene(sc), opts(op), flags(fl), win(w), ctx(c), renderer(r), worker(wk), input(in) {}
+
+  // Until Esc, q or the window's close button.
+  bool running() const { return !glfwWindowShouldClose(win) && !input.quit; }
+
+  // Polls the events, or sleeps until one comes while nothing needs a frame.
+  void waitForEvents() {
+    // Idle is idle: with nothing animating, no key waiting and no test
+    // counting frames, wait for an event instead of drawing again (while a
+    // changed line of the GL pane is highlighted, wake to fade it).
+    // While a measurement runs (and nothing else asks for frames) the loop
+    // draws about 30 frames a second for the progress, leaving the cores to
+    // the worker; --frames (tests) counts those frames too.
+    // A --keys key may wait for an event (TS_TEST_KEY_WHEN) or a time
+    // (TS_TEST_KEY_INTERVAL_MS): the loop then waits instead of spinning.
+    bool keyReady = !input.keys.empty() && testLog.keyDue(measuring, worker->progress(), measuredOnce);
+    double keyWait = input.keys.empty() ? 0.0 : testLog.untilKey();
+    busy = dirty || redraw || scene.live() || keyReady || !input.dropped.empty() ||
+           (flags.frames && !measuring && input.keys.empty());
+    if (busy) glfwPollEvents();
+    else if (keyWait > 0) glfwWaitEventsTimeout(measuring ? std::min(keyWait, 1.0 / 30) : keyWait);
+    else if (measuring || !input.keys.empty()) glfwWaitEventsTimeout(1.0 / 30);  // the progress moves; the worker wakes us when done
+    else if (pane.visible && glfwGetTime() - keyAt < GlPane::kHighlightSeconds + 0.1)
+      glfwWaitEventsTimeout(0.25);
+    else
+      glfwWaitEvents();
+    redraw = false;
+  }
+
+  // The mouse: a drag or the wheel turns the orbit options; a dropped file
+  // is --texture FILE (a bad one: one line, the picture stays).
+  void applyMouse() {
+    if (mouseToOptions(&input, opts)) dirty = true, record = pane.visible, afterKey = true, keyAt = glfwGetTime();
+    for (const std::string& path : input.dropped) {
+      if (!opts.has("texture")) {
+        std::fprintf(stderr, "%s: %s: this demo maps no picture (--texture)\n", scene.id().c_str(), path.c_str());
+        continue;
+      }
+      try {
+        opts.set("texture", path);
+        dirty = true, record = pane.visible, afterKey = true;
+      } catch (const Error& e) {
+        std::fprintf(stderr, "%s: %s\n", scene.id().c_str(), e.what());
+      }
+    }
+    input.dropped.clear();
+  }
+
+  // One synthesised or typed key per frame, through the same handler.
+  void applyKey() {
+    if (input.keys.empty() || !testLog.keyDue(measuring, worker->progress(), measuredOnce)) return;
+    testLog.keyTaken();
+    char k = input.keys.front();
+    testLog.line("key", std::string(1, std::isprint(static_cast<unsigned char>(k)) ? k : '?'));
+    input.keys.erase(0, 1);
+    // = is + (the same key without shift) where no option takes =.
+    if (k == '=') {
+      bool taken = false;
+      for (const auto& it : opts.items()) taken |= it.key == '=' || it.keyDown == '=';
+      if (!taken) k = '+';
+    }
+    if (k == kKeyLeft || k == kKeyRight) k = opts.keyOf({"turn", "rotation", "azimuth"}, k == kKeyRight);
+    else if (k == kKeyUp || k == kKeyDown) k = opts.keyOf({"tilt", "angle", "elevation"}, k == kKeyUp);
+    if (k == 'q') input.quit = true;
+    else if (k == 'h') input.overlay = !input.overlay;
+    else if (k == '?' || k == kKeyHelp) input.help = !input.help;
+    else if (k == kKeySave) savePending = true;
+    else if (k == 'l') pane.visible = !pane.visible, record = pane.visible, afterKey = false;
+    else if (k == kKeyReset) opts.resetToDefaults(), dirty = true, record = pane.visible, afterKey = true;
+    else if (opts.handleKey(k)) dirty = true, record = pane.visible, afterKey = true;
+    if (afterKey) keyAt = glfwGetTime();
+  }
+
+  // The scene's clock (animations) and the frames per second.
+  void advanceClock() {
+    now = glfwGetTime();
+    std::string stateBefore = opts.stateText();
+    scene.update(now - last);
+    if (opts.stateText() != stateBefore) redraw = true;  // an animation moved: keep drawing
+    last = now;
+    // Frames per second over the last half second of frames drawn.
+    if (now - fpsSince >= 0.5) {
+      fps = double(frame - fpsFrame) / (now - fpsSince);
+      fpsSince = now;
+      fpsFrame = frame;
+    }
+  }
+
+  // Takes the window's size now; false while it is minimised.
+  bool updateSize() {
+    ctx.sync();
+    return ctx.width() >= 1 && ctx.height() >= 1;
+  }
+
+  // The side panel and the GL pane dock right of the figure, which is laid
+  // out in the rest of the window: nothing covers it.
+  void layOut() {
+    split = splitWindow(ctx.width(), input.overlay, pane.visible);
+    renderer.setPictureSize(split.figureW, ctx.height());  // a live view draws at the figure's size
+  }
+
+  // Measures a changed state: here (a live view, or a worker without a
+  // context) or by a request to the worker.
+  void startMeasuring() {
+    if (worker->failed() && !measureHere) {  // no context for the worker: measure here, as before
+      note("note: measuring in the window's thread (" + worker->failure() + ")");
+      measureHere = true;
+      dirty |= measuring;
+      measuring = false;
+    }
+    int figureW = split.figureW;
+    // The numbers belong to the picture at its size (as --png at that size
+    // measures them): a resized figure is measured again.
+    if (!scene.live() && measuredW && (figureW != measuredW || ctx.height() != measuredH)) dirty = true;
+    if (scene.live() || (dirty && measureHere)) {
+      if (measuring) worker->cancel(), measuring = false;  // a live view measures every frame itself
+      m = scene.measure(renderer);
+      measuredOnce = true;
+      measuredW = figureW, measuredH = ctx.height();
+      if (dirty) {
+        std::printf("%s\n%s", opts.stateText().c_str(), formatMeasurements(m).c_str());
+        std::fflush(stdout);
+      }
+      dirty = false;
+    } else if (dirty) {
+      worker->request(opts.stateFlags(), figureW, ctx.height());  // measured at the figure's size, as --png
+      measuredW = figureW, measuredH = ctx.height();
+      measuring = true;
+      dirty = false;
+    }
+  }
+
+  // Takes the worker's numbers once they are in, and prints them.
+  void collectMeasurement() {
+    MeasureWorker::Result res;
+    if (scene.live() || !worker->take(&res)) return;
+    if (!res.error.empty()) throw Error(res.error, res.errorCode);  // as if measured here
+    m = std::move(res.measured);
+    measuredOnce = true;
+    testLog.line("result");
+    if (pane.visible) record = afterKey = true;  // the picture with the new numbers: its calls again
+    measuring = worker->busy();
+    std::printf("%s\n%s", res.stateText.c_str(), formatMeasurements(m).c_str());
+    std::fflush(stdout);
+  }
+
+  // Draws the figure, recording its GL calls when the GL pane needs a new
+  // listing, and counts the frame.
+  Frame drawPicture() {
+    int figureW = split.figureW;
+    Frame f = scene.build(figureW, ctx.height(), m);
+    if (pane.visible && (record || figureW != recordedW || ctx.height() != recordedH)) {
+      pane.record(renderer, f, afterKey, now, true);  // draws the picture, recording its calls
+      record = afterKey = false;
+      recordedW = figureW;
+      recordedH = ctx.height();
+    } else {
+      renderer.draw(f);
+    }
+    ++frame;
+    if (measuredOnce) ++counted;
+    return f;
+  }
+
+  // F12 while measuring saves when the numbers are in: the picture, its
+  // sidecar and the command that remakes them must agree.
+  void saveIfAsked(const Frame& f) {
+    if (savePending && !measuring) saveState(scene, opts, f, ctx.readPixels()), savePending = false;
+  }
+
+  // --frames N (tests): the last frame shows the measurement of the last
+  // state.  TS_TEST_RESIZE (tests): at what would be the last frame, keep
+  // that frame as <screenshot>.WxH.png, resize to the next size and go on.
+  bool isLastFrame() {
+    bool lastFrame = flags.frames && counted >= flags.frames && input.keys.empty() && !measuring && !dirty && !savePending;
+    if (lastFrame && resizing && !flags.screenshot.empty())
+      writePng(test_hooks::sizedName(flags.screenshot, ctx.width(), ctx.height()), ctx.readPixels());
+    if (lastFrame && !resizes.empty()) {
+      glfwSetWindowSize(win, resizes.front().first, resizes.front().second);
+      resizes.erase(resizes.begin());
+      counted = 0;
+      return false;
+    }
+    return lastFrame;
+  }
+
+  // --screenshot on the last frame, called before and after the overlay is
+  // drawn: the figure alone (it must match --png), unless
+  // TS_SCREENSHOT_OVERLAY=1 asks for the window as the student sees it.
+  void takeScreenshot(bool lastFrame, bool overlayDrawn) {
+    if (!lastFrame || flags.screenshot.empty()) return;
+    if (test_hooks::screenshotWithOverlay() == overlayDrawn) writePng(flags.screenshot, ctx.readPixels());
+  }
+
+  // The side panel, the GL pane and the help card (Dear ImGui), each if open.
+  void drawOverlay() {
+    bool imgui = input.overlay || pane.visible || input.help;
+    if (imgui) {
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+    }
+    if (pane.visible) pane.draw(split.paneX, split.paneW, ctx.height(), now);
+    if (input.overlay) {
+      PanelStatus status;
+      status.fps = fps;
+      status.idle = !busy && !measuring;
+      // The measurement's status: running, how far, and whether the numbers shown are an older state's.
+      status.measuring = measuring;
+      status.progress = measuring ? worker->progress() : 0.0;
+      status.stale = measuring && !m.empty();
+      drawSidePanel(scene, opts, m, status, split.panelX, split.panelW, ctx.height());
+    }
+    if (input.help) drawHelp(scene, opts, ctx.width(), ctx.height(), &input.help);
+    if (imgui) {
+      ImGui::Render();
+      drawImGui(ImGui::GetDrawData(), ctx.width(), ctx.height());
+    }
+  }
+
+  // Shows the frame, and logs it for the test hooks.
+  void present() {
+    gl::check("drawing the window");
+    glfwSwapBuffers(win);
+    char progress[32];
+    std::snprintf(progress, sizeof progress, "%d %.3f", measuring ? 1 : 0, measuring ? worker->progress() : 1.0);
+    testLog.line("frame", progress);
+    test_hooks::frameDrawn();
+  }
+
+ private:
+  // What the loop works on.
+  Scene& scene;
+  Options& opts;
+  const CommonFlags& flags;
+  GLFWwindow* win;
+  WindowContext& ctx;
+  Renderer& renderer;
+  MeasureWorker* worker;
+  Input& input;
+
+  // The numbers shown, and the measurement under way.
   Measurements m;
-  bool dirty = true;
-  // Measurements run on a worker thread with a context of its own (see
-  // measure_worker.hpp); the loop keeps drawing meanwhile.  If the worker
-  // cannot make a context, the loop measures itself, as it did before.
-  auto worker = std::make_unique<MeasureWorker>(scene.id(), scene.wantsAccumBuffer(), glfwPostEmptyEvent);
-  bool measuring = false;  // a request is out: the numbers shown are stale
-  bool measureHere = false;
-  bool savePending = false;  // F12 pressed
+  bool dirty = true;                 // the state changed since it was last measured
+  bool measuring = false;            // a request is out: the numbers shown are stale
+  bool measureHere = false;          // the worker has no context: the loop measures itself
+  bool measuredOnce = false;         // a measurement is in
   int measuredW = 0, measuredH = 0;  // the figure size the numbers shown were (or are being) measured at
+  bool savePending = false;          // F12 pressed
+  // The test hooks (common/app/test_hooks.hpp).
   test_hooks::KeyLog testLog;  // TS_TEST_FRAME_LOG, TS_TEST_KEY_WHEN
   std::vector<std::pair<int, int>> resizes = test_hooks::resizes();
   const bool resizing = !resizes.empty();
+  // The GL pane.
   GlPane pane;
   bool record = false, afterKey = false;  // the GL pane needs a new recording
-  bool redraw = true;                      // draw again without waiting for an event
-  double keyAt = -1e9, fps = 0, fpsSince = glfwGetTime();
+  int recordedW = 0, recordedH = 0;       // the figure size of its last recording
+  double keyAt = -1e9;                    // when a key last changed the picture
+  // Pacing and counting frames.
+  bool redraw = true;  // draw again without waiting for an event
+  bool busy = false;   // this frame was drawn without waiting for an event
+  double fps = 0, fpsSince = glfwGetTime();
   int fpsFrame = 0;
-  int recordedW = 0, recordedH = 0;
   int frame = 0;
   // --frames N counts the frames drawn once the first measurement is in (the
   // start-up's frames while it runs vary with the machine's load).
   int counted = 0;
-  bool measuredOnce = false;
-  double last = glfwGetTime();
-  int status = kExitOk;
-  try {
-    while (!glfwWindowShouldClose(win) && !input.quit) {
-      // Idle is idle: with nothing animating, no key waiting and no test
-      // counting frames, wait for an event instead of drawing again (while a
-      // changed line of the GL pane is highlighted, wake to fade it).
-      // While a measurement runs (and nothing else asks for frames) the loop
-      // draws about 30 frames a second for the progress, leaving the cores to
-      // the worker; --frames (tests) counts those frames too.
-      // A --keys key may wait for an event (TS_TEST_KEY_WHEN) or a time
-      // (TS_TEST_KEY_INTERVAL_MS): the loop then waits instead of spinning.
-      bool keyReady = !input.keys.empty() && testLog.keyDue(measuring, worker->progress(), measuredOnce);
-      double keyWait = input.keys.empty() ? 0.0 : testLog.untilKey();
-      bool busy = dirty || redraw || scene.live() || keyReady || !input.dropped.empty() ||
-                  (flags.frames && !measuring && input.keys.empty());
-      if (busy) glfwPollEvents();
-      else if (keyWait > 0) glfwWaitEventsTimeout(measuring ? std::min(keyWait, 1.0 / 30) : keyWait);
-      else if (measuring || !input.keys.empty()) glfwWaitEventsTimeout(1.0 / 30);  // the progress moves; the worker wakes us when done
-      else if (pane.visible && glfwGetTime() - keyAt < GlPane::kHighlightSeconds + 0.1)
-        glfwWaitEventsTimeout(0.25);
-      else
-        glfwWaitEvents();
-      redraw = false;
-      // The mouse: a drag or the wheel turns the orbit options; a dropped
-      // file is --texture FILE (a bad one: one line, the picture stays).
-      if (applyMouse(&input, opts)) dirty = true, record = pane.visible, afterKey = true, keyAt = glfwGetTime();
-      for (const std::string& path : input.dropped) {
-        if (!opts.has("texture")) {
-          std::fprintf(stderr, "%s: %s: this demo maps no picture (--texture)\n", scene.id().c_str(), path.c_str());
-          continue;
-        }
-        try {
-          opts.set("texture", path);
-          dirty = true, record = pane.visible, afterKey = true;
-        } catch (const Error& e) {
-          std::fprintf(stderr, "%s: %s\n", scene.id().c_str(), e.what());
-        }
-      }
-      input.dropped.clear();
-      // One synthesised or typed key per frame, through the same handler.
-      if (!input.keys.empty() && testLog.keyDue(measuring, worker->progress(), measuredOnce)) {
-        testLog.keyTaken();
-        char k = input.keys.front();
-        testLog.line("key", std::string(1, std::isprint(static_cast<unsigned char>(k)) ? k : '?'));
-        input.keys.erase(0, 1);
-        // = is + (the same key without shift) where no option takes =.
-        if (k == '=') {
-          bool taken = false;
-          for (const auto& it : opts.items()) taken |= it.key == '=' || it.keyDown == '=';
-          if (!taken) k = '+';
-        }
-        if (k == kKeyLeft || k == kKeyRight) k = opts.keyOf({"turn", "rotation", "azimuth"}, k == kKeyRight);
-        else if (k == kKeyUp || k == kKeyDown) k = opts.keyOf({"tilt", "angle", "elevation"}, k == kKeyUp);
-        if (k == 'q') input.quit = true;
-        else if (k == 'h') input.overlay = !input.overlay;
-        else if (k == '?' || k == kKeyHelp) input.help = !input.help;
-        else if (k == kKeySave) savePending = true;
-        else if (k == 'l') pane.visible = !pane.visible, record = pane.visible, afterKey = false;
-        else if (k == kKeyReset) opts.resetToDefaults(), dirty = true, record = pane.visible, afterKey = true;
-        else if (opts.handleKey(k)) dirty = true, record = pane.visible, afterKey = true;
-        if (afterKey) keyAt = glfwGetTime();
-      }
-      double now = glfwGetTime();
-      std::string stateBefore = opts.stateText();
-      scene.update(now - last);
-      if (opts.stateText() != stateBefore) redraw = true;  // an animation moved: keep drawing
-      last = now;
-      // Frames per second over the last half second of frames drawn.
-      if (now - fpsSince >= 0.5) {
-        fps = double(frame - fpsFrame) / (now - fpsSince);
-        fpsSince = now;
-        fpsFrame = frame;
-      }
-      ctx.sync();
-      if (ctx.width() < 1 || ctx.height() < 1) continue;  // minimised
-      if (worker->failed() && !measureHere) {  // no context for the worker: measure here, as before
-        note("note: measuring in the window's thread (" + worker->failure() + ")");
-        measureHere = true;
-        dirty |= measuring;
-        measuring = false;
-      }
-      // The side panel and the GL pane dock right of the figure, which is
-      // laid out in the rest of the window: nothing covers it.
-      WindowSplit split = splitWindow(ctx.width(), input.overlay, pane.visible);
-      int figureW = split.figureW;
-      renderer.setPictureSize(figureW, ctx.height());  // a live view draws at the figure's size
-      // The numbers belong to the picture at its size (as --png at that size
-      // measures them): a resized figure is measured again.
-      if (!scene.live() && measuredW && (figureW != measuredW || ctx.height() != measuredH)) dirty = true;
-      if (scene.live() || (dirty && measureHere)) {
-        if (measuring) worker->cancel(), measuring = false;  // a live view measures every frame itself
-        m = scene.measure(renderer);
-        measuredOnce = true;
-        measuredW = figureW, measuredH = ctx.height();
-        if (dirty) {
-          std::printf("%s\n%s", opts.stateText().c_str(), formatMeasurements(m).c_str());
-          std::fflush(stdout);
-        }
-        dirty = false;
-      } else if (dirty) {
-        worker->request(opts.stateFlags(), figureW, ctx.height());  // measured at the figure's size, as --png
-        measuredW = figureW, measuredH = ctx.height();
-        measuring = true;
-        dirty = false;
-      }
-      if (MeasureWorker::Result res; !scene.live() && worker->take(&res)) {
-        if (!res.error.empty()) throw Error(res.error, res.errorCode);  // as if measured here
-        m = std::move(res.measured);
-        measuredOnce = true;
-        testLog.line("result");
-        if (pane.visible) record = afterKey = true;  // the picture with the new numbers: its calls again
-        measuring = worker->busy();
-        std::printf("%s\n%s", res.stateText.c_str(), formatMeasurements(m).c_str());
-        std::fflush(stdout);
-      }
-      Frame f = scene.build(figureW, ctx.height(), m);
-      if (pane.visible && (record || figureW != recordedW || ctx.height() != recordedH)) {
-        pane.record(renderer, f, afterKey, now, true);  // draws the picture, recording its calls
-        record = afterKey = false;
-        recordedW = figureW;
-        recordedH = ctx.height();
-      } else {
-        renderer.draw(f);
-      }
-      ++frame;
-      if (measuredOnce) ++counted;
-      // F12 while measuring saves when the numbers are in: the picture, its
-      // sidecar and the command that remakes them must agree.
-      if (savePending && !measuring) saveState(scene, opts, f, ctx.readPixels()), savePending = false;
-      // --frames N (tests): the last frame shows the measurement of the last state.
-      bool lastFrame = flags.frames && counted >= flags.frames && input.keys.empty() && !measuring && !dirty && !savePending;
-      // The screenshot is the figure alone (it must match --png), unless
-      // TS_SCREENSHOT_OVERLAY=1 asks for the window as the student sees it.
-      const char* withOverlay = std::getenv("TS_SCREENSHOT_OVERLAY");
-      bool overlayShot = withOverlay && *withOverlay == '1';
-      // TS_TEST_RESIZE (tests): at what would be the last frame, keep that
-      // frame as <screenshot>.WxH.png, resize to the next size and go on.
-      if (lastFrame && resizing && !flags.screenshot.empty())
-        writePng(test_hooks::sizedName(flags.screenshot, ctx.width(), ctx.height()), ctx.readPixels());
-      if (lastFrame && !resizes.empty()) {
-        glfwSetWindowSize(win, resizes.front().first, resizes.front().second);
-        resizes.erase(resizes.begin());
-        counted = 0;
-        lastFrame = false;
-      }
-      if (lastFrame && !flags.screenshot.empty() && !overlayShot) writePng(flags.screenshot, ctx.readPixels());
-      bool imgui = input.overlay || pane.visible || input.help;
-      if (imgui) {
-        ImGui_ImplGlfw_NewFrame();
-        ImGui::NewFrame();
-      }
-      if (pane.visible) pane.draw(split.paneX, split.paneW, ctx.height(), now);
-      if (input.overlay) {
-        PanelStatus status;
-        status.fps = fps;
-        status.idle = !busy && !measuring;
-        // The measurement's status: running, how far, and whether the numbers shown are an older state's.
-        status.measuring = measuring;
-        status.progress = measuring ? worker->progress() : 0.0;
-        status.stale = measuring && !m.empty();
-        drawSidePanel(scene, opts, m, status, split.panelX, split.panelW, ctx.height());
-      }
-      if (input.help) drawHelp(scene, opts, ctx.width(), ctx.height(), &input.help);
-      if (imgui) {
-        ImGui::Render();
-        drawImGui(ImGui::GetDrawData(), ctx.width(), ctx.height());
-      }
-      if (lastFrame && !flags.screenshot.empty() && overlayShot) writePng(flags.screenshot, ctx.readPixels());
-      gl::check("drawing the window");
-      glfwSwapBuffers(win);
-      char progress[32];
-      std::snprintf(progress, sizeof progress, "%d %.3f", measuring ? 1 : 0, measuring ? worker->progress() : 1.0);
-      testLog.line("frame", progress);
-      test_hooks::frameDrawn();
-      if (lastFrame) break;
-    }
-  } catch (const Error&) {
-    status = -1;
-    worker->stop();
-    rendererOwner.reset();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-    glfwDestroyWindow(win);
-    glfwTerminate();
-    worker.reset();
-    throw;
-  }
+  double now = 0, last = glfwGetTime();
+  WindowSplit split;  // where the figure, the side panel and the GL pane go
+};
+
+// Closes in the order the parts depend on: the worker stops, the renderer's
+// GL objects (the demos' attachments among them) go while the window's
+// context is current, then ImGui, the window and GLFW.  fontTex: the font
+// atlas to delete (null after an error: it goes with the context).
+void closeWindow(GLFWwindow* win, std::unique_ptr<Renderer>& renderer, std::unique_ptr<MeasureWorker>& worker,
+                 const GLuint* fontTex) {
   worker->stop();  // a measurement still running stops at its next progress report
-  rendererOwner.reset();
-  glDeleteTextures(1, &fontTex);
+  renderer.reset();
+  if (fontTex) glDeleteTextures(1, fontTex);
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
   glfwDestroyWindow(win);  // the window is gone at once ...
   glfwTerminate();
   worker.reset();  // ... and the process ends when the worker has let go
-  return status;
+}
+}  // namespace
+
+int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, int height) {
+  GLFWwindow* win = openWindow(scene, flags, width, height);  // the window and its GL context
+  Input input;
+  connectInput(win, flags, &input);  // keys, mouse, dropped files; --keys, TS_TEST_MOUSE
+  GLuint fontTex = startImGui(win);  // the overlay's Dear ImGui and its font texture
+  WindowContext ctx(win);
+  auto renderer = std::make_unique<Renderer>(ctx);  // destroyed before the window, by closeWindow
+  printGreeting(scene, opts, ctx);  // the demo, its GL and its keys on stdout
+  // Measurements run on a worker thread with a context of its own (see
+  // measure_worker.hpp); the loop keeps drawing meanwhile.  If the worker
+  // cannot make a context, the loop measures itself.
+  auto worker = std::make_unique<MeasureWorker>(scene.id(), scene.wantsAccumBuffer(), glfwPostEmptyEvent);
+  FrameLoop loop(scene, opts, flags, win, ctx, *renderer, worker.get(), input);
+  try {
+    while (loop.running()) {
+      loop.waitForEvents();              // poll, or sleep while nothing needs a frame
+      loop.applyMouse();                 // drag, wheel, dropped files
+      loop.applyKey();                   // one typed or --keys key
+      loop.advanceClock();               // animations, frames per second
+      if (!loop.updateSize()) continue;  // minimised: nothing to draw
+      loop.layOut();                     // figure | side panel | GL pane
+      loop.startMeasuring();             // a changed state: measure here, or ask the worker
+      loop.collectMeasurement();         // the worker's numbers, once in
+      Frame f = loop.drawPicture();      // the figure (its GL calls recorded for the pane when needed)
+      loop.saveIfAsked(f);               // F12
+      bool last = loop.isLastFrame();    // --frames N reached (TS_TEST_RESIZE: resize and go on)
+      loop.takeScreenshot(last, false);  // --screenshot of the figure alone ...
+      loop.drawOverlay();                // side panel, GL pane, help card
+      loop.takeScreenshot(last, true);   // ... or of the whole window (TS_SCREENSHOT_OVERLAY=1)
+      loop.present();                    // swap buffers, frame log
+      if (last) break;
+    }
+  } catch (const Error&) {
+    closeWindow(win, renderer, worker, nullptr);  // then the error goes on to the demo's main
+    throw;
+  }
+  closeWindow(win, renderer, worker, &fontTex);  // Esc, q, the close button or --frames N
+  return kExitOk;
 }
 }  // namespace ts
