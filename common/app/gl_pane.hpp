@@ -35,6 +35,9 @@ class GlPane {
   // this picture carries a new measurement (the marks wait for it, however
   // long the measurement takes).
   void record(Renderer& r, const Frame& f, double now, bool print, bool result);
+  // Until when the marks of the last key show (or, before its pictures are
+  // recorded, would): the window keeps drawing until then, so they fade.
+  double marksUntil() const { return (markedSinceKey_ ? changedAt_ : keyAt_) + kHighlightSeconds; }
   // The pane as a Dear ImGui window at (x, 0), w x h pixels.
   void draw(int x, int w, int h, double now);
 

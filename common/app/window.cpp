@@ -392,7 +392,7 @@ class FrameLoop {
     if (busy) glfwPollEvents();
     else if (keyWait > 0) glfwWaitEventsTimeout(measuring ? std::min(keyWait, 1.0 / 30) : keyWait);
     else if (measuring || !input.keys.empty()) glfwWaitEventsTimeout(1.0 / 30);  // the progress moves; the worker wakes us when done
-    else if (pane.visible && glfwGetTime() - keyAt < GlPane::kHighlightSeconds + 0.1)
+    else if (pane.visible && glfwGetTime() < pane.marksUntil() + 0.1)  // the marks fade on time
       glfwWaitEventsTimeout(0.25);
     else
       glfwWaitEvents();
@@ -402,7 +402,7 @@ class FrameLoop {
   // The mouse: a drag or the wheel turns the orbit options; a dropped file
   // is --texture FILE (a bad one: one line, the picture stays).
   void applyMouse() {
-    if (mouseToOptions(&input, opts)) dirty = true, record = pane.visible, afterKey = true, keyAt = glfwGetTime();
+    if (mouseToOptions(&input, opts)) dirty = true, record = pane.visible, keyChanged();
     for (const std::string& path : input.dropped) {
       if (!opts.has("texture")) {
         std::fprintf(stderr, "%s: %s: this demo maps no picture (--texture)\n", scene.id().c_str(), path.c_str());
@@ -410,7 +410,7 @@ class FrameLoop {
       }
       try {
         opts.set("texture", path);
-        dirty = true, record = pane.visible, afterKey = true;
+        dirty = true, record = pane.visible, keyChanged();
       } catch (const Error& e) {
         std::fprintf(stderr, "%s: %s\n", scene.id().c_str(), e.what());
       }
@@ -437,10 +437,15 @@ class FrameLoop {
     else if (k == 'h') input.overlay = !input.overlay;
     else if (k == '?' || k == kKeyHelp) input.help = !input.help;
     else if (k == kKeySave) savePending = true;
-    else if (k == 'l') pane.visible = !pane.visible, record = pane.visible, afterKey = false;
-    else if (k == kKeyReset) opts.resetToDefaults(), dirty = true, record = pane.visible, afterKey = true;
-    else if (opts.handleKey(k)) dirty = true, record = pane.visible, afterKey = true;
-    if (afterKey) keyAt = glfwGetTime();
+    else if (k == 'l') pane.visible = !pane.visible, record = pane.visible;
+    else if (k == kKeyReset) opts.resetToDefaults(), dirty = true, record = pane.visible, keyChanged();
+    else if (opts.handleKey(k)) dirty = true, record = pane.visible, keyChanged();
+  }
+
+  // A key or the mouse changed the state: the GL pane marks what the next
+  // pictures draw differently from the listing before it.
+  void keyChanged() {
+    if (pane.visible) pane.keyPressed(glfwGetTime());
   }
 
   // The scene's clock (animations) and the frames per second.
@@ -510,7 +515,7 @@ class FrameLoop {
     m = std::move(res.measured);
     measuredOnce = true;
     testLog.line("result");
-    if (pane.visible) record = afterKey = true;  // the picture with the new numbers: its calls again
+    if (pane.visible) record = resultIn = true;  // the picture with the new numbers: its calls again
     measuring = worker->busy();
     std::printf("%s\n%s", res.stateText.c_str(), formatMeasurements(m).c_str());
     std::fflush(stdout);
@@ -522,8 +527,8 @@ class FrameLoop {
     int figureW = split.figureW;
     Frame f = scene.build(figureW, ctx.height(), m);
     if (pane.visible && (record || figureW != recordedW || ctx.height() != recordedH)) {
-      pane.record(renderer, f, afterKey, now, true);  // draws the picture, recording its calls
-      record = afterKey = false;
+      pane.record(renderer, f, now, true, resultIn);  // draws the picture, recording its calls
+      record = resultIn = false;
       recordedW = figureW;
       recordedH = ctx.height();
     } else {
@@ -624,9 +629,8 @@ class FrameLoop {
   const bool resizing = !resizes.empty();
   // The GL pane.
   GlPane pane;
-  bool record = false, afterKey = false;  // the GL pane needs a new recording
+  bool record = false, resultIn = false;  // the GL pane needs a new recording (of a new measurement)
   int recordedW = 0, recordedH = 0;       // the figure size of its last recording
-  double keyAt = -1e9;                    // when a key last changed the picture
   // Pacing and counting frames.
   bool redraw = true;  // draw again without waiting for an event
   bool busy = false;   // this frame was drawn without waiting for an event
