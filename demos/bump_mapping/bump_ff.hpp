@@ -29,8 +29,8 @@
 #include "bump_gl.hpp"
 #include "bump_math.hpp"
 #include "common/core/mesh.hpp"
+#include "common/core/torus.hpp"
 #include "common/gl/render.hpp"
-#include "demos/torus/torus_map.hpp"
 
 namespace bump {
 constexpr float kEmbossShift = 2.0f;  // texels toward the light, at |tangent part of L| = 1
@@ -38,7 +38,7 @@ const glm::vec3 kAlbedo{0.78f, 0.74f, 0.68f};
 constexpr float kAmbient = 0.1f;
 
 struct FixedInputs {
-  torusmap::Params torus;
+  ts::TorusShape torus;
   glm::vec2 rep{1.0f}, texSize{256.0f};
   glm::vec3 light[2];       // eye space, unit
   float intensity[2] = {0.75f, 0.5f};
@@ -51,20 +51,24 @@ struct FixedVertex {
   glm::vec2 st;     // the heights' coordinates (s rep.x, t rep.y)
   glm::vec2 shifted;
   glm::vec4 colour;  // per pass
-  glm::vec3 n, t, b;
+  glm::vec3 n, t, b;  // the tangent frame: normal, tangents along θ and φ
 };
 
-inline std::vector<FixedVertex> fixedVertices(const torusmap::Params& tp, glm::vec2 rep) {
-  ts::Mesh m = torusmap::mesh(tp);
+// The torus's triangles, each vertex with its tangent frame: the mesh's
+// normal, and the unit tangents T, B of ts::torusFrame at its (s, t) (the
+// shader's normalize(Qs), normalize(Qt): the same formulas,
+// common/core/torus_frame.inl).
+inline std::vector<FixedVertex> fixedVertices(const ts::TorusShape& tp, glm::vec2 rep) {
+  ts::Mesh m = ts::torusMesh(tp);
   std::vector<FixedVertex> out;
   for (unsigned k : m.triangles()) {
     FixedVertex v;
     v.pos = glm::vec3(m.points[k].pos);
     v.st = glm::vec2(m.st[k]) * rep;
-    double th = 2 * kPi * m.st[k].x, ph = 2 * kPi * m.st[k].y;
+    const ts::TorusFrame fr = ts::torusFrameAt(tp.R, tp.r, m.st[k]);
     v.n = glm::vec3(m.points[k].normal);
-    v.t = glm::vec3(std::cos(th), 0.0, -std::sin(th));
-    v.b = glm::vec3(-std::sin(ph) * std::sin(th), std::cos(ph), -std::sin(ph) * std::cos(th));
+    v.t = glm::vec3(fr.T);
+    v.b = glm::vec3(fr.B);
     out.push_back(v);
   }
   return out;

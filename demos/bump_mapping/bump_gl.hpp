@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "common/core/torus.hpp"
 #include "common/gl/context.hpp"
 
 #include "common/core/error.hpp"
@@ -39,21 +40,17 @@ enum Method { kFlat = 0, kBlinn = 1, kSeed002 = 2, kNormalMap = 3, kReference = 
 // Uniforms (all vec4): torus = (R, r, height scale, method), rep = (repeats
 // along s, along t, texture width, height), l0/l1 = (eye-space direction to
 // the light, intensity), opts = (normals as colour, no specular, mipmaps, 0).
-inline const char* const kCommonGLSL = R"(#version 130
+// frameAt's body is common/core/torus_frame.inl, the same lines
+// common/core/torus.cpp compiles as C++ (ts::torusFrame, used by the
+// fixed-function passes): the torus's formulas are written once.
+inline const std::string kCommonGLSL = std::string(R"(#version 130
 uniform sampler2D tex;
 uniform vec4 torus, rep, l0, l1, opts;
 const float TAU = 6.28318530718;
 // The torus and its partials at (s, t), model coordinates.
 void frameAt(vec2 st, out vec3 Q, out vec3 N, out vec3 Qs, out vec3 Qt, out vec3 Ns, out vec3 Nt) {
   float th = TAU * st.x, ph = TAU * st.y, R = torus.x, r = torus.y;
-  vec3 dTh = vec3(cos(th), 0.0, -sin(th)), dPh = vec3(-sin(ph) * sin(th), cos(ph), -sin(ph) * cos(th));
-  N = vec3(cos(ph) * sin(th), sin(ph), cos(ph) * cos(th));
-  Q = vec3((R + r * cos(ph)) * sin(th), r * sin(ph), (R + r * cos(ph)) * cos(th));
-  Qs = TAU * (R + r * cos(ph)) * dTh;
-  Qt = TAU * r * dPh;
-  Ns = TAU * cos(ph) * dTh;
-  Nt = TAU * dPh;
-}
+)") + ts::kTorusFrameGLSL + R"(}
 // P = scale h and its partials in s and t: central differences over one
 // texel of mip level `lod` (2^lod texels of level 0), read at that level.
 vec3 heightAt(vec2 st, float lod) {
@@ -66,6 +63,8 @@ vec3 heightAt(vec2 st, float lod) {
 }
 )";
 
+// The tangent frame per vertex, in eye space: T = Qs/|Qs|, B = Qt/|Qt|
+// (the unit tangents along θ and φ) and N, interpolated for B2 and B3.
 inline const char* const kMeshVS = R"(
 out vec2 st;
 out vec3 peye, tT, tB, tN;
@@ -146,10 +145,8 @@ void main() {
 }
 )";
 
-inline ts::Program meshProgram() { return {kSourceFile, std::string(kCommonGLSL) + kMeshVS, std::string(kCommonGLSL) + kFS}; }
-inline ts::Program referenceProgram() {
-  return {kSourceFile, std::string(kCommonGLSL) + kReferenceVS, std::string(kCommonGLSL) + kFS};
-}
+inline ts::Program meshProgram() { return {kSourceFile, kCommonGLSL + kMeshVS, kCommonGLSL + kFS}; }
+inline ts::Program referenceProgram() { return {kSourceFile, kCommonGLSL + kReferenceVS, kCommonGLSL + kFS}; }
 
 // The reference R: a (nu + 1) x (nv + 1) grid of (s, t), drawn from client
 // arrays with glDrawElements into a framebuffer of its own and read back.

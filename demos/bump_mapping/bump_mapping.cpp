@@ -5,7 +5,7 @@
 // surface.  With a height field P(s, t) (procedural dimples and ridges, or
 // bricks) the true surface is Q' = Q + P n; its normal is Q'_s x Q'_t.
 // Each method approximates that normal per pixel on the smooth torus of
-// Figure VI.6 (demos/torus/torus_map.hpp), lit by two lights (Phong, GLSL):
+// Figure VI.6 (common/core/torus.hpp), lit by two lights (Phong, GLSL):
 //   B1  seed 004, Blinn:   n' = n + P_u (n x Q_w)/|n| + P_w (Q_u x n)/|n|
 //       (it drops P (n/|n|)_u: exact for small P and flat Q);
 //   B2  seed 002, literally: g_x = j(x+1,y) - j(x-1,y), g_y = j(x,y+1) - j(x,y-1),
@@ -64,8 +64,8 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
+#include "common/core/torus.hpp"
 #include "common/core/user_texture.hpp"
-#include "demos/torus/torus_map.hpp"
 
 namespace {
 using ts::layout::fmt;
@@ -127,8 +127,8 @@ class BumpMapping final : public ts::Scene {
     float az = glm::radians(light_[k].x), el = glm::radians(light_[k].y);
     return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
   }
-  torusmap::Params torus() const {
-    torusmap::Params tp;
+  ts::TorusShape torus() const {
+    ts::TorusShape tp;
     tp.R = objectScale_, tp.r = 0.4 * objectScale_, tp.nu = 64, tp.nv = 32;
     return tp;
   }
@@ -150,7 +150,7 @@ class BumpMapping final : public ts::Scene {
 };
 
 ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::RenderSpec& s) const {
-  const torusmap::Params tp = torus();
+  const ts::TorusShape tp = torus();
   ts::Panel p;
   p.id = std::string("torus_") + bump::kMethodNames[s.method];
   p.viewport = vp;
@@ -163,7 +163,7 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
   ts::TextureDesc tex = s.method == bump::iNormalMap ? bump::normalTexture(H, cacheKey_, heightScale_, s.mipmaps, wrapSlopes_)
                                                      : bump::heightTexture(H, cacheKey_, false, s.mipmaps);
   // The mesh's (s, t) become glTexCoord4f(s, t, 0, 1) in Renderer::draw: the shader's gl_MultiTexCoord0.
-  ts::Batch b = ts::meshBatch(torusmap::mesh(tp), f.addTexture(tex));
+  ts::Batch b = ts::meshBatch(ts::torusMesh(tp), f.addTexture(tex));
   b.role = "torus";
   b.program = "bump";
   b.uniforms = {{"torus", {float(tp.R), float(tp.r), heightScale_, float(kShaderIds[s.method])}},
