@@ -28,20 +28,20 @@
 
 #include "bump_gl.hpp"
 #include "bump_math.hpp"
+#include "bump_methods.hpp"
 #include "common/core/mesh.hpp"
 #include "common/core/torus.hpp"
 #include "common/gl/render.hpp"
 
 namespace bump {
 constexpr float kEmbossShift = 2.0f;  // texels toward the light, at |tangent part of L| = 1
-const glm::vec3 kAlbedo{0.78f, 0.74f, 0.68f};
-constexpr float kAmbient = 0.1f;
+// The material, kAlbedo and kAmbient, is the shader's (bump_gl.hpp).
 
 struct FixedInputs {
   ts::TorusShape torus;
   glm::vec2 rep{1.0f}, texSize{256.0f};
   glm::vec3 light[2];       // eye space, unit
-  float intensity[2] = {0.75f, 0.5f};
+  float intensity[2] = {0.0f, 0.0f};  // the lights' (the shader's l0.w, l1.w)
   ts::TextureDesc heights, inverted, normalMap;
   bool embossTermOnly = false;  // B4: passes 1 and 2 only (0.5 + 0.5 (H - H'))
 };
@@ -74,7 +74,7 @@ inline std::vector<FixedVertex> fixedVertices(const ts::TorusShape& tp, glm::vec
   return out;
 }
 
-// B4 (method 5) or B5 (method 6) of the frame `f`'s first panel (its matrices).
+// B4 (kEmboss) or B5 (kDot3) of the frame `f`'s first panel (its matrices).
 inline ts::Image renderFixedFunction(ts::Renderer& r, const ts::Frame& f, int method, const FixedInputs& in) {
   std::vector<FixedVertex> vs = fixedVertices(in.torus, in.rep);
   const glm::mat3 toModel = glm::transpose(glm::mat3(f.panels.front().modelview));  // a rotation: its inverse
@@ -96,9 +96,9 @@ inline ts::Image renderFixedFunction(ts::Renderer& r, const ts::Frame& f, int me
     glEnable(GL_TEXTURE_2D);
     glBindTexture(GL_TEXTURE_2D, r.texture(d));
   };
-  return ts::Image(offscreen(r, f, method == 5 ? "drawing the emboss passes" : "drawing the DOT3 passes", [&] {
+  return ts::Image(offscreen(r, f, method == kEmboss ? "drawing the emboss passes" : "drawing the DOT3 passes", [&] {
     glActiveTexture(GL_TEXTURE0);
-    if (method == 5) {
+    if (method == kEmboss) {
       for (FixedVertex& v : vs) {
         glm::vec2 tl(glm::dot(v.t, L[0]), glm::dot(v.b, L[0]));
         v.shifted = v.st + kEmbossShift * tl / in.texSize;
