@@ -28,20 +28,20 @@
 
 #include "bump_gl.hpp"
 #include "bump_math.hpp"
+#include "bump_methods.hpp"
 #include "common/core/mesh.hpp"
+#include "common/core/torus.hpp"
 #include "common/gl/render.hpp"
-#include "demos/torus/torus_map.hpp"
 
 namespace bump {
 constexpr float kEmbossShift = 2.0f;  // texels toward the light, at |tangent part of L| = 1
-const glm::vec3 kAlbedo{0.78f, 0.74f, 0.68f};
-constexpr float kAmbient = 0.1f;
+// The material, kAlbedo and kAmbient, is the shader's (bump_gl.hpp).
 
 struct FixedInputs {
-  torusmap::Params torus;
+  ts::TorusShape torus;
   glm::vec2 rep{1.0f}, texSize{256.0f};
   glm::vec3 light[2];       // eye space, unit
-  float intensity[2] = {0.75f, 0.5f};
+  float intensity[2] = {0.0f, 0.0f};  // the lights' (the shader's l0.w, l1.w)
   ts::TextureDesc heights, inverted, normalMap;
   bool embossTermOnly = false;  // B4: passes 1 and 2 only (0.5 + 0.5 (H - H'))
 };
@@ -51,26 +51,30 @@ struct FixedVertex {
   glm::vec2 st;     // the heights' coordinates (s rep.x, t rep.y)
   glm::vec2 shifted;
   glm::vec4 colour;  // per pass
-  glm::vec3 n, t, b;
+  glm::vec3 n, t, b;  // the tangent frame: normal, tangents along θ and φ
 };
 
-inline std::vector<FixedVertex> fixedVertices(const torusmap::Params& tp, glm::vec2 rep) {
-  ts::Mesh m = torusmap::mesh(tp);
+// The torus's triangles, each vertex with its tangent frame: the mesh's
+// normal, and the unit tangents T, B of ts::torusFrame at its (s, t) (the
+// shader's normalize(Qs), normalize(Qt): the same formulas,
+// common/core/torus_frame.inl).
+inline std::vector<FixedVertex> fixedVertices(const ts::TorusShape& tp, glm::vec2 rep) {
+  ts::Mesh m = ts::torusMesh(tp);
   std::vector<FixedVertex> out;
   for (unsigned k : m.triangles()) {
     FixedVertex v;
     v.pos = glm::vec3(m.points[k].pos);
     v.st = glm::vec2(m.st[k]) * rep;
-    double th = 2 * kPi * m.st[k].x, ph = 2 * kPi * m.st[k].y;
+    const ts::TorusFrame fr = ts::torusFrameAt(tp.R, tp.r, m.st[k]);
     v.n = glm::vec3(m.points[k].normal);
-    v.t = glm::vec3(std::cos(th), 0.0, -std::sin(th));
-    v.b = glm::vec3(-std::sin(ph) * std::sin(th), std::cos(ph), -std::sin(ph) * std::cos(th));
+    v.t = glm::vec3(fr.T);
+    v.b = glm::vec3(fr.B);
     out.push_back(v);
   }
   return out;
 }
 
-// B4 (method 5) or B5 (method 6) of the frame `f`'s first panel (its matrices).
+// B4 (kEmboss) or B5 (kDot3) of the frame `f`'s first panel (its matrices).
 inline ts::Image renderFixedFunction(ts::Renderer& r, const ts::Frame& f, int method, const FixedInputs& in) {
   std::vector<FixedVertex> vs = fixedVertices(in.torus, in.rep);
   const glm::mat3 toModel = glm::transpose(glm::mat3(f.panels.front().modelview));  // a rotation: its inverse
@@ -92,9 +96,9 @@ inline ts::Image renderFixedFunction(ts::Renderer& r, const ts::Frame& f, int me
     glEnable(GL_TEXTURE_2D);
     glBindTexture(GL_TEXTURE_2D, r.texture(d));
   };
-  return ts::Image(offscreen(r, f, method == 5 ? "drawing the emboss passes" : "drawing the DOT3 passes", [&] {
+  return ts::Image(offscreen(r, f, method == kEmboss ? "drawing the emboss passes" : "drawing the DOT3 passes", [&] {
     glActiveTexture(GL_TEXTURE0);
-    if (method == 5) {
+    if (method == kEmboss) {
       for (FixedVertex& v : vs) {
         glm::vec2 tl(glm::dot(v.t, L[0]), glm::dot(v.b, L[0]));
         v.shifted = v.st + kEmbossShift * tl / in.texSize;

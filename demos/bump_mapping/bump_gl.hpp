@@ -16,15 +16,24 @@
 //       frame (T, B, N) computed per vertex and interpolated.
 //   R   Q' = Q + P N, drawn as geometry; its normal the exact Q'_s x Q'_t
 //       with Q'_s = Q_s + P_s N + P N_s (the term seed 004 drops).
+// The numbers the text names (each method's id, the albedo) are written into
+// it from C++ (glsl() below), and frameAt's formulas are the torus's own
+// (common/core/torus_frame.inl).
 // Lighting: Phong, two directional lights, ambient + sum of diffuse and
 // specular (exponent 40).  `opts.x` = 1 writes the eye-space normal as the
 // colour 0.5 + 0.5 n instead (the measurements' normal renders).
 #pragma once
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "bump_methods.hpp"
+#include "common/core/torus.hpp"
 #include "common/gl/context.hpp"
 
 #include "common/core/error.hpp"
@@ -34,26 +43,69 @@
 
 namespace bump {
 constexpr const char* kSourceFile = "demos/bump_mapping/bump_gl.hpp";
-enum Method { kFlat = 0, kBlinn = 1, kSeed002 = 2, kNormalMap = 3, kReference = 9 };
 
-// Uniforms (all vec4): torus = (R, r, height scale, method), rep = (repeats
-// along s, along t, texture width, height), l0/l1 = (eye-space direction to
-// the light, intensity), opts = (normals as colour, no specular, mipmaps, 0).
-inline const char* const kCommonGLSL = R"(#version 130
+// The surface's colour and its ambient share, used by the shader below
+// (written into its text as ALBEDO and AMBIENT) and by the fixed-function
+// passes (bump_ff.hpp).
+const glm::vec3 kAlbedo{0.78f, 0.74f, 0.68f};
+constexpr float kAmbient = 0.1f;
+
+// The shader text names its numbers: METHOD_<KEY> for each method's shader
+// id (kMethods), ALBEDO and AMBIENT.  glsl() writes their values in before
+// the text goes to GL, as a #define would, but on the CPU: each number is
+// written once, here in C++, and the program GL compiles (and the GL
+// listing shows) holds the numbers themselves.
+inline std::string glslNumber(float v) {  // the shortest text that reads back as v
+  char buf[32];
+  for (int digits = 1; digits <= 9; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, double(v));
+    if (std::strtof(buf, nullptr) == v) break;
+  }
+  std::string s = buf;
+  return s.find_first_of(".e") == std::string::npos ? s + ".0" : s;  // 1 -> 1.0: a float in GLSL
+}
+inline std::string glsl(const std::string& text) {
+  std::map<std::string, std::string> value = {
+      {"ALBEDO", "vec3(" + glslNumber(kAlbedo.r) + ", " + glslNumber(kAlbedo.g) + ", " + glslNumber(kAlbedo.b) + ")"},
+      {"AMBIENT", glslNumber(kAmbient)}};
+  for (const MethodInfo& m : kMethods) {
+    std::string name = std::string("METHOD_") + m.key;
+    for (char& c : name) c = char(std::toupper(static_cast<unsigned char>(c)));
+    value[name] = std::to_string(m.shaderId);
+  }
+  // Word by word (runs of letters, digits and _): a word that is a name
+  // above becomes its value, everything else is copied.
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    size_t j = i;
+    while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_')) ++j;
+    if (j == i) {
+      out += text[i++];
+      continue;
+    }
+    const std::string word = text.substr(i, j - i);
+    const auto it = value.find(word);
+    out += it != value.end() ? it->second : word;
+    i = j;
+  }
+  return out;
+}
+
+// Uniforms (all vec4): torus = (R, r, height scale, method: kMethods' shader
+// id), rep = (repeats along s, along t, texture width, height), l0/l1 =
+// (eye-space direction to the light, intensity), opts = (normals as colour,
+// no specular, mipmaps, 0).
+// frameAt's body is common/core/torus_frame.inl, the same lines
+// common/core/torus.cpp compiles as C++ (ts::torusFrame, used by the
+// fixed-function passes): the torus's formulas are written once.
+inline const std::string kCommonGLSL = std::string(R"(#version 130
 uniform sampler2D tex;
 uniform vec4 torus, rep, l0, l1, opts;
 const float TAU = 6.28318530718;
 // The torus and its partials at (s, t), model coordinates.
 void frameAt(vec2 st, out vec3 Q, out vec3 N, out vec3 Qs, out vec3 Qt, out vec3 Ns, out vec3 Nt) {
   float th = TAU * st.x, ph = TAU * st.y, R = torus.x, r = torus.y;
-  vec3 dTh = vec3(cos(th), 0.0, -sin(th)), dPh = vec3(-sin(ph) * sin(th), cos(ph), -sin(ph) * cos(th));
-  N = vec3(cos(ph) * sin(th), sin(ph), cos(ph) * cos(th));
-  Q = vec3((R + r * cos(ph)) * sin(th), r * sin(ph), (R + r * cos(ph)) * cos(th));
-  Qs = TAU * (R + r * cos(ph)) * dTh;
-  Qt = TAU * r * dPh;
-  Ns = TAU * cos(ph) * dTh;
-  Nt = TAU * dPh;
-}
+)") + ts::kTorusFrameGLSL + R"(}
 // P = scale h and its partials in s and t: central differences over one
 // texel of mip level `lod` (2^lod texels of level 0), read at that level.
 vec3 heightAt(vec2 st, float lod) {
@@ -66,6 +118,8 @@ vec3 heightAt(vec2 st, float lod) {
 }
 )";
 
+// The tangent frame per vertex, in eye space: T = Qs/|Qs|, B = Qt/|Qt|
+// (the unit tangents along θ and φ) and N, interpolated for B2 and B3.
 inline const char* const kMeshVS = R"(
 out vec2 st;
 out vec3 peye, tT, tB, tN;
@@ -95,6 +149,8 @@ void main() {
 }
 )";
 
+// (The comments after the METHOD_ names stand where they stand in the text
+// GL gets, once the names are numbers.)
 inline const char* const kFS = R"(
 in vec2 st;
 in vec3 peye, tT, tB, tN;
@@ -106,7 +162,7 @@ float lodHere() {
   return opts.z > 0.5 ? max(0.0, log2(max(m, 1e-6))) : 0.0;
 }
 vec3 phong(vec3 n, vec3 L, float I) {
-  vec3 albedo = vec3(0.78, 0.74, 0.68), V = normalize(-peye);
+  vec3 albedo = ALBEDO, V = normalize(-peye);
   float d = max(dot(n, L), 0.0);
   float sp = d > 0.0 ? pow(max(dot(reflect(-L, n), V), 0.0), 40.0) : 0.0;
   return I * (albedo * d + vec3(0.35) * sp * (1.0 - opts.y));
@@ -116,21 +172,21 @@ void main() {
   frameAt(st, Q, N, Qs, Qt, Ns, Nt);
   mat3 m = mat3(gl_ModelViewMatrix);
   int method = int(torus.w + 0.5);
-  if (method == 1) {                     // B1: seed 004, Blinn
+  if (method == METHOD_BLINN) {                     // B1: seed 004, Blinn
     vec3 P = heightAt(st, lodHere()), nv = cross(Qs, Qt);
     float len = length(nv);
     n = m * (nv + P.y * cross(nv, Qt) / len + P.z * cross(Qs, nv) / len);
-  } else if (method == 2) {              // B2: seed 002, literally
+  } else if (method == METHOD_SEED002) {              // B2: seed 002, literally
     ivec2 size = ivec2(rep.zw), x = ivec2(floor(st * rep.xy * rep.zw));
     #define J(dx, dy) texelFetch(tex, ivec2((x.x + dx + 4 * size.x) % size.x, (x.y + dy + 4 * size.y) % size.y), 0).r
     float gx = J(1, 0) - J(-1, 0);       // j(x+1, y) - j(x-1, y), / 255
     float gy = J(0, -1) - J(0, 1);       // j(x, y+1) - j(x, y-1): raster row y+1 is texel row y-1
     n = normalize(tN);
     n.x += gx, n.y += gy;
-  } else if (method == 3) {              // B3: the normal map in the per-vertex tangent frame
+  } else if (method == METHOD_NORMALMAP) {              // B3: the normal map in the per-vertex tangent frame
     vec3 t = textureLod(tex, st * rep.xy, lodHere()).rgb * 2.0 - 1.0;
     n = normalize(tT) * t.x + normalize(tB) * t.y + normalize(tN) * t.z;
-  } else if (method == 9) {              // R: the displaced surface's own normal
+  } else if (method == METHOD_REFERENCE) {              // R: the displaced surface's own normal
     vec3 P = heightAt(st, 0.0);
     n = m * cross(Qs + P.y * N + P.x * Ns, Qt + P.z * N + P.x * Nt);
   } else {
@@ -141,15 +197,13 @@ void main() {
     gl_FragColor = vec4(0.5 + 0.5 * n, 1.0);
     return;
   }
-  vec3 c = vec3(0.78, 0.74, 0.68) * 0.1 + phong(n, normalize(l0.xyz), l0.w) + phong(n, normalize(l1.xyz), l1.w);
+  vec3 c = ALBEDO * AMBIENT + phong(n, normalize(l0.xyz), l0.w) + phong(n, normalize(l1.xyz), l1.w);
   gl_FragColor = vec4(c, 1.0);
 }
 )";
 
-inline ts::Program meshProgram() { return {kSourceFile, std::string(kCommonGLSL) + kMeshVS, std::string(kCommonGLSL) + kFS}; }
-inline ts::Program referenceProgram() {
-  return {kSourceFile, std::string(kCommonGLSL) + kReferenceVS, std::string(kCommonGLSL) + kFS};
-}
+inline ts::Program meshProgram() { return {kSourceFile, glsl(kCommonGLSL + kMeshVS), glsl(kCommonGLSL + kFS)}; }
+inline ts::Program referenceProgram() { return {kSourceFile, glsl(kCommonGLSL + kReferenceVS), glsl(kCommonGLSL + kFS)}; }
 
 // The reference R: a (nu + 1) x (nv + 1) grid of (s, t), drawn from client
 // arrays with glDrawElements into a framebuffer of its own and read back.
@@ -208,7 +262,7 @@ inline ts::Image renderReference(ts::Renderer& r, const ts::Frame& f) {
     glUniform1i(glGetUniformLocation(prog, "tex"), 0);
     for (const ts::Uniform& u : b.uniforms) {
       glm::vec4 v = u.value;
-      if (u.name == "torus") v.w = float(kReference);
+      if (u.name == "torus") v.w = float(kMethods[kReference].shaderId);
       GLint loc = glGetUniformLocation(prog, u.name.c_str());
       if (loc >= 0) glUniform4f(loc, v.x, v.y, v.z, v.w);
     }

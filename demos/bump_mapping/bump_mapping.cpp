@@ -5,7 +5,7 @@
 // surface.  With a height field P(s, t) (procedural dimples and ridges, or
 // bricks) the true surface is Q' = Q + P n; its normal is Q'_s x Q'_t.
 // Each method approximates that normal per pixel on the smooth torus of
-// Figure VI.6 (demos/torus/torus_map.hpp), lit by two lights (Phong, GLSL):
+// Figure VI.6 (common/core/torus.hpp), lit by two lights (Phong, GLSL):
 //   B1  seed 004, Blinn:   n' = n + P_u (n x Q_w)/|n| + P_w (Q_u x n)/|n|
 //       (it drops P (n/|n|)_u: exact for small P and flat Q);
 //   B2  seed 002, literally: g_x = j(x+1,y) - j(x-1,y), g_y = j(x,y+1) - j(x,y-1),
@@ -36,7 +36,8 @@
 //   + / -  height scale   s / S  object scale (seed 004's claim)   w  the normal map's edge slopes wrap (the seam's fix)
 //   a / A, e / E  light 1 azimuth, elevation (or a right drag)   b / B, d / D  light 2   . / ,  tilt
 // What the GL does: one GLSL 1.30 program (bump_gl.hpp: kFS) for B1-B3, the
-// method a uniform: common/gl/render.cpp: Renderer::draw sends the torus as
+// method a uniform (its number from bump_methods.hpp: kMethods, the one table
+// of the methods): common/gl/render.cpp: Renderer::draw sends the torus as
 // glTexCoord4f(s, t, 0, 1) + glVertex3f after glUseProgram and glUniform4f,
 // and the shader reads the heights (or the normal map) in texture unit 0 with
 // textureLod (B2: texelFetch of the 8-bit texels).  R, B4 and B5 are passes
@@ -58,24 +59,24 @@
 #include "bump_gl.hpp"
 #include "bump_math.hpp"
 #include "bump_measure.hpp"
+#include "bump_methods.hpp"
 #include "common/gl/gl_listing.hpp"
 #include "common/core/layout.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
+#include "common/core/torus.hpp"
 #include "common/core/user_texture.hpp"
-#include "demos/torus/torus_map.hpp"
 
 namespace {
 using ts::layout::fmt;
 using ts::layout::kAmber;
 using ts::layout::kWhite;
 using bump::Found;
-const char* const kMethodTitles[] = {"flat (no bumps)", "B1 Blinn (seed 004)", "B2 seed 002 literally", "B3 normal map",
-                                     "R displaced",     "B4 emboss (seed 001)", "B5 DOT3"};
-const int kShaderIds[] = {bump::kFlat, bump::kBlinn, bump::kSeed002, bump::kNormalMap, bump::kReference, 0, 0};
+using bump::kMethods;
 constexpr int kMeasureSize = 480;
+constexpr float kIntensity[2] = {0.75f, 0.5f};  // the two lights'
 
 class BumpMapping final : public ts::Scene {
  public:
@@ -88,7 +89,9 @@ class BumpMapping final : public ts::Scene {
   }
   std::vector<std::string> claim() const override { return {"normal_err_deg[blinn]", "normal_err_deg[seed002]"}; }
   void addOptions(ts::Options& o) override {
-    o.addEnum("method", &method_, std::vector<std::string>(bump::kMethodNames, bump::kMethodNames + bump::kMethodCount),
+    std::vector<std::string> keys;
+    for (const bump::MethodInfo& m : kMethods) keys.push_back(m.key);
+    o.addEnum("method", &method_, keys,
               "flat | B1 Blinn (seed 004) | B2 seed 002 | B3 normal map | R the displaced reference | B4 emboss | B5 DOT3", 'm');
     o.addEnum("view", &view_, {"single", "compare", "normals", "all"},
               "single | compare: the method beside R | normals as colours | all: B1-B5 and R side by side", 'v');
@@ -127,8 +130,8 @@ class BumpMapping final : public ts::Scene {
     float az = glm::radians(light_[k].x), el = glm::radians(light_[k].y);
     return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
   }
-  torusmap::Params torus() const {
-    torusmap::Params tp;
+  ts::TorusShape torus() const {
+    ts::TorusShape tp;
     tp.R = objectScale_, tp.r = 0.4 * objectScale_, tp.nu = 64, tp.nv = 32;
     return tp;
   }
@@ -150,9 +153,9 @@ class BumpMapping final : public ts::Scene {
 };
 
 ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::RenderSpec& s) const {
-  const torusmap::Params tp = torus();
+  const ts::TorusShape tp = torus();
   ts::Panel p;
-  p.id = std::string("torus_") + bump::kMethodNames[s.method];
+  p.id = std::string("torus_") + kMethods[s.method].key;
   p.viewport = vp;
   p.depthTest = true;
   p.projection = glm::perspective(glm::radians(35.0f), float(vp.w) / float(vp.h), 0.5f * objectScale_, 20.0f * objectScale_ * distance_);
@@ -160,16 +163,16 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
   p.modelview = glm::rotate(p.modelview, glm::radians(tilt_), glm::vec3(1, 0, 0));
   camera_.apply(p);
   const bump::Heights& H = heights();
-  ts::TextureDesc tex = s.method == bump::iNormalMap ? bump::normalTexture(H, cacheKey_, heightScale_, s.mipmaps, wrapSlopes_)
+  ts::TextureDesc tex = s.method == bump::kNormalMap ? bump::normalTexture(H, cacheKey_, heightScale_, s.mipmaps, wrapSlopes_)
                                                      : bump::heightTexture(H, cacheKey_, false, s.mipmaps);
   // The mesh's (s, t) become glTexCoord4f(s, t, 0, 1) in Renderer::draw: the shader's gl_MultiTexCoord0.
-  ts::Batch b = ts::meshBatch(torusmap::mesh(tp), f.addTexture(tex));
+  ts::Batch b = ts::meshBatch(ts::torusMesh(tp), f.addTexture(tex));
   b.role = "torus";
   b.program = "bump";
-  b.uniforms = {{"torus", {float(tp.R), float(tp.r), heightScale_, float(kShaderIds[s.method])}},
+  b.uniforms = {{"torus", {float(tp.R), float(tp.r), heightScale_, float(kMethods[s.method].shaderId)}},
                 {"rep", {H.rep.x, H.rep.y, float(H.w), float(H.h)}},
-                {"l0", glm::vec4(toLight(0), 0.75f)},
-                {"l1", glm::vec4(toLight(1), 0.5f)},
+                {"l0", glm::vec4(toLight(0), kIntensity[0])},
+                {"l1", glm::vec4(toLight(1), kIntensity[1])},
                 {"opts", {s.normals ? 1.0f : 0.0f, s.noSpecular ? 1.0f : 0.0f, s.mipmaps ? 1.0f : 0.0f, 0.0f}}};
   if (f.programs.empty()) f.programs.push_back({"bump", bump::meshProgram()});
   p.batches.push_back(b);
@@ -189,10 +192,10 @@ ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const 
   ts::Frame f = ts::layout::blankFrame(kMeasureSize, kMeasureSize);
   if (s.normals || s.embossTermOnly) f.clearColor = {0.0f, 0.0f, 0.0f, 1.0f};  // "covered" = not black
   f.panels.push_back(v.torusPanel(f, {0, 0, kMeasureSize, kMeasureSize}, s));
-  if (s.method == bump::iReference && !s.smoothGeometry) return bump::renderReference(r, f);
-  if (s.method < bump::iEmboss) return r.renderOffscreen(f);
+  if (s.method == bump::kReference && !s.smoothGeometry) return bump::renderReference(r, f);
+  if (!kMethods[s.method].fixedFunction) return r.renderOffscreen(f);
   const bump::Heights& H = v.heights();
-  bump::FixedInputs in{v.torus(), H.rep, glm::vec2(float(H.w), float(H.h)), {v.toLight(0), v.toLight(1)}, {0.75f, 0.5f},
+  bump::FixedInputs in{v.torus(), H.rep, glm::vec2(float(H.w), float(H.h)), {v.toLight(0), v.toLight(1)}, {kIntensity[0], kIntensity[1]},
                        bump::heightTexture(H, v.cacheKey_), bump::heightTexture(H, v.cacheKey_, true),
                        bump::normalTexture(H, v.cacheKey_, v.heightScale_, false, wrapSlopes_), s.embossTermOnly};
   return bump::renderFixedFunction(r, f, s.method, in);
@@ -203,25 +206,25 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
   ts::Frame f = L::blankFrame(width, height);
   const Found* found = measured.detailAs<Found>();
   L::FlowSpec spec;
-  const int kAll[] = {bump::iBlinn, bump::iSeed002, bump::iNormalMap, bump::iEmboss, bump::iDot3, bump::iReference};
+  const int kAll[] = {bump::kBlinn, bump::kSeed002, bump::kNormalMap, bump::kEmboss, bump::kDot3, bump::kReference};
   spec.n = view_ == 0 ? 1 : view_ == 3 ? 6 : 2, spec.linesAbove = 1, spec.linesBelow = 2;
   std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
   const bool normals = view_ == 2;
   for (size_t k = 0; k < cells.size(); ++k) {
     const L::Cell& c = cells[k];
-    const int m = view_ == 3 ? kAll[k] : k == 0 ? method_ : int(bump::iReference);
-    const bool picture = m == bump::iReference || m >= bump::iEmboss;  // drawn by measure()
-    const bool noNormals = normals && m >= bump::iEmboss;
-    L::caption(f, c.above, std::string(kMethodTitles[m]) + (normals && !noNormals ? ", normals" : ""), kWhite, c.scale);
+    const int m = view_ == 3 ? kAll[k] : k == 0 ? method_ : int(bump::kReference);
+    const bool picture = m == bump::kReference || kMethods[m].fixedFunction;  // drawn by measure()
+    const bool noNormals = normals && kMethods[m].fixedFunction;
+    L::caption(f, c.above, std::string(kMethods[m].title) + (normals && !noNormals ? ", normals" : ""), kWhite, c.scale);
     if (!picture) {
       f.panels.push_back(torusPanel(f, c.picture, {m, normals}));
     } else if (found && found->pictures.count(m)) {
-      const bool n = normals && m == bump::iReference;
+      const bool n = normals && m == bump::kReference;
       ts::TextureDesc t = ts::renderedImageTexture(n ? *found->refNormals : *found->pictures.at(m), "bump_render",
-                                                   std::string(bump::kMethodNames[m]) + (n ? " normals" : ""), "bump_mapping");
+                                                   std::string(kMethods[m].key) + (n ? " normals" : ""), "bump_mapping");
       const auto gl = found->picturesGL.find(m);
       t.renderedBy = n ? found->refNormalsGL : gl != found->picturesGL.end() ? gl->second : nullptr;
-      f.panels.push_back(L::texturePanel(std::string("picture_") + bump::kMethodNames[m], c.picture, f.addTexture(t)));
+      f.panels.push_back(L::texturePanel(std::string("picture_") + kMethods[m].key, c.picture, f.addTexture(t)));
     } else {
       L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
     }
@@ -229,7 +232,7 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
     const auto it = found->cmp.find(m);
     const bump::Compare& q = it->second;
     std::string note;
-    if (m == bump::iReference)
+    if (m == bump::kReference)
       note = normals ? fmt("R's normals on the smooth torus: %.1f deg off in the same pixel (the geometry's share)", q.screenNormalDeg)
                      : fmt("R's own normals on the smooth torus reach %.1f dB against it: the rest is geometry", q.psnr);
     else if (noNormals)
@@ -238,8 +241,8 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
       note = fmt("normal off by %.1f deg at the same (s,t)", q.normalDeg) + fmt(", %.1f deg in the same pixel", q.screenNormalDeg);
     else
       note = fmt("against R: PSNR %.1f dB", q.psnr) + fmt(", mean |diff| %.1f", q.mad) +
-             (m < bump::iEmboss ? fmt(", normal off by %.1f deg", q.normalDeg) : std::string());
-    if (m == bump::iEmboss && !normals && found->embossContrast[3] >= 0)
+             (!kMethods[m].fixedFunction ? fmt(", normal off by %.1f deg", q.normalDeg) : std::string());
+    if (m == bump::kEmboss && !normals && found->embossContrast[3] >= 0)
       note += fmt("; bump contrast %.3f with the light within 10 deg of the normal", found->embossContrast[0]) +
               fmt(", %.3f beyond 60", found->embossContrast[3]);
     L::caption(f, c.below, note, kAmber, c.scale);

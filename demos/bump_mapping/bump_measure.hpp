@@ -10,18 +10,15 @@
 #include <string>
 
 #include "bump_math.hpp"
+#include "bump_methods.hpp"
 #include "common/core/gl_call.hpp"
 #include "common/core/scene.hpp"
 
 namespace bump {
-// Methods, in the order of the demo's --method.
-enum Index { iFlat, iBlinn, iSeed002, iNormalMap, iReference, iEmboss, iDot3, kMethodCount };
-inline const char* const kMethodNames[] = {"flat", "blinn", "seed002", "normalmap", "reference", "emboss", "dot3"};
-
 struct RenderSpec {
-  int method = iFlat;
+  int method = kFlat;           // a row of kMethods
   bool normals = false;         // the normal as colour (GLSL methods)
-  bool smoothGeometry = false;  // R's normal on the smooth torus (iReference)
+  bool smoothGeometry = false;  // R's normal on the smooth torus (kReference)
   bool embossTermOnly = false;  // B4's 0.5 + 0.5 (H - H') alone
   bool noSpecular = false;      // the shader's diffuse sum only (to compare with DOT3)
   float heightFactor = 1.0f, objectFactor = 1.0f;
@@ -55,18 +52,18 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
     s.recordTo = calls;
     return render(s);
   };
-  auto refShaded = std::make_shared<const ts::Image>(recorded({iReference}, &found.picturesGL[iReference]));
-  auto refNormals = std::make_shared<const ts::Image>(recorded({iReference, true}, &found.refNormalsGL));
-  const ts::Image exact = render({iReference, true, true}), smooth = render({iFlat, true});
-  found.pictures[iReference] = refShaded, found.refNormals = refNormals;
+  auto refShaded = std::make_shared<const ts::Image>(recorded({kReference}, &found.picturesGL[kReference]));
+  auto refNormals = std::make_shared<const ts::Image>(recorded({kReference, true}, &found.refNormalsGL));
+  const ts::Image exact = render({kReference, true, true}), smooth = render({kFlat, true});
+  found.pictures[kReference] = refShaded, found.refNormals = refNormals;
   ts::measureProgress(0.15);
   std::map<int, ts::Image> normals;
   for (int m = 0; m < kMethodCount; ++m) {
-    const bool ideal = m == iReference, fixed = m >= iEmboss;
+    const bool ideal = m == kReference, fixed = kMethods[m].fixedFunction;
     ts::Image shaded = fixed ? recorded({m}, &found.picturesGL[m]) : render({m, false, ideal});
-    normals[m] = m == iFlat ? smooth : ideal ? exact : fixed ? smooth : render({m, true});
+    normals[m] = m == kFlat ? smooth : ideal ? exact : fixed ? smooth : render({m, true});
     Compare c = compare(shaded, normals[m], *refShaded, *refNormals);
-    const std::string k = std::string("[") + (ideal ? "ideal" : kMethodNames[m]) + "]";
+    const std::string k = std::string("[") + (ideal ? "ideal" : kMethods[m].key) + "]";
     if (!fixed) {
       c.screenNormalDeg = c.normalDeg;
       c.normalDeg = compare(shaded, normals[m], shaded, exact).normalDeg;
@@ -86,38 +83,38 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   // side of the ring s runs along +x, on the far side along -x.
   const glm::ivec2 rows = coveredRows(smooth);
   const int third = (rows.y - rows.x) / 3;
-  for (int m = iBlinn; m <= iNormalMap; ++m)
+  for (int m = kBlinn; m <= kNormalMap; ++m)
     for (int side = 0; side < 2; ++side) {
       glm::ivec2 band = side == 0 ? glm::ivec2(rows.y - third, rows.y) : glm::ivec2(rows.x, rows.x + third);
       glm::dvec2 a = perturbationAgreement(normals[m], exact, smooth, band);
       const std::string where = side == 0 ? "near" : "far";
-      out.push_back({"tilt_agreement_x_" + where + "[" + kMethodNames[m] + "]", a.x,
+      out.push_back({"tilt_agreement_x_" + where + "[" + kMethods[m].key + "]", a.x,
                      "+1: tilts the normal along eye x as the true surface does, -1: the opposite way (" + where + " side)"});
-      out.push_back({"tilt_agreement_y_" + where + "[" + kMethodNames[m] + "]", a.y, "the same along eye y (" + where + " side)"});
+      out.push_back({"tilt_agreement_y_" + where + "[" + kMethods[m].key + "]", a.y, "the same along eye y (" + where + " side)"});
     }
   out.push_back({"tilt_deg[reference]", meanTiltDeg(exact, smooth), "mean angle of the displaced surface's normal from the smooth torus's"});
-  for (int m = iBlinn; m <= iNormalMap; ++m)
-    out.push_back({std::string("tilt_deg[") + kMethodNames[m] + "]", meanTiltDeg(normals[m], smooth), "mean angle from the smooth normal"});
+  for (int m = kBlinn; m <= kNormalMap; ++m)
+    out.push_back({std::string("tilt_deg[") + kMethods[m].key + "]", meanTiltDeg(normals[m], smooth), "mean angle from the smooth normal"});
   // Twice the height scale: B1 and R tilt about twice as far (small angles);
   // seed 002's formula has no scale in it.
-  for (int m : {iBlinn, iSeed002, iReference}) {
+  for (int m : {kBlinn, kSeed002, kReference}) {
     RenderSpec s{m, true, true};
     s.heightFactor = 2;
     double t1 = meanTiltDeg(normals[m], smooth), t2 = meanTiltDeg(render(s), smooth);
-    out.push_back({std::string("tilt_ratio_height_x2[") + kMethodNames[m] + "]", t1 > 0 ? t2 / t1 : 0,
+    out.push_back({std::string("tilt_ratio_height_x2[") + kMethods[m].key + "]", t1 > 0 ? t2 / t1 : 0,
                    "mean tilt with twice the height scale / with it"});
   }
   ts::measureProgress(0.65);
   // Seed 004's scale claim: the object twice as large (the eye twice as far,
   // so the picture is the same), the bumps as high as before.
   {
-    RenderSpec s{iFlat, true};
+    RenderSpec s{kFlat, true};
     s.objectFactor = 2;
     const ts::Image bigSmooth = render(s);
-    for (int m : {iBlinn, iNormalMap, iReference}) {
+    for (int m : {kBlinn, kNormalMap, kReference}) {
       s.method = m, s.smoothGeometry = true;
       double t1 = meanTiltDeg(normals[m], smooth), t2 = meanTiltDeg(render(s), bigSmooth);
-      out.push_back({std::string("tilt_ratio_object_x2[") + kMethodNames[m] + "]", t1 > 0 ? t2 / t1 : 0,
+      out.push_back({std::string("tilt_ratio_object_x2[") + kMethods[m].key + "]", t1 > 0 ? t2 / t1 : 0,
                      "mean tilt of the object twice as large / as it is (seed 004: 1/2 for Blinn's form)"});
     }
   }
@@ -126,7 +123,7 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   // per band of the angle between the smooth normal and light 1.  The shift
   // is the light's part along the surface: 0 with the light along the normal.
   {
-    RenderSpec s{iEmboss};
+    RenderSpec s{kEmboss};
     s.embossTermOnly = true;
     const ts::Image term = render(s);
     double sum[4] = {0, 0, 0, 0}, cnt[4] = {0, 0, 0, 0};
@@ -144,15 +141,15 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
                      found.embossContrast[b], "mean |H - H'| where the light is this far from the normal (-1: no pixels)"});
   }
   // The outline: the bump methods keep the smooth torus's, R does not.
-  out.push_back({"outline_deviation_px[blinn]", outlineDeviationPx(normals[iBlinn], smooth),
+  out.push_back({"outline_deviation_px[blinn]", outlineDeviationPx(normals[kBlinn], smooth),
                  "mean distance of B1's outline from the smooth torus's, pixels"});
   out.push_back({"outline_deviation_px[reference]", outlineDeviationPx(*refNormals, smooth),
                  "mean distance of R's outline from the smooth torus's, pixels"});
   // DOT3 against the shader's own diffuse sum with the same normal map.
   {
-    RenderSpec s{iNormalMap};
+    RenderSpec s{kNormalMap};
     s.noSpecular = true;
-    Compare c = compare(render(s), smooth, *found.pictures[iDot3], smooth);
+    Compare c = compare(render(s), smooth, *found.pictures[kDot3], smooth);
     out.push_back({"dot3_vs_shader_mad", c.mad, "GL_DOT3_RGB's picture against the GLSL diffuse sum of the same normal map, 8-bit units"});
   }
   // Minification: the torus further away, its texels smaller than pixels.
@@ -160,17 +157,17 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   // mipmapped normal map (B3: averaged normals) both flatten the bumps; the
   // mean tilt relative to the nearest view, per distance.
   for (float dist : {2.0f, 4.0f, 8.0f}) {
-    RenderSpec s{iFlat, true};
+    RenderSpec s{kFlat, true};
     s.distanceFactor = dist, s.mipmaps = true;
     const ts::Image far = render(s);
-    for (int m : {iBlinn, iNormalMap}) {
+    for (int m : {kBlinn, kNormalMap}) {
       RenderSpec near = s;
       near.method = m, near.distanceFactor = 1.0f;
       s.method = m;
       double t1 = meanTiltDeg(render(near), smooth), t2 = meanTiltDeg(render(s), far);
-      out.push_back({std::string("mip_tilt_ratio[") + kMethodNames[m] + "@" + std::to_string(int(dist)) + "x]", t1 > 0 ? t2 / t1 : 0,
-                     std::string("mean tilt at this distance / at the nearest, mipmapped ") + (m == iBlinn ? "heights" : "normal map")});
-      s.method = iFlat;
+      out.push_back({std::string("mip_tilt_ratio[") + kMethods[m].key + "@" + std::to_string(int(dist)) + "x]", t1 > 0 ? t2 / t1 : 0,
+                     std::string("mean tilt at this distance / at the nearest, mipmapped ") + (m == kBlinn ? "heights" : "normal map")});
+      s.method = kFlat;
     }
     ts::measureProgress(0.85 + 0.03 * dist / 2);
   }

@@ -21,9 +21,10 @@
 //
 // What the GL does: each torus is one glBegin(GL_TRIANGLES) sent by
 // common/gl/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
-// per vertex, (s, t) = torus_map.hpp's texcoord, (i/nu, j/nv) plus (1/2, 1/2)
-// for front; glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S/T, GL_REPEAT),
-// made by Renderer::texture, reads s, t in [1/2, 3/2) as the texture shifted.
+// per vertex, (s, t) from common/core/torus.cpp: ts::torusMesh, (i/nu, j/nv)
+// plus torus_math.hpp's offset, (1/2, 1/2) for front;
+// glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S/T, GL_REPEAT), made by
+// Renderer::texture, reads s, t in [1/2, 3/2) as the texture shifted.
 // Listings: book_figures/vi6_torus.gl.txt and vi6_torus_centre.gl.txt (its
 // front torus starts at glTexCoord4f(0.5, 0.5, 0, 1)).
 //
@@ -47,11 +48,11 @@
 #include "common/core/textures.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/core/user_texture.hpp"
-#include "torus_map.hpp"
+#include "torus_math.hpp"  // the exercise's answer; the torus itself is common/core/torus.hpp
 #include "torus_measure.hpp"  // the centre found in a texel-index render, and the ray to the mesh
 
 namespace {
-using torusmap::Mapping;
+using torus::Mapping;
 
 const char* const kMappingNames[] = {"book", "front"};
 using ts::layout::kWhite;
@@ -60,8 +61,8 @@ const glm::vec4 kMarker{0.95f, 0.1f, 0.2f, 1.0f}, kMarkerBox{0.55f, 0.0f, 0.1f, 
 
 using ts::layout::fmt;
 
-using torusmeasure::Found;  // where the centre was found in one mapping (the measurement)
-using torusmeasure::kMeasureSize;
+using torus::Found;  // where the centre was found in one mapping (the measurement)
+using torus::kMeasureSize;
 
 class Torus final : public ts::Scene {
  public:
@@ -87,7 +88,7 @@ class Torus final : public ts::Scene {
     // 0 = edge-on (the hole's far wall is hidden by the front of the ring),
     // 90 = straight down the axis.  The book's figure: about 35, well above
     // the 16.1° from which the book's centre can be seen
-    // (torusmap::minTiltToSeeBookCentre).
+    // (torus::minTiltToSeeBookCentre).
     o.addFloat("tilt", &tilt_, 0.0f, 90.0f, "tilt towards the viewer, degrees (the hole's far wall shows above ~16)",
                '.', ',', 5.0f);
     o.addFloat("turn", &turn_, -180.0f, 180.0f, "turn about the torus's axis, degrees", ']', '[', 30.0f);
@@ -127,9 +128,9 @@ class Torus final : public ts::Scene {
   }
 
  private:
-  torusmap::Params params(Mapping m) const {
+  torus::Params params(Mapping m) const {
     glm::dvec2 rr = parseRadii(radiiText_);
-    torusmap::Params p;
+    torus::Params p;
     p.R = rr.x;
     p.r = rr.y;
     p.mapping = m;
@@ -139,8 +140,8 @@ class Torus final : public ts::Scene {
   // 5.2 / 1.4 (R + r) from the centre, 35° field: the whole ring fits with a
   // margin at any tilt and turn (straight down, the near rim is 0.4 closer).
   glm::mat4 projection() const { return glm::perspective(glm::radians(35.0f), 1.0f, 0.5f, 20.0f); }
-  glm::mat4 modelview(const torusmap::Params& p) const {
-    float d = float(torusmap::eyeDistance(p));
+  glm::mat4 modelview(const torus::Params& p) const {
+    float d = float(torus::eyeDistance(p));
     glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -d));
     m = glm::rotate(m, glm::radians(tilt_), glm::vec3(1, 0, 0));  // the eye goes up: (0, sin, cos) -> +z
     return glm::rotate(m, glm::radians(-turn_), glm::vec3(0, 1, 0));
@@ -178,7 +179,7 @@ void Torus::addTexture(ts::Frame& f, const ts::Rect& vp, int tex, int scale) con
 }
 
 void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale, const Found* found) const {
-  torusmap::Params tp = params(m);
+  torus::Params tp = params(m);
   ts::Panel p;
   p.id = std::string("torus_") + kMappingNames[int(m)];
   p.viewport = vp;
@@ -188,17 +189,15 @@ void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int s
   p.depthTest = true;
   // Light from the upper left in front, fixed to the viewer.
   glm::dvec3 toLight = glm::dvec3(glm::inverse(glm::mat3(p.modelview)) * glm::vec3(-0.4f, 0.6f, 1.0f));
-  // The mesh's (s, t) (torusmap::texcoord) become glTexCoord4f(s, t, 0, 1) in Renderer::draw.
-  p.batches.push_back(ts::litMeshBatch(torusmap::mesh(tp), tex, toLight, 0.4, 0.6, "torus"));
+  // The mesh's (s, t) (ts::torusMesh) become glTexCoord4f(s, t, 0, 1) in Renderer::draw.
+  p.batches.push_back(ts::litMeshBatch(torus::mesh(tp), tex, toLight, 0.4, 0.6, "torus"));
   if (marker_) {
-    // A cross in the tangent plane at the answer, lifted 2% of r along the
-    // normal so the depth test keeps it above its own surface and hides it
-    // behind the rest of the ring.
-    glm::dvec2 a = torusmap::centreAngles(m);
-    glm::dvec3 n = torusmap::normal(a.x, a.y);
-    glm::dvec3 c = torusmap::centrePoint(tp) + 0.02 * tp.r * n;
-    glm::dvec3 dTheta(std::cos(ts::degToRad(a.x)), 0.0, -std::sin(ts::degToRad(a.x)));  // along θ
-    glm::dvec3 dPhi = glm::cross(n, dTheta);                                            // along φ
+    // A cross in the tangent plane at the answer, its arms along the unit
+    // tangents T (along θ) and B (along φ), lifted 2% of r along the normal
+    // so the depth test keeps it above its own surface and hides it behind
+    // the rest of the ring.
+    const ts::TorusFrame fr = torus::centreFrame(tp);
+    const glm::dvec3 n = fr.N, c = fr.Q + 0.02 * tp.r * n, dTheta = fr.T, dPhi = fr.B;
     const double arm = 0.35 * tp.r;
     ts::Batch cross = ts::lineSegments({}, kMarker, 3.0f, "centre_marker");
     for (glm::dvec3 q : {c - arm * dTheta, c + arm * dTheta, c - arm * dPhi, c + arm * dPhi})
@@ -236,7 +235,7 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
   L::caption(f, L::halves(tc.above).first, "texture", kWhite, tc.scale);
   for (size_t k = 0; k < shown.size(); ++k) {
     const Mapping m = shown[k];
-    const torusmap::Params tp = params(m);
+    const torus::Params tp = params(m);
     const L::Cell& c = cells[k + 1];
     const Founds* founds = measured.detailAs<Founds>();
     const Found* found = founds && founds->count(int(m)) ? &founds->at(int(m)) : nullptr;
@@ -244,7 +243,7 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
     const auto [mapping, centre] = L::halves(c.above);
     L::caption(f, mapping, m == Mapping::Book ? "s=theta/360, t=phi/360" : "s=theta/360+1/2, t=phi/360+1/2", kWhite,
                c.scale);
-    glm::dvec3 answer = torusmap::centrePoint(tp);
+    glm::dvec3 answer = torus::centrePoint(tp);
     L::caption(f, centre,
                "centre at (0, 0, " + fmt("%.2f", answer.z) + ")" + (m == Mapping::Book ? " = -(R - r)" : " = R + r"),
                kWhite, c.scale);
@@ -265,11 +264,11 @@ ts::Measurements Torus::measure(ts::Renderer& r) {
   ts::Measurements out;
   Founds founds;
   for (Mapping m : todo) {
-    const torusmap::Params tp = params(m), other = params(m == Mapping::Book ? Mapping::Front : Mapping::Book);
-    Found fd = torusmeasure::find(r, tp, projection(), modelview(tp));
+    const torus::Params tp = params(m), other = params(m == Mapping::Book ? Mapping::Front : Mapping::Book);
+    Found fd = torus::find(r, tp, projection(), modelview(tp));
     founds[int(m)] = fd;
     const std::string n = std::string("[") + kMappingNames[int(m)] + "]";
-    const glm::dvec3 answer = torusmap::centrePoint(tp);
+    const glm::dvec3 answer = torus::centrePoint(tp);
     glm::mat4 mvp = projection() * modelview(tp);
     ts::Panel whole;
     whole.viewport = {0, 0, kMeasureSize, kMeasureSize};
@@ -286,7 +285,7 @@ ts::Measurements Torus::measure(ts::Renderer& r) {
     out.push_back({"centre_distance_to_answer" + n, fd.visible ? glm::distance(fd.point, answer) : none,
                    "from the exercise's answer"});
     out.push_back({"centre_distance_to_other" + n,
-                   fd.visible ? glm::distance(fd.point, torusmap::centrePoint(other)) : none,
+                   fd.visible ? glm::distance(fd.point, torus::centrePoint(other)) : none,
                    "from the other mapping's answer (should be far)"});
   }
   out.detail = founds;

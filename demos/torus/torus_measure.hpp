@@ -1,8 +1,8 @@
 // demos/torus/torus_measure.hpp — the measurement of demos/torus: where the
 // texture's centre (1/2, 1/2) is found in a render whose pixels name their
 // texels, and the point of the torus mesh a ray through it hits.  Kept out
-// of torus.cpp so that file shows the figure first; torus_map.hpp holds the
-// answer it is compared with.
+// of torus.cpp so that file shows the figure first; torus_math.hpp holds
+// the answer it is compared with.
 #pragma once
 #include <glm/glm.hpp>
 
@@ -14,9 +14,9 @@
 #include "common/core/probe.hpp"
 #include "common/gl/render.hpp"
 #include "common/core/textures.hpp"
-#include "torus_map.hpp"
+#include "torus_math.hpp"
 
-namespace torusmeasure {
+namespace torus {
 // Where the centre was found in one mapping.
 struct Found {
   bool visible = false;
@@ -42,9 +42,9 @@ inline double hit(glm::dvec3 o, glm::dvec3 d, glm::dvec3 a, glm::dvec3 b, glm::d
 // Where (1/2, 1/2) is on the screen and on the torus, from a render with the
 // texel-index texture (N = 2048, GL_NEAREST, GL_REPEAT) at a fixed size,
 // seen through `projection` and `modelview` (the picture's camera).
-inline Found find(ts::Renderer& r, const torusmap::Params& tp, const glm::mat4& projection, const glm::mat4& modelview) {
+inline Found find(ts::Renderer& r, const Params& tp, const glm::mat4& projection, const glm::mat4& modelview) {
   const int N = 2048, S = kMeasureSize;
-  const ts::Mesh mesh = torusmap::mesh(tp);
+  const ts::Mesh mesh = torus::mesh(tp);
   ts::Frame mf;
   mf.width = mf.height = S;
   mf.clearColor = glm::vec4(0.0f);  // alpha 0: not the torus (every texel has alpha 255)
@@ -123,4 +123,4 @@ inline Found find(ts::Renderer& r, const torusmap::Params& tp, const glm::mat4& 
   out.visible = true;
   return out;
 }
-}  // namespace torusmeasure
+}  // namespace torus

@@ -20,6 +20,7 @@
 #include <string>
 
 #include "common/core/image.hpp"
+#include "demos/bump_mapping/bump_gl.hpp"
 #include "demos/bump_mapping/bump_math.hpp"
 #include "tests/support/scene_test.hpp"
 
@@ -159,5 +160,22 @@ TEST(BumpMapping, NormalMapBakesTheSlope) {
   EXPECT_NEAR(c.r / 255.0, 0.5 + 0.5 * want.x, 1.0 / 255);
   EXPECT_NEAR(c.g / 255.0, 0.5, 1.0 / 255);
   EXPECT_NEAR(c.b / 255.0, 0.5 + 0.5 * want.z, 1.0 / 255);
+}
+
+// The shader's numbers come from the method table (bump_methods.hpp) and the
+// material (bump_gl.hpp): the text GL compiles holds the numbers, no name is
+// left over, and each method's branch tests its own shader id.
+TEST(BumpMapping, ShaderTextTakesItsNumbersFromTheTable) {
+  const ts::Program p = bump::meshProgram();
+  for (const std::string& text : {p.vertex, p.fragment}) {
+    EXPECT_EQ(text.find("METHOD_"), std::string::npos);
+    EXPECT_EQ(text.find("ALBEDO"), std::string::npos);
+    EXPECT_EQ(text.find("AMBIENT"), std::string::npos);
+  }
+  for (int m : {bump::kBlinn, bump::kSeed002, bump::kNormalMap, bump::kReference})
+    EXPECT_NE(p.fragment.find("(method == " + std::to_string(bump::kMethods[m].shaderId) + ")"), std::string::npos)
+        << bump::kMethods[m].key;
+  EXPECT_EQ(bump::glslNumber(1.0f), "1.0");
+  EXPECT_EQ(bump::glslNumber(0.74f), "0.74");
 }
 }  // namespace

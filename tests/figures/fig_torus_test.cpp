@@ -1,6 +1,6 @@
 // tests/figures/fig_torus_test.cpp — Figure VI.6 and Exercise VI.2
 // (demos/torus): where the texture's centre (1/2, 1/2) lands on the torus,
-// checked in rendered images against the answer in demos/torus/torus_map.hpp:
+// checked in rendered images against the answer in demos/torus/torus_math.hpp:
 // (0, 0, -(R - r)) with s = θ/360, t = φ/360 and (0, 0, R + r) with
 // s = θ/360 + 1/2, t = φ/360 + 1/2.
 //
@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -31,19 +32,20 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
-#include "demos/torus/torus_map.hpp"
+#include "common/core/torus.hpp"
+#include "demos/torus/torus_math.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
-using torusmap::Mapping;
+using torus::Mapping;
 constexpr int kN = 2048;
 
 using ts::test::Demo;
 using ts::test::value;
 using ts::test::panelOf;
-torusmap::Params book(Mapping m) {
-  torusmap::Params p;  // the demo's defaults: R = 1, r = 0.4
+torus::Params book(Mapping m) {
+  torus::Params p;  // the demo's defaults: R = 1, r = 0.4
   p.mapping = m;
   return p;
 }
@@ -91,11 +93,11 @@ glm::vec2 project(const ts::Panel& p, glm::dvec3 q) {
 // (0, 0, R + r); a grid vertex carries exactly (1/2, 1/2) there.
 TEST(Torus, TheAnswerAndTheMeshAgree) {
   for (Mapping m : {Mapping::Book, Mapping::Front}) {
-    torusmap::Params p = book(m);
+    torus::Params p = book(m);
     glm::dvec3 want = m == Mapping::Book ? glm::dvec3(0, 0, -(p.R - p.r)) : glm::dvec3(0, 0, p.R + p.r);
-    EXPECT_LT(glm::distance(torusmap::centrePoint(p), want), 1e-12);
-    ts::Mesh mesh = torusmap::mesh(p);
-    glm::ivec2 v = torusmap::centreVertex(p);
+    EXPECT_LT(glm::distance(torus::centrePoint(p), want), 1e-12);
+    ts::Mesh mesh = torus::mesh(p);
+    glm::ivec2 v = torus::centreVertex(p);
     size_t k = size_t(mesh.at(v.x, v.y));
     EXPECT_DOUBLE_EQ(mesh.st[k].x - std::floor(mesh.st[k].x), 0.5);
     EXPECT_DOUBLE_EQ(mesh.st[k].y - std::floor(mesh.st[k].y), 0.5);
@@ -111,6 +113,49 @@ TEST(Torus, TheAnswerAndTheMeshAgree) {
       EXPECT_EQ(std::memcmp(&mesh.points[size_t(mesh.at(i, 0))].pos, &mesh.points[size_t(mesh.at(i, p.nv))].pos,
                             sizeof(glm::dvec3)), 0);
   }
+}
+
+// Claim (common/core/torus.hpp, used by this demo and by bump_mapping): the
+// frame's partials are the surface's derivatives (central differences, step
+// 1e-5 in s and t: truncation error ~h^2 times the third derivative, about
+// 1e-8 here, round-off ~1e-16 / 1e-5 = 1e-11: tolerance 1e-6); T, B, N are
+// orthonormal and right-handed; its point and normal are the mesh's (the
+// same surface written c + r N there: round-off only); and the GLSL the
+// shaders get is torus_frame.inl itself, its leading comment left out.
+TEST(Torus, FrameIsTheSurfacesDerivatives) {
+  const double R = 1.0, r = 0.4, h = 1e-5;
+  for (glm::dvec2 st : {glm::dvec2(0.1, 0.2), glm::dvec2(0.5, 0.5), glm::dvec2(0.8, 0.95), glm::dvec2(0.3, 0.6)}) {
+    SCOPED_TRACE(testing::Message() << "s = " << st.x << ", t = " << st.y);
+    const ts::TorusFrame f = ts::torusFrameAt(R, r, st);
+    auto at = [&](double ds, double dt) { return ts::torusFrameAt(R, r, st + glm::dvec2(ds, dt)); };
+    EXPECT_LT(glm::distance(f.Qs, (at(h, 0).Q - at(-h, 0).Q) / (2 * h)), 1e-6);
+    EXPECT_LT(glm::distance(f.Qt, (at(0, h).Q - at(0, -h).Q) / (2 * h)), 1e-6);
+    EXPECT_LT(glm::distance(f.Ns, (at(h, 0).N - at(-h, 0).N) / (2 * h)), 1e-6);
+    EXPECT_LT(glm::distance(f.Nt, (at(0, h).N - at(0, -h).N) / (2 * h)), 1e-6);
+    EXPECT_LT(glm::distance(f.T, glm::normalize(f.Qs)), 1e-12);
+    EXPECT_LT(glm::distance(f.B, glm::normalize(f.Qt)), 1e-12);
+    EXPECT_LT(glm::distance(glm::cross(f.T, f.B), f.N), 1e-12);
+    EXPECT_NEAR(glm::dot(f.T, f.B), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(f.N), 1.0, 1e-12);
+    EXPECT_NEAR(glm::dot(f.N, f.Qs), 0.0, 1e-12);
+  }
+  ts::TorusShape shape;
+  const ts::Mesh mesh = ts::torusMesh(shape);
+  for (size_t k = 0; k < mesh.points.size(); k += 7) {
+    const ts::TorusFrame f = ts::torusFrameAt(shape.R, shape.r, mesh.st[k]);
+    EXPECT_LT(glm::distance(f.Q, mesh.points[k].pos), 1e-12);
+    EXPECT_LT(glm::distance(f.N, mesh.points[k].normal), 1e-12);
+  }
+  std::ifstream in("common/core/torus_frame.inl");  // CTest runs in the source tree
+  ASSERT_TRUE(in) << "common/core/torus_frame.inl not found from the working directory";
+  std::string line, code;
+  bool leading = true;
+  while (std::getline(in, line)) {
+    if (leading && line.rfind("//", 0) == 0) continue;
+    leading = false;
+    code += line + "\n";
+  }
+  EXPECT_EQ(code, ts::kTorusFrameGLSL);
 }
 
 // Claim, measured by the demo: in both mappings the centre is visible from
@@ -158,8 +203,8 @@ TEST(Torus, DisplayedCentreIsWhereTheAnswerProjects) {
     ASSERT_GE(got.x, 0.0f) << "no pixel of the torus";
     // A pixel here covers a few texels of 2048: the nearest is a few away.
     EXPECT_LT(texels, 16.0);
-    glm::vec2 want = project(p, torusmap::centrePoint(book(m)));
-    glm::vec2 other = project(p, torusmap::centrePoint(book(m == Mapping::Book ? Mapping::Front : Mapping::Book)));
+    glm::vec2 want = project(p, torus::centrePoint(book(m)));
+    glm::vec2 other = project(p, torus::centrePoint(book(m == Mapping::Book ? Mapping::Front : Mapping::Book)));
     EXPECT_LT(glm::distance(got, want), 2.0f) << "found (" << got.x << ", " << got.y << "), answer at (" << want.x
                                               << ", " << want.y << ")";
     EXPECT_GT(glm::distance(got, other), 50.0f);
@@ -180,10 +225,10 @@ TEST(Torus, NegativeControlHiddenCentreIsNotFound) {
 
 // Claim: the book's centre, on the far inner wall, shows exactly when the
 // line of sight clears the near side of the ring: from 16.1° of tilt for the
-// defaults (torusmap::minTiltToSeeBookCentre).  2° below it the demo finds it
+// defaults (torus::minTiltToSeeBookCentre).  2° below it the demo finds it
 // hidden, 2° above it finds it at the answer; the default 35° is well clear.
 TEST(Torus, BookCentreShowsOnceTheSightLineClearsTheRing) {
-  const double edge = torusmap::minTiltToSeeBookCentre(book(Mapping::Book));
+  const double edge = torus::minTiltToSeeBookCentre(book(Mapping::Book));
   EXPECT_NEAR(edge, 16.1, 0.1);
   EXPECT_GT(35.0, edge + 10);
   for (double tilt : {edge - 2, edge + 2}) {
@@ -223,8 +268,8 @@ TEST(Torus, MarkerSitsOnTheAnswer) {
     ts::Frame fb = off.frame(1024, 512);
     ts::Image b = ts::test::renderer().render(fb, false);
     const ts::Panel& p = panelOf(fa, std::string("torus_") + n);
-    torusmap::Params tp = book(std::string(n) == "book" ? Mapping::Book : Mapping::Front);
-    glm::vec2 q = project(p, torusmap::centrePoint(tp));
+    torus::Params tp = book(std::string(n) == "book" ? Mapping::Book : Mapping::Front);
+    glm::vec2 q = project(p, torus::centrePoint(tp));
     EXPECT_TRUE(ts::probe::close(a.at(int(q.x), int(q.y)), red, ts::probe::tolerance(8)));
     EXPECT_FALSE(ts::probe::close(b.at(int(q.x), int(q.y)), red, 40));
   }

@@ -1,5 +1,7 @@
-// demos/torus/torus_map.hpp — the mathematics of Figure VI.6 and Exercise VI.2
-// (Buss, VI.1.2).
+// demos/torus/torus_math.hpp — the mathematics of Exercise VI.2 (Buss,
+// VI.1.2): where the texture's centre lands on the torus of Figure VI.6,
+// and the demo's camera.  The torus itself (its points, normals, tangents
+// and mesh) is common/core/torus.hpp.
 //
 // The torus p(θ, φ) = ((R + r cos φ) sin θ, r sin φ, (R + r cos φ) cos θ),
 // θ, φ in [0°, 360°), R the major and r the minor radius, with the book's
@@ -13,48 +15,30 @@
 // front, on the positive z axis.  (GL_REPEAT makes s and t in [1/2, 3/2)
 // show the same texture, shifted.)
 //
-// The mesh is ts::parametricGrid + ts::torusPoint: positions from the wrapped
-// indices (both seams bit-identical), texture coordinates from the unwrapped
-// ones.  nu and nv are even, so a grid vertex sits exactly on the centre.
+// The mesh is ts::torusMesh with the mapping's offset added to every
+// (s, t).  nu and nv are even, so a grid vertex sits exactly on the centre.
 // Header-only so the demo and the tests share one copy.
 #pragma once
 #include <glm/glm.hpp>
 
 #include <cmath>
 
-#include "common/core/mesh.hpp"
+#include "common/core/torus.hpp"
 
-namespace torusmap {
+namespace torus {
 enum class Mapping { Book, Front };
 
-struct Params {
-  double R = 1.0, r = 0.4;  // a fat ring: its hole is still wide enough to see into
-  int nu = 48, nv = 24;     // 7.5° and 15° cells: smooth silhouettes, even counts
+// The torus (ts::TorusShape's defaults: R = 1, r = 0.4, 48 x 24 cells) and
+// how the texture is put on it.
+struct Params : ts::TorusShape {
   Mapping mapping = Mapping::Book;
 };
 
 // What is added to (θ/360, φ/360): (0, 0) for the book, (1/2, 1/2) for the exercise.
 inline glm::dvec2 offset(Mapping m) { return m == Mapping::Book ? glm::dvec2(0.0) : glm::dvec2(0.5); }
 
-inline glm::dvec2 texcoord(const Params& p, int i, int j) {
-  return glm::dvec2(double(i) / p.nu, double(j) / p.nv) + offset(p.mapping);
-}
-
-inline ts::Mesh mesh(const Params& p) {
-  return ts::parametricGrid(
-      p.nu, p.nv, /*periodicU=*/true, /*periodicV=*/true,
-      [&](int i, int j) { return ts::torusPoint(p.R, p.r, p.nu, p.nv, i, j); },
-      [&](int i, int j) { return texcoord(p, i, j); });
-}
-
-inline glm::dvec3 point(double R, double r, double thetaDeg, double phiDeg) {
-  double th = ts::degToRad(thetaDeg), ph = ts::degToRad(phiDeg);
-  return {(R + r * std::cos(ph)) * std::sin(th), r * std::sin(ph), (R + r * std::cos(ph)) * std::cos(th)};
-}
-inline glm::dvec3 normal(double thetaDeg, double phiDeg) {
-  double th = ts::degToRad(thetaDeg), ph = ts::degToRad(phiDeg);
-  return {std::cos(ph) * std::sin(th), std::sin(ph), std::cos(ph) * std::cos(th)};
-}
+// (s, t) = (i/nu, j/nv) + offset at grid vertex (i, j).
+inline ts::Mesh mesh(const Params& p) { return ts::torusMesh(p, offset(p.mapping)); }
 
 // (θ, φ) in degrees where (s, t) = (1/2, 1/2) lands: solve θ/360 + o = 1/2
 // (mod 1) for θ in [0, 360).
@@ -62,11 +46,13 @@ inline glm::dvec2 centreAngles(Mapping m) {
   glm::dvec2 a = (glm::dvec2(0.5) - offset(m)) * 360.0;
   return {std::fmod(a.x + 360.0, 360.0), std::fmod(a.y + 360.0, 360.0)};
 }
-// The exercise's answer: (0, 0, -(R - r)) for the book, (0, 0, R + r) in front.
-inline glm::dvec3 centrePoint(const Params& p) {
+// The torus's frame there (its point Q, normal N, tangents T and B).
+inline ts::TorusFrame centreFrame(const Params& p) {
   glm::dvec2 a = centreAngles(p.mapping);
-  return point(p.R, p.r, a.x, a.y);
+  return ts::torusFrame(p.R, p.r, ts::degToRad(a.x), ts::degToRad(a.y));
 }
+// The exercise's answer: (0, 0, -(R - r)) for the book, (0, 0, R + r) in front.
+inline glm::dvec3 centrePoint(const Params& p) { return centreFrame(p).Q; }
 // The demo's camera: the eye on a sphere of this radius about the centre,
 // `tilt` degrees above the torus's plane (5.2 for R + r = 1.4: the whole
 // ring fits a 35° field of view at any tilt).
@@ -93,4 +79,4 @@ inline glm::ivec2 centreVertex(const Params& p) {
   glm::dvec2 a = centreAngles(p.mapping);
   return {int(std::lround(a.x / 360.0 * p.nu)), int(std::lround(a.y / 360.0 * p.nv))};
 }
-}  // namespace torusmap
+}  // namespace torus
