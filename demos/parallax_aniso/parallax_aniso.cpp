@@ -87,7 +87,6 @@ class ParallaxAniso final : public ts::Scene {
   int defaultHeight() const override { return 560; }
 
   std::vector<std::string> claim() const override { return {"ewa_psnr_all", "ewa_vis_psnr_all"}; }
-
   void addOptions(ts::Options& o) override {
     o.addEnum("mode", &mode_, {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5],
                                kModeKeys[6]},
@@ -127,7 +126,6 @@ class ParallaxAniso final : public ts::Scene {
       if (!v.empty()) ts::checkWritable(v);
     });
   }
-
   std::vector<ts::FigureSpec> figures() const override {
     return {
         {"parallax_modes", "Seed 003: parallax + anisotropic filtering",
@@ -156,12 +154,10 @@ class ParallaxAniso final : public ts::Scene {
          "over the whole frame."},
     };
   }
-
   std::vector<std::pair<std::string, std::string>> figureFiles() const override {
     if (!table_) return {};
     return {{".csv", csv(*table_)}};
   }
-
   bool live() const override { return view_ == kLive; }
   void update(double seconds) override {
     windowed_ = true;  // a window: the live view may render smaller while it moves
@@ -170,7 +166,6 @@ class ParallaxAniso final : public ts::Scene {
     if (azimuth_ > 30.0f) azimuth_ = 30.0f, sweep_ = -1;
     if (azimuth_ < -30.0f) azimuth_ = -30.0f, sweep_ = 1;
   }
-
   ts::Measurements measure(ts::Renderer& r) override {
     ReliefGL& gl = r.attachment<ReliefGL>();  // the passes' GL objects live as long as r
     if (view_ == kLive) return measureLive(r, gl);
@@ -214,7 +209,6 @@ class ParallaxAniso final : public ts::Scene {
     m.detail = shown_;
     return m;
   }
-
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override {
     ts::Frame f = ts::layout::blankFrame(width, height);
     if (view_ == kLive) {

@@ -73,7 +73,6 @@ class PerspectiveCorrection final : public ts::Scene {
   int defaultHeight() const override { return 400; }
 
   std::vector<std::string> claim() const override { return {"affine_error_texels", "d_ratio", "hint_honoured"}; }
-
   void addOptions(ts::Options& o) override {
     o.addEnum("view", &view_, {"both", "affine", "perspective", "plot"},
               "both: the book's figure; one variant large; plot: error vs (d2-d1)/d1 over tilts", 'v');
@@ -86,7 +85,6 @@ class PerspectiveCorrection final : public ts::Scene {
     picture_.addOption(o, "the checkerboard");
     camera_.addOptions(o);
   }
-
   std::vector<ts::FigureSpec> figures() const override {
     return {
         {"vi2_perspective_correction", "Figure VI.2",
@@ -107,7 +105,6 @@ class PerspectiveCorrection final : public ts::Scene {
          "(d2 - d1)/d1 is already {sweep_t00_d_ratio}, to {sweep_t80_error_texels} at 80 deg."},
     };
   }
-
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
 

@@ -76,7 +76,6 @@ class QuadDistortion final : public ts::Scene {
            "Prints the bend measured from the render and the bend the math predicts.";
   }
   std::vector<std::string> claim() const override { return {"kink_deg*"}; }
-
   void addOptions(ts::Options& o) override {
     o.addEnum("diagonal", &diagonal_, {kDiagNames[0], kDiagNames[1]},
               "which diagonal splits the square (the book: tl-br)", 'd');
@@ -91,7 +90,6 @@ class QuadDistortion final : public ts::Scene {
               "(s,t) at the square's corners (0,0) (1,0) (1,1) (0,1): \"s,t s,t s,t s,t\"",
               [](const std::string& v) { quad::parseCorners(v); });
   }
-
   std::vector<ts::FigureSpec> figures() const override {
     return {
         {"vi1_quad_distortion", "Figure VI.1",
@@ -107,7 +105,6 @@ class QuadDistortion final : public ts::Scene {
          "deg); bilinear and projective (s,t,r,q) remove it ({kink_deg[bilinear]}, {kink_deg[projective]} deg)."},
     };
   }
-
   ts::Measurements measure(ts::Renderer& r) override;
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
 

@@ -63,13 +63,10 @@
 #include "wrap_views.hpp"  // the texture-space panel and the env view's lit planes
 
 namespace {
-const GLenum kModes[] = {GL_REPEAT, GL_MIRRORED_REPEAT, GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER};
-const char* const kModeNames[] = {"repeat", "mirrored", "clamp", "edge", "border"};
-const char* const kModeGL[] = {"GL_REPEAT", "GL_MIRRORED_REPEAT", "GL_CLAMP", "GL_CLAMP_TO_EDGE", "GL_CLAMP_TO_BORDER"};
+using wrap::kModes, wrap::kModeNames, wrap::kModeGL;  // the five wrap modes (wrap_math.hpp)
 const glm::vec4 kBorderColour{0.85f, 0.1f, 0.75f, 1.0f};
 const glm::vec4 &kWhite = ts::layout::kWhite, &kMeasured = ts::layout::kAmber;
-using ts::layout::fmt;
-using wrap::stQuad;
+using ts::layout::fmt, wrap::stQuad;
 using wrap::views::kEnvs, wrap::views::kEnvNames, wrap::views::kEnvGL, wrap::views::kEnvColour;
 using wrap::views::Found;  // what measure() found, for the captions
 
@@ -139,7 +136,6 @@ class WrapModes final : public ts::Scene {
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
-
  private:
   ts::TextureDesc texture(GLenum s, GLenum t, bool linear) const {
     ts::TextureDesc d = texturePath_.empty() ? ts::gradientTexture(npot_ ? 7 : 8, npot_ ? 5 : 8) : fileTexture_;
@@ -153,13 +149,21 @@ class WrapModes final : public ts::Scene {
     x.scale.y = x.scale.x;
     return wrap::textureMatrix(x);
   }
-  // The environment view (wrap_views.hpp): a plane lit per vertex under the RGBA texture in each mode;
-  // separate_ sends the specular part as the secondary colour (GL_COLOR_SUM), else it is in the primary colour.
-  ts::Frame envFrame(int width, int height, const Found* found) const;
+  // The environment view (wrap_views.hpp): a plane lit per vertex under the RGBA texture in each mode; separate_
+  // sends the specular as the secondary colour (GL_COLOR_SUM), else it is in the primary colour.
+  ts::Frame envFrame(int width, int height, const Found* found) const {
+    // GL_DECAL's texture has an alpha ramp (its alpha is the fragment's: the picture stays opaque); the others'
+    // is opaque, or their At / Af At would show the page through (measure() checks every mode's alpha).
+    ts::TextureDesc opaque = texture(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, true), ramp = opaque;
+    if (texturePath_.empty()) {
+      ramp = ts::gradientTexture(npot_ ? 7 : 8, npot_ ? 5 : 8, true);
+      ramp.wrapS = ramp.wrapT = GL_CLAMP_TO_EDGE;
+    }
+    return wrap::views::envFrame(width, height, opaque, ramp, separate_, found);
+  }
   int view_ = 0, wrapS_ = 1, wrapT_ = 1, filter_ = 0, env_ = 0;
-  bool separate_ = true;
+  bool separate_ = true, npot_ = false, animate_ = false;
   float range_ = 1.0f;
-  bool npot_ = false, animate_ = false;
   long animFrames_ = 0;
   wrap::TexTransform xf_;
   std::string texturePath_;
@@ -237,18 +241,6 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
     L::caption(f, cells[1].below, fmt("%.0f probe texels differ from M applied on the CPU", found->matrixMismatches),
                kMeasured, cells[1].scale);
   return f;
-}
-
-ts::Frame WrapModes::envFrame(int width, int height, const Found* found) const {
-  // The texture: RGBA with an alpha ramp for GL_DECAL (whose alpha is the fragment's, so the picture stays
-  // opaque); opaque for the others, whose alpha would be At or Af At and show the page through the figure
-  // (the measurement checks every mode's alpha on a grid instead).
-  ts::TextureDesc opaque = texture(GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, true), ramp = opaque;
-  if (texturePath_.empty()) {
-    ramp = ts::gradientTexture(npot_ ? 7 : 8, npot_ ? 5 : 8, true);
-    ramp.wrapS = ramp.wrapT = GL_CLAMP_TO_EDGE;
-  }
-  return wrap::views::envFrame(width, height, opaque, ramp, separate_, found);
 }
 
 // Measured in small offscreen passes (wrap_gl.hpp), each read back and compared with wrap_math.hpp's formulas.
