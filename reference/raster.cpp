@@ -45,6 +45,13 @@ struct Edge {
   // First pixel whose centre is at or right of the edge: centre (c + 1/2)
   // >= x  <=>  (kSub c + kSub/2) DY >= N.
   int64_t firstColumn() const { return ceilDiv(N - (kSub / 2) * DY, kSub * DY); }
+  // The same at scanline r without stepping there: N grows by dN a scanline,
+  // in integers, so this is exactly the value the stepping reaches.
+  int64_t firstColumnAt(int64_t r) const {
+    Edge e = *this;
+    e.N += (r - row) * dN;
+    return e.firstColumn();
+  }
 };
 
 Edge makeEdge(const ScreenVertex& u, const ScreenVertex& l, Snapped su, Snapped sl, int n, FillRule rule) {
@@ -77,6 +84,26 @@ Edge makeEdge(const ScreenVertex& u, const ScreenVertex& l, Snapped su, Snapped 
   return e;
 }
 
+// A triangle's vertices sorted by y (snapped, so ties are exact) and the
+// sign of its area on the snapped grid (0: degenerate).
+struct Sorted {
+  const ScreenVertex *a, *b, *c;
+  Snapped sa, sb, sc;
+  int64_t cross;
+};
+Sorted sortByY(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2) {
+  const ScreenVertex* p[3] = {&v0, &v1, &v2};
+  Snapped sp[3] = {snap(v0), snap(v1), snap(v2)};
+  int order[3] = {0, 1, 2};
+  std::sort(order, order + 3, [&](int i, int j) { return sp[i].Y < sp[j].Y; });
+  Sorted o{p[order[0]], p[order[1]], p[order[2]], sp[order[0]], sp[order[1]], sp[order[2]], 0};
+  o.cross = (o.sb.X - o.sa.X) * (o.sc.Y - o.sa.Y) - (o.sb.Y - o.sa.Y) * (o.sc.X - o.sa.X);
+  return o;
+}
+
+// Vertices this far out are not rasterized (the caller clips to the viewport).
+bool inRange(const ScreenVertex& v) { return std::abs(v.x) < 1e6 && std::abs(v.y) < 1e6; }
+
 void step(Edge& e, int n) {
   e.N += e.dN;
   e.x += e.dx;
@@ -103,16 +130,12 @@ Plane planeThrough(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenV
 long scanTriangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int n, PixelRect clip,
                   FillRule rule, const Emit& emit) {
   n = std::clamp(n, 0, kMaxAttributes);
-  for (const ScreenVertex* v : {&v0, &v1, &v2})
-    if (!(std::abs(v->x) < 1e6 && std::abs(v->y) < 1e6)) return 0;  // (the caller clips to the viewport)
+  if (!inRange(v0) || !inRange(v1) || !inRange(v2)) return 0;
   // 1. Sort the vertices by y (snapped, so ties are exact).
-  const ScreenVertex* p[3] = {&v0, &v1, &v2};
-  Snapped sp[3] = {snap(v0), snap(v1), snap(v2)};
-  int order[3] = {0, 1, 2};
-  std::sort(order, order + 3, [&](int i, int j) { return sp[i].Y < sp[j].Y; });
-  const ScreenVertex &a = *p[order[0]], &b = *p[order[1]], &c = *p[order[2]];
-  Snapped sa = sp[order[0]], sb = sp[order[1]], sc = sp[order[2]];
-  int64_t cross = (sb.X - sa.X) * (sc.Y - sa.Y) - (sb.Y - sa.Y) * (sc.X - sa.X);
+  const Sorted o = sortByY(v0, v1, v2);
+  const ScreenVertex &a = *o.a, &b = *o.b, &c = *o.c;
+  const Snapped sa = o.sa, sb = o.sb, sc = o.sc;
+  const int64_t cross = o.cross;
   if (cross == 0) return 0;
   // Per-pixel increments along a span: the attribute planes' x gradients.
   std::array<double, kMaxAttributes> dadx{};
@@ -147,5 +170,22 @@ long scanTriangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVe
     step(shortEdge, n);
   }
   return emitted;
+}
+bool coversCentre(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int x, int y,
+                  FillRule rule) {
+  if (!inRange(v0) || !inRange(v1) || !inRange(v2)) return false;
+  const Sorted o = sortByY(v0, v1, v2);
+  if (o.cross == 0) return false;
+  // The scanline loop of scanTriangle, at the one row y: the same three
+  // edges, the same choice of the short edge and of left and right.
+  Edge longEdge = makeEdge(*o.a, *o.c, o.sa, o.sc, 0, rule), upper = makeEdge(*o.a, *o.b, o.sa, o.sb, 0, rule),
+       lower = makeEdge(*o.b, *o.c, o.sb, o.sc, 0, rule);
+  if (y < longEdge.row || y >= longEdge.rowEnd) return false;
+  const Edge& shortEdge = y < upper.rowEnd ? upper : lower;
+  const bool shortLeft = o.cross < 0;
+  const Edge& left = shortLeft ? shortEdge : longEdge;
+  const Edge& right = shortLeft ? longEdge : shortEdge;
+  // Left edges in, right edges out.
+  return x >= left.firstColumnAt(y) && x < right.firstColumnAt(y);
 }
 }  // namespace ref

@@ -48,6 +48,12 @@ using Emit = std::function<void(int x, int y, const double* attributes)>;
 long scanTriangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int attributes,
                   PixelRect clip, FillRule rule, const Emit& emit);
 
+// Whether scanTriangle would emit pixel (x, y): the same exact test of the
+// centre (x + 1/2, y + 1/2) with the same fill rule, for one pixel, without
+// walking the triangle.
+bool coversCentre(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int x, int y,
+                  FillRule rule);
+
 // An attribute that is linear in screen space: value = a x + b y + c.
 struct Plane {
   double a = 0, b = 0, c = 0;

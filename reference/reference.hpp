@@ -30,6 +30,7 @@
 
 #include "common/core/frame.hpp"
 #include "common/core/image.hpp"
+#include "geometry.hpp"
 #include "raster.hpp"
 #include "sampler.hpp"
 
@@ -93,7 +94,6 @@ class Reference {
   const std::vector<std::string>& notes() const { return notes_; }
 
  private:
-  struct Poly;
   void drawPanel(const ts::Panel& p);
   void drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect scissor);
   void drawLines(const ts::Panel& p, const ts::Batch& b, PixelRect scissor);
@@ -116,4 +116,8 @@ class Reference {
 // The image rectangle a label covers as render.cpp draws it (text plus
 // background padding), in pixels [x0, x1) x [y0, y1), with `margin` around.
 PixelRect labelBox(const ts::Label& l, int margin, bool geometryKnown);
+// Draws a label as render.cpp does (background box, then the text) into
+// `img`, whose pixel (0, 0) is pixel (ox, oy) of the frame: the whole
+// frame's image, or a part of it.
+void paintLabel(ts::Image& img, const ts::Label& l, int ox, int oy);
 }  // namespace ref

@@ -148,21 +148,56 @@ Colour Texture::texelNearest(int d, int i, int j) const {
                desc_.wrapT == GL_CLAMP ? wrapTexelNearest(GL_CLAMP, j, img.height) : j);
 }
 
-Colour Texture::nearest(int d, double s, double t) const {
-  double u = preClamp(desc_.wrapS, s) * width(d), v = preClamp(desc_.wrapT, t) * height(d);
-  return texelNearest(d, int(std::floor(u)), int(std::floor(v)));
+Colour Footprint::value() const {
+  double o[4] = {0, 0, 0, 0};
+  for (int n = 0; n < count; ++n)
+    for (size_t k = 0; k < 4; ++k) o[k] += texels[size_t(n)].weight * texels[size_t(n)].rgba[k];
+  return {float(o[0]), float(o[1]), float(o[2]), float(o[3])};
 }
 
-Colour Texture::linear(int d, double s, double t) const {
+// GL_NEAREST: the texel holding (u, v) = (s w, t h), i = floor(u), j = floor(v).
+void Texture::addNearest(int d, double s, double t, double weight, Footprint* out) const {
+  double u = preClamp(desc_.wrapS, s) * width(d), v = preClamp(desc_.wrapT, t) * height(d);
+  int i = wrapTexelNearest(desc_.wrapS, int(std::floor(u)), width(d));
+  int j = wrapTexelNearest(desc_.wrapT, int(std::floor(v)), height(d));
+  out->texels[size_t(out->count++)] = {d, i, j, weight, texel(d, i, j)};
+}
+
+// GL_LINEAR: the 2x2 texels whose centres surround (u, v); with
+// i0 = floor(u - 1/2), a = frac(u - 1/2) (and j0, b likewise) the weights are
+// (1-a)(1-b), a(1-b), (1-a)b, ab.
+void Texture::addLinear(int d, double s, double t, double weight, Footprint* out) const {
   double u = preClamp(desc_.wrapS, s) * width(d) - 0.5, v = preClamp(desc_.wrapT, t) * height(d) - 0.5;
   int i0 = int(std::floor(u)), j0 = int(std::floor(v));
   double a = u - i0, b = v - j0;
-  Colour c00 = texel(d, i0, j0), c10 = texel(d, i0 + 1, j0), c01 = texel(d, i0, j0 + 1), c11 = texel(d, i0 + 1, j0 + 1);
-  Colour o;
-  for (int k = 0; k < 4; ++k)
-    o[size_t(k)] = float((1 - a) * (1 - b) * c00[size_t(k)] + a * (1 - b) * c10[size_t(k)] +
-                         (1 - a) * b * c01[size_t(k)] + a * b * c11[size_t(k)]);
-  return o;
+  const double w[4] = {(1 - a) * (1 - b), a * (1 - b), (1 - a) * b, a * b};
+  for (int k = 0; k < 4; ++k) {
+    int i = wrapTexel(desc_.wrapS, i0 + (k & 1), width(d)), j = wrapTexel(desc_.wrapT, j0 + (k >> 1), height(d));
+    out->texels[size_t(out->count++)] = {d, i, j, weight * w[k], texel(d, i, j)};
+  }
+}
+
+Colour Texture::nearest(int d, double s, double t) const {
+  Footprint f;
+  addNearest(d, s, t, 1.0, &f);
+  return f.value();
+}
+
+Colour Texture::linear(int d, double s, double t) const {
+  Footprint f;
+  addLinear(d, s, t, 1.0, &f);
+  return f.value();
+}
+
+// The filter a mipmapped min filter applies within a level.
+static GLenum filterWithinLevel(GLenum minFilter) {
+  return minFilter == GL_NEAREST_MIPMAP_NEAREST || minFilter == GL_NEAREST_MIPMAP_LINEAR ? GL_NEAREST : GL_LINEAR;
+}
+
+// *_MIPMAP_NEAREST: the level nearest lambda (GL: d = ceil(lambda + 1/2) - 1
+// for lambda > 1/2, else 0), at most the last level q.
+static int nearestLevel(double lambda, int q) {
+  return std::min(q, lambda <= 0.5 ? 0 : int(std::ceil(lambda + 0.5)) - 1);
 }
 
 double Texture::lod(const Deriv& g) const {
@@ -291,10 +326,9 @@ void Texture::legal(double s, double t, double lodLo, double lodHi, double epsN,
     levelValues(f, 0, s, t, epsN, epsL, out);
     return;
   }
-  GLenum within = (f == GL_NEAREST_MIPMAP_NEAREST || f == GL_NEAREST_MIPMAP_LINEAR) ? GL_NEAREST : GL_LINEAR;
+  GLenum within = filterWithinLevel(f);
   if (f == GL_NEAREST_MIPMAP_NEAREST || f == GL_LINEAR_MIPMAP_NEAREST) {
-    auto pick = [q](double l) { return std::min(q, l <= 0.5 ? 0 : int(std::ceil(l + 0.5)) - 1); };
-    for (int d = pick(lo); d <= pick(hi); ++d) levelValues(within, d, s, t, epsN, epsL, out);
+    for (int d = nearestLevel(lo, q); d <= nearestLevel(hi, q); ++d) levelValues(within, d, s, t, epsN, epsL, out);
     return;
   }
   // *_MIPMAP_LINEAR: between floor(lambda) and the next level, weight frac.
@@ -313,9 +347,35 @@ void Texture::legal(double s, double t, double lodLo, double lodHi, double epsN,
   if (hi >= q) levelValues(within, q, s, t, epsN, epsL, out);
 }
 
-Colour Texture::sample(double s, double t, double lambdaBase) const {
-  Boxes b;
-  legal(s, t, lambdaBase, lambdaBase, 0.0, 0.0, &b);
-  return b.front().lo;
+Footprint Texture::footprint(double s, double t, double lambdaBase) const {
+  Footprint f;
+  f.lambda = std::clamp(lambdaBase + double(desc_.lodBias), -1000.0, 1000.0);
+  const int q = levels() - 1;  // the last level (GL: q = min(p, TEXTURE_MAX_LEVEL))
+  const GLenum minF = desc_.minFilter;
+  if (f.lambda <= 0) {  // magnification (GL's c = 0): level 0, mag filter
+    f.magnified = true;
+    f.filter = desc_.magFilter;
+  } else if (minF == GL_NEAREST || minF == GL_LINEAR) {  // minified, no mipmaps: level 0
+    f.filter = minF;
+  } else if (minF == GL_NEAREST_MIPMAP_NEAREST || minF == GL_LINEAR_MIPMAP_NEAREST) {
+    f.filter = filterWithinLevel(minF);
+    f.level0 = f.level1 = nearestLevel(f.lambda, q);
+  } else {  // *_MIPMAP_LINEAR: levels floor(lambda) and the next, weight frac(lambda)
+    f.filter = filterWithinLevel(minF);
+    if (f.lambda >= q) {
+      f.level0 = f.level1 = q;
+    } else {
+      f.level0 = int(std::floor(f.lambda));
+      f.level1 = f.level0 + 1;
+      f.levelWeight = f.lambda - f.level0;
+    }
+  }
+  auto add = [&](int d, double weight) {
+    if (f.filter == GL_NEAREST) addNearest(d, s, t, weight, &f);
+    else addLinear(d, s, t, weight, &f);
+  };
+  add(f.level0, 1.0 - f.levelWeight);
+  if (f.level1 != f.level0) add(f.level1, f.levelWeight);
+  return f;
 }
 }  // namespace ref

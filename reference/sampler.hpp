@@ -51,6 +51,34 @@ struct Deriv {
   double dsdx = 0, dsdy = 0, dtdx = 0, dtdy = 0;
 };
 
+// One texel a filter reads: its mip level, its indices after wrapping (-1
+// or the level's size where the wrap mode gives the border colour), its
+// weight in the filtered value, and its value.
+struct WeightedTexel {
+  int level = 0, i = 0, j = 0;
+  double weight = 0;
+  Colour rgba{};
+};
+
+// What GL's filter does at one coordinate and LOD (GL 4.6 §8.14): which
+// levels it reads, which texels, with which weights.  The filtered value is
+// the weighted sum of the texels, and Texture::sample() is exactly that sum.
+struct Footprint {
+  // lambda = lambda_base + the texture's LOD bias, clamped to
+  // [TEXTURE_MIN_LOD, TEXTURE_MAX_LOD] = [-1000, 1000] (GL's defaults, the
+  // only values a Frame uses): the clamp is on lambda, not on the bias.
+  double lambda = 0;
+  bool magnified = false;      // lambda <= 0: level 0 with the mag filter
+  GLenum filter = GL_NEAREST;  // the filter within a level: GL_NEAREST or GL_LINEAR
+  int level0 = 0, level1 = 0;  // the levels read; they differ only for *_MIPMAP_LINEAR
+  double levelWeight = 0;      // weight of level1 (the fraction of lambda); level0 has 1 - it
+  // NEAREST: one texel; LINEAR: four; *_MIPMAP_LINEAR: both levels' texels,
+  // times (1 - levelWeight) and levelWeight.  The weights sum to 1.
+  std::array<WeightedTexel, 8> texels{};
+  int count = 0;
+  Colour value() const;  // sum of weight * rgba
+};
+
 // How the scale factor rho is allowed to be computed.
 enum class LodModel {
   Exact,    // rho = max(|(du/dx, dv/dx)|, |(du/dy, dv/dy)|), GL's ideal formula
@@ -79,14 +107,20 @@ class Texture {
   void lodRange(const Deriv& g, LodModel m, double* lo, double* hi) const;
   // The same as scale factors rho (texels per pixel): lambda = log2(rho).
   void rhoRange(const Deriv& g, LodModel m, double* lo, double* hi) const;
-  // The full GL filter (min/mag choice, mip selection, bias) at lambda_base.
-  Colour sample(double s, double t, double lambdaBase) const;
+  // The full GL filter (min/mag choice, mip selection, bias) at lambda_base:
+  // the texels it reads and their weights, and their weighted sum.
+  Footprint footprint(double s, double t, double lambdaBase) const;
+  Colour sample(double s, double t, double lambdaBase) const { return footprint(s, t, lambdaBase).value(); }
   // Every value legal for a coordinate within eps texels of (s, t) (eps for
   // NEAREST and LINEAR separately) and a lambda_base in [lodLo, lodHi].
   // Appends boxes to `out`.
   void legal(double s, double t, double lodLo, double lodHi, double epsNearest, double epsLinear, Boxes* out) const;
 
  private:
+  // The texels level d's GL_NEAREST / GL_LINEAR filter reads at (s, t), each
+  // weighted by `weight` times its filter weight, appended to `out`.
+  void addNearest(int d, double s, double t, double weight, Footprint* out) const;
+  void addLinear(int d, double s, double t, double weight, Footprint* out) const;
   void levelValues(GLenum filter, int d, double s, double t, double epsNearest, double epsLinear, Boxes* out) const;
   // Every value a level can give (all its texels, and the border colour
   // where it can be reached): the answer when the jitter spans many texels.
