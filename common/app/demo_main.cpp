@@ -11,6 +11,7 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/sidecar.hpp"
+#include "common/app/inspect_view.hpp"
 #include "common/app/window.hpp"
 
 namespace ts {
@@ -27,7 +28,11 @@ static int renderOffscreen(Scene& scene, Options& opts, const CommonFlags& f, Ba
   co.accumBuffer = scene.wantsAccumBuffer();
   auto ctx = createOffscreenContext(b, co);
   Renderer r(*ctx);
-  Rendered out = renderScene(scene, r, w, h, !f.glListing.empty() || !f.exportC.empty());
+  const bool record = !f.glListing.empty() || !f.exportC.empty();
+  Rendered out = renderScene(scene, r, w, h, record);
+  // --inspect: what the reference computes inside those pixels, beside GL's colour.
+  std::string cards;
+  const std::vector<std::string> inspected = applyInspect(scene.id(), f, r, &out, record, &cards);
   // The program is made before anything is written: a state that cannot be
   // exported leaves no file at all.
   ExportedProgram program;
@@ -55,12 +60,14 @@ static int renderOffscreen(Scene& scene, Options& opts, const CommonFlags& f, Ba
     info.state = opts.state();
     info.measurements = out.measurements;
     info.renderer = gl::rendererString() + " | " + gl::versionString();
+    info.inspect = inspected;
     writeFileAtomic(f.json, sidecarJson(out.frame, info));
   }
   if (!f.quiet) {
     std::printf("%s | %s\n%s", scene.title().c_str(), ctx->describe().c_str(),
                 formatMeasurements(out.measurements).c_str());
   }
+  if (!cards.empty()) std::printf("\n%s", cards.c_str());
   // r goes before ctx: its GL objects with it (RAII).
   return kExitOk;
 }
@@ -92,8 +99,10 @@ int runDemo(const std::string& id, int argc, char** argv) {
       if (b == Backend::Window) throw Error("--png, --gl-listing and --export-c render offscreen: use --backend osmesa, egl or auto");
       if (!f.screenshot.empty() || f.frames)
         throw Error("--screenshot and --frames are for the window, not --png, --gl-listing or --export-c");
+      checkPixels(f.inspect, w, h);  // before anything is rendered or written
       return renderOffscreen(*scene, opts, f, b, w, h);
     }
+    if (f.footprints) throw Error("--footprints draws a PNG: add --png FILE and --inspect X,Y");
     if (!f.json.empty()) throw Error("--json needs --png FILE");
     if (b == Backend::OSMesa || b == Backend::EGL)
       throw Error(std::string("backend ") + backendName(b) + " is offscreen: add --png FILE");

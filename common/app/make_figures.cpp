@@ -18,6 +18,7 @@
 #include "common/app/side_panel.hpp"
 #include "common/gl/context.hpp"
 #include "common/core/error.hpp"
+#include "common/app/inspect_view.hpp"
 #include "common/gl/figure.hpp"
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
@@ -297,8 +298,15 @@ int run(int argc, char** argv) {
     ts::Scene* scene = d.scene.get();
     ts::Options& opts = d.opts;
     opts.resetToDefaults();
-    opts.parse(e.spec.flags);
+    // A figure's flags are the demo's options and, for the inspection
+    // figures, the common --inspect X,Y and --footprints.
+    std::vector<const char*> argv{"make_figures"};
+    for (const std::string& a : e.spec.flags) argv.push_back(a.c_str());
+    ts::CommonFlags common;
+    opts.parse(ts::parseCommonFlags(int(argv.size()), const_cast<char**>(argv.data()), &common));
+    ts::checkPixels(common.inspect, e.spec.width, e.spec.height);
     ts::Rendered got = ts::renderScene(*scene, r, e.spec.width, e.spec.height, true);
+    const std::vector<std::string> inspected = ts::applyInspect(e.demo, common, r, &got, true, nullptr);
     std::string png = out + "/" + e.spec.id + ".png", json = out + "/" + e.spec.id + ".json";
     std::string listing = out + "/" + e.spec.id + ".gl.txt";
     std::vector<std::string> flags = {"--json", json};
@@ -308,6 +316,7 @@ int run(int argc, char** argv) {
     e.claim = claimLine(e.spec, *scene, got.measurements);
     ts::SidecarInfo info{e.spec.id, e.spec.bookNumber, e.spec.caption, e.demo, e.command, opts.state(), got.measurements,
                          ts::gl::rendererString() + " | " + ts::gl::versionString()};
+    info.inspect = inspected;
     ts::writePng(png, got.image);
     ts::writeFileAtomic(json, ts::sidecarJson(got.frame, info));
     ts::writeFileAtomic(listing, ts::glListingFile(got, ts::stateCommand(e.demo, e.spec.width, e.spec.height, e.spec.flags)));

@@ -1,5 +1,7 @@
 #include "common/core/options.hpp"
 
+#include <array>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -296,6 +298,18 @@ void parseSize(const std::string& text, int* w, int* h) {
   *h = H;
 }
 
+std::array<int, 2> parsePixel(const std::string& text, const char* flag) {
+  // "X,Y": two non-negative integers of at most 5 digits (sizes stop at 16384).
+  const size_t comma = text.find(',');
+  auto number = [&](const std::string& v) {
+    if (v.empty() || v.size() > 5 || v.find_first_not_of("0123456789") != std::string::npos)
+      throw Error(std::string(flag) + ": '" + text + "' is not a pixel X,Y (two whole numbers, 0 = left, top)");
+    return std::atoi(v.c_str());
+  };
+  if (comma == std::string::npos) number("");
+  return {number(text.substr(0, comma)), number(text.substr(comma + 1))};
+}
+
 std::vector<std::string> parseCommonFlags(int argc, char** argv, CommonFlags* f) {
   std::vector<std::string> rest;
   for (int i = 1; i < argc; ++i) {
@@ -324,6 +338,8 @@ std::vector<std::string> parseCommonFlags(int argc, char** argv, CommonFlags* f)
     else if (name == "--screenshot") f->screenshot = need();
     else if (name == "--keys") f->keys = need();
     else if (name == "--quiet") noValue(), f->quiet = true;
+    else if (name == "--inspect") f->inspect.push_back(parsePixel(need(), "--inspect"));
+    else if (name == "--footprints") noValue(), f->footprints = true;
     else if (name == "--frames") {
       std::string v = need();
       if (v.empty() || v.size() > 7 || v.find_first_not_of("0123456789") != std::string::npos || std::atoi(v.c_str()) < 1)
@@ -358,6 +374,13 @@ std::string commonFlagsHelp() {
          "  --frames N                         window: close after N frames once measured (tests)\n"
          "  --screenshot FILE                  window: save the last frame to FILE (before the overlay)\n"
          "  --keys STRING                      window: press these keys, one per frame (tests, demos)\n"
-         "  --quiet                            do not print the measurement\n";
+         "  --quiet                            do not print the measurement\n"
+         "  --inspect X,Y                      with --png: print what GL did at pixel (X, Y) (0,0 = top left): its\n"
+         "                                     (s,t,r,q), derivatives, rho, lambda, levels, the texels read and their\n"
+         "                                     weights, the reference colour beside GL's; --json gets an \"inspect\"\n"
+         "                                     list.  May be given several times.\n"
+         "  --footprints                       with --inspect: the PNG shows the picture with those pixels ringed and,\n"
+         "                                     for each, level 0 of its texture around its footprint (preimage,\n"
+         "                                     derivatives, EWA ellipse, the 2^lambda square, the texels read)\n";
 }
 }  // namespace ts

@@ -5,6 +5,7 @@
 // it), a line of --help, and a field of the on-screen state.  So whatever a
 // student sees in a window can be rendered to a PNG with the same flags.
 #pragma once
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -88,7 +89,12 @@ struct CommonFlags {
   std::string screenshot;  // --screenshot FILE: the window's last frame
   std::string keys;        // --keys STRING: typed into the window, one per frame
   bool quiet = false;      // --quiet: no measurement printout
+  std::vector<std::array<int, 2>> inspect;  // --inspect X,Y (repeatable): the pixels to look inside
+  bool footprints = false;  // --footprints: the PNG shows the inspected pixels' footprints on the texture
 };
+
+// Parses "X,Y" (a pixel, 0,0 = top left); throws ts::Error naming `flag`.
+std::array<int, 2> parsePixel(const std::string& text, const char* flag);
 
 // Parses "WxH" into w, h; throws ts::Error unless 1 <= w, h <= 16384.
 void parseSize(const std::string& text, int* w, int* h);

@@ -48,7 +48,8 @@ const char* primName(Prim p) {
 // lists (textures, panels, batches, vertices, labels); everything else on
 // one line, so a student can read the file and diff two of them.
 bool listPerLine(const std::string& key) {
-  return key == "textures" || key == "panels" || key == "batches" || key == "vertices" || key == "labels";
+  return key == "textures" || key == "panels" || key == "batches" || key == "vertices" || key == "labels" ||
+         key == "inspect" || key == "texels";
 }
 bool hasListPerLine(const Json& v) {
   if (v.is_object())
@@ -134,6 +135,10 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
   for (const auto& [k, v] : info.state) d["state"][k] = v;
   d["measurements"] = Json::object();
   for (const Measurement& m : info.measurements) d["measurements"][m.name] = num(m.value);
+  if (!info.inspect.empty()) {
+    d["inspect"] = Json::array();
+    for (const std::string& o : info.inspect) d["inspect"].push_back(Json::parse(o));
+  }
   d["conventions"] =
       "matrices column-major as glLoadMatrixf takes them; viewports in pixels from the top-left of the image; "
       "texture row 0 is t = 0; vertex tex is (s,t,r,q)";

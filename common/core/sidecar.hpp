@@ -16,6 +16,9 @@ struct SidecarInfo {
   std::vector<std::pair<std::string, std::string>> state;
   Measurements measurements;
   std::string renderer;  // GL_RENDERER and GL_VERSION of the context that drew it ("" = not written)
+  // --inspect: one JSON object per pixel looked inside (reference/inspect.hpp's
+  // fields and the PNG's gl_rgba); written as the "inspect" list when given.
+  std::vector<std::string> inspect;
 };
 // Deterministic: fixed key order, floats with 9 significant digits, no
 // renderer strings or times (the file must not change between machines).

@@ -163,6 +163,15 @@ class MipmapPopping final : public ts::Scene {
          640,
          "Far-field RMS error against the supersampled reference: trilinear {far_error[linear_mipmap_linear]} "
          "(over-blur), anisotropic 16x {far_error[anisotropic]}, GL_NEAREST {far_error[nearest]} (aliasing)."},
+        {"inspect_aniso_footprint", "Section VI.1.3 (inside a pixel)",
+         "One far pixel of the slanted plane (GL_LINEAR_MIPMAP_LINEAR), looked inside with --inspect X,Y "
+         "--footprints: on level 0 of the texture, its exact preimage (white) is long and thin; trilinear filtering "
+         "reads a square of side 2^lambda (yellow) from the long side, the texels outlined, and so over-blurs across; "
+         "the EWA ellipse (magenta) is what an anisotropic filter reads instead.",
+         {"--view", "slant", "--filter", "linear-mipmap-linear", "--anisotropy", "16", "--levels", "texture",
+          "--inspect", "760,400", "--footprints"}, 1280, 640,
+         "The footprint is {inspect_anisotropy[1]} times longer than wide; trilinear reads at lambda "
+         "{inspect_lambda[1]} (rho {inspect_rho[1]} texels), blurring the short side."},
     };
   }
 

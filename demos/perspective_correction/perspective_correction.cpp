@@ -42,7 +42,6 @@
 #include "common/core/plot.hpp"
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
-#include "common/core/text.hpp"
 #include "common/core/textures.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/core/user_texture.hpp"
@@ -103,6 +102,15 @@ class PerspectiveCorrection final : public ts::Scene {
          {"--view", "plot", "--tilt", "60", "--distance", "1.5"}, 1024, 560,
          "The screen-linear error grows with the tilt, from {sweep_t00_error_texels} texels facing the eye, where "
          "(d2 - d1)/d1 is already {sweep_t00_d_ratio}, to {sweep_t80_error_texels} at 80 deg."},
+        {"inspect_vi2_footprints", "Figure VI.2 (inside six pixels)",
+         "The plane at 80 degrees, six pixels picked from near to far (--inspect X,Y --footprints); right: each "
+         "one's footprint on level 0 of the texture: the preimage of the pixel square (white), the derivatives' "
+         "parallelogram, the EWA ellipse, the 2^lambda square of its mip level and the texels trilinear reads.",
+         {"--view", "perspective", "--tilt", "80", "--distance", "1.5", "--footprints", "--inspect", "515,185",
+          "--inspect", "515,160", "--inspect", "515,145", "--inspect", "515,133", "--inspect", "515,126", "--inspect",
+          "515,121"}, 1024, 400,
+         "lambda rises from {inspect_lambda[1]} near to {inspect_lambda[6]} far, rho from {inspect_rho[1]} to "
+         "{inspect_rho[6]} texels per pixel."},
     };
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
@@ -117,7 +125,6 @@ class PerspectiveCorrection final : public ts::Scene {
   using Pass = persp::Pass;
   Pass measurePass(ts::Renderer& r, const persp::Setup& s, Variant v, GLenum hint, ts::Image* out = nullptr) const;
   using Result = persp::Result;  // what measure() found: the labels and the plot
-
   int view_ = kBoth, filter_ = 2;
   float tilt_ = 60.0f, distance_ = 1.5f;
   ts::UserTexture picture_;  // --texture FILE
@@ -138,13 +145,7 @@ void PerspectiveCorrection::addSquare(ts::Panel& p, const persp::Setup& s, Varia
   persp::View view = persp::makeView(s, aspect);
   view.mv = camera_.view(view.mv);  // both variants: the affine one projects with these on the CPU
   view.proj = camera_.lens(view.proj);
-  if (camera_.yaw != 0 || camera_.pitch != 0) {
-    // Orbited, a corner can come nearer than the framing's near plane (half
-    // the nearest corner's depth): a wider depth range (no depth test here).
-    const double n = 0.01, far = 1000;
-    view.proj[2][2] = -(far + n) / (far - n);
-    view.proj[3][2] = -2 * far * n / (far - n);
-  }
+  if (camera_.yaw != 0 || camera_.pitch != 0) persp::widenDepthRange(&view.proj);  // orbited: corners come nearer
   // Perspective: model coordinates through GL's projection (w = depth).
   // Affine: the same vertices projected here, sent with w = 1.
   auto position = [&](glm::dvec2 uv) {
@@ -184,7 +185,6 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
   const persp::Setup s = setup();
   const Result* last = measured.detailAs<Result>();
   const bool have = last && last->setup.tiltDeg == s.tiltDeg && last->setup.distance == s.distance;
-
   if (view_ == kPlot) {
     plot::draw(f, persp::plotSpec(s, last), {0, 0, width, height});
     return f;

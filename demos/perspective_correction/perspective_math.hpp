@@ -146,6 +146,15 @@ struct View {
   glm::dmat4 proj{1.0}, mv{1.0};
   std::array<glm::dvec2, 4> screen{};  // the corners in NDC (x/w, y/w)
 };
+// A projection whose depth range runs from 0.01 to 1000: an orbited view
+// can bring a corner nearer than the framing's near plane (half the nearest
+// corner's depth); nothing here is depth-tested.
+inline void widenDepthRange(glm::dmat4* proj) {
+  const double n = 0.01, far = 1000;
+  (*proj)[2][2] = -(far + n) / (far - n);
+  (*proj)[3][2] = -2 * far * n / (far - n);
+}
+
 inline View makeView(const Setup& s, double aspect) {
   View v;
   v.setup = s;

@@ -15,7 +15,9 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 14> kFiguresDrawnFromGlRenders = {
+inline constexpr std::array<const char*, 16> kFiguresDrawnFromGlRenders = {
+    // --footprints: the left panel is the picture GL drew, inspected
+    "inspect_vi2_footprints", "inspect_aniso_footprint",
     "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step",
     // environment_mapping: its object pictures are GL renders with texgen and GLSL
     "env_cube_sphere", "env_compare_torus", "env_latlong_map", "env_cube_map", "env_flat_mirror",
@@ -40,8 +42,8 @@ inline bool tooSlowForSoftpipe(const std::string& id) {
 // them): another rasterizer legally draws them differently, so the fuzzy
 // comparison with the committed (llvmpipe) PNGs applies on llvmpipe only.
 // The per-pixel oracle and the mipmap tests still check them everywhere.
-inline constexpr std::array<const char*, 3> kFiguresOfTheRasterizersFiltering = {
-    "mip_popping_filmstrip", "mip_popping_plot", "mip_anisotropic"};
+inline constexpr std::array<const char*, 4> kFiguresOfTheRasterizersFiltering = {
+    "mip_popping_filmstrip", "mip_popping_plot", "mip_anisotropic", "inspect_aniso_footprint"};
 
 inline bool showsTheRasterizersFiltering(const std::string& id) {
   return std::any_of(kFiguresOfTheRasterizersFiltering.begin(), kFiguresOfTheRasterizersFiltering.end(),

@@ -1,0 +1,61 @@
+// common/app/inspect_view.hpp — looking inside pixels of a drawn picture.
+//
+// The CPU reference's inspector (reference/inspect.hpp) says, for one pixel
+// of a Frame, what covers it, the interpolated (s,t,r,q), the derivatives,
+// rho, lambda, the mip levels and the texels the filter reads with their
+// weights.  Here it meets the picture GL drew:
+//   --inspect X,Y       the card printed, the "inspect" list in the sidecar
+//                       (inspectPixels, inspectCard, inspectJson);
+//   --footprints        the PNG becomes the footprint figure: the picture
+//                       with the picked pixels ringed and numbered, and for
+//                       each one the texture around its footprint
+//                       (footprintFrame);
+// and the window's inspect mode (key i) shows the same card for the pixel
+// under a click.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "common/core/frame.hpp"
+#include "common/core/image.hpp"
+#include "common/core/options.hpp"
+#include "reference/inspect.hpp"
+
+namespace ts {
+class Renderer;
+struct Rendered;
+
+struct Picked {
+  ref::Inspection in;
+  Rgba gl{0, 0, 0, 0};  // the pixel GL drew (the PNG's)
+};
+
+// Refuses a pixel outside w x h with one line (exit status 2), before
+// anything is rendered or written.
+void checkPixels(const std::vector<std::array<int, 2>>& pixels, int w, int h);
+// Each pixel of `frame` inspected, beside the pixel of `drawn` (GL's picture of it).
+std::vector<Picked> inspectPixels(const Frame& frame, const Image& drawn, const std::vector<std::array<int, 2>>& pixels);
+// The card: the reference's (ref::formatInspection) and GL's colour beside
+// the reference's, with their difference in 8-bit steps.
+std::string inspectCard(const Picked& p);
+// The sidecar's object: ref::inspectionJson plus "gl_rgba" (0..1).
+std::string inspectJson(const Picked& p);
+
+// The footprint figure, w x h: left, the picture with each picked pixel
+// ringed and numbered; right, one cell per textured pick: level 0 of its
+// texture around the footprint, texel by texel (GL_NEAREST), with the
+// preimage of the pixel square (white), the parallelogram of the derivatives
+// (cyan), the EWA ellipse, the image of a one-pixel circle (magenta), the
+// square of side 2^lambda texels a mip level's texel covers (yellow) and the
+// texels the filter reads (orange), under "n: lambda = ..., rho = ...".
+Frame footprintFrame(const std::string& demo, const Frame& picture, const Image& drawn, const std::vector<Picked>& picks,
+                     int w, int h);
+
+// --inspect and --footprints applied to a rendered state (renderScene's
+// result): checks the pixels, inspects them, and with --footprints draws
+// the footprint figure in place of the picture (its calls recorded again
+// when `record`).  Returns the sidecar's objects; the cards go to `cards`.
+std::vector<std::string> applyInspect(const std::string& demo, const CommonFlags& f, Renderer& r, Rendered* got,
+                                      bool record, std::string* cards);
+}  // namespace ts
