@@ -109,7 +109,7 @@ void addCell(Frame& f, const Frame& picture, const ref::Inspection& in, int numb
     std::vector<glm::vec2> grid;
     for (double u = std::ceil(cu - halfU); u <= cu + halfU; ++u) grid.push_back({float(u), y0}), grid.push_back({float(u), y1});
     for (double v = std::ceil(cv - halfV); v <= cv + halfV; ++v) grid.push_back({x0, float(v)}), grid.push_back({x1, float(v)});
-    p.batches.push_back(lineSegments(grid, glm::vec4(0.45f, 0.45f, 0.5f, 0.6f), 1.0f, "texel_grid"));
+    p.batches.push_back(lineSegments(grid, glm::vec4(0.42f, 0.42f, 0.47f, 1.0f), 1.0f, "texel_grid"));
   }
   auto loop = [&](const std::vector<glm::vec2>& pts, glm::vec4 colour, float width, const char* role) {
     p.batches.push_back(lineLoop(pts, colour, width, role));

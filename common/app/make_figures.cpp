@@ -300,10 +300,8 @@ int run(int argc, char** argv) {
     opts.resetToDefaults();
     // A figure's flags are the demo's options and, for the inspection
     // figures, the common --inspect X,Y and --footprints.
-    std::vector<const char*> argv{"make_figures"};
-    for (const std::string& a : e.spec.flags) argv.push_back(a.c_str());
     ts::CommonFlags common;
-    opts.parse(ts::parseCommonFlags(int(argv.size()), const_cast<char**>(argv.data()), &common));
+    opts.parse(ts::sceneFlags(e.spec.flags, &common));
     ts::checkPixels(common.inspect, e.spec.width, e.spec.height);
     ts::Rendered got = ts::renderScene(*scene, r, e.spec.width, e.spec.height, true);
     const std::vector<std::string> inspected = ts::applyInspect(e.demo, common, r, &got, true, nullptr);

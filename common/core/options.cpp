@@ -363,6 +363,13 @@ std::vector<std::string> parseCommonFlags(int argc, char** argv, CommonFlags* f)
   return rest;
 }
 
+std::vector<std::string> sceneFlags(const std::vector<std::string>& flags, CommonFlags* common) {
+  std::vector<const char*> argv{"figure"};
+  for (const std::string& a : flags) argv.push_back(a.c_str());
+  CommonFlags ignored;
+  return parseCommonFlags(int(argv.size()), const_cast<char**>(argv.data()), common ? common : &ignored);
+}
+
 std::string commonFlagsHelp() {
   return "  --help                             this text\n"
          "  --png FILE                         render offscreen into FILE (no window) and print the measurement\n"

@@ -93,6 +93,10 @@ struct CommonFlags {
   bool footprints = false;  // --footprints: the PNG shows the inspected pixels' footprints on the texture
 };
 
+// A figure's flags (FigureSpec::flags) without the common flags among them
+// (--inspect X,Y, --footprints: how the figure is drawn, not the scene's
+// state), which go to `common` when given.
+std::vector<std::string> sceneFlags(const std::vector<std::string>& flags, CommonFlags* common = nullptr);
 // Parses "X,Y" (a pixel, 0,0 = top left); throws ts::Error naming `flag`.
 std::array<int, 2> parsePixel(const std::string& text, const char* flag);
 

@@ -584,7 +584,7 @@ TEST(MipmapPopping, FiguresAreRegistered) {
   for (const char* id : {"mip_popping_filmstrip", "mip_popping_plot", "mip_anisotropic"}) {
     ASSERT_TRUE(byId.count(id)) << id;
     EXPECT_EQ(byId[id].bookNumber, "Section VI.1.3");
-    Demo d("mipmap_popping", byId[id].flags);  // throws on a bad flag
+    Demo d("mipmap_popping", ts::sceneFlags(byId[id].flags));  // throws on a bad flag
   }
 }
 

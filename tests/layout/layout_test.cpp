@@ -55,7 +55,7 @@ std::vector<std::vector<std::string>> states(const std::string& id) {
     if (it.name == "view" && it.kind == ts::Options::Item::Enum)
       for (const auto& c : it.choices)
         if (c != "live") out.push_back({"--view", c});  // live: drawn every frame, at the window's size
-  for (const auto& f : d.scene->figures()) out.push_back(f.flags);
+  for (const auto& f : d.scene->figures()) out.push_back(ts::sceneFlags(f.flags));
   for (const auto& e : extra(id)) out.push_back(e);
   std::set<std::vector<std::string>> seen;
   std::vector<std::vector<std::string>> unique;

@@ -72,7 +72,7 @@ const Renders& rendersOf(const FigureCase& c) {
   if (!scene) throw std::runtime_error("no scene " + c.scene);
   ts::Options o;
   scene->addOptions(o);
-  o.parse(c.spec.flags);
+  o.parse(ts::sceneFlags(c.spec.flags));  // a footprint figure: its picture, inspected
   Renders r;
   // As the figure tool draws it: measure, then draw with labels; then once
   // more without labels.
