@@ -21,6 +21,10 @@
 #include "common/core/scene.hpp"
 #include "common/core/sidecar.hpp"
 #include "oracle_support.hpp"
+#include <random>
+
+#include "common/app/inspect_view.hpp"
+#include "reference/inspect.hpp"
 #include "sidecar_exemptions.hpp"
 #include "reference/sidecar_reader.hpp"
 
@@ -72,11 +76,13 @@ const Renders& rendersOf(const FigureCase& c) {
   if (!scene) throw std::runtime_error("no scene " + c.scene);
   ts::Options o;
   scene->addOptions(o);
-  o.parse(ts::sceneFlags(c.spec.flags));  // a footprint figure: its picture, inspected
+  ts::CommonFlags common;  // a footprint figure's --inspect and --footprints
+  o.parse(ts::sceneFlags(c.spec.flags, &common));
   Renders r;
   // As the figure tool draws it: measure, then draw with labels; then once
   // more without labels.
   r.withLabels = ts::renderScene(*scene, ts::test::renderer(), c.spec.width, c.spec.height);
+  ts::applyInspect(c.scene, common, ts::test::renderer(), &r.withLabels, false, nullptr);  // as make_figures does
   r.plain = oracle::render(r.withLabels.frame, false);
   ref::RenderOptions ro;
   ro.labels = false;
@@ -113,6 +119,31 @@ TEST_P(Figure, GLRenderIsALegalResultWithoutLabels) {
   // hold unmodelled parts — other GLSL programs, anisotropic filtering —
   // but most of it must be checked).
   EXPECT_GT(r.checked, r.pixels / 2) << r.summary();
+}
+
+// Issue 24: the pixel inspector (--inspect) tells the reference's colour at
+// any pixel without drawing the frame.  At 50 random pixels of every figure
+// it must be the reference image's pixel (within an 8-bit step: the image
+// rounds once more), and GL's pixel there is legal for that reference (the
+// test above): so reference_rgba lies within the oracle's tolerance of
+// gl_rgba.  Fixed-function figures only (a shader's lookup is not modelled).
+TEST_P(Figure, InspectorAgreesWithTheReferenceAtRandomPixels) {
+  const FigureCase& c = GetParam();
+  ref::RenderOptions ro;
+  ro.labels = false;
+  ref::Inspector inspector(rendered_->frame, ro);
+  std::mt19937 rng(12345);
+  int compared = 0, textured = 0;
+  for (int k = 0; k < 50; ++k) {
+    const int x = int(rng() % unsigned(plain_->width)), y = int(rng() % unsigned(plain_->height));
+    const ref::Inspection in = inspector.at(x, y);
+    if (in.program) continue;
+    const ts::Rgba want = reference_->image().at(x, y), got = ref::toRgba(in.pixelRgba);
+    EXPECT_LE(std::abs(int(got.r) - want.r) + std::abs(int(got.g) - want.g) + std::abs(int(got.b) - want.b), 3)
+        << c.spec.id << " pixel " << x << "," << y << "\n" << ref::formatInspection(in);
+    ++compared, textured += in.textured;
+  }
+  std::printf("[inspect] %s: %d of 50 random pixels compared (%d textured)\n", c.spec.id.c_str(), compared, textured);
 }
 
 TEST_P(Figure, GLRenderIsALegalResultWithLabelsExempt) {
