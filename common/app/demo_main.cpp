@@ -89,6 +89,7 @@ int runDemo(const std::string& id, int argc, char** argv) {
                   id.c_str(), opts.helpText().c_str());
       std::printf("\nwindow keys: %s  h: overlay on/off  l: the OpenGL calls beside the picture\n"
                   "  ?/F1: help card  F12: save PNG + sidecar and print the command  Backspace: reset every option\n"
+                  "  i (I where the demo takes i): inspect mode, click a pixel: its loupe and what happens inside it\n"
                   "  =: as +  arrows: turn/tilt where the demo has them  esc/q: quit\n", opts.keysText().c_str());
       return kExitOk;
     }
@@ -106,6 +107,7 @@ int runDemo(const std::string& id, int argc, char** argv) {
     if (!f.json.empty()) throw Error("--json needs --png FILE");
     if (b == Backend::OSMesa || b == Backend::EGL)
       throw Error(std::string("backend ") + backendName(b) + " is offscreen: add --png FILE");
+    checkPixels(f.inspect, w, h);  // --inspect X,Y in the window: opens with it picked
     // A screenshot that cannot be written is said before the window opens.
     if (!f.screenshot.empty()) checkWritable(f.screenshot);
     return runWindow(*scene, opts, f, w, h);

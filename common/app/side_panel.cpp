@@ -49,7 +49,7 @@ std::string number(double v) {
 }  // namespace
 
 void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& m, const PanelStatus& status, int x,
-                   int w, int h) {
+                   int w, int h, const std::function<void()>& extra) {
   ImGui::SetNextWindowPos(ImVec2(float(x), 0.0f), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(float(w), float(h)), ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(1.0f);  // beside the figure: nothing shows through
@@ -111,6 +111,7 @@ void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& 
       if (!x.meaning.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", x.meaning.c_str());
     }
   }
+  if (extra) extra();
   ImGui::End();
 }
 }  // namespace ts

@@ -7,6 +7,7 @@
 // panel, then the GL pane (key `l`).  The figure is built at the width
 // left over, so nothing covers it.
 #pragma once
+#include <functional>
 #include <string>
 
 #include "common/core/options.hpp"
@@ -40,6 +41,8 @@ WindowSplit splitWindow(int windowWidth, bool panelOpen, bool paneOpen);
 std::vector<const Measurement*> claimed(const Scene& scene, const Measurements& m);
 
 // The panel as a Dear ImGui window at (x, 0), w x h pixels.
+// `extra` (when given) draws more inside the panel, after the measurements
+// (the inspect mode's loupe and card).
 void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& m, const PanelStatus& status, int x,
-                   int w, int h);
+                   int w, int h, const std::function<void()>& extra = nullptr);
 }  // namespace ts

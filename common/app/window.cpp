@@ -21,6 +21,7 @@
 #include "common/gl/gl.hpp"
 #include "common/gl/figure.hpp"
 #include "common/app/gl_pane.hpp"
+#include "common/app/inspect_mode.hpp"
 #include "common/app/measure_worker.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/app/side_panel.hpp"
@@ -76,11 +77,18 @@ struct Input {
   // light1-el, degrees, where a demo has them: bump_mapping).
   bool lightDrag = false;
   double lightX = 0, lightY = 0;
+  // A left press and release in (nearly) the same place: a click, which the
+  // inspect mode takes as a pick.
+  bool clicked = false;
+  double pressX = 0, pressY = 0, clickX = 0, clickY = 0;
   std::vector<std::string> dropped;
 };
 
 // The mouse handlers, shared by GLFW's callbacks and the test hook below.
 void mouseButton(Input* in, bool press, double x, double y) {
+  if (press) in->pressX = x, in->pressY = y;
+  else if (in->dragging && !in->lightDrag && std::abs(x - in->pressX) + std::abs(y - in->pressY) <= 2)
+    in->clicked = true, in->clickX = x, in->clickY = y;
   in->dragging = press;
   in->lastX = x, in->lastY = y;
 }
@@ -174,7 +182,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
 
 // F12: the window's picture as PNG + sidecar under a name not yet taken
 // (<demo>-<n>.png in the working folder), and the command that remakes it.
-void saveState(Scene& scene, const Options& opts, const Frame& f, const Image& window) {
+void saveState(Scene& scene, const Options& opts, const Frame& f, const Image& window, const std::vector<std::string>& extra) {
   std::string base;
   for (int n = 1; n < 10000; ++n) {
     base = scene.id() + "-" + std::to_string(n);
@@ -186,6 +194,7 @@ void saveState(Scene& scene, const Options& opts, const Frame& f, const Image& w
     for (int x = 0; x < f.width; ++x) picture.set(x, y, window.at(x, y));
   std::vector<std::string> flags = {"--json", base + ".json"};
   for (const std::string& s : opts.stateFlags()) flags.push_back(s);
+  for (const std::string& s : extra) flags.push_back(s);  // the inspect mode's pick
   SidecarInfo info;
   info.demo = scene.id();
   info.figureId = base;
@@ -200,7 +209,7 @@ void saveState(Scene& scene, const Options& opts, const Frame& f, const Image& w
 }
 
 // The help card (? or F1): the figure's claim, what to look for, every key.
-void drawHelp(Scene& scene, const Options& opts, int w, int h, bool* open) {
+void drawHelp(Scene& scene, const Options& opts, int w, int h, bool* open, char inspectKey) {
   float cw = std::min(float(w) - 40.0f, 720.0f), ch = std::min(float(h) - 40.0f, 560.0f);
   ImGui::SetNextWindowPos(ImVec2((float(w) - cw) / 2, (float(h) - ch) / 2), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(cw, ch), ImGuiCond_Always);
@@ -226,6 +235,10 @@ void drawHelp(Scene& scene, const Options& opts, int w, int h, bool* open) {
                      "option, a left drag orbits and the wheel zooms (3D views: --yaw, --pitch, --zoom), a picture file dropped on "
                      "the window is mapped (--texture), F12 saves the picture and its sidecar and prints the command that remakes them, l shows "
                      "the OpenGL calls beside the picture, h hides the side panel, ? or F1 this card, Esc or q quits.");
+  ImGui::TextWrapped("%c inspects a pixel: click one of the figure, and the side panel shows it magnified and what happens "
+                     "inside it: (s,t,r,q), the derivatives, rho, lambda, the mip levels, the texels read and their weights, "
+                     "the reference's colour beside GL's (--inspect X,Y does it from the command line).",
+                     inspectKey);
   if (opts.has("light1-az") && opts.has("light1-el"))
     ImGui::TextWrapped("A right drag moves light 1 (--light1-az left and right, --light1-el up and down).");
   ImGui::End();
@@ -416,6 +429,7 @@ class FrameLoop {
       }
     }
     input.dropped.clear();
+    if (input.clicked) inspect.click(input.clickX, input.clickY, split.figureW, ctx.height()), input.clicked = false;
   }
 
   // One synthesised or typed key per frame, through the same handler.
@@ -438,6 +452,7 @@ class FrameLoop {
     else if (k == '?' || k == kKeyHelp) input.help = !input.help;
     else if (k == kKeySave) savePending = true;
     else if (k == 'l') pane.visible = !pane.visible, record = pane.visible;
+    else if (k == inspect.key()) inspect.toggle();
     else if (k == kKeyReset) opts.resetToDefaults(), dirty = true, record = pane.visible, keyChanged();
     else if (opts.handleKey(k)) dirty = true, record = pane.visible, keyChanged();
   }
@@ -542,7 +557,19 @@ class FrameLoop {
   // F12 while measuring saves when the numbers are in: the picture, its
   // sidecar and the command that remakes them must agree.
   void saveIfAsked(const Frame& f) {
-    if (savePending && !measuring) saveState(scene, opts, f, ctx.readPixels()), savePending = false;
+    if (!savePending || measuring) return;
+    std::vector<std::string> pick;  // the inspect mode's pick goes into the command
+    if (!inspect.flag().empty()) pick = {"--inspect", inspect.flag().substr(11)};
+    saveState(scene, opts, f, ctx.readPixels(), pick), savePending = false;
+  }
+
+  // The inspect mode's card, again when the pick, the state or its numbers
+  // changed (read from the figure just drawn, before the overlay).
+  void inspectPixel(const Frame& f) {
+    const std::string state = opts.stateText() + "|" + std::to_string(f.width) + "x" + std::to_string(f.height) + "|" +
+                              std::to_string(m.size()) + (measuring ? "|measuring" : "");
+    inspect.update(renderer, f, state != inspectedState);
+    inspectedState = state;
   }
 
   // --frames N (tests): the last frame shows the measurement of the last
@@ -585,9 +612,10 @@ class FrameLoop {
       status.measuring = measuring;
       status.progress = measuring ? worker->progress() : 0.0;
       status.stale = measuring && !m.empty();
-      drawSidePanel(scene, opts, m, status, split.panelX, split.panelW, ctx.height());
+      drawSidePanel(scene, opts, m, status, split.panelX, split.panelW, ctx.height(),
+                    [&] { inspect.drawPanel(float(split.panelW)); });
     }
-    if (input.help) drawHelp(scene, opts, ctx.width(), ctx.height(), &input.help);
+    if (input.help) drawHelp(scene, opts, ctx.width(), ctx.height(), &input.help, inspect.key());
     if (imgui) {
       ImGui::Render();
       drawImGui(ImGui::GetDrawData(), ctx.width(), ctx.height());
@@ -627,6 +655,9 @@ class FrameLoop {
   test_hooks::KeyLog testLog;  // TS_TEST_FRAME_LOG, TS_TEST_KEY_WHEN
   std::vector<std::pair<int, int>> resizes = test_hooks::resizes();
   const bool resizing = !resizes.empty();
+  // The inspect mode (key i): a clicked pixel's loupe and card.
+  InspectMode inspect{opts, flags};
+  std::string inspectedState;  // the state and measurement the card is of
   // The GL pane.
   GlPane pane;
   bool record = false, resultIn = false;  // the GL pane needs a new recording (of a new measurement)
@@ -686,6 +717,7 @@ int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, 
       loop.collectMeasurement();         // the worker's numbers, once in
       Frame f = loop.drawPicture();      // the figure (its GL calls recorded for the pane when needed)
       loop.saveIfAsked(f);               // F12
+      loop.inspectPixel(f);              // key i: the clicked pixel's loupe and card
       bool last = loop.isLastFrame();    // --frames N reached (TS_TEST_RESIZE: resize and go on)
       loop.takeScreenshot(last, false);  // --screenshot of the figure alone ...
       loop.drawOverlay();                // side panel, GL pane, help card

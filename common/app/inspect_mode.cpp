@@ -1,0 +1,116 @@
+// common/app/inspect_mode.cpp — see inspect_mode.hpp.
+#include "common/app/inspect_mode.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <vector>
+
+#include "common/app/inspect_view.hpp"
+#include "common/gl/render.hpp"
+
+namespace ts {
+namespace {
+constexpr int kLoupe = 32;  // pixels a side around the pick
+// The loupe's texture, owned by the renderer: deleted while its context is current.
+struct Loupe : Renderer::Attachment {
+  explicit Loupe(Renderer&) { glGenTextures(1, &id); }
+  ~Loupe() override { glDeleteTextures(1, &id); }
+  GLuint id = 0;
+};
+}
+
+InspectMode::InspectMode(const Options& opts, const CommonFlags& flags) {
+  for (const auto& it : opts.items())
+    if (it.key == 'i' || it.keyDown == 'i') key_ = 'I';
+  if (!flags.inspect.empty()) {  // --inspect X,Y: open with it picked
+    active_ = picked_ = stale_ = true;
+    x_ = flags.inspect.front()[0], y_ = flags.inspect.front()[1];
+  }
+}
+
+void InspectMode::toggle() {
+  active_ = !active_;
+  std::printf("inspect: %s\n", active_ ? "on (click a pixel of the figure)" : "off");
+  std::fflush(stdout);
+}
+
+void InspectMode::click(double x, double y, int figureW, int height) {
+  if (!active_ || x < 0 || y < 0 || x >= figureW || y >= height) return;
+  x_ = int(x), y_ = int(y);
+  picked_ = stale_ = true;
+}
+
+void InspectMode::update(Renderer& r, const Frame& f, bool changed) {
+  if (!active_ || !picked_ || (!stale_ && !changed)) return;
+  stale_ = false;
+  if (x_ >= f.width || y_ >= f.height) {  // the figure shrank under the pick
+    card_ = "the picked pixel " + std::to_string(x_) + "," + std::to_string(y_) + " is outside the figure now";
+    return;
+  }
+  // GL's pixels around the pick, from the back buffer the figure was just
+  // drawn into, in one read of the part inside the figure (GL's rows run
+  // bottom-up; the window's y runs down).
+  Image around(kLoupe, kLoupe, {0, 0, 0, 255});
+  const int left = x_ - kLoupe / 2, top = y_ - kLoupe / 2;
+  const int rx0 = std::max(0, left), ry0 = std::max(0, top);
+  const int rx1 = std::min(f.width, left + kLoupe), ry1 = std::min(f.height, top + kLoupe);
+  std::vector<uint8_t> rgba(size_t(rx1 - rx0) * size_t(ry1 - ry0) * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(rx0, f.height - ry1, rx1 - rx0, ry1 - ry0, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  for (int y = ry0; y < ry1; ++y)
+    for (int x = rx0; x < rx1; ++x) {
+      const uint8_t* p = &rgba[(size_t(ry1 - 1 - y) * size_t(rx1 - rx0) + size_t(x - rx0)) * 4];
+      around.set(x - left, y - top, {p[0], p[1], p[2], 255});
+    }
+  const Rgba gl = around.at(kLoupe / 2, kLoupe / 2);
+  Image frameImage(f.width, f.height);  // only the picked pixel is read from it
+  frameImage.set(x_, y_, gl);
+  const Picked p = inspectPixels(f, frameImage, {{x_, y_}}).front();
+  card_ = inspectCard(p);
+  std::printf("inspect: pixel %d,%d\n%s", x_, y_, card_.c_str());
+  std::fflush(stdout);
+  // The loupe's texture: the region, row 0 at the top as ImGui draws it.
+  loupe_ = r.attachment<Loupe>().id;
+  GLint prev = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &prev);
+  glBindTexture(GL_TEXTURE_2D, loupe_);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kLoupe, kLoupe, 0, GL_RGBA, GL_UNSIGNED_BYTE, around.pixels.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  glBindTexture(GL_TEXTURE_2D, GLuint(prev));
+}
+
+void InspectMode::drawPanel(float width) {
+  if (!active_) return;
+  ImGui::Separator();
+  ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "Inside a pixel (%c: off)", key_);
+  if (!picked_ || card_.empty()) {
+    ImGui::TextWrapped("Click a pixel of the figure: its footprint in the texture, lambda, the texels read and their "
+                       "weights, the colour GL drew beside the reference's.");
+    return;
+  }
+  if (loupe_) {  // the loupe: 32 x 32 pixels, the grid, the pick outlined
+    const float side = std::min(width - 16.0f, 192.0f), cell = side / kLoupe;
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(loupe_)), ImVec2(side, side));
+    ImDrawList* d = ImGui::GetWindowDrawList();
+    for (int k = 0; k <= kLoupe; ++k) {
+      d->AddLine(ImVec2(at.x + k * cell, at.y), ImVec2(at.x + k * cell, at.y + side), IM_COL32(0, 0, 0, 90));
+      d->AddLine(ImVec2(at.x, at.y + k * cell), ImVec2(at.x + side, at.y + k * cell), IM_COL32(0, 0, 0, 90));
+    }
+    const ImVec2 c(at.x + (kLoupe / 2) * cell, at.y + (kLoupe / 2) * cell);
+    d->AddRect(c, ImVec2(c.x + cell, c.y + cell), IM_COL32(255, 210, 60, 255), 0.0f, 0, 2.0f);
+  }
+  ImGui::TextUnformatted(card_.c_str());
+}
+
+std::string InspectMode::flag() const {
+  return picked_ ? " --inspect " + std::to_string(x_) + "," + std::to_string(y_) : "";
+}
+}  // namespace ts
