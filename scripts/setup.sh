@@ -13,6 +13,7 @@ packages=(
   nlohmann-json3-dev                     # JSON: the sidecars are written and read with it
   googletest libgtest-dev libbenchmark-dev
   xvfb xauth                             # window tests under a virtual X server
+  xdotool imagemagick                    # window tests: real X key events, and the screen read back (import)
   clang libclang-rt-14-dev               # libFuzzer and its sanitizer runtimes (fuzz preset)
   valgrind zlib1g-dev                    # memcheck over a figure run; zlib for the corpus generator
 )

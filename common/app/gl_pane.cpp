@@ -43,9 +43,13 @@ void GlPane::record(Renderer& r, const Frame& f, double now, bool print, bool re
     std::printf("gl pane: %zu lines, %d changed by the last key\n", lines_.size(), changed);
     std::fflush(stdout);
   }
-  if (firstChanged_ >= 0 && !markedSinceKey_) {  // the marks appear: they hold from now
+  // The marks appear: they hold from now, scrolled into view.  The picture
+  // with the key's numbers may mark other lines than the one before it
+  // (quad_distortion d: a glViewport near the top, then vertices 200 lines
+  // down), so that recording scrolls to its first marked line again.
+  if (firstChanged_ >= 0 && (!markedSinceKey_ || result)) {
+    if (!markedSinceKey_) changedAt_ = now;
     markedSinceKey_ = true;
-    changedAt_ = now;
     scroll_ = true;
   }
 }
