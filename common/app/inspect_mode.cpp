@@ -88,11 +88,11 @@ void InspectMode::update(Renderer& r, const Frame& f, bool changed) {
 
 void InspectMode::drawPanel(float width) {
   if (!active_) return;
-  ImGui::Separator();
   ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "Inside a pixel (%c: off)", key_);
   if (!picked_ || card_.empty()) {
     ImGui::TextWrapped("Click a pixel of the figure: its footprint in the texture, lambda, the texels read and their "
                        "weights, the colour GL drew beside the reference's.");
+    ImGui::Separator();
     return;
   }
   if (loupe_) {  // the loupe: 32 x 32 pixels, the grid, the pick outlined
@@ -107,7 +107,11 @@ void InspectMode::drawPanel(float width) {
     const ImVec2 c(at.x + (kLoupe / 2) * cell, at.y + (kLoupe / 2) * cell);
     d->AddRect(c, ImVec2(c.x + cell, c.y + cell), IM_COL32(255, 210, 60, 255), 0.0f, 0, 2.0f);
   }
-  ImGui::TextUnformatted(card_.c_str());
+  ImGui::TextWrapped("%s", card_.c_str());
+  ImGui::Separator();
+  // A ring round the pick on the figure (around it, not over it).
+  ImGui::GetForegroundDrawList()->AddRect(ImVec2(float(x_) - 4, float(y_) - 4), ImVec2(float(x_) + 5, float(y_) + 5),
+                                          IM_COL32(255, 210, 60, 255), 0.0f, 0, 2.0f);
 }
 
 std::string InspectMode::flag() const {

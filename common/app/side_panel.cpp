@@ -59,6 +59,7 @@ void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& 
   const ImVec4 gold(1.0f, 0.85f, 0.35f, 1.0f), dim(0.65f, 0.65f, 0.7f, 1.0f), stale(0.6f, 0.6f, 0.6f, 1.0f);
   ImGui::TextWrapped("%s", scene.title().c_str());
   ImGui::Separator();
+  if (extra) extra();  // the inspect mode, when on: first, where the student looks
   // The claim: its numbers large, each with what it means.
   if (status.measuring)
     ImGui::TextColored(gold, "measuring... %.0f%%", 100.0 * std::clamp(status.progress, 0.0, 1.0));
@@ -111,7 +112,6 @@ void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& 
       if (!x.meaning.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", x.meaning.c_str());
     }
   }
-  if (extra) extra();
   ImGui::End();
 }
 }  // namespace ts

@@ -41,8 +41,8 @@ WindowSplit splitWindow(int windowWidth, bool panelOpen, bool paneOpen);
 std::vector<const Measurement*> claimed(const Scene& scene, const Measurements& m);
 
 // The panel as a Dear ImGui window at (x, 0), w x h pixels.
-// `extra` (when given) draws more inside the panel, after the measurements
-// (the inspect mode's loupe and card).
+// `extra` (when given) draws more inside the panel, under its title (the
+// inspect mode's loupe and card).
 void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& m, const PanelStatus& status, int x,
                    int w, int h, const std::function<void()>& extra = nullptr);
 }  // namespace ts
