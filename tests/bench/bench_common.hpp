@@ -41,7 +41,7 @@ inline std::vector<Figure> registeredFigures() {
 struct SceneState {
   explicit SceneState(const Figure& f) : scene(makeScene(f.demo)) {
     scene->addOptions(opts);
-    opts.parse(f.spec.flags);
+    opts.parse(ts::sceneFlags(f.spec.flags));  // a footprint figure: the picture it inspects
   }
   SceneState(const SceneState&) = delete;
   SceneState& operator=(const SceneState&) = delete;
