@@ -33,6 +33,18 @@
 //                                 marked lines in the pane 2 s after the key,
 //                                 across its measurement's re-record, none
 //                                 before it or 6 s after (issue 24).
+//   <id>.inspect_mode_clicks_a_pixel   at --size 640x480 and 1280x720, real X
+//                                 events (xdotool): the inspect key (i, or I
+//                                 where an option takes i), a click on the
+//                                 textured pixel nearest the figure's centre
+//                                 (by the reference, or on the screen for a
+//                                 picture made when measuring): the card
+//                                 names that pixel, has GL's and the
+//                                 reference's colours
+//                                 and a finite lambda where it has one; F12's
+//                                 command carries --inspect X,Y and, run with
+//                                 --png, its card names the same panel and
+//                                 batch; q ends the demo with 0 (issue 24).
 //   <id>.resize_sequence          the window resized to 640x480, 700x1000 and
 //                                 1280x720 in turn: at each size the figure
 //                                 is the --png render at its new size.
@@ -87,6 +99,7 @@
 #include "common/core/image.hpp"
 #include "common/core/options.hpp"
 #include "common/core/scene.hpp"
+#include "reference/inspect.hpp"
 
 #ifndef TS_BIN_DIR
 #define TS_BIN_DIR "build/bin"
@@ -193,6 +206,13 @@ std::string readFile(const std::string& p) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+// `p` from the root when it is relative (to the working folder).
+std::string absolute(const std::string& p) {
+  if (p.empty() || p[0] == '/') return p;
+  char cwd[4096];
+  return getcwd(cwd, sizeof cwd) ? std::string(cwd) + "/" + p : p;
 }
 
 std::string quote(const std::string& a) {
@@ -1167,7 +1187,11 @@ struct MarkLook {
 // A demo under its own Xvfb, driven by xdotool.
 class XDemo {
  public:
-  XDemo(const std::string& id, const std::string& dir) : id_(id), dir_(dir), state_(id) {}
+  // `screen`: xvfb-run's -s; `args`: the demo's own arguments (none: as a
+  // student starts it).  The demo runs in `dir` (F12 writes there).
+  XDemo(const std::string& id, const std::string& dir, const char* screen = kMarksScreen,
+        std::vector<std::string> args = {})
+      : id_(id), dir_(absolute(dir)), screen_(screen), args_(std::move(args)), state_(id) {}
   ~XDemo() {
     if (demo_.pid > 0 && !demo_.done) {  // a failed case: its Xvfb and demo go
       kill(-demo_.pid, SIGKILL);
@@ -1188,10 +1212,11 @@ class XDemo {
     std::remove(logPath_.c_str());
     // The shell xvfb-run starts writes the server's DISPLAY and XAUTHORITY
     // (for xdotool and import) and its pid, then becomes the demo.
-    demo_.argv = {"xvfb-run", "-a", "-s", kMarksScreen, "sh", "-c",
+    demo_.argv = {"bash", "-c", "cd \"$0\" && exec \"$@\"", dir_, "xvfb-run", "-a", "-s", screen_, "sh", "-c",
                   "printf '%s\\n%s\\n%s\\n' \"$DISPLAY\" \"$XAUTHORITY\" \"$$\" > \"$0.part\" && mv \"$0.part\" \"$0\" && "
                   "exec \"$@\"",
-                  envFile, "env", "TS_TEST_FRAME_LOG=" + logPath_, binDir() + "/" + id_};
+                  envFile, "env", "TS_TEST_FRAME_LOG=" + logPath_, absolute(binDir()) + "/" + id_};
+    demo_.argv.insert(demo_.argv.end(), args_.begin(), args_.end());
     demo_.outPath = dir_ + "/window.stdout";
     demo_.errPath = dir_ + "/window.stderr";
     std::ofstream(dir_ + "/commands.txt") << commandLine(demo_.argv) << "\n";
@@ -1282,6 +1307,30 @@ class XDemo {
     return true;
   }
   const std::string& window() const { return window_; }
+  int left() const { return winX_; }
+  int top() const { return winY_; }
+  int width() const { return winW_; }
+  int height() const { return winH_; }
+  const std::string& dir() const { return dir_; }
+  // What the demo printed so far.
+  std::string printed() const { return out(); }
+  // Waits (on the demo's stdout, files, ...) until `ready`; false if the
+  // demo ended first (why()).
+  bool await(const std::function<bool()>& ready, const std::string& what) { return waitFor(ready, what); }
+  // A key by its xdotool name (F12, I, ...).
+  bool press(const std::string& xname) { return x({"xdotool", "key", "--window", window_, xname}); }
+  // The pointer to window pixel (px, py), then a left click there (press
+  // and release at the same place).
+  bool click(int px, int py) {
+    return x({"xdotool", "mousemove", "--window", window_, std::to_string(px), std::to_string(py), "click", "1"});
+  }
+  // A frame drawn after now (the pointer moved over the figure's corner).
+  bool newFrame() { return poke(); }
+  // The screen as a PNG in the case's folder (import -window root).
+  bool shoot(const std::string& name) {
+    std::remove((dir_ + "/" + name).c_str());
+    return x({"import", "-window", "root", "PNG24:" + dir_ + "/" + name});
+  }
   std::string geometry() const {
     ts::WindowSplit s = ts::splitWindow(winW_, true, true);
     return std::to_string(winW_) + "x" + std::to_string(winH_) + " at " + std::to_string(winX_) + "," +
@@ -1367,7 +1416,9 @@ class XDemo {
     return true;
   }
 
-  std::string id_, dir_, logPath_, display_, xauth_, window_;
+  std::string id_, dir_, screen_;
+  std::vector<std::string> args_;
+  std::string logPath_, display_, xauth_, window_;
   Fresh state_;  // the state the keys typed so far make
   Proc demo_;
   int winX_ = 0, winY_ = 0, winW_ = 0, winH_ = 0, pointer_ = 0;
@@ -1457,6 +1508,199 @@ void glPaneMarksHold(const std::string& id, const std::vector<std::pair<char, st
     std::snprintf(why, sizeof why, "a key's every capture at %.1f s finished after %.1f s (a busy machine): its marks "
                   "were neither seen nor missed", kMarksLookAfter, kMarksVoidAfter);
     GTEST_SKIP() << why;
+  }
+}
+
+// --- the inspect mode under real X events (issue 24 item 4) -------------------
+// The demo started as a student starts it, at a size of its own (--size),
+// under an Xvfb of its own large enough for it; xdotool types the inspect key
+// and clicks a textured pixel near the figure's centre; the card printed for
+// that pixel is read, then F12's command (which carries --inspect X,Y) is run
+// with --png, and its card names the same panel and batch.  Every wait is on
+// the demo's stdout (or an X client's end); the hang guard ends the rest.
+const char* const kInspectScreen = "-screen 0 1600x1200x24";
+
+// The key that toggles the inspect mode, as InspectMode picks it: i, or I
+// when one of the demo's options takes i.
+char inspectKey(const ts::Options& o) {
+  for (const auto& it : o.items())
+    if (it.key == 'i' || it.keyDown == 'i') return 'I';
+  return 'i';
+}
+
+// A printed card: from its "pixel (X, Y)" line to its "difference" line,
+// whole lines; "" while not all of it is printed.
+struct Card {
+  int x = -1, y = -1;  // the pixel its first line names
+  std::string text;    // the whole card
+  std::string where;   // its first line's panel and batch ("" for the background)
+  std::vector<std::string> lines;
+  bool has(const std::string& start) const {
+    for (const auto& l : lines)
+      if (l.rfind(start, 0) == 0) return true;
+    return false;
+  }
+  std::string line(const std::string& start) const {
+    for (const auto& l : lines)
+      if (l.rfind(start, 0) == 0) return l;
+    return "";
+  }
+};
+Card cardAt(const std::string& printed, size_t at) {
+  Card c;
+  const size_t diff = printed.find("\ndifference", at);
+  const size_t end = diff == std::string::npos ? diff : printed.find('\n', diff + 1);
+  if (end == std::string::npos) return c;
+  c.text = printed.substr(at, end + 1 - at);
+  std::istringstream in(c.text);
+  for (std::string l; std::getline(in, l);) c.lines.push_back(l);
+  const std::string& first = c.lines.front();
+  int n = 0;
+  if (std::sscanf(first.c_str(), "pixel (%d, %d)%n", &c.x, &c.y, &n) == 2) {
+    const size_t bracket = first.find("  [", size_t(n));
+    c.where = first.substr(size_t(n), bracket == std::string::npos ? std::string::npos : bracket - size_t(n));
+  }
+  return c;
+}
+// The first card in `printed` that names pixel (x, y) in its first line.
+Card cardFor(const std::string& printed, int x, int y) {
+  const std::string head = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+  for (size_t at = printed.find(head); at != std::string::npos; at = printed.find(head, at + 1))
+    if (at == 0 || printed[at - 1] == '\n') return cardAt(printed, at);
+  return {};
+}
+
+// The pixel to click in a w x h figure, nearest its centre in rings of 8 px
+// steps, for which `good` holds (the centre if none does).
+std::pair<int, int> nearestCentre(int w, int h, const std::function<bool(int, int)>& good) {
+  const int cx = w / 2, cy = h / 2;
+  for (int r = 0; r < std::min(w, h) / 2; r += 8)
+    for (int dy = -r; dy <= r; dy += 8)
+      for (int dx = -r; dx <= r; dx += 8) {
+        if (std::max(std::abs(dx), std::abs(dy)) != r) continue;  // the ring's edge only
+        const int x = cx + dx, y = cy + dy;
+        if (x >= 0 && y >= 0 && x < w && y < h && good(x, y)) return {x, y};
+      }
+  return {cx, cy};
+}
+// A textured pixel (so that the card has lambda and a batch), by the
+// reference's inspector on the scene's frame built without measurements
+// (labels aside, the same geometry); false if there is none near the centre:
+// the picture is one the scene renders when it measures (bump_mapping).
+bool texturedPixel(const std::string& id, int w, int h, std::pair<int, int>* at) {
+  Fresh f(id);
+  if (!f.scene) return false;
+  const ref::Inspector in(f.scene->build(w, h, {}));
+  *at = nearestCentre(w, h, [&](int x, int y) { return in.at(x, y).textured; });
+  return in.at(at->first, at->second).textured;
+}
+// Else a pixel of something drawn, from the screen as the student sees it:
+// one whose 9 x 9 neighbourhood in `shot` (the window at (x0, y0)) has no
+// pixel of the clear colour at the figure's top left corner (so not thin
+// label text).
+std::pair<int, int> drawnPixel(const ts::Image& shot, int x0, int y0, int w, int h) {
+  const ts::Rgba clear = shot.at(x0, y0);
+  return nearestCentre(w, h, [&](int x, int y) {
+    for (int dy = -4; dy <= 4; ++dy)
+      for (int dx = -4; dx <= 4; ++dx) {
+        const int sx = x0 + x + dx, sy = y0 + y + dy;
+        if (sx < 0 || sy < 0 || sx >= shot.width || sy >= shot.height || channelDiff(shot.at(sx, sy), clear) <= 2)
+          return false;
+      }
+    return true;
+  });
+}
+
+void inspectModeClicks(const std::string& id) {
+  for (const char* tool : {"xdotool", "import"})
+    ASSERT_FALSE(findOnPath(tool).empty()) << tool << " is not on PATH: scripts/setup.sh installs it (xdotool, imagemagick)";
+  Fresh probe(id);
+  const char key = inspectKey(probe.opts);
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{640, 480}, {1280, 720}}) {
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    SCOPED_TRACE("--size " + size);
+    XDemo demo(id, outDir() + "/" + id + "/inspect_mode/" + size, kInspectScreen, {"--size", size});
+    ASSERT_TRUE(demo.start()) << demo.why();
+    ASSERT_EQ(demo.width(), w) << demo.geometry();
+    ASSERT_EQ(demo.height(), h) << demo.geometry();
+    // The inspect key: the mode says so.
+    ASSERT_TRUE(demo.press(xKeyName(key))) << demo.why();
+    const std::string on = "inspect: on (click a pixel of the figure)\n";
+    ASSERT_TRUE(demo.await([&] { return demo.printed().find(on) != std::string::npos; },
+                           std::string("\"inspect: on\" after key ") + key))
+        << demo.why();
+    // A click in the figure (the side panel open, the pane closed).
+    const int figureW = ts::splitWindow(w, true, false).figureW;
+    std::pair<int, int> pick;
+    if (!texturedPixel(id, figureW, h, &pick)) {
+      ASSERT_TRUE(demo.newFrame() && demo.shoot("before.png")) << demo.why();
+      pick = drawnPixel(ts::readPng(demo.dir() + "/before.png"), demo.left(), demo.top(), figureW, h);
+    }
+    const int px = pick.first, py = pick.second;
+    ASSERT_TRUE(demo.click(px, py)) << demo.why();
+    const std::string tag = "inspect: pixel ";
+    Card card;
+    int gotX = -1, gotY = -1;
+    ASSERT_TRUE(demo.await(
+        [&] {
+          const std::string out = demo.printed();
+          const size_t at = out.find(tag);
+          if (at == std::string::npos || std::sscanf(out.c_str() + at, "inspect: pixel %d,%d", &gotX, &gotY) != 2)
+            return false;
+          const size_t eol = out.find('\n', at);
+          if (eol == std::string::npos) return false;
+          card = cardAt(out, eol + 1);
+          return !card.text.empty();
+        },
+        "\"inspect: pixel\" and its card after the click"))
+        << demo.why();
+    EXPECT_EQ(gotX, px) << "the click at " << px << "," << py << " picked another pixel";
+    EXPECT_EQ(gotY, py) << "the click at " << px << "," << py << " picked another pixel";
+    const std::string head = "pixel (" + std::to_string(px) + ", " + std::to_string(py) + ")";
+    EXPECT_EQ(card.lines.front().rfind(head, 0), 0u) << "the card does not name the picked pixel:\n" << card.text;
+    EXPECT_TRUE(card.has("GL drew")) << card.text;
+    EXPECT_TRUE(card.has("reference")) << card.text;
+    double lambdaBase = 0, bias = 0, lambda = 0;
+    const std::string lambdaLine = card.line("lambda ");
+    if (!lambdaLine.empty()) {
+      ASSERT_EQ(
+          std::sscanf(lambdaLine.c_str(), "lambda = log2(rho) %lf + bias %lf = %lf", &lambdaBase, &bias, &lambda), 3)
+          << lambdaLine;
+      EXPECT_TRUE(std::isfinite(lambda) && std::isfinite(lambdaBase)) << lambdaLine;
+    }
+    const std::string lambdaShown = lambdaLine.empty() ? "" : "; " + lambdaLine.substr(0, lambdaLine.find("  ("));
+    std::printf("[ measured ] %s/inspect_mode %s: click %d,%d -> %s%s\n", id.c_str(), size.c_str(), px, py,
+                card.lines.front().c_str(), lambdaShown.c_str());
+    std::fflush(stdout);
+    // The screen as the student sees it, the card in the side panel.
+    ASSERT_TRUE(demo.newFrame() && demo.shoot("card.png")) << demo.why();
+    // F12: the printed command carries the pick.
+    const size_t saved = demo.printed().size();
+    ASSERT_TRUE(demo.press("F12")) << demo.why();
+    std::string command;
+    const std::string said = "remake them with:\n  ";
+    ASSERT_TRUE(demo.await(
+        [&] {
+          const std::string out = demo.printed();
+          const size_t at = out.find(said, saved);
+          const size_t eol = at == std::string::npos ? at : out.find('\n', at + said.size());
+          if (eol == std::string::npos) return false;
+          command = out.substr(at + said.size(), eol - at - said.size());
+          return true;
+        },
+        "F12's command"))
+        << demo.why();
+    const std::string flag = "--inspect " + std::to_string(px) + "," + std::to_string(py);
+    EXPECT_NE((command + " ").find(" " + flag + " "), std::string::npos) << command;
+    ASSERT_EQ(command.rfind("build/bin/" + id + " ", 0), 0u) << command;
+    // q: the window closes, the demo ends with 0.
+    ASSERT_TRUE(demo.quit()) << demo.why();
+    // The command with --png: its card of the same pixel, the same panel and batch.
+    ASSERT_TRUE(runPrintedCommand(id, command, demo.dir()));
+    const std::string remade = readFile(demo.dir() + "/remake.stdout");
+    const Card offscreen = cardFor(remade, px, py);
+    ASSERT_FALSE(offscreen.text.empty()) << "the --png run printed no card of " << head << ":\n" << remade;
+    EXPECT_EQ(offscreen.where, card.where) << "window:\n" << card.text << "--png:\n" << offscreen.text;
   }
 }
 
@@ -1596,6 +1840,8 @@ void registerAll() {
       if (id == "wrap_modes") extra.push_back({'s', "GL_TEXTURE_WRAP_S"});
       fullCase(id, "gl_pane_marks_hold_with_real_keys", [id, extra] { glPaneMarksHold(id, extra); });
     }
+    // Issue 24: a pixel picked with the mouse at 640x480 and 1280x720, its card read.
+    fullCase(id, "inspect_mode_clicks_a_pixel", [id] { inspectModeClicks(id); });
     fullCase(id, "resize_sequence", [id] { resizeSequence(id); });
     fullCase(id, "reset_equals_arrow", [id] { resetEqualsArrow(id); });
     if (smoke) registerCase(id, "help_and_save", [id] { helpAndSave(id); });
