@@ -527,6 +527,13 @@ class ReliefGL final : public ts::Renderer::Attachment {
     pass(cam, rel, mode, o);
     return target_.readRGBA8();
   }
+  // One mode drawn into that target, nothing read back (bench_parallax times
+  // it, each call finished with glFinish).
+  void draw(const Camera& cam, const Relief& rel, int mode, const PassOptions& o = {}) {
+    ts::RenderTarget::Bind bound(target(cam.width, cam.height, false));
+    glDisable(GL_SCISSOR_TEST);
+    pass(cam, rel, mode, o);
+  }
   // Milliseconds per frame: the median of `runs` draws, each finished.
   double timeMs(const Camera& cam, const Relief& rel, int mode, int runs, const PassOptions& o = {}) {
     ts::RenderTarget::Bind bound(target(cam.width, cam.height, false));
