@@ -1,0 +1,77 @@
+// tests/unit/area_filter_test.cpp — the exact area filter
+// (common/core/area_filter.hpp) against areas worked out by hand.  No GL.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "common/core/area_filter.hpp"
+
+namespace {
+using ts::Polygon2;
+
+double weightSum(const std::vector<ts::TexelWeight>& w) {
+  double s = 0;
+  for (const auto& t : w) s += t.weight;
+  return s;
+}
+
+// Claim: a pixel preimage that is exactly one texel square reads that texel alone.
+TEST(AreaFilter, OneTexelSquareReadsOneTexel) {
+  const auto w = ts::exactAreaWeights({{3, 5}, {4, 5}, {4, 6}, {3, 6}});
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].i, 3);
+  EXPECT_EQ(w[0].j, 5);
+  EXPECT_DOUBLE_EQ(w[0].weight, 1.0);
+}
+
+// Claim: a unit square shifted by (½, ¼) splits 3/8, 3/8, 1/8, 1/8 over four texels.
+TEST(AreaFilter, ShiftedSquareSplitsByArea) {
+  const auto w = ts::exactAreaWeights({{0.5, 0.25}, {1.5, 0.25}, {1.5, 1.25}, {0.5, 1.25}});
+  ASSERT_EQ(w.size(), 4u);
+  const double want[4] = {0.375, 0.375, 0.125, 0.125};  // (0,0) (1,0) (0,1) (1,1)
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(w[k].weight, want[k], 1e-15) << k;
+}
+
+// Claim: the diamond |u-2| + |v-2| ≤ 1 (area 2) gives each of its four texels 1/4,
+// and the clip of a triangle against a box has the area worked out by hand.
+TEST(AreaFilter, DiamondAndTriangle) {
+  const auto w = ts::exactAreaWeights({{2, 1}, {3, 2}, {2, 3}, {1, 2}});
+  ASSERT_EQ(w.size(), 4u);
+  for (const auto& t : w) EXPECT_NEAR(t.weight, 0.25, 1e-15);
+  // The triangle (0,0) (4,0) (0,4) clipped to [1,2]²: the whole square lies below u+v=4.
+  EXPECT_NEAR(ts::signedArea(ts::clipToBox({{0, 0}, {4, 0}, {0, 4}}, 1, 1, 2, 2)), 1.0, 1e-15);
+  // ... and to [1,3]²: the square minus the corner beyond u + v = 4, area 4 − 2 = 2.
+  EXPECT_NEAR(ts::signedArea(ts::clipToBox({{0, 0}, {4, 0}, {0, 4}}, 1, 1, 3, 3)), 2.0, 1e-14);
+}
+
+// Claim: for random parallelograms the weights sum to 1, the texels read stay
+// within the bounding box, and a constant texture averages to that constant.
+TEST(AreaFilter, RandomQuadsAreConsistent) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> pos(-20, 20), size(0.01, 9);
+  ts::Image flat(16, 16, {10, 20, 30, 255});
+  for (int n = 0; n < 500; ++n) {
+    const glm::dvec2 c(pos(rng), pos(rng));
+    const double a = size(rng), b = size(rng), th = pos(rng);
+    const glm::dvec2 e1(a * std::cos(th), a * std::sin(th)), e2(-b * std::sin(th), b * std::cos(th));
+    const Polygon2 quad{c, c + e1, c + e1 + e2, c + e2};  // a parallelogram
+    const auto w = ts::exactAreaWeights(quad);
+    EXPECT_NEAR(weightSum(w), 1.0, 1e-9) << n;
+    // Cost follows the footprint: never more texels than its bounding box holds.
+    const double bu = std::fabs(e1.x) + std::fabs(e2.x) + 2, bv = std::fabs(e1.y) + std::fabs(e2.y) + 2;
+    EXPECT_LE(double(w.size()), bu * bv) << n;
+    const glm::dvec4 avg = ts::exactAreaAverage(flat, quad);
+    EXPECT_NEAR(avg.r, 10, 1e-7);
+    EXPECT_NEAR(avg.b, 30, 1e-7);
+  }
+}
+
+// Claim: a degenerate (zero-area) preimage reads the texel under its corner.
+TEST(AreaFilter, DegenerateIsPointSampling) {
+  const auto w = ts::exactAreaWeights({{2.5, 7.5}, {2.5, 7.5}, {2.5, 7.5}, {2.5, 7.5}});
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].i, 2);
+  EXPECT_EQ(w[0].j, 7);
+}
+}  // namespace
