@@ -38,6 +38,12 @@ class GlPane {
   // Until when the marks of the last key show (or, before its pictures are
   // recorded, would): the window keeps drawing until then, so they fade.
   double marksUntil() const { return (markedSinceKey_ ? changedAt_ : keyAt_) + kHighlightSeconds; }
+  // The inspect mode picked a pixel of batch `ordinal` (counted over the
+  // frame's panels in drawing order; -1: none): the calls that set its
+  // texture state are marked (cyan) from the next recording on, and
+  // printed to stdout once.
+  void pick(int ordinal);
+  int pickedOrdinal() const { return pick_; }
   // The pane as a Dear ImGui window at (x, 0), w x h pixels.
   void draw(int x, int w, int h, double now);
 
@@ -49,5 +55,7 @@ class GlPane {
   bool awaitingResult_ = false, markedSinceKey_ = false;
   int firstChanged_ = -1;
   bool scroll_ = false;
+  int pick_ = -1, firstPicked_ = -1;
+  bool pickNew_ = false, scrollPick_ = false;
 };
 }  // namespace ts

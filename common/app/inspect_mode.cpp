@@ -20,6 +20,23 @@ struct Loupe : Renderer::Attachment {
   ~Loupe() override { glDeleteTextures(1, &id); }
   GLuint id = 0;
 };
+struct Cell : Loupe {
+  using Loupe::Loupe;
+};
+constexpr int kCell = 256;  // the footprint cell's pixels a side
+
+// An RGBA8 image (row 0 at the top, as ImGui draws it) into texture `id`.
+void upload(GLuint id, const Image& img) {
+  GLint prev = 0;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &prev);
+  glBindTexture(GL_TEXTURE_2D, id);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  glBindTexture(GL_TEXTURE_2D, GLuint(prev));
+}
 }
 
 InspectMode::InspectMode(const Options& opts, const CommonFlags& flags) {
@@ -71,19 +88,32 @@ void InspectMode::update(Renderer& r, const Frame& f, bool changed) {
   frameImage.set(x_, y_, gl);
   const Picked p = inspectPixels(f, frameImage, {{x_, y_}}).front();
   card_ = inspectCard(p);
-  std::printf("inspect: pixel %d,%d\n%s", x_, y_, card_.c_str());
+  ordinal_ = -1;
+  if (p.in.panel >= 0 && p.in.batch >= 0) {
+    ordinal_ = p.in.batch;
+    for (int k = 0; k < p.in.panel; ++k) ordinal_ += int(f.panels[size_t(k)].batches.size());
+  }
+  // The footprint: in the demo's own texture-space views when one shows the
+  // texture, else on level 0 in the side panel.
+  inViews_ = footprintInTextureViews(f, p.in, &over_);
+  cell_ = 0;
+  std::string where = "none (the pixel is not textured)";
+  if (p.in.textured && p.in.texture >= 0) {
+    // Level 0 around the footprint, magnified, in the side panel; in a view
+    // of the whole texture a footprint is often a pixel or two.
+    cell_ = r.attachment<Cell>().id;
+    upload(cell_, r.renderOffscreen(footprintCell(f, p.in, kCell, kCell)));
+    where = "on level 0 in the side panel";
+  }
+  for (const Panel& v : over_.panels) where += ", and in the view " + v.id.substr(0, v.id.size() - 10);
+  std::printf("inspect: pixel %d,%d\n%sinspect: footprint %s\n", x_, y_, card_.c_str(), where.c_str());
   std::fflush(stdout);
-  // The loupe's texture: the region, row 0 at the top as ImGui draws it.
   loupe_ = r.attachment<Loupe>().id;
-  GLint prev = 0;
-  glGetIntegerv(GL_TEXTURE_BINDING_2D, &prev);
-  glBindTexture(GL_TEXTURE_2D, loupe_);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kLoupe, kLoupe, 0, GL_RGBA, GL_UNSIGNED_BYTE, around.pixels.data());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-  glBindTexture(GL_TEXTURE_2D, GLuint(prev));
+  upload(loupe_, around);
+}
+
+void InspectMode::drawFootprint(Renderer& r) const {
+  if (active_ && picked_ && inViews_) r.drawOver(over_);
 }
 
 void InspectMode::drawPanel(float width) {
@@ -95,8 +125,12 @@ void InspectMode::drawPanel(float width) {
     ImGui::Separator();
     return;
   }
+  // The loupe and, beside it, the footprint on level 0 (side by side: the
+  // card stays in view).
+  const bool withCell = cell_ != 0;
+  const float side = withCell ? std::min((width - 24.0f) / 2, 176.0f) : std::min(width - 16.0f, 192.0f);
   if (loupe_) {  // the loupe: 32 x 32 pixels, the grid, the pick outlined
-    const float side = std::min(width - 16.0f, 192.0f), cell = side / kLoupe;
+    const float cell = side / kLoupe;
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(loupe_)), ImVec2(side, side));
     ImDrawList* d = ImGui::GetWindowDrawList();
@@ -106,6 +140,14 @@ void InspectMode::drawPanel(float width) {
     }
     const ImVec2 c(at.x + (kLoupe / 2) * cell, at.y + (kLoupe / 2) * cell);
     d->AddRect(c, ImVec2(c.x + cell, c.y + cell), IM_COL32(255, 210, 60, 255), 0.0f, 0, 2.0f);
+  }
+  const char* legend = "preimage of the pixel (white), derivatives (cyan), EWA ellipse (magenta), 2^lambda square "
+                       "(yellow), texels read (orange)";
+  if (withCell) {
+    if (loupe_) ImGui::SameLine();
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(cell_)), ImVec2(side, side));
+    ImGui::TextWrapped("Left: the pixels around the pick. Right: level 0 around its footprint%s: %s.",
+                       inViews_ ? " (also drawn in the texture-space view)" : "", legend);
   }
   ImGui::TextWrapped("%s", card_.c_str());
   ImGui::Separator();

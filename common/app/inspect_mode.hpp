@@ -28,8 +28,16 @@ class InspectMode {
   // when it or the picture changed (`changed`: a new state or measurement).
   // The loupe's texture belongs to the renderer (deleted with it).
   void update(Renderer& r, const Frame& f, bool changed);
-  // The panel's part: the loupe and the card.
+  // The picked pixel's footprint over the figure, in each of the demo's
+  // texture-space views that shows its texture (footprintInTextureViews);
+  // call after the figure is drawn and read (update).
+  void drawFootprint(Renderer& r) const;
+  // The panel's part: the loupe, the footprint on level 0 when no view of
+  // the figure shows the texture, and the card.
   void drawPanel(float width);
+  // The picked pixel's batch, numbered over the frame's panels in drawing
+  // order (the GL pane marks its calls); -1: nothing picked, or background.
+  int batchOrdinal() const { return active_ && picked_ ? ordinal_ : -1; }
   // " --inspect X,Y" for F12's command, or "".
   std::string flag() const;
 
@@ -39,5 +47,9 @@ class InspectMode {
   int x_ = 0, y_ = 0;
   std::string card_;
   GLuint loupe_ = 0;  // Renderer::attachment<Loupe>'s texture
+  GLuint cell_ = 0;   // Renderer::attachment<Cell>'s: the footprint on level 0, or 0
+  Frame over_;        // the footprint in the figure's texture-space views
+  bool inViews_ = false;
+  int ordinal_ = -1;
 };
 }  // namespace ts

@@ -67,13 +67,10 @@ glm::dvec2 texelCorner(const ref::Inspection& in, const Frame& picture, const re
   return a;
 }
 
-// One cell: the texture around pick `in`, in texels of level 0 (u right,
-// v up: t = 0 is the texture's row 0), with the footprint drawn over it.
-void addCell(Frame& f, const Frame& picture, const ref::Inspection& in, int number, const Rect& area, int scale) {
-  const int line = int(L::lineHeight(scale));
-  const Rect view{area.x, area.y + line, area.w, std::max(1, area.h - 3 * line)};
-  // The region: the footprint's bounding box (preimage, ellipse, texels
-  // read, the 2^lambda square), at least 4 texels, square, with a margin.
+// The region a footprint cell shows: the footprint's bounding box (preimage,
+// ellipse, texels read, the 2^lambda square), at least 4 texels, with a
+// margin; centre and extent in texels of level 0.
+void cellRegion(const Frame& picture, const ref::Inspection& in, double* cu, double* cv, double* extent) {
   const double side = std::exp2(std::max(0.0, in.lambda));
   double u0 = in.u - side / 2, u1 = in.u + side / 2, v0 = in.v - side / 2, v1 = in.v + side / 2;
   auto grow = [&](glm::dvec2 p) { u0 = std::min(u0, p.x), u1 = std::max(u1, p.x), v0 = std::min(v0, p.y), v1 = std::max(v1, p.y); };
@@ -85,7 +82,15 @@ void addCell(Frame& f, const Frame& picture, const ref::Inspection& in, int numb
     const glm::dvec2 a = texelCorner(in, picture, t);
     grow(a), grow(a + std::exp2(t.level));
   }
-  const double extent = std::max({u1 - u0, v1 - v0, 4.0}) * 1.25, cu = (u0 + u1) / 2, cv = (v0 + v1) / 2;
+  *extent = std::max({u1 - u0, v1 - v0, 4.0}) * 1.25, *cu = (u0 + u1) / 2, *cv = (v0 + v1) / 2;
+}
+
+// The cell's panel in `view`: level 0 texel by texel around the footprint
+// (GL_NEAREST, the texture's own wrap modes), its texel grid when the texels
+// are large enough to see, then the footprint (footprintBatches).
+Panel cellPanel(Frame& f, const Frame& picture, const ref::Inspection& in, int number, const Rect& view) {
+  double cu = 0, cv = 0, extent = 0;
+  cellRegion(picture, in, &cu, &cv, &extent);
   const double aspect = double(view.w) / double(view.h);
   const double halfU = extent / 2 * std::max(1.0, aspect), halfV = extent / 2 * std::max(1.0, 1.0 / aspect);
   Panel p;
@@ -111,15 +116,58 @@ void addCell(Frame& f, const Frame& picture, const ref::Inspection& in, int numb
     for (double v = std::ceil(cv - halfV); v <= cv + halfV; ++v) grid.push_back({x0, float(v)}), grid.push_back({x1, float(v)});
     p.batches.push_back(lineSegments(grid, glm::vec4(0.42f, 0.42f, 0.47f, 1.0f), 1.0f, "texel_grid"));
   }
+  for (Batch& b : footprintBatches(picture, in)) p.batches.push_back(std::move(b));
+  return p;
+}
+
+// One cell: the texture around pick `in`, in texels of level 0 (u right,
+// v up: t = 0 is the texture's row 0), with the footprint drawn over it.
+void addCell(Frame& f, const Frame& picture, const ref::Inspection& in, int number, const Rect& area, int scale) {
+  const int line = int(L::lineHeight(scale));
+  const Rect view{area.x, area.y + line, area.w, std::max(1, area.h - 3 * line)};
+  f.panels.push_back(cellPanel(f, picture, in, number, view));
+  L::caption(f, {float(area.x), float(area.y), float(area.x + area.w), float(area.y + line)},
+             std::to_string(number) + ": lambda " + L::fmt("%.2f", in.lambda) + ", rho " + L::fmt("%.2f", in.rhoEdge),
+             L::kAmber, scale);
+  L::caption(f, {float(area.x), float(view.y + view.h + 2), float(area.x + area.w), float(area.y + area.h)},
+             "(u,v) = (" + L::fmt("%.1f", in.u) + ", " + L::fmt("%.1f", in.v) + "), level " +
+                 std::to_string(in.level0) + (in.level1 != in.level0 ? "+" + std::to_string(in.level1) : "") + ", " +
+                 std::to_string(in.texels.size()) + " texels",
+             L::kWhite, scale);
+}
+
+// The affine map from a batch's (s, t) to its object coordinates, when one
+// map fits every vertex (a texture drawn flat: a texture-space view), with
+// q = 1 throughout.
+bool flatTextureMap(const Batch& b, glm::dmat3* st2pos) {
+  if (b.prim != Prim::Triangles || b.vertices.size() < 3) return false;
+  const Vertex &a = b.vertices[0], &c1 = b.vertices[1], &c2 = b.vertices[2];
+  const glm::dvec2 s0(a.tex), s1(c1.tex), s2(c2.tex), p0(a.pos), p1(c1.pos), p2(c2.pos);
+  const glm::dmat2 S(s1 - s0, s2 - s0), P(p1 - p0, p2 - p0);
+  if (std::abs(glm::determinant(S)) < 1e-12) return false;
+  const glm::dmat2 M = P * glm::inverse(S);
+  const glm::dvec2 off = p0 - M * s0;
+  for (const Vertex& v : b.vertices) {
+    if (v.tex.w != 1.0f || v.pos.z != 0.0f) return false;
+    const glm::dvec2 want = M * glm::dvec2(v.tex) + off;
+    if (glm::length(want - glm::dvec2(v.pos)) > 1e-4 * (1 + glm::length(glm::dvec2(v.pos)))) return false;
+  }
+  *st2pos = glm::dmat3(glm::dvec3(M[0], 0), glm::dvec3(M[1], 0), glm::dvec3(off, 1));
+  return true;
+}
+}  // namespace
+
+std::vector<Batch> footprintBatches(const Frame& picture, const ref::Inspection& in) {
+  std::vector<Batch> out;
   auto loop = [&](const std::vector<glm::vec2>& pts, glm::vec4 colour, float width, const char* role) {
-    p.batches.push_back(lineLoop(pts, colour, width, role));
+    out.push_back(lineLoop(pts, colour, width, role));
   };
   for (const ref::InspectTexel& t : in.texels) {  // the texels read, at their level's size
     const glm::dvec2 corner = texelCorner(in, picture, t);
     const float size = float(std::exp2(t.level)), a = float(corner.x), b = float(corner.y);
     loop({{a, b}, {a + size, b}, {a + size, b + size}, {a, b + size}}, kTexels, 2.0f, "texel_read");
   }
-  const float hs = float(side / 2);
+  const float hs = float(std::exp2(std::max(0.0, in.lambda)) / 2);
   loop({{float(in.u) - hs, float(in.v) - hs}, {float(in.u) + hs, float(in.v) - hs}, {float(in.u) + hs, float(in.v) + hs},
         {float(in.u) - hs, float(in.v) + hs}},
        kLodSquare, 1.0f, "lod_square");
@@ -137,17 +185,45 @@ void addCell(Frame& f, const Frame& picture, const ref::Inspection& in, int numb
   pts.clear();
   for (const glm::dvec2& c : in.preimage) pts.push_back(glm::vec2(c));
   loop(pts, kPreimage, 2.0f, "preimage");
-  f.panels.push_back(p);
-  L::caption(f, {float(area.x), float(area.y), float(area.x + area.w), float(area.y + line)},
-             std::to_string(number) + ": lambda " + L::fmt("%.2f", in.lambda) + ", rho " + L::fmt("%.2f", in.rhoEdge),
-             L::kAmber, scale);
-  L::caption(f, {float(area.x), float(view.y + view.h + 2), float(area.x + area.w), float(area.y + area.h)},
-             "(u,v) = (" + L::fmt("%.1f", in.u) + ", " + L::fmt("%.1f", in.v) + "), level " +
-                 std::to_string(in.level0) + (in.level1 != in.level0 ? "+" + std::to_string(in.level1) : "") + ", " +
-                 std::to_string(in.texels.size()) + " texels",
-             L::kWhite, scale);
+  return out;
 }
-}  // namespace
+
+Frame footprintCell(const Frame& picture, const ref::Inspection& in, int w, int h) {
+  Frame f = L::blankFrame(w, h);
+  if (usable(in)) f.panels.push_back(cellPanel(f, picture, in, 1, {0, 0, w, h}));
+  return f;
+}
+
+bool footprintInTextureViews(const Frame& picture, const ref::Inspection& in, Frame* over) {
+  *over = L::blankFrame(picture.width, picture.height);
+  if (!usable(in)) return false;
+  const TextureDesc& shown = picture.textures[size_t(in.texture)];
+  const std::vector<Batch> lines = footprintBatches(picture, in);
+  for (size_t k = 0; k < picture.panels.size(); ++k) {
+    const Panel& p = picture.panels[k];
+    if (int(k) == in.panel) continue;  // the picked pixel's own view: never drawn over
+    for (const Batch& b : p.batches) {
+      glm::dmat3 st2pos;
+      // The same texture: made the same way (its filters may differ).
+      if (b.role != "texture" || b.texture < 0 || picture.textures[size_t(b.texture)].name != shown.name ||
+          picture.textures[size_t(b.texture)].params != shown.params || !flatTextureMap(b, &st2pos))
+        continue;
+      // (u, v) in texels of level 0 -> (s, t) -> the view's object coordinates.
+      const glm::dmat3 uv2pos = st2pos * glm::dmat3(glm::dvec3(1.0 / in.width0, 0, 0), glm::dvec3(0, 1.0 / in.height0, 0),
+                                                     glm::dvec3(0, 0, 1));
+      Panel o;
+      o.id = p.id + "_footprint";
+      o.viewport = p.viewport, o.projection = p.projection, o.modelview = p.modelview;
+      for (Batch l : lines) {
+        for (Vertex& v : l.vertices) v.pos = glm::vec3(glm::vec2(uv2pos * glm::dvec3(glm::dvec2(v.pos), 1.0)), 0.0f);
+        o.batches.push_back(std::move(l));
+      }
+      over->panels.push_back(std::move(o));
+      break;
+    }
+  }
+  return !over->panels.empty();
+}
 
 Frame footprintFrame(const std::string& demo, const Frame& picture, const Image& drawn, const std::vector<Picked>& picks,
                      int w, int h) {

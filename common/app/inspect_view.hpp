@@ -52,6 +52,25 @@ std::string inspectJson(const Picked& p);
 Frame footprintFrame(const std::string& demo, const Frame& picture, const Image& drawn, const std::vector<Picked>& picks,
                      int w, int h);
 
+// The footprint of one inspected pixel as line batches in texels of level 0
+// (u right, v up): the texels read (orange), the square of side 2^lambda
+// (yellow), the derivative parallelogram (cyan), the EWA ellipse (magenta)
+// and the preimage of the pixel square (white).  The footprint figure's cells
+// and the window's inspect mode draw the same batches.
+std::vector<Batch> footprintBatches(const Frame& picture, const ref::Inspection& in);
+// One cell of the footprint figure alone, w x h, without captions: level 0
+// around the footprint with the footprint over it (the window's side panel
+// shows it when no view of the figure shows the pixel's texture).  A blank
+// frame when the pixel is not textured.
+Frame footprintCell(const Frame& picture, const ref::Inspection& in, int w, int h);
+// The footprint drawn in the demo's own texture-space views: every panel
+// (other than the picked pixel's) with a batch of role "texture" that draws
+// the pixel's texture flat (one affine map from (s, t) to the view) gets the
+// footprint's batches mapped into it.  `over`: a frame of those panels
+// alone, to draw over the figure without clearing it.  False when no view
+// shows the texture (or the pixel is not textured).
+bool footprintInTextureViews(const Frame& picture, const ref::Inspection& in, Frame* over);
+
 // --inspect and --footprints applied to a rendered state (renderScene's
 // result): checks the pixels, inspects them, and with --footprints draws
 // the footprint figure in place of the picture (its calls recorded again

@@ -570,6 +570,8 @@ class FrameLoop {
                               std::to_string(m.size()) + (measuring ? "|measuring" : "");
     inspect.update(renderer, f, state != inspectedState);
     inspectedState = state;
+    // The GL pane marks the picked batch's texture calls: listed again on a new pick.
+    if (inspect.batchOrdinal() != pane.pickedOrdinal()) pane.pick(inspect.batchOrdinal()), record = redraw = pane.visible;
   }
 
   // --frames N (tests): the last frame shows the measurement of the last
@@ -598,6 +600,7 @@ class FrameLoop {
 
   // The side panel, the GL pane and the help card (Dear ImGui), each if open.
   void drawOverlay() {
+    inspect.drawFootprint(renderer);  // key i: the pick's footprint in the figure's texture-space views
     bool imgui = input.overlay || pane.visible || input.help;
     if (imgui) {
       ImGui_ImplGlfw_NewFrame();

@@ -99,23 +99,27 @@ struct Entry {
   std::string text;
   bool changed = false;
   bool vertex = false;  // a glVertex*: ends one vertex's group of calls
+  bool picked = false;  // sets the picked pixel's texture state
 };
 
-void addEntries(const std::vector<gl::Call>& numbered, std::vector<Entry>* out) {
-  for (const gl::Call& c : numbered) {
+void addEntries(const std::vector<gl::Call>& numbered, std::vector<Entry>* out, const std::vector<bool>* picked) {
+  for (size_t k = 0; k < numbered.size(); ++k) {
+    const gl::Call& c = numbered[k];
     if (c.query) continue;
     Entry e;
+    e.picked = picked && k < picked->size() && (*picked)[k];
     e.text = gl::formatCall(c);
     e.vertex = std::strncmp(c.name, "glVertex", 8) == 0 && std::strcmp(c.name, "glVertexPointer") != 0 &&
                std::strncmp(c.name, "glVertexAttrib", 14) != 0;
     out->push_back(std::move(e));
   }
 }
-std::vector<Entry> entries(const std::vector<CallSection>& sections) {
+std::vector<Entry> entries(const std::vector<CallSection>& sections, const std::vector<bool>* pickedLast = nullptr) {
   std::vector<Entry> out;
-  for (const CallSection& s : sections) {
+  for (size_t k = 0; k < sections.size(); ++k) {
+    const CallSection& s = sections[k];
     if (!s.heading.empty()) out.push_back({"/* " + s.heading + " */"});
-    if (s.calls) addEntries(numberObjects(*s.calls), &out);
+    if (s.calls) addEntries(numberObjects(*s.calls), &out, k + 1 == sections.size() ? pickedLast : nullptr);
   }
   return out;
 }
@@ -172,8 +176,8 @@ std::vector<ListingLine> listing(const std::vector<gl::Call>& calls, const std::
 }
 
 std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const std::vector<CallSection>* previous,
-                                 int keepVertices) {
-  std::vector<Entry> now = entries(sections);
+                                 int keepVertices, const std::vector<bool>* picked) {
+  std::vector<Entry> now = entries(sections, picked);
   if (previous) markChanged(entries(*previous), &now);
   std::vector<ListingLine> out;
   auto emit = [&](const Entry& e) {
@@ -181,7 +185,7 @@ std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const
     size_t pos = 0;
     while (true) {
       size_t nl = e.text.find('\n', pos);
-      out.push_back({e.text.substr(pos, nl == std::string::npos ? std::string::npos : nl - pos), e.changed});
+      out.push_back({e.text.substr(pos, nl == std::string::npos ? std::string::npos : nl - pos), e.changed, e.picked});
       if (nl == std::string::npos) break;
       pos = nl + 1;
     }
@@ -224,6 +228,62 @@ std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const
     i = end;  // glEnd is emitted by the loop
   }
   return out;
+}
+
+namespace {
+bool named(const gl::Call& c, const char* name) { return std::strcmp(c.name, name) == 0; }
+bool startsWith(const gl::Call& c, const char* prefix) { return std::strncmp(c.name, prefix, std::strlen(prefix)) == 0; }
+bool firstArg(const gl::Call& c, long long value) { return !c.args.empty() && c.args[0].i == value; }
+}  // namespace
+
+std::vector<bool> batchTextureCalls(const std::vector<gl::Call>& calls, int ordinal) {
+  std::vector<bool> picked(calls.size(), false);
+  if (ordinal < 0) return picked;
+  size_t begin = calls.size();
+  for (size_t k = 0, n = 0; k < calls.size(); ++k)
+    if (named(calls[k], "glBegin") && int(n++) == ordinal) {
+      begin = k;
+      break;
+    }
+  if (begin == calls.size()) return picked;
+  picked[begin] = true;
+  // The batch's own state: back from its glBegin to the glEnd before it.
+  long long bound = -1;
+  bool made = false;
+  for (size_t k = begin; k-- > 0 && !named(calls[k], "glEnd");) {
+    const gl::Call& c = calls[k];
+    const bool texMatrix = named(c, "glLoadMatrixf") && k > 0 && named(calls[k - 1], "glMatrixMode") &&
+                           firstArg(calls[k - 1], GL_TEXTURE);
+    if (startsWith(c, "glTex") || named(c, "glGenTextures") || named(c, "glPixelStorei") || texMatrix ||
+        ((named(c, "glEnable") || named(c, "glDisable")) && firstArg(c, GL_TEXTURE_2D)) ||
+        (named(c, "glMatrixMode") && firstArg(c, GL_TEXTURE)) || (named(c, "glUseProgram") && !firstArg(c, 0)) ||
+        startsWith(c, "glUniform") || named(c, "glActiveTexture")) {
+      picked[k] = true;
+      made |= startsWith(c, "glTexImage");
+    }
+    if (named(c, "glBindTexture") && firstArg(c, GL_TEXTURE_2D)) {
+      picked[k] = true;
+      if (bound < 0 && c.args.size() > 1) bound = c.args[1].i;
+    }
+  }
+  // A texture made for an earlier batch: where it was made (its first
+  // binding followed by its images).
+  if (!made && bound > 0)
+    for (size_t k = 0; k < begin; ++k) {
+      if (!(named(calls[k], "glBindTexture") && calls[k].args.size() > 1 && calls[k].args[1].i == bound)) continue;
+      size_t j = k + 1;
+      while (j < begin && !named(calls[j], "glBindTexture") && !startsWith(calls[j], "glTexImage")) ++j;
+      if (j >= begin || !startsWith(calls[j], "glTexImage")) continue;
+      picked[k] = true;
+      if (k > 0 && named(calls[k - 1], "glGenTextures")) picked[k - 1] = true;
+      for (size_t m = k + 1; m < j; ++m) picked[m] = named(calls[m], "glPixelStorei");
+      for (; j < begin && (startsWith(calls[j], "glTexImage") || named(calls[j], "glPixelStorei") ||
+                           (named(calls[j], "glTexParameteri") && calls[j].args.size() > 1 && calls[j].args[1].i == GL_TEXTURE_MAX_LEVEL));
+           ++j)
+        picked[j] = true;
+      break;
+    }
+  return picked;
 }
 
 std::string listingText(const std::vector<ListingLine>& lines, const std::string& header) {

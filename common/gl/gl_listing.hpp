@@ -42,6 +42,7 @@ std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls);
 struct ListingLine {
   std::string text;
   bool changed = false;  // not in the listing it is compared with
+  bool picked = false;   // sets the texture state of the pixel the inspect mode picked
 };
 
 // The listing of `calls`.  `previous` (may be null): the listing before the
@@ -66,8 +67,17 @@ std::vector<CallSection> pictureSections(const Frame& frame, std::vector<gl::Cal
 // per section: each render is a program of its own (in a window it ran on
 // the measurement worker's context), and a change in one section leaves the
 // names of the others as they were.
+// `picked` (may be null): per call of the last section (the frame's own
+// calls), whether it sets the picked pixel's texture state (batchTextureCalls).
 std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const std::vector<CallSection>* previous,
-                                 int keepVertices = 3);
+                                 int keepVertices = 3, const std::vector<bool>* picked = nullptr);
+// The calls of a frame's recording (recordPicture) that set the texture
+// state of its batch number `ordinal` (counted over all panels in order, as
+// the renderer draws them: one glBegin each): its glBegin; back to the glEnd
+// before it, the texture's enable, binding, parameters and environment, the
+// texture matrix and the program with its uniforms; and, when its texture was
+// made for an earlier batch, the binding and glTexImage2D calls that made it.
+std::vector<bool> batchTextureCalls(const std::vector<gl::Call>& calls, int ordinal);
 // The listing as a file: a header comment, then one line per entry.
 std::string listingText(const std::vector<ListingLine>& lines, const std::string& header);
 }  // namespace ts

@@ -236,7 +236,11 @@ static GLenum glPrim(Prim p) {
   return GL_TRIANGLES;
 }
 
-void Renderer::draw(const Frame& f, bool labels) {
+void Renderer::draw(const Frame& f, bool labels) { drawFrame(f, labels, true); }
+
+void Renderer::drawOver(const Frame& f) { drawFrame(f, true, false); }
+
+void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
   if (overrideTarget_) {
     glBindFramebuffer(GL_FRAMEBUFFER, overrideTarget_);
     glDrawBuffer(GL_COLOR_ATTACHMENT0);
@@ -248,9 +252,11 @@ void Renderer::draw(const Frame& f, bool labels) {
   }
   glDisable(GL_SCISSOR_TEST);
   glViewport(0, 0, f.width, f.height);
-  glClearColor(f.clearColor.r, f.clearColor.g, f.clearColor.b, f.clearColor.a);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (clear) {
+    glClearColor(f.clearColor.r, f.clearColor.g, f.clearColor.b, f.clearColor.a);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
   static_assert(!FixedState::lighting && !FixedState::cullFace, "the sidecar says what is drawn with");
   glDisable(GL_LIGHTING);
   glDisable(GL_CULL_FACE);

@@ -34,6 +34,9 @@ class Renderer {
   // must be at least frame.width x frame.height.  `labels` off leaves the
   // text out (measurement passes).
   void draw(const Frame& frame, bool labels = true);
+  // The same over what the target holds, without clearing it (the window's
+  // inspect mode draws a picked pixel's footprint over the figure).
+  void drawOver(const Frame& frame);
   // draw() and read back: the picture as the PNG will hold it.
   Image render(const Frame& frame, bool labels = true);
   // Draws into a private framebuffer object (render_target.hpp) of the
@@ -82,6 +85,7 @@ class Renderer {
 
  private:
   void drawLabels(const Frame& frame);
+  void drawFrame(const Frame& frame, bool labels, bool clear);
   Context& ctx_;
   std::map<std::type_index, std::unique_ptr<Attachment>> attachments_;
   int pictureW_ = 0, pictureH_ = 0;
