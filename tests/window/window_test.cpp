@@ -1668,9 +1668,27 @@ void inspectModeClicks(const std::string& id) {
           << lambdaLine;
       EXPECT_TRUE(std::isfinite(lambda) && std::isfinite(lambdaBase)) << lambdaLine;
     }
+    // The footprint: magnified on level 0 in the side panel for a textured
+    // pixel (and in a texture-space view showing its texture, if any).
+    const bool textured = card.lines.front().find("textured]") != std::string::npos;
+    std::string where;
+    ASSERT_TRUE(demo.await(
+        [&] {
+          const std::string out = demo.printed();
+          const size_t at = out.find("inspect: footprint ");
+          const size_t eol = at == std::string::npos ? at : out.find('\n', at);
+          if (eol == std::string::npos) return false;
+          where = out.substr(at, eol - at);
+          return true;
+        },
+        "\"inspect: footprint\" after the card"))
+        << demo.why();
+    if (textured) {
+      EXPECT_EQ(where.rfind("inspect: footprint on level 0 in the side panel", 0), 0u) << where;
+    }
     const std::string lambdaShown = lambdaLine.empty() ? "" : "; " + lambdaLine.substr(0, lambdaLine.find("  ("));
     std::printf("[ measured ] %s/inspect_mode %s: click %d,%d -> %s%s\n", id.c_str(), size.c_str(), px, py,
-                card.lines.front().c_str(), lambdaShown.c_str());
+                card.lines.front().c_str(), (lambdaShown + "; " + where).c_str());
     std::fflush(stdout);
     // The screen as the student sees it, the card in the side panel.
     ASSERT_TRUE(demo.newFrame() && demo.shoot("card.png")) << demo.why();
@@ -1693,6 +1711,52 @@ void inspectModeClicks(const std::string& id) {
     const std::string flag = "--inspect " + std::to_string(px) + "," + std::to_string(py);
     EXPECT_NE((command + " ").find(" " + flag + " "), std::string::npos) << command;
     ASSERT_EQ(command.rfind("build/bin/" + id + " ", 0), 0u) << command;
+    // The GL pane (l) marks the calls that set a picked pixel's texture
+    // state: a click, the pane open, on a pixel of something drawn (from the
+    // screen, the figure now narrower); its glBegin, and for a textured batch
+    // its texture's binding.
+    {
+      ASSERT_TRUE(demo.press("l")) << demo.why();
+      ASSERT_TRUE(demo.await([&] { return demo.printed().find("gl pane: ") != std::string::npos; }, "the pane's listing"))
+          << demo.why();
+      ASSERT_TRUE(demo.newFrame() && demo.shoot("pane.png")) << demo.why();
+      const int paneFigureW = ts::splitWindow(w, true, true).figureW;
+      const auto [qx, qy] = drawnPixel(ts::readPng(demo.dir() + "/pane.png"), demo.left(), demo.top(), paneFigureW, h);
+      const size_t before = demo.printed().size();
+      ASSERT_TRUE(demo.click(qx, qy)) << demo.why();
+      Card second;
+      ASSERT_TRUE(demo.await(
+          [&] {
+            second = cardFor(demo.printed().substr(before), qx, qy);
+            return !second.text.empty();
+          },
+          "the card of the pixel clicked with the pane open"))
+          << demo.why();
+      if (second.where.empty()) {
+        std::printf("[ note ] %s/inspect_mode %s: the pixel found drawn with the pane open, %d,%d, is %s: no batch to mark\n",
+                    id.c_str(), size.c_str(), qx, qy, second.lines.front().c_str());
+      } else {
+        int marked = -1;
+        std::string out;
+        ASSERT_TRUE(demo.await(
+            [&] {
+              out = demo.printed().substr(before);
+              const size_t at = out.find(" lines set the picked pixel's texture state");
+              if (at == std::string::npos) return false;
+              const size_t bol = out.rfind("gl pane: ", at);
+              return std::sscanf(out.c_str() + bol, "gl pane: %d lines", &marked) == 1;
+            },
+            "the pane's marks (\"gl pane: N lines set the picked pixel's texture state\")"))
+            << demo.why();
+        EXPECT_GE(marked, 2) << second.lines.front();
+        EXPECT_NE(out.find("gl pane: picked: glBegin("), std::string::npos) << out;
+        if (second.lines.front().find("textured]") != std::string::npos) {
+          EXPECT_NE(out.find("gl pane: picked: glBindTexture(GL_TEXTURE_2D"), std::string::npos) << out;
+        }
+        std::printf("[ measured ] %s/inspect_mode %s: pane open, click %d,%d -> %s; %d calls marked\n", id.c_str(),
+                    size.c_str(), qx, qy, second.lines.front().c_str(), marked);
+      }
+    }
     // q: the window closes, the demo ends with 0.
     ASSERT_TRUE(demo.quit()) << demo.why();
     // The command with --png: its card of the same pixel, the same panel and batch.
