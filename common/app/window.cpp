@@ -237,7 +237,9 @@ void drawHelp(Scene& scene, const Options& opts, int w, int h, bool* open, char 
                      "the OpenGL calls beside the picture, h hides the side panel, ? or F1 this card, Esc or q quits.");
   ImGui::TextWrapped("%c inspects a pixel: click one of the figure, and the side panel shows it magnified and what happens "
                      "inside it: (s,t,r,q), the derivatives, rho, lambda, the mip levels, the texels read and their weights, "
-                     "the reference's colour beside GL's (--inspect X,Y does it from the command line).",
+                     "the reference's colour beside GL's, and its footprint on the texture (also in a texture-space view, where the "
+                     "demo has one); with the GL pane open (l), the calls that set its texture turn cyan (--inspect X,Y "
+                     "does it from the command line).",
                      inspectKey);
   if (opts.has("light1-az") && opts.has("light1-el"))
     ImGui::TextWrapped("A right drag moves light 1 (--light1-az left and right, --light1-el up and down).");
