@@ -130,7 +130,9 @@ void benchWindowDraw(benchmark::State& st, const Figure& f) {
 // <figure>/inspect_pick: what the window's inspect mode does when a pixel
 // is clicked (common/app/inspect_mode.cpp), timed in this process after the
 // figure is drawn: the 32 x 32 pixels around it read back, the reference's
-// inspection of that one pixel (no re-rasterizing of the frame) and its card.
+// inspection of that one pixel (no re-rasterizing of the frame), its card,
+// its footprint mapped into the figure's texture-space views and, for a
+// textured pixel, the 256 x 256 footprint cell rendered offscreen.
 // Issue 24.6's bar: within one frame, under 30 ms.  The pixel: the figure's
 // centre (a textured pixel in most figures).
 void benchInspectPick(benchmark::State& st, const Figure& f) {
@@ -150,6 +152,10 @@ void benchInspectPick(benchmark::State& st, const Figure& f) {
                    around.data());
       const std::vector<ts::Picked> p = ts::inspectPixels(frame, picked, {{x, y}});
       benchmark::DoNotOptimize(ts::inspectCard(p.front()));
+      ts::Frame over;
+      benchmark::DoNotOptimize(ts::footprintInTextureViews(frame, p.front().in, &over));
+      if (p.front().in.textured && p.front().in.texture >= 0)
+        benchmark::DoNotOptimize(r.renderOffscreen(ts::footprintCell(frame, p.front().in, 256, 256)));
     }
     glfwSwapBuffers(g_window);
     r.release();
