@@ -27,6 +27,7 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <functional>
 
 #include "common/core/mesh.hpp"
 
@@ -41,6 +42,10 @@ struct Params {
   int stacks = 1;  // s does not depend on y: one patch per column, as x,y,z,w
   Coords coords = Coords::Wrong;
   Seam seam = Seam::Front;
+  // Exercise VI.1 as a student writes it (exercises/vi1_back_seam.cpp): s
+  // at θ in [0°, 360°).  When set, it gives column i its s, the turns past
+  // 0° added (GL_REPEAT: s + 1 shows what s shows), in place of `coords`.
+  std::function<double(double)> sOfTheta;
 };
 
 // The same expression ts::cylinderPoint uses for column i.
@@ -54,6 +59,10 @@ inline long mod(long a, long m) { return ((a % m) + m) % m; }
 
 // s of column i.
 inline double sOf(const Params& p, int i) {
+  if (p.sOfTheta) {
+    const double th = thetaDeg(p.slices, i), turns = std::floor(th / 360.0);
+    return p.sOfTheta(th - 360.0 * turns) + turns;
+  }
   const long n2 = 2L * p.slices;
   if (p.coords == Coords::Wrong) return double(mod(halfSteps(p, i), n2)) / double(n2);  // reduced per vertex
   return double(mod(halfSteps(p, 0), n2) + 2L * i) / double(n2);                       // winding tracked

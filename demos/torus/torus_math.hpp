@@ -22,6 +22,7 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
+#include <functional>
 
 #include "common/core/torus.hpp"
 
@@ -32,13 +33,27 @@ enum class Mapping { Book, Front };
 // how the texture is put on it.
 struct Params : ts::TorusShape {
   Mapping mapping = Mapping::Book;
+  // Exercise VI.2 as a student writes it (exercises/vi2_torus_front.cpp):
+  // (s, t) at (θ, φ) in [0°, 360°).  When set, it gives grid vertex (i, j)
+  // its (s, t), the last column and row (θ, φ = 360°) one turn on, in place
+  // of `mapping`.
+  std::function<glm::dvec2(double, double)> stOfAngles;
 };
 
 // What is added to (θ/360, φ/360): (0, 0) for the book, (1/2, 1/2) for the exercise.
 inline glm::dvec2 offset(Mapping m) { return m == Mapping::Book ? glm::dvec2(0.0) : glm::dvec2(0.5); }
 
 // (s, t) = (i/nu, j/nv) + offset at grid vertex (i, j).
-inline ts::Mesh mesh(const Params& p) { return ts::torusMesh(p, offset(p.mapping)); }
+inline ts::Mesh mesh(const Params& p) {
+  if (!p.stOfAngles) return ts::torusMesh(p, offset(p.mapping));
+  return ts::parametricGrid(
+      p.nu, p.nv, /*periodicU=*/true, /*periodicV=*/true,
+      [&](int i, int j) { return ts::torusPoint(p.R, p.r, p.nu, p.nv, i, j); },
+      [&](int i, int j) {
+        return p.stOfAngles(360.0 * (i % p.nu) / p.nu, 360.0 * (j % p.nv) / p.nv) +
+               glm::dvec2(i / p.nu, j / p.nv);
+      });
+}
 
 // (θ, φ) in degrees where (s, t) = (1/2, 1/2) lands: solve θ/360 + o = 1/2
 // (mod 1) for θ in [0, 360).

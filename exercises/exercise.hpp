@@ -1,0 +1,31 @@
+// exercises/exercise.hpp — what every exercise file includes: the functions
+// a student writes, one per file, and the stub's "not done yet".
+//
+// Each exercise file holds the exercise's statement, the function with its
+// signature and units, and a body that says it is not done.  Replace the
+// body; `bash scripts/exercise.sh NAME` builds it and checks it with the
+// suite's own measurements (README.md in this folder says how each is
+// checked).  The reference solutions are not here: they are the demos'.
+#pragma once
+#include <glm/vec2.hpp>
+
+#include <stdexcept>
+
+#include "common/core/image.hpp"
+
+namespace exercise {
+// What a stub throws; the checker reports it as "not done yet".
+struct NotDone : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+#define TS_EXERCISE_NOT_DONE(name) throw ::exercise::NotDone(name ": not done yet")
+
+// vi1_back_seam.cpp: s of the cylinder at θ in [0°, 360°).
+double cylinderS(double thetaDegrees);
+// vi2_torus_front.cpp: (s, t) of the torus at (θ, φ) in [0°, 360°).
+glm::dvec2 torusST(double thetaDegrees, double phiDegrees);
+// lab1_blit.cpp: the texture mapped by nearest neighbour onto width x height pixels.
+ts::Image blit(const ts::Image& texture, int width, int height);
+// mirror_wrap.cpp: the texel GL_MIRRORED_REPEAT with GL_NEAREST reads at s.
+int mirrorTexel(double s, int size);
+}  // namespace exercise

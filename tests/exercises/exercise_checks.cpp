@@ -1,0 +1,422 @@
+// tests/exercises/exercise_checks.cpp — see exercise_checks.hpp.
+#include "exercise_checks.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <sys/stat.h>
+
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+#include "common/core/layout.hpp"
+#include "common/core/mesh.hpp"
+#include "common/core/textures.hpp"
+#include "common/gl/render.hpp"
+#include "demos/cylinder_seam/cylinder_measure.hpp"
+#include "demos/torus/torus_measure.hpp"
+#include "demos/wrap_modes/wrap_math.hpp"
+#include "exercises/exercise.hpp"
+
+namespace exercise_check {
+namespace {
+// A value the checked code returned that is no number.
+struct NotANumber : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+double finite(double v, const std::string& call) {
+  if (!std::isfinite(v)) throw NotANumber(call + " returned " + (std::isnan(v) ? "NaN" : "infinity"));
+  return v;
+}
+
+// One check's line: what was measured, what was expected, pass or fail.
+bool line(bool pass, const std::string& text) {
+  std::printf("  %s: %s\n", text.c_str(), pass ? "pass" : "FAIL");
+  return pass;
+}
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+// The picture: yours | reference | difference (red where a channel differs
+// by more than 1), side by side; returns the differing pixels' count.
+// `counted` (may be null): which pixels count as differing, when the
+// check decides it (ties a verifier accepts), row by row.
+int comparison(const ts::Image& mine, const ts::Image& ref, const std::string& path, const std::vector<bool>* counted = nullptr) {
+  const int w = ref.width, h = ref.height;
+  ts::Image out(3 * w + 16, h, {30, 30, 34, 255}), diff(w, h, {0, 0, 0, 255});
+  int differing = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const ts::Rgba a = x < mine.width && y < mine.height ? mine.at(x, y) : ts::Rgba{0, 0, 0, 255}, b = ref.at(x, y);
+      const bool differs = counted ? bool((*counted)[size_t(y) * size_t(w) + size_t(x)])
+                                   : std::abs(a.r - b.r) > 1 || std::abs(a.g - b.g) > 1 || std::abs(a.b - b.b) > 1;
+      differing += differs;
+      diff.set(x, y, differs ? ts::Rgba{255, 40, 40, 255} : ts::Rgba{uint8_t(b.r / 4), uint8_t(b.g / 4), uint8_t(b.b / 4), 255});
+    }
+  out.blit(mine, 0, 0), out.blit(ref, w + 8, 0), out.blit(diff, 2 * w + 16, 0);
+  ts::writePng(path, out);
+  std::printf("  picture: %s (yours | reference | difference: %d pixels differ)\n", path.c_str(), differing);
+  return differing;
+}
+
+// A mesh drawn with `texture` at 256 x 256 through `projection` and `modelview`.
+ts::Image meshPicture(ts::Renderer& r, const ts::Mesh& mesh, const ts::TextureDesc& texture, const glm::mat4& projection,
+                      const glm::mat4& modelview) {
+  ts::Frame f = ts::layout::blankFrame(256, 256);
+  ts::Panel p;
+  p.id = "picture";
+  p.viewport = {0, 0, 256, 256};
+  p.projection = projection, p.modelview = modelview, p.depthTest = true;
+  ts::Batch b = ts::meshBatch(mesh, f.addTexture(texture));
+  b.texEnv = GL_REPLACE;
+  p.batches.push_back(b);
+  f.panels.push_back(p);
+  return r.renderOffscreen(f);
+}
+
+// Exercise VI.1: cylinder_seam's measurement (cylinder_measure.hpp) of a
+// cylinder whose columns get the checked s, at 6 and 10 slices (a patch
+// centred on θ = 180° in both).
+bool checkBackSeam(const Functions& fn, ts::Renderer& r, const std::string& picture) {
+  bool ok = true;
+  for (int slices : {6, 10}) {
+    cylinder::Params cp;
+    cp.slices = slices;
+    cp.sOfTheta = [&](double th) { return finite(fn.cylinderS(th), "cylinderS(" + fmt("%g", th) + ")"); };
+    const std::vector<cylinder::PatchResult> res = cylinder::measurePatches(r, cp);
+    // The patch where the texture's edges meet: the one whose s, as the
+    // render shows it, passes a whole number inside it.
+    std::vector<int> seams;
+    double worstSpan = res[0].span, worstErr = 0;
+    for (int k = 0; k < slices; ++k) {
+      const double a = cylinder::sOf(cp, k), b = a + res[size_t(k)].span;
+      if (std::floor(std::min(a, b) + 1e-9) != std::floor(std::max(a, b) - 1e-9)) seams.push_back(k);
+      if (std::abs(res[size_t(k)].span - 1.0 / slices) > std::abs(worstSpan - 1.0 / slices)) worstSpan = res[size_t(k)].span;
+      worstErr = std::max(worstErr, res[size_t(k)].texelErr);
+    }
+    const std::string n = std::to_string(slices) + " slices: ";
+    if (seams.size() == 1) {
+      const double centre = std::fmod(cylinder::thetaDeg(slices, seams[0]) + 180.0 / slices + 360.0, 360.0);
+      ok &= line(std::abs(centre - 180.0) < 1e-6,
+                 n + "the texture's edges meet in the patch at theta = " + fmt("%.1f", centre) + " deg, expected 180");
+    } else {
+      ok &= line(false, n + "the texture's edges meet in " + std::to_string(seams.size()) + " patches, expected 1 (at theta = 180 deg)");
+    }
+    ok &= line(std::abs(worstSpan - 1.0 / slices) < 0.01,
+               n + "every patch forwards: the worst shows ds = " + fmt("%+.4f", worstSpan) + ", expected " +
+                   fmt("%+.4f", 1.0 / slices) + " each");
+    ok &= line(worstErr < 1.5, n + "the render shows the s given: largest error " + fmt("%.2f", worstErr) +
+                                   " texels of 2048, expected < 1.5");
+  }
+  // The picture: the cylinder from behind (the seam's side), yours and the suite's.
+  cylinder::Params mine, ref;
+  mine.slices = ref.slices = 10;
+  mine.sOfTheta = [&](double th) { return finite(fn.cylinderS(th), "cylinderS"); };
+  const Functions sol = reference(Impl::Solution);
+  ref.sOfTheta = sol.cylinderS;
+  const glm::mat4 proj = glm::perspective(glm::radians(40.0f), 1.0f, 0.5f, 20.0f);
+  const glm::mat4 view = glm::lookAt(glm::vec3(0, 1.2f, -4.5f), glm::vec3(0), glm::vec3(0, 1, 0));
+  const ts::TextureDesc label = ts::labelledGrid(512, 8);
+  comparison(meshPicture(r, cylinder::mesh(mine), label, proj, view), meshPicture(r, cylinder::mesh(ref), label, proj, view),
+             picture);
+  return ok;
+}
+
+// The torus demo's default camera (torus.cpp: tilt 35 deg, turn 0).
+glm::mat4 torusModelview(const torus::Params& p) {
+  glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -float(torus::eyeDistance(p))));
+  return glm::rotate(m, glm::radians(35.0f), glm::vec3(1, 0, 0));
+}
+
+// Exercise VI.2: the torus demo's measurement (torus_measure.hpp).
+bool checkTorusFront(const Functions& fn, ts::Renderer& r, const std::string& picture) {
+  torus::Params tp;
+  tp.stOfAngles = [&](double th, double ph) {
+    const glm::dvec2 st = fn.torusST(th, ph);
+    const std::string call = "torusST(" + fmt("%g", th) + ", " + fmt("%g", ph) + ")";
+    return glm::dvec2(finite(st.x, call), finite(st.y, call));
+  };
+  const glm::mat4 proj = glm::perspective(glm::radians(35.0f), 1.0f, 0.5f, 20.0f);
+  const torus::Found fd = torus::find(r, tp, proj, torusModelview(tp));
+  const glm::dvec3 want(0.0, 0.0, tp.R + tp.r);
+  bool ok = line(fd.visible, std::string("the texture centre (1/2, 1/2) is seen in the render from the front: ") +
+                                 (fd.visible ? "yes" : "no") + ", expected yes");
+  const double d = fd.visible ? glm::distance(fd.point, want) : std::numeric_limits<double>::infinity();
+  ok &= line(d <= 0.01, "it lands at (" + fmt("%.3f", fd.point.x) + ", " + fmt("%.3f", fd.point.y) + ", " +
+                            fmt("%.3f", fd.point.z) + "), expected (0, 0, " + fmt("%.1f", want.z) +
+                            ") = R + r on the z axis: distance " + (fd.visible ? fmt("%.4f", d) : "-") + ", within 0.01");
+  torus::Params ref;
+  ref.mapping = torus::Mapping::Front;
+  const ts::TextureDesc checker = ts::labelledGrid(512, 8);
+  comparison(meshPicture(r, torus::mesh(tp), checker, proj, torusModelview(tp)),
+             meshPicture(r, torus::mesh(ref), checker, proj, torusModelview(ref)), picture);
+  return ok;
+}
+
+// The image GL draws: a screen-aligned quad with `texture`, GL_NEAREST,
+// its row 0 at the top (t = 0 up there), at w x h.
+ts::Image glBlit(ts::Renderer& r, const ts::TextureDesc& texture, int w, int h) {
+  ts::Frame f = ts::layout::blankFrame(w, h);
+  ts::Panel p = ts::layout::unitPanel("quad", {0, 0, w, h});
+  ts::TextureDesc t = texture;
+  t.minFilter = t.magFilter = GL_NEAREST;
+  ts::Batch b;
+  b.role = "quad";
+  b.texture = f.addTexture(t);
+  b.texEnv = GL_REPLACE;
+  for (glm::vec2 c : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)})
+    b.vertices.push_back({glm::vec3(c, 0.0f), glm::vec4(c.x, 1.0f - c.y, 0.0f, 1.0f), glm::vec4(1.0f)});
+  p.batches.push_back(b);
+  f.panels.push_back(p);
+  return r.renderOffscreen(f);
+}
+// How many texel columns take 1 pixel, 2 pixels, ... along row 0 of an
+// image of texel indices.
+std::map<int, int> pixelsPerColumn(const ts::Image& img, int texels) {
+  std::vector<int> count(size_t(texels), 0);
+  for (int x = 0; x < img.width; ++x) {
+    int i = 0, j = 0;
+    ts::decodeTexelIndex(img.at(x, 0), &i, &j);
+    if (i >= 0 && i < texels) ++count[size_t(i)];
+  }
+  std::map<int, int> out;
+  for (int c : count) ++out[c];
+  return out;
+}
+
+// Seed 002's lab, task 1: the student's blit against GL's GL_NEAREST quad.
+bool checkBlit(const Functions& fn, ts::Renderer& r, const std::string& picture) {
+  const ts::TextureDesc tex = ts::texelIndexTexture(256);
+  bool ok = true;
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{300, 200}, {512, 512}, {200, 300}}) {
+    const std::string n = std::to_string(w) + "x" + std::to_string(h) + ": ";
+    const ts::Image mine = fn.blit(*tex.image, w, h), gl = glBlit(r, tex, w, h);
+    if (mine.width != w || mine.height != h) {
+      ok &= line(false, n + "your image is " + std::to_string(mine.width) + "x" + std::to_string(mine.height) +
+                            ", expected " + std::to_string(w) + "x" + std::to_string(h));
+      continue;
+    }
+    // A pixel differs when its texel is not GL's, except at a tie: where the
+    // pixel centre's texel coordinate (x + 1/2) 256 / w is a whole number,
+    // GL may take either neighbour (its interpolation is in float), and so
+    // may you.
+    auto tie = [](int x, int size) { return (2 * x + 1) * 256 % (2 * size) == 0; };
+    int differ = 0;
+    std::vector<bool> counted(size_t(w) * size_t(h), false);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        int mi = 0, mj = 0, gi = 0, gj = 0;
+        ts::decodeTexelIndex(mine.at(x, y), &mi, &mj);
+        ts::decodeTexelIndex(gl.at(x, y), &gi, &gj);
+        const bool iOk = mi == gi || (tie(x, w) && std::abs(mi - gi) == 1);
+        const bool jOk = mj == gj || (tie(y, h) && std::abs(mj - gj) == 1);
+        counted[size_t(y) * size_t(w) + size_t(x)] = mine.at(x, y).a != 255 || !(iOk && jOk);
+        differ += counted[size_t(y) * size_t(w) + size_t(x)];
+      }
+    ok &= line(differ == 0, n + std::to_string(differ) + " pixels differ from GL_NEAREST's, expected 0");
+    // The counts along a row, against the closed form: pixel x shows texel
+    // floor((2x + 1) 256 / 2w), in integers.
+    std::map<int, int> want;
+    {
+      std::vector<int> per(256, 0);
+      for (int x = 0; x < w; ++x) ++per[size_t((2 * x + 1) * 256 / (2 * w))];
+      for (int c : per) ++want[c];
+    }
+    std::map<int, int> m = pixelsPerColumn(mine, 256);
+    if (w == 300) {
+      ok &= line(m[2] == want[2], "across 300 pixels " + std::to_string(m[2]) + " texel columns take 2 pixels, expected " +
+                                      std::to_string(want[2]));
+      ok &= line(m[1] == want[1], "across 300 pixels " + std::to_string(m[1]) + " take 1, expected " + std::to_string(want[1]));
+    }
+    if (w == 200)
+      ok &= line(m[0] == want[0], "across 200 pixels " + std::to_string(m[0]) + " texel columns are never shown, expected " +
+                                      std::to_string(want[0]));
+    if (w == 300) comparison(mine, gl, picture, &counted);
+  }
+  return ok;
+}
+
+// Seed 002's MIRROR: the student's texel against GL_MIRRORED_REPEAT's, read
+// from points drawn one per pixel at exactly the coordinates checked.
+bool checkMirror(const Functions& fn, ts::Renderer& r, const std::string& picture) {
+  bool ok = true;
+  ts::Image strips(1000, 2 * 24 + 8, {30, 30, 34, 255}), glStrips = strips;
+  int row = 0;
+  for (int size : {8, 37}) {
+    std::vector<double> between, integers;
+    for (int k = 0; k < 1000; ++k) between.push_back(-3.0 + 6.0 * (k + 0.5) / 1000.0);  // never an integer
+    for (int k = -3; k <= 3; ++k) integers.push_back(k);
+    // Just beside the integers (1e-4: far above float's precision at |s| <= 3).
+    for (double s : {-2.0, -1.0, 1.0, 2.0}) between.push_back(s + 1e-4), between.push_back(s - 1e-4);
+    for (const auto* set : {&between, &integers}) {
+      const std::vector<double>& ss = *set;
+      const int w = int(ss.size());
+      ts::Frame f = ts::layout::blankFrame(w, 1);
+      ts::Panel p = ts::layout::unitPanel("points", {0, 0, w, 1});
+      ts::TextureDesc t = ts::texelIndexTexture(size);
+      t.minFilter = t.magFilter = GL_NEAREST;
+      t.wrapS = GL_MIRRORED_REPEAT;
+      ts::Batch b;
+      b.role = "samples";
+      b.prim = ts::Prim::Points;
+      b.texture = f.addTexture(t);
+      b.texEnv = GL_REPLACE;
+      for (int k = 0; k < w; ++k)
+        b.vertices.push_back({glm::vec3((k + 0.5f) / float(w), 0.5f, 0.0f), glm::vec4(float(ss[size_t(k)]), 0.5f / size, 0.0f, 1.0f),
+                              glm::vec4(1.0f)});
+      p.batches.push_back(b);
+      f.panels.push_back(p);
+      const ts::Image gl = r.renderOffscreen(f);
+      int mismatches = 0;
+      for (int k = 0; k < w; ++k) {
+        int gi = 0, gj = 0;
+        ts::decodeTexelIndex(gl.at(k, 0), &gi, &gj);
+        const int mine = fn.mirrorTexel(ss[size_t(k)], size);
+        if (mine < 0 || mine >= size) throw std::runtime_error("mirrorTexel(" + fmt("%g", ss[size_t(k)]) + ", " +
+                                                               std::to_string(size) + ") returned " + std::to_string(mine) +
+                                                               ", outside 0.." + std::to_string(size - 1));
+        // At a texel boundary (s size a whole number, but s not: the
+        // integers are checked apart) GL's float arithmetic may take either
+        // texel, and so may you.
+        const double u = ss[size_t(k)] * size, sNow = ss[size_t(k)];
+        const bool tie = set == &between && std::abs(u - std::round(u)) < 1e-6;
+        const int lo = wrap::nearestTexel(GL_MIRRORED_REPEAT, sNow - 1e-7, size),
+                  hi = wrap::nearestTexel(GL_MIRRORED_REPEAT, sNow + 1e-7, size);
+        const bool accepted = mine == gi || (tie && (mine == lo || mine == hi));
+        mismatches += !accepted;
+        if (accepted) gi = mine;  // the picture shows what counts
+        if (set == &between && k < 1000) {  // the picture: a grey level per texel, yours over GL's
+          const uint8_t a = uint8_t(255 * mine / (size - 1)), g = uint8_t(255 * gi / (size - 1));
+          for (int y = 0; y < 24; ++y) strips.set(k, row * 32 + y, {a, a, a, 255}), glStrips.set(k, row * 32 + y, {g, g, g, 255});
+        }
+      }
+      ok &= line(mismatches == 0, std::to_string(size) + " texels, " +
+                                      (set == &between ? std::to_string(w) + " coordinates from -3 to 3 between integers"
+                                                       : std::string("the 7 integers s = -3..3")) +
+                                      ": " + std::to_string(mismatches) + " texels differ from GL_MIRRORED_REPEAT's, expected 0");
+    }
+    ++row;
+  }
+  comparison(strips, glStrips, picture);
+  return ok;
+}
+
+[[noreturn]] void crash() {
+  std::raise(SIGSEGV);
+  std::abort();
+}
+[[noreturn]] void hang() {
+  for (volatile int spin = 0;; spin = spin + 1) {
+  }
+}
+}  // namespace
+
+Functions reference(Impl impl) {
+  Functions f;
+  switch (impl) {
+    case Impl::Mine:
+      break;
+    case Impl::Solution:
+      // cylinder_math.hpp: Exercise VI.1 adds 1/2 (Seam::Back); GL_REPEAT does the rest.
+      f.cylinderS = [](double th) { return th / 360.0 + 0.5; };
+      // torus_math.hpp: the front mapping adds offset(Mapping::Front) = (1/2, 1/2).
+      f.torusST = [](double th, double ph) { return glm::dvec2(th, ph) / 360.0 + torus::offset(torus::Mapping::Front); };
+      // wrap_math.hpp: GL_NEAREST's texel at s = (x + 1/2) / w, t = (y + 1/2) / h.
+      f.blit = [](const ts::Image& t, int w, int h) {
+        ts::Image out(w, h);
+        for (int y = 0; y < h; ++y)
+          for (int x = 0; x < w; ++x)
+            out.set(x, y, t.at(wrap::nearestTexel(GL_CLAMP_TO_EDGE, (x + 0.5) / w, t.width),
+                               wrap::nearestTexel(GL_CLAMP_TO_EDGE, (y + 0.5) / h, t.height)));
+        return out;
+      };
+      f.mirrorTexel = [](double s, int size) { return wrap::nearestTexel(GL_MIRRORED_REPEAT, s, size); };
+      break;
+    case Impl::Wrong:
+      // The book's own s = θ/360: the seam stays at the front.
+      f.cylinderS = [](double th) { return th / 360.0; };
+      // s moved, t = φ/360 unchanged: the centre lands at φ = 180°, inside.
+      f.torusST = [](double th, double ph) { return glm::dvec2(th / 360.0 + 0.5, ph / 360.0); };
+      // The pixel's corner, not its centre: texel floor(x · 256 / w).
+      f.blit = [](const ts::Image& t, int w, int h) {
+        ts::Image out(w, h);
+        for (int y = 0; y < h; ++y)
+          for (int x = 0; x < w; ++x) out.set(x, y, t.at(x * t.width / w, y * t.height / h));
+        return out;
+      };
+      // Seed 002's program as printed.
+      f.mirrorTexel = [](double s, int size) { return wrap::seedMirrorTexel(s, size); };
+      break;
+    case Impl::Crash:
+      f.cylinderS = [](double) -> double { crash(); };
+      f.torusST = [](double, double) -> glm::dvec2 { crash(); };
+      f.blit = [](const ts::Image&, int, int) -> ts::Image { crash(); };
+      f.mirrorTexel = [](double, int) -> int { crash(); };
+      break;
+    case Impl::Hang:
+      f.cylinderS = [](double) -> double { hang(); };
+      f.torusST = [](double, double) -> glm::dvec2 { hang(); };
+      f.blit = [](const ts::Image&, int, int) -> ts::Image { hang(); };
+      f.mirrorTexel = [](double, int) -> int { hang(); };
+      break;
+    case Impl::Nan:
+      f.cylinderS = [](double) { return std::nan(""); };
+      f.torusST = [](double, double) { return glm::dvec2(std::nan("")); };
+      f.blit = [](const ts::Image& t, int w, int h) {  // a blit has no number to be NaN: a wrong size
+        (void)t;
+        return ts::Image(w / 2, h);
+      };
+      f.mirrorTexel = [](double, int size) { return size * 2; };  // out of range
+      break;
+  }
+  return f;
+}
+
+const std::vector<Exercise>& exercises() {
+  static const std::vector<Exercise> all = {
+      {"vi1_back_seam", "Buss, Exercise VI.1", "build/bin/cylinder_seam --seam back --coords right", checkBackSeam},
+      {"vi2_torus_front", "Buss, Exercise VI.2", "build/bin/torus --mapping front", checkTorusFront},
+      {"lab1_blit", "seed 002, lab task 1", "build/bin/quad_distortion --filter nearest", checkBlit},
+      {"mirror_wrap", "seed 002, MIRROR", "build/bin/wrap_modes", checkMirror},
+  };
+  return all;
+}
+
+const Exercise* find(const std::string& name) {
+  for (const Exercise& e : exercises())
+    if (name == e.name) return &e;
+  return nullptr;
+}
+
+std::string namesList() {
+  std::string s;
+  for (const Exercise& e : exercises()) s += (s.empty() ? "" : ", ") + std::string(e.name);
+  return s;
+}
+
+bool run(const Exercise& ex, const Functions& f, ts::Renderer& r, const std::string& outDir) {
+  std::printf("%s (%s, exercises/%s.cpp)\n", ex.name, ex.source, ex.name);
+  mkdir(outDir.c_str(), 0755);
+  bool ok = false;
+  try {
+    ok = ex.check(f, r, outDir + "/" + ex.name + ".png");
+  } catch (const exercise::NotDone& e) {
+    (void)e;
+    std::printf("%s: FAIL: not done yet (write it in exercises/%s.cpp)\n", ex.name, ex.name);
+    return false;
+  } catch (const NotANumber& e) {
+    std::printf("%s: FAIL: %s\n", ex.name, e.what());
+    return false;
+  } catch (const std::exception& e) {
+    std::printf("%s: FAIL: %s\n", ex.name, e.what());
+    return false;
+  }
+  std::printf("  the reference in a window: %s\n%s: %s\n", ex.see, ex.name, ok ? "PASS" : "FAIL");
+  return ok;
+}
+}  // namespace exercise_check

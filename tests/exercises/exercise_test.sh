@@ -1,0 +1,58 @@
+#!/bin/bash
+# tests/exercises/exercise_test.sh CHECKER — the exercises' checker checked:
+#   the suite's solutions pass every check (exit 0);
+#   the stubs as handed out fail each exercise with "not done yet" (exit 1);
+#   a deliberately wrong solution fails each exercise with its own message;
+#   code that crashes, loops or returns NaN fails in one line, and the next
+#   exercise is still checked;
+#   bad usage: one line on stderr, exit 2.
+set -u
+checker=$1
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+fails=0
+expect() {  # expect WHAT CONDITION-RESULT
+  if [ "$2" = 0 ]; then echo "ok: $1"; else echo "FAILED: $1"; fails=$((fails + 1)); fi
+}
+has() { grep -qF -- "$2" <<<"$1"; echo $?; }
+names="vi1_back_seam vi2_torus_front lab1_blit mirror_wrap"
+
+r=$("$checker" --all --solutions --out "$out"); code=$?
+expect "the solutions pass (exit 0, got $code)" $([ $code = 0 ]; echo $?)
+for n in $names; do expect "solution $n: PASS" "$(has "$r" "$n: PASS")"; done
+expect "the solutions' pictures are written" $([ -s "$out/vi1_back_seam.png" ] && [ -s "$out/lab1_blit.png" ]; echo $?)
+
+r=$("$checker" --all --out "$out"); code=$?
+expect "the stubs fail (exit 1, got $code)" $([ $code = 1 ]; echo $?)
+for n in $names; do expect "stub $n: not done yet" "$(has "$r" "$n: FAIL: not done yet")"; done
+
+r=$("$checker" --all --wrong --out "$out"); code=$?
+expect "the wrong solutions fail (exit 1, got $code)" $([ $code = 1 ]; echo $?)
+expect "wrong vi1 (the book's front seam): edges meet at theta = 0" "$(has "$r" "the texture's edges meet in the patch at theta = 0.0 deg, expected 180: FAIL")"
+expect "wrong vi2 (t unchanged): the centre is not seen from the front" "$(has "$r" "is seen in the render from the front: no, expected yes: FAIL")"
+expect "wrong lab1 (pixel corners): pixels differ from GL_NEAREST" "$(has "$r" "300x200: 45920 pixels differ from GL_NEAREST's, expected 0: FAIL")"
+expect "wrong mirror (seed 002 as printed): differs at the integers" "$(has "$r" "8 texels, the 7 integers s = -3..3: 7 texels differ from GL_MIRRORED_REPEAT's, expected 0: FAIL")"
+expect "wrong mirror agrees between integers" "$(has "$r" "8 texels, 1008 coordinates from -3 to 3 between integers: 0 texels differ")"
+for n in $names; do expect "wrong $n: FAIL" "$(has "$r" "| $n | FAIL")"; done
+
+r=$("$checker" --all --impl crash --out "$out"); code=$?
+expect "crashing code fails (exit 1, got $code)" $([ $code = 1 ]; echo $?)
+for n in $names; do expect "crash $n: one line" "$(has "$r" "$n: FAIL: your code crashed (signal 11")"; done
+
+r=$("$checker" vi1_back_seam mirror_wrap --impl hang --time-limit 2 --out "$out"); code=$?
+expect "looping code fails (exit 1, got $code)" $([ $code = 1 ]; echo $?)
+for n in vi1_back_seam mirror_wrap; do expect "hang $n: one line" "$(has "$r" "$n: FAIL: your code did not finish within 2 s")"; done
+
+r=$("$checker" --all --impl nan --out "$out"); code=$?
+expect "NaN fails (exit 1, got $code)" $([ $code = 1 ]; echo $?)
+expect "nan vi1: named" "$(has "$r" "vi1_back_seam: FAIL: cylinderS(")"
+expect "nan vi2: named" "$(has "$r" "vi2_torus_front: FAIL: torusST(")"
+expect "out of range mirror: named" "$(has "$r" "mirror_wrap: FAIL: mirrorTexel(")"
+
+err=$("$checker" no_such_exercise 2>&1 >/dev/null); code=$?
+expect "an unknown exercise: exit 2 (got $code), one line" $([ $code = 2 ] && [ "$(wc -l <<<"$err")" = 1 ]; echo $?)
+err=$("$checker" 2>&1 >/dev/null); code=$?
+expect "no exercise named: exit 2 (got $code)" $([ $code = 2 ]; echo $?)
+
+echo "$fails failed"
+[ $fails = 0 ]
