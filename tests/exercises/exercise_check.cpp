@@ -113,8 +113,11 @@ std::string runIsolated(const exercise_check::Exercise& ex, Impl impl, const std
     const std::string head = std::string(ex.name) + ": ";
     for (size_t at = text.find(head); at != std::string::npos; at = text.find(head, at + 1))
       if (at == 0 || text[at - 1] == '\n') verdict = text.substr(at, text.find('\n', at) - at);
-    if (verdict.empty()) verdict = head + "FAIL: the check ended without a verdict";
-    return verdict;
+    if (!verdict.empty()) return verdict;
+    // No verdict: the code died in a way the process survived long enough
+    // to exit (a sanitizer's report, exit()); say so in one line.
+    verdict = head + "FAIL: your code crashed (exit status " +
+              std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ", no report)";
   }
   std::printf("%s\n", verdict.c_str());
   return verdict;

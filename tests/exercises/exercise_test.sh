@@ -37,7 +37,8 @@ for n in $names; do expect "wrong $n: FAIL" "$(has "$r" "| $n | FAIL")"; done
 
 r=$("$checker" --all --impl crash --out "$out"); code=$?
 expect "crashing code fails (exit 1, got $code)" $([ $code = 1 ]; echo $?)
-for n in $names; do expect "crash $n: one line" "$(has "$r" "$n: FAIL: your code crashed (signal 11")"; done
+# (signal 11 here; under a sanitizer, which catches the signal, an exit status)
+for n in $names; do expect "crash $n: one line" "$(has "$r" "$n: FAIL: your code crashed (")"; done
 
 r=$("$checker" vi1_back_seam mirror_wrap --impl hang --time-limit 2 --out "$out"); code=$?
 expect "looping code fails (exit 1, got $code)" $([ $code = 1 ]; echo $?)
