@@ -9,6 +9,7 @@
 #pragma once
 #include <glm/vec2.hpp>
 
+#include <functional>
 #include <stdexcept>
 
 #include "common/core/image.hpp"
@@ -28,4 +29,11 @@ glm::dvec2 torusST(double thetaDegrees, double phiDegrees);
 ts::Image blit(const ts::Image& texture, int width, int height);
 // mirror_wrap.cpp: the texel GL_MIRRORED_REPEAT with GL_NEAREST reads at s.
 int mirrorTexel(double s, int size);
+// scanline.cpp: a triangle's vertex, in pixels (x right, y down), with its
+// texture coordinates; plot(x, y, s, t) for each pixel the triangle covers.
+struct ScanVertex {
+  double x = 0, y = 0, s = 0, t = 0;
+};
+using Plot = std::function<void(int x, int y, double s, double t)>;
+void scanlineTriangle(const ScanVertex v[3], const Plot& plot);
 }  // namespace exercise

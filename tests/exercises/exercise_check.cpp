@@ -50,6 +50,7 @@ exercise_check::Functions functions(Impl impl) {
   f.torusST = exercise::torusST;
   f.blit = exercise::blit;
   f.mirrorTexel = exercise::mirrorTexel;
+  f.scanline = exercise::scanlineTriangle;
   return f;
 }
 

@@ -4,6 +4,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -19,6 +21,7 @@
 #include "demos/torus/torus_measure.hpp"
 #include "demos/wrap_modes/wrap_math.hpp"
 #include "exercises/exercise.hpp"
+#include "reference/raster.hpp"
 
 namespace exercise_check {
 namespace {
@@ -306,6 +309,76 @@ bool checkMirror(const Functions& fn, ts::Renderer& r, const std::string& pictur
   return ok;
 }
 
+
+// Seed 002's scanline texturer: the student's plots against the suite's CPU
+// rasterizer (reference/raster.hpp, OpenGL's fill rule) on four cases.
+struct ScanCase {
+  const char* name;
+  std::vector<std::array<exercise::ScanVertex, 3>> triangles;
+};
+bool checkScanline(const Functions& fn, ts::Renderer&, const std::string& picture) {
+  using exercise::ScanVertex;
+  auto st = [](double x, double y) { return ScanVertex{x, y, x / 64.0, y / 64.0}; };
+  const std::vector<ScanCase> cases = {
+      {"seed 002's triangle (8,4) (56,20) (20,60)", {{ScanVertex{8, 4, 0, 0}, ScanVertex{56, 20, 1, 0}, ScanVertex{20, 60, 0, 1}}}},
+      {"a flat-top triangle (8,8) (56,8) (30,50)", {{st(8, 8), st(56, 8), st(30, 50)}}},
+      {"a flat-bottom triangle (30,6) (8,50) (56,50)", {{st(30, 6), st(8, 50), st(56, 50)}}},
+      {"two triangles sharing the edge (56,8)-(8,56)", {{st(8, 8), st(56, 8), st(8, 56)}, {st(56, 8), st(56, 56), st(8, 56)}}},
+  };
+  constexpr int S = 64, Z = 3;
+  ts::Image mineAll(4 * S * Z, S * Z, {0, 0, 0, 255}), refAll = mineAll;
+  std::vector<bool> counted(size_t(4 * S * Z) * size_t(S * Z), false);
+  bool ok = true;
+  for (size_t c = 0; c < cases.size(); ++c) {
+    std::vector<int> count(S * S, 0), refCount(S * S, 0);
+    std::vector<glm::dvec2> mineST(S * S), refST(S * S);
+    long outside = 0, plotted = 0;
+    for (const auto& tri : cases[c].triangles) {
+      fn.scanline(tri.data(), [&](int x, int y, double s, double t) {
+        if (++plotted > 1000000) throw std::runtime_error("scanlineTriangle plotted more than a million pixels");
+        if (x < 0 || y < 0 || x >= S || y >= S) return void(++outside);
+        count[size_t(y * S + x)]++;
+        mineST[size_t(y * S + x)] = {finite(s, "plot's s"), finite(t, "plot's t")};
+      });
+      ref::ScreenVertex r[3];
+      for (int k = 0; k < 3; ++k) r[k].x = tri[size_t(k)].x, r[k].y = tri[size_t(k)].y, r[k].a[0] = tri[size_t(k)].s, r[k].a[1] = tri[size_t(k)].t;
+      ref::scanTriangle(r[0], r[1], r[2], 2, {0, 0, S, S}, ref::FillRule::GLTopLeft, [&](int x, int y, const double* a) {
+        refCount[size_t(y * S + x)]++;
+        refST[size_t(y * S + x)] = {a[0], a[1]};
+      });
+    }
+    long missing = 0, extra = outside, other = 0, twice = 0;
+    for (int p = 0; p < S * S; ++p) {
+      const int m = count[size_t(p)], g = refCount[size_t(p)];
+      missing += m == 0 && g > 0;
+      extra += m > 0 && g == 0;
+      twice += m > 1;
+      const bool sameST = m == 0 || g == 0 || glm::length(mineST[size_t(p)] - refST[size_t(p)]) <= 1e-6;
+      other += !sameST;
+      const bool bad = (m == 0) != (g == 0) || m > 1 || !sameST;
+      // The picture: (s, t) as red and green, three times the size; blue where covered twice.
+      auto colour = [](int n, glm::dvec2 v) {
+        return n == 0 ? ts::Rgba{0, 0, 0, 255}
+                      : ts::Rgba{uint8_t(std::clamp(v.x, 0.0, 1.0) * 255), uint8_t(std::clamp(v.y, 0.0, 1.0) * 255),
+                                 uint8_t(n > 1 ? 255 : 60), 255};
+      };
+      for (int dy = 0; dy < Z; ++dy)
+        for (int dx = 0; dx < Z; ++dx) {
+          const int X = int(c) * S * Z + (p % S) * Z + dx, Y = (p / S) * Z + dy;
+          mineAll.set(X, Y, colour(m, mineST[size_t(p)]));
+          refAll.set(X, Y, colour(g, refST[size_t(p)]));
+          counted[size_t(Y) * size_t(4 * S * Z) + size_t(X)] = bad;
+        }
+    }
+    ok &= line(missing + extra + other + twice == 0,
+               std::string(cases[c].name) + ": " + std::to_string(missing) + " pixels missing, " + std::to_string(extra) +
+                   " extra, " + std::to_string(other) + " with other (s,t), " + std::to_string(twice) +
+                   " covered twice; expected 0");
+  }
+  comparison(mineAll, refAll, picture, &counted);
+  return ok;
+}
+
 [[noreturn]] void crash() {
   std::raise(SIGSEGV);
   std::abort();
@@ -336,6 +409,13 @@ Functions reference(Impl impl) {
         return out;
       };
       f.mirrorTexel = [](double s, int size) { return wrap::nearestTexel(GL_MIRRORED_REPEAT, s, size); };
+      // reference/raster.hpp: the seed's algorithm made to follow OpenGL's rules.
+      f.scanline = [](const exercise::ScanVertex* v, const exercise::Plot& plot) {
+        ref::ScreenVertex r[3];
+        for (int k = 0; k < 3; ++k) r[k].x = v[k].x, r[k].y = v[k].y, r[k].a[0] = v[k].s, r[k].a[1] = v[k].t;
+        ref::scanTriangle(r[0], r[1], r[2], 2, {-4096, -4096, 4096, 4096}, ref::FillRule::GLTopLeft,
+                          [&](int x, int y, const double* a) { plot(x, y, a[0], a[1]); });
+      };
       break;
     case Impl::Wrong:
       // The book's own s = θ/360: the seam stays at the front.
@@ -351,18 +431,34 @@ Functions reference(Impl impl) {
       };
       // Seed 002's program as printed.
       f.mirrorTexel = [](double s, int size) { return wrap::seedMirrorTexel(s, size); };
+      // No fill rule: every centre on an edge is in, so a shared edge is drawn twice.
+      f.scanline = [](const exercise::ScanVertex* v, const exercise::Plot& plot) {
+        auto edge = [&](int a, int b, double x, double y) {
+          return (v[b].x - v[a].x) * (y - v[a].y) - (v[b].y - v[a].y) * (x - v[a].x);
+        };
+        const double area = edge(0, 1, v[2].x, v[2].y);
+        for (int y = 0; y < 64; ++y)
+          for (int x = 0; x < 64; ++x) {
+            const double w0 = edge(1, 2, x + 0.5, y + 0.5) / area, w1 = edge(2, 0, x + 0.5, y + 0.5) / area,
+                         w2 = edge(0, 1, x + 0.5, y + 0.5) / area;
+            if (w0 >= 0 && w1 >= 0 && w2 >= 0)
+              plot(x, y, w0 * v[0].s + w1 * v[1].s + w2 * v[2].s, w0 * v[0].t + w1 * v[1].t + w2 * v[2].t);
+          }
+      };
       break;
     case Impl::Crash:
       f.cylinderS = [](double) -> double { crash(); };
       f.torusST = [](double, double) -> glm::dvec2 { crash(); };
       f.blit = [](const ts::Image&, int, int) -> ts::Image { crash(); };
       f.mirrorTexel = [](double, int) -> int { crash(); };
+      f.scanline = [](const exercise::ScanVertex*, const exercise::Plot&) { crash(); };
       break;
     case Impl::Hang:
       f.cylinderS = [](double) -> double { hang(); };
       f.torusST = [](double, double) -> glm::dvec2 { hang(); };
       f.blit = [](const ts::Image&, int, int) -> ts::Image { hang(); };
       f.mirrorTexel = [](double, int) -> int { hang(); };
+      f.scanline = [](const exercise::ScanVertex*, const exercise::Plot&) { hang(); };
       break;
     case Impl::Nan:
       f.cylinderS = [](double) { return std::nan(""); };
@@ -372,6 +468,7 @@ Functions reference(Impl impl) {
         return ts::Image(w / 2, h);
       };
       f.mirrorTexel = [](double, int size) { return size * 2; };  // out of range
+      f.scanline = [](const exercise::ScanVertex*, const exercise::Plot& plot) { plot(10, 10, std::nan(""), 0.0); };
       break;
   }
   return f;
@@ -383,6 +480,7 @@ const std::vector<Exercise>& exercises() {
       {"vi2_torus_front", "Buss, Exercise VI.2", "build/bin/torus --mapping front", checkTorusFront},
       {"lab1_blit", "seed 002, lab task 1", "build/bin/quad_distortion --filter nearest", checkBlit},
       {"mirror_wrap", "seed 002, MIRROR", "build/bin/wrap_modes", checkMirror},
+      {"scanline", "seed 002, the scanline texturer", "build/bin/perspective_correction --interp affine", checkScanline},
   };
   return all;
 }

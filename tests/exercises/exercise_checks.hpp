@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/core/image.hpp"
+#include "exercises/exercise.hpp"
 
 namespace ts {
 class Renderer;
@@ -26,6 +27,7 @@ struct Functions {
   std::function<glm::dvec2(double, double)> torusST;
   std::function<ts::Image(const ts::Image&, int, int)> blit;
   std::function<int(double, int)> mirrorTexel;
+  std::function<void(const exercise::ScanVertex*, const exercise::Plot&)> scanline;
 };
 // The suite's own implementations of `impl` (empty for Impl::Mine).
 Functions reference(Impl impl);

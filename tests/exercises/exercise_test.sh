@@ -15,7 +15,8 @@ expect() {  # expect WHAT CONDITION-RESULT
   if [ "$2" = 0 ]; then echo "ok: $1"; else echo "FAILED: $1"; fails=$((fails + 1)); fi
 }
 has() { grep -qF -- "$2" <<<"$1"; echo $?; }
-names="vi1_back_seam vi2_torus_front lab1_blit mirror_wrap"
+names="vi1_back_seam vi2_torus_front lab1_blit mirror_wrap scanline"
+stubs="vi1_back_seam vi2_torus_front lab1_blit mirror_wrap"  # scanline's stub is seed 002's algorithm, not empty
 
 r=$("$checker" --all --solutions --out "$out"); code=$?
 expect "the solutions pass (exit 0, got $code)" $([ $code = 0 ]; echo $?)
@@ -24,7 +25,10 @@ expect "the solutions' pictures are written" $([ -s "$out/vi1_back_seam.png" ] &
 
 r=$("$checker" --all --out "$out"); code=$?
 expect "the stubs fail (exit 1, got $code)" $([ $code = 1 ]; echo $?)
-for n in $names; do expect "stub $n: not done yet" "$(has "$r" "$n: FAIL: not done yet")"; done
+for n in $stubs; do expect "stub $n: not done yet" "$(has "$r" "$n: FAIL: not done yet")"; done
+expect "scanline's stub (seed 002 as printed) fails with its pixel counts" "$(has "$r" "seed 002's triangle (8,4) (56,20) (20,60): ")"
+expect "scanline's stub fails on the shared edge" "$(has "$r" "two triangles sharing the edge (56,8)-(8,56): 1128 pixels missing")"
+expect "scanline's stub: FAIL" "$(has "$r" "| scanline | FAIL |")"
 
 r=$("$checker" --all --wrong --out "$out"); code=$?
 expect "the wrong solutions fail (exit 1, got $code)" $([ $code = 1 ]; echo $?)
@@ -33,6 +37,7 @@ expect "wrong vi2 (t unchanged): the centre is not seen from the front" "$(has "
 expect "wrong lab1 (pixel corners): pixels differ from GL_NEAREST" "$(has "$r" "300x200: 45920 pixels differ from GL_NEAREST's, expected 0: FAIL")"
 expect "wrong mirror (seed 002 as printed): differs at the integers" "$(has "$r" "8 texels, the 7 integers s = -3..3: 7 texels differ from GL_MIRRORED_REPEAT's, expected 0: FAIL")"
 expect "wrong mirror agrees between integers" "$(has "$r" "8 texels, 1008 coordinates from -3 to 3 between integers: 0 texels differ")"
+expect "wrong scanline (no fill rule): the shared edge covered twice" "$(has "$r" "two triangles sharing the edge (56,8)-(8,56): 0 pixels missing, 0 extra, 0 with other (s,t), 48 covered twice; expected 0: FAIL")"
 for n in $names; do expect "wrong $n: FAIL" "$(has "$r" "| $n | FAIL")"; done
 
 r=$("$checker" --all --impl crash --out "$out"); code=$?
@@ -49,6 +54,7 @@ expect "NaN fails (exit 1, got $code)" $([ $code = 1 ]; echo $?)
 expect "nan vi1: named" "$(has "$r" "vi1_back_seam: FAIL: cylinderS(")"
 expect "nan vi2: named" "$(has "$r" "vi2_torus_front: FAIL: torusST(")"
 expect "out of range mirror: named" "$(has "$r" "mirror_wrap: FAIL: mirrorTexel(")"
+expect "nan scanline: named" "$(has "$r" "scanline: FAIL: plot's s returned NaN")"
 
 err=$("$checker" no_such_exercise 2>&1 >/dev/null); code=$?
 expect "an unknown exercise: exit 2 (got $code), one line" $([ $code = 2 ] && [ "$(wc -l <<<"$err")" = 1 ]; echo $?)
