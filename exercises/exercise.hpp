@@ -8,6 +8,7 @@
 // checked).  The reference solutions are not here: they are the demos'.
 #pragma once
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <functional>
 #include <stdexcept>
@@ -36,4 +37,10 @@ struct ScanVertex {
 };
 using Plot = std::function<void(int x, int y, double s, double t)>;
 void scanlineTriangle(const ScanVertex v[3], const Plot& plot);
+// lab2_cube.cpp: (s, t) of a cube corner as a vertex of face 0..5 (+X, -X, +Y, -Y, +Z, -Z).
+glm::dvec2 cubeST(int face, glm::dvec3 corner);
+// lab3_planar_wrap.cpp: (tu, tv) of a planar wrap along axis 0, 1, 2 (X, Y, Z).
+glm::dvec2 planarWrap(glm::dvec3 p, int axis, double scale, glm::dvec3 c);
+// sphere_map.cpp: GL_SPHERE_MAP's (s, t) from the eye-space position and unit normal.
+glm::dvec2 sphereMap(glm::dvec3 eyePosition, glm::dvec3 eyeNormal);
 }  // namespace exercise

@@ -51,6 +51,9 @@ exercise_check::Functions functions(Impl impl) {
   f.blit = exercise::blit;
   f.mirrorTexel = exercise::mirrorTexel;
   f.scanline = exercise::scanlineTriangle;
+  f.cubeST = exercise::cubeST;
+  f.planarWrap = exercise::planarWrap;
+  f.sphereMap = exercise::sphereMap;
   return f;
 }
 

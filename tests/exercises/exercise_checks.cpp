@@ -379,6 +379,173 @@ bool checkScanline(const Functions& fn, ts::Renderer&, const std::string& pictur
   return ok;
 }
 
+
+// The cube's faces: outward normal, up (the texture's top), right = up x n.
+struct Face {
+  const char* name;
+  glm::dvec3 n, up;
+  glm::dvec3 right() const { return glm::cross(up, n); }
+};
+const Face kFaces[6] = {{"+X", {1, 0, 0}, {0, 1, 0}},  {"-X", {-1, 0, 0}, {0, 1, 0}}, {"+Y", {0, 1, 0}, {0, 0, -1}},
+                        {"-Y", {0, -1, 0}, {0, 0, 1}}, {"+Z", {0, 0, 1}, {0, 1, 0}},  {"-Z", {0, 0, -1}, {0, 1, 0}}};
+
+// Seed 002's task 2: each face drawn head-on from outside, (s, t) read at
+// (+-0.9, +-0.9) of its right and up axes from a texel-index render.
+bool checkCube(const Functions& fn, ts::Renderer& r, const std::string& picture) {
+  constexpr int S = 128;
+  const ts::TextureDesc tex = ts::texelIndexTexture(256);
+  const ts::TextureDesc label = ts::labelledGrid(256, 4);
+  bool ok = true;
+  ts::Image mineAll(6 * S, S), refAll(6 * S, S);
+  const Functions sol = reference(Impl::Solution);
+  for (int f = 0; f < 6; ++f) {
+    const Face& face = kFaces[f];
+    auto draw = [&](const ts::TextureDesc& t, const std::function<glm::dvec2(int, glm::dvec3)>& st) {
+      ts::Frame fr = ts::layout::blankFrame(S, S);
+      ts::Panel p;
+      p.id = std::string("face_") + face.name;
+      p.viewport = {0, 0, S, S};
+      p.projection = glm::ortho(-1.2f, 1.2f, -1.2f, 1.2f, 0.5f, 10.0f);
+      p.modelview = glm::lookAt(glm::vec3(3.0 * face.n), glm::vec3(0.0f), glm::vec3(face.up));
+      ts::Batch b;
+      b.role = "face";
+      b.texture = fr.addTexture(t);
+      b.texEnv = GL_REPLACE;
+      const glm::dvec3 c[4] = {face.n - face.right() - face.up, face.n + face.right() - face.up,
+                               face.n + face.right() + face.up, face.n - face.right() + face.up};
+      glm::dvec2 v[4];
+      for (int k = 0; k < 4; ++k) {
+        v[k] = st(f, c[k]);
+        finite(v[k].x, "cubeST"), finite(v[k].y, "cubeST");
+      }
+      for (int k : {0, 1, 2, 0, 2, 3})
+        b.vertices.push_back({glm::vec3(c[k]), glm::vec4(float(v[k].x), float(v[k].y), 0.0f, 1.0f), glm::vec4(1.0f)});
+      p.batches.push_back(b);
+      fr.panels.push_back(p);
+      return r.renderOffscreen(fr);
+    };
+    const ts::Image img = draw(tex, fn.cubeST);
+    // (a, b) on the face -> its pixel: x from -1.2 to 1.2 across, y down.
+    auto read = [&](double a, double b) {
+      const int x = int((a + 1.2) / 2.4 * S), y = int((1.2 - b) / 2.4 * S);
+      int i = 0, j = 0;
+      ts::decodeTexelIndex(img.at(x, y), &i, &j);
+      return glm::dvec2((i + 0.5) / 256, (j + 0.5) / 256);
+    };
+    const glm::dvec2 bl = read(-0.9, -0.9), br = read(0.9, -0.9), tr = read(0.9, 0.9), tl = read(-0.9, 0.9);
+    const double err = std::max({glm::length(bl - glm::dvec2(0.05, 0.05)), glm::length(br - glm::dvec2(0.95, 0.05)),
+                                 glm::length(tr - glm::dvec2(0.95, 0.95)), glm::length(tl - glm::dvec2(0.05, 0.95))});
+    std::string how = "";
+    if (br.x < bl.x) how = " (mirrored left-right)";
+    else if (tl.y < bl.y) how = " (upside down)";
+    else if (std::abs(tl.x - bl.x) > 0.3 || std::abs(br.y - bl.y) > 0.3) how = " (turned)";
+    char b[240];
+    std::snprintf(b, sizeof b,
+                  "face %s: (s,t) near its corners (%.2f,%.2f) (%.2f,%.2f) (%.2f,%.2f) (%.2f,%.2f)%s, expected (0.05,0.05) "
+                  "(0.95,0.05) (0.95,0.95) (0.05,0.95) within 0.02",
+                  face.name, bl.x, bl.y, br.x, br.y, tr.x, tr.y, tl.x, tl.y, how.c_str());
+    ok &= line(err <= 0.02, b);
+    mineAll.blit(draw(label, fn.cubeST), f * S, 0);
+    refAll.blit(draw(label, sol.cubeST), f * S, 0);
+  }
+  comparison(mineAll, refAll, picture);
+  return ok;
+}
+
+// Seed 002's task 3: the planar wrap against the corrected formulas, at
+// 1,000 points along each axis, scale 0.75 and a centre off the origin.
+bool checkPlanarWrap(const Functions& fn, ts::Renderer&, const std::string&) {
+  const Functions sol = reference(Impl::Solution);
+  const glm::dvec3 c(0.1, -0.2, 0.3);
+  bool ok = true;
+  uint32_t seed = 12345;
+  auto rnd = [&]() { return (seed = seed * 1664525u + 1013904223u) / 4294967296.0 * 4.0 - 2.0; };
+  for (int axis = 0; axis < 3; ++axis) {
+    int mismatches = 0;
+    double worst = 0;
+    for (int k = 0; k < 1000; ++k) {
+      const glm::dvec3 p(rnd(), rnd(), rnd());
+      const glm::dvec2 m = fn.planarWrap(p, axis, 0.75, c), want = sol.planarWrap(p, axis, 0.75, c);
+      finite(m.x, "planarWrap"), finite(m.y, "planarWrap");
+      const double d = glm::length(m - want);
+      worst = std::max(worst, d);
+      mismatches += d > 1e-9;
+    }
+    ok &= line(mismatches == 0, std::string("along ") + "XYZ"[axis] + ": " + std::to_string(mismatches) +
+                                    " of 1000 points differ from the corrected formula (largest " + fmt("%.3f", worst) +
+                                    "), expected 0");
+  }
+  std::printf("  (the comparison with GL_OBJECT_LINEAR texgen comes with the projectors demo)\n");
+  return ok;
+}
+
+// GL_SPHERE_MAP: 1,000 points drawn with that texgen, one per pixel, their
+// eye-space positions and normals given directly (the modelview is the
+// identity), read back through a 2048-texel index texture.
+bool checkSphereMap(const Functions& fn, ts::Renderer& r, const std::string& picture) {
+  constexpr int W = 40, H = 25, N = 2048;
+  std::vector<glm::dvec3> pos, nor;
+  uint32_t seed = 777;
+  auto rnd = [&]() { return (seed = seed * 1664525u + 1013904223u) / 4294967296.0; };
+  for (int k = 0; k < W * H; ++k) {
+    const double x = -1.0 + 2.0 * ((k % W) + 0.5) / W, y = -1.0 + 2.0 * ((k / W) + 0.5) / H, z = -2.0 - 4.0 * rnd();
+    glm::dvec3 n(rnd() * 2 - 1, rnd() * 2 - 1, rnd() + 0.2);
+    pos.push_back({x, y, z}), nor.push_back(glm::normalize(n));
+  }
+  const ts::TextureDesc tex = ts::texelIndexTexture(N);
+  const ts::Image img = r.offscreen(W, H, "the sphere map check", [&](GLuint) {
+    glViewport(0, 0, W, H);
+    glDisable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(-1, 1, -1, 1, 1, 10);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glEnable(GL_TEXTURE_2D);
+    r.texture(tex);  // bound, GL_NEAREST
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);
+    glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);
+    glEnable(GL_TEXTURE_GEN_S);
+    glEnable(GL_TEXTURE_GEN_T);
+    glPointSize(1.0f);
+    glBegin(GL_POINTS);
+    for (size_t k = 0; k < pos.size(); ++k) {
+      glNormal3f(float(nor[k].x), float(nor[k].y), float(nor[k].z));
+      glVertex3f(float(pos[k].x), float(pos[k].y), float(pos[k].z));
+    }
+    glEnd();
+    glDisable(GL_TEXTURE_GEN_S);
+    glDisable(GL_TEXTURE_GEN_T);
+    glDisable(GL_TEXTURE_2D);
+  });
+  int far = 0;
+  double worst = 0;
+  ts::Image mine(W, H), gl(W, H);
+  for (int k = 0; k < W * H; ++k) {
+    const int x = k % W, y = H - 1 - k / W;  // the image's row 0 is the top
+    int i = 0, j = 0;
+    ts::decodeTexelIndex(img.at(x, y), &i, &j);
+    const glm::dvec2 got((i + 0.5) / N, (j + 0.5) / N);
+    const glm::dvec2 m = fn.sphereMap(pos[size_t(k)], nor[size_t(k)]);
+    finite(m.x, "sphereMap"), finite(m.y, "sphereMap");
+    const double d = std::max(std::abs(m.x - got.x), std::abs(m.y - got.y)) * N;
+    worst = std::max(worst, d);
+    far += d > 1.5;
+    auto colour = [](glm::dvec2 v) {
+      return ts::Rgba{uint8_t(std::clamp(v.x, 0.0, 1.0) * 255), uint8_t(std::clamp(v.y, 0.0, 1.0) * 255), 128, 255};
+    };
+    mine.set(x, y, colour(m)), gl.set(x, y, colour(got));
+  }
+  const bool ok = line(far == 0, std::to_string(far) + " of 1000 points more than 1.5 texels of 2048 from GL_SPHERE_MAP's (s,t) "
+                                 "(largest " + fmt("%.1f", worst) + " texels), expected 0");
+  ts::Image big(W * 8, H * 8), bigGl(W * 8, H * 8);
+  for (int y = 0; y < H * 8; ++y)
+    for (int x = 0; x < W * 8; ++x) big.set(x, y, mine.at(x / 8, y / 8)), bigGl.set(x, y, gl.at(x / 8, y / 8));
+  comparison(big, bigGl, picture);
+  return ok;
+}
+
 [[noreturn]] void crash() {
   std::raise(SIGSEGV);
   std::abort();
@@ -416,6 +583,23 @@ Functions reference(Impl impl) {
         ref::scanTriangle(r[0], r[1], r[2], 2, {-4096, -4096, 4096, 4096}, ref::FillRule::GLTopLeft,
                           [&](int x, int y, const double* a) { plot(x, y, a[0], a[1]); });
       };
+      // Each face's own planar map: s along its right, t along its up (Buss: 24 vertices).
+      f.cubeST = [](int face, glm::dvec3 c) {
+        const Face& fc = kFaces[face];
+        return glm::dvec2(glm::dot(c, fc.right()) + 1, glm::dot(c, fc.up) + 1) / 2.0;
+      };
+      // Seed 002's planar wraps, along Z corrected (tv from y, not x).
+      f.planarWrap = [](glm::dvec3 p, int axis, double s, glm::dvec3 c) {
+        if (axis == 0) return glm::dvec2(s * p.z - c.z, s * p.y - c.y);
+        if (axis == 1) return glm::dvec2(s * p.x - c.x, s * p.z - c.z);
+        return glm::dvec2(s * p.x - c.x, s * p.y - c.y);
+      };
+      // OpenGL 2.1 §2.12.4: u = the unit vector to the vertex, r = u - 2 n (n . u).
+      f.sphereMap = [](glm::dvec3 e, glm::dvec3 n) {
+        const glm::dvec3 u = glm::normalize(e), rf = u - 2.0 * glm::dot(n, u) * n;
+        const double m = 2.0 * std::sqrt(rf.x * rf.x + rf.y * rf.y + (rf.z + 1) * (rf.z + 1));
+        return glm::dvec2(rf.x / m + 0.5, rf.y / m + 0.5);
+      };
       break;
     case Impl::Wrong:
       // The book's own s = θ/360: the seam stays at the front.
@@ -445,6 +629,16 @@ Functions reference(Impl impl) {
               plot(x, y, w0 * v[0].s + w1 * v[1].s + w2 * v[2].s, w0 * v[0].t + w1 * v[1].t + w2 * v[2].t);
           }
       };
+      // One projection along Z for every face, as for a flat picture.
+      f.cubeST = [](int, glm::dvec3 c) { return glm::dvec2(c.x + 1, c.y + 1) / 2.0; };
+      // Seed 002's planar wrap as printed: along Z, tv from x.
+      f.planarWrap = [](glm::dvec3 p, int axis, double s, glm::dvec3 c) {
+        if (axis == 0) return glm::dvec2(s * p.z - c.z, s * p.y - c.y);
+        if (axis == 1) return glm::dvec2(s * p.x - c.x, s * p.z - c.z);
+        return glm::dvec2(s * p.x - c.x, s * p.x - c.y);
+      };
+      // Seed 002's sphere map: from the normal alone.
+      f.sphereMap = [](glm::dvec3, glm::dvec3 n) { return glm::dvec2(n.x / 2 + 0.5, n.y / 2 + 0.5); };
       break;
     case Impl::Crash:
       f.cylinderS = [](double) -> double { crash(); };
@@ -452,6 +646,9 @@ Functions reference(Impl impl) {
       f.blit = [](const ts::Image&, int, int) -> ts::Image { crash(); };
       f.mirrorTexel = [](double, int) -> int { crash(); };
       f.scanline = [](const exercise::ScanVertex*, const exercise::Plot&) { crash(); };
+      f.cubeST = [](int, glm::dvec3) -> glm::dvec2 { crash(); };
+      f.planarWrap = [](glm::dvec3, int, double, glm::dvec3) -> glm::dvec2 { crash(); };
+      f.sphereMap = [](glm::dvec3, glm::dvec3) -> glm::dvec2 { crash(); };
       break;
     case Impl::Hang:
       f.cylinderS = [](double) -> double { hang(); };
@@ -459,6 +656,9 @@ Functions reference(Impl impl) {
       f.blit = [](const ts::Image&, int, int) -> ts::Image { hang(); };
       f.mirrorTexel = [](double, int) -> int { hang(); };
       f.scanline = [](const exercise::ScanVertex*, const exercise::Plot&) { hang(); };
+      f.cubeST = [](int, glm::dvec3) -> glm::dvec2 { hang(); };
+      f.planarWrap = [](glm::dvec3, int, double, glm::dvec3) -> glm::dvec2 { hang(); };
+      f.sphereMap = [](glm::dvec3, glm::dvec3) -> glm::dvec2 { hang(); };
       break;
     case Impl::Nan:
       f.cylinderS = [](double) { return std::nan(""); };
@@ -469,6 +669,9 @@ Functions reference(Impl impl) {
       };
       f.mirrorTexel = [](double, int size) { return size * 2; };  // out of range
       f.scanline = [](const exercise::ScanVertex*, const exercise::Plot& plot) { plot(10, 10, std::nan(""), 0.0); };
+      f.cubeST = [](int, glm::dvec3) { return glm::dvec2(std::nan("")); };
+      f.planarWrap = [](glm::dvec3, int, double, glm::dvec3) { return glm::dvec2(std::nan("")); };
+      f.sphereMap = [](glm::dvec3, glm::dvec3) { return glm::dvec2(std::nan("")); };
       break;
   }
   return f;
@@ -481,6 +684,9 @@ const std::vector<Exercise>& exercises() {
       {"lab1_blit", "seed 002, lab task 1", "build/bin/quad_distortion --filter nearest", checkBlit},
       {"mirror_wrap", "seed 002, MIRROR", "build/bin/wrap_modes", checkMirror},
       {"scanline", "seed 002, the scanline texturer", "build/bin/perspective_correction --interp affine", checkScanline},
+      {"lab2_cube", "seed 002, lab task 2; Buss VI.1.2", "build/bin/quad_distortion", checkCube},
+      {"lab3_planar_wrap", "seed 002, lab task 3", "build/bin/sphere_projections", checkPlanarWrap},
+      {"sphere_map", "seeds 001, 002; Buss VI.3", "build/bin/environment_mapping", checkSphereMap},
   };
   return all;
 }

@@ -28,6 +28,9 @@ struct Functions {
   std::function<ts::Image(const ts::Image&, int, int)> blit;
   std::function<int(double, int)> mirrorTexel;
   std::function<void(const exercise::ScanVertex*, const exercise::Plot&)> scanline;
+  std::function<glm::dvec2(int, glm::dvec3)> cubeST;
+  std::function<glm::dvec2(glm::dvec3, int, double, glm::dvec3)> planarWrap;
+  std::function<glm::dvec2(glm::dvec3, glm::dvec3)> sphereMap;
 };
 // The suite's own implementations of `impl` (empty for Impl::Mine).
 Functions reference(Impl impl);
