@@ -43,4 +43,6 @@ glm::dvec2 cubeST(int face, glm::dvec3 corner);
 glm::dvec2 planarWrap(glm::dvec3 p, int axis, double scale, glm::dvec3 c);
 // sphere_map.cpp: GL_SPHERE_MAP's (s, t) from the eye-space position and unit normal.
 glm::dvec2 sphereMap(glm::dvec3 eyePosition, glm::dvec3 eyeNormal);
+// bump_gradient.cpp: Blinn's bumped normal from seed 002's height differences.
+glm::dvec3 bumpNormal(glm::dvec3 Qs, glm::dvec3 Qt, double gx, double gy, double ds, double dt, double scale);
 }  // namespace exercise

@@ -54,6 +54,7 @@ exercise_check::Functions functions(Impl impl) {
   f.cubeST = exercise::cubeST;
   f.planarWrap = exercise::planarWrap;
   f.sphereMap = exercise::sphereMap;
+  f.bumpNormal = exercise::bumpNormal;
   return f;
 }
 

@@ -17,6 +17,8 @@
 #include "common/core/mesh.hpp"
 #include "common/core/textures.hpp"
 #include "common/gl/render.hpp"
+#include "common/core/torus.hpp"
+#include "demos/bump_mapping/bump_math.hpp"
 #include "demos/cylinder_seam/cylinder_measure.hpp"
 #include "demos/torus/torus_measure.hpp"
 #include "demos/wrap_modes/wrap_math.hpp"
@@ -546,6 +548,41 @@ bool checkSphereMap(const Functions& fn, ts::Renderer& r, const std::string& pic
   return ok;
 }
 
+
+// Seed 002's differences as Blinn's normal, measured as bump_mapping
+// measures its methods: the angle to the truly displaced surface's normal
+// at the same (s, t), on the demo's torus, heights and height scale.
+bool checkBumpGradient(const Functions& fn, ts::Renderer&, const std::string&) {
+  const bump::Heights H = bump::procedural(256);  // repeated rep = (4, 2) times around
+  const double R = 1.0, r = 0.4, scale = 0.04;
+  const double ds = 1.0 / (H.w * H.rep.x), dt = 1.0 / (H.h * H.rep.y);
+  double sum = 0, worst = 0, tiltSum = 0;
+  int n = 0;
+  for (int y = 0; y < H.h; y += 8)
+    for (int x = 0; x < H.w; x += 8) {
+      const glm::dvec2 st((x + 0.5) * ds, (y + 0.5) * dt);
+      const ts::TorusFrame f = ts::torusFrameAt(R, r, st);
+      const double gx = H.at(x + 1, y) - H.at(x - 1, y), gy = H.at(x, y + 1) - H.at(x, y - 1);
+      const glm::dvec3 mine = fn.bumpNormal(f.Qs, f.Qt, gx, gy, ds, dt, scale);
+      for (int k = 0; k < 3; ++k) finite(mine[k], "bumpNormal");
+      if (glm::length(mine) < 1e-12) throw std::runtime_error("bumpNormal returned the zero vector");
+      // The displaced surface Q + P N, P = scale h: its normal from P's
+      // derivatives by a fourth-order stencil (the answer's are second-order).
+      auto d4 = [&](int dx, int dy) {
+        return (-H.at(x + 2 * dx, y + 2 * dy) + 8.0 * H.at(x + dx, y + dy) - 8.0 * H.at(x - dx, y - dy) +
+                H.at(x - 2 * dx, y - 2 * dy)) / 12.0;
+      };
+      const double P = scale * H.at(x, y), Ps = scale * d4(1, 0) / ds, Pt = scale * d4(0, 1) / dt;
+      const glm::dvec3 truth = glm::cross(f.Qs + Ps * f.N + P * f.Ns, f.Qt + Pt * f.N + P * f.Nt);
+      const double a = glm::degrees(std::acos(std::clamp(glm::dot(glm::normalize(mine), glm::normalize(truth)), -1.0, 1.0)));
+      sum += a, worst = std::max(worst, a), ++n;
+      tiltSum += glm::degrees(std::acos(std::clamp(glm::dot(glm::normalize(truth), f.N), -1.0, 1.0)));
+    }
+  std::printf("  (the displaced surface's normals lean %.2f deg from the smooth torus's on average)\n", tiltSum / n);
+  return line(sum / n <= 1.0, "mean angle to the displaced surface's normal over " + std::to_string(n) + " texels: " +
+                                  fmt("%.2f", sum / n) + " deg (largest " + fmt("%.2f", worst) + "), expected at most 1");
+}
+
 [[noreturn]] void crash() {
   std::raise(SIGSEGV);
   std::abort();
@@ -600,6 +637,13 @@ Functions reference(Impl impl) {
         const double m = 2.0 * std::sqrt(rf.x * rf.x + rf.y * rf.y + (rf.z + 1) * (rf.z + 1));
         return glm::dvec2(rf.x / m + 0.5, rf.y / m + 0.5);
       };
+      // bump_gl.hpp's B1: P_s, P_t from the central differences, then seed 004's (Blinn's) form.
+      f.bumpNormal = [](glm::dvec3 Qs, glm::dvec3 Qt, double gx, double gy, double ds, double dt, double scale) {
+        const double Ps = scale * gx / (2 * ds), Pt = scale * gy / (2 * dt);
+        const glm::dvec3 nv = glm::cross(Qs, Qt);
+        const double len = glm::length(nv);
+        return nv + Ps * glm::cross(nv, Qt) / len + Pt * glm::cross(Qs, nv) / len;
+      };
       break;
     case Impl::Wrong:
       // The book's own s = θ/360: the seam stays at the front.
@@ -639,6 +683,10 @@ Functions reference(Impl impl) {
       };
       // Seed 002's sphere map: from the normal alone.
       f.sphereMap = [](glm::dvec3, glm::dvec3 n) { return glm::dvec2(n.x / 2 + 0.5, n.y / 2 + 0.5); };
+      // The differences added to the unit normal as they are, along the unit tangents (no texel size, no scale).
+      f.bumpNormal = [](glm::dvec3 Qs, glm::dvec3 Qt, double gx, double gy, double, double, double) {
+        return glm::normalize(glm::cross(Qs, Qt)) + gx * glm::normalize(Qs) + gy * glm::normalize(Qt);
+      };
       break;
     case Impl::Crash:
       f.cylinderS = [](double) -> double { crash(); };
@@ -649,6 +697,7 @@ Functions reference(Impl impl) {
       f.cubeST = [](int, glm::dvec3) -> glm::dvec2 { crash(); };
       f.planarWrap = [](glm::dvec3, int, double, glm::dvec3) -> glm::dvec2 { crash(); };
       f.sphereMap = [](glm::dvec3, glm::dvec3) -> glm::dvec2 { crash(); };
+      f.bumpNormal = [](glm::dvec3, glm::dvec3, double, double, double, double, double) -> glm::dvec3 { crash(); };
       break;
     case Impl::Hang:
       f.cylinderS = [](double) -> double { hang(); };
@@ -659,6 +708,7 @@ Functions reference(Impl impl) {
       f.cubeST = [](int, glm::dvec3) -> glm::dvec2 { hang(); };
       f.planarWrap = [](glm::dvec3, int, double, glm::dvec3) -> glm::dvec2 { hang(); };
       f.sphereMap = [](glm::dvec3, glm::dvec3) -> glm::dvec2 { hang(); };
+      f.bumpNormal = [](glm::dvec3, glm::dvec3, double, double, double, double, double) -> glm::dvec3 { hang(); };
       break;
     case Impl::Nan:
       f.cylinderS = [](double) { return std::nan(""); };
@@ -672,6 +722,7 @@ Functions reference(Impl impl) {
       f.cubeST = [](int, glm::dvec3) { return glm::dvec2(std::nan("")); };
       f.planarWrap = [](glm::dvec3, int, double, glm::dvec3) { return glm::dvec2(std::nan("")); };
       f.sphereMap = [](glm::dvec3, glm::dvec3) { return glm::dvec2(std::nan("")); };
+      f.bumpNormal = [](glm::dvec3, glm::dvec3, double, double, double, double, double) { return glm::dvec3(std::nan("")); };
       break;
   }
   return f;
@@ -687,6 +738,7 @@ const std::vector<Exercise>& exercises() {
       {"lab2_cube", "seed 002, lab task 2; Buss VI.1.2", "build/bin/quad_distortion", checkCube},
       {"lab3_planar_wrap", "seed 002, lab task 3", "build/bin/sphere_projections", checkPlanarWrap},
       {"sphere_map", "seeds 001, 002; Buss VI.3", "build/bin/environment_mapping", checkSphereMap},
+      {"bump_gradient", "seeds 002, 004", "build/bin/bump_mapping", checkBumpGradient},
   };
   return all;
 }

@@ -31,6 +31,7 @@ struct Functions {
   std::function<glm::dvec2(int, glm::dvec3)> cubeST;
   std::function<glm::dvec2(glm::dvec3, int, double, glm::dvec3)> planarWrap;
   std::function<glm::dvec2(glm::dvec3, glm::dvec3)> sphereMap;
+  std::function<glm::dvec3(glm::dvec3, glm::dvec3, double, double, double, double, double)> bumpNormal;
 };
 // The suite's own implementations of `impl` (empty for Impl::Mine).
 Functions reference(Impl impl);

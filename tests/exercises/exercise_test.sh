@@ -15,8 +15,8 @@ expect() {  # expect WHAT CONDITION-RESULT
   if [ "$2" = 0 ]; then echo "ok: $1"; else echo "FAILED: $1"; fails=$((fails + 1)); fi
 }
 has() { grep -qF -- "$2" <<<"$1"; echo $?; }
-names="vi1_back_seam vi2_torus_front lab1_blit mirror_wrap scanline lab2_cube lab3_planar_wrap sphere_map"
-stubs="vi1_back_seam vi2_torus_front lab1_blit mirror_wrap lab2_cube lab3_planar_wrap sphere_map"  # scanline's stub is seed 002's algorithm, not empty
+names="vi1_back_seam vi2_torus_front lab1_blit mirror_wrap scanline lab2_cube lab3_planar_wrap sphere_map bump_gradient"
+stubs="vi1_back_seam vi2_torus_front lab1_blit mirror_wrap lab2_cube lab3_planar_wrap sphere_map bump_gradient"  # scanline's stub is seed 002's algorithm, not empty
 
 r=$("$checker" --all --solutions --out "$out"); code=$?
 expect "the solutions pass (exit 0, got $code)" $([ $code = 0 ]; echo $?)
@@ -43,6 +43,7 @@ expect "wrong cube: +Z is right" "$(has "$r" "face +Z: (s,t) near its corners (0
 expect "wrong planar wrap (seed 002's Z as printed): Z differs, X and Y agree" "$(has "$r" "along Z: 1000 of 1000 points differ")"
 expect "wrong planar wrap: X agrees" "$(has "$r" "along X: 0 of 1000 points differ")"
 expect "wrong sphere map (seed 002's, from the normal): off GL's" "$(has "$r" "1000 of 1000 points more than 1.5 texels of 2048 from GL_SPHERE_MAP's")"
+expect "wrong bump (raw differences on the unit normal): 10.83 deg" "$(has "$r" "over 1024 texels: 10.83 deg (largest 23.30), expected at most 1: FAIL")"
 for n in $names; do expect "wrong $n: FAIL" "$(has "$r" "| $n | FAIL")"; done
 
 r=$("$checker" --all --impl crash --out "$out"); code=$?
@@ -60,7 +61,7 @@ expect "nan vi1: named" "$(has "$r" "vi1_back_seam: FAIL: cylinderS(")"
 expect "nan vi2: named" "$(has "$r" "vi2_torus_front: FAIL: torusST(")"
 expect "out of range mirror: named" "$(has "$r" "mirror_wrap: FAIL: mirrorTexel(")"
 expect "nan scanline: named" "$(has "$r" "scanline: FAIL: plot's s returned NaN")"
-for n in lab2_cube lab3_planar_wrap sphere_map; do expect "nan $n: named" "$(has "$r" "$n: FAIL: ")"; done
+for n in lab2_cube lab3_planar_wrap sphere_map bump_gradient; do expect "nan $n: named" "$(has "$r" "$n: FAIL: ")"; done
 
 err=$("$checker" no_such_exercise 2>&1 >/dev/null); code=$?
 expect "an unknown exercise: exit 2 (got $code), one line" $([ $code = 2 ] && [ "$(wc -l <<<"$err")" = 1 ]; echo $?)
