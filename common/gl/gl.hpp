@@ -41,8 +41,8 @@
   X(glTexParameterfv) X(glTexParameteri) X(glVertex2f) X(glVertex3f)           \
   X(glVertexPointer) X(glViewport) X(glDrawBuffer)                             \
   X(glNormal3f) X(glTexCoord3f) X(glTexGeni)                                   \
-  /* GL 1.3+ multitexture */                                                   \
-  X(glActiveTexture)                                                           \
+  /* GL 1.3+ multitexture, compressed textures */                             \
+  X(glActiveTexture) X(glCompressedTexImage2D) X(glGetTexLevelParameteriv)     \
   /* GL 1.4 */                                                                 \
   X(glBlendFuncSeparate) X(glSecondaryColor3f)                                 \
   /* GL 2.0+ shaders */                                                        \
@@ -166,6 +166,8 @@ bool enableDebugOutput();
 #define glViewport ts::gl::p_glViewport
 #define glDrawBuffer ts::gl::p_glDrawBuffer
 #define glActiveTexture ts::gl::p_glActiveTexture
+#define glCompressedTexImage2D ts::gl::p_glCompressedTexImage2D
+#define glGetTexLevelParameteriv ts::gl::p_glGetTexLevelParameteriv
 #define glAttachShader ts::gl::p_glAttachShader
 #define glCompileShader ts::gl::p_glCompileShader
 #define glCreateProgram ts::gl::p_glCreateProgram

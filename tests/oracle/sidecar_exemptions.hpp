@@ -4,7 +4,8 @@
 // the parallax figures show GLSL renders of the filtering modes and errors;
 // the environment mapping figures show texgen and GLSL renders of mirrors;
 // the bump-mapping figures show the displaced reference torus R, drawn from a
-// 1024 x 512 grid in a vertex array by its measure()),
+// 1024 x 512 grid in a vertex array by its measure(); the DXT1 figures show
+// GL's decode of compressed blocks),
 // so the sidecar records them by digest and by the command that makes them.
 // Every other figure must be reproducible from its JSON alone; a new figure
 // that is not fails the oracle tests until it is made reproducible or listed
@@ -15,14 +16,16 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 16> kFiguresDrawnFromGlRenders = {
+inline constexpr std::array<const char*, 18> kFiguresDrawnFromGlRenders = {
     // --footprints: the left panel is the picture GL drew, inspected
     "inspect_vi2_footprints", "inspect_aniso_footprint",
     "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step",
     // environment_mapping: its object pictures are GL renders with texgen and GLSL
     "env_cube_sphere", "env_compare_torus", "env_latlong_map", "env_cube_map", "env_flat_mirror",
     // bump_mapping: R, emboss and DOT3 are pictures its measure() draws
-    "bump_two_lights", "bump_seed002", "bump_normals", "bump_methods", "bump_emboss_overhead"};
+    "bump_two_lights", "bump_seed002", "bump_normals", "bump_methods", "bump_emboss_overhead",
+    // texture_compression: GL's decode of the DXT1 blocks (glGetTexImage), and the picture and error beside it
+    "dxt1_blocks", "dxt1_normal_map"};
 
 // Figures whose measure() takes minutes on softpipe (the parallax table: twelve
 // full-frame GLSL passes and a CPU reference per state).  The oracle checks

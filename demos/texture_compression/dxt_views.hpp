@@ -1,0 +1,106 @@
+// demos/texture_compression/dxt_views.hpp — the Frame's panels: the picture,
+// GL's decode of its DXT1 blocks, the error, and one block magnified with
+// its palette (view "blocks"); the tile cache's hit rate against its size
+// (view "memory").  Every picture is a texture of the image it shows
+// (ts::renderedImageTexture), GL_NEAREST.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "common/core/gl_call.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/plot.hpp"
+#include "common/core/textures.hpp"
+#include "dxt_measure.hpp"
+
+namespace dxt {
+// What measure() found, for the views.
+struct Result {
+  int picture = kPhoto;
+  bool threeColour = false, glDecode = false;
+  ts::Image original, decoded, error;  // decoded: GL's when it has S3TC, else the CPU's
+  std::vector<Block> blocks;
+  std::vector<CacheRun> plain, prefetched;
+  ts::gl::CallList calls;  // the round trip's GL calls: the listing's first section
+};
+
+namespace views {
+namespace L = ts::layout;
+
+// Shown minified (512 texels in ~300 pixels) with GL_LINEAR: GL_NEAREST would
+// pick between neighbouring texels at ties, where rasterizers round apart.
+inline int imageTexture(ts::Frame& f, const ts::Image& img, const std::string& what, ts::gl::CallList calls = nullptr,
+                        GLenum filter = GL_LINEAR) {
+  ts::TextureDesc t = ts::renderedImageTexture(img, "texture_compression", what, "texture_compression");
+  t.minFilter = t.magFilter = filter;
+  t.renderedBy = std::move(calls);  // GL's own work behind the picture, listed first
+  return f.addTexture(t);
+}
+
+// Picture | DXT1 | error x 8 | block (bx, by) and the 32 x 32 texels around it.
+inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const std::string& numbers) {
+  const L::Box area{8, 8, float(f.width - 8), float(f.height - 8)};
+  const std::vector<L::Cell> cells = L::flow(area, {4, 1.0f, 1, 2, 10, 2, 150});
+  const char* mode = m.threeColour ? "DXT1, every block in the 3-colour mode" : "DXT1, 4 bits per texel";
+  const std::string titles[4] = {std::string(kPictureNames[m.picture]) + ", 512 x 512, 24 bits per texel",
+                                 std::string(mode) + (m.glDecode ? " (GL's decode)" : " (CPU decode: no S3TC here)"),
+                                 "|error| x 8", "block (" + std::to_string(bx) + ", " + std::to_string(by) + ") and its palette"};
+  const ts::Image* shown[3] = {&m.original, &m.decoded, &m.error};
+  for (int k = 0; k < 3; ++k)
+    f.panels.push_back(L::texturePanel("image_" + std::to_string(k), cells[size_t(k)].picture,
+                                       imageTexture(f, *shown[k], titles[k], k == 1 ? m.calls : nullptr)));
+  // The block, 8 x 8 blocks around it magnified, outlined; its palette below.
+  const int x0 = std::clamp(bx * 4 - 14, 0, m.decoded.width - 32), y0 = std::clamp(by * 4 - 14, 0, m.decoded.height - 32);
+  ts::Image zoom(32, 32);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) zoom.set(x, y, m.decoded.at(x0 + x, y0 + y));
+  ts::Rect zr = cells[3].picture;
+  const int sw = zr.h / 6;
+  zr.h -= sw + 4;
+  zr.w = zr.h, zr.x = cells[3].picture.x + (cells[3].picture.w - zr.w) / 2;
+  ts::Panel z = L::texturePanel("block_zoom", zr, imageTexture(f, zoom, "the block magnified", nullptr, GL_NEAREST));
+  const float ux = (bx * 4 - x0) / 32.0f, uy = 1.0f - (by * 4 - y0) / 32.0f;
+  z.batches.push_back(ts::lineLoop({{ux, uy}, {ux + 0.125f, uy}, {ux + 0.125f, uy - 0.125f}, {ux, uy - 0.125f}}, L::kAmber, 2.0f,
+                                   "block_outline"));
+  f.panels.push_back(z);
+  const Block& b = m.blocks[size_t(by * (m.original.width / 4) + bx)];
+  const auto pal = palette(b.c0, b.c1);
+  ts::Panel sp = L::unitPanel("palette", {zr.x, zr.y + zr.h + 4, zr.w, sw});
+  ts::Batch quads;
+  quads.role = "palette";
+  for (int k = 0; k < 4; ++k) {
+    const glm::vec4 c(pal[size_t(k)].r / 255.0f, pal[size_t(k)].g / 255.0f, pal[size_t(k)].b / 255.0f, 1.0f);
+    const float a = k / 4.0f + 0.01f, e = (k + 1) / 4.0f - 0.01f;
+    for (glm::vec2 p : {glm::vec2(a, 0), glm::vec2(e, 0), glm::vec2(e, 1), glm::vec2(a, 0), glm::vec2(e, 1), glm::vec2(a, 1)})
+      quads.vertices.push_back({glm::vec3(p, 0.0f), glm::vec4(0, 0, 0, 1), c});
+  }
+  sp.batches.push_back(quads);
+  f.panels.push_back(sp);
+  for (int k = 0; k < 4; ++k) L::caption(f, cells[size_t(k)].above, titles[k], L::kWhite, cells[size_t(k)].scale);
+  char pals[160];
+  std::snprintf(pals, sizeof pals, "c0 %04X %s c1 %04X: %s", b.c0, b.c0 > b.c1 ? ">" : "<=", b.c1,
+                b.c0 > b.c1 ? "c2 = (2c0+c1)/3, c3 = (c0+2c1)/3" : "c2 = (c0+c1)/2, c3 = black");
+  L::caption(f, cells[3].below, pals, L::kWhite, cells[3].scale);
+  L::caption(f, {cells[0].below.x0, cells[0].below.y0, cells[2].below.x1, cells[0].below.y1}, numbers, L::kAmber,
+             cells[0].scale);
+}
+
+// The LRU tile cache: hit rate against its size, with and without prefetching.
+inline void buildMemory(ts::Frame& f, const Result& m, const std::string& numbers) {
+  ts::plot::Spec s;
+  s.title = "an LRU tile cache along a camera path (a view 6 x 6 tiles wide, 1/4 tile a frame)";
+  s.xLabel = "cache size, tiles", s.yLabel = "hit rate, %";
+  s.x0 = 24, s.x1 = 136, s.y0 = 0, s.y1 = 100;
+  s.xTicks = ts::plot::ticks(32, 128, 16), s.yTicks = ts::plot::ticks(0, 100, 20);
+  std::vector<glm::dvec2> a, b;
+  for (size_t k = 0; k < cacheSizes().size(); ++k)
+    a.push_back({double(cacheSizes()[k]), 100 * m.plain[k].hitRate()}), b.push_back({double(cacheSizes()[k]), 100 * m.prefetched[k].hitRate()});
+  s.series.push_back({"lru", glm::vec4(0.4f, 0.7f, 1.0f, 1.0f), ts::plot::Mark::Line, a});
+  s.series.push_back({"lru_prefetch", glm::vec4(1.0f, 0.75f, 0.3f, 1.0f), ts::plot::Mark::Line, b});
+  s.legend = {{"LRU", glm::vec4(0.4f, 0.7f, 1.0f, 1.0f)}, {"LRU + prefetching the next column and row", L::kAmber}};
+  const int notes = int(L::lineHeight(1)) * 3 + 8;
+  ts::plot::draw(f, s, {8, 8, f.width - 16, f.height - 16 - notes});
+  L::caption(f, {8, float(f.height - notes), float(f.width - 8), float(f.height - 4)}, numbers, L::kAmber, 1);
+}
+}  // namespace views
+}  // namespace dxt

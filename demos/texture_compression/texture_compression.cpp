@@ -1,0 +1,190 @@
+// Seed 001 ¶19–24 — texture memory: S3TC/DXT1 compression, caching, clipmaps.
+//
+// The claims (seed 001): DXT1 stores each 4x4 block in 64 bits — two
+// colours in RGB565 and two more interpolated between them, 2 bits per
+// texel to pick one — so 4 bits per texel, 4:1 against 16-bit and 6:1
+// against 24-bit texels: "a 512² texture in a 256²'s memory"; it is lossy,
+// and "bad for normal maps".  Texture memory is also managed: tiles are
+// cached, and a clipmap keeps only a window of each large level.
+//
+// The mapping equation of the codec (dxt_math.hpp, the encoder and decoder
+// written out): per block, c0 > c1 gives c2 = (2 c0 + c1)/3, c3 = (c0 + 2 c1)/3;
+// c0 <= c1 gives the 3-colour mode, c2 = (c0 + c1)/2 and c3 = black (seed
+// 001 leaves it out; key 3 shows it); each texel = palette[its 2 bits].
+//
+// Keys (each is also a flag, see --help):
+//   v  view: blocks | memory        t  picture: photo | checker | normals
+//   3  every block in the 3-colour mode        b / B, n / N  the block shown: x, y
+//
+// What the GL does (dxt_gl.hpp; the listing's first section):
+//   glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, 512, 512, 0, 131072, blocks);
+//   glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED_IMAGE_SIZE, &size);
+//   glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);   // GL's decode, shown
+// (GL_EXT_texture_compression_s3tc: llvmpipe and softpipe have it, ../shared/PLATFORM.md;
+// without it the demo says so and shows the CPU decode.)  The pictures are
+// then drawn as plain textures (book_figures/dxt1_blocks.gl.txt).
+//
+// Measured: GL's compressed size against 256 x 256 at 16 bits, the bits per
+// texel and the ratios, the most colours in any decoded block (4), GL's
+// decode against the CPU's (within 1 level), PSNR of the photo, checker and
+// normal map, the normal map's angle error, 512² DXT1 against 256² RGB565 at
+// equal memory; an LRU tile cache's hit rate with and without prefetching,
+// and a 65536² clipmap's texels against its whole mip chain.
+#include <cstdio>
+#include <string>
+
+#include "common/core/layout.hpp"
+#include "common/core/scene.hpp"
+#include "common/gl/gl_listing.hpp"
+#include "common/gl/render.hpp"
+#include "dxt_gl.hpp"
+#include "dxt_math.hpp"
+#include "dxt_measure.hpp"
+#include "dxt_views.hpp"
+
+namespace {
+using namespace dxt;
+using ts::layout::fmt;
+
+class TextureCompression final : public ts::Scene {
+ public:
+  std::string id() const override { return "texture_compression"; }
+  std::string title() const override { return "Seed 001 - texture memory: DXT1 compression, caching, clipmaps"; }
+  std::string about() const override {
+    return "A 512 x 512 picture (a photograph-like brick texture, a checkerboard, a normal map) compressed to DXT1 by\n"
+           "the encoder in dxt_math.hpp, uploaded with glCompressedTexImage2D and decoded by GL.  Prints the\n"
+           "compressed size (131,072 bytes: a 256 x 256 texture's at 16 bits), 4 bits per texel, at most 4 colours\n"
+           "per block, GL's decode against the CPU's, PSNR, the normal map's angle error, DXT1 512 against RGB565\n"
+           "256 at equal memory, an LRU tile cache's hit rate with and without prefetching, and a clipmap's size.";
+  }
+  int defaultWidth() const override { return 1280; }
+  int defaultHeight() const override { return 440; }
+  std::vector<std::string> claim() const override { return {"compressed_bytes[512]", "bits_per_texel"}; }
+
+  void addOptions(ts::Options& o) override {
+    o.addEnum("view", &view_, {"blocks", "memory"}, "the picture and its DXT1 blocks | the tile cache and the clipmap", 'v');
+    o.addEnum("picture", &picture_, {kPictureNames[0], kPictureNames[1], kPictureNames[2]},
+              "photo-like bricks | checkerboard | normal map (from the bricks' heights)", 't');
+    o.addBool("three-colour", &three_, "every block in the 3-colour mode (c0 <= c1: midpoint and black)", '3');
+    o.addInt("block-x", &bx_, 0, 127, "the block magnified: column", 'b', 'B', 1);
+    o.addInt("block-y", &by_, 0, 127, "the block magnified: row", 'n', 'N', 1);
+  }
+
+  std::vector<ts::FigureSpec> figures() const override {
+    return {
+        {"dxt1_blocks", "Seed 001 (texture compression)",
+         "A photograph-like texture, 512 x 512, compressed to DXT1 by the suite's encoder and decoded by GL; the error "
+         "magnified 8 times; one block magnified with its two RGB565 colours and the two between them.",
+         {"--view", "blocks", "--picture", "photo", "--block-x", "40", "--block-y", "14"}, 1280, 440,
+         "{compressed_bytes[512]} bytes, the same as 256 x 256 at 16 bits: {bits_per_texel} bits per texel, "
+         "{ratio_vs_rgb888}:1 against 24-bit texels; PSNR {psnr[photo]} dB; at most {max_colours_per_block} colours in a "
+         "block; GL's decode within {gl_vs_cpu_max_diff} levels of the CPU's."},
+        {"dxt1_normal_map", "Seed 001 (texture compression)",
+         "A normal map compressed to DXT1: the blocks' two-colour lines cannot follow the normals' directions, the "
+         "error concentrates at the bricks' edges.",
+         {"--view", "blocks", "--picture", "normals", "--block-x", "31", "--block-y", "15"}, 1280, 440,
+         "\"Bad for normal maps\": after DXT1 the normals are off by {normal_error_deg[mean]} degrees on average, "
+         "{normal_error_deg[max]} at most (PSNR {psnr[normals]} dB)."},
+        {"texture_memory", "Seed 001 (texture memory)",
+         "An LRU cache of texture tiles along a camera path, with and without prefetching the tiles the view moves "
+         "into next; below, a clipmap's size.",
+         {"--view", "memory"}, 1024, 520,
+         "A 65536^2 clipmap with 512^2 levels holds {clipmap_texels} texels, the whole mip chain {chain_texels} "
+         "({clipmap_saving} times more); prefetching lifts a 64-tile cache's hit rate from {cache_hit_rate[64]} to "
+         "{cache_hit_rate_prefetch[64]}, but a 48-tile one, too small for the view and what it prefetches, falls "
+         "from {cache_hit_rate[48]} to {cache_hit_rate_prefetch[48]}."},
+    };
+  }
+
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override {
+    ts::Frame f = ts::layout::blankFrame(width, height);
+    const Result* m = measured.detailAs<Result>();
+    if (!m || m->picture != picture_) {
+      ts::layout::caption(f, {8, 8, float(width - 8), float(height - 8)}, "compressing ...", ts::layout::kWhite, 2);
+      return f;
+    }
+    const std::string numbers = summary(measured);
+    if (view_ == 0) views::buildBlocks(f, *m, bx_, by_, numbers);
+    else views::buildMemory(f, *m, numbers);
+    return f;
+  }
+
+  ts::Measurements measure(ts::Renderer& r) override;
+
+ private:
+  std::string summary(const ts::Measurements& ms) const {
+    auto v = [&](const std::string& n) {
+      for (const auto& x : ms)
+        if (x.name == n) return x.value;
+      return 0.0;
+    };
+    if (view_ == 1)
+      return "clipmap of a 65536^2 texture, 512^2 a level: " + fmt("%.0f", v("clipmap_texels")) + " texels; the whole chain " +
+             fmt("%.0f", v("chain_texels")) + " (" + fmt("%.0f", v("clipmap_saving")) + " times).  DXT1: a 512^2 texture in " +
+             fmt("%.0f", v("compressed_bytes[512]")) + " bytes, a 256^2 one's at 16 bits.";
+    return fmt("%.0f", v("compressed_bytes[512]")) + " bytes (" + fmt("%.0f", v("bits_per_texel")) + " bits a texel, " +
+           fmt("%.0f", v("ratio_vs_rgb565")) + ":1 against RGB565, " + fmt("%.0f", v("ratio_vs_rgb888")) + ":1 against RGB888); PSNR " +
+           fmt("%.1f", v("psnr[" + std::string(kPictureNames[picture_]) + "]")) + " dB; at most " +
+           fmt("%.0f", v("max_colours_per_block")) + " colours a block; GL vs CPU decode: " + fmt("%.0f", v("gl_vs_cpu_max_diff")) +
+           " levels at most";
+  }
+
+  int view_ = 0, picture_ = kPhoto, bx_ = 40, by_ = 14;
+  bool three_ = false;
+};
+
+ts::Measurements TextureCompression::measure(ts::Renderer& r) {
+  Result out;
+  ts::Measurements ms;
+  out.picture = picture_, out.threeColour = three_;
+  // Every picture: PSNR (and the normal map's angles); the shown one kept.
+  for (int p = 0; p < kPictureCount; ++p) {
+    ts::measureProgress(0.1 + 0.25 * p);
+    const ts::Image img = picture(p);
+    std::vector<Block> blocks = encode(img);
+    if (three_) blocks = threeColour(blocks, img);
+    const ts::Image cpu = decode(blocks, img.width, img.height);
+    ms.push_back({"psnr[" + std::string(kPictureNames[p]) + "]", psnr(img, cpu), "dB, DXT1 (the CPU decode) against the picture"});
+    if (p == kNormals) {
+      const glm::dvec2 a = normalAngles(img, cpu);
+      ms.push_back({"normal_error_deg[mean]", a.x, "mean angle between the normals before and after DXT1, degrees"});
+      ms.push_back({"normal_error_deg[max]", a.y, "largest angle, degrees"});
+    }
+    if (p != picture_) continue;
+    GlResult g;
+    out.calls = ts::recordRender(r, [&] { g = glRoundTrip(bytes(blocks), img.width, img.height); });
+    out.glDecode = g.supported && g.compressed;
+    out.original = img, out.blocks = blocks, out.decoded = out.glDecode ? g.decoded : cpu;
+    out.error = ts::Image(img.width, img.height);
+    for (size_t k = 0; k < img.pixels.size(); ++k)
+      out.error.pixels[k] = k % 4 == 3 ? 255 : uint8_t(std::min(255, 8 * std::abs(int(img.pixels[k]) - int(cpu.pixels[k]))));
+    ms.push_back({"s3tc_supported", g.supported ? 1.0 : 0.0, "GL_EXT_texture_compression_s3tc (renderer: " + ts::gl::rendererString() + ")"});
+    ms.push_back({"compressed_bytes[512]", g.supported ? double(g.bytes) : double(bytes(blocks).size()),
+                  g.supported ? "GL_TEXTURE_COMPRESSED_IMAGE_SIZE of the 512 x 512 DXT1 texture" : "bytes of the blocks (no S3TC in this GL)"});
+    ms.push_back({"rgb565_bytes[256]", 256.0 * 256.0 * 2.0, "a 256 x 256 texture at 16 bits (seed 001: the same memory)"});
+    ms.push_back({"bits_per_texel", 8.0 * double(bytes(blocks).size()) / (double(img.width) * img.height), "of the blocks"});
+    ms.push_back({"ratio_vs_rgb565", 16.0 / (8.0 * double(bytes(blocks).size()) / (double(img.width) * img.height)), "16-bit texels : DXT1"});
+    ms.push_back({"ratio_vs_rgb888", 24.0 / (8.0 * double(bytes(blocks).size()) / (double(img.width) * img.height)), "24-bit texels : DXT1"});
+    ms.push_back({"max_colours_per_block", double(maxColoursPerBlock(out.decoded)), "distinct colours in any decoded 4x4 block"});
+    ms.push_back({"gl_vs_cpu_max_diff", out.glDecode ? double(maxDiff(g.decoded, cpu)) : -1.0,
+                  "largest channel difference, GL's decode against dxt_math.hpp's (8-bit levels; -1: no S3TC)"});
+    ms.push_back({"rms_equal_memory[dxt1_512]", rms(img, cpu), "RMS against the picture: 512 x 512 in DXT1"});
+    ms.push_back({"rms_equal_memory[rgb565_256]", rms(img, rgb565Half(img)),
+                  "RMS: 256 x 256 at RGB565 (the same bytes), magnified bilinearly to 512 x 512"});
+  }
+  ts::measureProgress(0.85);
+  for (int n : cacheSizes()) out.plain.push_back(lruRun(n, false)), out.prefetched.push_back(lruRun(n, true));
+  for (size_t k = 0; k < cacheSizes().size(); ++k) {
+    const std::string n = "[" + std::to_string(cacheSizes()[k]) + "]";
+    ms.push_back({"cache_hit_rate" + n, out.plain[k].hitRate(), "LRU tile cache of this many tiles: hits / requests"});
+    ms.push_back({"cache_hit_rate_prefetch" + n, out.prefetched[k].hitRate(), "the same, prefetching the next column and row"});
+  }
+  ms.push_back({"clipmap_texels", double(clipmapTexels(65536, 512)), "a 65536^2 texture's mip chain, each level at most 512^2"});
+  ms.push_back({"chain_texels", double(chainTexels(65536)), "the whole mip chain of 65536^2"});
+  ms.push_back({"clipmap_saving", double(chainTexels(65536)) / double(clipmapTexels(65536, 512)), "chain / clipmap"});
+  ms.detail = out;
+  return ms;
+}
+}  // namespace
+
+TM_REGISTER_SCENE(TextureCompression);
