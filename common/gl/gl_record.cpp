@@ -104,7 +104,7 @@ const std::map<std::string, std::string>& hints() {
       {"glGenTextures", "io"}, {"glHint", "ee"}, {"glLoadMatrixf", "m"}, {"glMatrixMode", "e"},
       {"glMultMatrixf", "m"}, {"glPixelStorei", "e"}, {"glPolygonMode", "ee"}, {"glShadeModel", "e"},
       {"glTexEnvf", "eex"}, {"glTexEnvfv", "eev"}, {"glTexEnvi", "eex"}, {"glTexGenfv", "eev"}, {"glTexGeni", "eex"},
-      {"glTexImage2D", "eieiiieeT"}, {"glTexSubImage2D", "eiiiiieeT"}, {"glTexParameterf", "eex"},
+      {"glTexImage2D", "eieiiieeT"}, {"glTexImage3D", "eieiiiiee-"}, {"glClipPlane", "e-"}, {"glTexSubImage2D", "eiiiiieeT"}, {"glTexParameterf", "eex"},
       {"glTexParameterfv", "eev"}, {"glTexParameteri", "eex"}, {"glLightfv", "eev"}, {"glLightModeli", "ex"},
       {"glMaterialfv", "eev"}, {"glReadBuffer", "e"}, {"glDrawBuffer", "e"}, {"glColorMask", "BBBB"},
       {"glStencilFunc", "eiu"}, {"glStencilOp", "eee"}, {"glActiveTexture", "e"}, {"glClientActiveTexture", "e"},
