@@ -82,7 +82,7 @@ class Projectors final : public ts::Scene {
     o.addBool("clip", &clip_, "slide projector: clip plane q >= 0 against the back projection", 'q');
   }
   std::vector<ts::FigureSpec> figures() const override {
-    return {{"projectors_seed002", "Seed 002 (lab sheet), lines 83-165",
+    return {{"projectors_seed002", "Seed 002 (lab sheet, lines 83-165)",
              "Seed 002's wraps on a sphere, as printed (top of each pair) and corrected, along X, Y and Z: planar "
              "along Z as printed puts every point on the texture's diagonal; the cylindrical arctg shows the texture "
              "twice around; the spherical arctg uses half the rows.",
@@ -90,19 +90,19 @@ class Projectors final : public ts::Scene {
              "As printed, planar Z puts {planar_z_diagonal_share} of the pixels on the diagonal; cylindrical uses "
              "{cylindrical_z_printed_columns} of the columns; spherical tv at the pole is {spherical_pole_tv} (arcsin: "
              "{spherical_pole_tv_corrected})."},
-            {"projectors_box_vs_planar", "Seed 001, box mapping",
+            {"projectors_box_vs_planar", "Seed 001 (box mapping)",
              "The sphere seen along (1,1,1): box mapping (left) projects each part along its normal's largest axis; "
              "one planar projection along Z (right) stretches without bound toward its rim.",
              {"--view", "box"}, 1024, 512,
              "Box mapping stretches at most {box_worst_stretch} (sqrt 3 = 1.732); one planar projection "
              "{planar_stretch_80} at 80 deg (1/cos 80 = 5.76)."},
-            {"projectors_texgen_swim", "glTexGen",
+            {"projectors_texgen_swim", "Seed 001 (glTexGen)",
              "A cube at pose 0 and pose 7 with planar texgen along Z: GL_OBJECT_LINEAR (top) keeps the texture on the "
              "cube; GL_EYE_LINEAR (bottom), planes given at pose 0, leaves it behind: the texture swims.",
              {"--view", "swim"}, 1024, 512,
              "One surface point changes texel {swim_changes_object_linear} times over 7 moves with OBJECT_LINEAR, "
              "{swim_changes_eye_linear} times with EYE_LINEAR."},
-            {"slide_projector", "Projective texturing",
+            {"slide_projector", "Seed 001 (q: projective texturing)",
              "A slide thrown on a floor and a wall by EYE_LINEAR planes = rows of B P_L V_L. Left: the wall behind the "
              "projector shows the back projection (q < 0). Right: a clip plane q >= 0 removes it.",
              {"--view", "slide"}, 1024, 512,
