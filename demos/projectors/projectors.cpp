@@ -83,7 +83,7 @@ class Projectors final : public ts::Scene {
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {{"projectors_seed002", "Seed 002 (lab sheet, lines 83-165)",
-             "Seed 002's wraps on a sphere, as printed (top of each pair) and corrected, along X, Y and Z: planar "
+             "Seed 002's wraps on a sphere, as printed (left of each pair, amber) and corrected (right), along X, Y and Z: planar "
              "along Z as printed puts every point on the texture's diagonal; the cylindrical arctg shows the texture "
              "twice around; the spherical arctg uses half the rows.",
              {"--view", "seed002"}, 1024, 640,
@@ -163,7 +163,7 @@ void Projectors::objectView(ts::Frame& f, int w, int h, const ts::Measurements& 
 // seed002: rows planar / cylindrical / spherical; columns X, Y, Z, each printed | corrected.
 void Projectors::gridView(ts::Frame& f, int w, int h) const {
   int tex = f.addTexture(picture());
-  const Shape s = shape(Object::Sphere);
+  const Shape s = fromMesh(sphereMesh(24));  // per fragment: a coarse mesh keeps the sidecar small
   const int cw = (w - 16) / 6, ch = (h - 40) / 3, side = std::min(cw, ch - 18);
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 6; ++c) {
