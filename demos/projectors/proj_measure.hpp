@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
 #include "common/gl/render.hpp"
 #include "proj_gl.hpp"
@@ -417,7 +418,7 @@ inline SlideResult slideMeasure(ts::Renderer& r, bool clip) {
       glm::dvec4 far = inv * glm::dvec4(2 * (x + 0.5) / kSlidePx - 1, 1 - 2 * (y + 0.5) / kSlidePx, 1, 1);
       glm::dvec3 dir = glm::dvec3(far) / far.w - eye;
       double best = 1e30;
-      glm::dvec3 hit;
+      glm::dvec3 hit(0.0);
       double tf = -eye.y / dir.y, tw = (-3 - eye.z) / dir.z;
       glm::dvec3 pf = eye + tf * dir, pw = eye + tw * dir;
       if (tf > 0 && std::abs(pf.x) <= 4 && pf.z >= -3 && pf.z <= 4) best = tf, hit = pf;
@@ -441,5 +442,87 @@ inline SlideResult slideMeasure(ts::Renderer& r, bool clip) {
       res.mismatches += got != want;
     }
   return res;
+}
+// --- Everything above, as the demo prints it (state-independent) -------------
+inline const char* const kAxisName[] = {"x", "y", "z"};
+inline const char* const kProjName[] = {"planar", "cylindrical", "spherical", "box", "solid"};
+inline ts::Measurements measureAll(ts::Renderer& r) {
+  const char* const* kAxis = kAxisName;
+  const char* const* kProj = kProjName;
+  ts::Measurements out;
+  const Shape sphere = shape(Object::Sphere);
+  // 1. Seed 002 as printed against corrected, per projector and axis.
+  for (int p = 0; p < 3; ++p)
+    for (int a = 0; a < 3; ++a) {
+      Texels tp = sixViews(r, sphere, Projector(p), Axis(a), Formula::Printed, Coords::Glsl, kGrid);
+      Texels tc = sixViews(r, sphere, Projector(p), Axis(a), Formula::Corrected, Coords::Glsl, kGrid);
+      ts::measureProgress(0.05 * (3 * p + a));
+      Usage up = usage(tp, kGrid), uc = usage(tc, kGrid);
+      std::string k = std::string(kProj[p]) + "_" + kAxis[a];
+      out.push_back({k + "_printed_columns", up.columns, "share of texture columns used, as printed (sphere, 6 views)"});
+      out.push_back({k + "_printed_rows", up.rows, "share of texture rows used, as printed"});
+      out.push_back({k + "_corrected_columns", uc.columns, "the same, corrected"});
+      out.push_back({k + "_corrected_rows", uc.rows, "the same, corrected"});
+      out.push_back({k + "_mismatch_share", mismatchShare(tp, tc), "pixels whose texel differs, printed vs corrected"});
+      if (p == 0 && a == 2) {
+        out.push_back({"planar_z_diagonal_share", up.diagonal, "pixels with s = t (same texel column and row), as printed"});
+        out.push_back({"planar_z_diagonal_share_corrected", uc.diagonal, "the same, corrected"});
+      }
+    }
+  ts::measureProgress(0.5);
+  // The spherical tv (minus ov) at the pole and at 45 deg latitude about Z.
+  const int fine = 2048;
+  auto tv = [&](Formula fo, glm::dvec3 pt) {
+    return (texelAt(r, sphere, Projector::Spherical, Axis::Z, fo, pt, fine).y + 0.5) / fine - 0.5;
+  };
+  const double s45 = std::sqrt(0.5);
+  out.push_back({"spherical_pole_tv", tv(Formula::Printed, {0, 0, 1}), "tv - 1/2 at the pole, as printed (arctg)"});
+  out.push_back({"spherical_45_tv", tv(Formula::Printed, {0, s45, s45}), "tv - 1/2 at 45 deg latitude, as printed"});
+  out.push_back({"spherical_pole_tv_corrected", tv(Formula::Corrected, {0, 0, 1}), "at the pole, arcsin"});
+  out.push_back({"spherical_45_tv_corrected", tv(Formula::Corrected, {0, s45, s45}), "at 45 deg, arcsin"});
+  // Opposite points across Z, (1,1,0)/sqrt2 and (-1,-1,0)/sqrt2: the same texel as printed?
+  auto same = [&](Formula fo) {
+    // The column only (tu): 1001 columns, so tu = 0.125 is no column edge.
+    return double(texelAt(r, sphere, Projector::Cylindrical, Axis::Z, fo, {s45, s45, 0}, 1001).x ==
+                  texelAt(r, sphere, Projector::Cylindrical, Axis::Z, fo, {-s45, -s45, 0}, 1001).x);
+  };
+  out.push_back({"cylindrical_opposite_collide", same(Formula::Printed), "1 if p and -p read one column, as printed"});
+  out.push_back({"cylindrical_opposite_collide_corrected", same(Formula::Corrected), "the same, atan2"});
+  ts::measureProgress(0.6);
+  // 3. Stretch.
+  const Shape fineSphere = fromMesh(sphereMesh(256));
+  double worst = 0, sum = 0;
+  long n = 0;
+  for (const StretchSample& s : stretchSamples(r, fineSphere, Projector::Box, Axis::Z, {1, 1, 1}))
+    worst = std::max(worst, s.stretch);
+  for (const StretchSample& s : stretchSamples(r, fineSphere, Projector::Planar, Axis::Z,
+                                               {std::sin(kPi * 80 / 180), 0, std::cos(kPi * 80 / 180)}))
+    if (std::abs(std::acos(std::abs(s.n.z)) * 180 / kPi - 80) < 0.5) sum += s.stretch, ++n;
+  out.push_back({"box_worst_stretch", worst, "largest surface/texture area ratio of box mapping (sqrt 3 = 1.732)"});
+  out.push_back({"planar_stretch_80", n ? sum / double(n) : 0.0, "planar along Z, mean ratio at 79.5..80.5 deg"});
+  ts::measureProgress(0.75);
+  // 4. OBJECT_LINEAR against EYE_LINEAR.
+  out.push_back({"swim_changes_object_linear", double(swimChanges(r, GL_OBJECT_LINEAR)), "texel changes of one point, 7 moves"});
+  out.push_back({"swim_changes_eye_linear", double(swimChanges(r, GL_EYE_LINEAR)), "the same with EYE_LINEAR"});
+  // 5. The slide projector.
+  SlideResult s0 = slideMeasure(r, false), s1 = slideMeasure(r, true);
+  out.push_back({"slide_mismatches", double(s0.mismatches + s1.mismatches), "texels differing from the CPU's (s/q, t/q)"});
+  out.push_back({"slide_checked", double(s0.checked), "pixels checked (q > 0)"});
+  out.push_back({"slide_back_pixels_nofix", double(s0.back), "pixels with q < 0 that show the slide, no fix"});
+  out.push_back({"slide_back_pixels_clip", double(s1.back), "the same with the clip plane q >= 0"});
+  ts::measureProgress(0.85);
+  // 6. The solid texture against Eq. VI.2.
+  SolidResult solid = solidOrLatLong(r, true), ll = solidOrLatLong(r, false);
+  out.push_back({"solid3d_seam_pixels", double(solid.seam), "texel jumps > 2 between neighbours, 3D texture"});
+  out.push_back({"latlong_seam_pixels", double(ll.seam), "the same, Eq. VI.2 (sphere_projections)"});
+  out.push_back({"solid3d_pole_s_share", solid.poleShare, "share of s columns within 3 px of the pole, 3D"});
+  out.push_back({"latlong_pole_s_share", ll.poleShare, "the same, Eq. VI.2: the pinch"});
+  // 7. The cube.
+  CubeResult c24 = cubeFaces(r, false), c8 = cubeFaces(r, true);
+  out.push_back({"cube24_good_faces", double(c24.good), "faces reading the unit square, not mirrored (of 6)"});
+  out.push_back({"cube8_good_faces", double(c8.good), "the same with 8 shared vertices"});
+  out.push_back({"cube8_smeared_faces", double(c8.smeared), "faces with a zero Jacobian (s or t constant)"});
+  out.push_back({"cube8_mirrored_faces", double(c8.mirrored), "faces with a negative Jacobian"});
+  return out;
 }
 }  // namespace proj
