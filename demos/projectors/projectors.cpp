@@ -97,7 +97,7 @@ class Projectors final : public ts::Scene {
              "Box mapping stretches at most {box_worst_stretch} (sqrt 3 = 1.732); one planar projection "
              "{planar_stretch_80} at 80 deg (1/cos 80 = 5.76)."},
             {"projectors_texgen_swim", "Seed 001 (glTexGen)",
-             "A cube at pose 0 and pose 7 with planar texgen along Z: GL_OBJECT_LINEAR (top) keeps the texture on the "
+             "A cube at pose 0 (left) and pose 7 (right) with planar texgen along Z: GL_OBJECT_LINEAR (top) keeps the texture on the "
              "cube; GL_EYE_LINEAR (bottom), planes given at pose 0, leaves it behind: the texture swims.",
              {"--view", "swim"}, 1024, 512,
              "One surface point changes texel {swim_changes_object_linear} times over 7 moves with OBJECT_LINEAR, "
@@ -139,8 +139,10 @@ void Projectors::objectView(ts::Frame& f, int w, int h, const ts::Measurements& 
   const views::Way wy = way();
   int tex = f.addTexture(wy.pr == Projector::Solid ? solidRingsTexture() : picture());
   int grid = f.addTexture(picture());
-  const int side = std::min(w / 2 - 12, h - 60);
+  const bool tall = h > w * 5 / 4;  // a tall window: the texture space below the object
+  const int side = tall ? std::min(w - 16, (h - 90) / 2) : std::min(w / 2 - 12, h - 60);
   ts::Rect left{8, 40, side, side}, right{w / 2 + 4, 40, side, side};
+  if (tall) left = {(w - side) / 2, 40, side, side}, right = {(w - side) / 2, 48 + side, side, side};
   // EYE_LINEAR planes given where pose 0 was: camera and pose 0 in force.
   const ts::Batch b = views::batchFor(shape(Object(object_)), wy, tex, views::camera() * pose(0));
   f.panels.push_back(views::objectPanel("object", left, b, pose(pose_)));
@@ -154,7 +156,7 @@ void Projectors::objectView(ts::Frame& f, int w, int h, const ts::Measurements& 
                      (views::effective(wy) == Coords::TexGen ? (texgen_ ? " EYE_LINEAR" : " OBJECT_LINEAR") : "");
   ts::layout::caption(f, {8, 4, float(w) - 8, 36}, what, ts::layout::kAmber, sc);
   if (u)
-    ts::layout::caption(f, {float(w / 2), float(h - 20), float(w) - 8, float(h)},
+    ts::layout::caption(f, {float(right.x), float(right.y + right.h + 2), float(w) - 8, float(right.y + right.h + 20)},
                         "texels used: columns " + fmt("%.2f", u->columns) + ", rows " + fmt("%.2f", u->rows) +
                             ", on the diagonal " + fmt("%.2f", u->diagonal),
                         kWhite, 1);
@@ -183,8 +185,11 @@ void Projectors::gridView(ts::Frame& f, int w, int h) const {
 // box | swim | slide | cube: two or four pictures side by side.
 void Projectors::pairView(ts::Frame& f, int w, int h) const {
   int tex = f.addTexture(picture());
-  const int side = std::min(w / 2 - 16, h - 50);
+  // Side by side, or one above the other in a tall window; a caption band above each.
+  const bool tall = h > w * 5 / 4;
+  const int side = tall ? std::min(w - 16, (h - 90) / 2) : std::min(w / 2 - 16, h - 50);
   ts::Rect L{w / 4 - side / 2, 36, side, side}, R{3 * w / 4 - side / 2, 36, side, side};
+  if (tall) L = {(w - side) / 2, 36, side, side}, R = {(w - side) / 2, 36 + side + 40, side, side};
   std::string a, b;
   if (view_ == kBox) {
     const Shape s = shape(Object::Sphere);
@@ -196,17 +201,16 @@ void Projectors::pairView(ts::Frame& f, int w, int h) const {
   } else if (view_ == kSwim) {
     const Shape cube = shape(Object::Cube);
     const int q = side / 2 - 4;
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < 4; ++k) {  // in L pose 0, in R pose 7; OBJECT_LINEAR above EYE_LINEAR
       GLenum mode = k < 2 ? GL_OBJECT_LINEAR : GL_EYE_LINEAR;
       int ps = k % 2 ? kPoses - 1 : 0;
-      ts::Rect vp{(k % 2 ? R.x : L.x) + (side - 2 * q) / 2, 36 + (k / 2) * (q + 8), 2 * q, q};
-      vp.w = q;
-      vp.x += q / 2;
+      const ts::Rect& cell = k % 2 ? R : L;
+      ts::Rect vp{cell.x + (side - q) / 2, cell.y + (k / 2) * (q + 8), q, q};
       f.panels.push_back(views::objectPanel(std::string(k < 2 ? "object_linear_" : "eye_linear_") + std::to_string(ps),
                                             vp, texGenBatch(cube, planarTexGen(Axis::Z, Formula::Corrected, mode, views::camera() * pose(0)), tex),
                                             pose(ps)));
     }
-    a = "pose 0: OBJECT_LINEAR (top), EYE_LINEAR (bottom)", b = "pose 7";
+    a = "pose 0: OBJECT / EYE_LINEAR", b = "pose 7: EYE_LINEAR swims";
   } else if (view_ == kSlide) {
     ts::TextureDesc slide = picture();
     slide.wrapS = slide.wrapT = GL_CLAMP_TO_BORDER;
@@ -225,8 +229,13 @@ void Projectors::pairView(ts::Frame& f, int w, int h) const {
     a = "24 vertices: each face its own (s,t)", b = "8 shared vertices: smeared and mirrored faces";
   }
   const int sc = ts::layout::scaleFor(L, 2);
-  ts::layout::caption(f, {8, 4, float(w / 2) - 4, 34}, a, ts::layout::kAmber, sc);
-  ts::layout::caption(f, {float(w / 2) + 4, 4, float(w) - 8, 34}, b, ts::layout::kAmber, sc);
+  if (tall) {
+    ts::layout::caption(f, {8, 4, float(w) - 8, 34}, a, ts::layout::kAmber, sc);
+    ts::layout::caption(f, {8, float(R.y - 36), float(w) - 8, float(R.y - 4)}, b, ts::layout::kAmber, sc);
+  } else {
+    ts::layout::caption(f, {8, 4, float(w / 2) - 4, 34}, a, ts::layout::kAmber, sc);
+    ts::layout::caption(f, {float(w / 2) + 4, 4, float(w) - 8, 34}, b, ts::layout::kAmber, sc);
+  }
 }
 
 ts::Frame Projectors::build(int width, int height, const ts::Measurements& measured) const {
