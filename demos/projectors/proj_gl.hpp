@@ -121,7 +121,9 @@ inline ts::TexGen planarTexGen(Axis ax, Formula f, GLenum mode, const glm::mat4&
 
 // Per fragment: the vertex sends its object position (gl_Vertex) and normal
 // (as its texture coordinate); the fragment evaluates seed 002's formula.
-// uniform `mode` = (projector 0..3, axis 0..2, formula 0 printed | 1 corrected, 0).
+// uniform `mode` = (projector 0..3, axis 0..2, formula 0 printed | 1 corrected,
+// 0 texture() with implicit derivatives | 1 textureGrad with the derivatives
+// of whichever of tu, fract(tu) has no cut between the pixels).
 inline const char* kProgramName = "projector";
 inline ts::Program projectorProgram() {
   ts::Program p;
@@ -165,16 +167,26 @@ void main() {
     }
     st = vec2(u, v);
   }
-  gl_FragColor = texture(tex, st);
+  if (mode.w > 0.5) {
+    vec2 dx = dFdx(st), dy = dFdy(st);
+    float u2 = fract(st.x);  // the same angle, cut at u = 0 instead of ±1/2
+    float dx2 = dFdx(u2), dy2 = dFdy(u2);
+    if (abs(dx2) < abs(dx.x)) dx.x = dx2;
+    if (abs(dy2) < abs(dy.x)) dy.x = dy2;
+    gl_FragColor = textureGrad(tex, st, dx, dy);
+  } else {
+    gl_FragColor = texture(tex, st);
+  }
 }
 )";
   return p;
 }
-inline ts::Batch glslBatch(const Shape& s, Projector pr, Axis ax, Formula f, int texture) {
+inline ts::Batch glslBatch(const Shape& s, Projector pr, Axis ax, Formula f, int texture, bool grad = false) {
   ts::Batch b;
   b.texture = texture;
   b.program = kProgramName;
-  b.uniforms.push_back({"mode", glm::vec4(float(int(pr)), float(int(ax)), f == Formula::Printed ? 0.0f : 1.0f, 0.0f)});
+  b.uniforms.push_back(
+      {"mode", glm::vec4(float(int(pr)), float(int(ax)), f == Formula::Printed ? 0.0f : 1.0f, grad ? 1.0f : 0.0f)});
   for (const CubeVertex& v : s) b.vertices.push_back({glm::vec3(v.pos), glm::vec4(glm::vec3(v.normal), 1.0f)});
   return b;
 }

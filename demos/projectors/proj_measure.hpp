@@ -443,6 +443,95 @@ inline SlideResult slideMeasure(ts::Renderer& r, bool clip) {
     }
   return res;
 }
+// --- 2. Corrected cylindrical against Buss's Eq. VI.1, and its seam -----------
+// The cylinder (r 1, y from -1 to 1, 48 slices) from the back, where atan2's
+// cut lies (θ = 180°), ortho, kView px; its mesh carries cylinder_seam's
+// mapping (s = θ/360 with the winding tracked, t = (y + 1)/2) per vertex.
+struct SeamResult {
+  long perFragmentMismatch = 0, perFragmentFar = 0, perVertexFar = 0;
+  int reversedPatches = 0;
+  long lambdaImplicit = 0, lambdaGrad = 0;
+};
+inline SeamResult seamMeasure(ts::Renderer& r) {
+  const int slices = 48, grid = 256;
+  // θ from -3.75° (half a slice): the cut at 180° runs through the middle of a patch.
+  const ts::Mesh mesh = ts::parametricGrid(
+      slices, 8, true, false, [](int i, int j) { return ts::cylinderPoint(1.0, 2.0, 48, 8, i, j, -3.75); },
+      [](int i, int j) { return glm::dvec2((i - 0.5) / 48.0, j / 8.0); });
+  const Shape cyl = fromMesh(mesh);
+  // Turned 0.47° off the back: the cut (x = 0) falls one pixel right of the
+  // centre, between the pixel centres of one 2x2 quad (128 | 129), not on a
+  // quad's edge, where no quad would straddle it.
+  const glm::mat4 back = faceOn({std::sin(kPi * 0.47 / 180), 0, -std::cos(kPi * 0.47 / 180)});
+  ts::Frame fr = indexFrame(3 * kView, kView);
+  fr.programs.push_back({kProgramName, projectorProgram()});
+  ts::TextureDesc idx = ts::texelIndexTexture(grid);
+  idx.wrapT = GL_CLAMP_TO_EDGE;
+  int tex = fr.addTexture(idx);
+  ts::Batch buss = perVertexBatch(cyl, Projector::Cylindrical, Axis::Y, Formula::Corrected, tex, true);
+  ts::Batch frag = glslBatch(cyl, Projector::Cylindrical, Axis::Y, Formula::Corrected, tex);
+  ts::Batch vert = perVertexBatch(cyl, Projector::Cylindrical, Axis::Y, Formula::Corrected, tex);
+  const ts::Batch* bs[3] = {&buss, &frag, &vert};
+  for (int k = 0; k < 3; ++k) {
+    ts::Panel p = orthoPanel("cyl_" + std::to_string(k), {k * kView, 0, kView, kView}, back);
+    p.batches.push_back(*bs[k]);
+    fr.panels.push_back(p);
+  }
+  Texels t = decode(r.renderOffscreen(fr));
+  SeamResult res;
+  std::set<int> patches;
+  auto far = [&](glm::ivec2 a, glm::ivec2 b) {  // more than 1 texel apart, around the circle in s
+    int di = std::abs(a.x - b.x);
+    di = std::min(di, grid - di);
+    return di > 1 || std::abs(a.y - b.y) > 1;
+  };
+  for (int y = 0; y < kView; ++y)
+    for (int x = 0; x < kView; ++x) {
+      glm::ivec2 a = t(x, y), f = t(x + kView, y), v = t(x + 2 * kView, y);
+      if (a.x < 0 || f.x < 0 || v.x < 0) continue;
+      res.perFragmentMismatch += a != f;
+      res.perFragmentFar += far(a, f);
+      if (far(a, v)) {
+        ++res.perVertexFar;
+        patches.insert(int(std::floor((a.x + 0.5) / grid * slices + 0.5)) % slices);  // its patch (Buss's s)
+      }
+    }
+  res.reversedPatches = int(patches.size());
+  // λ: the level of a coloured mip chain (GL_NEAREST_MIPMAP_NEAREST) against
+  // the analytic one, λ = log2(N · max(|ds/dx|, |dt/dy|)) with, on the
+  // cylinder seen along -z, ds/dx = px / (2π cos φ) (φ = asin of the view x)
+  // and dt/dy = px / 2.  Pixels with |φ| < 60°: counted where the level is
+  // more than 1 above.
+  const int n = 256;
+  ts::Frame lf = indexFrame(2 * kView, kView);
+  lf.programs.push_back({kProgramName, projectorProgram()});
+  int lt = lf.addTexture(ts::mipLevelColours(n));
+  for (int k = 0; k < 2; ++k) {
+    ts::Panel p = orthoPanel(k ? "grad" : "implicit", {k * kView, 0, kView, kView}, back);
+    p.batches.push_back(glslBatch(cyl, Projector::Cylindrical, Axis::Y, Formula::Corrected, lt, k == 1));
+    lf.panels.push_back(p);
+  }
+  ts::Image li = r.renderOffscreen(lf);
+  const double px = 2.0 * kHalf / kView;
+  for (int k = 0; k < 2; ++k)
+    for (int y = 0; y < kView; ++y)
+      for (int x = 0; x < kView; ++x) {
+        double vx = -kHalf + (x + 0.5) * px, vy = kHalf - (y + 0.5) * px;
+        if (std::abs(vx) > std::sin(kPi / 3) || std::abs(vy) > 0.95) continue;
+        double phi = std::asin(vx);
+        double rho = n * std::max(px / (2 * kPi * std::cos(phi)), px / 2);
+        ts::Rgba c = li.at(k * kView + x, y);
+        int level = -1;
+        for (int l = 0; l < 9 && level < 0; ++l) {
+          ts::Rgba w = ts::mipLevelColour(l);
+          if (c.r == w.r && c.g == w.g && c.b == w.b) level = l;
+        }
+        if (level < 0) continue;
+        if (level > std::log2(rho) + 1) (k ? res.lambdaGrad : res.lambdaImplicit) += 1;
+      }
+  return res;
+}
+
 // --- Everything above, as the demo prints it (state-independent) -------------
 inline const char* const kAxisName[] = {"x", "y", "z"};
 inline const char* const kProjName[] = {"planar", "cylindrical", "spherical", "box", "solid"};
@@ -488,6 +577,18 @@ inline ts::Measurements measureAll(ts::Renderer& r) {
   };
   out.push_back({"cylindrical_opposite_collide", same(Formula::Printed), "1 if p and -p read one column, as printed"});
   out.push_back({"cylindrical_opposite_collide_corrected", same(Formula::Corrected), "the same, atan2"});
+  ts::measureProgress(0.55);
+  // 2. Corrected cylindrical = Buss's Eq. VI.1; the seam per vertex; the λ line.
+  SeamResult seam = seamMeasure(r);
+  out.push_back({"cylinder_buss_mismatches", double(seam.perFragmentMismatch),
+                 "pixels, corrected cylindrical along Y per fragment vs Eq. VI.1 per vertex (any texel)"});
+  out.push_back({"cylinder_buss_far", double(seam.perFragmentFar), "the same, more than 1 texel apart"});
+  out.push_back({"cylinder_pervertex_seam_pixels", double(seam.perVertexFar),
+                 "pixels > 1 texel off Eq. VI.1 with atan2 per vertex (Fig. VI.4's seam)"});
+  out.push_back({"cylinder_pervertex_reversed_patches", double(seam.reversedPatches), "patches those pixels lie on"});
+  out.push_back({"lambda_line_implicit", double(seam.lambdaImplicit),
+                 "pixels whose mip level is > 1 above the analytic lambda, texture() per fragment"});
+  out.push_back({"lambda_line_grad", double(seam.lambdaGrad), "the same with textureGrad (cut-free derivatives)"});
   ts::measureProgress(0.6);
   // 3. Stretch.
   const Shape fineSphere = fromMesh(sphereMesh(256));

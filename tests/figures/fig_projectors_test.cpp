@@ -75,6 +75,21 @@ TEST(Projectors, SphericalAsPrintedReachesAQuarter) {
   }
 }
 
+// Corrected cylindrical along Y is Buss's Eq. VI.1: per fragment it reads
+// the very texels of cylinder_seam's per-vertex mapping (winding tracked);
+// computed per vertex by atan2, the Fig. VI.4 seam comes back on one patch.
+// Per fragment with implicit derivatives the cut draws a line of a coarse
+// mip level (λ more than 1 above the analytic); textureGrad with cut-free
+// derivatives draws none.
+TEST(Projectors, CorrectedCylindricalIsBussEqVI1AndItsSeam) {
+  EXPECT_EQ(v("cylinder_buss_mismatches"), 0.0);
+  EXPECT_EQ(v("cylinder_buss_far"), 0.0);
+  EXPECT_GT(v("cylinder_pervertex_seam_pixels"), 0.0);
+  EXPECT_EQ(v("cylinder_pervertex_reversed_patches"), 1.0);
+  EXPECT_GT(v("lambda_line_implicit"), 0.0);
+  EXPECT_EQ(v("lambda_line_grad"), 0.0);
+}
+
 // Box mapping: the worst stretch is 1/|n_axis| <= √3, reached toward
 // (1,1,1)/√3 (the measured pixels stop 4 px short of the face edges, so a
 // little under); one planar projection: 1/cos 80° = 5.76 at 80°.
