@@ -52,8 +52,8 @@ namespace {
 using namespace proj;
 using ts::layout::fmt;
 using ts::layout::kWhite;
-const char* const kAxis[] = {"x", "y", "z"};
-const char* const kProj[] = {"planar", "cylindrical", "spherical", "box", "solid"};
+const char* const* const kAxis = kAxisName;  // "x", "y", "z" (proj_measure.hpp, the measurement names)
+const char* const* const kProj = kProjName;  // "planar" ... "solid"
 const char* const kFormula[] = {"printed", "corrected"};
 const char* const kCoordsName[] = {"cpu", "texgen", "glsl"};
 constexpr int kUsageGrid = 64;
