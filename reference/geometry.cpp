@@ -64,6 +64,24 @@ glm::dvec3 WindowTransform::operator()(const glm::dvec4& clip) const {
   return {vx + (ndc.x + 1.0) * 0.5 * vw, frameHeight - (vy + (ndc.y + 1.0) * 0.5 * vh), (ndc.z + 1.0) * 0.5};
 }
 
+glm::dvec4 texGenCoords(const ts::Panel& p, const ts::Batch& b, const ts::Vertex& v) {
+  glm::dvec4 tex(v.tex);
+  if (!b.texGen.on()) return tex;
+  const glm::dvec4 obj(glm::dvec3(v.pos), 1.0);
+  const bool eye = b.texGen.mode == GL_EYE_LINEAR;
+  // EYE_LINEAR: GL stores plane · M⁻¹ (M the modelview when it was given)
+  // and evaluates it at the vertex in eye coordinates.
+  const glm::dmat4 toEye = glm::dmat4(p.modelview), planeInv = glm::inverse(glm::dmat4(b.texGen.planeModelview));
+  const glm::dvec4 e = toEye * obj;
+  for (int k = 0; k < 4; ++k) {
+    if (!(b.texGen.coords & (1u << k))) continue;
+    const glm::dvec4 plane(b.texGen.planes[k]);
+    // A row vector times a matrix: (plane · M⁻¹)_c = Σ_r plane_r M⁻¹[c][r].
+    tex[k] = eye ? glm::dot(plane * planeInv, e) : glm::dot(plane, obj);
+  }
+  return tex;
+}
+
 bool isBilinearQuad(const ts::Batch& b) { return b.program == "bilinear_quad" && b.texture >= 0; }
 
 void ScreenPoly::coordFrom(double a, double b, double* s, double* t) const {
@@ -127,14 +145,30 @@ bool screenTriangle(const ts::Panel& p, const ts::Batch& b, size_t first, int fr
   const glm::dmat4 mvp = modelViewProjection(p);
   const WindowTransform window(p, frameHeight);
   std::vector<ClipVertex> tri(3);
+  double userDistance[3] = {0, 0, 0};
   for (size_t k = 0; k < 3; ++k) {
     const ts::Vertex& vx = b.vertices[first + k];
     tri[k].clip = mvp * glm::dvec4(glm::dvec3(vx.pos), 1.0);
-    // The texture matrix acts on (s,t,r,q) per vertex, before clipping and
+    // glTexGen first (it replaces the coordinates it generates), then the
+    // texture matrix acts on (s,t,r,q) per vertex, before clipping and
     // interpolation, as GL's vertex stage does.
-    const glm::dvec4 st = glm::dmat4(b.textureMatrix) * glm::dvec4(vx.tex);
+    const glm::dvec4 st = glm::dmat4(b.textureMatrix) * texGenCoords(p, b, vx);
+    if (b.clip) userDistance[k] = glm::dot(glm::dvec4(b.clipPlane), glm::dvec4(glm::dvec3(vx.pos), 1.0));
     tri[k].attr = {st.x, st.y, st.z, st.w, vx.color.r, vx.color.g, vx.color.b, vx.color.a,
                    vx.secondary.r, vx.secondary.g, vx.secondary.b};
+  }
+  if (b.clip) {
+    // glClipPlane: keep plane · (x, y, z, 1) >= 0.  The distance is linear
+    // along an edge, so the cut lies where clip space interpolates to 0.
+    std::vector<ClipVertex> kept;
+    for (size_t i = 0; i < 3; ++i) {
+      const size_t j = (i + 1) % 3;
+      const double da = userDistance[i], db = userDistance[j];
+      if (da >= 0) kept.push_back(tri[i]);
+      if ((da >= 0) != (db >= 0)) kept.push_back(lerp(tri[i], tri[j], da / (da - db)));
+    }
+    tri.swap(kept);
+    if (tri.size() < 3) return false;
   }
   std::vector<ClipVertex> poly = clipPolygon(tri);
   if (poly.size() < 3) return false;

@@ -45,6 +45,11 @@ struct WindowTransform {
 // reference models (its fragment shader maps (s/q, t/q) bilinearly to the
 // corners st00, st10, st11, st01 given as uniforms, then looks the texture up).
 bool isBilinearQuad(const ts::Batch& b);
+// A vertex's (s, t, r, q) as GL's vertex stage makes them: the batch's
+// glTexGen (OBJECT_LINEAR from the object position, EYE_LINEAR from the eye
+// position with the planes given under planeModelview) replaces the
+// coordinates it generates; the others are glTexCoord4f's.
+glm::dvec4 texGenCoords(const ts::Panel& p, const ts::Batch& b, const ts::Vertex& v);
 
 // A clipped triangle (a convex polygon of 3 to 5 vertices) in screen space
 // with its attribute planes.

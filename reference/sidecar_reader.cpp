@@ -266,6 +266,7 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
       fail(where, e.what());
     }
     if (const Json* b = find(t, "border")) d.border = vec<4>(*b, where + ".border");
+    if (find(t, "depth")) fail(where, "3D textures (depth) are not modelled by the reference");
     if (const Json* a = find(t, "max_anisotropy")) d.maxAnisotropy = float(number(*a, where));
     if (const Json* b = find(t, "lod_bias")) d.lodBias = float(number(*b, where));
     f.textures.push_back(std::move(d));
@@ -323,6 +324,28 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
       if (const Json* ec = find(bv, "tex_env_color")) b.envColor = vec<4>(*ec, bw + ".tex_env_color");
       if (const Json* tm = find(bv, "texture_matrix")) b.textureMatrix = mat(*tm, bw + ".texture_matrix");
       if (const Json* cs = find(bv, "color_sum")) b.colorSum = boolean(*cs, bw + ".color_sum");
+      if (const Json* tg = find(bv, "tex_gen")) {  // glTexGen: mode, coordinates, planes (and eye planes' modelview)
+        const std::string tw = bw + ".tex_gen", mode = text(member(*tg, "mode", tw), tw + ".mode");
+        if (mode == "GL_OBJECT_LINEAR") b.texGen.mode = GL_OBJECT_LINEAR;
+        else if (mode == "GL_EYE_LINEAR") b.texGen.mode = GL_EYE_LINEAR;
+        else fail(tw + ".mode", "unknown texgen mode '" + mode + "'");
+        const Json& coords = member(*tg, "coords", tw);
+        const Json& planes = member(*tg, "planes", tw);
+        const std::string names = "strq";
+        for (size_t ci = 0; ci < array(coords, tw + ".coords").size(); ++ci) {
+          const std::string c = text(coords[ci], tw + ".coords");
+          const size_t k = names.find(c);
+          if (c.size() != 1 || k == std::string::npos) fail(tw + ".coords", "unknown coordinate '" + c + "'");
+          b.texGen.coords |= 1u << k;
+          b.texGen.planes[k] = vec<4>(member(planes, c, tw + ".planes"), tw + ".planes." + c);
+        }
+        if (const Json* pm = find(*tg, "plane_modelview")) b.texGen.planeModelview = mat(*pm, tw + ".plane_modelview");
+        else if (b.texGen.mode == GL_EYE_LINEAR) fail(tw, "GL_EYE_LINEAR needs plane_modelview");
+      }
+      if (const Json* cp = find(bv, "clip_plane")) {
+        b.clip = true;
+        b.clipPlane = vec<4>(*cp, bw + ".clip_plane");
+      }
       const Json& verts = member(bv, "vertices", bw);
       for (size_t vi = 0; vi < array(verts, bw + ".vertices").size(); ++vi) {
         const Json& vv = verts[vi];

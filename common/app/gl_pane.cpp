@@ -67,9 +67,8 @@ void GlPane::record(Renderer& r, const Frame& f, double now, bool print, bool re
 }
 
 void GlPane::pick(int ordinal) {
-  if (ordinal == pick_) return;
   pick_ = ordinal;
-  pickNew_ = true;
+  pickNew_ = ordinal >= 0;  // printed (and scrolled to) with the next recording
 }
 
 void GlPane::draw(int x, int w, int h, double now) {

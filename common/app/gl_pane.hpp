@@ -40,8 +40,8 @@ class GlPane {
   double marksUntil() const { return (markedSinceKey_ ? changedAt_ : keyAt_) + kHighlightSeconds; }
   // The inspect mode picked a pixel of batch `ordinal` (counted over the
   // frame's panels in drawing order; -1: none): the calls that set its
-  // texture state are marked (cyan) from the next recording on, and
-  // printed to stdout once.
+  // texture state are marked (cyan) from the next recording on, printed to
+  // stdout with it, and scrolled to.
   void pick(int ordinal);
   int pickedOrdinal() const { return pick_; }
   // The pane as a Dear ImGui window at (x, 0), w x h pixels.

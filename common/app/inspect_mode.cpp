@@ -60,12 +60,13 @@ void InspectMode::click(double x, double y, int figureW, int height) {
   picked_ = stale_ = true;
 }
 
-void InspectMode::update(Renderer& r, const Frame& f, bool changed) {
-  if (!active_ || !picked_ || (!stale_ && !changed)) return;
+bool InspectMode::update(Renderer& r, const Frame& f, bool changed) {
+  if (!active_ || !picked_ || (!stale_ && !changed)) return false;
   stale_ = false;
   if (x_ >= f.width || y_ >= f.height) {  // the figure shrank under the pick
     card_ = "the picked pixel " + std::to_string(x_) + "," + std::to_string(y_) + " is outside the figure now";
-    return;
+    ordinal_ = -1;
+    return true;
   }
   // GL's pixels around the pick, from the back buffer the figure was just
   // drawn into, in one read of the part inside the figure (GL's rows run
@@ -110,6 +111,7 @@ void InspectMode::update(Renderer& r, const Frame& f, bool changed) {
   std::fflush(stdout);
   loupe_ = r.attachment<Loupe>().id;
   upload(loupe_, around);
+  return true;
 }
 
 void InspectMode::drawFootprint(Renderer& r) const {

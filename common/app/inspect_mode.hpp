@@ -27,7 +27,8 @@ class InspectMode {
   // After the figure is drawn (in the back buffer): inspects the pick again
   // when it or the picture changed (`changed`: a new state or measurement).
   // The loupe's texture belongs to the renderer (deleted with it).
-  void update(Renderer& r, const Frame& f, bool changed);
+  // True when it inspected (a new pick, or the picture changed under it).
+  bool update(Renderer& r, const Frame& f, bool changed);
   // The picked pixel's footprint over the figure, in each of the demo's
   // texture-space views that shows its texture (footprintInTextureViews);
   // call after the figure is drawn and read (update).

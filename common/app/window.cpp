@@ -570,10 +570,13 @@ class FrameLoop {
   void inspectPixel(const Frame& f) {
     const std::string state = opts.stateText() + "|" + std::to_string(f.width) + "x" + std::to_string(f.height) + "|" +
                               std::to_string(m.size()) + (measuring ? "|measuring" : "");
-    inspect.update(renderer, f, state != inspectedState);
+    const bool inspected = inspect.update(renderer, f, state != inspectedState);
     inspectedState = state;
-    // The GL pane marks the picked batch's texture calls: listed again on a new pick.
-    if (inspect.batchOrdinal() != pane.pickedOrdinal()) pane.pick(inspect.batchOrdinal()), record = redraw = pane.visible;
+    // The GL pane marks the picked batch's texture calls: listed again on every
+    // pick (the same batch's too: the marks are printed again), and when the
+    // mode is turned off (-1: none).
+    if (inspected || inspect.batchOrdinal() != pane.pickedOrdinal())
+      pane.pick(inspect.batchOrdinal()), record = redraw = pane.visible;
   }
 
   // --frames N (tests): the last frame shows the measurement of the last

@@ -5,6 +5,7 @@ std::string TextureDesc::key() const {
   std::string k = name;
   for (const auto& [n, v] : params) k += ";" + n + "=" + v;
   if (mipmaps) k += linearLightMips ? ";mips=linear" : ";mips=box";
+  if (depth > 1) k += ";depth=" + std::to_string(depth);
   return k;
 }
 

@@ -41,6 +41,11 @@ struct TextureDesc {
   GLenum minFilter = GL_LINEAR, magFilter = GL_LINEAR;
   GLenum wrapS = GL_REPEAT, wrapT = GL_REPEAT;
   glm::vec4 border{0.0f};
+  // > 1: a GL_TEXTURE_3D of image->width x (image->height / depth) x depth,
+  // `image` holding the slices r = 0..depth-1 one above the other (slice k
+  // in rows k*h .. k*h+h-1), wrapR its third wrap.  No mipmaps.
+  int depth = 1;
+  GLenum wrapR = GL_REPEAT;
   float maxAnisotropy = 1.0f;
   float lodBias = 0.0f;
   // A texture the scene drew itself for this frame (a live view, see
@@ -59,6 +64,24 @@ struct TextureDesc {
 struct Uniform {
   std::string name;
   glm::vec4 value{0.0f};
+};
+
+// glTexGen for a batch's texture coordinates (fixed function only): GL
+// computes the coordinates named in `coords` from the vertex position, the
+// others come from glTexCoord4f as sent.  OBJECT_LINEAR: s = planes[0] ·
+// (x, y, z, 1) in object coordinates.  EYE_LINEAR: the planes are given
+// while `planeModelview` is the modelview (GL stores plane · M⁻¹), then
+// s = stored plane · (the vertex in eye coordinates): with planeModelview =
+// the panel's modelview the planes are object-fixed, with the camera's view
+// alone they are world-fixed (the slide projector), with the identity they
+// are fixed to the eye (the texture "swims" as the object moves).
+struct TexGen {
+  GLenum mode = 0;      // 0 = off; GL_OBJECT_LINEAR or GL_EYE_LINEAR
+  unsigned coords = 0;  // bit 0 s, bit 1 t, bit 2 r, bit 3 q
+  glm::vec4 planes[4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};  // GL's defaults
+  glm::mat4 planeModelview{1.0f};
+  bool on() const { return mode != 0 && coords != 0; }
+  static constexpr unsigned S = 1, T = 2, R = 4, Q = 8;
 };
 
 struct Program {
@@ -86,6 +109,11 @@ struct Batch {
   glm::vec4 envColor{0.0f};
   // GL_COLOR_SUM: add each vertex's secondary colour after texturing.
   bool colorSum = false;
+  TexGen texGen;  // glTexGen (off by default)
+  // glClipPlane(GL_CLIP_PLANE0) in object coordinates (given with the
+  // panel's modelview): keeps the points where plane · (x, y, z, 1) >= 0.
+  bool clip = false;
+  glm::vec4 clipPlane{0.0f};
 };
 
 // Viewport in pixels of the frame, origin at the top-left (as in the PNG).

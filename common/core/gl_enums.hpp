@@ -34,6 +34,10 @@ typedef unsigned int GLuint;
 #define GL_CLAMP_TO_EDGE 0x812F
 #define GL_CLAMP_TO_BORDER 0x812D
 #define GL_MIRRORED_REPEAT 0x8370
+// Texture coordinate generation (glTexGen, Batch::texGen) and 3D textures.
+#define GL_EYE_LINEAR 0x2400
+#define GL_OBJECT_LINEAR 0x2401
+#define GL_TEXTURE_3D 0x806F
 // Texture environment modes.
 #define GL_REPLACE 0x1E01
 #define GL_MODULATE 0x2100

@@ -172,6 +172,11 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
                         {"border", vec(t.border)},
                         {"max_anisotropy", num(t.maxAnisotropy)},
                         {"lod_bias", num(t.lodBias)}});
+    if (t.depth > 1) {  // a 3D texture: only then, so other sidecars read as before
+      textures.back()["depth"] = t.depth;
+      textures.back()["height"] = t.image ? t.image->height / t.depth : 0;
+      textures.back()["wrap_r"] = glEnumName(t.wrapR);
+    }
   }
   d["textures"] = textures;
   Json programs = Json::array();
@@ -204,6 +209,23 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
       if (b.texEnv == GL_BLEND || b.envColor != glm::vec4(0.0f)) bj["tex_env_color"] = vec(b.envColor);
       if (b.textureMatrix != glm::mat4(1.0f)) bj["texture_matrix"] = mat(b.textureMatrix);
       if (b.colorSum) bj["color_sum"] = true;
+      if (b.texGen.on()) {
+        // glTexGen: the mode, the coordinates it generates, their planes and
+        // (EYE_LINEAR) the modelview in force when the planes were given.
+        Json coords = Json::array(), planes = Json::object();
+        const char* names[4] = {"s", "t", "r", "q"};
+        for (int k = 0; k < 4; ++k)
+          if (b.texGen.coords & (1u << k)) {
+            coords.push_back(names[k]);
+            planes[names[k]] = vec(b.texGen.planes[k]);
+          }
+        Json tg = {{"mode", b.texGen.mode == GL_EYE_LINEAR ? "GL_EYE_LINEAR" : "GL_OBJECT_LINEAR"},
+                   {"coords", coords},
+                   {"planes", planes}};
+        if (b.texGen.mode == GL_EYE_LINEAR) tg["plane_modelview"] = mat(b.texGen.planeModelview);
+        bj["tex_gen"] = tg;
+      }
+      if (b.clip) bj["clip_plane"] = vec(b.clipPlane);
       bj["vertices"] = vertices;
       batches.push_back(bj);
     }

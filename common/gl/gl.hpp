@@ -40,7 +40,9 @@
   X(glTexCoordPointer) X(glTexEnvfv) X(glTexEnvi) X(glTexImage2D) X(glTexParameterf)         \
   X(glTexParameterfv) X(glTexParameteri) X(glVertex2f) X(glVertex3f)           \
   X(glVertexPointer) X(glViewport) X(glDrawBuffer)                             \
-  X(glNormal3f) X(glTexCoord3f) X(glTexGeni)                                   \
+  X(glNormal3f) X(glTexCoord3f) X(glTexGeni) X(glTexGenfv) X(glClipPlane)      \
+  /* GL 1.2 */                                                                 \
+  X(glTexImage3D)                                                              \
   /* GL 1.3+ multitexture, compressed textures */                             \
   X(glActiveTexture) X(glCompressedTexImage2D) X(glGetTexLevelParameteriv)     \
   /* GL 1.4 */                                                                 \
@@ -190,6 +192,9 @@ bool enableDebugOutput();
 #define glNormal3f ts::gl::p_glNormal3f
 #define glTexCoord3f ts::gl::p_glTexCoord3f
 #define glTexGeni ts::gl::p_glTexGeni
+#define glTexGenfv ts::gl::p_glTexGenfv
+#define glClipPlane ts::gl::p_glClipPlane
+#define glTexImage3D ts::gl::p_glTexImage3D
 #define glUseProgram ts::gl::p_glUseProgram
 #define glBindAttribLocation ts::gl::p_glBindAttribLocation
 #define glGetAttribLocation ts::gl::p_glGetAttribLocation

@@ -93,6 +93,7 @@ Raw toRaw(T v) {
 //   o names written (count = first argument)   n names read (count = first argument)
 //   S shader strings (count, strings, lengths)   s one C string read
 //   M count x 16 floats read   N count x 9 floats read   V count x 4 floats read
+//   D four doubles read (glClipPlane's equation)
 //   - pointer, not kept
 // A leading '?' marks a query: it reads state and draws nothing.
 const std::map<std::string, std::string>& hints() {
@@ -104,7 +105,7 @@ const std::map<std::string, std::string>& hints() {
       {"glGenTextures", "io"}, {"glHint", "ee"}, {"glLoadMatrixf", "m"}, {"glMatrixMode", "e"},
       {"glMultMatrixf", "m"}, {"glPixelStorei", "e"}, {"glPolygonMode", "ee"}, {"glShadeModel", "e"},
       {"glTexEnvf", "eex"}, {"glTexEnvfv", "eev"}, {"glTexEnvi", "eex"}, {"glTexGenfv", "eev"}, {"glTexGeni", "eex"},
-      {"glTexImage2D", "eieiiieeT"}, {"glCompressedTexImage2D", "eieiiii-"}, {"glTexSubImage2D", "eiiiiieeT"}, {"glTexParameterf", "eex"},
+      {"glTexImage2D", "eieiiieeT"}, {"glCompressedTexImage2D", "eieiiii-"}, {"glTexImage3D", "eieiiiiee-"}, {"glClipPlane", "eD"}, {"glTexSubImage2D", "eiiiiieeT"}, {"glTexParameterf", "eex"},
       {"glTexParameterfv", "eev"}, {"glTexParameteri", "eex"}, {"glLightfv", "eev"}, {"glLightModeli", "ex"},
       {"glMaterialfv", "eev"}, {"glReadBuffer", "e"}, {"glDrawBuffer", "e"}, {"glColorMask", "BBBB"},
       {"glStencilFunc", "eiu"}, {"glStencilOp", "eee"}, {"glActiveTexture", "e"}, {"glClientActiveTexture", "e"},
@@ -206,6 +207,13 @@ Arg describe(char hint, const Raw& r, const std::vector<Raw>& all, size_t index,
       return a;
     }
     case 'm': floatsAt(16); return a;
+    case 'D': {
+      const double* v = static_cast<const double*>(r.p);
+      a.kind = Arg::Kind::Floats;
+      a.isDouble = true;
+      if (v) a.floats.assign(v, v + 4);  // the plane's doubles, kept as the floats GL stores them as
+      return a;
+    }
     case 'v': floatsAt(size_t(vectorLength(index > 0 ? all[index - 1].i : 0))); return a;
     case 'M': floatsAt(size_t(std::max<long long>(0, all[1].i)) * 16); return a;
     case 'N': floatsAt(size_t(std::max<long long>(0, all[1].i)) * 9); return a;
@@ -476,9 +484,10 @@ std::string formatCall(const Call& c, bool floatSuffix) {
       case Arg::Kind::Bitfield: out += bitfieldText(a.i); break;
       case Arg::Kind::Boolean: out += a.i ? "GL_TRUE" : "GL_FALSE"; break;
       case Arg::Kind::Floats: {
-        out += "(const GLfloat[" + std::to_string(a.floats.size()) + "]){";
+        out += std::string(a.isDouble ? "(const GLdouble[" : "(const GLfloat[") + std::to_string(a.floats.size()) + "]){";
         for (size_t n = 0; n < a.floats.size(); ++n)
-          out += (n ? ", " : "") + (floatSuffix ? floatLiteral(a.floats[n]) : number(a.floats[n], false));
+          out += (n ? ", " : "") +
+                 (floatSuffix && !a.isDouble ? floatLiteral(a.floats[n]) : number(a.floats[n], a.isDouble));
         out += "}";
         break;
       }

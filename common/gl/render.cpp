@@ -45,6 +45,7 @@ static void upload(const Image& img, int level) {
 GLuint Renderer::texture(const TextureDesc& t) {
   auto it = textures_.find(t.key());
   GLuint id = 0;
+  if (t.depth > 1) return texture3D(t);
   if (t.glTexture) {
     id = t.glTexture;
     glBindTexture(GL_TEXTURE_2D, id);
@@ -99,6 +100,35 @@ GLuint Renderer::texture(const TextureDesc& t) {
   if (gl::hasAnisotropicFiltering())
     glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, t.maxAnisotropy);
   gl::check(("setting the parameters of texture " + t.key()).c_str());
+  return id;
+}
+
+// A 3D texture (TextureDesc::depth > 1): the slices stacked in `image` are
+// exactly glTexImage3D's layout (rows of slice 0, then slice 1, ...).
+GLuint Renderer::texture3D(const TextureDesc& t) {
+  auto it = textures_.find(t.key());
+  GLuint id = 0;
+  if (it != textures_.end()) {
+    id = it->second;
+    glBindTexture(GL_TEXTURE_3D, id);
+  } else {
+    if (!t.image || t.image->height % t.depth != 0)
+      throw Error("3D texture '" + t.name + "' needs an image of depth stacked slices", kExitFailure);
+    glGenTextures(1, &id);
+    glBindTexture(GL_TEXTURE_3D, id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, t.image->width, t.image->height / t.depth, t.depth, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, t.image->pixels.data());
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAX_LEVEL, 0);
+    gl::check(("uploading 3D texture " + t.key()).c_str());
+    textures_[t.key()] = id;
+  }
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GLint(t.minFilter));
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GLint(t.magFilter));
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, GLint(t.wrapS));
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_T, GLint(t.wrapT));
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GLint(t.wrapR));
+  gl::check(("setting the parameters of 3D texture " + t.key()).c_str());
   return id;
 }
 
@@ -283,8 +313,10 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
       glDisable(GL_DEPTH_TEST);
     }
     for (const Batch& b : p.batches) {
+      const bool tex3D = b.texture >= 0 && f.textures.at(size_t(b.texture)).depth > 1;
       if (b.texture >= 0) {
-        glEnable(GL_TEXTURE_2D);
+        glEnable(tex3D ? GL_TEXTURE_3D : GL_TEXTURE_2D);
+        if (tex3D) glDisable(GL_TEXTURE_2D);
         texture(f.textures.at(size_t(b.texture)));
         glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(b.texEnv));
         // The constant colour only GL_BLEND reads: set where it is used, so
@@ -305,6 +337,26 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
       // GL_SEPARATE_SPECULAR_COLOR's second half: the secondary colour is
       // added after texturing (GL 1.4 colour sum; lighting stays off here).
       if (b.colorSum) glEnable(GL_COLOR_SUM);
+      // glTexGen: the planes given under the batch's planeModelview (GL keeps
+      // eye planes multiplied by its inverse), then the panel's modelview back.
+      static const GLenum kGenCoord[4] = {GL_S, GL_T, GL_R, GL_Q};
+      static const GLenum kGenEnable[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
+      if (b.texGen.on()) {
+        const bool eye = b.texGen.mode == GL_EYE_LINEAR;
+        if (eye) glLoadMatrixf(glm::value_ptr(b.texGen.planeModelview));
+        for (int k = 0; k < 4; ++k) {
+          if (!(b.texGen.coords & (1u << k))) continue;
+          glTexGeni(kGenCoord[k], GL_TEXTURE_GEN_MODE, GLint(b.texGen.mode));
+          glTexGenfv(kGenCoord[k], eye ? GL_EYE_PLANE : GL_OBJECT_PLANE, glm::value_ptr(b.texGen.planes[k]));
+          glEnable(kGenEnable[k]);
+        }
+        if (eye) glLoadMatrixf(glm::value_ptr(p.modelview));
+      }
+      if (b.clip) {
+        const double plane[4] = {b.clipPlane.x, b.clipPlane.y, b.clipPlane.z, b.clipPlane.w};
+        glClipPlane(GL_CLIP_PLANE0, plane);
+        glEnable(GL_CLIP_PLANE0);
+      }
       GLuint prog = 0;
       if (!b.program.empty()) {
         const Program* src = nullptr;
@@ -341,6 +393,11 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
       }
       glEnd();
       if (b.colorSum) glDisable(GL_COLOR_SUM);
+      if (b.texGen.on())
+        for (int k = 0; k < 4; ++k)
+          if (b.texGen.coords & (1u << k)) glDisable(kGenEnable[k]);
+      if (b.clip) glDisable(GL_CLIP_PLANE0);
+      if (tex3D) glDisable(GL_TEXTURE_3D);
       if (texMatrix) {
         glMatrixMode(GL_TEXTURE);
         glLoadIdentity();

@@ -293,7 +293,8 @@ std::string checkCall(const std::string& raw) {
                               ((s[j] == '-') && j > 0 && s[j - 1] == 'e')))
         ++j;
       std::string id = s.substr(i, j - i);
-      bool ok = id.rfind("GL_", 0) == 0 || id == "GLfloat" || id == "GLuint" || id == "GLchar" || id == "const" ||
+      bool ok = id.rfind("GL_", 0) == 0 || id == "GLfloat" || id == "GLdouble" || id == "GLuint" || id == "GLchar" ||
+                id == "const" ||
                 id == "NULL" || id == "NAN" || id == "INFINITY";
       bool exponent = i > open + 1 && std::isdigit(static_cast<unsigned char>(s[i - 1])) && c == 'e';
       if (!ok && !exponent) return "unexpected word " + id;
