@@ -407,6 +407,7 @@ class FrameLoop {
     if (busy) glfwPollEvents();
     else if (keyWait > 0) glfwWaitEventsTimeout(measuring ? std::min(keyWait, 1.0 / 30) : keyWait);
     else if (measuring || !input.keys.empty()) glfwWaitEventsTimeout(1.0 / 30);  // the progress moves; the worker wakes us when done
+    else if (scene.animating()) glfwWaitEventsTimeout(0.05);  // an animation that steps now and then
     else if (pane.visible && glfwGetTime() < pane.marksUntil() + 0.1)  // the marks fade on time
       glfwWaitEventsTimeout(0.25);
     else

@@ -92,6 +92,10 @@ class Scene {
   virtual bool wantsAccumBuffer() const { return false; }
   // Window only: called each frame with the elapsed seconds (animations).
   virtual void update(double /*seconds*/) {}
+  // Window only: an animation whose update() changes the state now and then
+  // (not every frame) needs frames while nothing else happens: the window
+  // then wakes about 20 times a second instead of waiting for an event.
+  virtual bool animating() const { return false; }
   // Window only: a click at frame pixel (x, y) (top-left origin) on the
   // figure of a width x height window, outside the inspect mode: the options
   // it sets, as (name, value) pairs the window applies as flags would (so

@@ -110,6 +110,7 @@ inline ts::Frame overviewView(const State& s, int width, int height, const GlRas
   spec.linesAbove = 1;
   spec.linesBelow = 2;
   spec.gap = 14;
+  spec.maxScale = 2;
   spec.minCellWidth = ts::text::width("pixel (21,15): exact 0.242", 1);
   const auto cells = L::flow({8, 8, float(width) - 8, float(height) - 8}, spec);
   const Raster& R = raster();
@@ -130,8 +131,8 @@ inline ts::Frame overviewView(const State& s, int width, int height, const GlRas
     const auto [a, b] = L::halves(cells[1].below);
     L::caption(f, a, "pixel " + pixelName(s.pixel) + ": exact " + (R.interior[k] ? fmt("%.3f", R.exact[k]) : "-"),
                kAmber, cells[1].scale);
-    std::string line = s.method == kExact ? std::to_string(interiorPixels(R)) + " px wholly on the octant, " +
-                                                std::to_string(linePixels(R)) + " over a line"
+    std::string line = s.method == kExact ? std::to_string(interiorPixels(R)) + " px on the octant, " +
+                                                std::to_string(linePixels(R)) + " on lines"
                        : v.empty() ? std::string("measuring ...")
                                  : std::string(methodKey(s.method)) + " " +
                                        (std::isfinite(v[k]) ? fmt("%.3f", v[k]) : "-") + ", rms " +
@@ -234,18 +235,18 @@ inline std::vector<Row> catmullRows(glm::ivec2 P, int level) {
   const size_t k = size_t(pixelIndex(P.x, P.y));
   if (!R.centreOnPatch[k]) return {{{"pixel " + pixelName(P) + ": its centre is not on the octant", kAmber}}};
   const int one = levelsToOneCentre(P.x, P.y);
-  rows.push_back({{"level"}, {"theta"}, {"phi"}, {"texels"}, {"pixel centres"}, {"intensity"}});
+  rows.push_back({{"level"}, {"texels"}, {"intensity"}, {"pixel centres"}, {"theta"}, {"phi"}});
   for (int l = 0; l <= level; ++l) {
     const Fragment fr = fragmentAt(rasterGeometry()[k].centreUW, l);
     const Average a = fragmentAverage(fr);
     const glm::dvec2 th = fr.thetaRange(), ph = fr.phiRange();
     const size_t n = centresCovered(fr).size();
     rows.push_back({{std::to_string(l)},
-                    {"[" + piFraction(th.x) + ", " + piFraction(th.y) + "]"},
-                    {"[" + piFraction(ph.x) + ", " + piFraction(ph.y) + "]"},
                     {std::to_string(fr.texelsPerSide()) + "x" + std::to_string(fr.texelsPerSide())},
+                    {ratio(a.line, a.total), kAmber},
                     {std::to_string(n) + (l == one ? " <- one" : ""), l == one ? kGreen : kWhite},
-                    {ratio(a.line, a.total), kAmber}});
+                    {"[" + piFraction(th.x) + ", " + piFraction(th.y) + "]"},
+                    {"[" + piFraction(ph.x) + ", " + piFraction(ph.y) + "]"}});
   }
   rows.push_back({{"Catmull: subdivide until a fragment covers one pixel centre; the pixel takes the mean of its texels.",
                    kWhite}});
@@ -269,6 +270,7 @@ inline ts::Frame catmullView(const State& s, int width, int height) {
   spec.linesAbove = 1;
   spec.linesBelow = 1;
   spec.gap = 14;
+  spec.maxScale = 2;
   const auto cells = L::flow({m, m, float(width) - m, float(height) - m - textH}, spec);
   table(f, {m, float(height) - m - textH + 4, float(width) - m, float(height) - m}, rows, 2);
   // Each pixel the mean of the level's fragment holding its centre.
@@ -392,6 +394,7 @@ inline ts::Frame inverseView(const State& s, int width, int height) {
   spec.linesAbove = 1;
   spec.linesBelow = 1;
   spec.gap = 16;
+  spec.maxScale = 2;
   const auto cells = L::flow({m, m, float(width) - m, float(height) - m - textH}, spec);
   table(f, {m, float(height) - m - textH + 4, float(width) - m, float(height) - m}, rows, 2);
   f.panels.push_back(rasterPanel("raster", cells[0].picture, raster().inverse, s.pixel));

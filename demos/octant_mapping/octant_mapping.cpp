@@ -86,7 +86,9 @@ class OctantMapping final : public ts::Scene {
   }
   int defaultWidth() const override { return 1024; }
   int defaultHeight() const override { return 540; }
-  std::vector<std::string> claim() const override { return {"catmull_fraction", "inverse_fraction", "rms_exact*"}; }
+  std::vector<std::string> claim() const override {
+    return {"catmull_fraction", "inverse_fraction", "lost_line_pixels[nearest]"};
+  }
 
   void addOptions(ts::Options& o) override {
     o.addEnum("view", &s_.view, {"overview", "table", "catmull", "inverse", "methods"},
@@ -150,6 +152,7 @@ class OctantMapping final : public ts::Scene {
     animClock_ += seconds;
     if (animClock_ >= 1.0) animClock_ = 0, s_.level = (s_.level + 1) % (kMaxLevel + 1);
   }
+  bool animating() const override { return animate_; }
   // A click on a raster picks its pixel.
   std::vector<std::pair<std::string, std::string>> click(int x, int y, int width, int height) const override {
     const ts::Frame f = build(width, height, ts::Measurements());
