@@ -150,6 +150,9 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
   if (name == "checkerboard")
     return ts::checkerboard(intParam(p, "size", name), intParam(p, "checks", name), rgbaParam(p, "color_a", name),
                             rgbaParam(p, "color_b", name));
+  if (name == "line_grid")
+    return ts::lineGrid(intParam(p, "size", name), intParam(p, "cells", name), rgbaParam(p, "color_line", name),
+                        rgbaParam(p, "color_background", name));
   if (name == "texel_index") return ts::texelIndexTexture(intParam(p, "size", name));
   if (name == "labelled_grid") return ts::labelledGrid(intParam(p, "size", name), intParam(p, "cells", name));
   if (name == "mip_level_colours") return ts::mipLevelColours(intParam(p, "size", name));
@@ -162,7 +165,7 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
     return t;
   }
   throw ts::Error("sidecar: unknown texture generator '" + name +
-                  "' (known: checkerboard, texel_index, labelled_grid, mip_level_colours, gradient, file)");
+                  "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, file)");
 }
 
 static SidecarScene read(const std::string& jsonText, const std::string& baseDir) {

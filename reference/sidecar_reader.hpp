@@ -2,7 +2,7 @@
 // back into a ts::Frame, so a figure can be recomputed from the file alone.
 //
 // Textures are re-made from their name and params with the generators of
-// common/core/textures.cpp ("checkerboard", "texel_index", "labelled_grid",
+// common/core/textures.cpp ("checkerboard", "line_grid", "texel_index", "labelled_grid",
 // "mip_level_colours", and "file" from its path); filters, wraps, border, LOD
 // bias and the kind of mip chain come from the file.  An unknown texture name
 // throws ts::Error "sidecar: texture 0: unknown generator 'x' ...".

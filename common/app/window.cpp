@@ -241,6 +241,8 @@ void drawHelp(Scene& scene, const Options& opts, int w, int h, bool* open, char 
                      "demo has one); with the GL pane open (l), the calls that set its texture turn cyan (--inspect X,Y "
                      "does it from the command line).",
                      inspectKey);
+  if (opts.has("pixel"))
+    ImGui::TextWrapped("Outside the inspect mode a click on a raster picks its pixel (--pixel X,Y).");
   if (opts.has("light1-az") && opts.has("light1-el"))
     ImGui::TextWrapped("A right drag moves light 1 (--light1-az left and right, --light1-el up and down).");
   ImGui::End();
@@ -407,6 +409,7 @@ class FrameLoop {
     if (busy) glfwPollEvents();
     else if (keyWait > 0) glfwWaitEventsTimeout(measuring ? std::min(keyWait, 1.0 / 30) : keyWait);
     else if (measuring || !input.keys.empty()) glfwWaitEventsTimeout(1.0 / 30);  // the progress moves; the worker wakes us when done
+    else if (scene.animating()) glfwWaitEventsTimeout(0.05);  // an animation that steps now and then
     else if (pane.visible && glfwGetTime() < pane.marksUntil() + 0.1)  // the marks fade on time
       glfwWaitEventsTimeout(0.25);
     else
@@ -431,7 +434,26 @@ class FrameLoop {
       }
     }
     input.dropped.clear();
-    if (input.clicked) inspect.click(input.clickX, input.clickY, split.figureW, ctx.height()), input.clicked = false;
+    if (input.clicked && inspect.active()) inspect.click(input.clickX, input.clickY, split.figureW, ctx.height());
+    else if (input.clicked && input.clickX >= 0 && input.clickX < split.figureW) clickScene();
+    input.clicked = false;
+  }
+
+  // A click on the figure outside the inspect mode: the options the scene
+  // sets for it (Scene::click), as flags; a changed state is measured again.
+  void clickScene() {
+    const std::string before = opts.stateText();
+    for (const auto& [name, value] : scene.click(int(input.clickX), int(input.clickY), split.figureW, ctx.height())) {
+      try {
+        opts.set(name, value);
+      } catch (const Error& e) {
+        std::fprintf(stderr, "%s: %s\n", scene.id().c_str(), e.what());
+      }
+    }
+    if (opts.stateText() != before) {
+      testLog.line("click", opts.stateText());
+      dirty = true, record = pane.visible, keyChanged();
+    }
   }
 
   // One synthesised or typed key per frame, through the same handler.

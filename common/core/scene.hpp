@@ -92,6 +92,19 @@ class Scene {
   virtual bool wantsAccumBuffer() const { return false; }
   // Window only: called each frame with the elapsed seconds (animations).
   virtual void update(double /*seconds*/) {}
+  // Window only: an animation whose update() changes the state now and then
+  // (not every frame) needs frames while nothing else happens: the window
+  // then wakes about 20 times a second instead of waiting for an event.
+  virtual bool animating() const { return false; }
+  // Window only: a click at frame pixel (x, y) (top-left origin) on the
+  // figure of a width x height window, outside the inspect mode: the options
+  // it sets, as (name, value) pairs the window applies as flags would (so
+  // F12's command carries them), e.g. {"pixel", "21,15"} for a raster pixel.
+  // Default: none (a click does nothing).
+  virtual std::vector<std::pair<std::string, std::string>> click(int /*x*/, int /*y*/, int /*width*/,
+                                                                 int /*height*/) const {
+    return {};
+  }
   // A live view: measure() draws the picture itself with GL (into a texture
   // the frame names through TextureDesc::glTexture), so the window calls it
   // every frame, not only after a key.  Default: no.

@@ -35,6 +35,21 @@ TextureDesc checkerboard(int size, int checks, Rgba a, Rgba b) {
   return t;
 }
 
+TextureDesc lineGrid(int size, int cells, Rgba line, Rgba background) {
+  if (size < 2 || size > kMaxImageDimension || cells < 1 || cells > size - 1)
+    throw Error("line_grid: size " + str(size) + " with " + str(cells) + " cells is invalid");
+  std::vector<bool> onLine(size_t(size), false);
+  for (int k = 0; k <= cells; ++k) onLine[size_t((size - 1) * k / cells)] = true;
+  auto img = std::make_shared<Image>(size, size);
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) img->set(i, j, onLine[size_t(i)] || onLine[size_t(j)] ? line : background);
+  TextureDesc t;
+  t.name = "line_grid";
+  t.params = {{"size", str(size)}, {"cells", str(cells)}, {"color_line", str(line)}, {"color_background", str(background)}};
+  t.image = img;
+  return t;
+}
+
 Rgba checkerAt(int size, int checks, Rgba a, Rgba b, double s, double t) {
   auto texel = [size](double c) {
     double f = c - std::floor(c);

@@ -13,6 +13,11 @@ namespace ts {
 // size x size texels, checks x checks squares; texel (0,0) (s≈0, t≈0, the
 // bottom-left in GL) has colour `a`.  Square (i, j) is `a` when i+j is even.
 TextureDesc checkerboard(int size, int checks, Rgba a = {32, 32, 32, 255}, Rgba b = {224, 224, 224, 255});
+// size x size texels, white, with grid lines one texel wide in columns and
+// rows floor((size - 1) k / cells), k = 0..cells: Rogers' grid pattern
+// (seed 004: 64 texels, 4 cells, lines at 0, 15, 31, 47, 63).  Texel (i, j)
+// is row j from t = 0, like every procedural texture here.
+TextureDesc lineGrid(int size, int cells, Rgba line = {0, 0, 0, 255}, Rgba background = {255, 255, 255, 255});
 // A texture whose texel (i, j) holds its own indices, i and j in 12 bits:
 // R = i & 255, G = j & 255, B = (i >> 8) | (j >> 8) << 4 (size <= 4096).
 // Drawn with GL_NEAREST it turns a render into a map of which texel each
