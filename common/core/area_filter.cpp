@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace ts {
 double signedArea(const Polygon2& poly) {
@@ -94,6 +95,16 @@ AreaIntegral::AreaIntegral(const Image& texture) : w_(texture.width), h_(texture
       const size_t t = size_t(j) * size_t(w_) + size_t(i), p = size_t(j) * size_t(w_ + 1) + size_t(i);
       texel_[t] = glm::dvec4(c.r, c.g, c.b, c.a);
       prefix_[p + 1] = prefix_[p] + texel_[t];
+    }
+}
+
+AreaIntegral::AreaIntegral(int w, int h, std::vector<glm::dvec4> texels) : w_(w), h_(h), texel_(std::move(texels)) {
+  texel_.resize(size_t(w_) * size_t(h_), glm::dvec4(0.0));
+  prefix_.assign(size_t(w_ + 1) * size_t(h_), glm::dvec4(0.0));
+  for (int j = 0; j < h_; ++j)
+    for (int i = 0; i < w_; ++i) {
+      const size_t p = size_t(j) * size_t(w_ + 1) + size_t(i);
+      prefix_[p + 1] = prefix_[p] + texel_[size_t(j) * size_t(w_) + size_t(i)];
     }
 }
 

@@ -67,6 +67,8 @@ glm::dvec4 exactAreaAverage(const Image& texture, const Polygon2& preimage);
 class AreaIntegral {
  public:
   explicit AreaIntegral(const Image& texture);
+  // Texels given as numbers, w x h, row by row (e.g. linear-light values).
+  AreaIntegral(int w, int h, std::vector<glm::dvec4> texels);
   // The area-weighted average over the polygon (any orientation; a
   // degenerate polygon, area < 1e-12 texels^2, gives the texel under its
   // first corner).  `pieces`, when given, gets the number of edge pieces

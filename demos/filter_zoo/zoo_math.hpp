@@ -278,6 +278,15 @@ struct Sat {
   }
 };
 
+// sRGB values (0..255) to linear light (0..1) and back.
+inline double srgbToLinear(double v8) {
+  const double c = v8 / 255.0;
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+inline double linearToSrgb(double l) {
+  l = std::clamp(l, 0.0, 1.0);
+  return 255.0 * (l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1 / 2.4) - 0.055);
+}
 // Everything the CPU methods read, made once per texture.
 struct Pyramids {
   ts::Image base;
@@ -286,9 +295,19 @@ struct Pyramids {
   Ripmap rip;
   Sat sat;
   ts::AreaIntegral exact;
+  ts::AreaIntegral exactLinear;  // of the linear-light values (0..1; alpha / 255)
   explicit Pyramids(const ts::Image& img)
-      : base(img), mip8(ts::buildMipChain(img)), rip(img), sat(img), exact(img) {
+      : base(img), mip8(ts::buildMipChain(img)), rip(img), sat(img), exact(img), exactLinear(img.width, img.height, linearTexels(img)) {
     for (const ts::Image& l : mip8) chain.emplace_back(l);
+  }
+  static std::vector<glm::dvec4> linearTexels(const ts::Image& img) {
+    std::vector<glm::dvec4> t;
+    for (int j = 0; j < img.height; ++j)
+      for (int i = 0; i < img.width; ++i) {
+        const ts::Rgba c = img.at(i, j);
+        t.push_back({srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b), c.a / 255.0});
+      }
+    return t;
   }
   int levels() const { return int(chain.size()); }
 };
@@ -581,8 +600,9 @@ struct Picture {
   std::vector<glm::dvec4> exact;  // kExact only: the unrounded averages
   double meanReads = 0;
 };
+// With onlyMask, the pixels outside the mask are left as background.
 inline Picture cpuPicture(int method, const Pyramids& p, const View& v, double bias, const std::vector<char>& mask,
-                          ts::Rgba background = {77, 92, 115, 255}) {
+                          ts::Rgba background = {77, 92, 115, 255}, bool onlyMask = false) {
   Picture out;
   out.image = ts::Image(v.w, v.h, background);
   if (method == kExact) out.exact.assign(size_t(v.w) * size_t(v.h), glm::dvec4(background.r, background.g, background.b, 255));
@@ -590,7 +610,7 @@ inline Picture cpuPicture(int method, const Pyramids& p, const View& v, double b
   for (int row = 0; row < v.h; ++row)
     for (int col = 0; col < v.w; ++col) {
       const size_t k = size_t(row) * size_t(v.w) + size_t(col);
-      if (!v.coversPixel(col, row)) continue;
+      if (!v.coversPixel(col, row) || (onlyMask && !mask[k])) continue;
       glm::dvec4 c;
       long r = 0;
       if (method == kExact) {
@@ -726,14 +746,6 @@ inline std::vector<double> kernelTaps(int k) {
   for (double x : t) s += 2 * x;
   for (double& x : t) x /= s;
   return t;
-}
-inline double srgbToLinear(double v8) {
-  const double c = v8 / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-inline double linearToSrgb(double l) {
-  l = std::clamp(l, 0.0, 1.0);
-  return 255.0 * (l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1 / 2.4) - 0.055);
 }
 // One level from the one before, separable, GL_REPEAT, 8-bit (rounded and
 // clamped: negative lobes can overshoot), in sRGB values or in linear light.
