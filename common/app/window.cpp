@@ -429,7 +429,22 @@ class FrameLoop {
       }
     }
     input.dropped.clear();
-    if (input.clicked) inspect.click(input.clickX, input.clickY, split.figureW, ctx.height()), input.clicked = false;
+    if (input.clicked) {
+      if (inspect.active()) {
+        inspect.click(input.clickX, input.clickY, split.figureW, ctx.height());
+      } else if (input.clickX >= 0 && input.clickY >= 0 && input.clickX < split.figureW && input.clickY < ctx.height()) {
+        // The scene's own use of a click (Scene::click): options to set.
+        for (const auto& [name, value] : scene.click(int(input.clickX), int(input.clickY), split.figureW, ctx.height())) {
+          try {
+            opts.set(name, value);
+            dirty = true, record = pane.visible, keyChanged();
+          } catch (const Error& e) {
+            std::fprintf(stderr, "%s: %s\n", scene.id().c_str(), e.what());
+          }
+        }
+      }
+      input.clicked = false;
+    }
   }
 
   // One synthesised or typed key per frame, through the same handler.

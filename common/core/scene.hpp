@@ -92,6 +92,13 @@ class Scene {
   virtual bool wantsAccumBuffer() const { return false; }
   // Window only: called each frame with the elapsed seconds (animations).
   virtual void update(double /*seconds*/) {}
+  // Window only: a click at (x, y) on the figure (frame pixels, 0,0 top
+  // left) of a width x height frame while the inspect mode is off: the
+  // options it sets, as (name, value) pairs (the filter zoo picks the pixel
+  // whose footprint it shows).  Default: none.
+  virtual std::vector<std::pair<std::string, std::string>> click(int /*x*/, int /*y*/, int /*width*/, int /*height*/) const {
+    return {};
+  }
   // A live view: measure() draws the picture itself with GL (into a texture
   // the frame names through TextureDesc::glTexture), so the window calls it
   // every frame, not only after a key.  Default: no.

@@ -30,6 +30,7 @@
 //   a / A  azimuth +-22.5 degrees (arrows)  s  scene: slanted plane | zone plate | magnification
 //   b / B  LOD bias +-1/4                  k  mip kernel (the kernels view's highlight)
 //   g  linear-light kernel                 t  texture: checkerboard | labelled grid
+//   a click on a picture: its pixel in the supports view (--pick X,Y)
 //
 // What the GL does (zoo_measure.hpp): the GL methods draw the scene's outline
 // as triangles with glTexCoord4f(s q, t q, 0, q), (s/q, t/q) the scene's
@@ -55,6 +56,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -152,6 +155,7 @@ class FilterZoo final : public ts::Scene {
 
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
+  std::vector<std::pair<std::string, std::string>> click(int x, int y, int width, int height) const override;
 
  private:
   Views views() const {
@@ -182,6 +186,49 @@ ts::Frame FilterZoo::build(int width, int height, const ts::Measurements& measur
     default: v.buildMethods(f, m); break;
   }
   return f;
+}
+
+// A click on a picture (a method's, in any view but memory and bias) picks
+// its pixel: the supports view shows that pixel's footprint, with the
+// clicked method (and azimuth) as the current ones.  The panels are found
+// in a frame built over stand-in pictures (1 x 1), where they lie in the
+// real one.
+std::vector<std::pair<std::string, std::string>> FilterZoo::click(int x, int y, int width, int height) const {
+  if (view_ == kMemory || view_ == kBias || view_ == kKernels) return {};
+  Result stand;
+  stand.scene = scene_;
+  ts::TextureDesc one;
+  one.name = "stand_in";
+  one.image = std::make_shared<ts::Image>(1, 1);
+  std::vector<double> azs(kAzimuths.begin(), kAzimuths.end());
+  azs.push_back(azimuth_);
+  for (double az : azs) {
+    Row row;
+    row.azimuth = az;
+    row.pictures.fill(one);
+    stand.rows.push_back(row);
+  }
+  ts::Measurements m;
+  m.detail = stand;
+  const ts::Frame f = build(width, height, m);
+  for (const ts::Panel& p : f.panels) {
+    if (!p.viewport.contains(x, y) || p.viewport.w <= 0 || p.viewport.h <= 0) continue;
+    std::string method;
+    double az = azimuth_;
+    if (p.id == "picture") method = methodKey(method_);
+    else if (p.id.rfind("method_", 0) == 0) method = p.id.substr(7);
+    else if (p.id.rfind("az", 0) == 0 && p.id.find('_') != std::string::npos) {
+      const size_t u = p.id.find('_');
+      az = std::stod(p.id.substr(2, u - 2)), method = p.id.substr(u + 1);
+    } else {
+      continue;
+    }
+    const int px = std::clamp(int((x - p.viewport.x + 0.5) * kImageW / p.viewport.w), 0, kImageW - 1);
+    const int py = std::clamp(int((y - p.viewport.y + 0.5) * kImageH / p.viewport.h), 0, kImageH - 1);
+    return {{"pick", std::to_string(px) + "," + std::to_string(py)}, {"view", kViewKeys[kSupports]},
+            {"method", method}, {"azimuth", fmt("%g", az)}};
+  }
+  return {};
 }
 
 ts::Measurements FilterZoo::measure(ts::Renderer& r) {
