@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "bench_common.hpp"
+#include "common/core/layout.hpp"
 #include "demos/filter_zoo/zoo_math.hpp"
 
 namespace {
@@ -72,7 +73,7 @@ void exact800(benchmark::State& st, double az, int threads) {
   st.counters["pieces_per_pixel"] = double(pieces) / double(px);
 }
 
-void farField(benchmark::State& st, bool clip) {
+void farFieldOnly(benchmark::State& st, bool clip) {
   const View v = slantView(800, 600, 45);
   const std::vector<char> mask = zoo::farField(v, 1.5, 5.0);
   const ts::AreaIntegral a(checker(256));
@@ -103,7 +104,7 @@ void textureSize(benchmark::State& st, int side) {
   st.counters["pieces_per_pixel"] = double(pieces) / double(coveredPixels(v));
 }
 
-void footprint(benchmark::State& st, double texelsPerPixel) {
+void footprintSize(benchmark::State& st, double texelsPerPixel) {
   const View v = flatView(256, 256, 30, texelsPerPixel, {128, 128});
   const ts::AreaIntegral a(checker(256));
   double sink = 0;
@@ -123,12 +124,12 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(("zoo/exact_800x600/" + k).c_str(), exact800, az, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
     benchmark::RegisterBenchmark(("zoo/exact_800x600_2threads/" + k).c_str(), exact800, az, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
   }
-  benchmark::RegisterBenchmark("zoo/exact_far_field/outline", farField, false)->Unit(benchmark::kMillisecond)->UseRealTime();
-  benchmark::RegisterBenchmark("zoo/exact_far_field/clip", farField, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+  benchmark::RegisterBenchmark("zoo/exact_far_field/outline", farFieldOnly, false)->Unit(benchmark::kMillisecond)->UseRealTime();
+  benchmark::RegisterBenchmark("zoo/exact_far_field/clip", farFieldOnly, true)->Unit(benchmark::kMillisecond)->UseRealTime();
   for (int side : {256, 1024, 4096})
     benchmark::RegisterBenchmark(("zoo/exact_texture/" + std::to_string(side)).c_str(), textureSize, side)->Unit(benchmark::kMillisecond)->UseRealTime();
   for (double k : {1.0, 4.0, 16.0, 64.0})
-    benchmark::RegisterBenchmark(("zoo/exact_footprint/" + ts::layout::fmt("%g", k)).c_str(), footprint, k)->Unit(benchmark::kMillisecond)->UseRealTime();
+    benchmark::RegisterBenchmark(("zoo/exact_footprint/" + ts::layout::fmt("%g", k)).c_str(), footprintSize, k)->Unit(benchmark::kMillisecond)->UseRealTime();
   return ts::bench::run(argc, argv, [](const ts::bench::SummaryReporter& rep) {
     std::printf("\n| the exact reference | ms (%s) |\n|---|---|\n", rep.statistic().c_str());
     for (const char* n : {"zoo/exact_800x600/0", "zoo/exact_800x600/22.5", "zoo/exact_800x600/45", "zoo/exact_800x600_2threads/0",
