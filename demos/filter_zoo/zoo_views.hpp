@@ -175,13 +175,29 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m) const {
       {"white: the exact preimage" + (on ? " (" + fmt("%.1f", std::abs(ts::signedArea(pre))) + " texels)" : std::string()), kPreimageColour},
       {"yellow: trilinear's 2^lambda square", kSquareColour},
       {"green: the ripmap's 2^i x 2^j", kRipmapColour},
-      {"cyan: the SAT's box" + (on ? " (" + fmt("%.2f", satBoxRatio(j)) + "x the footprint)" : std::string()), kSatColour},
-      {"orange: " + (on ? std::to_string(probe.n) + " probes at lambda " + fmt("%.2f", probe.lambda) : std::string("the probes")), kProbeColour},
-      {"magenta: the EWA ellipse, a one-pixel circle's image", kEllipseColour}};
-  // The picture and the key: a column left of the texture view, or a band above it.
-  const int keyLines = int(key.size()) + 1;
-  const int leftW = wide ? w * 2 / 5 : w - 8;
-  const int pictureRoom = wide ? h - 2 * line - notesHeight(keyLines, sc) : (h - 4 * line) * 2 / 5 - notesHeight(keyLines, sc);
+      {"cyan: the SAT's box" + (on ? " (" + fmt("%.2f", satBoxRatio(j)) + "x the area)" : std::string()), kSatColour},
+      {"orange: " + (on ? std::to_string(probe.n) + " probes, lambda " + fmt("%.2f", probe.lambda) : std::string("the probes")), kProbeColour},
+      {"magenta: EWA's ellipse", kEllipseColour},
+      {sceneText(), kGrey}};
+  // The key's scale: the largest (up to sc) at which its widest line fits `width`.
+  auto keyScale = [&](float width) {
+    int s2 = sc;
+    auto fits = [&](int s3) {
+      for (const auto& kl : key)
+        if (ts::text::width(kl.first, s3) > width) return false;
+      return true;
+    };
+    while (s2 > 1 && !fits(s2)) --s2;
+    return s2;
+  };
+  // Wide: the picture and the key in a column left of the texture view.
+  // Tall: the picture and the key side by side above it.
+  float keyW = 0;
+  for (const auto& kl : key) keyW = std::max(keyW, ts::text::width(kl.first, 1) + 8);
+  const int leftW = wide ? w * 2 / 5 : std::max(40, w - 8 - int(keyW) - 8);
+  const int ks = keyScale(wide ? float(leftW - 4) : keyW);
+  const int keyH = notesHeight(int(key.size()), ks);
+  const int pictureRoom = wide ? h - 2 * line - keyH : std::max(20, (h - 3 * line) / 3);
   const double k = std::max(0.05, std::min(double(leftW - 8) / kImageW, double(pictureRoom) / kImageH));
   const ts::Rect pic{4, line + 2, std::max(8, int(kImageW * k)), std::max(4, int(kImageH * k))};
   const Row* r = m && m->scene == scene ? rowAt(m, azimuth) : nullptr;
@@ -194,24 +210,14 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m) const {
     ring.batches.push_back(ts::lineLoop({{px - rx, py - ry}, {px + rx, py - ry}, {px + rx, py + ry}, {px - rx, py + ry}}, kAmber, 2.0f, "pick"));
     f.panels.push_back(ring);
   }
-  const float keyTop = float(pic.y + pic.h + 6);
+  const L::Box keyBox = wide ? L::Box{4, float(pic.y + pic.h + 6), float(leftW), float(h)}
+                             : L::Box{float(pic.x + pic.w + 8), float(pic.y), float(w - 4), float(pic.y + std::max(pic.h, keyH))};
   {
-    std::vector<std::string> lines;
-    for (const auto& kl : key) lines.push_back(kl.first);
-    lines.push_back(sceneText());
-    int s2 = sc;
-    auto fits = [&](int s3) {
-      for (const std::string& l : lines)
-        if (ts::text::width(l, s3) > float(leftW - 4)) return false;
-      return true;
-    };
-    while (s2 > 1 && !fits(s2)) --s2;
-    L::Column col2(f, {4, keyTop, float(leftW), float(wide ? h : keyTop + notesHeight(keyLines, sc))});
-    for (size_t q = 0; q < key.size(); ++q) col2.add(key[q].first, key[q].second, s2, ts::Align::Left);
-    col2.add(sceneText(), kGrey, s2, ts::Align::Left);
+    L::Column col2(f, keyBox);
+    for (const auto& kl : key) col2.add(kl.first, kl.second, ks, ts::Align::Left);
   }
   // The texture around the footprint.
-  const int areaX = wide ? leftW + 12 : 4, areaY = wide ? line + 2 : int(keyTop) + notesHeight(keyLines, sc) + line;
+  const int areaX = wide ? leftW + 12 : 4, areaY = wide ? line + 2 : pic.y + std::max(pic.h, keyH) + line + 4;
   const ts::Rect view{areaX, areaY, std::max(8, w - areaX - 4), std::max(8, h - areaY - 4)};
   L::caption(f, {float(areaX), float(areaY - line), float(w - 4), float(areaY - 2)},
              on ? "level 0 around its footprint: lambda " + fmt("%.2f", lambda) + ", " + fmt("%.1f", ts::lod::rhoExact(j)) + " texels a pixel"
