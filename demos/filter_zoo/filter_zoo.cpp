@@ -109,7 +109,7 @@ class FilterZoo final : public ts::Scene {
     o.addEnum("kernel", &kernel_, kernels, "the mip kernel highlighted in the kernels view", 'k');
     o.addBool("linear-light", &linearLight_, "the kernels view's highlight: the chain made in linear light", 'g');
     o.addEnum("pattern", &pattern_, {"checker", "grid"}, "the slanted plane's texture: checkerboard | labelled grid (256 x 256)", 't');
-    o.addText("pick", &pick_, "the supports view's pixel X,Y in the 384 x 192 picture (0,0 top left)", [](const std::string& s) {
+    o.addText("pick", &pick_, "the supports view's pixel X,Y in the 384 x 192 picture (0,0 top left); in the window, click a picture", [](const std::string& s) {
       const std::array<int, 2> p = ts::parsePixel(s, "--pick");
       if (p[0] < 0 || p[1] < 0 || p[0] >= kImageW || p[1] >= kImageH)
         throw ts::Error("--pick " + s + ": outside the 384 x 192 picture");
