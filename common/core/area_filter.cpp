@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace ts {
 double signedArea(const Polygon2& poly) {
@@ -83,5 +84,100 @@ glm::dvec4 exactAreaAverage(const Image& texture, const Polygon2& preimage) {
     sum += t.weight * glm::dvec4(c.r, c.g, c.b, c.a);
   }
   return sum;
+}
+
+AreaIntegral::AreaIntegral(const Image& texture) : w_(texture.width), h_(texture.height) {
+  texel_.resize(size_t(w_) * size_t(h_));
+  prefix_.assign(size_t(w_ + 1) * size_t(h_), glm::dvec4(0.0));
+  for (int j = 0; j < h_; ++j)
+    for (int i = 0; i < w_; ++i) {
+      const Rgba c = texture.at(i, j);
+      const size_t t = size_t(j) * size_t(w_) + size_t(i), p = size_t(j) * size_t(w_ + 1) + size_t(i);
+      texel_[t] = glm::dvec4(c.r, c.g, c.b, c.a);
+      prefix_[p + 1] = prefix_[p] + texel_[t];
+    }
+}
+
+AreaIntegral::AreaIntegral(int w, int h, std::vector<glm::dvec4> texels) : w_(w), h_(h), texel_(std::move(texels)) {
+  texel_.resize(size_t(w_) * size_t(h_), glm::dvec4(0.0));
+  prefix_.assign(size_t(w_ + 1) * size_t(h_), glm::dvec4(0.0));
+  for (int j = 0; j < h_; ++j)
+    for (int i = 0; i < w_; ++i) {
+      const size_t p = size_t(j) * size_t(w_ + 1) + size_t(i);
+      prefix_[p + 1] = prefix_[p] + texel_[size_t(j) * size_t(w_) + size_t(i)];
+    }
+}
+
+glm::dvec4 AreaIntegral::average(const Polygon2& in, long* pieces) const {
+  if (pieces) *pieces = 0;
+  if (in.empty() || w_ <= 0 || h_ <= 0) return glm::dvec4(0.0);
+  // Work near the origin: shift by whole periods (the texture is the same
+  // there), so G's running sums and the area's products stay small, and the
+  // rounding with them.
+  double u0 = in[0].x, v0 = in[0].y;
+  for (const glm::dvec2& p : in) u0 = std::min(u0, p.x), v0 = std::min(v0, p.y);
+  const glm::dvec2 shift(w_ * std::floor(u0 / w_), h_ * std::floor(v0 / h_));
+  double twice = 0;
+  for (size_t k = 0; k < in.size(); ++k) {
+    const glm::dvec2 a = in[k] - shift, b = in[(k + 1) % in.size()] - shift;
+    twice += a.x * b.y - b.x * a.y;
+  }
+  const double total = 0.5 * twice;
+  if (!(std::fabs(total) >= 1e-12)) {
+    const long i = long(std::floor(in[0].x)), j = long(std::floor(in[0].y));
+    return texel_[size_t(((j % h_) + h_) % h_) * size_t(w_) + size_t(((i % w_) + w_) % w_)];
+  }
+  glm::dvec4 sum(0.0);
+  long count = 0;
+  const size_t n = in.size();
+  for (size_t k = 0; k < n; ++k) {
+    const glm::dvec2 a = in[k] - shift, b = in[(k + 1) % n] - shift;
+    if (a.y == b.y) continue;  // dv = 0: nothing to add
+    const glm::dvec2 d = b - a;
+    const int si = d.x > 0 ? 1 : -1, sj = d.y > 0 ? 1 : -1;
+    // t (0..1 along the edge) of the next crossing of a vertical (tu) and a
+    // horizontal (tv) grid line, and the step to the one after.
+    double tu = 2, dtu = 0;
+    if (d.x != 0) {
+      const double c = d.x > 0 ? std::floor(a.x) + 1 : std::ceil(a.x) - 1;
+      tu = (c - a.x) / d.x, dtu = si / d.x;
+    }
+    const double cv = d.y > 0 ? std::floor(a.y) + 1 : std::ceil(a.y) - 1;
+    double tv = (cv - a.y) / d.y;
+    const double dtv = sj / d.y;
+    // The first texel: under the first piece's midpoint; then one step per crossing.
+    double t0 = 0, t1 = std::min(std::min(tu, tv), 1.0);
+    const glm::dvec2 m0 = a + 0.5 * t1 * d;
+    const long i = long(std::floor(m0.x)), j = long(std::floor(m0.y));
+    long q = i >= 0 ? i / w_ : -((-i + w_ - 1) / w_);  // whole periods left of texel i
+    long mi = i - q * w_;                             // its column in the texture
+    long row = ((j % h_) + h_) % h_;
+    const glm::dvec4* pre = &prefix_[size_t(row) * size_t(w_ + 1)];
+    const glm::dvec4* tex = &texel_[size_t(row) * size_t(w_)];
+    for (;;) {
+      if (t1 > t0) {
+        const double um = a.x + 0.5 * (t0 + t1) * d.x;  // G is linear in u within the texel: its midpoint value
+        sum += (d.y * (t1 - t0)) * (double(q) * pre[w_] + pre[mi] + tex[mi] * (um - double(q * w_ + mi)));
+        ++count;
+      }
+      if (t1 >= 1) break;
+      if (t1 == tu) {
+        tu += dtu, mi += si;
+        if (mi == w_) mi = 0, ++q;
+        else if (mi < 0) mi = w_ - 1, --q;
+      }
+      if (t1 == tv) {
+        tv += dtv, row += sj;
+        if (row == h_) row = 0;
+        else if (row < 0) row = h_ - 1;
+        pre = &prefix_[size_t(row) * size_t(w_ + 1)];
+        tex = &texel_[size_t(row) * size_t(w_)];
+      }
+      t0 = t1;
+      t1 = std::min(std::min(tu, tv), 1.0);
+    }
+  }
+  if (pieces) *pieces = count;
+  return sum / total;  // a clockwise polygon gives both signs negative
 }
 }  // namespace ts

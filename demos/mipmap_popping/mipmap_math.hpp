@@ -64,6 +64,8 @@
 #include "common/core/frame.hpp"
 #include "common/core/image.hpp"
 #include "common/core/textures.hpp"
+#include "common/core/mip_lod.hpp"
+#include "common/core/slant_plane.hpp"
 
 namespace mipmap {
 constexpr int kTexels = 256;             // the textures are 256 x 256: levels 0..8
@@ -136,39 +138,15 @@ inline void applyFilter(ts::TextureDesc& t, int filter, int anisotropy, float lo
   t.lodBias = lodBias;
 }
 
-// --- level of detail -------------------------------------------------------
-struct Jacobian {
-  double dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;  // texels per pixel
-};
-inline double rhoExact(const Jacobian& j) {
-  return std::max(std::hypot(j.dudx, j.dvdx), std::hypot(j.dudy, j.dvdy));
-}
-// GL allows any rho in [max(mu, mv), mu + mv].  Mesa's two rasterisers stay
-// inside the lower part: softpipe takes the largest component max(mu, mv)
-// (the interval's low end), llvmpipe the exact lengths; the tests allow
-// that range [lo, hi].  (For the facing plane lo = hi.)
-inline void rhoBounded(const Jacobian& j, double* lo, double* hi) {
-  double mu = std::max(std::abs(j.dudx), std::abs(j.dudy)), mv = std::max(std::abs(j.dvdx), std::abs(j.dvdy));
-  *lo = std::max(mu, mv);
-  *hi = rhoExact(j);
-}
-
+// --- level of detail (common/core/mip_lod.hpp) ----------------------------
+using ts::lod::Jacobian;
+using ts::lod::LevelBlend;
+using ts::lod::rhoBounded;
+using ts::lod::rhoExact;
 // The level a *_MIPMAP_NEAREST filter uses at lambda (bias included).
-inline int nearestLevel(double lambda, int levels = kLevels) {
-  if (lambda <= 0.5) return 0;
-  return std::min(levels - 1, int(std::ceil(lambda + 0.5)) - 1);
-}
+inline int nearestLevel(double lambda, int levels = kLevels) { return ts::lod::nearestLevel(lambda, levels); }
 // The two levels and the weight of the second for *_MIPMAP_LINEAR.
-struct LevelBlend {
-  int lo = 0, hi = 0;
-  double weight = 0;  // of `hi`
-};
-inline LevelBlend linearLevels(double lambda, int levels = kLevels) {
-  if (lambda <= 0) return {0, 0, 0};
-  if (lambda >= levels - 1) return {levels - 1, levels - 1, 0};
-  int k = int(std::floor(lambda));
-  return {k, k + 1, lambda - k};
-}
+inline LevelBlend linearLevels(double lambda, int levels = kLevels) { return ts::lod::linearLevels(lambda, levels); }
 // The "effective" level of a filter at lambda: what the probe should show
 // in units of levels (k for nearest-level filters, k + weight for blends).
 inline double effectiveLevel(int filter, double lambda, int levels = kLevels) {
@@ -180,56 +158,14 @@ inline double effectiveLevel(int filter, double lambda, int levels = kLevels) {
   return nearestLevel(lambda, levels);
 }
 
-// --- cameras and planes ----------------------------------------------------
-// A pinhole camera: world -> camera rotation R and eye E; focal length F in
-// pixels; (cx, cy) the principal point, panel-relative GL pixels.
-struct Camera {
-  glm::dmat3 rot{1.0};
-  glm::dvec3 eye{0.0};
-  double focal = kFocalPixels;
-  double cx = 0, cy = 0;
-  double nearZ = 0.05, farZ = 4000;
-  glm::mat4 projection(int w, int h) const {
-    // Pixel x of the panel sees camera-space x/(-z) = (x - cx)/F.
-    double n = nearZ;
-    return glm::frustum(float(-cx / focal * n), float((w - cx) / focal * n), float(-cy / focal * n),
-                        float((h - cy) / focal * n), float(n), float(farZ));
-  }
-  glm::mat4 modelview() const {
-    glm::dmat4 m(rot);
-    m = m * glm::translate(glm::dmat4(1.0), -eye);
-    return glm::mat4(m);
-  }
-};
-struct Plane {
-  glm::dvec3 origin{0.0}, e1{1, 0, 0}, e2{0, 1, 0};  // e1, e2 orthonormal
-  double density = kTexelsPerUnit;                    // texels per world unit
-  glm::dvec3 normal() const { return glm::cross(e1, e2); }
-};
-
-// (a, b) on the plane and the texel-space Jacobian at panel-relative GL
-// pixel coordinates (x, y) (y up).  Returns false when the ray misses the
-// plane (at or above the horizon).
-inline bool planeAt(const Camera& c, const Plane& p, double x, double y, glm::dvec2* ab, Jacobian* j) {
-  glm::dmat3 rt = glm::transpose(c.rot);
-  glm::dvec3 r = rt * glm::dvec3((x - c.cx) / c.focal, (y - c.cy) / c.focal, -1.0);
-  glm::dvec3 rx = rt * glm::dvec3(1.0 / c.focal, 0, 0), ry = rt * glm::dvec3(0, 1.0 / c.focal, 0);
-  glm::dvec3 n = p.normal();
-  double nr = glm::dot(n, r);
-  if (std::abs(nr) < 1e-15) return false;
-  double lambda = glm::dot(n, p.origin - c.eye) / nr;
-  if (lambda <= 0) return false;
-  glm::dvec3 P = c.eye + lambda * r;
-  if (ab) *ab = {glm::dot(P - p.origin, p.e1), glm::dot(P - p.origin, p.e2)};
-  if (j) {
-    glm::dvec3 dPx = lambda * (rx - r * (glm::dot(n, rx) / nr)), dPy = lambda * (ry - r * (glm::dot(n, ry) / nr));
-    j->dudx = p.density * glm::dot(p.e1, dPx);
-    j->dudy = p.density * glm::dot(p.e1, dPy);
-    j->dvdx = p.density * glm::dot(p.e2, dPx);
-    j->dvdy = p.density * glm::dot(p.e2, dPy);
-  }
-  return true;
-}
+// --- cameras and planes (common/core/slant_plane.hpp) ---------------------
+// A pinhole camera (focal length 256 pixels by default: kFocalPixels), a
+// plane (256 texels per world unit: kTexelsPerUnit), where a pixel's ray
+// meets it with the Jacobian there.
+using ts::slant::Camera;
+using ts::slant::Plane;
+using ts::slant::planeAt;
+static_assert(kFocalPixels == 256 && kTexelsPerUnit == 256, "ts::slant's defaults are this demo's");
 
 // The facing plane at distance d, seen by a camera at the origin looking
 // down -z with the principal point at the centre of a w x h panel.
@@ -248,51 +184,20 @@ inline Plane facingPlane(double d) {
 inline double facingLod(double d) { return std::log2(kTexelsPerUnit * d / kFocalPixels); }
 inline double facingDistance(double lodBase) { return kFocalPixels / kTexelsPerUnit * std::exp2(lodBase); }
 
-// The slanted view: a ground plane y = 0 seen from height 1, the camera
-// pitched down so the horizon is a tenth of the panel from its top; focal
-// length from a 60 degree horizontal field of view.  Texture: s = x, t = -z
-// (one repeat per world unit, t growing away from the eye).
-constexpr double kSlantFovX = 60.0;
-// yawDeg, pitchDeg, zoom: the mouse's orbit (common/core/orbit_camera.hpp): the
-// eye stays, the view turns about the vertical and tilts, the lens zooms.
-inline Camera slantCamera(int w, int h, double yawDeg = 0, double pitchDeg = 0, double zoom = 1) {
-  Camera c;
-  c.cx = w / 2.0, c.cy = h / 2.0;
-  c.focal = (w / 2.0) / std::tan(glm::radians(kSlantFovX / 2));
-  double pitch = std::atan(0.4 * h / c.focal);  // horizon at 0.4 h above the centre
-  pitch += glm::radians(pitchDeg);
-  c.focal *= zoom;
-  c.rot = glm::dmat3(glm::rotate(glm::dmat4(1.0), pitch, glm::dvec3(1, 0, 0)));
-  if (yawDeg != 0) c.rot = c.rot * glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(yawDeg), glm::dvec3(0, 1, 0)));
-  c.eye = {0, 1, 0};
-  c.nearZ = 0.05;
-  c.farZ = 4000;
-  return c;
-}
-inline Plane groundPlane() {
-  Plane p;
-  p.origin = {0, 0, 0};
-  p.e1 = {1, 0, 0};
-  p.e2 = {0, 0, -1};  // n = e1 x e2 = (0, 1, 0)
-  return p;
-}
-constexpr double kGroundHalfWidth = 400, kGroundDepth = 200;
+// The slanted view (common/core/slant_plane.hpp): a ground plane y = 0 seen
+// from height 1, the camera pitched down so the horizon is a tenth of the
+// panel from its top; focal length from a 60 degree horizontal field of
+// view.  Texture: s = x, t = -z (one repeat per world unit, t growing away
+// from the eye).
+using ts::slant::groundPlane;
+using ts::slant::kGroundDepth;
+using ts::slant::kGroundHalfWidth;
+using ts::slant::kSlantFovX;
+using ts::slant::slantCamera;
 
 // --- probes ----------------------------------------------------------------
-struct Mean {
-  double r = 0, g = 0, b = 0;
-};
-inline Mean meanOf(const ts::Image& img, ts::Rect r) {
-  Mean m;
-  long n = 0;
-  for (int y = std::max(0, r.y); y < std::min(img.height, r.y + r.h); ++y)
-    for (int x = std::max(0, r.x); x < std::min(img.width, r.x + r.w); ++x) {
-      ts::Rgba c = img.at(x, y);
-      m.r += c.r, m.g += c.g, m.b += c.b, ++n;
-    }
-  if (n) m.r /= double(n), m.g /= double(n), m.b /= double(n);
-  return m;
-}
+using ts::lod::Mean;  // (common/core/mip_lod.hpp)
+using ts::lod::meanOf;
 inline double largestChannelDiff(const Mean& a, const Mean& b) {
   return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
 }
@@ -310,29 +215,10 @@ inline double poppingMeasure(const std::vector<Mean>& sweep, int* where = nullpt
   return worst;
 }
 
-// Reads a colour of the mip-level-colours texture back as a level: the k
-// (and blend weight f towards k + 1) whose (1 - f) C_k + f C_{k+1} is
-// nearest to `c`.  Returns k + f; *residual is the distance left (8-bit).
+// Reads a colour of the mip-level-colours texture back as a level: k + f
+// (common/core/mip_lod.hpp).
 inline double levelFromColour(const Mean& c, int levels = kLevels, double* residual = nullptr) {
-  auto col = [](int k) {
-    ts::Rgba q = ts::mipLevelColour(k);
-    return glm::dvec3(q.r, q.g, q.b);
-  };
-  glm::dvec3 x(c.r, c.g, c.b);
-  double best = 1e300, at = 0;
-  for (int k = 0; k < levels; ++k) {
-    glm::dvec3 a = col(k);
-    double d0 = glm::length(x - a);
-    if (d0 < best) best = d0, at = k;
-    if (k + 1 < levels) {
-      glm::dvec3 b = col(k + 1), ab = b - a;
-      double f = std::clamp(glm::dot(x - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
-      double d = glm::length(x - (a + f * ab));
-      if (d < best - 1e-9) best = d, at = k + f;
-    }
-  }
-  if (residual) *residual = best;
-  return at;
+  return ts::lod::levelOfColour(c, levels, residual);
 }
 
 // --- supersampled reference ------------------------------------------------
@@ -355,20 +241,5 @@ inline ts::Image boxDownsample(const ts::Image& big, int k) {
     }
   return out;
 }
-// RMS difference (8-bit units, over R, G, B) between two images where
-// mask[y * w + x] is set.
-inline double rmsError(const ts::Image& a, const ts::Image& b, const std::vector<char>& mask, long* count = nullptr) {
-  double sum = 0;
-  long n = 0;
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x) {
-      if (!mask[size_t(y) * size_t(a.width) + size_t(x)]) continue;
-      ts::Rgba p = a.at(x, y), q = b.at(x, y);
-      double dr = p.r - q.r, dg = p.g - q.g, db = p.b - q.b;
-      sum += dr * dr + dg * dg + db * db;
-      n += 3;
-    }
-  if (count) *count = n / 3;
-  return n ? std::sqrt(sum / double(n)) : 0.0;
-}
+using ts::lod::rmsError;  // RMS over R, G, B where a mask is set (common/core/mip_lod.hpp)
 }  // namespace mipmap

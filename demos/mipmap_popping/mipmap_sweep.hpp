@@ -184,18 +184,8 @@ void main() {
 }
 
 // The homography (panel pixel x, y, 1) -> (s q, t q, q) of the ground plane
-// seen by camera c (rows).  The ray r = A (x, y, 1) meets y = 0 at
-// E + r (-E.y / r.y); with q = -r.y / E.y: s q = E.x q + r.x,
-// t q = -(E.z q + r.z).
-inline glm::dmat3 groundHomography(const Camera& c) {
-  glm::dmat3 rt = glm::transpose(c.rot);
-  // Columns of A: the ray's dependence on x, on y, and the constant.
-  glm::dvec3 ax = rt * glm::dvec3(1 / c.focal, 0, 0), ay = rt * glm::dvec3(0, 1 / c.focal, 0),
-             a1 = rt * glm::dvec3(-c.cx / c.focal, -c.cy / c.focal, -1);
-  glm::dvec3 q(-ax.y / c.eye.y, -ay.y / c.eye.y, -a1.y / c.eye.y);
-  glm::dvec3 s = glm::dvec3(ax.x, ay.x, a1.x) + c.eye.x * q, t = -(glm::dvec3(ax.z, ay.z, a1.z) + c.eye.z * q);
-  return glm::transpose(glm::dmat3(s, t, q));  // rows s, t, q
-}
+// (common/core/slant_plane.hpp).
+using ts::slant::groundHomography;
 
 // The ground plane in panel p (its viewport set), as strips at z = 0, -1, -2,
 // -4, ... so no triangle spans the whole depth range.

@@ -60,6 +60,7 @@
 #include "common/gl/gl.hpp"
 #include "common/gl/render.hpp"
 #include "common/gl/render_target.hpp"
+#include "common/core/ewa.hpp"
 #include "parallax_math.hpp"
 
 namespace pax {
@@ -157,21 +158,7 @@ float pom(vec2 uv0, vec2 Vp, vec2 gx, vec2 gy, float cosView) {
   float a = hLo - lo, b = hi - hHi;
   return lo + (hi - lo) * a / (a + b);
 }
-
-vec4 ellipse(vec2 gx, vec2 gy, bool recon) {  // gx = (Ux, Vx), gy = (Uy, Vy)
-  float A = gx.y * gx.y + gy.y * gy.y;
-  float B = -2.0 * (gx.x * gx.y + gy.x * gy.y);
-  float C = gx.x * gx.x + gy.x * gy.x;
-  float det = gx.x * gy.y - gy.x * gx.y;
-  float F = det * det;
-  if (recon) { A += 1.0; C += 1.0; F = A * C - 0.25 * B * B; }
-  return vec4(A, B, C, F);
-}
-vec2 radii(vec4 e) {  // semi-axes, longest first
-  float m = 0.5 * (e.x + e.z), d = 0.5 * sqrt((e.x - e.z) * (e.x - e.z) + e.y * e.y);
-  return vec2(sqrt(e.w / max(m - d, 1e-30)), sqrt(e.w / max(m + d, 1e-30)));
-}
-
+)" + ts::ewa::glsl() /* ellipse(), radii(): common/core/ewa.hpp */ + R"(
 ivec2 wrapT(ivec2 t, int size) { return ivec2((t.x % size + size) % size, (t.y % size + size) % size); }
 // Texel t of level L (wrapped).  texelFetch, or with centreLookups a
 // filtered lookup at the texel's centre — the same value (at a texel centre

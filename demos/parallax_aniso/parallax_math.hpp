@@ -30,6 +30,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/core/ewa.hpp"
 #include "common/core/image.hpp"
 #include "common/core/relief_maps.hpp"
 #include "common/core/scene.hpp"
@@ -114,47 +115,19 @@ struct Camera {
 };
 
 // ---------------------------------------------------------------- EWA
-// Heckbert's ellipse from the screen derivatives (Ux, Vx) = d(u,v)/dx and
-// (Uy, Vy) = d(u,v)/dy (any unit, e.g. texels):
-//   A = Vx^2 + Vy^2,  B = -2 (Ux Vx + Uy Vy),  C = Ux^2 + Uy^2,
-//   F = (Ux Vy - Uy Vx)^2  (the seed prints Ux Vy + Uy Vx: a sign slip).
-// `reconstruction` adds the unit reconstruction filter: A += 1, C += 1, and
-// F becomes A C - B^2 / 4 (which is (Ux Vy - Uy Vx)^2 without the term: the
-// Lagrange identity), so the ellipse is never smaller than a texel.
-struct Ellipse {
-  double A = 0, B = 0, C = 0, F = 0;
-  double Q(double U, double V) const { return A * U * U + B * U * V + C * V * V; }
-  // Semi-axes, longest first (F > 0).
-  glm::dvec2 radii() const {
-    double m = 0.5 * (A + C), d = 0.5 * std::sqrt((A - C) * (A - C) + B * B);
-    double lo = std::max(m - d, 1e-300), hi = std::max(m + d, 1e-300);
-    return {std::sqrt(F / lo), std::sqrt(F / hi)};
-  }
-};
-inline Ellipse ellipse(double Ux, double Vx, double Uy, double Vy, bool reconstruction) {
-  Ellipse e;
-  e.A = Vx * Vx + Vy * Vy;
-  e.B = -2.0 * (Ux * Vx + Uy * Vy);
-  e.C = Ux * Ux + Uy * Uy;
-  e.F = (Ux * Vy - Uy * Vx) * (Ux * Vy - Uy * Vx);
-  if (reconstruction) {
-    e.A += 1.0;
-    e.C += 1.0;
-    e.F = e.A * e.C - 0.25 * e.B * e.B;
-  }
-  return e;
-}
+// Heckbert's ellipse from the screen derivatives, with the corrected F (the
+// seed prints Ux Vy + Uy Vx: a sign slip), shared with the filter zoo through
+// common/core/ewa.hpp (its GLSL twin, ts::ewa::glsl(), is pasted into this
+// demo's shader): A = Vx^2 + Vy^2, B = -2 (Ux Vx + Uy Vy), C = Ux^2 + Uy^2,
+// F = (Ux Vy - Uy Vx)^2; with the unit reconstruction filter A += 1, C += 1,
+// F = A C - B^2 / 4.
+using ts::ewa::Ellipse;
+using ts::ewa::ellipse;
 // The Gaussian weight of a texel at offset (U, V) from the centre: 0 outside.
-inline double ewaWeight(const Ellipse& e, double U, double V) {
-  double q = e.Q(U, V) / e.F;
-  return q <= 1.0 ? std::exp(-kAlpha * q) : 0.0;
-}
+inline double ewaWeight(const Ellipse& e, double U, double V) { return ts::ewa::weight(e, U, V, kAlpha); }
 // The level EWA reads: log2 of the short semi-axis (in level-0 texels), or of
 // the long one / kMaxAniso when the ellipse is thinner than that; >= 0.
-inline double ewaLod(const Ellipse& plain) {
-  glm::dvec2 r = plain.radii();
-  return std::max(0.0, std::log2(std::max({r.y, r.x / kMaxAniso, 1e-30})));
-}
+inline double ewaLod(const Ellipse& plain) { return ts::ewa::lod(plain, kMaxAniso); }
 
 // ---------------------------------------------------------------- tracing
 // The first point where the ray entering at uv0 meets the relief: steps of at

@@ -442,6 +442,28 @@ TEST(VI7Claims, JitterTradesAliasingForNoise) {
 // points": for each pattern the RMS error falls strictly from 1 to 4 to 9 to
 // 16 samples per pixel, and per-pixel jitter's noise with it; 16 jittered
 // samples leave under a third of one sample's error.
+// Claim (Buss, issue 25 item 10): pure random sampling clusters: n x n points
+// anywhere in the pixel leave more error than one point in each of the n x n
+// subpixels, at 9 samples (measured on the CPU model, the same hash).
+TEST(VI7Claims, PureRandomSamplingClustersAndErrsMore) {
+  const ts::Measurements m = jitterDemo({"--samples", "3", "--seed", "1"}).measure();
+  const double random = ts::test::value(m, "rms_cpu[random_3x3]"), jittered = ts::test::value(m, "rms_cpu[jitter_pixel_3x3]");
+  std::printf("[ random   ] 3x3: pure random %.4f, jittered per pixel %.4f\n", random, jittered);
+  EXPECT_GT(random, 1.2 * jittered);
+  // The random points leave the strata: in some pixel a subpixel gets none.
+  int emptyStratum = 0;
+  for (int i = 0; i < 50; ++i) {
+    int count[9] = {};
+    for (int k = 0; k < 9; ++k) {
+      const glm::dvec2 q = jitter::samplePos(jitter::Pattern::Random, 3, 1, i, 7, k);
+      ASSERT_TRUE(q.x >= 0 && q.x < 1 && q.y >= 0 && q.y < 1);
+      ++count[int(q.y * 3) * 3 + int(q.x * 3)];
+    }
+    for (int c : count) emptyStratum += c == 0;
+  }
+  EXPECT_GT(emptyStratum, 50);
+}
+
 TEST(VI7Claims, ErrorFallsAsSamplesRise) {
   const ts::Measurements& m = sweep(1);
   for (const char* kind : {"regular", "jitter_global", "jitter_pixel"}) {

@@ -16,7 +16,7 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 18> kFiguresDrawnFromGlRenders = {
+inline constexpr std::array<const char*, 21> kFiguresDrawnFromGlRenders = {
     // --footprints: the left panel is the picture GL drew, inspected
     "inspect_vi2_footprints", "inspect_aniso_footprint",
     "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step",
@@ -25,7 +25,10 @@ inline constexpr std::array<const char*, 18> kFiguresDrawnFromGlRenders = {
     // bump_mapping: R, emboss and DOT3 are pictures its measure() draws
     "bump_two_lights", "bump_seed002", "bump_normals", "bump_methods", "bump_emboss_overhead",
     // texture_compression: GL's decode of the DXT1 blocks (glGetTexImage), and the picture and error beside it
-    "dxt1_blocks", "dxt1_normal_map"};
+    "dxt1_blocks", "dxt1_normal_map",
+    // filter_zoo: each method's picture is a GL render (GL's filters) or a CPU
+    // computation (ripmap, SAT, probe line, EWA, the exact integral) made by measure()
+    "filter_zoo_azimuth", "filter_zoo_supports", "mip_kernels"};
 
 // Figures whose measure() takes minutes on softpipe (the parallax table: twelve
 // full-frame GLSL passes and a CPU reference per state).  The oracle checks
@@ -45,8 +48,10 @@ inline bool tooSlowForSoftpipe(const std::string& id) {
 // them): another rasterizer legally draws them differently, so the fuzzy
 // comparison with the committed (llvmpipe) PNGs applies on llvmpipe only.
 // The per-pixel oracle and the mipmap tests still check them everywhere.
-inline constexpr std::array<const char*, 4> kFiguresOfTheRasterizersFiltering = {
-    "mip_popping_filmstrip", "mip_popping_plot", "mip_anisotropic", "inspect_aniso_footprint"};
+inline constexpr std::array<const char*, 7> kFiguresOfTheRasterizersFiltering = {
+    "mip_popping_filmstrip", "mip_popping_plot", "mip_anisotropic", "inspect_aniso_footprint",
+    // filter_zoo: GL's filters' pictures and errors (the memory plot places them by their RMS)
+    "filter_zoo_azimuth", "filter_zoo_memory", "mip_kernels"};
 
 inline bool showsTheRasterizersFiltering(const std::string& id) {
   return std::any_of(kFiguresOfTheRasterizersFiltering.begin(), kFiguresOfTheRasterizersFiltering.end(),

@@ -2,6 +2,7 @@
 // (common/core/area_filter.hpp) against areas worked out by hand.  No GL.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -73,5 +74,47 @@ TEST(AreaFilter, DegenerateIsPointSampling) {
   ASSERT_EQ(w.size(), 1u);
   EXPECT_EQ(w[0].i, 2);
   EXPECT_EQ(w[0].j, 7);
+}
+}  // namespace
+
+namespace {
+// Claim: ts::AreaIntegral (Green's theorem along the outline) gives the same
+// average as clipping every texel (exactAreaAverage), for small and large,
+// thin and turned footprints, anywhere in the plane (GL_REPEAT), either
+// orientation, and its cost is the outline's texel crossings: it does not
+// grow with the texture's size.
+TEST(AreaIntegral, AgreesWithClippingEveryTexel) {
+  ts::Image tex(37, 23);
+  std::mt19937 rng(11);
+  for (auto& p : tex.pixels) p = uint8_t(rng() & 255);
+  const ts::AreaIntegral fast(tex);
+  std::uniform_real_distribution<double> pos(-300, 300), size(0.001, 60), ang(0, 6.3), thin(0.02, 1);
+  double worst = 0;
+  for (int n = 0; n < 400; ++n) {
+    const glm::dvec2 c(pos(rng), pos(rng));
+    const double a = size(rng), b = a * thin(rng), th = ang(rng), sk = thin(rng) - 0.5;
+    const glm::dvec2 e1(a * std::cos(th), a * std::sin(th)), e2(b * (-std::sin(th) + sk), b * std::cos(th));
+    Polygon2 quad{c, c + e1, c + e1 + e2 * 1.3, c + e2};  // a convex quadrilateral, not a parallelogram
+    if (n % 2) std::reverse(quad.begin(), quad.end());   // clockwise too
+    const glm::dvec4 want = ts::exactAreaAverage(tex, quad), got = fast.average(quad);
+    for (int k = 0; k < 4; ++k) worst = std::max(worst, std::fabs(want[k] - got[k]));
+  }
+  EXPECT_LT(worst, 1e-6) << "largest difference, 8-bit units";
+  // A constant texture averages to the constant; a texel square reads the texel.
+  ts::Image flat(8, 8, {10, 20, 30, 255});
+  EXPECT_NEAR(ts::AreaIntegral(flat).average({{-3.2, 5.1}, {40.7, 6.0}, {41.0, 19.5}, {-2.0, 18.0}}).g, 20, 1e-9);
+  EXPECT_DOUBLE_EQ(fast.average({{3, 5}, {4, 5}, {4, 6}, {3, 6}}).r, tex.at(3, 5).r);
+  EXPECT_DOUBLE_EQ(fast.average({{3 + 37, 5 - 46}, {4 + 37, 5 - 46}, {4 + 37, 6 - 46}, {3 + 37, 6 - 46}}).r,
+                   tex.at(3, 5).r);
+  // The cost: of a 10 x 3 texel rectangle only the vertical edges have dv, and
+  // each crosses 3 grid lines: 4 pieces each.
+  long pieces = 0;
+  fast.average({{0.5, 0.5}, {10.5, 0.5}, {10.5, 3.5}, {0.5, 3.5}}, &pieces);
+  EXPECT_EQ(pieces, 8);
+  // The same outline on a texture 64 times larger costs the same.
+  ts::Image big(37 * 8, 23 * 8);
+  long piecesBig = 0;
+  ts::AreaIntegral(big).average({{0.5, 0.5}, {10.5, 0.5}, {10.5, 3.5}, {0.5, 3.5}}, &piecesBig);
+  EXPECT_EQ(piecesBig, pieces);
 }
 }  // namespace

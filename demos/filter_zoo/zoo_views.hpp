@@ -1,0 +1,399 @@
+// demos/filter_zoo/zoo_views.hpp — how the filter zoo lays out what it
+// measured: every method side by side at one azimuth; methods x azimuths;
+// one pixel's footprint on the texture with every method's support over the
+// exact preimage; memory against error; the mip kernels; the LOD bias.
+// filter_zoo.cpp measures (zoo_measure.hpp); this draws.
+#pragma once
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "common/core/frame.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/plot.hpp"
+#include "common/core/text.hpp"
+#include "zoo_math.hpp"
+#include "zoo_measure.hpp"
+
+namespace zoo::views {
+using ts::layout::fmt;
+using ts::layout::kAmber;
+using ts::layout::kWhite;
+namespace L = ts::layout;
+
+enum ViewKind { kMethods, kAzimuthGrid, kSupports, kMemory, kKernels, kBias };
+inline const char* const kViewKeys[] = {"methods", "azimuths", "supports", "memory", "kernels", "bias"};
+
+const glm::vec4 kGrey{0.6f, 0.6f, 0.65f, 1.0f};
+// The supports' colours (the inspector's for the preimage, the EWA ellipse
+// and trilinear's 2^lambda square: common/app/inspect_view.cpp).
+const glm::vec4 kPreimageColour{1.0f, 1.0f, 1.0f, 1.0f}, kEllipseColour{1.0f, 0.3f, 0.9f, 1.0f},
+    kSquareColour{1.0f, 0.85f, 0.2f, 1.0f}, kRipmapColour{0.35f, 1.0f, 0.35f, 1.0f}, kSatColour{0.2f, 0.9f, 1.0f, 1.0f},
+    kProbeColour{1.0f, 0.45f, 0.1f, 1.0f};
+
+// Bytes per texel of what each method keeps, over the texture's: the memory
+// figure's x (SAT: satBits / 8 a channel).
+inline double memoryRatio(int m) {
+  switch (m) {
+    case kNearest: case kLinear: return 1.0;
+    case kRipmap: return ripmapMemoryRatio(kTexels, kTexels);
+    case kSat: return satBits(kTexels, kTexels) / 8.0;
+    case kExact: return 1.0;  // the texture, and per-row sums to go fast (ts::AreaIntegral) if wanted
+    default: return mipMemoryRatio(kTexels, kTexels);
+  }
+}
+
+// The state a drawing needs.
+struct Views {
+  int scene = kSlant, method = kProbes, pattern = kChecker, kernel = kBox;
+  double azimuth = 45, bias = 0;
+  bool linearLight = false;
+  int pickX = 250, pickY = 100;  // the supports view's pixel, in the 384 x 192 picture (0,0 top left)
+
+  void buildMethods(ts::Frame& f, const Result* m) const;
+  void buildAzimuths(ts::Frame& f, const Result* m) const;
+  void buildSupports(ts::Frame& f, const Result* m) const;
+  void buildMemory(ts::Frame& f, const Result* m) const;
+  void buildKernels(ts::Frame& f, const Result* m) const;
+  void buildBias(ts::Frame& f, const Result* m) const;
+
+  std::string sceneText() const {
+    return scene == kSlant ? "slanted plane, texture turned " + fmt("%g", azimuth) + " deg"
+           : scene == kZonePlate ? "zone plate, turned " + fmt("%g", azimuth) + " deg, 2.5 texels a pixel"
+                                 : "magnified: 256 texels over 300 pixels, turned " + fmt("%g", azimuth) + " deg";
+  }
+  std::string maskText() const {
+    return scene == kSlant ? "RMS (8-bit R,G,B) against the exact area integral over the far field, LOD 1.5..5"
+                           : "RMS (8-bit R,G,B) against the exact area integral over the picture";
+  }
+};
+
+// Lines of notes at one scale: the largest (up to maxScale) at which every
+// line fits the box's width (at 1 they may wrap); from the box's top down.
+inline void notes(ts::Frame& f, L::Box box, const std::vector<std::string>& lines, glm::vec4 colour, int maxScale,
+                  ts::Align align = ts::Align::Left) {
+  int s = std::max(1, maxScale);
+  auto fits = [&](int sc) {
+    for (const std::string& l : lines)
+      if (ts::text::width(l, sc) > box.w()) return false;
+    return true;
+  };
+  while (s > 1 && !fits(s)) --s;
+  L::Column c(f, box);
+  for (const std::string& l : lines) c.add(l, colour, s, align);
+}
+// The height `lines` lines of notes take at `scale` (one line each).
+inline int notesHeight(int lines, int scale) { return int(std::ceil(lines * L::lineHeight(scale))) + 4; }
+
+// A picture measure() made, in a cell (or "measuring..." before it).
+inline void picturePanel(ts::Frame& f, const std::string& id, const ts::Rect& r, const ts::TextureDesc* t, int scale) {
+  if (t && t->image) f.panels.push_back(L::texturePanel(id, r, f.addTexture(*t)));
+  else L::caption(f, L::box(r), "measuring...", kWhite, scale);
+}
+inline const Row* rowAt(const Result* m, double az) {
+  if (!m) return nullptr;
+  for (const Row& r : m->rows)
+    if (std::abs(r.azimuth - az) < 1e-9) return &r;
+  return nullptr;
+}
+inline std::string readsText(double r) { return r < 0 ? "reads: GL's own" : fmt("%.1f texels", r); }
+
+// Every method side by side at the current azimuth.
+inline void Views::buildMethods(ts::Frame& f, const Result* m) const {
+  const int w = f.width, h = f.height;
+  const int sc = L::scaleFor({0, 0, w, h}, 2), line = int(L::lineHeight(sc));
+  L::FlowSpec spec;
+  spec.n = kMethodCount, spec.aspect = float(kImageW) / kImageH, spec.linesAbove = 1, spec.linesBelow = 1, spec.gap = 8;
+  spec.minCellWidth = 150;
+  const std::vector<L::Cell> cells = L::flow({4, 4, float(w - 4), float(h - 2 * line - 4)}, spec);
+  const Row* row = m && m->scene == scene ? rowAt(m, azimuth) : nullptr;
+  for (int k = 0; k < kMethodCount && k < int(cells.size()); ++k) {
+    const L::Cell& c = cells[size_t(k)];
+    const glm::vec4 colour = k == method ? kAmber : kWhite;
+    L::caption(f, c.above, methodTitle(k), colour, c.scale, ts::Align::Left);
+    picturePanel(f, std::string("method_") + methodKey(k), c.picture, row ? &row->pictures[size_t(k)] : nullptr, c.scale);
+    if (row)
+      L::caption(f, c.below,
+                 k == kExact ? "the reference (" + readsText(row->reads[size_t(k)]) + ")"
+                             : "RMS " + fmt("%.2f", row->rms[size_t(k)]) + ", " + readsText(row->reads[size_t(k)]),
+                 colour, c.scale, ts::Align::Left);
+  }
+  notes(f, {4, float(h - 2 * line - 2), float(w - 4), float(h)},
+        {sceneText() + (bias != 0 ? ", LOD bias " + fmt("%g", bias) : std::string()) + ".  " + maskText(),
+         "GL_* and anisotropic: GL renders" + (m ? " (" + m->renderer + ")" : std::string()) +
+             "; ripmap, SAT, probe line, EWA, exact: on the CPU, in double precision"},
+        kGrey, sc, ts::Align::Center);
+}
+
+// Methods x azimuths (the slanted plane): a band per azimuth.
+inline void Views::buildAzimuths(ts::Frame& f, const Result* m) const {
+  const int w = f.width, h = f.height;
+  const int sc = L::scaleFor({0, 0, w, h / 3}, 2), line = int(L::lineHeight(sc));
+  const float bandH = float(h - line - 4) / 3;
+  for (int b = 0; b < 3; ++b) {
+    const double az = kAzimuths[size_t(b)];
+    const float y0 = 2 + b * bandH;
+    L::caption(f, {4, y0, float(w - 4), y0 + float(line)}, "texture turned " + fmt("%g", az) + " deg", kAmber, sc, ts::Align::Left);
+    L::FlowSpec spec;
+    spec.n = kMethodCount, spec.aspect = float(kImageW) / kImageH, spec.linesAbove = 1, spec.linesBelow = 0, spec.gap = 6;
+    const std::vector<L::Cell> cells = L::flow({4, y0 + float(line), float(w - 4), y0 + bandH - 2}, spec);
+    const Row* row = m && m->scene == kSlant ? rowAt(m, az) : nullptr;
+    for (int k = 0; k < kMethodCount && k < int(cells.size()); ++k) {
+      const L::Cell& c = cells[size_t(k)];
+      std::string t = methodTitle(k);
+      if (row && k != kExact) t += "  " + fmt("%.1f", row->rms[size_t(k)]);
+      L::caption(f, c.above, t, k == method ? kAmber : kWhite, c.scale, ts::Align::Left);
+      picturePanel(f, std::string("az") + azKey(az) + "_" + methodKey(k), c.picture, row ? &row->pictures[size_t(k)] : nullptr,
+                   c.scale);
+    }
+  }
+  L::caption(f, {4, float(h - line - 2), float(w - 4), float(h)},
+             "after each name: " + maskText() + (bias != 0 ? "; LOD bias " + fmt("%g", bias) : std::string()), kGrey, sc,
+             ts::Align::Left);
+}
+
+// One pixel's footprint on level 0 with every method's support: left (or
+// above, in a tall window) the picture with the pixel ringed and the key;
+// right (or below) level 0 of the texture around the footprint.
+inline void Views::buildSupports(ts::Frame& f, const Result* m) const {
+  const int w = f.width, h = f.height;
+  const bool wide = w >= h;
+  const int sc = L::scaleFor({0, 0, wide ? w / 2 : w, wide ? h : h / 2}, 2), line = int(L::lineHeight(sc));
+  const View v = sceneView(scene, azimuth);
+  const int col = std::clamp(pickX, 0, kImageW - 1), row = std::clamp(pickY, 0, kImageH - 1);
+  const double x = col + 0.5, y = kImageH - 1 - row + 0.5;
+  const bool on = v.covers(x, y);
+  const glm::dvec2 c = on ? v.uv(x, y) : glm::dvec2(0.0);
+  const Jacobian j = on ? v.jacobian(x, y) : Jacobian{};
+  const ts::Polygon2 pre = on ? v.preimage(col, row) : ts::Polygon2{};
+  const double lambda = on ? glLambda(j, bias) : 0;
+  const ProbeLine probe = on ? probeLine(j, bias) : ProbeLine{};
+  const std::vector<std::pair<std::string, glm::vec4>> key = {
+      {"white: the exact preimage" + (on ? " (" + fmt("%.1f", std::abs(ts::signedArea(pre))) + " texels)" : std::string()), kPreimageColour},
+      {"yellow: trilinear's 2^lambda square", kSquareColour},
+      {"green: the ripmap's 2^i x 2^j", kRipmapColour},
+      {"cyan: the SAT's box" + (on ? " (" + fmt("%.2f", satBoxRatio(j)) + "x the area)" : std::string()), kSatColour},
+      {"orange: " + (on ? std::to_string(probe.n) + " probes, lambda " + fmt("%.2f", probe.lambda) : std::string("the probes")), kProbeColour},
+      {"magenta: EWA's ellipse", kEllipseColour},
+      {sceneText(), kGrey}};
+  // The key's scale: the largest (up to sc) at which its widest line fits `width`.
+  auto keyScale = [&](float width) {
+    int s2 = sc;
+    auto fits = [&](int s3) {
+      for (const auto& kl : key)
+        if (ts::text::width(kl.first, s3) > width) return false;
+      return true;
+    };
+    while (s2 > 1 && !fits(s2)) --s2;
+    return s2;
+  };
+  // Wide: the picture and the key in a column left of the texture view.
+  // Tall: the picture and the key side by side above it.
+  float keyW = 0;
+  for (const auto& kl : key) keyW = std::max(keyW, ts::text::width(kl.first, 1) + 8);
+  const int leftW = wide ? w * 2 / 5 : std::max(40, w - 8 - int(keyW) - 8);
+  const int ks = keyScale(wide ? float(leftW - 4) : keyW);
+  const int keyH = notesHeight(int(key.size()), ks);
+  const int pictureRoom = wide ? h - 2 * line - keyH : std::max(20, (h - 3 * line) / 3);
+  const double k = std::max(0.05, std::min(double(leftW - 8) / kImageW, double(pictureRoom) / kImageH));
+  const ts::Rect pic{4, line + 2, std::max(8, int(kImageW * k)), std::max(4, int(kImageH * k))};
+  const Row* r = m && m->scene == scene ? rowAt(m, azimuth) : nullptr;
+  L::caption(f, {4, 2, float(wide ? leftW : w - 4), float(line)},
+             std::string(methodTitle(method)) + ", pixel " + std::to_string(col) + "," + std::to_string(row), kAmber, sc, ts::Align::Left);
+  picturePanel(f, "picture", pic, r ? &r->pictures[size_t(method)] : nullptr, sc);
+  {
+    ts::Panel ring = L::unitPanel("pick", pic);
+    const float px = float(x / kImageW), py = float(y / kImageH), rx = 5.0f / float(pic.w), ry = 5.0f / float(pic.h);
+    ring.batches.push_back(ts::lineLoop({{px - rx, py - ry}, {px + rx, py - ry}, {px + rx, py + ry}, {px - rx, py + ry}}, kAmber, 2.0f, "pick"));
+    f.panels.push_back(ring);
+  }
+  const L::Box keyBox = wide ? L::Box{4, float(pic.y + pic.h + 6), float(leftW), float(h)}
+                             : L::Box{float(pic.x + pic.w + 8), float(pic.y), float(w - 4), float(pic.y + std::max(pic.h, keyH))};
+  {
+    L::Column col2(f, keyBox);
+    for (const auto& kl : key) col2.add(kl.first, kl.second, ks, ts::Align::Left);
+  }
+  // The texture around the footprint.
+  const int areaX = wide ? leftW + 12 : 4, areaY = wide ? line + 2 : pic.y + std::max(pic.h, keyH) + line + 4;
+  const ts::Rect view{areaX, areaY, std::max(8, w - areaX - 4), std::max(8, h - areaY - 4)};
+  L::caption(f, {float(areaX), float(areaY - line), float(w - 4), float(areaY - 2)},
+             on ? "level 0 around its footprint: lambda " + fmt("%.2f", lambda) + ", " + fmt("%.1f", ts::lod::rhoExact(j)) + " texels a pixel"
+                : "the pixel is off the surface: pick another (--pick X,Y)",
+             kWhite, sc, ts::Align::Left);
+  if (!on) return;
+  const double side = std::exp2(std::max(0.0, lambda));
+  const glm::dvec2 rip = ripmapLevels(j, bias);
+  const glm::dvec2 ripSize(std::exp2(std::clamp(rip.x, 0.0, double(kLevels - 1))), std::exp2(std::clamp(rip.y, 0.0, double(kLevels - 1))));
+  const glm::dvec2 box = satHalfBox(j, bias);
+  double u0 = c.x - box.x, u1 = c.x + box.x, v0 = c.y - box.y, v1 = c.y + box.y;
+  auto grow = [&](glm::dvec2 p) { u0 = std::min(u0, p.x), u1 = std::max(u1, p.x), v0 = std::min(v0, p.y), v1 = std::max(v1, p.y); };
+  for (const glm::dvec2& p : pre) grow(p);
+  grow(c - side / 2), grow(c + side / 2), grow(c - ripSize / 2.0), grow(c + ripSize / 2.0);
+  const double eu = std::hypot(j.dudx, j.dudy), ev = std::hypot(j.dvdx, j.dvdy);
+  grow({c.x - eu, c.y - ev}), grow({c.x + eu, c.y + ev});
+  const double extent = std::max({u1 - u0, v1 - v0, 4.0}) * 1.1, cu = (u0 + u1) / 2, cv = (v0 + v1) / 2;
+  const double aspect = double(view.w) / double(view.h);
+  const double halfU = extent / 2 * std::max(1.0, aspect), halfV = extent / 2 * std::max(1.0, 1.0 / aspect);
+  ts::Panel p;
+  p.id = "supports";
+  p.viewport = view;
+  p.projection = glm::ortho(float(cu - halfU), float(cu + halfU), float(cv - halfV), float(cv + halfV), -1.0f, 1.0f);
+  ts::TextureDesc tex = sceneTexture(scene, pattern);
+  tex.minFilter = tex.magFilter = GL_NEAREST;
+  tex.mipmaps = false;
+  ts::Batch quad;
+  quad.role = "texture";
+  quad.texture = f.addTexture(tex);
+  const float x0 = float(cu - halfU), x1 = float(cu + halfU), y0 = float(cv - halfV), y1 = float(cv + halfV);
+  for (glm::vec2 q : {glm::vec2(x0, y0), glm::vec2(x1, y0), glm::vec2(x1, y1), glm::vec2(x0, y0), glm::vec2(x1, y1), glm::vec2(x0, y1)})
+    quad.vertices.push_back({glm::vec3(q, 0.0f), glm::vec4(q.x / kTexels, q.y / kTexels, 0.0f, 1.0f), glm::vec4(1.0f)});
+  p.batches.push_back(quad);
+  if (halfU <= 40 && halfV <= 40) {  // level 0's texel grid, faint
+    std::vector<glm::vec2> grid;
+    for (double u = std::ceil(cu - halfU); u <= cu + halfU; ++u) grid.push_back({float(u), y0}), grid.push_back({float(u), y1});
+    for (double t = std::ceil(cv - halfV); t <= cv + halfV; ++t) grid.push_back({x0, float(t)}), grid.push_back({x1, float(t)});
+    p.batches.push_back(ts::lineSegments(grid, glm::vec4(0.42f, 0.42f, 0.47f, 1.0f), 1.0f, "texel_grid"));
+  }
+  auto rect = [&](glm::dvec2 half, glm::vec4 colour, float width, const char* role) {
+    p.batches.push_back(ts::lineLoop({{float(c.x - half.x), float(c.y - half.y)}, {float(c.x + half.x), float(c.y - half.y)},
+                                      {float(c.x + half.x), float(c.y + half.y)}, {float(c.x - half.x), float(c.y + half.y)}},
+                                     colour, width, role));
+  };
+  rect(box, kSatColour, 1.0f, "sat_box");
+  rect(ripSize / 2.0, kRipmapColour, 1.0f, "ripmap_rectangle");
+  rect(glm::dvec2(side / 2), kSquareColour, 1.0f, "trilinear_square");
+  std::vector<glm::vec2> pts;
+  for (int q = 0; q < 64; ++q) {
+    const double a = 2 * kPi * q / 64, ca = std::cos(a), sa = std::sin(a);
+    pts.push_back({float(c.x + j.dudx * ca + j.dudy * sa), float(c.y + j.dvdx * ca + j.dvdy * sa)});
+  }
+  p.batches.push_back(ts::lineLoop(pts, kEllipseColour, 1.0f, "ewa_ellipse"));
+  // The probes: a square at each, its side the texels of its level (2^lambda).
+  const double ps = std::exp2(std::max(0.0, probe.lambda)) / 2;
+  for (int q = 0; q < probe.n; ++q) {
+    const glm::dvec2 at = probe.at(c, q);
+    const float a = float(at.x), b = float(at.y), s = float(std::max(ps, extent / 150));
+    p.batches.push_back(ts::lineLoop({{a - s, b - s}, {a + s, b - s}, {a + s, b + s}, {a - s, b + s}}, kProbeColour, 2.0f, "probe"));
+  }
+  pts.clear();
+  for (const glm::dvec2& q : pre) pts.push_back(glm::vec2(q));
+  p.batches.push_back(ts::lineLoop(pts, kPreimageColour, 2.0f, "exact_preimage"));
+  f.panels.push_back(p);
+}
+
+// Memory against error: each method's bytes per texel over the texture's,
+// and its far-field RMS at 0 and 45 degrees.
+inline void Views::buildMemory(ts::Frame& f, const Result* m) const {
+  const int w = f.width, h = f.height;
+  const int sc = L::scaleFor({0, 0, w, h}, 2), line = int(L::lineHeight(sc));
+  const Row* a = m && m->scene == kSlant ? rowAt(m, 0.0) : nullptr;
+  const Row* b = m && m->scene == kSlant ? rowAt(m, 45.0) : nullptr;
+  if (!a || !b) {
+    L::caption(f, {4, float(h / 2), float(w - 4), float(h)},
+               m && m->scene != kSlant ? "the memory view measures the slanted plane (--scene slant)" : "measuring...", kWhite, 1);
+    return;
+  }
+  ts::plot::Spec s;
+  s.id = "memory_plot";
+  s.title = "memory against error (" + std::string(m->renderer.empty() ? "" : "GL methods: " + m->renderer) + ")";
+  s.xLabel = "memory, over the 8-bit texture's";
+  s.yLabel = "far-field RMS vs exact";
+  s.scale = sc;
+  double ymax = 0;
+  for (int k = kNearest; k < kMethodCount; ++k) ymax = std::max({ymax, a->rms[size_t(k)], b->rms[size_t(k)]});
+  s.x0 = 0.8, s.x1 = 4.3, s.y0 = 0, s.y1 = std::ceil(ymax / 5 + 0.5) * 5;
+  s.xTicks = ts::plot::ticks(1, 4, 0.5);
+  s.yTicks = ts::plot::ticks(0, s.y1, ts::plot::niceStep(s.y1));
+  ts::plot::Series at0("rms_0deg", {0.35f, 0.65f, 1.0f, 1.0f}, ts::plot::Mark::Squares), at45("rms_45deg", kAmber, ts::plot::Mark::Crosses);
+  for (int k = kNearest; k < kMethodCount; ++k) {
+    at0.points.push_back({memoryRatio(k), a->rms[size_t(k)]});
+    at0.tags.push_back(methodKey(k));
+    at45.points.push_back({memoryRatio(k), b->rms[size_t(k)]});
+    at45.tags.push_back("");
+  }
+  s.series = {at0, at45};
+  s.legend = {{"squares: texture turned 0 deg", {0.35f, 0.65f, 1.0f, 1.0f}}, {"crosses: turned 45 deg", kAmber}};
+  ts::plot::draw(f, s, {0, 0, w, h - 2 * line});
+  notes(f, {4, float(h - 2 * line), float(w - 4), float(h)},
+        {"mip chain " + fmt("%.4f", mipMemoryRatio(kTexels, kTexels)) + "x (nmn, trilinear, aniso, probes, EWA); ripmap " +
+             fmt("%.5f", ripmapMemoryRatio(kTexels, kTexels)) + "x; SAT " + std::to_string(satBits(kTexels, kTexels)) +
+             " bits a channel = " + fmt("%g", memoryRatio(kSat)) + "x",
+         "256x256 texture; RMS over the slanted plane's far field (LOD 1.5..5)"},
+        kGrey, sc);
+}
+
+// The mip kernels: trilinear with each kernel's chain, sRGB values and linear light.
+inline void Views::buildKernels(ts::Frame& f, const Result* m) const {
+  const int w = f.width, h = f.height;
+  const int sc = L::scaleFor({0, 0, w, h}, 2), line = int(L::lineHeight(sc));
+  L::FlowSpec spec;
+  spec.n = 2 * kKernelCount, spec.aspect = float(kImageW) / kImageH, spec.linesAbove = 1, spec.linesBelow = 1, spec.gap = 8;
+  spec.minCellWidth = 150;
+  const std::vector<L::Cell> cells = L::flow({4, 4, float(w - 4), float(h - 2 * line - 4)}, spec);
+  for (int k = 0; k < 2 * kKernelCount && k < int(cells.size()); ++k) {
+    const L::Cell& c = cells[size_t(k)];
+    const int kern = k / 2;
+    const bool lin = k % 2;
+    const KernelRow* row = nullptr;
+    if (m)
+      for (const KernelRow& r : m->kernels)
+        if (r.kernel == kern && r.linear == lin) row = &r;
+    const glm::vec4 colour = kern == kernel && lin == linearLight ? kAmber : kWhite;
+    L::caption(f, c.above, std::string(kernelTitle(kern)) + (lin ? ", linear light" : ", sRGB"), colour, c.scale, ts::Align::Left);
+    picturePanel(f, std::string("kernel_") + kernelKey(kern) + (lin ? "_linear" : "_srgb"), c.picture, row ? &row->picture : nullptr, c.scale);
+    if (row) L::caption(f, c.below, "RMS " + fmt("%.2f", row->rms) + ", 1x1 level " + fmt("%.0f", row->top), colour, c.scale, ts::Align::Left);
+  }
+  notes(f, {4, float(h - 2 * line - 2), float(w - 4), float(h)},
+        {"trilinear (GL) with each kernel's mip chain; " + maskText() + ", texture turned " + fmt("%g", azimuth) + " deg",
+         "linear light: against the exact integral of the linear-light values; 1x1 level: the checkerboard's mean, 128 in "
+         "sRGB values, 166 in linear light, whatever the kernel"},
+        kGrey, sc, ts::Align::Center);
+}
+
+// The LOD bias: far-field RMS and flicker against the bias, one plot each.
+inline void Views::buildBias(ts::Frame& f, const Result* m) const {
+  const int w = f.width, h = f.height;
+  const int sc = L::scaleFor({0, 0, w, h / 2}, 2), line = int(L::lineHeight(sc));
+  if (!m || m->bias.empty()) {
+    L::caption(f, {4, float(h / 2), float(w - 4), float(h)}, "measuring...", kWhite, 1);
+    return;
+  }
+  const int plotH = (h - 2 * line) / 2;
+  for (int k = 0; k < 2; ++k) {
+    ts::plot::Spec s;
+    s.id = k == 0 ? "bias_rms_plot" : "bias_flicker_plot";
+    s.title = k == 0 ? "trilinear with LOD bias: far-field RMS against the exact integral (turned " + fmt("%g", azimuth) + " deg)"
+                     : "flicker: RMS of a frame's change, the plane moving 1/8 texel a frame";
+    s.xLabel = k == 1 ? "LOD bias" : "";
+    s.scale = sc;
+    double ymax = k == 1 ? m->flickerExact : 0;
+    ts::plot::Series line(k == 0 ? "rms" : "flicker", k == 0 ? glm::vec4(0.35f, 0.65f, 1.0f, 1.0f) : kAmber, ts::plot::Mark::Line);
+    ts::plot::Series marks(k == 0 ? "rms_points" : "flicker_points", line.color, ts::plot::Mark::Squares);
+    for (const BiasRow& r : m->bias) {
+      const double y = k == 0 ? r.rms : r.flicker;
+      line.points.push_back({r.bias, y});
+      marks.points.push_back({r.bias, y});
+      marks.tags.push_back(fmt(k == 0 ? "%.1f" : "%.2f", y));
+      ymax = std::max(ymax, y);
+    }
+    const double step = ts::plot::niceStep(ymax * 1.2);
+    s.x0 = -1.15, s.x1 = 1.15, s.y0 = 0, s.y1 = std::ceil(ymax * 1.2 / step) * step;
+    s.xTicks = ts::plot::ticks(-1, 1, 0.5);
+    s.yTicks = ts::plot::ticks(0, s.y1, step);
+    s.series = {line, marks};
+    ts::plot::Marker cur;
+    cur.x = bias, cur.color = kWhite, cur.role = "current_bias", cur.dashed = false;
+    s.markers.push_back(cur);
+    if (k == 1) {
+      s.legend = {{"the exact picture's own change: " + fmt("%.2f", m->flickerExact) + " a frame", kGrey}};
+    }
+    ts::plot::draw(f, s, {0, k * plotH, w, plotH});
+  }
+  notes(f, {4, float(h - 2 * line), float(w - 4), float(h)},
+        {"seed 001: a positive bias blurs, a negative one sharpens and aliases (and flickers when the surface moves)"}, kGrey, sc,
+        ts::Align::Center);
+}
+}  // namespace zoo::views
