@@ -455,29 +455,81 @@ bool checkCube(const Functions& fn, ts::Renderer& r, const std::string& picture)
 }
 
 // Seed 002's task 3: the planar wrap against the corrected formulas, at
-// 1,000 points along each axis, scale 0.75 and a centre off the origin.
-bool checkPlanarWrap(const Functions& fn, ts::Renderer&, const std::string&) {
+// 1,000 points along each axis (scale 0.75, a centre off the origin), and a
+// sphere drawn with the wrap per vertex against the same sphere drawn with
+// GL_OBJECT_LINEAR texgen whose planes are the corrected formulas'
+// (Batch::texGen), both through a texel-index texture.
+bool checkPlanarWrap(const Functions& fn, ts::Renderer& r, const std::string& picture) {
   const Functions sol = reference(Impl::Solution);
   const glm::dvec3 c(0.1, -0.2, 0.3);
+  const double k = 0.75;
   bool ok = true;
   uint32_t seed = 12345;
   auto rnd = [&]() { return (seed = seed * 1664525u + 1013904223u) / 4294967296.0 * 4.0 - 2.0; };
+  ts::Image mineAll(3 * 160, 160), glAll(3 * 160, 160);
+  std::vector<bool> counted(size_t(3 * 160) * 160, false);
   for (int axis = 0; axis < 3; ++axis) {
     int mismatches = 0;
     double worst = 0;
-    for (int k = 0; k < 1000; ++k) {
+    for (int n = 0; n < 1000; ++n) {
       const glm::dvec3 p(rnd(), rnd(), rnd());
-      const glm::dvec2 m = fn.planarWrap(p, axis, 0.75, c), want = sol.planarWrap(p, axis, 0.75, c);
+      const glm::dvec2 m = fn.planarWrap(p, axis, k, c), want = sol.planarWrap(p, axis, k, c);
       finite(m.x, "planarWrap"), finite(m.y, "planarWrap");
       const double d = glm::length(m - want);
       worst = std::max(worst, d);
       mismatches += d > 1e-9;
     }
-    ok &= line(mismatches == 0, std::string("along ") + "XYZ"[axis] + ": " + std::to_string(mismatches) +
-                                    " of 1000 points differ from the corrected formula (largest " + fmt("%.3f", worst) +
-                                    "), expected 0");
+    const std::string name = std::string("along ") + "XYZ"[axis];
+    ok &= line(mismatches == 0, name + ": " + std::to_string(mismatches) + " of 1000 points differ from the corrected formula " +
+                                    "(largest " + fmt("%.3f", worst) + "), expected 0");
+    // The sphere, per vertex (yours) and by GL_OBJECT_LINEAR texgen.
+    const ts::Mesh sphere = ts::parametricGrid(
+        48, 24, true, false, [](int i, int j) { return ts::spherePoint(1.0, 48, 24, i, j); },
+        [&](int i, int j) { return fn.planarWrap(ts::spherePoint(1.0, 48, 24, i % 48, j).pos, axis, k, c); });
+    auto draw = [&](bool texgen) {
+      ts::Frame f = ts::layout::blankFrame(160, 160);
+      ts::Panel p;
+      p.id = "sphere";
+      p.viewport = {0, 0, 160, 160};
+      p.projection = glm::perspective(glm::radians(40.0f), 1.0f, 0.5f, 20.0f);
+      p.modelview = glm::lookAt(glm::vec3(2.2f, 1.6f, 2.6f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+      p.depthTest = true;
+      ts::Batch b = ts::meshBatch(sphere, f.addTexture(ts::texelIndexTexture(256)));
+      b.texEnv = GL_REPLACE;
+      if (texgen) {  // s = plane_s . (x, y, z, 1), t = plane_t . (x, y, z, 1)
+        const float kf = float(k);
+        const glm::vec4 planes[3][2] = {{{0, 0, kf, -float(c.z)}, {0, kf, 0, -float(c.y)}},
+                                        {{kf, 0, 0, -float(c.x)}, {0, 0, kf, -float(c.z)}},
+                                        {{kf, 0, 0, -float(c.x)}, {0, kf, 0, -float(c.y)}}};
+        b.texGen.mode = GL_OBJECT_LINEAR;
+        b.texGen.coords = ts::TexGen::S | ts::TexGen::T;
+        b.texGen.planes[0] = planes[axis][0], b.texGen.planes[1] = planes[axis][1];
+      }
+      p.batches.push_back(b);
+      f.panels.push_back(p);
+      return r.renderOffscreen(f);
+    };
+    const ts::Image mine = draw(false), gl = draw(true);
+    int differ = 0, shown = 0;
+    for (int y = 0; y < 160; ++y)
+      for (int x = 0; x < 160; ++x) {
+        if (gl.at(x, y) == gl.at(0, 0) && mine.at(x, y) == mine.at(0, 0)) continue;  // the background (the corner's colour)
+        ++shown;
+        int mi = 0, mj = 0, gi = 0, gj = 0;
+        ts::decodeTexelIndex(mine.at(x, y), &mi, &mj);
+        ts::decodeTexelIndex(gl.at(x, y), &gi, &gj);
+        // The same texel, or its neighbour (per-vertex float coordinates and
+        // texgen's float planes round apart at texel edges); 256 wraps.
+        auto near = [](int a, int b) { const int d = std::abs(a - b) % 256; return std::min(d, 256 - d) <= 1; };
+        const bool bad = !(near(mi, gi) && near(mj, gj));
+        differ += bad;
+        counted[size_t(y) * 480 + size_t(axis * 160 + x)] = bad;
+      }
+    mineAll.blit(mine, axis * 160, 0), glAll.blit(gl, axis * 160, 0);
+    ok &= line(differ == 0, name + ": the sphere's " + std::to_string(shown) + " pixels, " + std::to_string(differ) +
+                                " with another texel than GL_OBJECT_LINEAR texgen's, expected 0");
   }
-  std::printf("  (the comparison with GL_OBJECT_LINEAR texgen comes with the projectors demo)\n");
+  comparison(mineAll, glAll, picture, &counted);
   return ok;
 }
 
