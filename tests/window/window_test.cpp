@@ -1732,7 +1732,9 @@ void inspectModeClicks(const std::string& id) {
           },
           "the card of the pixel clicked with the pane open"))
           << demo.why();
-      if (second.where.empty()) {
+      // A card of a batch names it ("panel 1 'canvas'  batch 0 ..."); the
+      // background's names only its panel, and has no calls to mark.
+      if (second.where.find(" batch ") == std::string::npos) {
         std::printf("[ note ] %s/inspect_mode %s: the pixel found drawn with the pane open, %d,%d, is %s: no batch to mark\n",
                     id.c_str(), size.c_str(), qx, qy, second.lines.front().c_str());
       } else {
