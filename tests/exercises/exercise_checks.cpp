@@ -640,7 +640,9 @@ bool checkBumpGradient(const Functions& fn, ts::Renderer&, const std::string&) {
   std::abort();
 }
 [[noreturn]] void hang() {
-  for (volatile int spin = 0;; spin = spin + 1) {
+  // Unsigned: it wraps (a signed counter's overflow would be UB, which UBSan
+  // turns into a crash instead of the endless loop this stands for).
+  for (volatile unsigned spin = 0;; spin = spin + 1u) {
   }
 }
 }  // namespace
