@@ -396,4 +396,41 @@ inline void Views::buildBias(ts::Frame& f, const Result* m) const {
         {"seed 001: a positive bias blurs, a negative one sharpens and aliases (and flickers when the surface moves)"}, kGrey, sc,
         ts::Align::Center);
 }
+// The four book figures (the gallery's captions and their {measurements}).
+inline std::vector<ts::FigureSpec> figureSpecs() {
+  return {
+      {"filter_zoo_azimuth", "Section VI.1.3 (seeds 001, 003)",
+       "The mipmap demo's slanted plane with a checkerboard turned 0, 22.5 and 45 degrees, drawn by every minification "
+       "filter: GL's (nearest, linear, nearest-mipmap-nearest, trilinear, anisotropic 16x), a ripmap, a summed-area "
+       "table, the probe line and EWA, beside the exact area integral over each pixel's preimage. After each name: its "
+       "RMS against the exact integral in the far field (LOD 1.5 to 5). The ripmap and the SAT fit footprints along the "
+       "texture's axes and lose as the texture turns; the probe line and EWA follow the footprint.",
+       {"--view", "azimuths", "--method", "sat"}, 1500, 1100,
+       "SAT's error grows from {rms_exact[sat@0]} at 0 deg to {rms_exact[sat@45]} at 45 deg and the ripmap's from "
+       "{rms_exact[ripmap@0]} to {rms_exact[ripmap@45]}; the probe line stays at {rms_exact[probes@0]} .. "
+       "{rms_exact[probes@45]}, EWA at {rms_exact[ewa@0]} .. {rms_exact[ewa@45]}."},
+      {"filter_zoo_supports", "Section VI.1.3 (inside a pixel)",
+       "One far pixel of the slanted plane with the texture turned 45 degrees: on level 0 of the texture, its exact "
+       "preimage (white) and what each method reads instead: trilinear's 2^lambda square (yellow), the ripmap's "
+       "2^i x 2^j rectangle (green), the SAT's bounding box (cyan), the probe line's probes (orange), the EWA ellipse "
+       "(magenta).",
+       {"--view", "supports", "--azimuth", "45", "--method", "probes", "--pick", "250,100"}, 1200, 640,
+       "At 45 deg the SAT's box is {sat_box_ratio[8to1_45deg]} times an 8:1 footprint; log2(rho_edge/rho_max) = "
+       "{lod_form_gap_45deg}."},
+      {"filter_zoo_memory", "Section VI.1.3 (seed 001)",
+       "Memory against error: each method's storage over the 8-bit texture's (mip chain 4/3, ripmap (2 - 2^-8)^2, SAT "
+       "24 bits a channel) against its far-field RMS on the slanted plane, the texture turned 0 (squares) and 45 "
+       "degrees (crosses).",
+       {"--view", "memory"}, 1024, 640,
+       "A ripmap costs {ripmap_memory_ratio} times the texture (seed 001: 3x), a SAT {sat_bits[256]} bits a channel "
+       "(seed 001: >= 16); the probe line reads the mip chain alone ({mip_memory_ratio})."},
+      {"mip_kernels", "Section VI.1.3 (seed 001)",
+       "Trilinear filtering of the slanted plane (texture turned 45 degrees) with mip chains made by six kernels (Buss's "
+       "2x2 box, Crow's tent, a Gaussian, Lanczos-2 and -3, a Kaiser-windowed sinc), each averaged in sRGB values and in "
+       "linear light: far-field RMS against the exact integral, and the 1x1 level.",
+       {"--view", "kernels", "--azimuth", "45"}, 1400, 760,
+       "The 1x1 level of the checkerboard is {mip_top[box_srgb]} averaged in sRGB values and {mip_top[box_linear]} in "
+       "linear light, for every kernel (Lanczos-3: {mip_top[lanczos3_srgb]}, {mip_top[lanczos3_linear]})."},
+  };
+}
 }  // namespace zoo::views
