@@ -256,22 +256,12 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
                    "RMS of the error its 24 neighbours' errors predict: interference, moire"});
     out.push_back({"noise" + k, row.res->stats.noise, "RMS of the unpredictable rest: grain"});
   }
-  // Issue 25, item 10: pure random sampling (the CPU model: renderCpu, the
-  // checkerboard is analytic) against jittered, both n x n per pixel.
-  {
-    const jitter::Camera cam;
-    for (Pattern p : {Pattern::Random, Pattern::JitterPixel}) {
-      const jitter::FloatImage img = jitter::renderCpu(cam, p, side_, uint32_t(seed_));
-      ts::Image bytes(cam.width, cam.height);
-      for (size_t q = 0; q < size_t(cam.width) * size_t(cam.height); ++q)
-        for (int ch = 0; ch < 3; ++ch) bytes.pixels[q * 4 + size_t(ch)] = uint8_t(std::lround(img.rgb[q * 3 + size_t(ch)]));
-      const jitter::ErrorStats st = jitter::analyse(jitter::errorImage(bytes.pixels.data(), reference_), cam.width, cam.height);
-      const std::string key = std::string(p == Pattern::Random ? "random" : "jitter_pixel") + "_" + n;
-      out.push_back({"rms_cpu[" + key + "]", st.rms,
-                     p == Pattern::Random ? "RMS error, n x n points anywhere in the pixel (pure random: they cluster), CPU"
-                                          : "RMS error, n x n jittered per pixel, the same CPU model"});
-    }
-  }
+  // Issue 25, item 10: pure random sampling against jittered (jitter_math.hpp, the CPU model).
+  for (Pattern p : {Pattern::Random, Pattern::JitterPixel})
+    out.push_back({std::string("rms_cpu[") + (p == Pattern::Random ? "random" : "jitter_pixel") + "_" + n + "]",
+                   jitter::cpuRms(p, side_, uint32_t(seed_), reference_),
+                   p == Pattern::Random ? "RMS error, n x n points anywhere in the pixel (pure random: they cluster), CPU"
+                                        : "RMS error, n x n jittered per pixel, the same CPU model"});
   if (view_ == kViewPlot)
     for (int kind = 0; kind < 3; ++kind)
       for (int side = 1; side <= kMaxSide; ++side) {

@@ -296,4 +296,15 @@ inline ErrorStats analyse(const std::vector<double>& e, int w, int h, int radius
   const double n = double(count);
   return {std::sqrt(ee / n), std::sqrt(explained / n), std::sqrt((ee - explained) / n)};
 }
+// The RMS error of a pattern's n x n samples per pixel in the CPU model
+// (renderCpu: the checkerboard is analytic), its pixels rounded to 8 bits as
+// GL's are, against `reference`.
+inline double cpuRms(Pattern p, int side, uint32_t seed, const FloatImage& reference) {
+  const Camera cam;
+  const FloatImage img = renderCpu(cam, p, side, seed);
+  std::vector<uint8_t> rgba(size_t(cam.width) * size_t(cam.height) * 4, 255);
+  for (size_t q = 0; q < size_t(cam.width) * size_t(cam.height); ++q)
+    for (int ch = 0; ch < 3; ++ch) rgba[q * 4 + size_t(ch)] = uint8_t(std::lround(img.rgb[q * 3 + size_t(ch)]));
+  return analyse(errorImage(rgba.data(), reference), cam.width, cam.height).rms;
+}
 }  // namespace jitter
