@@ -41,10 +41,12 @@
   X(glTexParameterfv) X(glTexParameteri) X(glVertex2f) X(glVertex3f)           \
   X(glVertexPointer) X(glViewport) X(glDrawBuffer)                             \
   X(glNormal3f) X(glTexCoord3f) X(glTexGeni) X(glTexGenfv) X(glClipPlane)      \
+  X(glAlphaFunc) X(glRotatef) X(glScalef) X(glTranslatef)                     \
   /* GL 1.2 */                                                                 \
   X(glTexImage3D)                                                              \
   /* GL 1.3+ multitexture, compressed textures */                             \
   X(glActiveTexture) X(glCompressedTexImage2D) X(glGetTexLevelParameteriv)     \
+  X(glMultiTexCoord2f) X(glCopyTexImage2D)                                     \
   /* GL 1.4 */                                                                 \
   X(glBlendFuncSeparate) X(glSecondaryColor3f)                                 \
   /* GL 2.0+ shaders */                                                        \
@@ -109,6 +111,12 @@ bool enableDebugOutput();
 // of TM_GL_FUNCTIONS).  The lists check each other: a name missing here links
 // to an undefined ::glFoo, a name missing above is an undeclared pointer.
 #define glAccum ts::gl::p_glAccum
+#define glAlphaFunc ts::gl::p_glAlphaFunc
+#define glCopyTexImage2D ts::gl::p_glCopyTexImage2D
+#define glMultiTexCoord2f ts::gl::p_glMultiTexCoord2f
+#define glRotatef ts::gl::p_glRotatef
+#define glScalef ts::gl::p_glScalef
+#define glTranslatef ts::gl::p_glTranslatef
 #define glBegin ts::gl::p_glBegin
 #define glBindTexture ts::gl::p_glBindTexture
 #define glBlendFunc ts::gl::p_glBlendFunc

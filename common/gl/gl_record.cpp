@@ -109,7 +109,7 @@ const std::map<std::string, std::string>& hints() {
       {"glTexParameterfv", "eev"}, {"glTexParameteri", "eex"}, {"glLightfv", "eev"}, {"glLightModeli", "ex"},
       {"glMaterialfv", "eev"}, {"glReadBuffer", "e"}, {"glDrawBuffer", "e"}, {"glColorMask", "BBBB"},
       {"glStencilFunc", "eiu"}, {"glStencilOp", "eee"}, {"glActiveTexture", "e"}, {"glClientActiveTexture", "e"},
-      {"glMultiTexCoord4f", "e"}, {"glCreateShader", "e"}, {"glShaderSource", "uiS"},
+      {"glMultiTexCoord4f", "e"}, {"glMultiTexCoord2f", "e"}, {"glAlphaFunc", "e"}, {"glCreateShader", "e"}, {"glShaderSource", "uiS"},
       {"glGetUniformLocation", "us"}, {"glGetAttribLocation", "us"}, {"glBindAttribLocation", "uus"},
       {"glUniformMatrix4fv", "iiBM"}, {"glUniformMatrix3fv", "iiBN"}, {"glUniform4fv", "iiV"}, {"glGenerateMipmap", "e"},
       {"glBindFramebuffer", "eu"}, {"glBindRenderbuffer", "eu"}, {"glRenderbufferStorage", "eeii"},

@@ -1,0 +1,334 @@
+// demos/multitexture/mt_gl.hpp — the GL passes the demo measures, in legacy
+// fixed-function GL as seed 001 and Buss teach them: the alpha test, two
+// texture units (glActiveTexture, GL_COMBINE), blending passes
+// (glBlendFunc(GL_DST_COLOR, GL_ZERO) multiplies, (GL_ONE, GL_ONE) adds), an
+// intermediate copy (glCopyTexImage2D), the texture matrix and
+// GL_ATI_texture_env_combine3's GL_MODULATE_ADD_ATI.  Each pass draws into a
+// private target (Renderer::offscreen) in pixel coordinates and is read back;
+// every function restores the state it changes (glPushAttrib).
+#pragma once
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "common/core/image.hpp"
+#include "common/gl/gl.hpp"
+#include "common/gl/render.hpp"
+#include "mt_math.hpp"
+
+namespace mt {
+inline GLuint upload(const ts::Image& img, GLenum filter, GLenum wrap, GLenum internal = GL_RGBA8) {
+  GLuint t = 0;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GLint(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(wrap));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(wrap));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
+  return t;
+}
+
+// Unit `u` textured with `t` in mode `env` (0 = unit off).
+inline void unit(int u, GLuint t, GLenum env) {
+  glActiveTexture(GLenum(GL_TEXTURE0 + u));
+  if (!t) {
+    glDisable(GL_TEXTURE_2D);
+  } else {
+    glEnable(GL_TEXTURE_2D), glBindTexture(GL_TEXTURE_2D, t);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(env));
+  }
+  glActiveTexture(GL_TEXTURE0);
+}
+// A w x h offscreen pass with the state saved around it and pixel
+// coordinates (x right, y up, z in [-1, 1], +1 nearest).
+inline ts::Image pass(ts::Renderer& r, int w, int h, const char* what, const std::function<void()>& draw) {
+  return opaque(r.offscreen(w, h, what, [&](GLuint) {
+    glPushAttrib(GL_ALL_ATTRIB_BITS);
+    glMatrixMode(GL_PROJECTION), glPushMatrix(), glLoadIdentity(), glOrtho(0, w, 0, h, -1, 1);
+    glMatrixMode(GL_MODELVIEW), glPushMatrix(), glLoadIdentity();
+    glDisable(GL_DEPTH_TEST), glDisable(GL_BLEND), glDisable(GL_CULL_FACE), glDisable(GL_LIGHTING);
+    glClearColor(0, 0, 0, 1), glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glUseProgram(0), unit(0, 0, 0), unit(1, 0, 0);
+    draw();
+    glMatrixMode(GL_PROJECTION), glPopMatrix();
+    glMatrixMode(GL_MODELVIEW), glPopMatrix();
+    glPopAttrib();
+  }));
+}
+
+// Unit `u` as GL_COMBINE: rgb = function(source0, source1[, source2]).
+inline void combine(int u, GLenum function, GLenum s0, GLenum s1, GLenum s2 = GL_CONSTANT, GLenum op2 = GL_SRC_COLOR) {
+  glActiveTexture(GLenum(GL_TEXTURE0 + u));
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+  glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GLint(function));
+  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GLint(s0)), glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND0_RGB, GL_SRC_COLOR);
+  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GLint(s1)), glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND1_RGB, GL_SRC_COLOR);
+  glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE2_RGB, GLint(s2)), glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND2_RGB, GLint(op2));
+  glActiveTexture(GL_TEXTURE0);
+}
+// A rectangle with the same (s, t) on units 0 and 1.
+inline void quad(float x0, float y0, float x1, float y1, float z = 0, glm::vec4 st = {0, 0, 1, 1}) {
+  glBegin(GL_QUADS);
+  const float xs[4] = {x0, x1, x1, x0}, ys[4] = {y0, y0, y1, y1}, ss[4] = {st.x, st.z, st.z, st.x}, ts[4] = {st.y, st.y, st.w, st.w};
+  for (int k = 0; k < 4; ++k) {
+    glMultiTexCoord2f(GL_TEXTURE0, ss[k], ts[k]), glMultiTexCoord2f(GL_TEXTURE1, ss[k], ts[k]);
+    glVertex3f(xs[k], ys[k], z);
+  }
+  glEnd();
+}
+
+// ---- alpha ------------------------------------------------------------------
+enum Cutout { kNoAlphaTest, kAlphaTest, kBlend };
+inline void treeState(int mode) {
+  if (mode == kAlphaTest) glEnable(GL_ALPHA_TEST), glAlphaFunc(GL_GREATER, 0.5f);
+  if (mode == kBlend) glEnable(GL_BLEND), glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+}
+// 256 x 256: the tree (64 texels over 128 pixels, GL_NEAREST) drawn first,
+// in front (z = 0.5), then the sky behind it (z = -0.5) with the depth test.
+inline ts::Image cutoutHidden(ts::Renderer& r, GLuint tree, int mode) {
+  return pass(r, 256, 256, "the cutout tree", [&] {
+    glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LESS);
+    unit(0, tree, GL_REPLACE);
+    treeState(mode);
+    quad(64, 64, 192, 192, 0.5f);
+    glDisable(GL_ALPHA_TEST), glDisable(GL_BLEND);
+    unit(0, 0, 0);
+    glColor4f(kSky.r / 255.f, kSky.g / 255.f, kSky.b / 255.f, 1);
+    quad(0, 0, 256, 256, -0.5f);
+  });
+}
+// 256 x 256: the sky first, then a 16 x 16-texel corner of the crown's edge
+// magnified 16 times (GL_LINEAR), alpha-tested or blended.
+inline ts::Image cutoutEdge(ts::Renderer& r, GLuint tree, int mode) {
+  return pass(r, 256, 256, "the tree's edge", [&] {
+    glColor4f(kSky.r / 255.f, kSky.g / 255.f, kSky.b / 255.f, 1);
+    quad(0, 0, 256, 256);
+    glColor4f(1, 1, 1, 1);
+    unit(0, tree, GL_REPLACE);
+    glBindTexture(GL_TEXTURE_2D, tree);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    treeState(mode);
+    quad(0, 0, 256, 256, 0, {0.0625f, 0.5f, 0.3125f, 0.75f});
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  });
+}
+// Silhouette widths turning about the vertical axis, orthographic: strip k
+// (8 rows) shows the quad(s) at angle k * step; one quad of width 1 (128
+// pixels of 256 over x in [-1, 1]); the cross adds the quad at 90 degrees.
+inline ts::Image turningWidths(ts::Renderer& r, int steps, double step) {
+  return pass(r, 256, 2 * steps * 8, "the turning trees", [&] {
+    glMatrixMode(GL_PROJECTION), glLoadIdentity(), glOrtho(-1, 1, -0.05, 0.05, -2, 2);
+    glMatrixMode(GL_MODELVIEW);
+    glColor4f(1, 1, 1, 1);
+    for (int cross = 0; cross < 2; ++cross)
+      for (int k = 0; k < steps; ++k) {
+        glViewport(0, (cross * steps + k) * 8, 256, 8);
+        glLoadIdentity(), glRotatef(float(k * step), 0, 1, 0);
+        glBegin(GL_QUADS);
+        for (glm::vec3 p : {glm::vec3(-0.5f, -0.2f, 0), glm::vec3(0.5f, -0.2f, 0), glm::vec3(0.5f, 0.2f, 0), glm::vec3(-0.5f, 0.2f, 0)})
+          glVertex3f(p.x, p.y, p.z);
+        if (cross)
+          for (glm::vec3 p : {glm::vec3(0, -0.2f, -0.5f), glm::vec3(0, -0.2f, 0.5f), glm::vec3(0, 0.2f, 0.5f), glm::vec3(0, 0.2f, -0.5f)})
+            glVertex3f(p.x, p.y, p.z);
+        glEnd();
+      }
+  });
+}
+// The cross tree, textured and alpha-tested, seen a little from above at
+// three angles (128 x 128 each, side by side).
+inline ts::Image crossTrees(ts::Renderer& r, GLuint tree) {
+  return pass(r, 384, 128, "the cross tree", [&] {
+    glClearColor(kSky.r / 255.f, kSky.g / 255.f, kSky.b / 255.f, 1), glClear(GL_COLOR_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION), glLoadIdentity(), glOrtho(-0.7, 0.7, -0.7, 0.7, -2, 2);
+    glMatrixMode(GL_MODELVIEW);
+    glEnable(GL_DEPTH_TEST);
+    unit(0, tree, GL_REPLACE), treeState(kAlphaTest);
+    const float angles[3] = {0, 30, 45};
+    for (int k = 0; k < 3; ++k) {
+      glViewport(k * 128, 0, 128, 128);
+      glLoadIdentity(), glRotatef(15, 1, 0, 0), glRotatef(angles[k], 0, 1, 0);
+      glBegin(GL_QUADS);
+      const float s[4] = {0, 1, 1, 0}, t[4] = {0, 0, 1, 1};
+      for (int q = 0; q < 2; ++q)
+        for (int v = 0; v < 4; ++v) {
+          glMultiTexCoord2f(GL_TEXTURE0, s[v], t[v]);
+          const float a = s[v] - 0.5f, y = t[v] - 0.5f;
+          q ? glVertex3f(0, y, a) : glVertex3f(a, y, 0);
+        }
+      glEnd();
+    }
+  });
+}
+
+// ---- light maps ---------------------------------------------------------
+// 256 x 256: c = base (unit 0, GL_REPLACE, GL_NEAREST) ⊗ L (unit 1,
+// GL_MODULATE, GL_LINEAR, clamped).
+inline ts::Image lightMapped(ts::Renderer& r, GLuint base, GLuint light) {
+  return pass(r, 256, 256, "the light-mapped wall", [&] {
+    unit(0, base, GL_REPLACE), unit(1, light, GL_MODULATE);
+    quad(0, 0, 256, 256);
+  });
+}
+// The moving spot: frame k of n (128 x 128 each, 4 to a row), the spot map
+// on unit 1 placed by the texture matrix: (s, t) -> 1.6 ((s, t) - c) + 0.5
+// with c on a circle.
+inline glm::vec2 spotCentre(int k, int n) {
+  const double a = 6.283185307179586 * k / n;
+  return {float(0.5 + 0.28 * std::cos(a)), float(0.5 + 0.28 * std::sin(a))};
+}
+inline ts::Image movingSpot(ts::Renderer& r, GLuint base, GLuint spot, int n) {
+  return pass(r, 512, 128 * ((n + 3) / 4), "the moving spot", [&] {
+    unit(0, base, GL_REPLACE), unit(1, spot, GL_MODULATE);
+    glMatrixMode(GL_PROJECTION), glLoadIdentity(), glOrtho(0, 1, 0, 1, -1, 1);
+    for (int k = 0; k < n; ++k) {
+      glViewport((k % 4) * 128, (n - 1) / 4 * 128 - (k / 4) * 128, 128, 128);
+      const glm::vec2 c = spotCentre(k, n);
+      glActiveTexture(GL_TEXTURE1), glMatrixMode(GL_TEXTURE), glLoadIdentity();
+      glTranslatef(0.5f, 0.5f, 0), glScalef(1.6f, 1.6f, 1), glTranslatef(-c.x, -c.y, 0);
+      glMatrixMode(GL_MODELVIEW), glActiveTexture(GL_TEXTURE0);
+      quad(0, 0, 1, 1);
+    }
+    glActiveTexture(GL_TEXTURE1), glMatrixMode(GL_TEXTURE), glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW), glActiveTexture(GL_TEXTURE0);
+  });
+}
+
+// ---- gloss map: i = t_d ⊗ i_diff + g · i_spec, two passes ------------------
+// 256 x 128 over the plane [0, 2] x [0, 1], a 64 x 32 grid, lighting per
+// vertex (glossLighting).  Pass 1: t_d GL_MODULATE the vertex colour i_diff.
+// Pass 2 (when `gloss`): g GL_MODULATE the vertex colour i_spec, added
+// with glBlendFunc(GL_ONE, GL_ONE).
+inline void glossGrid(bool spec) {
+  for (int j = 0; j < 32; ++j) {
+    glBegin(GL_TRIANGLE_STRIP);
+    for (int i = 0; i <= 64; ++i)
+      for (int dj = 1; dj >= 0; --dj) {
+        const double x = i / 32.0, y = (j + dj) / 32.0;
+        const glm::dvec2 l = glossLighting(x, y);
+        const float c = float(spec ? l.y : l.x);
+        glColor4f(c, c, c, 1);
+        glMultiTexCoord2f(GL_TEXTURE0, float(spec ? x / 2 : x), float(y));
+        glVertex3f(float(x * 128), float(y * 128), 0);
+      }
+    glEnd();
+  }
+}
+inline ts::Image glossPasses(ts::Renderer& r, GLuint diffuse, GLuint gloss, bool withGloss) {
+  return pass(r, 256, 128, "the gloss-mapped plane", [&] {
+    glShadeModel(GL_SMOOTH);
+    unit(0, diffuse, GL_MODULATE);
+    glossGrid(false);
+    if (!withGloss) return;
+    glEnable(GL_BLEND), glBlendFunc(GL_ONE, GL_ONE);
+    unit(0, gloss, GL_MODULATE);
+    glossGrid(true);
+  });
+}
+
+// ---- AB + CD ------------------------------------------------------------
+// 128 x 128, the four 64 x 64 textures GL_NEAREST.
+//  kMultitexture: pass 1 units 0, 1 = A, B (unit 1 GL_COMBINE: PREVIOUS x
+//    TEXTURE); pass 2 = C, D the same, added with glBlendFunc(GL_ONE, GL_ONE).
+//  kStored: one unit.  A; B multiplied in (GL_DST_COLOR, GL_ZERO); the
+//    result copied to a texture (glCopyTexImage2D); C; x D; the copy added.
+//  kFramebufferOnly: one unit, no copy: A, x B, + C, x D = (AB + C) D.
+enum Abcd { kMultitexture, kStored, kFramebufferOnly };
+inline ts::Image abcdPasses(ts::Renderer& r, const std::vector<GLuint>& t, int method) {
+  return pass(r, 128, 128, "AB + CD", [&] {
+    const GLuint A = t[0], B = t[1], C = t[2], D = t[3];
+    auto times = [] { glEnable(GL_BLEND), glBlendFunc(GL_DST_COLOR, GL_ZERO); };
+    auto plus = [] { glEnable(GL_BLEND), glBlendFunc(GL_ONE, GL_ONE); };
+    if (method == kMultitexture) {
+      unit(0, A, GL_REPLACE), unit(1, B, GL_COMBINE), combine(1, GL_MODULATE, GL_PREVIOUS, GL_TEXTURE);
+      quad(0, 0, 128, 128);
+      unit(0, C, GL_REPLACE), unit(1, D, GL_COMBINE), plus();
+      quad(0, 0, 128, 128);
+      return;
+    }
+    unit(0, A, GL_REPLACE), quad(0, 0, 128, 128);
+    unit(0, B, GL_REPLACE), times(), quad(0, 0, 128, 128);
+    if (method == kFramebufferOnly) {
+      unit(0, C, GL_REPLACE), plus(), quad(0, 0, 128, 128);
+      unit(0, D, GL_REPLACE), times(), quad(0, 0, 128, 128);
+      return;
+    }
+    GLuint ab = 0;
+    glGenTextures(1, &ab), glBindTexture(GL_TEXTURE_2D, ab);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST), glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 0, 0, 128, 128, 0);  // the intermediate buffer
+    glDisable(GL_BLEND), glClear(GL_COLOR_BUFFER_BIT);
+    unit(0, C, GL_REPLACE), quad(0, 0, 128, 128);
+    unit(0, D, GL_REPLACE), times(), quad(0, 0, 128, 128);
+    unit(0, ab, GL_REPLACE), plus(), quad(0, 0, 128, 128);
+    glDeleteTextures(1, &ab);
+  });
+}
+
+// ---- the pear: i = t_d ⊗ i_diff + t_g · t_r --------------------------------
+// A lathe (pearProfile), 48 x 32 quads, seen along -z, orthographic.  Per
+// vertex: i_diff (Lambert, a light up-left-front) as the colour; (u, v) for
+// the skin; the sphere-map coordinates of the reflected view direction
+// (what GL_SPHERE_MAP texgen would give, computed here) for t_r.
+struct PearVertex {
+  glm::vec3 p;
+  glm::vec2 uv, sphere;
+  float diffuse;
+};
+inline PearVertex pearVertex(int i, int j) {
+  const double u = i / 48.0, v = j / 32.0, a = 6.283185307179586 * u;
+  const glm::dvec2 c = pearProfile(v), d = (pearProfile(std::min(1.0, v + 1e-3)) - pearProfile(std::max(0.0, v - 1e-3)));
+  const glm::dvec3 p(c.x * std::sin(a), c.y, c.x * std::cos(a));
+  glm::dvec3 n = glm::normalize(glm::dvec3(d.y * std::sin(a), -d.x, d.y * std::cos(a)));
+  if (glm::length(d) < 1e-9) n = {0, v < 0.5 ? -1 : 1, 0};
+  const glm::dvec3 refl = glm::reflect(glm::dvec3(0, 0, -1), n);
+  const double m = 2.0 * std::sqrt(refl.x * refl.x + refl.y * refl.y + (refl.z + 1) * (refl.z + 1));
+  const double lambert = std::max(0.0, glm::dot(n, glm::normalize(glm::dvec3(-0.5, 0.6, 0.7))));
+  return {glm::vec3(p), glm::vec2(u, v), glm::vec2(refl.x / m + 0.5, refl.y / m + 0.5), float(0.15 + 0.7 * lambert)};
+}
+// skinUnit / sphereUnit: the unit that gets (u, v) / the sphere-map (s, t).
+inline void pearMesh(int skinUnit, int sphereUnit) {
+  for (int j = 0; j < 32; ++j) {
+    glBegin(GL_TRIANGLE_STRIP);
+    for (int i = 0; i <= 48; ++i)
+      for (int dj = 1; dj >= 0; --dj) {
+        const PearVertex q = pearVertex(i, j + dj);
+        glColor4f(q.diffuse, q.diffuse, q.diffuse, 1);
+        glMultiTexCoord2f(GLenum(GL_TEXTURE0 + skinUnit), q.uv.x, q.uv.y);
+        glMultiTexCoord2f(GLenum(GL_TEXTURE0 + sphereUnit), q.sphere.x, q.sphere.y);
+        glVertex3f(q.p.x, q.p.y, q.p.z);
+      }
+    glEnd();
+  }
+}
+// kCombine3: one pass, two units.  Unit 0: t_d GL_MODULATE i_diff (its alpha
+//   t_g passes on); unit 1: GL_MODULATE_ADD_ATI, t_r x PREVIOUS's alpha +
+//   PREVIOUS.
+// kTwoPasses: pass 1 t_d GL_MODULATE i_diff; pass 2 t_r (unit 0) x t_g
+//   (unit 1, GL_MODULATE), added (GL_ONE, GL_ONE, depth GL_LEQUAL).
+enum Pear { kCombine3, kTwoPasses };
+inline ts::Image pearPasses(ts::Renderer& r, GLuint skin, GLuint gloss, GLuint sky, int method) {
+  return pass(r, 192, 192, "the pear", [&] {
+    glClearColor(0.12f, 0.12f, 0.14f, 1), glClear(GL_COLOR_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION), glLoadIdentity(), glOrtho(-1, 1, -1, 1, -2, 2);
+    glMatrixMode(GL_MODELVIEW);
+    glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LEQUAL);
+    if (method == kCombine3) {
+      unit(0, skin, GL_MODULATE), unit(1, sky, GL_COMBINE);
+      combine(1, GL_MODULATE_ADD_ATI, GL_TEXTURE, GL_PREVIOUS, GL_PREVIOUS, GL_SRC_ALPHA);
+      pearMesh(0, 1);
+      return;
+    }
+    unit(0, skin, GL_MODULATE), pearMesh(0, 1);
+    glColor4f(1, 1, 1, 1);
+    unit(0, sky, GL_REPLACE), unit(1, gloss, GL_MODULATE);
+    glEnable(GL_BLEND), glBlendFunc(GL_ONE, GL_ONE);
+    pearMesh(1, 0);
+  });
+}
+}  // namespace mt

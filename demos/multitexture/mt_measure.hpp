@@ -1,0 +1,197 @@
+// demos/multitexture/mt_measure.hpp — runs the passes of mt_gl.hpp and
+// measures them against the CPU (mt_math.hpp): what the figures show and
+// the named measurements the tests assert.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "common/core/scene.hpp"
+#include "common/gl/gl_listing.hpp"
+#include "mt_gl.hpp"
+
+namespace mt {
+inline const int kLightSizes[4] = {8, 16, 32, 64};
+constexpr int kSpotFrames = 12, kTurnSteps = 72;  // 5 degrees a step
+
+// The default base picture, 128 x 128: bricks in two reds, grey mortar.
+inline ts::Image basePicture() {
+  ts::Image b(128, 128);
+  for (int j = 0; j < 128; ++j)
+    for (int i = 0; i < 128; ++i) {
+      const int row = j / 16, x = (i + (row % 2) * 16) % 32;
+      const bool mortar = j % 16 < 2 || x < 2;
+      const uint8_t v = uint8_t(150 + ((i * 5 + j * 11 + row * 7) % 9) * 8);
+      b.set(i, j, mortar ? ts::Rgba{170, 165, 150, 255} : ts::Rgba{v, uint8_t(v / 3 + 20), uint8_t(v / 4 + 10), 255});
+    }
+  return b;
+}
+
+struct Result {
+  ts::Image hidden[3], edge[3], crossTrees;  // by Cutout mode
+  std::vector<double> singleWidth, crossWidth;  // per 5 degrees, in quad widths
+  ts::Image lit[4], perPixel, spots;           // by kLightSizes; the CPU's; the moving spot's frames
+  ts::Image diffuseOnly, glossed, specular;    // specular = (glossed - diffuse) x 2
+  ts::Image abcdCpu, abcd[3], fbError;         // by Abcd; |(AB+C)D - (AB+CD)| x 4
+  ts::Image pear[2];                           // by Pear
+  bool combine3 = false;
+  ts::gl::CallList abcdCalls[3], pearCalls[2], glossCalls;
+};
+
+// Pixels of a readback inside the tree's rectangle (64..191) whose texel is
+// transparent and which do not show the sky: sky the transparent parts hid.
+inline int hiddenSky(const ts::Image& img, const ts::Image& tree) {
+  int n = 0;
+  for (int y = 64; y < 192; ++y)
+    for (int x = 64; x < 192; ++x) {
+      const int i = (x - 64) / 2, j = (255 - y - 64) / 2;  // window row 255 - y
+      if (tree.at(i, j).a == 0 && img.at(x, y) != kSky) ++n;
+    }
+  return n;
+}
+// Pixels showing sky and tree mixed: blue strictly between the tree's (<= 40)
+// and the sky's (255) by more than 10% of the range.
+inline int fringe(const ts::Image& img) {
+  int n = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) n += img.at(x, y).b > 62 && img.at(x, y).b < 233;
+  return n;
+}
+// The lit pixels of each strip's middle row, / 128 (a quad's full width).
+inline std::vector<double> widths(const ts::Image& strips, int first, int count) {
+  std::vector<double> w;
+  for (int k = first; k < first + count; ++k) {
+    const int y = strips.height - 1 - (k * 8 + 4);
+    int n = 0;
+    for (int x = 0; x < strips.width; ++x) n += strips.at(x, y).r > 127;
+    w.push_back(n / 128.0);
+  }
+  return w;
+}
+inline int countCalls(const ts::gl::CallList& calls, const char* name) {
+  int n = 0;
+  for (const auto& c : *calls) n += std::string(c.name) == name;
+  return n;
+}
+
+inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& ms) {
+  Result out;
+  auto put = [&](const std::string& n, double v, const std::string& meaning) { ms.push_back({n, v, meaning}); };
+  // Alpha.
+  const ts::Image treeImg = treeTexture();
+  const GLuint tree = upload(treeImg, GL_NEAREST, GL_CLAMP_TO_EDGE);
+  const char* modes[3] = {"no_alpha_test", "alpha_test", "blend"};
+  for (int m = 0; m < 3; ++m) {
+    out.hidden[m] = cutoutHidden(r, tree, m), out.edge[m] = cutoutEdge(r, tree, m);
+    put(std::string("cutout_hidden_px[") + modes[m] + "]", hiddenSky(out.hidden[m], treeImg),
+        "sky pixels hidden by the transparent texels' depth, the tree drawn first");
+    put(std::string("edge_fringe_px[") + modes[m] + "]", fringe(out.edge[m]), "pixels mixing sky and tree at the edge, magnified 16x");
+  }
+  out.crossTrees = crossTrees(r, tree);
+  glDeleteTextures(1, &tree);
+  ts::measureProgress(0.2);
+  const ts::Image turning = turningWidths(r, kTurnSteps, 360.0 / kTurnSteps);
+  out.singleWidth = widths(turning, 0, kTurnSteps), out.crossWidth = widths(turning, kTurnSteps, kTurnSteps);
+  auto lo = [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); };
+  auto hi = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
+  put("single_quad_min_width", lo(out.singleWidth), "one quad's silhouette, least over a turn (|cos|: 0 edge-on)");
+  put("single_quad_max_width", hi(out.singleWidth), "one quad's silhouette, largest (1)");
+  put("cross_tree_min_width", lo(out.crossWidth), "two crossed quads: max(|cos|, |sin|), least at 45 deg: 0.7071");
+  put("cross_tree_max_width", hi(out.crossWidth), "two crossed quads, largest (1)");
+  // Light maps.
+  ts::measureProgress(0.35);
+  const GLuint baseTex = upload(base, GL_NEAREST, GL_REPEAT);
+  out.perPixel = perPixelLit(base, 256);
+  for (int k = 0; k < 4; ++k) {
+    const int n = kLightSizes[k];
+    const GLuint lm = upload(lightMap(n), GL_LINEAR, GL_CLAMP_TO_EDGE, GL_LUMINANCE8);
+    out.lit[k] = lightMapped(r, baseTex, lm);
+    glDeleteTextures(1, &lm);
+    const std::string s = "[" + std::to_string(n) + "]";
+    put("light_map_rms" + s, rms(out.lit[k], out.perPixel), "8-bit levels, base x L (GL) against base x per-pixel lighting (CPU)");
+    put("light_map_bytes" + s, double(n * n), "GL_LUMINANCE8 texels (the base: " + std::to_string(base.width * base.height * 4) + " bytes)");
+  }
+  const GLuint spot = upload(spotMap(), GL_LINEAR, GL_CLAMP_TO_EDGE, GL_LUMINANCE8);
+  out.spots = movingSpot(r, baseTex, spot, kSpotFrames);
+  glDeleteTextures(1, &spot);
+  // Gloss map (two passes).
+  ts::measureProgress(0.5);
+  const GLuint gloss = upload(glossMap(64, 32), GL_NEAREST, GL_CLAMP_TO_EDGE, GL_LUMINANCE8);
+  out.diffuseOnly = glossPasses(r, baseTex, gloss, false);
+  out.glossCalls = ts::recordRender(r, [&] { out.glossed = glossPasses(r, baseTex, gloss, true); });
+  glDeleteTextures(1, &gloss);
+  out.specular = ts::Image(256, 128);
+  int peak[2] = {0, 0}, diffuseChange = 0;
+  for (int y = 0; y < 128; ++y)
+    for (int x = 0; x < 256; ++x) {
+      const ts::Rgba f = out.glossed.at(x, y), d = out.diffuseOnly.at(x, y);
+      const int s = std::max({int(f.r) - d.r, int(f.g) - d.g, int(f.b) - d.b});
+      peak[x >= 128] = std::max(peak[x >= 128], s);
+      const uint8_t v = uint8_t(std::clamp(2 * s, 0, 255));
+      out.specular.set(x, y, {v, v, v, 255});
+      // Where every vertex of the pixel's cell has i_spec < 0.5/255, pass 2 adds 0: the diffuse must be untouched.
+      const int ci = x / 4, cj = (127 - y) / 4;
+      double most = 0;
+      for (int v2 = 0; v2 < 4; ++v2) most = std::max(most, glossLighting((ci + v2 % 2) / 32.0, (cj + v2 / 2) / 32.0).y);
+      if (most < 0.5 / 255) diffuseChange = std::max(diffuseChange, std::abs(int(f.g) - d.g));
+    }
+  put("gloss_peak[g=1]", peak[0], "highest specular step (levels) in the g = 1 half");
+  put("gloss_peak[g=0.2]", peak[1], "highest specular step (levels) in the g = 0.2 half");
+  put("gloss_peak_ratio", peak[1] ? double(peak[0]) / peak[1] : 0.0, "their ratio: g 1 / 0.2 = 5");
+  put("gloss_diffuse_change", diffuseChange, "largest change the gloss pass makes away from the highlights (levels)");
+  put("gloss_passes", countCalls(out.glossCalls, "glBegin") / 32.0, "passes over the plane (two: diffuse, + g i_spec)");
+  // AB + CD.
+  ts::measureProgress(0.65);
+  const std::vector<ts::Image> abcdImg = abcdTextures();
+  out.abcdCpu = abcdCpu(abcdImg, 128, false);
+  const ts::Image fbCpu = abcdCpu(abcdImg, 128, true);
+  const char* methods[3] = {"multitexture", "stored", "framebuffer_only"};
+  for (int m = 0; m < 3; ++m) {
+    out.abcdCalls[m] = ts::recordRender(r, [&] {
+      std::vector<GLuint> again;  // uploaded inside the record: the listing shows them
+      for (const ts::Image& t : abcdImg) again.push_back(upload(t, GL_NEAREST, GL_CLAMP_TO_EDGE));
+      out.abcd[m] = abcdPasses(r, again, m);
+      glDeleteTextures(GLsizei(again.size()), again.data());
+    });
+    const std::string s = std::string("[") + methods[m] + "]";
+    put("abcd_max_diff" + s, maxDiff(out.abcd[m], out.abcdCpu), "levels, against the CPU's AB + CD");
+    put("abcd_rms" + s, rms(out.abcd[m], out.abcdCpu), "RMS levels, against the CPU's AB + CD");
+    put("abcd_passes" + s, countCalls(out.abcdCalls[m], "glBegin"), "geometry passes (glBegin ... glEnd over the square)");
+    put("abcd_copies" + s, countCalls(out.abcdCalls[m], "glCopyTexImage2D"), "copies to an intermediate texture");
+  }
+  put("abcd_max_diff[framebuffer_only_vs_cpu_model]", maxDiff(out.abcd[kFramebufferOnly], fbCpu),
+      "levels: the framebuffer-only sequence against the CPU's (AB + C) D");
+  out.fbError = ts::Image(128, 128);
+  for (int y = 0; y < 128; ++y)
+    for (int x = 0; x < 128; ++x) {
+      const ts::Rgba a = out.abcd[kFramebufferOnly].at(x, y), b = out.abcdCpu.at(x, y);
+      auto e = [](int p, int q) { return uint8_t(std::min(255, 4 * std::abs(p - q))); };
+      out.fbError.set(x, y, {e(a.r, b.r), e(a.g, b.g), e(a.b, b.b), 255});
+    }
+  // The pear.
+  ts::measureProgress(0.8);
+  out.combine3 = ts::gl::hasExtension("GL_ATI_texture_env_combine3");
+  put("combine3_supported", out.combine3 ? 1 : 0, "GL_ATI_texture_env_combine3 in the extension string (renderer: " + ts::gl::rendererString() + ")");
+  const ts::Image skinImg = pearSkin();
+  ts::Image glossImg = skinImg;
+  for (size_t k = 0; k < glossImg.pixels.size(); k += 4) glossImg.pixels[k] = glossImg.pixels[k + 1] = glossImg.pixels[k + 2] = glossImg.pixels[k + 3];
+  for (int m = kCombine3; m <= kTwoPasses; ++m) {
+    if (m == kCombine3 && !out.combine3) continue;
+    out.pearCalls[m] = ts::recordRender(r, [&] {
+      const GLuint skin = upload(skinImg, GL_LINEAR, GL_REPEAT), g = upload(glossImg, GL_LINEAR, GL_REPEAT, GL_LUMINANCE8),
+                   sky = upload(sphereMapSky(), GL_LINEAR, GL_CLAMP_TO_EDGE);
+      out.pear[m] = pearPasses(r, skin, g, sky, m);
+      const GLuint all[3] = {skin, g, sky};
+      glDeleteTextures(3, all);
+    });
+    put(std::string("pear_passes[") + (m ? "two_passes" : "combine3") + "]", countCalls(out.pearCalls[m], "glBegin") / 32.0,
+        "passes over the pear (32 strips each)");
+  }
+  if (out.combine3)
+    put("pear_combine3_vs_two_passes_max_diff", maxDiff(out.pear[kCombine3], out.pear[kTwoPasses]),
+        "levels: one stage A.C + B against two passes (two roundings)");
+  glDeleteTextures(1, &baseTex);
+  return out;
+}
+}  // namespace mt

@@ -1,0 +1,46 @@
+// demos/multitexture/mt_views.hpp — the Frame's panels: each picture is a
+// GL render (or the CPU's answer) made by measure(), shown as a texture
+// (ts::renderedImageTexture) with the GL calls behind it (renderedBy), a
+// title above and a note below; the figure's numbers at the bottom.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "common/core/layout.hpp"
+#include "common/core/textures.hpp"
+#include "mt_measure.hpp"
+
+namespace mt::views {
+namespace L = ts::layout;
+
+struct Picture {
+  ts::Image image;
+  std::string title, note;
+  ts::gl::CallList calls = nullptr;
+};
+
+// Pictures of one aspect in a row (or grid) over the frame above a band of
+// `lines` lines for the numbers.
+inline void pictures(ts::Frame& f, const std::vector<Picture>& ps, float aspect, const std::string& numbers, int lines = 2) {
+  const float band = L::lineHeight(1) * float(lines) + 8;
+  const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band};
+  const std::vector<L::Cell> cells = L::flow(area, {int(ps.size()), aspect, 1, 1, 10, 2, 120});
+  for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
+    ts::TextureDesc t = ts::renderedImageTexture(ps[k].image, "multitexture", ps[k].title, "multitexture");
+    t.minFilter = t.magFilter = GL_NEAREST;
+    t.renderedBy = ps[k].calls;
+    f.panels.push_back(L::texturePanel("picture_" + std::to_string(k), cells[k].picture, f.addTexture(t)));
+    L::caption(f, cells[k].above, ps[k].title, L::kWhite, cells[k].scale);
+    L::caption(f, cells[k].below, ps[k].note, L::kAmber, cells[k].scale);
+  }
+  L::caption(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)}, numbers, L::kAmber, 1);
+}
+
+// The crop of a w x h picture at (x, y) (top-left origin).
+inline ts::Image crop(const ts::Image& img, int x, int y, int w, int h) {
+  ts::Image out(w, h);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) out.set(i, j, img.at(x + i, y + j));
+  return out;
+}
+}  // namespace mt::views

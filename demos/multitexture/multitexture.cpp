@@ -1,0 +1,217 @@
+// Seed 001 ¶25–32, Buss VI intro — several textures on one surface, before
+// and after lighting: alpha cutouts, light maps, gloss maps, AB + CD, the pear.
+//
+// The claims, each measured on GL's own renders (mt_measure.hpp):
+//  - the alpha test (glAlphaFunc(GL_GREATER, 0.5)) discards a cutout tree's
+//    transparent texels, so they write no depth: drawn first, without it they
+//    hide the sky drawn behind them; blending alone hides it too (it needs
+//    back-to-front order) but gives soft edges where the test gives hard ones;
+//  - a cross tree (two quads at 90°) is never edge-on: its width over a turn
+//    is max(|cos θ|, |sin θ|) >= 0.7071, one quad's |cos θ| goes to 0;
+//  - a light map: c = base ⊗ L, L at 8² .. 64² against per-pixel lighting;
+//    moved by the texture matrix (a spot that travels: key a);
+//  - a gloss map: i = t_d ⊗ i_diff + g · i_spec, in two passes; the highlight
+//    under g = 1 is 5 times that under g = 0.2, the diffuse unchanged;
+//  - AB + CD: two units (GL_COMBINE) make AB in one pass, CD added in a
+//    second; one unit needs an intermediate buffer (a copy to a texture):
+//    the framebuffer alone makes (AB + C) D;
+//  - the pear, i = t_d ⊗ i_diff + t_g · t_r: one pass with
+//    GL_ATI_texture_env_combine3's GL_MODULATE_ADD_ATI (A·C + B), two without.
+//
+// Keys (each is also a flag, see --help):
+//   v  view: alpha | lightmap | gloss | abcd     a  animate the spot
+//   s / S  the spot's position (0..11)          (--texture FILE: the base picture)
+//
+// The GL that carries it (mt_gl.hpp):
+//   glEnable(GL_ALPHA_TEST); glAlphaFunc(GL_GREATER, 0.5f);
+//   glActiveTexture(GL_TEXTURE1); glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+//   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);     // PREVIOUS x TEXTURE = AB
+//   glBlendFunc(GL_ONE, GL_ONE);                                // + CD, + g i_spec
+//   glBlendFunc(GL_DST_COLOR, GL_ZERO);                         // x B, one unit
+//   glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 0, 0, 128, 128, 0);  // AB stored
+//   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE_ADD_ATI);  // t_r t_g + t_d i_diff
+//   glMatrixMode(GL_TEXTURE); glTranslatef(...); glScalef(...);  // the moving spot
+#include <string>
+
+#include "common/core/error.hpp"
+#include "common/core/layout.hpp"
+#include "common/core/scene.hpp"
+#include "common/core/textures.hpp"
+#include "common/core/user_texture.hpp"
+#include "common/gl/render.hpp"
+#include "mt_gl.hpp"
+#include "mt_math.hpp"
+#include "mt_measure.hpp"
+#include "mt_views.hpp"
+
+namespace {
+using namespace mt;
+using ts::layout::fmt;
+
+class Multitexture final : public ts::Scene {
+ public:
+  std::string id() const override { return "multitexture"; }
+  std::string title() const override { return "Seed 001 - multitexturing: alpha, light maps, gloss maps, AB + CD"; }
+  std::string about() const override {
+    return "Several textures on one surface, each measured on GL's renders: a cutout tree with and without the alpha\n"
+           "test (the sky its transparent texels hide: 0 with the test), a cross tree's width over a turn (never below\n"
+           "0.7071), light maps of 8^2 to 64^2 against per-pixel lighting, a gloss map's highlights (ratio 5 for\n"
+           "g = 1 and 0.2), AB + CD with two texture units, with one unit and a stored copy, and with the framebuffer\n"
+           "alone ((AB + C) D), and the pear t_d i_diff + t_g t_r in one GL_MODULATE_ADD_ATI stage against two passes.";
+  }
+  int defaultWidth() const override { return 1280; }
+  int defaultHeight() const override { return 440; }
+  std::vector<std::string> claim() const override {
+    if (view_ == 0) return {"cutout_hidden_px*", "cross_tree_min_width"};
+    if (view_ == 1) return {"light_map_rms*"};
+    if (view_ == 2) return {"gloss_peak_ratio", "pear_passes*"};
+    return {"abcd_max_diff*", "abcd_passes*"};
+  }
+
+  void addOptions(ts::Options& o) override {
+    o.addEnum("view", &view_, {"alpha", "lightmap", "gloss", "abcd"},
+              "cutout and cross trees | light maps | gloss map and the pear | AB + CD", 'v');
+    o.addBool("animate", &animate_, "move the spot (the light map's texture matrix) around the wall", 'a');
+    o.addInt("spot", &spot_, 0, kSpotFrames - 1, "the spot's position on its circle, in twelfths", 's', 'S', 1);
+    picture_.addOption(o, "the bricks (the light map's and the gloss map's base)");
+  }
+
+  std::vector<ts::FigureSpec> figures() const override {
+    return {
+        {"alpha_cutout_tree", "Seed 001 (multitexturing: alpha)",
+         "A cutout tree drawn before the sky behind it: without the alpha test its transparent texels write depth and "
+         "hide the sky; blending hides it too; the alpha test discards them.  Its edge magnified: blending mixes sky "
+         "and tree, the test cuts.  A cross tree at 0, 30 and 45 degrees.",
+         {"--view", "alpha"}, 1280, 440,
+         "Drawn first, the tree's transparent texels hide {cutout_hidden_px[no_alpha_test]} sky pixels without the alpha "
+         "test, {cutout_hidden_px[alpha_test]} with it; a cross tree is never narrower than {cross_tree_min_width} "
+         "(one quad: {single_quad_min_width})."},
+        {"light_map_resolution", "Seed 001 (multitexturing: light maps)",
+         "A wall's bricks times a light map of 8^2, 16^2, 32^2 and 64^2 texels (unit 1, GL_MODULATE, bilinear) against "
+         "the CPU's per-pixel lighting; last, a spot light map moved by the texture matrix.",
+         {"--view", "lightmap", "--spot", "2"}, 1280, 360,
+         "RMS against per-pixel lighting: {light_map_rms[8]} levels at 8^2 ({light_map_bytes[8]} bytes), "
+         "{light_map_rms[64]} at 64^2 ({light_map_bytes[64]} bytes)."},
+        {"gloss_map", "Seed 001 (multitexturing: gloss maps, the pear)",
+         "A plane lit by two lights, diffuse only, then with the gloss map (g = 1 left, 0.2 right) times the specular "
+         "added in a second pass, the specular alone (x 2); the pear t_d i_diff + t_g t_r in one "
+         "GL_MODULATE_ADD_ATI stage and in two passes.",
+         {"--view", "gloss"}, 1280, 360,
+         "The highlight under g = 1 is {gloss_peak_ratio} times the one under g = 0.2, the diffuse unchanged; the pear "
+         "takes {pear_passes[combine3]} pass with GL_ATI_texture_env_combine3, {pear_passes[two_passes]} without."},
+        {"multitexture_ab_cd", "Seed 001 (multitexturing: AB + CD)",
+         "A, B, C, D; AB + CD on the CPU; with two texture units and an additive pass; with one unit, a multiplying "
+         "blend and a stored copy; with the framebuffer alone, which makes (AB + C) D; that one's error x 4.",
+         {"--view", "abcd"}, 1280, 330,
+         "Two units: {abcd_passes[multitexture]} passes, within {abcd_max_diff[multitexture]} level of the CPU; one "
+         "unit and a copy: {abcd_passes[stored]} passes, within {abcd_max_diff[stored]}; the framebuffer alone is off "
+         "by {abcd_max_diff[framebuffer_only]} levels."},
+    };
+  }
+
+  void update(double seconds) override {
+    if (!animate_) return;
+    clock_ += seconds;
+    if (clock_ >= 0.25) clock_ = 0, spot_ = (spot_ + 1) % kSpotFrames;
+  }
+  bool animating() const override { return animate_; }
+
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
+  ts::Measurements measure(ts::Renderer& r) override {
+    ts::Measurements ms;
+    ts::Image base = basePicture();
+    if (picture_.active()) base = ts::resizeBilinear(picture_.image(), 128, 128);
+    ms.detail = runAll(r, base, ms);
+    return ms;
+  }
+
+ private:
+  int view_ = 0, spot_ = 0;
+  bool animate_ = false;
+  double clock_ = 0;
+  ts::UserTexture picture_;  // --texture FILE
+};
+
+ts::Frame Multitexture::build(int width, int height, const ts::Measurements& measured) const {
+  ts::Frame f = ts::layout::blankFrame(width, height);
+  const Result* m = measured.detailAs<Result>();
+  if (!m) {
+    ts::layout::caption(f, {8, 8, float(width - 8), float(height - 8)}, "rendering ...", ts::layout::kWhite, 2);
+    return f;
+  }
+  auto v = [&](const std::string& n) {
+    for (const auto& x : measured)
+      if (x.name == n) return x.value;
+    return -1.0;
+  };
+  using views::crop;
+  if (view_ == 0) {
+    views::pictures(f,
+                    {{m->hidden[kNoAlphaTest], "no alpha test", fmt("%.0f sky pixels hidden", v("cutout_hidden_px[no_alpha_test]"))},
+                     {m->hidden[kAlphaTest], "GL_GREATER 0.5", fmt("%.0f hidden", v("cutout_hidden_px[alpha_test]"))},
+                     {m->hidden[kBlend], "blending, no test", fmt("%.0f hidden", v("cutout_hidden_px[blend]"))},
+                     {m->edge[kBlend], "edge x16, blending", fmt("%.0f fringe pixels", v("edge_fringe_px[blend]"))},
+                     {m->edge[kAlphaTest], "edge x16, alpha test", fmt("%.0f fringe pixels", v("edge_fringe_px[alpha_test]"))},
+                     {crop(m->crossTrees, 256, 0, 128, 128), "cross tree, 45 deg",
+                      fmt("width >= %.4f", v("cross_tree_min_width"))}},
+                    1.0f,
+                    "Cutout tree drawn first, then the sky behind it (depth test).  Silhouette width over a full turn "
+                    "(orthographic, 5-degree steps): one quad " + fmt("%.4f", v("single_quad_min_width")) + " .. " +
+                        fmt("%.4f", v("single_quad_max_width")) + " (|cos|), cross tree " + fmt("%.4f", v("cross_tree_min_width")) +
+                        " .. " + fmt("%.4f", v("cross_tree_max_width")) + " (max(|cos|, |sin|) >= 0.7071).");
+  } else if (view_ == 1) {
+    std::vector<views::Picture> ps = {{m->perPixel, "per-pixel (CPU)", "base x lighting"}};
+    for (int k = 0; k < 4; ++k) {
+      const std::string n = std::to_string(kLightSizes[k]);
+      ps.push_back({m->lit[k], "light map " + n + "^2", fmt("RMS %.2f", v("light_map_rms[" + n + "]")) + ", " + n + "^2 bytes"});
+    }
+    ps.push_back({crop(m->spots, (spot_ % 4) * 128, (spot_ / 4) * 128, 128, 128), "spot, texture matrix",
+                  "position " + std::to_string(spot_) + (animate_ ? " (moving)" : " (a: move)")});
+    views::pictures(f, ps, 1.0f,
+                    "c = base x L: unit 0 the bricks (GL_REPLACE), unit 1 the light map (GL_MODULATE, GL_LINEAR); the "
+                    "light a point at height 0.3 over the centre, L its irradiance at the texel centres (1 byte a texel).");
+  } else if (view_ == 2) {
+    ts::Image pears(384, 192);
+    if (m->combine3) pears.blit(m->pear[kCombine3], 0, 0);
+    pears.blit(m->pear[kTwoPasses], 192, 0);
+    views::pictures(f,
+                    {{m->diffuseOnly, "t_d x i_diff (pass 1)", "the diffuse alone"},
+                     {m->glossed, "+ g x i_spec (pass 2, GL_ONE, GL_ONE)", "g = 1 left, 0.2 right", m->glossCalls},
+                     {m->specular, "the specular added, x 2",
+                      fmt("peaks %.0f", v("gloss_peak[g=1]")) + fmt(" : %.0f", v("gloss_peak[g=0.2]"))},
+                     {pears, "pear: MODULATE_ADD_ATI | two passes",
+                      m->combine3 ? fmt("%.0f pass", v("pear_passes[combine3]")) + fmt(" | %.0f passes", v("pear_passes[two_passes]"))
+                                  : std::string("no GL_ATI_texture_env_combine3 here"),
+                      m->pearCalls[kCombine3]}},
+                    2.0f,
+                    "i = t_d x i_diff + g x i_spec in two passes: highlight ratio " + fmt("%.3f", v("gloss_peak_ratio")) +
+                        " (g 1 / 0.2 = 5), diffuse changed by " + fmt("%.0f", v("gloss_diffuse_change")) +
+                        " levels.  The pear: t_d i_diff + t_g t_r, one combine3 stage against two passes: " +
+                        fmt("%.0f", v("pear_combine3_vs_two_passes_max_diff")) + " levels apart.");
+  } else {
+    ts::Image abcd(128, 128);
+    const std::vector<ts::Image> t = abcdTextures();
+    for (int k = 0; k < 4; ++k)
+      for (int j = 0; j < 64; ++j)
+        for (int i = 0; i < 64; ++i) abcd.set((k % 2) * 64 + i, (k / 2) * 64 + 63 - j, t[size_t(k)].at(i, j));
+    views::pictures(
+        f,
+        {{abcd, "A B / C D", "the four textures"},
+         {m->abcdCpu, "AB + CD (CPU)", "the reference"},
+         {m->abcd[kMultitexture], "two units + add", fmt("%.0f passes", v("abcd_passes[multitexture]")) +
+                                                          fmt(", max %.0f", v("abcd_max_diff[multitexture]")), m->abcdCalls[kMultitexture]},
+         {m->abcd[kStored], "one unit + a copy", fmt("%.0f passes", v("abcd_passes[stored]")) + fmt(", max %.0f", v("abcd_max_diff[stored]")),
+          m->abcdCalls[kStored]},
+         {m->abcd[kFramebufferOnly], "framebuffer: (AB+C)D", fmt("%.0f passes", v("abcd_passes[framebuffer_only]")) +
+                                                                 fmt(", max %.0f", v("abcd_max_diff[framebuffer_only]")),
+          m->abcdCalls[kFramebufferOnly]},
+         {m->fbError, "its error x 4", fmt("RMS %.1f levels", v("abcd_rms[framebuffer_only]"))}},
+        1.0f,
+        "Multiplying needs the framebuffer (GL_DST_COLOR, GL_ZERO), adding too (GL_ONE, GL_ONE): with one unit, AB must "
+        "be stored (glCopyTexImage2D) before CD is made; the sequence A, x B, + C, x D gives (AB + C) D.");
+  }
+  return f;
+}
+}  // namespace
+
+TM_REGISTER_SCENE(Multitexture);
