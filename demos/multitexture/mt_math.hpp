@@ -93,14 +93,14 @@ inline ts::Image perPixelLit(const ts::Image& base, int w) {
 // A plane 2 x 1 (x in [0, 2]), viewed from straight above, two point lights
 // at height 0.35 over (0.5, 0.5) and (1.5, 0.5): one highlight in each half.
 // The gloss map g is 1 on the left half, 0.2 (51/255) on the right.
-// Per vertex (Gouraud): i_diff = 0.1 + 0.3 Σ n·l, i_spec = 0.6 Σ (n·h)^40.
+// Per vertex (Gouraud): i_diff = 0.1 + 0.3 Σ n·l, i_spec = 0.6 Σ (n·h)^80.
 constexpr double kSpecular = 0.6, kGlossLow = 51.0 / 255.0;
 inline glm::dvec2 glossLighting(double x, double y) {
   double diff = 0.1, spec = 0.0;
   for (double lx : {0.5, 1.5}) {
     const glm::dvec3 l = glm::normalize(glm::dvec3(lx - x, 0.5 - y, 0.35));
     const glm::dvec3 h = glm::normalize(l + glm::dvec3(0, 0, 1));
-    diff += 0.3 * l.z, spec += kSpecular * std::pow(h.z, 40.0);
+    diff += 0.3 * l.z, spec += kSpecular * std::pow(h.z, 80.0);
   }
   return {diff, spec};
 }

@@ -36,7 +36,7 @@ struct Result {
   ts::Image abcdCpu, abcd[3], fbError;         // by Abcd; |(AB+C)D - (AB+CD)| x 4
   ts::Image pear[2];                           // by Pear
   bool combine3 = false;
-  ts::gl::CallList abcdCalls[3], pearCalls[2], glossCalls;
+  ts::gl::CallList abcdCalls[3], pearCalls[2], glossCalls, cutoutCalls, spotCalls;
 };
 
 // Pixels of a readback inside the tree's rectangle (64..191) whose texel is
@@ -88,6 +88,11 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& m
         "sky pixels hidden by the transparent texels' depth, the tree drawn first");
     put(std::string("edge_fringe_px[") + modes[m] + "]", fringe(out.edge[m]), "pixels mixing sky and tree at the edge, magnified 16x");
   }
+  out.cutoutCalls = ts::recordRender(r, [&] {  // the alpha-tested pass again, its upload in the listing
+    const GLuint t = upload(treeImg, GL_NEAREST, GL_CLAMP_TO_EDGE);
+    out.hidden[kAlphaTest] = cutoutHidden(r, t, kAlphaTest);
+    glDeleteTextures(1, &t);
+  });
   out.crossTrees = crossTrees(r, tree);
   glDeleteTextures(1, &tree);
   ts::measureProgress(0.2);
@@ -112,9 +117,12 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& m
     put("light_map_rms" + s, rms(out.lit[k], out.perPixel), "8-bit levels, base x L (GL) against base x per-pixel lighting (CPU)");
     put("light_map_bytes" + s, double(n * n), "GL_LUMINANCE8 texels (the base: " + std::to_string(base.width * base.height * 4) + " bytes)");
   }
-  const GLuint spot = upload(spotMap(), GL_LINEAR, GL_CLAMP_TO_EDGE, GL_LUMINANCE8);
-  out.spots = movingSpot(r, baseTex, spot, kSpotFrames);
-  glDeleteTextures(1, &spot);
+  out.spotCalls = ts::recordRender(r, [&] {
+    const GLuint b = upload(base, GL_NEAREST, GL_REPEAT), spot = upload(spotMap(), GL_LINEAR, GL_CLAMP_TO_EDGE, GL_LUMINANCE8);
+    out.spots = movingSpot(r, b, spot, kSpotFrames);
+    const GLuint both[2] = {b, spot};
+    glDeleteTextures(2, both);
+  });
   // Gloss map (two passes).
   ts::measureProgress(0.5);
   const GLuint gloss = upload(glossMap(64, 32), GL_NEAREST, GL_CLAMP_TO_EDGE, GL_LUMINANCE8);
@@ -122,7 +130,7 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& m
   out.glossCalls = ts::recordRender(r, [&] { out.glossed = glossPasses(r, baseTex, gloss, true); });
   glDeleteTextures(1, &gloss);
   out.specular = ts::Image(256, 128);
-  int peak[2] = {0, 0}, diffuseChange = 0;
+  int peak[2] = {0, 0}, diffuseChange = 0, far = 0;
   for (int y = 0; y < 128; ++y)
     for (int x = 0; x < 256; ++x) {
       const ts::Rgba f = out.glossed.at(x, y), d = out.diffuseOnly.at(x, y);
@@ -130,16 +138,17 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& m
       peak[x >= 128] = std::max(peak[x >= 128], s);
       const uint8_t v = uint8_t(std::clamp(2 * s, 0, 255));
       out.specular.set(x, y, {v, v, v, 255});
-      // Where every vertex of the pixel's cell has i_spec < 0.5/255, pass 2 adds 0: the diffuse must be untouched.
+      // Where every vertex of the pixel's cell has i_spec < 0.1/255, pass 2 adds 0 (well below half a level): the diffuse must be untouched.
       const int ci = x / 4, cj = (127 - y) / 4;
       double most = 0;
       for (int v2 = 0; v2 < 4; ++v2) most = std::max(most, glossLighting((ci + v2 % 2) / 32.0, (cj + v2 / 2) / 32.0).y);
-      if (most < 0.5 / 255) diffuseChange = std::max(diffuseChange, std::abs(int(f.g) - d.g));
+      if (most < 0.1 / 255) ++far, diffuseChange = std::max({diffuseChange, std::abs(int(f.r) - d.r), std::abs(int(f.g) - d.g), std::abs(int(f.b) - d.b)});
     }
   put("gloss_peak[g=1]", peak[0], "highest specular step (levels) in the g = 1 half");
   put("gloss_peak[g=0.2]", peak[1], "highest specular step (levels) in the g = 0.2 half");
   put("gloss_peak_ratio", peak[1] ? double(peak[0]) / peak[1] : 0.0, "their ratio: g 1 / 0.2 = 5");
   put("gloss_diffuse_change", diffuseChange, "largest change the gloss pass makes away from the highlights (levels)");
+  put("gloss_diffuse_px", far, "pixels where that is checked (i_spec < 0.1/255 at the cell's vertices)");
   put("gloss_passes", countCalls(out.glossCalls, "glBegin") / 32.0, "passes over the plane (two: diffuse, + g i_spec)");
   // AB + CD.
   ts::measureProgress(0.65);

@@ -148,7 +148,7 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
   if (view_ == 0) {
     views::pictures(f,
                     {{m->hidden[kNoAlphaTest], "no alpha test", fmt("%.0f sky pixels hidden", v("cutout_hidden_px[no_alpha_test]"))},
-                     {m->hidden[kAlphaTest], "GL_GREATER 0.5", fmt("%.0f hidden", v("cutout_hidden_px[alpha_test]"))},
+                     {m->hidden[kAlphaTest], "GL_GREATER 0.5", fmt("%.0f hidden", v("cutout_hidden_px[alpha_test]")), m->cutoutCalls},
                      {m->hidden[kBlend], "blending, no test", fmt("%.0f hidden", v("cutout_hidden_px[blend]"))},
                      {m->edge[kBlend], "edge x16, blending", fmt("%.0f fringe pixels", v("edge_fringe_px[blend]"))},
                      {m->edge[kAlphaTest], "edge x16, alpha test", fmt("%.0f fringe pixels", v("edge_fringe_px[alpha_test]"))},
@@ -166,7 +166,7 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
       ps.push_back({m->lit[k], "light map " + n + "^2", fmt("RMS %.2f", v("light_map_rms[" + n + "]")) + ", " + n + "^2 bytes"});
     }
     ps.push_back({crop(m->spots, (spot_ % 4) * 128, (spot_ / 4) * 128, 128, 128), "spot, texture matrix",
-                  "position " + std::to_string(spot_) + (animate_ ? " (moving)" : " (a: move)")});
+                  "position " + std::to_string(spot_) + (animate_ ? " (moving)" : " (a: move)"), m->spotCalls});
     views::pictures(f, ps, 1.0f,
                     "c = base x L: unit 0 the bricks (GL_REPLACE), unit 1 the light map (GL_MODULATE, GL_LINEAR); the "
                     "light a point at height 0.3 over the centre, L its irradiance at the texel centres (1 byte a texel).");

@@ -84,7 +84,11 @@ TEST_F(MultitextureFigure, GlossPeakRatio) {
   EXPECT_LE(hi, mt::kSpecular * 255 + 1);
   EXPECT_GE(hi, 0.9 * mt::kSpecular * 255) << "the highlight's peak, Gouraud-interpolated between vertices";
   EXPECT_NEAR(value(ms, "gloss_peak_ratio"), 5.0, 5.0 * (1.0 / hi + 1.0 / lo));
-  EXPECT_EQ(value(ms, "gloss_diffuse_change"), 0.0);
+  // Away from the highlights pass 2 adds less than 0.1/255: llvmpipe keeps
+  // every pixel, softpipe rounds the blend's sum up by a level at a few
+  // hundred of them (measured 490 of 32,768).
+  EXPECT_LE(value(ms, "gloss_diffuse_change"), 1.0);
+  EXPECT_GT(value(ms, "gloss_diffuse_px"), 256 * 128 / 4) << "checked over a good part of the plane";
   EXPECT_EQ(value(ms, "gloss_passes"), 2.0);
 }
 

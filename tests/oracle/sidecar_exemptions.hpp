@@ -16,7 +16,7 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 21> kFiguresDrawnFromGlRenders = {
+inline constexpr std::array<const char*, 25> kFiguresDrawnFromGlRenders = {
     // --footprints: the left panel is the picture GL drew, inspected
     "inspect_vi2_footprints", "inspect_aniso_footprint",
     "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step",
@@ -28,7 +28,11 @@ inline constexpr std::array<const char*, 21> kFiguresDrawnFromGlRenders = {
     "dxt1_blocks", "dxt1_normal_map",
     // filter_zoo: each method's picture is a GL render (GL's filters) or a CPU
     // computation (ripmap, SAT, probe line, EWA, the exact integral) made by measure()
-    "filter_zoo_azimuth", "filter_zoo_supports", "mip_kernels"};
+    "filter_zoo_azimuth", "filter_zoo_supports", "mip_kernels",
+    // multitexture: every picture is a pass its measure() draws with GL state the Frame does not describe yet
+    // (a second texture unit, GL_COMBINE and GL_MODULATE_ADD_ATI, the alpha test, GL_DST_COLOR / GL_ONE blending,
+    // glCopyTexImage2D); the CPU's answers are computed and compared in the demo (mt_math.hpp, mt_measure.hpp)
+    "alpha_cutout_tree", "light_map_resolution", "gloss_map", "multitexture_ab_cd"};
 
 // Figures whose measure() takes minutes on softpipe (the parallax table: twelve
 // full-frame GLSL passes and a CPU reference per state).  The oracle checks
