@@ -28,13 +28,14 @@ declare -A FLAGS=(
   [torus]=""
   [mipmap_popping]=""
   [parallax_aniso]="--view single --res 80 --rays 2"
+  [multitexture]="--view lightmap"
 )
 GOOD=(good_rgba8_37x23.png good_jpeg_blocks_32x24.jpg good_bmp32_alpha_5x3.bmp)
 BAD=("text.jpg:not a PNG, JPEG or BMP" "jpeg_cut_in_half.jpg:Premature end" "jpeg_huge_65000x65000.jpg:over the limit"
      "bmp32_masks_overlap.bmp:overlap")
 printf 'not a picture\n' >"$T/text.jpg"
 
-for demo in quad_distortion perspective_correction cylinder_seam sphere_projections torus mipmap_popping parallax_aniso; do
+for demo in quad_distortion perspective_correction cylinder_seam sphere_projections torus mipmap_popping parallax_aniso multitexture; do
   exe="$BIN/$demo"
   [ -x "$exe" ] || { fail "$demo: no program $exe"; continue; }
   read -r -a extra <<<"${FLAGS[$demo]}"
