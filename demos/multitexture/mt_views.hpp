@@ -27,7 +27,8 @@ inline void pictures(ts::Frame& f, const std::vector<Picture>& ps, float aspect,
   const std::vector<L::Cell> cells = L::flow(area, {int(ps.size()), aspect, 1, 1, 10, 2, 120});
   for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
     ts::TextureDesc t = ts::renderedImageTexture(ps[k].image, "multitexture", ps[k].title, "multitexture");
-    t.minFilter = t.magFilter = GL_NEAREST;
+    // GL_LINEAR: a panel's pixel centre can fall on a texel boundary, where GL_NEAREST's tie goes either way.
+    t.minFilter = t.magFilter = GL_LINEAR;
     t.renderedBy = ps[k].calls;
     f.panels.push_back(L::texturePanel("picture_" + std::to_string(k), cells[k].picture, f.addTexture(t)));
     L::caption(f, cells[k].above, ps[k].title, L::kWhite, cells[k].scale);
