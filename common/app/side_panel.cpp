@@ -75,6 +75,19 @@ void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& 
       ImGui::PopStyleColor();
     }
   }
+  // A demo opened with a student's code (--seam mine, ...): the exercise's
+  // checks, each line as the checker prints it (common/core/student_code.hpp).
+  for (const auto& x : m)
+    if (x.name.rfind("exercise_check[", 0) == 0) {
+      const bool pass = x.value > 0.5;
+      ImGui::TextColored(status.stale ? stale : pass ? ImVec4(0.45f, 0.9f, 0.45f, 1) : ImVec4(1, 0.45f, 0.4f, 1), "%s",
+                         pass ? "pass" : "FAIL");
+      ImGui::SameLine();
+      std::string line = x.meaning;  // the verdict is in front: not again at the end
+      for (const char* tail : {": pass", ": FAIL"})
+        if (line.size() > 6 && line.compare(line.size() - 6, 6, tail) == 0) line.resize(line.size() - 6);
+      ImGui::TextWrapped("%s", line.c_str());
+    }
   ImGui::Separator();
   // The state, each option with the keys that change it (right-aligned;
   // on a line of their own when the panel is too narrow for both).

@@ -321,6 +321,14 @@ GLFWwindow* openWindow(Scene& scene, const CommonFlags& flags, int width, int he
     glfwWindowHint(GLFW_ACCUM_BLUE_BITS, 16);
     glfwWindowHint(GLFW_ACCUM_ALPHA_BITS, 16);
   }
+  // Without --size, a screen smaller than the demo's default size (a
+  // 640x480 projector, a 700-wide half screen) gets a window that fits it:
+  // the figure and the panel lay themselves out in whatever they are given.
+  if (!flags.width) {
+    int x = 0, y = 0, w = 0, h = 0;
+    if (GLFWmonitor* mon = glfwGetPrimaryMonitor()) glfwGetMonitorWorkarea(mon, &x, &y, &w, &h);
+    if (w > 0 && h > 0) width = std::min(width, w), height = std::min(height, h);
+  }
   GLFWwindow* win = glfwCreateWindow(width, height, scene.title().c_str(), nullptr, nullptr);
   if (!win) {
     glfwTerminate();

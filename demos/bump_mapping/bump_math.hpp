@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "common/core/dxt1.hpp"
 #include "common/core/frame.hpp"
 #include "common/core/image.hpp"
 #include "common/core/relief_maps.hpp"
@@ -140,14 +141,20 @@ inline ts::TextureDesc heightTexture(const Heights& H, const std::string& key, b
   withMipmaps(t, mip);
   return t;
 }
+// `dxt1`: the map compressed and decoded by common/core/dxt1.hpp (GL's own
+// decode of those blocks is within 1 level, texture_compression measures it).
 inline ts::TextureDesc normalTexture(const Heights& H, const std::string& key, double scale, bool mip = false,
-                                     bool wrap = true) {
+                                     bool wrap = true, bool dxt1 = false) {
   ts::TextureDesc t;
   t.name = "bump_normal_map";
   char sc[32];
   std::snprintf(sc, sizeof sc, "%.4f", scale);
   t.params = {{"source", key}, {"height_scale", sc}, {"baked_for", "R = 1, r = 0.4"}, {"edge_slopes", wrap ? "wrapped" : "one-sided"}};
   t.image = std::make_shared<const ts::Image>(normalMap(H, 1.0, 0.4, scale, wrap));
+  if (dxt1) {
+    t.params.push_back({"compressed", "DXT1"});
+    t.image = std::make_shared<const ts::Image>(ts::dxt1::decode(ts::dxt1::encode(*t.image), t.image->width, t.image->height));
+  }
   t.minFilter = t.magFilter = GL_LINEAR;
   withMipmaps(t, mip);
   return t;

@@ -24,6 +24,7 @@ struct RenderSpec {
   float heightFactor = 1.0f, objectFactor = 1.0f;
   float distanceFactor = 1.0f;  // the eye this many times as far
   bool mipmaps = false;         // mipmapped heights (B1) or normal map (B3), trilinear
+  bool dxt1 = false;            // B3's normal map compressed to DXT1 (seed 001: "bad for normal maps")
   ts::gl::CallList* recordTo = nullptr;  // a picture shown: its GL calls recorded here (ts::recordRender)
 };
 using RenderFn = std::function<ts::Image(const RenderSpec&)>;
@@ -79,7 +80,17 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
     found.cmp[m] = c;
     ts::measureProgress(0.15 + 0.06 * m);
   }
-  // Seed 002 adds to the eye's x and y, not along the surface: on the near
+  // Seed 001: DXT1 is "bad for normal maps".  B3 with its map compressed,
+  // against the displaced surface at the same (s,t), as B3 itself above.
+  {
+    RenderSpec s{kNormalMap};
+    s.dxt1 = true;
+    const ts::Image shaded = render(s);
+    s.normals = true;
+    out.push_back({"normal_err_deg[normalmap_dxt1]", compare(shaded, render(s), shaded, exact).normalDeg,
+                   "the same for B3 with its normal map compressed to DXT1 (4 bits a texel), degrees"});
+  }
+    // Seed 002 adds to the eye's x and y, not along the surface: on the near
   // side of the ring s runs along +x, on the far side along -x.
   const glm::ivec2 rows = coveredRows(smooth);
   const int third = (rows.y - rows.x) / 3;

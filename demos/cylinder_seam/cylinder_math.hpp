@@ -74,6 +74,11 @@ inline double tOf(const Params& p, int j) { return double(j) / p.stacks; }
 // correctly assigned interval (s_k, s_k+1] holds an integer.  Front seam:
 // patch 0; back seam: slices / 2.
 inline int seamPatch(const Params& p) {
+  if (p.sOfTheta) {  // a student's s: the patch whose ends lie in different turns
+    for (int k = 0; k < p.slices; ++k)
+      if (std::floor(sOf(p, k)) != std::floor(sOf(p, k + 1))) return k;
+    return 0;
+  }
   const long n2 = 2L * p.slices, a0 = mod(halfSteps(p, 0), n2);
   for (int k = 0; k < p.slices; ++k) {
     long lo = a0 + 2L * k, hi = lo + 2;  // s_k and s_k+1 in units of 1/n2

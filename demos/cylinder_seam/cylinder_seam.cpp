@@ -16,7 +16,9 @@
 //
 // Keys (each is also a flag, see --help):
 //   c  coordinates: wrong (reduced to [0,1) per vertex) | right (winding tracked)
-//   b  seam: front (Eq. VI.1, the book) | back (Exercise VI.1)
+//   b  seam: front (Eq. VI.1, the book) | back (Exercise VI.1) | mine (your
+//      exercises/vi1_back_seam.cpp, built by scripts/exercise.sh: drawn with
+//      your s, and the panel shows the exercise's checks, pass or FAIL)
 //   + / -  slices (patches around the cylinder)      [ / ]  turn the cylinder
 //   p  outline the seam patch and its regions         v  view: book | compare
 //
@@ -46,6 +48,7 @@
 #include "common/core/text.hpp"
 #include "common/core/textures.hpp"
 #include "common/core/orbit_camera.hpp"
+#include "common/core/student_code.hpp"
 #include "common/core/user_texture.hpp"
 #include "cylinder_math.hpp"
 #include "cylinder_measure.hpp"  // the patches drawn head-on and read back
@@ -59,6 +62,7 @@ const char* const kCoordNames[] = {"wrong", "right"};
 using ts::layout::kWhite;
 using cylinder::views::kPatch;
 const glm::vec4& kMeasured = ts::layout::kAmber;
+const glm::vec4 kFailed{1.0f, 0.4f, 0.35f, 1.0f};
 
 // 10 x 10 labelled cells, 64 texels each: the book's s = 0.1 and 0.9 fall on
 // cell edges, so the seam patch shows whole columns (J|A right, I..B wrong).
@@ -76,13 +80,16 @@ class CylinderSeam final : public ts::Scene {
            "to [0,1), and the intended 0.2 with s = 0.9 -> 1.1 and GL_REPEAT.  Prints the span and direction of s\n"
            "measured across the patches from a render whose pixels name their texels.";
   }
-  std::vector<std::string> claim() const override { return {"seam_patch_span_s*", "seam_patch_direction*"}; }
+  std::vector<std::string> claim() const override {
+    if (seam_ == kMine) return {"exercise_checks_passed", "seam_patch_span_s*"};
+    return {"seam_patch_span_s*", "seam_patch_direction*"};
+  }
 
   void addOptions(ts::Options& o) override {
     o.addEnum("coords", &coords_, {kCoordNames[0], kCoordNames[1]},
               "s per vertex: wrong = theta/360 reduced to [0,1); right = winding tracked (0.9 -> 1.1), GL_REPEAT", 'c');
-    o.addEnum("seam", &seam_, {"front", "back"}, "where the texture edges meet: front (Eq. VI.1) | back (Exercise VI.1)",
-              'b');
+    o.addEnum("seam", &seam_, {"front", "back", "mine"},
+              "where the texture edges meet: front (Eq. VI.1) | back (Exercise VI.1) | mine (exercises/vi1_back_seam.cpp)", 'b');
     // 3 patches at least (a triangle prism); beyond 36 the seam patch is a sliver.
     o.addInt("slices", &slices_, 3, 36, "patches around the cylinder (the book's patch: 5, 72 degrees wide)", '+', '-');
     o.addFloat("turn", &turn_, -180.0f, 180.0f, "turn the cylinder (degrees; 180 shows the back)", ']', '[', 30.0f);
@@ -112,15 +119,26 @@ class CylinderSeam final : public ts::Scene {
   ts::Measurements measure(ts::Renderer& r) override;
 
  private:
-  cylinder::Params params(Coords c) const {
+  // The student's s (--seam mine), as measure() got it from the checker.
+  struct Detail {
+    std::map<int, double> spans;  // coords -> signed span of the seam patch
+    ts::student::Table mine;
+  };
+  cylinder::Params params(Coords c, const Detail* d = nullptr) const {
     cylinder::Params p;
     p.slices = slices_;
     p.coords = c;
-    p.seam = Seam(seam_);
+    p.seam = seam_ == kMine ? Seam::Front : Seam(seam_);
+    if (seam_ == kMine && d && d->mine.ok()) p.sOfTheta = [d](double th) { return d->mine.at({th})[0]; };
     return p;
   }
-  void addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const;
-  void addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int tex, int scale) const;
+  std::vector<Coords> shownCoords() const {
+    if (seam_ == kMine) return {Coords::Right};  // yours, as you wrote it
+    return view_ == 0 ? std::vector<Coords>{Coords(coords_)} : std::vector<Coords>{Coords::Wrong, Coords::Right};
+  }
+  static constexpr int kMine = 2;
+  void addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int scale, const Detail* d) const;
+  void addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int tex, int scale, const Detail* d) const;
   glm::mat4 view() const {
     // Eye 7.5 radii away (mild perspective), 12° above: the front is seen nearly head-on and the
     // top rim shows it is a cylinder.  `turn` brings θ = turn to the front.
@@ -134,20 +152,21 @@ class CylinderSeam final : public ts::Scene {
   ts::UserTexture picture_;  // --texture FILE
   ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   bool patch_ = true;
-  using Spans = std::map<int, double>;  // coords -> signed span of the seam patch: measure()'s detail
 };
 
-void CylinderSeam::addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const {
+void CylinderSeam::addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int scale, const Detail* d) const {
   ts::Panel p = ts::layout::texturePanel("texture_space", vp, tex, "texture");
   // The seam patch's intended region (green) and the one the shown
   // coordinates select (cylinder_views.hpp).  The compare view shows the
   // wrong way here (the right one is the green region itself).
-  if (patch_) cylinder::views::markSeamPatch(f, p, params(Coords::Right), params(view_ == 1 ? Coords::Wrong : Coords(coords_)), scale);
+  if (patch_ && (seam_ != kMine || (d && d->mine.ok())))
+    cylinder::views::markSeamPatch(f, p, params(Coords::Right, d),
+                                   params(view_ == 1 && seam_ != kMine ? Coords::Wrong : Coords(coords_), d), scale);
   f.panels.push_back(p);
 }
 
-void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int tex, int scale) const {
-  cylinder::Params cp = params(c);
+void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int tex, int scale, const Detail* d) const {
+  cylinder::Params cp = params(c, d);
   ts::Panel p;
   p.id = std::string("cylinder_") + kCoordNames[int(c)];
   p.viewport = vp;
@@ -194,8 +213,8 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
   t.wrapS = GL_REPEAT;
   t = picture_.orDefault(t);  // the fix needs it (and the wrong way does not care)
   int tex = f.addTexture(t);
-  const std::vector<Coords> shown =
-      view_ == 0 ? std::vector<Coords>{Coords(coords_)} : std::vector<Coords>{Coords::Wrong, Coords::Right};
+  const std::vector<Coords> shown = shownCoords();
+  const Detail* d = measured.detailAs<Detail>();
   // The texture square, then the cylinders, in a row (or a column when the
   // window is tall); titles above, the seam's rule and the measurement below.
   namespace L = ts::layout;
@@ -209,18 +228,24 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
   const L::Cell& tc = cells[0];
   const int scale = tc.scale, names = int(L::lineHeight(scale));  // room for x, y, z, w above and below the square
   const int side = std::max(1, std::min(tc.picture.w, tc.picture.h - 2 * names));
-  addTextureView(f, L::centred(tc.picture, side, side), tex, scale);
+  addTextureView(f, L::centred(tc.picture, side, side), tex, scale, d);
   L::caption(f, tc.above, "texture space", kWhite, scale);
-  L::caption(f, tc.below, seam_ == 0 ? "seam at the front: s = theta/360" : "seam at the back: s = theta/360 + 1/2",
-             kWhite, scale);
+  const char* rule[] = {"seam at the front: s = theta/360", "seam at the back: s = theta/360 + 1/2",
+                        "s = your cylinderS(theta)"};
+  L::caption(f, tc.below, rule[seam_], kWhite, scale);
   for (size_t c = 0; c < shown.size(); ++c) {
     const L::Cell& cell = cells[c + 1];
-    addCylinder(f, cell.picture, shown[c], tex, cell.scale);
-    L::caption(f, cell.above, shown[c] == Coords::Wrong ? "s reduced to [0,1): wrong" : "s winding tracked: right", kWhite,
-               cell.scale);
-    const Spans* spans = measured.detailAs<Spans>();
-    if (spans && spans->count(int(shown[c]))) {
-      double span = spans->at(int(shown[c]));
+    if (seam_ == kMine && !(d && d->mine.ok())) {  // not done yet, or it failed: say so, draw nothing
+      L::caption(f, L::box(cell.picture), d ? d->mine.failure : "asking the exercise checker for your s ...", kFailed, cell.scale);
+      continue;
+    }
+    addCylinder(f, cell.picture, shown[c], tex, cell.scale, d);
+    L::caption(f, cell.above,
+               seam_ == kMine ? ts::student::summary(measured)
+               : shown[c] == Coords::Wrong ? "s reduced to [0,1): wrong" : "s winding tracked: right",
+               kWhite, cell.scale);
+    if (d && d->spans.count(int(shown[c]))) {
+      double span = d->spans.at(int(shown[c]));
       L::caption(f, cell.below,
                  "seam patch: " + fmt("%.2f", std::abs(span)) + " of s, " + (span < 0 ? "reversed" : "forwards"),
                  kMeasured, cell.scale);
@@ -232,19 +257,24 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
 // Each patch is drawn head-on with a texel-index texture and the s it shows
 // fitted across it (cylinder_measure.hpp): the seam patch's span and sign.
 ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
-  std::vector<Coords> todo = view_ == 0 ? std::vector<Coords>{Coords(coords_)}
-                                        : std::vector<Coords>{Coords::Wrong, Coords::Right};
   ts::Measurements out;
-  Spans spans;
-  const int k = cylinder::seamPatch(params(Coords::Right));
+  Detail d;
+  if (seam_ == kMine) {  // the student's s at each column (the checker runs it), then the exercise's checks
+    std::vector<std::vector<double>> at;
+    for (int i = 0; i < slices_; ++i) at.push_back({std::fmod(cylinder::thetaDeg(slices_, i) + 360.0, 360.0)});
+    d.mine = ts::student::table("cylinderS", at);
+    ts::student::addTo(out, "vi1_back_seam", ts::student::check("vi1_back_seam"));
+    if (!d.mine.ok()) return out.detail = d, out;
+  }
+  const int k = cylinder::seamPatch(params(Coords::Right, &d));
   out.push_back({"seam_patch", double(k), "the patch the texture edges meet in (0 = the front one)"});
-  for (Coords c : todo) {
-    std::vector<cylinder::PatchResult> res = cylinder::measurePatches(r, params(c));
+  for (Coords c : shownCoords()) {
+    std::vector<cylinder::PatchResult> res = cylinder::measurePatches(r, params(c, &d));
     std::string n = std::string("[") + kCoordNames[int(c)] + "]";
     int reversed = 0;
     double err = 0;
     for (const auto& pr : res) reversed += pr.span < 0, err = std::max(err, pr.texelErr);
-    spans[int(c)] = res[size_t(k)].span;
+    d.spans[int(c)] = res[size_t(k)].span;
     out.push_back({"seam_patch_span_s" + n, std::abs(res[size_t(k)].span), "how much of the texture (in s) the seam patch shows"});
     out.push_back({"seam_patch_direction" + n, res[size_t(k)].span < 0 ? -1.0 : 1.0, "sign of ds/dx across it: -1 = backwards"});
     out.push_back({"front_patch_span_s" + n, std::abs(res[0].span), "the same for the patch facing +z (theta -180/n..180/n)"});
@@ -252,7 +282,7 @@ ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
     out.push_back({"reversed_patches" + n, double(reversed), "patches showing the texture backwards"});
     out.push_back({"texel_error_max" + n, err, "largest distance (texels of 2048) between the texel shown and the assigned s"});
   }
-  out.detail = spans;
+  out.detail = d;
   return out;
 }
 }  // namespace

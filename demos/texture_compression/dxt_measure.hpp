@@ -45,13 +45,7 @@ inline std::vector<Block> threeColour(const std::vector<Block>& blocks, const ts
   for (size_t k = 0; k < out.size(); ++k) {
     Block& b = out[k];
     if (b.c0 > b.c1) std::swap(b.c0, b.c1);
-    const int bx = int(k) % (img.width / 4), by = int(k) / (img.width / 4);
-    std::array<glm::dvec3, 16> px;
-    for (int i = 0; i < 16; ++i) {
-      const ts::Rgba c = img.at(bx * 4 + i % 4, by * 4 + i / 4);
-      px[size_t(i)] = {c.r, c.g, c.b};
-    }
-    assign(&b, px);
+    assign(&b, blockTexels(img, int(k) % blocksAcross(img.width), int(k) / blocksAcross(img.width)));
   }
   return out;
 }

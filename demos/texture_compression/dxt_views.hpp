@@ -19,6 +19,9 @@ struct Result {
   int picture = kPhoto;
   bool threeColour = false, glDecode = false;
   ts::Image original, decoded, error;  // decoded: GL's when it has S3TC, else the CPU's
+  ts::Image rgb565;                    // the same memory at 16 bits: half the size, magnified back
+  double rmsDxt1 = 0, rmsRgb565 = 0;   // each against the original
+  std::string name;                    // the picture's name ("photo", or the file's)
   std::vector<Block> blocks;
   std::vector<CacheRun> plain, prefetched;
   ts::gl::CallList calls;  // the round trip's GL calls: the listing's first section
@@ -63,7 +66,7 @@ inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const std
   z.batches.push_back(ts::lineLoop({{ux, uy}, {ux + 0.125f, uy}, {ux + 0.125f, uy - 0.125f}, {ux, uy - 0.125f}}, L::kAmber, 2.0f,
                                    "block_outline"));
   f.panels.push_back(z);
-  const Block& b = m.blocks[size_t(by * (m.original.width / 4) + bx)];
+  const Block& b = m.blocks[size_t(by * blocksAcross(m.original.width) + bx)];
   const auto pal = palette(b.c0, b.c1);
   ts::Panel sp = L::unitPanel("palette", {zr.x, zr.y + zr.h + 4, zr.w, sw});
   ts::Batch quads;
@@ -81,6 +84,36 @@ inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const std
   std::snprintf(pals, sizeof pals, "c0 %04X %s c1 %04X: %s", b.c0, b.c0 > b.c1 ? ">" : "<=", b.c1,
                 b.c0 > b.c1 ? "c2 = (2c0+c1)/3, c3 = (c0+2c1)/3" : "c2 = (c0+c1)/2, c3 = black");
   L::caption(f, cells[3].below, pals, L::kWhite, cells[3].scale);
+  L::caption(f, {cells[0].below.x0, cells[0].below.y0, cells[2].below.x1, cells[0].below.y1}, numbers, L::kAmber,
+             cells[0].scale);
+}
+
+// Equal memory, magnified: 64 x 64 texels around block (bx, by) of the
+// original, of DXT1 at full size, and of RGB565 at half size magnified back
+// (GL_NEAREST; each panel a multiple of 64 pixels, so no texel edge falls on
+// a pixel centre).
+inline void buildEqualMemory(ts::Frame& f, const Result& m, int bx, int by, const std::string& numbers) {
+  const L::Box area{8, 8, float(f.width - 8), float(f.height - 8)};
+  const std::vector<L::Cell> cells = L::flow(area, {3, 1.0f, 1, 2, 10, 2, 150});
+  const int n = std::min({64, m.original.width, m.original.height});
+  const int x0 = std::clamp(bx * 4 + 2 - n / 2, 0, m.original.width - n), y0 = std::clamp(by * 4 + 2 - n / 2, 0, m.original.height - n);
+  const ts::Image* shown[3] = {&m.original, &m.decoded, &m.rgb565};
+  char rms[2][64];
+  std::snprintf(rms[0], sizeof rms[0], "RMS %.2f", m.rmsDxt1);
+  std::snprintf(rms[1], sizeof rms[1], "RMS %.2f", m.rmsRgb565);
+  const std::string dims = std::to_string(m.original.width) + " x " + std::to_string(m.original.height);
+  const std::string titles[3] = {m.name + ", " + dims + " at 24 bits", "DXT1 at " + dims + ": " + rms[0],
+                                 std::string("RGB565 at half the size, magnified: ") + rms[1]};
+  for (int k = 0; k < 3; ++k) {
+    ts::Image crop(n, n);
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) crop.set(x, y, shown[k]->at(x0 + x, y0 + y));
+    const ts::Rect& c = cells[size_t(k)].picture;
+    const int side = std::max(n, std::min(c.w, c.h) / n * n);
+    f.panels.push_back(L::texturePanel("equal_" + std::to_string(k), L::centred(c, side, side),
+                                       imageTexture(f, crop, titles[k], k == 1 ? m.calls : nullptr, GL_NEAREST)));
+    L::caption(f, cells[size_t(k)].above, titles[k], L::kWhite, cells[size_t(k)].scale);
+  }
   L::caption(f, {cells[0].below.x0, cells[0].below.y0, cells[2].below.x1, cells[0].below.y1}, numbers, L::kAmber,
              cells[0].scale);
 }

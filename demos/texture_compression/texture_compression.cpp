@@ -13,8 +13,11 @@
 // 001 leaves it out; key 3 shows it); each texel = palette[its 2 bits].
 //
 // Keys (each is also a flag, see --help):
-//   v  view: blocks | memory        t  picture: photo | checker | normals
+//   v  view: blocks | equal-memory | memory   t  picture: photo | checker | normals
 //   3  every block in the 3-colour mode        b / B, n / N  the block shown: x, y
+//   d  decode: GL's | the CPU's (what the demo shows where a driver has no S3TC)
+//   --texture FILE  your picture, compressed (sides not multiples of 4 are
+//                   padded by repeating the last row and column, as the format needs)
 //
 // What the GL does (dxt_gl.hpp; the listing's first section):
 //   glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, 512, 512, 0, 131072, blocks);
@@ -33,7 +36,9 @@
 #include <cstdio>
 #include <string>
 
+#include "common/core/error.hpp"
 #include "common/core/layout.hpp"
+#include "common/core/user_texture.hpp"
 #include "common/core/scene.hpp"
 #include "common/gl/gl_listing.hpp"
 #include "common/gl/render.hpp"
@@ -62,12 +67,16 @@ class TextureCompression final : public ts::Scene {
   std::vector<std::string> claim() const override { return {"compressed_bytes[512]", "bits_per_texel"}; }
 
   void addOptions(ts::Options& o) override {
-    o.addEnum("view", &view_, {"blocks", "memory"}, "the picture and its DXT1 blocks | the tile cache and the clipmap", 'v');
+    o.addEnum("view", &view_, {"blocks", "equal-memory", "memory"},
+              "the picture and its DXT1 blocks | DXT1 against RGB565 at half the size, magnified | the tile cache and the clipmap", 'v');
     o.addEnum("picture", &picture_, {kPictureNames[0], kPictureNames[1], kPictureNames[2]},
               "photo-like bricks | checkerboard | normal map (from the bricks' heights)", 't');
     o.addBool("three-colour", &three_, "every block in the 3-colour mode (c0 <= c1: midpoint and black)", '3');
     o.addInt("block-x", &bx_, 0, 127, "the block magnified: column", 'b', 'B', 1);
     o.addInt("block-y", &by_, 0, 127, "the block magnified: row", 'n', 'N', 1);
+    o.addEnum("decode", &cpuDecode_, {"gl", "cpu"},
+              "show GL's decode of the blocks | the CPU's (dxt1.hpp), as where the driver lacks S3TC", 'd');
+    file_.addOption(o, "the picture chosen by --picture");
   }
 
   std::vector<ts::FigureSpec> figures() const override {
@@ -85,6 +94,12 @@ class TextureCompression final : public ts::Scene {
          {"--view", "blocks", "--picture", "normals", "--block-x", "31", "--block-y", "15"}, 1280, 440,
          "\"Bad for normal maps\": after DXT1 the normals are off by {normal_error_deg[mean]} degrees on average, "
          "{normal_error_deg[max]} at most (PSNR {psnr[normals]} dB)."},
+        {"dxt1_equal_memory", "Seed 001 (texture compression)",
+         "The same memory two ways, magnified: 64 x 64 texels of the picture at 512 x 512, of DXT1 at 512 x 512 (4 bits a "
+         "texel), and of RGB565 at 256 x 256 (16 bits a texel) magnified back.",
+         {"--view", "equal-memory", "--picture", "photo", "--block-x", "40", "--block-y", "14"}, 1280, 520,
+         "\"A 512^2 texture in a 256^2's memory\": in {compressed_bytes[512]} bytes each, DXT1 at 512^2 is "
+         "{rms_equal_memory[dxt1_512]} RMS from the picture, RGB565 at 256^2 {rms_equal_memory[rgb565_256]}."},
         {"texture_memory", "Seed 001 (texture memory)",
          "An LRU cache of texture tiles along a camera path, with and without prefetching the tiles the view moves "
          "into next; below, a clipmap's size.",
@@ -104,7 +119,9 @@ class TextureCompression final : public ts::Scene {
       return f;
     }
     const std::string numbers = summary(measured);
-    if (view_ == 0) views::buildBlocks(f, *m, bx_, by_, numbers);
+    const int bx = std::min(bx_, blocksAcross(m->original.width) - 1), by = std::min(by_, blocksAcross(m->original.height) - 1);
+    if (view_ == 0) views::buildBlocks(f, *m, bx, by, numbers);
+    else if (view_ == 1) views::buildEqualMemory(f, *m, bx, by, numbers);
     else views::buildMemory(f, *m, numbers);
     return f;
   }
@@ -118,34 +135,41 @@ class TextureCompression final : public ts::Scene {
         if (x.name == n) return x.value;
       return 0.0;
     };
-    if (view_ == 1)
+    if (view_ == 2)
       return "clipmap of a 65536^2 texture, 512^2 a level: " + fmt("%.0f", v("clipmap_texels")) + " texels; the whole chain " +
              fmt("%.0f", v("chain_texels")) + " (" + fmt("%.0f", v("clipmap_saving")) + " times).  DXT1: a 512^2 texture in " +
              fmt("%.0f", v("compressed_bytes[512]")) + " bytes, a 256^2 one's at 16 bits.";
-    return fmt("%.0f", v("compressed_bytes[512]")) + " bytes (" + fmt("%.0f", v("bits_per_texel")) + " bits a texel, " +
+    const std::string size = file_.active() ? "file" : "512";
+    return fmt("%.0f", v("compressed_bytes[" + size + "]")) + " bytes (" + fmt("%.0f", v("bits_per_texel")) + " bits a texel, " +
            fmt("%.0f", v("ratio_vs_rgb565")) + ":1 against RGB565, " + fmt("%.0f", v("ratio_vs_rgb888")) + ":1 against RGB888); PSNR " +
-           fmt("%.1f", v("psnr[" + std::string(kPictureNames[picture_]) + "]")) + " dB; at most " +
+           fmt("%.1f", v("psnr[" + (file_.active() ? std::string("file") : kPictureNames[picture_]) + "]")) + " dB; at most " +
            fmt("%.0f", v("max_colours_per_block")) + " colours a block; GL vs CPU decode: " + fmt("%.0f", v("gl_vs_cpu_max_diff")) +
            " levels at most";
   }
 
-  int view_ = 0, picture_ = kPhoto, bx_ = 40, by_ = 14;
+  int view_ = 0, picture_ = kPhoto, bx_ = 40, by_ = 14, cpuDecode_ = 0;
   bool three_ = false;
+  ts::UserTexture file_;  // --texture FILE: the shown picture
 };
 
 ts::Measurements TextureCompression::measure(ts::Renderer& r) {
   Result out;
   ts::Measurements ms;
   out.picture = picture_, out.threeColour = three_;
+  if (file_.active() && (file_.image().width < 32 || file_.image().height < 32))
+    throw ts::Error("--texture: " + file_.path() + " is " + std::to_string(file_.image().width) + " x " +
+                    std::to_string(file_.image().height) + "; the demo's views need at least 32 x 32 texels");
   // Every picture: PSNR (and the normal map's angles); the shown one kept.
   for (int p = 0; p < kPictureCount; ++p) {
     ts::measureProgress(0.1 + 0.25 * p);
-    const ts::Image img = picture(p);
+    const bool file = p == picture_ && file_.active();
+    const ts::Image img = file ? file_.image() : picture(p);
+    const std::string name = file ? "file" : kPictureNames[p], size = file ? "file" : "512";
     std::vector<Block> blocks = encode(img);
     if (three_) blocks = threeColour(blocks, img);
     const ts::Image cpu = decode(blocks, img.width, img.height);
-    ms.push_back({"psnr[" + std::string(kPictureNames[p]) + "]", psnr(img, cpu), "dB, DXT1 (the CPU decode) against the picture"});
-    if (p == kNormals) {
+    ms.push_back({"psnr[" + name + "]", psnr(img, cpu), "dB, DXT1 (the CPU decode) against the picture"});
+    if (p == kNormals && !file) {
       const glm::dvec2 a = normalAngles(img, cpu);
       ms.push_back({"normal_error_deg[mean]", a.x, "mean angle between the normals before and after DXT1, degrees"});
       ms.push_back({"normal_error_deg[max]", a.y, "largest angle, degrees"});
@@ -153,24 +177,31 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
     if (p != picture_) continue;
     GlResult g;
     out.calls = ts::recordRender(r, [&] { g = glRoundTrip(bytes(blocks), img.width, img.height); });
-    out.glDecode = g.supported && g.compressed;
+    out.glDecode = g.supported && g.compressed && cpuDecode_ == 0;
     out.original = img, out.blocks = blocks, out.decoded = out.glDecode ? g.decoded : cpu;
+    out.name = file ? file_.path().substr(file_.path().find_last_of('/') + 1) : kPictureNames[p];
     out.error = ts::Image(img.width, img.height);
     for (size_t k = 0; k < img.pixels.size(); ++k)
       out.error.pixels[k] = k % 4 == 3 ? 255 : uint8_t(std::min(255, 8 * std::abs(int(img.pixels[k]) - int(cpu.pixels[k]))));
+    const double texels = double(img.width) * img.height, bits = 8.0 * double(bytes(blocks).size()) / texels;
     ms.push_back({"s3tc_supported", g.supported ? 1.0 : 0.0, "GL_EXT_texture_compression_s3tc (renderer: " + ts::gl::rendererString() + ")"});
-    ms.push_back({"compressed_bytes[512]", g.supported ? double(g.bytes) : double(bytes(blocks).size()),
-                  g.supported ? "GL_TEXTURE_COMPRESSED_IMAGE_SIZE of the 512 x 512 DXT1 texture" : "bytes of the blocks (no S3TC in this GL)"});
-    ms.push_back({"rgb565_bytes[256]", 256.0 * 256.0 * 2.0, "a 256 x 256 texture at 16 bits (seed 001: the same memory)"});
-    ms.push_back({"bits_per_texel", 8.0 * double(bytes(blocks).size()) / (double(img.width) * img.height), "of the blocks"});
-    ms.push_back({"ratio_vs_rgb565", 16.0 / (8.0 * double(bytes(blocks).size()) / (double(img.width) * img.height)), "16-bit texels : DXT1"});
-    ms.push_back({"ratio_vs_rgb888", 24.0 / (8.0 * double(bytes(blocks).size()) / (double(img.width) * img.height)), "24-bit texels : DXT1"});
+    ms.push_back({"gl_decode_shown", out.glDecode ? 1.0 : 0.0, "1: the picture shows GL's decode; 0: the CPU's (--decode cpu, or no S3TC)"});
+    ms.push_back({"compressed_bytes[" + size + "]", g.supported ? double(g.bytes) : double(bytes(blocks).size()),
+                  g.supported ? "GL_TEXTURE_COMPRESSED_IMAGE_SIZE of the DXT1 texture" : "bytes of the blocks (no S3TC in this GL)"});
+    if (!file) ms.push_back({"rgb565_bytes[256]", 256.0 * 256.0 * 2.0, "a 256 x 256 texture at 16 bits (seed 001: the same memory)"});
+    else
+      ms.push_back({"padded_texels", double(blocksAcross(img.width) * blocksAcross(img.height) * 16) - texels,
+                    "texels the blocks cover beyond the picture (sides padded to multiples of 4, the last row and column repeated)"});
+    ms.push_back({"bits_per_texel", bits, "of the blocks, over the picture's own texels"});
+    ms.push_back({"ratio_vs_rgb565", 16.0 / bits, "16-bit texels : DXT1"});
+    ms.push_back({"ratio_vs_rgb888", 24.0 / bits, "24-bit texels : DXT1"});
     ms.push_back({"max_colours_per_block", double(maxColoursPerBlock(out.decoded)), "distinct colours in any decoded 4x4 block"});
-    ms.push_back({"gl_vs_cpu_max_diff", out.glDecode ? double(maxDiff(g.decoded, cpu)) : -1.0,
-                  "largest channel difference, GL's decode against dxt_math.hpp's (8-bit levels; -1: no S3TC)"});
-    ms.push_back({"rms_equal_memory[dxt1_512]", rms(img, cpu), "RMS against the picture: 512 x 512 in DXT1"});
-    ms.push_back({"rms_equal_memory[rgb565_256]", rms(img, rgb565Half(img)),
-                  "RMS: 256 x 256 at RGB565 (the same bytes), magnified bilinearly to 512 x 512"});
+    ms.push_back({"gl_vs_cpu_max_diff", g.supported && g.compressed ? double(maxDiff(g.decoded, cpu)) : -1.0,
+                  "largest channel difference, GL's decode against dxt1.hpp's (8-bit levels; -1: no S3TC)"});
+    out.rgb565 = rgb565Half(img), out.rmsDxt1 = rms(img, cpu), out.rmsRgb565 = rms(img, out.rgb565);
+    ms.push_back({"rms_equal_memory[dxt1_" + size + "]", out.rmsDxt1, "RMS against the picture: DXT1 at full size"});
+    ms.push_back({"rms_equal_memory[rgb565_" + std::string(file ? "half" : "256") + "]", out.rmsRgb565,
+                  "RMS: half the size at RGB565 (the same bytes), magnified bilinearly back"});
   }
   ts::measureProgress(0.85);
   for (int n : cacheSizes()) out.plain.push_back(lruRun(n, false)), out.prefetched.push_back(lruRun(n, true));

@@ -14,6 +14,8 @@
 //
 // Keys (each is also a flag, see --help):
 //   c  mapping: book (s = θ/360, t = φ/360) | front (both + 1/2, the exercise)
+//      | mine (your exercises/vi2_torus_front.cpp, built by scripts/exercise.sh:
+//      drawn with your (s, t); the panel shows the exercise's checks)
 //   g  texture: checker (the book's) | grid (labelled cells; the centre is
 //      where D4, E4, D5, E5 meet)
 //   m  the centre marker            v  view: single | compare (both mappings)
@@ -50,14 +52,17 @@
 #include "common/core/user_texture.hpp"
 #include "torus_math.hpp"  // the exercise's answer; the torus itself is common/core/torus.hpp
 #include "torus_measure.hpp"  // the centre found in a texel-index render, and the ray to the mesh
+#include "torus_views.hpp"    // the centre's marks
+#include "common/core/student_code.hpp"
 
 namespace {
 using torus::Mapping;
 
-const char* const kMappingNames[] = {"book", "front"};
+const char* const kMappingNames[] = {"book", "front", "mine"};
+const Mapping kMine = Mapping(2);  // exercises/vi2_torus_front.cpp: the student's (s, t)
 using ts::layout::kWhite;
 const glm::vec4& kMeasured = ts::layout::kAmber;
-const glm::vec4 kMarker{0.95f, 0.1f, 0.2f, 1.0f}, kMarkerBox{0.55f, 0.0f, 0.1f, 0.85f};
+const glm::vec4 kFailed{1.0f, 0.4f, 0.35f, 1.0f};
 
 using ts::layout::fmt;
 
@@ -74,11 +79,15 @@ class Torus final : public ts::Scene {
            "it to (0, 0, R + r) at the front.  Prints where the centre is found in a render whose pixels name their\n"
            "texels: its screen position, the 3D point there, and its distance from the answer.";
   }
-  std::vector<std::string> claim() const override { return {"centre_3d_z*", "centre_distance_to_answer*"}; }
+  std::vector<std::string> claim() const override {
+    if (Mapping(mapping_) == kMine) return {"exercise_checks_passed", "centre_distance_to_answer*"};
+    return {"centre_3d_z*", "centre_distance_to_answer*"};
+  }
 
   void addOptions(ts::Options& o) override {
-    o.addEnum("mapping", &mapping_, {kMappingNames[0], kMappingNames[1]},
-              "book: s = theta/360, t = phi/360; front: s = theta/360 + 1/2, t = phi/360 + 1/2 (Exercise VI.2)", 'c');
+    o.addEnum("mapping", &mapping_, {kMappingNames[0], kMappingNames[1], kMappingNames[2]},
+              "book: s = theta/360, t = phi/360; front: s = theta/360 + 1/2, t = phi/360 + 1/2 (Exercise VI.2); "
+              "mine: exercises/vi2_torus_front.cpp", 'c');
     o.addEnum("pattern", &texture_, {"checker", "grid"}, "checker (Figure VI.6) or labelled grid (shows the centre)",
               'g');
     picture_.addOption(o, "the pattern");
@@ -128,13 +137,26 @@ class Torus final : public ts::Scene {
   }
 
  private:
-  torus::Params params(Mapping m) const {
+  struct Detail {
+    std::map<int, Found> founds;  // mapping -> where the centre was found
+    ts::student::Table mine;      // the student's (s, t) at the grid's angles (--mapping mine)
+  };
+  // Mine: the answer is the exercise's (the front), the (s, t) the student's.
+  torus::Params params(Mapping m, const Detail* d = nullptr) const {
     glm::dvec2 rr = parseRadii(radiiText_);
     torus::Params p;
     p.R = rr.x;
     p.r = rr.y;
-    p.mapping = m;
+    p.mapping = m == kMine ? Mapping::Front : m;
+    if (m == kMine && d && d->mine.ok())
+      p.stOfAngles = [d](double th, double ph) {
+        const std::vector<double>& st = d->mine.at({th, ph});
+        return glm::dvec2(st[0], st[1]);
+      };
     return p;
+  }
+  std::vector<Mapping> shownMappings() const {
+    return view_ == 0 ? std::vector<Mapping>{Mapping(mapping_)} : std::vector<Mapping>{Mapping::Book, Mapping::Front};
   }
   // The camera, the same for the picture and the measurement.  Eye at
   // 5.2 / 1.4 (R + r) from the centre, 35° field: the whole ring fits with a
@@ -150,7 +172,7 @@ class Torus final : public ts::Scene {
     return picture_.orDefault(texture_ == 0 ? ts::checkerboard(256, 16) : ts::labelledGrid(512, 8));
   }
   // found: what measure() found for this mapping (null before it has).
-  void addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale, const Found* found) const;
+  void addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale, const Detail* d) const;
   void addTexture(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const;
 
   int mapping_ = int(Mapping::Book), texture_ = 0, view_ = 0;
@@ -159,27 +181,17 @@ class Torus final : public ts::Scene {
   ts::UserTexture picture_;  // --texture FILE
   ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   std::string radiiText_ = "1,0.4";
-  using Founds = std::map<int, Found>;  // mapping -> where the centre was found: measure()'s detail
 };
 
 void Torus::addTexture(ts::Frame& f, const ts::Rect& vp, int tex, int scale) const {
   ts::Panel p = ts::layout::texturePanel("texture_space", vp, tex, "texture");
-  if (marker_) {
-    const float a = 0.06f;
-    p.batches.push_back(ts::lineSegments({{0.5f - a, 0.5f}, {0.5f + a, 0.5f}, {0.5f, 0.5f - a}, {0.5f, 0.5f + a}}, kMarker,
-                                         3.0f, "centre_marker"));
-    // Inside its panel, at the largest scale that fits (left out if none does).
-    for (int sc = scale; sc >= 1; --sc)
-      if (ts::layout::placeFree(f, {float(vp.x + vp.w / 2) + 8.0f * float(sc), float(vp.y + vp.h / 2) + 4.0f * float(sc),
-                                    "(1/2, 1/2)", kWhite, sc, ts::Align::Left, kMarkerBox},
-                                ts::layout::box(vp)))
-        break;
-  }
+  if (marker_) torus::views::markTextureCentre(f, p, scale);
   f.panels.push_back(p);
 }
 
-void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale, const Found* found) const {
-  torus::Params tp = params(m);
+void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int scale, const Detail* d) const {
+  torus::Params tp = params(m, d);
+  const Found* found = d && d->founds.count(int(m)) ? &d->founds.at(int(m)) : nullptr;
   ts::Panel p;
   p.id = std::string("torus_") + kMappingNames[int(m)];
   p.viewport = vp;
@@ -191,34 +203,15 @@ void Torus::addTorus(ts::Frame& f, const ts::Rect& vp, Mapping m, int tex, int s
   glm::dvec3 toLight = glm::dvec3(glm::inverse(glm::mat3(p.modelview)) * glm::vec3(-0.4f, 0.6f, 1.0f));
   // The mesh's (s, t) (ts::torusMesh) become glTexCoord4f(s, t, 0, 1) in Renderer::draw.
   p.batches.push_back(ts::litMeshBatch(torus::mesh(tp), tex, toLight, 0.4, 0.6, "torus"));
-  if (marker_) {
-    // A cross in the tangent plane at the answer, its arms along the unit
-    // tangents T (along θ) and B (along φ), lifted 2% of r along the normal
-    // so the depth test keeps it above its own surface and hides it behind
-    // the rest of the ring.
-    const ts::TorusFrame fr = torus::centreFrame(tp);
-    const glm::dvec3 n = fr.N, c = fr.Q + 0.02 * tp.r * n, dTheta = fr.T, dPhi = fr.B;
-    const double arm = 0.35 * tp.r;
-    ts::Batch cross = ts::lineSegments({}, kMarker, 3.0f, "centre_marker");
-    for (glm::dvec3 q : {c - arm * dTheta, c + arm * dTheta, c - arm * dPhi, c + arm * dPhi})
-      cross.vertices.push_back({glm::vec3(q), {0, 0, 0, 1}, kMarker});
-    p.batches.push_back(cross);
-    glm::vec2 q = ts::panelToPixels(p, p.projection * p.modelview * glm::vec4(glm::vec3(c), 1.0f));
-    bool hidden = found && !found->visible;
-    for (int sc = scale; sc >= 1; --sc)
-      if (ts::layout::placeFree(f, {q.x + 10.0f * float(sc), q.y + 6.0f * float(sc),
-                                    hidden ? "(1/2,1/2): hidden" : "(1/2,1/2)", kWhite, sc, ts::Align::Left, kMarkerBox},
-                                ts::layout::box(vp)))
-        break;
-  }
+  if (marker_) torus::views::markTorusCentre(f, p, tp, scale, found && !found->visible);
   f.panels.push_back(p);
 }
 
 ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) const {
   ts::Frame f = ts::layout::blankFrame(width, height);
   int tex = f.addTexture(picture());
-  const std::vector<Mapping> shown =
-      view_ == 0 ? std::vector<Mapping>{Mapping(mapping_)} : std::vector<Mapping>{Mapping::Book, Mapping::Front};
+  const std::vector<Mapping> shown = shownMappings();
+  const Detail* d = measured.detailAs<Detail>();
   // The texture, then one square torus panel per mapping, in a row (or a
   // column in a tall window): each with its mapping and the answer above,
   // the measurement below.
@@ -235,14 +228,19 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
   L::caption(f, L::halves(tc.above).first, "texture", kWhite, tc.scale);
   for (size_t k = 0; k < shown.size(); ++k) {
     const Mapping m = shown[k];
-    const torus::Params tp = params(m);
+    const torus::Params tp = params(m, d);
     const L::Cell& c = cells[k + 1];
-    const Founds* founds = measured.detailAs<Founds>();
-    const Found* found = founds && founds->count(int(m)) ? &founds->at(int(m)) : nullptr;
-    addTorus(f, c.picture, m, tex, c.scale, found);
+    const Found* found = d && d->founds.count(int(m)) ? &d->founds.at(int(m)) : nullptr;
     const auto [mapping, centre] = L::halves(c.above);
-    L::caption(f, mapping, m == Mapping::Book ? "s=theta/360, t=phi/360" : "s=theta/360+1/2, t=phi/360+1/2", kWhite,
-               c.scale);
+    if (m == kMine && !(d && d->mine.ok())) {  // not done yet, or it failed: say so, draw nothing
+      L::caption(f, L::box(c.picture), d ? d->mine.failure : "asking the exercise checker for your (s, t) ...", kFailed, c.scale);
+      continue;
+    }
+    addTorus(f, c.picture, m, tex, c.scale, d);
+    L::caption(f, mapping,
+               m == kMine ? ts::student::summary(measured)
+               : m == Mapping::Book ? "s=theta/360, t=phi/360" : "s=theta/360+1/2, t=phi/360+1/2",
+               kWhite, c.scale);
     glm::dvec3 answer = torus::centrePoint(tp);
     L::caption(f, centre,
                "centre at (0, 0, " + fmt("%.2f", answer.z) + ")" + (m == Mapping::Book ? " = -(R - r)" : " = R + r"),
@@ -259,14 +257,21 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
 // The centre is found in a texel-index render with the picture's camera, and
 // a ray through it cast against the mesh (torus_measure.hpp).
 ts::Measurements Torus::measure(ts::Renderer& r) {
-  std::vector<Mapping> todo = view_ == 0 ? std::vector<Mapping>{Mapping(mapping_)}
-                                         : std::vector<Mapping>{Mapping::Book, Mapping::Front};
   ts::Measurements out;
-  Founds founds;
-  for (Mapping m : todo) {
-    const torus::Params tp = params(m), other = params(m == Mapping::Book ? Mapping::Front : Mapping::Book);
+  Detail d;
+  if (Mapping(mapping_) == kMine) {  // the student's (s, t) at the grid's angles (the checker runs it), then the checks
+    const torus::Params g = params(kMine);
+    std::vector<std::vector<double>> at;
+    for (int i = 0; i < g.nu; ++i)
+      for (int j = 0; j < g.nv; ++j) at.push_back({360.0 * i / g.nu, 360.0 * j / g.nv});
+    d.mine = ts::student::table("torusST", at);
+    ts::student::addTo(out, "vi2_torus_front", ts::student::check("vi2_torus_front"));
+    if (!d.mine.ok()) return out.detail = d, out;
+  }
+  for (Mapping m : shownMappings()) {
+    const torus::Params tp = params(m, &d), other = params(m == Mapping::Book ? Mapping::Front : Mapping::Book);
     Found fd = torus::find(r, tp, projection(), modelview(tp));
-    founds[int(m)] = fd;
+    d.founds[int(m)] = fd;
     const std::string n = std::string("[") + kMappingNames[int(m)] + "]";
     const glm::dvec3 answer = torus::centrePoint(tp);
     glm::mat4 mvp = projection() * modelview(tp);
@@ -288,7 +293,7 @@ ts::Measurements Torus::measure(ts::Renderer& r) {
                    fd.visible ? glm::distance(fd.point, torus::centrePoint(other)) : none,
                    "from the other mapping's answer (should be far)"});
   }
-  out.detail = founds;
+  out.detail = d;
   return out;
 }
 }  // namespace

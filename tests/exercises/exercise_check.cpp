@@ -9,6 +9,9 @@
 //                                    returns NaN (the tests of the isolation)
 //     --out DIR                      the pictures (default build/exercises)
 //     --time-limit S                 per exercise (default 10 s)
+//   exercise_check --eval FN         FN (cylinderS, torusST) at each row of
+//                                    numbers on stdin: a demo opened with
+//                                    the student's code draws with them
 // Each exercise runs in a child process of its own, with its own offscreen
 // GL context: a crash, an endless loop or a NaN is that exercise's failure,
 // reported in one line, and the next one runs.  Exit status: 0 when every
@@ -28,6 +31,8 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <iostream>
+#include <sstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -58,18 +63,78 @@ exercise_check::Functions functions(Impl impl) {
   return f;
 }
 
+// Runs `body` in a child process, its stdout passed on as it comes (when
+// `echo`) and kept; kills it after `limit` seconds.
+struct ChildEnd {
+  std::string text;
+  bool timedOut = false;
+  int status = 0;
+  bool started = true;
+};
+ChildEnd inChild(double limit, bool echo, const std::function<int()>& body) {
+  ChildEnd end;
+  std::fflush(stdout);
+  int pipefd[2];
+  if (pipe(pipefd) != 0) return end.started = false, end;
+  const pid_t pid = fork();
+  if (pid < 0) return end.started = false, end;
+  if (pid == 0) {
+    close(pipefd[0]);
+    dup2(pipefd[1], STDOUT_FILENO);
+    const int code = body();
+    std::fflush(stdout);
+    _exit(code);
+  }
+  close(pipefd[1]);
+  const auto start = std::chrono::steady_clock::now();
+  while (true) {
+    pollfd p{pipefd[0], POLLIN, 0};
+    const double left = limit - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (left <= 0) {
+      end.timedOut = true;
+      break;
+    }
+    if (poll(&p, 1, int(std::min(left, 1.0) * 1000) + 1) <= 0) continue;
+    char buf[4096];
+    const ssize_t n = read(pipefd[0], buf, sizeof buf);
+    if (n <= 0) break;  // the child ended (or closed its output)
+    end.text.append(buf, size_t(n));
+    if (echo) std::fwrite(buf, 1, size_t(n), stdout), std::fflush(stdout);
+  }
+  close(pipefd[0]);
+  if (end.timedOut) kill(pid, SIGKILL);
+  waitpid(pid, &end.status, 0);
+  return end;
+}
+
+// How the child ended, as the exercise's verdict line: its own last line
+// naming the exercise, or one line for a hang, a crash or no report.
+std::string verdictOf(const char* name, const ChildEnd& end, double limit) {
+  const std::string head = std::string(name) + ": ";
+  if (!end.started) return head + "FAIL: cannot start its check (pipe or fork)";
+  if (end.timedOut) {
+    char b[160];
+    std::snprintf(b, sizeof b, "%s: FAIL: your code did not finish within %.0f s (an endless loop?)", name, limit);
+    return b;
+  }
+  if (WIFSIGNALED(end.status))
+    return head + "FAIL: your code crashed (signal " + std::to_string(WTERMSIG(end.status)) + ", " +
+           strsignal(WTERMSIG(end.status)) + ")";
+  std::string verdict;
+  for (size_t at = end.text.find(head); at != std::string::npos; at = end.text.find(head, at + 1))
+    if (at == 0 || end.text[at - 1] == '\n') verdict = end.text.substr(at, end.text.find('\n', at) - at);
+  if (!verdict.empty()) return verdict;
+  // No verdict: the code died in a way the process survived long enough
+  // to exit (a sanitizer's report, exit()); say so in one line.
+  return head + "FAIL: your code crashed (exit status " +
+         std::to_string(WIFEXITED(end.status) ? WEXITSTATUS(end.status) : -1) + ", no report)";
+}
+
 // Runs one exercise's check in a child process; its report is passed on
 // as it comes, or one line says how the child ended.  Returns the verdict
 // line ("NAME: PASS", "NAME: FAIL: not done yet ...") for the table.
 std::string runIsolated(const exercise_check::Exercise& ex, Impl impl, const std::string& out, double limit) {
-  std::fflush(stdout);
-  int pipefd[2];
-  if (pipe(pipefd) != 0) return std::string(ex.name) + ": FAIL: cannot start its check (pipe)";
-  const pid_t pid = fork();
-  if (pid < 0) return std::string(ex.name) + ": FAIL: cannot start its check (fork)";
-  if (pid == 0) {
-    close(pipefd[0]);
-    dup2(pipefd[1], STDOUT_FILENO);
+  const ChildEnd end = inChild(limit, true, [&] {
     int code = 1;
     try {
       ts::ContextOptions o;
@@ -79,53 +144,77 @@ std::string runIsolated(const exercise_check::Exercise& ex, Impl impl, const std
     } catch (const std::exception& e) {
       std::printf("%s: FAIL: %s\n", ex.name, e.what());
     }
-    std::fflush(stdout);
-    _exit(code);
-  }
-  close(pipefd[1]);
-  const auto start = std::chrono::steady_clock::now();
-  std::string text;
-  bool timedOut = false;
-  while (true) {
-    pollfd p{pipefd[0], POLLIN, 0};
-    const double left = limit - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (left <= 0) {
-      timedOut = true;
-      break;
-    }
-    if (poll(&p, 1, int(std::min(left, 1.0) * 1000) + 1) <= 0) continue;
-    char buf[4096];
-    const ssize_t n = read(pipefd[0], buf, sizeof buf);
-    if (n <= 0) break;  // the child ended (or closed its output)
-    text.append(buf, size_t(n));
-    std::fwrite(buf, 1, size_t(n), stdout);
-    std::fflush(stdout);
-  }
-  close(pipefd[0]);
-  if (timedOut) kill(pid, SIGKILL);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  std::string verdict;
-  if (timedOut) {
-    char b[160];
-    std::snprintf(b, sizeof b, "%s: FAIL: your code did not finish within %.0f s (an endless loop?)", ex.name, limit);
-    verdict = b;
-  } else if (WIFSIGNALED(status)) {
-    verdict = std::string(ex.name) + ": FAIL: your code crashed (signal " + std::to_string(WTERMSIG(status)) + ", " +
-              strsignal(WTERMSIG(status)) + ")";
-  } else {
-    // The child's own verdict: its last line naming the exercise.
-    const std::string head = std::string(ex.name) + ": ";
-    for (size_t at = text.find(head); at != std::string::npos; at = text.find(head, at + 1))
-      if (at == 0 || text[at - 1] == '\n') verdict = text.substr(at, text.find('\n', at) - at);
-    if (!verdict.empty()) return verdict;
-    // No verdict: the code died in a way the process survived long enough
-    // to exit (a sanitizer's report, exit()); say so in one line.
-    verdict = head + "FAIL: your code crashed (exit status " +
-              std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ", no report)";
-  }
-  std::printf("%s\n", verdict.c_str());
+    return code;
+  });
+  const std::string verdict = verdictOf(ex.name, end, limit);
+  if (end.text.find(verdict) == std::string::npos) std::printf("%s\n", verdict.c_str());
   return verdict;
+}
+
+// --eval FN: the function an exercise asks for, at each row of numbers on
+// stdin, one row of results a line (a demo opened with the student's code
+// draws with them: common/core/student_code.hpp).  In a child process with
+// the time limit, like a check: not done, NaN, a crash or a hang is one
+// "NAME: FAIL: ..." line and exit status 1.
+int evaluate(const std::string& fn, Impl impl, double limit) {
+  struct Fn {
+    const char* name;
+    const char* exercise;
+    size_t arity;
+  };
+  const Fn fns[] = {{"cylinderS", "vi1_back_seam", 1}, {"torusST", "vi2_torus_front", 2}};
+  const Fn* f = nullptr;
+  for (const Fn& c : fns)
+    if (fn == c.name) f = &c;
+  if (!f) {
+    std::fprintf(stderr, "exercise_check: --eval takes cylinderS or torusST, not '%s'\n", fn.c_str());
+    return 2;
+  }
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(std::cin, line);) {
+    std::istringstream in(line);
+    std::vector<double> row;
+    for (double v; in >> v;) row.push_back(v);
+    if (row.empty()) continue;
+    if (row.size() != f->arity) {
+      std::fprintf(stderr, "exercise_check: --eval %s takes %zu numbers a line, not '%s'\n", f->name, f->arity, line.c_str());
+      return 2;
+    }
+    rows.push_back(row);
+  }
+  const exercise_check::Functions code = functions(impl);
+  const ChildEnd end = inChild(limit, false, [&] {
+    try {
+      for (const auto& row : rows) {
+        std::vector<double> v;
+        if (fn == "cylinderS") v = {code.cylinderS(row[0])};
+        else {
+          const glm::dvec2 st = code.torusST(row[0], row[1]);
+          v = {st.x, st.y};
+        }
+        for (double x : v)
+          if (!std::isfinite(x)) {
+            std::printf("%s: FAIL: %s gave %g (not a number) at %g\n", f->exercise, f->name, x, row[0]);
+            return 1;
+          }
+        for (double x : v) std::printf("%.17g ", x);
+        std::printf("\n");
+      }
+    } catch (const exercise::NotDone&) {
+      std::printf("%s: FAIL: not done yet (write it in exercises/%s.cpp)\n", f->exercise, f->exercise);
+      return 1;
+    } catch (const std::exception& e) {
+      std::printf("%s: FAIL: %s\n", f->exercise, e.what());
+      return 1;
+    }
+    std::printf("%s: done\n", f->name);
+    return 0;
+  });
+  std::fwrite(end.text.data(), 1, end.text.size(), stdout);
+  if (end.started && !end.timedOut && WIFEXITED(end.status) && WEXITSTATUS(end.status) == 0) return 0;
+  const std::string verdict = verdictOf(f->exercise, end, limit);
+  if (end.text.find(verdict) == std::string::npos) std::printf("%s\n", verdict.c_str());
+  return 1;
 }
 
 int usage(const std::string& why) {
@@ -140,6 +229,7 @@ int main(int argc, char** argv) {
   Impl impl = Impl::Mine;
   std::string out = "build/exercises";
   double limit = 10.0;
+  std::string eval;
   for (int k = 1; k < argc; ++k) {
     const std::string a = argv[k];
     auto value = [&]() -> std::string { return k + 1 < argc ? argv[++k] : ""; };
@@ -158,6 +248,9 @@ int main(int argc, char** argv) {
     } else if (a == "--out") {
       out = value();
       if (out.empty()) return usage("--out needs a folder");
+    } else if (a == "--eval") {
+      eval = value();
+      if (eval.empty()) return usage("--eval needs a function (cylinderS, torusST)");
     } else if (a == "--time-limit") {
       const std::string v = value();
       char* end = nullptr;
@@ -170,6 +263,7 @@ int main(int argc, char** argv) {
       names.push_back(a);
     }
   }
+  if (!eval.empty()) return evaluate(eval, impl, limit);
   if (names.empty()) return usage("name an exercise or --all");
   int passed = 0;
   std::vector<std::string> verdicts;

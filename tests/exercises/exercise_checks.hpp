@@ -42,6 +42,9 @@ struct Exercise {
   const char* see;     // the demo command that shows the reference
   // Measures and prints each check's line; true when all pass.
   std::function<bool(const Functions&, ts::Renderer&, const std::string& picture)> check;
+  // The demo opened with the student's code, its panel showing these checks
+  // live (common/core/student_code.hpp); null when no demo takes it.
+  const char* mine = nullptr;
 };
 const std::vector<Exercise>& exercises();
 const Exercise* find(const std::string& name);
