@@ -22,7 +22,8 @@
 //                  precision (the checkerboard is analytic)
 //
 // Keys (each is also a flag, see --help):
-//   m  mode: one | regular | jitter-global | jitter-pixel | reference
+//   m  mode: one | regular | jitter-global | jitter-pixel | reference | random
+//      (random: n x n points anywhere in the pixel, one shader pass like jitter-pixel; they cluster)
 //   + / -  samples per side n (1..4)      s / S  seed up / down
 //   v  view: mode (one image large) | compare (the figure) | plot (error vs n)
 //   e  show the image's error against the reference instead of the image
@@ -73,6 +74,7 @@
 #include "jitter_gl.hpp"
 #include "jitter_math.hpp"
 #include "jitter_views.hpp"
+#include "jitter_zone.hpp"
 
 namespace {
 using jitter::Pattern;
@@ -80,7 +82,7 @@ using jitter::Pattern;
 using namespace jitter::views;  // the modes, the results and their drawing
 enum View { kViewMode, kViewCompare, kViewPlot };
 enum Average { kAuto, kAccum, kFbo };
-constexpr Pattern kKinds[3] = {Pattern::Regular, Pattern::JitterGlobal, Pattern::JitterPixel};  // kKindKeys' order
+constexpr Pattern kKinds[4] = {Pattern::Regular, Pattern::JitterGlobal, Pattern::JitterPixel, Pattern::Random};  // kKindKeys
 
 using ts::layout::fmt;
 
@@ -102,8 +104,9 @@ class Jitter final : public ts::Scene {
   std::vector<std::string> claim() const override { return {"aliasing[*"}; }
 
   void addOptions(ts::Options& o) override {
-    o.addEnum("mode", &mode_, {kModeNames[0], kModeNames[1], kModeNames[2], kModeNames[3], kModeNames[4]},
-              "one sample | regular n x n | jittered, one pattern for all pixels | jittered per pixel | reference",
+    o.addEnum("mode", &mode_, {kModeNames[0], kModeNames[1], kModeNames[2], kModeNames[3], kModeNames[4], kModeNames[5]},
+              "one sample | regular n x n | jittered, one pattern for all pixels | jittered per pixel | reference | "
+              "pure random n x n per pixel",
               'm');
     o.addInt("samples", &side_, 1, kMaxSide, "samples per side of a pixel, n (n x n per pixel; the book: 3)", '+', '-');
     o.addInt("seed", &seed_, 0, 1000000, "seed of the jitter (the hash of seed, pixel and sample)", 's', 'S');
@@ -146,7 +149,7 @@ class Jitter final : public ts::Scene {
   using Found = jitter::views::Found;
   void prepare(ts::Renderer& r);
   void ensure(ts::Renderer& r, int kind, int side);
-  Result& result(int kind, int side) { return found_.at(kind, side); }
+  Result& result(int kind, int side) { return kind == 3 ? found_.random[size_t(side - 1)] : found_.at(kind, side); }
   // The drawing (jitter_views.hpp) for the current flags.
   Views views() const { return {mode_, side_, seed_, showError_}; }
 
@@ -198,6 +201,7 @@ void Jitter::prepare(ts::Renderer& r) {
   }
   for (auto& row : found_.results)
     for (Result& res : row) res = Result();
+  for (Result& res : found_.random) res = Result();
   preparedSeed_ = seed_;
   preparedAverage_ = average_;
 }
@@ -207,8 +211,9 @@ void Jitter::ensure(ts::Renderer& r, int kind, int side) {
   if (res.valid) return;
   const jitter::Camera cam;
   const uint32_t seed = uint32_t(seed_);
-  if (kKinds[kind] == Pattern::JitterPixel) {
-    res.image = r.renderOffscreen(jitter::pixelJitterPass(cam, side, seed));
+  const bool shader = kKinds[kind] == Pattern::JitterPixel || kKinds[kind] == Pattern::Random;
+  if (shader) {  // one pass: jittered (or pure random) points per pixel, hashed in the fragment shader
+    res.image = r.renderOffscreen(jitter::pixelJitterPass(cam, side, seed, -1, kKinds[kind] == Pattern::Random));
   } else {
     std::vector<ts::Frame> passes;
     // Each offset o becomes the projection's shift: glLoadMatrixf(pixelShift(o) P) in Renderer::draw.
@@ -221,7 +226,7 @@ void Jitter::ensure(ts::Renderer& r, int kind, int side) {
   res.texture = imageTexture(res.image, kKindKeys[kind],
                              {{"samples", n},
                               {"seed", kKinds[kind] == Pattern::Regular ? "-" : std::to_string(seed_)},
-                              {"averaging", kKinds[kind] == Pattern::JitterPixel ? "shader"
+                              {"averaging", shader ? "shader"
                                             : accum_                             ? "glAccum"
                                                                                  : "fbo"}});
   res.errorTexture = errorTexture(res);
@@ -233,12 +238,12 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
   // The images this state shows and prints: the four modes at n, and in the
   // plot view every pattern at n = 1..4.
   // (A window shows the progress; a newer key stops the passes here.)
-  const double passes = view_ == kViewPlot ? 4 + 3 * kMaxSide : 4;
+  const double passes = view_ == kViewPlot ? 5 + 3 * kMaxSide : 5;
   ensure(r, 0, 1);
-  for (int kind = 0; kind < 3; ++kind) ts::measureProgress((1 + kind) / passes), ensure(r, kind, side_);
+  for (int kind = 0; kind < 4; ++kind) ts::measureProgress((1 + kind) / passes), ensure(r, kind, side_);
   if (view_ == kViewPlot)
     for (int kind = 0; kind < 3; ++kind)
-      for (int side = 1; side <= kMaxSide; ++side) ts::measureProgress((4 + kind * kMaxSide + side - 1) / passes), ensure(r, kind, side);
+      for (int side = 1; side <= kMaxSide; ++side) ts::measureProgress((5 + kind * kMaxSide + side - 1) / passes), ensure(r, kind, side);
   ts::Measurements out;
   const std::string n = std::to_string(side_) + "x" + std::to_string(side_);
   struct Row {
@@ -248,7 +253,8 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
   } rows[] = {{"one", &result(0, 1), "1 sample at the pixel centre"},
               {"regular", &result(0, side_), n + " at the subpixel centres"},
               {"jitter_global", &result(1, side_), n + " jittered, one pattern for every pixel"},
-              {"jitter_pixel", &result(2, side_), n + " jittered independently per pixel"}};
+              {"jitter_pixel", &result(2, side_), n + " jittered independently per pixel"},
+              {"random", &result(3, side_), n + " pure random points per pixel (GL, as jitter_pixel)"}};
   for (const Row& row : rows) {
     std::string k = std::string("[") + row.key + "]";
     out.push_back({"rms" + k, row.res->stats.rms, "RMS error vs the 256-sample reference (1 = full scale); " + row.what});
@@ -262,6 +268,7 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
                    jitter::cpuRms(p, side_, uint32_t(seed_), reference_),
                    p == Pattern::Random ? "RMS error, n x n points anywhere in the pixel (pure random: they cluster), CPU"
                                         : "RMS error, n x n jittered per pixel, the same CPU model"});
+  jitter::zone::measure(out, side_, uint32_t(seed_));  // issue 25, item 10b: the zone plate's aliasing onset
   if (view_ == kViewPlot)
     for (int kind = 0; kind < 3; ++kind)
       for (int side = 1; side <= kMaxSide; ++side) {

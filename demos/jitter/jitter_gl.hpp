@@ -120,6 +120,31 @@ void main() {
 })";
 }
 
+// Pure random sampling (issue 25): the same one pass, but the n x n points
+// fall anywhere in the pixel (no strata), keyed by the seed xor
+// jitter::kRandomSalt — jitter::randomIn, bit for bit.  They can cluster.
+inline std::string pixelRandomFS() {
+  return glslCommon() + R"(
+uniform vec4 params;  // (n, seed, sample to show as its position or -1, 0)
+void main() {
+  vec2 pix = floor(gl_FragCoord.xy);
+  int n = int(params.x);
+  uint key = hash32((uint(params.y) ^ 0x27d4eb2fu) ^ hash32(uint(pix.x) ^ hash32(uint(pix.y) + 0x632be5abu)));
+  int show = int(params.z);
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < n * n; ++k) {
+    uint kk = 2u * uint(k);
+    vec2 s = vec2(unitFloat(hash32(key + kk)), unitFloat(hash32(key + kk + 1u)));
+    if (k == show) {
+      gl_FragColor = vec4(s, 0.0, 1.0);
+      return;
+    }
+    sum += colourAt(pix + s);
+  }
+  gl_FragColor = vec4(sum / (255.0 * float(n * n)), 1.0);
+})";
+}
+
 // The uniforms of glslCommon for a homography.
 inline std::vector<ts::Uniform> commonUniforms(const Camera& c, const glm::dmat3& h) {
   auto row = [&](int r) { return glm::vec4(float(h[0][r]), float(h[1][r]), float(h[2][r]), 0.0f); };
@@ -174,18 +199,20 @@ inline ts::Frame groundPass(const Camera& c, glm::dvec2 samplePos) {
 
 // The single pass of jitter-pixel.  showSample >= 0 writes that sample's
 // position in its pixel into (R, G) instead of a colour (for the tests).
-inline ts::Frame pixelJitterPass(const Camera& c, int n, uint32_t seed, int showSample = -1) {
+// random: pure random points per pixel instead (pixelRandomFS).
+inline ts::Frame pixelJitterPass(const Camera& c, int n, uint32_t seed, int showSample = -1, bool random = false) {
   ts::Frame f;
   f.width = c.width;
   f.height = c.height;
   f.clearColor = skyColour();
-  f.programs.push_back({"jitter_pixel", {kSourceFile, pixelJitterVS(), pixelJitterFS()}});
+  const char* program = random ? "jitter_random" : "jitter_pixel";
+  f.programs.push_back({program, {kSourceFile, pixelJitterVS(), random ? pixelRandomFS() : pixelJitterFS()}});
   ts::Panel p;
-  p.id = "pixel_jitter";
+  p.id = random ? "pixel_random" : "pixel_jitter";
   p.viewport = {0, 0, c.width, c.height};
   ts::Batch b;
   b.role = "full_viewport";
-  b.program = "jitter_pixel";
+  b.program = program;
   b.uniforms = commonUniforms(c, pixelToPlane(c));
   b.uniforms.push_back({"params", glm::vec4(float(n), float(seed), float(showSample), 0.0f)});
   for (auto q : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, -1), glm::vec2(1, 1),

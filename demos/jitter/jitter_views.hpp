@@ -23,12 +23,14 @@ namespace jitter::views {
 using jitter::Pattern;
 using ts::layout::fmt;
 
-enum Mode { kOne, kRegular, kJitterGlobal, kJitterPixel, kReference, kModes };
-const char* const kModeNames[] = {"one", "regular", "jitter-global", "jitter-pixel", "reference"};
+// random: n x n points anywhere in the pixel, drawn anew per pixel (issue 25: "pure random sampling clusters").
+enum Mode { kOne, kRegular, kJitterGlobal, kJitterPixel, kReference, kRandom, kModes };
+const char* const kModeNames[] = {"one", "regular", "jitter-global", "jitter-pixel", "reference", "random"};
 constexpr int kMaxSide = 4;
 
 // The three n x n patterns the sweep covers (jitter.cpp's kKinds), in this order.
-const char* const kKindKeys[3] = {"regular", "jitter_global", "jitter_pixel"};
+// (and a fourth, pure random, measured at the current n only)
+const char* const kKindKeys[4] = {"regular", "jitter_global", "jitter_pixel", "random"};
 const char* const kKindTitles[3] = {"regular", "jittered, one pattern", "jittered per pixel"};
 
 using ts::layout::kWhite, ts::layout::kAmber;
@@ -49,6 +51,7 @@ struct Result {
 // build() draws.
 struct Found {
   std::array<std::array<Result, kMaxSide>, 3> results;
+  std::array<Result, kMaxSide> random;  // pure random per pixel, n = 1..4 (made when shown or measured)
   Result reference;
   const Result& at(int kind, int side) const { return results[size_t(kind)][size_t(side - 1)]; }
   Result& at(int kind, int side) { return results[size_t(kind)][size_t(side - 1)]; }
@@ -111,6 +114,7 @@ inline const Result* Views::current(const Found& fd) const {
     case kRegular: res = &fd.at(0, side_); break;
     case kJitterGlobal: res = &fd.at(1, side_); break;
     case kJitterPixel: res = &fd.at(2, side_); break;
+    case kRandom: res = &fd.random[size_t(side_ - 1)]; break;
     default: break;
   }
   return res->valid ? res : nullptr;
@@ -133,7 +137,7 @@ inline void Views::addImage(ts::Frame& f, const std::string& id, ts::Rect rect, 
 inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels,
                               float labelW, int scale) const {
   const int n = mode == kOne ? 1 : mode == kReference ? jitter::kReferenceSide : side;
-  const int cells = mode == kJitterPixel ? 2 : 1;
+  const int cells = mode == kJitterPixel || mode == kRandom ? 2 : 1;
   const float cell = float(box.w) / float(cells);
   std::vector<glm::vec2> grid, border, dots;
   for (int cy = 0; cy < cells; ++cy)
@@ -141,7 +145,7 @@ inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int
       float x0 = float(box.x) + cx * cell, y0 = float(box.y) + cy * cell;
       border.insert(border.end(), {{x0, y0}, {x0 + cell, y0}, {x0 + cell, y0}, {x0 + cell, y0 + cell},
                                    {x0 + cell, y0 + cell}, {x0, y0 + cell}, {x0, y0 + cell}, {x0, y0}});
-      if (mode != kOne && n <= 8)
+      if (mode != kOne && mode != kRandom && n <= 8)  // random has no strata
         for (int k = 1; k < n; ++k) {
           float t = float(k) / float(n) * cell;
           grid.insert(grid.end(), {{x0 + t, y0}, {x0 + t, y0 + cell}, {x0, y0 + t}, {x0 + cell, y0 + t}});
@@ -149,7 +153,7 @@ inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int
       // The pixel shown: for jitter-pixel, (100 + cx, 100 + 1 - cy) of the image (GL rows from the bottom).
       const int pi = 100 + cx, pj = 100 + (cells - 1 - cy);
       Pattern p = mode == kJitterGlobal ? Pattern::JitterGlobal : mode == kJitterPixel ? Pattern::JitterPixel
-                  : mode == kReference ? Pattern::Reference : Pattern::Regular;
+                  : mode == kReference ? Pattern::Reference : mode == kRandom ? Pattern::Random : Pattern::Regular;
       for (int k = 0; k < n * n; ++k) {
         glm::dvec2 s = jitter::samplePos(p, n, uint32_t(seed_), pi, pj, k);
         dots.push_back({x0 + float(s.x) * cell, y0 + float(1.0 - s.y) * cell});
@@ -164,11 +168,12 @@ inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int
   if (labels) {
     std::string nn = std::to_string(n) + "x" + std::to_string(n);
     std::string l1 = mode == kOne ? "1 sample" : mode == kReference ? "16x16 stratified" : mode == kRegular ? nn + " regular"
-                                                                                                     : nn + " jittered";
+                     : mode == kRandom ? nn + " random" : nn + " jittered";
     std::string l2 = mode == kOne ? "the pixel centre"
                      : mode == kRegular ? "subpixel centres"
                      : mode == kJitterGlobal ? "same in every pixel"
                      : mode == kJitterPixel ? "new in every pixel"
+                     : mode == kRandom ? "anywhere, new per pixel"
                                             : "jittered (the reference)";
     // Under the box, in a band as wide as the box and its margins, two lines at `scale`.
     const float half = (labelW > 0 ? labelW : std::max(float(box.w), 120.0f * float(scale))) / 2,
@@ -187,6 +192,7 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
                      : mode_ == kRegular ? n + " regular samples per pixel"
                      : mode_ == kJitterGlobal ? n + " jittered, one pattern for all pixels"
                      : mode_ == kJitterPixel ? n + " jittered independently per pixel"
+                     : mode_ == kRandom ? n + " pure random points per pixel (they cluster)"
                                              : "reference: 16x16 stratified samples per pixel";
   // The image as large as the window allows (whole zooms are pixel-exact;
   // a zoom is rounded down to a whole one when that loses little), the
