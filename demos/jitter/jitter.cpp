@@ -268,7 +268,7 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
                    jitter::cpuRms(p, side_, uint32_t(seed_), reference_),
                    p == Pattern::Random ? "RMS error, n x n points anywhere in the pixel (pure random: they cluster), CPU"
                                         : "RMS error, n x n jittered per pixel, the same CPU model"});
-  jitter::zone::measure(out, side_, uint32_t(seed_));  // issue 25, item 10b: the zone plate's aliasing onset
+  jitter::zoneMeasure(r, out, side_, uint32_t(seed_));  // issue 25, item 10b: the zone plate's aliasing onset
   if (view_ == kViewPlot)
     for (int kind = 0; kind < 3; ++kind)
       for (int side = 1; side <= kMaxSide; ++side) {

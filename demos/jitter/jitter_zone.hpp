@@ -48,6 +48,9 @@ constexpr int kBandW = 64, kBandH = 16;
 // amplitude = 1) are skipped: near whole cycles per pixel the box filter
 // cancels the signal and both render and truth vanish (0 / 0).
 constexpr double kTruthFloor = 0.03;
+// The GL render of the plate (jitter_gl.hpp, zonePass): kGlBands bands of
+// kGlBandRows rows, kGlWidth columns; band b at (b + 1) kStep cycles/pixel.
+constexpr int kGlWidth = 64, kGlBandRows = 2, kGlBands = 150;
 
 // The exact box filter of cos(2 pi f x + phi) over [i, i + 1).
 inline double truth(double f, double phi, int i) {

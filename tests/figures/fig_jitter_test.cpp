@@ -537,9 +537,31 @@ TEST(VI7Claims, ZonePlateAliasingSetsInAtTheSampleGridsNyquist) {
     EXPECT_GE(got, jitter::zone::expectedOnset(n) - 1e-9);
     EXPECT_LT(got, jitter::zone::expectedOnset(n) + jitter::zone::kStep + 1e-9);
   }
-  EXPECT_GT(three, 2.5 * one);  // supersampling delays it about n times
-  // The measured curve is the closed form at every frequency of the sweep (regular samples).
   const jitter::zone::Sweep s = jitter::zone::sweep(Pattern::Regular, 3, 1);
+  EXPECT_GT(three, 2.5 * one);  // supersampling delays it about n times
+  // The same onsets read back from GL renders of the plate (one shader pass at
+  // the same sample positions, 8-bit pixels): within one step of the sweep.
+  for (const char* k : {"1x1]", "3x3]", "jitter_pixel_3x3]"}) {
+    const double gl = value(m, std::string("alias_onset_gl[") + k), cpu = value(m, std::string("alias_onset_cpp[") + k);
+    std::printf("[ zone     ] %s GL %.2f, CPU model %.2f\n", k, gl, cpu);
+    EXPECT_NEAR(gl, cpu, jitter::zone::kStep + 1e-9) << k;
+  }
+  EXPECT_NEAR(value(m, "alias_onset_gl[1x1]"), 0.5, 0.1);
+  EXPECT_NEAR(value(m, "alias_onset_gl[3x3]"), 1.5, 0.2);
+  // Its curve is the CPU model's to the 8-bit pixels' rounding: where the box-filtered
+  // signal is at least 0.1 (RMS), rho differs by under 0.05.
+  const jitter::zone::Sweep g = jitter::zoneSweepGl(renderer(), 3, 1, false);
+  size_t compared = 0;
+  for (size_t q = 0, r = 0; q < g.f.size(); ++q) {
+    while (r < s.f.size() && s.f[r] < g.f[q] - 1e-9) ++r;
+    if (r == s.f.size() || std::fabs(s.f[r] - g.f[q]) > 1e-9) continue;
+    const double x = jitter::zone::kPi * g.f[q] / 3, t = std::fabs(std::sin(jitter::zone::kPi * g.f[q]) / (jitter::zone::kPi * g.f[q])) / std::sqrt(2.0);
+    if (t < 0.1) continue;
+    EXPECT_NEAR(g.rho[q], s.rho[r], 0.05) << "f " << g.f[q] << " (x " << x << ")";
+    ++compared;
+  }
+  EXPECT_GT(compared, 40u);
+  // The measured curve is the closed form at every frequency of the sweep (regular samples).
   ASSERT_GT(s.f.size(), 100u);
   for (size_t q = 0; q < s.f.size(); ++q) {
     const double x = jitter::zone::kPi * s.f[q] / 3;
