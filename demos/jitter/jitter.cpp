@@ -25,7 +25,8 @@
 //   m  mode: one | regular | jitter-global | jitter-pixel | reference | random
 //      (random: n x n points anywhere in the pixel, one shader pass like jitter-pixel; they cluster)
 //   + / -  samples per side n (1..4)      s / S  seed up / down
-//   v  view: mode (one image large) | compare (the figure) | plot (error vs n)
+//   v  view: mode (one image large) | compare (the figure) | plot (error vs n) | zone (issue 25, 10b: a
+//      zone plate rendered with 1, n x n regular and n x n jittered samples; where its alias sets in)
 //   e  show the image's error against the reference instead of the image
 // Flag only: --average auto|accum|fbo (how the passes are averaged).
 //
@@ -80,7 +81,7 @@ namespace {
 using jitter::Pattern;
 
 using namespace jitter::views;  // the modes, the results and their drawing
-enum View { kViewMode, kViewCompare, kViewPlot };
+enum View { kViewMode, kViewCompare, kViewPlot, kViewZone };
 enum Average { kAuto, kAccum, kFbo };
 constexpr Pattern kKinds[4] = {Pattern::Regular, Pattern::JitterGlobal, Pattern::JitterPixel, Pattern::Random};  // kKindKeys
 
@@ -110,36 +111,16 @@ class Jitter final : public ts::Scene {
               'm');
     o.addInt("samples", &side_, 1, kMaxSide, "samples per side of a pixel, n (n x n per pixel; the book: 3)", '+', '-');
     o.addInt("seed", &seed_, 0, 1000000, "seed of the jitter (the hash of seed, pixel and sample)", 's', 'S');
-    o.addEnum("view", &view_, {"mode", "compare", "plot"},
-              "mode: the current mode large; compare: every mode and the sample patterns; plot: error vs n", 'v');
+    o.addEnum("view", &view_, {"mode", "compare", "plot", "zone"},
+              "mode: the current mode large; compare: every mode and the sample patterns; plot: error vs n; "
+              "zone: where aliasing sets in on a zone plate", 'v');
     o.addBool("error", &showError_, "show the error against the reference (orange brighter, blue darker, x3)", 'e');
     o.addEnum("average", &average_, {"auto", "accum", "fbo"},
               "how the passes are averaged: glAccum when the context has an accumulation buffer (auto), or FBO "
               "averaging");
   }
 
-  std::vector<ts::FigureSpec> figures() const override {
-    return {
-        {"vi7_jitter", "Figure VI.7",
-         "A checkerboard receding to the horizon, 288x192 pixels each: one sample per pixel; 3x3 samples at the "
-         "subpixel centres; 3x3 jittered with one pattern for every pixel (the accumulation buffer); 3x3 jittered "
-         "independently per pixel; below, each one's error against a 256-sample reference (x3). Regular samples "
-         "and one jitter pattern for all pixels keep interference patterns; jitter chosen per pixel turns them into "
-         "grain. Bottom: the reference, and the sample patterns of Figure VI.7: regular; jittered, one pattern for "
-         "every pixel; jittered anew in each pixel (2x2 pixels shown).",
-         {"--view", "compare", "--samples", "3", "--seed", "1"}, 1320, 760,
-         "Aliasing (the error the neighbours' errors predict) at 3x3 samples: regular {aliasing[regular]}, one "
-         "jitter pattern {aliasing[jitter_global]}, jittered per pixel {aliasing[jitter_pixel]}."},
-        {"vi7_error_vs_samples", "Figure VI.7 (error vs samples)",
-         "RMS error against the reference, and its aliasing (the part of each pixel's error its neighbours' errors "
-         "predict), for 1, 4, 9 and 16 samples per pixel: "
-         "the error falls as samples rise; jitter per pixel leaves almost no aliasing; one jitter pattern for all "
-         "pixels keeps much of it (with seed 1 about as much as regular sampling; how much depends on the pattern).",
-         {"--view", "plot", "--seed", "1"}, 1024, 600,
-         "Jittered per pixel, the RMS error falls from {rms[jitter_pixel_1x1]} (1 sample) to {rms[jitter_pixel_4x4]} "
-         "(16) with aliasing {aliasing[jitter_pixel_4x4]}; regular 4x4 keeps {aliasing[regular_4x4]}."},
-    };
-  }
+  std::vector<ts::FigureSpec> figures() const override { return figureSpecs(); }  // jitter_views.hpp
 
   ts::Measurements measure(ts::Renderer& r) override;
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
@@ -268,7 +249,7 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
                    jitter::cpuRms(p, side_, uint32_t(seed_), reference_),
                    p == Pattern::Random ? "RMS error, n x n points anywhere in the pixel (pure random: they cluster), CPU"
                                         : "RMS error, n x n jittered per pixel, the same CPU model"});
-  jitter::zoneMeasure(r, out, side_, uint32_t(seed_));  // issue 25, item 10b: the zone plate's aliasing onset
+  jitter::zoneMeasure(r, out, side_, uint32_t(seed_), &found_.zone);  // issue 25, item 10b: the zone plate's aliasing onset
   if (view_ == kViewPlot)
     for (int kind = 0; kind < 3; ++kind)
       for (int side = 1; side <= kMaxSide; ++side) {
@@ -290,6 +271,7 @@ ts::Frame Jitter::build(int width, int height, const ts::Measurements& measured)
   canvas.projection = glm::ortho(0.0f, float(width), float(height), 0.0f, -1.0f, 1.0f);
   if (view_ == kViewCompare) views().buildCompare(f, canvas, fd);
   else if (view_ == kViewPlot) views().buildPlot(f, fd);
+  else if (view_ == kViewZone) views().buildZone(f, canvas, fd);
   else views().buildMode(f, canvas, fd);
   f.panels.push_back(canvas);
   return f;

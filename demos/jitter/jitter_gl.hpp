@@ -280,10 +280,12 @@ inline ts::Frame zonePass(int n, uint32_t seed, bool jittered, double phase) {
 }
 // The onset read from the GL renders (phases 0 and pi/2): the lowest band
 // whose alias RMS reaches zone::kThreshold of its box-filtered truth's.
-inline zone::Sweep zoneSweepGl(ts::Renderer& r, int n, uint32_t seed, bool jittered) {
+// `first` (if given) gets the render at phase 0.
+inline zone::Sweep zoneSweepGl(ts::Renderer& r, int n, uint32_t seed, bool jittered, ts::Image* first = nullptr) {
   std::vector<double> ee(size_t(zone::kGlBands), 0.0), tt(ee);
   for (double phi : {0.0, zone::kPi / 2}) {
     const ts::Image img = r.renderOffscreen(zonePass(n, seed, jittered, phi));
+    if (first && phi == 0.0) *first = img;
     for (int j = 0; j < img.height; ++j) {
       const int bandIndex = j / zone::kGlBandRows;
       const double f = (bandIndex + 1) * zone::kStep;
@@ -304,15 +306,21 @@ inline zone::Sweep zoneSweepGl(ts::Renderer& r, int n, uint32_t seed, bool jitte
   return s;
 }
 // jitter.cpp's zone-plate numbers: the CPU model's (zone::measure) and the GL renders'.
-inline void zoneMeasure(ts::Renderer& r, ts::Measurements& out, int n, uint32_t seed) {
+// `keep` gets the renders and sweeps for the zone view.
+inline void zoneMeasure(ts::Renderer& r, ts::Measurements& out, int n, uint32_t seed, zone::Plate* keep) {
   zone::measure(out, n, seed);
   const std::string nn = std::to_string(n) + "x" + std::to_string(n);
-  for (int side : n == 1 ? std::vector<int>{1} : std::vector<int>{1, n})
-    out.push_back({"alias_onset_gl[" + std::to_string(side) + "x" + std::to_string(side) + "]",
-                   zoneSweepGl(r, side, seed, false).onset,
+  zone::Plate plate;
+  plate.n = n;
+  for (int k = 0; k < 3; ++k)
+    plate.sweeps[size_t(k)] = zoneSweepGl(r, k == 0 ? 1 : n, seed, k == 2, &plate.images[size_t(k)]);
+  for (int k : n == 1 ? std::vector<int>{0} : std::vector<int>{0, 1})
+    out.push_back({"alias_onset_gl[" + std::string(k == 0 ? "1x1" : nn) + "]", plate.sweeps[size_t(k)].onset,
                    "the same onset read from a GL render of the zone plate (8-bit pixels), regular samples"});
-  out.push_back({"alias_onset_gl[jitter_pixel_" + nn + "]", zoneSweepGl(r, n, seed, true).onset,
+  out.push_back({"alias_onset_gl[jitter_pixel_" + nn + "]", plate.sweeps[2].onset,
                  "the same, GL, jittered per pixel (noise)"});
+  plate.valid = true;
+  *keep = std::move(plate);
 }
 
 // The n*n sample positions of a multi-pass pattern (Regular, JitterGlobal).

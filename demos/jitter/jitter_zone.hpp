@@ -29,11 +29,13 @@
 // reported, and at f = 2.5 (above the 3 x 3 grid's Nyquist) the share of the
 // error that neighbouring errors predict (jitter::analyse) says which it is.
 #pragma once
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "common/core/image.hpp"
 #include "common/core/scene.hpp"
 #include "jitter_math.hpp"
 
@@ -105,6 +107,15 @@ inline Sweep sweep(Pattern p, int n, uint32_t seed) {
   }
   return s;
 }
+
+// What the zone view draws (measure() keeps it): the GL renders at phase 0
+// and their sweeps, for 1 sample, n x n regular and n x n jittered per pixel.
+struct Plate {
+  std::array<ts::Image, 3> images;
+  std::array<Sweep, 3> sweeps;
+  int n = 0;
+  bool valid = false;
+};
 
 // The closed form for regular n x n samples: f with x / sin x = 1 + kThreshold, x = pi f / n.
 inline double expectedOnset(int n) {

@@ -730,6 +730,64 @@ TEST(VI7Figure, CompareViewShowsTheMeasuredImagesPixelExact) {
   }
 }
 
+// Claim (the figure jitter_zone_plate): its three pictures are the GL renders
+// of the zone plate the onsets were read from, shown 2x pixel for pixel; the
+// line across each sits at its measured onset's band (frequency rising
+// upwards), and the plot marks the same onsets.  Negative control: the
+// regular and jittered renders differ.
+TEST(VI7Figure, ZonePlateShowsTheMeasuredRendersAndOnsets) {
+  Demo demo = jitterDemo({"--view", "zone", "--samples", "3", "--seed", "1"});
+  ts::Frame f;
+  demo.measure();
+  ts::Image img = demo.render(1100, 700, &f);
+  const ts::Measurements m = demo.measure();
+  const int zoom = 2;
+  for (int k = 0; k < 3; ++k) {
+    SCOPED_TRACE("zone_" + std::to_string(k));
+    const ts::Panel& p = panelOf(f, "zone_" + std::to_string(k));
+    const ts::TextureDesc& t = f.textures.at(size_t(p.batches.at(0).texture));
+    ASSERT_TRUE(t.image);
+    ASSERT_EQ(p.viewport.w, t.image->width * zoom);
+    ASSERT_EQ(p.viewport.h, t.image->height * zoom);
+    ASSERT_EQ(t.image->height, jitter::zone::kGlBands * jitter::zone::kGlBandRows);
+    // Every pixel but the rows under the onset line (2 px wide) and its neighbours.
+    const char* key[3] = {"alias_onset_gl[1x1]", "alias_onset_gl[3x3]", "alias_onset_gl[jitter_pixel_3x3]"};
+    const double lineY = p.viewport.h - (value(m, key[k]) / jitter::zone::kStep - 1) * jitter::zone::kGlBandRows * zoom;
+    long differ = 0, compared = 0;
+    for (int y = 0; y < p.viewport.h; ++y) {
+      if (std::abs(y + 0.5 - lineY) < 2.5) continue;
+      for (int x = 0; x < p.viewport.w; ++x, ++compared)
+        differ += img.at(p.viewport.x + x, p.viewport.y + y) != t.image->at(x / zoom, t.image->height - 1 - y / zoom);
+    }
+    EXPECT_EQ(differ, 0);
+    EXPECT_GE(compared, long(p.viewport.w) * (p.viewport.h - 5));
+  }
+  const ts::TextureDesc& reg = f.textures.at(size_t(panelOf(f, "zone_1").batches[0].texture));
+  const ts::TextureDesc& jit = f.textures.at(size_t(panelOf(f, "zone_2").batches[0].texture));
+  EXPECT_NE(reg.image->pixels, jit.image->pixels);
+  // The onset lines: y (canvas, down) = bottom of the picture - (onset / step - 1) * rows per band * zoom.
+  const ts::Panel& canvas = panelOf(f, "canvas");
+  std::vector<const ts::Batch*> lines;
+  for (const auto& b : canvas.batches)
+    if (b.role == "onset") lines.push_back(&b);
+  ASSERT_EQ(lines.size(), 3u);
+  const char* keys[3] = {"alias_onset_gl[1x1]", "alias_onset_gl[3x3]", "alias_onset_gl[jitter_pixel_3x3]"};
+  for (int k = 0; k < 3; ++k) {
+    const ts::Panel& p = panelOf(f, "zone_" + std::to_string(k));
+    const double onset = value(m, keys[k]);
+    const double want = p.viewport.y + p.viewport.h - (onset / jitter::zone::kStep - 1) * jitter::zone::kGlBandRows * zoom;
+    EXPECT_NEAR(lines[size_t(k)]->vertices.at(0).pos.y, want, 0.5) << keys[k];
+  }
+  // The plot's onset markers are labelled with the measured onsets.
+  for (const char* k : keys) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%.2f", value(m, k));
+    bool found = false;
+    for (const auto& l : f.labels) found = found || l.text == buf;
+    EXPECT_TRUE(found) << buf;
+  }
+}
+
 // Claim: the pictures are deterministic and the seed moves only the jitter:
 // the same flags give the same images; another seed gives other jittered
 // images (global and per pixel) and the same regular one.
