@@ -493,21 +493,24 @@ inline void Views::buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   const std::string nn = std::to_string(z.n) + "x" + std::to_string(z.n);
   const std::string titles[3] = {"1 sample", nn + " regular", nn + " jittered"};
   const glm::vec4 colours[3] = {kSeriesColour[0], kSeriesColour[1], kSeriesColour[2]};
-  // The images: as large as the height allows in whole zooms (at most 2x).
+  // The images: as large as the height allows in whole zooms (at most 2x),
+  // or scaled down (filtered) in a window too low for 1:1.
   const int imgH = z.images[0].height, imgW = z.images[0].width;
-  const int zoom = std::max(1, std::min(2, (f.height - 5 * line) / std::max(1, imgH)));
-  const int w = imgW * zoom, h = imgH * zoom, top = 3 * line, gap = 28, left = 56;
+  const double room = double(f.height - 5 * line) / std::max(1, imgH);
+  const double zoom = room >= 1 ? std::min(2.0, std::floor(room)) : std::max(0.1, room);
+  const int w = std::max(1, int(imgW * zoom)), h = std::max(1, int(imgH * zoom)), top = 3 * line, gap = 28, left = 56;
   std::vector<glm::vec2> onsetLines[3];
   for (int k = 0; k < 3; ++k) {
     const int x = left + k * (w + gap);
     ts::TextureDesc t = renderedImageTexture(z.images[size_t(k)], "jitter_render", "zone_plate",
                                              "jitter", {{"samples", titles[k]}});
+    if (zoom < 1) t.minFilter = GL_LINEAR;
     f.panels.push_back(ts::layout::texturePanel("zone_" + std::to_string(k), {x, top, w, h}, f.addTexture(t)));
     L::caption(f, {float(x - gap / 2), float(top - line - 2), float(x + w + gap / 2), float(top - 2)}, titles[k],
                colours[k], 1);
     const double onset = z.sweeps[size_t(k)].onset;
     if (onset > 0) {  // the bottom edge of the onset's band
-      const float y = float(top + h) - float((onset / zone::kStep - 1) * zone::kGlBandRows * zoom);
+      const float y = float(top + h) - float((onset / zone::kStep - 1) * zone::kGlBandRows * (double(h) / imgH));
       onsetLines[k] = {{float(x - 6), y}, {float(x + w + 6), y}};
       L::caption(f, {float(x - gap / 2), float(top + h + 4), float(x + w + gap / 2), float(top + h + 4 + line)},
                  "onset " + fmt("%.2f", onset), colours[k], 1);
@@ -515,7 +518,7 @@ inline void Views::buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   }
   // The frequency scale left of the images.
   for (double fr : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}) {
-    const float y = float(top + h) - float((fr / zone::kStep) * zone::kGlBandRows * zoom);
+    const float y = float(top + h) - float((fr / zone::kStep) * zone::kGlBandRows * (double(h) / imgH));
     L::caption(f, {4, y - line / 2.0f, float(left - 6), y + line / 2.0f}, fmt("%.1f", fr), kGrey, 1, ts::Align::Right);
   }
   for (int k = 0; k < 3; ++k)

@@ -1,8 +1,11 @@
 // demos/jitter/jitter_zone.hpp — where aliasing sets in on a zone plate
 // (issue 25, item 10b): "about 0.5 cycles/pixel with 1 sample and about 1.5
 // with 3 x 3 regular samples" (Buss: supersampling "delays aliasing until the
-// texture resolution is about 3x the screen's").  No OpenGL: the CPU model of
-// the demo's sample patterns (jitter::samplePos), read sample by sample.
+// texture resolution is about 3x the screen's").  No OpenGL here: the CPU
+// model of the demo's sample patterns (jitter::samplePos), read sample by
+// sample; jitter_gl.hpp (zonePass, zoneSweepGl) renders the same plate with GL
+// and reads the same measure off its 8-bit pixels (the figure
+// jitter_zone_plate shows those renders).
 //
 // The zone plate, band by band: a sinusoid across the pixel columns,
 //     s(x) = cos(2 pi f x + phi),   f in cycles per pixel,
