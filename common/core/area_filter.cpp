@@ -3,9 +3,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <utility>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace ts {
+namespace detail {
+void* allocateLarge(std::size_t bytes) {
+  const std::size_t huge = std::size_t(1) << 21, align = bytes >= huge ? huge : 64;
+  void* p = std::aligned_alloc(align, std::max<std::size_t>(align, (bytes + align - 1) / align * align));
+  if (!p) throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  if (align == huge) madvise(p, (bytes + align - 1) / align * align, MADV_HUGEPAGE);  // a hint: ignored if unavailable
+#endif
+  return p;
+}
+void freeLarge(void* p) { std::free(p); }
+}  // namespace detail
+
 double signedArea(const Polygon2& poly) {
   double twice = 0;
   for (size_t k = 0; k < poly.size(); ++k) {
@@ -87,26 +105,46 @@ glm::dvec4 exactAreaAverage(const Image& texture, const Polygon2& preimage) {
 }
 
 AreaIntegral::AreaIntegral(const Image& texture) : w_(texture.width), h_(texture.height) {
-  texel_.resize(size_t(w_) * size_t(h_));
-  prefix_.assign(size_t(w_ + 1) * size_t(h_), glm::dvec4(0.0));
+  std::vector<glm::dvec4> texels(size_t(w_) * size_t(h_));
   for (int j = 0; j < h_; ++j)
     for (int i = 0; i < w_; ++i) {
       const Rgba c = texture.at(i, j);
-      const size_t t = size_t(j) * size_t(w_) + size_t(i), p = size_t(j) * size_t(w_ + 1) + size_t(i);
-      texel_[t] = glm::dvec4(c.r, c.g, c.b, c.a);
-      prefix_[p + 1] = prefix_[p] + texel_[t];
+      texels[size_t(j) * size_t(w_) + size_t(i)] = glm::dvec4(c.r, c.g, c.b, c.a);
     }
+  build(texels);
 }
 
-AreaIntegral::AreaIntegral(int w, int h, std::vector<glm::dvec4> texels) : w_(w), h_(h), texel_(std::move(texels)) {
-  texel_.resize(size_t(w_) * size_t(h_), glm::dvec4(0.0));
-  prefix_.assign(size_t(w_ + 1) * size_t(h_), glm::dvec4(0.0));
-  for (int j = 0; j < h_; ++j)
-    for (int i = 0; i < w_; ++i) {
-      const size_t p = size_t(j) * size_t(w_ + 1) + size_t(i);
-      prefix_[p + 1] = prefix_[p] + texel_[size_t(j) * size_t(w_) + size_t(i)];
-    }
+AreaIntegral::AreaIntegral(int w, int h, std::vector<glm::dvec4> texels) : w_(w), h_(h) {
+  texels.resize(size_t(w_) * size_t(h_), glm::dvec4(0.0));
+  build(texels);
 }
+
+void AreaIntegral::build(const std::vector<glm::dvec4>& texels) {
+  tilesAcross_ = (w_ + kTile - 1) / kTile;
+  const int tilesDown = (h_ + kTile - 1) / kTile;
+  cells_.assign(size_t(tilesAcross_) * size_t(tilesDown) * kTile * kTile, Cell{glm::dvec4(0.0), glm::dvec4(0.0)});
+  rowTotal_.assign(size_t(h_), glm::dvec4(0.0));
+  for (int j = 0; j < h_; ++j) {
+    glm::dvec4 run(0.0);  // the same additions, in the same order, as a plain running sum
+    const size_t base = rowBase(j);
+    for (int i = 0; i < w_; ++i) {
+      Cell& c = cells_[base + cellOffset(i)];
+      c.prefix = run;
+      c.texel = texels[size_t(j) * size_t(w_) + size_t(i)];
+      run = run + c.texel;
+    }
+    rowTotal_[size_t(j)] = run;
+  }
+}
+
+namespace {
+// One piece of an edge between two texel-grid crossings: its dv, and G at
+// its midpoint = periods * (row total) + prefix + texel * du.
+struct Piece {
+  const glm::dvec4 *prefix, *texel, *total;
+  double dv, periods, du;
+};
+}  // namespace
 
 glm::dvec4 AreaIntegral::average(const Polygon2& in, long* pieces) const {
   if (pieces) *pieces = 0;
@@ -125,10 +163,12 @@ glm::dvec4 AreaIntegral::average(const Polygon2& in, long* pieces) const {
   const double total = 0.5 * twice;
   if (!(std::fabs(total) >= 1e-12)) {
     const long i = long(std::floor(in[0].x)), j = long(std::floor(in[0].y));
-    return texel_[size_t(((j % h_) + h_) % h_) * size_t(w_) + size_t(((i % w_) + w_) % w_)];
+    return cells_[rowBase(((j % h_) + h_) % h_) + cellOffset(((i % w_) + w_) % w_)].texel;
   }
   glm::dvec4 sum(0.0);
   long count = 0;
+  thread_local std::vector<Piece> pieceBuffer;  // one edge's pieces
+  const bool prefetch = cells_.size() * sizeof(Cell) > kPrefetchBytes;
   const size_t n = in.size();
   for (size_t k = 0; k < n; ++k) {
     const glm::dvec2 a = in[k] - shift, b = in[(k + 1) % n] - shift;
@@ -152,13 +192,26 @@ glm::dvec4 AreaIntegral::average(const Polygon2& in, long* pieces) const {
     long q = i >= 0 ? i / w_ : -((-i + w_ - 1) / w_);  // whole periods left of texel i
     long mi = i - q * w_;                             // its column in the texture
     long row = ((j % h_) + h_) % h_;
-    const glm::dvec4* pre = &prefix_[size_t(row) * size_t(w_ + 1)];
-    const glm::dvec4* tex = &texel_[size_t(row) * size_t(w_)];
+    const Cell* cells = &cells_[rowBase(row)];  // row's cells: cells[cellOffset(i)]
+    const glm::dvec4* total = &rowTotal_[size_t(row)];
+    // A table larger than the caches is walked in two passes over the edge:
+    // the first finds its pieces and asks for their cells (prefetch: a long
+    // edge crosses texels far apart in memory, and waiting for each in turn
+    // is what made large textures slow), the second sums them — the same
+    // numbers in the same order as the one pass a small table takes.
+    pieceBuffer.clear();
     for (;;) {
       if (t1 > t0) {
         const double um = a.x + 0.5 * (t0 + t1) * d.x;  // G is linear in u within the texel: its midpoint value
-        sum += (d.y * (t1 - t0)) * (double(q) * pre[w_] + pre[mi] + tex[mi] * (um - double(q * w_ + mi)));
-        ++count;
+        const Cell* c = &cells[cellOffset(mi)];
+        const Piece pc{&c->prefix, &c->texel, total, d.y * (t1 - t0), double(q), um - double(q * w_ + mi)};
+        if (prefetch) {
+          __builtin_prefetch(c);
+          pieceBuffer.push_back(pc);
+        } else {
+          sum += pc.dv * (pc.periods * *pc.total + *pc.prefix + *pc.texel * pc.du);
+          ++count;
+        }
       }
       if (t1 >= 1) break;
       if (t1 == tu) {
@@ -170,12 +223,15 @@ glm::dvec4 AreaIntegral::average(const Polygon2& in, long* pieces) const {
         tv += dtv, row += sj;
         if (row == h_) row = 0;
         else if (row < 0) row = h_ - 1;
-        pre = &prefix_[size_t(row) * size_t(w_ + 1)];
-        tex = &texel_[size_t(row) * size_t(w_)];
+        cells = &cells_[rowBase(row)];
+        total = &rowTotal_[size_t(row)];
       }
       t0 = t1;
       t1 = std::min(std::min(tu, tv), 1.0);
     }
+    for (const Piece& pc : pieceBuffer)
+      sum += pc.dv * (pc.periods * *pc.total + *pc.prefix + *pc.texel * pc.du);
+    count += long(pieceBuffer.size());
   }
   if (pieces) *pieces = count;
   return sum / total;  // a clockwise polygon gives both signs negative

@@ -22,9 +22,11 @@
 //                  precision (the checkerboard is analytic)
 //
 // Keys (each is also a flag, see --help):
-//   m  mode: one | regular | jitter-global | jitter-pixel | reference
+//   m  mode: one | regular | jitter-global | jitter-pixel | reference | random
+//      (random: n x n points anywhere in the pixel, one shader pass like jitter-pixel; they cluster)
 //   + / -  samples per side n (1..4)      s / S  seed up / down
-//   v  view: mode (one image large) | compare (the figure) | plot (error vs n)
+//   v  view: mode (one image large) | compare (the figure) | plot (error vs n) | zone (issue 25, 10b: a
+//      zone plate rendered with 1, n x n regular and n x n jittered samples; where its alias sets in)
 //   e  show the image's error against the reference instead of the image
 // Flag only: --average auto|accum|fbo (how the passes are averaged).
 //
@@ -73,14 +75,15 @@
 #include "jitter_gl.hpp"
 #include "jitter_math.hpp"
 #include "jitter_views.hpp"
+#include "jitter_zone.hpp"
 
 namespace {
 using jitter::Pattern;
 
 using namespace jitter::views;  // the modes, the results and their drawing
-enum View { kViewMode, kViewCompare, kViewPlot };
+enum View { kViewMode, kViewCompare, kViewPlot, kViewZone };
 enum Average { kAuto, kAccum, kFbo };
-constexpr Pattern kKinds[3] = {Pattern::Regular, Pattern::JitterGlobal, Pattern::JitterPixel};  // kKindKeys' order
+constexpr Pattern kKinds[4] = {Pattern::Regular, Pattern::JitterGlobal, Pattern::JitterPixel, Pattern::Random};  // kKindKeys
 
 using ts::layout::fmt;
 
@@ -102,41 +105,22 @@ class Jitter final : public ts::Scene {
   std::vector<std::string> claim() const override { return {"aliasing[*"}; }
 
   void addOptions(ts::Options& o) override {
-    o.addEnum("mode", &mode_, {kModeNames[0], kModeNames[1], kModeNames[2], kModeNames[3], kModeNames[4]},
-              "one sample | regular n x n | jittered, one pattern for all pixels | jittered per pixel | reference",
+    o.addEnum("mode", &mode_, {kModeNames[0], kModeNames[1], kModeNames[2], kModeNames[3], kModeNames[4], kModeNames[5]},
+              "one sample | regular n x n | jittered, one pattern for all pixels | jittered per pixel | reference | "
+              "pure random n x n per pixel",
               'm');
     o.addInt("samples", &side_, 1, kMaxSide, "samples per side of a pixel, n (n x n per pixel; the book: 3)", '+', '-');
     o.addInt("seed", &seed_, 0, 1000000, "seed of the jitter (the hash of seed, pixel and sample)", 's', 'S');
-    o.addEnum("view", &view_, {"mode", "compare", "plot"},
-              "mode: the current mode large; compare: every mode and the sample patterns; plot: error vs n", 'v');
+    o.addEnum("view", &view_, {"mode", "compare", "plot", "zone"},
+              "mode: the current mode large; compare: every mode and the sample patterns; plot: error vs n; "
+              "zone: where aliasing sets in on a zone plate", 'v');
     o.addBool("error", &showError_, "show the error against the reference (orange brighter, blue darker, x3)", 'e');
     o.addEnum("average", &average_, {"auto", "accum", "fbo"},
               "how the passes are averaged: glAccum when the context has an accumulation buffer (auto), or FBO "
               "averaging");
   }
 
-  std::vector<ts::FigureSpec> figures() const override {
-    return {
-        {"vi7_jitter", "Figure VI.7",
-         "A checkerboard receding to the horizon, 288x192 pixels each: one sample per pixel; 3x3 samples at the "
-         "subpixel centres; 3x3 jittered with one pattern for every pixel (the accumulation buffer); 3x3 jittered "
-         "independently per pixel; below, each one's error against a 256-sample reference (x3). Regular samples "
-         "and one jitter pattern for all pixels keep interference patterns; jitter chosen per pixel turns them into "
-         "grain. Bottom: the reference, and the sample patterns of Figure VI.7: regular; jittered, one pattern for "
-         "every pixel; jittered anew in each pixel (2x2 pixels shown).",
-         {"--view", "compare", "--samples", "3", "--seed", "1"}, 1320, 760,
-         "Aliasing (the error the neighbours' errors predict) at 3x3 samples: regular {aliasing[regular]}, one "
-         "jitter pattern {aliasing[jitter_global]}, jittered per pixel {aliasing[jitter_pixel]}."},
-        {"vi7_error_vs_samples", "Figure VI.7 (error vs samples)",
-         "RMS error against the reference, and its aliasing (the part of each pixel's error its neighbours' errors "
-         "predict), for 1, 4, 9 and 16 samples per pixel: "
-         "the error falls as samples rise; jitter per pixel leaves almost no aliasing; one jitter pattern for all "
-         "pixels keeps much of it (with seed 1 about as much as regular sampling; how much depends on the pattern).",
-         {"--view", "plot", "--seed", "1"}, 1024, 600,
-         "Jittered per pixel, the RMS error falls from {rms[jitter_pixel_1x1]} (1 sample) to {rms[jitter_pixel_4x4]} "
-         "(16) with aliasing {aliasing[jitter_pixel_4x4]}; regular 4x4 keeps {aliasing[regular_4x4]}."},
-    };
-  }
+  std::vector<ts::FigureSpec> figures() const override { return figureSpecs(); }  // jitter_views.hpp
 
   ts::Measurements measure(ts::Renderer& r) override;
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
@@ -146,7 +130,7 @@ class Jitter final : public ts::Scene {
   using Found = jitter::views::Found;
   void prepare(ts::Renderer& r);
   void ensure(ts::Renderer& r, int kind, int side);
-  Result& result(int kind, int side) { return found_.at(kind, side); }
+  Result& result(int kind, int side) { return kind == 3 ? found_.random[size_t(side - 1)] : found_.at(kind, side); }
   // The drawing (jitter_views.hpp) for the current flags.
   Views views() const { return {mode_, side_, seed_, showError_}; }
 
@@ -198,6 +182,7 @@ void Jitter::prepare(ts::Renderer& r) {
   }
   for (auto& row : found_.results)
     for (Result& res : row) res = Result();
+  for (Result& res : found_.random) res = Result();
   preparedSeed_ = seed_;
   preparedAverage_ = average_;
 }
@@ -207,8 +192,9 @@ void Jitter::ensure(ts::Renderer& r, int kind, int side) {
   if (res.valid) return;
   const jitter::Camera cam;
   const uint32_t seed = uint32_t(seed_);
-  if (kKinds[kind] == Pattern::JitterPixel) {
-    res.image = r.renderOffscreen(jitter::pixelJitterPass(cam, side, seed));
+  const bool shader = kKinds[kind] == Pattern::JitterPixel || kKinds[kind] == Pattern::Random;
+  if (shader) {  // one pass: jittered (or pure random) points per pixel, hashed in the fragment shader
+    res.image = r.renderOffscreen(jitter::pixelJitterPass(cam, side, seed, -1, kKinds[kind] == Pattern::Random));
   } else {
     std::vector<ts::Frame> passes;
     // Each offset o becomes the projection's shift: glLoadMatrixf(pixelShift(o) P) in Renderer::draw.
@@ -221,7 +207,7 @@ void Jitter::ensure(ts::Renderer& r, int kind, int side) {
   res.texture = imageTexture(res.image, kKindKeys[kind],
                              {{"samples", n},
                               {"seed", kKinds[kind] == Pattern::Regular ? "-" : std::to_string(seed_)},
-                              {"averaging", kKinds[kind] == Pattern::JitterPixel ? "shader"
+                              {"averaging", shader ? "shader"
                                             : accum_                             ? "glAccum"
                                                                                  : "fbo"}});
   res.errorTexture = errorTexture(res);
@@ -233,12 +219,12 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
   // The images this state shows and prints: the four modes at n, and in the
   // plot view every pattern at n = 1..4.
   // (A window shows the progress; a newer key stops the passes here.)
-  const double passes = view_ == kViewPlot ? 4 + 3 * kMaxSide : 4;
+  const double passes = view_ == kViewPlot ? 5 + 3 * kMaxSide : 5;
   ensure(r, 0, 1);
-  for (int kind = 0; kind < 3; ++kind) ts::measureProgress((1 + kind) / passes), ensure(r, kind, side_);
+  for (int kind = 0; kind < 4; ++kind) ts::measureProgress((1 + kind) / passes), ensure(r, kind, side_);
   if (view_ == kViewPlot)
     for (int kind = 0; kind < 3; ++kind)
-      for (int side = 1; side <= kMaxSide; ++side) ts::measureProgress((4 + kind * kMaxSide + side - 1) / passes), ensure(r, kind, side);
+      for (int side = 1; side <= kMaxSide; ++side) ts::measureProgress((5 + kind * kMaxSide + side - 1) / passes), ensure(r, kind, side);
   ts::Measurements out;
   const std::string n = std::to_string(side_) + "x" + std::to_string(side_);
   struct Row {
@@ -248,7 +234,8 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
   } rows[] = {{"one", &result(0, 1), "1 sample at the pixel centre"},
               {"regular", &result(0, side_), n + " at the subpixel centres"},
               {"jitter_global", &result(1, side_), n + " jittered, one pattern for every pixel"},
-              {"jitter_pixel", &result(2, side_), n + " jittered independently per pixel"}};
+              {"jitter_pixel", &result(2, side_), n + " jittered independently per pixel"},
+              {"random", &result(3, side_), n + " pure random points per pixel (GL, as jitter_pixel)"}};
   for (const Row& row : rows) {
     std::string k = std::string("[") + row.key + "]";
     out.push_back({"rms" + k, row.res->stats.rms, "RMS error vs the 256-sample reference (1 = full scale); " + row.what});
@@ -262,6 +249,7 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
                    jitter::cpuRms(p, side_, uint32_t(seed_), reference_),
                    p == Pattern::Random ? "RMS error, n x n points anywhere in the pixel (pure random: they cluster), CPU"
                                         : "RMS error, n x n jittered per pixel, the same CPU model"});
+  jitter::zoneMeasure(r, out, side_, uint32_t(seed_), &found_.zone);  // issue 25, item 10b: the zone plate's aliasing onset
   if (view_ == kViewPlot)
     for (int kind = 0; kind < 3; ++kind)
       for (int side = 1; side <= kMaxSide; ++side) {
@@ -283,6 +271,7 @@ ts::Frame Jitter::build(int width, int height, const ts::Measurements& measured)
   canvas.projection = glm::ortho(0.0f, float(width), float(height), 0.0f, -1.0f, 1.0f);
   if (view_ == kViewCompare) views().buildCompare(f, canvas, fd);
   else if (view_ == kViewPlot) views().buildPlot(f, fd);
+  else if (view_ == kViewZone) views().buildZone(f, canvas, fd);
   else views().buildMode(f, canvas, fd);
   f.panels.push_back(canvas);
   return f;

@@ -37,6 +37,7 @@
 #include "common/gl/gl.hpp"
 #include "common/gl/render.hpp"
 #include "jitter_math.hpp"
+#include "jitter_zone.hpp"
 
 namespace jitter {
 constexpr const char* kSourceFile = "demos/jitter/jitter_gl.hpp";
@@ -120,6 +121,31 @@ void main() {
 })";
 }
 
+// Pure random sampling (issue 25): the same one pass, but the n x n points
+// fall anywhere in the pixel (no strata), keyed by the seed xor
+// jitter::kRandomSalt — jitter::randomIn, bit for bit.  They can cluster.
+inline std::string pixelRandomFS() {
+  return glslCommon() + R"(
+uniform vec4 params;  // (n, seed, sample to show as its position or -1, 0)
+void main() {
+  vec2 pix = floor(gl_FragCoord.xy);
+  int n = int(params.x);
+  uint key = hash32((uint(params.y) ^ 0x27d4eb2fu) ^ hash32(uint(pix.x) ^ hash32(uint(pix.y) + 0x632be5abu)));
+  int show = int(params.z);
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < n * n; ++k) {
+    uint kk = 2u * uint(k);
+    vec2 s = vec2(unitFloat(hash32(key + kk)), unitFloat(hash32(key + kk + 1u)));
+    if (k == show) {
+      gl_FragColor = vec4(s, 0.0, 1.0);
+      return;
+    }
+    sum += colourAt(pix + s);
+  }
+  gl_FragColor = vec4(sum / (255.0 * float(n * n)), 1.0);
+})";
+}
+
 // The uniforms of glslCommon for a homography.
 inline std::vector<ts::Uniform> commonUniforms(const Camera& c, const glm::dmat3& h) {
   auto row = [&](int r) { return glm::vec4(float(h[0][r]), float(h[1][r]), float(h[2][r]), 0.0f); };
@@ -174,18 +200,20 @@ inline ts::Frame groundPass(const Camera& c, glm::dvec2 samplePos) {
 
 // The single pass of jitter-pixel.  showSample >= 0 writes that sample's
 // position in its pixel into (R, G) instead of a colour (for the tests).
-inline ts::Frame pixelJitterPass(const Camera& c, int n, uint32_t seed, int showSample = -1) {
+// random: pure random points per pixel instead (pixelRandomFS).
+inline ts::Frame pixelJitterPass(const Camera& c, int n, uint32_t seed, int showSample = -1, bool random = false) {
   ts::Frame f;
   f.width = c.width;
   f.height = c.height;
   f.clearColor = skyColour();
-  f.programs.push_back({"jitter_pixel", {kSourceFile, pixelJitterVS(), pixelJitterFS()}});
+  const char* program = random ? "jitter_random" : "jitter_pixel";
+  f.programs.push_back({program, {kSourceFile, pixelJitterVS(), random ? pixelRandomFS() : pixelJitterFS()}});
   ts::Panel p;
-  p.id = "pixel_jitter";
+  p.id = random ? "pixel_random" : "pixel_jitter";
   p.viewport = {0, 0, c.width, c.height};
   ts::Batch b;
   b.role = "full_viewport";
-  b.program = "jitter_pixel";
+  b.program = program;
   b.uniforms = commonUniforms(c, pixelToPlane(c));
   b.uniforms.push_back({"params", glm::vec4(float(n), float(seed), float(showSample), 0.0f)});
   for (auto q : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, -1), glm::vec2(1, 1),
@@ -197,6 +225,102 @@ inline ts::Frame pixelJitterPass(const Camera& c, int n, uint32_t seed, int show
   p.batches.push_back(b);
   f.panels.push_back(p);
   return f;
+}
+
+// ------------------------------------------------------------ the zone plate
+// Issue 25, item 10b, read from GL renders (jitter_zone.hpp has the CPU model
+// and the measure): bands of zone::kGlBandRows rows, band b at frequency
+// (b + 1) zone::kStep cycles per pixel, each row the signal
+// cos(2 pi f x + phase) across zone::kGlWidth columns, sampled by one pass of
+// a fragment shader at the pattern's n x n points of its pixel (regular: the
+// subpixel centres; jittered: the hash of jitter-pixel) and averaged, written
+// as 0.5 + 0.5 * average.  The measure reads the 8-bit pixels back.
+inline std::string zoneFS() {
+  return glslCommon() + R"(
+uniform vec4 zone;  // (n, seed, 0 regular | 1 jittered per pixel, phase)
+uniform vec4 band;  // (cycles per pixel per band, rows per band, 0, 0)
+void main() {
+  vec2 pix = floor(gl_FragCoord.xy);
+  int n = int(zone.x);
+  float f = (floor(pix.y / band.y) + 1.0) * band.x;
+  uint key = hash32(uint(zone.y) ^ hash32(uint(pix.x) ^ hash32(uint(pix.y) + 0x632be5abu)));
+  float sum = 0.0;
+  for (int k = 0; k < n * n; ++k) {
+    int a = k % n;
+    uint kk = 2u * uint(k);
+    float sx = zone.z > 0.5 ? (float(a) + unitFloat(hash32(key + kk))) / float(n) : (float(a) + 0.5) / float(n);
+    sum += cos(6.283185307 * f * (pix.x + sx) + zone.w);
+  }
+  gl_FragColor = vec4(vec3(0.5 + 0.5 * sum / float(n * n)), 1.0);
+})";
+}
+inline ts::Frame zonePass(int n, uint32_t seed, bool jittered, double phase) {
+  ts::Frame f;
+  f.width = zone::kGlWidth;
+  f.height = zone::kGlBands * zone::kGlBandRows;
+  f.clearColor = {0, 0, 0, 1};
+  f.programs.push_back({"jitter_zone", {kSourceFile, pixelJitterVS(), zoneFS()}});
+  ts::Panel p;
+  p.id = "zone_plate";
+  p.viewport = {0, 0, f.width, f.height};
+  ts::Batch b;
+  b.role = "full_viewport";
+  b.program = "jitter_zone";
+  b.uniforms = {{"zone", glm::vec4(float(n), float(seed), jittered ? 1.0f : 0.0f, float(phase))},
+                {"band", glm::vec4(float(zone::kStep), float(zone::kGlBandRows), 0.0f, 0.0f)}};
+  for (auto q : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, -1), glm::vec2(1, 1),
+                 glm::vec2(-1, 1)}) {
+    ts::Vertex v;
+    v.pos = glm::vec3(q, 0.0f);
+    b.vertices.push_back(v);
+  }
+  p.batches.push_back(b);
+  f.panels.push_back(p);
+  return f;
+}
+// The onset read from the GL renders (phases 0 and pi/2): the lowest band
+// whose alias RMS reaches zone::kThreshold of its box-filtered truth's.
+// `first` (if given) gets the render at phase 0.
+inline zone::Sweep zoneSweepGl(ts::Renderer& r, int n, uint32_t seed, bool jittered, ts::Image* first = nullptr) {
+  std::vector<double> ee(size_t(zone::kGlBands), 0.0), tt(ee);
+  for (double phi : {0.0, zone::kPi / 2}) {
+    const ts::Image img = r.renderOffscreen(zonePass(n, seed, jittered, phi));
+    if (first && phi == 0.0) *first = img;
+    for (int j = 0; j < img.height; ++j) {
+      const int bandIndex = j / zone::kGlBandRows;
+      const double f = (bandIndex + 1) * zone::kStep;
+      for (int i = 0; i < img.width; ++i) {
+        const double v = 2.0 * (img.at(i, img.height - 1 - j).r / 255.0) - 1.0, t = zone::truth(f, phi, i);
+        ee[size_t(bandIndex)] += (v - t) * (v - t), tt[size_t(bandIndex)] += t * t;
+      }
+    }
+  }
+  zone::Sweep s;
+  const double perBand = 2.0 * zone::kGlWidth * zone::kGlBandRows;
+  for (int b = 0; b < zone::kGlBands; ++b) {
+    if (std::sqrt(tt[size_t(b)] / perBand) < zone::kTruthFloor) continue;
+    const double f = (b + 1) * zone::kStep, rho = std::sqrt(ee[size_t(b)] / tt[size_t(b)]);
+    s.f.push_back(f), s.rho.push_back(rho);
+    if (s.onset < 0 && rho >= zone::kThreshold) s.onset = f;
+  }
+  return s;
+}
+// jitter.cpp's zone-plate numbers: the CPU model's (zone::measure) and the GL renders'.
+// `keep` gets the renders and sweeps for the zone view.
+inline void zoneMeasure(ts::Renderer& r, ts::Measurements& out, int n, uint32_t seed, zone::Plate* keep) {
+  zone::measure(out, n, seed);
+  const std::string nn = std::to_string(n) + "x" + std::to_string(n);
+  zone::Plate plate;
+  plate.n = n;
+  for (int k = 0; k < 3; ++k)
+    plate.sweeps[size_t(k)] = zoneSweepGl(r, k == 0 ? 1 : n, seed, k == 2, &plate.images[size_t(k)]);
+  for (int k : n == 1 ? std::vector<int>{0} : std::vector<int>{0, 1})
+    out.push_back({"alias_onset_gl[" + std::string(k == 0 ? "1x1" : nn) + "]", plate.sweeps[size_t(k)].onset,
+                   "the same onset read from a GL render of the zone plate (8-bit pixels), regular samples"});
+  out.push_back({"alias_onset_gl[jitter_pixel_" + nn + "]", plate.sweeps[2].onset,
+                 "the same, GL, jittered per pixel (noise)"});
+  plate.valid = true;
+  *keep = std::move(plate);
 }
 
 // The n*n sample positions of a multi-pass pattern (Regular, JitterGlobal).

@@ -147,8 +147,8 @@ inline glm::dvec2 regular(int n, int k) {
 // Pure random sampling (issue 25, item 10): n x n points anywhere in the
 // pixel, drawn independently per pixel, no strata — so they can cluster
 // (Buss: "pure random sampling clusters"), and at 9 samples its error
-// exceeds jittered sampling's.  Measured on the CPU (renderCpu); the window's
-// modes do not draw it.
+// exceeds jittered sampling's.  The demo's mode "random" renders it with GL
+// (jitter_gl.hpp, pixelRandomFS: the same hash); renderCpu models it.
 inline glm::dvec2 randomIn(uint32_t key, int k) {
   return {double(unitFloat(hash32(key + 2u * uint32_t(k)))), double(unitFloat(hash32(key + 2u * uint32_t(k) + 1u)))};
 }

@@ -17,23 +17,60 @@
 #include "common/core/plot.hpp"
 #include "common/core/text.hpp"
 #include "common/core/textures.hpp"
+#include "common/core/scene.hpp"
 #include "jitter_math.hpp"
+#include "jitter_zone.hpp"
 
 namespace jitter::views {
 using jitter::Pattern;
 using ts::layout::fmt;
 
-enum Mode { kOne, kRegular, kJitterGlobal, kJitterPixel, kReference, kModes };
-const char* const kModeNames[] = {"one", "regular", "jitter-global", "jitter-pixel", "reference"};
+// random: n x n points anywhere in the pixel, drawn anew per pixel (issue 25: "pure random sampling clusters").
+enum Mode { kOne, kRegular, kJitterGlobal, kJitterPixel, kReference, kRandom, kModes };
+const char* const kModeNames[] = {"one", "regular", "jitter-global", "jitter-pixel", "reference", "random"};
 constexpr int kMaxSide = 4;
 
 // The three n x n patterns the sweep covers (jitter.cpp's kKinds), in this order.
-const char* const kKindKeys[3] = {"regular", "jitter_global", "jitter_pixel"};
+// (and a fourth, pure random, measured at the current n only)
+const char* const kKindKeys[4] = {"regular", "jitter_global", "jitter_pixel", "random"};
 const char* const kKindTitles[3] = {"regular", "jittered, one pattern", "jittered per pixel"};
 
 using ts::layout::kWhite, ts::layout::kAmber;
 const glm::vec4 kGrey{0.6f, 0.6f, 0.65f, 1.0f};
 const glm::vec4 kSeriesColour[3] = {{0.35f, 0.65f, 1.0f, 1.0f}, {1.0f, 0.55f, 0.2f, 1.0f}, {0.4f, 0.9f, 0.45f, 1.0f}};
+
+// The demo's figures (jitter.cpp's figures()).
+inline std::vector<ts::FigureSpec> figureSpecs() {
+  return {
+        {"vi7_jitter", "Figure VI.7",
+         "A checkerboard receding to the horizon, 288x192 pixels each: one sample per pixel; 3x3 samples at the "
+         "subpixel centres; 3x3 jittered with one pattern for every pixel (the accumulation buffer); 3x3 jittered "
+         "independently per pixel; below, each one's error against a 256-sample reference (x3). Regular samples "
+         "and one jitter pattern for all pixels keep interference patterns; jitter chosen per pixel turns them into "
+         "grain. Bottom: the reference, and the sample patterns of Figure VI.7: regular; jittered, one pattern for "
+         "every pixel; jittered anew in each pixel (2x2 pixels shown).",
+         {"--view", "compare", "--samples", "3", "--seed", "1"}, 1320, 760,
+         "Aliasing (the error the neighbours' errors predict) at 3x3 samples: regular {aliasing[regular]}, one "
+         "jitter pattern {aliasing[jitter_global]}, jittered per pixel {aliasing[jitter_pixel]}."},
+        {"vi7_error_vs_samples", "Figure VI.7 (error vs samples)",
+         "RMS error against the reference, and its aliasing (the part of each pixel's error its neighbours' errors "
+         "predict), for 1, 4, 9 and 16 samples per pixel: "
+         "the error falls as samples rise; jitter per pixel leaves almost no aliasing; one jitter pattern for all "
+         "pixels keeps much of it (with seed 1 about as much as regular sampling; how much depends on the pattern).",
+         {"--view", "plot", "--seed", "1"}, 1024, 600,
+         "Jittered per pixel, the RMS error falls from {rms[jitter_pixel_1x1]} (1 sample) to {rms[jitter_pixel_4x4]} "
+         "(16) with aliasing {aliasing[jitter_pixel_4x4]}; regular 4x4 keeps {aliasing[regular_4x4]}."},
+        {"jitter_zone_plate", "Figure VI.7 (where aliasing sets in)",
+         "A zone plate, its frequency rising upwards from 0.02 to 3 cycles per pixel (bands of 2 rows, 64 pixels "
+         "wide, shown 2x), rendered by GL with 1 sample per pixel, 3x3 samples at the subpixel centres and 3x3 "
+         "jittered per pixel; right, the alias of each band, its error against the exact box filter of the pixel "
+         "as a fraction of the box-filtered signal, with the onsets (the alias reaching half the signal) marked: "
+         "at the sample grid's Nyquist, 0.5 and 1.5 cycles per pixel. Jitter's error starts lower and stays noise.",
+         {"--view", "zone", "--samples", "3", "--seed", "1"}, 1100, 700,
+         "Aliasing sets in at {alias_onset_gl[1x1]} cycles per pixel with 1 sample and at {alias_onset_gl[3x3]} with "
+         "3x3 regular samples (GL; the CPU model: {alias_onset_cpp[1x1]}, {alias_onset_cpp[3x3]})."},
+    };
+}
 
 // One image measure() made, and its error against the reference.
 struct Result {
@@ -49,6 +86,8 @@ struct Result {
 // build() draws.
 struct Found {
   std::array<std::array<Result, kMaxSide>, 3> results;
+  std::array<Result, kMaxSide> random;  // pure random per pixel, n = 1..4 (made when shown or measured)
+  zone::Plate zone;                     // the zone plate's GL renders and alias curves (jitter_gl.hpp, zoneMeasure)
   Result reference;
   const Result& at(int kind, int side) const { return results[size_t(kind)][size_t(side - 1)]; }
   Result& at(int kind, int side) { return results[size_t(kind)][size_t(side - 1)]; }
@@ -100,6 +139,7 @@ struct Views {
   void buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
   void buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
   void buildPlot(ts::Frame& f, const Found& fd) const;
+  void buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
   // Draws one plot of the sweep in `area`; returns its data area.
   ts::Rect addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd, int scale) const;
 };
@@ -111,6 +151,7 @@ inline const Result* Views::current(const Found& fd) const {
     case kRegular: res = &fd.at(0, side_); break;
     case kJitterGlobal: res = &fd.at(1, side_); break;
     case kJitterPixel: res = &fd.at(2, side_); break;
+    case kRandom: res = &fd.random[size_t(side_ - 1)]; break;
     default: break;
   }
   return res->valid ? res : nullptr;
@@ -133,7 +174,7 @@ inline void Views::addImage(ts::Frame& f, const std::string& id, ts::Rect rect, 
 inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int mode, int side, bool labels,
                               float labelW, int scale) const {
   const int n = mode == kOne ? 1 : mode == kReference ? jitter::kReferenceSide : side;
-  const int cells = mode == kJitterPixel ? 2 : 1;
+  const int cells = mode == kJitterPixel || mode == kRandom ? 2 : 1;
   const float cell = float(box.w) / float(cells);
   std::vector<glm::vec2> grid, border, dots;
   for (int cy = 0; cy < cells; ++cy)
@@ -141,7 +182,7 @@ inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int
       float x0 = float(box.x) + cx * cell, y0 = float(box.y) + cy * cell;
       border.insert(border.end(), {{x0, y0}, {x0 + cell, y0}, {x0 + cell, y0}, {x0 + cell, y0 + cell},
                                    {x0 + cell, y0 + cell}, {x0, y0 + cell}, {x0, y0 + cell}, {x0, y0}});
-      if (mode != kOne && n <= 8)
+      if (mode != kOne && mode != kRandom && n <= 8)  // random has no strata
         for (int k = 1; k < n; ++k) {
           float t = float(k) / float(n) * cell;
           grid.insert(grid.end(), {{x0 + t, y0}, {x0 + t, y0 + cell}, {x0, y0 + t}, {x0 + cell, y0 + t}});
@@ -149,7 +190,7 @@ inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int
       // The pixel shown: for jitter-pixel, (100 + cx, 100 + 1 - cy) of the image (GL rows from the bottom).
       const int pi = 100 + cx, pj = 100 + (cells - 1 - cy);
       Pattern p = mode == kJitterGlobal ? Pattern::JitterGlobal : mode == kJitterPixel ? Pattern::JitterPixel
-                  : mode == kReference ? Pattern::Reference : Pattern::Regular;
+                  : mode == kReference ? Pattern::Reference : mode == kRandom ? Pattern::Random : Pattern::Regular;
       for (int k = 0; k < n * n; ++k) {
         glm::dvec2 s = jitter::samplePos(p, n, uint32_t(seed_), pi, pj, k);
         dots.push_back({x0 + float(s.x) * cell, y0 + float(1.0 - s.y) * cell});
@@ -164,11 +205,12 @@ inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int
   if (labels) {
     std::string nn = std::to_string(n) + "x" + std::to_string(n);
     std::string l1 = mode == kOne ? "1 sample" : mode == kReference ? "16x16 stratified" : mode == kRegular ? nn + " regular"
-                                                                                                     : nn + " jittered";
+                     : mode == kRandom ? nn + " random" : nn + " jittered";
     std::string l2 = mode == kOne ? "the pixel centre"
                      : mode == kRegular ? "subpixel centres"
                      : mode == kJitterGlobal ? "same in every pixel"
                      : mode == kJitterPixel ? "new in every pixel"
+                     : mode == kRandom ? "anywhere, new per pixel"
                                             : "jittered (the reference)";
     // Under the box, in a band as wide as the box and its margins, two lines at `scale`.
     const float half = (labelW > 0 ? labelW : std::max(float(box.w), 120.0f * float(scale))) / 2,
@@ -187,6 +229,7 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
                      : mode_ == kRegular ? n + " regular samples per pixel"
                      : mode_ == kJitterGlobal ? n + " jittered, one pattern for all pixels"
                      : mode_ == kJitterPixel ? n + " jittered independently per pixel"
+                     : mode_ == kRandom ? n + " pure random points per pixel (they cluster)"
                                              : "reference: 16x16 stratified samples per pixel";
   // The image as large as the window allows (whole zooms are pixel-exact;
   // a zoom is rounded down to a whole one when that loses little), the
@@ -434,5 +477,77 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
         cell(x0 + nameW + colW * float(side - 1), colW, fmt("%.4f", fd.at(kind, side).stats.aliasing), kSeriesColour[kind]);
     }
   }
+}
+
+// The zone view: the three GL renders of the zone plate (frequency rising
+// upwards, 2x), the onset marked on each, and the alias curves with the
+// threshold and the onsets.
+inline void Views::buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
+  namespace L = ts::layout;
+  namespace plot = ts::plot;
+  const int line = 17;
+  L::caption(f, {4, 4, float(f.width) - 4, float(line + 4)},
+             "Figure VI.7  where aliasing sets in: a zone plate, 0.02 to 3 cycles per pixel upwards", kWhite, 1);
+  const zone::Plate& z = fd.zone;
+  if (!z.valid) return;  // measure() makes it
+  const std::string nn = std::to_string(z.n) + "x" + std::to_string(z.n);
+  const std::string titles[3] = {"1 sample", nn + " regular", nn + " jittered"};
+  const glm::vec4 colours[3] = {kSeriesColour[0], kSeriesColour[1], kSeriesColour[2]};
+  // The images: as large as the height allows in whole zooms (at most 2x),
+  // or scaled down (filtered) in a window too low for 1:1.
+  const int imgH = z.images[0].height, imgW = z.images[0].width;
+  const double room = double(f.height - 5 * line) / std::max(1, imgH);
+  const double zoom = room >= 1 ? std::min(2.0, std::floor(room)) : std::max(0.1, room);
+  const int w = std::max(1, int(imgW * zoom)), h = std::max(1, int(imgH * zoom)), top = 3 * line, gap = 28, left = 56;
+  std::vector<glm::vec2> onsetLines[3];
+  for (int k = 0; k < 3; ++k) {
+    const int x = left + k * (w + gap);
+    ts::TextureDesc t = renderedImageTexture(z.images[size_t(k)], "jitter_render", "zone_plate",
+                                             "jitter", {{"samples", titles[k]}});
+    if (zoom < 1) t.minFilter = GL_LINEAR;
+    f.panels.push_back(ts::layout::texturePanel("zone_" + std::to_string(k), {x, top, w, h}, f.addTexture(t)));
+    L::caption(f, {float(x - gap / 2), float(top - line - 2), float(x + w + gap / 2), float(top - 2)}, titles[k],
+               colours[k], 1);
+    const double onset = z.sweeps[size_t(k)].onset;
+    if (onset > 0) {  // the bottom edge of the onset's band
+      const float y = float(top + h) - float((onset / zone::kStep - 1) * zone::kGlBandRows * (double(h) / imgH));
+      onsetLines[k] = {{float(x - 6), y}, {float(x + w + 6), y}};
+      L::caption(f, {float(x - gap / 2), float(top + h + 4), float(x + w + gap / 2), float(top + h + 4 + line)},
+                 "onset " + fmt("%.2f", onset), colours[k], 1);
+    }
+  }
+  // The frequency scale left of the images.
+  for (double fr : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}) {
+    const float y = float(top + h) - float((fr / zone::kStep) * zone::kGlBandRows * (double(h) / imgH));
+    L::caption(f, {4, y - line / 2.0f, float(left - 6), y + line / 2.0f}, fmt("%.1f", fr), kGrey, 1, ts::Align::Right);
+  }
+  for (int k = 0; k < 3; ++k)
+    if (!onsetLines[k].empty()) canvas.batches.push_back(ts::lineSegments(onsetLines[k], colours[k], 2.0f, "onset"));
+  // The alias curves.
+  plot::Spec p;
+  p.id = "plot_alias";
+  p.title = "alias / box-filtered signal (RMS)";
+  p.xLabel = "cycles per pixel";
+  p.titleColor = kWhite, p.textColor = kGrey;
+  p.x0 = 0, p.x1 = zone::kMaxF, p.y0 = 0, p.y1 = 2;
+  p.xTicks = plot::ticks(0, zone::kMaxF, 0.5, "%.1f");
+  p.yTicks = plot::ticks(0, 2, 0.5, "%.1f");
+  for (int k = 0; k < 3; ++k) {
+    plot::Series curve(std::string("alias_") + (k == 0 ? "one" : k == 1 ? "regular" : "jitter_pixel"), colours[k]);
+    const zone::Sweep& sw = z.sweeps[size_t(k)];
+    for (size_t q = 0; q < sw.f.size(); ++q) {
+      if (q > 0 && sw.f[q] - sw.f[q - 1] > 1.5 * zone::kStep) {  // a gap (skipped bands): a new strip
+        p.series.push_back(curve);
+        curve.points.clear();
+      }
+      curve.points.push_back({sw.f[q], std::min(sw.rho[q], p.y1)});
+    }
+    p.series.push_back(curve);
+    p.legend.push_back({titles[k], colours[k]});
+    if (sw.onset > 0) p.markers.push_back({sw.onset, colours[k], "onset", fmt("%.2f", sw.onset)});
+  }
+  p.series.push_back(plot::Series("threshold", kGrey, plot::Mark::Line, {{0, zone::kThreshold}, {zone::kMaxF, zone::kThreshold}}, 1.0f));
+  const int px = left + 3 * (w + gap) + 8;
+  plot::draw(f, p, {px, 2 * line, f.width - px - 4, f.height - 2 * line - 4});
 }
 }  // namespace jitter::views

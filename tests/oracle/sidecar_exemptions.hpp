@@ -1,6 +1,7 @@
 // Figures whose sidecar cannot remake every texture: their panels are
 // pictures that OpenGL itself rendered in the demo's measure() pass (Figure
-// VI.7 shows GL's own multi-pass and per-pixel-jitter renders side by side;
+// VI.7 shows GL's own multi-pass and per-pixel-jitter renders side by side, and
+// its zone plate GL's shader renders of the plate;
 // the parallax figures show GLSL renders of the filtering modes and errors;
 // the environment mapping figures show texgen and GLSL renders of mirrors;
 // the bump-mapping figures show the displaced reference torus R, drawn from a
@@ -16,10 +17,10 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 26> kFiguresDrawnFromGlRenders = {
+inline constexpr std::array<const char*, 27> kFiguresDrawnFromGlRenders = {
     // --footprints: the left panel is the picture GL drew, inspected
     "inspect_vi2_footprints", "inspect_aniso_footprint",
-    "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step",
+    "vi7_jitter", "jitter_zone_plate", "parallax_modes", "parallax_error_band", "parallax_step",
     // environment_mapping: its object pictures are GL renders with texgen and GLSL
     "env_cube_sphere", "env_compare_torus", "env_latlong_map", "env_cube_map", "env_flat_mirror",
     // bump_mapping: R, emboss and DOT3 are pictures its measure() draws
