@@ -22,6 +22,100 @@ const char* exemptName(Exempt e) {
   return "?";
 }
 
+void cubeFaceCoord(int face, const glm::dvec3& r, double* s, double* t) {
+  double sc = 0, tc = 0, ma = 1;
+  switch (face) {
+    case 0: sc = -r.z, tc = -r.y, ma = r.x; break;
+    case 1: sc = r.z, tc = -r.y, ma = -r.x; break;
+    case 2: sc = r.x, tc = r.z, ma = r.y; break;
+    case 3: sc = r.x, tc = -r.z, ma = -r.y; break;
+    case 4: sc = r.x, tc = -r.y, ma = r.z; break;
+    default: sc = -r.x, tc = -r.y, ma = -r.z; break;
+  }
+  *s = (sc / ma + 1.0) / 2.0, *t = (tc / ma + 1.0) / 2.0;
+}
+int cubeFace(const glm::dvec3& r, int* alt) {
+  const double a[3] = {std::abs(r.x), std::abs(r.y), std::abs(r.z)};
+  int k = a[0] >= a[1] && a[0] >= a[2] ? 0 : a[1] >= a[2] ? 1 : 2;
+  int second = -1;
+  for (int j = 0; j < 3; ++j)
+    if (j != k && (second < 0 || a[j] > a[second])) second = j;
+  auto faceOf = [&](int axis) { return 2 * axis + (r[axis] > 0 ? 0 : 1); };
+  *alt = a[second] >= a[k] * (1.0 - 1e-4) ? faceOf(second) : -1;
+  return faceOf(k);
+}
+namespace {
+// The interpolated direction (s, t, r) at (x, y): the planes hold s/w, t/w,
+// r/w, and the common positive factor 1/w does not change a direction.
+glm::dvec3 cubeDirection(const ScreenPoly& P, double x, double y) {
+  return {P.P[kS].at(x, y), P.P[kT].at(x, y), P.P[kR].at(x, y)};
+}
+// The derivatives of a face's (s, t) at (x, y), by central differences on
+// that face (the LOD GL computes from the face coordinates of a 2x2 quad).
+Deriv cubeFaceDeriv(const ScreenPoly& P, int face, double x, double y) {
+  double s0, t0, s1, t1, s2, t2, s3, t3;
+  cubeFaceCoord(face, cubeDirection(P, x - 0.5, y), &s0, &t0);
+  cubeFaceCoord(face, cubeDirection(P, x + 0.5, y), &s1, &t1);
+  cubeFaceCoord(face, cubeDirection(P, x, y - 0.5), &s2, &t2);
+  cubeFaceCoord(face, cubeDirection(P, x, y + 0.5), &s3, &t3);
+  return {s1 - s0, s3 - s2, t1 - t0, t3 - t2};
+}
+}  // namespace
+
+void Reference::addCubeFaces(const ts::Frame& f) {
+  cubeFirstFace_.assign(f.textures.size(), -1);
+  for (size_t i = 0; i < f.textures.size(); ++i) {
+    const ts::TextureDesc& d = f.textures[i];
+    if (!d.cube || !d.image || d.image->height != 6 * d.image->width) continue;
+    cubeFirstFace_[i] = int(textures_.size());
+    const int w = d.image->width;
+    for (int face = 0; face < 6; ++face) {
+      ts::TextureDesc fd = d;
+      fd.cube = false;
+      fd.mipmaps = false;
+      fd.mipLevels = nullptr;
+      auto img = std::make_shared<ts::Image>(w, w);
+      std::copy_n(d.image->pixels.begin() + std::ptrdiff_t(size_t(face) * size_t(w) * size_t(w) * 4),
+                  size_t(w) * size_t(w) * 4, img->pixels.begin());
+      fd.image = img;
+      fd.name += "[face " + std::to_string(face) + "]";
+      textures_.emplace_back(fd);
+    }
+  }
+}
+
+bool Reference::cubeCandidate(const ScreenPoly& P, double x, double y, int firstFace, bool alternative,
+                              Candidate* c) const {
+  int alt = -1;
+  int face = cubeFace(cubeDirection(P, x, y), &alt);
+  if (alternative) {
+    if (alt < 0) return false;
+    face = alt;
+  }
+  const Texture& tex = textures_[size_t(firstFace + face)];
+  cubeFaceCoord(face, cubeDirection(P, x, y), &c->s, &c->t);
+  c->texture = firstFace + face;
+  const Deriv g = cubeFaceDeriv(P, face, x, y);
+  const double e0 = tex.lod(g);
+  c->rho = float(std::exp2(std::max(-30.0, e0)));
+  double lo = e0, hi = e0;
+  if (tex.mipmapped() || tex.desc().minFilter != tex.desc().magFilter) {
+    tex.lodRange(g, opts_.lodModel, &lo, &hi);
+    lo -= opts_.lodMargin, hi += opts_.lodMargin;
+  }
+  c->lodLo = float(lo), c->lodHi = float(hi);
+  return true;
+}
+
+Colour Reference::cubeSample(const ScreenPoly& P, double x, double y, int firstFace) const {
+  int alt = -1;
+  const int face = cubeFace(cubeDirection(P, x, y), &alt);
+  double s, t;
+  cubeFaceCoord(face, cubeDirection(P, x, y), &s, &t);
+  const Texture& tex = textures_[size_t(firstFace + face)];
+  return tex.sample(s, t, tex.lod(cubeFaceDeriv(P, face, x, y)));
+}
+
 PixelRect labelBox(const ts::Label& l, int margin, bool known) {
   int scale = known ? std::max(1, l.scale) : ts::text::kMaxScale;
   double w = ts::text::width(l.text, scale), h = ts::text::height(scale), pad = 3.0 * scale;
@@ -46,6 +140,7 @@ Reference::Reference(const ts::Frame& f, const RenderOptions& o) : opts_(o), wid
   head_.assign(size_t(f.width) * size_t(f.height), -1);
   pool_.reserve(size_t(f.width) * size_t(f.height) / 2);
   for (const auto& t : f.textures) textures_.emplace_back(t);
+  addCubeFaces(f);
   for (const auto& p : f.panels) drawPanel(p);
   if (opts_.labels) drawLabels(f);
 }
@@ -170,6 +265,10 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     proto.kind = Candidate::Kind::Exempt;
     proto.why = Exempt::Blend;
   }
+  // A cube map (issue 26): its faces are textures cubeFirstFace_ .. + 5; the
+  // face and its (s, t) are chosen per fragment from the interpolated (s, t, r).
+  const int cubeFirst = tex ? cubeFirstFace_[size_t(b.texture)] : -1;
+  if (cubeFirst >= 0) tex = &textures_[size_t(cubeFirst)];
   const bool needLod = tex && (tex->mipmapped() || tex->desc().minFilter != tex->desc().magFilter);
 
   for (size_t i = 0; i + 2 < b.vertices.size(); i += 3) {
@@ -216,14 +315,16 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       *hi = float(lg(h) + opts_.lodMargin);
     };
     float constLo = 0, constHi = 0, constRho = 0;
-    if (tex && P.constantDeriv) lodAt(P.v[0].x, P.v[0].y, &constLo, &constHi, &constRho);
+    if (tex && cubeFirst < 0 && P.constantDeriv) lodAt(P.v[0].x, P.v[0].y, &constLo, &constHi, &constRho);
 
     auto candidateAt = [&](double x, double y) {
       Candidate c = proto;
       c.z = float(P.P[kZ].at(x, y));
       c.colour = P.colour(x, y);
       if (c.colorSum) c.secondary = P.secondary(x, y);
-      if (c.kind == Candidate::Kind::Textured) {
+      if (c.kind == Candidate::Kind::Textured && cubeFirst >= 0) {
+        cubeCandidate(P, x, y, cubeFirst, false, &c);
+      } else if (c.kind == Candidate::Kind::Textured) {
         P.coord(x, y, &c.s, &c.t);
         if (P.constantDeriv) c.lodLo = constLo, c.lodHi = constHi, c.rho = constRho;
         else lodAt(x, y, &c.lodLo, &c.lodHi, &c.rho);
@@ -241,7 +342,9 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
                  float(clamp01(a[kCa] / a[kW]))};
       Colour sec{float(clamp01(a[kSr] / a[kW])), float(clamp01(a[kSg] / a[kW])), float(clamp01(a[kSb] / a[kW])), 0.0f};
       Colour texel{};
-      if (tex) {
+      if (tex && cubeFirst >= 0) {
+        texel = cubeSample(P, x + 0.5, y + 0.5, cubeFirst);
+      } else if (tex) {
         double s, t;
         P.coordFrom(a[kS] / a[kQ], a[kT] / a[kQ], &s, &t);
         texel = tex->sample(s, t, tex->lod(P.deriv(x + 0.5, y + 0.5)));
@@ -278,7 +381,12 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           place(x, y, edgeExempt, false, false);
           continue;
         }
-        place(x, y, candidateAt(cx, cy), sure, p.depthTest);
+        const Candidate c = candidateAt(cx, cy);
+        place(x, y, c, sure, p.depthTest);
+        // Near a cube's face boundary either face is legal (issue 26).
+        Candidate other = c;
+        if (cubeFirst >= 0 && c.kind == Candidate::Kind::Textured && cubeCandidate(P, cx, cy, cubeFirst, true, &other))
+          place(x, y, other, false, p.depthTest);
       }
   }
 }

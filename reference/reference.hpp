@@ -98,6 +98,13 @@ class Reference {
   void drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect scissor);
   void drawLines(const ts::Panel& p, const ts::Batch& b, PixelRect scissor);
   void drawLabels(const ts::Frame& f);
+  // Cube maps (issue 26): each cube texture's six faces as 2D textures
+  // appended to textures_, the first one's index in cubeFirstFace_ (-1: not
+  // a cube); a fragment's face and (s, t) per GL 2.1 table 3.21.
+  void addCubeFaces(const ts::Frame& f);
+  bool cubeCandidate(const ScreenPoly& P, double x, double y, int firstFace, bool alternative, Candidate* c) const;
+  Colour cubeSample(const ScreenPoly& P, double x, double y, int firstFace) const;
+  std::vector<int> cubeFirstFace_;
   void place(int x, int y, const Candidate& c, bool sure, bool depthTest);
   void exemptDisc(double x, double y, double r, Exempt why, PixelRect clip);
   void note(const std::string& s);
@@ -112,6 +119,16 @@ class Reference {
   Colour clear_{};
   std::vector<std::string> notes_;
 };
+
+// Cube maps (issue 26), GL 2.1 §3.8.6 table 3.21: the face of direction r
+// is its major axis, +X -X +Y -Y +Z -Z = 0..5; *alt is the face of the next
+// largest component when it is within a relative 1e-4 of the largest (where
+// GL's float arithmetic may pick either), else -1.  On face f, (s, t) =
+// ((sc/|ma| + 1)/2, (tc/|ma| + 1)/2), sc, tc and ma from the table:
+//   +X: -r_z, -r_y, r_x   -X: r_z, -r_y, -r_x   +Y: r_x, r_z, r_y
+//   -Y: r_x, -r_z, -r_y   +Z: r_x, -r_y, r_z    -Z: -r_x, -r_y, -r_z
+int cubeFace(const glm::dvec3& r, int* alt);
+void cubeFaceCoord(int face, const glm::dvec3& r, double* s, double* t);
 
 // The image rectangle a label covers as render.cpp draws it (text plus
 // background padding), in pixels [x0, x1) x [y0, y1), with `margin` around.

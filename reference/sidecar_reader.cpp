@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/core/error.hpp"
+#include "common/core/sidecar.hpp"
 #include "common/core/textures.hpp"
 
 namespace ref {
@@ -101,6 +102,17 @@ ts::Rgba rgbaParam(const std::vector<std::pair<std::string, std::string>>& p, co
   for (int x : c)
     if (x < 0 || x > 255) fail("texture '" + name + "'", "param " + key + " = '" + v + "' is out of 0..255");
   return {uint8_t(c[0]), uint8_t(c[1]), uint8_t(c[2]), uint8_t(c[3])};
+}
+
+// glTexGen's environment-mapping modes (issue 26): the mode, no planes.
+// False if `mode` is not one of them.  Sphere mapping makes s and t only.
+bool readNormalTexGen(const Json& tg, const std::string& mode, const std::string& tw, ts::TexGen* out) {
+  if (mode == "GL_SPHERE_MAP") out->mode = GL_SPHERE_MAP;
+  else if (mode == "GL_REFLECTION_MAP") out->mode = GL_REFLECTION_MAP;
+  else if (mode == "GL_NORMAL_MAP") out->mode = GL_NORMAL_MAP;
+  else return false;
+  if (find(tg, "planes") || find(tg, "plane_modelview")) fail(tw, mode + " takes no planes");
+  return true;
 }
 
 ts::Prim primFromName(const std::string& s, const std::string& where) {
@@ -241,8 +253,14 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
     }
     if (const Json* w = find(t, "width"))
       if (d.image && integer(*w, where + ".width", 0, ts::kMaxImageDimension) != d.image->width) fail(where, "the remade texture's width differs");
+    // A cube map (issue 26): the generator's image holds the six faces
+    // stacked, and "height" is a face's.
+    if (const Json* c = find(t, "cube")) d.cube = boolean(*c, where + ".cube");
+    if (d.cube && (!d.image || d.image->height != 6 * d.image->width))
+      fail(where, "a cube map needs an image of six stacked square faces");
     if (const Json* h = find(t, "height"))
-      if (d.image && integer(*h, where + ".height", 0, ts::kMaxImageDimension) != d.image->height) fail(where, "the remade texture's height differs");
+      if (d.image && integer(*h, where + ".height", 0, ts::kMaxImageDimension) * (d.cube ? 6 : 1) != d.image->height)
+        fail(where, "the remade texture's height differs");
     const Json& mips = member(t, "mipmaps", where);
     if (mips.is_boolean()) {
       if (mips.get<bool>()) fail(where, "mipmaps: true is not a kind of chain");
@@ -331,15 +349,22 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
         const std::string tw = bw + ".tex_gen", mode = text(member(*tg, "mode", tw), tw + ".mode");
         if (mode == "GL_OBJECT_LINEAR") b.texGen.mode = GL_OBJECT_LINEAR;
         else if (mode == "GL_EYE_LINEAR") b.texGen.mode = GL_EYE_LINEAR;
+        else if (readNormalTexGen(*tg, mode, tw, &b.texGen)) {}  // GL_SPHERE_MAP, GL_REFLECTION_MAP, GL_NORMAL_MAP
         else fail(tw + ".mode", "unknown texgen mode '" + mode + "'");
         const Json& coords = member(*tg, "coords", tw);
-        const Json& planes = member(*tg, "planes", tw);
+        const bool fromNormal = b.texGen.mode != GL_OBJECT_LINEAR && b.texGen.mode != GL_EYE_LINEAR;
+        const Json& planes = fromNormal ? Json::object() : member(*tg, "planes", tw);
         const std::string names = "strq";
         for (size_t ci = 0; ci < array(coords, tw + ".coords").size(); ++ci) {
           const std::string c = text(coords[ci], tw + ".coords");
           const size_t k = names.find(c);
           if (c.size() != 1 || k == std::string::npos) fail(tw + ".coords", "unknown coordinate '" + c + "'");
           b.texGen.coords |= 1u << k;
+          if (fromNormal) {
+            if (k > (b.texGen.mode == GL_SPHERE_MAP ? 1u : 2u))
+              fail(tw + ".coords", mode + " does not make '" + c + "' (GL_SPHERE_MAP: s, t; the others: s, t, r)");
+            continue;
+          }
           b.texGen.planes[k] = vec<4>(member(planes, c, tw + ".planes"), tw + ".planes." + c);
         }
         if (const Json* pm = find(*tg, "plane_modelview")) b.texGen.planeModelview = mat(*pm, tw + ".plane_modelview");
@@ -358,6 +383,8 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
         if (const Json* t = find(vv, "tex")) x.tex = vec<4>(*t, vw + ".tex");
         if (const Json* c = find(vv, "color")) x.color = vec<4>(*c, vw + ".color");
         if (const Json* c = find(vv, "secondary")) x.secondary = vec<3>(*c, vw + ".secondary");
+        if (const Json* n = find(vv, "normal")) x.normal = vec<3>(*n, vw + ".normal");
+        else if (b.texGen.needsNormal()) fail(vw, "texgen " + ts::glEnumName(b.texGen.mode) + " needs each vertex's normal");
         b.vertices.push_back(x);
       }
       p.batches.push_back(std::move(b));

@@ -1,0 +1,140 @@
+// The oracle against OpenGL on glTexGen's environment-mapping modes (issue
+// 26): a sphere of glNormal3f + glVertex3f under GL_SPHERE_MAP texgen on a
+// 2D texture, and under GL_REFLECTION_MAP / GL_NORMAL_MAP texgen on a cube
+// map (six faces of distinct texels, GL_NEAREST and GL_LINEAR), with a
+// texture matrix turning eye space.  The CPU reference computes (s, t[, r])
+// per vertex by the specification's formulas (reference/geometry.cpp:
+// envTexGen), interpolates them, and for the cube picks the face and its
+// (s, t) per fragment (reference.cpp: cubeFace, cubeFaceCoord).  Every GL
+// pixel must lie in the reference's legal range (tolerances from the
+// channel bits, verify.hpp) — and a description that is wrong in one
+// respect (normals of another length, two cube faces swapped, the texture matrix
+// left out) must make many pixels invalid.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "common/core/mesh.hpp"
+#include "oracle_support.hpp"
+#include "reference/reference.hpp"
+
+namespace {
+// A sphere of radius 1 (24 x 12 quads), each vertex with its normal, in a
+// panel looking at it from 3 units away, turned so no axis faces the eye.
+ts::Frame sphereFrame(int texture, const ts::TextureDesc& t, GLenum mode, unsigned coords, float normalScale = 1.0f) {
+  ts::Frame f;
+  f.width = f.height = 200;
+  f.clearColor = {0.1f, 0.1f, 0.1f, 1.0f};
+  f.textures.push_back(t);
+  ts::Panel p;
+  p.id = "p";
+  p.viewport = {0, 0, 200, 200};
+  p.projection = glm::perspective(glm::radians(45.0f), 1.0f, 0.5f, 10.0f);
+  p.modelview = glm::rotate(glm::rotate(glm::translate(glm::mat4(1.0f), {0, 0, -3.2f}), 0.4f, glm::vec3(1, 0, 0)), 0.7f,
+                            glm::vec3(0, 1, 0));
+  p.depthTest = true;
+  ts::Batch b;
+  b.role = "surface";
+  b.texture = texture;
+  b.texGen.mode = mode;
+  b.texGen.coords = coords;
+  auto noTex = [](int, int) { return glm::dvec2(0.0); };
+  const ts::Mesh m = ts::parametricGrid(24, 12, true, false, [](int i, int j) { return ts::spherePoint(1.0, 24, 12, i, j); }, noTex);
+  for (unsigned i : m.triangles()) {
+    ts::Vertex v;
+    v.pos = glm::vec3(m.points[i].pos);
+    v.normal = normalScale * glm::vec3(m.points[i].normal);
+    b.vertices.push_back(v);
+  }
+  p.batches.push_back(b);
+  f.panels.push_back(p);
+  return f;
+}
+
+// Six faces of `n` x `n` texels, each face its own hue, each texel distinct.
+ts::TextureDesc cubeTexture(int n, GLenum filter, bool swapX = false) {
+  auto img = std::make_shared<ts::Image>(n, 6 * n);
+  const uint8_t hue[6][3] = {{230, 40, 40}, {40, 200, 60}, {50, 70, 230}, {230, 210, 40}, {40, 220, 220}, {220, 50, 220}};
+  for (int face = 0; face < 6; ++face) {
+    const int src = swapX && face < 2 ? 1 - face : face;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        img->set(i, face * n + j, {uint8_t(hue[src][0] * (4 + (i % 4)) / 7), uint8_t(hue[src][1] * (4 + (j % 4)) / 7),
+                                   uint8_t(hue[src][2] * (3 + ((i + j) % 5)) / 7), 255});
+  }
+  ts::TextureDesc t;
+  t.name = std::string("oracle_cube") + (swapX ? "_swapped" : "");  // not a sidecar generator: GL tests only
+  t.params = {{"size", std::to_string(n)}};
+  t.image = img;
+  t.cube = true;
+  t.minFilter = t.magFilter = filter;
+  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
+  return t;
+}
+
+TEST(GLEnvironmentTexGen, SphereMapOnA2DTexture) {
+  for (GLenum filter : {GL_NEAREST, GL_LINEAR})
+    for (float scale : {1.0f, 0.8f}) {  // 0.8: GL_NORMALIZE is off, GL uses the normal as given
+      const std::string n = std::string("sphere_map_") + (filter == GL_NEAREST ? "nearest" : "linear") +
+                            (scale == 1.0f ? "" : "_short_normals");
+      SCOPED_TRACE(n);
+      ts::TextureDesc t = oracle::colourful(16);
+      t.minFilter = t.magFilter = filter;
+      t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
+      const ts::Frame f = sphereFrame(0, t, GL_SPHERE_MAP, ts::TexGen::S | ts::TexGen::T, scale);
+      const ts::Image img = oracle::render(f);
+      ref::VerifyResult r = ref::verifyImage(img, f, oracle::options(n, "envmap"));
+      std::printf("%s\n", r.summary().c_str());
+      EXPECT_EQ(r.invalid, 0) << r.summary();
+      EXPECT_GT(r.textured, 200 * 200 / 4) << r.summary();
+      // The other normal length in the description: r = u - 2 (n.u) n changes
+      // (flipping n would not: r is even in n), and the check must see it.
+      const ts::Frame wrong = sphereFrame(0, t, GL_SPHERE_MAP, ts::TexGen::S | ts::TexGen::T, scale == 1.0f ? 0.8f : 1.0f);
+      ref::VerifyResult bad = ref::verifyImage(img, wrong, oracle::options(n + "_other_length", "envmap_negative"));
+      EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
+    }
+}
+
+TEST(GLEnvironmentTexGen, ReflectionMapOnACubeMap) {
+  for (GLenum filter : {GL_NEAREST, GL_LINEAR}) {
+    const std::string n = std::string("reflection_map_") + (filter == GL_NEAREST ? "nearest" : "linear");
+    SCOPED_TRACE(n);
+    const unsigned str = ts::TexGen::S | ts::TexGen::T | ts::TexGen::R;
+    ts::Frame f = sphereFrame(0, cubeTexture(8, filter), GL_REFLECTION_MAP, str);
+    // The texture matrix turns the eye-space r (as EnvGL turns it into the world's).
+    f.panels[0].batches[0].textureMatrix = glm::rotate(glm::mat4(1.0f), 0.5f, glm::vec3(0.3f, 1.0f, 0.2f));
+    const ts::Image img = oracle::render(f);
+    ref::VerifyResult r = ref::verifyImage(img, f, oracle::options(n, "envmap"));
+    std::printf("%s\n", r.summary().c_str());
+    EXPECT_EQ(r.invalid, 0) << r.summary();
+    EXPECT_GT(r.textured, 200 * 200 / 4) << r.summary();
+    // +X and -X swapped in the description: the pixels that read them fail.
+    ts::Frame swapped = f;
+    swapped.textures[0] = cubeTexture(8, filter, true);
+    ref::VerifyResult bad = ref::verifyImage(img, swapped, oracle::options(n + "_swapped", "envmap_negative"));
+    std::printf("%s\n", bad.summary().c_str());
+    EXPECT_GT(bad.invalid, 500) << bad.summary();
+    // Without the texture matrix.
+    ts::Frame plain = f;
+    plain.panels[0].batches[0].textureMatrix = glm::mat4(1.0f);
+    ref::VerifyResult bad2 = ref::verifyImage(img, plain, oracle::options(n + "_no_matrix", "envmap_negative"));
+    EXPECT_GT(bad2.invalid, bad2.textured / 4) << bad2.summary();
+  }
+}
+
+TEST(GLEnvironmentTexGen, NormalMapOnACubeMap) {
+  const ts::Frame f = sphereFrame(0, cubeTexture(8, GL_NEAREST), GL_NORMAL_MAP,
+                                  ts::TexGen::S | ts::TexGen::T | ts::TexGen::R);
+  const ts::Image img = oracle::render(f);
+  ref::VerifyResult r = ref::verifyImage(img, f, oracle::options("normal_map", "envmap"));
+  std::printf("%s\n", r.summary().c_str());
+  EXPECT_EQ(r.invalid, 0) << r.summary();
+  EXPECT_GT(r.textured, 200 * 200 / 4) << r.summary();
+  const ts::Frame wrong = sphereFrame(0, cubeTexture(8, GL_NEAREST), GL_REFLECTION_MAP,
+                                      ts::TexGen::S | ts::TexGen::T | ts::TexGen::R);
+  ref::VerifyResult bad = ref::verifyImage(img, wrong, oracle::options("normal_map_as_reflection", "envmap_negative"));
+  EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
+}
+}  // namespace
