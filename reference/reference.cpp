@@ -84,6 +84,31 @@ void Reference::addCubeFaces(const ts::Frame& f) {
   }
 }
 
+void Reference::addVolumes(const ts::Frame& f) {
+  volumeOf_.assign(f.textures.size(), -1);
+  for (size_t i = 0; i < f.textures.size(); ++i) {
+    const ts::TextureDesc& d = f.textures[i];
+    if (d.depth <= 1 || !d.image || d.image->height % d.depth != 0) continue;
+    Volume v;
+    v.first = int(textures_.size()), v.depth = d.depth, v.wrapR = d.wrapR;
+    const int w = d.image->width, h = d.image->height / d.depth;
+    for (int k = 0; k < d.depth; ++k) {
+      ts::TextureDesc sd = d;
+      sd.depth = 1;
+      sd.mipmaps = false;
+      sd.mipLevels = nullptr;
+      auto img = std::make_shared<ts::Image>(w, h);
+      std::copy_n(d.image->pixels.begin() + std::ptrdiff_t(size_t(k) * size_t(w) * size_t(h) * 4),
+                  size_t(w) * size_t(h) * 4, img->pixels.begin());
+      sd.image = img;
+      sd.name += "[slice " + std::to_string(k) + "]";
+      textures_.emplace_back(sd);
+    }
+    volumeOf_[i] = int(volumes_.size());
+    volumes_.push_back(v);
+  }
+}
+
 bool Reference::cubeCandidate(const ScreenPoly& P, double x, double y, int firstFace, bool alternative,
                               Candidate* c) const {
   int alt = -1;
@@ -141,6 +166,7 @@ Reference::Reference(const ts::Frame& f, const RenderOptions& o) : opts_(o), wid
   pool_.reserve(size_t(f.width) * size_t(f.height) / 2);
   for (const auto& t : f.textures) textures_.emplace_back(t);
   addCubeFaces(f);
+  addVolumes(f);
   for (const auto& p : f.panels) drawPanel(p);
   if (opts_.labels) drawLabels(f);
 }
@@ -269,6 +295,17 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
   // face and its (s, t) are chosen per fragment from the interpolated (s, t, r).
   const int cubeFirst = tex ? cubeFirstFace_[size_t(b.texture)] : -1;
   if (cubeFirst >= 0) tex = &textures_[size_t(cubeFirst)];
+  // A 3D texture: sampled at (s, t, r) through its slices (volume.hpp), the
+  // LOD from (s, t) on a slice; modelled with minFilter == magFilter only.
+  const int volumeIndex = tex && cubeFirst < 0 ? volumeOf_[size_t(b.texture)] : -1;
+  if (volumeIndex >= 0) {
+    tex = &textures_[size_t(volumes_[size_t(volumeIndex)].first)];
+    if (tex->desc().minFilter != tex->desc().magFilter && proto.kind == Candidate::Kind::Textured) {
+      proto.kind = Candidate::Kind::Exempt;
+      proto.why = Exempt::Unsupported;
+      note("a 3D texture with different min and mag filters is not modelled: its pixels are exempt");
+    }
+  }
   const bool needLod = tex && (tex->mipmapped() || tex->desc().minFilter != tex->desc().magFilter);
 
   for (size_t i = 0; i + 2 < b.vertices.size(); i += 3) {
@@ -326,8 +363,19 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
         cubeCandidate(P, x, y, cubeFirst, false, &c);
       } else if (c.kind == Candidate::Kind::Textured) {
         P.coord(x, y, &c.s, &c.t);
+        if (volumeIndex >= 0) {
+          c.volume = volumeIndex;
+          c.texture = volumes_[size_t(volumeIndex)].first;
+          c.r = P.P[kR].at(x, y) / P.P[kQ].at(x, y);
+        }
         if (P.constantDeriv) c.lodLo = constLo, c.lodHi = constHi, c.rho = constRho;
         else lodAt(x, y, &c.lodLo, &c.lodHi, &c.rho);
+        if (volumeIndex >= 0) {  // the position jitter in r: slices per pixel
+          auto rAt = [&](double u, double v) { return P.P[kR].at(u, v) / P.P[kQ].at(u, v); };
+          const double slices = std::max(std::abs(rAt(x + 0.5, y) - rAt(x - 0.5, y)), std::abs(rAt(x, y + 0.5) - rAt(x, y - 0.5))) *
+                                volumes_[size_t(volumeIndex)].depth;
+          c.rho = std::max(c.rho, float(slices));
+        }
       }
       return c;
     };
@@ -344,6 +392,8 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       Colour texel{};
       if (tex && cubeFirst >= 0) {
         texel = cubeSample(P, x + 0.5, y + 0.5, cubeFirst);
+      } else if (tex && volumeIndex >= 0) {
+        texel = volume(volumeIndex).sample(a[kS] / a[kQ], a[kT] / a[kQ], a[kR] / a[kQ], tex->lod(P.deriv(x + 0.5, y + 0.5)));
       } else if (tex) {
         double s, t;
         P.coordFrom(a[kS] / a[kQ], a[kT] / a[kQ], &s, &t);

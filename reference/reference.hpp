@@ -33,6 +33,7 @@
 #include "geometry.hpp"
 #include "raster.hpp"
 #include "sampler.hpp"
+#include "volume.hpp"
 
 namespace ref {
 enum class Interpolation { Perspective, Affine };
@@ -72,6 +73,10 @@ struct Candidate {
   float lodLo = 0, lodHi = 0;  // lambda_base interval (without bias), margin included
   float rho = 0;               // texels per pixel (for position jitter)
   float z = 1;
+  // A 3D texture (volume.hpp): Reference::volume(volume) samples it at
+  // (s, t, r); `texture` is then its first slice.  -1: a 2D texture.
+  int volume = -1;
+  double r = 0;
 };
 
 class Reference {
@@ -87,6 +92,12 @@ class Reference {
   const Candidate& candidate(int i) const { return pool_[size_t(i)]; }
   const Colour& clearColour() const { return clear_; }
   const std::vector<Texture>& textures() const { return textures_; }
+  // The 3D textures a candidate's `volume` indexes (their slices are textures()).
+  Volume volume(int i) const {
+    Volume v = volumes_[size_t(i)];
+    v.textures = &textures_;
+    return v;
+  }
   // A copy with the frame's labels drawn and exempt (for an image rendered
   // with labels, from a reference made with RenderOptions::labels off).
   Reference withLabels(const ts::Frame& frame, bool geometryKnown = true) const;
@@ -105,6 +116,11 @@ class Reference {
   bool cubeCandidate(const ScreenPoly& P, double x, double y, int firstFace, bool alternative, Candidate* c) const;
   Colour cubeSample(const ScreenPoly& P, double x, double y, int firstFace) const;
   std::vector<int> cubeFirstFace_;
+  // 3D textures: each one's slices as 2D textures appended to textures_;
+  // volumeOf_[frame texture] indexes volumes_ (-1: not 3D).
+  void addVolumes(const ts::Frame& f);
+  std::vector<Volume> volumes_;
+  std::vector<int> volumeOf_;
   void place(int x, int y, const Candidate& c, bool sure, bool depthTest);
   void exemptDisc(double x, double y, double r, Exempt why, PixelRect clip);
   void note(const std::string& s);

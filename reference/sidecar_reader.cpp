@@ -258,8 +258,20 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
     if (const Json* c = find(t, "cube")) d.cube = boolean(*c, where + ".cube");
     if (d.cube && (!d.image || d.image->height != 6 * d.image->width))
       fail(where, "a cube map needs an image of six stacked square faces");
+    // A 3D texture: the generator's image holds the `depth` slices stacked,
+    // and "height" is a slice's.
+    if (const Json* dp = find(t, "depth")) {
+      d.depth = integer(*dp, where + ".depth", 1, ts::kMaxImageDimension);
+      if (d.cube && d.depth > 1) fail(where, "a texture is a cube map or 3D, not both");
+      if (!d.image || d.image->height % d.depth != 0) fail(where, "a 3D texture needs an image of depth stacked slices");
+      try {
+        d.wrapR = glEnumFromName(text(member(t, "wrap_r", where), where + ".wrap_r"));
+      } catch (const ts::Error& e) {
+        fail(where, e.what());
+      }
+    }
     if (const Json* h = find(t, "height"))
-      if (d.image && integer(*h, where + ".height", 0, ts::kMaxImageDimension) * (d.cube ? 6 : 1) != d.image->height)
+      if (d.image && integer(*h, where + ".height", 0, ts::kMaxImageDimension) * (d.cube ? 6 : d.depth) != d.image->height)
         fail(where, "the remade texture's height differs");
     const Json& mips = member(t, "mipmaps", where);
     if (mips.is_boolean()) {
@@ -287,7 +299,6 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
       fail(where, e.what());
     }
     if (const Json* b = find(t, "border")) d.border = vec<4>(*b, where + ".border");
-    if (find(t, "depth")) fail(where, "3D textures (depth) are not modelled by the reference");
     if (const Json* a = find(t, "max_anisotropy")) d.maxAnisotropy = float(number(*a, where));
     if (const Json* b = find(t, "lod_bias")) d.lodBias = float(number(*b, where));
     f.textures.push_back(std::move(d));

@@ -138,3 +138,58 @@ TEST(GLEnvironmentTexGen, NormalMapOnACubeMap) {
   EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
 }
 }  // namespace
+
+// 3D textures (TextureDesc::depth > 1, GL_TEXTURE_3D): a square whose
+// (s, t, r) run across the volume and beyond it, r along a diagonal, so
+// every pixel's texel (GL_NEAREST) or trilinear blend (GL_LINEAR) depends
+// on r; wrapR REPEAT and CLAMP_TO_EDGE.  The reference samples the slices
+// (reference/volume.hpp); describing the render with r shifted by one slice
+// must fail.
+namespace {
+ts::TextureDesc volumeTexture(int n, GLenum filter, GLenum wrapR) {
+  auto img = std::make_shared<ts::Image>(n, n * n);
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        img->set(i, k * n + j, {uint8_t(30 + (i * 53 + k * 29) % 200), uint8_t(20 + (j * 61 + k * 17) % 220),
+                                uint8_t(25 + (k * 71 + i * 11 + j * 5) % 210), 255});
+  ts::TextureDesc t;
+  t.name = "oracle_volume";  // not a sidecar generator: GL tests only
+  t.params = {{"size", std::to_string(n)}};
+  t.image = img;
+  t.depth = n;
+  t.minFilter = t.magFilter = filter;
+  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
+  t.wrapR = wrapR;
+  return t;
+}
+ts::Frame volumeFrame(const ts::TextureDesc& t, float rShift = 0.0f) {
+  ts::Frame f;
+  f.width = f.height = 160;
+  f.addTexture(t);
+  ts::Panel p = oracle::unitPanel(160, 160);
+  ts::Batch b = oracle::quad({0, 0}, {1, 1}, {-0.1f, -0.1f}, {1.1f, 1.1f}, 0);
+  for (ts::Vertex& v : b.vertices) v.tex.z = -0.3f + 1.6f * 0.5f * (v.pos.x + v.pos.y) + rShift;
+  p.batches.push_back(b);
+  f.panels.push_back(p);
+  return f;
+}
+}  // namespace
+
+TEST(GLVolumeTexture, NearestAndTrilinearInR) {
+  for (GLenum filter : {GL_NEAREST, GL_LINEAR})
+    for (GLenum wrapR : {GL_REPEAT, GL_CLAMP_TO_EDGE}) {
+      const std::string n = std::string("volume_") + (filter == GL_NEAREST ? "nearest" : "linear") +
+                            (wrapR == GL_REPEAT ? "_repeat" : "_clamp");
+      SCOPED_TRACE(n);
+      const ts::Frame f = volumeFrame(volumeTexture(8, filter, wrapR));
+      const ts::Image img = oracle::render(f);
+      ref::VerifyResult r = ref::verifyImage(img, f, oracle::options(n, "volume"));
+      std::printf("%s\n", r.summary().c_str());
+      EXPECT_EQ(r.invalid, 0) << r.summary();
+      EXPECT_GT(r.textured, 160 * 160 * 9 / 10) << r.summary();
+      const ts::Frame shifted = volumeFrame(volumeTexture(8, filter, wrapR), 1.0f / 8);
+      ref::VerifyResult bad = ref::verifyImage(img, shifted, oracle::options(n + "_shifted", "volume_negative"));
+      EXPECT_GT(bad.invalid, bad.checked / 4) << bad.summary();
+    }
+}

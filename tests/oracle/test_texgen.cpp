@@ -199,4 +199,23 @@ TEST(TexGen, SidecarRoundTripsEnvironmentTexGenAndCubeMaps) {
   bad.replace(bad.find("\"GL_REFLECTION_MAP\""), 19, "\"GL_SPHERE_MAP\"");
   EXPECT_THROW(ref::readSidecar(bad), ts::Error);
 }
+// A 3D texture through a sidecar: depth, a slice's height and wrap_r come
+// back (the reader refused depth before); a depth that does not divide the
+// remade image is refused.
+TEST(TexGen, SidecarRoundTrips3DTextures) {
+  ts::Frame f;
+  f.width = f.height = 8;
+  ts::TextureDesc t = ts::gradientTexture(4, 16, false);
+  t.depth = 4;
+  t.wrapR = GL_MIRRORED_REPEAT;
+  f.addTexture(t);
+  const std::string json = ts::sidecarJson(f, ts::SidecarInfo{});
+  ref::SidecarScene got = ref::readSidecar(json);
+  ASSERT_EQ(got.frame.textures.size(), 1u);
+  EXPECT_EQ(got.frame.textures[0].depth, 4);
+  EXPECT_EQ(got.frame.textures[0].wrapR, GLenum(GL_MIRRORED_REPEAT));
+  std::string bad = json;
+  bad.replace(bad.find("\"depth\": 4"), 11, "\"depth\": 3");
+  EXPECT_THROW(ref::readSidecar(bad), ts::Error);
+}
 }  // namespace
