@@ -5,6 +5,7 @@
 
 #include "common/core/error.hpp"
 #include "common/core/text.hpp"
+#include "verify.hpp"
 
 namespace ref {
 const char* exemptName(Exempt e) {
@@ -61,6 +62,81 @@ Deriv cubeFaceDeriv(const ScreenPoly& P, int face, double x, double y) {
   return {s1 - s0, s3 - s2, t1 - t0, t3 - t2};
 }
 }  // namespace
+
+// Nested frames (issue 26): the texture's frame recomputed by a Reference
+// of its own (the same options but a narrower edge band), its picture the texture's image.  Each
+// texel keeps how wide the union of that frame's pixel's legal colour
+// ranges is (GL's pixel lies in it, give or take the verifier's
+// tolerance); where that frame's pixel is exempt (a line, a label, an
+// unmodelled program) or wider than kNestedKnownSteps (a silhouette: the
+// object on one side, the background on the other) the texel is unknown.
+// An outer fragment reading an unknown texel is exempt (Exempt::Edge: an
+// edge of the nested picture); one reading known texels gets their widest
+// range plus the tolerance as its slack (Candidate::slack, verify.cpp).  An
+// edge between two triangles of one textured surface stays known: both
+// sides agree.
+ts::TextureDesc Reference::nestedTexture(const ts::TextureDesc& t, size_t index) {
+  constexpr float kNestedKnownSteps = 24.0f;
+  // The edge band of the nested frame: GL snaps window coordinates to at
+  // least GL_SUBPIXEL_BITS = 4 bits (the specification's minimum), so a
+  // pixel centre more than 1/8 pixel inside a triangle is covered by it on
+  // any conformant rasterizer.  The outer frame's 1-pixel band would leave
+  // the background legal beside every edge between two triangles of one
+  // surface, and the picture unknown along all of them.
+  RenderOptions innerOptions = opts_;
+  innerOptions.edgeBand = std::min(opts_.edgeBand, 0.125);
+  const Reference inner(*t.renderedFrom, innerOptions);
+  for (const std::string& n : inner.notes()) note("the frame of texture '" + t.name + "': " + n);
+  ts::TextureDesc d = t;
+  d.image = std::make_shared<ts::Image>(inner.image());
+  NestedTexels known;
+  known.w = inner.width(), known.h = inner.height();
+  known.width.assign(size_t(known.w) * size_t(known.h), -1.0f);
+  VerifyOptions vo;
+  vo.render = innerOptions;
+  known.tolerance = float(vo.tolerance) / 255.0f;
+  std::vector<Box> boxes;
+  for (int y = 0; y < known.h; ++y)
+    for (int x = 0; x < known.w; ++x) {
+      Exempt why;
+      legalAt(inner, x, y, vo, &boxes, &why);
+      if (why != Exempt::None || boxes.empty()) continue;
+      float width = 0;
+      for (size_t k = 0; k < 4; ++k) {
+        float lo = 2, hi = -1;
+        for (const Box& b : boxes) lo = std::min(lo, b.lo[k]), hi = std::max(hi, b.hi[k]);
+        width = std::max(width, hi - lo);
+      }
+      // Texel (x, y) is pixel (x, y): the texture's image is the frame's
+      // picture as Renderer::render returns it (row 0 the top).
+      if (width * 255.0f <= kNestedKnownSteps) known.width[size_t(y) * size_t(known.w) + size_t(x)] = width;
+    }
+  nested_.resize(std::max(nested_.size(), index + 1));
+  nested_[index] = std::move(known);
+  return d;
+}
+
+float Reference::nestedSlack(int texture, double s, double t, double rho) const {
+  if (size_t(texture) >= nested_.size() || nested_[size_t(texture)].width.empty()) return 0.0f;
+  const NestedTexels& n = nested_[size_t(texture)];
+  const ts::TextureDesc& d = textures_[size_t(texture)].desc();
+  // The texels GL_NEAREST and GL_LINEAR read for a coordinate within eps
+  // texels of (s, t): the verifier's jitter (1/128 texel plus 1/128 pixel),
+  // with room to spare.
+  const double eps = 1.0 / 32 + rho / 32;
+  const double u = s * n.w, v = t * n.h;
+  float widest = 0;
+  for (int j = int(std::floor(v - 0.5 - eps)); j <= int(std::floor(v + 0.5 + eps)); ++j)
+    for (int i = int(std::floor(u - 0.5 - eps)); i <= int(std::floor(u + 0.5 + eps)); ++i) {
+      const int wi = wrapTexel(d.wrapS == GL_CLAMP ? GL_CLAMP_TO_EDGE : d.wrapS, i, n.w);
+      const int wj = wrapTexel(d.wrapT == GL_CLAMP ? GL_CLAMP_TO_EDGE : d.wrapT, j, n.h);
+      if (wi < 0 || wj < 0 || wi >= n.w || wj >= n.h) continue;  // the border colour: known
+      const float w = n.width[size_t(wj) * size_t(n.w) + size_t(wi)];
+      if (w < 0) return -1.0f;
+      widest = std::max(widest, w);
+    }
+  return widest + n.tolerance;
+}
 
 void Reference::addCubeFaces(const ts::Frame& f) {
   cubeFirstFace_.assign(f.textures.size(), -1);
@@ -164,7 +240,8 @@ Reference::Reference(const ts::Frame& f, const RenderOptions& o) : opts_(o), wid
   depth_.assign(size_t(f.width) * size_t(f.height), 1.0f);
   head_.assign(size_t(f.width) * size_t(f.height), -1);
   pool_.reserve(size_t(f.width) * size_t(f.height) / 2);
-  for (const auto& t : f.textures) textures_.emplace_back(t);
+  for (size_t i = 0; i < f.textures.size(); ++i)
+    textures_.emplace_back(f.textures[i].renderedFrom ? nestedTexture(f.textures[i], i) : f.textures[i]);
   addCubeFaces(f);
   addVolumes(f);
   for (const auto& p : f.panels) drawPanel(p);
@@ -370,6 +447,11 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
         }
         if (P.constantDeriv) c.lodLo = constLo, c.lodHi = constHi, c.rho = constRho;
         else lodAt(x, y, &c.lodLo, &c.lodHi, &c.rho);
+        c.slack = nestedSlack(c.texture, c.s, c.t, c.rho);
+        if (c.slack < 0) {  // reads an edge of a nested frame's picture
+          c.kind = Candidate::Kind::Exempt;
+          c.why = Exempt::Edge;
+        }
         if (volumeIndex >= 0) {  // the position jitter in r: slices per pixel
           auto rAt = [&](double u, double v) { return P.P[kR].at(u, v) / P.P[kQ].at(u, v); };
           const double slices = std::max(std::abs(rAt(x + 0.5, y) - rAt(x - 0.5, y)), std::abs(rAt(x, y + 0.5) - rAt(x, y - 0.5))) *

@@ -77,6 +77,9 @@ struct Candidate {
   // (s, t, r); `texture` is then its first slice.  -1: a 2D texture.
   int volume = -1;
   double r = 0;
+  // A nested frame's picture (issue 26): how far GL's texels may lie from
+  // the reference's, added to both ends of the legal ranges.
+  float slack = 0;
 };
 
 class Reference {
@@ -121,6 +124,18 @@ class Reference {
   void addVolumes(const ts::Frame& f);
   std::vector<Volume> volumes_;
   std::vector<int> volumeOf_;
+  // Nested frames (TextureDesc::renderedFrom): the texture recomputed from
+  // its frame, and how wide each texel's legal range is there (-1: unknown).
+  struct NestedTexels {
+    int w = 0, h = 0;
+    std::vector<float> width;
+    float tolerance = 0;
+  };
+  ts::TextureDesc nestedTexture(const ts::TextureDesc& t, size_t index);
+  // The slack of a fragment at (s, t) of texture `texture` (0: not nested,
+  // -1: it reads an unknown texel).
+  float nestedSlack(int texture, double s, double t, double rho) const;
+  std::vector<NestedTexels> nested_;
   void place(int x, int y, const Candidate& c, bool sure, bool depthTest);
   void exemptDisc(double x, double y, double r, Exempt why, PixelRect clip);
   void note(const std::string& s);

@@ -180,6 +180,9 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
                   "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, file)");
 }
 
+constexpr int kMaxNesting = 4;  // frames inside frames: a texture's rendered_from, at most this deep
+static void readFrame(const Json& doc, const std::string& baseDir, int nesting, SidecarScene& out);
+
 static SidecarScene read(const std::string& jsonText, const std::string& baseDir) {
   Json doc;
   try {
@@ -200,6 +203,14 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
   if (const Json* st = find(doc, "state"))
     for (const auto& [k, v] : object(*st, "state").items()) out.state.emplace_back(k, text(v, "state." + k));
 
+  readFrame(doc, baseDir, 0, out);
+  return out;
+}
+
+// The frame's keys of a sidecar object (the document, or a texture's
+// "rendered_from": a nested frame, issue 26) into out.frame; `nesting`
+// counts the frames around it (at most kMaxNesting).
+static void readFrame(const Json& doc, const std::string& baseDir, int nesting, SidecarScene& out) {
   ts::Frame& f = out.frame;
   const Json& size = member(doc, "size", "document");
   if (!size.is_array() || size.size() != 2) fail("size", "expected [width, height]");
@@ -246,10 +257,31 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
     if (const Json* pv = find(t, "params"))
       for (const auto& [k, v] : object(*pv, where + ".params").items()) params.emplace_back(k, text(v, where + ".params." + k));
     ts::TextureDesc d;
-    try {
-      d = remakeTexture(name, params, baseDir);
-    } catch (const ts::Error& e) {
-      fail(where, e.what());
+    if (const Json* rf = find(t, "rendered_from")) {
+      // A nested frame (issue 26): the texture is that frame's picture,
+      // which the reference recomputes; no generator, no image here.
+      if (nesting >= kMaxNesting) fail(where + ".rendered_from", "frames nested deeper than " + std::to_string(kMaxNesting));
+      SidecarScene inner;
+      try {
+        readFrame(object(*rf, where + ".rendered_from"), baseDir, nesting + 1, inner);
+      } catch (const ts::Error& e) {
+        std::string what = e.what();
+        if (what.rfind("sidecar: ", 0) == 0) what = what.substr(9);
+        fail(where + ".rendered_from", what);
+      }
+      d.name = name, d.params = params;
+      const ts::Frame& nf = inner.frame;
+      if (const Json* w = find(t, "width"))
+        if (integer(*w, where + ".width", 0, ts::kMaxImageDimension) != nf.width) fail(where, "width differs from its frame's");
+      if (const Json* h = find(t, "height"))
+        if (integer(*h, where + ".height", 0, ts::kMaxImageDimension) != nf.height) fail(where, "height differs from its frame's");
+      d.renderedFrom = std::make_shared<const ts::Frame>(nf);
+    } else {
+      try {
+        d = remakeTexture(name, params, baseDir);
+      } catch (const ts::Error& e) {
+        fail(where, e.what());
+      }
     }
     if (const Json* w = find(t, "width"))
       if (d.image && integer(*w, where + ".width", 0, ts::kMaxImageDimension) != d.image->width) fail(where, "the remade texture's width differs");
@@ -427,7 +459,6 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
       if (const Json* b = find(lv, "background")) l.background = vec<4>(*b, where + ".background");
       f.labels.push_back(std::move(l));
     }
-  return out;
 }
 
 SidecarScene readSidecar(const std::string& jsonText) { return read(jsonText, ""); }

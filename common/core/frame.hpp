@@ -18,6 +18,7 @@
 #include "common/core/image.hpp"
 
 namespace ts {
+struct Frame;  // a texture may be the render of another Frame (TextureDesc::renderedFrom)
 struct Vertex {
   glm::vec3 pos{0.0f};
   glm::vec4 tex{0.0f, 0.0f, 0.0f, 1.0f};  // (s, t, r, q): q != 1 for projective maps
@@ -57,6 +58,12 @@ struct TextureDesc {
   // +Z, -Z (face f in rows f*w .. f*w+w-1, row 0 of a face its t = 0), each
   // uploaded to GL_TEXTURE_CUBE_MAP_POSITIVE_X + f.  No mipmaps.
   bool cube = false;
+  // --- nested frames (issue 26) ---
+  // The Frame whose render `image` is (a pass a demo drew itself, e.g. a
+  // texgen picture): the sidecar writes it as "rendered_from" in the
+  // texture's entry, and the CPU reference recomputes that frame first and
+  // uses its picture as this texture.  The frame's size is the image's.
+  std::shared_ptr<const Frame> renderedFrom;
   float maxAnisotropy = 1.0f;
   float lodBias = 0.0f;
   // A texture the scene drew itself for this frame (a live view, see

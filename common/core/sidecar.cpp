@@ -137,33 +137,19 @@ std::string glEnumName(GLenum e) {
   }
 }
 
-std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
-  Json d;
-  d["figure"] = info.figureId;
-  d["book_number"] = info.bookNumber;
-  d["caption"] = info.caption;
-  d["demo"] = info.demo;
-  d["command"] = info.command;
-  d["state"] = Json::object();
-  for (const auto& [k, v] : info.state) d["state"][k] = v;
-  d["measurements"] = Json::object();
-  for (const Measurement& m : info.measurements) d["measurements"][m.name] = num(m.value);
-  if (!info.inspect.empty()) {
-    d["inspect"] = Json::array();
-    for (const std::string& o : info.inspect) d["inspect"].push_back(Json::parse(o));
-  }
-  d["conventions"] =
-      "matrices column-major as glLoadMatrixf takes them; viewports in pixels from the top-left of the image; "
-      "texture row 0 is t = 0; vertex tex is (s,t,r,q)";
-  if (!info.renderer.empty()) d["renderer"] = info.renderer;
+// The frame's own keys, in the sidecar's order (the fixed state after the
+// size at the top level; a nested frame, TextureDesc::renderedFrom, shares
+// the top level's fixed state and writes none).
+static void frameInto(Json& d, const Frame& f, bool withFixedState) {
   d["size"] = {f.width, f.height};
-  d["fixed_state"] = {
-      {"blend_func", {glEnumName(FixedState::blendSrc), glEnumName(FixedState::blendDst),
-                      glEnumName(FixedState::blendSrcAlpha), glEnumName(FixedState::blendDstAlpha)}},
-      {"depth_func", glEnumName(FixedState::depthFunc)},
-      {"shade_model", glEnumName(FixedState::shadeModel)},
-      {"cull_face", FixedState::cullFace},
-      {"lighting", FixedState::lighting}};
+  if (withFixedState)
+    d["fixed_state"] = {
+        {"blend_func", {glEnumName(FixedState::blendSrc), glEnumName(FixedState::blendDst),
+                        glEnumName(FixedState::blendSrcAlpha), glEnumName(FixedState::blendDstAlpha)}},
+        {"depth_func", glEnumName(FixedState::depthFunc)},
+        {"shade_model", glEnumName(FixedState::shadeModel)},
+        {"cull_face", FixedState::cullFace},
+        {"lighting", FixedState::lighting}};
   d["clear_color"] = vec(f.clearColor);
   d["perspective_correction_hint"] = f.perspectiveHint == GL_FASTEST  ? "GL_FASTEST"
                                      : f.perspectiveHint == GL_NICEST ? "GL_NICEST"
@@ -189,6 +175,11 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
       textures.back()["depth"] = t.depth;
       textures.back()["height"] = t.image ? t.image->height / t.depth : 0;
       textures.back()["wrap_r"] = glEnumName(t.wrapR);
+    }
+    if (t.renderedFrom) {  // a nested frame (issue 26): the frame this texture is the render of
+      Json nested;
+      frameInto(nested, *t.renderedFrom, false);
+      textures.back()["rendered_from"] = nested;
     }
     if (t.cube) {  // a cube map (issue 26): only then; height is a face's
       textures.back()["cube"] = true;
@@ -269,6 +260,28 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
                       {"color", vec(l.color)},
                       {"background", vec(l.background)}});
   d["labels"] = labels;
+}
+
+std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
+  Json d;
+  d["figure"] = info.figureId;
+  d["book_number"] = info.bookNumber;
+  d["caption"] = info.caption;
+  d["demo"] = info.demo;
+  d["command"] = info.command;
+  d["state"] = Json::object();
+  for (const auto& [k, v] : info.state) d["state"][k] = v;
+  d["measurements"] = Json::object();
+  for (const Measurement& m : info.measurements) d["measurements"][m.name] = num(m.value);
+  if (!info.inspect.empty()) {
+    d["inspect"] = Json::array();
+    for (const std::string& o : info.inspect) d["inspect"].push_back(Json::parse(o));
+  }
+  d["conventions"] =
+      "matrices column-major as glLoadMatrixf takes them; viewports in pixels from the top-left of the image; "
+      "texture row 0 is t = 0; vertex tex is (s,t,r,q)";
+  if (!info.renderer.empty()) d["renderer"] = info.renderer;
+  frameInto(d, f, true);
 
   std::string out = "{";
   bool first = true;

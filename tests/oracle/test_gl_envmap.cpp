@@ -193,3 +193,66 @@ TEST(GLVolumeTexture, NearestAndTrilinearInR) {
       EXPECT_GT(bad.invalid, bad.checked / 4) << bad.summary();
     }
 }
+
+// Nested frames (TextureDesc::renderedFrom): a panel showing, magnified
+// with GL_LINEAR, the picture GL drew of another Frame (the sphere under
+// GL_SPHERE_MAP texgen).  The reference recomputes that frame first and
+// samples its picture; the texels on its triangles' edges, where GL may
+// differ legally, make the outer pixels that read them exempt.  Describing
+// the inner frame wrongly (normals of another length) must fail.
+namespace {
+ts::Frame nestedFrame(const ts::Image& innerPicture, const ts::Frame& inner) {
+  ts::Frame f;
+  f.width = f.height = 220;
+  ts::TextureDesc t;
+  t.name = "oracle_nested_render";
+  t.image = std::make_shared<ts::Image>(innerPicture);
+  t.renderedFrom = std::make_shared<const ts::Frame>(inner);
+  t.minFilter = t.magFilter = GL_LINEAR;
+  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
+  f.addTexture(t);
+  ts::Panel p = oracle::unitPanel(220, 220);
+  p.batches.push_back(oracle::quad({0.05f, 0.05f}, {0.95f, 0.95f}, {0, 1}, {1, 0}, 0));  // image row 0 at the top
+  f.panels.push_back(p);
+  return f;
+}
+}  // namespace
+
+// The sphere's half facing the eye: with its back half too, every pixel
+// near an edge between two front triangles could legally show the back
+// (the reference's depth test keeps the clear colour's candidate there,
+// and the back is nearer than that), and the nested picture would be
+// unknown along every edge.
+ts::Frame frontHalf(ts::Frame f) {
+  ts::Batch& b = f.panels[0].batches[0];
+  std::vector<ts::Vertex> kept;
+  const glm::mat4 mv = f.panels[0].modelview;
+  for (size_t i = 0; i + 2 < b.vertices.size(); i += 3) {
+    const glm::vec3 c = (b.vertices[i].pos + b.vertices[i + 1].pos + b.vertices[i + 2].pos) / 3.0f;
+    const glm::vec3 e = glm::vec3(mv * glm::vec4(c, 1.0f)), n = glm::mat3(mv) * c;  // a sphere: the normal is the position
+    if (glm::dot(e, n) < 0) kept.insert(kept.end(), b.vertices.begin() + long(i), b.vertices.begin() + long(i) + 3);
+  }
+  b.vertices = kept;
+  return f;
+}
+
+TEST(GLNestedFrame, APanelShowingATexgenRender) {
+  ts::TextureDesc t = oracle::colourful(16);
+  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
+  ts::Frame inner = frontHalf(sphereFrame(0, t, GL_SPHERE_MAP, ts::TexGen::S | ts::TexGen::T));
+  inner.width = inner.height = 120;
+  inner.panels[0].viewport = {0, 0, 120, 120};
+  const ts::Image innerPicture = oracle::render(inner);
+  const ts::Frame f = nestedFrame(innerPicture, inner);
+  const ts::Image img = oracle::render(f);
+  ref::VerifyResult r = ref::verifyImage(img, f, oracle::options("nested_sphere_map", "envmap"));
+  std::printf("%s\n", r.summary().c_str());
+  EXPECT_EQ(r.invalid, 0) << r.summary();
+  EXPECT_GT(r.textured, 220 * 220 / 2) << r.summary();
+  ts::Frame wrongInner = frontHalf(sphereFrame(0, t, GL_SPHERE_MAP, ts::TexGen::S | ts::TexGen::T, 0.8f));
+  wrongInner.width = wrongInner.height = 120;
+  wrongInner.panels[0].viewport = {0, 0, 120, 120};
+  ref::VerifyResult bad =
+      ref::verifyImage(img, nestedFrame(innerPicture, wrongInner), oracle::options("nested_wrong_inner", "envmap_negative"));
+  EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
+}

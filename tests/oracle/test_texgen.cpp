@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <set>
 
 #include "common/core/error.hpp"
 #include "common/core/frame.hpp"
@@ -216,6 +217,73 @@ TEST(TexGen, SidecarRoundTrips3DTextures) {
   EXPECT_EQ(got.frame.textures[0].wrapR, GLenum(GL_MIRRORED_REPEAT));
   std::string bad = json;
   bad.replace(bad.find("\"depth\": 4"), 11, "\"depth\": 3");
+  EXPECT_THROW(ref::readSidecar(bad), ts::Error);
+}
+// A nested frame (TextureDesc::renderedFrom) through a sidecar: the inner
+// frame (a sphere-mapped triangle on a generated checkerboard) comes back
+// with its texgen, normals and texture, and the reference recomputes the
+// same picture from the file as from the frame itself.
+TEST(TexGen, SidecarRoundTripsNestedFrames) {
+  auto inner = std::make_shared<ts::Frame>();
+  inner->width = 24, inner->height = 16;
+  inner->addTexture(ts::checkerboard(16, 4, {200, 40, 40, 255}, {30, 30, 200, 255}));
+  ts::Panel ip;
+  ip.id = "inner";
+  ip.viewport = {0, 0, 24, 16};
+  ip.modelview = glm::translate(glm::mat4(1.0f), {0, 0, -0.5f});
+  ts::Batch b;
+  b.texture = 0;
+  b.texGen.mode = GL_SPHERE_MAP;
+  b.texGen.coords = ts::TexGen::S | ts::TexGen::T;
+  const glm::vec3 corners[3] = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+  for (const glm::vec3& c : corners) {
+    ts::Vertex v;
+    v.pos = c;
+    v.normal = glm::normalize(glm::vec3(c.x, c.y, 2.0f));
+    b.vertices.push_back(v);
+  }
+  ip.batches.push_back(b);
+  inner->panels.push_back(ip);
+  ts::Frame f;
+  f.width = f.height = 32;
+  ts::TextureDesc t;
+  t.name = "a_render";
+  t.image = std::make_shared<ts::Image>(ref::Reference(*inner).image());
+  t.renderedFrom = inner;
+  f.addTexture(t);
+  ts::Panel p;
+  p.id = "outer";
+  p.viewport = {0, 0, 32, 32};
+  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+  ts::Batch q;
+  q.texture = 0;
+  for (glm::vec2 c : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)}) {
+    ts::Vertex v;
+    v.pos = {c, 0};
+    v.tex = {c.x, 1 - c.y, 0, 1};
+    q.vertices.push_back(v);
+  }
+  p.batches.push_back(q);
+  f.panels.push_back(p);
+  const std::string json = ts::sidecarJson(f, ts::SidecarInfo{});
+  EXPECT_NE(json.find("\"rendered_from\""), std::string::npos);
+  ref::SidecarScene got = ref::readSidecar(json);
+  ASSERT_EQ(got.frame.textures.size(), 1u);
+  ASSERT_TRUE(got.frame.textures[0].renderedFrom);
+  const ts::Frame& back = *got.frame.textures[0].renderedFrom;
+  EXPECT_EQ(back.width, 24);
+  EXPECT_EQ(back.panels.at(0).batches.at(0).texGen.mode, GLenum(GL_SPHERE_MAP));
+  EXPECT_EQ(back.panels.at(0).batches.at(0).vertices.at(2).normal, b.vertices[2].normal);
+  const ts::Image fromFile = ref::Reference(got.frame).image(), fromFrame = ref::Reference(f).image();
+  EXPECT_EQ(fromFile.pixels, fromFrame.pixels);
+  // The inner picture is not flat: the triangle shows both checks.
+  std::set<uint32_t> colours;
+  for (size_t k = 0; k + 3 < fromFrame.pixels.size(); k += 4)
+    colours.insert(uint32_t(fromFrame.pixels[k]) << 16 | uint32_t(fromFrame.pixels[k + 1]) << 8 | fromFrame.pixels[k + 2]);
+  EXPECT_GE(colours.size(), 3u);
+  // A nested frame whose size disagrees with the texture's is refused.
+  std::string bad = json;
+  bad.replace(bad.find("\"width\": 24"), 11, "\"width\": 25");
   EXPECT_THROW(ref::readSidecar(bad), ts::Error);
 }
 }  // namespace
