@@ -64,8 +64,8 @@ Deriv cubeFaceDeriv(const ScreenPoly& P, int face, double x, double y) {
 }  // namespace
 
 // Nested frames (issue 26): the texture's frame recomputed by a Reference
-// of its own (the same options but a narrower edge band), its picture the texture's image.  Each
-// texel keeps how wide the union of that frame's pixel's legal colour
+// of its own (the same options but a narrower edge band), its picture the
+// texture's image.  Each texel keeps how wide the union of that frame's pixel's legal colour
 // ranges is (GL's pixel lies in it, give or take the verifier's
 // tolerance); where that frame's pixel is exempt (a line, a label, an
 // unmodelled program) or wider than kNestedKnownSteps (a silhouette: the
@@ -122,8 +122,9 @@ float Reference::nestedSlack(int texture, double s, double t, double rho) const 
   const ts::TextureDesc& d = textures_[size_t(texture)].desc();
   // The texels GL_NEAREST and GL_LINEAR read for a coordinate within eps
   // texels of (s, t): the verifier's jitter (1/128 texel plus 1/128 pixel),
-  // with room to spare.
-  const double eps = 1.0 / 32 + rho / 32;
+  // with room to spare; a mip-mapped texture's coarser levels average the
+  // texels within rho of it.
+  const double eps = 1.0 / 32 + rho / 32 + (textures_[size_t(texture)].mipmapped() ? rho : 0.0);
   const double u = s * n.w, v = t * n.h;
   float widest = 0;
   for (int j = int(std::floor(v - 0.5 - eps)); j <= int(std::floor(v + 0.5 + eps)); ++j)
