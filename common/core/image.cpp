@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -16,6 +17,19 @@
 #include "common/core/jpeg.hpp"
 
 namespace ts {
+int maxChannelDiff(const Image& a, const Image& b) {
+  int d = 0;
+  for (size_t k = 0; k < a.pixels.size() && k < b.pixels.size(); ++k)
+    if (k % 4 != 3) d = std::max(d, std::abs(int(a.pixels[k]) - int(b.pixels[k])));
+  return d;
+}
+double rmsRgb(const Image& a, const Image& b) {
+  double s = 0;
+  for (size_t k = 0; k < a.pixels.size() && k < b.pixels.size(); ++k)
+    if (k % 4 != 3) s += (double(a.pixels[k]) - double(b.pixels[k])) * (double(a.pixels[k]) - double(b.pixels[k]));
+  return a.width && a.height ? std::sqrt(s / (double(a.width) * a.height * 3)) : 0.0;
+}
+
 Image::Image(int w, int h, Rgba fill) : width(w), height(h) {
   if (w < 0 || h < 0 || w > kMaxImageDimension || h > kMaxImageDimension)
     throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range");

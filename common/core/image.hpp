@@ -27,6 +27,11 @@ struct Image {
   void flipVertical();
 };
 
+// Two images of one size compared over R, G and B (alpha left out): the
+// largest difference in 8-bit levels, and the root mean square difference.
+int maxChannelDiff(const Image& a, const Image& b);
+double rmsRgb(const Image& a, const Image& b);
+
 // Largest width or height any image of the suite may have; checked before any
 // allocation (flags and files alike).
 constexpr int kMaxImageDimension = 16384;

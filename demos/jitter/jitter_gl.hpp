@@ -198,6 +198,16 @@ inline ts::Frame groundPass(const Camera& c, glm::dvec2 samplePos) {
   return f;
 }
 
+// Two triangles over the whole viewport (clip coordinates -1..1): the
+// fragment shader is then run once per pixel.
+inline void fullViewport(ts::Batch& b) {
+  for (auto q : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+    ts::Vertex v;
+    v.pos = glm::vec3(q, 0.0f);
+    b.vertices.push_back(v);
+  }
+}
+
 // The single pass of jitter-pixel.  showSample >= 0 writes that sample's
 // position in its pixel into (R, G) instead of a colour (for the tests).
 // random: pure random points per pixel instead (pixelRandomFS).
@@ -216,12 +226,7 @@ inline ts::Frame pixelJitterPass(const Camera& c, int n, uint32_t seed, int show
   b.program = program;
   b.uniforms = commonUniforms(c, pixelToPlane(c));
   b.uniforms.push_back({"params", glm::vec4(float(n), float(seed), float(showSample), 0.0f)});
-  for (auto q : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, -1), glm::vec2(1, 1),
-                 glm::vec2(-1, 1)}) {
-    ts::Vertex v;
-    v.pos = glm::vec3(q, 0.0f);
-    b.vertices.push_back(v);
-  }
+  fullViewport(b);
   p.batches.push_back(b);
   f.panels.push_back(p);
   return f;
@@ -268,12 +273,7 @@ inline ts::Frame zonePass(int n, uint32_t seed, bool jittered, double phase) {
   b.program = "jitter_zone";
   b.uniforms = {{"zone", glm::vec4(float(n), float(seed), jittered ? 1.0f : 0.0f, float(phase))},
                 {"band", glm::vec4(float(zone::kStep), float(zone::kGlBandRows), 0.0f, 0.0f)}};
-  for (auto q : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, -1), glm::vec2(1, 1),
-                 glm::vec2(-1, 1)}) {
-    ts::Vertex v;
-    v.pos = glm::vec3(q, 0.0f);
-    b.vertices.push_back(v);
-  }
+  fullViewport(b);
   p.batches.push_back(b);
   f.panels.push_back(p);
   return f;

@@ -32,20 +32,10 @@ inline int maxColoursPerBlock(const ts::Image& img) {
     }
   return most;
 }
-// The largest channel difference between two images of one size.
-inline int maxDiff(const ts::Image& a, const ts::Image& b) {
-  int d = 0;
-  for (size_t k = 0; k < a.pixels.size(); ++k)
-    if (k % 4 != 3) d = std::max(d, std::abs(int(a.pixels[k]) - int(b.pixels[k])));
-  return d;
-}
-// RMS over RGB, and PSNR = 20 log10(255 / RMS).
-inline double rms(const ts::Image& a, const ts::Image& b) {
-  double s = 0;
-  for (size_t k = 0; k < a.pixels.size(); ++k)
-    if (k % 4 != 3) s += std::pow(double(a.pixels[k]) - double(b.pixels[k]), 2.0);
-  return std::sqrt(s / (double(a.width) * a.height * 3));
-}
+// The largest channel difference and the RMS over RGB: common/core/image.hpp.
+inline int maxDiff(const ts::Image& a, const ts::Image& b) { return ts::maxChannelDiff(a, b); }
+inline double rms(const ts::Image& a, const ts::Image& b) { return ts::rmsRgb(a, b); }
+// PSNR = 20 log10(255 / RMS).
 inline double psnr(const ts::Image& a, const ts::Image& b) { return 20.0 * std::log10(255.0 / std::max(rms(a, b), 1e-9)); }
 // A normal map's texel as the unit vector it encodes (n = 2 c / 255 - 1).
 inline glm::dvec3 normalOf(ts::Rgba c) { return glm::normalize(glm::dvec3(c.r, c.g, c.b) / 127.5 - 1.0); }
