@@ -64,9 +64,27 @@ glm::dvec3 WindowTransform::operator()(const glm::dvec4& clip) const {
   return {vx + (ndc.x + 1.0) * 0.5 * vw, frameHeight - (vy + (ndc.y + 1.0) * 0.5 * vh), (ndc.z + 1.0) * 0.5};
 }
 
+glm::dvec3 envTexGen(const glm::dmat4& modelview, GLenum mode, const glm::dvec3& pos, const glm::dvec3& normal) {
+  // n' = (M⁻¹)ᵀ n: the normal in eye coordinates, not renormalised (GL_NORMALIZE is off).
+  const glm::dvec3 n = glm::transpose(glm::inverse(glm::dmat3(modelview))) * normal;
+  if (mode == GL_NORMAL_MAP) return n;
+  // u: the unit vector from the eye (the origin) to the vertex.
+  const glm::dvec3 u = glm::normalize(glm::dvec3(modelview * glm::dvec4(pos, 1.0)));
+  const glm::dvec3 r = u - 2.0 * glm::dot(n, u) * n;
+  if (mode == GL_REFLECTION_MAP) return r;
+  const double m = 2.0 * std::sqrt(r.x * r.x + r.y * r.y + (r.z + 1.0) * (r.z + 1.0));  // GL_SPHERE_MAP
+  return {r.x / m + 0.5, r.y / m + 0.5, 0.0};
+}
+
 glm::dvec4 texGenCoords(const ts::Panel& p, const ts::Batch& b, const ts::Vertex& v) {
   glm::dvec4 tex(v.tex);
   if (!b.texGen.on()) return tex;
+  if (b.texGen.needsNormal()) {  // GL_SPHERE_MAP, GL_REFLECTION_MAP, GL_NORMAL_MAP (issue 26)
+    const glm::dvec3 g = envTexGen(glm::dmat4(p.modelview), b.texGen.mode, glm::dvec3(v.pos), glm::dvec3(v.normal));
+    for (int k = 0; k < 3; ++k)
+      if (b.texGen.coords & (1u << k)) tex[k] = g[k];
+    return tex;
+  }
   const glm::dvec4 obj(glm::dvec3(v.pos), 1.0);
   const bool eye = b.texGen.mode == GL_EYE_LINEAR;
   // EYE_LINEAR: GL stores plane · M⁻¹ (M the modelview when it was given)

@@ -49,6 +49,13 @@ bool isBilinearQuad(const ts::Batch& b);
 // glTexGen (OBJECT_LINEAR from the object position, EYE_LINEAR from the eye
 // position with the planes given under planeModelview) replaces the
 // coordinates it generates; the others are glTexCoord4f's.
+// glTexGen's environment-mapping modes (GL 2.1 §2.11.4) at a vertex of
+// object position `pos` and normal `normal` under `modelview`: with n' the
+// eye-space normal (M⁻¹)ᵀ n, u the unit vector from the eye to the vertex
+// and r = u - 2 (n'·u) n', GL_NORMAL_MAP gives n', GL_REFLECTION_MAP r,
+// GL_SPHERE_MAP (r_x/m + 1/2, r_y/m + 1/2, 0) with m = 2 sqrt(r_x² + r_y² +
+// (r_z + 1)²).
+glm::dvec3 envTexGen(const glm::dmat4& modelview, GLenum mode, const glm::dvec3& pos, const glm::dvec3& normal);
 glm::dvec4 texGenCoords(const ts::Panel& p, const ts::Batch& b, const ts::Vertex& v);
 
 // A clipped triangle (a convex polygon of 3 to 5 vertices) in screen space

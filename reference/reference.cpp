@@ -5,6 +5,7 @@
 
 #include "common/core/error.hpp"
 #include "common/core/text.hpp"
+#include "verify.hpp"
 
 namespace ref {
 const char* exemptName(Exempt e) {
@@ -20,6 +21,200 @@ const char* exemptName(Exempt e) {
     case Exempt::Count: break;
   }
   return "?";
+}
+
+void cubeFaceCoord(int face, const glm::dvec3& r, double* s, double* t) {
+  double sc = 0, tc = 0, ma = 1;
+  switch (face) {
+    case 0: sc = -r.z, tc = -r.y, ma = r.x; break;
+    case 1: sc = r.z, tc = -r.y, ma = -r.x; break;
+    case 2: sc = r.x, tc = r.z, ma = r.y; break;
+    case 3: sc = r.x, tc = -r.z, ma = -r.y; break;
+    case 4: sc = r.x, tc = -r.y, ma = r.z; break;
+    default: sc = -r.x, tc = -r.y, ma = -r.z; break;
+  }
+  *s = (sc / ma + 1.0) / 2.0, *t = (tc / ma + 1.0) / 2.0;
+}
+int cubeFace(const glm::dvec3& r, int* alt) {
+  const double a[3] = {std::abs(r.x), std::abs(r.y), std::abs(r.z)};
+  int k = a[0] >= a[1] && a[0] >= a[2] ? 0 : a[1] >= a[2] ? 1 : 2;
+  int second = -1;
+  for (int j = 0; j < 3; ++j)
+    if (j != k && (second < 0 || a[j] > a[second])) second = j;
+  auto faceOf = [&](int axis) { return 2 * axis + (r[axis] > 0 ? 0 : 1); };
+  *alt = a[second] >= a[k] * (1.0 - 1e-4) ? faceOf(second) : -1;
+  return faceOf(k);
+}
+namespace {
+// The interpolated direction (s, t, r) at (x, y): the planes hold s/w, t/w,
+// r/w, and the common positive factor 1/w does not change a direction.
+glm::dvec3 cubeDirection(const ScreenPoly& P, double x, double y) {
+  return {P.P[kS].at(x, y), P.P[kT].at(x, y), P.P[kR].at(x, y)};
+}
+// The derivatives of a face's (s, t) at (x, y), by central differences on
+// that face (the LOD GL computes from the face coordinates of a 2x2 quad).
+Deriv cubeFaceDeriv(const ScreenPoly& P, int face, double x, double y) {
+  double s0, t0, s1, t1, s2, t2, s3, t3;
+  cubeFaceCoord(face, cubeDirection(P, x - 0.5, y), &s0, &t0);
+  cubeFaceCoord(face, cubeDirection(P, x + 0.5, y), &s1, &t1);
+  cubeFaceCoord(face, cubeDirection(P, x, y - 0.5), &s2, &t2);
+  cubeFaceCoord(face, cubeDirection(P, x, y + 0.5), &s3, &t3);
+  return {s1 - s0, s3 - s2, t1 - t0, t3 - t2};
+}
+}  // namespace
+
+// Nested frames (issue 26): the texture's frame recomputed by a Reference
+// of its own (the same options but a narrower edge band), its picture the texture's image.  Each
+// texel keeps how wide the union of that frame's pixel's legal colour
+// ranges is (GL's pixel lies in it, give or take the verifier's
+// tolerance); where that frame's pixel is exempt (a line, a label, an
+// unmodelled program) or wider than kNestedKnownSteps (a silhouette: the
+// object on one side, the background on the other) the texel is unknown.
+// An outer fragment reading an unknown texel is exempt (Exempt::Edge: an
+// edge of the nested picture); one reading known texels gets their widest
+// range plus the tolerance as its slack (Candidate::slack, verify.cpp).  An
+// edge between two triangles of one textured surface stays known: both
+// sides agree.
+ts::TextureDesc Reference::nestedTexture(const ts::TextureDesc& t, size_t index) {
+  constexpr float kNestedKnownSteps = 24.0f;
+  // The edge band of the nested frame: GL snaps window coordinates to at
+  // least GL_SUBPIXEL_BITS = 4 bits (the specification's minimum), so a
+  // pixel centre more than 1/8 pixel inside a triangle is covered by it on
+  // any conformant rasterizer.  The outer frame's 1-pixel band would leave
+  // the background legal beside every edge between two triangles of one
+  // surface, and the picture unknown along all of them.
+  RenderOptions innerOptions = opts_;
+  innerOptions.edgeBand = std::min(opts_.edgeBand, 0.125);
+  const Reference inner(*t.renderedFrom, innerOptions);
+  for (const std::string& n : inner.notes()) note("the frame of texture '" + t.name + "': " + n);
+  ts::TextureDesc d = t;
+  d.image = std::make_shared<ts::Image>(inner.image());
+  NestedTexels known;
+  known.w = inner.width(), known.h = inner.height();
+  known.width.assign(size_t(known.w) * size_t(known.h), -1.0f);
+  VerifyOptions vo;
+  vo.render = innerOptions;
+  known.tolerance = float(vo.tolerance) / 255.0f;
+  std::vector<Box> boxes;
+  for (int y = 0; y < known.h; ++y)
+    for (int x = 0; x < known.w; ++x) {
+      Exempt why;
+      legalAt(inner, x, y, vo, &boxes, &why);
+      if (why != Exempt::None || boxes.empty()) continue;
+      float width = 0;
+      for (size_t k = 0; k < 4; ++k) {
+        float lo = 2, hi = -1;
+        for (const Box& b : boxes) lo = std::min(lo, b.lo[k]), hi = std::max(hi, b.hi[k]);
+        width = std::max(width, hi - lo);
+      }
+      // Texel (x, y) is pixel (x, y): the texture's image is the frame's
+      // picture as Renderer::render returns it (row 0 the top).
+      if (width * 255.0f <= kNestedKnownSteps) known.width[size_t(y) * size_t(known.w) + size_t(x)] = width;
+    }
+  nested_.resize(std::max(nested_.size(), index + 1));
+  nested_[index] = std::move(known);
+  return d;
+}
+
+float Reference::nestedSlack(int texture, double s, double t, double rho) const {
+  if (size_t(texture) >= nested_.size() || nested_[size_t(texture)].width.empty()) return 0.0f;
+  const NestedTexels& n = nested_[size_t(texture)];
+  const ts::TextureDesc& d = textures_[size_t(texture)].desc();
+  // The texels GL_NEAREST and GL_LINEAR read for a coordinate within eps
+  // texels of (s, t): the verifier's jitter (1/128 texel plus 1/128 pixel),
+  // with room to spare.
+  const double eps = 1.0 / 32 + rho / 32;
+  const double u = s * n.w, v = t * n.h;
+  float widest = 0;
+  for (int j = int(std::floor(v - 0.5 - eps)); j <= int(std::floor(v + 0.5 + eps)); ++j)
+    for (int i = int(std::floor(u - 0.5 - eps)); i <= int(std::floor(u + 0.5 + eps)); ++i) {
+      const int wi = wrapTexel(d.wrapS == GL_CLAMP ? GL_CLAMP_TO_EDGE : d.wrapS, i, n.w);
+      const int wj = wrapTexel(d.wrapT == GL_CLAMP ? GL_CLAMP_TO_EDGE : d.wrapT, j, n.h);
+      if (wi < 0 || wj < 0 || wi >= n.w || wj >= n.h) continue;  // the border colour: known
+      const float w = n.width[size_t(wj) * size_t(n.w) + size_t(wi)];
+      if (w < 0) return -1.0f;
+      widest = std::max(widest, w);
+    }
+  return widest + n.tolerance;
+}
+
+void Reference::addCubeFaces(const ts::Frame& f) {
+  cubeFirstFace_.assign(f.textures.size(), -1);
+  for (size_t i = 0; i < f.textures.size(); ++i) {
+    const ts::TextureDesc& d = f.textures[i];
+    if (!d.cube || !d.image || d.image->height != 6 * d.image->width) continue;
+    cubeFirstFace_[i] = int(textures_.size());
+    const int w = d.image->width;
+    for (int face = 0; face < 6; ++face) {
+      ts::TextureDesc fd = d;
+      fd.cube = false;
+      fd.mipmaps = false;
+      fd.mipLevels = nullptr;
+      auto img = std::make_shared<ts::Image>(w, w);
+      std::copy_n(d.image->pixels.begin() + std::ptrdiff_t(size_t(face) * size_t(w) * size_t(w) * 4),
+                  size_t(w) * size_t(w) * 4, img->pixels.begin());
+      fd.image = img;
+      fd.name += "[face " + std::to_string(face) + "]";
+      textures_.emplace_back(fd);
+    }
+  }
+}
+
+void Reference::addVolumes(const ts::Frame& f) {
+  volumeOf_.assign(f.textures.size(), -1);
+  for (size_t i = 0; i < f.textures.size(); ++i) {
+    const ts::TextureDesc& d = f.textures[i];
+    if (d.depth <= 1 || !d.image || d.image->height % d.depth != 0) continue;
+    Volume v;
+    v.first = int(textures_.size()), v.depth = d.depth, v.wrapR = d.wrapR;
+    const int w = d.image->width, h = d.image->height / d.depth;
+    for (int k = 0; k < d.depth; ++k) {
+      ts::TextureDesc sd = d;
+      sd.depth = 1;
+      sd.mipmaps = false;
+      sd.mipLevels = nullptr;
+      auto img = std::make_shared<ts::Image>(w, h);
+      std::copy_n(d.image->pixels.begin() + std::ptrdiff_t(size_t(k) * size_t(w) * size_t(h) * 4),
+                  size_t(w) * size_t(h) * 4, img->pixels.begin());
+      sd.image = img;
+      sd.name += "[slice " + std::to_string(k) + "]";
+      textures_.emplace_back(sd);
+    }
+    volumeOf_[i] = int(volumes_.size());
+    volumes_.push_back(v);
+  }
+}
+
+bool Reference::cubeCandidate(const ScreenPoly& P, double x, double y, int firstFace, bool alternative,
+                              Candidate* c) const {
+  int alt = -1;
+  int face = cubeFace(cubeDirection(P, x, y), &alt);
+  if (alternative) {
+    if (alt < 0) return false;
+    face = alt;
+  }
+  const Texture& tex = textures_[size_t(firstFace + face)];
+  cubeFaceCoord(face, cubeDirection(P, x, y), &c->s, &c->t);
+  c->texture = firstFace + face;
+  const Deriv g = cubeFaceDeriv(P, face, x, y);
+  const double e0 = tex.lod(g);
+  c->rho = float(std::exp2(std::max(-30.0, e0)));
+  double lo = e0, hi = e0;
+  if (tex.mipmapped() || tex.desc().minFilter != tex.desc().magFilter) {
+    tex.lodRange(g, opts_.lodModel, &lo, &hi);
+    lo -= opts_.lodMargin, hi += opts_.lodMargin;
+  }
+  c->lodLo = float(lo), c->lodHi = float(hi);
+  return true;
+}
+
+Colour Reference::cubeSample(const ScreenPoly& P, double x, double y, int firstFace) const {
+  int alt = -1;
+  const int face = cubeFace(cubeDirection(P, x, y), &alt);
+  double s, t;
+  cubeFaceCoord(face, cubeDirection(P, x, y), &s, &t);
+  const Texture& tex = textures_[size_t(firstFace + face)];
+  return tex.sample(s, t, tex.lod(cubeFaceDeriv(P, face, x, y)));
 }
 
 PixelRect labelBox(const ts::Label& l, int margin, bool known) {
@@ -45,7 +240,10 @@ Reference::Reference(const ts::Frame& f, const RenderOptions& o) : opts_(o), wid
   depth_.assign(size_t(f.width) * size_t(f.height), 1.0f);
   head_.assign(size_t(f.width) * size_t(f.height), -1);
   pool_.reserve(size_t(f.width) * size_t(f.height) / 2);
-  for (const auto& t : f.textures) textures_.emplace_back(t);
+  for (size_t i = 0; i < f.textures.size(); ++i)
+    textures_.emplace_back(f.textures[i].renderedFrom ? nestedTexture(f.textures[i], i) : f.textures[i]);
+  addCubeFaces(f);
+  addVolumes(f);
   for (const auto& p : f.panels) drawPanel(p);
   if (opts_.labels) drawLabels(f);
 }
@@ -170,6 +368,21 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     proto.kind = Candidate::Kind::Exempt;
     proto.why = Exempt::Blend;
   }
+  // A cube map (issue 26): its faces are textures cubeFirstFace_ .. + 5; the
+  // face and its (s, t) are chosen per fragment from the interpolated (s, t, r).
+  const int cubeFirst = tex ? cubeFirstFace_[size_t(b.texture)] : -1;
+  if (cubeFirst >= 0) tex = &textures_[size_t(cubeFirst)];
+  // A 3D texture: sampled at (s, t, r) through its slices (volume.hpp), the
+  // LOD from (s, t) on a slice; modelled with minFilter == magFilter only.
+  const int volumeIndex = tex && cubeFirst < 0 ? volumeOf_[size_t(b.texture)] : -1;
+  if (volumeIndex >= 0) {
+    tex = &textures_[size_t(volumes_[size_t(volumeIndex)].first)];
+    if (tex->desc().minFilter != tex->desc().magFilter && proto.kind == Candidate::Kind::Textured) {
+      proto.kind = Candidate::Kind::Exempt;
+      proto.why = Exempt::Unsupported;
+      note("a 3D texture with different min and mag filters is not modelled: its pixels are exempt");
+    }
+  }
   const bool needLod = tex && (tex->mipmapped() || tex->desc().minFilter != tex->desc().magFilter);
 
   for (size_t i = 0; i + 2 < b.vertices.size(); i += 3) {
@@ -216,17 +429,35 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       *hi = float(lg(h) + opts_.lodMargin);
     };
     float constLo = 0, constHi = 0, constRho = 0;
-    if (tex && P.constantDeriv) lodAt(P.v[0].x, P.v[0].y, &constLo, &constHi, &constRho);
+    if (tex && cubeFirst < 0 && P.constantDeriv) lodAt(P.v[0].x, P.v[0].y, &constLo, &constHi, &constRho);
 
     auto candidateAt = [&](double x, double y) {
       Candidate c = proto;
       c.z = float(P.P[kZ].at(x, y));
       c.colour = P.colour(x, y);
       if (c.colorSum) c.secondary = P.secondary(x, y);
-      if (c.kind == Candidate::Kind::Textured) {
+      if (c.kind == Candidate::Kind::Textured && cubeFirst >= 0) {
+        cubeCandidate(P, x, y, cubeFirst, false, &c);
+      } else if (c.kind == Candidate::Kind::Textured) {
         P.coord(x, y, &c.s, &c.t);
+        if (volumeIndex >= 0) {
+          c.volume = volumeIndex;
+          c.texture = volumes_[size_t(volumeIndex)].first;
+          c.r = P.P[kR].at(x, y) / P.P[kQ].at(x, y);
+        }
         if (P.constantDeriv) c.lodLo = constLo, c.lodHi = constHi, c.rho = constRho;
         else lodAt(x, y, &c.lodLo, &c.lodHi, &c.rho);
+        c.slack = nestedSlack(c.texture, c.s, c.t, c.rho);
+        if (c.slack < 0) {  // reads an edge of a nested frame's picture
+          c.kind = Candidate::Kind::Exempt;
+          c.why = Exempt::Edge;
+        }
+        if (volumeIndex >= 0) {  // the position jitter in r: slices per pixel
+          auto rAt = [&](double u, double v) { return P.P[kR].at(u, v) / P.P[kQ].at(u, v); };
+          const double slices = std::max(std::abs(rAt(x + 0.5, y) - rAt(x - 0.5, y)), std::abs(rAt(x, y + 0.5) - rAt(x, y - 0.5))) *
+                                volumes_[size_t(volumeIndex)].depth;
+          c.rho = std::max(c.rho, float(slices));
+        }
       }
       return c;
     };
@@ -241,7 +472,11 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
                  float(clamp01(a[kCa] / a[kW]))};
       Colour sec{float(clamp01(a[kSr] / a[kW])), float(clamp01(a[kSg] / a[kW])), float(clamp01(a[kSb] / a[kW])), 0.0f};
       Colour texel{};
-      if (tex) {
+      if (tex && cubeFirst >= 0) {
+        texel = cubeSample(P, x + 0.5, y + 0.5, cubeFirst);
+      } else if (tex && volumeIndex >= 0) {
+        texel = volume(volumeIndex).sample(a[kS] / a[kQ], a[kT] / a[kQ], a[kR] / a[kQ], tex->lod(P.deriv(x + 0.5, y + 0.5)));
+      } else if (tex) {
         double s, t;
         P.coordFrom(a[kS] / a[kQ], a[kT] / a[kQ], &s, &t);
         texel = tex->sample(s, t, tex->lod(P.deriv(x + 0.5, y + 0.5)));
@@ -278,7 +513,12 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           place(x, y, edgeExempt, false, false);
           continue;
         }
-        place(x, y, candidateAt(cx, cy), sure, p.depthTest);
+        const Candidate c = candidateAt(cx, cy);
+        place(x, y, c, sure, p.depthTest);
+        // Near a cube's face boundary either face is legal (issue 26).
+        Candidate other = c;
+        if (cubeFirst >= 0 && c.kind == Candidate::Kind::Textured && cubeCandidate(P, cx, cy, cubeFirst, true, &other))
+          place(x, y, other, false, p.depthTest);
       }
   }
 }

@@ -33,6 +33,7 @@
 #include "geometry.hpp"
 #include "raster.hpp"
 #include "sampler.hpp"
+#include "volume.hpp"
 
 namespace ref {
 enum class Interpolation { Perspective, Affine };
@@ -72,6 +73,13 @@ struct Candidate {
   float lodLo = 0, lodHi = 0;  // lambda_base interval (without bias), margin included
   float rho = 0;               // texels per pixel (for position jitter)
   float z = 1;
+  // A 3D texture (volume.hpp): Reference::volume(volume) samples it at
+  // (s, t, r); `texture` is then its first slice.  -1: a 2D texture.
+  int volume = -1;
+  double r = 0;
+  // A nested frame's picture (issue 26): how far GL's texels may lie from
+  // the reference's, added to both ends of the legal ranges.
+  float slack = 0;
 };
 
 class Reference {
@@ -87,6 +95,12 @@ class Reference {
   const Candidate& candidate(int i) const { return pool_[size_t(i)]; }
   const Colour& clearColour() const { return clear_; }
   const std::vector<Texture>& textures() const { return textures_; }
+  // The 3D textures a candidate's `volume` indexes (their slices are textures()).
+  Volume volume(int i) const {
+    Volume v = volumes_[size_t(i)];
+    v.textures = &textures_;
+    return v;
+  }
   // A copy with the frame's labels drawn and exempt (for an image rendered
   // with labels, from a reference made with RenderOptions::labels off).
   Reference withLabels(const ts::Frame& frame, bool geometryKnown = true) const;
@@ -98,6 +112,30 @@ class Reference {
   void drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect scissor);
   void drawLines(const ts::Panel& p, const ts::Batch& b, PixelRect scissor);
   void drawLabels(const ts::Frame& f);
+  // Cube maps (issue 26): each cube texture's six faces as 2D textures
+  // appended to textures_, the first one's index in cubeFirstFace_ (-1: not
+  // a cube); a fragment's face and (s, t) per GL 2.1 table 3.21.
+  void addCubeFaces(const ts::Frame& f);
+  bool cubeCandidate(const ScreenPoly& P, double x, double y, int firstFace, bool alternative, Candidate* c) const;
+  Colour cubeSample(const ScreenPoly& P, double x, double y, int firstFace) const;
+  std::vector<int> cubeFirstFace_;
+  // 3D textures: each one's slices as 2D textures appended to textures_;
+  // volumeOf_[frame texture] indexes volumes_ (-1: not 3D).
+  void addVolumes(const ts::Frame& f);
+  std::vector<Volume> volumes_;
+  std::vector<int> volumeOf_;
+  // Nested frames (TextureDesc::renderedFrom): the texture recomputed from
+  // its frame, and how wide each texel's legal range is there (-1: unknown).
+  struct NestedTexels {
+    int w = 0, h = 0;
+    std::vector<float> width;
+    float tolerance = 0;
+  };
+  ts::TextureDesc nestedTexture(const ts::TextureDesc& t, size_t index);
+  // The slack of a fragment at (s, t) of texture `texture` (0: not nested,
+  // -1: it reads an unknown texel).
+  float nestedSlack(int texture, double s, double t, double rho) const;
+  std::vector<NestedTexels> nested_;
   void place(int x, int y, const Candidate& c, bool sure, bool depthTest);
   void exemptDisc(double x, double y, double r, Exempt why, PixelRect clip);
   void note(const std::string& s);
@@ -112,6 +150,16 @@ class Reference {
   Colour clear_{};
   std::vector<std::string> notes_;
 };
+
+// Cube maps (issue 26), GL 2.1 §3.8.6 table 3.21: the face of direction r
+// is its major axis, +X -X +Y -Y +Z -Z = 0..5; *alt is the face of the next
+// largest component when it is within a relative 1e-4 of the largest (where
+// GL's float arithmetic may pick either), else -1.  On face f, (s, t) =
+// ((sc/|ma| + 1)/2, (tc/|ma| + 1)/2), sc, tc and ma from the table:
+//   +X: -r_z, -r_y, r_x   -X: r_z, -r_y, -r_x   +Y: r_x, r_z, r_y
+//   -Y: r_x, -r_z, -r_y   +Z: r_x, -r_y, r_z    -Z: -r_x, -r_y, -r_z
+int cubeFace(const glm::dvec3& r, int* alt);
+void cubeFaceCoord(int face, const glm::dvec3& r, double* s, double* t);
 
 // The image rectangle a label covers as render.cpp draws it (text plus
 // background padding), in pixels [x0, x1) x [y0, y1), with `margin` around.

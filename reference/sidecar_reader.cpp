@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/core/error.hpp"
+#include "common/core/sidecar.hpp"
 #include "common/core/textures.hpp"
 
 namespace ref {
@@ -103,6 +104,17 @@ ts::Rgba rgbaParam(const std::vector<std::pair<std::string, std::string>>& p, co
   return {uint8_t(c[0]), uint8_t(c[1]), uint8_t(c[2]), uint8_t(c[3])};
 }
 
+// glTexGen's environment-mapping modes (issue 26): the mode, no planes.
+// False if `mode` is not one of them.  Sphere mapping makes s and t only.
+bool readNormalTexGen(const Json& tg, const std::string& mode, const std::string& tw, ts::TexGen* out) {
+  if (mode == "GL_SPHERE_MAP") out->mode = GL_SPHERE_MAP;
+  else if (mode == "GL_REFLECTION_MAP") out->mode = GL_REFLECTION_MAP;
+  else if (mode == "GL_NORMAL_MAP") out->mode = GL_NORMAL_MAP;
+  else return false;
+  if (find(tg, "planes") || find(tg, "plane_modelview")) fail(tw, mode + " takes no planes");
+  return true;
+}
+
 ts::Prim primFromName(const std::string& s, const std::string& where) {
   if (s == "triangles") return ts::Prim::Triangles;
   if (s == "lines") return ts::Prim::Lines;
@@ -168,6 +180,9 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
                   "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, file)");
 }
 
+constexpr int kMaxNesting = 4;  // frames inside frames: a texture's rendered_from, at most this deep
+static void readFrame(const Json& doc, const std::string& baseDir, int nesting, SidecarScene& out);
+
 static SidecarScene read(const std::string& jsonText, const std::string& baseDir) {
   Json doc;
   try {
@@ -188,6 +203,14 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
   if (const Json* st = find(doc, "state"))
     for (const auto& [k, v] : object(*st, "state").items()) out.state.emplace_back(k, text(v, "state." + k));
 
+  readFrame(doc, baseDir, 0, out);
+  return out;
+}
+
+// The frame's keys of a sidecar object (the document, or a texture's
+// "rendered_from": a nested frame, issue 26) into out.frame; `nesting`
+// counts the frames around it (at most kMaxNesting).
+static void readFrame(const Json& doc, const std::string& baseDir, int nesting, SidecarScene& out) {
   ts::Frame& f = out.frame;
   const Json& size = member(doc, "size", "document");
   if (!size.is_array() || size.size() != 2) fail("size", "expected [width, height]");
@@ -234,15 +257,54 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
     if (const Json* pv = find(t, "params"))
       for (const auto& [k, v] : object(*pv, where + ".params").items()) params.emplace_back(k, text(v, where + ".params." + k));
     ts::TextureDesc d;
-    try {
-      d = remakeTexture(name, params, baseDir);
-    } catch (const ts::Error& e) {
-      fail(where, e.what());
+    if (const Json* rf = find(t, "rendered_from")) {
+      // A nested frame (issue 26): the texture is that frame's picture,
+      // which the reference recomputes; no generator, no image here.
+      if (nesting >= kMaxNesting) fail(where + ".rendered_from", "frames nested deeper than " + std::to_string(kMaxNesting));
+      SidecarScene inner;
+      try {
+        readFrame(object(*rf, where + ".rendered_from"), baseDir, nesting + 1, inner);
+      } catch (const ts::Error& e) {
+        std::string what = e.what();
+        if (what.rfind("sidecar: ", 0) == 0) what = what.substr(9);
+        fail(where + ".rendered_from", what);
+      }
+      d.name = name, d.params = params;
+      const ts::Frame& nf = inner.frame;
+      if (const Json* w = find(t, "width"))
+        if (integer(*w, where + ".width", 0, ts::kMaxImageDimension) != nf.width) fail(where, "width differs from its frame's");
+      if (const Json* h = find(t, "height"))
+        if (integer(*h, where + ".height", 0, ts::kMaxImageDimension) != nf.height) fail(where, "height differs from its frame's");
+      d.renderedFrom = std::make_shared<const ts::Frame>(nf);
+    } else {
+      try {
+        d = remakeTexture(name, params, baseDir);
+      } catch (const ts::Error& e) {
+        fail(where, e.what());
+      }
     }
     if (const Json* w = find(t, "width"))
       if (d.image && integer(*w, where + ".width", 0, ts::kMaxImageDimension) != d.image->width) fail(where, "the remade texture's width differs");
+    // A cube map (issue 26): the generator's image holds the six faces
+    // stacked, and "height" is a face's.
+    if (const Json* c = find(t, "cube")) d.cube = boolean(*c, where + ".cube");
+    if (d.cube && (!d.image || d.image->height != 6 * d.image->width))
+      fail(where, "a cube map needs an image of six stacked square faces");
+    // A 3D texture: the generator's image holds the `depth` slices stacked,
+    // and "height" is a slice's.
+    if (const Json* dp = find(t, "depth")) {
+      d.depth = integer(*dp, where + ".depth", 1, ts::kMaxImageDimension);
+      if (d.cube && d.depth > 1) fail(where, "a texture is a cube map or 3D, not both");
+      if (!d.image || d.image->height % d.depth != 0) fail(where, "a 3D texture needs an image of depth stacked slices");
+      try {
+        d.wrapR = glEnumFromName(text(member(t, "wrap_r", where), where + ".wrap_r"));
+      } catch (const ts::Error& e) {
+        fail(where, e.what());
+      }
+    }
     if (const Json* h = find(t, "height"))
-      if (d.image && integer(*h, where + ".height", 0, ts::kMaxImageDimension) != d.image->height) fail(where, "the remade texture's height differs");
+      if (d.image && integer(*h, where + ".height", 0, ts::kMaxImageDimension) * (d.cube ? 6 : d.depth) != d.image->height)
+        fail(where, "the remade texture's height differs");
     const Json& mips = member(t, "mipmaps", where);
     if (mips.is_boolean()) {
       if (mips.get<bool>()) fail(where, "mipmaps: true is not a kind of chain");
@@ -269,7 +331,6 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
       fail(where, e.what());
     }
     if (const Json* b = find(t, "border")) d.border = vec<4>(*b, where + ".border");
-    if (find(t, "depth")) fail(where, "3D textures (depth) are not modelled by the reference");
     if (const Json* a = find(t, "max_anisotropy")) d.maxAnisotropy = float(number(*a, where));
     if (const Json* b = find(t, "lod_bias")) d.lodBias = float(number(*b, where));
     f.textures.push_back(std::move(d));
@@ -331,15 +392,22 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
         const std::string tw = bw + ".tex_gen", mode = text(member(*tg, "mode", tw), tw + ".mode");
         if (mode == "GL_OBJECT_LINEAR") b.texGen.mode = GL_OBJECT_LINEAR;
         else if (mode == "GL_EYE_LINEAR") b.texGen.mode = GL_EYE_LINEAR;
+        else if (readNormalTexGen(*tg, mode, tw, &b.texGen)) {}  // GL_SPHERE_MAP, GL_REFLECTION_MAP, GL_NORMAL_MAP
         else fail(tw + ".mode", "unknown texgen mode '" + mode + "'");
         const Json& coords = member(*tg, "coords", tw);
-        const Json& planes = member(*tg, "planes", tw);
+        const bool fromNormal = b.texGen.mode != GL_OBJECT_LINEAR && b.texGen.mode != GL_EYE_LINEAR;
+        const Json& planes = fromNormal ? Json::object() : member(*tg, "planes", tw);
         const std::string names = "strq";
         for (size_t ci = 0; ci < array(coords, tw + ".coords").size(); ++ci) {
           const std::string c = text(coords[ci], tw + ".coords");
           const size_t k = names.find(c);
           if (c.size() != 1 || k == std::string::npos) fail(tw + ".coords", "unknown coordinate '" + c + "'");
           b.texGen.coords |= 1u << k;
+          if (fromNormal) {
+            if (k > (b.texGen.mode == GL_SPHERE_MAP ? 1u : 2u))
+              fail(tw + ".coords", mode + " does not make '" + c + "' (GL_SPHERE_MAP: s, t; the others: s, t, r)");
+            continue;
+          }
           b.texGen.planes[k] = vec<4>(member(planes, c, tw + ".planes"), tw + ".planes." + c);
         }
         if (const Json* pm = find(*tg, "plane_modelview")) b.texGen.planeModelview = mat(*pm, tw + ".plane_modelview");
@@ -358,6 +426,8 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
         if (const Json* t = find(vv, "tex")) x.tex = vec<4>(*t, vw + ".tex");
         if (const Json* c = find(vv, "color")) x.color = vec<4>(*c, vw + ".color");
         if (const Json* c = find(vv, "secondary")) x.secondary = vec<3>(*c, vw + ".secondary");
+        if (const Json* n = find(vv, "normal")) x.normal = vec<3>(*n, vw + ".normal");
+        else if (b.texGen.needsNormal()) fail(vw, "texgen " + ts::glEnumName(b.texGen.mode) + " needs each vertex's normal");
         b.vertices.push_back(x);
       }
       p.batches.push_back(std::move(b));
@@ -389,7 +459,6 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
       if (const Json* b = find(lv, "background")) l.background = vec<4>(*b, where + ".background");
       f.labels.push_back(std::move(l));
     }
-  return out;
 }
 
 SidecarScene readSidecar(const std::string& jsonText) { return read(jsonText, ""); }

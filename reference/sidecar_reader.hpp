@@ -7,6 +7,14 @@
 // bias and the kind of mip chain come from the file.  An unknown texture name
 // throws ts::Error "sidecar: texture 0: unknown generator 'x' ...".
 //
+// A texture entry with "cube": true is a cube map (the generator's image
+// holds the six faces stacked, "height" is a face's); with "depth" a 3D
+// texture (slices stacked, "height" a slice's, "wrap_r"); with
+// "rendered_from" the picture of that nested frame (read like the document's
+// own keys, at most 4 deep), which the reference recomputes: no generator.
+// Batches' "tex_gen" may be GL_SPHERE_MAP, GL_REFLECTION_MAP or
+// GL_NORMAL_MAP (no planes), their vertices then carrying "normal".
+//
 // What the sidecar does not record (as of this writing) is left at the
 // Frame's defaults and flagged in `missing`: a panel's own clear colour,
 // points' size, and the labels' scale, alignment, colour and background.

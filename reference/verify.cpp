@@ -85,7 +85,13 @@ void legalAt(const Reference& r, int x, int y, const VerifyOptions& o, std::vect
         const Texture& t = r.textures()[size_t(c.texture)];
         double jitter = o.positionEpsPixels * double(c.rho);
         size_t first = out.size();
-        t.legal(c.s, c.t, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter, o.linearEpsTexels + jitter, &out);
+        if (c.volume >= 0)  // a 3D texture (volume.hpp); r's jitter in slices is taken as s and t's in texels
+          r.volume(c.volume).legal(c.s, c.t, c.r, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter, o.linearEpsTexels + jitter, &out);
+        else
+          t.legal(c.s, c.t, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter, o.linearEpsTexels + jitter, &out);
+        if (c.slack > 0)  // a nested frame's picture (issue 26)
+          for (size_t k = first; k < out.size(); ++k)
+            for (size_t ch = 0; ch < 4; ++ch) out[k].lo[ch] -= c.slack, out[k].hi[ch] += c.slack;
         if (c.env != GL_REPLACE) {  // the environment's table over the boxes (exact for GL_MODULATE as before)
           Box col = widen(c.colour, o.colourEps);
           for (size_t k = first; k < out.size(); ++k) out[k] = texEnvBox(c.env, col, out[k], c.envColour);

@@ -6,6 +6,7 @@ std::string TextureDesc::key() const {
   for (const auto& [n, v] : params) k += ";" + n + "=" + v;
   if (mipmaps) k += linearLightMips ? ";mips=linear" : ";mips=box";
   if (depth > 1) k += ";depth=" + std::to_string(depth);
+  if (cube) k += ";cube";
   return k;
 }
 

@@ -18,6 +18,7 @@
 #include "common/core/image.hpp"
 
 namespace ts {
+struct Frame;  // a texture may be the render of another Frame (TextureDesc::renderedFrom)
 struct Vertex {
   glm::vec3 pos{0.0f};
   glm::vec4 tex{0.0f, 0.0f, 0.0f, 1.0f};  // (s, t, r, q): q != 1 for projective maps
@@ -26,6 +27,11 @@ struct Vertex {
   // batch's colorSum is on: what GL_SEPARATE_SPECULAR_COLOR does with the
   // specular term, computed on the CPU here so the reference can redo it.
   glm::vec3 secondary{0.0f};
+  // --- environment-mapping texgen (issue 26) ---
+  // The normal (glNormal3f), object coordinates: sent, and written in the
+  // sidecar, only for batches whose texgen reads it (TexGen::needsNormal).
+  // GL's initial current normal is (0, 0, 1).
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};
 };
 
 enum class Prim { Triangles, Lines, LineStrip, LineLoop, Points };
@@ -46,6 +52,18 @@ struct TextureDesc {
   // in rows k*h .. k*h+h-1), wrapR its third wrap.  No mipmaps.
   int depth = 1;
   GLenum wrapR = GL_REPEAT;
+  // --- cube maps (issue 26) ---
+  // true: a GL_TEXTURE_CUBE_MAP whose six square faces (w x w, w =
+  // image->width) are stacked in `image` in GL's face order +X, -X, +Y, -Y,
+  // +Z, -Z (face f in rows f*w .. f*w+w-1, row 0 of a face its t = 0), each
+  // uploaded to GL_TEXTURE_CUBE_MAP_POSITIVE_X + f.  No mipmaps.
+  bool cube = false;
+  // --- nested frames (issue 26) ---
+  // The Frame whose render `image` is (a pass a demo drew itself, e.g. a
+  // texgen picture): the sidecar writes it as "rendered_from" in the
+  // texture's entry, and the CPU reference recomputes that frame first and
+  // uses its picture as this texture.  The frame's size is the image's.
+  std::shared_ptr<const Frame> renderedFrom;
   float maxAnisotropy = 1.0f;
   float lodBias = 0.0f;
   // A texture the scene drew itself for this frame (a live view, see
@@ -75,12 +93,25 @@ struct Uniform {
 // the panel's modelview the planes are object-fixed, with the camera's view
 // alone they are world-fixed (the slide projector), with the identity they
 // are fixed to the eye (the texture "swims" as the object moves).
+//
+// The environment-mapping modes (issue 26) read the vertex's normal
+// (Vertex::normal) and position in eye coordinates, n' = (M⁻¹)ᵀ n (not
+// renormalised: GL_NORMALIZE stays off) and u = the unit vector from the
+// eye to the vertex; they take no planes:
+//   GL_SPHERE_MAP      (s, t only) r = u - 2 (n'·u) n', m = 2 sqrt(r_x² +
+//                      r_y² + (r_z + 1)²), s = r_x/m + 1/2, t = r_y/m + 1/2
+//   GL_REFLECTION_MAP  (s, t, r) = r = u - 2 (n'·u) n'
+//   GL_NORMAL_MAP      (s, t, r) = n'
 struct TexGen {
-  GLenum mode = 0;      // 0 = off; GL_OBJECT_LINEAR or GL_EYE_LINEAR
+  GLenum mode = 0;      // 0 = off; GL_OBJECT_LINEAR, GL_EYE_LINEAR, GL_SPHERE_MAP, GL_REFLECTION_MAP, GL_NORMAL_MAP
   unsigned coords = 0;  // bit 0 s, bit 1 t, bit 2 r, bit 3 q
   glm::vec4 planes[4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};  // GL's defaults
   glm::mat4 planeModelview{1.0f};
   bool on() const { return mode != 0 && coords != 0; }
+  // The modes computed from the normal (no planes).
+  bool needsNormal() const {
+    return on() && (mode == GL_SPHERE_MAP || mode == GL_REFLECTION_MAP || mode == GL_NORMAL_MAP);
+  }
   static constexpr unsigned S = 1, T = 2, R = 4, Q = 8;
 };
 

@@ -38,6 +38,11 @@ typedef unsigned int GLuint;
 #define GL_EYE_LINEAR 0x2400
 #define GL_OBJECT_LINEAR 0x2401
 #define GL_TEXTURE_3D 0x806F
+// The environment-mapping texgen modes and cube-map textures (TexGen, TextureDesc::cube).
+#define GL_SPHERE_MAP 0x2402
+#define GL_NORMAL_MAP 0x8511
+#define GL_REFLECTION_MAP 0x8512
+#define GL_TEXTURE_CUBE_MAP 0x8513
 // Texture environment modes.
 #define GL_REPLACE 0x1E01
 #define GL_MODULATE 0x2100

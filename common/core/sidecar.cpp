@@ -90,6 +90,16 @@ void emit(std::string& out, const Json& v, const std::string& indent) {
     out += v.dump();
   }
 }
+
+// The environment-mapping texgen modes (issue 26): the mode and the
+// coordinates it generates; no planes (they read the normal).
+Json normalTexGenJson(const TexGen& g) {
+  Json coords = Json::array();
+  const char* names[4] = {"s", "t", "r", "q"};
+  for (int k = 0; k < 4; ++k)
+    if (g.coords & (1u << k)) coords.push_back(names[k]);
+  return {{"mode", glEnumName(g.mode)}, {"coords", coords}};
+}
 }  // namespace
 
 std::string glEnumName(GLenum e) {
@@ -116,6 +126,9 @@ std::string glEnumName(GLenum e) {
     case GL_ONE_MINUS_SRC_ALPHA: return "GL_ONE_MINUS_SRC_ALPHA";
     case GL_LESS: return "GL_LESS";
     case GL_SMOOTH: return "GL_SMOOTH";
+    case GL_SPHERE_MAP: return "GL_SPHERE_MAP";
+    case GL_REFLECTION_MAP: return "GL_REFLECTION_MAP";
+    case GL_NORMAL_MAP: return "GL_NORMAL_MAP";
     default: {
       char b[16];
       std::snprintf(b, sizeof b, "0x%04X", e);
@@ -124,33 +137,19 @@ std::string glEnumName(GLenum e) {
   }
 }
 
-std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
-  Json d;
-  d["figure"] = info.figureId;
-  d["book_number"] = info.bookNumber;
-  d["caption"] = info.caption;
-  d["demo"] = info.demo;
-  d["command"] = info.command;
-  d["state"] = Json::object();
-  for (const auto& [k, v] : info.state) d["state"][k] = v;
-  d["measurements"] = Json::object();
-  for (const Measurement& m : info.measurements) d["measurements"][m.name] = num(m.value);
-  if (!info.inspect.empty()) {
-    d["inspect"] = Json::array();
-    for (const std::string& o : info.inspect) d["inspect"].push_back(Json::parse(o));
-  }
-  d["conventions"] =
-      "matrices column-major as glLoadMatrixf takes them; viewports in pixels from the top-left of the image; "
-      "texture row 0 is t = 0; vertex tex is (s,t,r,q)";
-  if (!info.renderer.empty()) d["renderer"] = info.renderer;
+// The frame's own keys, in the sidecar's order (the fixed state after the
+// size at the top level; a nested frame, TextureDesc::renderedFrom, shares
+// the top level's fixed state and writes none).
+static void frameInto(Json& d, const Frame& f, bool withFixedState) {
   d["size"] = {f.width, f.height};
-  d["fixed_state"] = {
-      {"blend_func", {glEnumName(FixedState::blendSrc), glEnumName(FixedState::blendDst),
-                      glEnumName(FixedState::blendSrcAlpha), glEnumName(FixedState::blendDstAlpha)}},
-      {"depth_func", glEnumName(FixedState::depthFunc)},
-      {"shade_model", glEnumName(FixedState::shadeModel)},
-      {"cull_face", FixedState::cullFace},
-      {"lighting", FixedState::lighting}};
+  if (withFixedState)
+    d["fixed_state"] = {
+        {"blend_func", {glEnumName(FixedState::blendSrc), glEnumName(FixedState::blendDst),
+                        glEnumName(FixedState::blendSrcAlpha), glEnumName(FixedState::blendDstAlpha)}},
+        {"depth_func", glEnumName(FixedState::depthFunc)},
+        {"shade_model", glEnumName(FixedState::shadeModel)},
+        {"cull_face", FixedState::cullFace},
+        {"lighting", FixedState::lighting}};
   d["clear_color"] = vec(f.clearColor);
   d["perspective_correction_hint"] = f.perspectiveHint == GL_FASTEST  ? "GL_FASTEST"
                                      : f.perspectiveHint == GL_NICEST ? "GL_NICEST"
@@ -177,6 +176,15 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
       textures.back()["height"] = t.image ? t.image->height / t.depth : 0;
       textures.back()["wrap_r"] = glEnumName(t.wrapR);
     }
+    if (t.renderedFrom) {  // a nested frame (issue 26): the frame this texture is the render of
+      Json nested;
+      frameInto(nested, *t.renderedFrom, false);
+      textures.back()["rendered_from"] = nested;
+    }
+    if (t.cube) {  // a cube map (issue 26): only then; height is a face's
+      textures.back()["cube"] = true;
+      textures.back()["height"] = t.image ? t.image->height / 6 : 0;
+    }
   }
   d["textures"] = textures;
   Json programs = Json::array();
@@ -192,6 +200,7 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
       for (const Vertex& x : b.vertices) {
         Json v = {{"pos", vec(x.pos)}, {"tex", vec(x.tex)}, {"color", vec(x.color)}};
         if (b.colorSum) v["secondary"] = vec(x.secondary);
+        if (b.texGen.needsNormal()) v["normal"] = vec(x.normal);  // issue 26: only where texgen reads it
         vertices.push_back(v);
       }
       Json bj = {{"role", b.role},
@@ -209,7 +218,9 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
       if (b.texEnv == GL_BLEND || b.envColor != glm::vec4(0.0f)) bj["tex_env_color"] = vec(b.envColor);
       if (b.textureMatrix != glm::mat4(1.0f)) bj["texture_matrix"] = mat(b.textureMatrix);
       if (b.colorSum) bj["color_sum"] = true;
-      if (b.texGen.on()) {
+      if (b.texGen.needsNormal()) {
+        bj["tex_gen"] = normalTexGenJson(b.texGen);
+      } else if (b.texGen.on()) {
         // glTexGen: the mode, the coordinates it generates, their planes and
         // (EYE_LINEAR) the modelview in force when the planes were given.
         Json coords = Json::array(), planes = Json::object();
@@ -249,6 +260,28 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
                       {"color", vec(l.color)},
                       {"background", vec(l.background)}});
   d["labels"] = labels;
+}
+
+std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
+  Json d;
+  d["figure"] = info.figureId;
+  d["book_number"] = info.bookNumber;
+  d["caption"] = info.caption;
+  d["demo"] = info.demo;
+  d["command"] = info.command;
+  d["state"] = Json::object();
+  for (const auto& [k, v] : info.state) d["state"][k] = v;
+  d["measurements"] = Json::object();
+  for (const Measurement& m : info.measurements) d["measurements"][m.name] = num(m.value);
+  if (!info.inspect.empty()) {
+    d["inspect"] = Json::array();
+    for (const std::string& o : info.inspect) d["inspect"].push_back(Json::parse(o));
+  }
+  d["conventions"] =
+      "matrices column-major as glLoadMatrixf takes them; viewports in pixels from the top-left of the image; "
+      "texture row 0 is t = 0; vertex tex is (s,t,r,q)";
+  if (!info.renderer.empty()) d["renderer"] = info.renderer;
+  frameInto(d, f, true);
 
   std::string out = "{";
   bool first = true;

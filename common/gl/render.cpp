@@ -46,6 +46,7 @@ GLuint Renderer::texture(const TextureDesc& t) {
   auto it = textures_.find(t.key());
   GLuint id = 0;
   if (t.depth > 1) return texture3D(t);
+  if (t.cube) return textureCube(t);
   if (t.glTexture) {
     id = t.glTexture;
     glBindTexture(GL_TEXTURE_2D, id);
@@ -130,6 +131,49 @@ GLuint Renderer::texture3D(const TextureDesc& t) {
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GLint(t.wrapR));
   gl::check(("setting the parameters of 3D texture " + t.key()).c_str());
   return id;
+}
+
+// A cube map (TextureDesc::cube): the six faces stacked in `image`, in GL's
+// order +X, -X, +Y, -Y, +Z, -Z, each to GL_TEXTURE_CUBE_MAP_POSITIVE_X + f.
+GLuint Renderer::textureCube(const TextureDesc& t) {
+  auto it = textures_.find(t.key());
+  GLuint id = 0;
+  if (it != textures_.end()) {
+    id = it->second;
+    glBindTexture(GL_TEXTURE_CUBE_MAP, id);
+  } else {
+    const int w = t.image ? t.image->width : 0;
+    if (!t.image || w < 1 || t.image->height != 6 * w)
+      throw Error("cube map '" + t.name + "' needs an image of six stacked square faces", kExitFailure);
+    glGenTextures(1, &id);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (int f = 0; f < 6; ++f)
+      glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA8, w, w, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                   t.image->pixels.data() + size_t(f) * size_t(w) * size_t(w) * 4);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
+    gl::check(("uploading cube map " + t.key()).c_str());
+    textures_[t.key()] = id;
+  }
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GLint(t.minFilter));
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GLint(t.magFilter));
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GLint(t.wrapS));
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GLint(t.wrapT));
+  gl::check(("setting the parameters of cube map " + t.key()).c_str());
+  return id;
+}
+
+// glTexGen's environment-mapping modes (GL_SPHERE_MAP, GL_REFLECTION_MAP,
+// GL_NORMAL_MAP): the mode only, no planes (they read the normal, which the
+// vertex loop sends with glNormal3f).
+static void enableNormalTexGen(const TexGen& g) {
+  static const GLenum kGenCoord[4] = {GL_S, GL_T, GL_R, GL_Q};
+  static const GLenum kGenEnable[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
+  for (int k = 0; k < 4; ++k) {
+    if (!(g.coords & (1u << k))) continue;
+    glTexGeni(kGenCoord[k], GL_TEXTURE_GEN_MODE, GLint(g.mode));
+    glEnable(kGenEnable[k]);
+  }
 }
 
 void Renderer::forgetTexture(const TextureDesc& t) {
@@ -314,9 +358,10 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
     }
     for (const Batch& b : p.batches) {
       const bool tex3D = b.texture >= 0 && f.textures.at(size_t(b.texture)).depth > 1;
+      const bool texCube = b.texture >= 0 && f.textures.at(size_t(b.texture)).cube;  // issue 26
       if (b.texture >= 0) {
-        glEnable(tex3D ? GL_TEXTURE_3D : GL_TEXTURE_2D);
-        if (tex3D) glDisable(GL_TEXTURE_2D);
+        glEnable(tex3D ? GL_TEXTURE_3D : texCube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D);
+        if (tex3D || texCube) glDisable(GL_TEXTURE_2D);
         texture(f.textures.at(size_t(b.texture)));
         glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(b.texEnv));
         // The constant colour only GL_BLEND reads: set where it is used, so
@@ -341,7 +386,9 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
       // eye planes multiplied by its inverse), then the panel's modelview back.
       static const GLenum kGenCoord[4] = {GL_S, GL_T, GL_R, GL_Q};
       static const GLenum kGenEnable[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
-      if (b.texGen.on()) {
+      if (b.texGen.needsNormal()) {
+        enableNormalTexGen(b.texGen);
+      } else if (b.texGen.on()) {
         const bool eye = b.texGen.mode == GL_EYE_LINEAR;
         if (eye) glLoadMatrixf(glm::value_ptr(b.texGen.planeModelview));
         for (int k = 0; k < 4; ++k) {
@@ -389,6 +436,7 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         glColor4f(v.color.r, v.color.g, v.color.b, v.color.a);
         if (b.colorSum) glSecondaryColor3f(v.secondary.r, v.secondary.g, v.secondary.b);
         glTexCoord4f(v.tex.x, v.tex.y, v.tex.z, v.tex.w);
+        if (b.texGen.needsNormal()) glNormal3f(v.normal.x, v.normal.y, v.normal.z);
         glVertex3f(v.pos.x, v.pos.y, v.pos.z);
       }
       glEnd();
@@ -398,6 +446,7 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
           if (b.texGen.coords & (1u << k)) glDisable(kGenEnable[k]);
       if (b.clip) glDisable(GL_CLIP_PLANE0);
       if (tex3D) glDisable(GL_TEXTURE_3D);
+      if (texCube) glDisable(GL_TEXTURE_CUBE_MAP);
       if (texMatrix) {
         glMatrixMode(GL_TEXTURE);
         glLoadIdentity();

@@ -45,6 +45,8 @@ class Renderer {
   Image renderOffscreen(const Frame& frame);
   // The GL name of a 3D texture (TextureDesc::depth > 1), bound to GL_TEXTURE_3D.
   GLuint texture3D(const TextureDesc& t);
+  // The GL name of a cube map (TextureDesc::cube), bound to GL_TEXTURE_CUBE_MAP.
+  GLuint textureCube(const TextureDesc& t);
   // A pass of one's own into a private RenderTarget (render_target.hpp) of
   // w x h (RGBA8 colour, 24-bit depth, 8-bit stencil), bound with its colour
   // attachment as the draw buffer and the viewport over it while `draw(fbo)`

@@ -191,23 +191,29 @@ inline ts::Batch glslBatch(const Shape& s, Projector pr, Axis ax, Formula f, int
   return b;
 }
 
+constexpr int kSolid = 64;
+// A kSolid³ GL_TEXTURE_3D of the slices stacked in `img` (slice k in rows
+// k*kSolid ..), GL_NEAREST, clamped to the edge in s, t and r.
+inline ts::TextureDesc solidTexture(const std::string& name, std::shared_ptr<ts::Image> img) {
+  ts::TextureDesc t;
+  t.name = name;
+  t.params = {{"size", std::to_string(kSolid)}};
+  t.image = std::move(img);
+  t.depth = kSolid;
+  t.minFilter = t.magFilter = GL_NEAREST;
+  t.wrapS = t.wrapT = t.wrapR = GL_CLAMP_TO_EDGE;
+  return t;
+}
+
 // The solid texture: 64³ texels holding their own indices (R = 4i, G = 4j,
 // B = 4k), GL_NEAREST: a render names the 3D texel each pixel took.
-constexpr int kSolid = 64;
 inline ts::TextureDesc solidIndexTexture() {
   auto img = std::make_shared<ts::Image>(kSolid, kSolid * kSolid);
   for (int k = 0; k < kSolid; ++k)
     for (int j = 0; j < kSolid; ++j)
       for (int i = 0; i < kSolid; ++i)
         img->set(i, k * kSolid + j, {uint8_t(4 * i), uint8_t(4 * j), uint8_t(4 * k), 255});
-  ts::TextureDesc t;
-  t.name = "solid_index";
-  t.params = {{"size", std::to_string(kSolid)}};
-  t.image = img;
-  t.depth = kSolid;
-  t.minFilter = t.magFilter = GL_NEAREST;
-  t.wrapS = t.wrapT = t.wrapR = GL_CLAMP_TO_EDGE;
-  return t;
+  return solidTexture("solid_index", img);
 }
 // A solid wood-like texture for the window: rings around the Y axis.
 inline ts::TextureDesc solidRingsTexture() {
@@ -220,13 +226,6 @@ inline ts::TextureDesc solidRingsTexture() {
         bool dark = ring < 0.35;
         img->set(i, k * kSolid + j, dark ? ts::Rgba{120, 70, 30, 255} : ts::Rgba{215, 165, 100, 255});
       }
-  ts::TextureDesc t;
-  t.name = "solid_rings";
-  t.params = {{"size", std::to_string(kSolid)}};
-  t.image = img;
-  t.depth = kSolid;
-  t.minFilter = t.magFilter = GL_NEAREST;
-  t.wrapS = t.wrapT = t.wrapR = GL_CLAMP_TO_EDGE;
-  return t;
+  return solidTexture("solid_rings", img);
 }
 }  // namespace proj

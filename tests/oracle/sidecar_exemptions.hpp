@@ -20,7 +20,11 @@ inline constexpr std::array<const char*, 26> kFiguresDrawnFromGlRenders = {
     // --footprints: the left panel is the picture GL drew, inspected
     "inspect_vi2_footprints", "inspect_aniso_footprint",
     "vi7_jitter", "parallax_modes", "parallax_error_band", "parallax_step",
-    // environment_mapping: its object pictures are GL renders with texgen and GLSL
+    // environment_mapping: its object pictures are GL renders with texgen and GLSL, into float targets
+    // from float maps made by the demo (no sidecar generator).  Its texgen passes (GL_REFLECTION_MAP
+    // and GL_SPHERE_MAP) are now describable as nested frames (TextureDesc::renderedFrom, cube maps)
+    // that the reference recomputes, but the demo does not yet draw them that way; each figure also
+    // has GLSL panels (the per-pixel reference, lat-long, paraboloid) and CPU-made ones (error, map).
     "env_cube_sphere", "env_compare_torus", "env_latlong_map", "env_cube_map", "env_flat_mirror",
     // bump_mapping: R, emboss and DOT3 are pictures its measure() draws
     "bump_two_lights", "bump_seed002", "bump_normals", "bump_methods", "bump_emboss_overhead",
