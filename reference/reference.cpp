@@ -482,7 +482,12 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
         texel = tex->sample(s, t, tex->lod(P.deriv(x + 0.5, y + 0.5)));
       }
       Colour out = shadeFragment(b, col, sec, tex ? &texel : nullptr);
-      if (b.blend) {
+      // Issue 29: a fragment failing the alpha test is discarded (no colour,
+      // no depth); a batch's own blend factors act on colour, alpha stays.
+      if (b.alphaTest() && !alphaPasses(b.alphaFunc, out[3], b.alphaRef)) return;
+      if (b.blend && b.blendFactors()) {
+        out = blendWith(b.blendSrc, b.blendDst, out, toColour(image_.at(x, y)));
+      } else if (b.blend) {
         Colour dst = toColour(image_.at(x, y));
         float al = out[3];
         for (size_t k = 0; k < 4; ++k) out[k] = out[k] * al + dst[k] * (1 - al);
@@ -514,6 +519,11 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           continue;
         }
         const Candidate c = candidateAt(cx, cy);
+        if (b.alphaTest() && c.kind != Candidate::Kind::Exempt) {  // issue 29
+          const int verdict = alphaVerdict(b, c);
+          if (verdict == 0) continue;  // discarded: no colour, no depth
+          if (verdict < 0) sure = false;
+        }
         place(x, y, c, sure, p.depthTest);
         // Near a cube's face boundary either face is legal (issue 26).
         Candidate other = c;
@@ -521,6 +531,76 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           place(x, y, other, false, p.depthTest);
       }
   }
+}
+
+// ---- the alpha test and blend factors (issue 29) ----------------------------
+bool alphaPasses(GLenum func, float alpha, float ref) {
+  ref = std::min(1.0f, std::max(0.0f, ref));
+  switch (func) {
+    case GL_NEVER: return false;
+    case GL_LESS: return alpha < ref;
+    case GL_EQUAL: return alpha == ref;
+    case GL_LEQUAL: return alpha <= ref;
+    case GL_GREATER: return alpha > ref;
+    case GL_NOTEQUAL: return alpha != ref;
+    case GL_GEQUAL: return alpha >= ref;
+    default: return true;  // GL_ALWAYS
+  }
+}
+
+namespace {
+float blendFactor(GLenum f, int k, const Colour& src, const Colour& dst) {
+  switch (f) {
+    case GL_ZERO: return 0.0f;
+    case GL_ONE: return 1.0f;
+    case GL_SRC_COLOR: return src[size_t(k)];
+    case GL_ONE_MINUS_SRC_COLOR: return 1.0f - src[size_t(k)];
+    case GL_DST_COLOR: return dst[size_t(k)];
+    case GL_ONE_MINUS_DST_COLOR: return 1.0f - dst[size_t(k)];
+    case GL_SRC_ALPHA: return src[3];
+    case GL_ONE_MINUS_SRC_ALPHA: return 1.0f - src[3];
+    default: return 1.0f;
+  }
+}
+}  // namespace
+
+Colour blendWith(GLenum srcFactor, GLenum dstFactor, const Colour& src, const Colour& dst) {
+  Colour out = dst;  // alpha: FixedState's (GL_ZERO, GL_ONE) keeps the framebuffer's
+  for (int k = 0; k < 3; ++k)
+    out[size_t(k)] = float(clamp01(src[size_t(k)] * blendFactor(srcFactor, k, src, dst) +
+                                   dst[size_t(k)] * blendFactor(dstFactor, k, src, dst)));
+  return out;
+}
+
+int Reference::alphaVerdict(const ts::Batch& b, const Candidate& c) const {
+  // The candidate's legal alpha, as verify.cpp's legalAt bounds it with the
+  // default VerifyOptions (coordinate jitter, colour epsilon), widened by
+  // the tolerance of 8 bits: within that of the reference value GL's
+  // comparison may go either way.
+  const VerifyOptions vo;
+  const double eps = double(vo.tolerance + 1) / 255.0;
+  double lo = c.colour[3] - vo.colourEps, hi = c.colour[3] + vo.colourEps;
+  if (c.kind == Candidate::Kind::Textured) {
+    if (c.volume >= 0) return -1;
+    std::vector<Box> boxes;
+    const double jitter = vo.positionEpsPixels * double(c.rho);
+    textures_[size_t(c.texture)].legal(c.s, c.t, c.lodLo, c.lodHi, vo.nearestEpsTexels + jitter, vo.linearEpsTexels + jitter, &boxes);
+    if (boxes.empty()) return -1;
+    Box col;
+    for (size_t k = 0; k < 4; ++k)
+      col.lo[k] = float(std::max(0.0, double(c.colour[k]) - vo.colourEps)), col.hi[k] = float(std::min(1.0, double(c.colour[k]) + vo.colourEps));
+    lo = 2, hi = -1;
+    for (Box bx : boxes) {
+      if (c.env != GL_REPLACE) bx = texEnvBox(c.env, col, bx, c.envColour);
+      lo = std::min(lo, double(bx.lo[3]) - c.slack), hi = std::max(hi, double(bx.hi[3]) + c.slack);
+    }
+  }
+  const bool atLo = alphaPasses(b.alphaFunc, float(lo - eps), b.alphaRef), atHi = alphaPasses(b.alphaFunc, float(hi + eps), b.alphaRef);
+  const bool mid = alphaPasses(b.alphaFunc, float((lo + hi) / 2), b.alphaRef);
+  if (b.alphaFunc == GL_EQUAL || b.alphaFunc == GL_NOTEQUAL) return -1;
+  if (atLo && atHi && mid) return 1;
+  if (!atLo && !atHi && !mid) return 0;
+  return -1;
 }
 
 void Reference::drawLines(const ts::Panel& p, const ts::Batch& b, PixelRect sc) {

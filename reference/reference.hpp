@@ -136,6 +136,11 @@ class Reference {
   // -1: it reads an unknown texel).
   float nestedSlack(int texture, double s, double t, double rho) const;
   std::vector<NestedTexels> nested_;
+  // The alpha test (issue 29): 1 when candidate c's alpha surely passes
+  // batch b's test, 0 when it surely fails (the fragment is discarded: no
+  // candidate), -1 when its legal alpha range straddles the reference value
+  // (the fragment may or may not be there).
+  int alphaVerdict(const ts::Batch& b, const Candidate& c) const;
   void place(int x, int y, const Candidate& c, bool sure, bool depthTest);
   void exemptDisc(double x, double y, double r, Exempt why, PixelRect clip);
   void note(const std::string& s);
@@ -159,6 +164,13 @@ class Reference {
 //   +X: -r_z, -r_y, r_x   -X: r_z, -r_y, -r_x   +Y: r_x, r_z, r_y
 //   -Y: r_x, -r_z, -r_y   +Z: r_x, -r_y, r_z    -Z: -r_x, -r_y, -r_z
 int cubeFace(const glm::dvec3& r, int* alt);
+
+// The alpha test and blend factors (issue 29, Batch::alphaFunc, blendSrc/
+// blendDst): does `alpha` pass glAlphaFunc(func, ref) (ref clamped to
+// [0, 1]); the colour src * srcFactor + dst * dstFactor per channel,
+// clamped, alpha the framebuffer's (FixedState's alpha factors).
+bool alphaPasses(GLenum func, float alpha, float ref);
+Colour blendWith(GLenum srcFactor, GLenum dstFactor, const Colour& src, const Colour& dst);
 void cubeFaceCoord(int face, const glm::dvec3& r, double* s, double* t);
 
 // The image rectangle a label covers as render.cpp draws it (text plus

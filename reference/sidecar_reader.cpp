@@ -146,6 +146,13 @@ GLenum glEnumFromName(const std::string& name) {
       {"GL_FASTEST", GL_FASTEST},
       {"GL_NICEST", GL_NICEST},
       {"GL_DONT_CARE", GL_DONT_CARE},
+      // issue 29: alpha functions and blend factors
+      {"GL_NEVER", GL_NEVER}, {"GL_LESS", GL_LESS}, {"GL_EQUAL", GL_EQUAL}, {"GL_LEQUAL", GL_LEQUAL},
+      {"GL_GREATER", GL_GREATER}, {"GL_NOTEQUAL", GL_NOTEQUAL}, {"GL_GEQUAL", GL_GEQUAL}, {"GL_ALWAYS", GL_ALWAYS},
+      {"GL_ZERO", GL_ZERO}, {"GL_ONE", GL_ONE}, {"GL_SRC_COLOR", GL_SRC_COLOR},
+      {"GL_ONE_MINUS_SRC_COLOR", GL_ONE_MINUS_SRC_COLOR}, {"GL_DST_COLOR", GL_DST_COLOR},
+      {"GL_ONE_MINUS_DST_COLOR", GL_ONE_MINUS_DST_COLOR}, {"GL_SRC_ALPHA", GL_SRC_ALPHA},
+      {"GL_ONE_MINUS_SRC_ALPHA", GL_ONE_MINUS_SRC_ALPHA},
   };
   for (const auto& [n, e] : k)
     if (name == n) return e;
@@ -416,6 +423,24 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
       if (const Json* cp = find(bv, "clip_plane")) {
         b.clip = true;
         b.clipPlane = vec<4>(*cp, bw + ".clip_plane");
+      }
+      // Issue 29 (absent = off / FixedState's): the alpha test, the blend's colour factors.
+      if (const Json* at = find(bv, "alpha_test")) {
+        try {
+          b.alphaFunc = glEnumFromName(text(member(*at, "func", bw + ".alpha_test"), bw + ".alpha_test.func"));
+        } catch (const ts::Error& e) {
+          fail(bw + ".alpha_test.func", e.what());
+        }
+        b.alphaRef = float(number(member(*at, "ref", bw + ".alpha_test"), bw + ".alpha_test.ref"));
+      }
+      if (const Json* bf = find(bv, "blend_func")) {
+        if (array(*bf, bw + ".blend_func").size() != 2) fail(bw + ".blend_func", "needs [source, destination]");
+        try {
+          b.blendSrc = glEnumFromName(text((*bf)[0], bw + ".blend_func"));
+          b.blendDst = glEnumFromName(text((*bf)[1], bw + ".blend_func"));
+        } catch (const ts::Error& e) {
+          fail(bw + ".blend_func", e.what());
+        }
       }
       const Json& verts = member(bv, "vertices", bw);
       for (size_t vi = 0; vi < array(verts, bw + ".vertices").size(); ++vi) {

@@ -145,6 +145,19 @@ struct Batch {
   // panel's modelview): keeps the points where plane · (x, y, z, 1) >= 0.
   bool clip = false;
   glm::vec4 clipPlane{0.0f};
+  // --- the alpha test and blend factors (issue 29, multitexturing) ---
+  // glEnable(GL_ALPHA_TEST); glAlphaFunc(alphaFunc, alphaRef): a fragment
+  // whose alpha (after texturing) fails the comparison is discarded, so it
+  // writes neither colour nor depth.  0 = the test off (GL's default).
+  GLenum alphaFunc = 0;
+  float alphaRef = 0.0f;
+  // With `blend` on: glBlendFuncSeparate(blendSrc, blendDst, FixedState's
+  // alpha factors) instead of FixedState's colour factors — (GL_ONE,
+  // GL_ONE) adds the fragment to the framebuffer, (GL_DST_COLOR, GL_ZERO)
+  // multiplies it in.  0, 0 = FixedState's (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).
+  GLenum blendSrc = 0, blendDst = 0;
+  bool alphaTest() const { return alphaFunc != 0; }
+  bool blendFactors() const { return blendSrc != 0 || blendDst != 0; }
 };
 
 // Viewport in pixels of the frame, origin at the top-left (as in the PNG).

@@ -16,6 +16,18 @@ typedef unsigned int GLuint;
 #define GL_ONE 1
 #define GL_SRC_ALPHA 0x0302
 #define GL_ONE_MINUS_SRC_ALPHA 0x0303
+// The alpha test and blend factors a batch may set (issue 29: Batch::alphaFunc, blendSrc/blendDst).
+#define GL_NEVER 0x0200
+#define GL_EQUAL 0x0202
+#define GL_LEQUAL 0x0203
+#define GL_GREATER 0x0204
+#define GL_NOTEQUAL 0x0205
+#define GL_GEQUAL 0x0206
+#define GL_ALWAYS 0x0207
+#define GL_SRC_COLOR 0x0300
+#define GL_ONE_MINUS_SRC_COLOR 0x0301
+#define GL_DST_COLOR 0x0306
+#define GL_ONE_MINUS_DST_COLOR 0x0307
 #define GL_LESS 0x0201
 #define GL_SMOOTH 0x1D01
 #define GL_DONT_CARE 0x1100

@@ -423,9 +423,16 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         glEnable(GL_BLEND);
         // Colour blends over what is there; alpha stays the clear's (opaque):
         // a figure must not let the page show through where it blends.
-        glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
+        if (b.blendFactors())  // issue 29: the batch's colour factors (adding, multiplying passes)
+          glBlendFuncSeparate(b.blendSrc, b.blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
+        else
+          glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
       } else {
         glDisable(GL_BLEND);
+      }
+      if (b.alphaTest()) {  // issue 29: discarded fragments write neither colour nor depth
+        glEnable(GL_ALPHA_TEST);
+        glAlphaFunc(b.alphaFunc, b.alphaRef);
       }
       glLineWidth(b.lineWidth);
       glPointSize(b.pointSize);
@@ -445,6 +452,7 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         for (int k = 0; k < 4; ++k)
           if (b.texGen.coords & (1u << k)) glDisable(kGenEnable[k]);
       if (b.clip) glDisable(GL_CLIP_PLANE0);
+      if (b.alphaTest()) glDisable(GL_ALPHA_TEST);
       if (tex3D) glDisable(GL_TEXTURE_3D);
       if (texCube) glDisable(GL_TEXTURE_CUBE_MAP);
       if (texMatrix) {
