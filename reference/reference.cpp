@@ -5,6 +5,7 @@
 
 #include "common/core/error.hpp"
 #include "common/core/text.hpp"
+#include "combine.hpp"
 #include "verify.hpp"
 
 namespace ref {
@@ -384,6 +385,22 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     }
   }
   const bool needLod = tex && (tex->mipmapped() || tex->desc().minFilter != tex->desc().magFilter);
+  // Issue 29: unit 1, a 2D texture read at unit 0's (s, t), modelled when
+  // unit 0 is a plain 2D texture without texgen or texture matrix.
+  // (A blended batch's candidates are exempt, but its reference picture still has unit 1.)
+  const Texture* tex1 = nullptr;
+  if (b.texture1 >= 0 && (tex || proto.kind != Candidate::Kind::Exempt)) {
+    const bool plain = tex && cubeFirst < 0 && volumeIndex < 0 && !b.texGen.on() && b.textureMatrix == glm::mat4(1.0f) &&
+                       b.program.empty() && cubeFirstFace_[size_t(b.texture1)] < 0 && volumeOf_[size_t(b.texture1)] < 0;
+    if (plain && unitEnvModelled(b.texEnv1, b.combine1) && texEnvModelled(b.texEnv)) {
+      tex1 = &textures_.at(size_t(b.texture1));
+    } else if (proto.kind != Candidate::Kind::Exempt) {
+      proto.kind = Candidate::Kind::Exempt;
+      proto.why = Exempt::Unsupported;
+      note("this second texture unit's state is not modelled: its pixels are exempt");
+    }
+  }
+  const bool needLod1 = tex1 && (tex1->mipmapped() || tex1->desc().minFilter != tex1->desc().magFilter);
 
   for (size_t i = 0; i + 2 < b.vertices.size(); i += 3) {
     ScreenPoly P;
@@ -459,6 +476,19 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           c.rho = std::max(c.rho, float(slices));
         }
       }
+      if (tex1 && c.kind == Candidate::Kind::Textured) {  // issue 29: unit 1 at the same (s, t)
+        const Deriv g = P.deriv(x, y);
+        const double e = tex1->lod(g);
+        double lo = e, hi = e;
+        if (needLod1) {
+          tex1->lodRange(g, opts_.lodModel, &lo, &hi);
+          lo -= opts_.lodMargin, hi += opts_.lodMargin;
+        }
+        c.texture1 = b.texture1;
+        c.lodLo1 = float(lo), c.lodHi1 = float(hi), c.rho1 = float(std::exp2(std::max(-30.0, e)));
+        c.env1 = b.texEnv1;
+        c.combine1 = b.combine1;
+      }
       return c;
     };
 
@@ -482,6 +512,14 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
         texel = tex->sample(s, t, tex->lod(P.deriv(x + 0.5, y + 0.5)));
       }
       Colour out = shadeFragment(b, col, sec, tex ? &texel : nullptr);
+      if (tex1) {  // issue 29: unit 1 over unit 0's result, then the colour sum
+        double s, t;
+        P.coordFrom(a[kS] / a[kQ], a[kT] / a[kQ], &s, &t);
+        const Colour texel1 = tex1->sample(s, t, tex1->lod(P.deriv(x + 0.5, y + 0.5)));
+        const Colour prev = texEnv(b.texEnv, col, texel, {b.envColor.r, b.envColor.g, b.envColor.b, b.envColor.a});
+        out = unitEnv(b.texEnv1, b.combine1, prev, texel1, col);
+        if (b.colorSum) out = colourSum(out, sec);
+      }
       // Issue 29: a fragment failing the alpha test is discarded (no colour,
       // no depth); a batch's own blend factors act on colour, alpha stays.
       if (b.alphaTest() && !alphaPasses(b.alphaFunc, out[3], b.alphaRef)) return;
@@ -581,7 +619,7 @@ int Reference::alphaVerdict(const ts::Batch& b, const Candidate& c) const {
   const double eps = double(vo.tolerance + 1) / 255.0;
   double lo = c.colour[3] - vo.colourEps, hi = c.colour[3] + vo.colourEps;
   if (c.kind == Candidate::Kind::Textured) {
-    if (c.volume >= 0) return -1;
+    if (c.volume >= 0 || c.texture1 >= 0) return -1;
     std::vector<Box> boxes;
     const double jitter = vo.positionEpsPixels * double(c.rho);
     textures_[size_t(c.texture)].legal(c.s, c.t, c.lodLo, c.lodHi, vo.nearestEpsTexels + jitter, vo.linearEpsTexels + jitter, &boxes);

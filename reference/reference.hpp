@@ -80,6 +80,13 @@ struct Candidate {
   // A nested frame's picture (issue 26): how far GL's texels may lie from
   // the reference's, added to both ends of the legal ranges.
   float slack = 0;
+  // Unit 1 (issue 29, Batch::texture1): its texture (index into
+  // Reference::textures(), -1 = off), read at (s, t) like unit 0, its LOD
+  // interval and texels per pixel, and its environment over unit 0's result.
+  int texture1 = -1;
+  float lodLo1 = 0, lodHi1 = 0, rho1 = 0;
+  GLenum env1 = GL_MODULATE;
+  ts::Combine combine1;
 };
 
 class Reference {

@@ -153,6 +153,10 @@ GLenum glEnumFromName(const std::string& name) {
       {"GL_ONE_MINUS_SRC_COLOR", GL_ONE_MINUS_SRC_COLOR}, {"GL_DST_COLOR", GL_DST_COLOR},
       {"GL_ONE_MINUS_DST_COLOR", GL_ONE_MINUS_DST_COLOR}, {"GL_SRC_ALPHA", GL_SRC_ALPHA},
       {"GL_ONE_MINUS_SRC_ALPHA", GL_ONE_MINUS_SRC_ALPHA},
+      // issue 29: unit 1's GL_COMBINE
+      {"GL_TEXTURE", GL_TEXTURE}, {"GL_COMBINE", GL_COMBINE}, {"GL_ADD_SIGNED", GL_ADD_SIGNED},
+      {"GL_INTERPOLATE", GL_INTERPOLATE}, {"GL_CONSTANT", GL_CONSTANT}, {"GL_PRIMARY_COLOR", GL_PRIMARY_COLOR},
+      {"GL_PREVIOUS", GL_PREVIOUS}, {"GL_SUBTRACT", GL_SUBTRACT}, {"GL_MODULATE_ADD_ATI", GL_MODULATE_ADD_ATI},
   };
   for (const auto& [n, e] : k)
     if (name == n) return e;
@@ -440,6 +444,26 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
           b.blendDst = glEnumFromName(text((*bf)[1], bw + ".blend_func"));
         } catch (const ts::Error& e) {
           fail(bw + ".blend_func", e.what());
+        }
+      }
+      if (const Json* u1 = find(bv, "unit1")) {  // issue 29: the second texture unit
+        const std::string uw = bw + ".unit1";
+        b.texture1 = integer(member(*u1, "texture", uw), uw + ".texture", 0, double(f.textures.size()) - 1);
+        try {
+          b.texEnv1 = glEnumFromName(text(member(*u1, "tex_env", uw), uw + ".tex_env"));
+          if (b.texEnv1 == GL_COMBINE) {
+            b.combine1.rgb = glEnumFromName(text(member(*u1, "combine_rgb", uw), uw + ".combine_rgb"));
+            const Json& src = member(*u1, "sources", uw);
+            const Json& op = member(*u1, "operands", uw);
+            if (array(src, uw + ".sources").size() != 3 || array(op, uw + ".operands").size() != 3)
+              fail(uw, "sources and operands need 3 entries each");
+            for (size_t k = 0; k < 3; ++k) {
+              b.combine1.source[k] = glEnumFromName(text(src[k], uw + ".sources"));
+              b.combine1.operand[k] = glEnumFromName(text(op[k], uw + ".operands"));
+            }
+          }
+        } catch (const ts::Error& e) {
+          fail(uw, e.what());
         }
       }
       const Json& verts = member(bv, "vertices", bw);

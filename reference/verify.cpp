@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "common/core/error.hpp"
+#include "combine.hpp"
 
 namespace ref {
 namespace {
@@ -95,6 +96,16 @@ void legalAt(const Reference& r, int x, int y, const VerifyOptions& o, std::vect
         if (c.env != GL_REPLACE) {  // the environment's table over the boxes (exact for GL_MODULATE as before)
           Box col = widen(c.colour, o.colourEps);
           for (size_t k = first; k < out.size(); ++k) out[k] = texEnvBox(c.env, col, out[k], c.envColour);
+        }
+        if (c.texture1 >= 0) {  // issue 29: unit 1's texels over unit 0's result (combine.hpp)
+          std::vector<Box> texels1;
+          const double j1 = o.positionEpsPixels * double(c.rho1);
+          r.textures()[size_t(c.texture1)].legal(c.s, c.t, c.lodLo1, c.lodHi1, o.nearestEpsTexels + j1, o.linearEpsTexels + j1, &texels1);
+          const Box primary = widen(c.colour, o.colourEps);
+          const std::vector<Box> unit0(out.begin() + std::ptrdiff_t(first), out.end());
+          out.resize(first);
+          for (const Box& p : unit0)
+            for (const Box& t1 : texels1) out.push_back(unitEnvBox(c.env1, c.combine1, p, t1, primary));
         }
         if (c.colorSum) {  // monotone in both: the sum of the boxes' ends
           Box sec = widen(c.secondary, o.colourEps);

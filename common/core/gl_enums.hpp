@@ -61,3 +61,13 @@ typedef unsigned int GLuint;
 #define GL_DECAL 0x2101
 #define GL_BLEND 0x0BE2
 #define GL_ADD 0x0104
+// GL_COMBINE on a second texture unit (issue 29: Batch::texture1, ts::Combine).
+#define GL_TEXTURE 0x1702
+#define GL_COMBINE 0x8570
+#define GL_ADD_SIGNED 0x8574
+#define GL_INTERPOLATE 0x8575
+#define GL_CONSTANT 0x8576
+#define GL_PRIMARY_COLOR 0x8577
+#define GL_PREVIOUS 0x8578
+#define GL_SUBTRACT 0x84E7
+#define GL_MODULATE_ADD_ATI 0x8744

@@ -137,3 +137,125 @@ TEST(GLBlendFactors, AddAndMultiplyAgainstTheReferencePicture) {
   }
 }
 }  // namespace
+
+// ---- the second texture unit (issue 29) ---------------------------------
+namespace {
+// n x n texels of one hue, varying per texel, alpha varying too.
+ts::TextureDesc tinted(int n, glm::vec3 hue, GLenum filter, int seed) {
+  auto img = std::make_shared<ts::Image>(n, n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int v = 90 + (i * 37 + j * 53 + seed * 29) % 160;
+      img->set(i, j, {uint8_t(hue.r * v), uint8_t(hue.g * v), uint8_t(hue.b * v), uint8_t(60 + (i * 11 + j * 29 + seed) % 190)});
+    }
+  ts::TextureDesc t;
+  t.name = "oracle_tinted";  // not a sidecar generator: GL tests only
+  t.params = {{"size", std::to_string(n)}, {"seed", std::to_string(seed)}};
+  t.image = img;
+  t.minFilter = t.magFilter = filter;
+  return t;
+}
+
+// One quad over the frame: unit 0 texture 0 (env0), unit 1 texture 1
+// (env1 / combine); vertex colours differ per corner.
+ts::Frame twoUnitFrame(GLenum filter, GLenum env0, GLenum env1, ts::Combine combine, bool unit1 = true) {
+  ts::Frame f;
+  f.width = f.height = 128;
+  const int a = f.addTexture(tinted(16, {1.0f, 0.8f, 0.5f}, filter, 1));
+  const int b = f.addTexture(tinted(8, {0.6f, 0.9f, 1.0f}, filter, 2));
+  ts::Panel p = oracle::unitPanel(128, 128);
+  ts::Batch q = oracle::quad({0, 0}, {1, 1}, {0, 0}, {1, 1}, a, env0);
+  const glm::vec4 corner[6] = {{0.9f, 0.5f, 0.3f, 1}, {0.4f, 0.9f, 0.6f, 0.8f}, {0.7f, 0.6f, 1.0f, 0.5f},
+                               {0.9f, 0.5f, 0.3f, 1}, {0.7f, 0.6f, 1.0f, 0.5f}, {1.0f, 1.0f, 0.9f, 0.9f}};
+  for (size_t k = 0; k < 6; ++k) q.vertices[k].color = corner[k];
+  if (unit1) q.texture1 = b, q.texEnv1 = env1, q.combine1 = combine;
+  p.batches = {q};
+  f.panels.push_back(p);
+  return f;
+}
+
+ts::Combine combineOf(GLenum rgb, GLenum s0, GLenum s1, GLenum s2 = GL_CONSTANT, GLenum op2 = GL_SRC_ALPHA) {
+  ts::Combine c;
+  c.rgb = rgb;
+  c.source[0] = s0, c.source[1] = s1, c.source[2] = s2;
+  c.operand[2] = op2;
+  return c;
+}
+}  // namespace
+
+TEST(GLSecondUnit, CombineModesAgainstTheReference) {
+  struct Case {
+    const char* name;
+    GLenum env0, env1;
+    ts::Combine combine;
+  };
+  const Case cases[] = {
+      {"ab_combine_modulate", GL_REPLACE, GL_COMBINE, combineOf(GL_MODULATE, GL_PREVIOUS, GL_TEXTURE)},
+      {"light_map_modulate", GL_REPLACE, GL_MODULATE, {}},
+      {"combine_add", GL_MODULATE, GL_COMBINE, combineOf(GL_ADD, GL_TEXTURE, GL_PREVIOUS)},
+      {"modulate_add_ati", GL_MODULATE, GL_COMBINE, combineOf(GL_MODULATE_ADD_ATI, GL_TEXTURE, GL_PREVIOUS, GL_PREVIOUS, GL_SRC_ALPHA)},
+      {"interpolate_primary", GL_REPLACE, GL_COMBINE, combineOf(GL_INTERPOLATE, GL_TEXTURE, GL_PREVIOUS, GL_PRIMARY_COLOR, GL_SRC_COLOR)},
+  };
+  for (GLenum filter : {GL_NEAREST, GL_LINEAR})
+    for (const Case& c : cases) {
+      const std::string n = std::string(c.name) + (filter == GL_NEAREST ? "_nearest" : "_linear");
+      const ts::Frame f = twoUnitFrame(filter, c.env0, c.env1, c.combine);
+      const ts::Image img = oracle::render(f);
+      ref::VerifyResult r = ref::verifyImage(img, f, oracle::options(n, "multitexture"));
+      EXPECT_TRUE(r.ok()) << r.summary();
+      EXPECT_EQ(r.checked, 128L * 128L) << n;
+      std::printf("%s: %ld invalid of %ld checked (%ld textured)\n", n.c_str(), r.invalid, r.checked, r.textured);
+      // Described without unit 1, or with another function: wrong.
+      ref::VerifyResult bad = ref::verifyImage(img, twoUnitFrame(filter, c.env0, c.env1, c.combine, false),
+                                               oracle::options(n + "_no_unit1", "multitexture_negative"));
+      EXPECT_GT(bad.invalid, 128L * 128L / 2) << n << ": " << bad.summary();
+      ts::Combine other = c.combine;
+      other.rgb = c.combine.rgb == GL_ADD ? GLenum(GL_MODULATE) : GLenum(GL_ADD);
+      ref::VerifyResult bad2 = ref::verifyImage(img, twoUnitFrame(filter, c.env0, GL_COMBINE, other),
+                                                oracle::options(n + "_other_function", "multitexture_negative"));
+      EXPECT_GT(bad2.invalid, 128L * 128L / 2) << n << ": " << bad2.summary();
+    }
+}
+
+// AB + CD: the two-unit pass (A x B), then C x D added (GL_ONE, GL_ONE).
+// The added pass is exempt in the candidates: the reference picture must
+// be within 2 levels of GL's everywhere, and the AB + CD of the texels.
+TEST(GLSecondUnit, ABPlusCDInTwoPasses) {
+  ts::Frame f;
+  f.width = f.height = 128;
+  int t[4];
+  for (int k = 0; k < 4; ++k) t[k] = f.addTexture(tinted(16, {0.5f + 0.1f * k, 0.9f - 0.1f * k, 0.6f}, GL_NEAREST, 3 + k));
+  ts::Panel p = oracle::unitPanel(128, 128);
+  const ts::Combine ab = combineOf(GL_MODULATE, GL_PREVIOUS, GL_TEXTURE);
+  ts::Batch first = oracle::quad({0, 0}, {1, 1}, {0, 0}, {1, 1}, t[0]);
+  first.texture1 = t[1], first.texEnv1 = GL_COMBINE, first.combine1 = ab;
+  ts::Batch second = oracle::quad({0, 0}, {1, 1}, {0, 0}, {1, 1}, t[2]);
+  second.texture1 = t[3], second.texEnv1 = GL_COMBINE, second.combine1 = ab;
+  second.blend = true, second.blendSrc = GL_ONE, second.blendDst = GL_ONE;
+  p.batches = {first, second};
+  f.panels.push_back(p);
+  const ts::Image img = oracle::render(f);
+  ref::VerifyOptions vo = oracle::options("ab_plus_cd", "multitexture");
+  const ref::Reference reference(f, vo.render);
+  ref::FuzzyOptions fo;
+  fo.maxChannelDiff = 2;
+  fo.name = "ab_plus_cd";
+  fo.outputDir = vo.outputDir;
+  const ref::FuzzyResult r = ref::compareFuzzy(img, reference.image(), fo);
+  EXPECT_TRUE(r.ok) << r.message;
+  std::printf("ab_plus_cd: max channel difference %d\n", r.maxDiff);
+  // Pixel (x, y) shows texel (x / 8, 15 - y / 8) of each: AB + CD per channel.
+  int worst = 0;
+  for (int y = 4; y < 128; y += 8)
+    for (int x = 4; x < 128; x += 8) {
+      const int i = x / 8, j = 15 - y / 8;
+      auto channels = [](ts::Rgba c) { return glm::dvec3(c.r, c.g, c.b) / 255.0; };
+      const glm::dvec3 g = channels(img.at(x, y)) * 255.0;
+      auto v = [&](int k) { return channels(f.textures[size_t(t[k])].image->at(i, j)); };
+      const glm::dvec3 want = glm::min(glm::dvec3(1.0), v(0) * v(1) + v(2) * v(3)) * 255.0;
+      for (int ch = 0; ch < 3; ++ch) {
+        worst = std::max(worst, int(std::lround(std::abs(g[ch] - want[ch]))));
+      }
+    }
+  EXPECT_LE(worst, 2);
+}
