@@ -1,0 +1,103 @@
+// demos/multitexture/mt_frames.hpp — AB + CD as Frames (issue 29): the
+// passes of mt_gl.hpp's abcdPasses described as data, so the figure draws
+// them and the CPU reference recomputes them from the sidecar.  Unit 1 and
+// GL_COMBINE (Batch::texture1, ts::Combine), the multiplying and adding
+// blends (Batch::blendSrc / blendDst); the one-unit path's intermediate
+// buffer is a nested frame (TextureDesc::renderedFrom: A, then x B, whose
+// render is the texture the last pass adds).  measure() renders these very
+// Frames (Renderer::render) and the figure draws them into its panels.
+#pragma once
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "common/core/frame.hpp"
+#include "common/core/textures.hpp"
+#include "mt_gl.hpp"
+
+namespace mt::frames {
+constexpr int kAbcdPixels = 128;
+
+// The square over the unit panel, (s, t) = (x, y): one glBegin pass.
+inline ts::Batch square(int texture, const std::string& role) {
+  ts::Batch b;
+  b.role = role;
+  b.texture = texture;
+  const glm::vec2 c[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int i : {0, 1, 2, 0, 2, 3}) b.vertices.push_back({{c[i], 0.0f}, {c[i], 0.0f, 1.0f}, {1, 1, 1, 1}});
+  return b;
+}
+inline ts::Batch times(ts::Batch b) { return b.blend = true, b.blendSrc = GL_DST_COLOR, b.blendDst = GL_ZERO, b; }
+inline ts::Batch plus(ts::Batch b) { return b.blend = true, b.blendSrc = GL_ONE, b.blendDst = GL_ONE, b; }
+// Unit 1 = `t` by GL_COMBINE: PREVIOUS x TEXTURE.
+inline ts::Batch withUnit1(ts::Batch b, int t) {
+  b.texture1 = t, b.texEnv1 = GL_COMBINE;
+  b.combine1.rgb = GL_MODULATE, b.combine1.source[0] = GL_PREVIOUS, b.combine1.source[1] = GL_TEXTURE;
+  return b;
+}
+
+// A, B, C, D as the frame's textures (GL_NEAREST, clamped), their indices.
+// Image row j is t = (j + 1/2) / 64, as mt_gl.hpp's upload has it.
+inline std::array<int, 4> addTextures(ts::Frame& f, const std::vector<ts::Image>& t) {
+  std::array<int, 4> ix{};
+  const char* names[4] = {"A", "B", "C", "D"};
+  for (size_t k = 0; k < 4; ++k) {
+    ts::Image top(t[k].width, t[k].height);  // the Frame's textures have row 0 at t = 1
+    for (int j = 0; j < top.height; ++j)
+      for (int i = 0; i < top.width; ++i) top.set(i, top.height - 1 - j, t[k].at(i, j));
+    ts::TextureDesc d = ts::renderedImageTexture(top, "multitexture", std::string("texture ") + names[k], "multitexture");
+    d.minFilter = d.magFilter = GL_NEAREST;
+    d.wrapS = d.wrapT = GL_CLAMP_TO_EDGE;
+    ix[k] = f.addTexture(d);
+  }
+  return ix;
+}
+
+inline ts::Panel unitPanel(const std::string& id, ts::Rect viewport) {
+  ts::Panel p;
+  p.id = id;
+  p.viewport = viewport;
+  p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
+  p.clear = true;
+  p.clearColor = {0, 0, 0, 1};
+  return p;
+}
+
+// The intermediate buffer of the one-unit path: A, then x B.
+inline ts::Frame abFrame(const std::vector<ts::Image>& t) {
+  ts::Frame f;
+  f.width = f.height = kAbcdPixels;
+  const std::array<int, 4> ix = addTextures(f, t);
+  ts::Panel p = unitPanel("ab", {0, 0, kAbcdPixels, kAbcdPixels});
+  p.batches = {square(ix[0], "A"), times(square(ix[1], "x B"))};
+  f.panels.push_back(p);
+  return f;
+}
+
+// Method m's batches into `f` (whose textures they add).  kStored needs
+// the intermediate buffer's render `ab` (of abFrame).
+inline std::vector<ts::Batch> abcdBatches(ts::Frame& f, const std::vector<ts::Image>& t, int m, const ts::Image& ab) {
+  const std::array<int, 4> ix = addTextures(f, t);
+  const int A = ix[0], B = ix[1], C = ix[2], D = ix[3];
+  if (m == kMultitexture) return {withUnit1(square(A, "A, unit 1: x B"), B), plus(withUnit1(square(C, "+ C, unit 1: x D"), D))};
+  if (m == kFramebufferOnly) return {square(A, "A"), times(square(B, "x B")), plus(square(C, "+ C")), times(square(D, "x D"))};
+  ts::TextureDesc d = ts::renderedImageTexture(ab, "multitexture", "AB, the intermediate buffer", "multitexture");
+  d.minFilter = d.magFilter = GL_NEAREST;
+  d.wrapS = d.wrapT = GL_CLAMP_TO_EDGE;
+  d.renderedFrom = std::make_shared<const ts::Frame>(abFrame(t));
+  const int stored = f.addTexture(d);
+  return {square(C, "C"), times(square(D, "x D")), plus(square(stored, "+ AB (stored)"))};
+}
+
+// Method m alone, 128 x 128: what measure() renders.
+inline ts::Frame abcdFrame(const std::vector<ts::Image>& t, int m, const ts::Image& ab) {
+  ts::Frame f;
+  f.width = f.height = kAbcdPixels;
+  ts::Panel p = unitPanel("abcd", {0, 0, kAbcdPixels, kAbcdPixels});
+  p.batches = abcdBatches(f, t, m, ab);
+  f.panels.push_back(p);
+  return f;
+}
+}  // namespace mt::frames
