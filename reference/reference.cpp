@@ -288,6 +288,7 @@ void Reference::place(int x, int y, const Candidate& c, bool sure, bool depthTes
     if (!mustPass) sure = false;
   }
   Candidate n = c;
+  if (n.blended && n.kind != Candidate::Kind::Exempt) n.below = h;  // issue 29: blended over what is there
   n.next = sure ? -1 : h;
   pool_.push_back(n);
   h = int(pool_.size()) - 1;
@@ -365,7 +366,12 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     }
   }
   proto.colorSum = b.colorSum;
-  if (b.blend && proto.kind != Candidate::Kind::Exempt) {
+  // Issue 29: a batch's own blend factors without the depth test are
+  // modelled (Candidate::blended); FixedState's blend is exempt as before.
+  if (b.blend && b.blendFactors() && !p.depthTest && !b.alphaTest() && proto.kind != Candidate::Kind::Exempt) {
+    proto.blended = true;
+    proto.blendSrc = b.blendSrc, proto.blendDst = b.blendDst;
+  } else if (b.blend && proto.kind != Candidate::Kind::Exempt) {
     proto.kind = Candidate::Kind::Exempt;
     proto.why = Exempt::Blend;
   }

@@ -87,6 +87,13 @@ struct Candidate {
   float lodLo1 = 0, lodHi1 = 0, rho1 = 0;
   GLenum env1 = GL_MODULATE;
   ts::Combine combine1;
+  // A fragment blended with a batch's own factors (issue 29, Batch::blendSrc
+  // / blendDst, no depth test): its colour is blend(this fragment, what the
+  // pixel held), `below` the first candidate of what it held (-1: the clear
+  // colour); verify.cpp combines the two legal sets.
+  bool blended = false;
+  GLenum blendSrc = GL_ONE, blendDst = GL_ZERO;
+  int below = -1;
 };
 
 class Reference {

@@ -86,9 +86,15 @@ inline std::vector<ts::Batch> abcdBatches(ts::Frame& f, const std::vector<ts::Im
   ts::TextureDesc d = ts::renderedImageTexture(ab, "multitexture", "AB, the intermediate buffer", "multitexture");
   d.minFilter = d.magFilter = GL_NEAREST;
   d.wrapS = d.wrapT = GL_CLAMP_TO_EDGE;
+  // A nested frame's texel (x, y) is its picture's pixel (x, y), row 0 the
+  // top (TextureDesc::renderedFrom): the readback as it is, so t runs down
+  // the picture and the square reads it with t = 1 - y.
+  d.image = std::make_shared<const ts::Image>(ab);
   d.renderedFrom = std::make_shared<const ts::Frame>(abFrame(t));
   const int stored = f.addTexture(d);
-  return {square(C, "C"), times(square(D, "x D")), plus(square(stored, "+ AB (stored)"))};
+  ts::Batch add = plus(square(stored, "+ AB (stored)"));
+  for (ts::Vertex& v : add.vertices) v.tex.y = 1.0f - v.tex.y;
+  return {square(C, "C"), times(square(D, "x D")), add};
 }
 
 // Method m alone, 128 x 128: what measure() renders.

@@ -259,3 +259,52 @@ TEST(GLSecondUnit, ABPlusCDInTwoPasses) {
     }
   EXPECT_LE(worst, 2);
 }
+
+// The one-unit path: A, x B rendered first (a nested frame, the
+// intermediate buffer), then C, x D, + that picture; and the framebuffer
+// alone: A, x B, + C, x D.  The blended candidates (GL_DST_COLOR, GL_ZERO;
+// GL_ONE, GL_ONE) are checked: every GL pixel legal.
+TEST(GLSecondUnit, BlendedPassesAndAnIntermediateBuffer) {
+  auto textures = [](ts::Frame& f, int* t) {
+    for (int k = 0; k < 4; ++k) t[k] = f.addTexture(tinted(16, {0.5f + 0.1f * k, 0.9f - 0.1f * k, 0.6f}, GL_NEAREST, 3 + k));
+  };
+  auto blended = [](ts::Batch b, GLenum s, GLenum d) { return b.blend = true, b.blendSrc = s, b.blendDst = d, b; };
+  ts::Frame inner;
+  inner.width = inner.height = 128;
+  int ti[4];
+  textures(inner, ti);
+  ts::Panel pi = oracle::unitPanel(128, 128);
+  pi.clear = true, pi.clearColor = {0, 0, 0, 1};
+  pi.batches = {oracle::quad({0, 0}, {1, 1}, {0, 0}, {1, 1}, ti[0]),
+                blended(oracle::quad({0, 0}, {1, 1}, {0, 0}, {1, 1}, ti[1]), GL_DST_COLOR, GL_ZERO),
+                blended(oracle::quad({0, 0}, {1, 1}, {0, 0}, {1, 1}, ti[2]), GL_ONE, GL_ONE),
+                blended(oracle::quad({0, 0}, {1, 1}, {0, 0}, {1, 1}, ti[3]), GL_DST_COLOR, GL_ZERO)};
+  inner.panels.push_back(pi);
+  const ts::Image fbOnly = oracle::render(inner);
+  ref::VerifyResult r0 = ref::verifyImage(fbOnly, inner, oracle::options("framebuffer_only", "multitexture"));
+  EXPECT_TRUE(r0.ok()) << r0.summary();
+  std::printf("framebuffer_only: %s\n", r0.summary().c_str());
+  inner.panels[0].batches.resize(2);  // A x B: the intermediate buffer
+  const ts::Image ab = oracle::render(inner);
+  ts::Frame f;
+  f.width = 240, f.height = 180;
+  int t[4];
+  textures(f, t);
+  ts::TextureDesc stored = oracle::colourful(1);
+  stored.name = "oracle_ab", stored.image = std::make_shared<ts::Image>(ab);
+  stored.minFilter = stored.magFilter = GL_NEAREST;
+  stored.wrapS = stored.wrapT = GL_CLAMP_TO_EDGE;
+  stored.renderedFrom = std::make_shared<const ts::Frame>(inner);
+  const int s = f.addTexture(stored);
+  ts::Panel p = oracle::unitPanel(160, 160);
+  p.viewport = {50, 12, 160, 160};
+  p.clear = true, p.clearColor = {0, 0, 0, 1};
+  p.batches = {oracle::quad({0, 0}, {1, 1}, {0, 0}, {1, 1}, t[2]),
+               blended(oracle::quad({0, 0}, {1, 1}, {0, 0}, {1, 1}, t[3]), GL_DST_COLOR, GL_ZERO),
+               blended(oracle::quad({0, 0}, {1, 1}, {0, 0}, {1, 1}, s), GL_ONE, GL_ONE)};
+  f.panels.push_back(p);
+  const ts::Image img = oracle::render(f);
+  ref::VerifyResult r = ref::verifyImage(img, f, oracle::options("stored_ab", "multitexture"));
+  EXPECT_TRUE(r.ok()) << r.summary();
+  std::printf("stored_ab: %s\n", r.summary().c_str());
+}
