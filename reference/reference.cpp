@@ -366,9 +366,9 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     }
   }
   proto.colorSum = b.colorSum;
-  // Issue 29: a batch's own blend factors without the depth test are
-  // modelled (Candidate::blended); FixedState's blend is exempt as before.
-  if (b.blend && b.blendFactors() && !p.depthTest && !b.alphaTest() && proto.kind != Candidate::Kind::Exempt) {
+  // Issue 29: a batch's own blend factors are modelled (Candidate::blended);
+  // FixedState's blend is exempt as before.
+  if (b.blend && b.blendFactors() && proto.kind != Candidate::Kind::Exempt) {
     proto.blended = true;
     proto.blendSrc = b.blendSrc, proto.blendDst = b.blendDst;
   } else if (b.blend && proto.kind != Candidate::Kind::Exempt) {

@@ -88,7 +88,7 @@ struct Candidate {
   GLenum env1 = GL_MODULATE;
   ts::Combine combine1;
   // A fragment blended with a batch's own factors (issue 29, Batch::blendSrc
-  // / blendDst, no depth test): its colour is blend(this fragment, what the
+  // / blendDst): its colour is blend(this fragment, what the
   // pixel held), `below` the first candidate of what it held (-1: the clear
   // colour); verify.cpp combines the two legal sets.
   bool blended = false;

@@ -16,7 +16,7 @@
 // unit 1 (GL_COMBINE) is applied over unit 0's result; the alpha test drops
 // a fragment whose legal alpha surely fails it (one that may fail leaves
 // what was beneath legal too); a batch blended with its own factors
-// (Batch::blendSrc / blendDst, no depth test) is checked: its boxes blended
+// (Batch::blendSrc / blendDst) is checked: its boxes blended
 // with the legal colours of what the pixel held (Candidate::below).
 //
 // On failure the rendered image, the reference image and an error mask (red:

@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -104,6 +105,68 @@ inline ts::Frame abcdFrame(const std::vector<ts::Image>& t, int m, const ts::Ima
   ts::Panel p = unitPanel("abcd", {0, 0, kAbcdPixels, kAbcdPixels});
   p.batches = abcdBatches(f, t, m, ab);
   f.panels.push_back(p);
+  return f;
+}
+
+// ---- the cutout tree (alpha test, blending) as Frames ------------------------
+// The passes of mt_gl.hpp's cutoutHidden / cutoutEdge as data: a panel in
+// pixel coordinates of a 256 x 256 picture (x right, y up, z in [-1, 1],
+// +1 nearest), the tree a texture (GL_NEAREST, or GL_LINEAR magnified).
+inline int addTree(ts::Frame& f, const ts::Image& tree, GLenum mag) {
+  ts::Image top(tree.width, tree.height);  // renderedImageTexture flips: row 0 stays t = 0
+  for (int j = 0; j < top.height; ++j)
+    for (int i = 0; i < top.width; ++i) top.set(i, top.height - 1 - j, tree.at(i, j));
+  ts::TextureDesc d = ts::renderedImageTexture(top, "multitexture", "the cutout tree", "multitexture");
+  d.minFilter = GL_NEAREST, d.magFilter = mag;
+  d.wrapS = d.wrapT = GL_CLAMP_TO_EDGE;
+  return f.addTexture(d);
+}
+inline ts::Batch rect(glm::vec4 xy, float z, glm::vec4 st, int texture, glm::vec4 colour, const std::string& role) {
+  ts::Batch b;
+  b.role = role;
+  b.texture = texture;
+  const glm::vec2 c[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int i : {0, 1, 2, 0, 2, 3})
+    b.vertices.push_back({{glm::mix(xy.x, xy.z, c[i].x), glm::mix(xy.y, xy.w, c[i].y), z},
+                          {glm::mix(st.x, st.z, c[i].x), glm::mix(st.y, st.w, c[i].y), 0.0f, 1.0f}, colour});
+  return b;
+}
+inline ts::Batch treeState(ts::Batch b, int mode) {
+  if (mode == kAlphaTest) b.alphaFunc = GL_GREATER, b.alphaRef = 0.5f;
+  // kBlend: FixedState's GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA.  Otherwise
+  // (GL_ONE, GL_ZERO): the colour as drawn, and the framebuffer's alpha
+  // kept (FixedState's alpha factors), so the picture stays opaque where
+  // the texels are transparent (GL would use glColorMask for that).
+  b.blend = true;
+  if (mode != kBlend) b.blendSrc = GL_ONE, b.blendDst = GL_ZERO;
+  return b;
+}
+inline ts::Panel pixelPanel(const std::string& id, ts::Rect viewport, bool depth) {
+  ts::Panel p = unitPanel(id, viewport);
+  p.projection = glm::ortho(0.0f, 256.0f, 0.0f, 256.0f, -1.0f, 1.0f);
+  p.depthTest = depth;
+  return p;
+}
+inline glm::vec4 sky() { return glm::vec4(kSky.r, kSky.g, kSky.b, 255) / 255.0f; }
+// The tree drawn first, in front (z = 0.5), then the sky behind it (z = -0.5), depth test on.
+inline ts::Panel hiddenPanel(ts::Frame& f, const ts::Image& tree, int mode, const std::string& id, ts::Rect viewport) {
+  ts::Panel p = pixelPanel(id, viewport, true);
+  p.batches = {treeState(rect({64, 64, 192, 192}, 0.5f, {0, 0, 1, 1}, addTree(f, tree, GL_NEAREST), glm::vec4(1), "the tree, first"), mode),
+               rect({0, 0, 256, 256}, -0.5f, {0, 0, 1, 1}, -1, sky(), "the sky, behind")};
+  return p;
+}
+// The sky, then 16 x 16 texels of the crown's edge magnified 16 times (GL_LINEAR).
+inline ts::Panel edgePanel(ts::Frame& f, const ts::Image& tree, int mode, const std::string& id, ts::Rect viewport) {
+  ts::Panel p = pixelPanel(id, viewport, false);
+  p.batches = {rect({0, 0, 256, 256}, 0, {0, 0, 1, 1}, -1, sky(), "the sky"),
+               treeState(rect({0, 0, 256, 256}, 0, {0.0625f, 0.5f, 0.3125f, 0.75f}, addTree(f, tree, GL_LINEAR), glm::vec4(1),
+                              "the tree's edge x16"), mode)};
+  return p;
+}
+inline ts::Frame alone(int w, int h, const std::function<ts::Panel(ts::Frame&, ts::Rect)>& panel) {
+  ts::Frame f;
+  f.width = w, f.height = h;
+  f.panels.push_back(panel(f, {0, 0, w, h}));
   return f;
 }
 }  // namespace mt::frames

@@ -38,7 +38,7 @@ struct Result {
   ts::Image abcdAb;                            // the one-unit path's intermediate buffer (mt_frames.hpp)
   ts::Image pear[2];                           // by Pear
   bool combine3 = false;
-  ts::gl::CallList abcdCalls[3], pearCalls[2], glossCalls, cutoutCalls, spotCalls;
+  ts::gl::CallList abcdCalls[3], pearCalls[2], glossCalls, spotCalls;
 };
 
 // Pixels of a readback inside the tree's rectangle (64..191) whose texel is
@@ -84,17 +84,18 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& m
   const ts::Image treeImg = treeTexture();
   const GLuint tree = upload(treeImg, GL_NEAREST, GL_CLAMP_TO_EDGE);
   const char* modes[3] = {"no_alpha_test", "alpha_test", "blend"};
+  // The Frames the figure draws (mt_frames.hpp: Batch::alphaFunc, blend), rendered by the Renderer.
+  auto hiddenFrame = [&](int m) {
+    return frames::alone(256, 256, [&](ts::Frame& f, ts::Rect v) { return frames::hiddenPanel(f, treeImg, m, "hidden", v); });
+  };
   for (int m = 0; m < 3; ++m) {
-    out.hidden[m] = cutoutHidden(r, tree, m), out.edge[m] = cutoutEdge(r, tree, m);
+    out.hidden[m] = opaque(r.renderOffscreen(hiddenFrame(m)));
+    out.edge[m] = opaque(r.renderOffscreen(
+        frames::alone(256, 256, [&](ts::Frame& f, ts::Rect v) { return frames::edgePanel(f, treeImg, m, "edge", v); })));
     put(std::string("cutout_hidden_px[") + modes[m] + "]", hiddenSky(out.hidden[m], treeImg),
         "sky pixels hidden by the transparent texels' depth, the tree drawn first");
     put(std::string("edge_fringe_px[") + modes[m] + "]", fringe(out.edge[m]), "pixels mixing sky and tree at the edge, magnified 16x");
   }
-  out.cutoutCalls = ts::recordRender(r, [&] {  // the alpha-tested pass again, its upload in the listing
-    const GLuint t = upload(treeImg, GL_NEAREST, GL_CLAMP_TO_EDGE);
-    out.hidden[kAlphaTest] = cutoutHidden(r, t, kAlphaTest);
-    glDeleteTextures(1, &t);
-  });
   out.crossTrees = crossTrees(r, tree);
   glDeleteTextures(1, &tree);
   ts::measureProgress(0.2);

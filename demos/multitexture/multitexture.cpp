@@ -147,11 +147,11 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
   using views::crop;
   if (view_ == 0) {
     views::pictures(f,
-                    {{m->hidden[kNoAlphaTest], "no alpha test", fmt("%.0f sky pixels hidden", v("cutout_hidden_px[no_alpha_test]"))},
-                     {m->hidden[kAlphaTest], "GL_GREATER 0.5", fmt("%.0f hidden", v("cutout_hidden_px[alpha_test]")), m->cutoutCalls},
-                     {m->hidden[kBlend], "blending, no test", fmt("%.0f hidden", v("cutout_hidden_px[blend]"))},
-                     {m->edge[kBlend], "edge x16, blending", fmt("%.0f fringe pixels", v("edge_fringe_px[blend]"))},
-                     {m->edge[kAlphaTest], "edge x16, alpha test", fmt("%.0f fringe pixels", v("edge_fringe_px[alpha_test]"))},
+                    {{{}, "no alpha test", fmt("%.0f sky pixels hidden", v("cutout_hidden_px[no_alpha_test]"))},
+                     {{}, "GL_GREATER 0.5", fmt("%.0f hidden", v("cutout_hidden_px[alpha_test]"))},
+                     {{}, "blending, no test", fmt("%.0f hidden", v("cutout_hidden_px[blend]"))},
+                     {{}, "edge x16, blending", fmt("%.0f fringe pixels", v("edge_fringe_px[blend]"))},
+                     {{}, "edge x16, alpha test", fmt("%.0f fringe pixels", v("edge_fringe_px[alpha_test]"))},
                      {crop(m->crossTrees, 256, 0, 128, 128), "cross tree, 45 deg",
                       fmt("width >= %.4f", v("cross_tree_min_width"))}},
                     1.0f,
@@ -159,6 +159,12 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
                     "(orthographic, 5-degree steps): one quad " + fmt("%.4f", v("single_quad_min_width")) + " .. " +
                         fmt("%.4f", v("single_quad_max_width")) + " (|cos|), cross tree " + fmt("%.4f", v("cross_tree_min_width")) +
                         " .. " + fmt("%.4f", v("cross_tree_max_width")) + " (max(|cos|, |sin|) >= 0.7071).");
+    // The cutout passes are the Frames measure() rendered (mt_frames.hpp), drawn in their panels.
+    const ts::Image tree = treeTexture();
+    for (ts::Panel& p : f.panels)
+      for (int k = 0; k < 5; ++k)
+        if (p.id == "picture_" + std::to_string(k))
+          p = k < 3 ? frames::hiddenPanel(f, tree, k, p.id, p.viewport) : frames::edgePanel(f, tree, k == 3 ? kBlend : kAlphaTest, p.id, p.viewport);
   } else if (view_ == 1) {
     std::vector<views::Picture> ps = {{m->perPixel, "per-pixel (CPU)", "base x lighting"}};
     for (int k = 0; k < 4; ++k) {
