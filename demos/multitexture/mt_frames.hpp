@@ -1,5 +1,5 @@
 // demos/multitexture/mt_frames.hpp — AB + CD as Frames (issue 29): the
-// passes of mt_gl.hpp's abcdPasses described as data, so the figure draws
+// passes GL drew for it described as data, so the figure draws
 // them and the CPU reference recomputes them from the sidecar.  Unit 1 and
 // GL_COMBINE (Batch::texture1, ts::Combine), the multiplying and adding
 // blends (Batch::blendSrc / blendDst); the one-unit path's intermediate
@@ -109,7 +109,7 @@ inline ts::Frame abcdFrame(const std::vector<ts::Image>& t, int m, const ts::Ima
 }
 
 // ---- the cutout tree (alpha test, blending) as Frames ------------------------
-// The passes of mt_gl.hpp's cutoutHidden / cutoutEdge as data: a panel in
+// The tree's hidden-sky and edge passes as data: a panel in
 // pixel coordinates of a 256 x 256 picture (x right, y up, z in [-1, 1],
 // +1 nearest), the tree a texture (GL_NEAREST, or GL_LINEAR magnified).
 inline int addTree(ts::Frame& f, const ts::Image& tree, GLenum mag) {

@@ -28,7 +28,7 @@
 //   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);     // PREVIOUS x TEXTURE = AB
 //   glBlendFunc(GL_ONE, GL_ONE);                                // + CD, + g i_spec
 //   glBlendFunc(GL_DST_COLOR, GL_ZERO);                         // x B, one unit
-//   AB stored: a texture rendered from a frame of its own (mt_frames.hpp; mt_gl.hpp: glCopyTexImage2D)
+//   AB stored: a texture rendered from a frame of its own (a nested frame, mt_frames.hpp)
 //   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE_ADD_ATI);  // t_r t_g + t_d i_diff
 //   glMatrixMode(GL_TEXTURE); glTranslatef(...); glScalef(...);  // the moving spot
 #include <string>
