@@ -5,7 +5,9 @@
 // environments GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD with the
 // environment colour, the texture matrix applied to each vertex's (s,t,r,q)
 // before interpolation, GL_COLOR_SUM with the secondary colour, or the
-// "bilinear_quad" program of demos/quad_distortion).
+// "bilinear_quad" program of demos/quad_distortion; issue 29: a second
+// texture unit with GL_COMBINE (combine.hpp), the alpha test, and a batch's
+// own blend factors).
 //
 // It produces two things:
 //   * image(): the reference picture — each covered pixel centre (scanline
