@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "combine.hpp"
 #include "common/core/sidecar.hpp"  // ts::glEnumName
 
 namespace ref {
@@ -159,7 +160,23 @@ Inspection Inspector::fragment(int x, int y, int pi, int bi, const ScreenPoly& P
       notes.push_back("texture environment " + enumName(b.texEnv) + " is not modelled: the colour is the texel");
   }
   in.referenceRgba = shadeFragment(b, in.primary, in.secondary, in.textured ? &texel : nullptr);
-  if (b.blend)
+  // Issue 29: unit 1 at the same (s, t), over unit 0's result, then the colour sum.
+  std::string why1;
+  const Texture* tex1 = in.textured && b.texture1 >= 0 && unitEnvModelled(b.texEnv1, b.combine1) ? texture(b.texture1, &why1) : nullptr;
+  if (tex1) {
+    const Colour texel1 = tex1->sample(in.sq, in.tq, tex1->lod(g));
+    const Colour prev = texEnv(b.texEnv, in.primary, texel, {b.envColor.r, b.envColor.g, b.envColor.b, b.envColor.a});
+    in.referenceRgba = unitEnv(b.texEnv1, b.combine1, prev, texel1, in.primary);
+    if (b.colorSum) in.referenceRgba = colourSum(in.referenceRgba, in.secondary);
+    notes.push_back("unit 1: texture " + std::to_string(b.texture1) + " '" + tex1->desc().name + "' by " + enumName(b.texEnv1) +
+                    (b.texEnv1 == GL_COMBINE ? " (" + enumName(b.combine1.rgb) + ")" : std::string()) + " over unit 0's result");
+  }
+  if (b.alphaTest())
+    notes.push_back("alpha test " + enumName(b.alphaFunc) + " " + std::to_string(b.alphaRef) +
+                    (alphaPasses(b.alphaFunc, in.referenceRgba[3], b.alphaRef) ? ": passes" : ": fails, the fragment is discarded"));
+  if (b.blend && b.blendFactors())
+    notes.push_back("blended (" + enumName(b.blendSrc) + ", " + enumName(b.blendDst) + ") with the colour beneath");
+  else if (b.blend)
     notes.push_back("blended (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) over the colour beneath: the pixel is "
                     "alpha times this colour plus (1 - alpha) times what was there");
   for (const std::string& n : notes) in.note += (in.note.empty() ? "" : "; ") + n;
@@ -202,7 +219,11 @@ Inspection Inspector::at(int x, int y) const {
           float z = float(P.P[kZ].at(x + 0.5, y + 0.5));
           if (p.depthTest && !(z < depth)) continue;
           Inspection in = fragment(x, y, int(pi), int(bi), P);
-          pixel = toRgba(b.blend ? blendOver(in.referenceRgba, pixel) : in.referenceRgba);
+          if (b.alphaTest() && !alphaPasses(b.alphaFunc, in.referenceRgba[3], b.alphaRef)) continue;  // issue 29: discarded
+          if (b.blend && b.blendFactors())  // issue 29: the batch's own factors
+            pixel = toRgba(blendWith(b.blendSrc, b.blendDst, in.referenceRgba, toColour(pixel)));
+          else
+            pixel = toRgba(b.blend ? blendOver(in.referenceRgba, pixel) : in.referenceRgba);
           in.pixelRgba = toColour(pixel);
           if (p.depthTest) depth = z;
           top = std::move(in);

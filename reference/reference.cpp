@@ -5,6 +5,7 @@
 
 #include "common/core/error.hpp"
 #include "common/core/text.hpp"
+#include "combine.hpp"
 #include "verify.hpp"
 
 namespace ref {
@@ -288,6 +289,7 @@ void Reference::place(int x, int y, const Candidate& c, bool sure, bool depthTes
     if (!mustPass) sure = false;
   }
   Candidate n = c;
+  if (n.blended && n.kind != Candidate::Kind::Exempt) n.below = h;  // issue 29: blended over what is there
   n.next = sure ? -1 : h;
   pool_.push_back(n);
   h = int(pool_.size()) - 1;
@@ -365,7 +367,12 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     }
   }
   proto.colorSum = b.colorSum;
-  if (b.blend && proto.kind != Candidate::Kind::Exempt) {
+  // Issue 29: a batch's own blend factors are modelled (Candidate::blended);
+  // FixedState's blend is exempt as before.
+  if (b.blend && b.blendFactors() && proto.kind != Candidate::Kind::Exempt) {
+    proto.blended = true;
+    proto.blendSrc = b.blendSrc, proto.blendDst = b.blendDst;
+  } else if (b.blend && proto.kind != Candidate::Kind::Exempt) {
     proto.kind = Candidate::Kind::Exempt;
     proto.why = Exempt::Blend;
   }
@@ -385,6 +392,22 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     }
   }
   const bool needLod = tex && (tex->mipmapped() || tex->desc().minFilter != tex->desc().magFilter);
+  // Issue 29: unit 1, a 2D texture read at unit 0's (s, t), modelled when
+  // unit 0 is a plain 2D texture without texgen or texture matrix.
+  // (A blended batch's candidates are exempt, but its reference picture still has unit 1.)
+  const Texture* tex1 = nullptr;
+  if (b.texture1 >= 0 && (tex || proto.kind != Candidate::Kind::Exempt)) {
+    const bool plain = tex && cubeFirst < 0 && volumeIndex < 0 && !b.texGen.on() && b.textureMatrix == glm::mat4(1.0f) &&
+                       b.program.empty() && cubeFirstFace_[size_t(b.texture1)] < 0 && volumeOf_[size_t(b.texture1)] < 0;
+    if (plain && unitEnvModelled(b.texEnv1, b.combine1) && texEnvModelled(b.texEnv)) {
+      tex1 = &textures_.at(size_t(b.texture1));
+    } else if (proto.kind != Candidate::Kind::Exempt) {
+      proto.kind = Candidate::Kind::Exempt;
+      proto.why = Exempt::Unsupported;
+      note("this second texture unit's state is not modelled: its pixels are exempt");
+    }
+  }
+  const bool needLod1 = tex1 && (tex1->mipmapped() || tex1->desc().minFilter != tex1->desc().magFilter);
 
   for (size_t i = 0; i + 2 < b.vertices.size(); i += 3) {
     ScreenPoly P;
@@ -460,6 +483,19 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           c.rho = std::max(c.rho, float(slices));
         }
       }
+      if (tex1 && c.kind == Candidate::Kind::Textured) {  // issue 29: unit 1 at the same (s, t)
+        const Deriv g = P.deriv(x, y);
+        const double e = tex1->lod(g);
+        double lo = e, hi = e;
+        if (needLod1) {
+          tex1->lodRange(g, opts_.lodModel, &lo, &hi);
+          lo -= opts_.lodMargin, hi += opts_.lodMargin;
+        }
+        c.texture1 = b.texture1;
+        c.lodLo1 = float(lo), c.lodHi1 = float(hi), c.rho1 = float(std::exp2(std::max(-30.0, e)));
+        c.env1 = b.texEnv1;
+        c.combine1 = b.combine1;
+      }
       return c;
     };
 
@@ -483,7 +519,20 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
         texel = tex->sample(s, t, tex->lod(P.deriv(x + 0.5, y + 0.5)));
       }
       Colour out = shadeFragment(b, col, sec, tex ? &texel : nullptr);
-      if (b.blend) {
+      if (tex1) {  // issue 29: unit 1 over unit 0's result, then the colour sum
+        double s, t;
+        P.coordFrom(a[kS] / a[kQ], a[kT] / a[kQ], &s, &t);
+        const Colour texel1 = tex1->sample(s, t, tex1->lod(P.deriv(x + 0.5, y + 0.5)));
+        const Colour prev = texEnv(b.texEnv, col, texel, {b.envColor.r, b.envColor.g, b.envColor.b, b.envColor.a});
+        out = unitEnv(b.texEnv1, b.combine1, prev, texel1, col);
+        if (b.colorSum) out = colourSum(out, sec);
+      }
+      // Issue 29: a fragment failing the alpha test is discarded (no colour,
+      // no depth); a batch's own blend factors act on colour, alpha stays.
+      if (b.alphaTest() && !alphaPasses(b.alphaFunc, out[3], b.alphaRef)) return;
+      if (b.blend && b.blendFactors()) {
+        out = blendWith(b.blendSrc, b.blendDst, out, toColour(image_.at(x, y)));
+      } else if (b.blend) {
         Colour dst = toColour(image_.at(x, y));
         float al = out[3];
         for (size_t k = 0; k < 4; ++k) out[k] = out[k] * al + dst[k] * (1 - al);
@@ -515,6 +564,11 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           continue;
         }
         const Candidate c = candidateAt(cx, cy);
+        if (b.alphaTest() && c.kind != Candidate::Kind::Exempt) {  // issue 29
+          const int verdict = alphaVerdict(b, c);
+          if (verdict == 0) continue;  // discarded: no colour, no depth
+          if (verdict < 0) sure = false;
+        }
         place(x, y, c, sure, p.depthTest);
         // Near a cube's face boundary either face is legal (issue 26).
         Candidate other = c;
@@ -522,6 +576,76 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           place(x, y, other, false, p.depthTest);
       }
   }
+}
+
+// ---- the alpha test and blend factors (issue 29) ----------------------------
+bool alphaPasses(GLenum func, float alpha, float ref) {
+  ref = std::min(1.0f, std::max(0.0f, ref));
+  switch (func) {
+    case GL_NEVER: return false;
+    case GL_LESS: return alpha < ref;
+    case GL_EQUAL: return alpha == ref;
+    case GL_LEQUAL: return alpha <= ref;
+    case GL_GREATER: return alpha > ref;
+    case GL_NOTEQUAL: return alpha != ref;
+    case GL_GEQUAL: return alpha >= ref;
+    default: return true;  // GL_ALWAYS
+  }
+}
+
+namespace {
+float blendFactor(GLenum f, int k, const Colour& src, const Colour& dst) {
+  switch (f) {
+    case GL_ZERO: return 0.0f;
+    case GL_ONE: return 1.0f;
+    case GL_SRC_COLOR: return src[size_t(k)];
+    case GL_ONE_MINUS_SRC_COLOR: return 1.0f - src[size_t(k)];
+    case GL_DST_COLOR: return dst[size_t(k)];
+    case GL_ONE_MINUS_DST_COLOR: return 1.0f - dst[size_t(k)];
+    case GL_SRC_ALPHA: return src[3];
+    case GL_ONE_MINUS_SRC_ALPHA: return 1.0f - src[3];
+    default: return 1.0f;
+  }
+}
+}  // namespace
+
+Colour blendWith(GLenum srcFactor, GLenum dstFactor, const Colour& src, const Colour& dst) {
+  Colour out = dst;  // alpha: FixedState's (GL_ZERO, GL_ONE) keeps the framebuffer's
+  for (int k = 0; k < 3; ++k)
+    out[size_t(k)] = float(clamp01(src[size_t(k)] * blendFactor(srcFactor, k, src, dst) +
+                                   dst[size_t(k)] * blendFactor(dstFactor, k, src, dst)));
+  return out;
+}
+
+int Reference::alphaVerdict(const ts::Batch& b, const Candidate& c) const {
+  // The candidate's legal alpha, as verify.cpp's legalAt bounds it with the
+  // default VerifyOptions (coordinate jitter, colour epsilon), widened by
+  // the tolerance of 8 bits: within that of the reference value GL's
+  // comparison may go either way.
+  const VerifyOptions vo;
+  const double eps = double(vo.tolerance + 1) / 255.0;
+  double lo = c.colour[3] - vo.colourEps, hi = c.colour[3] + vo.colourEps;
+  if (c.kind == Candidate::Kind::Textured) {
+    if (c.volume >= 0 || c.texture1 >= 0) return -1;
+    std::vector<Box> boxes;
+    const double jitter = vo.positionEpsPixels * double(c.rho);
+    textures_[size_t(c.texture)].legal(c.s, c.t, c.lodLo, c.lodHi, vo.nearestEpsTexels + jitter, vo.linearEpsTexels + jitter, &boxes);
+    if (boxes.empty()) return -1;
+    Box col;
+    for (size_t k = 0; k < 4; ++k)
+      col.lo[k] = float(std::max(0.0, double(c.colour[k]) - vo.colourEps)), col.hi[k] = float(std::min(1.0, double(c.colour[k]) + vo.colourEps));
+    lo = 2, hi = -1;
+    for (Box bx : boxes) {
+      if (c.env != GL_REPLACE) bx = texEnvBox(c.env, col, bx, c.envColour);
+      lo = std::min(lo, double(bx.lo[3]) - c.slack), hi = std::max(hi, double(bx.hi[3]) + c.slack);
+    }
+  }
+  const bool atLo = alphaPasses(b.alphaFunc, float(lo - eps), b.alphaRef), atHi = alphaPasses(b.alphaFunc, float(hi + eps), b.alphaRef);
+  const bool mid = alphaPasses(b.alphaFunc, float((lo + hi) / 2), b.alphaRef);
+  if (b.alphaFunc == GL_EQUAL || b.alphaFunc == GL_NOTEQUAL) return -1;
+  if (atLo && atHi && mid) return 1;
+  if (!atLo && !atHi && !mid) return 0;
+  return -1;
 }
 
 void Reference::drawLines(const ts::Panel& p, const ts::Batch& b, PixelRect sc) {

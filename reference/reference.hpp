@@ -5,7 +5,9 @@
 // environments GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD with the
 // environment colour, the texture matrix applied to each vertex's (s,t,r,q)
 // before interpolation, GL_COLOR_SUM with the secondary colour, or the
-// "bilinear_quad" program of demos/quad_distortion).
+// "bilinear_quad" program of demos/quad_distortion; issue 29: a second
+// texture unit with GL_COMBINE (combine.hpp), the alpha test, and a batch's
+// own blend factors).
 //
 // It produces two things:
 //   * image(): the reference picture — each covered pixel centre (scanline
@@ -80,6 +82,20 @@ struct Candidate {
   // A nested frame's picture (issue 26): how far GL's texels may lie from
   // the reference's, added to both ends of the legal ranges.
   float slack = 0;
+  // Unit 1 (issue 29, Batch::texture1): its texture (index into
+  // Reference::textures(), -1 = off), read at (s, t) like unit 0, its LOD
+  // interval and texels per pixel, and its environment over unit 0's result.
+  int texture1 = -1;
+  float lodLo1 = 0, lodHi1 = 0, rho1 = 0;
+  GLenum env1 = GL_MODULATE;
+  ts::Combine combine1;
+  // A fragment blended with a batch's own factors (issue 29, Batch::blendSrc
+  // / blendDst): its colour is blend(this fragment, what the
+  // pixel held), `below` the first candidate of what it held (-1: the clear
+  // colour); verify.cpp combines the two legal sets.
+  bool blended = false;
+  GLenum blendSrc = GL_ONE, blendDst = GL_ZERO;
+  int below = -1;
 };
 
 class Reference {
@@ -136,6 +152,11 @@ class Reference {
   // -1: it reads an unknown texel).
   float nestedSlack(int texture, double s, double t, double rho) const;
   std::vector<NestedTexels> nested_;
+  // The alpha test (issue 29): 1 when candidate c's alpha surely passes
+  // batch b's test, 0 when it surely fails (the fragment is discarded: no
+  // candidate), -1 when its legal alpha range straddles the reference value
+  // (the fragment may or may not be there).
+  int alphaVerdict(const ts::Batch& b, const Candidate& c) const;
   void place(int x, int y, const Candidate& c, bool sure, bool depthTest);
   void exemptDisc(double x, double y, double r, Exempt why, PixelRect clip);
   void note(const std::string& s);
@@ -159,6 +180,13 @@ class Reference {
 //   +X: -r_z, -r_y, r_x   -X: r_z, -r_y, -r_x   +Y: r_x, r_z, r_y
 //   -Y: r_x, -r_z, -r_y   +Z: r_x, -r_y, r_z    -Z: -r_x, -r_y, -r_z
 int cubeFace(const glm::dvec3& r, int* alt);
+
+// The alpha test and blend factors (issue 29, Batch::alphaFunc, blendSrc/
+// blendDst): does `alpha` pass glAlphaFunc(func, ref) (ref clamped to
+// [0, 1]); the colour src * srcFactor + dst * dstFactor per channel,
+// clamped, alpha the framebuffer's (FixedState's alpha factors).
+bool alphaPasses(GLenum func, float alpha, float ref);
+Colour blendWith(GLenum srcFactor, GLenum dstFactor, const Colour& src, const Colour& dst);
 void cubeFaceCoord(int face, const glm::dvec3& r, double* s, double* t);
 
 // The image rectangle a label covers as render.cpp draws it (text plus

@@ -146,6 +146,17 @@ GLenum glEnumFromName(const std::string& name) {
       {"GL_FASTEST", GL_FASTEST},
       {"GL_NICEST", GL_NICEST},
       {"GL_DONT_CARE", GL_DONT_CARE},
+      // issue 29: alpha functions and blend factors
+      {"GL_NEVER", GL_NEVER}, {"GL_LESS", GL_LESS}, {"GL_EQUAL", GL_EQUAL}, {"GL_LEQUAL", GL_LEQUAL},
+      {"GL_GREATER", GL_GREATER}, {"GL_NOTEQUAL", GL_NOTEQUAL}, {"GL_GEQUAL", GL_GEQUAL}, {"GL_ALWAYS", GL_ALWAYS},
+      {"GL_ZERO", GL_ZERO}, {"GL_ONE", GL_ONE}, {"GL_SRC_COLOR", GL_SRC_COLOR},
+      {"GL_ONE_MINUS_SRC_COLOR", GL_ONE_MINUS_SRC_COLOR}, {"GL_DST_COLOR", GL_DST_COLOR},
+      {"GL_ONE_MINUS_DST_COLOR", GL_ONE_MINUS_DST_COLOR}, {"GL_SRC_ALPHA", GL_SRC_ALPHA},
+      {"GL_ONE_MINUS_SRC_ALPHA", GL_ONE_MINUS_SRC_ALPHA},
+      // issue 29: unit 1's GL_COMBINE
+      {"GL_TEXTURE", GL_TEXTURE}, {"GL_COMBINE", GL_COMBINE}, {"GL_ADD_SIGNED", GL_ADD_SIGNED},
+      {"GL_INTERPOLATE", GL_INTERPOLATE}, {"GL_CONSTANT", GL_CONSTANT}, {"GL_PRIMARY_COLOR", GL_PRIMARY_COLOR},
+      {"GL_PREVIOUS", GL_PREVIOUS}, {"GL_SUBTRACT", GL_SUBTRACT}, {"GL_MODULATE_ADD_ATI", GL_MODULATE_ADD_ATI},
   };
   for (const auto& [n, e] : k)
     if (name == n) return e;
@@ -416,6 +427,44 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
       if (const Json* cp = find(bv, "clip_plane")) {
         b.clip = true;
         b.clipPlane = vec<4>(*cp, bw + ".clip_plane");
+      }
+      // Issue 29 (absent = off / FixedState's): the alpha test, the blend's colour factors.
+      if (const Json* at = find(bv, "alpha_test")) {
+        try {
+          b.alphaFunc = glEnumFromName(text(member(*at, "func", bw + ".alpha_test"), bw + ".alpha_test.func"));
+        } catch (const ts::Error& e) {
+          fail(bw + ".alpha_test.func", e.what());
+        }
+        b.alphaRef = float(number(member(*at, "ref", bw + ".alpha_test"), bw + ".alpha_test.ref"));
+      }
+      if (const Json* bf = find(bv, "blend_func")) {
+        if (array(*bf, bw + ".blend_func").size() != 2) fail(bw + ".blend_func", "needs [source, destination]");
+        try {
+          b.blendSrc = glEnumFromName(text((*bf)[0], bw + ".blend_func"));
+          b.blendDst = glEnumFromName(text((*bf)[1], bw + ".blend_func"));
+        } catch (const ts::Error& e) {
+          fail(bw + ".blend_func", e.what());
+        }
+      }
+      if (const Json* u1 = find(bv, "unit1")) {  // issue 29: the second texture unit
+        const std::string uw = bw + ".unit1";
+        b.texture1 = integer(member(*u1, "texture", uw), uw + ".texture", 0, double(f.textures.size()) - 1);
+        try {
+          b.texEnv1 = glEnumFromName(text(member(*u1, "tex_env", uw), uw + ".tex_env"));
+          if (b.texEnv1 == GL_COMBINE) {
+            b.combine1.rgb = glEnumFromName(text(member(*u1, "combine_rgb", uw), uw + ".combine_rgb"));
+            const Json& src = member(*u1, "sources", uw);
+            const Json& op = member(*u1, "operands", uw);
+            if (array(src, uw + ".sources").size() != 3 || array(op, uw + ".operands").size() != 3)
+              fail(uw, "sources and operands need 3 entries each");
+            for (size_t k = 0; k < 3; ++k) {
+              b.combine1.source[k] = glEnumFromName(text(src[k], uw + ".sources"));
+              b.combine1.operand[k] = glEnumFromName(text(op[k], uw + ".operands"));
+            }
+          }
+        } catch (const ts::Error& e) {
+          fail(uw, e.what());
+        }
       }
       const Json& verts = member(bv, "vertices", bw);
       for (size_t vi = 0; vi < array(verts, bw + ".vertices").size(); ++vi) {

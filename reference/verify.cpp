@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "common/core/error.hpp"
+#include "combine.hpp"
 
 namespace ref {
 namespace {
@@ -56,17 +57,46 @@ std::string failureDir(const std::string& requested) {
   return dir;
 }
 
+namespace {
+// Issue 29: the legal colours of a pixel from candidate h on (a blended
+// candidate's `below`), as legalAt.
+void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Box>* outp, Exempt* why);
+
+// src * srcFactor + dst * dstFactor per channel over boxes: multilinear in
+// the colours, so the extremes lie on the corners (alpha: the framebuffer's).
+Box blendBox(GLenum sf, GLenum df, const Box& s, const Box& d) {
+  Box o{{2, 2, 2, 2}, {-1, -1, -1, -1}};
+  for (int corner = 0; corner < 16; ++corner) {
+    Colour sc = s.lo, dc = d.lo;
+    for (size_t k = 0; k < 3; ++k) {
+      if (corner & 1) sc[k] = s.hi[k];
+      if (corner & 2) dc[k] = d.hi[k];
+    }
+    if (corner & 4) sc[3] = s.hi[3];
+    if (corner & 8) dc[3] = d.hi[3];
+    const Colour v = blendWith(sf, df, sc, dc);
+    for (size_t k = 0; k < 4; ++k) o.lo[k] = std::min(o.lo[k], v[k]), o.hi[k] = std::max(o.hi[k], v[k]);
+  }
+  return o;
+}
+}  // namespace
+
 void legalAt(const Reference& r, int x, int y, const VerifyOptions& o, std::vector<Box>* outp, Exempt* why) {
+  legalFrom(r, r.head(x, y), o, outp, why);
+}
+
+namespace {
+void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Box>* outp, Exempt* why) {
   std::vector<Box>& out = *outp;
   out.clear();
   *why = Exempt::None;
-  int h = r.head(x, y);
   if (h < 0) {
     out.push_back(widen(r.clearColour(), 0.0));
     return;
   }
   for (int i = h; i >= 0; i = r.candidate(i).next) {
     const Candidate& c = r.candidate(i);
+    const size_t start = out.size();  // this candidate's boxes begin here
     switch (c.kind) {
       case Candidate::Kind::Exempt:
         *why = c.why;
@@ -96,6 +126,16 @@ void legalAt(const Reference& r, int x, int y, const VerifyOptions& o, std::vect
           Box col = widen(c.colour, o.colourEps);
           for (size_t k = first; k < out.size(); ++k) out[k] = texEnvBox(c.env, col, out[k], c.envColour);
         }
+        if (c.texture1 >= 0) {  // issue 29: unit 1's texels over unit 0's result (combine.hpp)
+          std::vector<Box> texels1;
+          const double j1 = o.positionEpsPixels * double(c.rho1);
+          r.textures()[size_t(c.texture1)].legal(c.s, c.t, c.lodLo1, c.lodHi1, o.nearestEpsTexels + j1, o.linearEpsTexels + j1, &texels1);
+          const Box primary = widen(c.colour, o.colourEps);
+          const std::vector<Box> unit0(out.begin() + std::ptrdiff_t(first), out.end());
+          out.resize(first);
+          for (const Box& p : unit0)
+            for (const Box& t1 : texels1) out.push_back(unitEnvBox(c.env1, c.combine1, p, t1, primary));
+        }
         if (c.colorSum) {  // monotone in both: the sum of the boxes' ends
           Box sec = widen(c.secondary, o.colourEps);
           for (size_t k = first; k < out.size(); ++k)
@@ -104,8 +144,32 @@ void legalAt(const Reference& r, int x, int y, const VerifyOptions& o, std::vect
         break;
       }
     }
+    if (c.blended) {  // issue 29: this fragment's boxes blended over what the pixel held
+      std::vector<Box> below;
+      Exempt belowWhy;
+      legalFrom(r, c.below, o, &below, &belowWhy);
+      if (belowWhy != Exempt::None) {
+        *why = belowWhy;
+        out.clear();
+        return;
+      }
+      for (Box& d : below)  // GL stored what the pixel held in 8 bits: half a step either way
+        for (size_t k = 0; k < 3; ++k) d.lo[k] = std::max(0.0f, d.lo[k] - 0.5f / 255), d.hi[k] = std::min(1.0f, d.hi[k] + 0.5f / 255);
+      const std::vector<Box> src(out.begin() + std::ptrdiff_t(start), out.end());
+      out.resize(start);
+      Box hull{{2, 2, 2, 2}, {-1, -1, -1, -1}};
+      size_t n = 0;
+      for (const Box& s : src)
+        for (const Box& d : below) {
+          const Box b = blendBox(c.blendSrc, c.blendDst, s, d);
+          if (++n <= 16) out.push_back(b);
+          for (size_t k = 0; k < 4; ++k) hull.lo[k] = std::min(hull.lo[k], b.lo[k]), hull.hi[k] = std::max(hull.hi[k], b.hi[k]);
+        }
+      if (n > 16) out.resize(start), out.push_back(hull);  // many layers of alternatives: their hull (looser, still legal)
+    }
   }
 }
+}  // namespace
 
 VerifyResult verifyImage(const ts::Image& got, const ts::Frame& frame, const VerifyOptions& o) {
   Reference r(frame, o.render);

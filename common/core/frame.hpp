@@ -115,6 +115,22 @@ struct TexGen {
   static constexpr unsigned S = 1, T = 2, R = 4, Q = 8;
 };
 
+// GL_COMBINE's colour function of a texture unit (issue 29): glTexEnvi
+// GL_COMBINE_RGB, GL_SOURCEk_RGB, GL_OPERANDk_RGB.  Arg k = source k's
+// colour (GL_SRC_COLOR), 1 - it, its alpha (GL_SRC_ALPHA) or 1 - that;
+// sources GL_TEXTURE (this unit's texel), GL_PREVIOUS (the unit before's
+// result), GL_PRIMARY_COLOR, GL_CONSTANT (the unit's environment colour,
+// GL's (0, 0, 0, 0) here).  C = GL_REPLACE a0 | GL_MODULATE a0 a1 |
+// GL_ADD a0 + a1 | GL_ADD_SIGNED a0 + a1 - 1/2 | GL_SUBTRACT a0 - a1 |
+// GL_INTERPOLATE a0 a2 + a1 (1 - a2) | GL_MODULATE_ADD_ATI a0 a2 + a1
+// (GL_ATI_texture_env_combine3), clamped to [0, 1].  Alpha keeps GL's
+// defaults: GL_MODULATE of GL_TEXTURE and GL_PREVIOUS alphas.
+struct Combine {
+  GLenum rgb = GL_MODULATE;
+  GLenum source[3] = {GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT};        // GL's defaults
+  GLenum operand[3] = {GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA};  // GL's defaults
+};
+
 struct Program {
   std::string file;  // where the source lives, for error messages ("demos/x/x.cpp")
   std::string vertex, fragment;
@@ -145,6 +161,28 @@ struct Batch {
   // panel's modelview): keeps the points where plane · (x, y, z, 1) >= 0.
   bool clip = false;
   glm::vec4 clipPlane{0.0f};
+  // --- the alpha test and blend factors (issue 29, multitexturing) ---
+  // glEnable(GL_ALPHA_TEST); glAlphaFunc(alphaFunc, alphaRef): a fragment
+  // whose alpha (after texturing) fails the comparison is discarded, so it
+  // writes neither colour nor depth.  0 = the test off (GL's default).
+  GLenum alphaFunc = 0;
+  float alphaRef = 0.0f;
+  // With `blend` on: glBlendFuncSeparate(blendSrc, blendDst, FixedState's
+  // alpha factors) instead of FixedState's colour factors — (GL_ONE,
+  // GL_ONE) adds the fragment to the framebuffer, (GL_DST_COLOR, GL_ZERO)
+  // multiplies it in.  0, 0 = FixedState's (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).
+  GLenum blendSrc = 0, blendDst = 0;
+  // --- a second texture unit (issue 29, multitexturing) ---
+  // Unit 1 textured with Frame::textures[texture1] (2D), reading the same
+  // (s, t, r, q) as unit 0 (glMultiTexCoord4f(GL_TEXTURE1, ...); no texture
+  // matrix or texgen on unit 1), combined with unit 0's result by texEnv1:
+  // a classic environment (GL_MODULATE: previous x texel, ...) or
+  // GL_COMBINE with `combine1`.  -1 = unit 1 off.
+  int texture1 = -1;
+  GLenum texEnv1 = GL_MODULATE;
+  Combine combine1;
+  bool alphaTest() const { return alphaFunc != 0; }
+  bool blendFactors() const { return blendSrc != 0 || blendDst != 0; }
 };
 
 // Viewport in pixels of the frame, origin at the top-left (as in the PNG).

@@ -16,6 +16,18 @@ typedef unsigned int GLuint;
 #define GL_ONE 1
 #define GL_SRC_ALPHA 0x0302
 #define GL_ONE_MINUS_SRC_ALPHA 0x0303
+// The alpha test and blend factors a batch may set (issue 29: Batch::alphaFunc, blendSrc/blendDst).
+#define GL_NEVER 0x0200
+#define GL_EQUAL 0x0202
+#define GL_LEQUAL 0x0203
+#define GL_GREATER 0x0204
+#define GL_NOTEQUAL 0x0205
+#define GL_GEQUAL 0x0206
+#define GL_ALWAYS 0x0207
+#define GL_SRC_COLOR 0x0300
+#define GL_ONE_MINUS_SRC_COLOR 0x0301
+#define GL_DST_COLOR 0x0306
+#define GL_ONE_MINUS_DST_COLOR 0x0307
 #define GL_LESS 0x0201
 #define GL_SMOOTH 0x1D01
 #define GL_DONT_CARE 0x1100
@@ -49,3 +61,13 @@ typedef unsigned int GLuint;
 #define GL_DECAL 0x2101
 #define GL_BLEND 0x0BE2
 #define GL_ADD 0x0104
+// GL_COMBINE on a second texture unit (issue 29: Batch::texture1, ts::Combine).
+#define GL_TEXTURE 0x1702
+#define GL_COMBINE 0x8570
+#define GL_ADD_SIGNED 0x8574
+#define GL_INTERPOLATE 0x8575
+#define GL_CONSTANT 0x8576
+#define GL_PRIMARY_COLOR 0x8577
+#define GL_PREVIOUS 0x8578
+#define GL_SUBTRACT 0x84E7
+#define GL_MODULATE_ADD_ATI 0x8744

@@ -126,6 +126,26 @@ std::string glEnumName(GLenum e) {
     case GL_ONE_MINUS_SRC_ALPHA: return "GL_ONE_MINUS_SRC_ALPHA";
     case GL_LESS: return "GL_LESS";
     case GL_SMOOTH: return "GL_SMOOTH";
+    case GL_NEVER: return "GL_NEVER";
+    case GL_EQUAL: return "GL_EQUAL";
+    case GL_LEQUAL: return "GL_LEQUAL";
+    case GL_GREATER: return "GL_GREATER";
+    case GL_NOTEQUAL: return "GL_NOTEQUAL";
+    case GL_GEQUAL: return "GL_GEQUAL";
+    case GL_ALWAYS: return "GL_ALWAYS";
+    case GL_SRC_COLOR: return "GL_SRC_COLOR";
+    case GL_ONE_MINUS_SRC_COLOR: return "GL_ONE_MINUS_SRC_COLOR";
+    case GL_DST_COLOR: return "GL_DST_COLOR";
+    case GL_ONE_MINUS_DST_COLOR: return "GL_ONE_MINUS_DST_COLOR";
+    case GL_TEXTURE: return "GL_TEXTURE";
+    case GL_COMBINE: return "GL_COMBINE";
+    case GL_ADD_SIGNED: return "GL_ADD_SIGNED";
+    case GL_INTERPOLATE: return "GL_INTERPOLATE";
+    case GL_CONSTANT: return "GL_CONSTANT";
+    case GL_PRIMARY_COLOR: return "GL_PRIMARY_COLOR";
+    case GL_PREVIOUS: return "GL_PREVIOUS";
+    case GL_SUBTRACT: return "GL_SUBTRACT";
+    case GL_MODULATE_ADD_ATI: return "GL_MODULATE_ADD_ATI";
     case GL_SPHERE_MAP: return "GL_SPHERE_MAP";
     case GL_REFLECTION_MAP: return "GL_REFLECTION_MAP";
     case GL_NORMAL_MAP: return "GL_NORMAL_MAP";
@@ -237,6 +257,20 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
         bj["tex_gen"] = tg;
       }
       if (b.clip) bj["clip_plane"] = vec(b.clipPlane);
+      // Issue 29, written only when set: the alpha test, the blend's colour factors.
+      if (b.alphaTest()) bj["alpha_test"] = {{"func", glEnumName(b.alphaFunc)}, {"ref", num(b.alphaRef)}};
+      if (b.blendFactors()) bj["blend_func"] = {glEnumName(b.blendSrc), glEnumName(b.blendDst)};
+      if (b.texture1 >= 0) {  // unit 1: its texture, environment and (GL_COMBINE) function
+        Json u = {{"texture", b.texture1}, {"tex_env", glEnumName(b.texEnv1)}};
+        if (b.texEnv1 == GL_COMBINE) {
+          Json src = Json::array(), op = Json::array();
+          for (int k = 0; k < 3; ++k) src.push_back(glEnumName(b.combine1.source[k])), op.push_back(glEnumName(b.combine1.operand[k]));
+          u["combine_rgb"] = glEnumName(b.combine1.rgb);
+          u["sources"] = src;
+          u["operands"] = op;
+        }
+        bj["unit1"] = u;
+      }
       bj["vertices"] = vertices;
       batches.push_back(bj);
     }

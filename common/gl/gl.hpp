@@ -46,7 +46,7 @@
   X(glTexImage3D)                                                              \
   /* GL 1.3+ multitexture, compressed textures */                             \
   X(glActiveTexture) X(glCompressedTexImage2D) X(glGetTexLevelParameteriv)     \
-  X(glMultiTexCoord2f) X(glCopyTexImage2D)                                     \
+  X(glMultiTexCoord2f) X(glCopyTexImage2D) X(glMultiTexCoord4f)              \
   /* GL 1.4 */                                                                 \
   X(glBlendFuncSeparate) X(glSecondaryColor3f)                                 \
   /* GL 2.0+ shaders */                                                        \
@@ -114,6 +114,7 @@ bool enableDebugOutput();
 #define glAlphaFunc ts::gl::p_glAlphaFunc
 #define glCopyTexImage2D ts::gl::p_glCopyTexImage2D
 #define glMultiTexCoord2f ts::gl::p_glMultiTexCoord2f
+#define glMultiTexCoord4f ts::gl::p_glMultiTexCoord4f
 #define glRotatef ts::gl::p_glRotatef
 #define glScalef ts::gl::p_glScalef
 #define glTranslatef ts::gl::p_glTranslatef

@@ -423,9 +423,33 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         glEnable(GL_BLEND);
         // Colour blends over what is there; alpha stays the clear's (opaque):
         // a figure must not let the page show through where it blends.
-        glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
+        if (b.blendFactors())  // issue 29: the batch's colour factors (adding, multiplying passes)
+          glBlendFuncSeparate(b.blendSrc, b.blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
+        else
+          glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
       } else {
         glDisable(GL_BLEND);
+      }
+      if (b.alphaTest()) {  // issue 29: discarded fragments write neither colour nor depth
+        glEnable(GL_ALPHA_TEST);
+        glAlphaFunc(b.alphaFunc, b.alphaRef);
+      }
+      // Issue 29: unit 1's texture and environment (GL_COMBINE's function,
+      // sources and operands), set on unit 1 and back to unit 0.
+      const bool unit1 = b.texture1 >= 0;
+      if (unit1) {
+        glActiveTexture(GL_TEXTURE1);
+        glEnable(GL_TEXTURE_2D);
+        texture(f.textures.at(size_t(b.texture1)));
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(b.texEnv1));
+        if (b.texEnv1 == GL_COMBINE) {
+          glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GLint(b.combine1.rgb));
+          for (int k = 0; k < 3; ++k) {
+            glTexEnvi(GL_TEXTURE_ENV, GLenum(GL_SOURCE0_RGB + k), GLint(b.combine1.source[k]));
+            glTexEnvi(GL_TEXTURE_ENV, GLenum(GL_OPERAND0_RGB + k), GLint(b.combine1.operand[k]));
+          }
+        }
+        glActiveTexture(GL_TEXTURE0);
       }
       glLineWidth(b.lineWidth);
       glPointSize(b.pointSize);
@@ -437,6 +461,7 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         if (b.colorSum) glSecondaryColor3f(v.secondary.r, v.secondary.g, v.secondary.b);
         glTexCoord4f(v.tex.x, v.tex.y, v.tex.z, v.tex.w);
         if (b.texGen.needsNormal()) glNormal3f(v.normal.x, v.normal.y, v.normal.z);
+        if (unit1) glMultiTexCoord4f(GL_TEXTURE1, v.tex.x, v.tex.y, v.tex.z, v.tex.w);  // issue 29
         glVertex3f(v.pos.x, v.pos.y, v.pos.z);
       }
       glEnd();
@@ -445,6 +470,12 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         for (int k = 0; k < 4; ++k)
           if (b.texGen.coords & (1u << k)) glDisable(kGenEnable[k]);
       if (b.clip) glDisable(GL_CLIP_PLANE0);
+      if (b.alphaTest()) glDisable(GL_ALPHA_TEST);
+      if (unit1) {
+        glActiveTexture(GL_TEXTURE1);
+        glDisable(GL_TEXTURE_2D);
+        glActiveTexture(GL_TEXTURE0);
+      }
       if (tex3D) glDisable(GL_TEXTURE_3D);
       if (texCube) glDisable(GL_TEXTURE_CUBE_MAP);
       if (texMatrix) {

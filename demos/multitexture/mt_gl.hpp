@@ -1,9 +1,9 @@
 // demos/multitexture/mt_gl.hpp — the GL passes the demo measures, in legacy
 // fixed-function GL as seed 001 and Buss teach them: the alpha test, two
 // texture units (glActiveTexture, GL_COMBINE), blending passes
-// (glBlendFunc(GL_DST_COLOR, GL_ZERO) multiplies, (GL_ONE, GL_ONE) adds), an
-// intermediate copy (glCopyTexImage2D), the texture matrix and
-// GL_ATI_texture_env_combine3's GL_MODULATE_ADD_ATI.  Each pass draws into a
+// (glBlendFunc(GL_ONE, GL_ONE) adds), the texture matrix and
+// GL_ATI_texture_env_combine3's GL_MODULATE_ADD_ATI (the cutout tree's and
+// AB + CD's passes are Frames now: mt_frames.hpp).  Each pass draws into a
 // private target (Renderer::offscreen) in pixel coordinates and is read back;
 // every function restores the state it changes (glPushAttrib).
 #pragma once
@@ -89,35 +89,7 @@ inline void treeState(int mode) {
   if (mode == kAlphaTest) glEnable(GL_ALPHA_TEST), glAlphaFunc(GL_GREATER, 0.5f);
   if (mode == kBlend) glEnable(GL_BLEND), glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
 }
-// 256 x 256: the tree (64 texels over 128 pixels, GL_NEAREST) drawn first,
-// in front (z = 0.5), then the sky behind it (z = -0.5) with the depth test.
-inline ts::Image cutoutHidden(ts::Renderer& r, GLuint tree, int mode) {
-  return pass(r, 256, 256, "the cutout tree", [&] {
-    glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LESS);
-    unit(0, tree, GL_REPLACE);
-    treeState(mode);
-    quad(64, 64, 192, 192, 0.5f);
-    glDisable(GL_ALPHA_TEST), glDisable(GL_BLEND);
-    unit(0, 0, 0);
-    glColor4f(kSky.r / 255.f, kSky.g / 255.f, kSky.b / 255.f, 1);
-    quad(0, 0, 256, 256, -0.5f);
-  });
-}
-// 256 x 256: the sky first, then a 16 x 16-texel corner of the crown's edge
-// magnified 16 times (GL_LINEAR), alpha-tested or blended.
-inline ts::Image cutoutEdge(ts::Renderer& r, GLuint tree, int mode) {
-  return pass(r, 256, 256, "the tree's edge", [&] {
-    glColor4f(kSky.r / 255.f, kSky.g / 255.f, kSky.b / 255.f, 1);
-    quad(0, 0, 256, 256);
-    glColor4f(1, 1, 1, 1);
-    unit(0, tree, GL_REPLACE);
-    glBindTexture(GL_TEXTURE_2D, tree);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    treeState(mode);
-    quad(0, 0, 256, 256, 0, {0.0625f, 0.5f, 0.3125f, 0.75f});
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  });
-}
+// The cutout tree's hidden-sky and edge passes are Frames (mt_frames.hpp).
 // Silhouette widths turning about the vertical axis, orthographic: strip k
 // (8 rows) shows the quad(s) at angle k * step; one quad of width 1 (128
 // pixels of 256 over x in [-1, 1]); the cross adds the quad at 90 degrees.
@@ -232,43 +204,10 @@ inline ts::Image glossPasses(ts::Renderer& r, GLuint diffuse, GLuint gloss, bool
 }
 
 // ---- AB + CD ------------------------------------------------------------
-// 128 x 128, the four 64 x 64 textures GL_NEAREST.
-//  kMultitexture: pass 1 units 0, 1 = A, B (unit 1 GL_COMBINE: PREVIOUS x
-//    TEXTURE); pass 2 = C, D the same, added with glBlendFunc(GL_ONE, GL_ONE).
-//  kStored: one unit.  A; B multiplied in (GL_DST_COLOR, GL_ZERO); the
-//    result copied to a texture (glCopyTexImage2D); C; x D; the copy added.
-//  kFramebufferOnly: one unit, no copy: A, x B, + C, x D = (AB + C) D.
+// The three paths are Frames (mt_frames.hpp): kMultitexture two units
+// (GL_COMBINE) and an additive pass; kStored one unit, A x B rendered first
+// into the texture the last pass adds; kFramebufferOnly A, x B, + C, x D.
 enum Abcd { kMultitexture, kStored, kFramebufferOnly };
-inline ts::Image abcdPasses(ts::Renderer& r, const std::vector<GLuint>& t, int method) {
-  return pass(r, 128, 128, "AB + CD", [&] {
-    const GLuint A = t[0], B = t[1], C = t[2], D = t[3];
-    auto times = [] { glEnable(GL_BLEND), glBlendFunc(GL_DST_COLOR, GL_ZERO); };
-    auto plus = [] { glEnable(GL_BLEND), glBlendFunc(GL_ONE, GL_ONE); };
-    if (method == kMultitexture) {
-      unit(0, A, GL_REPLACE), unit(1, B, GL_COMBINE), combine(1, GL_MODULATE, GL_PREVIOUS, GL_TEXTURE);
-      quad(0, 0, 128, 128);
-      unit(0, C, GL_REPLACE), unit(1, D, GL_COMBINE), plus();
-      quad(0, 0, 128, 128);
-      return;
-    }
-    unit(0, A, GL_REPLACE), quad(0, 0, 128, 128);
-    unit(0, B, GL_REPLACE), times(), quad(0, 0, 128, 128);
-    if (method == kFramebufferOnly) {
-      unit(0, C, GL_REPLACE), plus(), quad(0, 0, 128, 128);
-      unit(0, D, GL_REPLACE), times(), quad(0, 0, 128, 128);
-      return;
-    }
-    GLuint ab = 0;
-    glGenTextures(1, &ab), glBindTexture(GL_TEXTURE_2D, ab);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST), glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 0, 0, 128, 128, 0);  // the intermediate buffer
-    glDisable(GL_BLEND), glClear(GL_COLOR_BUFFER_BIT);
-    unit(0, C, GL_REPLACE), quad(0, 0, 128, 128);
-    unit(0, D, GL_REPLACE), times(), quad(0, 0, 128, 128);
-    unit(0, ab, GL_REPLACE), plus(), quad(0, 0, 128, 128);
-    glDeleteTextures(1, &ab);
-  });
-}
 
 // ---- the pear: i = t_d ⊗ i_diff + t_g · t_r --------------------------------
 // A lathe (pearProfile), 48 x 32 quads, seen along -z, orthographic.  Per

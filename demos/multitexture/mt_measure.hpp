@@ -9,6 +9,7 @@
 
 #include "common/core/scene.hpp"
 #include "common/gl/gl_listing.hpp"
+#include "mt_frames.hpp"
 #include "mt_gl.hpp"
 
 namespace mt {
@@ -34,9 +35,10 @@ struct Result {
   ts::Image lit[4], perPixel, spots;           // by kLightSizes; the CPU's; the moving spot's frames
   ts::Image diffuseOnly, glossed, specular;    // specular = (glossed - diffuse) x 2
   ts::Image abcdCpu, abcd[3], fbError;         // by Abcd; |(AB+C)D - (AB+CD)| x 4
+  ts::Image abcdAb;                            // the one-unit path's intermediate buffer (mt_frames.hpp)
   ts::Image pear[2];                           // by Pear
   bool combine3 = false;
-  ts::gl::CallList abcdCalls[3], pearCalls[2], glossCalls, cutoutCalls, spotCalls;
+  ts::gl::CallList abcdCalls[3], pearCalls[2], glossCalls, spotCalls;
 };
 
 // Pixels of a readback inside the tree's rectangle (64..191) whose texel is
@@ -82,17 +84,18 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& m
   const ts::Image treeImg = treeTexture();
   const GLuint tree = upload(treeImg, GL_NEAREST, GL_CLAMP_TO_EDGE);
   const char* modes[3] = {"no_alpha_test", "alpha_test", "blend"};
+  // The Frames the figure draws (mt_frames.hpp: Batch::alphaFunc, blend), rendered by the Renderer.
+  auto hiddenFrame = [&](int m) {
+    return frames::alone(256, 256, [&](ts::Frame& f, ts::Rect v) { return frames::hiddenPanel(f, treeImg, m, "hidden", v); });
+  };
   for (int m = 0; m < 3; ++m) {
-    out.hidden[m] = cutoutHidden(r, tree, m), out.edge[m] = cutoutEdge(r, tree, m);
+    out.hidden[m] = opaque(r.renderOffscreen(hiddenFrame(m)));
+    out.edge[m] = opaque(r.renderOffscreen(
+        frames::alone(256, 256, [&](ts::Frame& f, ts::Rect v) { return frames::edgePanel(f, treeImg, m, "edge", v); })));
     put(std::string("cutout_hidden_px[") + modes[m] + "]", hiddenSky(out.hidden[m], treeImg),
         "sky pixels hidden by the transparent texels' depth, the tree drawn first");
     put(std::string("edge_fringe_px[") + modes[m] + "]", fringe(out.edge[m]), "pixels mixing sky and tree at the edge, magnified 16x");
   }
-  out.cutoutCalls = ts::recordRender(r, [&] {  // the alpha-tested pass again, its upload in the listing
-    const GLuint t = upload(treeImg, GL_NEAREST, GL_CLAMP_TO_EDGE);
-    out.hidden[kAlphaTest] = cutoutHidden(r, t, kAlphaTest);
-    glDeleteTextures(1, &t);
-  });
   out.crossTrees = crossTrees(r, tree);
   glDeleteTextures(1, &tree);
   ts::measureProgress(0.2);
@@ -157,17 +160,20 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& m
   const ts::Image fbCpu = abcdCpu(abcdImg, 128, true);
   const char* methods[3] = {"multitexture", "stored", "framebuffer_only"};
   for (int m = 0; m < 3; ++m) {
+    // The Frames the figure draws (mt_frames.hpp), rendered by the Renderer;
+    // the one-unit path renders its intermediate buffer first (a nested frame).
+    int intermediate = 0;
     out.abcdCalls[m] = ts::recordRender(r, [&] {
-      std::vector<GLuint> again;  // uploaded inside the record: the listing shows them
-      for (const ts::Image& t : abcdImg) again.push_back(upload(t, GL_NEAREST, GL_CLAMP_TO_EDGE));
-      out.abcd[m] = abcdPasses(r, again, m);
-      glDeleteTextures(GLsizei(again.size()), again.data());
+      if (m == kStored) out.abcdAb = r.renderOffscreen(frames::abFrame(abcdImg));
+      const ts::Frame f = frames::abcdFrame(abcdImg, m, out.abcdAb);
+      for (const ts::TextureDesc& d : f.textures) intermediate += d.renderedFrom ? 1 : 0;
+      out.abcd[m] = opaque(r.renderOffscreen(f));
     });
     const std::string s = std::string("[") + methods[m] + "]";
     put("abcd_max_diff" + s, maxDiff(out.abcd[m], out.abcdCpu), "levels, against the CPU's AB + CD");
     put("abcd_rms" + s, rms(out.abcd[m], out.abcdCpu), "RMS levels, against the CPU's AB + CD");
     put("abcd_passes" + s, countCalls(out.abcdCalls[m], "glBegin"), "geometry passes (glBegin ... glEnd over the square)");
-    put("abcd_copies" + s, countCalls(out.abcdCalls[m], "glCopyTexImage2D"), "copies to an intermediate texture");
+    put("abcd_copies" + s, intermediate, "intermediate buffers (a texture rendered from a frame of its own)");
   }
   put("abcd_max_diff[framebuffer_only_vs_cpu_model]", maxDiff(out.abcd[kFramebufferOnly], fbCpu),
       "levels: the framebuffer-only sequence against the CPU's (AB + C) D");

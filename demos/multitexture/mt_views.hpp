@@ -26,11 +26,15 @@ inline void pictures(ts::Frame& f, const std::vector<Picture>& ps, float aspect,
   const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band};
   const std::vector<L::Cell> cells = L::flow(area, {int(ps.size()), aspect, 1, 1, 10, 2, 120});
   for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
+    if (ps[k].image.width == 0) {  // drawn by the caller: an empty unit panel (mt_frames.hpp)
+      f.panels.push_back(frames::unitPanel("picture_" + std::to_string(k), cells[k].picture));
+    } else {
     ts::TextureDesc t = ts::renderedImageTexture(ps[k].image, "multitexture", ps[k].title, "multitexture");
     // GL_LINEAR: a panel's pixel centre can fall on a texel boundary, where GL_NEAREST's tie goes either way.
     t.minFilter = t.magFilter = GL_LINEAR;
     t.renderedBy = ps[k].calls;
     f.panels.push_back(L::texturePanel("picture_" + std::to_string(k), cells[k].picture, f.addTexture(t)));
+    }
     L::caption(f, cells[k].above, ps[k].title, L::kWhite, cells[k].scale);
     L::caption(f, cells[k].below, ps[k].note, L::kAmber, cells[k].scale);
   }

@@ -28,7 +28,7 @@
 //   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);     // PREVIOUS x TEXTURE = AB
 //   glBlendFunc(GL_ONE, GL_ONE);                                // + CD, + g i_spec
 //   glBlendFunc(GL_DST_COLOR, GL_ZERO);                         // x B, one unit
-//   glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 0, 0, 128, 128, 0);  // AB stored
+//   AB stored: a texture rendered from a frame of its own (a nested frame, mt_frames.hpp)
 //   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE_ADD_ATI);  // t_r t_g + t_d i_diff
 //   glMatrixMode(GL_TEXTURE); glTranslatef(...); glScalef(...);  // the moving spot
 #include <string>
@@ -147,11 +147,11 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
   using views::crop;
   if (view_ == 0) {
     views::pictures(f,
-                    {{m->hidden[kNoAlphaTest], "no alpha test", fmt("%.0f sky pixels hidden", v("cutout_hidden_px[no_alpha_test]"))},
-                     {m->hidden[kAlphaTest], "GL_GREATER 0.5", fmt("%.0f hidden", v("cutout_hidden_px[alpha_test]")), m->cutoutCalls},
-                     {m->hidden[kBlend], "blending, no test", fmt("%.0f hidden", v("cutout_hidden_px[blend]"))},
-                     {m->edge[kBlend], "edge x16, blending", fmt("%.0f fringe pixels", v("edge_fringe_px[blend]"))},
-                     {m->edge[kAlphaTest], "edge x16, alpha test", fmt("%.0f fringe pixels", v("edge_fringe_px[alpha_test]"))},
+                    {{{}, "no alpha test", fmt("%.0f sky pixels hidden", v("cutout_hidden_px[no_alpha_test]"))},
+                     {{}, "GL_GREATER 0.5", fmt("%.0f hidden", v("cutout_hidden_px[alpha_test]"))},
+                     {{}, "blending, no test", fmt("%.0f hidden", v("cutout_hidden_px[blend]"))},
+                     {{}, "edge x16, blending", fmt("%.0f fringe pixels", v("edge_fringe_px[blend]"))},
+                     {{}, "edge x16, alpha test", fmt("%.0f fringe pixels", v("edge_fringe_px[alpha_test]"))},
                      {crop(m->crossTrees, 256, 0, 128, 128), "cross tree, 45 deg",
                       fmt("width >= %.4f", v("cross_tree_min_width"))}},
                     1.0f,
@@ -159,6 +159,12 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
                     "(orthographic, 5-degree steps): one quad " + fmt("%.4f", v("single_quad_min_width")) + " .. " +
                         fmt("%.4f", v("single_quad_max_width")) + " (|cos|), cross tree " + fmt("%.4f", v("cross_tree_min_width")) +
                         " .. " + fmt("%.4f", v("cross_tree_max_width")) + " (max(|cos|, |sin|) >= 0.7071).");
+    // The cutout passes are the Frames measure() rendered (mt_frames.hpp), drawn in their panels.
+    const ts::Image tree = treeTexture();
+    for (ts::Panel& p : f.panels)
+      for (int k = 0; k < 5; ++k)
+        if (p.id == "picture_" + std::to_string(k))
+          p = k < 3 ? frames::hiddenPanel(f, tree, k, p.id, p.viewport) : frames::edgePanel(f, tree, k == 3 ? kBlend : kAlphaTest, p.id, p.viewport);
   } else if (view_ == 1) {
     std::vector<views::Picture> ps = {{m->perPixel, "per-pixel (CPU)", "base x lighting"}};
     for (int k = 0; k < 4; ++k) {
@@ -198,17 +204,17 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
         f,
         {{abcd, "A B / C D", "the four textures"},
          {m->abcdCpu, "AB + CD (CPU)", "the reference"},
-         {m->abcd[kMultitexture], "two units + add", fmt("%.0f passes", v("abcd_passes[multitexture]")) +
-                                                          fmt(", max %.0f", v("abcd_max_diff[multitexture]")), m->abcdCalls[kMultitexture]},
-         {m->abcd[kStored], "one unit + a copy", fmt("%.0f passes", v("abcd_passes[stored]")) + fmt(", max %.0f", v("abcd_max_diff[stored]")),
-          m->abcdCalls[kStored]},
-         {m->abcd[kFramebufferOnly], "framebuffer: (AB+C)D", fmt("%.0f passes", v("abcd_passes[framebuffer_only]")) +
-                                                                 fmt(", max %.0f", v("abcd_max_diff[framebuffer_only]")),
-          m->abcdCalls[kFramebufferOnly]},
+         {{}, "two units + add", fmt("%.0f passes", v("abcd_passes[multitexture]")) + fmt(", max %.0f", v("abcd_max_diff[multitexture]"))},
+         {{}, "one unit + a copy", fmt("%.0f passes", v("abcd_passes[stored]")) + fmt(", max %.0f", v("abcd_max_diff[stored]"))},
+         {{}, "framebuffer: (AB+C)D", fmt("%.0f passes", v("abcd_passes[framebuffer_only]")) + fmt(", max %.0f", v("abcd_max_diff[framebuffer_only]"))},
          {m->fbError, "its error x 4", fmt("RMS %.1f levels", v("abcd_rms[framebuffer_only]"))}},
         1.0f,
         "Multiplying needs the framebuffer (GL_DST_COLOR, GL_ZERO), adding too (GL_ONE, GL_ONE): with one unit, AB must "
-        "be stored (glCopyTexImage2D) before CD is made; the sequence A, x B, + C, x D gives (AB + C) D.");
+        "be stored (a texture rendered first) before CD is made; the sequence A, x B, + C, x D gives (AB + C) D.");
+    // The three GL paths are the Frames measure() rendered (mt_frames.hpp), drawn in their panels.
+    for (int k = kMultitexture; k <= kFramebufferOnly; ++k)
+      for (ts::Panel& p : f.panels)
+        if (p.id == "picture_" + std::to_string(2 + k)) p.batches = frames::abcdBatches(f, t, k, m->abcdAb);
   }
   return f;
 }

@@ -34,9 +34,12 @@ inline constexpr std::array<const char*, 27> kFiguresDrawnFromGlRenders = {
     // filter_zoo: each method's picture is a GL render (GL's filters) or a CPU
     // computation (ripmap, SAT, probe line, EWA, the exact integral) made by measure()
     "filter_zoo_azimuth", "filter_zoo_supports", "mip_kernels",
-    // multitexture: every picture is a pass its measure() draws with GL state the Frame does not describe yet
-    // (a second texture unit, GL_COMBINE and GL_MODULATE_ADD_ATI, the alpha test, GL_DST_COLOR / GL_ONE blending,
-    // glCopyTexImage2D); the CPU's answers are computed and compared in the demo (mt_math.hpp, mt_measure.hpp)
+    // multitexture (issue 29): alpha_cutout_tree's five cutout passes and multitexture_ab_cd's three GL paths
+    // are Frames the reference checks (the alpha test, unit 1 by GL_COMBINE, the blend factors, a nested frame),
+    // but their textures (the tree, A, B, C, D) and the CPU's pictures (AB + CD, its error x 4), and the cross
+    // tree (a GL pass at three angles), are images the demo makes, for which the sidecar has no generator.
+    // light_map_resolution and gloss_map still show passes its measure() draws with GL itself (mt_gl.hpp: the
+    // spot's texture matrix on unit 1, the pear's second coordinate set, GL_LUMINANCE8 are not in the Frame)
     "alpha_cutout_tree", "light_map_resolution", "gloss_map", "multitexture_ab_cd"};
 
 // Figures whose measure() takes minutes on softpipe (the parallax table: twelve

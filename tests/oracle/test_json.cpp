@@ -234,3 +234,55 @@ TEST(Sidecar, UnknownTextureNameIsAClearError) {
   EXPECT_EQ(ref::glEnumFromName("0x2901"), GLenum(GL_REPEAT));
 }
 }  // namespace
+
+// Issue 29: the alpha test, a batch's blend factors and unit 1 with
+// GL_COMBINE survive the round trip; a batch without them writes none of
+// their keys (so older sidecars stay byte-identical).
+TEST(Sidecar, RoundTripOfTheMultitextureState) {
+  ts::Frame f;
+  f.width = f.height = 16;
+  f.addTexture(ts::checkerboard(8, 2, {10, 20, 30, 255}, {200, 210, 220, 0}));
+  f.addTexture(ts::checkerboard(4, 1, {90, 80, 70, 255}, {160, 150, 140, 255}));
+  ts::Panel p;
+  p.id = "p";
+  p.viewport = {0, 0, 16, 16};
+  ts::Batch b;
+  b.role = "tree";
+  b.texture = 0;
+  b.vertices = {ts::Vertex{}, ts::Vertex{}, ts::Vertex{}};
+  ts::Batch plain = b;
+  b.alphaFunc = GL_GREATER, b.alphaRef = 0.5f;
+  b.blend = true, b.blendSrc = GL_DST_COLOR, b.blendDst = GL_ZERO;
+  b.texture1 = 1, b.texEnv1 = GL_COMBINE;
+  b.combine1.rgb = GL_MODULATE_ADD_ATI;
+  b.combine1.source[0] = GL_TEXTURE, b.combine1.source[1] = GL_PREVIOUS, b.combine1.source[2] = GL_PREVIOUS;
+  b.combine1.operand[2] = GL_SRC_ALPHA;
+  p.batches = {b, plain};
+  f.panels.push_back(p);
+  const std::string text = ts::sidecarJson(f, {});
+  const ts::Batch& g = ref::readSidecar(text).frame.panels.at(0).batches.at(0);
+  EXPECT_EQ(g.alphaFunc, GLenum(GL_GREATER));
+  EXPECT_FLOAT_EQ(g.alphaRef, 0.5f);
+  EXPECT_EQ(g.blendSrc, GLenum(GL_DST_COLOR));
+  EXPECT_EQ(g.blendDst, GLenum(GL_ZERO));
+  EXPECT_EQ(g.texture1, 1);
+  EXPECT_EQ(g.texEnv1, GLenum(GL_COMBINE));
+  EXPECT_EQ(g.combine1.rgb, GLenum(GL_MODULATE_ADD_ATI));
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(g.combine1.source[k], b.combine1.source[k]) << k;
+    EXPECT_EQ(g.combine1.operand[k], b.combine1.operand[k]) << k;
+  }
+  const ts::Batch& h = ref::readSidecar(text).frame.panels.at(0).batches.at(1);
+  EXPECT_FALSE(h.alphaTest());
+  EXPECT_FALSE(h.blendFactors());
+  EXPECT_EQ(h.texture1, -1);
+  // Only the first batch names them ("blend_func" is also the fixed state's).
+  auto count = [&](const std::string& key) {
+    size_t n = 0;
+    for (size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("\"alpha_test\""), 1u);
+  EXPECT_EQ(count("\"unit1\""), 1u);
+  EXPECT_EQ(count("\"blend_func\""), 2u);
+}
