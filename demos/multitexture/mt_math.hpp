@@ -189,18 +189,9 @@ inline ts::Image sphereMapSky() {
 }
 
 // ---- measuring the readbacks ---------------------------------------------
-inline int maxDiff(const ts::Image& a, const ts::Image& b) {
-  int d = 0;
-  for (size_t k = 0; k < a.pixels.size(); ++k)
-    if (k % 4 != 3) d = std::max(d, std::abs(int(a.pixels[k]) - int(b.pixels[k])));
-  return d;
-}
-inline double rms(const ts::Image& a, const ts::Image& b) {
-  double s = 0;
-  for (size_t k = 0; k < a.pixels.size(); ++k)
-    if (k % 4 != 3) s += std::pow(double(a.pixels[k]) - double(b.pixels[k]), 2.0);
-  return std::sqrt(s / (double(a.width) * a.height * 3));
-}
+// The largest channel difference and the RMS over RGB: common/core/image.hpp.
+inline int maxDiff(const ts::Image& a, const ts::Image& b) { return ts::maxChannelDiff(a, b); }
+inline double rms(const ts::Image& a, const ts::Image& b) { return ts::rmsRgb(a, b); }
 // Opaque copy (GL's passes leave the alpha they blended).
 inline ts::Image opaque(ts::Image img) {
   for (size_t k = 3; k < img.pixels.size(); k += 4) img.pixels[k] = 255;

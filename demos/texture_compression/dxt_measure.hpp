@@ -53,12 +53,12 @@ inline std::vector<Block> threeColour(const std::vector<Block>& blocks, const ts
 // 256 x 256 at 16 bits, the memory of 512 x 512 in DXT1: each 2x2 averaged,
 // quantised to RGB565, then magnified back to 512 x 512 (bilinear).
 inline ts::Image rgb565Half(const ts::Image& img) {
-  ts::Image half(img.width / 2, img.height / 2);
+  ts::Image half(std::max(1, img.width / 2), std::max(1, img.height / 2));
   for (int y = 0; y < half.height; ++y)
     for (int x = 0; x < half.width; ++x) {
       glm::dvec3 s(0.0);
       for (int k = 0; k < 4; ++k) {
-        const ts::Rgba c = img.at(2 * x + k % 2, 2 * y + k / 2);
+        const ts::Rgba c = img.at(std::min(2 * x + k % 2, img.width - 1), std::min(2 * y + k / 2, img.height - 1));
         s += glm::dvec3(c.r, c.g, c.b) / 4.0;
       }
       const glm::ivec3 q = unpack565(pack565(s));

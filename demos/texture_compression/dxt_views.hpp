@@ -53,18 +53,20 @@ inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const std
     f.panels.push_back(L::texturePanel("image_" + std::to_string(k), cells[size_t(k)].picture,
                                        imageTexture(f, *shown[k], titles[k], k == 1 ? m.calls : nullptr)));
   // The block, 8 x 8 blocks around it magnified, outlined; its palette below.
-  const int x0 = std::clamp(bx * 4 - 14, 0, m.decoded.width - 32), y0 = std::clamp(by * 4 - 14, 0, m.decoded.height - 32);
-  ts::Image zoom(32, 32);
-  for (int y = 0; y < 32; ++y)
-    for (int x = 0; x < 32; ++x) zoom.set(x, y, m.decoded.at(x0 + x, y0 + y));
+  // (A picture smaller than 32 texels a side is shown whole.)
+  const int zw = std::min(32, m.decoded.width), zh = std::min(32, m.decoded.height);
+  const int x0 = std::clamp(bx * 4 - 14, 0, m.decoded.width - zw), y0 = std::clamp(by * 4 - 14, 0, m.decoded.height - zh);
+  ts::Image zoom(zw, zh);
+  for (int y = 0; y < zh; ++y)
+    for (int x = 0; x < zw; ++x) zoom.set(x, y, m.decoded.at(x0 + x, y0 + y));
   ts::Rect zr = cells[3].picture;
   const int sw = zr.h / 6;
   zr.h -= sw + 4;
   zr.w = zr.h, zr.x = cells[3].picture.x + (cells[3].picture.w - zr.w) / 2;
   ts::Panel z = L::texturePanel("block_zoom", zr, imageTexture(f, zoom, "the block magnified", nullptr, GL_NEAREST));
-  const float ux = (bx * 4 - x0) / 32.0f, uy = 1.0f - (by * 4 - y0) / 32.0f;
-  z.batches.push_back(ts::lineLoop({{ux, uy}, {ux + 0.125f, uy}, {ux + 0.125f, uy - 0.125f}, {ux, uy - 0.125f}}, L::kAmber, 2.0f,
-                                   "block_outline"));
+  const float ux = float(bx * 4 - x0) / float(zw), uy = 1.0f - float(by * 4 - y0) / float(zh);
+  const float bw = 4.0f / float(zw), bh = 4.0f / float(zh);
+  z.batches.push_back(ts::lineLoop({{ux, uy}, {ux + bw, uy}, {ux + bw, uy - bh}, {ux, uy - bh}}, L::kAmber, 2.0f, "block_outline"));
   f.panels.push_back(z);
   const Block& b = m.blocks[size_t(by * blocksAcross(m.original.width) + bx)];
   const auto pal = palette(b.c0, b.c1);

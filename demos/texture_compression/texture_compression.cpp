@@ -36,7 +36,6 @@
 #include <cstdio>
 #include <string>
 
-#include "common/core/error.hpp"
 #include "common/core/layout.hpp"
 #include "common/core/user_texture.hpp"
 #include "common/core/scene.hpp"
@@ -156,9 +155,6 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
   Result out;
   ts::Measurements ms;
   out.picture = picture_, out.threeColour = three_;
-  if (file_.active() && (file_.image().width < 32 || file_.image().height < 32))
-    throw ts::Error("--texture: " + file_.path() + " is " + std::to_string(file_.image().width) + " x " +
-                    std::to_string(file_.image().height) + "; the demo's views need at least 32 x 32 texels");
   // Every picture: PSNR (and the normal map's angles); the shown one kept.
   for (int p = 0; p < kPictureCount; ++p) {
     ts::measureProgress(0.1 + 0.25 * p);

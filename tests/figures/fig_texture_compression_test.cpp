@@ -185,5 +185,16 @@ TEST(TextureCompressionModes, YourPictureOddSize) {
   ASSERT_NE(r, nullptr);
   EXPECT_EQ(r->decoded.width, 301);
   EXPECT_EQ(r->decoded.height, 203);
+  // A picture smaller than a view's crop (the window test drops a 32 x 24
+  // JPEG) is shown whole: 5 x 3 texels, 2 x 1 blocks, 16 bytes.
+  ts::Image tiny(5, 3, {200, 30, 40, 255});
+  const std::string tinyPath = testing::TempDir() + "tiny_" + std::to_string(getpid()) + ".png";
+  ts::writePng(tinyPath, tiny);
+  ts::test::Demo t("texture_compression", {"--texture", tinyPath});
+  const ts::Measurements mt = t.measure();
+  std::remove(tinyPath.c_str());
+  EXPECT_EQ(value(mt, "compressed_bytes[file]"), 16.0);
+  EXPECT_EQ(value(mt, "padded_texels"), 8.0 * 4.0 - 15.0);
+  EXPECT_FALSE(t.scene->build(640, 300, mt).panels.empty()) << "its views are drawn";
 }
 }  // namespace
