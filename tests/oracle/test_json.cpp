@@ -260,7 +260,8 @@ TEST(Sidecar, RoundTripOfTheMultitextureState) {
   p.batches = {b, plain};
   f.panels.push_back(p);
   const std::string text = ts::sidecarJson(f, {});
-  const ts::Batch& g = ref::readSidecar(text).frame.panels.at(0).batches.at(0);
+  const auto back = ref::readSidecar(text);  // kept: the batches below are references into it
+  const ts::Batch& g = back.frame.panels.at(0).batches.at(0);
   EXPECT_EQ(g.alphaFunc, GLenum(GL_GREATER));
   EXPECT_FLOAT_EQ(g.alphaRef, 0.5f);
   EXPECT_EQ(g.blendSrc, GLenum(GL_DST_COLOR));
@@ -272,7 +273,7 @@ TEST(Sidecar, RoundTripOfTheMultitextureState) {
     EXPECT_EQ(g.combine1.source[k], b.combine1.source[k]) << k;
     EXPECT_EQ(g.combine1.operand[k], b.combine1.operand[k]) << k;
   }
-  const ts::Batch& h = ref::readSidecar(text).frame.panels.at(0).batches.at(1);
+  const ts::Batch& h = back.frame.panels.at(0).batches.at(1);
   EXPECT_FALSE(h.alphaTest());
   EXPECT_FALSE(h.blendFactors());
   EXPECT_EQ(h.texture1, -1);
