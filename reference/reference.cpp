@@ -140,25 +140,32 @@ float Reference::nestedSlack(int texture, double s, double t, double rho) const 
   return widest + n.tolerance;
 }
 
+namespace {
+// The `count` w x h pictures stacked in a texture's image (a cube map's
+// faces, a 3D texture's slices) as plain 2D textures, named "[<what> k]".
+void addStacked(const ts::TextureDesc& d, int w, int h, int count, const char* what, std::vector<Texture>* out) {
+  for (int k = 0; k < count; ++k) {
+    ts::TextureDesc sd = d;
+    sd.cube = false, sd.depth = 1;
+    sd.mipmaps = false;
+    sd.mipLevels = nullptr;
+    auto img = std::make_shared<ts::Image>(w, h);
+    std::copy_n(d.image->pixels.begin() + std::ptrdiff_t(size_t(k) * size_t(w) * size_t(h) * 4), size_t(w) * size_t(h) * 4,
+                img->pixels.begin());
+    sd.image = img;
+    sd.name += "[" + std::string(what) + " " + std::to_string(k) + "]";
+    out->emplace_back(sd);
+  }
+}
+}  // namespace
+
 void Reference::addCubeFaces(const ts::Frame& f) {
   cubeFirstFace_.assign(f.textures.size(), -1);
   for (size_t i = 0; i < f.textures.size(); ++i) {
     const ts::TextureDesc& d = f.textures[i];
     if (!d.cube || !d.image || d.image->height != 6 * d.image->width) continue;
     cubeFirstFace_[i] = int(textures_.size());
-    const int w = d.image->width;
-    for (int face = 0; face < 6; ++face) {
-      ts::TextureDesc fd = d;
-      fd.cube = false;
-      fd.mipmaps = false;
-      fd.mipLevels = nullptr;
-      auto img = std::make_shared<ts::Image>(w, w);
-      std::copy_n(d.image->pixels.begin() + std::ptrdiff_t(size_t(face) * size_t(w) * size_t(w) * 4),
-                  size_t(w) * size_t(w) * 4, img->pixels.begin());
-      fd.image = img;
-      fd.name += "[face " + std::to_string(face) + "]";
-      textures_.emplace_back(fd);
-    }
+    addStacked(d, d.image->width, d.image->width, 6, "face", &textures_);
   }
 }
 
@@ -169,19 +176,7 @@ void Reference::addVolumes(const ts::Frame& f) {
     if (d.depth <= 1 || !d.image || d.image->height % d.depth != 0) continue;
     Volume v;
     v.first = int(textures_.size()), v.depth = d.depth, v.wrapR = d.wrapR;
-    const int w = d.image->width, h = d.image->height / d.depth;
-    for (int k = 0; k < d.depth; ++k) {
-      ts::TextureDesc sd = d;
-      sd.depth = 1;
-      sd.mipmaps = false;
-      sd.mipLevels = nullptr;
-      auto img = std::make_shared<ts::Image>(w, h);
-      std::copy_n(d.image->pixels.begin() + std::ptrdiff_t(size_t(k) * size_t(w) * size_t(h) * 4),
-                  size_t(w) * size_t(h) * 4, img->pixels.begin());
-      sd.image = img;
-      sd.name += "[slice " + std::to_string(k) + "]";
-      textures_.emplace_back(sd);
-    }
+    addStacked(d, d.image->width, d.image->height / d.depth, d.depth, "slice", &textures_);
     volumeOf_[i] = int(volumes_.size());
     volumes_.push_back(v);
   }

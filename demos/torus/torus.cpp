@@ -38,7 +38,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <sstream>
 
@@ -46,7 +45,6 @@
 #include "common/gl/render.hpp"
 #include "common/core/layout.hpp"
 #include "common/core/scene.hpp"
-#include "common/core/text.hpp"
 #include "common/core/textures.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/core/user_texture.hpp"
