@@ -1,8 +1,13 @@
 // common/core/area_filter.cpp — see area_filter.hpp.
 #include "common/core/area_filter.hpp"
 
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <cstdlib>
 #include <new>
 #include <utility>
@@ -104,49 +109,90 @@ glm::dvec4 exactAreaAverage(const Image& texture, const Polygon2& preimage) {
   return sum;
 }
 
-AreaIntegral::AreaIntegral(const Image& texture) : w_(texture.width), h_(texture.height) {
-  std::vector<glm::dvec4> texels(size_t(w_) * size_t(h_));
-  for (int j = 0; j < h_; ++j)
-    for (int i = 0; i < w_; ++i) {
-      const Rgba c = texture.at(i, j);
-      texels[size_t(j) * size_t(w_) + size_t(i)] = glm::dvec4(c.r, c.g, c.b, c.a);
-    }
-  build(texels);
-}
-
-AreaIntegral::AreaIntegral(int w, int h, std::vector<glm::dvec4> texels) : w_(w), h_(h) {
-  texels.resize(size_t(w_) * size_t(h_), glm::dvec4(0.0));
-  build(texels);
-}
-
-void AreaIntegral::build(const std::vector<glm::dvec4>& texels) {
-  tilesAcross_ = (w_ + kTile - 1) / kTile;
-  const int tilesDown = (h_ + kTile - 1) / kTile;
-  cells_.assign(size_t(tilesAcross_) * size_t(tilesDown) * kTile * kTile, Cell{glm::dvec4(0.0), glm::dvec4(0.0)});
-  rowTotal_.assign(size_t(h_), glm::dvec4(0.0));
-  for (int j = 0; j < h_; ++j) {
-    glm::dvec4 run(0.0);  // the same additions, in the same order, as a plain running sum
-    const size_t base = rowBase(j);
-    for (int i = 0; i < w_; ++i) {
-      Cell& c = cells_[base + cellOffset(i)];
-      c.prefix = run;
-      c.texel = texels[size_t(j) * size_t(w_) + size_t(i)];
-      run = run + c.texel;
-    }
-    rowTotal_[size_t(j)] = run;
-  }
-}
-
 namespace {
-// One piece of an edge between two texel-grid crossings: its dv, and G at
-// its midpoint = periods * (row total) + prefix + texel * du.
-struct Piece {
-  const glm::dvec4 *prefix, *texel, *total;
-  double dv, periods, du;
+// One running sum of four channels.  An 8-bit texture's are integers in
+// 32 bits a channel (16 bytes): the sum in the low 24 bits (exact while
+// 255 W < 2^24) and the texel itself in the top 8, so one read gives both.
+// Texels given as numbers get doubles (32 bytes), and the texel is the
+// difference of two sums.
+struct IntegerSum {
+  static constexpr bool kHoldsTexel = true;
+  static constexpr uint32_t kSumMask = 0xFFFFFFu;
+  uint32_t c[4];
 };
-}  // namespace
+// (Both fit a signed 32-bit integer, which converts to double two at a time.)
+static_assert(255 * kMaxImageDimension <= int64_t(IntegerSum::kSumMask), "an image's row sums must fit 24 bits");
+inline glm::dvec4 valueOf(const IntegerSum& s) {
+  return {double(int32_t(s.c[0] & IntegerSum::kSumMask)), double(int32_t(s.c[1] & IntegerSum::kSumMask)),
+          double(int32_t(s.c[2] & IntegerSum::kSumMask)), double(int32_t(s.c[3] & IntegerSum::kSumMask))};
+}
+inline glm::dvec4 texelOf(const IntegerSum& a, const IntegerSum&) {
+  return {double(int32_t(a.c[0] >> 24)), double(int32_t(a.c[1] >> 24)), double(int32_t(a.c[2] >> 24)),
+          double(int32_t(a.c[3] >> 24))};
+}
+struct RealSum {
+  static constexpr bool kHoldsTexel = false;
+  glm::dvec4 v;
+};
+inline const glm::dvec4& valueOf(const RealSum& s) { return s.v; }
+// The texel between two running sums: P(i+1) - P(i).
+inline glm::dvec4 texelOf(const RealSum& a, const RealSum& b) { return b.v - a.v; }
 
-glm::dvec4 AreaIntegral::average(const Polygon2& in, long* pieces) const {
+// P(i, j) for i = 0 .. W, j = 0 .. H-1, in tiles of 4 KB (kTileW columns of
+// kTileH sums, column by column): see area_filter.hpp.
+template <class Sum>
+struct SumTable {
+  static constexpr int kTileW = 16, kTileH = int(4096 / (kTileW * sizeof(Sum)));  // 16 x 16 integers, 16 x 8 doubles
+  int cols = 0, rows = 0, tilesAcross = 0;
+  std::vector<Sum, detail::LargeAllocator<Sum>> sums;
+  SumTable(int w, int h)
+      : cols(w + 1), rows(h), tilesAcross((w + 1 + kTileW - 1) / kTileW),
+        sums(size_t(tilesAcross) * size_t((h + kTileH - 1) / kTileH) * kTileW * kTileH) {}
+  // Where row j's sums start (add column(i)).
+  size_t rowBase(long j) const {
+    return size_t(j / kTileH) * size_t(tilesAcross) * kTileW * kTileH + size_t(j % kTileH);
+  }
+  static size_t column(long i) { return size_t(i / kTileW) * kTileW * kTileH + size_t(i % kTileW) * kTileH; }
+  size_t bytes() const { return sums.size() * sizeof(Sum); }
+};
+
+// One piece of an edge between two texel-grid crossings: its dv, and G at
+// its midpoint = periods * (row total) + P(i) + texel(i) * du.
+template <class Sum>
+struct Piece {
+  const Sum *left, *right, *total;  // P(i), P(i+1), and P(W) of the piece's row or a zero sum
+  double dv, periods, du;
+  glm::dvec4 g() const { return periods * valueOf(*total) + valueOf(*left) + texelOf(*left, *right) * du; }
+};
+#if defined(__SSE2__)
+// The same sum for an 8-bit texture's table, two channels at a time (SSE2,
+// the x86-64 baseline): unpacking and converting the integers channel by
+// channel cost a third more time than the walk itself.  Same operations in
+// the same order: the same doubles.
+template <>
+inline glm::dvec4 Piece<IntegerSum>::g() const {
+  const __m128i mask = _mm_set1_epi32(int(IntegerSum::kSumMask));
+  const __m128i l = _mm_loadu_si128(reinterpret_cast<const __m128i*>(left->c));
+  const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(total->c));
+  const __m128i sumL = _mm_and_si128(l, mask), texel = _mm_srli_epi32(l, 24), sumT = _mm_and_si128(t, mask);
+  const __m128d p = _mm_set1_pd(periods), d = _mm_set1_pd(du);
+  const auto half = [&](__m128i tot, __m128i sum, __m128i tex) {  // lanes 0 and 1 of each
+    return _mm_add_pd(_mm_add_pd(_mm_mul_pd(p, _mm_cvtepi32_pd(tot)), _mm_cvtepi32_pd(sum)), _mm_mul_pd(_mm_cvtepi32_pd(tex), d));
+  };
+  const auto upper = [](__m128i v) { return _mm_unpackhi_epi64(v, v); };
+  glm::dvec4 out;
+  _mm_storeu_pd(&out.x, half(sumT, sumL, texel));
+  _mm_storeu_pd(&out.z, half(upper(sumT), upper(sumL), upper(texel)));
+  return out;
+}
+#endif
+
+// Tables larger than this (bytes) are walked with prefetching.
+constexpr size_t kPrefetchBytes = size_t(8) << 20;
+
+template <class Sum>
+glm::dvec4 outlineAverage(const SumTable<Sum>& table, int w_, int h_, const Polygon2& in, long* pieces) {
+  using Table = SumTable<Sum>;
   if (pieces) *pieces = 0;
   if (in.empty() || w_ <= 0 || h_ <= 0) return glm::dvec4(0.0);
   // Work near the origin: shift by whole periods (the texture is the same
@@ -162,13 +208,16 @@ glm::dvec4 AreaIntegral::average(const Polygon2& in, long* pieces) const {
   }
   const double total = 0.5 * twice;
   if (!(std::fabs(total) >= 1e-12)) {
-    const long i = long(std::floor(in[0].x)), j = long(std::floor(in[0].y));
-    return cells_[rowBase(((j % h_) + h_) % h_) + cellOffset(((i % w_) + w_) % w_)].texel;
+    const long i = ((long(std::floor(in[0].x)) % w_) + w_) % w_, j = ((long(std::floor(in[0].y)) % h_) + h_) % h_;
+    const Sum* row = &table.sums[table.rowBase(j)];
+    return texelOf(row[Table::column(i)], row[Table::column(i + 1)]);
   }
   glm::dvec4 sum(0.0);
   long count = 0;
-  thread_local std::vector<Piece> pieceBuffer;  // one edge's pieces
-  const bool prefetch = cells_.size() * sizeof(Cell) > kPrefetchBytes;
+  thread_local std::vector<Piece<Sum>> pieceBuffer;  // one edge's pieces
+  const bool prefetch = table.bytes() > kPrefetchBytes;
+  const size_t totalColumn = Table::column(w_);
+  static const Sum zero{};
   const size_t n = in.size();
   for (size_t k = 0; k < n; ++k) {
     const glm::dvec2 a = in[k] - shift, b = in[(k + 1) % n] - shift;
@@ -192,24 +241,27 @@ glm::dvec4 AreaIntegral::average(const Polygon2& in, long* pieces) const {
     long q = i >= 0 ? i / w_ : -((-i + w_ - 1) / w_);  // whole periods left of texel i
     long mi = i - q * w_;                             // its column in the texture
     long row = ((j % h_) + h_) % h_;
-    const Cell* cells = &cells_[rowBase(row)];  // row's cells: cells[cellOffset(i)]
-    const glm::dvec4* total = &rowTotal_[size_t(row)];
+    const Sum* sums = &table.sums[table.rowBase(row)];  // row's sums: sums[Table::column(i)]
     // A table larger than the caches is walked in two passes over the edge:
-    // the first finds its pieces and asks for their cells (prefetch: a long
+    // the first finds its pieces and asks for their sums (prefetch: a long
     // edge crosses texels far apart in memory, and waiting for each in turn
-    // is what made large textures slow), the second sums them — the same
+    // is what made large textures slow), the second adds them — the same
     // numbers in the same order as the one pass a small table takes.
     pieceBuffer.clear();
     for (;;) {
       if (t1 > t0) {
         const double um = a.x + 0.5 * (t0 + t1) * d.x;  // G is linear in u within the texel: its midpoint value
-        const Cell* c = &cells[cellOffset(mi)];
-        const Piece pc{&c->prefix, &c->texel, total, d.y * (t1 - t0), double(q), um - double(q * w_ + mi)};
+        // No whole periods to add (q = 0): the row total is not read, a zero
+        // stands in (a select, not a branch: q changes often on a tiled plane).
+        const Piece<Sum> pc{&sums[Table::column(mi)], &sums[Table::column(mi + 1)], q != 0 ? &sums[totalColumn] : &zero,
+                            d.y * (t1 - t0), double(q), um - double(q * w_ + mi)};
         if (prefetch) {
-          __builtin_prefetch(c);
+          __builtin_prefetch(pc.left);
+          if (!Sum::kHoldsTexel) __builtin_prefetch(pc.right);
+          if (q != 0) __builtin_prefetch(pc.total);  // the branch only steers the hint
           pieceBuffer.push_back(pc);
         } else {
-          sum += pc.dv * (pc.periods * *pc.total + *pc.prefix + *pc.texel * pc.du);
+          sum += pc.dv * pc.g();
           ++count;
         }
       }
@@ -223,17 +275,66 @@ glm::dvec4 AreaIntegral::average(const Polygon2& in, long* pieces) const {
         tv += dtv, row += sj;
         if (row == h_) row = 0;
         else if (row < 0) row = h_ - 1;
-        cells = &cells_[rowBase(row)];
-        total = &rowTotal_[size_t(row)];
+        sums = &table.sums[table.rowBase(row)];
       }
       t0 = t1;
       t1 = std::min(std::min(tu, tv), 1.0);
     }
-    for (const Piece& pc : pieceBuffer)
-      sum += pc.dv * (pc.periods * *pc.total + *pc.prefix + *pc.texel * pc.du);
+    for (const Piece<Sum>& pc : pieceBuffer) sum += pc.dv * pc.g();
     count += long(pieceBuffer.size());
   }
   if (pieces) *pieces = count;
   return sum / total;  // a clockwise polygon gives both signs negative
+}
+}  // namespace
+
+struct AreaIntegral::Tables {
+  std::unique_ptr<SumTable<IntegerSum>> integer;  // an 8-bit texture's
+  std::unique_ptr<SumTable<RealSum>> real;     // texels given as numbers
+};
+
+AreaIntegral::AreaIntegral(const Image& texture) : w_(texture.width), h_(texture.height) {
+  auto t = std::make_shared<Tables>();
+  t->integer = std::make_unique<SumTable<IntegerSum>>(w_, h_);
+  SumTable<IntegerSum>& s = *t->integer;
+  for (int j = 0; j < h_; ++j) {
+    IntegerSum run{{0, 0, 0, 0}};
+    const size_t base = s.rowBase(j);
+    for (int i = 0; i <= w_; ++i) {
+      const Rgba c = i < w_ ? texture.at(i, j) : Rgba{0, 0, 0, 0};
+      s.sums[base + s.column(i)] = IntegerSum{{run.c[0] | uint32_t(c.r) << 24, run.c[1] | uint32_t(c.g) << 24,
+                                               run.c[2] | uint32_t(c.b) << 24, run.c[3] | uint32_t(c.a) << 24}};
+      run.c[0] += c.r, run.c[1] += c.g, run.c[2] += c.b, run.c[3] += c.a;
+    }
+  }
+  tables_ = std::move(t);
+}
+
+AreaIntegral::AreaIntegral(int w, int h, std::vector<glm::dvec4> texels) : w_(w), h_(h) {
+  texels.resize(size_t(w_) * size_t(h_), glm::dvec4(0.0));
+  auto t = std::make_shared<Tables>();
+  t->real = std::make_unique<SumTable<RealSum>>(w_, h_);
+  SumTable<RealSum>& s = *t->real;
+  for (int j = 0; j < h_; ++j) {
+    glm::dvec4 run(0.0);
+    const size_t base = s.rowBase(j);
+    for (int i = 0; i <= w_; ++i) {
+      s.sums[base + s.column(i)] = RealSum{run};
+      if (i < w_) run = run + texels[size_t(j) * size_t(w_) + size_t(i)];
+    }
+  }
+  tables_ = std::move(t);
+}
+
+glm::dvec4 AreaIntegral::average(const Polygon2& in, long* pieces) const {
+  if (tables_ && tables_->integer) return outlineAverage(*tables_->integer, w_, h_, in, pieces);
+  if (tables_ && tables_->real) return outlineAverage(*tables_->real, w_, h_, in, pieces);
+  if (pieces) *pieces = 0;
+  return glm::dvec4(0.0);
+}
+
+size_t AreaIntegral::tableBytes() const {
+  if (!tables_) return 0;
+  return tables_->integer ? tables_->integer->bytes() : tables_->real ? tables_->real->bytes() : 0;
 }
 }  // namespace ts

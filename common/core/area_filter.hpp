@@ -18,6 +18,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "common/core/image.hpp"
@@ -86,18 +87,21 @@ glm::dvec4 exactAreaAverage(const Image& texture, const Polygon2& preimage);
 // there.  Not thread-safe to build, safe to use from several threads.
 //
 // The tables are laid out for the outline's walk, so that its time follows the
-// footprint's texels and not the texture's size: a texel's running sum and its
-// value share one 64-byte record (one cache line), the records are stored in
-// 8 x 8 tiles of 4 KB (one page), and the row totals sit in a table of their
-// own, in memory on 2 MB boundaries (huge pages where Linux gives them).  An
-// outline stepping from row to row stays within a page for 8 rows instead of
-// jumping a whole texture row (128 KB at 4096 x 4096: a TLB and a cache miss a
-// step), and a table larger than the caches is walked with prefetching.  The
-// work per pixel was always the footprint's; these make its time follow:
-// bench_zoo's zoo/exact_texture, the same 800 x 600 view and footprints, CPU
-// ms (median of 3, load ~2.5): 256^2 744 -> 847, 1024^2 2749 -> 1847, 4096^2
-// 3263 -> 1915 (4.4x the 256^2 time -> 2.3x; the rest is the larger texture's
-// footprints reaching memory no cache holds: they do not repeat).
+// footprint's texels and not the texture's size.  They hold running sums:
+// P(i, j) = the sum of the texels left of i in row j, for i = 0 .. W (P(W, j)
+// is the row's total).  For an 8-bit texture they are integers, 32 bits a
+// channel (16 bytes a texel, exact): the sum in the low 24 bits and the texel
+// itself in the top 8 (exact up to 65,793 texels a row; an Image has at most
+// 16,384); for texels
+// given as numbers they are 4 doubles (32 bytes) and a texel is
+// P(i+1, j) - P(i, j).  The sums are stored in tiles of 4 KB (one page),
+// column by column inside a tile (16 x 16 for 16-byte sums): an outline edge
+// that steps from row to row, as the long edges of a far footprint do, reads
+// four rows per 64-byte cache line and 16 rows per page, instead of a line and
+// a page a row.  The table is in memory on 2 MB boundaries (huge pages where
+// Linux gives them), and a table larger than the caches is walked with
+// prefetching.  bench_zoo's zoo/exact_texture times the same 800 x 600 view
+// and footprints on textures of 256^2 .. 4096^2 (README: "Benchmarks").
 class AreaIntegral {
  public:
   explicit AreaIntegral(const Image& texture);
@@ -110,24 +114,11 @@ class AreaIntegral {
   glm::dvec4 average(const Polygon2& preimage, long* pieces = nullptr) const;
   int width() const { return w_; }
   int height() const { return h_; }
+  size_t tableBytes() const;  // the running sums' memory
 
  private:
-  // Texel (i, j): the sum of the texels left of i in row j, and its value.
-  struct alignas(64) Cell {
-    glm::dvec4 prefix, texel;
-  };
-  static constexpr int kTile = 8;  // 8 x 8 cells of 64 bytes: 4 KB
-  // Tables larger than this (bytes) are walked with prefetching (average()).
-  static constexpr size_t kPrefetchBytes = size_t(8) << 20;
-  // Where row j's cells start (add cellOffset(i)).
-  size_t rowBase(long j) const {
-    return size_t(j / kTile) * size_t(tilesAcross_) * kTile * kTile + size_t(j % kTile) * kTile;
-  }
-  static size_t cellOffset(long i) { return size_t(i / kTile) * kTile * kTile + size_t(i % kTile); }
-  void build(const std::vector<glm::dvec4>& texels);
-
-  int w_ = 0, h_ = 0, tilesAcross_ = 0;
-  std::vector<Cell, detail::LargeAllocator<Cell>> cells_;  // in 8 x 8 tiles: tile rows, tiles left to right
-  std::vector<glm::dvec4> rowTotal_;  // h: the sum of each row's texels
+  struct Tables;  // area_filter.cpp
+  int w_ = 0, h_ = 0;
+  std::shared_ptr<const Tables> tables_;  // immutable once made: copies share it
 };
 }  // namespace ts

@@ -9,8 +9,9 @@
 //                                         clipping every texel (ts::exactAreaAverage): same numbers
 //   zoo/exact_texture/<side>              the same 800 x 600 view with textures of side 256 .. 4096 (the same
 //                                         texel density: the pieces do not change, and the time should not
-//                                         much: the summary prints the 4096 / 256 ratio; ts::AreaIntegral's
-//                                         tiled, prefetched tables took it from 4.4 to 2.3)
+//                                         much: the summary prints the 4096 / 256 ratio, 4.4 with row-major
+//                                         tables, 2.3 with 64-byte records in 8 x 8 tiles, see the README for
+//                                         today's 16-byte packed sums in column-major 16 x 16 tiles)
 //   zoo/exact_footprint/<texels a pixel>  a flat 256 x 256 view at 1, 4, 16, 64 texels a pixel: the cost
 //                                         per pixel grows with the footprint (its outline: linearly)
 // Counters: pixels, pieces (the outline integral's edge pieces, its cost)

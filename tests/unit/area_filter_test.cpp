@@ -119,7 +119,8 @@ TEST(AreaIntegral, AgreesWithClippingEveryTexel) {
   EXPECT_EQ(piecesBig, pieces);
 }
 
-// Claim: the tables' layout for large textures (8 x 8 tiles, and the two-pass
+// Claim: the tables' layout (16 x 16 tiles of packed 24-bit sums and 8-bit
+// texels, read two channels at a time, and the two-pass
 // walk with prefetching that tables over 8 MB take) changes no result: on a
 // 256 x 256 and a 4096 x 4096 texture of random texels, footprints from one
 // texel to thousands, thin and turned, anywhere in the plane, agree with
@@ -152,5 +153,29 @@ TEST(AreaIntegral, LargeTexturesGiveTheSameAverages) {
     EXPECT_LT(worst, 1e-6) << "largest difference, 8-bit units";
   }
   EXPECT_EQ(piecesSmall, piecesLarge);
+}
+
+// Claim: an 8-bit texture's running sums are exact integers in 24 bits, so
+// the widest image (ts::kMaxImageDimension texels of 255) sums exactly; the
+// linear-light table (doubles) agrees with the 8-bit one on the same texels.
+TEST(AreaIntegral, WidestRowAndTheTwoTables) {
+  const int w = ts::kMaxImageDimension;
+  const ts::AreaIntegral widest(ts::Image(w, 2, {255, 255, 255, 255}));
+  EXPECT_DOUBLE_EQ(widest.average({{w - 800.25, 0.5}, {w + 0.75, 0.5}, {w + 0.75, 1.5}, {w - 800.25, 1.5}}).r, 255.0);
+  ts::Image tex(64, 32);
+  std::mt19937 rng(3);
+  for (auto& p : tex.pixels) p = uint8_t(rng() & 255);
+  std::vector<glm::dvec4> numbers;
+  for (int j = 0; j < tex.height; ++j)
+    for (int i = 0; i < tex.width; ++i) {
+      const ts::Rgba c = tex.at(i, j);
+      numbers.push_back({c.r, c.g, c.b, c.a});
+    }
+  const ts::AreaIntegral bytes(tex), reals(tex.width, tex.height, numbers);
+  const Polygon2 quad{{-7.3, 3.1}, {90.2, 10.4}, {95.0, 44.9}, {-3.3, 30.0}};
+  const glm::dvec4 a = bytes.average(quad), b = reals.average(quad);
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(a[k], b[k], 1e-9);
+  EXPECT_EQ(bytes.tableBytes(), size_t(5 * 16) * 32 * 16);  // 65 columns of sums: 5 tiles of 16 x 16, 16 bytes each
+  EXPECT_EQ(reals.tableBytes(), size_t(5 * 4) * 16 * 8 * 32);  // doubles: tiles of 16 x 8, 32 bytes each
 }
 }  // namespace
