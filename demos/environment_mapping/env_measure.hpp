@@ -139,6 +139,15 @@ inline ts::Image referenceImage(const envmap::Pixels& p) {
     }
   return img;
 }
+// The error picture's scale: per pixel the maps are off by hundredths of a degree, per vertex by
+// degrees; a larger 95th percentile (a stale sphere map) takes the next of 1, 2, 5 x 10^k above it.
+inline double errorScale(bool perVertex, double p95) {
+  double scale = perVertex ? 4.0 : 0.25;
+  for (double step = 1; scale < p95; step *= 10)
+    for (double m : {1.0, 2.0, 5.0})
+      if (scale < p95) scale = std::max(scale, m * step);
+  return scale;
+}
 // Error in degrees on a heat scale: black 0, red at `scaleDeg`/2, yellow to
 // white at `scaleDeg` and above.
 inline glm::dvec3 heat(double e, double scaleDeg) {
