@@ -39,6 +39,31 @@ TextureDesc environmentMap(Param p, int face, const glm::dmat3& sphereView) {
   return t;
 }
 
+TextureDesc unwrappedMap(Param p, int face, const glm::dmat3& sphereView) {
+  TextureDesc t = environmentMap(p, face, sphereView);
+  t.params.push_back({"layout", "unwrapped"});
+  const Size sz = mapSize(p, face), all = unwrappedSize(p, face);
+  Image img(all.w, all.h);  // row 0 at the top while it is laid out
+  for (int f = 0; f < (p == kCube ? 6 : 1); ++f)
+    for (int j = 0; j < sz.h; ++j)
+      for (int i = 0; i < sz.w; ++i) {
+        Rgba c = t.image->at(i, f * sz.h + j);
+        const double u = 2 * (i + 0.5) / sz.w - 1, v = 2 * (j + 0.5) / sz.h - 1;
+        const double up = 4 * (i + 0.5) / sz.w - (i < sz.w / 2 ? 1 : 3);  // across the paraboloid's disc
+        if ((p == kSphere && u * u + v * v > 1) || (p == kParaboloid && up * up + v * v > 1)) c = toRgba(kBackground);
+        if (p == kCube)
+          img.set((f % 3) * sz.w + i, (f / 3) * sz.h + j, c);  // t down
+        else
+          img.set(i, sz.h - 1 - j, c);  // t up
+      }
+  img.flipVertical();  // a texture's row 0 is v = 0, the bottom
+  t.image = std::make_shared<const Image>(std::move(img));
+  t.cube = false;
+  t.minFilter = t.magFilter = GL_NEAREST;
+  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
+  return t;
+}
+
 TextureDesc environmentMapFromParams(const std::vector<std::pair<std::string, std::string>>& params) {
   auto get = [&](const char* key) -> const std::string* {
     for (const auto& [k, v] : params)
@@ -66,7 +91,9 @@ TextureDesc environmentMapFromParams(const std::vector<std::pair<std::string, st
     std::string rest;
     if (in >> rest) throw Error("environment_map: sphere_view '" + *v + "' is not nine numbers");
   }
-  TextureDesc t = environmentMap(Param(p), int(n), view);
+  const std::string* layout = get("layout");
+  if (layout && *layout != "unwrapped") throw Error("environment_map: unknown layout '" + *layout + "' (unwrapped)");
+  TextureDesc t = layout ? unwrappedMap(Param(p), int(n), view) : environmentMap(Param(p), int(n), view);
   t.params = params;  // the recorded key, as written
   return t;
 }

@@ -227,6 +227,19 @@ inline ts::Rgba toRgba(dvec3 c) {
 // `sphereView`.  Named "environment_map", its parameters recorded
 // (param, face, sphere_view): remakeTexture makes it again from them.
 TextureDesc environmentMap(Param p, int face, const glm::dmat3& sphereView = glm::dmat3(1.0));
+// The background where a map holds no data (outside the sphere map's and the
+// paraboloid's discs), and the demo's pictures' background.
+inline const dvec3 kBackground{0.12, 0.12, 0.14};
+// The same map laid out flat to be looked at (parameter layout=unwrapped):
+// the cube's faces +X -X +Y over -Y +Z -Z, each with t down (as GL stores
+// them); the 2D maps with t up, kBackground outside the discs; GL_NEAREST,
+// clamped.  Texture coordinates (u, v) in [0,1]^2 cover the picture, v up.
+TextureDesc unwrappedMap(Param p, int face, const glm::dmat3& sphereView = glm::dmat3(1.0));
+// Its size in texels.
+inline Size unwrappedSize(Param p, int face) {
+  const Size sz = mapSize(p, face);
+  return p == kCube ? Size{3 * sz.w, 2 * sz.h} : sz;
+}
 // The same from the sidecar's parameters (throws ts::Error on bad ones).
 TextureDesc environmentMapFromParams(const std::vector<std::pair<std::string, std::string>>& params);
 }  // namespace ts::envmaps

@@ -221,7 +221,9 @@ struct Found {
   // flat mirror's reference is an image (the near ball is painted on it), as are the error and the map.
   ts::TextureDesc picture, reference;                // object view, map view
   std::array<ts::TextureDesc, 4> pictures;           // compare view
-  ts::Image error, map;
+  ts::Image error;
+  ts::TextureDesc map;  // the map unwrapped (a generator), and the texels the object reads
+  LitTexels lit;
   Mirror mirror;
   double errorScale = 1;  // degrees shown yellow in the error picture
 };

@@ -112,4 +112,31 @@ inline ts::TextureDesc nestedTexture(ts::Renderer& r, const ts::Frame& inner, co
   t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
   return t;
 }
+// The map view's panel (ts::layout::texturePanel of ts::envmaps::unwrappedMap:
+// one quad, (u, v) = its texture coordinates): the map dimmed, GL_MODULATE by
+// kDim, and over it the texels the object reads at full colour, GL_REPLACE,
+// one quad per run of lit texels along a row (the quads are in the sidecar,
+// so the reference redraws the lit region too).
+constexpr float kDim = 0.35f;
+inline void lightTheReadTexels(ts::Panel& panel, const LitTexels& lit) {
+  ts::Batch& map = panel.batches.back();
+  map.texEnv = GL_MODULATE;
+  for (ts::Vertex& v : map.vertices) v.color = {kDim, kDim, kDim, 1.0f};
+  ts::Batch b = map;
+  b.role = "read texels";
+  b.texEnv = GL_REPLACE;
+  b.vertices.clear();
+  for (int y = 0; y < lit.h; ++y)
+    for (int x0 = 0; x0 < lit.w;) {
+      if (!lit.hit[size_t(y) * size_t(lit.w) + size_t(x0)]) { ++x0; continue; }
+      int x1 = x0;
+      while (x1 < lit.w && lit.hit[size_t(y) * size_t(lit.w) + size_t(x1)]) ++x1;
+      const float u0 = float(x0) / float(lit.w), u1 = float(x1) / float(lit.w);
+      const float v0 = 1.0f - float(y + 1) / float(lit.h), v1 = 1.0f - float(y) / float(lit.h);  // row 0 at the top
+      const glm::vec2 c[4] = {{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}};
+      for (int i : {0, 1, 2, 0, 2, 3}) b.vertices.push_back({{c[i], 0.0f}, {c[i], 0.0f, 1.0f}, {1, 1, 1, 1}});
+      x0 = x1;
+    }
+  if (!b.vertices.empty()) panel.batches.push_back(b);
+}
 }  // namespace envmap

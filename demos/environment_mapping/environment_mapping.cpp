@@ -155,7 +155,7 @@ class EnvironmentMapping final : public ts::Scene {
 
 ts::TextureDesc image(const ts::Image& img, const std::string& what, ts::gl::CallList gl = nullptr) {
   ts::TextureDesc t = ts::renderedImageTexture(img, "environment_mapping_render", what, "environment_mapping");
-  if (what != "map") t.minFilter = t.magFilter = GL_LINEAR;
+  t.minFilter = t.magFilter = GL_LINEAR;
   t.renderedBy = std::move(gl);
   return t;
 }
@@ -199,11 +199,11 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     spec.linesAbove = 1, spec.linesBelow = 2;
     spec.aspect = param_ == envmap::kCube ? 1.5f : float(sz.w) / float(sz.h);
     L::Cell m = L::flow({area.x0, area.y0, mid - 6, area.y1}, spec)[0];
-    const ts::TextureDesc mapTex = found ? image(found->map, "map") : ts::TextureDesc{};
-    show(m, "map", found ? &mapTex : nullptr,
+    show(m, "map", found ? &found->map : nullptr,
          std::string(envmap::kParamLabels[param_]) + fmt(", %.0f texels", envmap::mapTexels(envmap::Param(param_), face_)) +
              (param_ == envmap::kCube ? ": +X -X +Y / -Y +Z -Z, t down" : ""),
          "lit: the texels the object reads");
+    if (found) envmap::lightTheReadTexels(f.panels.back(), found->lit);
     spec.aspect = 1.0f;
     show(L::flow({mid + 6, area.y0, area.x1, area.y1}, spec)[0], "picture", found ? &found->picture : nullptr,
          stateName(param_), found ? statsLine(found->current) : "");
@@ -271,7 +271,8 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
   found.picture = picture(param_);
   found.errorScale = envmap::errorScale(eval_ == 1, found.current.p95);
   found.error = envmap::errorImage(perPixel, n, n, found.errorScale);
-  found.map = envmap::mapImage(param_, face_, shown.sphereView, &looked);
+  found.map = ts::envmaps::unwrappedMap(envmap::Param(param_), face_, shown.sphereView);
+  found.lit = envmap::litTexels(param_, face_, shown.sphereView, looked);
   if (view_ == kCompareView)
     for (int p = 0; p < 4; ++p) found.pictures[size_t(p)] = picture(p);
   if (object_ == envmap::kMirror) {  // the flat mirror: where a nearby ball should appear (red in the reference)

@@ -3,7 +3,7 @@
 // VI.7 shows GL's own multi-pass and per-pixel-jitter renders side by side, and
 // its zone plate GL's shader renders of the plate;
 // the parallax figures show GLSL renders of the filtering modes and errors;
-// the environment mapping figures show maps and error pictures made from GL's float read-backs;
+// two environment mapping figures show error pictures made from GL's float read-backs;
 // the bump-mapping figures show the displaced reference torus R, drawn from a
 // 1024 x 512 grid in a vertex array by its measure(); the DXT1 figures show
 // GL's decode of compressed blocks),
@@ -17,17 +17,16 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 26> kFiguresDrawnFromGlRenders = {
+inline constexpr std::array<const char*, 24> kFiguresDrawnFromGlRenders = {
     // --footprints: the left panel is the picture GL drew, inspected
     "inspect_vi2_footprints", "inspect_aniso_footprint",
     "vi7_jitter", "jitter_zone_plate", "parallax_modes", "parallax_error_band", "parallax_step",
     // environment_mapping: its object pictures are nested frames the reference recomputes (texgen) or
-    // exempts (GLSL), from "environment_map" textures it remakes (env_compare_torus is all of these);
-    // but these figures also show an image its measure() computes from GL's float read-backs, which no
-    // generator remakes: the direction error per pixel (env_cube_sphere, env_flat_mirror), the map with
-    // the texels the object read lit (env_latlong_map, env_cube_map), the flat mirror's reference with
-    // the near ball painted where the exact r meets it (env_flat_mirror).
-    "env_cube_sphere", "env_latlong_map", "env_cube_map", "env_flat_mirror",
+    // exempts (GLSL), its maps "environment_map" textures it remakes, the texels read quads in the
+    // sidecar (env_compare_torus, env_latlong_map, env_cube_map are all of these); but these two also
+    // show a picture its measure() computes from GL's float read-backs, which no generator remakes: the
+    // direction error per pixel, and the flat mirror's reference with the near ball painted in.
+    "env_cube_sphere", "env_flat_mirror",
     // bump_mapping: R, emboss and DOT3 are pictures its measure() draws
     "bump_two_lights", "bump_seed002", "bump_normals", "bump_methods", "bump_emboss_overhead",
     // texture_compression: GL's decode of the DXT1 blocks (glGetTexImage), and the picture and error beside it
