@@ -25,7 +25,9 @@ inline constexpr std::array<const char*, 24> kFiguresDrawnFromGlRenders = {
     // exempts (GLSL), its maps "environment_map" textures it remakes, the texels read quads in the
     // sidecar (env_compare_torus, env_latlong_map, env_cube_map are all of these); but these two also
     // show a picture its measure() computes from GL's float read-backs, which no generator remakes: the
-    // direction error per pixel, and the flat mirror's reference with the near ball painted in.
+    // direction error per pixel (both), and env_flat_mirror's reference with the near ball painted in.
+    // Their texgen pictures are still checked from the Frame (test_figures.cpp's GL tests, and
+    // test_gl_envmap.cpp's TheEnvironmentMappingFiguresTexgenPictures).
     "env_cube_sphere", "env_flat_mirror",
     // bump_mapping: R, emboss and DOT3 are pictures its measure() draws
     "bump_two_lights", "bump_seed002", "bump_normals", "bump_methods", "bump_emboss_overhead",
