@@ -21,7 +21,8 @@
 // whose texels hold their own directions (d + 1)/2 in RGBA32F (the
 // measurement): then each pixel of the read-back is the direction the map
 // returned there, filtered as the colour would be, and its angle to the
-// reference's r is the error in degrees.
+// reference's r is the error in degrees.  The figures' pictures use the same
+// shaders with FRAME 1 in batches of a ts::Frame (env_views.hpp).
 #pragma once
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
