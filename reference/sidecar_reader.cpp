@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/core/error.hpp"
+#include "common/core/env_maps.hpp"
 #include "common/core/sidecar.hpp"
 #include "common/core/textures.hpp"
 
@@ -180,6 +181,7 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
   if (name == "labelled_grid") return ts::labelledGrid(intParam(p, "size", name), intParam(p, "cells", name));
   if (name == "mip_level_colours") return ts::mipLevelColours(intParam(p, "size", name));
   if (name == "gradient") return ts::gradientTexture(intParam(p, "width", name), intParam(p, "height", name), strParam(p, "alpha", name) == "ramp");
+  if (name == "environment_map") return ts::envmaps::environmentMapFromParams(p);  // issue 26: common/core/env_maps.hpp
   if (name == "file") {
     std::string path = strParam(p, "path", name);
     if (!baseDir.empty() && !path.empty() && path[0] != '/') path = baseDir + "/" + path;
@@ -188,7 +190,7 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
     return t;
   }
   throw ts::Error("sidecar: unknown texture generator '" + name +
-                  "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, file)");
+                  "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, environment_map, file)");
 }
 
 constexpr int kMaxNesting = 4;  // frames inside frames: a texture's rendered_from, at most this deep

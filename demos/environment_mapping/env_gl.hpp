@@ -21,7 +21,8 @@
 // whose texels hold their own directions (d + 1)/2 in RGBA32F (the
 // measurement): then each pixel of the read-back is the direction the map
 // returned there, filtered as the colour would be, and its angle to the
-// reference's r is the error in degrees.
+// reference's r is the error in degrees.  The figures' pictures use the same
+// shaders with FRAME 1 in batches of a ts::Frame (env_views.hpp).
 #pragma once
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -95,8 +96,16 @@ constexpr const char* kFile = "demos/environment_mapping/env_gl.hpp";
 inline const char* mapFunctions() {
   return R"(
 const float PI = 3.14159265358979;
+#if FRAME  // drawn as a ts::Frame (a figure's nested frame): uniforms are vec4s (the columns), the normal is (s, t, r)
+uniform vec4 toWorld0, toWorld1, toWorld2, sphereEye0, sphereEye1, sphereEye2;
+#define toWorld mat3(toWorld0.xyz, toWorld1.xyz, toWorld2.xyz)
+#define sphereEye mat3(sphereEye0.xyz, sphereEye1.xyz, sphereEye2.xyz)
+#define NORMAL gl_MultiTexCoord0.xyz
+#else
 uniform mat3 toWorld;    // eye -> world (the view's rotation, transposed)
 uniform mat3 sphereEye;  // world -> this eye (the sphere map is read in eye space)
+#define NORMAL gl_Normal
+#endif
 vec3 reflectWorld(vec3 p, vec3 n) { return toWorld * reflect(normalize(p), normalize(n)); }
 vec2 latlong(vec3 d) { d = normalize(d); return vec2(atan(-d.x, -d.z) / (2.0 * PI) + 0.5, asin(clamp(d.y, -1.0, 1.0)) / PI + 0.5); }
 vec2 sphereST(vec3 r) { float m = 2.0 * sqrt(r.x * r.x + r.y * r.y + (r.z + 1.0) * (r.z + 1.0)); return r.xy / m + 0.5; }
@@ -104,8 +113,12 @@ vec2 disc(vec3 d, float side) { d = normalize(d); return d.xy / (2.0 * (1.0 + si
 vec2 paraboloid(vec2 front, vec2 back, float z) { return z >= 0.0 ? vec2(front.x / 2.0, front.y) : vec2((back.x + 1.0) / 2.0, back.y); }
 )";
 }
-inline std::string vertexShader(int param, bool perVertex) {
+inline std::string header(int param, bool perVertex, bool frame) {
   return "#version 130\n#define PARAM " + std::to_string(param) + "\n#define PER_VERTEX " + (perVertex ? "1" : "0") +
+         "\n#define FRAME " + (frame ? "1" : "0");
+}
+inline std::string vertexShader(int param, bool perVertex, bool frame = false) {
+  return header(param, perVertex, frame) +
          mapFunctions() + R"(
 out vec3 posEye, nEye;
 out vec4 coord;    // per vertex: the map coordinates (paraboloid: front xy, back zw)
@@ -113,7 +126,7 @@ out float side;    // per vertex: r_z, which paraboloid half
 void main() {
   vec4 pe = gl_ModelViewMatrix * gl_Vertex;
   posEye = pe.xyz;
-  nEye = gl_NormalMatrix * gl_Normal;
+  nEye = gl_NormalMatrix * NORMAL;
   gl_Position = gl_ProjectionMatrix * pe;
   vec3 r = reflectWorld(posEye, nEye);
   side = r.z;
@@ -129,11 +142,19 @@ void main() {
 }
 )";
 }
-inline std::string fragmentShader(int param, bool perVertex) {
-  return "#version 130\n#define PARAM " + std::to_string(param) + "\n#define PER_VERTEX " + (perVertex ? "1" : "0") +
+inline std::string fragmentShader(int param, bool perVertex, bool frame = false) {
+  return header(param, perVertex, frame) +
          mapFunctions() + R"(
+#if FRAME && (PARAM == 1 || PARAM == 5)
+uniform samplerCube tex;  // a Frame's program reads unit 0 as "tex"
+#define mapCube tex
+#elif FRAME
+uniform sampler2D tex;
+#define map2d tex
+#else
 uniform sampler2D map2d;
 uniform samplerCube mapCube;
+#endif
 in vec3 posEye, nEye;
 in vec4 coord;
 in float side;

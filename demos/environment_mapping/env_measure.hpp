@@ -119,7 +119,6 @@ inline std::map<std::string, TexelShape> texelShape(int param, int faceTexels, c
 }
 
 // ---- pictures (ts::Image, row 0 at the top) -------------------------------
-const glm::dvec3 kBackground{0.12, 0.12, 0.14};
 inline ts::Image colourImage(const envmap::Pixels& p) {
   ts::Image img(p.w, p.h);
   for (int y = 0; y < p.h; ++y)
@@ -139,6 +138,15 @@ inline ts::Image referenceImage(const envmap::Pixels& p) {
     }
   return img;
 }
+// The error picture's scale: per pixel the maps are off by hundredths of a degree, per vertex by
+// degrees; a larger 95th percentile (a stale sphere map) takes the next of 1, 2, 5 x 10^k above it.
+inline double errorScale(bool perVertex, double p95) {
+  double scale = perVertex ? 4.0 : 0.25;
+  for (double step = 1; scale < p95; step *= 10)
+    for (double m : {1.0, 2.0, 5.0})
+      if (scale < p95) scale = std::max(scale, m * step);
+  return scale;
+}
 // Error in degrees on a heat scale: black 0, red at `scaleDeg`/2, yellow to
 // white at `scaleDeg` and above.
 inline glm::dvec3 heat(double e, double scaleDeg) {
@@ -154,29 +162,31 @@ inline ts::Image errorImage(const std::vector<float>& e, int w, int h, double sc
     }
   return img;
 }
-// The map unwrapped (lat-long 2:1, the cube's six faces in a 3 x 2 grid in
-// GL's order (+X -X +Y / -Y +Z -Z, each with s right and t down as stored),
-// the sphere's disc, the paraboloid's two discs), dimmed except the texels
-// the object's pixels read: the region the object samples.
-inline ts::Image mapImage(int param, int faceTexels, const glm::dmat3& sphereView, const envmap::Pixels* looked) {
-  const envmap::Size sz = envmap::mapSize(Param(param), faceTexels);
-  const int W = param == envmap::kCube ? 3 * sz.w : sz.w, H = param == envmap::kCube ? 2 * sz.h : sz.h;
+// The texels of the map the object reads (the direction each pixel of
+// `looked` returned, taken back to the map), in the unwrapped layout of
+// ts::envmaps::unwrappedMap (row 0 at the top), grown by two texels.
+struct LitTexels {
+  int w = 0, h = 0;
+  std::vector<char> hit;  // w x h, row 0 at the top
+};
+inline LitTexels litTexels(int param, int faceTexels, const glm::dmat3& sphereView, const envmap::Pixels& looked) {
+  const envmap::Size sz = envmap::mapSize(Param(param), faceTexels), all = envmap::unwrappedSize(Param(param), faceTexels);
+  const int W = all.w, H = all.h;
   std::vector<char> hit(size_t(W) * size_t(H), 0);
   // Where texel (face, i, j) of the map lands in the unwrapped picture.
   auto place = [&](int face, int i, int j) {
     if (param == envmap::kCube) return glm::ivec2((face % 3) * sz.w + i, (face / 3) * sz.h + j);  // t down
     return glm::ivec2(i, sz.h - 1 - j);                                                          // t up
   };
-  if (looked)
-    for (int y = 0; y < looked->h; ++y)
-      for (int x = 0; x < looked->w; ++x) {
-        if (looked->at(x, y).a < 0.5f) continue;
-        int face = 0;
-        const glm::dvec2 st = envmap::mapST(Param(param), looked->direction(x, y), sphereView, &face);
-        const int i = std::clamp(int(st.x * sz.w), 0, sz.w - 1), j = std::clamp(int(st.y * sz.h), 0, sz.h - 1);
-        const glm::ivec2 q = place(face, i, j);
-        hit[size_t(q.y) * size_t(W) + size_t(q.x)] = 1;
-      }
+  for (int y = 0; y < looked.h; ++y)
+    for (int x = 0; x < looked.w; ++x) {
+      if (looked.at(x, y).a < 0.5f) continue;
+      int face = 0;
+      const glm::dvec2 st = envmap::mapST(Param(param), looked.direction(x, y), sphereView, &face);
+      const int i = std::clamp(int(st.x * sz.w), 0, sz.w - 1), j = std::clamp(int(st.y * sz.h), 0, sz.h - 1);
+      const glm::ivec2 q = place(face, i, j);
+      hit[size_t(q.y) * size_t(W) + size_t(q.x)] = 1;
+    }
   // A picture has fewer pixels than the map has texels where the object is
   // small: grow the lit texels by two so the region reads as one.
   for (int pass = 0; pass < 2; ++pass) {
@@ -189,24 +199,6 @@ inline ts::Image mapImage(int param, int faceTexels, const glm::dmat3& sphereVie
               if (x + dx >= 0 && y + dy >= 0 && x + dx < W && y + dy < H) grown[size_t(y + dy) * size_t(W) + size_t(x + dx)] = 1;
     hit.swap(grown);
   }
-  ts::Image img(W, H);
-  const glm::dmat3 toWorld = glm::transpose(sphereView);
-  for (int face = 0; face < (param == envmap::kCube ? 6 : 1); ++face)
-    for (int j = 0; j < sz.h; ++j)
-      for (int i = 0; i < sz.w; ++i) {
-        const glm::ivec2 q = place(face, i, j);
-        glm::dvec3 c = envmap::worldColour(envmap::texelDir(Param(param), face, (i + 0.5) / sz.w, (j + 0.5) / sz.h, toWorld));
-        if (param == envmap::kSphere) {  // outside the mirror ball's disc: no data
-          const double u = 2 * (i + 0.5) / sz.w - 1, v = 2 * (j + 0.5) / sz.h - 1;
-          if (u * u + v * v > 1) c = kBackground;
-        }
-        if (param == envmap::kParaboloid) {
-          const double u = 4 * (i + 0.5) / sz.w - (i < sz.w / 2 ? 1 : 3), v = 2 * (j + 0.5) / sz.h - 1;
-          if (u * u + v * v > 1) c = kBackground;
-        }
-        if (looked && !hit[size_t(q.y) * size_t(W) + size_t(q.x)]) c = 0.25 * c + 0.1;
-        img.set(q.x, q.y, envmap::toRgba(c));
-      }
-  return img;
+  return {W, H, hit};
 }
 }  // namespace envmap

@@ -217,10 +217,13 @@ inline void addStudies(envmap::EnvGL& g, int face, ts::Measurements& out) {
 struct Found {
   ErrorStats current;                    // the shown state
   std::array<ErrorStats, 4> compare;     // each parameterization, this object and evaluation
-  ts::Image picture, reference, error, map;          // object view, map view
-  std::array<ts::Image, 4> pictures;                 // compare view
-  ts::gl::CallList pictureGL, referenceGL;           // the GL calls that rendered them (the listings show them)
-  std::array<ts::gl::CallList, 4> picturesGL;
+  // The pictures of the object: nested frames (env_views.hpp), their GL calls recorded (renderedBy); the
+  // flat mirror's reference is an image (the near ball is painted on it), as are the error and the map.
+  ts::TextureDesc picture, reference;                // object view, map view
+  std::array<ts::TextureDesc, 4> pictures;           // compare view
+  ts::Image error;
+  ts::TextureDesc map;  // the map unwrapped (a generator), and the texels the object reads
+  LitTexels lit;
   Mirror mirror;
   double errorScale = 1;  // degrees shown yellow in the error picture
 };

@@ -23,7 +23,8 @@
 // read back; seed 002's u = N_x/2 + 1/2 against GL_SPHERE_MAP and its R = 2 N_z N - I
 // against r off the view axis; the flat mirror that cannot show a nearby ball.
 //
-// What the GL does (env_gl.hpp: EnvGL::draw, into a float FBO read back): the mesh as
+// What the GL does (env_gl.hpp: EnvGL::draw, into a float FBO read back for the measurements; the
+// figures' pictures are the same passes as ts::Frames nested in the figure, env_views.hpp): the mesh as
 // glNormal3f + glVertex3f, no glTexCoord.  Cube and sphere maps per vertex are fixed
 // function: glTexGeni(GL_S/T/R, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP or GL_SPHERE_MAP)
 // and glEnable(GL_TEXTURE_GEN_S/T/R) make r from the normal and the modelview; the rest
@@ -49,6 +50,7 @@
 #include "env_measure.hpp"
 #include "env_studies.hpp"
 #include "env_math.hpp"
+#include "env_views.hpp"
 
 namespace {
 using ts::layout::fmt, ts::layout::kAmber, ts::layout::kWhite;
@@ -138,18 +140,12 @@ class EnvironmentMapping final : public ts::Scene {
     p.faceTexels = face_, p.w = p.h = size;
     return p;
   }
+  std::string refCaption() const {  // the mirror's is the exact world; the others read a fine cube map (env_views.hpp)
+    return object_ == envmap::kMirror ? "reference: exact r per pixel" : fmt("reference: exact r, cube map %.0f", envmap::kReferenceFace);
+  }
   std::string stateName(int param) const {
     return std::string(envmap::kParamLabels[param]) + ", r per " + kEval[eval_] +
            (eval_ == 1 && param == envmap::kCube ? " (GL_REFLECTION_MAP)" : eval_ == 1 && param == envmap::kSphere ? " (GL_SPHERE_MAP)" : "");
-  }
-  // The error picture's scale: per pixel the maps are off by hundredths of a degree, per vertex by
-  // degrees; a larger 95th percentile (a stale sphere map) takes the next of 1, 2, 5 x 10^k above it.
-  double errorScale(double p95) const {
-    double scale = eval_ == 1 ? 4.0 : 0.25;
-    for (double step = 1; scale < p95; step *= 10)
-      for (double m : {1.0, 2.0, 5.0})
-        if (scale < p95) scale = std::max(scale, m * step);
-    return scale;
   }
   int param_ = envmap::kCube, object_ = envmap::kSphereObject, eval_ = 0, view_ = kObjectView, sphereEye_ = 0;
   int face_ = 64, render_ = 320;
@@ -157,8 +153,11 @@ class EnvironmentMapping final : public ts::Scene {
   ts::OrbitCamera orbit_;
 };
 
-ts::TextureDesc image(const ts::Image& img, const std::string& what) {
-  return ts::renderedImageTexture(img, "environment_mapping_render", what, "environment_mapping");
+ts::TextureDesc image(const ts::Image& img, const std::string& what, ts::gl::CallList gl = nullptr) {
+  ts::TextureDesc t = ts::renderedImageTexture(img, "environment_mapping_render", what, "environment_mapping");
+  t.minFilter = t.magFilter = GL_LINEAR;
+  t.renderedBy = std::move(gl);
+  return t;
 }
 std::string statsLine(const envmap::ErrorStats& s) {
   return fmt("error mean %.2f", s.mean) + fmt(", 95%% %.2f", s.p95) + fmt(", max %.1f deg", s.max) + " (" + s.maxRegion + ")";
@@ -169,15 +168,14 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   ts::Frame f = L::blankFrame(width, height);
   const Found* found = measured.detailAs<Found>();
   const L::Box area{6, 6, float(width) - 6, float(height) - 6};
-  auto show = [&](const L::Cell& c, const std::string& id, const ts::Image* img, const std::string& above,
-                  const std::string& below, ts::gl::CallList gl = nullptr) {
-    if (img && img->width > 0) {
-      // The object pictures are resampled to the panel with GL_LINEAR: with GL_NEAREST the panel's middle
-      // row and column sample exactly between two pixels, where backends round apart.  The map keeps its texels sharp.
-      ts::TextureDesc t = image(*img, id);
-      if (id != "map") t.minFilter = t.magFilter = GL_LINEAR;
-      t.renderedBy = std::move(gl);
-      f.panels.push_back(L::texturePanel(id, c.picture, f.addTexture(t)));
+  // The object pictures are resampled to the panel with GL_LINEAR: with GL_NEAREST the panel's middle row and
+  // column sample exactly between two pixels, where backends round apart.  The map keeps its texels sharp.
+  auto show = [&](const L::Cell& c, const std::string& id, const ts::TextureDesc* t, const std::string& above,
+                  const std::string& below) {
+    if (t && t->image) {
+      f.panels.push_back(L::texturePanel(id, c.picture, f.addTexture(*t)));
+      if (t->renderedFrom)  // a nested frame's picture has row 0 at the top
+        for (ts::Vertex& v : f.panels.back().batches.back().vertices) v.tex.y = 1.0f - v.tex.y;
     }
     L::caption(f, c.above, above, kWhite, c.scale);
     if (!below.empty()) L::caption(f, c.below, below, kAmber, c.scale);
@@ -189,10 +187,9 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     for (int k = 0; k < 4; ++k)
       show(cells[size_t(k)], envmap::kParamKeys[k], found ? &found->pictures[size_t(k)] : nullptr,
            std::string(envmap::kParamLabels[k]) + (eval_ == 1 && (k == envmap::kCube || k == envmap::kSphere) ? " (texgen)" : ""),
-           found ? fmt("mean %.2f", found->compare[size_t(k)].mean) + fmt(", max %.1f deg", found->compare[size_t(k)].max) : "",
-           found ? found->picturesGL[size_t(k)] : nullptr);
-    show(cells[4], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel",
-         std::string("the maps: r per ") + kEval[eval_], found ? found->referenceGL : nullptr);
+           found ? fmt("mean %.2f", found->compare[size_t(k)].mean) + fmt(", max %.1f deg", found->compare[size_t(k)].max) : "");
+    show(cells[4], "reference", found ? &found->reference : nullptr, refCaption(),
+         std::string("the maps: r per ") + kEval[eval_]);
     return f;
   }
   if (view_ == kMapView) {
@@ -206,24 +203,24 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
          std::string(envmap::kParamLabels[param_]) + fmt(", %.0f texels", envmap::mapTexels(envmap::Param(param_), face_)) +
              (param_ == envmap::kCube ? ": +X -X +Y / -Y +Z -Z, t down" : ""),
          "lit: the texels the object reads");
+    if (found) envmap::lightTheReadTexels(f.panels.back(), found->lit);
     spec.aspect = 1.0f;
     show(L::flow({mid + 6, area.y0, area.x1, area.y1}, spec)[0], "picture", found ? &found->picture : nullptr,
-         stateName(param_), found ? statsLine(found->current) : "", found ? found->pictureGL : nullptr);
+         stateName(param_), found ? statsLine(found->current) : "");
     return f;
   }
   L::FlowSpec spec;
   spec.n = 3, spec.linesAbove = 1, spec.linesBelow = 2, spec.gap = 8;
   std::vector<L::Cell> cells = L::flow(area, spec);
-  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(found->current) : "",
-       found ? found->pictureGL : nullptr);
+  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(found->current) : "");
   std::string refNote;
   if (found && object_ == envmap::kMirror)
     refNote = fmt("red: a near ball, %.0f px; a map made at the centre shows it at ", found->mirror.truePixels) +
               fmt("%.0f px", found->mirror.mapPixels) + fmt(", %.0f right", found->mirror.both);
-  show(cells[1], "reference", found ? &found->reference : nullptr, "reference: exact r per pixel", refNote,
-       found ? found->referenceGL : nullptr);
-  show(cells[2], "error", found ? &found->error : nullptr,
-       fmt("direction error (black 0, yellow %g deg)", found ? found->errorScale : errorScale(0)),
+  show(cells[1], "reference", found ? &found->reference : nullptr, refCaption(), refNote);
+  const ts::TextureDesc errorTex = found ? image(found->error, "error") : ts::TextureDesc{};
+  show(cells[2], "error", found ? &errorTex : nullptr,
+       fmt("direction error (black 0, yellow %g deg)", found ? found->errorScale : envmap::errorScale(eval_ == 1, 0)),
        found ? "worst in: " + found->current.maxRegion : "");
   return f;
 }
@@ -258,36 +255,36 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
     }
     ts::measureProgress(0.4);
   }
-  // The shown state's pictures, their GL calls recorded for the listings (map and target made again: the calls show how).
+  // The shown state's pictures: nested frames drawn by GL (their calls recorded for the listings), which the
+  // reference recomputes (env_views.hpp); the measurements read the float passes.
   const int n = render_;
-  auto recorded = [&](const envmap::Pass& ps, ts::gl::CallList* calls) {
-    envmap::Pixels px;
-    g.forget(ps);
-    *calls = ts::recordRender(r, [&] { px = g.draw(ps); });
-    return px;
-  };
-  const envmap::Pixels ref = recorded(pass(-1, object_, false, true, n), &found.referenceGL);
+  envmap::Pixels ref;  // its calls recorded for the mirror's reference picture (the target made again: they show how)
+  g.forget(pass(-1, object_, false, true, n));
+  const ts::gl::CallList refGL = ts::recordRender(r, [&] { ref = g.draw(pass(-1, object_, false, true, n)); });
   const envmap::Pass shown = pass(param_, object_, eval_ == 1, true, n);
   const envmap::Pixels looked = g.draw(shown);
   std::vector<float> perPixel;
   found.current = envmap::errorStats(param_, looked, ref, shown.eyeRotation(), &perPixel);
   out.insert(out.begin(), {"error_max_deg[shown]", found.current.max, "the picture shown: largest direction error, degrees"});
   out.insert(out.begin(), {"error_mean_deg[shown]", found.current.mean, "the picture shown: mean direction error, degrees"});
-  found.picture = envmap::colourImage(recorded(pass(param_, object_, eval_ == 1, false, n), &found.pictureGL));
-  found.reference = envmap::referenceImage(ref);
-  found.errorScale = errorScale(found.current.p95);
+  auto picture = [&](int p) { return envmap::nestedTexture(r, envmap::passFrame(pass(p, object_, eval_ == 1, false, n)), stateName(p)); };
+  found.picture = picture(param_);
+  found.errorScale = envmap::errorScale(eval_ == 1, found.current.p95);
   found.error = envmap::errorImage(perPixel, n, n, found.errorScale);
-  found.map = envmap::mapImage(param_, face_, shown.sphereView, &looked);
+  found.map = ts::envmaps::unwrappedMap(envmap::Param(param_), face_, shown.sphereView);
+  found.lit = envmap::litTexels(param_, face_, shown.sphereView, looked);
   if (view_ == kCompareView)
-    for (int p = 0; p < 4; ++p)
-      found.pictures[size_t(p)] =
-          envmap::colourImage(recorded(pass(p, object_, eval_ == 1, false, n), &found.picturesGL[size_t(p)]));
+    for (int p = 0; p < 4; ++p) found.pictures[size_t(p)] = picture(p);
   if (object_ == envmap::kMirror) {  // the flat mirror: where a nearby ball should appear (red in the reference)
     const envmap::Pass ps = pass(-1, object_, false, true, n);
     found.mirror = envmap::mirrorNear(ref, ps.projection, ps.view, ps.model);
+    ts::Image painted = envmap::referenceImage(ref);
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x)
-        if (found.mirror.trueMask[size_t(y) * size_t(n) + size_t(x)]) found.reference.set(x, n - 1 - y, {230, 40, 40, 255});
+        if (found.mirror.trueMask[size_t(y) * size_t(n) + size_t(x)]) painted.set(x, n - 1 - y, {230, 40, 40, 255});
+    found.reference = image(painted, "reference", refGL);
+  } else {
+    found.reference = envmap::nestedTexture(r, envmap::referenceFrame(pass(-1, object_, false, false, n)), "reference");
   }
   ts::measureProgress(0.6);
   envmap::addStudies(g, face_, out);  // the seeds' examples, solid angle, the stale sphere map, the near ball

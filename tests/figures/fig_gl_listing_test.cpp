@@ -73,8 +73,8 @@ bool has(const std::vector<std::string>& l, const std::string& part) {
   return std::any_of(l.begin(), l.end(), [&](const std::string& s) { return s.find(part) != std::string::npos; });
 }
 
-// Claim: environment mapping's pictures are GL renders made in measure() and
-// shown as textures; the listing holds the calls that rendered them, under a
+// Claim: environment mapping's pictures are GL renders of nested frames made
+// in measure() and shown as textures; the listing holds the calls that rendered them, under a
 // comment naming the panel, before the frame's own: GL_SPHERE_MAP texgen for
 // the sphere map per vertex, GL_REFLECTION_MAP texgen on a bound cube map for
 // the cube map per vertex, a GLSL program and no texgen per pixel.
@@ -99,7 +99,12 @@ TEST(GlListing, EnvironmentMappingListsTheTexgenThatRenderedThePicture) {
     EXPECT_TRUE(has(picture, std::string("glTexGeni(") + coord + ", GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);")) << coord;
   EXPECT_TRUE(has(picture, "glBindTexture(GL_TEXTURE_CUBE_MAP, "));
   EXPECT_TRUE(has(picture, "glTexImage2D(GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, ")) << "the map is made in the section";
-  EXPECT_TRUE(has(picture, "glMatrixMode(GL_TEXTURE);"));
+  // The texture matrix turns eye space into the world's: loaded once the eye
+  // turns (at yaw 0, pitch 0 it is the identity, which the frame leaves out).
+  EXPECT_FALSE(has(picture, "glMatrixMode(GL_TEXTURE);"));
+  auto turned = section(listingFileOf("environment_mapping", {"--param", "cube", "--eval", "vertex", "--yaw", "30"}, 540, 220),
+                        "/* the picture in panel 'picture'");
+  EXPECT_TRUE(has(turned, "glMatrixMode(GL_TEXTURE);"));
 
   auto perPixel = listingFileOf("environment_mapping", {"--param", "cube", "--eval", "pixel"}, 540, 220);
   picture = section(perPixel, "/* the picture in panel 'picture'");

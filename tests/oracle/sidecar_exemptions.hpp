@@ -3,7 +3,7 @@
 // VI.7 shows GL's own multi-pass and per-pixel-jitter renders side by side, and
 // its zone plate GL's shader renders of the plate;
 // the parallax figures show GLSL renders of the filtering modes and errors;
-// the environment mapping figures show texgen and GLSL renders of mirrors;
+// two environment mapping figures show error pictures made from GL's float read-backs;
 // the bump-mapping figures show the displaced reference torus R, drawn from a
 // 1024 x 512 grid in a vertex array by its measure(); the DXT1 figures show
 // GL's decode of compressed blocks),
@@ -17,16 +17,18 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 27> kFiguresDrawnFromGlRenders = {
+inline constexpr std::array<const char*, 24> kFiguresDrawnFromGlRenders = {
     // --footprints: the left panel is the picture GL drew, inspected
     "inspect_vi2_footprints", "inspect_aniso_footprint",
     "vi7_jitter", "jitter_zone_plate", "parallax_modes", "parallax_error_band", "parallax_step",
-    // environment_mapping: its object pictures are GL renders with texgen and GLSL, into float targets
-    // from float maps made by the demo (no sidecar generator).  Its texgen passes (GL_REFLECTION_MAP
-    // and GL_SPHERE_MAP) are now describable as nested frames (TextureDesc::renderedFrom, cube maps)
-    // that the reference recomputes, but the demo does not yet draw them that way; each figure also
-    // has GLSL panels (the per-pixel reference, lat-long, paraboloid) and CPU-made ones (error, map).
-    "env_cube_sphere", "env_compare_torus", "env_latlong_map", "env_cube_map", "env_flat_mirror",
+    // environment_mapping: its object pictures are nested frames the reference recomputes (texgen) or
+    // exempts (GLSL), its maps "environment_map" textures it remakes, the texels read quads in the
+    // sidecar (env_compare_torus, env_latlong_map, env_cube_map are all of these); but these two also
+    // show a picture its measure() computes from GL's float read-backs, which no generator remakes: the
+    // direction error per pixel (both), and env_flat_mirror's reference with the near ball painted in.
+    // Their texgen pictures are still checked from the Frame (test_figures.cpp's GL tests, and
+    // test_gl_envmap.cpp's TheEnvironmentMappingFiguresTexgenPictures).
+    "env_cube_sphere", "env_flat_mirror",
     // bump_mapping: R, emboss and DOT3 are pictures its measure() draws
     "bump_two_lights", "bump_seed002", "bump_normals", "bump_methods", "bump_emboss_overhead",
     // texture_compression: GL's decode of the DXT1 blocks (glGetTexImage), and the picture and error beside it

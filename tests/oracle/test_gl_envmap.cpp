@@ -16,9 +16,11 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "common/core/env_maps.hpp"
 #include "common/core/mesh.hpp"
 #include "oracle_support.hpp"
 #include "reference/reference.hpp"
+#include "tests/support/scene_test.hpp"
 
 namespace {
 // A sphere of radius 1 (24 x 12 quads), each vertex with its normal, in a
@@ -255,4 +257,43 @@ TEST(GLNestedFrame, APanelShowingATexgenRender) {
   ref::VerifyResult bad =
       ref::verifyImage(img, nestedFrame(innerPicture, wrongInner), oracle::options("nested_wrong_inner", "envmap_negative"));
   EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
+}
+
+// The environment-mapping figures' texgen pictures (issue 26): the compare
+// view's cube-map and sphere-map panels are nested frames (GL_REFLECTION_MAP
+// with the texture matrix on an "environment_map" cube, GL_SPHERE_MAP on the
+// 2D map), and the picture GL drew of each is a legal result of the frame the
+// reference recomputes — most of its pixels checked, none invalid.  The same
+// picture against the frame told with another mode (GL_NORMAL_MAP for the
+// cube, the map made for an eye turned 40 degrees for the sphere) fails.
+TEST(GLNestedFrame, TheEnvironmentMappingFiguresTexgenPictures) {
+  ts::test::Demo d("environment_mapping",
+                   {"--view", "compare", "--object", "torus", "--eval", "vertex", "--tilt", "30", "--yaw", "25", "--render", "160"});
+  d.measure();
+  const ts::Frame f = d.frame(900, 300);
+  int checkedPasses = 0;
+  for (const ts::TextureDesc& t : f.textures) {
+    if (!t.renderedFrom) continue;
+    const ts::Batch& b = t.renderedFrom->panels.at(0).batches.at(0);
+    if (!b.program.empty()) continue;  // the GLSL passes: exempt, not checked here
+    ASSERT_TRUE(b.texGen.mode == GL_REFLECTION_MAP || b.texGen.mode == GL_SPHERE_MAP);
+    const std::string n = b.texGen.mode == GL_REFLECTION_MAP ? "env_figure_cube_texgen" : "env_figure_sphere_texgen";
+    ref::VerifyResult r = ref::verifyImage(*t.image, *t.renderedFrom, oracle::options(n, "envmap"));
+    std::printf("%s\n", r.summary().c_str());
+    EXPECT_EQ(r.invalid, 0) << r.summary();
+    EXPECT_GT(r.textured, 160 * 160 / 4) << r.summary();  // the torus covers about half the picture
+    ts::Frame wrong = *t.renderedFrom;
+    ts::Batch& wb = wrong.panels[0].batches[0];
+    if (wb.texGen.mode == GL_REFLECTION_MAP) {
+      wb.texGen.mode = GL_NORMAL_MAP;
+    } else {
+      const glm::dmat3 turned(glm::rotate(glm::mat4(1.0f), glm::radians(40.0f), glm::vec3(0, 1, 0)));
+      wrong.textures[0] = ts::envmaps::environmentMap(ts::envmaps::kSphere, 64, turned);
+    }
+    ref::VerifyResult bad = ref::verifyImage(*t.image, wrong, oracle::options(n + "_wrong", "envmap_negative"));
+    std::printf("%s\n", bad.summary().c_str());
+    EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
+    ++checkedPasses;
+  }
+  EXPECT_EQ(checkedPasses, 2) << "the cube-map and sphere-map texgen pictures";
 }

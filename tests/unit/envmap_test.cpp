@@ -1,4 +1,4 @@
-// tests/unit/envmap_test.cpp — demos/environment_mapping/env_math.hpp: the
+// tests/unit/envmap_test.cpp — demos/environment_mapping/env_math.hpp and common/core/env_maps: the
 // four parameterizations, the world and the solid-angle integrals, on the
 // CPU.  Every check is a relation (a map and its inverse, one convention
 // against another, analytic against numeric), never a stored number.
@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "common/core/error.hpp"
 #include "demos/environment_mapping/env_math.hpp"
 
 namespace {
@@ -148,3 +149,42 @@ TEST(EnvMap, WorldColourIsLegible) {
   }
 }
 }  // namespace
+
+// The maps as textures (common/core/env_maps.cpp, the generator the reference
+// remakes from a sidecar): every texel is the world's colour at its centre's
+// direction, in GL's upload order (a cube's face f in rows f w .. f w + w - 1,
+// row 0 of a face its t = 0); the parameters written are enough to make the
+// same texels again; bad parameters are refused.
+TEST(EnvMap, TheMapTexturesAreTheWorldAndRemakeFromTheirParameters) {
+  const glm::dmat3 view(glm::dvec3(std::cos(0.3), 0, std::sin(0.3)), glm::dvec3(0, 1, 0), glm::dvec3(-std::sin(0.3), 0, std::cos(0.3)));
+  for (int p = 0; p < kParams; ++p)
+    for (bool unwrapped : {false, true}) {
+      const ts::TextureDesc t = unwrapped ? unwrappedMap(Param(p), 8, view) : environmentMap(Param(p), 8, view);
+      const Size sz = unwrapped ? unwrappedSize(Param(p), 8) : mapSize(Param(p), 8);
+      ASSERT_EQ(t.image->width, sz.w) << kParamKeys[p];
+      ASSERT_EQ(t.image->height, sz.h * (p == kCube && !unwrapped ? 6 : 1)) << kParamKeys[p];
+      EXPECT_EQ(t.cube, p == kCube && !unwrapped);
+      const ts::TextureDesc again = environmentMapFromParams(t.params);
+      EXPECT_EQ(again.image->pixels, t.image->pixels) << kParamKeys[p] << (unwrapped ? " unwrapped" : "");
+      EXPECT_EQ(again.key(), t.key());
+    }
+  const Size sz = mapSize(kCube, 8);
+  const ts::TextureDesc cube = environmentMap(kCube, 8);
+  for (int f = 0; f < 6; ++f)
+    for (int j : {0, 5})
+      for (int i : {1, 7}) {
+        const ts::Rgba got = cube.image->at(i, f * sz.h + j), want = toRgba(worldColour(cubeDir(f, (i + 0.5) / 8, (j + 0.5) / 8)));
+        EXPECT_EQ(glm::ivec3(got.r, got.g, got.b), glm::ivec3(want.r, want.g, want.b));
+      }
+  const glm::dmat3 toWorld = glm::transpose(view);
+  const ts::TextureDesc sphere = environmentMap(kSphere, 8, view);
+  const Size ss = mapSize(kSphere, 8);
+  const ts::Rgba got = sphere.image->at(ss.w / 2, ss.h / 2);
+  const ts::Rgba want = toRgba(worldColour(toWorld * sphereDir((ss.w / 2 + 0.5) / ss.w, (ss.h / 2 + 0.5) / ss.h)));
+  EXPECT_EQ(glm::ivec3(got.r, got.g, got.b), glm::ivec3(want.r, want.g, want.b));
+  EXPECT_THROW(environmentMapFromParams({{"param", "mercator"}, {"face", "8"}}), ts::Error);
+  EXPECT_THROW(environmentMapFromParams({{"param", "cube"}, {"face", "0"}}), ts::Error);
+  EXPECT_THROW(environmentMapFromParams({{"param", "sphere"}, {"face", "8"}}), ts::Error);  // no sphere_view
+  EXPECT_THROW(environmentMapFromParams({{"param", "sphere"}, {"face", "8"}, {"sphere_view", "1 0 0 0 1 0 0 0"}}), ts::Error);
+  EXPECT_THROW(environmentMapFromParams({{"param", "cube"}, {"face", "8"}, {"layout", "cross"}}), ts::Error);
+}
