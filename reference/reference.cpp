@@ -19,6 +19,7 @@ const char* exemptName(Exempt e) {
     case Exempt::Blend: return "blend";
     case Exempt::Unsupported: return "unsupported";
     case Exempt::Edge: return "edge";
+    case Exempt::UnknownPicture: return "unknown picture";
     case Exempt::Count: break;
   }
   return "?";
@@ -85,6 +86,7 @@ ts::TextureDesc Reference::nestedTexture(const ts::TextureDesc& t, size_t index)
   // the background legal beside every edge between two triangles of one
   // surface, and the picture unknown along all of them.
   RenderOptions innerOptions = opts_;
+  innerOptions.exemptTextures.clear();  // indices into the outer frame's textures
   innerOptions.edgeBand = std::min(opts_.edgeBand, 0.125);
   const Reference inner(*t.renderedFrom, innerOptions);
   for (const std::string& n : inner.notes()) note("the frame of texture '" + t.name + "': " + n);
@@ -340,6 +342,14 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       proto.why = Exempt::Program;
       note("program '" + b.program + "' is not modelled: its pixels are exempt");
     }
+  }
+  // A picture the sidecar cannot remake (RenderOptions::exemptTextures): its texels are unknown.
+  const auto unknownPicture = [&](int t) {
+    return t >= 0 && std::find(opts_.exemptTextures.begin(), opts_.exemptTextures.end(), t) != opts_.exemptTextures.end();
+  };
+  if (proto.kind != Candidate::Kind::Exempt && (unknownPicture(b.texture) || unknownPicture(b.texture1))) {
+    proto.kind = Candidate::Kind::Exempt;
+    proto.why = Exempt::UnknownPicture;
   }
   if (proto.kind != Candidate::Kind::Exempt && b.texture >= 0) {
     tex = &textures_.at(size_t(b.texture));

@@ -54,9 +54,14 @@ struct RenderOptions {
   LodModel lodModel = LodModel::Bounded;
   double lodMargin = 0.1;     // levels added on both sides of the LOD interval
   double depthEpsilon = 1e-5;  // window z closer than this: either fragment may win
+  // Textures of the frame (indices) whose texels are not known: pictures a
+  // sidecar cannot remake (SidecarScene::unknownPictures).  A batch that
+  // reads one, on either unit, is exempt (Exempt::UnknownPicture).  The top
+  // frame's only: a nested frame is drawn without them.
+  std::vector<int> exemptTextures;
 };
 
-enum class Exempt : uint8_t { None, Line, Point, Label, Program, Blend, Unsupported, Edge, Count };
+enum class Exempt : uint8_t { None, Line, Point, Label, Program, Blend, Unsupported, Edge, UnknownPicture, Count };
 const char* exemptName(Exempt e);
 
 struct Candidate {

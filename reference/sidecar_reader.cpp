@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -194,9 +195,10 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
 }
 
 constexpr int kMaxNesting = 4;  // frames inside frames: a texture's rendered_from, at most this deep
-static void readFrame(const Json& doc, const std::string& baseDir, int nesting, SidecarScene& out);
+static void readFrame(const Json& doc, const std::string& baseDir, int nesting, const SidecarReadOptions& ro,
+                      SidecarScene& out);
 
-static SidecarScene read(const std::string& jsonText, const std::string& baseDir) {
+static SidecarScene read(const std::string& jsonText, const std::string& baseDir, const SidecarReadOptions& ro) {
   Json doc;
   try {
     doc = Json::parse(jsonText);
@@ -216,14 +218,15 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
   if (const Json* st = find(doc, "state"))
     for (const auto& [k, v] : object(*st, "state").items()) out.state.emplace_back(k, text(v, "state." + k));
 
-  readFrame(doc, baseDir, 0, out);
+  readFrame(doc, baseDir, 0, ro, out);
   return out;
 }
 
 // The frame's keys of a sidecar object (the document, or a texture's
 // "rendered_from": a nested frame, issue 26) into out.frame; `nesting`
 // counts the frames around it (at most kMaxNesting).
-static void readFrame(const Json& doc, const std::string& baseDir, int nesting, SidecarScene& out) {
+static void readFrame(const Json& doc, const std::string& baseDir, int nesting, const SidecarReadOptions& ro,
+                      SidecarScene& out) {
   ts::Frame& f = out.frame;
   const Json& size = member(doc, "size", "document");
   if (!size.is_array() || size.size() != 2) fail("size", "expected [width, height]");
@@ -270,30 +273,53 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
     if (const Json* pv = find(t, "params"))
       for (const auto& [k, v] : object(*pv, where + ".params").items()) params.emplace_back(k, text(v, where + ".params." + k));
     ts::TextureDesc d;
+    bool placeholder = false;  // a picture no generator remakes (SidecarReadOptions::unknownPictures)
+    // A picture no generator remakes, when the options allow one here (the
+    // top frame's): a grey placeholder of the recorded size (faces or slices
+    // stacked), listed so that its pixels are exempt.  Else the read fails.
+    const auto unknownPicture = [&](const std::string& at, const std::string& why) {
+      if (!(ro.unknownPictures && nesting == 0)) fail(at, why);
+      const int w = integer(member(t, "width", where), where + ".width", 1, ts::kMaxImageDimension);
+      int h = integer(member(t, "height", where), where + ".height", 1, ts::kMaxImageDimension);
+      if (const Json* c = find(t, "cube"); c && boolean(*c, where + ".cube")) h *= 6;
+      if (const Json* dp = find(t, "depth")) h *= integer(*dp, where + ".depth", 1, ts::kMaxImageDimension);
+      if (h > ts::kMaxImageDimension) fail(where, "the picture's recorded size is out of range");
+      d = ts::TextureDesc{};
+      d.name = name, d.params = params;
+      d.image = std::make_shared<ts::Image>(w, h, ts::Rgba{128, 128, 128, 255});
+      out.unknownPictures.push_back(int(i));
+      placeholder = true;
+    };
     if (const Json* rf = find(t, "rendered_from")) {
       // A nested frame (issue 26): the texture is that frame's picture,
-      // which the reference recomputes; no generator, no image here.
+      // which the reference recomputes; no generator, no image here.  A
+      // nested frame that shows an unknown picture is itself one.
       if (nesting >= kMaxNesting) fail(where + ".rendered_from", "frames nested deeper than " + std::to_string(kMaxNesting));
       SidecarScene inner;
+      std::string innerError;
       try {
-        readFrame(object(*rf, where + ".rendered_from"), baseDir, nesting + 1, inner);
+        readFrame(object(*rf, where + ".rendered_from"), baseDir, nesting + 1, SidecarReadOptions{}, inner);
       } catch (const ts::Error& e) {
-        std::string what = e.what();
-        if (what.rfind("sidecar: ", 0) == 0) what = what.substr(9);
-        fail(where + ".rendered_from", what);
+        innerError = e.what();
+        if (innerError.rfind("sidecar: ", 0) == 0) innerError = innerError.substr(9);
       }
-      d.name = name, d.params = params;
-      const ts::Frame& nf = inner.frame;
-      if (const Json* w = find(t, "width"))
-        if (integer(*w, where + ".width", 0, ts::kMaxImageDimension) != nf.width) fail(where, "width differs from its frame's");
-      if (const Json* h = find(t, "height"))
-        if (integer(*h, where + ".height", 0, ts::kMaxImageDimension) != nf.height) fail(where, "height differs from its frame's");
-      d.renderedFrom = std::make_shared<const ts::Frame>(nf);
+      if (!innerError.empty()) {
+        unknownPicture(where + ".rendered_from", innerError);
+      } else {
+        d.name = name, d.params = params;
+        const ts::Frame& nf = inner.frame;
+        if (const Json* w = find(t, "width"))
+          if (integer(*w, where + ".width", 0, ts::kMaxImageDimension) != nf.width) fail(where, "width differs from its frame's");
+        if (const Json* h = find(t, "height"))
+          if (integer(*h, where + ".height", 0, ts::kMaxImageDimension) != nf.height) fail(where, "height differs from its frame's");
+        d.renderedFrom = std::make_shared<const ts::Frame>(nf);
+      }
     } else {
       try {
         d = remakeTexture(name, params, baseDir);
       } catch (const ts::Error& e) {
-        fail(where, e.what());
+        if (std::string(e.what()).find("unknown texture generator") == std::string::npos) fail(where, e.what());
+        unknownPicture(where, e.what());
       }
     }
     if (const Json* w = find(t, "width"))
@@ -327,7 +353,8 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
       std::string kind = text(mips, where + ".mipmaps");
       d.mipmaps = true;
       if (kind == "explicit") {
-        if (!d.mipLevels) fail(where, "explicit mip levels, but generator '" + name + "' makes none");
+        if (!d.mipLevels && !placeholder) fail(where, "explicit mip levels, but generator '" + name + "' makes none");
+        if (placeholder) d.mipLevels = nullptr;  // the 2x2 chain of the grey placeholder: its pixels are exempt anyway
       } else if (kind == "box_2x2" || kind == "box_linear_light") {
         d.mipLevels = nullptr;
         d.linearLightMips = kind == "box_linear_light";
@@ -512,15 +539,17 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
     }
 }
 
-SidecarScene readSidecar(const std::string& jsonText) { return read(jsonText, ""); }
+SidecarScene readSidecar(const std::string& jsonText, const SidecarReadOptions& options) {
+  return read(jsonText, "", options);
+}
 
-SidecarScene readSidecarFile(const std::string& path, const std::string& baseDir) {
+SidecarScene readSidecarFile(const std::string& path, const std::string& baseDir, const SidecarReadOptions& options) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ts::Error(path + ": cannot open");
   std::ostringstream s;
   s << in.rdbuf();
   try {
-    return read(s.str(), baseDir);
+    return read(s.str(), baseDir, options);
   } catch (const ts::Error& e) {
     throw ts::Error(path + ": " + e.what());
   }

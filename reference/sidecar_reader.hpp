@@ -38,12 +38,32 @@ struct SidecarScene {
   std::vector<std::string> missing;  // keys the file lacked, e.g. "labels[0].scale"
   std::string renderer;              // the context that drew the figure ("" when not recorded)
   bool fixedStateKnown = false;      // the file says what blending, depth test, shading it used
+  // Read with SidecarReadOptions::unknownPictures: the textures of the frame
+  // (indices into frame.textures) whose generator the reference lacks, read
+  // as grey placeholders of their recorded size.
+  std::vector<int> unknownPictures;
 };
 
-SidecarScene readSidecar(const std::string& jsonText);
+// Some figures show pictures a demo made itself: a GL render read back, a CPU
+// image computed from one (the sidecar names these by digest and by the
+// command that makes them), or a map made by the demo's own code.  The
+// reference has no generator for them.  Read strictly (the default), such a
+// texture fails the read.  With unknownPictures, a texture of the top frame
+// that no generator remakes (or a nested frame that shows one) becomes a
+// grey placeholder of its recorded size, listed in
+// SidecarScene::unknownPictures, so that a verifier exempts exactly the
+// pixels that read it (RenderOptions::exemptTextures) and checks the rest of
+// the figure from the JSON alone.  The figures allowed this are listed in
+// tests/oracle/sidecar_exemptions.hpp.
+struct SidecarReadOptions {
+  bool unknownPictures = false;
+};
+
+SidecarScene readSidecar(const std::string& jsonText, const SidecarReadOptions& options = {});
 // Reads a file; "file" textures with relative paths are resolved against
 // `baseDir` (default: the current directory).
-SidecarScene readSidecarFile(const std::string& path, const std::string& baseDir = "");
+SidecarScene readSidecarFile(const std::string& path, const std::string& baseDir = "",
+                             const SidecarReadOptions& options = {});
 
 // The texture a sidecar entry describes (generator + params only; filters,
 // wraps and mip settings are not applied).  Throws ts::Error for unknown

@@ -8,7 +8,9 @@
 #include "common/core/error.hpp"
 #include "common/core/sidecar.hpp"
 #include "common/core/textures.hpp"
+#include "reference/reference.hpp"
 #include "reference/sidecar_reader.hpp"
+#include "reference/verify.hpp"
 
 namespace {
 // The file is read with nlohmann-json: what the suite adds is that its errors
@@ -216,6 +218,74 @@ TEST(Sidecar, HoldsEverythingAndSaysWhatIsMissing) {
   std::string lit = ts::sidecarJson(sampleFrame(), {});
   lit.replace(lit.find("\"lighting\": false"), 18, "\"lighting\": true");
   EXPECT_THROW(ref::readSidecar(lit), ts::Error);
+}
+
+// Claim: a figure that shows a picture no generator remakes (a GL render its
+// measure() read back, named by digest) is still checked from its sidecar
+// alone, except exactly the pixels that read that picture.  Read strictly the
+// sidecar is refused; read with SidecarReadOptions::unknownPictures the
+// picture is a placeholder whose pixels are exempt, and a wrong pixel
+// anywhere else is still found.
+TEST(Sidecar, UnknownPicturesAreExemptAndNothingElse) {
+  ts::Frame f;
+  f.width = 64, f.height = 32;
+  ts::TextureDesc pic;
+  pic.name = "some_demo_render";
+  pic.params = {{"image", "a GL render"}, {"digest", "0123456789abcdef"}};
+  pic.image = std::make_shared<ts::Image>(8, 8, ts::Rgba{20, 200, 90, 255});
+  pic.minFilter = pic.magFilter = GL_NEAREST;
+  f.addTexture(pic);
+  ts::Panel p;
+  p.id = "all";
+  p.viewport = {0, 0, 64, 32};
+  const auto quad = [](float x0, float x1) {
+    std::vector<ts::Vertex> v;
+    for (int k : {0, 1, 2, 0, 2, 3}) {
+      ts::Vertex q;
+      q.pos = {k == 1 || k == 2 ? x1 : x0, k >= 2 ? 1.0f : -1.0f, 0.0f};
+      q.tex = {k == 1 || k == 2 ? 1.0f : 0.0f, k >= 2 ? 1.0f : 0.0f, 0.0f, 1.0f};
+      q.color = {0.8f, 0.1f, 0.1f, 1.0f};
+      v.push_back(q);
+    }
+    return v;
+  };
+  ts::Batch shown;  // the picture on the left half
+  shown.role = "picture";
+  shown.texture = 0;
+  shown.texEnv = GL_REPLACE;
+  shown.vertices = quad(-1.0f, 0.0f);
+  ts::Batch flat;  // a flat quad on the right half
+  flat.role = "flat";
+  flat.vertices = quad(0.0f, 1.0f);
+  p.batches = {shown, flat};
+  f.panels.push_back(p);
+  ref::RenderOptions ro;
+  ro.labels = false;
+  const ts::Image truth = ref::Reference(f, ro).image();
+  const std::string json = ts::sidecarJson(f, {});
+
+  EXPECT_THROW(ref::readSidecar(json), ts::Error);  // strict: no generator
+  ref::SidecarReadOptions lenient;
+  lenient.unknownPictures = true;
+  const ref::SidecarScene sc = ref::readSidecar(json, lenient);
+  ASSERT_EQ(sc.unknownPictures, std::vector<int>{0});
+  ref::VerifyOptions o;
+  o.render.labels = false;
+  o.render.exemptTextures = sc.unknownPictures;
+  ref::VerifyResult r = ref::verifyImage(truth, sc.frame, o);
+  EXPECT_EQ(r.invalid, 0) << r.summary();
+  EXPECT_GE(r.exemptBy[size_t(ref::Exempt::UnknownPicture)], 28 * 32) << r.summary();  // the left half, edges aside
+  EXPECT_GE(r.checked, 28 * 32) << r.summary();                                        // the right half is checked
+  // Without the exemption the placeholder's grey is not the picture: invalid.
+  ref::VerifyOptions strict = o;
+  strict.render.exemptTextures.clear();
+  EXPECT_GT(ref::verifyImage(truth, sc.frame, strict).invalid, 28 * 32);
+  // A wrong pixel in the picture is not seen; one in the flat half is.
+  ts::Image wrong = truth;
+  wrong.set(10, 16, {0, 0, 255, 255});
+  EXPECT_EQ(ref::verifyImage(wrong, sc.frame, o).invalid, 0);
+  wrong.set(50, 16, {0, 0, 255, 255});
+  EXPECT_EQ(ref::verifyImage(wrong, sc.frame, o).invalid, 1);
 }
 
 TEST(Sidecar, UnknownTextureNameIsAClearError) {
