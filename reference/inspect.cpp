@@ -164,7 +164,12 @@ Inspection Inspector::fragment(int x, int y, int pi, int bi, const ScreenPoly& P
   std::string why1;
   const Texture* tex1 = in.textured && b.texture1 >= 0 && unitEnvModelled(b.texEnv1, b.combine1) ? texture(b.texture1, &why1) : nullptr;
   if (tex1) {
-    const Colour texel1 = tex1->sample(in.sq, in.tq, tex1->lod(g));
+    const glm::mat4& m = b.textureMatrix1;  // unit 1's texture matrix (affine in (s, t) where it is modelled)
+    const double s1 = double(m[0][0]) * in.sq + double(m[1][0]) * in.tq + double(m[3][0]);
+    const double t1 = double(m[0][1]) * in.sq + double(m[1][1]) * in.tq + double(m[3][1]);
+    const Deriv g1{double(m[0][0]) * g.dsdx + double(m[1][0]) * g.dtdx, double(m[0][0]) * g.dsdy + double(m[1][0]) * g.dtdy,
+                   double(m[0][1]) * g.dsdx + double(m[1][1]) * g.dtdx, double(m[0][1]) * g.dsdy + double(m[1][1]) * g.dtdy};
+    const Colour texel1 = tex1->sample(s1, t1, tex1->lod(g1));
     const Colour prev = texEnv(b.texEnv, in.primary, texel, {b.envColor.r, b.envColor.g, b.envColor.b, b.envColor.a});
     in.referenceRgba = unitEnv(b.texEnv1, b.combine1, prev, texel1, in.primary);
     if (b.colorSum) in.referenceRgba = colourSum(in.referenceRgba, in.secondary);

@@ -141,6 +141,18 @@ float Reference::nestedSlack(int texture, double s, double t, double rho) const 
 }
 
 namespace {
+// Unit 1's (s, t) through its texture matrix (Batch::textureMatrix1), affine
+// in (s, t) where it is modelled: s1 = m00 s + m10 t + m30 (glm's m[column][row]).
+void unit1Coord(const glm::mat4& m, double s, double t, double* s1, double* t1) {
+  *s1 = double(m[0][0]) * s + double(m[1][0]) * t + double(m[3][0]);
+  *t1 = double(m[0][1]) * s + double(m[1][1]) * t + double(m[3][1]);
+}
+// ... and its derivatives along x and y (the chain rule through that map).
+Deriv unit1Deriv(const glm::mat4& m, const Deriv& g) {
+  return {double(m[0][0]) * g.dsdx + double(m[1][0]) * g.dtdx, double(m[0][0]) * g.dsdy + double(m[1][0]) * g.dtdy,
+          double(m[0][1]) * g.dsdx + double(m[1][1]) * g.dtdx, double(m[0][1]) * g.dsdy + double(m[1][1]) * g.dtdy};
+}
+
 // The `count` w x h pictures stacked in a texture's image (a cube map's
 // faces, a 3D texture's slices) as plain 2D textures, named "[<what> k]".
 void addStacked(const ts::TextureDesc& d, int w, int h, int count, const char* what, std::vector<Texture>* out) {
@@ -392,8 +404,10 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
   // (A blended batch's candidates are exempt, but its reference picture still has unit 1.)
   const Texture* tex1 = nullptr;
   if (b.texture1 >= 0 && (tex || proto.kind != Candidate::Kind::Exempt)) {
+    const glm::mat4& m1 = b.textureMatrix1;  // modelled when affine in (s, t): (s1, t1) = M1 (s, t, 0, 1)
+    const bool affine1 = m1[2][0] == 0 && m1[2][1] == 0 && m1[0][3] == 0 && m1[1][3] == 0 && m1[2][3] == 0 && m1[3][3] == 1;
     const bool plain = tex && cubeFirst < 0 && volumeIndex < 0 && !b.texGen.on() && b.textureMatrix == glm::mat4(1.0f) &&
-                       b.program.empty() && cubeFirstFace_[size_t(b.texture1)] < 0 && volumeOf_[size_t(b.texture1)] < 0;
+                       b.program.empty() && cubeFirstFace_[size_t(b.texture1)] < 0 && volumeOf_[size_t(b.texture1)] < 0 && affine1;
     if (plain && unitEnvModelled(b.texEnv1, b.combine1) && texEnvModelled(b.texEnv)) {
       tex1 = &textures_.at(size_t(b.texture1));
     } else if (proto.kind != Candidate::Kind::Exempt) {
@@ -478,8 +492,9 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           c.rho = std::max(c.rho, float(slices));
         }
       }
-      if (tex1 && c.kind == Candidate::Kind::Textured) {  // issue 29: unit 1 at the same (s, t)
-        const Deriv g = P.deriv(x, y);
+      if (tex1 && c.kind == Candidate::Kind::Textured) {  // issue 29: unit 1 at M1 (s, t)
+        const Deriv g = unit1Deriv(b.textureMatrix1, P.deriv(x, y));
+        unit1Coord(b.textureMatrix1, c.s, c.t, &c.s1, &c.t1);
         const double e = tex1->lod(g);
         double lo = e, hi = e;
         if (needLod1) {
@@ -517,7 +532,8 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       if (tex1) {  // issue 29: unit 1 over unit 0's result, then the colour sum
         double s, t;
         P.coordFrom(a[kS] / a[kQ], a[kT] / a[kQ], &s, &t);
-        const Colour texel1 = tex1->sample(s, t, tex1->lod(P.deriv(x + 0.5, y + 0.5)));
+        unit1Coord(b.textureMatrix1, s, t, &s, &t);
+        const Colour texel1 = tex1->sample(s, t, tex1->lod(unit1Deriv(b.textureMatrix1, P.deriv(x + 0.5, y + 0.5))));
         const Colour prev = texEnv(b.texEnv, col, texel, {b.envColor.r, b.envColor.g, b.envColor.b, b.envColor.a});
         out = unitEnv(b.texEnv1, b.combine1, prev, texel1, col);
         if (b.colorSum) out = colourSum(out, sec);

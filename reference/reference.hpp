@@ -86,6 +86,7 @@ struct Candidate {
   // Reference::textures(), -1 = off), read at (s, t) like unit 0, its LOD
   // interval and texels per pixel, and its environment over unit 0's result.
   int texture1 = -1;
+  double s1 = 0, t1 = 0;  // unit 1's (s, t): Batch::textureMatrix1 (affine) x (s, t)
   float lodLo1 = 0, lodHi1 = 0, rho1 = 0;
   GLenum env1 = GL_MODULATE;
   ts::Combine combine1;

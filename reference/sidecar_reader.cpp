@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/core/error.hpp"
+#include "common/core/multitexture_textures.hpp"
 #include "common/core/sidecar.hpp"
 #include "common/core/textures.hpp"
 
@@ -180,6 +181,8 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
   if (name == "labelled_grid") return ts::labelledGrid(intParam(p, "size", name), intParam(p, "cells", name));
   if (name == "mip_level_colours") return ts::mipLevelColours(intParam(p, "size", name));
   if (name == "gradient") return ts::gradientTexture(intParam(p, "width", name), intParam(p, "height", name), strParam(p, "alpha", name) == "ramp");
+  ts::TextureDesc made;
+  if (ts::multitex::remake(name, p, &made)) return made;  // issue 29: the multitexture demo's textures
   if (name == "file") {
     std::string path = strParam(p, "path", name);
     if (!baseDir.empty() && !path.empty() && path[0] != '/') path = baseDir + "/" + path;
@@ -188,7 +191,7 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
     return t;
   }
   throw ts::Error("sidecar: unknown texture generator '" + name +
-                  "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, file)");
+                  "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, file, multitexture_*)");
 }
 
 constexpr int kMaxNesting = 4;  // frames inside frames: a texture's rendered_from, at most this deep
@@ -449,6 +452,7 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
       if (const Json* u1 = find(bv, "unit1")) {  // issue 29: the second texture unit
         const std::string uw = bw + ".unit1";
         b.texture1 = integer(member(*u1, "texture", uw), uw + ".texture", 0, double(f.textures.size()) - 1);
+        if (const Json* tm = find(*u1, "texture_matrix")) b.textureMatrix1 = mat(*tm, uw + ".texture_matrix");
         try {
           b.texEnv1 = glEnumFromName(text(member(*u1, "tex_env", uw), uw + ".tex_env"));
           if (b.texEnv1 == GL_COMBINE) {

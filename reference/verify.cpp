@@ -129,7 +129,7 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
         if (c.texture1 >= 0) {  // issue 29: unit 1's texels over unit 0's result (combine.hpp)
           std::vector<Box> texels1;
           const double j1 = o.positionEpsPixels * double(c.rho1);
-          r.textures()[size_t(c.texture1)].legal(c.s, c.t, c.lodLo1, c.lodHi1, o.nearestEpsTexels + j1, o.linearEpsTexels + j1, &texels1);
+          r.textures()[size_t(c.texture1)].legal(c.s1, c.t1, c.lodLo1, c.lodHi1, o.nearestEpsTexels + j1, o.linearEpsTexels + j1, &texels1);
           const Box primary = widen(c.colour, o.colourEps);
           const std::vector<Box> unit0(out.begin() + std::ptrdiff_t(first), out.end());
           out.resize(first);

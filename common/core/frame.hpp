@@ -174,13 +174,18 @@ struct Batch {
   GLenum blendSrc = 0, blendDst = 0;
   // --- a second texture unit (issue 29, multitexturing) ---
   // Unit 1 textured with Frame::textures[texture1] (2D), reading the same
-  // (s, t, r, q) as unit 0 (glMultiTexCoord4f(GL_TEXTURE1, ...); no texture
-  // matrix or texgen on unit 1), combined with unit 0's result by texEnv1:
+  // (s, t, r, q) as unit 0 (glMultiTexCoord4f(GL_TEXTURE1, ...); no texgen
+  // on unit 1; its own texture matrix below), combined with unit 0's result by texEnv1:
   // a classic environment (GL_MODULATE: previous x texel, ...) or
   // GL_COMBINE with `combine1`.  -1 = unit 1 off.
   int texture1 = -1;
   GLenum texEnv1 = GL_MODULATE;
   Combine combine1;
+  // Unit 1's texture matrix (glActiveTexture(GL_TEXTURE1); glMatrixMode(
+  // GL_TEXTURE)): unit 1 reads textureMatrix1 x (s, t, r, q) as sent, e.g.
+  // a light map moved over a wall.  The reference models the affine maps of
+  // (s, t) (no r, q row (0, 0, 0, 1)); others make the batch's pixels exempt.
+  glm::mat4 textureMatrix1{1.0f};
   bool alphaTest() const { return alphaFunc != 0; }
   bool blendFactors() const { return blendSrc != 0 || blendDst != 0; }
 };

@@ -269,6 +269,7 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
           u["sources"] = src;
           u["operands"] = op;
         }
+        if (b.textureMatrix1 != glm::mat4(1.0f)) u["texture_matrix"] = mat(b.textureMatrix1);
         bj["unit1"] = u;
       }
       bj["vertices"] = vertices;

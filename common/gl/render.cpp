@@ -449,6 +449,11 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
             glTexEnvi(GL_TEXTURE_ENV, GLenum(GL_OPERAND0_RGB + k), GLint(b.combine1.operand[k]));
           }
         }
+        if (b.textureMatrix1 != glm::mat4(1.0f)) {  // unit 1's texture matrix, back to the identity after glEnd
+          glMatrixMode(GL_TEXTURE);
+          glLoadMatrixf(glm::value_ptr(b.textureMatrix1));
+          glMatrixMode(GL_MODELVIEW);
+        }
         glActiveTexture(GL_TEXTURE0);
       }
       glLineWidth(b.lineWidth);
@@ -474,6 +479,11 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
       if (unit1) {
         glActiveTexture(GL_TEXTURE1);
         glDisable(GL_TEXTURE_2D);
+        if (b.textureMatrix1 != glm::mat4(1.0f)) {
+          glMatrixMode(GL_TEXTURE);
+          glLoadIdentity();
+          glMatrixMode(GL_MODELVIEW);
+        }
         glActiveTexture(GL_TEXTURE0);
       }
       if (tex3D) glDisable(GL_TEXTURE_3D);

@@ -17,7 +17,7 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 27> kFiguresDrawnFromGlRenders = {
+inline constexpr std::array<const char*, 24> kFiguresDrawnFromGlRenders = {
     // --footprints: the left panel is the picture GL drew, inspected
     "inspect_vi2_footprints", "inspect_aniso_footprint",
     "vi7_jitter", "jitter_zone_plate", "parallax_modes", "parallax_error_band", "parallax_step",
@@ -34,13 +34,11 @@ inline constexpr std::array<const char*, 27> kFiguresDrawnFromGlRenders = {
     // filter_zoo: each method's picture is a GL render (GL's filters) or a CPU
     // computation (ripmap, SAT, probe line, EWA, the exact integral) made by measure()
     "filter_zoo_azimuth", "filter_zoo_supports", "mip_kernels",
-    // multitexture (issue 29): alpha_cutout_tree's five cutout passes and multitexture_ab_cd's three GL paths
-    // are Frames the reference checks (the alpha test, unit 1 by GL_COMBINE, the blend factors, a nested frame),
-    // but their textures (the tree, A, B, C, D) and the CPU's pictures (AB + CD, its error x 4), and the cross
-    // tree (a GL pass at three angles), are images the demo makes, for which the sidecar has no generator.
-    // light_map_resolution and gloss_map still show passes its measure() draws with GL itself (mt_gl.hpp: the
-    // spot's texture matrix on unit 1, the pear's second coordinate set, GL_LUMINANCE8 are not in the Frame)
-    "alpha_cutout_tree", "light_map_resolution", "gloss_map", "multitexture_ab_cd"};
+    // multitexture (issue 29): gloss_map's plane is Frames the reference remakes (named generators), but its
+    // pear is a GL pass its measure() draws (mt_gl.hpp: two texture-coordinate sets, the skin's (u, v) on one
+    // unit and the sphere map's (s, t) on the other, and glDepthFunc(GL_LEQUAL) for the second pass: neither is
+    // in the Frame).  alpha_cutout_tree, light_map_resolution and multitexture_ab_cd are remade from their JSON.
+    "gloss_map"};
 
 // Figures whose measure() takes minutes on softpipe (the parallax table: twelve
 // full-frame GLSL passes and a CPU reference per state).  The oracle checks

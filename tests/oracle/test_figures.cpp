@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <map>
 #include <stdexcept>
@@ -165,13 +166,23 @@ TEST_P(Figure, SidecarAloneReproducesTheFrame) {
   if (oracle::drawnFromGlRenders(c.spec.id))
     GTEST_SKIP() << c.spec.id << "'s panels are GL renders made by its measure() pass: the sidecar names them by digest "
                  << "and command (tests/oracle/sidecar_exemptions.hpp)";
-  for (const auto& t : rendered_->frame.textures) {
-    try {
-      ref::remakeTexture(t.name, t.params, TS_SOURCE_DIR);
-    } catch (const ts::Error& e) {
-      FAIL() << "the sidecar cannot reproduce " << c.spec.id << ": " << e.what();
+  // Every texture by its generator; a nested frame's picture (rendered_from)
+  // by its own frame's textures, recursively.
+  std::function<void(const ts::Frame&)> remakeAll = [&](const ts::Frame& frame) {
+    for (const auto& t : frame.textures) {
+      if (t.renderedFrom) {
+        remakeAll(*t.renderedFrom);
+        continue;
+      }
+      try {
+        ref::remakeTexture(t.name, t.params, TS_SOURCE_DIR);
+      } catch (const ts::Error& e) {
+        ADD_FAILURE() << "the sidecar cannot reproduce " << c.spec.id << ": " << e.what();
+      }
     }
-  }
+  };
+  remakeAll(rendered_->frame);
+  if (HasFailure()) return;
   ref::SidecarScene sc = ref::readSidecar(ts::sidecarJson(rendered_->frame, info));
   // The sidecar alone holds what the picture needs: nothing is copied from
   // the Frame, so a field the writer drops makes this check fail.

@@ -12,6 +12,8 @@
 // (blended pixels are exempt in the candidates): within 2 levels of GL.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cmath>
 
 #include "oracle_support.hpp"
@@ -307,4 +309,39 @@ TEST(GLSecondUnit, BlendedPassesAndAnIntermediateBuffer) {
   ref::VerifyResult r = ref::verifyImage(img, f, oracle::options("stored_ab", "multitexture"));
   EXPECT_TRUE(r.ok()) << r.summary();
   std::printf("stored_ab: %s\n", r.summary().c_str());
+}
+
+// Unit 1's texture matrix (Batch::textureMatrix1): the light map moved over
+// the wall (the multitexture demo's spot) is (s, t) -> M1 (s, t) on unit 1
+// only, unit 0 untouched.  A rotation as well as the scale and translation,
+// so the cross terms count; clamped (the spot's map) and repeated.  Every
+// GL pixel in the reference's legal range, none exempt; described without
+// the matrix, most pixels are invalid.
+TEST(GLSecondUnit, TextureMatrixOnUnitOne) {
+  const glm::mat4 m1 = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 0)) *
+                       glm::rotate(glm::mat4(1.0f), glm::radians(30.0f), glm::vec3(0, 0, 1)) *
+                       glm::scale(glm::mat4(1.0f), glm::vec3(1.6f, 1.6f, 1)) *
+                       glm::translate(glm::mat4(1.0f), glm::vec3(-0.3f, -0.6f, 0));
+  for (GLenum filter : {GL_NEAREST, GL_LINEAR})
+    for (GLenum wrap : {GL_CLAMP_TO_EDGE, GL_REPEAT}) {
+      const std::string n = std::string("unit1_texture_matrix") + (filter == GL_NEAREST ? "_nearest" : "_linear") +
+                            (wrap == GL_REPEAT ? "_repeat" : "_clamp");
+      auto frame = [&](const glm::mat4& unit0, const glm::mat4& unit1) {
+        ts::Frame f = twoUnitFrame(filter, GL_REPLACE, GL_MODULATE, {});
+        f.textures[1].wrapS = f.textures[1].wrapT = wrap;
+        f.panels[0].batches[0].textureMatrix = unit0;
+        f.panels[0].batches[0].textureMatrix1 = unit1;
+        return f;
+      };
+      const ts::Frame f = frame(glm::mat4(1.0f), m1);
+      const ts::Image img = oracle::render(f);
+      ref::VerifyResult r = ref::verifyImage(img, f, oracle::options(n, "multitexture"));
+      EXPECT_TRUE(r.ok()) << r.summary();
+      EXPECT_EQ(r.checked, 128L * 128L) << n;
+      EXPECT_EQ(r.textured, 128L * 128L) << n << ": modelled, not exempt";
+      std::printf("%s: %ld invalid of %ld checked (%ld textured)\n", n.c_str(), r.invalid, r.checked, r.textured);
+      ref::VerifyResult bad = ref::verifyImage(img, frame(glm::mat4(1.0f), glm::mat4(1.0f)),
+                                               oracle::options(n + "_no_matrix", "multitexture_negative"));
+      EXPECT_GT(bad.invalid, 128L * 128L / 2) << n << ": " << bad.summary();
+    }
 }
