@@ -257,6 +257,7 @@ TEST(Sidecar, RoundTripOfTheMultitextureState) {
   b.combine1.rgb = GL_MODULATE_ADD_ATI;
   b.combine1.source[0] = GL_TEXTURE, b.combine1.source[1] = GL_PREVIOUS, b.combine1.source[2] = GL_PREVIOUS;
   b.combine1.operand[2] = GL_SRC_ALPHA;
+  b.textureMatrix1 = glm::mat4(1.6f, 0.1f, 0, 0, -0.2f, 1.6f, 0, 0, 0, 0, 1, 0, 0.25f, -0.5f, 0, 1);
   p.batches = {b, plain};
   f.panels.push_back(p);
   const std::string text = ts::sidecarJson(f, {});
@@ -273,7 +274,9 @@ TEST(Sidecar, RoundTripOfTheMultitextureState) {
     EXPECT_EQ(g.combine1.source[k], b.combine1.source[k]) << k;
     EXPECT_EQ(g.combine1.operand[k], b.combine1.operand[k]) << k;
   }
+  EXPECT_EQ(g.textureMatrix1, b.textureMatrix1);
   const ts::Batch& h = back.frame.panels.at(0).batches.at(1);
+  EXPECT_EQ(h.textureMatrix1, glm::mat4(1.0f));
   EXPECT_FALSE(h.alphaTest());
   EXPECT_FALSE(h.blendFactors());
   EXPECT_EQ(h.texture1, -1);
@@ -285,5 +288,6 @@ TEST(Sidecar, RoundTripOfTheMultitextureState) {
   };
   EXPECT_EQ(count("\"alpha_test\""), 1u);
   EXPECT_EQ(count("\"unit1\""), 1u);
+  EXPECT_EQ(count("\"texture_matrix\""), 1u);  // unit 1's, inside "unit1"
   EXPECT_EQ(count("\"blend_func\""), 2u);
 }
