@@ -141,18 +141,6 @@ float Reference::nestedSlack(int texture, double s, double t, double rho) const 
 }
 
 namespace {
-// Unit 1's (s, t) through its texture matrix (Batch::textureMatrix1), affine
-// in (s, t) where it is modelled: s1 = m00 s + m10 t + m30 (glm's m[column][row]).
-void unit1Coord(const glm::mat4& m, double s, double t, double* s1, double* t1) {
-  *s1 = double(m[0][0]) * s + double(m[1][0]) * t + double(m[3][0]);
-  *t1 = double(m[0][1]) * s + double(m[1][1]) * t + double(m[3][1]);
-}
-// ... and its derivatives along x and y (the chain rule through that map).
-Deriv unit1Deriv(const glm::mat4& m, const Deriv& g) {
-  return {double(m[0][0]) * g.dsdx + double(m[1][0]) * g.dtdx, double(m[0][0]) * g.dsdy + double(m[1][0]) * g.dtdy,
-          double(m[0][1]) * g.dsdx + double(m[1][1]) * g.dtdx, double(m[0][1]) * g.dsdy + double(m[1][1]) * g.dtdy};
-}
-
 // The `count` w x h pictures stacked in a texture's image (a cube map's
 // faces, a 3D texture's slices) as plain 2D textures, named "[<what> k]".
 void addStacked(const ts::TextureDesc& d, int w, int h, int count, const char* what, std::vector<Texture>* out) {
@@ -269,7 +257,7 @@ void Reference::note(const std::string& s) {
   if (std::find(notes_.begin(), notes_.end(), s) == notes_.end()) notes_.push_back(s);
 }
 
-void Reference::place(int x, int y, const Candidate& c, bool sure, bool depthTest) {
+void Reference::place(int x, int y, const Candidate& c, bool sure, bool depthTest, GLenum depthFunc) {
   size_t idx = size_t(y) * size_t(width_) + size_t(x);
   int& h = head_[idx];
   if (h < 0) {  // materialise the clear colour so it can be kept beside c
@@ -284,6 +272,8 @@ void Reference::place(int x, int y, const Candidate& c, bool sure, bool depthTes
       const Candidate& e = pool_[size_t(i)];
       if (e.kind == Candidate::Kind::Exempt) {
         canPass = true, mustPass = false;
+      } else if (depthFunc == GL_LEQUAL && c.z == e.z) {  // the same geometry again: GL's depth is the same too
+        canPass = true;
       } else if (c.z < e.z - float(opts_.depthEpsilon)) {
         canPass = true;
       } else if (c.z >= e.z + float(opts_.depthEpsilon)) {
@@ -404,10 +394,9 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
   // (A blended batch's candidates are exempt, but its reference picture still has unit 1.)
   const Texture* tex1 = nullptr;
   if (b.texture1 >= 0 && (tex || proto.kind != Candidate::Kind::Exempt)) {
-    const glm::mat4& m1 = b.textureMatrix1;  // modelled when affine in (s, t): (s1, t1) = M1 (s, t, 0, 1)
-    const bool affine1 = m1[2][0] == 0 && m1[2][1] == 0 && m1[0][3] == 0 && m1[1][3] == 0 && m1[2][3] == 0 && m1[3][3] == 1;
+    // Unit 1's coordinates are its own planes (kS1 ..: Vertex::tex1 or unit 0's as sent, times textureMatrix1).
     const bool plain = tex && cubeFirst < 0 && volumeIndex < 0 && !b.texGen.on() && b.textureMatrix == glm::mat4(1.0f) &&
-                       b.program.empty() && cubeFirstFace_[size_t(b.texture1)] < 0 && volumeOf_[size_t(b.texture1)] < 0 && affine1;
+                       b.program.empty() && cubeFirstFace_[size_t(b.texture1)] < 0 && volumeOf_[size_t(b.texture1)] < 0;
     if (plain && unitEnvModelled(b.texEnv1, b.combine1) && texEnvModelled(b.texEnv)) {
       tex1 = &textures_.at(size_t(b.texture1));
     } else if (proto.kind != Candidate::Kind::Exempt) {
@@ -492,9 +481,9 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           c.rho = std::max(c.rho, float(slices));
         }
       }
-      if (tex1 && c.kind == Candidate::Kind::Textured) {  // issue 29: unit 1 at M1 (s, t)
-        const Deriv g = unit1Deriv(b.textureMatrix1, P.deriv(x, y));
-        unit1Coord(b.textureMatrix1, c.s, c.t, &c.s1, &c.t1);
+      if (tex1 && c.kind == Candidate::Kind::Textured) {  // issue 29: unit 1 at its own (s, t)
+        const Deriv g = P.deriv1(x, y);
+        P.coord1(x, y, &c.s1, &c.t1);
         const double e = tex1->lod(g);
         double lo = e, hi = e;
         if (needLod1) {
@@ -514,7 +503,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     auto emit = [&](int x, int y, const double* a) {
       size_t idx = size_t(y) * size_t(width_) + size_t(x);
       float z = float(a[kZ]);
-      if (p.depthTest && !(z < depth_[idx])) return;
+      if (p.depthTest && !(b.depthFunc == GL_LEQUAL ? z <= depth_[idx] : z < depth_[idx])) return;
       Colour col{float(clamp01(a[kCr] / a[kW])), float(clamp01(a[kCg] / a[kW])), float(clamp01(a[kCb] / a[kW])),
                  float(clamp01(a[kCa] / a[kW]))};
       Colour sec{float(clamp01(a[kSr] / a[kW])), float(clamp01(a[kSg] / a[kW])), float(clamp01(a[kSb] / a[kW])), 0.0f};
@@ -530,10 +519,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       }
       Colour out = shadeFragment(b, col, sec, tex ? &texel : nullptr);
       if (tex1) {  // issue 29: unit 1 over unit 0's result, then the colour sum
-        double s, t;
-        P.coordFrom(a[kS] / a[kQ], a[kT] / a[kQ], &s, &t);
-        unit1Coord(b.textureMatrix1, s, t, &s, &t);
-        const Colour texel1 = tex1->sample(s, t, tex1->lod(unit1Deriv(b.textureMatrix1, P.deriv(x + 0.5, y + 0.5))));
+        const Colour texel1 = tex1->sample(a[kS1] / a[kQ1], a[kT1] / a[kQ1], tex1->lod(P.deriv1(x + 0.5, y + 0.5)));
         const Colour prev = texEnv(b.texEnv, col, texel, {b.envColor.r, b.envColor.g, b.envColor.b, b.envColor.a});
         out = unitEnv(b.texEnv1, b.combine1, prev, texel1, col);
         if (b.colorSum) out = colourSum(out, sec);
@@ -580,11 +566,11 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           if (verdict == 0) continue;  // discarded: no colour, no depth
           if (verdict < 0) sure = false;
         }
-        place(x, y, c, sure, p.depthTest);
+        place(x, y, c, sure, p.depthTest, b.depthFunc ? b.depthFunc : GLenum(GL_LESS));
         // Near a cube's face boundary either face is legal (issue 26).
         Candidate other = c;
         if (cubeFirst >= 0 && c.kind == Candidate::Kind::Textured && cubeCandidate(P, cx, cy, cubeFirst, true, &other))
-          place(x, y, other, false, p.depthTest);
+          place(x, y, other, false, p.depthTest, b.depthFunc ? b.depthFunc : GLenum(GL_LESS));
       }
   }
 }

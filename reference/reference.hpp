@@ -158,7 +158,8 @@ class Reference {
   // candidate), -1 when its legal alpha range straddles the reference value
   // (the fragment may or may not be there).
   int alphaVerdict(const ts::Batch& b, const Candidate& c) const;
-  void place(int x, int y, const Candidate& c, bool sure, bool depthTest);
+  // depthFunc: GL_LESS, or GL_LEQUAL (issue 29: a second pass over the same geometry passes where z is equal).
+  void place(int x, int y, const Candidate& c, bool sure, bool depthTest, GLenum depthFunc = GL_LESS);
   void exemptDisc(double x, double y, double r, Exempt why, PixelRect clip);
   void note(const std::string& s);
 

@@ -150,7 +150,11 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
         break;
       }
     }
-    if (c.blended) {  // issue 29: this fragment's boxes blended over what the pixel held
+    if (c.blended && c.blendSrc == GL_ONE && c.blendDst == GL_ZERO) {
+      // The colour as drawn, the pixel's alpha kept: what it held is not
+      // followed (its chain may be deep, a mesh's layers), the alpha left free.
+      for (size_t k = start; k < out.size(); ++k) out[k].lo[3] = 0.0f, out[k].hi[3] = 1.0f;
+    } else if (c.blended) {  // issue 29: this fragment's boxes blended over what the pixel held
       if (c.below != belowOf) {
         Exempt belowWhy;
         legalFrom(r, c.below, o, &below, &belowWhy);

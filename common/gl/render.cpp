@@ -456,6 +456,7 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         }
         glActiveTexture(GL_TEXTURE0);
       }
+      if (b.depthFunc) glDepthFunc(b.depthFunc);  // issue 29: GL_LEQUAL for a second pass; back after glEnd
       glLineWidth(b.lineWidth);
       glPointSize(b.pointSize);
       // The book's way: one glTexCoord per glVertex.  (s, t, r, q) are all
@@ -466,7 +467,10 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         if (b.colorSum) glSecondaryColor3f(v.secondary.r, v.secondary.g, v.secondary.b);
         glTexCoord4f(v.tex.x, v.tex.y, v.tex.z, v.tex.w);
         if (b.texGen.needsNormal()) glNormal3f(v.normal.x, v.normal.y, v.normal.z);
-        if (unit1) glMultiTexCoord4f(GL_TEXTURE1, v.tex.x, v.tex.y, v.tex.z, v.tex.w);  // issue 29
+        if (unit1) {  // issue 29: unit 0's coordinates, or its own (Batch::coords1)
+          const glm::vec4& u = b.coords1 ? v.tex1 : v.tex;
+          glMultiTexCoord4f(GL_TEXTURE1, u.x, u.y, u.z, u.w);
+        }
         glVertex3f(v.pos.x, v.pos.y, v.pos.z);
       }
       glEnd();
@@ -476,6 +480,7 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
           if (b.texGen.coords & (1u << k)) glDisable(kGenEnable[k]);
       if (b.clip) glDisable(GL_CLIP_PLANE0);
       if (b.alphaTest()) glDisable(GL_ALPHA_TEST);
+      if (b.depthFunc) glDepthFunc(FixedState::depthFunc);
       if (unit1) {
         glActiveTexture(GL_TEXTURE1);
         glDisable(GL_TEXTURE_2D);
