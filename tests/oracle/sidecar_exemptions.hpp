@@ -35,9 +35,10 @@ inline constexpr std::array<const char*, 24> kFiguresDrawnFromGlRenders = {
     // computation (ripmap, SAT, probe line, EWA, the exact integral) made by measure()
     "filter_zoo_azimuth", "filter_zoo_supports", "mip_kernels",
     // multitexture (issue 29): gloss_map's plane is Frames the reference remakes (named generators), but its
-    // pear is a GL pass its measure() draws (mt_gl.hpp: two texture-coordinate sets, the skin's (u, v) on one
-    // unit and the sphere map's (s, t) on the other, and glDepthFunc(GL_LEQUAL) for the second pass: neither is
-    // in the Frame).  alpha_cutout_tree, light_map_resolution and multitexture_ab_cd are remade from their JSON.
+    // pear is a GL pass its measure() draws (mt_gl.hpp).  The Frame can now say what it needs (unit 1's own
+    // coordinates, Batch::coords1; glDepthFunc(GL_LEQUAL), Batch::depthFunc) and the pear drawn that way renders
+    // as GL does, but verifying it took minutes: each second-pass (GL_ONE, GL_ONE) candidate re-derives the
+    // blended chain below it through the mesh's layers (reference/verify.cpp's legalFrom).
     "gloss_map"};
 
 // Figures whose measure() takes minutes on softpipe (the parallax table: twelve
