@@ -1,11 +1,14 @@
-// demos/multitexture/mt_frames.hpp — AB + CD as Frames (issue 29): the
-// passes GL drew for it described as data, so the figure draws
-// them and the CPU reference recomputes them from the sidecar.  Unit 1 and
-// GL_COMBINE (Batch::texture1, ts::Combine), the multiplying and adding
-// blends (Batch::blendSrc / blendDst); the one-unit path's intermediate
-// buffer is a nested frame (TextureDesc::renderedFrom: A, then x B, whose
-// render is the texture the last pass adds).  measure() renders these very
-// Frames (Renderer::render) and the figure draws them into its panels.
+// demos/multitexture/mt_frames.hpp — the figures' pictures as Frames (issue
+// 29): the passes described as data, so the figure draws them
+// (common/gl/render.cpp) and the CPU reference recomputes them from the
+// sidecar, every texture a named generator (common/core/
+// multitexture_textures.hpp).  The cutout tree (the alpha test), the cross
+// tree, the light maps and the spot (unit 1, its texture matrix), the gloss
+// map's passes, AB + CD (GL_COMBINE; the multiplying and adding blends,
+// Batch::blendSrc / blendDst; the one-unit path's intermediate buffer a
+// nested frame, TextureDesc::renderedFrom: A, then x B, whose render is the
+// texture the last pass adds).  measure() renders these very Frames
+// (Renderer::renderOffscreen) and the figure draws them into its panels.
 #pragma once
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -22,7 +22,7 @@
 //   v  view: alpha | lightmap | gloss | abcd     a  animate the spot
 //   s / S  the spot's position (0..11)          (--texture FILE: the base picture)
 //
-// The GL that carries it (mt_gl.hpp):
+// The GL that carries it (Frames, mt_frames.hpp, drawn by common/gl/render.cpp; the pear mt_gl.hpp):
 //   glEnable(GL_ALPHA_TEST); glAlphaFunc(GL_GREATER, 0.5f);
 //   glActiveTexture(GL_TEXTURE1); glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
 //   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);     // PREVIOUS x TEXTURE = AB
@@ -30,7 +30,7 @@
 //   glBlendFunc(GL_DST_COLOR, GL_ZERO);                         // x B, one unit
 //   AB stored: a texture rendered from a frame of its own (a nested frame, mt_frames.hpp)
 //   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE_ADD_ATI);  // t_r t_g + t_d i_diff
-//   glMatrixMode(GL_TEXTURE); glTranslatef(...); glScalef(...);  // the moving spot
+//   glActiveTexture(GL_TEXTURE1); glMatrixMode(GL_TEXTURE); glLoadMatrixf(M1);  // the moving spot
 #include <string>
 
 #include "common/core/error.hpp"
