@@ -8,7 +8,7 @@ namespace ref {
 namespace {
 struct ClipVertex {
   glm::dvec4 clip{0.0};
-  std::array<double, 11> attr{};  // s, t, r, q, colour rgba, secondary rgb
+  std::array<double, 14> attr{};  // s, t, r, q, colour rgba, secondary rgb, unit 1's s, t, q
 };
 
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, double u) {
@@ -129,6 +129,17 @@ Deriv ScreenPoly::deriv(double x, double y) const {
   return {dA.x * dadx + dB.x * dbdx, dA.x * dady + dB.x * dbdy, dA.y * dadx + dB.y * dbdx, dA.y * dady + dB.y * dbdy};
 }
 
+void ScreenPoly::coord1(double x, double y, double* s, double* t) const {
+  const double q = P[kQ1].at(x, y);
+  *s = P[kS1].at(x, y) / q, *t = P[kT1].at(x, y) / q;
+}
+
+Deriv ScreenPoly::deriv1(double x, double y) const {
+  const double q = P[kQ1].at(x, y), a = P[kS1].at(x, y) / q, b = P[kT1].at(x, y) / q;
+  return {(P[kS1].a - a * P[kQ1].a) / q, (P[kS1].b - a * P[kQ1].b) / q, (P[kT1].a - b * P[kQ1].a) / q,
+          (P[kT1].b - b * P[kQ1].b) / q};
+}
+
 Colour ScreenPoly::colour(double x, double y) const {
   double w = P[kW].at(x, y);
   return {float(clamp01(P[kCr].at(x, y) / w)), float(clamp01(P[kCg].at(x, y) / w)),
@@ -172,8 +183,10 @@ bool screenTriangle(const ts::Panel& p, const ts::Batch& b, size_t first, int fr
     // interpolation, as GL's vertex stage does.
     const glm::dvec4 st = glm::dmat4(b.textureMatrix) * texGenCoords(p, b, vx);
     if (b.clip) userDistance[k] = glm::dot(glm::dvec4(b.clipPlane), glm::dvec4(glm::dvec3(vx.pos), 1.0));
+    // Unit 1 (issue 29): its own coordinates or unit 0's as sent, times its texture matrix.
+    const glm::dvec4 u1 = glm::dmat4(b.textureMatrix1) * glm::dvec4(b.coords1 ? vx.tex1 : vx.tex);
     tri[k].attr = {st.x, st.y, st.z, st.w, vx.color.r, vx.color.g, vx.color.b, vx.color.a,
-                   vx.secondary.r, vx.secondary.g, vx.secondary.b};
+                   vx.secondary.r, vx.secondary.g, vx.secondary.b, u1.x, u1.y, u1.w};
   }
   if (b.clip) {
     // glClipPlane: keep plane · (x, y, z, 1) >= 0.  The distance is linear

@@ -160,11 +160,13 @@ Inspection Inspector::fragment(int x, int y, int pi, int bi, const ScreenPoly& P
       notes.push_back("texture environment " + enumName(b.texEnv) + " is not modelled: the colour is the texel");
   }
   in.referenceRgba = shadeFragment(b, in.primary, in.secondary, in.textured ? &texel : nullptr);
-  // Issue 29: unit 1 at the same (s, t), over unit 0's result, then the colour sum.
+  // Issue 29: unit 1 at its own (s, t), over unit 0's result, then the colour sum.
   std::string why1;
   const Texture* tex1 = in.textured && b.texture1 >= 0 && unitEnvModelled(b.texEnv1, b.combine1) ? texture(b.texture1, &why1) : nullptr;
   if (tex1) {
-    const Colour texel1 = tex1->sample(in.sq, in.tq, tex1->lod(g));
+    double s1, t1;  // unit 1's own coordinates (its texture matrix, Vertex::tex1 where Batch::coords1)
+    P.coord1(cx, cy, &s1, &t1);
+    const Colour texel1 = tex1->sample(s1, t1, tex1->lod(P.deriv1(cx, cy)));
     const Colour prev = texEnv(b.texEnv, in.primary, texel, {b.envColor.r, b.envColor.g, b.envColor.b, b.envColor.a});
     in.referenceRgba = unitEnv(b.texEnv1, b.combine1, prev, texel1, in.primary);
     if (b.colorSum) in.referenceRgba = colourSum(in.referenceRgba, in.secondary);

@@ -259,7 +259,7 @@ void Reference::note(const std::string& s) {
   if (std::find(notes_.begin(), notes_.end(), s) == notes_.end()) notes_.push_back(s);
 }
 
-void Reference::place(int x, int y, const Candidate& c, bool sure, bool depthTest) {
+void Reference::place(int x, int y, const Candidate& c, bool sure, bool depthTest, GLenum depthFunc) {
   size_t idx = size_t(y) * size_t(width_) + size_t(x);
   int& h = head_[idx];
   if (h < 0) {  // materialise the clear colour so it can be kept beside c
@@ -274,6 +274,8 @@ void Reference::place(int x, int y, const Candidate& c, bool sure, bool depthTes
       const Candidate& e = pool_[size_t(i)];
       if (e.kind == Candidate::Kind::Exempt) {
         canPass = true, mustPass = false;
+      } else if (depthFunc == GL_LEQUAL && c.z == e.z) {  // the same geometry again: GL's depth is the same too
+        canPass = true;
       } else if (c.z < e.z - float(opts_.depthEpsilon)) {
         canPass = true;
       } else if (c.z >= e.z + float(opts_.depthEpsilon)) {
@@ -402,6 +404,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
   // (A blended batch's candidates are exempt, but its reference picture still has unit 1.)
   const Texture* tex1 = nullptr;
   if (b.texture1 >= 0 && (tex || proto.kind != Candidate::Kind::Exempt)) {
+    // Unit 1's coordinates are its own planes (kS1 ..: Vertex::tex1 or unit 0's as sent, times textureMatrix1).
     const bool plain = tex && cubeFirst < 0 && volumeIndex < 0 && !b.texGen.on() && b.textureMatrix == glm::mat4(1.0f) &&
                        b.program.empty() && cubeFirstFace_[size_t(b.texture1)] < 0 && volumeOf_[size_t(b.texture1)] < 0;
     if (plain && unitEnvModelled(b.texEnv1, b.combine1) && texEnvModelled(b.texEnv)) {
@@ -488,8 +491,9 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           c.rho = std::max(c.rho, float(slices));
         }
       }
-      if (tex1 && c.kind == Candidate::Kind::Textured) {  // issue 29: unit 1 at the same (s, t)
-        const Deriv g = P.deriv(x, y);
+      if (tex1 && c.kind == Candidate::Kind::Textured) {  // issue 29: unit 1 at its own (s, t)
+        const Deriv g = P.deriv1(x, y);
+        P.coord1(x, y, &c.s1, &c.t1);
         const double e = tex1->lod(g);
         double lo = e, hi = e;
         if (needLod1) {
@@ -509,7 +513,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     auto emit = [&](int x, int y, const double* a) {
       size_t idx = size_t(y) * size_t(width_) + size_t(x);
       float z = float(a[kZ]);
-      if (p.depthTest && !(z < depth_[idx])) return;
+      if (p.depthTest && !(b.depthFunc == GL_LEQUAL ? z <= depth_[idx] : z < depth_[idx])) return;
       Colour col{float(clamp01(a[kCr] / a[kW])), float(clamp01(a[kCg] / a[kW])), float(clamp01(a[kCb] / a[kW])),
                  float(clamp01(a[kCa] / a[kW]))};
       Colour sec{float(clamp01(a[kSr] / a[kW])), float(clamp01(a[kSg] / a[kW])), float(clamp01(a[kSb] / a[kW])), 0.0f};
@@ -525,9 +529,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       }
       Colour out = shadeFragment(b, col, sec, tex ? &texel : nullptr);
       if (tex1) {  // issue 29: unit 1 over unit 0's result, then the colour sum
-        double s, t;
-        P.coordFrom(a[kS] / a[kQ], a[kT] / a[kQ], &s, &t);
-        const Colour texel1 = tex1->sample(s, t, tex1->lod(P.deriv(x + 0.5, y + 0.5)));
+        const Colour texel1 = tex1->sample(a[kS1] / a[kQ1], a[kT1] / a[kQ1], tex1->lod(P.deriv1(x + 0.5, y + 0.5)));
         const Colour prev = texEnv(b.texEnv, col, texel, {b.envColor.r, b.envColor.g, b.envColor.b, b.envColor.a});
         out = unitEnv(b.texEnv1, b.combine1, prev, texel1, col);
         if (b.colorSum) out = colourSum(out, sec);
@@ -574,11 +576,11 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           if (verdict == 0) continue;  // discarded: no colour, no depth
           if (verdict < 0) sure = false;
         }
-        place(x, y, c, sure, p.depthTest);
+        place(x, y, c, sure, p.depthTest, b.depthFunc ? b.depthFunc : GLenum(GL_LESS));
         // Near a cube's face boundary either face is legal (issue 26).
         Candidate other = c;
         if (cubeFirst >= 0 && c.kind == Candidate::Kind::Textured && cubeCandidate(P, cx, cy, cubeFirst, true, &other))
-          place(x, y, other, false, p.depthTest);
+          place(x, y, other, false, p.depthTest, b.depthFunc ? b.depthFunc : GLenum(GL_LESS));
       }
   }
 }

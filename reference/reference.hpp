@@ -91,6 +91,7 @@ struct Candidate {
   // Reference::textures(), -1 = off), read at (s, t) like unit 0, its LOD
   // interval and texels per pixel, and its environment over unit 0's result.
   int texture1 = -1;
+  double s1 = 0, t1 = 0;  // unit 1's (s, t): Batch::textureMatrix1 (affine) x (s, t)
   float lodLo1 = 0, lodHi1 = 0, rho1 = 0;
   GLenum env1 = GL_MODULATE;
   ts::Combine combine1;
@@ -162,7 +163,8 @@ class Reference {
   // candidate), -1 when its legal alpha range straddles the reference value
   // (the fragment may or may not be there).
   int alphaVerdict(const ts::Batch& b, const Candidate& c) const;
-  void place(int x, int y, const Candidate& c, bool sure, bool depthTest);
+  // depthFunc: GL_LESS, or GL_LEQUAL (issue 29: a second pass over the same geometry passes where z is equal).
+  void place(int x, int y, const Candidate& c, bool sure, bool depthTest, GLenum depthFunc = GL_LESS);
   void exemptDisc(double x, double y, double r, Exempt why, PixelRect clip);
   void note(const std::string& s);
 

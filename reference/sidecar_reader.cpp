@@ -10,6 +10,7 @@
 
 #include "common/core/error.hpp"
 #include "common/core/env_maps.hpp"
+#include "common/core/multitexture_textures.hpp"
 #include "common/core/sidecar.hpp"
 #include "common/core/textures.hpp"
 
@@ -183,6 +184,8 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
   if (name == "mip_level_colours") return ts::mipLevelColours(intParam(p, "size", name));
   if (name == "gradient") return ts::gradientTexture(intParam(p, "width", name), intParam(p, "height", name), strParam(p, "alpha", name) == "ramp");
   if (name == "environment_map") return ts::envmaps::environmentMapFromParams(p);  // issue 26: common/core/env_maps.hpp
+  ts::TextureDesc made;
+  if (ts::multitex::remake(name, p, &made)) return made;  // issue 29: the multitexture demo's textures
   if (name == "file") {
     std::string path = strParam(p, "path", name);
     if (!baseDir.empty() && !path.empty() && path[0] != '/') path = baseDir + "/" + path;
@@ -191,7 +194,7 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
     return t;
   }
   throw ts::Error("sidecar: unknown texture generator '" + name +
-                  "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, environment_map, file)");
+                  "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, environment_map, file, multitexture_*)");
 }
 
 constexpr int kMaxNesting = 4;  // frames inside frames: a texture's rendered_from, at most this deep
@@ -466,6 +469,14 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
         }
         b.alphaRef = float(number(member(*at, "ref", bw + ".alpha_test"), bw + ".alpha_test.ref"));
       }
+      if (const Json* df = find(bv, "depth_func")) {  // issue 29: a second pass's GL_LEQUAL
+        try {
+          b.depthFunc = glEnumFromName(text(*df, bw + ".depth_func"));
+        } catch (const ts::Error& e) {
+          fail(bw + ".depth_func", e.what());
+        }
+        if (b.depthFunc != GL_LESS && b.depthFunc != GL_LEQUAL) fail(bw + ".depth_func", "must be GL_LESS or GL_LEQUAL");
+      }
       if (const Json* bf = find(bv, "blend_func")) {
         if (array(*bf, bw + ".blend_func").size() != 2) fail(bw + ".blend_func", "needs [source, destination]");
         try {
@@ -478,6 +489,12 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
       if (const Json* u1 = find(bv, "unit1")) {  // issue 29: the second texture unit
         const std::string uw = bw + ".unit1";
         b.texture1 = integer(member(*u1, "texture", uw), uw + ".texture", 0, double(f.textures.size()) - 1);
+        if (const Json* tm = find(*u1, "texture_matrix")) b.textureMatrix1 = mat(*tm, uw + ".texture_matrix");
+        if (const Json* co = find(*u1, "coords")) {
+          const std::string c = text(*co, uw + ".coords");
+          if (c != "own") fail(uw + ".coords", "must be \"own\" (each vertex's tex1), not '" + c + "'");
+          b.coords1 = true;
+        }
         try {
           b.texEnv1 = glEnumFromName(text(member(*u1, "tex_env", uw), uw + ".tex_env"));
           if (b.texEnv1 == GL_COMBINE) {
@@ -504,6 +521,8 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
         if (const Json* t = find(vv, "tex")) x.tex = vec<4>(*t, vw + ".tex");
         if (const Json* c = find(vv, "color")) x.color = vec<4>(*c, vw + ".color");
         if (const Json* c = find(vv, "secondary")) x.secondary = vec<3>(*c, vw + ".secondary");
+        if (const Json* t1 = find(vv, "tex1")) x.tex1 = vec<4>(*t1, vw + ".tex1");
+        else if (b.coords1) fail(vw, "unit 1 reads its own coordinates: each vertex needs \"tex1\"");
         if (const Json* n = find(vv, "normal")) x.normal = vec<3>(*n, vw + ".normal");
         else if (b.texGen.needsNormal()) fail(vw, "texgen " + ts::glEnumName(b.texGen.mode) + " needs each vertex's normal");
         b.vertices.push_back(x);

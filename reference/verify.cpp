@@ -65,6 +65,10 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
 // src * srcFactor + dst * dstFactor per channel over boxes: multilinear in
 // the colours, so the extremes lie on the corners (alpha: the framebuffer's).
 Box blendBox(GLenum sf, GLenum df, const Box& s, const Box& d) {
+  // Factors of 1, 0 or a colour in [0, 1] (adding, multiplying): the blend
+  // rises with every input, so the low corner and the high corner bound it.
+  auto rising = [](GLenum f) { return f == GL_ONE || f == GL_ZERO || f == GL_SRC_COLOR || f == GL_DST_COLOR; };
+  if (rising(sf) && rising(df)) return {blendWith(sf, df, s.lo, d.lo), blendWith(sf, df, s.hi, d.hi)};
   Box o{{2, 2, 2, 2}, {-1, -1, -1, -1}};
   for (int corner = 0; corner < 16; ++corner) {
     Colour sc = s.lo, dc = d.lo;
@@ -94,6 +98,8 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
     out.push_back(widen(r.clearColour(), 0.0));
     return;
   }
+  std::vector<Box> below;  // a blended candidate's `below`: the same for most of the chain, computed once
+  int belowOf = -2;
   for (int i = h; i >= 0; i = r.candidate(i).next) {
     const Candidate& c = r.candidate(i);
     const size_t start = out.size();  // this candidate's boxes begin here
@@ -129,7 +135,7 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
         if (c.texture1 >= 0) {  // issue 29: unit 1's texels over unit 0's result (combine.hpp)
           std::vector<Box> texels1;
           const double j1 = o.positionEpsPixels * double(c.rho1);
-          r.textures()[size_t(c.texture1)].legal(c.s, c.t, c.lodLo1, c.lodHi1, o.nearestEpsTexels + j1, o.linearEpsTexels + j1, &texels1);
+          r.textures()[size_t(c.texture1)].legal(c.s1, c.t1, c.lodLo1, c.lodHi1, o.nearestEpsTexels + j1, o.linearEpsTexels + j1, &texels1);
           const Box primary = widen(c.colour, o.colourEps);
           const std::vector<Box> unit0(out.begin() + std::ptrdiff_t(first), out.end());
           out.resize(first);
@@ -144,28 +150,37 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
         break;
       }
     }
-    if (c.blended) {  // issue 29: this fragment's boxes blended over what the pixel held
-      std::vector<Box> below;
-      Exempt belowWhy;
-      legalFrom(r, c.below, o, &below, &belowWhy);
-      if (belowWhy != Exempt::None) {
-        *why = belowWhy;
-        out.clear();
-        return;
+    if (c.blended && c.blendSrc == GL_ONE && c.blendDst == GL_ZERO) {
+      // The colour as drawn, the pixel's alpha kept: what it held is not
+      // followed (its chain may be deep, a mesh's layers), the alpha left free.
+      for (size_t k = start; k < out.size(); ++k) out[k].lo[3] = 0.0f, out[k].hi[3] = 1.0f;
+    } else if (c.blended) {  // issue 29: this fragment's boxes blended over what the pixel held
+      if (c.below != belowOf) {
+        Exempt belowWhy;
+        legalFrom(r, c.below, o, &below, &belowWhy);
+        if (belowWhy != Exempt::None) {
+          *why = belowWhy;
+          out.clear();
+          return;
+        }
+        for (Box& d : below)  // GL stored what the pixel held in 8 bits: half a step either way
+          for (size_t k = 0; k < 3; ++k) d.lo[k] = std::max(0.0f, d.lo[k] - 0.5f / 255), d.hi[k] = std::min(1.0f, d.hi[k] + 0.5f / 255);
+        belowOf = c.below;
       }
-      for (Box& d : below)  // GL stored what the pixel held in 8 bits: half a step either way
-        for (size_t k = 0; k < 3; ++k) d.lo[k] = std::max(0.0f, d.lo[k] - 0.5f / 255), d.hi[k] = std::min(1.0f, d.hi[k] + 0.5f / 255);
       const std::vector<Box> src(out.begin() + std::ptrdiff_t(start), out.end());
       out.resize(start);
-      Box hull{{2, 2, 2, 2}, {-1, -1, -1, -1}};
-      size_t n = 0;
-      for (const Box& s : src)
-        for (const Box& d : below) {
-          const Box b = blendBox(c.blendSrc, c.blendDst, s, d);
-          if (++n <= 16) out.push_back(b);
-          for (size_t k = 0; k < 4; ++k) hull.lo[k] = std::min(hull.lo[k], b.lo[k]), hull.hi[k] = std::max(hull.hi[k], b.hi[k]);
-        }
-      if (n > 16) out.resize(start), out.push_back(hull);  // many layers of alternatives: their hull (looser, still legal)
+      if (src.size() * below.size() <= 16) {
+        for (const Box& s : src)
+          for (const Box& d : below) out.push_back(blendBox(c.blendSrc, c.blendDst, s, d));
+      } else {  // many layers of alternatives: the blend of their hulls (looser, still legal: the corners of both)
+        auto hullOf = [](const std::vector<Box>& v) {
+          Box u{{2, 2, 2, 2}, {-1, -1, -1, -1}};
+          for (const Box& b : v)
+            for (size_t k = 0; k < 4; ++k) u.lo[k] = std::min(u.lo[k], b.lo[k]), u.hi[k] = std::max(u.hi[k], b.hi[k]);
+          return u;
+        };
+        out.push_back(blendBox(c.blendSrc, c.blendDst, hullOf(src), hullOf(below)));
+      }
     }
   }
 }

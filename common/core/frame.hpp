@@ -32,6 +32,10 @@ struct Vertex {
   // sidecar, only for batches whose texgen reads it (TexGen::needsNormal).
   // GL's initial current normal is (0, 0, 1).
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
+  // Unit 1's own (s, t, r, q) (glMultiTexCoord4f(GL_TEXTURE1, ...)), read
+  // only by batches with Batch::coords1 on (issue 29: the pear's sphere map
+  // beside its skin's (u, v)); written in the sidecar only for those.
+  glm::vec4 tex1{0.0f, 0.0f, 0.0f, 1.0f};
 };
 
 enum class Prim { Triangles, Lines, LineStrip, LineLoop, Points };
@@ -173,14 +177,24 @@ struct Batch {
   // multiplies it in.  0, 0 = FixedState's (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).
   GLenum blendSrc = 0, blendDst = 0;
   // --- a second texture unit (issue 29, multitexturing) ---
-  // Unit 1 textured with Frame::textures[texture1] (2D), reading the same
-  // (s, t, r, q) as unit 0 (glMultiTexCoord4f(GL_TEXTURE1, ...); no texture
-  // matrix or texgen on unit 1), combined with unit 0's result by texEnv1:
+  // Unit 1 textured with Frame::textures[texture1] (2D), reading the
+  // (s, t, r, q) unit 0 is sent, or its own (coords1) (glMultiTexCoord4f(
+  // GL_TEXTURE1, ...); no texgen on unit 1; its own texture matrix below),
+  // combined with unit 0's result by texEnv1:
   // a classic environment (GL_MODULATE: previous x texel, ...) or
   // GL_COMBINE with `combine1`.  -1 = unit 1 off.
   int texture1 = -1;
   GLenum texEnv1 = GL_MODULATE;
   Combine combine1;
+  // Unit 1's texture matrix (glActiveTexture(GL_TEXTURE1); glMatrixMode(
+  // GL_TEXTURE)): unit 1 reads textureMatrix1 x (s, t, r, q) as sent, e.g.
+  // a light map moved over a wall (the reference applies it per vertex too).
+  glm::mat4 textureMatrix1{1.0f};
+  // true: unit 1 reads each vertex's own coordinates (Vertex::tex1), not unit 0's.
+  bool coords1 = false;
+  // glDepthFunc for this batch (with the panel's depth test): GL_LEQUAL lets
+  // a second pass over the same geometry through (multipass); 0 = FixedState's GL_LESS.
+  GLenum depthFunc = 0;
   bool alphaTest() const { return alphaFunc != 0; }
   bool blendFactors() const { return blendSrc != 0 || blendDst != 0; }
 };

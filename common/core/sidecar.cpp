@@ -221,6 +221,7 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
         Json v = {{"pos", vec(x.pos)}, {"tex", vec(x.tex)}, {"color", vec(x.color)}};
         if (b.colorSum) v["secondary"] = vec(x.secondary);
         if (b.texGen.needsNormal()) v["normal"] = vec(x.normal);  // issue 26: only where texgen reads it
+        if (b.texture1 >= 0 && b.coords1) v["tex1"] = vec(x.tex1);  // issue 29: unit 1's own coordinates
         vertices.push_back(v);
       }
       Json bj = {{"role", b.role},
@@ -260,6 +261,7 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
       // Issue 29, written only when set: the alpha test, the blend's colour factors.
       if (b.alphaTest()) bj["alpha_test"] = {{"func", glEnumName(b.alphaFunc)}, {"ref", num(b.alphaRef)}};
       if (b.blendFactors()) bj["blend_func"] = {glEnumName(b.blendSrc), glEnumName(b.blendDst)};
+      if (b.depthFunc) bj["depth_func"] = glEnumName(b.depthFunc);
       if (b.texture1 >= 0) {  // unit 1: its texture, environment and (GL_COMBINE) function
         Json u = {{"texture", b.texture1}, {"tex_env", glEnumName(b.texEnv1)}};
         if (b.texEnv1 == GL_COMBINE) {
@@ -269,6 +271,8 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
           u["sources"] = src;
           u["operands"] = op;
         }
+        if (b.textureMatrix1 != glm::mat4(1.0f)) u["texture_matrix"] = mat(b.textureMatrix1);
+        if (b.coords1) u["coords"] = "own";  // each vertex's "tex1"
         bj["unit1"] = u;
       }
       bj["vertices"] = vertices;

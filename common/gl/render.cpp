@@ -449,8 +449,14 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
             glTexEnvi(GL_TEXTURE_ENV, GLenum(GL_OPERAND0_RGB + k), GLint(b.combine1.operand[k]));
           }
         }
+        if (b.textureMatrix1 != glm::mat4(1.0f)) {  // unit 1's texture matrix, back to the identity after glEnd
+          glMatrixMode(GL_TEXTURE);
+          glLoadMatrixf(glm::value_ptr(b.textureMatrix1));
+          glMatrixMode(GL_MODELVIEW);
+        }
         glActiveTexture(GL_TEXTURE0);
       }
+      if (b.depthFunc) glDepthFunc(b.depthFunc);  // issue 29: GL_LEQUAL for a second pass; back after glEnd
       glLineWidth(b.lineWidth);
       glPointSize(b.pointSize);
       // The book's way: one glTexCoord per glVertex.  (s, t, r, q) are all
@@ -461,7 +467,10 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         if (b.colorSum) glSecondaryColor3f(v.secondary.r, v.secondary.g, v.secondary.b);
         glTexCoord4f(v.tex.x, v.tex.y, v.tex.z, v.tex.w);
         if (b.texGen.needsNormal()) glNormal3f(v.normal.x, v.normal.y, v.normal.z);
-        if (unit1) glMultiTexCoord4f(GL_TEXTURE1, v.tex.x, v.tex.y, v.tex.z, v.tex.w);  // issue 29
+        if (unit1) {  // issue 29: unit 0's coordinates, or its own (Batch::coords1)
+          const glm::vec4& u = b.coords1 ? v.tex1 : v.tex;
+          glMultiTexCoord4f(GL_TEXTURE1, u.x, u.y, u.z, u.w);
+        }
         glVertex3f(v.pos.x, v.pos.y, v.pos.z);
       }
       glEnd();
@@ -471,9 +480,15 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
           if (b.texGen.coords & (1u << k)) glDisable(kGenEnable[k]);
       if (b.clip) glDisable(GL_CLIP_PLANE0);
       if (b.alphaTest()) glDisable(GL_ALPHA_TEST);
+      if (b.depthFunc) glDepthFunc(FixedState::depthFunc);
       if (unit1) {
         glActiveTexture(GL_TEXTURE1);
         glDisable(GL_TEXTURE_2D);
+        if (b.textureMatrix1 != glm::mat4(1.0f)) {
+          glMatrixMode(GL_TEXTURE);
+          glLoadIdentity();
+          glMatrixMode(GL_MODELVIEW);
+        }
         glActiveTexture(GL_TEXTURE0);
       }
       if (tex3D) glDisable(GL_TEXTURE_3D);

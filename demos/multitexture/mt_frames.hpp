@@ -1,11 +1,14 @@
-// demos/multitexture/mt_frames.hpp — AB + CD as Frames (issue 29): the
-// passes GL drew for it described as data, so the figure draws
-// them and the CPU reference recomputes them from the sidecar.  Unit 1 and
-// GL_COMBINE (Batch::texture1, ts::Combine), the multiplying and adding
-// blends (Batch::blendSrc / blendDst); the one-unit path's intermediate
-// buffer is a nested frame (TextureDesc::renderedFrom: A, then x B, whose
-// render is the texture the last pass adds).  measure() renders these very
-// Frames (Renderer::render) and the figure draws them into its panels.
+// demos/multitexture/mt_frames.hpp — the figures' pictures as Frames (issue
+// 29): the passes described as data, so the figure draws them
+// (common/gl/render.cpp) and the CPU reference recomputes them from the
+// sidecar, every texture a named generator (common/core/
+// multitexture_textures.hpp).  The cutout tree (the alpha test), the cross
+// tree, the light maps and the spot (unit 1, its texture matrix), the gloss
+// map's passes, AB + CD (GL_COMBINE; the multiplying and adding blends,
+// Batch::blendSrc / blendDst; the one-unit path's intermediate buffer a
+// nested frame, TextureDesc::renderedFrom: A, then x B, whose render is the
+// texture the last pass adds).  measure() renders these very Frames
+// (Renderer::renderOffscreen) and the figure draws them into its panels.
 #pragma once
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -15,6 +18,7 @@
 #include <vector>
 
 #include "common/core/frame.hpp"
+#include "common/core/multitexture_textures.hpp"
 #include "common/core/textures.hpp"
 #include "mt_gl.hpp"
 
@@ -39,19 +43,15 @@ inline ts::Batch withUnit1(ts::Batch b, int t) {
   return b;
 }
 
-// A, B, C, D as the frame's textures (GL_NEAREST, clamped), their indices.
-// Image row j is t = (j + 1/2) / 64, as mt_gl.hpp's upload has it.
-inline std::array<int, 4> addTextures(ts::Frame& f, const std::vector<ts::Image>& t) {
+// A, B, C, D as the frame's textures (GL_NEAREST, clamped), their indices:
+// the sidecar's generator multitexture_abcd (texel row j is t = (j + 1/2) / 64).
+inline std::array<int, 4> addTextures(ts::Frame& f, const std::vector<ts::Image>&) {
   std::array<int, 4> ix{};
-  const char* names[4] = {"A", "B", "C", "D"};
-  for (size_t k = 0; k < 4; ++k) {
-    ts::Image top(t[k].width, t[k].height);  // the Frame's textures have row 0 at t = 1
-    for (int j = 0; j < top.height; ++j)
-      for (int i = 0; i < top.width; ++i) top.set(i, top.height - 1 - j, t[k].at(i, j));
-    ts::TextureDesc d = ts::renderedImageTexture(top, "multitexture", std::string("texture ") + names[k], "multitexture");
+  for (int k = 0; k < 4; ++k) {
+    ts::TextureDesc d = ts::multitex::abcdTexture(k);
     d.minFilter = d.magFilter = GL_NEAREST;
     d.wrapS = d.wrapT = GL_CLAMP_TO_EDGE;
-    ix[k] = f.addTexture(d);
+    ix[size_t(k)] = f.addTexture(d);
   }
   return ix;
 }
@@ -112,11 +112,8 @@ inline ts::Frame abcdFrame(const std::vector<ts::Image>& t, int m, const ts::Ima
 // The tree's hidden-sky and edge passes as data: a panel in
 // pixel coordinates of a 256 x 256 picture (x right, y up, z in [-1, 1],
 // +1 nearest), the tree a texture (GL_NEAREST, or GL_LINEAR magnified).
-inline int addTree(ts::Frame& f, const ts::Image& tree, GLenum mag) {
-  ts::Image top(tree.width, tree.height);  // renderedImageTexture flips: row 0 stays t = 0
-  for (int j = 0; j < top.height; ++j)
-    for (int i = 0; i < top.width; ++i) top.set(i, top.height - 1 - j, tree.at(i, j));
-  ts::TextureDesc d = ts::renderedImageTexture(top, "multitexture", "the cutout tree", "multitexture");
+inline int addTree(ts::Frame& f, const ts::Image&, GLenum mag) {
+  ts::TextureDesc d = ts::multitex::treeTexture();  // the sidecar's generator multitexture_tree
   d.minFilter = GL_NEAREST, d.magFilter = mag;
   d.wrapS = d.wrapT = GL_CLAMP_TO_EDGE;
   return f.addTexture(d);
@@ -168,5 +165,107 @@ inline ts::Frame alone(int w, int h, const std::function<ts::Panel(ts::Frame&, t
   f.width = w, f.height = h;
   f.panels.push_back(panel(f, {0, 0, w, h}));
   return f;
+}
+
+// The cross tree at `degrees`, a little from above (15 degrees), textured and
+// alpha-tested, over the sky, depth test on: a panel of the unit square.
+inline ts::Panel crossTreePanel(ts::Frame& f, float degrees, const std::string& id, ts::Rect viewport) {
+  ts::Panel p = unitPanel(id, viewport);
+  p.projection = glm::ortho(-0.7f, 0.7f, -0.7f, 0.7f, -2.0f, 2.0f);
+  p.modelview = glm::rotate(glm::rotate(glm::mat4(1.0f), glm::radians(15.0f), glm::vec3(1, 0, 0)), glm::radians(degrees), glm::vec3(0, 1, 0));
+  p.depthTest = true;
+  p.clearColor = sky();
+  ts::Batch b = treeState(square(addTree(f, {}, GL_NEAREST), "the cross tree: two quads"), kAlphaTest);
+  b.vertices.clear();
+  const glm::vec2 c[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int q = 0; q < 2; ++q)
+    for (int i : {0, 1, 2, 0, 2, 3}) {
+      const float a = c[i].x - 0.5f, y = c[i].y - 0.5f;
+      b.vertices.push_back({q ? glm::vec3(0, y, a) : glm::vec3(a, y, 0), {c[i], 0.0f, 1.0f}, glm::vec4(1)});
+    }
+  p.batches = {b};
+  return p;
+}
+
+// ---- light maps and the gloss map as Frames --------------------------------
+// The base on unit 0 (GL_NEAREST, repeated): the sidecar's generator
+// multitexture_bricks, or the student's picture (--texture: not remade).
+inline int addBase(ts::Frame& f, const ts::Image& base, bool user) {
+  ts::TextureDesc d = ts::multitex::bricksTexture();
+  if (user) {
+    ts::Image top = base;  // renderedImageTexture flips: row 0 stays t = 0
+    top.flipVertical();
+    d = ts::renderedImageTexture(top, "multitexture", "the base picture (--texture)", "multitexture");
+  }
+  d.minFilter = d.magFilter = GL_NEAREST;
+  d.wrapS = d.wrapT = GL_REPEAT;
+  return f.addTexture(d);
+}
+inline int addGrey(ts::Frame& f, ts::TextureDesc d, GLenum filter) {
+  d.minFilter = d.magFilter = filter;
+  d.wrapS = d.wrapT = GL_CLAMP_TO_EDGE;
+  return f.addTexture(d);
+}
+// c = base (unit 0, GL_REPLACE) x L (unit 1, GL_MODULATE, GL_LINEAR, clamped)
+// over the unit square; L the n^2 light map, or (n = 0) the spot at position
+// k of kSpotFrames, placed by unit 1's texture matrix:
+// (s, t) -> 1.6 ((s, t) - c) + 0.5, c on a circle.
+inline glm::vec2 spotCentre(int k, int n) {
+  const double a = 6.283185307179586 * k / n;
+  return {float(0.5 + 0.28 * std::cos(a)), float(0.5 + 0.28 * std::sin(a))};
+}
+inline ts::Batch lightMapped(ts::Frame& f, const ts::Image& base, bool user, int n, int k = 0, int frames = 12) {
+  ts::Batch b = square(addBase(f, base, user), n ? "the bricks, unit 1: x the light map" : "the bricks, unit 1: x the spot");
+  b.texture1 = addGrey(f, n ? ts::multitex::lightMapTexture(n) : ts::multitex::spotTexture(), GL_LINEAR);
+  b.texEnv1 = GL_MODULATE;
+  if (!n) {
+    const glm::vec2 c = spotCentre(k, frames);
+    b.textureMatrix1 = glm::translate(glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 0)), glm::vec3(1.6f, 1.6f, 1)),
+                                      glm::vec3(-c, 0));
+  }
+  return b;
+}
+// The gloss-mapped plane, 256 x 128 pixels over [0, 2] x [0, 1], a 64 x 32
+// grid lit per vertex (glossLighting), each strip as GL draws it (triangles
+// (v_k, v_k+1, v_k+2)).  Pass 1: t_d GL_MODULATE i_diff; pass 2: g
+// GL_MODULATE i_spec, added (GL_ONE, GL_ONE).
+inline ts::Batch glossGrid(int texture, bool spec, const std::string& role) {
+  ts::Batch b;
+  b.role = role;
+  b.texture = texture, b.texEnv = GL_MODULATE;
+  for (int j = 0; j < 32; ++j) {
+    std::vector<ts::Vertex> strip;
+    for (int i = 0; i <= 64; ++i)
+      for (int dj = 1; dj >= 0; --dj) {
+        const double x = i / 32.0, y = (j + dj) / 32.0;
+        const glm::dvec2 l = glossLighting(x, y);
+        const float c = float(spec ? l.y : l.x);
+        strip.push_back({{float(x * 128), float(y * 128), 0.0f}, {float(spec ? x / 2 : x), float(y), 0.0f, 1.0f}, {c, c, c, 1.0f}});
+      }
+    for (size_t k = 0; k + 2 < strip.size(); ++k) b.vertices.insert(b.vertices.end(), {strip[k], strip[k + 1], strip[k + 2]});
+  }
+  return b;
+}
+enum Gloss { kDiffuseOnly, kGlossed, kSpecularTwice };
+inline ts::Panel glossPanel(ts::Frame& f, const ts::Image& base, bool user, int what, const std::string& id, ts::Rect viewport) {
+  ts::Panel p = unitPanel(id, viewport);
+  p.projection = glm::ortho(0.0f, 256.0f, 0.0f, 128.0f, -1.0f, 1.0f);
+  const int g = addGrey(f, ts::multitex::glossTexture(64, 32), GL_NEAREST);
+  if (what != kSpecularTwice) p.batches.push_back(glossGrid(addBase(f, base, user), false, "pass 1: t_d x i_diff"));
+  if (what != kDiffuseOnly) p.batches.push_back(plus(glossGrid(g, true, "pass 2: + g x i_spec")));
+  if (what == kSpecularTwice) p.batches.push_back(plus(glossGrid(g, true, "+ g x i_spec again (x 2)")));
+  return p;
+}
+// The four textures in quadrants: A B over C D.
+inline ts::Panel abcdQuadrants(ts::Frame& f, const std::string& id, ts::Rect viewport) {
+  ts::Panel p = unitPanel(id, viewport);
+  const std::array<int, 4> ix = addTextures(f, {});
+  const char* names[4] = {"A", "B", "C", "D"};
+  for (int k = 0; k < 4; ++k) {
+    ts::Batch b = square(ix[size_t(k)], names[k]);
+    for (ts::Vertex& v : b.vertices) v.pos = {(v.pos.x + float(k % 2)) / 2, (v.pos.y + float(1 - k / 2)) / 2, 0.0f};
+    p.batches.push_back(b);
+  }
+  return p;
 }
 }  // namespace mt::frames

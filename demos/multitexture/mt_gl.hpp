@@ -2,8 +2,12 @@
 // fixed-function GL as seed 001 and Buss teach them: the alpha test, two
 // texture units (glActiveTexture, GL_COMBINE), blending passes
 // (glBlendFunc(GL_ONE, GL_ONE) adds), the texture matrix and
-// GL_ATI_texture_env_combine3's GL_MODULATE_ADD_ATI (the cutout tree's and
-// AB + CD's passes are Frames now: mt_frames.hpp).  Each pass draws into a
+// GL_ATI_texture_env_combine3's GL_MODULATE_ADD_ATI.  The cutout and cross
+// trees, the light maps (unit 1's texture matrix moves the spot), the gloss
+// map's passes and AB + CD are Frames (mt_frames.hpp); what stays here is
+// the turning trees' widths and the pear (the Frame can describe its two
+// coordinate sets and GL_LEQUAL, but the oracle's check of its blended mesh
+// layers is too slow yet: tests/oracle/sidecar_exemptions.hpp).  Each pass draws into a
 // private target (Renderer::offscreen) in pixel coordinates and is read back;
 // every function restores the state it changes (glPushAttrib).
 #pragma once
@@ -72,23 +76,8 @@ inline void combine(int u, GLenum function, GLenum s0, GLenum s1, GLenum s2 = GL
   glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE2_RGB, GLint(s2)), glTexEnvi(GL_TEXTURE_ENV, GL_OPERAND2_RGB, GLint(op2));
   glActiveTexture(GL_TEXTURE0);
 }
-// A rectangle with the same (s, t) on units 0 and 1.
-inline void quad(float x0, float y0, float x1, float y1, float z = 0, glm::vec4 st = {0, 0, 1, 1}) {
-  glBegin(GL_QUADS);
-  const float xs[4] = {x0, x1, x1, x0}, ys[4] = {y0, y0, y1, y1}, ss[4] = {st.x, st.z, st.z, st.x}, ts[4] = {st.y, st.y, st.w, st.w};
-  for (int k = 0; k < 4; ++k) {
-    glMultiTexCoord2f(GL_TEXTURE0, ss[k], ts[k]), glMultiTexCoord2f(GL_TEXTURE1, ss[k], ts[k]);
-    glVertex3f(xs[k], ys[k], z);
-  }
-  glEnd();
-}
-
 // ---- alpha ------------------------------------------------------------------
 enum Cutout { kNoAlphaTest, kAlphaTest, kBlend };
-inline void treeState(int mode) {
-  if (mode == kAlphaTest) glEnable(GL_ALPHA_TEST), glAlphaFunc(GL_GREATER, 0.5f);
-  if (mode == kBlend) glEnable(GL_BLEND), glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-}
 // The cutout tree's hidden-sky and edge passes are Frames (mt_frames.hpp).
 // Silhouette widths turning about the vertical axis, orthographic: strip k
 // (8 rows) shows the quad(s) at angle k * step; one quad of width 1 (128
@@ -112,96 +101,8 @@ inline ts::Image turningWidths(ts::Renderer& r, int steps, double step) {
       }
   });
 }
-// The cross tree, textured and alpha-tested, seen a little from above at
-// three angles (128 x 128 each, side by side).
-inline ts::Image crossTrees(ts::Renderer& r, GLuint tree) {
-  return pass(r, 384, 128, "the cross tree", [&] {
-    glClearColor(kSky.r / 255.f, kSky.g / 255.f, kSky.b / 255.f, 1), glClear(GL_COLOR_BUFFER_BIT);
-    glMatrixMode(GL_PROJECTION), glLoadIdentity(), glOrtho(-0.7, 0.7, -0.7, 0.7, -2, 2);
-    glMatrixMode(GL_MODELVIEW);
-    glEnable(GL_DEPTH_TEST);
-    unit(0, tree, GL_REPLACE), treeState(kAlphaTest);
-    const float angles[3] = {0, 30, 45};
-    for (int k = 0; k < 3; ++k) {
-      glViewport(k * 128, 0, 128, 128);
-      glLoadIdentity(), glRotatef(15, 1, 0, 0), glRotatef(angles[k], 0, 1, 0);
-      glBegin(GL_QUADS);
-      const float s[4] = {0, 1, 1, 0}, t[4] = {0, 0, 1, 1};
-      for (int q = 0; q < 2; ++q)
-        for (int v = 0; v < 4; ++v) {
-          glMultiTexCoord2f(GL_TEXTURE0, s[v], t[v]);
-          const float a = s[v] - 0.5f, y = t[v] - 0.5f;
-          q ? glVertex3f(0, y, a) : glVertex3f(a, y, 0);
-        }
-      glEnd();
-    }
-  });
-}
-
-// ---- light maps ---------------------------------------------------------
-// 256 x 256: c = base (unit 0, GL_REPLACE, GL_NEAREST) ⊗ L (unit 1,
-// GL_MODULATE, GL_LINEAR, clamped).
-inline ts::Image lightMapped(ts::Renderer& r, GLuint base, GLuint light) {
-  return pass(r, 256, 256, "the light-mapped wall", [&] {
-    unit(0, base, GL_REPLACE), unit(1, light, GL_MODULATE);
-    quad(0, 0, 256, 256);
-  });
-}
-// The moving spot: frame k of n (128 x 128 each, 4 to a row), the spot map
-// on unit 1 placed by the texture matrix: (s, t) -> 1.6 ((s, t) - c) + 0.5
-// with c on a circle.
-inline glm::vec2 spotCentre(int k, int n) {
-  const double a = 6.283185307179586 * k / n;
-  return {float(0.5 + 0.28 * std::cos(a)), float(0.5 + 0.28 * std::sin(a))};
-}
-inline ts::Image movingSpot(ts::Renderer& r, GLuint base, GLuint spot, int n) {
-  return pass(r, 512, 128 * ((n + 3) / 4), "the moving spot", [&] {
-    unit(0, base, GL_REPLACE), unit(1, spot, GL_MODULATE);
-    glMatrixMode(GL_PROJECTION), glLoadIdentity(), glOrtho(0, 1, 0, 1, -1, 1);
-    for (int k = 0; k < n; ++k) {
-      glViewport((k % 4) * 128, (n - 1) / 4 * 128 - (k / 4) * 128, 128, 128);
-      const glm::vec2 c = spotCentre(k, n);
-      glActiveTexture(GL_TEXTURE1), glMatrixMode(GL_TEXTURE), glLoadIdentity();
-      glTranslatef(0.5f, 0.5f, 0), glScalef(1.6f, 1.6f, 1), glTranslatef(-c.x, -c.y, 0);
-      glMatrixMode(GL_MODELVIEW), glActiveTexture(GL_TEXTURE0);
-      quad(0, 0, 1, 1);
-    }
-    glActiveTexture(GL_TEXTURE1), glMatrixMode(GL_TEXTURE), glLoadIdentity();
-    glMatrixMode(GL_MODELVIEW), glActiveTexture(GL_TEXTURE0);
-  });
-}
-
-// ---- gloss map: i = t_d ⊗ i_diff + g · i_spec, two passes ------------------
-// 256 x 128 over the plane [0, 2] x [0, 1], a 64 x 32 grid, lighting per
-// vertex (glossLighting).  Pass 1: t_d GL_MODULATE the vertex colour i_diff.
-// Pass 2 (when `gloss`): g GL_MODULATE the vertex colour i_spec, added
-// with glBlendFunc(GL_ONE, GL_ONE).
-inline void glossGrid(bool spec) {
-  for (int j = 0; j < 32; ++j) {
-    glBegin(GL_TRIANGLE_STRIP);
-    for (int i = 0; i <= 64; ++i)
-      for (int dj = 1; dj >= 0; --dj) {
-        const double x = i / 32.0, y = (j + dj) / 32.0;
-        const glm::dvec2 l = glossLighting(x, y);
-        const float c = float(spec ? l.y : l.x);
-        glColor4f(c, c, c, 1);
-        glMultiTexCoord2f(GL_TEXTURE0, float(spec ? x / 2 : x), float(y));
-        glVertex3f(float(x * 128), float(y * 128), 0);
-      }
-    glEnd();
-  }
-}
-inline ts::Image glossPasses(ts::Renderer& r, GLuint diffuse, GLuint gloss, bool withGloss) {
-  return pass(r, 256, 128, "the gloss-mapped plane", [&] {
-    glShadeModel(GL_SMOOTH);
-    unit(0, diffuse, GL_MODULATE);
-    glossGrid(false);
-    if (!withGloss) return;
-    glEnable(GL_BLEND), glBlendFunc(GL_ONE, GL_ONE);
-    unit(0, gloss, GL_MODULATE);
-    glossGrid(true);
-  });
-}
+// The cross tree at three angles, the light maps, the moving spot and the
+// gloss map's two passes are Frames too (mt_frames.hpp).
 
 // ---- AB + CD ------------------------------------------------------------
 // The three paths are Frames (mt_frames.hpp): kMultitexture two units

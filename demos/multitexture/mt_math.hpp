@@ -12,81 +12,25 @@
 #include <vector>
 
 #include "common/core/image.hpp"
+#include "common/core/multitexture_textures.hpp"
 
 namespace mt {
 inline uint8_t u8(double v) { return uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); }
 
-// ---- alpha: the cutout tree ----------------------------------------------
-// 64 x 64 RGBA: a brown trunk and an elliptical green crown, alpha 255; alpha
-// 0 everywhere else.  The transparent texels keep the leaves' green (not
-// black), so that filtering across an edge mixes green with green: with the
-// alpha test the edge shows no dark fringe, only a binary outline.  Every
-// colour has blue <= 40, the sky behind it has blue 255, so a pixel's blue
-// tells how much sky it shows.
-constexpr int kTreeSize = 64;
-inline const ts::Rgba kSky{100, 150, 255, 255};
-inline bool inTree(double x, double y) {
-  const bool trunk = std::abs(x - 0.5) < 0.07 && y < 0.4;
-  const double ex = (x - 0.5) / 0.4, ey = (y - 0.62) / 0.34;
-  return trunk || ex * ex + ey * ey < 1.0;
-}
-inline ts::Image treeTexture() {
-  ts::Image t(kTreeSize, kTreeSize);
-  for (int j = 0; j < kTreeSize; ++j)
-    for (int i = 0; i < kTreeSize; ++i) {
-      const double x = (i + 0.5) / kTreeSize, y = (j + 0.5) / kTreeSize;
-      const bool trunk = std::abs(x - 0.5) < 0.07 && y < 0.4;
-      const uint8_t shade = uint8_t(110 + ((i * 7 + j * 13) % 5) * 12);  // a little texture in the leaves
-      ts::Rgba c = trunk && y < 0.3 ? ts::Rgba{110, 70, 30, 255} : ts::Rgba{40, shade, 30, 255};
-      if (!inTree(x, y)) c = {40, 120, 30, 0};
-      t.set(i, j, c);
-    }
-  return t;
-}
-
-// ---- the light map ----------------------------------------------------------
-// A point light at height h over the centre of the unit square: irradiance
-// on the plane ∝ cos / d² = h / d³, scaled to 1 below the light, plus an
-// ambient term.  The per-pixel lighting the light map approximates.
-inline double lightAt(double x, double y) {
-  const double h = 0.3, d = std::sqrt((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5) + h * h);
-  return 0.15 + 0.85 * std::pow(h / d, 3.0);
-}
-// The light map at n x n: the lighting sampled at its texel centres (GL_LUMINANCE8).
-inline ts::Image lightMap(int n) {
-  ts::Image m(n, n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const uint8_t v = u8(lightAt((i + 0.5) / n, (j + 0.5) / n));
-      m.set(i, j, {v, v, v, 255});
-    }
-  return m;
-}
-// A spot, 32 x 32: bright inside radius 0.3 of its centre, a soft rim, the
-// ambient level at its border (GL_CLAMP_TO_EDGE keeps it outside).
-inline ts::Image spotMap() {
-  constexpr int n = 32;
-  ts::Image m(n, n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double r = std::hypot((i + 0.5) / n - 0.5, (j + 0.5) / n - 0.5);
-      const uint8_t v = u8(0.2 + 0.8 * std::clamp((0.42 - r) / 0.12, 0.0, 1.0));
-      m.set(i, j, {v, v, v, 255});
-    }
-  return m;
-}
-// The base picture x the per-pixel lighting, as the CPU computes it for a
-// w x w readback of the base (w = 2 x its size, GL_NEAREST: texel = pixel / 2).
+// The tree, the bricks, the light and spot maps, the gloss map and A, B, C,
+// D are named generators in common/core/multitexture_textures.hpp (the
+// sidecar remakes them); here under the demo's names.
+using ts::multitex::kSky;
+using ts::multitex::inTree;
+using ts::multitex::lightAt;
+inline ts::Image treeTexture() { return ts::multitex::treeImage(); }
+inline ts::Image lightMap(int n) { return ts::multitex::lightMapImage(n); }
+inline ts::Image spotMap() { return ts::multitex::spotImage(); }
+// The base x the per-pixel lighting for a w x w readback (row 0 the top).
 inline ts::Image perPixelLit(const ts::Image& base, int w) {
-  ts::Image out(w, w);
-  for (int y = 0; y < w; ++y)
-    for (int x = 0; x < w; ++x) {
-      const int row = w - 1 - y;  // window row
-      const ts::Rgba b = base.at(x * base.width / w, row * base.height / w);
-      const double l = lightAt((x + 0.5) / w, (row + 0.5) / w);
-      out.set(x, y, {u8(b.r / 255.0 * l), u8(b.g / 255.0 * l), u8(b.b / 255.0 * l), 255});
-    }
-  return out;
+  ts::Image img = ts::multitex::perPixelLitImage(base, w);
+  img.flipVertical();
+  return img;
 }
 
 // ---- the gloss map ----------------------------------------------------------
@@ -94,7 +38,8 @@ inline ts::Image perPixelLit(const ts::Image& base, int w) {
 // at height 0.35 over (0.5, 0.5) and (1.5, 0.5): one highlight in each half.
 // The gloss map g is 1 on the left half, 0.2 (51/255) on the right.
 // Per vertex (Gouraud): i_diff = 0.1 + 0.3 Σ n·l, i_spec = 0.6 Σ (n·h)^80.
-constexpr double kSpecular = 0.6, kGlossLow = 51.0 / 255.0;
+constexpr double kSpecular = 0.6;
+using ts::multitex::kGlossLow;
 inline glm::dvec2 glossLighting(double x, double y) {
   double diff = 0.1, spec = 0.0;
   for (double lx : {0.5, 1.5}) {
@@ -104,53 +49,15 @@ inline glm::dvec2 glossLighting(double x, double y) {
   }
   return {diff, spec};
 }
-inline ts::Image glossMap(int w, int h) {
-  ts::Image g(w, h);
-  for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) {
-      const uint8_t v = i < w / 2 ? 255 : uint8_t(kGlossLow * 255.0 + 0.5);
-      g.set(i, j, {v, v, v, 255});
-    }
-  return g;
-}
+inline ts::Image glossMap(int w, int h) { return ts::multitex::glossImage(w, h); }
 
 // ---- AB + CD ------------------------------------------------------------
-// Four 64 x 64 textures with values kept so that AB + CD <= 1 (no clamping):
-// A a ramp, B a checkerboard, C stripes, D a ring pattern.
-constexpr int kAbcdSize = 64;
-inline std::vector<ts::Image> abcdTextures() {
-  std::vector<ts::Image> t(4, ts::Image(kAbcdSize, kAbcdSize));
-  for (int j = 0; j < kAbcdSize; ++j)
-    for (int i = 0; i < kAbcdSize; ++i) {
-      const double x = (i + 0.5) / kAbcdSize, y = (j + 0.5) / kAbcdSize;
-      const uint8_t a = uint8_t(60 + 120 * x), b = ((i / 8 + j / 8) % 2) ? 240 : 90;
-      const uint8_t c = (i / 4) % 2 ? 135 : 40, d = uint8_t(70 + 65 * std::cos(18.0 * std::hypot(x - 0.5, y - 0.5)));
-      t[0].set(i, j, {a, uint8_t(a / 2), uint8_t(180 - a / 2), 255});
-      t[1].set(i, j, {b, b, uint8_t(b * 3 / 4), 255});
-      t[2].set(i, j, {c, uint8_t(c / 2), c, 255});
-      t[3].set(i, j, {d, d, uint8_t(135 - d / 2), 255});
-    }
-  return t;
-}
-// The CPU's AB + CD (or (AB + C) D when `framebufferOnly`), each product
-// rounded to 8 bits as the framebuffer stores it, for a w x w readback
-// (texel = pixel * 64 / w, GL_NEAREST).
+// Four 64 x 64 textures with AB + CD <= 1; the CPU's AB + CD (or (AB + C) D),
+// each product rounded to 8 bits, for a w x w readback (row 0 the top).
+using ts::multitex::kAbcdSize;
+inline std::vector<ts::Image> abcdTextures() { return ts::multitex::abcdImages(); }
 inline ts::Image abcdCpu(const std::vector<ts::Image>& t, int w, bool framebufferOnly) {
-  ts::Image out(w, w);
-  for (int y = 0; y < w; ++y)
-    for (int x = 0; x < w; ++x) {
-      const int i = x * kAbcdSize / w, j = (w - 1 - y) * kAbcdSize / w;
-      const ts::Rgba A = t[0].at(i, j), B = t[1].at(i, j), C = t[2].at(i, j), D = t[3].at(i, j);
-      uint8_t o[3];
-      const uint8_t ca[3] = {A.r, A.g, A.b}, cb[3] = {B.r, B.g, B.b}, cc[3] = {C.r, C.g, C.b}, cd[3] = {D.r, D.g, D.b};
-      for (int k = 0; k < 3; ++k) {
-        const double ab = std::round(ca[k] * cb[k] / 255.0);
-        o[k] = framebufferOnly ? u8(std::round(std::min(255.0, ab + cc[k])) * cd[k] / 255.0 / 255.0)
-                               : u8((ab + std::round(cc[k] * cd[k] / 255.0)) / 255.0);
-      }
-      out.set(x, y, {o[0], o[1], o[2], 255});
-    }
-  return out;
+  return ts::multitex::abcdCpuImage(t, w, framebufferOnly);
 }
 
 // ---- the pear ------------------------------------------------------------

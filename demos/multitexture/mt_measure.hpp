@@ -17,28 +17,20 @@ inline const int kLightSizes[4] = {8, 16, 32, 64};
 constexpr int kSpotFrames = 12, kTurnSteps = 72;  // 5 degrees a step
 
 // The default base picture, 128 x 128: bricks in two reds, grey mortar.
-inline ts::Image basePicture() {
-  ts::Image b(128, 128);
-  for (int j = 0; j < 128; ++j)
-    for (int i = 0; i < 128; ++i) {
-      const int row = j / 16, x = (i + (row % 2) * 16) % 32;
-      const bool mortar = j % 16 < 2 || x < 2;
-      const uint8_t v = uint8_t(150 + ((i * 5 + j * 11 + row * 7) % 9) * 8);
-      b.set(i, j, mortar ? ts::Rgba{170, 165, 150, 255} : ts::Rgba{v, uint8_t(v / 3 + 20), uint8_t(v / 4 + 10), 255});
-    }
-  return b;
-}
+inline ts::Image basePicture() { return ts::multitex::bricksImage(); }
 
 struct Result {
-  ts::Image hidden[3], edge[3], crossTrees;  // by Cutout mode
+  ts::Image hidden[3], edge[3];  // by Cutout mode
   std::vector<double> singleWidth, crossWidth;  // per 5 degrees, in quad widths
-  ts::Image lit[4], perPixel, spots;           // by kLightSizes; the CPU's; the moving spot's frames
-  ts::Image diffuseOnly, glossed, specular;    // specular = (glossed - diffuse) x 2
-  ts::Image abcdCpu, abcd[3], fbError;         // by Abcd; |(AB+C)D - (AB+CD)| x 4
+  ts::Image base;                              // the base picture (bricks, or --texture's)
+  bool userBase = false;
+  ts::Image lit[4], perPixel;                  // by kLightSizes; the CPU's
+  ts::Image diffuseOnly, glossed;              // the gloss map's passes
+  ts::Image abcdCpu, abcd[3];                  // the CPU's AB + CD; by Abcd
   ts::Image abcdAb;                            // the one-unit path's intermediate buffer (mt_frames.hpp)
   ts::Image pear[2];                           // by Pear
   bool combine3 = false;
-  ts::gl::CallList abcdCalls[3], pearCalls[2], glossCalls, spotCalls;
+  ts::gl::CallList abcdCalls[3], pearCalls[2], glossCalls;
 };
 
 // Pixels of a readback inside the tree's rectangle (64..191) whose texel is
@@ -77,12 +69,11 @@ inline int countCalls(const ts::gl::CallList& calls, const char* name) {
   return n;
 }
 
-inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& ms) {
+inline Result runAll(ts::Renderer& r, const ts::Image& base, bool userBase, ts::Measurements& ms) {
   Result out;
   auto put = [&](const std::string& n, double v, const std::string& meaning) { ms.push_back({n, v, meaning}); };
   // Alpha.
   const ts::Image treeImg = treeTexture();
-  const GLuint tree = upload(treeImg, GL_NEAREST, GL_CLAMP_TO_EDGE);
   const char* modes[3] = {"no_alpha_test", "alpha_test", "blend"};
   // The Frames the figure draws (mt_frames.hpp: Batch::alphaFunc, blend), rendered by the Renderer.
   auto hiddenFrame = [&](int m) {
@@ -96,8 +87,6 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& m
         "sky pixels hidden by the transparent texels' depth, the tree drawn first");
     put(std::string("edge_fringe_px[") + modes[m] + "]", fringe(out.edge[m]), "pixels mixing sky and tree at the edge, magnified 16x");
   }
-  out.crossTrees = crossTrees(r, tree);
-  glDeleteTextures(1, &tree);
   ts::measureProgress(0.2);
   const ts::Image turning = turningWidths(r, kTurnSteps, 360.0 / kTurnSteps);
   out.singleWidth = widths(turning, 0, kTurnSteps), out.crossWidth = widths(turning, kTurnSteps, kTurnSteps);
@@ -107,40 +96,35 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& m
   put("single_quad_max_width", hi(out.singleWidth), "one quad's silhouette, largest (1)");
   put("cross_tree_min_width", lo(out.crossWidth), "two crossed quads: max(|cos|, |sin|), least at 45 deg: 0.7071");
   put("cross_tree_max_width", hi(out.crossWidth), "two crossed quads, largest (1)");
-  // Light maps.
+  // Light maps: the Frames the figure draws (mt_frames.hpp: unit 1 GL_MODULATE), rendered by the Renderer.
   ts::measureProgress(0.35);
-  const GLuint baseTex = upload(base, GL_NEAREST, GL_REPEAT);
+  out.base = base, out.userBase = userBase;
   out.perPixel = perPixelLit(base, 256);
   for (int k = 0; k < 4; ++k) {
     const int n = kLightSizes[k];
-    const GLuint lm = upload(lightMap(n), GL_LINEAR, GL_CLAMP_TO_EDGE, GL_LUMINANCE8);
-    out.lit[k] = lightMapped(r, baseTex, lm);
-    glDeleteTextures(1, &lm);
+    out.lit[k] = opaque(r.renderOffscreen(frames::alone(256, 256, [&](ts::Frame& f, ts::Rect v) {
+      ts::Panel p = frames::unitPanel("light_map", v);
+      p.batches = {frames::lightMapped(f, base, userBase, n)};
+      return p;
+    })));
     const std::string s = "[" + std::to_string(n) + "]";
     put("light_map_rms" + s, rms(out.lit[k], out.perPixel), "8-bit levels, base x L (GL) against base x per-pixel lighting (CPU)");
-    put("light_map_bytes" + s, double(n * n), "GL_LUMINANCE8 texels (the base: " + std::to_string(base.width * base.height * 4) + " bytes)");
+    put("light_map_bytes" + s, double(n * n), "bytes as GL_LUMINANCE8, 1 a texel (the Frame uploads the same grey as RGBA8, 4 a texel; the base: " +
+                                                  std::to_string(base.width * base.height * 4) + " bytes)");
   }
-  out.spotCalls = ts::recordRender(r, [&] {
-    const GLuint b = upload(base, GL_NEAREST, GL_REPEAT), spot = upload(spotMap(), GL_LINEAR, GL_CLAMP_TO_EDGE, GL_LUMINANCE8);
-    out.spots = movingSpot(r, b, spot, kSpotFrames);
-    const GLuint both[2] = {b, spot};
-    glDeleteTextures(2, both);
-  });
-  // Gloss map (two passes).
+  // Gloss map (two passes, Frames).
   ts::measureProgress(0.5);
-  const GLuint gloss = upload(glossMap(64, 32), GL_NEAREST, GL_CLAMP_TO_EDGE, GL_LUMINANCE8);
-  out.diffuseOnly = glossPasses(r, baseTex, gloss, false);
-  out.glossCalls = ts::recordRender(r, [&] { out.glossed = glossPasses(r, baseTex, gloss, true); });
-  glDeleteTextures(1, &gloss);
-  out.specular = ts::Image(256, 128);
+  auto glossFrame = [&](int what) {
+    return frames::alone(256, 128, [&](ts::Frame& f, ts::Rect v) { return frames::glossPanel(f, base, userBase, what, "gloss", v); });
+  };
+  out.diffuseOnly = opaque(r.renderOffscreen(glossFrame(frames::kDiffuseOnly)));
+  out.glossCalls = ts::recordRender(r, [&] { out.glossed = opaque(r.renderOffscreen(glossFrame(frames::kGlossed))); });
   int peak[2] = {0, 0}, diffuseChange = 0, far = 0;
   for (int y = 0; y < 128; ++y)
     for (int x = 0; x < 256; ++x) {
       const ts::Rgba f = out.glossed.at(x, y), d = out.diffuseOnly.at(x, y);
       const int s = std::max({int(f.r) - d.r, int(f.g) - d.g, int(f.b) - d.b});
       peak[x >= 128] = std::max(peak[x >= 128], s);
-      const uint8_t v = uint8_t(std::clamp(2 * s, 0, 255));
-      out.specular.set(x, y, {v, v, v, 255});
       // Where every vertex of the pixel's cell has i_spec < 0.1/255, pass 2 adds 0 (well below half a level): the diffuse must be untouched.
       const int ci = x / 4, cj = (127 - y) / 4;
       double most = 0;
@@ -152,7 +136,7 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& m
   put("gloss_peak_ratio", peak[1] ? double(peak[0]) / peak[1] : 0.0, "their ratio: g 1 / 0.2 = 5");
   put("gloss_diffuse_change", diffuseChange, "largest change the gloss pass makes away from the highlights (levels)");
   put("gloss_diffuse_px", far, "pixels where that is checked (i_spec < 0.1/255 at the cell's vertices)");
-  put("gloss_passes", countCalls(out.glossCalls, "glBegin") / 32.0, "passes over the plane (two: diffuse, + g i_spec)");
+  put("gloss_passes", countCalls(out.glossCalls, "glBegin"), "passes over the plane (glBegin ... glEnd: diffuse, + g i_spec)");
   // AB + CD.
   ts::measureProgress(0.65);
   const std::vector<ts::Image> abcdImg = abcdTextures();
@@ -177,13 +161,6 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& m
   }
   put("abcd_max_diff[framebuffer_only_vs_cpu_model]", maxDiff(out.abcd[kFramebufferOnly], fbCpu),
       "levels: the framebuffer-only sequence against the CPU's (AB + C) D");
-  out.fbError = ts::Image(128, 128);
-  for (int y = 0; y < 128; ++y)
-    for (int x = 0; x < 128; ++x) {
-      const ts::Rgba a = out.abcd[kFramebufferOnly].at(x, y), b = out.abcdCpu.at(x, y);
-      auto e = [](int p, int q) { return uint8_t(std::min(255, 4 * std::abs(p - q))); };
-      out.fbError.set(x, y, {e(a.r, b.r), e(a.g, b.g), e(a.b, b.b), 255});
-    }
   // The pear.
   ts::measureProgress(0.8);
   out.combine3 = ts::gl::hasExtension("GL_ATI_texture_env_combine3");
@@ -206,7 +183,6 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, ts::Measurements& m
   if (out.combine3)
     put("pear_combine3_vs_two_passes_max_diff", maxDiff(out.pear[kCombine3], out.pear[kTwoPasses]),
         "levels: one stage A.C + B against two passes (two roundings)");
-  glDeleteTextures(1, &baseTex);
   return out;
 }
 }  // namespace mt

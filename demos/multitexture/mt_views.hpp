@@ -4,6 +4,7 @@
 // title above and a note below; the figure's numbers at the bottom.
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/core/layout.hpp"
@@ -14,9 +15,12 @@ namespace mt::views {
 namespace L = ts::layout;
 
 struct Picture {
-  ts::Image image;
+  ts::Image image;  // a picture made by measure(); empty: a panel the caller draws (or `texture`)
   std::string title, note;
   ts::gl::CallList calls = nullptr;
+  ts::TextureDesc texture;  // a generator's texture shown as it is (the sidecar remakes it)
+  Picture(ts::Image i = {}, std::string t = {}, std::string n = {}, ts::gl::CallList c = nullptr, ts::TextureDesc d = {})
+      : image(std::move(i)), title(std::move(t)), note(std::move(n)), calls(std::move(c)), texture(std::move(d)) {}
 };
 
 // Pictures of one aspect in a row (or grid) over the frame above a band of
@@ -26,10 +30,11 @@ inline void pictures(ts::Frame& f, const std::vector<Picture>& ps, float aspect,
   const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band};
   const std::vector<L::Cell> cells = L::flow(area, {int(ps.size()), aspect, 1, 1, 10, 2, 120});
   for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
-    if (ps[k].image.width == 0) {  // drawn by the caller: an empty unit panel (mt_frames.hpp)
+    if (ps[k].image.width == 0 && !ps[k].texture.image) {  // drawn by the caller: an empty unit panel (mt_frames.hpp)
       f.panels.push_back(frames::unitPanel("picture_" + std::to_string(k), cells[k].picture));
     } else {
-    ts::TextureDesc t = ts::renderedImageTexture(ps[k].image, "multitexture", ps[k].title, "multitexture");
+    ts::TextureDesc t = ps[k].texture.image ? ps[k].texture : ts::renderedImageTexture(ps[k].image, "multitexture", ps[k].title, "multitexture");
+    t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
     // GL_LINEAR: a panel's pixel centre can fall on a texel boundary, where GL_NEAREST's tie goes either way.
     t.minFilter = t.magFilter = GL_LINEAR;
     t.renderedBy = ps[k].calls;
@@ -41,11 +46,4 @@ inline void pictures(ts::Frame& f, const std::vector<Picture>& ps, float aspect,
   L::caption(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)}, numbers, L::kAmber, 1);
 }
 
-// The crop of a w x h picture at (x, y) (top-left origin).
-inline ts::Image crop(const ts::Image& img, int x, int y, int w, int h) {
-  ts::Image out(w, h);
-  for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) out.set(i, j, img.at(x + i, y + j));
-  return out;
-}
 }  // namespace mt::views

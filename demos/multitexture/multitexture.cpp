@@ -22,7 +22,7 @@
 //   v  view: alpha | lightmap | gloss | abcd     a  animate the spot
 //   s / S  the spot's position (0..11)          (--texture FILE: the base picture)
 //
-// The GL that carries it (mt_gl.hpp):
+// The GL that carries it (Frames, mt_frames.hpp, drawn by common/gl/render.cpp; the pear mt_gl.hpp):
 //   glEnable(GL_ALPHA_TEST); glAlphaFunc(GL_GREATER, 0.5f);
 //   glActiveTexture(GL_TEXTURE1); glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
 //   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);     // PREVIOUS x TEXTURE = AB
@@ -30,11 +30,12 @@
 //   glBlendFunc(GL_DST_COLOR, GL_ZERO);                         // x B, one unit
 //   AB stored: a texture rendered from a frame of its own (a nested frame, mt_frames.hpp)
 //   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE_ADD_ATI);  // t_r t_g + t_d i_diff
-//   glMatrixMode(GL_TEXTURE); glTranslatef(...); glScalef(...);  // the moving spot
+//   glActiveTexture(GL_TEXTURE1); glMatrixMode(GL_TEXTURE); glLoadMatrixf(M1);  // the moving spot
 #include <string>
 
 #include "common/core/error.hpp"
 #include "common/core/layout.hpp"
+#include "common/core/multitexture_textures.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
 #include "common/core/user_texture.hpp"
@@ -121,7 +122,7 @@ class Multitexture final : public ts::Scene {
     ts::Measurements ms;
     ts::Image base = basePicture();
     if (picture_.active()) base = ts::resizeBilinear(picture_.image(), 128, 128);
-    ms.detail = runAll(r, base, ms);
+    ms.detail = runAll(r, base, picture_.active(), ms);
     return ms;
   }
 
@@ -144,7 +145,6 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
       if (x.name == n) return x.value;
     return -1.0;
   };
-  using views::crop;
   if (view_ == 0) {
     views::pictures(f,
                     {{{}, "no alpha test", fmt("%.0f sky pixels hidden", v("cutout_hidden_px[no_alpha_test]"))},
@@ -152,7 +152,7 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
                      {{}, "blending, no test", fmt("%.0f hidden", v("cutout_hidden_px[blend]"))},
                      {{}, "edge x16, blending", fmt("%.0f fringe pixels", v("edge_fringe_px[blend]"))},
                      {{}, "edge x16, alpha test", fmt("%.0f fringe pixels", v("edge_fringe_px[alpha_test]"))},
-                     {crop(m->crossTrees, 256, 0, 128, 128), "cross tree, 45 deg",
+                     {{}, "cross tree, 45 deg",
                       fmt("width >= %.4f", v("cross_tree_min_width"))}},
                     1.0f,
                     "Cutout tree drawn first, then the sky behind it (depth test).  Silhouette width over a full turn "
@@ -162,28 +162,35 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
     // The cutout passes are the Frames measure() rendered (mt_frames.hpp), drawn in their panels.
     const ts::Image tree = treeTexture();
     for (ts::Panel& p : f.panels)
-      for (int k = 0; k < 5; ++k)
+      for (int k = 0; k < 6; ++k)
         if (p.id == "picture_" + std::to_string(k))
-          p = k < 3 ? frames::hiddenPanel(f, tree, k, p.id, p.viewport) : frames::edgePanel(f, tree, k == 3 ? kBlend : kAlphaTest, p.id, p.viewport);
+          p = k < 3   ? frames::hiddenPanel(f, tree, k, p.id, p.viewport)
+              : k < 5 ? frames::edgePanel(f, tree, k == 3 ? kBlend : kAlphaTest, p.id, p.viewport)
+                      : frames::crossTreePanel(f, 45, p.id, p.viewport);
   } else if (view_ == 1) {
-    std::vector<views::Picture> ps = {{m->perPixel, "per-pixel (CPU)", "base x lighting"}};
+    // The light-mapped walls and the spot are Frames (mt_frames.hpp); the CPU's picture a generator.
+    std::vector<views::Picture> ps = {{m->userBase ? m->perPixel : ts::Image(), "per-pixel (CPU)", "base x lighting"}};
+    if (!m->userBase) ps[0].texture = ts::multitex::perPixelLitTexture(256);
     for (int k = 0; k < 4; ++k) {
       const std::string n = std::to_string(kLightSizes[k]);
-      ps.push_back({m->lit[k], "light map " + n + "^2", fmt("RMS %.2f", v("light_map_rms[" + n + "]")) + ", " + n + "^2 bytes"});
+      ps.push_back({{}, "light map " + n + "^2", fmt("RMS %.2f", v("light_map_rms[" + n + "]")) + ", " + n + "^2 bytes"});
     }
-    ps.push_back({crop(m->spots, (spot_ % 4) * 128, (spot_ / 4) * 128, 128, 128), "spot, texture matrix",
-                  "position " + std::to_string(spot_) + (animate_ ? " (moving)" : " (a: move)"), m->spotCalls});
+    ps.push_back({{}, "spot, texture matrix", "position " + std::to_string(spot_) + (animate_ ? " (moving)" : " (a: move)")});
     views::pictures(f, ps, 1.0f,
                     "c = base x L: unit 0 the bricks (GL_REPLACE), unit 1 the light map (GL_MODULATE, GL_LINEAR); the "
                     "light a point at height 0.3 over the centre, L its irradiance at the texel centres (1 byte a texel).");
+    for (ts::Panel& p : f.panels)
+      for (int k = 1; k <= 5; ++k)
+        if (p.id == "picture_" + std::to_string(k))
+          p.batches = {frames::lightMapped(f, m->base, m->userBase, k < 5 ? kLightSizes[k - 1] : 0, spot_, kSpotFrames)};
   } else if (view_ == 2) {
     ts::Image pears(384, 192);
     if (m->combine3) pears.blit(m->pear[kCombine3], 0, 0);
     pears.blit(m->pear[kTwoPasses], 192, 0);
     views::pictures(f,
-                    {{m->diffuseOnly, "t_d x i_diff (pass 1)", "the diffuse alone"},
-                     {m->glossed, "+ g x i_spec (pass 2, GL_ONE, GL_ONE)", "g = 1 left, 0.2 right", m->glossCalls},
-                     {m->specular, "the specular added, x 2",
+                    {{{}, "t_d x i_diff (pass 1)", "the diffuse alone"},
+                     {{}, "+ g x i_spec (pass 2, GL_ONE, GL_ONE)", "g = 1 left, 0.2 right"},
+                     {{}, "the specular added, x 2",
                       fmt("peaks %.0f", v("gloss_peak[g=1]")) + fmt(" : %.0f", v("gloss_peak[g=0.2]"))},
                      {pears, "pear: MODULATE_ADD_ATI | two passes",
                       m->combine3 ? fmt("%.0f pass", v("pear_passes[combine3]")) + fmt(" | %.0f passes", v("pear_passes[two_passes]"))
@@ -194,20 +201,23 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
                         " (g 1 / 0.2 = 5), diffuse changed by " + fmt("%.0f", v("gloss_diffuse_change")) +
                         " levels.  The pear: t_d i_diff + t_g t_r, one combine3 stage against two passes: " +
                         fmt("%.0f", v("pear_combine3_vs_two_passes_max_diff")) + " levels apart.");
+    // The plane's passes are Frames (mt_frames.hpp): diffuse; + g i_spec; g i_spec added twice.
+    for (ts::Panel& p : f.panels)
+      for (int k = 0; k < 3; ++k)
+        if (p.id == "picture_" + std::to_string(k)) p = frames::glossPanel(f, m->base, m->userBase, k, p.id, p.viewport);
   } else {
-    ts::Image abcd(128, 128);
     const std::vector<ts::Image> t = abcdTextures();
-    for (int k = 0; k < 4; ++k)
-      for (int j = 0; j < 64; ++j)
-        for (int i = 0; i < 64; ++i) abcd.set((k % 2) * 64 + i, (k / 2) * 64 + 63 - j, t[size_t(k)].at(i, j));
+    const views::Picture cpu({}, "AB + CD (CPU)", "the reference", nullptr, ts::multitex::abcdCpuTexture(128, "sum"));
+    const views::Picture error({}, "(AB+C)D - (AB+CD), x 4", fmt("GL's: RMS %.1f levels", v("abcd_rms[framebuffer_only]")), nullptr,
+                               ts::multitex::abcdCpuTexture(128, "error_x4"));
     views::pictures(
         f,
-        {{abcd, "A B / C D", "the four textures"},
-         {m->abcdCpu, "AB + CD (CPU)", "the reference"},
+        {{{}, "A B / C D", "the four textures"},
+         cpu,
          {{}, "two units + add", fmt("%.0f passes", v("abcd_passes[multitexture]")) + fmt(", max %.0f", v("abcd_max_diff[multitexture]"))},
          {{}, "one unit + a copy", fmt("%.0f passes", v("abcd_passes[stored]")) + fmt(", max %.0f", v("abcd_max_diff[stored]"))},
          {{}, "framebuffer: (AB+C)D", fmt("%.0f passes", v("abcd_passes[framebuffer_only]")) + fmt(", max %.0f", v("abcd_max_diff[framebuffer_only]"))},
-         {m->fbError, "its error x 4", fmt("RMS %.1f levels", v("abcd_rms[framebuffer_only]"))}},
+         error},
         1.0f,
         "Multiplying needs the framebuffer (GL_DST_COLOR, GL_ZERO), adding too (GL_ONE, GL_ONE): with one unit, AB must "
         "be stored (a texture rendered first) before CD is made; the sequence A, x B, + C, x D gives (AB + C) D.");
@@ -215,6 +225,8 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
     for (int k = kMultitexture; k <= kFramebufferOnly; ++k)
       for (ts::Panel& p : f.panels)
         if (p.id == "picture_" + std::to_string(2 + k)) p.batches = frames::abcdBatches(f, t, k, m->abcdAb);
+    for (ts::Panel& p : f.panels)
+      if (p.id == "picture_0") p = frames::abcdQuadrants(f, p.id, p.viewport);
   }
   return f;
 }

@@ -12,6 +12,8 @@
 // (blended pixels are exempt in the candidates): within 2 levels of GL.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cmath>
 
 #include "oracle_support.hpp"
@@ -307,4 +309,105 @@ TEST(GLSecondUnit, BlendedPassesAndAnIntermediateBuffer) {
   ref::VerifyResult r = ref::verifyImage(img, f, oracle::options("stored_ab", "multitexture"));
   EXPECT_TRUE(r.ok()) << r.summary();
   std::printf("stored_ab: %s\n", r.summary().c_str());
+}
+
+// Unit 1's texture matrix (Batch::textureMatrix1): the light map moved over
+// the wall (the multitexture demo's spot) is (s, t) -> M1 (s, t) on unit 1
+// only, unit 0 untouched.  A rotation as well as the scale and translation,
+// so the cross terms count; clamped (the spot's map) and repeated.  Every
+// GL pixel in the reference's legal range, none exempt; described without
+// the matrix, most pixels are invalid.
+TEST(GLSecondUnit, TextureMatrixOnUnitOne) {
+  const glm::mat4 m1 = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 0)) *
+                       glm::rotate(glm::mat4(1.0f), glm::radians(30.0f), glm::vec3(0, 0, 1)) *
+                       glm::scale(glm::mat4(1.0f), glm::vec3(1.6f, 1.6f, 1)) *
+                       glm::translate(glm::mat4(1.0f), glm::vec3(-0.3f, -0.6f, 0));
+  for (GLenum filter : {GL_NEAREST, GL_LINEAR})
+    for (GLenum wrap : {GL_CLAMP_TO_EDGE, GL_REPEAT}) {
+      const std::string n = std::string("unit1_texture_matrix") + (filter == GL_NEAREST ? "_nearest" : "_linear") +
+                            (wrap == GL_REPEAT ? "_repeat" : "_clamp");
+      auto frame = [&](const glm::mat4& unit0, const glm::mat4& unit1) {
+        ts::Frame f = twoUnitFrame(filter, GL_REPLACE, GL_MODULATE, {});
+        f.textures[1].wrapS = f.textures[1].wrapT = wrap;
+        f.panels[0].batches[0].textureMatrix = unit0;
+        f.panels[0].batches[0].textureMatrix1 = unit1;
+        return f;
+      };
+      const ts::Frame f = frame(glm::mat4(1.0f), m1);
+      const ts::Image img = oracle::render(f);
+      ref::VerifyResult r = ref::verifyImage(img, f, oracle::options(n, "multitexture"));
+      EXPECT_TRUE(r.ok()) << r.summary();
+      EXPECT_EQ(r.checked, 128L * 128L) << n;
+      EXPECT_EQ(r.textured, 128L * 128L) << n << ": modelled, not exempt";
+      std::printf("%s: %ld invalid of %ld checked (%ld textured)\n", n.c_str(), r.invalid, r.checked, r.textured);
+      ref::VerifyResult bad = ref::verifyImage(img, frame(glm::mat4(1.0f), glm::mat4(1.0f)),
+                                               oracle::options(n + "_no_matrix", "multitexture_negative"));
+      EXPECT_GT(bad.invalid, 128L * 128L / 2) << n << ": " << bad.summary();
+    }
+}
+
+// Unit 1's own coordinates (Batch::coords1, Vertex::tex1: the pear's sphere
+// map beside its skin's (u, v)), and a second pass over the same geometry
+// through glDepthFunc(GL_LEQUAL) (Batch::depthFunc), added (GL_ONE, GL_ONE).
+// Unit 1's (s, t) here run against unit 0's (rotated, stretched, with q != 1
+// at one corner), so reading unit 0's would be far off.  Every GL pixel in
+// the reference's legal range; described with unit 0's coordinates on unit
+// 1, most pixels are invalid; the second pass described with GL_LESS (which
+// fails on equal depth) leaves the reference's picture without it, far from GL's.
+TEST(GLSecondUnit, OwnCoordinatesAndASecondPassThroughLequal) {
+  for (GLenum filter : {GL_NEAREST, GL_LINEAR}) {
+    const std::string n = std::string("unit1_own_coords") + (filter == GL_NEAREST ? "_nearest" : "_linear");
+    auto frame = [&](bool own) {
+      ts::Frame f = twoUnitFrame(filter, GL_REPLACE, GL_MODULATE, {});
+      ts::Batch& b = f.panels[0].batches[0];
+      b.coords1 = own;
+      for (ts::Vertex& v : b.vertices) {
+        const glm::vec2 st(v.tex.x, v.tex.y);
+        const float q = st.x > 0.5f && st.y > 0.5f ? 1.5f : 1.0f;
+        v.tex1 = glm::vec4(q * (2.0f * st.y - 0.3f * st.x), q * (1.7f - 1.4f * st.x), 0.0f, q);
+      }
+      return f;
+    };
+    const ts::Frame f = frame(true);
+    const ts::Image img = oracle::render(f);
+    ref::VerifyResult r = ref::verifyImage(img, f, oracle::options(n, "multitexture"));
+    EXPECT_TRUE(r.ok()) << r.summary();
+    EXPECT_EQ(r.textured, 128L * 128L) << n << ": modelled, not exempt";
+    std::printf("%s: %ld invalid of %ld checked (%ld textured)\n", n.c_str(), r.invalid, r.checked, r.textured);
+    ref::VerifyResult bad = ref::verifyImage(img, frame(false), oracle::options(n + "_unit0_coords", "multitexture_negative"));
+    EXPECT_GT(bad.invalid, 128L * 128L / 2) << n << ": " << bad.summary();
+  }
+  // Two passes over one quad, depth test on: the first writes depth, the
+  // second (z equal) adds through GL_LEQUAL.
+  auto twoPasses = [](GLenum secondFunc) {
+    ts::Frame f = twoUnitFrame(GL_NEAREST, GL_MODULATE, GL_MODULATE, {}, false);
+    ts::Panel& p = f.panels[0];
+    p.depthTest = true, p.clear = true, p.clearColor = {0, 0, 0, 1};
+    for (ts::Vertex& v : p.batches[0].vertices) v.pos.z = 0.25f, v.color = glm::vec4(glm::vec3(v.color) * 0.5f, 1.0f);
+    ts::Batch second = p.batches[0];
+    second.texture = 1;
+    second.blend = true, second.blendSrc = GL_ONE, second.blendDst = GL_ONE;
+    second.depthFunc = secondFunc;
+    p.batches.push_back(second);
+    return f;
+  };
+  // On the reference picture (the candidates allow either verdict where
+  // depths are equal within their epsilon): within 2 levels of GL (8-bit
+  // sums), and far from it when the second pass is described with GL_LESS.
+  const ts::Frame f = twoPasses(GL_LEQUAL);
+  const ts::Image img = oracle::render(f);
+  ref::VerifyOptions vo = oracle::options("second_pass_lequal", "multitexture");
+  vo.render.labels = false;
+  ref::FuzzyOptions fo;
+  fo.maxChannelDiff = 2;
+  fo.name = "second_pass_lequal";
+  fo.outputDir = vo.outputDir;
+  const ref::FuzzyResult r = ref::compareFuzzy(img, ref::Reference(f, vo.render).image(), fo);
+  EXPECT_TRUE(r.ok) << r.message;
+  std::printf("second_pass_lequal: max channel difference %d, %ld pixels beyond 2\n", r.maxDiff, r.differing);
+  ref::VerifyResult legal = ref::verifyImage(img, f, vo);
+  EXPECT_TRUE(legal.ok()) << legal.summary();
+  fo.writeOnFailure = false;
+  const ref::FuzzyResult bad = ref::compareFuzzy(img, ref::Reference(twoPasses(GL_LESS), vo.render).image(), fo);
+  EXPECT_GT(bad.differing, 128L * 128L / 2) << "described with GL_LESS";
 }

@@ -327,6 +327,9 @@ TEST(Sidecar, RoundTripOfTheMultitextureState) {
   b.combine1.rgb = GL_MODULATE_ADD_ATI;
   b.combine1.source[0] = GL_TEXTURE, b.combine1.source[1] = GL_PREVIOUS, b.combine1.source[2] = GL_PREVIOUS;
   b.combine1.operand[2] = GL_SRC_ALPHA;
+  b.textureMatrix1 = glm::mat4(1.6f, 0.1f, 0, 0, -0.2f, 1.6f, 0, 0, 0, 0, 1, 0, 0.25f, -0.5f, 0, 1);
+  b.coords1 = true, b.depthFunc = GL_LEQUAL;
+  for (size_t k = 0; k < b.vertices.size(); ++k) b.vertices[k].tex1 = {0.25f * float(k), 0.5f, 0.0f, 1.0f + float(k)};
   p.batches = {b, plain};
   f.panels.push_back(p);
   const std::string text = ts::sidecarJson(f, {});
@@ -343,7 +346,14 @@ TEST(Sidecar, RoundTripOfTheMultitextureState) {
     EXPECT_EQ(g.combine1.source[k], b.combine1.source[k]) << k;
     EXPECT_EQ(g.combine1.operand[k], b.combine1.operand[k]) << k;
   }
+  EXPECT_EQ(g.textureMatrix1, b.textureMatrix1);
+  EXPECT_TRUE(g.coords1);
+  EXPECT_EQ(g.depthFunc, GLenum(GL_LEQUAL));
+  for (size_t k = 0; k < b.vertices.size(); ++k) EXPECT_EQ(g.vertices.at(k).tex1, b.vertices[k].tex1) << k;
   const ts::Batch& h = back.frame.panels.at(0).batches.at(1);
+  EXPECT_EQ(h.textureMatrix1, glm::mat4(1.0f));
+  EXPECT_FALSE(h.coords1);
+  EXPECT_EQ(h.depthFunc, GLenum(0));
   EXPECT_FALSE(h.alphaTest());
   EXPECT_FALSE(h.blendFactors());
   EXPECT_EQ(h.texture1, -1);
@@ -355,5 +365,8 @@ TEST(Sidecar, RoundTripOfTheMultitextureState) {
   };
   EXPECT_EQ(count("\"alpha_test\""), 1u);
   EXPECT_EQ(count("\"unit1\""), 1u);
+  EXPECT_EQ(count("\"texture_matrix\""), 1u);  // unit 1's, inside "unit1"
+  EXPECT_EQ(count("\"depth_func\""), 2u);      // the batch's, and the fixed state's
+  EXPECT_EQ(count("\"tex1\""), 3u);            // the first batch's vertices only
   EXPECT_EQ(count("\"blend_func\""), 2u);
 }
