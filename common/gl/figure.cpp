@@ -16,6 +16,11 @@ namespace ts {
 Rendered renderScene(Scene& scene, Renderer& r, int width, int height, bool record) {
   Context& ctx = r.context();
   Rendered out;
+  // The measure pass starts from the figure's own context size and viewport,
+  // not the previous figure's: what it records (a render target restores the
+  // viewport it found) is then the same whichever figures ran before.
+  if (ctx.width() != width || ctx.height() != height) ctx.resize(width, height);
+  glViewport(0, 0, width, height);
   out.measurements = scene.measure(r);  // may resize the target for itself
   if (ctx.width() != width || ctx.height() != height) ctx.resize(width, height);
   out.frame = scene.build(width, height, out.measurements);
