@@ -12,6 +12,10 @@
 #include "reference/sidecar_reader.hpp"
 #include "reference/verify.hpp"
 
+#ifndef TS_ORACLE_OUT_DIR
+#define TS_ORACLE_OUT_DIR "oracle_failures"
+#endif
+
 namespace {
 // The file is read with nlohmann-json: what the suite adds is that its errors
 // become one line naming the place, and that wrong types are named.
@@ -270,6 +274,7 @@ TEST(Sidecar, UnknownPicturesAreExemptAndNothingElse) {
   const ref::SidecarScene sc = ref::readSidecar(json, lenient);
   ASSERT_EQ(sc.unknownPictures, std::vector<int>{0});
   ref::VerifyOptions o;
+  o.outputDir = std::string(TS_ORACLE_OUT_DIR) + "/unknown_pictures";  // the failures shown on purpose below
   o.render.labels = false;
   o.render.exemptTextures = sc.unknownPictures;
   ref::VerifyResult r = ref::verifyImage(truth, sc.frame, o);
