@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -23,6 +22,11 @@ using Json = nlohmann::ordered_json;
 [[noreturn]] void fail(const std::string& where, const std::string& what) {
   throw ts::Error("sidecar: " + where + ": " + what);
 }
+// A texture no generator remakes (an unknown name, not bad params): the one
+// failure SidecarReadOptions::unknownPictures turns into a placeholder.
+struct UnknownGenerator : ts::Error {
+  using ts::Error::Error;
+};
 
 // Member lookup: nullptr if absent (or `v` is not an object).
 const Json* find(const Json& v, const std::string& key) {
@@ -193,7 +197,7 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
     t.params = p;  // keep the recorded key
     return t;
   }
-  throw ts::Error("sidecar: unknown texture generator '" + name +
+  throw UnknownGenerator("sidecar: unknown texture generator '" + name +
                   "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, environment_map, file, multitexture_*)");
 }
 
@@ -281,7 +285,7 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
     // top frame's): a grey placeholder of the recorded size (faces or slices
     // stacked), listed so that its pixels are exempt.  Else the read fails.
     const auto unknownPicture = [&](const std::string& at, const std::string& why) {
-      if (!(ro.unknownPictures && nesting == 0)) fail(at, why);
+      if (!(ro.unknownPictures && nesting == 0)) throw UnknownGenerator("sidecar: " + at + ": " + why);
       const int w = integer(member(t, "width", where), where + ".width", 1, ts::kMaxImageDimension);
       int h = integer(member(t, "height", where), where + ".height", 1, ts::kMaxImageDimension);
       if (const Json* c = find(t, "cube"); c && boolean(*c, where + ".cube")) h *= 6;
@@ -299,15 +303,17 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
       // nested frame that shows an unknown picture is itself one.
       if (nesting >= kMaxNesting) fail(where + ".rendered_from", "frames nested deeper than " + std::to_string(kMaxNesting));
       SidecarScene inner;
-      std::string innerError;
+      std::string unknown;  // the nested frame shows a texture no generator remakes
+      const auto withoutPrefix = [](std::string what) { return what.rfind("sidecar: ", 0) == 0 ? what.substr(9) : what; };
       try {
         readFrame(object(*rf, where + ".rendered_from"), baseDir, nesting + 1, SidecarReadOptions{}, inner);
+      } catch (const UnknownGenerator& e) {
+        unknown = withoutPrefix(e.what());
       } catch (const ts::Error& e) {
-        innerError = e.what();
-        if (innerError.rfind("sidecar: ", 0) == 0) innerError = innerError.substr(9);
+        fail(where + ".rendered_from", withoutPrefix(e.what()));
       }
-      if (!innerError.empty()) {
-        unknownPicture(where + ".rendered_from", innerError);
+      if (!unknown.empty()) {
+        unknownPicture(where + ".rendered_from", unknown);
       } else {
         d.name = name, d.params = params;
         const ts::Frame& nf = inner.frame;
@@ -320,9 +326,10 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
     } else {
       try {
         d = remakeTexture(name, params, baseDir);
-      } catch (const ts::Error& e) {
-        if (std::string(e.what()).find("unknown texture generator") == std::string::npos) fail(where, e.what());
+      } catch (const UnknownGenerator& e) {
         unknownPicture(where, e.what());
+      } catch (const ts::Error& e) {
+        fail(where, e.what());
       }
     }
     if (const Json* w = find(t, "width"))

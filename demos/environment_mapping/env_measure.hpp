@@ -119,15 +119,6 @@ inline std::map<std::string, TexelShape> texelShape(int param, int faceTexels, c
 }
 
 // ---- pictures (ts::Image, row 0 at the top) -------------------------------
-inline ts::Image colourImage(const envmap::Pixels& p) {
-  ts::Image img(p.w, p.h);
-  for (int y = 0; y < p.h; ++y)
-    for (int x = 0; x < p.w; ++x) {
-      const glm::vec4 c = p.at(x, p.h - 1 - y);
-      img.set(x, y, envmap::toRgba(c.a > 0.5f ? glm::dvec3(c) : kBackground));
-    }
-  return img;
-}
 // The reference read-back (directions) shown as the world's colours there.
 inline ts::Image referenceImage(const envmap::Pixels& p) {
   ts::Image img(p.w, p.h);

@@ -25,7 +25,6 @@ using ts::multitex::inTree;
 using ts::multitex::lightAt;
 inline ts::Image treeTexture() { return ts::multitex::treeImage(); }
 inline ts::Image lightMap(int n) { return ts::multitex::lightMapImage(n); }
-inline ts::Image spotMap() { return ts::multitex::spotImage(); }
 // The base x the per-pixel lighting for a w x w readback (row 0 the top).
 inline ts::Image perPixelLit(const ts::Image& base, int w) {
   ts::Image img = ts::multitex::perPixelLitImage(base, w);
@@ -49,7 +48,6 @@ inline glm::dvec2 glossLighting(double x, double y) {
   }
   return {diff, spec};
 }
-inline ts::Image glossMap(int w, int h) { return ts::multitex::glossImage(w, h); }
 
 // ---- AB + CD ------------------------------------------------------------
 // Four 64 x 64 textures with AB + CD <= 1; the CPU's AB + CD (or (AB + C) D),

@@ -291,6 +291,24 @@ TEST(Sidecar, UnknownPicturesAreExemptAndNothingElse) {
   EXPECT_EQ(ref::verifyImage(wrong, sc.frame, o).invalid, 0);
   wrong.set(50, 16, {0, 0, 255, 255});
   EXPECT_EQ(ref::verifyImage(wrong, sc.frame, o).invalid, 1);
+  // Only an unknown generator is let through: a known one with bad params is
+  // still refused, read leniently or not.
+  ts::Frame bad = f;
+  bad.textures[0].name = "checkerboard";
+  bad.textures[0].params = {{"size", "64"}};
+  EXPECT_THROW(ref::readSidecar(ts::sidecarJson(bad, {}), lenient), ts::Error);
+  // A nested frame showing the picture is itself an unknown picture.
+  ts::Frame outer;
+  outer.width = 64, outer.height = 32;
+  ts::TextureDesc nested;
+  nested.name = "a_pass";
+  nested.image = std::make_shared<ts::Image>(ref::Reference(f, ro).image());
+  nested.renderedFrom = std::make_shared<const ts::Frame>(f);
+  outer.addTexture(nested);
+  outer.panels.push_back(p);
+  outer.panels[0].batches = {shown};
+  EXPECT_THROW(ref::readSidecar(ts::sidecarJson(outer, {})), ts::Error);
+  EXPECT_EQ(ref::readSidecar(ts::sidecarJson(outer, {}), lenient).unknownPictures, std::vector<int>{0});
 }
 
 TEST(Sidecar, UnknownTextureNameIsAClearError) {
