@@ -1256,6 +1256,10 @@ class XDemo {
   // `tag` names the captures.  False: the run failed (why()).
   bool look(char k, const std::string& tag, MarkLook* r) {
     r->key = k;
+    // A measurement still out (the first one, or the one the pane's opening
+    // asks for at the narrower figure) would print its state after the key:
+    // the key is pressed once none is.
+    if (!settle()) return false;
     if (!capture(tag + ".before.png", &r->before)) return false;
     const size_t states = paneReport(out(), state_.opts).states;
     state_.opts.handleKey(k);  // the state the key makes, as the window's handler does
@@ -1394,6 +1398,25 @@ class XDemo {
           return false;
         },
         "a frame after the pointer moved");
+  }
+  // Waits for a frame drawn after now with no measurement out (the frame
+  // log's "frame T MEASURING PROGRESS"): every state asked for so far is
+  // measured and printed.
+  bool settle() {
+    const double t = steadyNow();
+    pointer_ = pointer_ == 4 ? 6 : 4;  // a motion event: the window draws a frame
+    if (!x({"xdotool", "mousemove", "--window", window_, std::to_string(pointer_), std::to_string(pointer_)}))
+      return false;
+    return waitFor(
+        [&] {
+          std::istringstream in(readFile(logPath_));
+          double when = 0;
+          int measuring = 1;
+          for (std::string l; std::getline(in, l);)
+            if (std::sscanf(l.c_str(), "frame %lf %d", &when, &measuring) == 2 && when >= t && measuring == 0) return true;
+          return false;
+        },
+        "a frame with no measurement out");
   }
   // The screen as a PNG in the case's folder, and the marked pixels in the pane.
   bool capture(const std::string& name, long* marked) {
