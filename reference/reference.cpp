@@ -483,6 +483,8 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
         if (c.slack < 0) {  // reads an edge of a nested frame's picture
           c.kind = Candidate::Kind::Exempt;
           c.why = Exempt::Edge;
+        } else if (c.texture >= 0) {  // a remade picture GL may round its own way (TextureDesc::texelSlack)
+          c.slack = std::max(c.slack, textures_[size_t(c.texture)].desc().texelSlack / 255.0f);
         }
         if (volumeIndex >= 0) {  // the position jitter in r: slices per pixel
           auto rAt = [&](double u, double v) { return P.P[kR].at(u, v) / P.P[kQ].at(u, v); };

@@ -84,8 +84,9 @@ struct Candidate {
   // (s, t, r); `texture` is then its first slice.  -1: a 2D texture.
   int volume = -1;
   double r = 0;
-  // A nested frame's picture (issue 26): how far GL's texels may lie from
-  // the reference's, added to both ends of the legal ranges.
+  // A nested frame's picture (issue 26), or a remade picture GL may round
+  // its own way (TextureDesc::texelSlack, a DXT1 decode): how far GL's
+  // texels may lie from the reference's, added to both ends of the legal ranges.
   float slack = 0;
   // Unit 1 (issue 29, Batch::texture1): its texture (index into
   // Reference::textures(), -1 = off), read at (s, t) like unit 0, its LOD

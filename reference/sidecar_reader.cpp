@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/core/error.hpp"
+#include "common/core/dxt1_pictures.hpp"
 #include "common/core/env_maps.hpp"
 #include "common/core/multitexture_textures.hpp"
 #include "common/core/sidecar.hpp"
@@ -190,6 +191,7 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
   if (name == "environment_map") return ts::envmaps::environmentMapFromParams(p);  // issue 26: common/core/env_maps.hpp
   ts::TextureDesc made;
   if (ts::multitex::remake(name, p, &made)) return made;  // issue 29: the multitexture demo's textures
+  if (ts::dxt1::remake(name, p, &made)) return made;      // issue 29: the DXT1 pictures (common/core/dxt1_pictures.hpp)
   if (name == "file") {
     std::string path = strParam(p, "path", name);
     if (!baseDir.empty() && !path.empty() && path[0] != '/') path = baseDir + "/" + path;
@@ -198,7 +200,7 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
     return t;
   }
   throw UnknownGenerator("sidecar: unknown texture generator '" + name +
-                  "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, environment_map, file, multitexture_*)");
+                  "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, environment_map, file, multitexture_*, dxt1_picture)");
 }
 
 constexpr int kMaxNesting = 4;  // frames inside frames: a texture's rendered_from, at most this deep

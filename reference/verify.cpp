@@ -125,7 +125,7 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
           r.volume(c.volume).legal(c.s, c.t, c.r, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter, o.linearEpsTexels + jitter, &out);
         else
           t.legal(c.s, c.t, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter, o.linearEpsTexels + jitter, &out);
-        if (c.slack > 0)  // a nested frame's picture (issue 26)
+        if (c.slack > 0)  // a nested frame's picture (issue 26), or TextureDesc::texelSlack
           for (size_t k = first; k < out.size(); ++k)
             for (size_t ch = 0; ch < 4; ++ch) out[k].lo[ch] -= c.slack, out[k].hi[ch] += c.slack;
         if (c.env != GL_REPLACE) {  // the environment's table over the boxes (exact for GL_MODULATE as before)

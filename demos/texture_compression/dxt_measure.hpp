@@ -11,61 +11,14 @@
 #include <unordered_map>
 #include <vector>
 
-#include "common/core/relief_maps.hpp"
+#include "common/core/dxt1_pictures.hpp"
 #include "common/core/textures.hpp"
 #include "dxt_math.hpp"
 
 namespace dxt {
-enum Picture : int { kPhoto, kChecker, kNormals, kPictureCount };
-inline const char* const kPictureNames[] = {"photo", "checker", "normals"};
-
-// 512 x 512: the parallax demo's bricks (a photograph's variety of colour),
-// a checkerboard, and a normal map made from the bricks' heights
-// (n = normalize(-4 dh/dx, -4 dh/dy, 1), stored as 127.5 (n + 1)).
-inline ts::Image picture(int which) {
-  if (which == kChecker) return *ts::checkerboard(512, 16).image;
-  const ts::relief::Relief rel = ts::relief::makeRelief("bricks");
-  if (which == kPhoto) return rel.albedo[0];
-  const ts::Image& h = rel.height[0];
-  ts::Image out(h.width, h.height);
-  auto at = [&](int x, int y) { return h.at((x + h.width) % h.width, (y + h.height) % h.height).r / 255.0; };
-  for (int y = 0; y < h.height; ++y)
-    for (int x = 0; x < h.width; ++x) {
-      const glm::dvec3 n = glm::normalize(glm::dvec3(-4 * (at(x + 1, y) - at(x - 1, y)), -4 * (at(x, y + 1) - at(x, y - 1)), 1.0));
-      auto u8 = [](double v) { return uint8_t(std::lround(std::clamp(127.5 * (v + 1.0), 0.0, 255.0))); };
-      out.set(x, y, {u8(n.x), u8(n.y), u8(n.z), 255});
-    }
-  return out;
-}
-
-// Every block turned to the 3-colour mode (c0 <= c1: the palette's third
-// colour the midpoint, the fourth black), its indices chosen again.
-inline std::vector<Block> threeColour(const std::vector<Block>& blocks, const ts::Image& img) {
-  std::vector<Block> out = blocks;
-  for (size_t k = 0; k < out.size(); ++k) {
-    Block& b = out[k];
-    if (b.c0 > b.c1) std::swap(b.c0, b.c1);
-    assign(&b, blockTexels(img, int(k) % blocksAcross(img.width), int(k) / blocksAcross(img.width)));
-  }
-  return out;
-}
-
-// 256 x 256 at 16 bits, the memory of 512 x 512 in DXT1: each 2x2 averaged,
-// quantised to RGB565, then magnified back to 512 x 512 (bilinear).
-inline ts::Image rgb565Half(const ts::Image& img) {
-  ts::Image half(std::max(1, img.width / 2), std::max(1, img.height / 2));
-  for (int y = 0; y < half.height; ++y)
-    for (int x = 0; x < half.width; ++x) {
-      glm::dvec3 s(0.0);
-      for (int k = 0; k < 4; ++k) {
-        const ts::Rgba c = img.at(std::min(2 * x + k % 2, img.width - 1), std::min(2 * y + k / 2, img.height - 1));
-        s += glm::dvec3(c.r, c.g, c.b) / 4.0;
-      }
-      const glm::ivec3 q = unpack565(pack565(s));
-      half.set(x, y, {uint8_t(q.r), uint8_t(q.g), uint8_t(q.b), 255});
-    }
-  return ts::resizeBilinear(half, img.width, img.height);
-}
+// The pictures (photo-like bricks, a checkerboard, a normal map), the
+// 3-colour mode and RGB565 at half the size: common/core/dxt1_pictures.hpp,
+// where the sidecar's generator "dxt1_picture" remakes them too.
 
 // ---- texture memory (seed 001 ¶21–24) -----------------------------------
 // A clipmap keeps each mip level of a size x size texture at most clip x clip.

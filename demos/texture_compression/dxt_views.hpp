@@ -17,7 +17,7 @@ namespace dxt {
 // What measure() found, for the views.
 struct Result {
   int picture = kPhoto;
-  bool threeColour = false, glDecode = false;
+  bool threeColour = false, glDecode = false, fromFile = false;
   ts::Image original, decoded, error;  // decoded: GL's when it has S3TC, else the CPU's
   ts::Image rgb565;                    // the same memory at 16 bits: half the size, magnified back
   double rmsDxt1 = 0, rmsRgb565 = 0;   // each against the original
@@ -32,10 +32,14 @@ namespace L = ts::layout;
 
 // Shown minified (512 texels in ~300 pixels) with GL_LINEAR: GL_NEAREST would
 // pick between neighbouring texels at ties, where rasterizers round apart.
-inline int imageTexture(ts::Frame& f, const ts::Image& img, const std::string& what, ts::gl::CallList calls = nullptr,
-                        GLenum filter = GL_LINEAR) {
-  ts::TextureDesc t = ts::renderedImageTexture(img, "texture_compression", what, "texture_compression");
+// A texture "dxt1_picture" the sidecar remakes (dxt1_pictures.hpp); a
+// student's file, a picture of the demo's own.
+inline int imageTexture(ts::Frame& f, const Result& m, Show show, Crop crop, const ts::Image& img, const std::string& what,
+                        ts::gl::CallList calls = nullptr, GLenum filter = GL_LINEAR) {
+  ts::TextureDesc t = m.fromFile ? ts::renderedImageTexture(img, "texture_compression", what, "texture_compression")
+                                 : pictureTexture(m.picture, m.threeColour, show, crop, img);
   t.minFilter = t.magFilter = filter;
+  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
   t.renderedBy = std::move(calls);  // GL's own work behind the picture, listed first
   return f.addTexture(t);
 }
@@ -49,9 +53,10 @@ inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const std
                                  std::string(mode) + (m.glDecode ? " (GL's decode)" : " (CPU decode: no S3TC here)"),
                                  "|error| x 8", "block (" + std::to_string(bx) + ", " + std::to_string(by) + ") and its palette"};
   const ts::Image* shown[3] = {&m.original, &m.decoded, &m.error};
+  const Show what[3] = {Show::Original, m.glDecode ? Show::DecodedGl : Show::DecodedCpu, Show::Error};
   for (int k = 0; k < 3; ++k)
     f.panels.push_back(L::texturePanel("image_" + std::to_string(k), cells[size_t(k)].picture,
-                                       imageTexture(f, *shown[k], titles[k], k == 1 ? m.calls : nullptr)));
+                                       imageTexture(f, m, what[k], {}, *shown[k], titles[k], k == 1 ? m.calls : nullptr)));
   // The block, 8 x 8 blocks around it magnified, outlined; its palette below.
   // (A picture smaller than 32 texels a side is shown whole.)
   const int zw = std::min(32, m.decoded.width), zh = std::min(32, m.decoded.height);
@@ -63,7 +68,7 @@ inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const std
   const int sw = zr.h / 6;
   zr.h -= sw + 4;
   zr.w = zr.h, zr.x = cells[3].picture.x + (cells[3].picture.w - zr.w) / 2;
-  ts::Panel z = L::texturePanel("block_zoom", zr, imageTexture(f, zoom, "the block magnified", nullptr, GL_NEAREST));
+  ts::Panel z = L::texturePanel("block_zoom", zr, imageTexture(f, m, what[1], {x0, y0, zw, zh}, zoom, "the block magnified", nullptr, GL_NEAREST));
   const float ux = float(bx * 4 - x0) / float(zw), uy = 1.0f - float(by * 4 - y0) / float(zh);
   const float bw = 4.0f / float(zw), bh = 4.0f / float(zh);
   z.batches.push_back(ts::lineLoop({{ux, uy}, {ux + bw, uy}, {ux + bw, uy - bh}, {ux, uy - bh}}, L::kAmber, 2.0f, "block_outline"));
@@ -100,6 +105,7 @@ inline void buildEqualMemory(ts::Frame& f, const Result& m, int bx, int by, cons
   const int n = std::min({64, m.original.width, m.original.height});
   const int x0 = std::clamp(bx * 4 + 2 - n / 2, 0, m.original.width - n), y0 = std::clamp(by * 4 + 2 - n / 2, 0, m.original.height - n);
   const ts::Image* shown[3] = {&m.original, &m.decoded, &m.rgb565};
+  const Show what[3] = {Show::Original, m.glDecode ? Show::DecodedGl : Show::DecodedCpu, Show::Rgb565};
   char rms[2][64];
   std::snprintf(rms[0], sizeof rms[0], "RMS %.2f", m.rmsDxt1);
   std::snprintf(rms[1], sizeof rms[1], "RMS %.2f", m.rmsRgb565);
@@ -113,7 +119,7 @@ inline void buildEqualMemory(ts::Frame& f, const Result& m, int bx, int by, cons
     const ts::Rect& c = cells[size_t(k)].picture;
     const int side = std::max(n, std::min(c.w, c.h) / n * n);
     f.panels.push_back(L::texturePanel("equal_" + std::to_string(k), L::centred(c, side, side),
-                                       imageTexture(f, crop, titles[k], k == 1 ? m.calls : nullptr, GL_NEAREST)));
+                                       imageTexture(f, m, what[k], {x0, y0, n, n}, crop, titles[k], k == 1 ? m.calls : nullptr, GL_NEAREST)));
     L::caption(f, cells[size_t(k)].above, titles[k], L::kWhite, cells[size_t(k)].scale);
   }
   L::caption(f, {cells[0].below.x0, cells[0].below.y0, cells[2].below.x1, cells[0].below.y1}, numbers, L::kAmber,

@@ -176,9 +176,7 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
     out.glDecode = g.supported && g.compressed && cpuDecode_ == 0;
     out.original = img, out.blocks = blocks, out.decoded = out.glDecode ? g.decoded : cpu;
     out.name = file ? file_.path().substr(file_.path().find_last_of('/') + 1) : kPictureNames[p];
-    out.error = ts::Image(img.width, img.height);
-    for (size_t k = 0; k < img.pixels.size(); ++k)
-      out.error.pixels[k] = k % 4 == 3 ? 255 : uint8_t(std::min(255, 8 * std::abs(int(img.pixels[k]) - int(cpu.pixels[k]))));
+    out.error = errorImage(img, cpu), out.fromFile = file;
     const double texels = double(img.width) * img.height, bits = 8.0 * double(bytes(blocks).size()) / texels;
     ms.push_back({"s3tc_supported", g.supported ? 1.0 : 0.0, "GL_EXT_texture_compression_s3tc (renderer: " + ts::gl::rendererString() + ")"});
     ms.push_back({"gl_decode_shown", out.glDecode ? 1.0 : 0.0, "1: the picture shows GL's decode; 0: the CPU's (--decode cpu, or no S3TC)"});

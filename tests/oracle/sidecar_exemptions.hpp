@@ -24,7 +24,7 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 21> kFiguresDrawnFromGlRenders = {
+inline constexpr std::array<const char*, 18> kFiguresDrawnFromGlRenders = {
     // --footprints: the left panel is the picture GL drew, inspected
     "inspect_vi2_footprints", "inspect_aniso_footprint",
     "vi7_jitter", "jitter_zone_plate", "parallax_modes", "parallax_error_band", "parallax_step",
@@ -38,8 +38,6 @@ inline constexpr std::array<const char*, 21> kFiguresDrawnFromGlRenders = {
     "env_cube_sphere", "env_flat_mirror",
     // bump_mapping: R, emboss and DOT3 are pictures its measure() draws
     "bump_two_lights", "bump_seed002", "bump_normals", "bump_methods", "bump_emboss_overhead",
-    // texture_compression: GL's decode of the DXT1 blocks (glGetTexImage), and the picture and error beside it
-    "dxt1_blocks", "dxt1_normal_map", "dxt1_equal_memory",
     // filter_zoo: each method's picture is a GL render (GL's filters) or a CPU
     // computation (ripmap, SAT, probe line, EWA, the exact integral) made by measure()
     "filter_zoo_azimuth", "filter_zoo_supports", "mip_kernels",

@@ -254,3 +254,48 @@ TEST(FigureList, HasTheQuadDistortionFigures) {
   EXPECT_NE(std::find(ids.begin(), ids.end(), "vi1_quad_variants"), ids.end());
 }
 }  // namespace
+
+// The DXT1 figures' decode (issue 29): the sidecar remakes it with dxt1.hpp's
+// integer palette, GL decodes with its own rounding of the extension's
+// fractions (TextureDesc::texelSlack = 1 level).  Described as the picture
+// before compression, the same panel fails: the check sees the compression.
+TEST(DxtFigure, TheDecodeFromTheSidecarAndAWrongOne) {
+  std::vector<FigureCase> all = allFigures();
+  auto it = std::find_if(all.begin(), all.end(), [](const FigureCase& c) { return c.spec.id == "dxt1_blocks"; });
+  ASSERT_NE(it, all.end());
+  const Renders& rr = rendersOf(*it);
+  ts::SidecarInfo info;
+  info.figureId = it->spec.id;
+  info.demo = it->scene;
+  const std::string json = ts::sidecarJson(rr.withLabels.frame, info);
+  auto verify = [&](const ts::Frame& f, const std::string& name) {
+    ref::VerifyOptions o = oracle::options(name, "figures");
+    o.render.labels = false;
+    o.writeOnFailure = false;
+    return ref::verifyImage(rr.plain, f, o);
+  };
+  ref::SidecarScene sc = ref::readSidecar(json);
+  int decoded = -1;
+  for (size_t k = 0; k < sc.frame.textures.size(); ++k)
+    for (const auto& [key, v] : sc.frame.textures[k].params)
+      if (key == "show" && v == "decoded_gl" && decoded < 0) decoded = int(k);
+  ASSERT_GE(decoded, 0) << "no texture of GL's decode in the sidecar";
+  EXPECT_EQ(sc.frame.textures[size_t(decoded)].texelSlack, 1.0f);
+  const ref::VerifyResult right = verify(sc.frame, "dxt1_blocks.sidecar_decode");
+  EXPECT_EQ(right.invalid, 0) << right.summary();
+  ts::Frame exact = sc.frame;  // the integer palette taken as GL's
+  exact.textures[size_t(decoded)].texelSlack = 0;
+  const ref::VerifyResult strict = verify(exact, "dxt1_blocks.no_slack");
+  ts::Frame wrong = sc.frame;  // the picture before compression
+  std::vector<std::pair<std::string, std::string>> p = wrong.textures[size_t(decoded)].params;
+  for (auto& [key, v] : p)
+    if (key == "show") v = "original";
+  const ts::TextureDesc original = ref::remakeTexture("dxt1_picture", p, TS_SOURCE_DIR);
+  wrong.textures[size_t(decoded)].image = original.image;
+  wrong.textures[size_t(decoded)].texelSlack = 0;
+  const ref::VerifyResult bad = verify(wrong, "dxt1_blocks.uncompressed");
+  EXPECT_GT(bad.invalid, 1000) << bad.summary();
+  std::printf("[oracle] dxt1_blocks' decode from the sidecar: %ld invalid of %ld; with no rounding freedom %ld; "
+              "described as the uncompressed picture %ld\n",
+              right.invalid, right.checked, strict.invalid, bad.invalid);
+}

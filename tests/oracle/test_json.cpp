@@ -393,3 +393,26 @@ TEST(Sidecar, RoundTripOfTheMultitextureState) {
   EXPECT_EQ(count("\"tex1\""), 3u);            // the first batch's vertices only
   EXPECT_EQ(count("\"blend_func\""), 2u);
 }
+
+// The DXT1 pictures' generator (issue 29): every param is checked, and only
+// GL's decode carries the rounding freedom.
+TEST(Sidecar, Dxt1PictureGenerator) {
+  using P = std::vector<std::pair<std::string, std::string>>;
+  const P good = {{"picture", "checker"}, {"three_colour", "0"}, {"show", "decoded_gl"}, {"crop", "8,16,32,32"}};
+  const ts::TextureDesc t = ref::remakeTexture("dxt1_picture", good, "");
+  ASSERT_TRUE(t.image);
+  EXPECT_EQ(t.image->width, 32);
+  EXPECT_EQ(t.image->height, 32);
+  EXPECT_EQ(t.texelSlack, 1.0f);
+  P cpu = good;
+  cpu[2].second = "decoded_cpu";
+  EXPECT_EQ(ref::remakeTexture("dxt1_picture", cpu, "").texelSlack, 0.0f);
+  for (const auto& [key, value] : P{{"picture", "marble"}, {"three_colour", "2"}, {"show", "decoded"}, {"crop", "500,0,32,32"},
+                                    {"crop", "0,0,0,4"}, {"crop", "1,2,3"}, {"crop", "1,2,3,4x"}}) {
+    P p = good;
+    for (auto& kv : p)
+      if (kv.first == key) kv.second = value;
+    EXPECT_THROW(ref::remakeTexture("dxt1_picture", p, ""), ts::Error) << key << " = " << value;
+  }
+  EXPECT_THROW(ref::remakeTexture("dxt1_picture", P{{"picture", "photo"}}, ""), ts::Error);  // params missing
+}
