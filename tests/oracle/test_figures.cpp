@@ -243,7 +243,25 @@ std::string caseName(const ::testing::TestParamInfo<FigureCase>& i) {
   return n;
 }
 
-INSTANTIATE_TEST_SUITE_P(Registered, Figure, ::testing::ValuesIn(allFigures()), caseName);
+// TS_FIGURE_SHARD=k/n (tests/oracle/CMakeLists.txt): this process checks
+// the figures whose place in the registry is k modulo n, each figure whole
+// (rendered once, all its checks), so CTest runs the shards on both cores.
+std::vector<FigureCase> figuresOfThisShard() {
+  std::vector<FigureCase> all = allFigures();
+  const char* e = std::getenv("TS_FIGURE_SHARD");
+  if (!e || !*e) return all;
+  int k = -1, n = 0;
+  char tail = 0;
+  if (std::sscanf(e, "%d/%d%c", &k, &n, &tail) != 2 || n < 1 || k < 0 || k >= n) {
+    std::fprintf(stderr, "TS_FIGURE_SHARD: '%s' is not k/n with 0 <= k < n\n", e);
+    std::exit(2);
+  }
+  std::vector<FigureCase> mine;
+  for (size_t i = 0; i < all.size(); ++i)
+    if (int(i % size_t(n)) == k) mine.push_back(all[i]);
+  return mine;
+}
+INSTANTIATE_TEST_SUITE_P(Registered, Figure, ::testing::ValuesIn(figuresOfThisShard()), caseName);
 
 // The registry must hold VI.1's book figure and its variants (the figures the
 // oracle was written for); others are checked as they are added.
