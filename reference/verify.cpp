@@ -58,9 +58,25 @@ std::string failureDir(const std::string& requested) {
 }
 
 namespace {
+// What a blended candidate's `below` holds, computed once per pixel: the
+// legal colours from candidate `below` on, widened by half a step (GL
+// stored them in 8 bits), or why they are exempt.  A mesh's second pass
+// (GL_ONE, GL_ONE) over its first stacks many layers near shared vertices
+// and edges, each blended candidate's `below` a chain holding the blended
+// ones before it: followed afresh every time, the work grows with the
+// number of paths through the layers; kept here by candidate index, it
+// grows with the chain's length.  A pure function of the index within one
+// Reference, so what is legal does not change.
+struct BelowMemo {
+  std::vector<std::pair<int, size_t>> index;  // candidate -> slot
+  std::vector<std::vector<Box>> boxes;
+  std::vector<Exempt> why;
+  size_t used = 0;
+  void clear() { index.clear(), used = 0; }
+};
 // Issue 29: the legal colours of a pixel from candidate h on (a blended
 // candidate's `below`), as legalAt.
-void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Box>* outp, Exempt* why);
+void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Box>* outp, Exempt* why, BelowMemo* memo);
 
 // src * srcFactor + dst * dstFactor per channel over boxes: multilinear in
 // the colours, so the extremes lie on the corners (alpha: the framebuffer's).
@@ -86,11 +102,32 @@ Box blendBox(GLenum sf, GLenum df, const Box& s, const Box& d) {
 }  // namespace
 
 void legalAt(const Reference& r, int x, int y, const VerifyOptions& o, std::vector<Box>* outp, Exempt* why) {
-  legalFrom(r, r.head(x, y), o, outp, why);
+  thread_local BelowMemo memo;  // one pixel's: candidate indices are the pixel's own
+  memo.clear();
+  legalFrom(r, r.head(x, y), o, outp, why, &memo);
 }
 
 namespace {
-void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Box>* outp, Exempt* why) {
+// The legal colours beneath a blended candidate: what the pixel held from
+// candidate `below` on, GL's 8-bit storage of it (half a step either way);
+// *why != None: exempt.  Memoised per pixel (BelowMemo).
+const std::vector<Box>& legalBelow(const Reference& r, int below, const VerifyOptions& o, Exempt* why, BelowMemo* memo) {
+  for (const auto& [c, slot] : memo->index)
+    if (c == below) return *why = memo->why[slot], memo->boxes[slot];
+  std::vector<Box> held;
+  Exempt heldWhy;
+  legalFrom(r, below, o, &held, &heldWhy, memo);
+  for (Box& d : held)  // GL stored what the pixel held in 8 bits: half a step either way
+    for (size_t k = 0; k < 3; ++k) d.lo[k] = std::max(0.0f, d.lo[k] - 0.5f / 255), d.hi[k] = std::min(1.0f, d.hi[k] + 0.5f / 255);
+  const size_t slot = memo->used++;  // slots are reused across pixels (their vectors keep their capacity)
+  if (memo->boxes.size() <= slot) memo->boxes.emplace_back(), memo->why.emplace_back();
+  memo->boxes[slot] = std::move(held), memo->why[slot] = heldWhy;
+  memo->index.push_back({below, slot});
+  *why = heldWhy;
+  return memo->boxes[slot];
+}
+
+void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Box>* outp, Exempt* why, BelowMemo* memo) {
   std::vector<Box>& out = *outp;
   out.clear();
   *why = Exempt::None;
@@ -98,8 +135,6 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
     out.push_back(widen(r.clearColour(), 0.0));
     return;
   }
-  std::vector<Box> below;  // a blended candidate's `below`: the same for most of the chain, computed once
-  int belowOf = -2;
   for (int i = h; i >= 0; i = r.candidate(i).next) {
     const Candidate& c = r.candidate(i);
     const size_t start = out.size();  // this candidate's boxes begin here
@@ -155,17 +190,12 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
       // followed (its chain may be deep, a mesh's layers), the alpha left free.
       for (size_t k = start; k < out.size(); ++k) out[k].lo[3] = 0.0f, out[k].hi[3] = 1.0f;
     } else if (c.blended) {  // issue 29: this fragment's boxes blended over what the pixel held
-      if (c.below != belowOf) {
-        Exempt belowWhy;
-        legalFrom(r, c.below, o, &below, &belowWhy);
-        if (belowWhy != Exempt::None) {
-          *why = belowWhy;
-          out.clear();
-          return;
-        }
-        for (Box& d : below)  // GL stored what the pixel held in 8 bits: half a step either way
-          for (size_t k = 0; k < 3; ++k) d.lo[k] = std::max(0.0f, d.lo[k] - 0.5f / 255), d.hi[k] = std::min(1.0f, d.hi[k] + 0.5f / 255);
-        belowOf = c.below;
+      Exempt belowWhy;
+      const std::vector<Box>& below = legalBelow(r, c.below, o, &belowWhy, memo);  // valid until the next legalBelow
+      if (belowWhy != Exempt::None) {
+        *why = belowWhy;
+        out.clear();
+        return;
       }
       const std::vector<Box> src(out.begin() + std::ptrdiff_t(start), out.end());
       out.resize(start);

@@ -17,7 +17,8 @@
 // a fragment whose legal alpha surely fails it (one that may fail leaves
 // what was beneath legal too); a batch blended with its own factors
 // (Batch::blendSrc / blendDst) is checked: its boxes blended
-// with the legal colours of what the pixel held (Candidate::below).
+// with the legal colours of what the pixel held (Candidate::below; derived
+// once per pixel and candidate, however many blended layers stand on it).
 //
 // On failure the rendered image, the reference image and an error mask (red:
 // invalid; blue: exempt; grey: checked against both sides of an edge) are

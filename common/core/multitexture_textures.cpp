@@ -128,6 +128,34 @@ Image abcdCpuImage(const std::vector<Image>& t, int w, bool framebufferOnly) {
   return out;
 }
 
+Image pearSkinImage() {
+  Image t(128, 128);
+  for (int j = 0; j < 128; ++j)
+    for (int i = 0; i < 128; ++i) {
+      const bool speck = ((i * 37 + j * 91) % 53) < 3;
+      const bool band = j > 70 && j < 84;
+      const uint8_t g = speck || band ? 25 : 150;
+      t.set(i, j, speck ? Rgba{120, 90, 30, g} : Rgba{uint8_t(170 + j / 4), 190, 60, g});
+    }
+  return t;
+}
+Image pearGlossImage() {
+  Image t = pearSkinImage();
+  for (size_t k = 0; k < t.pixels.size(); k += 4) t.pixels[k] = t.pixels[k + 1] = t.pixels[k + 2] = t.pixels[k + 3], t.pixels[k + 3] = 255;
+  return t;
+}
+Image pearSkyImage() {
+  Image t(128, 128);
+  for (int j = 0; j < 128; ++j)
+    for (int i = 0; i < 128; ++i) {
+      const double x = (i + 0.5) / 64 - 1, y = (j + 0.5) / 64 - 1;
+      const bool window = x > 0.1 && x < 0.5 && y > 0.25 && y < 0.65;
+      const uint8_t s = u8(0.1 + 0.3 * (y + 1) / 2);
+      t.set(i, j, window ? Rgba{255, 250, 235, 255} : Rgba{uint8_t(s / 2), s, uint8_t(std::min(255, s * 2)), 255});
+    }
+  return t;
+}
+
 TextureDesc treeTexture() { return desc("multitexture_tree", {{"size", "64"}}, treeImage()); }
 TextureDesc bricksTexture() { return desc("multitexture_bricks", {{"size", "128"}}, bricksImage()); }
 TextureDesc lightMapTexture(int n) { return desc("multitexture_light_map", {{"size", std::to_string(n)}}, lightMapImage(n)); }
@@ -163,6 +191,10 @@ TextureDesc abcdCpuTexture(int w, const std::string& what) {
   return desc("multitexture_abcd_cpu", {{"picture", what}, {"size", std::to_string(w)}}, flipped(img));
 }
 
+TextureDesc pearSkinTexture() { return desc("multitexture_pear_skin", {{"size", "128"}}, pearSkinImage()); }
+TextureDesc pearGlossTexture() { return desc("multitexture_pear_gloss", {{"size", "128"}}, pearGlossImage()); }
+TextureDesc pearSkyTexture() { return desc("multitexture_pear_sky", {{"size", "128"}}, pearSkyImage()); }
+
 bool remake(const std::string& name, const std::vector<std::pair<std::string, std::string>>& p, TextureDesc* out) {
   auto param = [&](const char* key) -> std::string {
     for (const auto& [k, v] : p)
@@ -187,6 +219,9 @@ bool remake(const std::string& name, const std::vector<std::pair<std::string, st
     if (k.size() != 1 || k[0] < 'A' || k[0] > 'D') throw Error(name + ": texture must be A, B, C or D");
     return *out = abcdTexture(k[0] - 'A'), true;
   }
+  if (name == "multitexture_pear_skin") return *out = pearSkinTexture(), true;
+  if (name == "multitexture_pear_gloss") return *out = pearGlossTexture(), true;
+  if (name == "multitexture_pear_sky") return *out = pearSkyTexture(), true;
   if (name == "multitexture_abcd_cpu") return *out = abcdCpuTexture(size("size", 1, 2048), param("picture")), true;
   return false;
 }

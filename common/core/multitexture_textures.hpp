@@ -41,6 +41,13 @@ std::vector<Image> abcdImages();
 // picture, each product rounded to 8 bits as the framebuffer stores it;
 // rows as a readback (row 0 at the top).
 Image abcdCpuImage(const std::vector<Image>& t, int w, bool framebufferOnly);
+// The pear's pictures, 128 x 128: t_d a yellow-green skin with speckles, its
+// alpha the gloss t_g (glossy skin 150, dull speckles and a dull band 25);
+// the same gloss as grey (g, g, g, 255: what GL_LUMINANCE8 stores); t_r a
+// sphere map of a sky and a bright window.
+Image pearSkinImage();
+Image pearGlossImage();
+Image pearSkyImage();
 
 // ---- the generators (name "multitexture_<what>") ----------------------------
 // Texture descs without filters or wraps (the caller sets those; the sidecar
@@ -55,6 +62,9 @@ TextureDesc abcdTexture(int k);             // "multitexture_abcd", texture A..D
 // "multitexture_abcd_cpu": AB + CD at w x w (what = "sum"), (AB + C) D
 // ("framebuffer_only"), or |(AB + C) D - (AB + CD)| x 4 ("error_x4").
 TextureDesc abcdCpuTexture(int w, const std::string& what);
+TextureDesc pearSkinTexture();              // "multitexture_pear_skin"
+TextureDesc pearGlossTexture();             // "multitexture_pear_gloss"
+TextureDesc pearSkyTexture();               // "multitexture_pear_sky"
 // The generator `name` with `params` (as the sidecar records them); false
 // when `name` is not one of these.  Throws ts::Error on a bad param.
 bool remake(const std::string& name, const std::vector<std::pair<std::string, std::string>>& params, TextureDesc* out);

@@ -7,7 +7,9 @@
 // map's passes, AB + CD (GL_COMBINE; the multiplying and adding blends,
 // Batch::blendSrc / blendDst; the one-unit path's intermediate buffer a
 // nested frame, TextureDesc::renderedFrom: A, then x B, whose render is the
-// texture the last pass adds).  measure() renders these very Frames
+// texture the last pass adds), the pear (unit 1's own coordinates, Batch::
+// coords1; GL_MODULATE_ADD_ATI; the second pass added with GL_LEQUAL; the
+// figure shows it as a nested frame).  measure() renders these very Frames
 // (Renderer::renderOffscreen) and the figure draws them into its panels.
 #pragma once
 #include <glm/gtc/matrix_transform.hpp>
@@ -256,6 +258,105 @@ inline ts::Panel glossPanel(ts::Frame& f, const ts::Image& base, bool user, int 
   if (what == kSpecularTwice) p.batches.push_back(plus(glossGrid(g, true, "+ g x i_spec again (x 2)")));
   return p;
 }
+// ---- the pear: i = t_d x i_diff + t_g t_r -----------------------------------
+// A lathe (pearProfile), 48 x 32 quads, seen along -z, orthographic.  Per
+// vertex: i_diff (Lambert, a light up-left-front) as the colour; (u, v) for
+// the skin; the sphere-map coordinates of the reflected view direction
+// (what GL_SPHERE_MAP texgen would give, computed here) for t_r.
+struct PearVertex {
+  glm::vec3 p;
+  glm::vec2 uv, sphere;
+  float diffuse;
+};
+inline PearVertex pearVertex(int i, int j) {
+  const double u = i / 48.0, v = j / 32.0, a = 6.283185307179586 * u;
+  const glm::dvec2 c = pearProfile(v), d = (pearProfile(std::min(1.0, v + 1e-3)) - pearProfile(std::max(0.0, v - 1e-3)));
+  const glm::dvec3 p(c.x * std::sin(a), c.y, c.x * std::cos(a));
+  glm::dvec3 n = glm::normalize(glm::dvec3(d.y * std::sin(a), -d.x, d.y * std::cos(a)));
+  if (glm::length(d) < 1e-9) n = {0, v < 0.5 ? -1 : 1, 0};
+  const glm::dvec3 refl = glm::reflect(glm::dvec3(0, 0, -1), n);
+  const double m = 2.0 * std::sqrt(refl.x * refl.x + refl.y * refl.y + (refl.z + 1) * (refl.z + 1));
+  const double lambert = std::max(0.0, glm::dot(n, glm::normalize(glm::dvec3(-0.5, 0.6, 0.7))));
+  return {glm::vec3(p), glm::vec2(u, v), glm::vec2(refl.x / m + 0.5, refl.y / m + 0.5), float(0.15 + 0.7 * lambert)};
+}
+// The mesh as one batch, each of the 32 strips as GL draws it (triangles
+// (v_k, v_k+1, v_k+2)); unit 0 reads (u, v) (skinFirst) or the sphere map's
+// (s, t), unit 1 its own coordinates, the other set (Batch::coords1).
+inline ts::Batch pearMesh(int texture, bool skinFirst, const std::string& role) {
+  ts::Batch b;
+  b.role = role;
+  b.texture = texture;
+  b.coords1 = true;
+  b.depthFunc = GL_LEQUAL;
+  for (int j = 0; j < 32; ++j) {
+    std::vector<ts::Vertex> strip;
+    for (int i = 0; i <= 48; ++i)
+      for (int dj = 1; dj >= 0; --dj) {
+        const PearVertex q = pearVertex(i, j + dj);
+        ts::Vertex v;
+        v.pos = q.p;
+        v.tex = glm::vec4(skinFirst ? q.uv : q.sphere, 0.0f, 1.0f);
+        v.tex1 = glm::vec4(skinFirst ? q.sphere : q.uv, 0.0f, 1.0f);
+        v.color = {q.diffuse, q.diffuse, q.diffuse, 1.0f};
+        strip.push_back(v);
+      }
+    for (size_t k = 0; k + 2 < strip.size(); ++k) b.vertices.insert(b.vertices.end(), {strip[k], strip[k + 1], strip[k + 2]});
+  }
+  return b;
+}
+// The pear's three pictures (GL_LINEAR; the skin and its gloss repeated,
+// the sphere map clamped), the sidecar's generators multitexture_pear_*.
+inline int addPearTexture(ts::Frame& f, ts::TextureDesc d, GLenum wrap) {
+  d.minFilter = d.magFilter = GL_LINEAR;
+  d.wrapS = d.wrapT = wrap;
+  return f.addTexture(d);
+}
+// kCombine3: one pass, two units.  Unit 0: t_d GL_MODULATE i_diff (its alpha
+//   t_g passes on); unit 1: GL_COMBINE, GL_MODULATE_ADD_ATI: t_r x
+//   PREVIOUS's alpha + PREVIOUS.
+// kTwoPasses: pass 1 t_d GL_MODULATE i_diff; pass 2 t_r (unit 0, GL_REPLACE)
+//   x t_g (unit 1, GL_MODULATE), added (GL_ONE, GL_ONE, depth GL_LEQUAL).
+// Over a dark grey, depth test on, z in [-2, 2] (+z nearest).
+inline ts::Panel pearPanel(ts::Frame& f, int method, const std::string& id, ts::Rect viewport) {
+  ts::Panel p = unitPanel(id, viewport);
+  p.projection = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, -2.0f, 2.0f);
+  p.depthTest = true;
+  p.clearColor = {0.12f, 0.12f, 0.14f, 1.0f};
+  const int skin = addPearTexture(f, ts::multitex::pearSkinTexture(), GL_REPEAT);
+  const int sky = addPearTexture(f, ts::multitex::pearSkyTexture(), GL_CLAMP_TO_EDGE);
+  if (method == kCombine3) {
+    ts::Batch b = pearMesh(skin, true, "t_d x i_diff, unit 1: + t_r x t_g (GL_MODULATE_ADD_ATI)");
+    b.texEnv = GL_MODULATE;
+    b.texture1 = sky, b.texEnv1 = GL_COMBINE;
+    b.combine1.rgb = GL_MODULATE_ADD_ATI;
+    b.combine1.source[0] = GL_TEXTURE, b.combine1.source[1] = GL_PREVIOUS, b.combine1.source[2] = GL_PREVIOUS;
+    b.combine1.operand[0] = b.combine1.operand[1] = GL_SRC_COLOR, b.combine1.operand[2] = GL_SRC_ALPHA;
+    p.batches = {b};
+    return p;
+  }
+  ts::Batch skinPass = pearMesh(skin, true, "pass 1: t_d x i_diff");
+  skinPass.texEnv = GL_MODULATE;
+  skinPass.coords1 = false;  // unit 1 off: no second coordinates
+  ts::Batch glossPass = plus(pearMesh(sky, false, "pass 2: + t_r x t_g"));
+  glossPass.texEnv = GL_REPLACE;
+  glossPass.texture1 = addPearTexture(f, ts::multitex::pearGlossTexture(), GL_REPEAT), glossPass.texEnv1 = GL_MODULATE;
+  p.batches = {skinPass, glossPass};
+  return p;
+}
+// The two methods side by side (w x w each), kCombine3 on the left only
+// where GL_ATI_texture_env_combine3 is there (else the dark grey alone).
+inline ts::Frame pearsFrame(int w, bool combine3) {
+  ts::Frame f;
+  f.width = 2 * w, f.height = w;
+  for (int m = kCombine3; m <= kTwoPasses; ++m) {
+    const ts::Rect v{m * w, 0, w, w};
+    ts::Panel p = pearPanel(f, m, m == kCombine3 ? "pear_combine3" : "pear_two_passes", v);
+    if (m == kCombine3 && !combine3) p.batches.clear();
+    f.panels.push_back(p);
+  }
+  return f;
+}
+
 // The four textures in quadrants: A B over C D.
 inline ts::Panel abcdQuadrants(ts::Frame& f, const std::string& id, ts::Rect viewport) {
   ts::Panel p = unitPanel(id, viewport);

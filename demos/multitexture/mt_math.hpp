@@ -66,32 +66,8 @@ inline glm::dvec2 pearProfile(double v) {  // (radius, height)
   const double r = std::sqrt(std::sin(3.14159265358979 * v)) * (0.52 - 0.24 * neck * neck * (3 - 2 * neck));
   return {r, -0.8 + 1.6 * v};
 }
-// 128 x 128 pictures for the pear: t_d a yellow-green skin with speckles,
-// its alpha the gloss t_g (glossy skin, dull speckles and a dull band), the
-// same gloss as a luminance texture, and t_r a sphere map of a sky and a
-// bright window.
-inline ts::Image pearSkin() {
-  ts::Image t(128, 128);
-  for (int j = 0; j < 128; ++j)
-    for (int i = 0; i < 128; ++i) {
-      const bool speck = ((i * 37 + j * 91) % 53) < 3;
-      const bool band = j > 70 && j < 84;
-      const uint8_t g = speck || band ? 25 : 150;
-      t.set(i, j, speck ? ts::Rgba{120, 90, 30, g} : ts::Rgba{uint8_t(170 + j / 4), 190, 60, g});
-    }
-  return t;
-}
-inline ts::Image sphereMapSky() {
-  ts::Image t(128, 128);
-  for (int j = 0; j < 128; ++j)
-    for (int i = 0; i < 128; ++i) {
-      const double x = (i + 0.5) / 64 - 1, y = (j + 0.5) / 64 - 1;
-      const bool window = x > 0.1 && x < 0.5 && y > 0.25 && y < 0.65;
-      const uint8_t s = u8(0.1 + 0.3 * (y + 1) / 2);
-      t.set(i, j, window ? ts::Rgba{255, 250, 235, 255} : ts::Rgba{uint8_t(s / 2), s, uint8_t(std::min(255, s * 2)), 255});
-    }
-  return t;
-}
+// Its pictures (the skin t_d with the gloss t_g as alpha, t_g as grey, the
+// sphere map t_r) are named generators: ts::multitex::pearSkinImage, ...
 
 // ---- measuring the readbacks ---------------------------------------------
 // The largest channel difference and the RMS over RGB: common/core/image.hpp.

@@ -4,6 +4,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 namespace mt {
 inline const int kLightSizes[4] = {8, 16, 32, 64};
 constexpr int kSpotFrames = 12, kTurnSteps = 72;  // 5 degrees a step
+constexpr int kPearPixels = 192;
 
 // The default base picture, 128 x 128: bricks in two reds, grey mortar.
 inline ts::Image basePicture() { return ts::multitex::bricksImage(); }
@@ -30,7 +32,9 @@ struct Result {
   ts::Image abcdAb;                            // the one-unit path's intermediate buffer (mt_frames.hpp)
   ts::Image pear[2];                           // by Pear
   bool combine3 = false;
-  ts::gl::CallList abcdCalls[3], pearCalls[2], glossCalls;
+  std::shared_ptr<const ts::Frame> pears;      // both methods side by side (frames::pearsFrame)
+  ts::Image pearsImage;                        // its render (row 0 the top)
+  ts::gl::CallList abcdCalls[3], pearCalls[2], glossCalls, pearsCalls;
 };
 
 // Pixels of a readback inside the tree's rectangle (64..191) whose texel is
@@ -165,21 +169,20 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, bool userBase, ts::
   ts::measureProgress(0.8);
   out.combine3 = ts::gl::hasExtension("GL_ATI_texture_env_combine3");
   put("combine3_supported", out.combine3 ? 1 : 0, "GL_ATI_texture_env_combine3 in the extension string (renderer: " + ts::gl::rendererString() + ")");
-  const ts::Image skinImg = pearSkin();
-  ts::Image glossImg = skinImg;
-  for (size_t k = 0; k < glossImg.pixels.size(); k += 4) glossImg.pixels[k] = glossImg.pixels[k + 1] = glossImg.pixels[k + 2] = glossImg.pixels[k + 3];
+  // Each method alone (the Frames of mt_frames.hpp: one glBegin a pass), then both side by side: the
+  // figure's picture, a nested frame the reference recomputes.
   for (int m = kCombine3; m <= kTwoPasses; ++m) {
     if (m == kCombine3 && !out.combine3) continue;
     out.pearCalls[m] = ts::recordRender(r, [&] {
-      const GLuint skin = upload(skinImg, GL_LINEAR, GL_REPEAT), g = upload(glossImg, GL_LINEAR, GL_REPEAT, GL_LUMINANCE8),
-                   sky = upload(sphereMapSky(), GL_LINEAR, GL_CLAMP_TO_EDGE);
-      out.pear[m] = pearPasses(r, skin, g, sky, m);
-      const GLuint all[3] = {skin, g, sky};
-      glDeleteTextures(3, all);
+      out.pear[m] = opaque(r.renderOffscreen(frames::alone(kPearPixels, kPearPixels, [&](ts::Frame& f, ts::Rect v) {
+        return frames::pearPanel(f, m, "pear", v);
+      })));
     });
-    put(std::string("pear_passes[") + (m ? "two_passes" : "combine3") + "]", countCalls(out.pearCalls[m], "glBegin") / 32.0,
+    put(std::string("pear_passes[") + (m ? "two_passes" : "combine3") + "]", countCalls(out.pearCalls[m], "glBegin"),
         "passes over the pear (32 strips each)");
   }
+  out.pears = std::make_shared<const ts::Frame>(frames::pearsFrame(kPearPixels, out.combine3));
+  out.pearsCalls = ts::recordRender(r, [&] { out.pearsImage = r.renderOffscreen(*out.pears); });
   if (out.combine3)
     put("pear_combine3_vs_two_passes_max_diff", maxDiff(out.pear[kCombine3], out.pear[kTwoPasses]),
         "levels: one stage A.C + B against two passes (two roundings)");

@@ -39,6 +39,13 @@ inline void pictures(ts::Frame& f, const std::vector<Picture>& ps, float aspect,
     t.minFilter = t.magFilter = GL_LINEAR;
     t.renderedBy = ps[k].calls;
     f.panels.push_back(L::texturePanel("picture_" + std::to_string(k), cells[k].picture, f.addTexture(t)));
+    if (t.renderedFrom) {  // a nested frame's picture (TextureDesc::renderedFrom) has row 0 at the top
+      ts::Batch& b = f.panels.back().batches.back();
+      for (ts::Vertex& vx : b.vertices) vx.tex.y = 1.0f - vx.tex.y;
+      // Its alpha is what its passes left (the pear's: the gloss t_g that GL_MODULATE_ADD_ATI reads):
+      // drawn (GL_ONE, GL_ZERO), the colour as it is and the figure's own alpha kept, opaque.
+      b.blend = true, b.blendSrc = GL_ONE, b.blendDst = GL_ZERO;
+    }
     }
     L::caption(f, cells[k].above, ps[k].title, L::kWhite, cells[k].scale);
     L::caption(f, cells[k].below, ps[k].note, L::kAmber, cells[k].scale);

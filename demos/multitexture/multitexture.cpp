@@ -22,7 +22,7 @@
 //   v  view: alpha | lightmap | gloss | abcd     a  animate the spot
 //   s / S  the spot's position (0..11)          (--texture FILE: the base picture)
 //
-// The GL that carries it (Frames, mt_frames.hpp, drawn by common/gl/render.cpp; the pear mt_gl.hpp):
+// The GL that carries it (Frames, mt_frames.hpp, drawn by common/gl/render.cpp):
 //   glEnable(GL_ALPHA_TEST); glAlphaFunc(GL_GREATER, 0.5f);
 //   glActiveTexture(GL_TEXTURE1); glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
 //   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);     // PREVIOUS x TEXTURE = AB
@@ -184,18 +184,20 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
         if (p.id == "picture_" + std::to_string(k))
           p.batches = {frames::lightMapped(f, m->base, m->userBase, k < 5 ? kLightSizes[k - 1] : 0, spot_, kSpotFrames)};
   } else if (view_ == 2) {
-    ts::Image pears(384, 192);
-    if (m->combine3) pears.blit(m->pear[kCombine3], 0, 0);
-    pears.blit(m->pear[kTwoPasses], 192, 0);
+    // The pears are a nested frame (mt_frames.hpp pearsFrame): its picture is GL's render, and the
+    // sidecar holds the frame, so the reference recomputes it (TextureDesc::renderedFrom).
+    ts::TextureDesc pears = ts::renderedImageTexture(m->pearsImage, "multitexture", "the pears", "multitexture");
+    pears.image = std::make_shared<const ts::Image>(m->pearsImage);  // row 0 the top, as rendered
+    pears.renderedFrom = m->pears;
     views::pictures(f,
                     {{{}, "t_d x i_diff (pass 1)", "the diffuse alone"},
                      {{}, "+ g x i_spec (pass 2, GL_ONE, GL_ONE)", "g = 1 left, 0.2 right"},
                      {{}, "the specular added, x 2",
                       fmt("peaks %.0f", v("gloss_peak[g=1]")) + fmt(" : %.0f", v("gloss_peak[g=0.2]"))},
-                     {pears, "pear: MODULATE_ADD_ATI | two passes",
+                     {{}, "pear: MODULATE_ADD_ATI | two passes",
                       m->combine3 ? fmt("%.0f pass", v("pear_passes[combine3]")) + fmt(" | %.0f passes", v("pear_passes[two_passes]"))
                                   : std::string("no GL_ATI_texture_env_combine3 here"),
-                      m->pearCalls[kCombine3]}},
+                      m->pearsCalls, pears}},
                     2.0f,
                     "i = t_d x i_diff + g x i_spec in two passes: highlight ratio " + fmt("%.3f", v("gloss_peak_ratio")) +
                         " (g 1 / 0.2 = 5), diffuse changed by " + fmt("%.0f", v("gloss_diffuse_change")) +

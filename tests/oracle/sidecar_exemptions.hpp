@@ -24,7 +24,7 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 18> kFiguresDrawnFromGlRenders = {
+inline constexpr std::array<const char*, 17> kFiguresDrawnFromGlRenders = {
     // --footprints: the left panel is the picture GL drew, inspected
     "inspect_vi2_footprints", "inspect_aniso_footprint",
     "vi7_jitter", "jitter_zone_plate", "parallax_modes", "parallax_error_band", "parallax_step",
@@ -40,13 +40,7 @@ inline constexpr std::array<const char*, 18> kFiguresDrawnFromGlRenders = {
     "bump_two_lights", "bump_seed002", "bump_normals", "bump_methods", "bump_emboss_overhead",
     // filter_zoo: each method's picture is a GL render (GL's filters) or a CPU
     // computation (ripmap, SAT, probe line, EWA, the exact integral) made by measure()
-    "filter_zoo_azimuth", "filter_zoo_supports", "mip_kernels",
-    // multitexture (issue 29): gloss_map's plane is Frames the reference remakes (named generators), but its
-    // pear is a GL pass its measure() draws (mt_gl.hpp).  The Frame can now say what it needs (unit 1's own
-    // coordinates, Batch::coords1; glDepthFunc(GL_LEQUAL), Batch::depthFunc) and the pear drawn that way renders
-    // as GL does, but verifying it took minutes: each second-pass (GL_ONE, GL_ONE) candidate re-derives the
-    // blended chain below it through the mesh's layers (reference/verify.cpp's legalFrom).
-    "gloss_map"};
+    "filter_zoo_azimuth", "filter_zoo_supports", "mip_kernels"};
 
 // Figures whose measure() takes minutes on softpipe (the parallax table: twelve
 // full-frame GLSL passes and a CPU reference per state).  The oracle checks

@@ -15,7 +15,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <functional>
 
+#include "demos/multitexture/mt_frames.hpp"
 #include "oracle_support.hpp"
 #include "reference/reference.hpp"
 
@@ -410,4 +412,43 @@ TEST(GLSecondUnit, OwnCoordinatesAndASecondPassThroughLequal) {
   fo.writeOnFailure = false;
   const ref::FuzzyResult bad = ref::compareFuzzy(img, ref::Reference(twoPasses(GL_LESS), vo.render).image(), fo);
   EXPECT_GT(bad.differing, 128L * 128L / 2) << "described with GL_LESS";
+}
+
+// The pear of the gloss_map figure (demos/multitexture mt_frames.hpp
+// pearPanel): a lathe mesh, front and back faces, the depth test on with
+// GL_LEQUAL, unit 1 on its own coordinates; in one pass (GL_MODULATE_ADD_ATI:
+// t_r x PREVIOUS's alpha + PREVIOUS) and in two (the second added, GL_ONE,
+// GL_ONE, over the first's layers).  Every GL pixel in the reference's legal
+// range, the mesh textured, not exempt; described wrong (unit 1 GL_MODULATE
+// instead of A.C + B; the second pass not added), most of the pear is invalid.
+TEST(GLSecondUnit, ThePearInOnePassAndInTwo) {
+  constexpr int w = 192;
+  auto pear = [&](int method, const std::function<void(ts::Panel&)>& wrong) {
+    return mt::frames::alone(w, w, [&](ts::Frame& f, ts::Rect v) {
+      ts::Panel p = mt::frames::pearPanel(f, method, "pear", v);
+      if (wrong) wrong(p);
+      return p;
+    });
+  };
+  for (int m : {mt::kCombine3, mt::kTwoPasses}) {
+    const std::string n = m == mt::kCombine3 ? "pear_combine3" : "pear_two_passes";
+    const ts::Frame f = pear(m, nullptr);
+    const ts::Image img = oracle::render(f);
+    const ref::VerifyResult r = ref::verifyImage(img, f, oracle::options(n, "multitexture"));
+    EXPECT_EQ(r.invalid, 0) << r.summary();
+    EXPECT_EQ(r.checked, long(w) * w) << r.summary();
+    // The pear covers about a fifth of the square (its silhouette: 2 x the
+    // integral of pearProfile's radius over its 1.6 of height, in the 2 x 2 view).
+    EXPECT_GT(r.textured, long(w) * w / 6) << r.summary();
+    std::printf("%s: %ld invalid of %ld checked (%ld textured, %ld edge)\n", n.c_str(), r.invalid, r.checked, r.textured, r.edges);
+    const ts::Frame bad = pear(m, [&](ts::Panel& p) {
+      if (m == mt::kCombine3)
+        p.batches[0].combine1.rgb = GL_MODULATE;
+      else
+        p.batches[1].blendSrc = GL_ONE, p.batches[1].blendDst = GL_ZERO;
+    });
+    const ref::VerifyResult b = ref::verifyImage(img, bad, oracle::options(n + "_described_wrong", "multitexture_negative"));
+    EXPECT_GT(b.invalid, r.textured / 2) << n << ": " << b.summary();
+    std::printf("%s described wrong: %ld invalid\n", n.c_str(), b.invalid);
+  }
 }
