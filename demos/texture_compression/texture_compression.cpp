@@ -63,7 +63,7 @@ class TextureCompression final : public ts::Scene {
   }
   int defaultWidth() const override { return 1280; }
   int defaultHeight() const override { return 440; }
-  std::vector<std::string> claim() const override { return {"compressed_bytes[512]", "bits_per_texel"}; }
+  std::vector<std::string> claim() const override { return {"dxt1_bytes[512]", "bits_per_texel"}; }
 
   void addOptions(ts::Options& o) override {
     o.addEnum("view", &view_, {"blocks", "equal-memory", "memory"},
@@ -84,8 +84,8 @@ class TextureCompression final : public ts::Scene {
          "A photograph-like texture, 512 x 512, compressed to DXT1 by the suite's encoder and decoded by GL; the error "
          "magnified 8 times; one block magnified with its two RGB565 colours and the two between them.",
          {"--view", "blocks", "--picture", "photo", "--block-x", "40", "--block-y", "14"}, 1280, 440,
-         "{compressed_bytes[512]} bytes, the same as 256 x 256 at 16 bits: {bits_per_texel} bits per texel, "
-         "{ratio_vs_rgb888}:1 against 24-bit texels; PSNR {psnr[photo]} dB; at most {max_colours_per_block} colours in a "
+         "{dxt1_bytes[512]} bytes, the same as 256 x 256 at 16 bits: {bits_per_texel} bits per texel, "
+         "{ratio_vs_rgb888}:1 against 24-bit texels; PSNR {psnr[photo]} dB; at most {dxt1_max_colours_per_block} colours in a "
          "block; GL's decode within {gl_vs_cpu_max_diff} levels of the CPU's."},
         {"dxt1_normal_map", "Seed 001 (texture compression)",
          "A normal map compressed to DXT1: the blocks' two-colour lines cannot follow the normals' directions, the "
@@ -97,13 +97,13 @@ class TextureCompression final : public ts::Scene {
          "The same memory two ways, magnified: 64 x 64 texels of the picture at 512 x 512, of DXT1 at 512 x 512 (4 bits a "
          "texel), and of RGB565 at 256 x 256 (16 bits a texel) magnified back.",
          {"--view", "equal-memory", "--picture", "photo", "--block-x", "40", "--block-y", "14"}, 1280, 520,
-         "\"A 512^2 texture in a 256^2's memory\": in {compressed_bytes[512]} bytes each, DXT1 at 512^2 is "
+         "\"A 512^2 texture in a 256^2's memory\": in {dxt1_bytes[512]} bytes each, DXT1 at 512^2 is "
          "{rms_equal_memory[dxt1_512]} RMS from the picture, RGB565 at 256^2 {rms_equal_memory[rgb565_256]}."},
         {"texture_memory", "Seed 001 (texture memory)",
          "An LRU cache of texture tiles along a camera path, with and without prefetching the tiles the view moves "
          "into next; below, a clipmap's size.",
          {"--view", "memory"}, 1024, 520,
-         "A 65536^2 clipmap with 512^2 levels holds {clipmap_texels} texels, the whole mip chain {chain_texels} "
+         "A 65536^2 clipmap with 512^2 levels holds {clipmap_texels[65536/512]} texels, the whole mip chain {chain_texels} "
          "({clipmap_saving} times more); prefetching lifts a 64-tile cache's hit rate from {cache_hit_rate[64]} to "
          "{cache_hit_rate_prefetch[64]}, but a 48-tile one, too small for the view and what it prefetches, falls "
          "from {cache_hit_rate[48]} to {cache_hit_rate_prefetch[48]}."},
@@ -135,14 +135,14 @@ class TextureCompression final : public ts::Scene {
       return 0.0;
     };
     if (view_ == 2)
-      return "clipmap of a 65536^2 texture, 512^2 a level: " + fmt("%.0f", v("clipmap_texels")) + " texels; the whole chain " +
+      return "clipmap of a 65536^2 texture, 512^2 a level: " + fmt("%.0f", v("clipmap_texels[65536/512]")) + " texels; the whole chain " +
              fmt("%.0f", v("chain_texels")) + " (" + fmt("%.0f", v("clipmap_saving")) + " times).  DXT1: a 512^2 texture in " +
-             fmt("%.0f", v("compressed_bytes[512]")) + " bytes, a 256^2 one's at 16 bits.";
+             fmt("%.0f", v("dxt1_bytes[512]")) + " bytes, a 256^2 one's at 16 bits.";
     const std::string size = file_.active() ? "file" : "512";
-    return fmt("%.0f", v("compressed_bytes[" + size + "]")) + " bytes (" + fmt("%.0f", v("bits_per_texel")) + " bits a texel, " +
+    return fmt("%.0f", v("dxt1_bytes[" + size + "]")) + " bytes (" + fmt("%.0f", v("bits_per_texel")) + " bits a texel, " +
            fmt("%.0f", v("ratio_vs_rgb565")) + ":1 against RGB565, " + fmt("%.0f", v("ratio_vs_rgb888")) + ":1 against RGB888); PSNR " +
            fmt("%.1f", v("psnr[" + (file_.active() ? std::string("file") : kPictureNames[picture_]) + "]")) + " dB; at most " +
-           fmt("%.0f", v("max_colours_per_block")) + " colours a block; GL vs CPU decode: " + fmt("%.0f", v("gl_vs_cpu_max_diff")) +
+           fmt("%.0f", v("dxt1_max_colours_per_block")) + " colours a block; GL vs CPU decode: " + fmt("%.0f", v("gl_vs_cpu_max_diff")) +
            " levels at most";
   }
 
@@ -180,7 +180,7 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
     const double texels = double(img.width) * img.height, bits = 8.0 * double(bytes(blocks).size()) / texels;
     ms.push_back({"s3tc_supported", g.supported ? 1.0 : 0.0, "GL_EXT_texture_compression_s3tc (renderer: " + ts::gl::rendererString() + ")"});
     ms.push_back({"gl_decode_shown", out.glDecode ? 1.0 : 0.0, "1: the picture shows GL's decode; 0: the CPU's (--decode cpu, or no S3TC)"});
-    ms.push_back({"compressed_bytes[" + size + "]", g.supported ? double(g.bytes) : double(bytes(blocks).size()),
+    ms.push_back({"dxt1_bytes[" + size + "]", g.supported ? double(g.bytes) : double(bytes(blocks).size()),
                   g.supported ? "GL_TEXTURE_COMPRESSED_IMAGE_SIZE of the DXT1 texture" : "bytes of the blocks (no S3TC in this GL)"});
     if (!file) ms.push_back({"rgb565_bytes[256]", 256.0 * 256.0 * 2.0, "a 256 x 256 texture at 16 bits (seed 001: the same memory)"});
     else
@@ -189,7 +189,7 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
     ms.push_back({"bits_per_texel", bits, "of the blocks, over the picture's own texels"});
     ms.push_back({"ratio_vs_rgb565", 16.0 / bits, "16-bit texels : DXT1"});
     ms.push_back({"ratio_vs_rgb888", 24.0 / bits, "24-bit texels : DXT1"});
-    ms.push_back({"max_colours_per_block", double(maxColoursPerBlock(out.decoded)), "distinct colours in any decoded 4x4 block"});
+    ms.push_back({"dxt1_max_colours_per_block", double(maxColoursPerBlock(out.decoded)), "distinct colours in any decoded 4x4 block"});
     ms.push_back({"gl_vs_cpu_max_diff", g.supported && g.compressed ? double(maxDiff(g.decoded, cpu)) : -1.0,
                   "largest channel difference, GL's decode against dxt1.hpp's (8-bit levels; -1: no S3TC)"});
     out.rgb565 = rgb565Half(img), out.rmsDxt1 = rms(img, cpu), out.rmsRgb565 = rms(img, out.rgb565);
@@ -204,7 +204,7 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
     ms.push_back({"cache_hit_rate" + n, out.plain[k].hitRate(), "LRU tile cache of this many tiles: hits / requests"});
     ms.push_back({"cache_hit_rate_prefetch" + n, out.prefetched[k].hitRate(), "the same, prefetching the next column and row"});
   }
-  ms.push_back({"clipmap_texels", double(clipmapTexels(65536, 512)), "a 65536^2 texture's mip chain, each level at most 512^2"});
+  ms.push_back({"clipmap_texels[65536/512]", double(clipmapTexels(65536, 512)), "a 65536^2 texture's mip chain, each level at most 512^2"});
   ms.push_back({"chain_texels", double(chainTexels(65536)), "the whole mip chain of 65536^2"});
   ms.push_back({"clipmap_saving", double(chainTexels(65536)) / double(clipmapTexels(65536, 512)), "chain / clipmap"});
   ms.detail = out;
