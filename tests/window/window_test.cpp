@@ -1384,7 +1384,11 @@ class XDemo {
   bool typeKey(char k) { return x({"xdotool", "key", "--window", window_, xKeyName(k)}); }
   // Moves the pointer over the figure (a motion event: the window draws a
   // frame, and nothing else changes) and waits for a frame logged after it.
-  bool poke() {
+  bool poke() { return frameAfterPointerMove(false); }
+  // The same, for a frame with no measurement out (the frame log's "frame T
+  // MEASURING PROGRESS"): every state asked for so far is measured and printed.
+  bool settle() { return frameAfterPointerMove(true); }
+  bool frameAfterPointerMove(bool idle) {
     const double t = steadyNow();
     pointer_ = pointer_ == 4 ? 6 : 4;
     if (!x({"xdotool", "mousemove", "--window", window_, std::to_string(pointer_), std::to_string(pointer_)}))
@@ -1392,31 +1396,15 @@ class XDemo {
     return waitFor(
         [&] {
           std::istringstream in(readFile(logPath_));
-          double when = 0;
-          for (std::string l; std::getline(in, l);)
-            if (std::sscanf(l.c_str(), "frame %lf", &when) == 1 && when >= t) return true;
+          for (std::string l; std::getline(in, l);) {
+            double when = 0;
+            int measuring = 0;
+            if (std::sscanf(l.c_str(), "frame %lf %d", &when, &measuring) >= 1 && when >= t && !(idle && measuring))
+              return true;
+          }
           return false;
         },
-        "a frame after the pointer moved");
-  }
-  // Waits for a frame drawn after now with no measurement out (the frame
-  // log's "frame T MEASURING PROGRESS"): every state asked for so far is
-  // measured and printed.
-  bool settle() {
-    const double t = steadyNow();
-    pointer_ = pointer_ == 4 ? 6 : 4;  // a motion event: the window draws a frame
-    if (!x({"xdotool", "mousemove", "--window", window_, std::to_string(pointer_), std::to_string(pointer_)}))
-      return false;
-    return waitFor(
-        [&] {
-          std::istringstream in(readFile(logPath_));
-          double when = 0;
-          int measuring = 1;
-          for (std::string l; std::getline(in, l);)
-            if (std::sscanf(l.c_str(), "frame %lf %d", &when, &measuring) == 2 && when >= t && measuring == 0) return true;
-          return false;
-        },
-        "a frame with no measurement out");
+        idle ? "a frame with no measurement out" : "a frame after the pointer moved");
   }
   // The screen as a PNG in the case's folder, and the marked pixels in the pane.
   bool capture(const std::string& name, long* marked) {
