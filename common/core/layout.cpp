@@ -51,6 +51,13 @@ Panel texturePanel(const std::string& id, const Rect& viewport, int texture, con
   return p;
 }
 
+Panel picturePanel(Frame& f, const std::string& id, const Rect& viewport, const TextureDesc& t) {
+  Panel p = texturePanel(id, viewport, f.addTexture(t));
+  if (t.renderedFrom)
+    for (Vertex& v : p.batches.back().vertices) v.tex.y = 1.0f - v.tex.y;
+  return p;
+}
+
 std::string fmt(const char* format, double v) {
   char b[128];
   std::snprintf(b, sizeof b, format, v);

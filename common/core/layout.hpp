@@ -47,6 +47,10 @@ Frame blankFrame(int width, int height);
 Batch unitSquare(int texture, const std::string& role, float s0 = 0.0f, float s1 = 1.0f);
 Panel texturePanel(const std::string& id, const Rect& viewport, int texture, const std::string& role = "image",
                    float s0 = 0.0f, float s1 = 1.0f);
+// The texturePanel of `t`, added to `f`.  A nested frame's picture
+// (TextureDesc::renderedFrom) is its readback, row 0 at the top: t runs down
+// it, so the picture stands upright.
+Panel picturePanel(Frame& f, const std::string& id, const Rect& viewport, const TextureDesc& t);
 // An empty panel `id` at `viewport` that shows the unit square (x, y from 0
 // to 1 across and up): what texturePanel starts from, and the flat figures'
 // panels (a quad in screen space, a lit plane).

@@ -172,11 +172,7 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   // column sample exactly between two pixels, where backends round apart.  The map keeps its texels sharp.
   auto show = [&](const L::Cell& c, const std::string& id, const ts::TextureDesc* t, const std::string& above,
                   const std::string& below) {
-    if (t && t->image) {
-      f.panels.push_back(L::texturePanel(id, c.picture, f.addTexture(*t)));
-      if (t->renderedFrom)  // a nested frame's picture has row 0 at the top
-        for (ts::Vertex& v : f.panels.back().batches.back().vertices) v.tex.y = 1.0f - v.tex.y;
-    }
+    if (t && t->image) f.panels.push_back(L::picturePanel(f, id, c.picture, *t));  // a nested frame's picture upright
     L::caption(f, c.above, above, kWhite, c.scale);
     if (!below.empty()) L::caption(f, c.below, below, kAmber, c.scale);
   };

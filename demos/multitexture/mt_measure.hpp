@@ -179,7 +179,7 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, bool userBase, ts::
       })));
     });
     put(std::string("pear_passes[") + (m ? "two_passes" : "combine3") + "]", countCalls(out.pearCalls[m], "glBegin"),
-        "passes over the pear (32 strips each)");
+        "passes over the pear (its glBegin calls: the mesh is one batch a pass)");
   }
   out.pears = std::make_shared<const ts::Frame>(frames::pearsFrame(kPearPixels, out.combine3));
   out.pearsCalls = ts::recordRender(r, [&] { out.pearsImage = r.renderOffscreen(*out.pears); });

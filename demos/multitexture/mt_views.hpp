@@ -38,12 +38,11 @@ inline void pictures(ts::Frame& f, const std::vector<Picture>& ps, float aspect,
     // GL_LINEAR: a panel's pixel centre can fall on a texel boundary, where GL_NEAREST's tie goes either way.
     t.minFilter = t.magFilter = GL_LINEAR;
     t.renderedBy = ps[k].calls;
-    f.panels.push_back(L::texturePanel("picture_" + std::to_string(k), cells[k].picture, f.addTexture(t)));
-    if (t.renderedFrom) {  // a nested frame's picture (TextureDesc::renderedFrom) has row 0 at the top
-      ts::Batch& b = f.panels.back().batches.back();
-      for (ts::Vertex& vx : b.vertices) vx.tex.y = 1.0f - vx.tex.y;
+    f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), cells[k].picture, t));  // a nested frame's upright
+    if (t.renderedFrom) {
       // Its alpha is what its passes left (the pear's: the gloss t_g that GL_MODULATE_ADD_ATI reads):
       // drawn (GL_ONE, GL_ZERO), the colour as it is and the figure's own alpha kept, opaque.
+      ts::Batch& b = f.panels.back().batches.back();
       b.blend = true, b.blendSrc = GL_ONE, b.blendDst = GL_ZERO;
     }
     }
