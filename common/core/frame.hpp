@@ -230,6 +230,26 @@ struct Label {
   int scale = 1;  // multiples of the 13-pixel base font
   Align align = Align::Left;
   glm::vec4 background{0.0f};  // alpha 0 = no box
+  // Where the label's numbers come from, written in the sidecar so a check
+  // can hold the picture to its own measurements:
+  //   printed: each measurement the text prints, as its name, the printf
+  //            format and the text that made (layout::measuredText fills it);
+  //            the check formats the sidecar's value again and finds it here;
+  //   given:   each number it prints that is not measured (an axis tick, a
+  //            parameter of the state, a constant of the method), named.
+  struct Printed {
+    std::string name, format, text;
+  };
+  std::vector<Printed> printed;
+  std::vector<std::pair<std::string, double>> given;
+};
+
+// A colour that carries meaning in a figure (a mark, a curve, a highlight)
+// and what it means: drawn as a key by layout::legend and written in the
+// sidecar, so a check can find every meaningful colour named.
+struct LegendEntry {
+  glm::vec4 color{1.0f};
+  std::string meaning;
 };
 
 // The fixed state common/gl/render.cpp draws every Frame with, written into the
@@ -252,6 +272,7 @@ struct Frame {
   std::vector<std::pair<std::string, Program>> programs;
   std::vector<Panel> panels;
   std::vector<Label> labels;
+  std::vector<LegendEntry> legend;
 
   int addTexture(TextureDesc t) {
     textures.push_back(std::move(t));

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
+#include "common/core/error.hpp"
 #include "common/core/text.hpp"
 
 namespace ts::layout {
@@ -114,8 +116,99 @@ int captionLines(const std::string& text, int scale, float width) {
   return int(wrap(text, 1, width).size());
 }
 
-float caption(Frame& f, Box band, const std::string& text, glm::vec4 color, int scale, Align align,
-              glm::vec4 background) {
+Text operator+(const Text& a, const Text& b) {
+  Text out = a;
+  out.text += b.text;
+  out.printed.insert(out.printed.end(), b.printed.begin(), b.printed.end());
+  out.given.insert(out.given.end(), b.given.begin(), b.given.end());
+  return out;
+}
+
+namespace {
+std::string formatted(const char* format, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+}  // namespace
+
+Text measured(const Measurements& m, const std::string& name, const char* format) {
+  for (const Measurement& x : m)
+    if (x.name == name) {
+      Text t(formatted(format, x.value));
+      t.printed.push_back({name, format, t.text});
+      return t;
+    }
+  throw Error("a label prints the measurement '" + name + "', which this state does not measure");
+}
+
+Text measuredText(const Measurements& m, const std::string& templ) {
+  Text out;
+  size_t at = 0;
+  while (at < templ.size()) {
+    const size_t open = templ.find('{', at);
+    if (open == std::string::npos) {
+      out = out + Text(templ.substr(at));
+      break;
+    }
+    const size_t close = templ.find('}', open);
+    if (close == std::string::npos) throw Error("unbalanced braces in the label template \"" + templ + "\"");
+    std::string name = templ.substr(open + 1, close - open - 1), format = "%g";
+    const size_t bar = name.find('|');
+    if (bar != std::string::npos) format = name.substr(bar + 1), name = name.substr(0, bar);
+    out = out + Text(templ.substr(at, open - at)) + measured(m, name, format.c_str());
+    at = close + 1;
+  }
+  return out;
+}
+
+Text given(const std::string& name, double value, const char* format) {
+  Text t(formatted(format, value));
+  t.given.push_back({name, value, t.text});
+  return t;
+}
+
+void attachNumbers(Frame& f, size_t first, const Text& t) {
+  // In order: a number goes to the first line at or after the previous
+  // one's that shows it (wrapping breaks at spaces, never inside a number).
+  std::vector<size_t> from(f.labels.size(), 0);  // where the next search starts in each line
+  size_t line = first;
+  auto place = [&](const std::string& text, const std::function<void(Label&)>& add) {
+    for (size_t k = line; k < f.labels.size(); ++k) {
+      const size_t at = f.labels[k].text.find(text, from[k]);
+      if (at == std::string::npos) continue;
+      add(f.labels[k]);
+      from[k] = at + text.size();
+      line = k;
+      return;
+    }
+  };
+  for (const Label::Printed& p : t.printed) place(p.text, [&](Label& l) { l.printed.push_back(p); });
+  line = first;
+  std::fill(from.begin(), from.end(), 0);
+  for (const Text::Given& g : t.given) place(g.text, [&](Label& l) { l.given.push_back({g.name, g.value}); });
+}
+
+float legend(Frame& f, Box band, const std::vector<LegendEntry>& entries, int scale) {
+  const float swatch = float(text::height(scale)), gap = 6.0f * float(scale);
+  float x = band.x0, y = band.y0;
+  for (const LegendEntry& e : entries) {
+    const float w = swatch + 4.0f * float(scale) + text::width(e.meaning, scale);
+    if (x > band.x0 && x + w > band.x1) x = band.x0, y += lineHeight(scale);
+    if (y + text::height(scale) > band.y1) break;
+    Label key;
+    key.x = x, key.y = y, key.text = " ", key.scale = scale, key.background = e.color;
+    f.labels.push_back(key);
+    f.labels.push_back({x + swatch + 4.0f * float(scale), y, e.meaning, e.color, scale, Align::Left, glm::vec4(0.0f)});
+    f.legend.push_back(e);
+    x += w + gap;
+  }
+  return y + lineHeight(scale);
+}
+
+namespace {
+float plainCaption(Frame& f, Box band, const std::string& text, glm::vec4 color, int scale, Align align,
+                   glm::vec4 background) {
   if (text.empty()) return band.y0;
   float pad = background.a > 0 ? 3.0f : 0.0f;  // the background box grows 3 px per scale each side
   auto place = [&](const std::vector<std::string>& lines, int s) {
@@ -155,6 +248,15 @@ float caption(Frame& f, Box band, const std::string& text, glm::vec4 color, int 
   return place(lines, 1);
 }
 
+}  // namespace
+
+float caption(Frame& f, Box band, const Text& t, glm::vec4 color, int scale, Align align, glm::vec4 background) {
+  const size_t first = f.labels.size();
+  const float below = plainCaption(f, band, t.text, color, scale, align, background);
+  attachNumbers(f, first, t);
+  return below;
+}
+
 bool placeFree(Frame& f, Label l, Box within) {
   Box b = labelBox(l);
   if (l.text.empty() || b.w() > within.w() || b.h() > within.h()) return false;
@@ -173,7 +275,7 @@ bool placeFree(Frame& f, Label l, Box within) {
   return true;
 }
 
-bool Column::add(const std::string& text, glm::vec4 color, int scale, Align align, glm::vec4 background) {
+bool Column::add(const Text& text, glm::vec4 color, int scale, Align align, glm::vec4 background) {
   if (y_ >= area_.y1) return false;
   Box band{area_.x0, y_, area_.x1, area_.y1};
   float y = caption(f_, band, text, color, scale, align, background);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "common/core/frame.hpp"
+#include "common/core/scene.hpp"
 
 namespace ts::layout {
 // A box in frame pixels, top-left origin, as floats (labels sit on halves).
@@ -103,11 +104,47 @@ struct FlowSpec {
 };
 std::vector<Cell> flow(Box area, const FlowSpec& spec);
 
+// Text whose numbers say where they come from (Label::printed, Label::given):
+// a caption made of it hands each line the numbers that line shows, so the
+// sidecar holds, beside every measured number a figure prints, the
+// measurement's name.  A plain string converts to it (no numbers recorded).
+struct Text {
+  std::string text;
+  std::vector<Label::Printed> printed;
+  struct Given {
+    std::string name;
+    double value;
+    std::string text;
+  };
+  std::vector<Given> given;
+  Text() = default;
+  Text(std::string s) : text(std::move(s)) {}  // NOLINT: plain text is text
+  Text(const char* s) : text(s) {}             // NOLINT
+  bool empty() const { return text.empty(); }
+};
+Text operator+(const Text& a, const Text& b);
+// One measurement of `m`, printed with `format` ("%.1f"); throws ts::Error
+// when `m` has no measurement of that name (a figure would print a number
+// nobody measured).
+Text measured(const Measurements& m, const std::string& name, const char* format);
+// A template whose "{name}" or "{name|%.2f}" stand for measurements of `m`
+// ("%g" when no format is given): "red: the ball, {mirror_ball_pixels|%.0f} px".
+Text measuredText(const Measurements& m, const std::string& templ);
+// A number that is not measured, with what it is: an axis tick, a parameter.
+Text given(const std::string& name, double value, const char* format);
+// Hands `t`'s numbers to the labels f.labels[first..] that show them.
+void attachNumbers(Frame& f, size_t first, const Text& t);
+
+// A key of the colours that carry meaning: a swatch and its meaning per
+// entry, left to right, wrapping to the next line; each entry also goes
+// into f.legend.  Returns the y below the last line.
+float legend(Frame& f, Box band, const std::vector<LegendEntry>& entries, int scale);
+
 // Text fitted to a box: at `scale` if it fits, else smaller, else wrapped at
 // spaces onto the lines the box has room for, else cut with "...".  Adds
 // the labels and returns the y below the last line (band.y0 when nothing
 // fits).  Never places text outside `band`.
-float caption(Frame& f, Box band, const std::string& text, glm::vec4 color, int scale,
+float caption(Frame& f, Box band, const Text& text, glm::vec4 color, int scale,
               Align align = Align::Center, glm::vec4 background = glm::vec4(0.0f));
 // The lines caption() would use at most: wrapped text at the scale that
 // fits `width` (for reserving a band's height before placing it).
@@ -118,7 +155,7 @@ int captionLines(const std::string& text, int scale, float width);
 class Column {
  public:
   Column(Frame& f, Box area) : f_(f), area_(area), y_(area.y0) {}
-  bool add(const std::string& text, glm::vec4 color, int scale, Align align = Align::Center,
+  bool add(const Text& text, glm::vec4 color, int scale, Align align = Align::Center,
            glm::vec4 background = glm::vec4(0.0f));
   float y() const { return y_; }
 

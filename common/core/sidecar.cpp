@@ -289,15 +289,26 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
   }
   d["panels"] = panels;
   Json labels = Json::array();
-  for (const Label& l : f.labels)
-    labels.push_back({{"x", num(l.x)},
-                      {"y", num(l.y)},
-                      {"text", l.text},
-                      {"scale", l.scale},
-                      {"align", l.align == Align::Left ? "left" : l.align == Align::Center ? "center" : "right"},
-                      {"color", vec(l.color)},
-                      {"background", vec(l.background)}});
+  for (const Label& l : f.labels) {
+    Json j = {{"x", num(l.x)},
+              {"y", num(l.y)},
+              {"text", l.text},
+              {"scale", l.scale},
+              {"align", l.align == Align::Left ? "left" : l.align == Align::Center ? "center" : "right"},
+              {"color", vec(l.color)},
+              {"background", vec(l.background)}};
+    // Where its numbers come from (written only when it prints any).
+    for (const Label::Printed& p : l.printed)
+      j["printed"].push_back({{"measurement", p.name}, {"format", p.format}, {"text", p.text}});
+    for (const auto& [name, value] : l.given) j["given"].push_back({{"name", name}, {"value", num(value)}});
+    labels.push_back(j);
+  }
   d["labels"] = labels;
+  if (!f.legend.empty()) {
+    Json legend = Json::array();
+    for (const LegendEntry& e : f.legend) legend.push_back({{"color", vec(e.color)}, {"meaning", e.meaning}});
+    d["legend"] = legend;
+  }
 }
 
 std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
