@@ -69,14 +69,16 @@ void tickLabels(Frame& f, const Rect& vp, const Rect& area, double x0, double x1
   const float h = text::height(scale), gap = 4.0f * float(scale);
   const L::Box under{float(area.x), float(vp.y + vp.h + 1), float(area.x + area.w), float(vp.y + vp.h) + gap + h + 2},
       leftOf{float(area.x), float(vp.y) - h, float(vp.x - 1), float(vp.y + vp.h) + h / 2 + 1};
+  // A tick's number is the axis's, not a measurement: the label names it so.
+  auto tick = [&](const Tick& t, const char* axis, float x, float y, Align a, const L::Box& within) {
+    Label l{x, y, t.text, color, scale, a};
+    l.given.push_back({std::string(axis) + " axis tick", t.at});
+    L::placeFree(f, l, within);
+  };
   for (const Tick& t : xs)
-    L::placeFree(f, {float(vp.x + (t.at - x0) / (x1 - x0) * vp.w), float(vp.y + vp.h) + gap, t.text, color, scale,
-                     Align::Center},
-                 under);
+    tick(t, "x", float(vp.x + (t.at - x0) / (x1 - x0) * vp.w), float(vp.y + vp.h) + gap, Align::Center, under);
   for (const Tick& t : ys)
-    L::placeFree(f, {float(vp.x) - gap - 2, float(vp.y + (1 - (t.at - y0) / (y1 - y0)) * vp.h) - h / 2, t.text, color,
-                     scale, Align::Right},
-                 leftOf);
+    tick(t, "y", float(vp.x) - gap - 2, float(vp.y + (1 - (t.at - y0) / (y1 - y0)) * vp.h) - h / 2, Align::Right, leftOf);
 }
 
 Rect draw(Frame& f, const Spec& s, Rect area) {
@@ -151,6 +153,8 @@ Rect draw(Frame& f, const Spec& s, Rect area) {
     L::caption(f, {float(vp.x), y, x1 - 4, y + legendLines[k]}, s.legend[k].text, s.legend[k].color, sc, Align::Left);
     y += legendLines[k];
   }
+  // The legend's lines are written in their series' colours: each is the key of its colour.
+  for (const Legend& l : s.legend) f.legend.push_back({l.color, l.text});
   if (!s.yLabel.empty())
     L::caption(f, {float(vp.x), float(vp.y) - th / 2 - 2 - line, x1 - 4, float(vp.y) - th / 2 - 2}, s.yLabel, s.textColor,
                sc, Align::Left);
@@ -164,9 +168,9 @@ Rect draw(Frame& f, const Spec& s, Rect area) {
       ly += line;
     }
   }
-  for (const Marker& m : s.markers)
-    if (!m.label.empty())
-      L::placeFree(f, {px({m.x, s.y1}).x + 6, float(vp.y + 6), m.label, m.color, sc, Align::Left}, inPlot);
+  for (const Marker& m : s.markers)  // a marker's label, in its colour, is its key
+    if (!m.label.empty() && L::placeFree(f, {px({m.x, s.y1}).x + 6, float(vp.y + 6), m.label, m.color, sc, Align::Left}, inPlot))
+      f.legend.push_back({m.color, m.label});
   for (const Series& se : s.series)
     for (size_t k = 0; k < se.tags.size() && k < se.points.size(); ++k) {
       glm::vec2 q = px(se.points[k]);
