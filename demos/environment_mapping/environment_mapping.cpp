@@ -40,11 +40,14 @@
 //   + / -  memory (texels a cube face side; the others as many texels)
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+
 #include "common/gl/gl_listing.hpp"
 #include "common/core/layout.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
+#include "common/core/text.hpp"
 #include "common/core/textures.hpp"
 #include "env_gl.hpp"
 #include "env_measure.hpp"
@@ -175,6 +178,21 @@ std::vector<ts::LegendEntry> heatKey(double scaleDeg) {
   auto c = [&](double e) { return glm::vec4(glm::vec3(envmap::heat(e, scaleDeg)), 1.0f); };
   return {{c(0), "no error"}, {c(0.5 * scaleDeg), "half the scale"}, {c(scaleDeg), "the scale or more"}};
 }
+// A key in a cell's band: at the largest scale (at most `scale`) at which its widest entry fits, the
+// swatches' boxes (3 px a scale around them) inside the band too; an entry too wide even at scale 1 (a
+// narrow window's cell) is left out rather than run into the next cell.
+void cellKey(ts::Frame& f, ts::layout::Box band, const std::vector<ts::LegendEntry>& entries, int scale) {
+  auto entryWidth = [](const ts::LegendEntry& e, int s) { return ts::text::height(s) + 4.0f * float(s) + ts::text::width(e.meaning, s); };
+  float widest = 0;
+  for (const ts::LegendEntry& e : entries) widest = std::max(widest, entryWidth(e, 1));
+  int s = std::max(1, scale);
+  while (s > 1 && widest * float(s) + 6.0f * float(s) > band.w()) --s;
+  band.x0 += 3.0f * float(s), band.x1 -= 3.0f * float(s);
+  std::vector<ts::LegendEntry> fit;
+  for (const ts::LegendEntry& e : entries)
+    if (entryWidth(e, s) <= band.w()) fit.push_back(e);
+  ts::layout::legend(f, band, fit, s);
+}
 const glm::vec4 kNearBall{230 / 255.0f, 40 / 255.0f, 40 / 255.0f, 1.0f};  // painted on the flat mirror's reference
 
 ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurements& measured) const {
@@ -191,7 +209,7 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     const L::Box title = key.empty() ? c.above : L::halves(c.above).first;
     L::caption(f, title, above, kWhite, c.scale);
     const size_t first = f.labels.size();
-    if (!key.empty()) L::legend(f, L::halves(c.above).second, key, c.scale);
+    if (!key.empty()) cellKey(f, L::halves(c.above).second, key, c.scale);
     // A key's words take its swatch's colour: black ones would vanish on the page, so they are written white.
     for (size_t i = first; i < f.labels.size(); ++i)
       if (f.labels[i].background.a == 0 && glm::length(glm::vec3(f.labels[i].color)) < 0.3f) f.labels[i].color = kWhite;
@@ -241,7 +259,7 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     refNote = L::measuredText(measured, "red: a near ball, {mirror_ball_pixels[shown]|%.0f} px; a map made at the centre shows it at "
                                         "{mirror_ball_pixels_centre_map[shown]|%.0f} px, {mirror_ball_pixels_both[shown]|%.0f} right");
   std::vector<ts::LegendEntry> refKey;
-  if (object_ == envmap::kMirror) refKey = {{kNearBall, "the near ball, as a true mirror shows it"}};
+  if (object_ == envmap::kMirror) refKey = {{kNearBall, "the near ball (a true mirror)"}};
   show(cells[1], "reference", found ? &found->reference : nullptr, refCaption(), refNote, refKey);
   const ts::TextureDesc errorTex = found ? image(found->error, "error") : ts::TextureDesc{};
   const double scale = found ? found->errorScale : envmap::errorScale(eval_ == 1, 0);
