@@ -127,20 +127,37 @@ inline void buildEqualMemory(ts::Frame& f, const Result& m, int bx, int by, cons
 }
 
 // The LRU tile cache: hit rate against its size, with and without prefetching.
-inline void buildMemory(ts::Frame& f, const Result& m, const std::string& numbers) {
+// The title and the key are placed here, not by the plot, so that the
+// title's numbers say what they are and the key goes into the frame's legend.
+inline void buildMemory(ts::Frame& f, const Result& m, const L::Text& numbers) {
+  const glm::vec4 kLru{0.4f, 0.7f, 1.0f, 1.0f};
+  const float line = L::lineHeight(1);
+  const L::Text view = L::given("the view's side, tiles", kCacheView, "%.0f");
+  L::caption(f, {8, 8, float(f.width - 8), 8 + line},
+             "an LRU tile cache along a camera path (a view " + view + " x " + view + " tiles wide, moving " +
+                 L::given("the view's step across, tiles a frame", kCacheStepX, "%g") + " tile across and " +
+                 L::given("the view's step down, tiles a frame", kCacheStepY, "%g") + " down a frame)",
+             L::kWhite, 1);
+  L::legend(f, {40, 8 + line, float(f.width - 8), 8 + 2 * line},
+            {{kLru, "LRU"}, {L::kAmber, "LRU + prefetching the next column and row"}}, 1);
   ts::plot::Spec s;
-  s.title = "an LRU tile cache along a camera path (a view 6 x 6 tiles wide, 1/4 tile a frame)";
   s.xLabel = "cache size, tiles", s.yLabel = "hit rate, %";
-  s.x0 = 24, s.x1 = 136, s.y0 = 0, s.y1 = 100;
+  // The axis runs past 100 % so that a curve at its plateau near 100 stays clear of the border.
+  s.x0 = 24, s.x1 = 136, s.y0 = 0, s.y1 = 110;
   s.xTicks = ts::plot::ticks(32, 128, 16), s.yTicks = ts::plot::ticks(0, 100, 20);
   std::vector<glm::dvec2> a, b;
   for (size_t k = 0; k < cacheSizes().size(); ++k)
     a.push_back({double(cacheSizes()[k]), 100 * m.plain[k].hitRate()}), b.push_back({double(cacheSizes()[k]), 100 * m.prefetched[k].hitRate()});
-  s.series.push_back({"lru", glm::vec4(0.4f, 0.7f, 1.0f, 1.0f), ts::plot::Mark::Line, a});
-  s.series.push_back({"lru_prefetch", glm::vec4(1.0f, 0.75f, 0.3f, 1.0f), ts::plot::Mark::Line, b});
-  s.legend = {{"LRU", glm::vec4(0.4f, 0.7f, 1.0f, 1.0f)}, {"LRU + prefetching the next column and row", L::kAmber}};
-  const int notes = int(L::lineHeight(1)) * 3 + 8;
-  ts::plot::draw(f, s, {8, 8, f.width - 16, f.height - 16 - notes});
+  s.series.push_back({"lru", kLru, ts::plot::Mark::Line, a});
+  s.series.push_back({"lru_prefetch", L::kAmber, ts::plot::Mark::Line, b});
+  const int notes = int(line) * 3 + 8, top = 8 + int(2 * line);
+  const size_t first = f.labels.size();
+  ts::plot::draw(f, s, {8, top, f.width - 16, f.height - 8 - top - notes});
+  // The ticks the plot placed are axis positions, not measurements.
+  for (size_t k = first; k < f.labels.size(); ++k)
+    for (const auto& [ticks, what] : {std::pair{&s.xTicks, "cache-size axis tick, tiles"}, std::pair{&s.yTicks, "hit-rate axis tick, %"}})
+      for (const ts::plot::Tick& t : *ticks)
+        if (f.labels[k].text == t.text) f.labels[k].given.push_back({what, t.at});
   L::caption(f, {8, float(f.height - notes), float(f.width - 8), float(f.height - 4)}, numbers, L::kAmber, 1);
 }
 }  // namespace views
