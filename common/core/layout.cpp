@@ -168,6 +168,13 @@ Text given(const std::string& name, double value, const char* format) {
   return t;
 }
 
+Label textLabel(float x, float y, const Text& t, glm::vec4 color, int scale, Align align, glm::vec4 background) {
+  Label l{x, y, t.text, color, scale, align, background};
+  l.printed = t.printed;
+  for (const Text::Given& g : t.given) l.given.push_back({g.name, g.value});
+  return l;
+}
+
 void attachNumbers(Frame& f, size_t first, const Text& t) {
   // In order: a number goes to the first line at or after the previous
   // one's that shows it (wrapping breaks at spaces, never inside a number).

@@ -132,6 +132,9 @@ Text measured(const Measurements& m, const std::string& name, const char* format
 Text measuredText(const Measurements& m, const std::string& templ);
 // A number that is not measured, with what it is: an axis tick, a parameter.
 Text given(const std::string& name, double value, const char* format);
+// One label of `t`, whole (no fitting): a tag, a note, a key placed by hand.
+Label textLabel(float x, float y, const Text& t, glm::vec4 color, int scale, Align align = Align::Left,
+                glm::vec4 background = glm::vec4(0.0f));
 // Hands `t`'s numbers to the labels f.labels[first..] that show them.
 void attachNumbers(Frame& f, size_t first, const Text& t);
 

@@ -73,10 +73,23 @@ std::vector<Token> tokens(const std::string& s) {
       ++i;
       while (digit(i)) ++i, ++decimals;
     }
+    if (i + 1 < s.size() && s[i] == 'e' && (digit(i + 1) || (s[i + 1] == '-' && digit(i + 2)))) {  // 1.7e-16
+      i += s[i + 1] == '-' ? 2 : 1;
+      while (digit(i)) ++i;
+      decimals = 99;  // compared by its relative size below
+    }
     const bool version = i + 1 < s.size() && s[i] == '.' && digit(i + 1);
     if (version)
       while (i < s.size() && (digit(i) || s[i] == '.')) ++i;
     if (glued(start) || version) continue;
+    // A formula's constant: a coefficient written against its name (59pi),
+    // or a number divided by a name or dividing one (theta/360, pi/8): the
+    // formula, not a quantity.  A fraction of two numbers (615/4096) is not.
+    const auto alpha = [&](size_t k) { return k < s.size() && std::isalpha(static_cast<unsigned char>(s[k])); };
+    const bool coefficient = alpha(i) && s[i] != 'x';  // 16x is a quantity, 59pi a coefficient
+    const bool overName = start >= 2 && s[start - 1] == '/' && (alpha(start - 2) || s[start - 2] == ')');
+    const bool underName = i + 1 < s.size() && s[i] == '/' && (alpha(i + 1) || s[i + 1] == '(');
+    if (coefficient || overName || underName) continue;
     const bool negative = start > 0 && s[start - 1] == '-' && (start == 1 || !std::isalnum(static_cast<unsigned char>(s[start - 2])));
     if (negative) --start;
     out.push_back({std::stod(s.substr(start, i - start)), decimals, start, i - start});
@@ -183,7 +196,7 @@ std::vector<std::string> numberProblems(const Json& d) {
       });
       if (covered) continue;
       if (t.decimals == 0 && std::abs(t.value) <= 16) continue;
-      const double half = 0.5 * std::pow(10.0, -t.decimals) * (1 + 1e-9);
+      const double half = t.decimals == 99 ? 0.05 * std::abs(t.value) : 0.5 * std::pow(10.0, -t.decimals) * (1 + 1e-9);
       auto matches = [&](double v) {
         return std::abs(v - t.value) <= half || std::abs(-v - t.value) <= half || std::abs(100 * v - t.value) <= half;
       };

@@ -57,7 +57,7 @@ Json read(const fs::path& p) {
   return Json::parse(in);
 }
 
-std::string lines(const std::vector<std::string>& v, size_t most = 8) {
+std::string lines(const std::vector<std::string>& v, size_t most = 1000) {
   std::string s;
   for (size_t k = 0; k < v.size() && k < most; ++k) s += "\n    " + v[k];
   if (v.size() > most) s += "\n    ... and " + std::to_string(v.size() - most) + " more";
@@ -109,7 +109,7 @@ Json madeFigure() {
   L::caption(f, {20, 200, 380, 230}, L::measuredText(m, "the ball: {ball_pixels|%.0f} px, {error_deg|%.1f} deg off"),
              L::kAmber, 1, ts::Align::Left);
   L::caption(f, {20, 6, 380, 30}, "a map " + L::given("map size", 256, "%g") + " texels wide", L::kWhite, 1);
-  L::legend(f, {230, 40, 396, 80}, {{{1.0f, 0.2f, 0.2f, 1.0f}, "red: where the ball is"}}, 1);
+  L::legend(f, {20, 240, 390, 290}, {{{1.0f, 0.2f, 0.2f, 1.0f}, "red: where the ball is"}}, 1);
   ts::SidecarInfo info;
   info.figureId = "made";
   info.measurements = m;
