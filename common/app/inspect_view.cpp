@@ -415,6 +415,28 @@ std::vector<glm::vec2> numberPicks(Frame& f, const std::vector<L::Box>& rings, c
   return leaders;
 }
 
+// The key in `band`, a line of entries at a time, each line a swatch's
+// box below the last (layout::legend steps one line of text, less than a
+// swatch with its box, so two of its lines would touch); returns the height
+// it takes.  `draw` false: only measures.
+float drawKey(Frame& f, L::Box band, const std::vector<LegendEntry>& entries, int scale, bool draw = true) {
+  const float step = L::lineHeight(scale) + 6.0f * float(scale);
+  float y = band.y0;
+  for (size_t k = 0; k < entries.size() && y + L::lineHeight(scale) <= band.y1;) {
+    // As many entries as legend() puts on one line of this width.
+    size_t m = k + 1;
+    while (m < entries.size()) {
+      Frame scratch = L::blankFrame(f.width, f.height);
+      const std::vector<LegendEntry> line(entries.begin() + long(k), entries.begin() + long(m + 1));
+      if (L::legend(scratch, {band.x0, 0, band.x1, 1000}, line, scale) > L::lineHeight(scale)) break;
+      ++m;
+    }
+    if (draw) L::legend(f, {band.x0, y, band.x1, y + L::lineHeight(scale)}, {entries.begin() + long(k), entries.begin() + long(m)}, scale);
+    y += step, k = m;
+  }
+  return y - band.y0;
+}
+
 // The cells' grid for n cells in `area`: the number of columns that gives
 // the largest square view (a cell `cellW` wide keeps captionH(cellW) pixels
 // for its captions).
@@ -447,10 +469,7 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
                                       {kLodSquare, "a texel of level lambda"},
                                       {kTexels, "texels read"},
                                       {kTexelGrid, "texel grid"}};
-  auto keyHeight = [&](int width) {
-    Frame scratch = L::blankFrame(w, h);
-    return int(std::ceil(L::legend(scratch, {0, 0, float(width), float(h)}, entries, scale)));
-  };
+  auto keyHeight = [&](int width) { return int(std::ceil(drawKey(f, {0, 0, float(width), float(h)}, entries, scale, false))); };
   const L::Text cellsTitle =
       n ? L::Text("the texture's level ") + L::given("the level the cells show", 0, "%.0f") +
               L::Text(" around each footprint, in its texels (u right, v up)")
@@ -466,8 +485,10 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
     const int x0 = std::max(0, v.x), y0 = std::max(0, v.y);
     panel = {x0, y0, std::max(0, std::min(picture.width, v.x + v.w) - x0), std::max(0, std::min(picture.height, v.y + v.h) - y0)};
   }
-  const std::string whole = "the pixels' panel, drawn again pixel for pixel",
-                    partOf = "the pixels' part of their panel, drawn again pixel for pixel";
+  const bool one = std::count_if(picks.begin(), picks.end(), [&](const Picked& p) { return p.in.panel == pi; }) == 1;
+  const std::string whole = one ? "the pixel's panel, drawn again pixel for pixel" : "the pixels' panel, drawn again pixel for pixel",
+                    partOf = one ? "the pixel's part of its panel, drawn again pixel for pixel"
+                                 : "the pixels' part of their panel, drawn again pixel for pixel";
   auto captionH = [&](int width) { return L::captionLines(partOf, scale, float(width)) * line; };
   const int leftRoomW = w * 45 / 100 - 2 * margin, leftRoomH = h - captionH(leftRoomW) - line - 2 * margin;
   const int topRoomW = w - 2 * margin, topRoomH = h * 2 / 5 - captionH(topRoomW) - line - margin;
@@ -510,7 +531,12 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
     const int px = std::clamp(int(std::lround((bx0 + bx1 - cropW) / 2)), panel.x, panel.x + panel.w - cropW);
     const int py = std::clamp(int(std::lround((by0 + by1 - cropH) / 2)), panel.y, panel.y + panel.h - cropH);
     const Rect part{px, py, cropW, cropH};
-    const Rect at{zone.x + (zone.w - cropW) / 2, zone.y + line / 2, cropW, cropH};
+    // Moved by whole 2 x 2 blocks of window pixels: a rasterizer takes the
+    // derivatives (and so lambda) per 2 x 2 quad, so the same pixels must
+    // fall in the same quads (window rows count from the bottom).
+    Rect at{zone.x + (zone.w - cropW) / 2, zone.y + line / 2, cropW, cropH};
+    if ((at.x - part.x) % 2) ++at.x;
+    if ((at.y - part.y + picture.height - h) % 2) ++at.y;
     f.panels.push_back(reframed(f, picture, picture.panels[size_t(pi)], part, at));
     L::caption(f, {float(zone.x), 2, float(zone.x + zone.w), float(zone.y)},
                cropW == panel.w && cropH == panel.h ? whole : partOf, L::kWhite, scale);
@@ -567,7 +593,7 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
   // The key names the colours drawn, and only those.
   if (!anyRing) entries.erase(entries.begin());
   if (!grid) entries.pop_back();
-  L::legend(f, key, entries, scale);
+  drawKey(f, key, entries, scale);
   return f;
 }
 
