@@ -44,8 +44,9 @@ std::string inspectCard(const Picked& p);
 std::string inspectJson(const Picked& p);
 
 // The footprint figure, w x h.  The picture: the panel most picks lie in,
-// drawn again from its own data pixel for pixel (the part around the picks
-// when the whole does not fit), so it holds none of the figure's captions;
+// drawn again from its own data pixel for pixel, in the same 2 x 2 quads
+// (the part around the picks when the whole does not fit), so it shows the
+// colours GL drew at the picks and none of the figure's captions;
 // each pick in it ringed and numbered, a number that has no room beside its
 // ring moved away with a leader line.  It goes beside the cells or above
 // them, whichever shows more of it.  The cells: one per textured pick,
@@ -62,8 +63,9 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
 // The footprint of one inspected pixel as line batches in texels of level 0
 // (u right, v up): the texels read (orange), the square of side 2^lambda
 // (yellow), the EWA ellipse (magenta), the preimage of the pixel square
-// (white) and, thinner over it, the derivative parallelogram (cyan).  The footprint figure's cells
-// and the window's inspect mode draw the same batches.
+// (white) and, thinner over it, the derivative parallelogram (cyan).  The
+// footprint figure's cells and the window's inspect mode draw the same
+// batches.
 std::vector<Batch> footprintBatches(const Frame& picture, const ref::Inspection& in);
 // One cell of the footprint figure alone, w x h, without captions: level 0
 // around the footprint with the footprint over it (the window's side panel
