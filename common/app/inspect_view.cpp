@@ -462,13 +462,14 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
   // The key: every entry it may hold (the ring only when a pick is ringed,
   // the grid only when a cell draws it); its room is measured by laying it
   // out on a scratch frame.
-  std::vector<LegendEntry> entries = {{L::kAmber, "pixel picked (ring, its number)"},
+  const std::string kRingMeaning = "pixel picked (ring, its number)", kGridMeaning = "texel grid";
+  std::vector<LegendEntry> entries = {{L::kAmber, kRingMeaning},
                                       {kPreimage, "preimage of the pixel square"},
                                       {kParallelogram, "derivatives' parallelogram"},
                                       {kEllipse, "EWA ellipse"},
                                       {kLodSquare, "a texel of level lambda"},
                                       {kTexels, "texels read"},
-                                      {kTexelGrid, "texel grid"}};
+                                      {kTexelGrid, kGridMeaning}};
   auto keyHeight = [&](int width) { return int(std::ceil(drawKey(f, {0, 0, float(width), float(h)}, entries, scale, false))); };
   const L::Text cellsTitle =
       n ? L::Text("the texture's level ") + L::given("the level the cells show", 0, "%.0f") +
@@ -479,6 +480,14 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
   // or above them, whichever shows more of it.  A band of half a line above
   // and below it holds numbers that do not fit on it.
   const int pi = pickedPanel(picks, picture.panels.size());
+  // The panel's own marks keep the meaning the inspected figure's legend
+  // gives their colours.
+  if (pi >= 0)
+    for (const Batch& b : picture.panels[size_t(pi)].batches)
+      for (const LegendEntry& e : picture.legend)
+        if (b.texture < 0 && !b.vertices.empty() && b.vertices[0].color == e.color &&
+            std::none_of(entries.begin(), entries.end(), [&](const LegendEntry& c) { return c.color == e.color; }))
+          entries.push_back(e);
   Rect panel{0, 0, 0, 0};
   if (pi >= 0) {
     const Rect& v = picture.panels[size_t(pi)].viewport;
@@ -591,8 +600,12 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
     grid = addCell(f, picture, cells[size_t(c)]->in, int(cells[size_t(c)] - picks.data()) + 1, measured, area, scale) || grid;
   }
   // The key names the colours drawn, and only those.
-  if (!anyRing) entries.erase(entries.begin());
-  if (!grid) entries.pop_back();
+  auto drop = [&](const std::string& meaning) {
+    entries.erase(std::remove_if(entries.begin(), entries.end(), [&](const LegendEntry& e) { return e.meaning == meaning; }),
+                  entries.end());
+  };
+  if (!anyRing) drop(kRingMeaning);
+  if (!grid) drop(kGridMeaning);
   drawKey(f, key, entries, scale);
   return f;
 }
