@@ -103,9 +103,10 @@ class PerspectiveCorrection final : public ts::Scene {
          "The screen-linear error grows with the tilt, from {sweep_t00_error_texels} texels facing the eye, where "
          "(d2 - d1)/d1 is already {sweep_t00_d_ratio}, to {sweep_t80_error_texels} at 80 deg."},
         {"inspect_vi2_footprints", "Figure VI.2 (inside six pixels)",
-         "The plane at 80 degrees, six pixels picked from near to far (--inspect X,Y --footprints); right: each "
-         "one's footprint on level 0 of the texture: the preimage of the pixel square (white), the derivatives' "
-         "parallelogram, the EWA ellipse, the 2^lambda square of its mip level and the texels trilinear reads.",
+         "The plane at 80 degrees, six pixels picked from near to far (--inspect X,Y --footprints), ringed in the "
+         "plane's panel drawn again pixel for pixel; below: each one's footprint on level 0 of the texture: the "
+         "preimage of the pixel square (white), the derivatives' parallelogram, the EWA ellipse, the 2^lambda "
+         "square of its mip level and the texels trilinear reads.",
          {"--view", "perspective", "--tilt", "80", "--distance", "1.5", "--footprints", "--inspect", "515,185",
           "--inspect", "515,160", "--inspect", "515,145", "--inspect", "515,133", "--inspect", "515,126", "--inspect",
           "515,121"}, 1024, 400,
