@@ -415,26 +415,10 @@ std::vector<glm::vec2> numberPicks(Frame& f, const std::vector<L::Box>& rings, c
   return leaders;
 }
 
-// The key in `band`, a line of entries at a time, each line a swatch's
-// box below the last (layout::legend steps one line of text, less than a
-// swatch with its box, so two of its lines would touch); returns the height
-// it takes.  `draw` false: only measures.
+// The key in `band`; returns the height it takes.  `draw` false: only measures.
 float drawKey(Frame& f, L::Box band, const std::vector<LegendEntry>& entries, int scale, bool draw = true) {
-  const float step = L::lineHeight(scale) + 6.0f * float(scale);
-  float y = band.y0;
-  for (size_t k = 0; k < entries.size() && y + L::lineHeight(scale) <= band.y1;) {
-    // As many entries as legend() puts on one line of this width.
-    size_t m = k + 1;
-    while (m < entries.size()) {
-      Frame scratch = L::blankFrame(f.width, f.height);
-      const std::vector<LegendEntry> line(entries.begin() + long(k), entries.begin() + long(m + 1));
-      if (L::legend(scratch, {band.x0, 0, band.x1, 1000}, line, scale) > L::lineHeight(scale)) break;
-      ++m;
-    }
-    if (draw) L::legend(f, {band.x0, y, band.x1, y + L::lineHeight(scale)}, {entries.begin() + long(k), entries.begin() + long(m)}, scale);
-    y += step, k = m;
-  }
-  return y - band.y0;
+  Frame scratch = L::blankFrame(f.width, f.height);
+  return L::legend(draw ? f : scratch, band, entries, scale) - band.y0;
 }
 
 // The cells' grid for n cells in `area`: the number of columns that gives

@@ -219,7 +219,7 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
     const L::Box title = normals ? L::halves(c.above).first : c.above;
     L::caption(f, title, std::string(kMethods[m].title) + (normals && !noNormals ? ", normals" : ""), kWhite, c.scale);
     if (normals && k == 0)  // one key for both pictures: each channel is 0.5 + 0.5 of an eye-space component
-      L::legend(f, {c.above.x0 + 3.0f, L::halves(c.above).second.y0, c.above.x1, c.above.y1},  // the swatch's box: 3 px out
+      L::legend(f, L::halves(c.above).second,
                 {{{1.0f, 0.5f, 0.5f, 1.0f}, "n to the right (+x)"},
                  {{0.5f, 1.0f, 0.5f, 1.0f}, "n up (+y)"},
                  {{0.5f, 0.5f, 1.0f, 1.0f}, "n to the eye (+z)"}},

@@ -178,16 +178,14 @@ std::vector<ts::LegendEntry> heatKey(double scaleDeg) {
   auto c = [&](double e) { return glm::vec4(glm::vec3(envmap::heat(e, scaleDeg)), 1.0f); };
   return {{c(0), "no error"}, {c(0.5 * scaleDeg), "half the scale"}, {c(scaleDeg), "the scale or more"}};
 }
-// A key in a cell's band: at the largest scale (at most `scale`) at which its widest entry fits, the
-// swatches' boxes (3 px a scale around them) inside the band too; an entry too wide even at scale 1 (a
-// narrow window's cell) is left out rather than run into the next cell.
+// A key in a cell's band: at the largest scale (at most `scale`) at which its widest entry fits; an entry
+// too wide even at scale 1 (a narrow window's cell) is left out rather than run into the next cell.
 void cellKey(ts::Frame& f, ts::layout::Box band, const std::vector<ts::LegendEntry>& entries, int scale) {
   auto entryWidth = [](const ts::LegendEntry& e, int s) { return ts::text::height(s) + 4.0f * float(s) + ts::text::width(e.meaning, s); };
   float widest = 0;
   for (const ts::LegendEntry& e : entries) widest = std::max(widest, entryWidth(e, 1));
   int s = std::max(1, scale);
-  while (s > 1 && widest * float(s) + 6.0f * float(s) > band.w()) --s;
-  band.x0 += 3.0f * float(s), band.x1 -= 3.0f * float(s);
+  while (s > 1 && widest * float(s) > band.w()) --s;
   std::vector<ts::LegendEntry> fit;
   for (const ts::LegendEntry& e : entries)
     if (entryWidth(e, s) <= band.w()) fit.push_back(e);
@@ -208,11 +206,7 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     if (t && t->image) f.panels.push_back(L::picturePanel(f, id, c.picture, *t));  // a nested frame's picture upright
     const L::Box title = key.empty() ? c.above : L::halves(c.above).first;
     L::caption(f, title, above, kWhite, c.scale);
-    const size_t first = f.labels.size();
     if (!key.empty()) cellKey(f, L::halves(c.above).second, key, c.scale);
-    // A key's words take its swatch's colour: black ones would vanish on the page, so they are written white.
-    for (size_t i = first; i < f.labels.size(); ++i)
-      if (f.labels[i].background.a == 0 && glm::length(glm::vec3(f.labels[i].color)) < 0.3f) f.labels[i].color = kWhite;
     if (!below.empty()) L::caption(f, c.below, below, kAmber, c.scale);
   };
   if (view_ == kCompareView) {

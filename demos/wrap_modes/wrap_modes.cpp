@@ -225,9 +225,7 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
   const glm::mat4 m = matrix();
   wrap::views::addTextureSpace(f, cells[0].picture, "texture_space", tex, range_, &m);
   L::caption(f, L::halves(cells[0].above).first, "texture space: M (unit square)", kWhite, cells[0].scale);
-  L::Box keyBand = L::halves(cells[0].above).second;
-  keyBand.x0 += 3.0f * float(cells[0].scale);  // the swatch's box reaches 3 px a scale left of it
-  L::legend(f, keyBand,
+  L::legend(f, L::halves(cells[0].above).second,
             {{wrap::views::kSquare, "the unit square under M"}, {wrap::views::kGrid, "integer s and t"}}, cells[0].scale);
   L::caption(f, cells[0].below, state, kWhite, cells[0].scale);
   ts::Panel q;
