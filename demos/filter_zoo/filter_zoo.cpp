@@ -284,7 +284,8 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
       ms.push_back({"mip_top[" + key + "]", k.top, "the chain's 1 x 1 level (grey)"});
     }
     // What every 1 x 1 level stands for, and how far the kernels' chains end from it.
-    const ts::Image& base = *sceneTexture(kSlant, pattern_).image;
+    const ts::TextureDesc board = sceneTexture(kSlant, pattern_);
+    const ts::Image& base = *board.image;
     for (bool lin : {false, true}) {
       const std::string domain = lin ? "linear" : "srgb";
       const double mean = meanGrey(base, lin);

@@ -32,7 +32,7 @@ const glm::vec4 kGrey{0.6f, 0.6f, 0.65f, 1.0f};
 // and trilinear's 2^lambda square: common/app/inspect_view.cpp).
 const glm::vec4 kPreimageColour{1.0f, 1.0f, 1.0f, 1.0f}, kEllipseColour{1.0f, 0.3f, 0.9f, 1.0f},
     kSquareColour{1.0f, 0.85f, 0.2f, 1.0f}, kRipmapColour{0.35f, 1.0f, 0.35f, 1.0f}, kSatColour{0.2f, 0.9f, 1.0f, 1.0f},
-    kProbeColour{1.0f, 0.45f, 0.1f, 1.0f};
+    kProbeColour{1.0f, 0.45f, 0.1f, 1.0f}, kTexelGridColour{0.42f, 0.42f, 0.47f, 1.0f};
 
 // Bytes per texel of what each method keeps, over the texture's: the memory
 // figure's x (SAT: satBits / 8 a channel).
@@ -67,6 +67,19 @@ inline L::Text methodText(int m) {
   if (m == kAniso16) return L::Text("GL anisotropic ") + L::given("GL_TEXTURE_MAX_ANISOTROPY_EXT", kMaxAniso, "%g") + "x";
   return L::Text(methodTitle(m));
 }
+// A number in a name (a kernel's width, a level's index): given, not measured.
+inline L::Text num(const std::string& what, double v) { return L::given(what, v, "%g"); }
+// A kernel's name, its parameters given.
+inline L::Text kernelText(int k) {
+  switch (k) {
+    case kBox: return "box (Buss's " + num("the box's width, texels", 2) + "x" + num("the box's height, texels", 2) + ")";
+    case kLanczos2: return "Lanczos-" + num("Lanczos lobes", 2);
+    case kLanczos3: return "Lanczos-" + num("Lanczos lobes", 3);
+    default: return L::Text(kernelTitle(k));
+  }
+}
+// "1x1 level": the chain's last level, named by its size.
+inline L::Text topLevelText() { return num("the last level's width", 1) + "x" + num("the last level's height", 1) + " level"; }
 // The tick labels a plot placed (labels from `first` on) say that their
 // numbers are given, not measured: the axis's tick values.
 inline void givenTicks(ts::Frame& f, size_t first, const std::vector<ts::plot::Tick>& ticks, const std::string& axis) {
@@ -93,21 +106,26 @@ inline float legendOf(ts::Frame& f, L::Box band, const std::vector<std::pair<glm
   L::attachNumbers(f, first, all);
   return below;
 }
-// A key line per entry (a swatch and its meaning in its colour), from
-// `y` down inside `band`, the meanings' numbers attached; returns the y
-// below the last line.
+// A key line per entry (a swatch and its meaning in its colour), from the
+// top of `band` down, the meanings' numbers attached; returns the y below
+// the last line.  layout::legend's swatch is a boxed label, reaching 3 px a
+// scale beyond its text on every side: the lines keep that room.
+inline float keyPad(int scale) { return 3.0f * float(scale); }
+inline float keyStep(int scale) { return L::lineHeight(scale) + 3.0f * float(scale); }
 inline float keyLines(ts::Frame& f, L::Box band, const std::vector<std::pair<glm::vec4, L::Text>>& entries, int scale) {
-  float y = band.y0;
+  float y = band.y0 + keyPad(scale);
   for (const auto& [colour, meaning] : entries) {
-    if (y + L::lineHeight(scale) > band.y1 + 1) break;
-    legendOf(f, {band.x0, y, band.x1, y + L::lineHeight(scale)}, {{colour, meaning}}, scale);
-    y += L::lineHeight(scale);
+    if (y + ts::text::height(scale) + keyPad(scale) > band.y1 + 1) break;
+    legendOf(f, {band.x0 + keyPad(scale), y, band.x1, y + L::lineHeight(scale)}, {{colour, meaning}}, scale);
+    y += keyStep(scale);
   }
   return y;
 }
-// The width a key line takes at `scale`: swatch, gap and text (layout::legend's).
+// The height `lines` key lines take at `scale`.
+inline float keyHeight(int lines, int scale) { return float(lines) * keyStep(scale) + keyPad(scale); }
+// The width a key line takes at `scale`: pad, swatch, gap and text (layout::legend's).
 inline float keyWidth(const std::string& meaning, int scale) {
-  return ts::text::height(scale) + 4.0f * float(scale) + ts::text::width(meaning, scale);
+  return keyPad(scale) + ts::text::height(scale) + 4.0f * float(scale) + ts::text::width(meaning, scale);
 }
 
 // The state a drawing needs.
@@ -203,7 +221,22 @@ inline void Views::buildMethods(ts::Frame& f, const Result* m) const {
 inline void Views::buildAzimuths(ts::Frame& f, const Result* m, const ts::Measurements& ms) const {
   const int w = f.width, h = f.height;
   const int sc = L::scaleFor({0, 0, w, h / 3}, 2), line = int(L::lineHeight(sc));
-  const float bandH = float(h - 3 * line - 4) / 3;
+  // The foot: the highlight's key and two lines of notes, at one scale.
+  const L::Text same =
+      measuresAll(ms, "{last_level_like_level0}{nmn_nearest_differ_far}{nmn_nearest_differ_lod_min}")
+          ? "GL_NEAREST_MIPMAP_NEAREST's error is GL_NEAREST's: levels " + num("the first level above level 0", 1) + ".." +
+                L::measured(ms, "last_level_like_level0", "%.0f") +
+                " of the checkerboard are the same board, so a nearest sample takes level " + num("level", 0) +
+                "'s colour; the pictures differ in " + L::measured(ms, "nmn_nearest_differ_far", "%.0f") +
+                " far-field pixels, beyond it from LOD " + L::measured(ms, "nmn_nearest_differ_lod_min", "%.2f")
+          : L::Text();
+  const std::vector<L::Text> footNotes = {
+      "after each name: " + maskText() + (bias != 0 ? "; LOD bias " + L::given("LOD bias", bias, "%g") : L::Text()), same};
+  int fs = sc;
+  while (fs > 1 && std::any_of(footNotes.begin(), footNotes.end(), [&](const L::Text& t) { return ts::text::width(t.text, fs) > w - 8; }))
+    --fs;
+  const float footH = keyHeight(1, fs) + 2 * L::lineHeight(fs) + 4;
+  const float bandH = (float(h) - footH - 4) / 3;
   for (int b = 0; b < 3; ++b) {
     const double az = kAzimuths[size_t(b)];
     const float y0 = 2 + b * bandH;
@@ -222,17 +255,11 @@ inline void Views::buildAzimuths(ts::Frame& f, const Result* m, const ts::Measur
                    c.scale);
     }
   }
-  const float foot = float(h - 3 * line - 2);
-  L::legend(f, {4, foot, float(w - 4), foot + float(line)}, {{kAmber, "the method highlighted (--method): " + std::string(methodTitle(method))}}, sc);
-  // Why GL_NEAREST_MIPMAP_NEAREST's number is GL_NEAREST's, measured.
-  const std::string same =
-      "GL_NEAREST_MIPMAP_NEAREST's error is GL_NEAREST's: levels 1..{last_level_like_level0|%.0f} of the checkerboard are "
-      "the same board, so a nearest sample takes level 0's colour; the pictures differ in {nmn_nearest_differ_far|%.0f} "
-      "far-field pixels, beyond it from LOD {nmn_nearest_differ_lod_min|%.2f}";
-  notes(f, {4, foot + float(line), float(w - 4), float(h)},
-        {"after each name: " + maskText() + (bias != 0 ? "; LOD bias " + L::given("LOD bias", bias, "%g") : L::Text()),
-         printed(ms, same)},
-        kGrey, sc);
+  // The key of the highlight, then why GL_NEAREST_MIPMAP_NEAREST's number is GL_NEAREST's, measured.
+  const float foot = float(h) - footH;
+  const float below = keyLines(f, {4, foot, float(w - 4), foot + keyHeight(1, fs)},
+                               {{kAmber, "the method highlighted (--method): " + std::string(methodTitle(method))}}, fs);
+  notes(f, {4, below, float(w - 4), float(h)}, footNotes, kGrey, fs);
 }
 
 // One pixel's footprint on level 0 with every method's support: left (or
@@ -255,22 +282,31 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m, const ts::Measur
   // The key: each support's colour and what it is (this pixel's numbers, measured).
   const std::vector<std::pair<glm::vec4, L::Text>> key = {
       {kPreimageColour, "the exact preimage" + printed(ms, " ({pick_preimage_texels|%.1f} texels)")},
-      {kSquareColour, "trilinear's 2^lambda square"},
-      {kRipmapColour, "the ripmap's 2^i x 2^j rectangle"},
-      {kSatColour, "the SAT's box" + printed(ms, ", {pick_sat_box_ratio|%.2f}x this footprint's area")},
+      {kSquareColour, "trilinear's " + num("the levels' ratio", 2) + "^lambda square"},
+      {kRipmapColour, "the ripmap's " + num("the levels' ratio", 2) + "^i x " + num("the levels' ratio", 2) + "^j rectangle"},
+      {kSatColour, "the SAT's box" + printed(ms, ", {pick_sat_box_ratio|%.2f}x this pixel's footprint")},
       {kProbeColour, printed(ms, "{pick_probes|%.0f} probes, lambda {pick_probe_lambda|%.2f}", "the probe line's probes")},
       {kEllipseColour, "EWA's ellipse"},
-      {kAmber, "the pixel, ringed in the picture"}};
+      {kAmber, "the pixel, ringed in the picture"},
+      {kTexelGridColour, "level " + num("level", 0) + "'s texel grid"}};
   const L::Text where = sceneText();
   // The claim's number, where the reader looks for the SAT's box.
+  const bool claimed = measuresAll(ms, "{sat_box_ratio[8to1_45deg]}{sat_box_ratio[8to1_0deg]}");
   const L::Text eight = L::given("the footprint's long side over its short", 8, "%g") + ":" +
-                        L::given("the footprint's short side", 1, "%g") + " footprint";
-  const L::Text claim =
-      measuresAll(ms, "{sat_box_ratio[8to1_45deg]}{sat_box_ratio[8to1_0deg]}")
-          ? "The SAT's box over an " + eight + " turned " + L::given("the footprint's turn, degrees", 45, "%g") +
-                " deg: " + L::measured(ms, "sat_box_ratio[8to1_45deg]", "%.2f") + "x its area (along the axes " +
-                L::measured(ms, "sat_box_ratio[8to1_0deg]", "%.2f") + "x)"
-          : L::Text();
+                        L::given("the footprint's short side", 1, "%g");
+  const std::vector<std::pair<L::Text, int>> claim =
+      claimed ? std::vector<std::pair<L::Text, int>>{
+                    {"The SAT's box: " + L::measured(ms, "sat_box_ratio[8to1_45deg]", "%.2f") + "x the area", sc},
+                    {"of an " + eight + " footprint at " + L::given("the footprint's turn, degrees", 45, "%g") + " deg", sc},
+                    {"(along the axes: " + L::measured(ms, "sat_box_ratio[8to1_0deg]", "%.2f") + "x)", 1}}
+              : std::vector<std::pair<L::Text, int>>{};
+  auto placeClaim = [&](L::Box band) {
+    L::Column lines(f, band);
+    for (const auto& [text, scale] : claim) lines.add(text, scale == 1 ? kGrey : kWhite, scale, ts::Align::Left);
+  };
+  int claimH = 0;
+  for (const auto& c : claim) claimH += int(std::ceil(L::lineHeight(c.second)));
+  if (claimH) claimH += 6;
   // The key's scale: the largest (up to sc) at which its widest line fits `width`.
   auto keyScale = [&](float width) {
     int s2 = sc;
@@ -290,10 +326,7 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m, const ts::Measur
   for (const auto& kl : key) keyW = std::max(keyW, keyWidth(kl.second.text, 1) + 8);
   const int leftW = wide ? w * 2 / 5 : std::max(40, w - 8 - int(keyW) - 8);
   const int ks = keyScale(wide ? float(leftW - 4) : keyW);
-  const int keyH = notesHeight(int(key.size()) + 1, ks);
-  const int claimH = claim.empty() ? 0
-                                   : int(std::ceil(L::captionLines(claim.text, sc, wide ? float(leftW - 4) : float(w - 8)) *
-                                                   L::lineHeight(sc))) + 4;
+  const int keyH = int(std::ceil(keyHeight(int(key.size()), ks) + L::lineHeight(ks))) + 4;
   const int pictureRoom = wide ? h - 2 * line - keyH - claimH : std::max(20, (h - 3 * line - claimH) / 3);
   const double k = std::max(0.05, std::min(double(leftW - 8) / kImageW, double(pictureRoom) / kImageH));
   const ts::Rect pic{4, line + 2, std::max(8, int(kImageW * k)), std::max(4, int(kImageH * k))};
@@ -310,25 +343,28 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m, const ts::Measur
     f.panels.push_back(ring);
   }
   float below = float(pic.y + pic.h + 6);
-  if (wide && !claim.empty()) below = L::caption(f, {4, below, float(leftW), below + float(claimH)}, claim, kWhite, sc, ts::Align::Left) + 4;
+  if (wide && claimH) {
+    placeClaim({4, below, float(leftW), below + float(claimH)});
+    below += float(claimH);
+  }
   const L::Box keyBox = wide ? L::Box{4, below, float(leftW), float(h)}
                              : L::Box{float(pic.x + pic.w + 8), float(pic.y), float(w - 4), float(pic.y + std::max(pic.h, keyH))};
   {
     const float after = keyLines(f, keyBox, key, ks);
-    L::Column notes(f, {keyBox.x0, after, keyBox.x1, keyBox.y1});
-    notes.add(where, kGrey, ks, ts::Align::Left);
+    L::Column tail(f, {keyBox.x0, after, keyBox.x1, keyBox.y1});
+    tail.add(where, kGrey, ks, ts::Align::Left);
   }
   int areaY = wide ? line + 2 : pic.y + std::max(pic.h, keyH) + line + 4;
-  if (!wide && !claim.empty()) {
-    L::caption(f, {4, float(areaY - line), float(w - 4), float(areaY - line + claimH)}, claim, kWhite, sc, ts::Align::Left);
+  if (!wide && claimH) {
+    placeClaim({4, float(areaY - line), float(w - 4), float(areaY - line + claimH)});
     areaY += claimH;
   }
   // The texture around the footprint.
   const int areaX = wide ? leftW + 12 : 4;
   const ts::Rect view{areaX, areaY, std::max(8, w - areaX - 4), std::max(8, h - areaY - 4)};
   L::caption(f, {float(areaX), float(areaY - line), float(w - 4), float(areaY - 2)},
-             on ? printed(ms, "level 0 around its footprint: lambda {pick_lambda|%.2f}, {pick_texels_per_pixel|%.1f} texels a pixel",
-                          "level 0 around its footprint")
+             on ? "level " + num("level", 0) + " around its footprint" +
+                      printed(ms, ": lambda {pick_lambda|%.2f}, {pick_texels_per_pixel|%.1f} texels a pixel")
                 : L::Text("the pixel is off the surface: pick another (--pick X,Y)"),
              kWhite, sc, ts::Align::Left);
   if (!on) return;
@@ -363,7 +399,7 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m, const ts::Measur
     std::vector<glm::vec2> grid;
     for (double u = std::ceil(cu - halfU); u <= cu + halfU; ++u) grid.push_back({float(u), y0}), grid.push_back({float(u), y1});
     for (double t = std::ceil(cv - halfV); t <= cv + halfV; ++t) grid.push_back({x0, float(t)}), grid.push_back({x1, float(t)});
-    p.batches.push_back(ts::lineSegments(grid, glm::vec4(0.42f, 0.42f, 0.47f, 1.0f), 1.0f, "texel_grid"));
+    p.batches.push_back(ts::lineSegments(grid, kTexelGridColour, 1.0f, "texel_grid"));
   }
   auto rect = [&](glm::dvec2 half, glm::vec4 colour, float width, const char* role) {
     p.batches.push_back(ts::lineLoop({{float(c.x - half.x), float(c.y - half.y)}, {float(c.x + half.x), float(c.y - half.y)},
@@ -408,7 +444,7 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurem
   }
   const glm::vec4 kBlue{0.35f, 0.65f, 1.0f, 1.0f};
   float y = L::caption(f, {4, 2, float(w - 4), 2.0f + float(line)}, "memory against error", kWhite, sc);
-  y = legendOf(f, {8, y, float(w - 4), y + float(line)},
+  y = keyLines(f, {8, y, float(w - 4), y + keyHeight(2, sc)},
                {{kBlue, "squares: texture turned " + L::given("azimuth, degrees", 0, "%g") + " deg"},
                 {kAmber, "crosses: texture turned " + L::given("azimuth, degrees", 45, "%g") + " deg"}},
                sc);
@@ -512,27 +548,29 @@ inline void Views::buildKernels(ts::Frame& f, const Result* m, const ts::Measure
         if (r.kernel == kern && r.linear == lin) row = &r;
     const glm::vec4 colour = kern == kernel && lin == linearLight ? kAmber : kWhite;
     const std::string key = std::string(kernelKey(kern)) + (lin ? "_linear" : "_srgb");
-    L::caption(f, c.above, std::string(kernelTitle(kern)) + (lin ? ", linear light" : ", sRGB"), colour, c.scale, ts::Align::Left);
+    L::caption(f, c.above, kernelText(kern) + (lin ? ", linear light" : ", sRGB"), colour, c.scale, ts::Align::Left);
     picturePanel(f, "kernel_" + key, c.picture, row ? &row->picture : nullptr, c.scale);
     if (row)
-      L::caption(f, c.below, printed(ms, "RMS {rms_kernel[" + key + "]|%.2f}, 1x1 level {mip_top[" + key + "]|%.0f}"), colour,
-                 c.scale, ts::Align::Left);
+      L::caption(f, c.below,
+                 printed(ms, "RMS {rms_kernel[" + key + "]|%.2f}, ") + topLevelText() + printed(ms, " {mip_top[" + key + "]|%.0f}"),
+                 colour, c.scale, ts::Align::Left);
   }
   const std::string tops =
-      "1x1 level: the checkerboard's mean, {mip_mean[srgb]|%.1f} in sRGB values, {mip_mean[linear]|%.1f} in linear light "
-      "(in double precision); every kernel's chain ends within {mip_top_max_error[srgb]|%.1f} and "
-      "{mip_top_max_error[linear]|%.1f} of it, rounded to ";
+      ": the checkerboard's mean in double precision, {mip_mean[srgb]|%.1f} in sRGB values, {mip_mean[linear]|%.1f} "
+      "in linear light; each chain's is off it by at most {mip_top_max_error[srgb]|%.1f} and {mip_top_max_error[linear]|%.1f}: "
+      "every level is rounded to ";
   const float foot = float(h - 3 * line - 2);
   const int ls = std::max(1, sc - 1);
-  legendOf(f, {4, foot, float(w - 4), foot + float(line)},
-           {{kAmber, "the chain highlighted (--kernel, --linear-light): " + std::string(kernelTitle(kernel)) +
+  keyLines(f, {4, foot, float(w - 4), foot + float(line)},
+           {{kAmber, "the chain highlighted (--kernel, --linear-light): " + kernelText(kernel) +
                          (linearLight ? ", linear light" : ", sRGB values")}},
            ls);
   notes(f, {4, foot + float(line), float(w - 4), float(h)},
         {"trilinear (GL) with each kernel's mip chain; " + maskText() + ", texture turned " +
-             L::given("azimuth, degrees", azimuth, "%g") + " deg; linear light: against the exact integral of the linear-light values",
-         measuresAll(ms, tops) ? L::measuredText(ms, tops) + L::given("bits a channel", 8, "%g") + " bits at each level"
-                               : L::Text("1x1 level: the checkerboard's mean")},
+             L::given("azimuth, degrees", azimuth, "%g") + " deg",
+         "linear light: against the exact integral of the linear-light values",
+         measuresAll(ms, tops) ? topLevelText() + L::measuredText(ms, tops) + L::given("bits a channel", 8, "%g") + " bits"
+                               : topLevelText() + ": the checkerboard's mean"},
         kGrey, sc, ts::Align::Center);
 }
 

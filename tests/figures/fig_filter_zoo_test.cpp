@@ -189,7 +189,8 @@ TEST(FilterZoo, TexelsReadPerPixel) {
 TEST(FilterZoo, MipKernels) {
   Demo d("filter_zoo", {"--view", "kernels", "--azimuth", "45"});
   const ts::Measurements m = d.measure();
-  const ts::Image& board = *sceneTexture(kSlant, kChecker).image;
+  const ts::TextureDesc texture = sceneTexture(kSlant, kChecker);
+  const ts::Image& board = *texture.image;
   const ts::Rgba a = board.at(0, 0), b = board.at(board.width - 1, 0);  // 8 checks: the two ends differ
   ASSERT_FALSE(a == b);
   auto decode = [](double v) {
@@ -297,7 +298,8 @@ TEST(FilterZoo, DifferentPicturesHaveDifferentErrors) {
 // far field's LOD 5: there they do differ, in the far field they cannot.
 TEST(FilterZoo, NearestMipNearestIsNearestOverTheFarField) {
   const ts::Measurements& m = defaults();
-  const ts::Image& board = *sceneTexture(kSlant, kChecker).image;
+  const ts::TextureDesc texture = sceneTexture(kSlant, kChecker);
+  const ts::Image& board = *texture.image;
   int check = 1;
   while (check < board.width && board.at(check, 0) == board.at(0, 0)) ++check;
   const int last = int(std::round(std::log2(check)));
@@ -323,6 +325,9 @@ TEST(FilterZoo, FiguresPrintTheirMeasurements) {
     const ts::Frame f = d.frame(spec.width, spec.height);
     std::vector<std::string> shown;
     for (const ts::Label& l : f.labels) {
+      // A label that shows a number says where it comes from: a measurement or a given value.
+      if (std::any_of(l.text.begin(), l.text.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        EXPECT_TRUE(!l.printed.empty() || !l.given.empty()) << "\"" << l.text << "\" prints a number of unknown origin";
       EXPECT_EQ(l.text.find("llvmpipe"), std::string::npos) << l.text;
       EXPECT_EQ(l.text.find("LLVM"), std::string::npos) << l.text;
       for (const ts::Label::Printed& p : l.printed) {
@@ -343,7 +348,7 @@ TEST(FilterZoo, FiguresPrintTheirMeasurements) {
       printedAll({"last_level_like_level0", "nmn_nearest_differ_far", "nmn_nearest_differ_lod_min"});
     } else if (spec.id == "filter_zoo_supports") {
       printedAll({"sat_box_ratio[8to1_45deg]", "pick_sat_box_ratio", "pick_preimage_texels", "pick_probes"});
-      EXPECT_EQ(f.legend.size(), 7u) << "six supports and the ring";
+      EXPECT_EQ(f.legend.size(), 8u) << "six supports, the ring and the texel grid";
     } else if (spec.id == "filter_zoo_memory") {
       printedAll({"mip_memory_ratio", "ripmap_memory_ratio", "sat_bits[256]", "sat_memory_ratio"});
       // Every plotted method is named by a tag.
