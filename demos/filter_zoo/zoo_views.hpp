@@ -112,21 +112,33 @@ inline float legendOf(ts::Frame& f, L::Box band, const std::vector<std::pair<glm
 // scale beyond its text on every side: the lines keep that room.
 inline float keyPad(int scale) { return 3.0f * float(scale); }
 inline float keyStep(int scale) { return L::lineHeight(scale) + 3.0f * float(scale); }
+// The width a key line takes at `scale`: pad, swatch, gap and text (layout::legend's).
+inline float keyWidth(const std::string& meaning, int scale) {
+  return keyPad(scale) + ts::text::height(scale) + 4.0f * float(scale) + ts::text::width(meaning, scale);
+}
 inline float keyLines(ts::Frame& f, L::Box band, const std::vector<std::pair<glm::vec4, L::Text>>& entries, int scale) {
   float y = band.y0 + keyPad(scale);
   for (const auto& [colour, meaning] : entries) {
     if (y + ts::text::height(scale) + keyPad(scale) > band.y1 + 1) break;
-    legendOf(f, {band.x0 + keyPad(scale), y, band.x1, y + L::lineHeight(scale)}, {{colour, meaning}}, scale);
-    y += keyStep(scale);
+    if (keyWidth(meaning.text, scale) <= band.w()) {
+      legendOf(f, {band.x0 + keyPad(scale), y, band.x1, y + L::lineHeight(scale)}, {{colour, meaning}}, scale);
+      y += keyStep(scale);
+      continue;
+    }
+    // Too wide for its line (a small window): layout::legend's swatch, the
+    // meaning wrapped beside it, and the entry in the frame's legend.
+    ts::Label swatch;
+    swatch.x = band.x0 + keyPad(scale), swatch.y = y, swatch.text = " ", swatch.scale = scale, swatch.background = colour;
+    f.labels.push_back(swatch);
+    f.legend.push_back({colour, meaning.text});
+    const float x0 = swatch.x + ts::text::height(scale) + 4.0f * float(scale);
+    const float below = L::caption(f, {x0, y, band.x1, band.y1}, meaning, colour, scale, ts::Align::Left);
+    y = std::max(y + keyStep(scale), below + keyPad(scale) + float(scale));
   }
   return y;
 }
 // The height `lines` key lines take at `scale`.
 inline float keyHeight(int lines, int scale) { return float(lines) * keyStep(scale) + keyPad(scale); }
-// The width a key line takes at `scale`: pad, swatch, gap and text (layout::legend's).
-inline float keyWidth(const std::string& meaning, int scale) {
-  return keyPad(scale) + ts::text::height(scale) + 4.0f * float(scale) + ts::text::width(meaning, scale);
-}
 
 // The state a drawing needs.
 struct Views {
@@ -473,7 +485,10 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurem
 
   // The tags: a method at memory 1 or at the ripmap's (the plot's edges) to
   // the left of its marks, the others to the right; in each column from
-  // the top down, each at its marks' height or a line below the one above.
+  // the top down, each at its marks' height or a line below the one above;
+  // at the largest scale (up to the text's) at which they fit.  A tag that
+  // would still overlap another label tries the other side, else is left
+  // out (small windows only).
   auto at = [&](double mx, double my) {
     return glm::vec2(float(vp.x + (mx - s.x0) / (s.x1 - s.x0) * vp.w), float(vp.y + (1 - (my - s.y0) / (s.y1 - s.y0)) * vp.h));
   };
@@ -481,23 +496,38 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurem
     int method;
     glm::vec2 mark;
     bool left;
+    L::Text name;
     float top = 0;
   };
   std::vector<Tag> tags;
   for (int k = kNearest; k < kMethodCount; ++k) {
     const double mx = memoryRatio(k);
-    tags.push_back({k, at(mx, (a->rms[size_t(k)] + b->rms[size_t(k)]) / 2), mx < 1.2 || mx > 3.5});
+    tags.push_back({k, at(mx, (a->rms[size_t(k)] + b->rms[size_t(k)]) / 2), mx < 1.2 || mx > 3.5,
+                    k == kAniso16 ? "aniso " + L::given("GL_TEXTURE_MAX_ANISOTROPY_EXT", kMaxAniso, "%g") + "x" : L::Text(methodKey(k))});
   }
   std::stable_sort(tags.begin(), tags.end(), [](const Tag& p, const Tag& q) {
     return p.mark.x != q.mark.x ? p.mark.x < q.mark.x : p.left != q.left ? p.left : p.mark.y < q.mark.y;
   });
-  const float th = ts::text::height(sc), lh = L::lineHeight(sc);
+  const float gap = 10.0f + 2.0f * float(sc);
+  auto fits = [&](int scale) {
+    int column = 0;
+    for (size_t k = 0; k < tags.size(); ++k) {
+      const float tw = ts::text::width(tags[k].name.text, scale);
+      if (tags[k].left ? tags[k].mark.x - gap - tw < float(vp.x) + 2 : tags[k].mark.x + gap + tw > float(vp.x + vp.w) - 2) return false;
+      column = k > 0 && tags[k].mark.x == tags[k - 1].mark.x && tags[k].left == tags[k - 1].left ? column + 1 : 1;
+      if (float(column) * L::lineHeight(scale) > float(vp.h) - 4) return false;
+    }
+    return true;
+  };
+  int tagScale = sc;
+  while (tagScale > 1 && !fits(tagScale)) --tagScale;
+  const float th = ts::text::height(tagScale), lh = L::lineHeight(tagScale);
   for (size_t k = 0; k < tags.size();) {
     size_t e = k;
     while (e < tags.size() && tags[e].mark.x == tags[k].mark.x && tags[e].left == tags[k].left) ++e;
     for (size_t i = k; i < e; ++i) tags[i].top = std::max(tags[i].mark.y - th / 2, i > k ? tags[i - 1].top + lh : float(vp.y) + 2);
-    // A column that runs out of the plot's bottom moves up.
-    const float over = tags[e - 1].top + th - float(vp.y + vp.h - 2);
+    // A column that runs out of the plot's bottom moves up, not above its top.
+    const float over = std::min(tags[e - 1].top + th - float(vp.y + vp.h - 2), tags[k].top - float(vp.y) - 2);
     for (size_t i = k; over > 0 && i < e; ++i) tags[i].top -= over;
     k = e;
   }
@@ -506,16 +536,18 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurem
   leaders.viewport = vp;
   leaders.projection = glm::ortho(float(vp.x), float(vp.x + vp.w), float(vp.y + vp.h), float(vp.y), -1.0f, 1.0f);  // frame pixels, y down
   std::vector<glm::vec2> segs;
-  const float gap = 10.0f + 2.0f * float(sc);
   for (const Tag& t : tags) {
-    const L::Text name = t.method == kAniso16 ? "aniso " + L::given("GL_TEXTURE_MAX_ANISOTROPY_EXT", kMaxAniso, "%g") + "x"
-                                              : L::Text(methodKey(t.method));
-    const float tw = ts::text::width(name.text, sc);
-    const float x0 = t.left ? t.mark.x - gap - tw : t.mark.x + gap;
-    L::caption(f, {x0 - 1, t.top, x0 + tw + 1, t.top + th + 1}, name, s.textColor, sc, t.left ? ts::Align::Right : ts::Align::Left);
-    const float side = t.left ? -1.0f : 1.0f;
-    segs.push_back({t.mark.x + side * 7.0f, t.mark.y});
-    segs.push_back({t.mark.x + side * (gap - 3.0f), t.top + th / 2});
+    for (bool left : {t.left, !t.left}) {
+      ts::Label l;
+      l.x = left ? t.mark.x - gap : t.mark.x + gap, l.y = std::round(t.top);
+      l.text = t.name.text, l.color = s.textColor, l.scale = tagScale, l.align = left ? ts::Align::Right : ts::Align::Left;
+      for (const L::Text::Given& g : t.name.given) l.given.push_back({g.name, g.value});
+      if (!L::placeFree(f, l, L::box(vp))) continue;
+      const L::Box placed = L::labelBox(f.labels.back());
+      segs.push_back({t.mark.x + (left ? -7.0f : 7.0f), t.mark.y});
+      segs.push_back({left ? placed.x1 + 2 : placed.x0 - 2, (placed.y0 + placed.y1) / 2});
+      break;
+    }
   }
   leaders.batches.push_back(ts::lineSegments(segs, kGrey, 1.0f, "tag_leaders"));
   f.panels.push_back(leaders);
