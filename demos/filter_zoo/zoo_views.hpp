@@ -569,7 +569,7 @@ inline void Views::buildKernels(ts::Frame& f, const Result* m, const ts::Measure
   L::FlowSpec spec;
   spec.n = 2 * kKernelCount, spec.aspect = float(kImageW) / kImageH, spec.linesAbove = 1, spec.linesBelow = 1, spec.gap = 8;
   spec.minCellWidth = 150;
-  const std::vector<L::Cell> cells = L::flow({4, 4, float(w - 4), float(h - 3 * line - 4)}, spec);
+  const std::vector<L::Cell> cells = L::flow({4, 4, float(w - 4), float(h - 2 * line - 4)}, spec);
   for (int k = 0; k < 2 * kKernelCount && k < int(cells.size()); ++k) {
     const L::Cell& c = cells[size_t(k)];
     const int kern = k / 2;
@@ -591,19 +591,22 @@ inline void Views::buildKernels(ts::Frame& f, const Result* m, const ts::Measure
       ": the checkerboard's mean in double precision, {mip_mean[srgb]|%.1f} in sRGB values, {mip_mean[linear]|%.1f} "
       "in linear light; each chain's is off it by at most {mip_top_max_error[srgb]|%.1f} and {mip_top_max_error[linear]|%.1f}: "
       "every level is rounded to ";
-  const float foot = float(h - 3 * line - 2);
-  const int ls = std::max(1, sc - 1);
-  keyLines(f, {4, foot, float(w - 4), foot + float(line)},
-           {{kAmber, "the chain highlighted (--kernel, --linear-light): " + kernelText(kernel) +
-                         (linearLight ? ", linear light" : ", sRGB values")}},
-           ls);
-  notes(f, {4, foot + float(line), float(w - 4), float(h)},
+  // The foot: the highlight's key with a note beside it, then two notes.
+  const float foot = float(h - 2 * line - 2);
+  const int fs = std::max(1, sc - 1);
+  const L::Text highlighted =
+      "the chain highlighted (--kernel, --linear-light): " + kernelText(kernel) + (linearLight ? ", linear light" : ", sRGB values");
+  const float below = keyLines(f, {4, foot, float(w - 4), foot + keyHeight(1, fs)}, {{kAmber, highlighted}}, fs);
+  const float right = 4 + keyWidth(highlighted.text, fs) + 16;
+  if (right < float(w - 4))
+    L::caption(f, {right, foot + keyPad(fs), float(w - 4), foot + keyPad(fs) + L::lineHeight(fs)},
+               "linear light: against the exact integral of the linear-light values", kGrey, fs, ts::Align::Right);
+  notes(f, {4, below, float(w - 4), float(h)},
         {"trilinear (GL) with each kernel's mip chain; " + maskText() + ", texture turned " +
              L::given("azimuth, degrees", azimuth, "%g") + " deg",
-         "linear light: against the exact integral of the linear-light values",
          measuresAll(ms, tops) ? topLevelText() + L::measuredText(ms, tops) + L::given("bits a channel", 8, "%g") + " bits"
                                : topLevelText() + ": the checkerboard's mean"},
-        kGrey, sc, ts::Align::Center);
+        kGrey, fs, ts::Align::Center);
 }
 
 // The LOD bias: far-field RMS and flicker against the bias, one plot each.
