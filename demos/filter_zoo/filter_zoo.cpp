@@ -49,8 +49,13 @@
 // forms (the reference's log2(rho_edge/rho_max) at 45 degrees, and which
 // form this rasterizer uses: the level its trilinear filter reads at 0 and
 // 45 degrees); SAT's box ratio; every method's RMS against the exact
-// integral at 0, 22.5 and 45 degrees and its texels read per pixel; in the
-// kernels and bias views, each kernel's and each bias's numbers.
+// integral at 0, 22.5 and 45 degrees and its texels read per pixel; the
+// last mip level that keeps level 0's colours under a nearest sample and
+// where GL_NEAREST_MIPMAP_NEAREST's picture parts from GL_NEAREST's (the
+// checkerboard's levels 1..5 are the same board, so over the far field the
+// two draw the same picture); in the supports view, the picked pixel's
+// footprint; in the kernels and bias views, each kernel's and each bias's
+// numbers, and the mean each 1 x 1 level stands for.
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>

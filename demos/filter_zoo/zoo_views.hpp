@@ -660,7 +660,10 @@ inline std::vector<ts::FigureSpec> figureSpecs() {
        "filter: GL's (nearest, linear, nearest-mipmap-nearest, trilinear, anisotropic 16x), a ripmap, a summed-area "
        "table, the probe line and EWA, beside the exact area integral over each pixel's preimage. After each name: its "
        "RMS against the exact integral in the far field (LOD 1.5 to 5). The ripmap and the SAT fit footprints along the "
-       "texture's axes and lose as the texture turns; the probe line and EWA follow the footprint.",
+       "texture's axes and lose as the texture turns; the probe line and EWA follow the footprint. "
+       "GL_NEAREST_MIPMAP_NEAREST's error is GL_NEAREST's: the checkerboard's levels up to those the far field reads are "
+       "the same board, so a nearest sample in them takes level 0's colour (the note under the figure measures where the "
+       "two pictures part).",
        {"--view", "azimuths", "--method", "sat"}, 1500, 1100,
        "SAT's error grows from {rms_exact[sat@0]} at 0 deg to {rms_exact[sat@45]} at 45 deg and the ripmap's from "
        "{rms_exact[ripmap@0]} to {rms_exact[ripmap@45]}; the probe line stays at {rms_exact[probes@0]} .. "

@@ -1,5 +1,5 @@
-// tests/figures/fig_filter_zoo_test.cpp — the filter zoo (issue 25),
-// rendered offscreen: the numbers measure() prints against their closed
+// tests/figures/fig_filter_zoo_test.cpp — the filter zoo, rendered
+// offscreen: the numbers measure() prints against their closed
 // forms (computed here again), GL's filters against the exact area integral
 // with margins, and the GL pictures against the homography they must show.
 // The GL-free half (the CPU methods, the closed forms themselves) is
@@ -179,7 +179,7 @@ TEST(FilterZoo, TexelsReadPerPixel) {
   for (const auto& x : m) EXPECT_NE(x.name, "texels_per_pixel[aniso16]") << "GL's anisotropic filter cannot be counted";
 }
 
-// Claim (item 8): every kernel's 1x1 level of the checkerboard is its mean
+// Claim: every kernel's 1x1 level of the checkerboard is its mean
 // (taps summing to 1 keep it) but for the 8-bit rounding of each level: the
 // mean of the board's two colours in sRGB values, and of their linear-light
 // values encoded back (computed here from the colours), each chain's top
