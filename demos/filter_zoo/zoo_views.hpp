@@ -80,21 +80,6 @@ inline L::Text kernelText(int k) {
 }
 // "1x1 level": the chain's last level, named by its size.
 inline L::Text topLevelText() { return num("the last level's width", 1) + "x" + num("the last level's height", 1) + " level"; }
-// The tick labels a plot placed (labels from `first` on) say that their
-// numbers are given, not measured: the axis's tick values.
-inline void givenTicks(ts::Frame& f, size_t first, const std::vector<ts::plot::Tick>& ticks, const std::string& axis) {
-  std::vector<bool> used(ticks.size(), false);
-  for (size_t k = first; k < f.labels.size(); ++k) {
-    ts::Label& l = f.labels[k];
-    if (!l.given.empty() || !l.printed.empty()) continue;
-    for (size_t t = 0; t < ticks.size(); ++t)
-      if (!used[t] && l.text == ticks[t].text) {
-        l.given.push_back({axis + " tick", ticks[t].at});
-        used[t] = true;
-        break;
-      }
-  }
-}
 // A key of meaningful colours (layout::legend) whose meanings print numbers:
 // the numbers attached to the labels that show them.
 inline float legendOf(ts::Frame& f, L::Box band, const std::vector<std::pair<glm::vec4, L::Text>>& entries, int scale) {
@@ -479,8 +464,6 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurem
   s.series = {at0, at45};
   const size_t firstPlotLabel = f.labels.size();
   const ts::Rect vp = ts::plot::draw(f, s, {0, int(y), w, h - 2 * line - int(y)});
-  givenTicks(f, firstPlotLabel, s.xTicks, "memory axis");
-  givenTicks(f, firstPlotLabel, s.yTicks, "RMS axis");
   L::attachNumbers(f, firstPlotLabel, L::given("bits a channel of the texture", 8, "%g"));
 
   // The tags: a method at memory 1 or at the ripmap's (the plot's edges) to
