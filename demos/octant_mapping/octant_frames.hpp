@@ -280,7 +280,8 @@ inline ts::Frame tableView(const State& s, int width, int height, const ts::Meas
   L::caption(f, {m, m, W - m, m + lh}, title, kWhite, ts_, ts::Align::Left);
   const Box tableBox{m, m + lh, m + textW, m + lh + float(rows.size()) * lh};
   table(f, tableBox, rows, ts_);
-  const Box notesBox{m, tableBox.y1 + 8, m + textW, tableBox.y1 + 8 + notesH};
+  // (A small window leaves out the notes that find no room.)
+  const Box notesBox{m, tableBox.y1 + 8, m + textW, std::min(H - m, tableBox.y1 + 8 + notesH)};
   const size_t firstNote = f.labels.size();
   float y = notesBox.y0;
   if (misprints) y = L::legend(f, notesBox, {{kRed, "! a misprint of the seed, beside the right value"}}, 1);
@@ -333,11 +334,10 @@ inline std::vector<Row> catmullRows(glm::ivec2 P, int level, const ts::Measureme
   if (P == glm::ivec2(seed::kCatmullPx, seed::kCatmullPy)) {
     const L::Text line = L::given("the seed's line texels", seed::kCatmullLine, "%.0f"),
                   all = L::given("the seed's texels", seed::kCatmullTexels, "%.0f");
-    rows.push_back({{"the seed's example: " + L::given("the seed's levels", seed::kCatmullLevels, "%.0f") + " levels, " + line + " of " + all +
-                         " texels on lines = " + line + "/" + all,
-                     kWhite}});
-    rows.push_back({{"! it prints the fragment's phi = " + piFraction(seed::kCatmullPhiPrinted) + " for " +
-                         piFraction(fragmentAt({0, 0}, 4).phiRange().x),
+    rows.push_back({{"the seed's example: " + L::given("the seed's levels", seed::kCatmullLevels, "%.0f") + " levels, " +
+                         line + " of " + all + " texels on lines = " + line + "/" + all + "; ! it prints phi = " +
+                         piFraction(seed::kCatmullPhiPrinted) + " for " +
+                         piFraction(fragmentAt({0, 0}, seed::kCatmullLevels).phiRange().x),
                      kRed}});
   }
   return rows;
@@ -351,8 +351,10 @@ inline ts::Frame catmullView(const State& s, int width, int height, const ts::Me
   const std::vector<Row> rows = catmullRows(s.pixel, s.level, measured);
   const bool misprint = s.pixel == glm::ivec2(seed::kCatmullPx, seed::kCatmullPy);
   const float m = 8;
-  const int ts_ = tableScale(rows, float(width) - 2 * m, float(height) * 0.42f, 2);
-  const float textH = std::min(float(height) * 0.42f, float(rows.size() + 1 + (misprint ? 1 : 0)) * L::lineHeight(ts_) + 4);
+  // The table and, for the seed's pixel, the key of its misprint under it.
+  const float keyLines = misprint ? 1.0f : 0.0f;
+  const int ts_ = tableScale(rows, float(width) - 2 * m, float(height) * 0.45f - keyLines * L::lineHeight(2), 2);
+  const float textH = std::min(float(height) * 0.45f, float(rows.size() + keyLines) * L::lineHeight(ts_) + 8);
   L::FlowSpec spec;
   spec.n = 3;
   spec.linesAbove = 1;
@@ -362,7 +364,7 @@ inline ts::Frame catmullView(const State& s, int width, int height, const ts::Me
   const auto cells = L::flow({m, m, float(width) - m, float(height) - m - textH}, spec);
   const Box text{m, float(height) - m - textH + 4, float(width) - m, float(height) - m};
   const float y = table(f, text, rows, 2);
-  if (misprint) L::legend(f, {text.x0, y, text.x1, text.y1}, {{kRed, "! a misprint of the seed"}}, ts_);
+  if (misprint) L::legend(f, {text.x0, y, text.x1, text.y1}, {{kRed, "! a misprint of the seed"}}, 1);  // as the notes above it
   // Each pixel the mean of the level's fragment holding its centre.
   std::vector<double> v(R.exact.size(), std::nan(""));
   const auto& geo = rasterGeometry();
@@ -456,7 +458,7 @@ inline std::vector<Row> inverseRows(glm::ivec2 P, const ts::Measurements& measur
     }
   }
   const auto count = [&](const std::string& variant, const char* fraction) {
-    return num(measured, names::inverse("texels", P, variant), "%.0f") + ", " +
+    return num(measured, names::inverse("texels", P, variant), "%.0f") + " texels, " +
            num(measured, names::inverse("line_texels", P, variant), "%.0f") + " on lines = " +
            num(measured, names::inverse("fraction", P, variant), fraction);
   };
@@ -506,7 +508,9 @@ inline ts::Frame inverseView(const State& s, int width, int height, const ts::Me
   f.panels.push_back(rasterPanel("raster", cells[0].picture, raster().inverse, s.pixel));
   const Preimage pre = addPreimage(f, cells[1].picture, tex, s.pixel, true);
   L::caption(f, cells[0].above, "inverse mapping over the raster (unrounded corners)", kWhite, cells[0].scale);
-  std::vector<ts::LegendEntry> rasterKey = {{kRed, "pixel " + pixelText(s.pixel).text}, {kAmber, "the octant's outline"}};
+  std::vector<ts::LegendEntry> rasterKey = {{kRed, "pixel " + pixelText(s.pixel).text},
+                                            {kAmber, "the octant's outline"},
+                                            {kNoValue, "no value: partly off the octant"}};
   if (s.pixel == glm::ivec2(seed::kInversePx, seed::kInversePy)) rasterKey.push_back({kRed, "! a misprint of the seed"});
   keyWithPixel(f, cells[0].below, rasterKey, cells[0].scale, s.pixel);
   L::caption(f, cells[1].above, "pixel " + pixelText(s.pixel) + " on the pattern", kWhite, cells[1].scale);
@@ -548,7 +552,9 @@ inline ts::Frame methodsView(const State& s, int width, int height, const ts::Me
     }
   }
   keyWithPixel(f, {8, float(height) - 8 - keyH + 4, float(width) - 8, float(height) - 4},
-               {{kRed, "pixel " + pixelText(s.pixel).text}, {kAmber, "the octant's outline"}}, 1, s.pixel);
+               {{kRed, "pixel " + pixelText(s.pixel).text}, {kAmber, "the octant's outline"},
+                {kNoValue, "no value: the pixel is partly off the octant"}},
+               1, s.pixel);
   return f;
 }
 

@@ -125,9 +125,9 @@ class OctantMapping final : public ts::Scene {
          "After {catmull_levels[5,9]} subdivisions the fragment covers one pixel centre and 4x4 texels, "
          "{catmull_line_texels} on lines: {catmull_fraction} = 7/16."},
         {"octant_inverse_pixel", "Seed 004: inverse pixel mapping",
-         "Pixel (21,15) mapped back onto the pattern: its corners joined as the seed prints them (amber, 3 decimals) "
-         "and unrounded (white), the true curved preimage (cyan), and the texel centres each counts; the corner "
-         "table with the seed's printed values, misprints in red.",
+         "Pixel (21,15) mapped back onto the pattern: its corners joined unrounded (red) and as the seed prints them "
+         "(orange dashes, 3 decimals), the true curved preimage (wide, blue), and the texel centres each counts; the "
+         "corner table with the seed's printed values, misprints in red.",
          {"--view", "inverse", "--pixel", "21,15"}, 1280, 720,
          "With the corners rounded as printed, {inverse_texels} texel centres, {inverse_line_texels} on lines: "
          "{inverse_fraction} (the seed's 5/18); unrounded {inverse_texels[unrounded]}, "
