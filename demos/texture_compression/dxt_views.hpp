@@ -69,7 +69,7 @@ inline void buildBlocks(ts::Frame& f, const Result& m, const ts::Measurements& m
     for (int x = 0; x < zw; ++x) zoom.set(x, y, m.decoded.at(x0 + x, y0 + y));
   ts::Rect zr = cells[3].picture;
   const int sw = zr.h / 6, keyH = int(L::lineHeight(1)) + 2;  // the palette's strip, the outline's key
-  zr.h -= sw + 4 + keyH;
+  zr.h = std::max(1, zr.h - (sw + 4 + keyH));  // a narrow window leaves the block a speck, never a negative viewport
   zr.w = zr.h, zr.x = cells[3].picture.x + (cells[3].picture.w - zr.w) / 2;
   ts::Panel z = L::texturePanel("block_zoom", zr, imageTexture(f, m, what[1], {x0, y0, zw, zh}, zoom, "the block magnified", nullptr, GL_NEAREST));
   const float ux = float(bx * 4 - x0) / float(zw), uy = 1.0f - float(by * 4 - y0) / float(zh);
