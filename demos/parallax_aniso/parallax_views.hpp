@@ -258,6 +258,7 @@ inline void Views::buildModes(ts::Frame& f, const Shown& shown) const {
   // (Milliseconds are in the CSV, not here: the figure must regenerate byte-identically.)
   c.add(brief ? "PSNR: dB vs R" : "PSNR in dB against R;", kGrey, s, ts::Align::Left);
   c.add(brief ? "lk/px: lookups" : "lk/px: texture lookups per pixel", kGrey, s, ts::Align::Left);
+  L::legend(f, {float(x), c.y(), float(x) + cellW, float(f.height - 2)}, {{kAmber, brief ? "EWA" : "the EWA modes (seed 003)"}}, s);
 }
 
 inline void Views::buildError(ts::Frame& f, const Shown& shown) const {
