@@ -331,7 +331,8 @@ std::vector<ts::FigureSpec> BumpMapping::figures() const {
           {"bump_seed002", "Buss VI.2 (seed 002)",
            "Seed 002's shortcut taken literally: the 8-bit height differences added to the eye-space normal's x and y. "
            "Its tilt along x runs against the true surface's on the near side of the ring and with it on the far side, and "
-           "does not grow with the height scale: measured.",
+           "does not grow with the height scale: measured. The middle picture shows, in the near and the far third of the ring, "
+           "each pixel where B2 tilts the normal along x as R does (green) or against it (magenta).",
            {"--view", "compare", "--method", "seed002"}, 1024, 560,
            "Seed 002's shortcut tilts the normal along x against the surface on the near side "
            "({tilt_agreement_x_near[seed002]}; +1 agrees), and no more with twice the heights (ratio "
@@ -349,8 +350,9 @@ std::vector<ts::FigureSpec> BumpMapping::figures() const {
            "{normal_err_deg[normalmap]}, B2 seed 002 {normal_err_deg[seed002]}, no bumps {normal_err_deg[flat]}."},
           {"bump_emboss_overhead", "Buss VI.2 (seed 001, emboss)",
            "Emboss (seed 001), three fixed-function passes, with light 1 at the eye: where the light falls along the normal "
-           "(the middle of the ring) the shift toward it is 0 and the bricks vanish; R keeps them. The contrast is measured per "
-           "band of the light-normal angle.",
+           "(the middle of the ring) the shift toward it is 0 and the bricks vanish; R keeps them. The middle picture is emboss's "
+           "term alone, magnified, the region where the light is nearly along the normal outlined: the bricks are gone inside "
+           "it. The contrast is measured per band of the light-normal angle.",
            {"--view", "compare", "--method", "emboss", "--heights", "bricks", "--light1-az", "0", "--light1-el", "0"}, 1024, 560,
            "With light 1 at the eye, emboss contrast is {emboss_contrast[0-10deg]} where the light is within 10 deg "
            "of the normal, {emboss_contrast[60-90deg]} at 60-90 deg."}};
