@@ -169,10 +169,11 @@ ts::TextureDesc image(const ts::Image& img, const std::string& what, ts::gl::Cal
   return t;
 }
 // The shown state's error, as measured (measure() names it [shown]).
-ts::layout::Text statsLine(const ts::Measurements& m, const envmap::ErrorStats& s) {
+std::vector<ts::layout::Text> statsLine(const ts::Measurements& m, const envmap::ErrorStats& s) {
   namespace L = ts::layout;
-  return L::measuredText(m, "error mean {error_mean_deg[shown]|%.2f}, ") + L::given("percentile", 95, "%g") +
-         L::measuredText(m, "% {error_p95_deg[shown]|%.2f}, max {error_max_deg[shown]|%.1f} deg") + " (" + s.maxRegion + ")";
+  return {L::measuredText(m, "error mean {error_mean_deg[shown]|%.2f},"),
+          L::given("percentile", 95, "%g") + L::measuredText(m, "% {error_p95_deg[shown]|%.2f},"),
+          L::measuredText(m, "max {error_max_deg[shown]|%.1f} deg") + " (" + s.maxRegion + ")"};
 }
 // The error picture's key: the heat scale's colours at 0, half and the whole of the scale.
 std::vector<ts::LegendEntry> heatKey(double scaleDeg) {
@@ -215,14 +216,16 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   // The object pictures are resampled to the panel with GL_LINEAR: with GL_NEAREST the panel's middle row and
   // column sample exactly between two pixels, where backends round apart.  The map keeps its texels sharp.
   // A cell's title takes the upper line of its band; a key of the picture's colours, when it has one, the lower.
-  auto show = [&](const L::Cell& c, const std::string& id, const ts::TextureDesc* t, const L::Text& above, const L::Text& below,
+  // The note below is set as phrases: a line breaks between them, never inside one.
+  auto show = [&](const L::Cell& c, const std::string& id, const ts::TextureDesc* t, const L::Text& above,
+                  const std::vector<L::Text>& below,
                   const std::vector<ts::LegendEntry>& key = {}, bool keyLine = false) {
     if (t && t->image) f.panels.push_back(L::picturePanel(f, id, c.picture, *t));  // a nested frame's picture upright
     // keyLine: the lower line holds a key drawn across cells (the caller's).
     const L::Box title = key.empty() && !keyLine ? c.above : L::halves(c.above).first;
     L::caption(f, title, above, kWhite, c.scale);
     if (!key.empty()) cellKey(f, L::halves(c.above).second, key, c.scale);
-    if (!below.empty()) L::caption(f, c.below, below, kAmber, c.scale);
+    if (!below.empty()) L::phrases(f, c.below, below, kAmber, c.scale);
   };
   if (view_ == kCompareView) {
     L::FlowSpec spec;
@@ -231,11 +234,11 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     for (int k = 0; k < 4; ++k)
       show(cells[size_t(k)], envmap::kParamKeys[k], found ? &found->pictures[size_t(k)] : nullptr,
            std::string(envmap::kParamLabels[k]) + (eval_ == 1 && (k == envmap::kCube || k == envmap::kSphere) ? " (texgen)" : ""),
-           found ? L::measuredText(measured, "mean {error_mean_deg[" + tableKey(k) + "]|%.2f}, max {error_max_deg[" +
-                                                   tableKey(k) + "]|%.1f} deg")
-                 : L::Text());
+           found ? std::vector<L::Text>{L::measuredText(measured, "mean {error_mean_deg[" + tableKey(k) + "]|%.2f},"),
+                                        L::measuredText(measured, "max {error_max_deg[" + tableKey(k) + "]|%.1f} deg")}
+                 : std::vector<L::Text>{});
     show(cells[4], "reference", found ? &found->reference : nullptr, refCaption(),
-         std::string("the maps: r per ") + kEval[eval_]);
+         {std::string("the maps: r per ") + kEval[eval_]});
     return f;
   }
   if (view_ == kMapView) {
@@ -288,20 +291,21 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
                            : L::Text()));
       L::phrases(f, m.below, shape, kAmber, m.scale);
     }
-    show(p, "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(measured, found->current) : L::Text());
+    show(p, "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(measured, found->current) : std::vector<L::Text>{});
     return f;
   }
   // Two lines above each picture: its title, and the key of the colours the reference and the error carry.
   L::FlowSpec spec;
   spec.n = 3, spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 8;
   std::vector<L::Cell> cells = L::flow(area, spec);
-  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(measured, found->current) : L::Text(),
+  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(measured, found->current) : std::vector<L::Text>{},
        {}, true);
   // The near ball's pixels are those painted red on this very picture (measure(): [shown]).
-  L::Text refNote;
+  std::vector<L::Text> refNote;
   if (found && object_ == envmap::kMirror)
-    refNote = L::measuredText(measured, "red: a near ball, {mirror_ball_pixels[shown]|%.0f} px; a map made at the centre shows it at "
-                                        "{mirror_ball_pixels_centre_map[shown]|%.0f} px, {mirror_ball_pixels_both[shown]|%.0f} right");
+    refNote = {L::measuredText(measured, "red: a near ball, {mirror_ball_pixels[shown]|%.0f} px;"),
+               L::measuredText(measured, "a map made at the centre: {mirror_ball_pixels_centre_map[shown]|%.0f} px, "
+                                         "{mirror_ball_pixels_both[shown]|%.0f} right")};
   // One key for the picture and the reference, under their titles: the world's colours, and the flat
   // mirror's near ball painted on the reference.
   std::vector<ts::LegendEntry> key = worldKey();
@@ -309,19 +313,18 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   show(cells[1], "reference", found ? &found->reference : nullptr, refCaption(), refNote, {}, true);
   cellKey(f, {cells[0].above.x0, L::halves(cells[0].above).second.y0, cells[1].above.x1, cells[0].above.y1}, key, cells[0].scale);
   // Where the error is worst, and the other evaluation's mean beside it (the figures' claims compare them).
-  auto errorNote = [&]() -> L::Text {
+  auto errorNote = [&]() -> std::vector<L::Text> {
     const std::string other = std::string(envmap::kParamKeys[param_]) + "/" + envmap::kObjectKeys[object_] + "/" + kEval[1 - eval_];
-    L::Text t = "worst in: " + found->current.maxRegion;
-    if (has(measured, "error_mean_deg[" + other + "]"))
-      t = t + "; r per " + kEval[1 - eval_] + ": " + L::measured(measured, "error_mean_deg[" + other + "]", "%.2f") + " deg mean";
-    return t;
+    if (!has(measured, "error_mean_deg[" + other + "]")) return {"worst in: " + found->current.maxRegion};
+    return {"worst in: " + found->current.maxRegion + ";",
+            std::string("r per ") + kEval[1 - eval_] + ": " + L::measured(measured, "error_mean_deg[" + other + "]", "%.2f") + " deg mean"};
   };
   const ts::TextureDesc errorTex = found ? image(found->error, "error") : ts::TextureDesc{};
   const double scale = found ? found->errorScale : envmap::errorScale(eval_ == 1, 0);
   show(cells[2], "error", found ? &errorTex : nullptr,
        "direction error (black " + L::given("error shown black, degrees", 0, "%g") + ", white " +
            L::given("error shown white, degrees (the heat scale's top)", scale, "%g") + " deg or more)",
-       found ? errorNote() : L::Text(), heatKey(scale));
+       found ? errorNote() : std::vector<L::Text>{}, heatKey(scale));
   return f;
 }
 
