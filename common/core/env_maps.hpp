@@ -181,16 +181,21 @@ inline const ts::Image& faceLabel(int face) {
 //   wide instead of a step, so a direction that moves by a rounding error
 //   changes its colour by as little: two rasterizers' pictures then agree to
 //   a level or two instead of flipping whole pixels along every line.
+// The base colour alone (no lines, no boxes): what a key of the world's colours shows.
+inline dvec3 directionColour(dvec3 d) { return 0.2 + 0.6 * (d + 1.0) / 2.0; }  // d unit
+// The lines' colours over a base colour c: every 15 degrees dark, the equator and the meridian white.
+inline dvec3 gridLineColour(dvec3 c) { return c * 0.3; }
+inline const dvec3 kWhiteLine(0.97);
 inline dvec3 worldColour(dvec3 d) {
   d = glm::normalize(d);
-  dvec3 c = 0.2 + 0.6 * (d + 1.0) / 2.0;
+  dvec3 c = directionColour(d);
   const double lat = deg(std::asin(std::clamp(d.y, -1.0, 1.0))), lon = deg(std::atan2(-d.x, -d.z));
   auto off = [](double a) { return std::abs(a - 15.0 * std::round(a / 15.0)); };
   auto ramp = [](double insideDeg) { return std::clamp(insideDeg / 0.25 + 0.5, 0.0, 1.0); };
   const double lineDeg = 0.9;
   const double wLat = ramp(lineDeg - off(lat)),
                wLon = ramp(lineDeg - off(lon) * std::cos(rad(lat))) * ramp(82.5 - std::abs(lat));
-  const dvec3 dark = c * 0.3, white(0.97);
+  const dvec3 dark = gridLineColour(c), white = kWhiteLine;
   c = glm::mix(c, std::abs(lat) < 7.5 ? white : dark, wLat);  // the equator white
   c = glm::mix(c, std::abs(lon) < 7.5 ? white : dark, wLon);  // the meridian through -Z white
   const CubeST f = cubeST(d);

@@ -78,27 +78,38 @@ int fitScale(const std::function<Rect(int)>& pictureAt, int maxScale) {
 }
 
 namespace {
+// A word that is an operator alone ("=", "+", "-", "/", "<=", ...): a
+// formula's, which must not be broken beside it.
+bool operatorWord(const std::string& w) { return !w.empty() && w.find_first_not_of("=+-*/<>~^") == std::string::npos; }
+
 // Words of `text` on lines no wider than `width` at `scale`; a word wider
-// than the line stays alone on its line (the caller cuts it).
+// than the line stays alone on its line (the caller cuts it).  A formula
+// stays on one line: the words either side of an operator word are glued
+// to it ("c3 = (c0+2c1)/3" breaks before "c3" or after "/3", never inside).
 std::vector<std::string> wrap(const std::string& text, int scale, float width) {
+  std::vector<std::string> words, units;
+  std::string word;
+  for (char c : text) {
+    if (c != ' ') word += c;
+    else if (!word.empty()) words.push_back(word), word.clear();
+  }
+  if (!word.empty()) words.push_back(word);
+  for (size_t k = 0; k < words.size(); ++k) {
+    const bool glue = k > 0 && !units.empty() && (operatorWord(words[k]) || operatorWord(words[k - 1]));
+    if (glue) units.back() += " " + words[k];
+    else units.push_back(words[k]);
+  }
   std::vector<std::string> lines;
-  std::string line, word;
-  auto flush = [&] {
-    if (word.empty()) return;
-    std::string joined = line.empty() ? word : line + " " + word;
+  std::string line;
+  for (const std::string& u : units) {
+    std::string joined = line.empty() ? u : line + " " + u;
     if (!line.empty() && text::width(joined, scale) > width) {
       lines.push_back(line);
-      line = word;
+      line = u;
     } else {
       line = joined;
     }
-    word.clear();
-  };
-  for (char c : text) {
-    if (c == ' ') flush();
-    else word += c;
   }
-  flush();
   if (!line.empty()) lines.push_back(line);
   return lines;
 }
@@ -305,6 +316,29 @@ bool placeFree(Frame& f, Label l, Box within) {
     if (!o.text.empty() && labelBox(o).overlaps(b)) return false;
   f.labels.push_back(l);
   return true;
+}
+
+float phrases(Frame& f, Box band, const std::vector<Text>& parts, glm::vec4 color, int scale, Align align) {
+  Text all;
+  for (const Text& p : parts) all = all.empty() ? p : all + " " + p;
+  if (all.empty()) return band.y0;
+  // As caption() does, largest scale first; a line breaks only between phrases.
+  for (int s = std::max(1, scale); s >= 1; --s) {
+    const float width = band.w() - 1;
+    std::vector<Text> lines;
+    bool fits = true;
+    for (const Text& p : parts) {
+      if (p.empty()) continue;
+      fits = fits && text::width(p.text, s) <= width;
+      if (!lines.empty() && text::width(lines.back().text + " " + p.text, s) <= width) lines.back() = lines.back() + " " + p;
+      else lines.push_back(p);
+    }
+    if (!fits || float(lines.size()) * lineHeight(s) - float(4 * s) > band.h()) continue;
+    float y = band.y0;
+    for (const Text& l : lines) y = caption(f, {band.x0, y, band.x1, y + lineHeight(s)}, l, color, s, align) + float(4 * s);
+    return y - float(4 * s);
+  }
+  return caption(f, band, all, color, scale, align);  // a phrase wider than the band: wrapped at its words
 }
 
 bool Column::add(const Text& text, glm::vec4 color, int scale, Align align, glm::vec4 background) {

@@ -153,6 +153,13 @@ float legend(Frame& f, Box band, const std::vector<LegendEntry>& entries, int sc
 // fits).  Never places text outside `band`.
 float caption(Frame& f, Box band, const Text& text, glm::vec4 color, int scale,
               Align align = Align::Center, glm::vec4 background = glm::vec4(0.0f));
+// A caption made of phrases (its clauses, each with its punctuation): on
+// one line when all fit, else on as few lines as the phrases need, breaking
+// only between phrases, each line at the largest scale (at most `scale`) at
+// which every phrase fits the band's width and the lines its height; when
+// none does, caption() of the whole.  Returns the y below the last line.
+float phrases(Frame& f, Box band, const std::vector<Text>& parts, glm::vec4 color, int scale,
+              Align align = Align::Center);
 // The lines caption() would use at most: wrapped text at the scale that
 // fits `width` (for reserving a band's height before placing it).
 int captionLines(const std::string& text, int scale, float width);

@@ -207,16 +207,72 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
   L::FlowSpec spec;
   const int kAll[] = {bump::kBlinn, bump::kSeed002, bump::kNormalMap, bump::kEmboss, bump::kDot3, bump::kReference};
   const bool normals = view_ == 2;
-  // Six narrow cells (view all) need a third line for emboss's contrasts; the normals view a second line
-  // above for the key of its colours.
-  spec.n = view_ == 0 ? 1 : view_ == 3 ? 6 : 2, spec.linesAbove = normals ? 2 : 1, spec.linesBelow = view_ == 3 ? 3 : 2;
+  // What a cell shows besides the methods: seed 002's x tilt against R's, and emboss's term alone (each
+  // between the method and R in the compare view: where its claim is seen).
+  constexpr int kTiltCell = -1, kTermCell = -2;
+  std::vector<int> shown;
+  if (view_ == 0) shown = {method_};
+  else if (view_ == 3) shown.assign(std::begin(kAll), std::end(kAll));
+  else if (view_ == 1 && method_ == bump::kSeed002) shown = {method_, kTiltCell, bump::kReference};
+  else if (view_ == 1 && method_ == bump::kEmboss) shown = {method_, kTermCell, bump::kReference};
+  else shown = {method_, bump::kReference};
+  const bool keyed = normals || shown.size() == 3;  // a second line above: the key of a picture's colours
+  // Six narrow cells (view all) need a third line for emboss's contrasts, as do the compare view's three.
+  spec.n = int(shown.size()), spec.linesAbove = keyed ? 2 : 1, spec.linesBelow = shown.size() >= 3 ? 3 : 2;
   std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
+  // A number of measure() by name: R's own comparison is its [ideal] (its normal on the smooth torus).
+  auto num = [&](const std::string& name, int m, const char* format) {
+    return L::measured(measured, name + "[" + (m == bump::kReference ? "ideal" : kMethods[m].key) + "]", format);
+  };
+  auto band = [&](int b) {  // emboss's contrast in band b of the light's angle to the normal (kEmbossBands)
+    return L::measured(measured, "emboss_contrast[" + std::to_string(int(bump::kEmbossBands[b])) + "-" +
+                                     std::to_string(int(bump::kEmbossBands[b + 1])) + "deg]",
+                       "%.3f");
+  };
+  auto bandDeg = [&](int b) { return L::given("emboss band: light to normal, degrees", bump::kEmbossBands[b], "%g"); };
+  auto picture = [&](const L::Cell& c, const std::string& id, const std::shared_ptr<const ts::Image>& img,
+                     const std::string& what, const ts::gl::CallList& gl) {
+    ts::TextureDesc t = ts::renderedImageTexture(*img, "bump_render", what, "bump_mapping");
+    t.renderedBy = gl;
+    f.panels.push_back(L::texturePanel(id, c.picture, f.addTexture(t)));
+  };
   for (size_t k = 0; k < cells.size(); ++k) {
     const L::Cell& c = cells[k];
-    const int m = view_ == 3 ? kAll[k] : k == 0 ? method_ : int(bump::kReference);
-    const bool picture = m == bump::kReference || kMethods[m].fixedFunction;  // drawn by measure()
+    const int m = shown[k];
+    const L::Box title = keyed ? L::halves(c.above).first : c.above;
+    if (m == kTiltCell) {
+      L::caption(f, title, "B2's tilt along x against R's", kWhite, c.scale);
+      auto rgba = [](ts::Rgba q) { return glm::vec4(q.r, q.g, q.b, 255) / 255.0f; };
+      L::legend(f, L::halves(c.above).second,
+                {{rgba(bump::kTiltWith), "with R"}, {rgba(bump::kTiltAgainst), "against R"}, {rgba(bump::kTiltUncounted), "not counted"}},
+                1);
+      if (!found) continue;
+      picture(c, "picture_seed002_tilt_x", found->seedTiltX, "seed002 x tilt against R", nullptr);
+      // Seed 002's claim, where its colours are: the near side (the lower third) mostly against R.
+      L::phrases(f, c.below,
+                 {"x tilt with R (+1) or against it (-1):",
+                  "near side (lower third) " + L::measured(measured, "tilt_agreement_x_near[seed002]", "%+.2f") + ",",
+                  "far side (upper third) " + L::measured(measured, "tilt_agreement_x_far[seed002]", "%+.2f")},
+                 kAmber, c.scale);
+      continue;
+    }
+    if (m == kTermCell) {
+      L::caption(f, title, "B4's term (1+H-H')/2 alone, shown x" + L::given("emboss term's magnification", bump::kEmbossGain, "%g"),
+                 kWhite, c.scale);
+      auto rgba = [](ts::Rgba q) { return glm::vec4(q.r, q.g, q.b, 255) / 255.0f; };
+      L::legend(f, L::halves(c.above).second,
+                {{rgba(bump::kEmbossEdge), "light 1 within " + L::fmt("%g", bump::kEmbossBands[1]) + " deg of the normal"}}, 1);
+      if (!found || !found->embossTerm) continue;
+      picture(c, "picture_emboss_term", found->embossTerm, "emboss term", found->embossTermGL);
+      // The contrast per band: where the light is along the normal the bricks are gone.
+      L::phrases(f, c.below,
+                 {"mean contrast |H-H'|:", band(0) + " inside the line,", band(1) + " at " + bandDeg(1) + "-" + bandDeg(2) + " deg,",
+                  band(2) + " at " + bandDeg(2) + "-" + bandDeg(3) + ",", band(3) + " beyond " + bandDeg(3) + " deg"},
+                 kAmber, c.scale);
+      continue;
+    }
+    const bool isPicture = m == bump::kReference || kMethods[m].fixedFunction;  // drawn by measure()
     const bool noNormals = normals && kMethods[m].fixedFunction;
-    const L::Box title = normals ? L::halves(c.above).first : c.above;
     L::caption(f, title, std::string(kMethods[m].title) + (normals && !noNormals ? ", normals" : ""), kWhite, c.scale);
     if (normals && k == 0)  // one key for both pictures: each channel is 0.5 + 0.5 of an eye-space component
       L::legend(f, L::halves(c.above).second,
@@ -224,47 +280,43 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
                  {{0.5f, 1.0f, 0.5f, 1.0f}, "n up (+y)"},
                  {{0.5f, 0.5f, 1.0f, 1.0f}, "n to the eye (+z)"}},
                 1);
-    if (!picture) {
+    if (!isPicture) {
       f.panels.push_back(torusPanel(f, c.picture, {m, normals}));
     } else if (found && found->pictures.count(m)) {
       const bool n = normals && m == bump::kReference;
-      ts::TextureDesc t = ts::renderedImageTexture(n ? *found->refNormals : *found->pictures.at(m), "bump_render",
-                                                   std::string(kMethods[m].key) + (n ? " normals" : ""), "bump_mapping");
       const auto gl = found->picturesGL.find(m);
-      t.renderedBy = n ? found->refNormalsGL : gl != found->picturesGL.end() ? gl->second : nullptr;
-      f.panels.push_back(L::texturePanel(std::string("picture_") + kMethods[m].key, c.picture, f.addTexture(t)));
+      picture(c, std::string("picture_") + kMethods[m].key, n ? found->refNormals : found->pictures.at(m),
+              std::string(kMethods[m].key) + (n ? " normals" : ""),
+              n ? found->refNormalsGL : gl != found->picturesGL.end() ? gl->second : nullptr);
     } else {
       L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
     }
     if (!found || !found->cmp.count(m)) continue;
-    // The numbers are measure()'s, by name: R's own comparison is its [ideal] (its normal on the smooth torus).
-    const std::string key = std::string("[") + (m == bump::kReference ? "ideal" : kMethods[m].key) + "]";
-    auto num = [&](const std::string& name, const char* format) { return L::measured(measured, name + key, format); };
-    L::Text note;
+    // The note as phrases: a line breaks between them, never inside one.
+    std::vector<L::Text> note;
     if (m == bump::kReference)
-      note = normals ? "R's normals on the smooth torus: " + num("screen_normal_err_deg", "%.1f") +
-                           " deg off in the same pixel (the geometry's share)"
-                     : "R's own normals on the smooth torus reach " + num("psnr_db", "%.1f") + " dB against it: the rest is geometry";
+      note = normals ? std::vector<L::Text>{"R's normals on the smooth torus:", num("screen_normal_err_deg", m, "%.1f") + " deg off",
+                                            "in the same pixel", "(the geometry's share)"}
+                     : std::vector<L::Text>{"R's own normals on the smooth torus", "reach " + num("psnr_db", m, "%.1f") + " dB against it:",
+                                            "the rest is geometry"};
     else if (noNormals)
-      note = "fixed function: no normal to show (the shaded picture), " + num("psnr_db", "%.1f") + " dB against R";
+      note = {"fixed function: no normal to show", "(the shaded picture),", num("psnr_db", m, "%.1f") + " dB against R"};
     else if (normals)
-      note = "normal off by " + num("normal_err_deg", "%.1f") + " deg at the same (s,t), " + num("screen_normal_err_deg", "%.1f") +
-             " deg in the same pixel";
+      note = {"normal off by " + num("normal_err_deg", m, "%.1f") + " deg at the same (s,t),",
+              num("screen_normal_err_deg", m, "%.1f") + " deg in the same pixel"};
     else
-      note = "against R: PSNR " + num("psnr_db", "%.1f") + " dB, mean |diff| " + num("mad", "%.1f") +
-             (!kMethods[m].fixedFunction ? ", normal off by " + num("normal_err_deg", "%.1f") + " deg" : L::Text());
-    if (m == bump::kEmboss && !normals && found->embossContrast[3] >= 0) {
-      // The first and the last band of the light's angle to the normal (kEmbossBands).
-      auto band = [&](int b) {
-        return L::measured(measured, "emboss_contrast[" + std::to_string(int(bump::kEmbossBands[b])) + "-" +
-                                         std::to_string(int(bump::kEmbossBands[b + 1])) + "deg]",
-                           "%.3f");
-      };
-      note = note + "; bump contrast " + band(0) + " with the light within " +
-             L::given("emboss band: light to normal, degrees", bump::kEmbossBands[1], "%g") + " deg of the normal, " + band(3) +
-             " beyond " + L::given("emboss band: light to normal, degrees", bump::kEmbossBands[3], "%g") + " deg";
+      note = {"against R: PSNR " + num("psnr_db", m, "%.1f") + " dB,", "mean |diff| " + num("mad", m, "%.1f") +
+                                                                          (!kMethods[m].fixedFunction ? L::Text(",") : L::Text())};
+    if (!normals && !kMethods[m].fixedFunction && m != bump::kReference)
+      note.push_back("normal off by " + num("normal_err_deg", m, "%.1f") + " deg" + (m == bump::kSeed002 && shown.size() == 3 ? ";" : ""));
+    if (m == bump::kSeed002 && shown.size() == 3)  // the second half of seed 002's claim: its tilt has no scale in it
+      note.push_back("twice the heights: tilt ratio " + L::measured(measured, "tilt_ratio_height_x2[seed002]", "%.2f"));
+    if (m == bump::kEmboss && !normals && shown.size() != 3 && found->embossContrast[3] >= 0) {
+      note.back() = note.back() + ";";
+      note.insert(note.end(), {"contrast " + band(0) + " with the light within " + bandDeg(1) + " deg of the normal,",
+                               band(3) + " beyond " + bandDeg(3) + " deg"});
     }
-    L::caption(f, c.below, note, kAmber, c.scale);
+    L::phrases(f, c.below, note, kAmber, c.scale);
   }
   return f;
 }
@@ -279,7 +331,8 @@ std::vector<ts::FigureSpec> BumpMapping::figures() const {
           {"bump_seed002", "Buss VI.2 (seed 002)",
            "Seed 002's shortcut taken literally: the 8-bit height differences added to the eye-space normal's x and y. "
            "Its tilt along x runs against the true surface's on the near side of the ring and with it on the far side, and "
-           "does not grow with the height scale: measured.",
+           "does not grow with the height scale: measured. The middle picture shows, in the near and the far third of the ring, "
+           "each pixel where B2 tilts the normal along x as R does (green) or against it (magenta).",
            {"--view", "compare", "--method", "seed002"}, 1024, 560,
            "Seed 002's shortcut tilts the normal along x against the surface on the near side "
            "({tilt_agreement_x_near[seed002]}; +1 agrees), and no more with twice the heights (ratio "
@@ -297,8 +350,9 @@ std::vector<ts::FigureSpec> BumpMapping::figures() const {
            "{normal_err_deg[normalmap]}, B2 seed 002 {normal_err_deg[seed002]}, no bumps {normal_err_deg[flat]}."},
           {"bump_emboss_overhead", "Buss VI.2 (seed 001, emboss)",
            "Emboss (seed 001), three fixed-function passes, with light 1 at the eye: where the light falls along the normal "
-           "(the middle of the ring) the shift toward it is 0 and the bricks vanish; R keeps them. The contrast is measured per "
-           "band of the light-normal angle.",
+           "(the middle of the ring) the shift toward it is 0 and the bricks vanish; R keeps them. The middle picture is emboss's "
+           "term alone, magnified, the region where the light is nearly along the normal outlined: the bricks are gone inside "
+           "it. The contrast is measured per band of the light-normal angle.",
            {"--view", "compare", "--method", "emboss", "--heights", "bricks", "--light1-az", "0", "--light1-el", "0"}, 1024, 560,
            "With light 1 at the eye, emboss contrast is {emboss_contrast[0-10deg]} where the light is within 10 deg "
            "of the normal, {emboss_contrast[60-90deg]} at 60-90 deg."}};

@@ -272,6 +272,27 @@ inline glm::dvec2 perturbationAgreement(const ts::Image& normals, const ts::Imag
     }
   return {cnt.x ? sum.x / cnt.x : 0.0, cnt.y ? sum.y / cnt.y : 0.0};
 }
+// The picture of what perturbationAgreement counts along the eye's x, in
+// the rows `bands` (the near and the far side): each pixel it counts
+// painted `with` where the method tilts the normal as the reference does,
+// `against` where it tilts it the other way; the rest of the surface
+// `surface`, the rest `background`.  (with - against) / (with + against)
+// over a band's rows is that band's agreement.
+inline ts::Image agreementPicture(const ts::Image& normals, const ts::Image& ref, const ts::Image& smooth,
+                                  const std::vector<glm::ivec2>& bands, ts::Rgba with, ts::Rgba against, ts::Rgba surface,
+                                  ts::Rgba background) {
+  ts::Image out(normals.width, normals.height, background);
+  for (int y = 0; y < normals.height; ++y)
+    for (int x = 0; x < normals.width; ++x) {
+      if (!covered(smooth, x, y)) continue;
+      out.set(x, y, surface);
+      const bool inBand = std::any_of(bands.begin(), bands.end(), [&](glm::ivec2 b) { return y >= b.x && y < b.y; });
+      if (!inBand || !covered(normals, x, y) || !covered(ref, x, y)) continue;
+      const glm::dvec3 s = normalAt(smooth, x, y), a = normalAt(normals, x, y) - s, b = normalAt(ref, x, y) - s;
+      if (std::fabs(b.x) > 0.02 && std::fabs(a.x) > 0.005) out.set(x, y, a.x * b.x > 0 ? with : against);
+    }
+  return out;
+}
 // The rows a normal render's surface covers: [first, last + 1).
 inline glm::ivec2 coveredRows(const ts::Image& normals) {
   glm::ivec2 r(normals.height, 0);

@@ -36,6 +36,15 @@ using RenderFn = std::function<ts::Image(const RenderSpec&)>;
 // Emboss's contrast per band of the angle between the smooth normal and light 1.
 inline const double kEmbossBands[] = {0, 10, 30, 60, 90};
 
+// Seed 002's x tilt as a picture (agreementPicture): the pixels counted
+// with the displaced surface, against it, and the rest of the surface.
+inline const ts::Rgba kTiltWith{80, 200, 110, 255}, kTiltAgainst{225, 70, 200, 255}, kTiltUncounted{95, 95, 100, 255};
+// Emboss's term shown magnified about 1/2 (0.5 + kEmbossGain (E - 0.5)),
+// the edge of the region where light 1 is within kEmbossBands[1] degrees of
+// the normal drawn in kEmbossEdge.
+constexpr double kEmbossGain = 4.0;
+inline const ts::Rgba kEmbossEdge{60, 210, 255, 255};
+
 // What measure() found, for the pictures.
 struct Found {
   std::map<int, Compare> cmp;  // method -> against R (normalDeg: at the same (s,t); screenNormalDeg: same pixel)
@@ -44,6 +53,16 @@ struct Found {
   std::map<int, ts::gl::CallList> picturesGL;  // the calls that rendered each picture (the GL listing)
   ts::gl::CallList refNormalsGL;
   double embossContrast[4] = {-1, -1, -1, -1};  // per band of kEmbossBands
+  // Seed 002's x tilt against R's per pixel (agreementPicture) and the rows of
+  // its near and far side, as tilt_agreement_x_near/far[seed002] count them.
+  std::shared_ptr<const ts::Image> seedTiltX;
+  glm::ivec2 nearRows{0}, farRows{0};
+  // Emboss's term 0.5 + 0.5 (H - H') alone, magnified by kEmbossGain, the
+  // overhead band's edge drawn on it; each pixel's band of the light's
+  // angle to the normal (-1: not on the torus), and the GL that drew it.
+  std::shared_ptr<const ts::Image> embossTerm;
+  std::vector<signed char> embossBand;
+  ts::gl::CallList embossTermGL;
 };
 
 // `seam`: the normal map baked with and without wrapping differences.
@@ -101,9 +120,13 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   // side of the ring s runs along +x, on the far side along -x.
   const glm::ivec2 rows = coveredRows(smooth);
   const int third = (rows.y - rows.x) / 3;
+  found.nearRows = {rows.y - third, rows.y}, found.farRows = {rows.x, rows.x + third};
+  found.seedTiltX = std::make_shared<const ts::Image>(agreementPicture(
+      normals[kSeed002], exact, smooth, {found.nearRows, found.farRows}, kTiltWith, kTiltAgainst, kTiltUncounted,
+      found.refNormals->at(0, 0)));  // the figure's background, as R's normals are shown on it
   for (int m = kBlinn; m <= kNormalMap; ++m)
     for (int side = 0; side < 2; ++side) {
-      glm::ivec2 band = side == 0 ? glm::ivec2(rows.y - third, rows.y) : glm::ivec2(rows.x, rows.x + third);
+      glm::ivec2 band = side == 0 ? found.nearRows : found.farRows;
       glm::dvec2 a = perturbationAgreement(normals[m], exact, smooth, band);
       const std::string where = side == 0 ? "near" : "far";
       out.push_back({"tilt_agreement_x_" + where + "[" + kMethods[m].key + "]", a.x,
@@ -143,17 +166,40 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   {
     RenderSpec s{kEmboss};
     s.embossTermOnly = true;
-    const ts::Image term = render(s);
+    const ts::Image term = recorded(s, &found.embossTermGL);
     double sum[4] = {0, 0, 0, 0}, cnt[4] = {0, 0, 0, 0};
     const glm::dvec3 L = glm::normalize(light1Eye);
+    found.embossBand.assign(size_t(term.width) * size_t(term.height), -1);
     for (int y = 0; y < term.height; ++y)
       for (int x = 0; x < term.width; ++x) {
         if (!covered(smooth, x, y)) continue;
         double a = angleDeg(normalAt(smooth, x, y), L);
         for (int b = 0; b < 4; ++b)
-          if (a >= kEmbossBands[b] && a < kEmbossBands[b + 1]) sum[b] += std::fabs(term.at(x, y).r - 127.5) / 127.5, cnt[b] += 1;
+          if (a >= kEmbossBands[b] && a < kEmbossBands[b + 1]) {
+            sum[b] += std::fabs(term.at(x, y).r - 127.5) / 127.5, cnt[b] += 1;
+            found.embossBand[size_t(y) * size_t(term.width) + size_t(x)] = static_cast<signed char>(b);
+          }
       }
     for (int b = 0; b < 4; ++b) found.embossContrast[b] = cnt[b] ? sum[b] / cnt[b] : -1.0;
+    // The term as the figure shows it: magnified about 1/2 (the contrasts are
+    // a few hundredths), on the figure's background, the edge of band 0 (the
+    // light within kEmbossBands[1] degrees of the normal) two pixels wide.
+    ts::Image shown(term.width, term.height, found.refNormals->at(0, 0));
+    auto band = [&](int x, int y) {
+      return x < 0 || y < 0 || x >= term.width || y >= term.height ? -1 : int(found.embossBand[size_t(y) * size_t(term.width) + size_t(x)]);
+    };
+    for (int y = 0; y < term.height; ++y)
+      for (int x = 0; x < term.width; ++x) {
+        if (band(x, y) < 0) continue;
+        const ts::Rgba t = term.at(x, y);
+        auto magnified = [](uint8_t v) { return uint8_t(std::lround(std::clamp(127.5 + kEmbossGain * (v - 127.5), 0.0, 255.0))); };
+        shown.set(x, y, {magnified(t.r), magnified(t.g), magnified(t.b), 255});
+        bool edge = false;
+        for (int dy = -1; dy <= 1 && !edge; ++dy)
+          for (int dx = -1; dx <= 1 && !edge; ++dx) edge = (band(x + dx, y + dy) == 0) != (band(x, y) == 0);
+        if (edge) shown.set(x, y, kEmbossEdge);
+      }
+    found.embossTerm = std::make_shared<const ts::Image>(std::move(shown));
     for (int b = 0; b < 4; ++b)
       out.push_back({"emboss_contrast[" + std::to_string(int(kEmbossBands[b])) + "-" + std::to_string(int(kEmbossBands[b + 1])) + "deg]",
                      found.embossContrast[b], "mean |H - H'| where the light is this far from the normal (-1: no pixels)"});

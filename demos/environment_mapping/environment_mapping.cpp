@@ -41,6 +41,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 #include "common/gl/gl_listing.hpp"
 #include "common/core/layout.hpp"
@@ -168,10 +169,11 @@ ts::TextureDesc image(const ts::Image& img, const std::string& what, ts::gl::Cal
   return t;
 }
 // The shown state's error, as measured (measure() names it [shown]).
-ts::layout::Text statsLine(const ts::Measurements& m, const envmap::ErrorStats& s) {
+std::vector<ts::layout::Text> statsLine(const ts::Measurements& m, const envmap::ErrorStats& s) {
   namespace L = ts::layout;
-  return L::measuredText(m, "error mean {error_mean_deg[shown]|%.2f}, ") + L::given("percentile", 95, "%g") +
-         L::measuredText(m, "% {error_p95_deg[shown]|%.2f}, max {error_max_deg[shown]|%.1f} deg") + " (" + s.maxRegion + ")";
+  return {L::measuredText(m, "error mean {error_mean_deg[shown]|%.2f},"),
+          L::given("percentile", 95, "%g") + L::measuredText(m, "% {error_p95_deg[shown]|%.2f},"),
+          L::measuredText(m, "max {error_max_deg[shown]|%.1f} deg") + " (" + s.maxRegion + ")"};
 }
 // The error picture's key: the heat scale's colours at 0, half and the whole of the scale.
 std::vector<ts::LegendEntry> heatKey(double scaleDeg) {
@@ -192,6 +194,19 @@ void cellKey(ts::Frame& f, ts::layout::Box band, const std::vector<ts::LegendEnt
   ts::layout::legend(f, band, fit, s);
 }
 const glm::vec4 kNearBall{230 / 255.0f, 40 / 255.0f, 40 / 255.0f, 1.0f};  // painted on the flat mirror's reference
+// The key of the world's colours (ts::envmaps::worldColour): its base colour toward +X, +Y and +Z (the
+// colours mix between them), and the white of the equator and of the meridian through -Z.
+std::vector<ts::LegendEntry> worldKey() {
+  auto c = [](glm::dvec3 d) { return glm::vec4(glm::vec3(envmap::directionColour(d)), 1.0f); };
+  return {{c({1, 0, 0}), "toward +X"},
+          {c({0, 1, 0}), "toward +Y"},
+          {c({0, 0, 1}), "toward +Z"},
+          {glm::vec4(glm::vec3(envmap::kWhiteLine), 1.0f), "equator, meridian through -Z"}};
+}
+// Whether `m` has a measurement of this name.
+bool has(const ts::Measurements& m, const std::string& name) {
+  return std::any_of(m.begin(), m.end(), [&](const ts::Measurement& x) { return x.name == name; });
+}
 
 ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurements& measured) const {
   namespace L = ts::layout;
@@ -201,13 +216,16 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   // The object pictures are resampled to the panel with GL_LINEAR: with GL_NEAREST the panel's middle row and
   // column sample exactly between two pixels, where backends round apart.  The map keeps its texels sharp.
   // A cell's title takes the upper line of its band; a key of the picture's colours, when it has one, the lower.
-  auto show = [&](const L::Cell& c, const std::string& id, const ts::TextureDesc* t, const L::Text& above, const L::Text& below,
-                  const std::vector<ts::LegendEntry>& key = {}) {
+  // The note below is set as phrases: a line breaks between them, never inside one.
+  auto show = [&](const L::Cell& c, const std::string& id, const ts::TextureDesc* t, const L::Text& above,
+                  const std::vector<L::Text>& below,
+                  const std::vector<ts::LegendEntry>& key = {}, bool keyLine = false) {
     if (t && t->image) f.panels.push_back(L::picturePanel(f, id, c.picture, *t));  // a nested frame's picture upright
-    const L::Box title = key.empty() ? c.above : L::halves(c.above).first;
+    // keyLine: the lower line holds a key drawn across cells (the caller's).
+    const L::Box title = key.empty() && !keyLine ? c.above : L::halves(c.above).first;
     L::caption(f, title, above, kWhite, c.scale);
     if (!key.empty()) cellKey(f, L::halves(c.above).second, key, c.scale);
-    if (!below.empty()) L::caption(f, c.below, below, kAmber, c.scale);
+    if (!below.empty()) L::phrases(f, c.below, below, kAmber, c.scale);
   };
   if (view_ == kCompareView) {
     L::FlowSpec spec;
@@ -216,51 +234,97 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     for (int k = 0; k < 4; ++k)
       show(cells[size_t(k)], envmap::kParamKeys[k], found ? &found->pictures[size_t(k)] : nullptr,
            std::string(envmap::kParamLabels[k]) + (eval_ == 1 && (k == envmap::kCube || k == envmap::kSphere) ? " (texgen)" : ""),
-           found ? L::measuredText(measured, "mean {error_mean_deg[" + tableKey(k) + "]|%.2f}, max {error_max_deg[" +
-                                                   tableKey(k) + "]|%.1f} deg")
-                 : L::Text());
+           found ? std::vector<L::Text>{L::measuredText(measured, "mean {error_mean_deg[" + tableKey(k) + "]|%.2f},"),
+                                        L::measuredText(measured, "max {error_max_deg[" + tableKey(k) + "]|%.1f} deg")}
+                 : std::vector<L::Text>{});
     show(cells[4], "reference", found ? &found->reference : nullptr, refCaption(),
-         std::string("the maps: r per ") + kEval[eval_]);
+         {std::string("the maps: r per ") + kEval[eval_]});
     return f;
   }
   if (view_ == kMapView) {
+    // The same layout for every map (the lat-long and the cube map figures are siblings): the map left with
+    // its title and what is lit above it, the texels' shape and solid angles (the figures' claims) below;
+    // the picture right; every text at one scale, the smaller of the two cells'.
     const float mid = area.x0 + (area.x1 - area.x0) * 0.62f;
     const envmap::Size sz = envmap::mapSize(envmap::Param(param_), face_);
+    // The map's cell is laid out for the widest map (lat-long, 2:1) whichever is shown, and each map is as
+    // tall as that one: titles, maps and captions at the same places in every map figure.
+    constexpr float kWidestMap = 2.0f;
     L::FlowSpec spec;
-    spec.linesAbove = 1, spec.linesBelow = 2;
-    spec.aspect = param_ == envmap::kCube ? 1.5f : float(sz.w) / float(sz.h);
+    spec.linesAbove = 2, spec.linesBelow = 2, spec.aspect = 1.0f;
+    spec.maxScale = L::flow({mid + 6, area.y0, area.x1, area.y1}, spec)[0].scale;
+    spec.aspect = kWidestMap;
     L::Cell m = L::flow({area.x0, area.y0, mid - 6, area.y1}, spec)[0];
+    const float aspect = std::min(kWidestMap, param_ == envmap::kCube ? 1.5f : float(sz.w) / float(sz.h));
+    m.picture = L::centred(m.picture, int(std::lround(float(m.picture.h) * aspect)), m.picture.h);
+    spec.aspect = 1.0f;  // the picture: in the rows the map's cell takes, its title beside the map's
+    L::Cell p = L::flow({mid + 6, m.above.y0, area.x1, m.below.y1}, spec)[0];
+    m.scale = p.scale = std::min(m.scale, p.scale);
     const L::Text texels = found ? L::measured(measured, "texels", "%.0f")
                                  : L::given("texels of the map", envmap::mapTexels(envmap::Param(param_), face_), "%.0f");
-    show(m, "map", found ? &found->map : nullptr,
-         std::string(envmap::kParamLabels[param_]) + ", " + texels + " texels" +
-             (param_ == envmap::kCube ? ": +X -X +Y / -Y +Z -Z, t down" : ""),
-         "lit: the texels the object reads");
-    if (found) envmap::lightTheReadTexels(f.panels.back(), found->lit);
-    spec.aspect = 1.0f;
-    show(L::flow({mid + 6, area.y0, area.x1, area.y1}, spec)[0], "picture", found ? &found->picture : nullptr,
-         stateName(param_), found ? statsLine(measured, found->current) : L::Text());
+    if (found) f.panels.push_back(L::picturePanel(f, "map", m.picture, found->map));
+    L::caption(f, L::halves(m.above).first,
+               std::string(envmap::kParamLabels[param_]) + ", " + texels + " texels" +
+                   (param_ == envmap::kCube ? ", faces as GL stores them (t down)" : ""),
+               kWhite, m.scale);
+    L::caption(f, L::halves(m.above).second,
+               std::string("lit: the texels the ") + envmap::kObjectKeys[object_] + " reads; the rest dimmed", kWhite, m.scale);
+    if (found) {
+      envmap::lightTheReadTexels(f.panels.back(), found->lit);
+      // The texels the object reads: how much longer than wide, per region of the map it reads them in.
+      const std::string key = envmap::kParamKeys[param_];
+      std::vector<L::Text> shape;
+      for (const ts::Measurement& x : measured)
+        if (x.name.rfind("texel_aspect[" + key + "@", 0) == 0) {
+          if (!shape.empty()) shape.back() = shape.back() + ",";
+          const size_t at = x.name.find('@');
+          shape.push_back(x.name.substr(at + 1, x.name.size() - at - 2) + " " + L::measured(measured, x.name, "%.2f"));
+        }
+      if (!shape.empty()) {
+        shape.back() = shape.back() + ";";
+        shape.insert(shape.begin(), "texels read, longer / shorter side:");
+      }
+      shape.push_back("texel solid angles differ " + L::measured(measured, "texel_solid_angle_ratio[" + key + "]", "%.1f") +
+                      "x across the map" +
+                      (param_ != envmap::kLatLong && has(measured, "texel_solid_angle_ratio[latlong]")
+                           ? " (lat-long " + L::measured(measured, "texel_solid_angle_ratio[latlong]", "%.1f") + "x)"
+                           : L::Text()));
+      L::phrases(f, m.below, shape, kAmber, m.scale);
+    }
+    show(p, "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(measured, found->current) : std::vector<L::Text>{});
     return f;
   }
   // Two lines above each picture: its title, and the key of the colours the reference and the error carry.
   L::FlowSpec spec;
   spec.n = 3, spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 8;
   std::vector<L::Cell> cells = L::flow(area, spec);
-  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(measured, found->current) : L::Text());
+  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(measured, found->current) : std::vector<L::Text>{},
+       {}, true);
   // The near ball's pixels are those painted red on this very picture (measure(): [shown]).
-  L::Text refNote;
+  std::vector<L::Text> refNote;
   if (found && object_ == envmap::kMirror)
-    refNote = L::measuredText(measured, "red: a near ball, {mirror_ball_pixels[shown]|%.0f} px; a map made at the centre shows it at "
-                                        "{mirror_ball_pixels_centre_map[shown]|%.0f} px, {mirror_ball_pixels_both[shown]|%.0f} right");
-  std::vector<ts::LegendEntry> refKey;
-  if (object_ == envmap::kMirror) refKey = {{kNearBall, "the near ball (a true mirror)"}};
-  show(cells[1], "reference", found ? &found->reference : nullptr, refCaption(), refNote, refKey);
+    refNote = {L::measuredText(measured, "red: a near ball, {mirror_ball_pixels[shown]|%.0f} px;"),
+               L::measuredText(measured, "a map made at the centre: {mirror_ball_pixels_centre_map[shown]|%.0f} px, "
+                                         "{mirror_ball_pixels_both[shown]|%.0f} right")};
+  // One key for the picture and the reference, under their titles: the world's colours, and the flat
+  // mirror's near ball painted on the reference.
+  std::vector<ts::LegendEntry> key = worldKey();
+  if (object_ == envmap::kMirror) key.push_back({kNearBall, "the near ball"});
+  show(cells[1], "reference", found ? &found->reference : nullptr, refCaption(), refNote, {}, true);
+  cellKey(f, {cells[0].above.x0, L::halves(cells[0].above).second.y0, cells[1].above.x1, cells[0].above.y1}, key, cells[0].scale);
+  // Where the error is worst, and the other evaluation's mean beside it (the figures' claims compare them).
+  auto errorNote = [&]() -> std::vector<L::Text> {
+    const std::string other = std::string(envmap::kParamKeys[param_]) + "/" + envmap::kObjectKeys[object_] + "/" + kEval[1 - eval_];
+    if (!has(measured, "error_mean_deg[" + other + "]")) return {"worst in: " + found->current.maxRegion};
+    return {"worst in: " + found->current.maxRegion + ";",
+            std::string("r per ") + kEval[1 - eval_] + ": " + L::measured(measured, "error_mean_deg[" + other + "]", "%.2f") + " deg mean"};
+  };
   const ts::TextureDesc errorTex = found ? image(found->error, "error") : ts::TextureDesc{};
   const double scale = found ? found->errorScale : envmap::errorScale(eval_ == 1, 0);
   show(cells[2], "error", found ? &errorTex : nullptr,
        "direction error (black " + L::given("error shown black, degrees", 0, "%g") + ", white " +
            L::given("error shown white, degrees (the heat scale's top)", scale, "%g") + " deg or more)",
-       found ? "worst in: " + found->current.maxRegion : "", heatKey(scale));
+       found ? errorNote() : std::vector<L::Text>{}, heatKey(scale));
   return f;
 }
 

@@ -51,9 +51,12 @@ TEST(BumpMapping, FiguresShowTheirNumbersWhole) {
   EXPECT_NEAR(corner.g, blank.clearColor.g * 255, 1);
   EXPECT_NEAR(corner.b, blank.clearColor.b * 255, 1);
   // Each view's numbers: six cells of PSNR, |diff| and (GLSL) the normal's error, emboss's two contrasts; two
-  // cells of normal errors.
-  for (const auto& [view, w, h, numbers] : {std::tuple{"all", 1280, 720, 16u}, std::tuple{"normals", 1024, 560, 3u}}) {
-    Demo d("bump_mapping", {"--view", view, "--method", "normalmap"});
+  // cells of normal errors; seed 002 beside its x tilt (B2's four, the near and far agreement, R's PSNR);
+  // emboss beside its term (B4's two, the four bands' contrasts, R's PSNR).
+  for (const auto& [view, method, w, h, numbers] :
+       {std::tuple{"all", "normalmap", 1280, 720, 16u}, std::tuple{"normals", "normalmap", 1024, 560, 3u},
+        std::tuple{"compare", "seed002", 1024, 560, 7u}, std::tuple{"compare", "emboss", 1024, 560, 7u}}) {
+    Demo d("bump_mapping", {"--view", view, "--method", method});
     d.measured = defaults();
     const ts::Frame f = d.frame(w, h);
     size_t printed = 0;
@@ -64,8 +67,49 @@ TEST(BumpMapping, FiguresShowTheirNumbersWhole) {
         ++printed;
       }
     }
-    EXPECT_EQ(printed, numbers) << view;
+    EXPECT_EQ(printed, numbers) << view << " " << method;
   }
+}
+
+// The pictures that show seed 002's and emboss's claims show what was
+// measured: seed 002's x tilt picture, counted in the near and the far rows,
+// gives the measured agreements exactly; emboss's term, as shown (magnified),
+// is flatter where the light is within 10 degrees of the normal than where
+// it is beyond 60, and the edge of that region is drawn.
+TEST(BumpMapping, ClaimPicturesShowTheMeasurements) {
+  const bump::Found* found = defaults().detailAs<bump::Found>();
+  ASSERT_NE(found, nullptr);
+  ASSERT_TRUE(found->seedTiltX && found->embossTerm);
+  auto same = [](ts::Rgba a, ts::Rgba b) { return a.r == b.r && a.g == b.g && a.b == b.b; };
+  for (const auto& [rows, name] : {std::pair{found->nearRows, "tilt_agreement_x_near[seed002]"},
+                                   std::pair{found->farRows, "tilt_agreement_x_far[seed002]"}}) {
+    double with = 0, against = 0;
+    for (int y = rows.x; y < rows.y; ++y)
+      for (int x = 0; x < found->seedTiltX->width; ++x) {
+        with += same(found->seedTiltX->at(x, y), bump::kTiltWith);
+        against += same(found->seedTiltX->at(x, y), bump::kTiltAgainst);
+      }
+    ASSERT_GT(with + against, 100) << name;
+    EXPECT_NEAR((with - against) / (with + against), value(defaults(), name), 1e-9) << name;
+  }
+  const ts::Image& term = *found->embossTerm;
+  ASSERT_EQ(found->embossBand.size(), size_t(term.width) * size_t(term.height));
+  double dev[4] = {0, 0, 0, 0}, n[4] = {0, 0, 0, 0};
+  long edge = 0;
+  for (int y = 0; y < term.height; ++y)
+    for (int x = 0; x < term.width; ++x) {
+      const int b = found->embossBand[size_t(y) * size_t(term.width) + size_t(x)];
+      if (b < 0) continue;
+      if (same(term.at(x, y), bump::kEmbossEdge)) {
+        ++edge;
+        continue;
+      }
+      dev[b] += std::fabs(term.at(x, y).r - 127.5), n[b] += 1;
+    }
+  EXPECT_GT(edge, 20);
+  ASSERT_GT(n[0], 0);
+  ASSERT_GT(n[3], 0);
+  EXPECT_LT(dev[0] / n[0], 0.3 * dev[3] / n[3]);
 }
 
 TEST(BumpMapping, BlinnAndNormalMapFollowTheDisplacedSurface) {

@@ -9,9 +9,11 @@
 // one normal gives reflections exactly as far apart as the lines.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -241,5 +243,60 @@ TEST(EnvironmentMapping, ShownStateAndPictures) {
     ts::Frame f = s.frame(900, 400);
     EXPECT_GE(f.panels.size(), 2u) << view;
   }
+}
+}  // namespace
+
+namespace {
+// The lat-long and the cube map figures are siblings: the map at the same
+// place and height, titles and captions at the same heights and scale, the
+// picture beside it in the same place; each prints its claim's numbers
+// (texel shape and solid-angle ratio) from their measurements.  The object
+// view keys the world's colours by direction.
+TEST(EnvironmentMapping, MapFiguresShareTheirLayoutAndPrintTheirClaims) {
+  struct Seen {
+    ts::Rect map, picture;
+    std::vector<std::pair<float, int>> rows;  // each label's y and scale
+    std::set<std::string> printed;
+  };
+  std::map<std::string, Seen> seen;
+  for (const char* param : {"latlong", "cube"}) {
+    Demo d("environment_mapping", {"--view", "map", "--param", param, "--object", "mirror"});
+    d.measure();
+    const ts::Frame f = d.frame(1080, 440);
+    Seen& s = seen[param];
+    for (const ts::Panel& p : f.panels) {
+      if (p.id == "map") s.map = p.viewport;
+      if (p.id == "picture") s.picture = p.viewport;
+    }
+    for (const ts::Label& l : f.labels) {
+      s.rows.push_back({l.y, l.scale});
+      for (const ts::Label::Printed& p : l.printed) {
+        EXPECT_EQ(ts::layout::measured(d.measured, p.name, p.format.c_str()).text, p.text) << p.name;
+        s.printed.insert(p.name);
+      }
+    }
+    std::sort(s.rows.begin(), s.rows.end());
+    s.rows.erase(std::unique(s.rows.begin(), s.rows.end()), s.rows.end());
+  }
+  const Seen &ll = seen["latlong"], &cube = seen["cube"];
+  EXPECT_EQ(ll.map.y, cube.map.y);
+  EXPECT_EQ(ll.map.h, cube.map.h);
+  EXPECT_GT(ll.map.w, cube.map.w);  // 2:1 against 3:2, as tall
+  EXPECT_EQ(ll.picture.x, cube.picture.x);
+  EXPECT_EQ(ll.picture.y, cube.picture.y);
+  EXPECT_EQ(ll.picture.w, cube.picture.w);
+  EXPECT_EQ(ll.rows, cube.rows);
+  for (const char* name : {"texel_aspect[latlong@pole]", "texel_aspect[latlong@body]", "texel_solid_angle_ratio[latlong]"})
+    EXPECT_TRUE(ll.printed.count(name)) << name;
+  for (const char* name : {"texel_aspect[cube@face]", "texel_solid_angle_ratio[cube]", "texel_solid_angle_ratio[latlong]"})
+    EXPECT_TRUE(cube.printed.count(name)) << name;
+
+  Demo d("environment_mapping", {"--eval", "vertex"});
+  d.measured = measured("sphere");
+  const ts::Frame f = d.frame(1080, 440);
+  std::set<std::string> keyed;
+  for (const ts::LegendEntry& e : f.legend) keyed.insert(e.meaning);
+  for (const char* meaning : {"toward +X", "toward +Y", "toward +Z", "equator, meridian through -Z"})
+    EXPECT_TRUE(keyed.count(meaning)) << meaning;
 }
 }  // namespace

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "common/core/layout.hpp"
+#include "common/core/text.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
@@ -225,3 +226,39 @@ TEST(LayoutKit, CentredHalvesAndUnitPanel) {
   EXPECT_TRUE(p.batches.empty());
 }
 }  // namespace
+
+// Captions wrap at words and at phrases, never inside a formula: an operator
+// word keeps its neighbours on its line ("c3 = (c0+2c1)/3" moves whole to
+// the next line rather than leave "c3 =" behind), and phrases() breaks only
+// between its phrases, each line keeping the numbers it prints.
+TEST(LayoutKit, WrapKeepsFormulasAndPhrasesWhole) {
+  namespace L = ts::layout;
+  {
+    ts::Frame f = L::blankFrame(600, 200);
+    const std::string head = "the third colour c3 =";  // where a plain word wrap would break
+    const float w = ts::text::width(head, 1) + 2;
+    L::caption(f, {0, 0, w, 100}, head + " (c0+2c1)/3 of the block", L::kWhite, 1);
+    bool whole = false;
+    for (const ts::Label& l : f.labels) {
+      whole = whole || l.text.find("c3 = (c0+2c1)/3") != std::string::npos;
+      EXPECT_NE(l.text.back(), '=') << l.text;
+      EXPECT_NE(l.text.front(), '=') << l.text;
+    }
+    EXPECT_TRUE(whole);
+    EXPECT_EQ(L::captionLines(head + " (c0+2c1)/3 of the block", 1, w), int(f.labels.size()));
+  }
+  {
+    ts::Frame f = L::blankFrame(600, 200);
+    const std::string first = "alpha beta gamma,";
+    const L::Text second = "delta " + L::given("a parameter", 2.5, "%.1f");
+    const float w = ts::text::width(first + " delta 2.5", 1) - 4;  // both do not fit on one line, each does
+    const float below = L::phrases(f, {0, 0, w, 100}, {first, second}, L::kWhite, 1);
+    ASSERT_EQ(f.labels.size(), 2u);
+    EXPECT_EQ(f.labels[0].text, first);
+    EXPECT_EQ(f.labels[1].text, "delta 2.5");
+    ASSERT_EQ(f.labels[1].given.size(), 1u);
+    EXPECT_EQ(f.labels[1].given[0].first, "a parameter");
+    EXPECT_GT(f.labels[1].y, f.labels[0].y);
+    EXPECT_LE(below, 100.0f);
+  }
+}
