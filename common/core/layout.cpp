@@ -78,9 +78,9 @@ int fitScale(const std::function<Rect(int)>& pictureAt, int maxScale) {
 }
 
 namespace {
-// A word that is an operator alone ("=", "+", "-", "/", "<=", ...): a
+// A word that is an operator alone ("=", "+", "-", "/", "<=", "..", ...): a
 // formula's, which must not be broken beside it.
-bool operatorWord(const std::string& w) { return !w.empty() && w.find_first_not_of("=+-*/<>~^") == std::string::npos; }
+bool operatorWord(const std::string& w) { return !w.empty() && w.find_first_not_of("=+-*/<>~^.") == std::string::npos; }
 
 // Words of `text` on lines no wider than `width` at `scale`; a word wider
 // than the line stays alone on its line (the caller cuts it).  A formula
