@@ -187,7 +187,9 @@ void Projectors::pairView(ts::Frame& f, int w, int h) const {
   int tex = f.addTexture(picture());
   // Side by side, or one above the other in a tall window; a caption band above each.
   const bool tall = h > w * 5 / 4;
-  const int side = tall ? std::min(w - 16, (h - 90) / 2) : std::min(w / 2 - 16, h - 50);
+  // The slide's stage has a key under the pictures: the projector's outline.
+  const int keyH = view_ == kSlide ? int(ts::layout::lineHeight(1)) + 4 : 0;
+  const int side = tall ? std::min(w - 16, (h - 90 - keyH) / 2) : std::min(w / 2 - 16, h - 50 - keyH);
   ts::Rect L{w / 4 - side / 2, 36, side, side}, R{3 * w / 4 - side / 2, 36, side, side};
   if (tall) L = {(w - side) / 2, 36, side, side}, R = {(w - side) / 2, 36 + side + 40, side, side};
   std::string a, b;
@@ -221,6 +223,9 @@ void Projectors::pairView(ts::Frame& f, int w, int h) const {
     f.panels.push_back(views::slidePanel(R, st, !clip_));
     a = "no fix: the back projection (q < 0)", b = "clip plane q >= 0";
     if (clip_) std::swap(a, b);
+    const float y = float(R.y + R.h + 4);
+    ts::layout::legend(f, {float(std::min(L.x, R.x)), y, float(w) - 8, y + ts::layout::lineHeight(1)},
+                       {{views::kProjectorOutline, "the projector: its frustum's edges"}}, 1);
   } else {
     f.panels.push_back(views::objectPanel("cube24", L, perVertexBatch(shape(Object::Cube, false), Projector::Planar,
                                                                        Axis::Z, Formula::Corrected, tex, true), pose(pose_)));
