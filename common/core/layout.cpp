@@ -162,6 +162,12 @@ Text measuredText(const Measurements& m, const std::string& templ) {
   return out;
 }
 
+Text measuredValue(const std::string& name, double value, const char* format) {
+  Text t(formatted(format, value));
+  t.printed.push_back({name, format, t.text});
+  return t;
+}
+
 Text given(const std::string& name, double value, const char* format) {
   Text t(formatted(format, value));
   t.given.push_back({name, value, t.text});

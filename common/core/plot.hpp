@@ -76,8 +76,7 @@ struct Note {
 
 struct Spec {
   std::string id = "plot";
-  layout::Text title;
-  std::string xLabel, yLabel;
+  layout::Text title, xLabel, yLabel;
   double x0 = 0, x1 = 1, y0 = 0, y1 = 1;  // the data range shown
   std::vector<Tick> xTicks, yTicks;
   std::vector<Series> series;

@@ -117,10 +117,10 @@ class TextureCompression final : public ts::Scene {
       ts::layout::caption(f, {8, 8, float(width - 8), float(height - 8)}, "compressing ...", ts::layout::kWhite, 2);
       return f;
     }
-    const std::string numbers = summary(measured);
+    const ts::layout::Text numbers = summary(measured);
     const int bx = std::min(bx_, blocksAcross(m->original.width) - 1), by = std::min(by_, blocksAcross(m->original.height) - 1);
     if (view_ == 0) views::buildBlocks(f, *m, bx, by, numbers);
-    else if (view_ == 1) views::buildEqualMemory(f, *m, bx, by, numbers);
+    else if (view_ == 1) views::buildEqualMemory(f, *m, measured, bx, by, numbers);
     else views::buildMemory(f, *m, memoryNotes(measured, *m));
     return f;
   }
@@ -128,18 +128,13 @@ class TextureCompression final : public ts::Scene {
   ts::Measurements measure(ts::Renderer& r) override;
 
  private:
-  std::string summary(const ts::Measurements& ms) const {
-    auto v = [&](const std::string& n) {
-      for (const auto& x : ms)
-        if (x.name == n) return x.value;
-      return 0.0;
-    };
+  ts::layout::Text summary(const ts::Measurements& ms) const {
     const std::string size = file_.active() ? "file" : "512";
-    return fmt("%.0f", v("dxt1_bytes[" + size + "]")) + " bytes (" + fmt("%.0f", v("bits_per_texel")) + " bits a texel, " +
-           fmt("%.0f", v("ratio_vs_rgb565")) + ":1 against RGB565, " + fmt("%.0f", v("ratio_vs_rgb888")) + ":1 against RGB888); PSNR " +
-           fmt("%.1f", v("psnr[" + (file_.active() ? std::string("file") : kPictureNames[picture_]) + "]")) + " dB; at most " +
-           fmt("%.0f", v("dxt1_max_colours_per_block")) + " colours a block; GL vs CPU decode: " + fmt("%.0f", v("gl_vs_cpu_max_diff")) +
-           " levels at most";
+    const std::string shown = file_.active() ? std::string("file") : kPictureNames[picture_];
+    return ts::layout::measuredText(ms, "{dxt1_bytes[" + size + "]|%.0f} bytes ({bits_per_texel|%.0f} bits a texel, "
+                                        "{ratio_vs_rgb565|%.0f}:1 against RGB565, {ratio_vs_rgb888|%.0f}:1 against RGB888); "
+                                        "PSNR {psnr[" + shown + "]|%.1f} dB; at most {dxt1_max_colours_per_block|%.0f} colours "
+                                        "a block; GL vs CPU decode: {gl_vs_cpu_max_diff|%.0f} levels at most");
   }
 
   // The memory view's notes: the clipmap against the whole chain, and DXT1's bytes against RGB565's.
