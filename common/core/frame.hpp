@@ -170,9 +170,9 @@ struct Batch {
   // glClipPlane(GL_CLIP_PLANE0): keeps the points where the plane, given
   // while `clipModelview` is the modelview (GL stores plane · M⁻¹, as for
   // EYE_LINEAR planes), is >= 0 at the vertex in eye coordinates.  render.cpp
-  // gives the plane with the panel's modelview loaded, so a batch sets
-  // clipModelview to it (the plane is then in object coordinates); the
-  // sidecar records it so a reader need not know that.
+  // loads clipModelview to give the plane, as it does planeModelview for
+  // tex_gen; set to the panel's modelview the plane is in object
+  // coordinates.  The sidecar records both, so a reader recomputes the cut.
   bool clip = false;
   glm::vec4 clipPlane{0.0f};
   glm::mat4 clipModelview{1.0f};

@@ -107,8 +107,8 @@ class Torus final : public ts::Scene {
     return {
         {"vi6_torus", "Figure VI.6",
          "A checkerboard texture map (left) applied to a torus by s = theta/360, t = phi/360 (right), the torus "
-         "tilted towards the viewer.",
-         {"--mapping", "book", "--pattern", "checker", "--marker=off"}, 1024, 512,
+         "tilted towards the viewer; the red cross marks where the texture's centre lands.",
+         {"--mapping", "book", "--pattern", "checker", "--marker=on"}, 1024, 512,
          "With s = theta/360, t = phi/360 the texture's centre lands at z = {centre_3d_z[book]} = -(R - r), on the "
          "far inner wall of the hole."},
         {"vi6_torus_centre", "Exercise VI.2",
@@ -244,7 +244,8 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
     // Where the texture's centre lands: the z measured on the render (the
     // claim's number), and what the exercise's answer says it should be.
     const std::string n = std::string("[") + kMappingNames[int(m)] + "]";
-    const L::Text should = m == Mapping::Book ? " = -(R - r)" : " = R + r";
+    // The claim's words too: where on the torus that z is.
+    const L::Text should = m == Mapping::Book ? " = -(R - r): the hole's far wall" : " = R + r: the front";
     const bool seen = found && found->visible;
     L::caption(f, centre,
                seen ? "centre lands at z = " + L::measured(measured, "centre_3d_z" + n, "%.2f") + should
