@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <functional>
 
 #include "common/core/error.hpp"
@@ -125,7 +126,17 @@ Text operator+(const Text& a, const Text& b) {
 }
 
 namespace {
+// A number is printed from a double, so its format must take one: "%d" given
+// a double prints whatever the register holds, and the label would disagree
+// with its sidecar.  Refused at render time rather than printed wrong.
 std::string formatted(const char* format, double v) {
+  const char* c = std::strchr(format, '%');
+  while (c && c[1] == '%') c = std::strchr(c + 2, '%');
+  if (c) {
+    c = c + 1 + std::strspn(c + 1, "-+ #0123456789.");
+    if (!*c || !std::strchr("fFeEgGaA", *c))
+      throw Error(std::string("a label's number format '") + format + "' does not print a double (use %.0f, not %d)");
+  }
   char b[64];
   std::snprintf(b, sizeof b, format, v);
   return b;

@@ -211,6 +211,10 @@ inline void Views::buildFilmstrip(ts::Frame& f, const Result* m) const {
     }
 }
 
+// The probe's mean R, G, B as the plot draws and its key names them.
+inline const glm::vec4 kMeanColours[3] = {{1.0f, 0.3f, 0.3f, 1.0f}, {0.3f, 0.95f, 0.3f, 1.0f}, {0.4f, 0.55f, 1.0f, 1.0f}};
+inline const glm::vec4 kSwitchColour{0.55f, 0.55f, 0.6f, 1.0f};
+
 // A plot of the probe's mean R, G, B against log2 distance; returns its data area.
 inline ts::Rect plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, const std::vector<double>& xs,
                const std::vector<Mean>& ys, double current, const std::vector<double>& switches, int scale) {
@@ -222,13 +226,12 @@ inline ts::Rect plotSweep(ts::Frame& f, ts::Rect area, const std::string& title,
   p.x0 = xs.front(), p.x1 = xs.back(), p.y1 = 255;
   p.xTicks = plot::ticks(std::ceil(p.x0), std::floor(p.x1), 1), p.yTicks = plot::ticks(0, 255, 64);
   const char* roles[3] = {"mean_red", "mean_green", "mean_blue"};
-  const glm::vec4 colours[3] = {{1.0f, 0.3f, 0.3f, 1.0f}, {0.3f, 0.95f, 0.3f, 1.0f}, {0.4f, 0.55f, 1.0f, 1.0f}};
   for (int c = 0; c < 3; ++c) {
-    plot::Series se(roles[c], colours[c]);
+    plot::Series se(roles[c], kMeanColours[c]);
     for (size_t k = 0; k < xs.size() && k < ys.size(); ++k) se.points.push_back({xs[k], c == 0 ? ys[k].r : c == 1 ? ys[k].g : ys[k].b});
     p.series.push_back(se);
   }
-  for (double sw : switches) p.markers.push_back({sw, {0.55f, 0.55f, 0.6f, 1.0f}, "level_switches"});  // where the level changes
+  for (double sw : switches) p.markers.push_back({sw, kSwitchColour, "level_switches"});  // where the level changes
   p.markers.push_back({current, kAmber, "current", "", false, 2.0f});
   return plot::draw(f, p, area);
 }
@@ -267,7 +270,16 @@ inline void Views::buildPlot(ts::Frame& f, const Result* m) const {
   }
   L::Column notes(f, {4, float(h - 3 * line), float(w - 4), float(h - line - 1)});
   notes.add("the probe's mean R, G, B against x = log2 distance = LOD - bias (" + fmt("%g", look_.lodBias) + ")", kGrey, sc);
-  notes.add("dashed: GL's rule changes level;  amber: the current distance", kGrey, sc);
+  // The key of the curves and lines, centred on its line.
+  const std::vector<ts::LegendEntry> key = {{kMeanColours[0], "mean R"},
+                                            {kMeanColours[1], "mean G"},
+                                            {kMeanColours[2], "mean B"},
+                                            {kAmber, "the current distance"},
+                                            {kSwitchColour, "dashed: GL's rule changes level"}};
+  float keyW = 0;
+  for (const auto& e : key) keyW += ts::text::height(sc) + 4.0f * float(sc) + ts::text::width(e.meaning, sc) + 8.0f * float(sc);
+  const float keyX = std::max(4.0f, (float(w) - keyW) / 2);
+  L::legend(f, {keyX, notes.y(), float(w - 4), float(h - line - 1)}, key, sc);
   // The level colours the probe sees, as a key (its lead shortened when narrow).
   std::string lead = "the probe's texture, level by level:";
   const float step = 34.0f * float(sc);  // a level's box
@@ -364,8 +376,8 @@ inline void Views::buildSlant(ts::Frame& f, const Result* m) const {
   }
   const L::Text note1 = "error: RMS (R,G,B, 8-bit) against the reference in the far field, LOD " + farLods("..") +
                         " (between the white lines)";
-  const L::Text note2 = "measured at " + L::given("the measured render's width", mipmap::kSlantW, "%d") + "x" +
-                        L::given("the measured render's height", mipmap::kSlantH, "%d");
+  const L::Text note2 = "measured at " + L::given("the measured render's width", mipmap::kSlantW, "%.0f") + "x" +
+                        L::given("the measured render's height", mipmap::kSlantH, "%.0f");
   L::Column notes(f, {4, float(std::min(h - 2 * line, line / 2 + kRows * (ph + 2 * line + gap))), float(w - 4), float(h)});
   notes.add(note1, kGrey, sc);
   notes.add(note2, kGrey, sc);

@@ -105,9 +105,11 @@ struct Views {
 
   // Said in the picture whenever M1/M2 are not given the true gradients.
   std::string gradientsNote() const { return gradients_ ? ", M1/M2 gradients x4" : ""; }
-  std::string header(const std::string& renderer) const {
+  // The state, not the renderer: its version string belongs to the report, and
+  // a figure's title should read the same on every Mesa.
+  std::string header() const {
     return std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", cam_.elevationDeg) +
-           " deg, height " + fmtNum("%.2f", heightScale_) + gradientsNote() + (renderer.empty() ? "" : ", " + renderer);
+           " deg, height " + fmtNum("%.2f", heightScale_) + gradientsNote();
   }
   static std::string numbers(const Table& table, int mode) {
     if (mode == kReference) return std::to_string(table.refRays) + "x" + std::to_string(table.refRays) + " rays, CPU";
@@ -176,7 +178,7 @@ struct Views {
 inline void Views::buildWaiting(ts::Frame& f) const {
   namespace L = ts::layout;
   const int s = L::scaleFor({0, 0, f.width, f.height}, 2);
-  L::caption(f, {16, 6, float(f.width - 4), 6 + 2 * L::lineHeight(s)}, header(""), kWhite, s, ts::Align::Left);
+  L::caption(f, {16, 6, float(f.width - 4), 6 + 2 * L::lineHeight(s)}, header(), kWhite, s, ts::Align::Left);
   L::caption(f, {4, float(f.height) / 2, float(f.width - 4), float(f.height - 2)},
              "rendering the modes and tracing the reference...", kAmber, s);
 }
@@ -199,16 +201,10 @@ inline void Views::buildSingle(ts::Frame& f, const Shown& shown) const {
   });
   const ts::Rect rect = pictureAt(s);
   const float line = L::lineHeight(s);
-  // The header on one line if it fits at the scale, else the state and the renderer on two.
-  if (ts::text::width(header(table.renderer), s) <= float(f.width - 21)) {
-    L::caption(f, {16, 6, float(f.width - 4), 2 * line - 2}, header(table.renderer), kWhite, s, ts::Align::Left);
-  } else {
-    int hs = s;  // both lines at one scale, the state's
-    while (hs > 1 && ts::text::width(header(""), hs) > float(f.width - 21)) --hs;
-    L::Column head(f, {16, 2, float(f.width - 4), 2 * line - 2});
-    head.add(header(""), kWhite, hs, ts::Align::Left);
-    head.add(table.renderer, kGrey, hs, ts::Align::Left);
-  }
+  // The header on one line, smaller where the window is narrow.
+  int hs = s;
+  while (hs > 1 && ts::text::width(header(), hs) > float(f.width - 21)) --hs;
+  L::caption(f, {16, 6, float(f.width - 4), 2 * line - 2}, header(), kWhite, hs, ts::Align::Left);
   const L::Box under{4, float(rect.y + rect.h + 6), float(f.width - 4), float(f.height - 2)};
   if (!compare_) {
     addImage(f, "image", rect, shown.of(mode_));
@@ -233,7 +229,7 @@ inline void Views::buildModes(ts::Frame& f, const Shown& shown) const {
   // each picture two lines of numbers, at the text's scale.
   const Grid g = grid(f, table, 8, 2, 6);
   const int gap = g.gap, s = g.s, line = g.line, cols = g.cols, w = g.w, h = g.h, left = g.left;
-  L::caption(f, {4, 4, float(f.width - 4), float(2 * line - 2)}, header(table.renderer), kWhite, s);
+  L::caption(f, {4, 4, float(f.width - 4), float(2 * line - 2)}, header(), kWhite, s);
   auto column = [&](int x, float y0, float y1) { return g.column(x, y0, y1); };
   const int order[7] = {kNaive, kTrilinear, kAniso16, kReference, kEwa, kEwaVis, kEwaRows};
   for (int k = 0; k < 7; ++k) {
@@ -270,7 +266,7 @@ inline void Views::buildError(ts::Frame& f, const Shown& shown) const {
   // Four in a row, or 2 x 2 in a tall window; two lines under each.
   const Grid g = grid(f, table, 4, 2, 0);
   const int gap = g.gap, s = g.s, line = g.line, cols = g.cols, w = g.w, h = g.h, left = g.left;
-  L::caption(f, {4, 4, float(f.width - 4), float(2 * line - 2)}, header(table.renderer), kWhite, s);
+  L::caption(f, {4, 4, float(f.width - 4), float(2 * line - 2)}, header(), kWhite, s);
   auto column = [&](int x, float y0, float y1) { return g.column(x, y0, y1); };
   const char* titles[4] = {"occlusion band", "M2 aniso 16x |error|", "M3 EWA |error|", "M4 EWA visible |error|"};
   const int modes[4] = {-1, kAniso16, kEwa, kEwaVis};

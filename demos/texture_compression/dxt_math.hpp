@@ -49,4 +49,39 @@ inline glm::dvec2 normalAngles(const ts::Image& a, const ts::Image& b) {
     }
   return {sum / (double(a.width) * a.height), most};
 }
+// Where the error is: the mean angle over blocks whose own normals all lie
+// within 15 degrees of each other (flat but for the bricks' grain: one colour
+// line serves them), and over
+// the rest (a brick's edge turns the normal inside the block).
+struct AnglesByBlock {
+  double flat = 0, edge = 0;
+  int flatBlocks = 0, edgeBlocks = 0;
+};
+inline double blockMaxAngle(const ts::Image& a, const ts::Image& b, int bx, int by) {
+  double most = 0;
+  for (int y = by * 4; y < std::min(by * 4 + 4, a.height); ++y)
+    for (int x = bx * 4; x < std::min(bx * 4 + 4, a.width); ++x)
+      most = std::max(most, glm::degrees(std::acos(std::clamp(glm::dot(normalOf(a.at(x, y)), normalOf(b.at(x, y))), -1.0, 1.0))));
+  return most;
+}
+inline AnglesByBlock normalAnglesByBlock(const ts::Image& a, const ts::Image& b) {
+  AnglesByBlock r;
+  double flatSum = 0, edgeSum = 0;
+  for (int by = 0; by * 4 < a.height; ++by)
+    for (int bx = 0; bx * 4 < a.width; ++bx) {
+      const glm::dvec3 first = normalOf(a.at(bx * 4, by * 4));
+      double spread = 0, sum = 0;
+      int n = 0;
+      for (int y = by * 4; y < std::min(by * 4 + 4, a.height); ++y)
+        for (int x = bx * 4; x < std::min(bx * 4 + 4, a.width); ++x, ++n) {
+          spread = std::max(spread, glm::degrees(std::acos(std::clamp(glm::dot(first, normalOf(a.at(x, y))), -1.0, 1.0))));
+          sum += glm::degrees(std::acos(std::clamp(glm::dot(normalOf(a.at(x, y)), normalOf(b.at(x, y))), -1.0, 1.0)));
+        }
+      if (spread <= 15.0) flatSum += sum / n, ++r.flatBlocks;
+      else edgeSum += sum / n, ++r.edgeBlocks;
+    }
+  r.flat = r.flatBlocks ? flatSum / r.flatBlocks : 0;
+  r.edge = r.edgeBlocks ? edgeSum / r.edgeBlocks : 0;
+  return r;
+}
 }  // namespace dxt

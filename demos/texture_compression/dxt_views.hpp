@@ -45,16 +45,16 @@ inline int imageTexture(ts::Frame& f, const Result& m, Show show, Crop crop, con
 }
 
 // Picture | DXT1 | error x 8 | block (bx, by) and the 32 x 32 texels around it.
-inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const L::Text& numbers) {
+inline void buildBlocks(ts::Frame& f, const Result& m, const ts::Measurements& ms, int bx, int by, const L::Text& numbers) {
   const L::Box area{8, 8, float(f.width - 8), float(f.height - 8)};
-  const std::vector<L::Cell> cells = L::flow(area, {4, 1.0f, 1, 2, 10, 2, 150});
+  const std::vector<L::Cell> cells = L::flow(area, {4, 1.0f, 1, 4, 10, 2, 150});  // four lines under: the palette's rule, a normal map's angles
   const char* mode = m.threeColour ? "DXT1, every block in the 3-colour mode" : "DXT1, 4 bits per texel";
   const L::Text titles[4] = {
-      std::string(kPictureNames[m.picture]) + ", " + L::given("the picture's width", m.original.width, "%d") + " x " +
-          L::given("the picture's height", m.original.height, "%d") + ", " + L::given("bits a texel", 24, "%d") + " bits per texel",
+      std::string(kPictureNames[m.picture]) + ", " + L::given("the picture's width", m.original.width, "%.0f") + " x " +
+          L::given("the picture's height", m.original.height, "%.0f") + ", " + L::given("bits a texel", 24, "%.0f") + " bits per texel",
       std::string(mode) + (m.glDecode ? " (GL's decode)" : " (CPU decode: no S3TC here)"),
-      "|error| x " + L::given("the error's magnification", 8, "%d"),
-      "block (" + L::given("the block's column", bx, "%d") + ", " + L::given("the block's row", by, "%d") + ") and its palette"};
+      "|error| x " + L::given("the error's magnification", 8, "%.0f"),
+      "block (" + L::given("the block's column", bx, "%.0f") + ", " + L::given("the block's row", by, "%.0f") + ") and its palette"};
   const ts::Image* shown[3] = {&m.original, &m.decoded, &m.error};
   const Show what[3] = {Show::Original, m.glDecode ? Show::DecodedGl : Show::DecodedCpu, Show::Error};
   for (int k = 0; k < 3; ++k)
@@ -69,7 +69,7 @@ inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const L::
     for (int x = 0; x < zw; ++x) zoom.set(x, y, m.decoded.at(x0 + x, y0 + y));
   ts::Rect zr = cells[3].picture;
   const int sw = zr.h / 6, keyH = int(L::lineHeight(1)) + 2;  // the palette's strip, the outline's key
-  zr.h -= sw + 4 + keyH;
+  zr.h = std::max(1, zr.h - (sw + 4 + keyH));  // a narrow window leaves the block a speck, never a negative viewport
   zr.w = zr.h, zr.x = cells[3].picture.x + (cells[3].picture.w - zr.w) / 2;
   ts::Panel z = L::texturePanel("block_zoom", zr, imageTexture(f, m, what[1], {x0, y0, zw, zh}, zoom, "the block magnified", nullptr, GL_NEAREST));
   const float ux = float(bx * 4 - x0) / float(zw), uy = 1.0f - float(by * 4 - y0) / float(zh);
@@ -90,10 +90,22 @@ inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const L::
   sp.batches.push_back(quads);
   f.panels.push_back(sp);
   for (int k = 0; k < 4; ++k) L::caption(f, cells[size_t(k)].above, titles[k], L::kWhite, cells[size_t(k)].scale);
-  char pals[160];
-  std::snprintf(pals, sizeof pals, "c0 0x%04X %s c1 0x%04X: %s", b.c0, b.c0 > b.c1 ? ">" : "<=", b.c1,
-                b.c0 > b.c1 ? "c2 = (2c0+c1)/3, c3 = (c0+2c1)/3" : "c2 = (c0+c1)/2, c3 = black");
-  L::caption(f, cells[3].below, pals, L::kWhite, cells[3].scale);
+  // The end points, then the rule they select, each formula whole on its line.
+  char ends[80];
+  std::snprintf(ends, sizeof ends, "c0 0x%04X %s c1 0x%04X:", b.c0, b.c0 > b.c1 ? ">" : "<=", b.c1);
+  L::Column palette(f, cells[3].below);
+  palette.add(ends, L::kWhite, cells[3].scale);
+  if (b.c0 > b.c1) {
+    palette.add("c2 = (2c0+c1)/3", L::kWhite, cells[3].scale);
+    palette.add("c3 = (c0+2c1)/3", L::kWhite, cells[3].scale);
+  } else {
+    palette.add("c2 = (c0+c1)/2, c3 = black", L::kWhite, cells[3].scale);
+  }
+  // A normal map's block: how far its normals turn, where the reader looks.
+  for (const ts::Measurement& x : ms)
+    if (x.name == "normal_error_deg[shown_block]")
+      palette.add(L::measuredText(ms, "its normals turn by up to {normal_error_deg[shown_block]|%.1f} deg"), L::kAmber,
+                  cells[3].scale);
   // The outline's colour is the block's: named under the picture it marks.
   L::legend(f, {float(zr.x), float(zr.y + zr.h + 4 + sw + 2), float(cells[3].picture.x + cells[3].picture.w), cells[3].below.y0},
             {{L::kAmber, "the block"}}, 1);
@@ -113,9 +125,9 @@ inline void buildEqualMemory(ts::Frame& f, const Result& m, const ts::Measuremen
   const ts::Image* shown[3] = {&m.original, &m.decoded, &m.rgb565};
   const Show what[3] = {Show::Original, m.glDecode ? Show::DecodedGl : Show::DecodedCpu, Show::Rgb565};
   const std::string size = m.fromFile ? "file" : "512";
-  const L::Text dims = L::given("the picture's width", m.original.width, "%d") + " x " +
-                       L::given("the picture's height", m.original.height, "%d");
-  const L::Text titles[3] = {m.name + ", " + dims + " at " + L::given("bits a texel", 24, "%d") + " bits",
+  const L::Text dims = L::given("the picture's width", m.original.width, "%.0f") + " x " +
+                       L::given("the picture's height", m.original.height, "%.0f");
+  const L::Text titles[3] = {m.name + ", " + dims + " at " + L::given("bits a texel", 24, "%.0f") + " bits",
                              "DXT1 at " + dims + L::measuredText(ms, ": RMS {rms_equal_memory[dxt1_" + size + "]|%.2f}"),
                              L::measuredText(ms, "RGB565 at half the size, magnified: RMS {rms_equal_memory[rgb565_" +
                                                      std::string(m.fromFile ? "half" : "256") + "]|%.2f}")};

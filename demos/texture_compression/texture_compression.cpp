@@ -90,9 +90,10 @@ class TextureCompression final : public ts::Scene {
         {"dxt1_normal_map", "Seed 001 (texture compression)",
          "A normal map compressed to DXT1: the blocks' two-colour lines cannot follow the normals' directions, the "
          "error concentrates at the bricks' edges.",
-         {"--view", "blocks", "--picture", "normals", "--block-x", "31", "--block-y", "15"}, 1280, 440,
+         {"--view", "blocks", "--picture", "normals", "--block-x", "30", "--block-y", "14"}, 1280, 440,
          "\"Bad for normal maps\": after DXT1 the normals are off by {normal_error_deg[mean]} degrees on average, "
-         "{normal_error_deg[max]} at most (PSNR {psnr[normals]} dB)."},
+         "{normal_error_deg[max]} at most (PSNR {psnr[normals]} dB): {normal_error_deg[edge_blocks]} in blocks on the "
+         "bricks' edges against {normal_error_deg[flat_blocks]} in flat ones."},
         {"dxt1_equal_memory", "Seed 001 (texture compression)",
          "The same memory two ways, magnified: 64 x 64 texels of the picture at 512 x 512, of DXT1 at 512 x 512 (4 bits a "
          "texel), and of RGB565 at 256 x 256 (16 bits a texel) magnified back.",
@@ -119,7 +120,7 @@ class TextureCompression final : public ts::Scene {
     }
     const ts::layout::Text numbers = summary(measured);
     const int bx = std::min(bx_, blocksAcross(m->original.width) - 1), by = std::min(by_, blocksAcross(m->original.height) - 1);
-    if (view_ == 0) views::buildBlocks(f, *m, bx, by, numbers);
+    if (view_ == 0) views::buildBlocks(f, *m, measured, bx, by, numbers);
     else if (view_ == 1) views::buildEqualMemory(f, *m, measured, bx, by, numbers);
     else views::buildMemory(f, *m, memoryNotes(measured, *m));
     return f;
@@ -134,7 +135,12 @@ class TextureCompression final : public ts::Scene {
     return ts::layout::measuredText(ms, "{dxt1_bytes[" + size + "]|%.0f} bytes ({bits_per_texel|%.0f} bits a texel, "
                                         "{ratio_vs_rgb565|%.0f}:1 against RGB565, {ratio_vs_rgb888|%.0f}:1 against RGB888); "
                                         "PSNR {psnr[" + shown + "]|%.1f} dB; at most {dxt1_max_colours_per_block|%.0f} colours "
-                                        "a block; GL vs CPU decode: {gl_vs_cpu_max_diff|%.0f} levels at most");
+                                        "a block; GL's and the CPU's decodes differ by {gl_vs_cpu_max_diff|%.0f} at most" +
+                                        (picture_ == kNormals && !file_.active()
+                                             ? "; the normals turn by {normal_error_deg[mean]|%.1f} deg on average, "
+                                               "{normal_error_deg[max]|%.0f} at most: {normal_error_deg[edge_blocks]|%.1f} "
+                                               "in blocks on the bricks' edges, {normal_error_deg[flat_blocks]|%.1f} in flat ones"
+                                             : ""));
   }
 
   // The memory view's notes: the clipmap against the whole chain, and DXT1's bytes against RGB565's.
@@ -176,6 +182,14 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
       const glm::dvec2 a = normalAngles(img, cpu);
       ms.push_back({"normal_error_deg[mean]", a.x, "mean angle between the normals before and after DXT1, degrees"});
       ms.push_back({"normal_error_deg[max]", a.y, "largest angle, degrees"});
+      const AnglesByBlock where = normalAnglesByBlock(img, cpu);
+      ms.push_back({"normal_error_deg[edge_blocks]", where.edge,
+                    "mean angle in blocks whose normals turn by more than 15 degrees (a brick's edge), degrees"});
+      ms.push_back({"normal_error_deg[flat_blocks]", where.flat, "mean angle in blocks whose normals lie within 15 degrees (the bricks' grain), degrees"});
+      if (p == picture_) {
+        const int bx = std::min(bx_, blocksAcross(img.width) - 1), by = std::min(by_, blocksAcross(img.height) - 1);
+        ms.push_back({"normal_error_deg[shown_block]", blockMaxAngle(img, cpu, bx, by), "largest angle in the block shown, degrees"});
+      }
     }
     if (p != picture_) continue;
     GlResult g;

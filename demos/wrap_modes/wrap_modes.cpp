@@ -176,9 +176,16 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
   const Found* found = measured.detailAs<Found>();
   const L::Box area{6, 6, float(width) - 6, float(height) - 6};
   if (view_ == 0) {  // the book figure: columns = modes, rows = filters
+    // The key of the outlines and the border colour on the bottom line.
+    const float keyH = L::lineHeight(1) + 4;
     L::FlowSpec spec;
     spec.n = 10, spec.linesAbove = 1, spec.linesBelow = 1, spec.gap = 8;
-    std::vector<L::Cell> cells = L::flow(area, spec);
+    std::vector<L::Cell> cells = L::flow({area.x0, area.y0, area.x1, area.y1 - keyH}, spec);
+    L::legend(f, {area.x0 + 4, area.y1 - keyH + 4, area.x1, area.y1},
+              {{wrap::views::kSquare, "the unit square, s and t in [0,1]"},
+               {wrap::views::kGrid, "integer s and t"},
+               {kBorderColour, "the border colour (GL_TEXTURE_BORDER_COLOR)"}},
+              1);
     for (int k = 0; k < 10; ++k) {
       const int m = k % 5;
       const bool linear = k >= 5;
