@@ -189,9 +189,9 @@ void Projectors::pairView(ts::Frame& f, int w, int h, const ts::Measurements& me
   int tex = f.addTexture(picture());
   // Side by side, or one above the other in a tall window; a caption band above each.
   const bool tall = h > w * 5 / 4;
-  // A band under each picture: box | planar print their measured stretch there (the claim's
-  // numbers, under what they measure).
-  const bool under = view_ == kBox;
+  // A band under each picture: box | planar print their measured stretch there, the slide
+  // its back-projection pixels (the claim's numbers, under what they measure).
+  const bool under = view_ == kBox || view_ == kSlide;
   auto layoutAt = [&](int band, ts::Rect* l, ts::Rect* r) {
     // The slide's stage has a key under the pictures: the projector's outline.
     const int keyH = view_ == kSlide ? int(Lk::lineHeight(1)) + 4 : 0;
@@ -251,7 +251,18 @@ void Projectors::pairView(ts::Frame& f, int w, int h, const ts::Measurements& me
     f.panels.push_back(views::slidePanel(R, st, !clip_));
     a = "no fix: the back projection (q < 0)", b = "clip plane q >= 0";
     if (clip_) std::swap(a, b);
-    const float y = float(R.y + R.h + 4);
+    // The back projection the render shows, counted in the measurement's render of each stage.
+    const Lk::Text px = " of " + Lk::given("the check's render, px across", kSlidePx, "%g") + "x" +
+                        Lk::given("the check's render, px down", kSlidePx, "%g") + " px";
+    const Lk::Text back[2] = {"q < 0 shown: " + Lk::measured(measured, "slide_back_pixels_nofix", "%.0f") + px,
+                              "q < 0 shown: " + Lk::measured(measured, "slide_back_pixels_clip", "%.0f") + px};
+    const ts::Rect* pics[2] = {&L, &R};
+    for (int k = 0; k < 2; ++k) {
+      const ts::Rect& p = *pics[k];
+      const float y = float(p.y + p.h + 2), x0 = tall ? 8.0f : float(k * w / 2 + 8), x1 = tall ? float(w - 8) : x0 + float(w / 2 - 16);
+      Lk::caption(f, {x0, y, x1, y + Lk::lineHeight(underScale)}, back[clip_ ? 1 - k : k], Lk::kAmber, underScale);
+    }
+    const float y = float(R.y + R.h) + Lk::lineHeight(underScale) + 6;
     ts::layout::legend(f, {float(std::min(L.x, R.x)), y, float(w) - 8, y + ts::layout::lineHeight(1)},
                        {{views::kProjectorOutline, "the projector: its frustum's edges"}}, 1);
   } else {
