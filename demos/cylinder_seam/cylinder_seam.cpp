@@ -110,7 +110,7 @@ class CylinderSeam final : public ts::Scene {
          "The patch x, y, z, w across the seam (theta = -36 deg at x, w; +36 deg at y, z). Left: the intended region "
          "0.9..1.1 (green, wrapping) and the region 0.1..0.9 that s = 0.9 and 0.1 select (red). Middle: s reduced "
          "to [0,1) shows 0.8 of the texture backwards. Right: s = 0.9 -> 1.1 with GL_REPEAT.",
-         {"--view", "compare", "--slices", "5", "--seam", "front"}, 1280, 520,
+         {"--view", "compare", "--slices", "5", "--seam", "front"}, 1280, 456,
          "s = 0.9 and 0.1 make the seam patch show {seam_patch_span_s[wrong]} of the texture backwards; s = 0.9 -> "
          "1.1 with GL_REPEAT shows the {seam_patch_span_s[right]} intended."},
     };
@@ -241,9 +241,11 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
     keyW += ts::text::height(keyScale) + 4.0f * float(keyScale) + ts::text::width(e.meaning, keyScale) + 8.0f * float(keyScale);
   const float keyH = key.empty() ? 0.0f : L::lineHeight(keyScale) * std::ceil(keyW / all.w());
   std::vector<L::Cell> cells = L::flow({all.x0, all.y0, all.x1, all.y1 - keyH}, spec);
-  if (!key.empty()) {
+  if (!key.empty()) {  // right under the captions (the flow centres the cells in its area)
+    float y = 0;
+    for (const L::Cell& c : cells) y = std::max(y, c.below.y1);
     const float x0 = std::max(all.x0, (float(width) - keyW) / 2);
-    L::legend(f, {x0, all.y1 - keyH, all.x1, all.y1}, key, keyScale);
+    L::legend(f, {x0, y, all.x1, y + keyH}, key, keyScale);
   }
   const L::Cell& tc = cells[0];
   const int scale = tc.scale, names = int(L::lineHeight(scale));  // room for x, y, z, w above and below the square
