@@ -175,6 +175,11 @@ bool screenTriangle(const ts::Panel& p, const ts::Batch& b, size_t first, int fr
   const WindowTransform window(p, frameHeight);
   std::vector<ClipVertex> tri(3);
   double userDistance[3] = {0, 0, 0};
+  // glClipPlane: GL stores plane · M⁻¹ (M the modelview it was given under)
+  // and evaluates it at the vertex in eye coordinates.
+  const glm::dvec4 clipEye =
+      b.clip ? glm::dvec4(b.clipPlane) * glm::inverse(glm::dmat4(b.clipModelview)) : glm::dvec4(0.0);
+  const glm::dmat4 toEye(p.modelview);
   for (size_t k = 0; k < 3; ++k) {
     const ts::Vertex& vx = b.vertices[first + k];
     tri[k].clip = mvp * glm::dvec4(glm::dvec3(vx.pos), 1.0);
@@ -182,14 +187,14 @@ bool screenTriangle(const ts::Panel& p, const ts::Batch& b, size_t first, int fr
     // texture matrix acts on (s,t,r,q) per vertex, before clipping and
     // interpolation, as GL's vertex stage does.
     const glm::dvec4 st = glm::dmat4(b.textureMatrix) * texGenCoords(p, b, vx);
-    if (b.clip) userDistance[k] = glm::dot(glm::dvec4(b.clipPlane), glm::dvec4(glm::dvec3(vx.pos), 1.0));
+    if (b.clip) userDistance[k] = glm::dot(clipEye, toEye * glm::dvec4(glm::dvec3(vx.pos), 1.0));
     // Unit 1 (issue 29): its own coordinates or unit 0's as sent, times its texture matrix.
     const glm::dvec4 u1 = glm::dmat4(b.textureMatrix1) * glm::dvec4(b.coords1 ? vx.tex1 : vx.tex);
     tri[k].attr = {st.x, st.y, st.z, st.w, vx.color.r, vx.color.g, vx.color.b, vx.color.a,
                    vx.secondary.r, vx.secondary.g, vx.secondary.b, u1.x, u1.y, u1.w};
   }
   if (b.clip) {
-    // glClipPlane: keep plane · (x, y, z, 1) >= 0.  The distance is linear
+    // Keep the distance >= 0.  The distance is linear
     // along an edge, so the cut lies where clip space interpolates to 0.
     std::vector<ClipVertex> kept;
     for (size_t i = 0; i < 3; ++i) {

@@ -468,6 +468,9 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
       if (const Json* cp = find(bv, "clip_plane")) {
         b.clip = true;
         b.clipPlane = vec<4>(*cp, bw + ".clip_plane");
+        const Json* cm = find(bv, "clip_plane_modelview");
+        if (!cm) fail(bw, "clip_plane needs clip_plane_modelview (the modelview it was given under)");
+        b.clipModelview = mat(*cm, bw + ".clip_plane_modelview");
       }
       // Issue 29 (absent = off / FixedState's): the alpha test, the blend's colour factors.
       if (const Json* at = find(bv, "alpha_test")) {

@@ -167,10 +167,15 @@ struct Batch {
   // GL_COLOR_SUM: add each vertex's secondary colour after texturing.
   bool colorSum = false;
   TexGen texGen;  // glTexGen (off by default)
-  // glClipPlane(GL_CLIP_PLANE0) in object coordinates (given with the
-  // panel's modelview): keeps the points where plane · (x, y, z, 1) >= 0.
+  // glClipPlane(GL_CLIP_PLANE0): keeps the points where the plane, given
+  // while `clipModelview` is the modelview (GL stores plane · M⁻¹, as for
+  // EYE_LINEAR planes), is >= 0 at the vertex in eye coordinates.  render.cpp
+  // loads clipModelview to give the plane, as it does planeModelview for
+  // tex_gen; set to the panel's modelview the plane is in object
+  // coordinates.  The sidecar records both, so a reader recomputes the cut.
   bool clip = false;
   glm::vec4 clipPlane{0.0f};
+  glm::mat4 clipModelview{1.0f};
   // --- the alpha test and blend factors (issue 29, multitexturing) ---
   // glEnable(GL_ALPHA_TEST); glAlphaFunc(alphaFunc, alphaRef): a fragment
   // whose alpha (after texturing) fails the comparison is discarded, so it

@@ -257,7 +257,7 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
         if (b.texGen.mode == GL_EYE_LINEAR) tg["plane_modelview"] = mat(b.texGen.planeModelview);
         bj["tex_gen"] = tg;
       }
-      if (b.clip) bj["clip_plane"] = vec(b.clipPlane);
+      if (b.clip) bj["clip_plane"] = vec(b.clipPlane), bj["clip_plane_modelview"] = mat(b.clipModelview);
       // Issue 29, written only when set: the alpha test, the blend's colour factors.
       if (b.alphaTest()) bj["alpha_test"] = {{"func", glEnumName(b.alphaFunc)}, {"ref", num(b.alphaRef)}};
       if (b.blendFactors()) bj["blend_func"] = {glEnumName(b.blendSrc), glEnumName(b.blendDst)};

@@ -400,8 +400,12 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         if (eye) glLoadMatrixf(glm::value_ptr(p.modelview));
       }
       if (b.clip) {
+        // Given under the batch's clipModelview (GL keeps plane · M⁻¹), as the
+        // sidecar records it, then the panel's modelview back.
         const double plane[4] = {b.clipPlane.x, b.clipPlane.y, b.clipPlane.z, b.clipPlane.w};
+        glLoadMatrixf(glm::value_ptr(b.clipModelview));
         glClipPlane(GL_CLIP_PLANE0, plane);
+        glLoadMatrixf(glm::value_ptr(p.modelview));
         glEnable(GL_CLIP_PLANE0);
       }
       GLuint prog = 0;

@@ -110,7 +110,7 @@ class CylinderSeam final : public ts::Scene {
          "The patch x, y, z, w across the seam (theta = -36 deg at x, w; +36 deg at y, z). Left: the intended region "
          "0.9..1.1 (green, wrapping) and the region 0.1..0.9 that s = 0.9 and 0.1 select (red). Middle: s reduced "
          "to [0,1) shows 0.8 of the texture backwards. Right: s = 0.9 -> 1.1 with GL_REPEAT.",
-         {"--view", "compare", "--slices", "5", "--seam", "front"}, 1280, 520,
+         {"--view", "compare", "--slices", "5", "--seam", "front"}, 1280, 456,
          "s = 0.9 and 0.1 make the seam patch show {seam_patch_span_s[wrong]} of the texture backwards; s = 0.9 -> "
          "1.1 with GL_REPEAT shows the {seam_patch_span_s[right]} intended."},
     };
@@ -152,6 +152,8 @@ class CylinderSeam final : public ts::Scene {
   ts::UserTexture picture_;  // --texture FILE
   ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   bool patch_ = true;
+  // The coordinates whose region the texture view marks.
+  Coords textureCoords() const { return view_ == 1 && seam_ != kMine ? Coords::Wrong : Coords(coords_); }
 };
 
 void CylinderSeam::addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int scale, const Detail* d) const {
@@ -160,8 +162,7 @@ void CylinderSeam::addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int
   // coordinates select (cylinder_views.hpp).  The compare view shows the
   // wrong way here (the right one is the green region itself).
   if (patch_ && (seam_ != kMine || (d && d->mine.ok())))
-    cylinder::views::markSeamPatch(f, p, params(Coords::Right, d),
-                                   params(view_ == 1 && seam_ != kMine ? Coords::Wrong : Coords(coords_), d), scale);
+    cylinder::views::markSeamPatch(f, p, params(Coords::Right, d), params(textureCoords(), d), scale);
   f.panels.push_back(p);
 }
 
@@ -224,7 +225,28 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
   spec.linesAbove = 1;
   spec.linesBelow = 1;
   spec.gap = 12;
-  std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
+  // The key of the seam patch's colours, under the pictures when they are
+  // drawn: the flow's text scale, then the flow again over the rest.
+  const bool marked = patch_ && (seam_ != kMine || (d && d->mine.ok()));
+  std::vector<ts::LegendEntry> key;
+  if (marked) {
+    key.push_back({cylinder::views::kIntended, "intended region of the seam patch"});
+    if (textureCoords() == Coords::Wrong) key.push_back({cylinder::views::kActual, "region its s values select"});
+    key.push_back({kPatch, "seam patch x y z w, the way s runs"});
+  }
+  const L::Box all{6, 6, float(width) - 6, float(height) - 6};
+  const int keyScale = L::flow(all, spec)[0].scale;
+  float keyW = 0;
+  for (const ts::LegendEntry& e : key)
+    keyW += ts::text::height(keyScale) + 4.0f * float(keyScale) + ts::text::width(e.meaning, keyScale) + 8.0f * float(keyScale);
+  const float keyH = key.empty() ? 0.0f : L::lineHeight(keyScale) * std::ceil(keyW / all.w());
+  std::vector<L::Cell> cells = L::flow({all.x0, all.y0, all.x1, all.y1 - keyH}, spec);
+  if (!key.empty()) {  // right under the captions (the flow centres the cells in its area)
+    float y = 0;
+    for (const L::Cell& c : cells) y = std::max(y, c.below.y1);
+    const float x0 = std::max(all.x0, (float(width) - keyW) / 2);
+    L::legend(f, {x0, y, all.x1, y + keyH}, key, keyScale);
+  }
   const L::Cell& tc = cells[0];
   const int scale = tc.scale, names = int(L::lineHeight(scale));  // room for x, y, z, w above and below the square
   const int side = std::max(1, std::min(tc.picture.w, tc.picture.h - 2 * names));
@@ -246,8 +268,10 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
                kWhite, cell.scale);
     if (d && d->spans.count(int(shown[c]))) {
       double span = d->spans.at(int(shown[c]));
+      const std::string n = std::string("[") + kCoordNames[int(shown[c])] + "]";
       L::caption(f, cell.below,
-                 "seam patch: " + fmt("%.2f", std::abs(span)) + " of s, " + (span < 0 ? "reversed" : "forwards"),
+                 "seam patch: " + L::measured(measured, "seam_patch_span_s" + n, "%.2f") + " of s, " +
+                     (span < 0 ? "reversed" : "forwards"),
                  kMeasured, cell.scale);
     }
   }

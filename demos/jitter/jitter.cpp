@@ -132,7 +132,12 @@ class Jitter final : public ts::Scene {
   void ensure(ts::Renderer& r, int kind, int side);
   Result& result(int kind, int side) { return kind == 3 ? found_.random[size_t(side - 1)] : found_.at(kind, side); }
   // The drawing (jitter_views.hpp) for the current flags.
-  Views views() const { return {mode_, side_, seed_, showError_}; }
+  // (their numbers printed from `m`, so each label names the measurement it shows).
+  Views views(const ts::Measurements& m) const {
+    Views v{mode_, side_, seed_, showError_};
+    v.measured = &m;
+    return v;
+  }
 
   int mode_ = kJitterPixel, side_ = 3, seed_ = 1, view_ = kViewMode, average_ = kAuto;
   bool showError_ = false;
@@ -269,10 +274,10 @@ ts::Frame Jitter::build(int width, int height, const ts::Measurements& measured)
   canvas.id = "canvas";
   canvas.viewport = {0, 0, width, height};
   canvas.projection = glm::ortho(0.0f, float(width), float(height), 0.0f, -1.0f, 1.0f);
-  if (view_ == kViewCompare) views().buildCompare(f, canvas, fd);
-  else if (view_ == kViewPlot) views().buildPlot(f, fd);
-  else if (view_ == kViewZone) views().buildZone(f, canvas, fd);
-  else views().buildMode(f, canvas, fd);
+  if (view_ == kViewCompare) views(measured).buildCompare(f, canvas, fd);
+  else if (view_ == kViewPlot) views(measured).buildPlot(f, fd);
+  else if (view_ == kViewZone) views(measured).buildZone(f, canvas, fd);
+  else views(measured).buildMode(f, canvas, fd);
   f.panels.push_back(canvas);
   return f;
 }

@@ -34,6 +34,11 @@ constexpr int kMaxSide = 4;
 // (and a fourth, pure random, measured at the current n only)
 const char* const kKindKeys[4] = {"regular", "jitter_global", "jitter_pixel", "random"};
 const char* const kKindTitles[3] = {"regular", "jittered, one pattern", "jittered per pixel"};
+// The key of a mode's measurements (rms[one], aliasing[jitter_pixel], ...); the reference has none.
+inline const char* modeKey(int mode) {
+  const char* const keys[] = {"one", "regular", "jitter_global", "jitter_pixel", "reference", "random"};
+  return keys[mode];
+}
 
 using ts::layout::kWhite, ts::layout::kAmber;
 const glm::vec4 kGrey{0.6f, 0.6f, 0.65f, 1.0f};
@@ -131,6 +136,11 @@ inline ts::TextureDesc errorTexture(const Result& res) {
 struct Views {
   int mode_ = kJitterPixel, side_ = 3, seed_ = 1;
   bool showError_ = false;
+  const ts::Measurements* measured = nullptr;  // what build() was given: the numbers the labels print
+  // One measurement printed as `format` (measure() made every one a drawn result shows).
+  ts::layout::Text num(const std::string& name, const char* format = "%.4f") const {
+    return ts::layout::measured(*measured, name, format);
+  }
 
   const Result* current(const Found& fd) const;
   void addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const ts::TextureDesc& tex) const;
@@ -289,9 +299,10 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
     // The numbers: right of the pattern in a column layout, under it beside the image.
     float nx = float(sideX), ny = p.column ? float(y0) : float(y0 + box + 44 * sc);
     L::Column numbers(f, {nx, ny, float(f.width) - 4, float(f.height) - 2});
-    numbers.add("RMS error " + fmt("%.4f", res->stats.rms), kAmber, sc, ts::Align::Left);
-    numbers.add("aliasing  " + fmt("%.4f", res->stats.aliasing), kAmber, sc, ts::Align::Left);
-    numbers.add("noise     " + fmt("%.4f", res->stats.noise), kAmber, sc, ts::Align::Left);
+    const std::string k = std::string("[") + modeKey(mode_) + "]";
+    numbers.add("RMS error " + num("rms" + k), kAmber, sc, ts::Align::Left);
+    numbers.add("aliasing  " + num("aliasing" + k), kAmber, sc, ts::Align::Left);
+    numbers.add("noise     " + num("noise" + k), kAmber, sc, ts::Align::Left);
   }
 }
 
@@ -314,8 +325,13 @@ inline void Views::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd
   const int w = std::max(1, int(W * s)), h = std::max(1, int(H * s)), g = std::max(6, int(gap * s));
   const int left = std::max(0, (f.width - (cols * w + (cols - 1) * g)) / 2);
   const std::string n = std::to_string(side_) + "x" + std::to_string(side_);
-  L::caption(f, {4, 4, float(f.width) - 4, float(line + 4)},
-             "Figure VI.7  jittered supersampling: " + n + " samples per pixel, seed " + std::to_string(seed_), kWhite, 1);
+  // The key of the sample patterns' points at the title line's right end, the title centred in the rest.
+  const std::string pointsMeaning = "sample positions";
+  const float keyW = ts::text::height(1) + 4 + ts::text::width(pointsMeaning, 1);
+  L::caption(f, {4, 4, float(f.width) - 12 - keyW, float(line + 4)},
+             "Figure VI.7  jittered supersampling: " + n + " samples per pixel, seed " + L::given("seed", seed_, "%g"),
+             kWhite, 1);
+  L::legend(f, {float(f.width) - 4 - keyW, 4, float(f.width) - 4, float(line + 4)}, {{kAmber, pointsMeaning}}, 1);
   if (!fd.at(0, 1).valid || !fd.at(0, side_).valid || !fd.at(1, side_).valid || !fd.at(2, side_).valid)
     return;  // measure() makes them
   const int modes[4] = {kOne, kRegular, kJitterGlobal, kJitterPixel};
@@ -340,12 +356,13 @@ inline void Views::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd
     addImage(f, std::string("error_") + kModeNames[modes[k]], {x, yb, w, h}, res.errorTexture);
     L::caption(f, band(x, float(ya - line), float(line)), titles[k], kWhite, 1);
     L::Column numbers(f, band(x, float(ya + h + 4), float(numberLines * line + 6)));
-    numbers.add("RMS error " + fmt("%.4f", res.stats.rms), kAmber, 1);
+    const std::string key = std::string("[") + modeKey(modes[k]) + "]";
+    numbers.add("RMS error " + num("rms" + key), kAmber, 1);
     if (narrow) {
-      numbers.add("aliasing " + fmt("%.4f", res.stats.aliasing), kAmber, 1);
-      numbers.add("noise " + fmt("%.4f", res.stats.noise), kAmber, 1);
+      numbers.add("aliasing " + num("aliasing" + key), kAmber, 1);
+      numbers.add("noise " + num("noise" + key), kAmber, 1);
     } else {
-      numbers.add("aliasing " + fmt("%.4f", res.stats.aliasing) + "  noise " + fmt("%.4f", res.stats.noise), kAmber, 1);
+      numbers.add("aliasing " + num("aliasing" + key) + "  noise " + num("noise" + key), kAmber, 1);
     }
   }
   L::caption(f, {4, float(rowB - line - 2), float(f.width) - 4, float(rowB - 1)},
@@ -417,11 +434,13 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
     // lines, RMS then aliasing, when the columns are too narrow for both).
     for (p.tableScale = sc; p.tableScale >= 1; --p.tableScale) {
       const int t = p.tableScale;
-      p.nameW = std::min(ts::text::width(kKindTitles[1], t) + 12, float(f.width) / 3);
+      // (the names are keys: a swatch as tall as the text before each)
+      p.nameW = std::min(ts::text::height(t) + 4.0f * float(t) + ts::text::width(kKindTitles[1], t) + 12, float(f.width) / 3);
       p.colW = std::min(150.0f * float(t), (float(f.width) - 16 - p.nameW) / 4.0f);
       p.twoLines = p.colW < ts::text::width("0.0000 / 0.0000", t) + 8;
       // Above scale 1 only on one line a row: the plots, the figure's claim, keep the height.
-      if (t == 1 || (!p.twoLines && ts::text::width(kKindTitles[1], t) <= p.nameW - 4)) break;
+      if (t == 1 || (!p.twoLines && ts::text::height(t) + 4.0f * float(t) + ts::text::width(kKindTitles[1], t) <= p.nameW - 4))
+        break;
     }
     p.tableLine = int(L::lineHeight(p.tableScale));
     const int tableH = (p.twoLines ? 7 : 4) * p.tableLine + 8;
@@ -441,7 +460,10 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
   const float nameW = pl.nameW, colW = pl.colW;
   const bool twoLines = pl.twoLines;
   L::caption(f, {4, 6, float(f.width) - 4, float(6 + line)},
-             "Figure VI.7  error against a 256-sample reference, seed " + std::to_string(seed_), kWhite, sc);
+             "Figure VI.7  error against a " +
+                 L::given("reference samples per pixel", double(jitter::kReferenceSide * jitter::kReferenceSide), "%g") +
+                 "-sample reference, seed " + L::given("seed", seed_, "%g"),
+             kWhite, sc);
   for (const auto& row : fd.results)
     for (const Result& res : row)
       if (!res.valid) return;  // measure() makes them (view=plot)
@@ -456,7 +478,7 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
   }
   float y = float(2 * line + plotsH + 4);
   const float x0 = std::max(8.0f, (float(f.width) - nameW - 4 * colW) / 2.0f);
-  auto cell = [&](float x, float w2, const std::string& text, glm::vec4 c) {
+  auto cell = [&](float x, float w2, const L::Text& text, glm::vec4 c) {
     L::caption(f, {x, y, x + w2 - 4, y + float(pl.tableLine)}, text, c, pl.tableScale, ts::Align::Left);
   };
   cell(x0, nameW, twoLines ? "RMS, aliasing" : "RMS error / aliasing", kGrey);
@@ -465,16 +487,19 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
          kGrey);
   for (int kind = 0; kind < 3; ++kind) {
     y += float(pl.tableLine);
-    cell(x0, nameW, kKindTitles[kind], kSeriesColour[kind]);
+    // The row's name is the key of its colour in both plots: a swatch and the name.
+    L::legend(f, {x0, y, x0 + nameW, y + float(pl.tableLine)}, {{kSeriesColour[kind], kKindTitles[kind]}}, pl.tableScale);
     for (int side = 1; side <= kMaxSide; ++side) {
-      const jitter::ErrorStats& st = fd.at(kind, side).stats;
+      const std::string key = std::string("[") + kKindKeys[kind] + "_" + std::to_string(side) + "x" + std::to_string(side) + "]";
       cell(x0 + nameW + colW * float(side - 1), colW,
-           twoLines ? fmt("%.4f", st.rms) : fmt("%.4f", st.rms) + " / " + fmt("%.4f", st.aliasing), kSeriesColour[kind]);
+           twoLines ? num("rms" + key) : num("rms" + key) + " / " + num("aliasing" + key), kSeriesColour[kind]);
     }
     if (twoLines) {
       y += float(pl.tableLine);
       for (int side = 1; side <= kMaxSide; ++side)
-        cell(x0 + nameW + colW * float(side - 1), colW, fmt("%.4f", fd.at(kind, side).stats.aliasing), kSeriesColour[kind]);
+        cell(x0 + nameW + colW * float(side - 1), colW,
+             num(std::string("aliasing[") + kKindKeys[kind] + "_" + std::to_string(side) + "x" + std::to_string(side) + "]"),
+             kSeriesColour[kind]);
     }
   }
 }
@@ -487,11 +512,15 @@ inline void Views::buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   namespace plot = ts::plot;
   const int line = 17;
   L::caption(f, {4, 4, float(f.width) - 4, float(line + 4)},
-             "Figure VI.7  where aliasing sets in: a zone plate, 0.02 to 3 cycles per pixel upwards", kWhite, 1);
+             "Figure VI.7  where aliasing sets in: a zone plate, " + L::given("lowest frequency (the sweep's step)", zone::kStep, "%g") +
+                 " to " + L::given("highest frequency", zone::kMaxF, "%g") + " cycles per pixel upwards",
+             kWhite, 1);
   const zone::Plate& z = fd.zone;
   if (!z.valid) return;  // measure() makes it
   const std::string nn = std::to_string(z.n) + "x" + std::to_string(z.n);
   const std::string titles[3] = {"1 sample", nn + " regular", nn + " jittered"};
+  const std::string onsetNames[3] = {"alias_onset_gl[1x1]", "alias_onset_gl[" + nn + "]",
+                                     "alias_onset_gl[jitter_pixel_" + nn + "]"};
   const glm::vec4 colours[3] = {kSeriesColour[0], kSeriesColour[1], kSeriesColour[2]};
   // The images: as large as the height allows in whole zooms (at most 2x),
   // or scaled down (filtered) in a window too low for 1:1.
@@ -513,13 +542,14 @@ inline void Views::buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
       const float y = float(top + h) - float((onset / zone::kStep - 1) * zone::kGlBandRows * (double(h) / imgH));
       onsetLines[k] = {{float(x - 6), y}, {float(x + w + 6), y}};
       L::caption(f, {float(x - gap / 2), float(top + h + 4), float(x + w + gap / 2), float(top + h + 4 + line)},
-                 "onset " + fmt("%.2f", onset), colours[k], 1);
+                 "onset " + num(onsetNames[k], "%.2f"), colours[k], 1);
     }
   }
   // The frequency scale left of the images.
   for (double fr : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}) {
     const float y = float(top + h) - float((fr / zone::kStep) * zone::kGlBandRows * (double(h) / imgH));
-    L::caption(f, {4, y - line / 2.0f, float(left - 6), y + line / 2.0f}, fmt("%.1f", fr), kGrey, 1, ts::Align::Right);
+    L::caption(f, {4, y - line / 2.0f, float(left - 6), y + line / 2.0f}, L::given("frequency, cycles per pixel", fr, "%.1f"),
+               kGrey, 1, ts::Align::Right);
   }
   for (int k = 0; k < 3; ++k)
     if (!onsetLines[k].empty()) canvas.batches.push_back(ts::lineSegments(onsetLines[k], colours[k], 2.0f, "onset"));
@@ -544,7 +574,7 @@ inline void Views::buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
     }
     p.series.push_back(curve);
     p.legend.push_back({titles[k], colours[k]});
-    if (sw.onset > 0) p.markers.push_back({sw.onset, colours[k], "onset", fmt("%.2f", sw.onset)});
+    if (sw.onset > 0) p.markers.push_back({sw.onset, colours[k], "onset", num(onsetNames[k], "%.2f")});
   }
   p.series.push_back(plot::Series("threshold", kGrey, plot::Mark::Line, {{0, zone::kThreshold}, {zone::kMaxF, zone::kThreshold}}, 1.0f));
   const int px = left + 3 * (w + gap) + 8;

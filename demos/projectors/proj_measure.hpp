@@ -386,6 +386,7 @@ inline ts::Batch slideBatch(const Slide& sl, int texture, bool clip) {
   if (clip) {  // the fix: keep q >= 0 (the Q plane, world = object coordinates here)
     b.clip = true;
     b.clipPlane = glm::vec4(planes[3]);
+    b.clipModelview = glm::mat4(sl.camV);  // given under the camera's view, the stage panel's modelview: a world-fixed plane
   }
   return b;
 }

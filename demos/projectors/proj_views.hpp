@@ -80,6 +80,8 @@ inline ts::Panel usagePanel(const ts::Rect& vp, int tex, const Usage* u, int gri
   p.batches.push_back(runs);
   return p;
 }
+// The colour of the slide projector's frustum outline.
+inline const glm::vec4 kProjectorOutline{1.0f, 0.9f, 0.2f, 1.0f};
 // The slide projector's stage from the camera, with the projector's frustum outline.
 inline ts::Panel slidePanel(const ts::Rect& vp, int tex, bool clip) {
   const Slide sl = slideSetup();
@@ -106,7 +108,7 @@ inline ts::Panel slidePanel(const ts::Rect& vp, int tex, bool clip) {
   lines.role = "projector";
   lines.prim = ts::Prim::Lines;
   lines.lineWidth = 2.0f;
-  const glm::vec4 yellow(1.0f, 0.9f, 0.2f, 1.0f);
+  const glm::vec4& yellow = kProjectorOutline;
   for (glm::dvec2 c : {glm::dvec2(-1, -1), {1, -1}, {1, 1}, {-1, 1}}) {
     glm::dvec4 w = inv * glm::dvec4(c, 0.6, 1.0);
     glm::dvec3 q = glm::dvec3(w) / w.w;

@@ -36,6 +36,7 @@
 // the cube's faces.
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
 #include <map>
 #include <tuple>
 
@@ -124,7 +125,7 @@ class Projectors final : public ts::Scene {
   };
   void objectView(ts::Frame& f, int w, int h, const ts::Measurements& m) const;
   void gridView(ts::Frame& f, int w, int h) const;
-  void pairView(ts::Frame& f, int w, int h) const;
+  void pairView(ts::Frame& f, int w, int h, const ts::Measurements& m) const;
 
   int view_ = kObject, object_ = int(Object::Sphere), axis_ = 2, proj_ = 0, formula_ = 0, coords_ = 2, texgen_ = 0,
       pose_ = 0;
@@ -183,13 +184,29 @@ void Projectors::gridView(ts::Frame& f, int w, int h) const {
 }
 
 // box | swim | slide | cube: two or four pictures side by side.
-void Projectors::pairView(ts::Frame& f, int w, int h) const {
+void Projectors::pairView(ts::Frame& f, int w, int h, const ts::Measurements& measured) const {
+  namespace Lk = ts::layout;
   int tex = f.addTexture(picture());
   // Side by side, or one above the other in a tall window; a caption band above each.
   const bool tall = h > w * 5 / 4;
-  const int side = tall ? std::min(w - 16, (h - 90) / 2) : std::min(w / 2 - 16, h - 50);
-  ts::Rect L{w / 4 - side / 2, 36, side, side}, R{3 * w / 4 - side / 2, 36, side, side};
-  if (tall) L = {(w - side) / 2, 36, side, side}, R = {(w - side) / 2, 36 + side + 40, side, side};
+  // A band under each picture: box | planar print their measured stretch there, the slide
+  // its back-projection pixels (the claim's numbers, under what they measure).
+  const bool under = view_ == kBox || view_ == kSlide;
+  auto layoutAt = [&](int band, ts::Rect* l, ts::Rect* r) {
+    // The slide's stage has a key under the pictures: the projector's outline.
+    const int keyH = view_ == kSlide ? int(Lk::lineHeight(1)) + 4 : 0;
+    const int side = std::max(1, tall ? std::min(w - 16, (h - 90 - keyH - 2 * band) / 2)
+                                      : std::min(w / 2 - 16, h - 50 - keyH - band));
+    *l = {w / 4 - side / 2, 36, side, side}, *r = {3 * w / 4 - side / 2, 36, side, side};
+    if (tall) *l = {(w - side) / 2, 36, side, side}, *r = {(w - side) / 2, 36 + side + band + 40, side, side};
+  };
+  // The band's text at the scale the pictures ask for without it, as the titles: the numbers
+  // are the figure's point, not small print.
+  ts::Rect L, R;
+  layoutAt(0, &L, &R);
+  const int underScale = Lk::scaleFor(L, 2);
+  if (under) layoutAt(int(Lk::lineHeight(underScale)) + 4, &L, &R);
+  const int side = L.w;
   std::string a, b;
   if (view_ == kBox) {
     const Shape s = shape(Object::Sphere);
@@ -198,6 +215,19 @@ void Projectors::pairView(ts::Frame& f, int w, int h) const {
     f.panels.push_back(views::objectPanel("box", L, glslBatch(s, Projector::Box, Axis::Z, Formula::Corrected, tex), m));
     f.panels.push_back(views::objectPanel("planar_z", R, glslBatch(s, Projector::Planar, Axis::Z, Formula::Corrected, tex), m));
     a = "box mapping: stretch <= sqrt 3", b = "planar along Z: 1/cos to the rim";
+    // What the stretch measured on each comes to, against its closed form.
+    const Lk::Text sqrt3 = Lk::given("sqrt 3", std::sqrt(3.0), "%.2f"),
+                   at = Lk::given("angle from the projector's axis, deg", 80.0, "%g"),
+                   secant = Lk::given("1/cos 80 deg", 1.0 / std::cos(glm::radians(80.0)), "%.2f");
+    const Lk::Text under[2] = {
+        "worst: " + Lk::measured(measured, "box_worst_stretch", "%.2f") + " (sqrt 3 = " + sqrt3 + ")",
+        "at " + at + " deg: " + Lk::measured(measured, "planar_stretch_80", "%.2f") + " (1/cos = " + secant + ")"};
+    const ts::Rect* pics[2] = {&L, &R};
+    for (int k = 0; k < 2; ++k) {  // as wide as the picture's half of the window (its row when tall)
+      const ts::Rect& p = *pics[k];
+      const float y = float(p.y + p.h + 2), x0 = tall ? 8.0f : float(k * w / 2 + 8), x1 = tall ? float(w - 8) : x0 + float(w / 2 - 16);
+      Lk::caption(f, {x0, y, x1, y + Lk::lineHeight(underScale)}, under[k], Lk::kAmber, underScale);
+    }
   } else if (view_ == kSwim) {
     const Shape cube = shape(Object::Cube);
     const int q = side / 2 - 4;
@@ -221,6 +251,20 @@ void Projectors::pairView(ts::Frame& f, int w, int h) const {
     f.panels.push_back(views::slidePanel(R, st, !clip_));
     a = "no fix: the back projection (q < 0)", b = "clip plane q >= 0";
     if (clip_) std::swap(a, b);
+    // The back projection the render shows, counted in the measurement's render of each stage.
+    const Lk::Text px = " of " + Lk::given("the check's render, px across", kSlidePx, "%g") + "x" +
+                        Lk::given("the check's render, px down", kSlidePx, "%g") + " px";
+    const Lk::Text back[2] = {"q < 0 shown: " + Lk::measured(measured, "slide_back_pixels_nofix", "%.0f") + px,
+                              "q < 0 shown: " + Lk::measured(measured, "slide_back_pixels_clip", "%.0f") + px};
+    const ts::Rect* pics[2] = {&L, &R};
+    for (int k = 0; k < 2; ++k) {
+      const ts::Rect& p = *pics[k];
+      const float y = float(p.y + p.h + 2), x0 = tall ? 8.0f : float(k * w / 2 + 8), x1 = tall ? float(w - 8) : x0 + float(w / 2 - 16);
+      Lk::caption(f, {x0, y, x1, y + Lk::lineHeight(underScale)}, back[clip_ ? 1 - k : k], Lk::kAmber, underScale);
+    }
+    const float y = float(R.y + R.h) + Lk::lineHeight(underScale) + 6;
+    ts::layout::legend(f, {float(std::min(L.x, R.x)), y, float(w) - 8, y + ts::layout::lineHeight(1)},
+                       {{views::kProjectorOutline, "the projector: its frustum's edges"}}, 1);
   } else {
     f.panels.push_back(views::objectPanel("cube24", L, perVertexBatch(shape(Object::Cube, false), Projector::Planar,
                                                                        Axis::Z, Formula::Corrected, tex, true), pose(pose_)));
@@ -228,7 +272,7 @@ void Projectors::pairView(ts::Frame& f, int w, int h) const {
                                                                       Axis::Z, Formula::Corrected, tex, true), pose(pose_)));
     a = "24 vertices: each face its own (s,t)", b = "8 shared vertices: smeared and mirrored faces";
   }
-  const int sc = ts::layout::scaleFor(L, 2);
+  const int sc = under ? underScale : ts::layout::scaleFor(L, 2);
   if (tall) {
     ts::layout::caption(f, {8, 4, float(w) - 8, 34}, a, ts::layout::kAmber, sc);
     ts::layout::caption(f, {8, float(R.y - 36), float(w) - 8, float(R.y - 4)}, b, ts::layout::kAmber, sc);
@@ -243,7 +287,7 @@ ts::Frame Projectors::build(int width, int height, const ts::Measurements& measu
   f.programs.push_back({kProgramName, projectorProgram()});
   if (view_ == kObject) objectView(f, width, height, measured);
   else if (view_ == kSeed) gridView(f, width, height);
-  else pairView(f, width, height);
+  else pairView(f, width, height, measured);
   return f;
 }
 

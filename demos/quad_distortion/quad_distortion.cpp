@@ -100,7 +100,7 @@ class QuadDistortion final : public ts::Scene {
         {"vi1_quad_variants", "Figure VI.1 (variants)",
          "The same region four ways: split along either diagonal (the kink moves and changes), bilinear "
          "interpolation of (s,t) over the quad, and projective (s,t,r,q) coordinates (no kink).",
-         {"--view", "compare", "--edges"}, 1280, 420,
+         {"--view", "compare", "--edges"}, 1280, 376,
          "Split along the other diagonal the kink changes ({kink_deg[affine_tl_br]} -> {kink_deg[affine_bl_tr]} "
          "deg); bilinear and projective (s,t,r,q) remove it ({kink_deg[bilinear]}, {kink_deg[projective]} deg)."},
     };
@@ -153,6 +153,13 @@ class QuadDistortion final : public ts::Scene {
 std::string variantName(const QuadDistortion::Variant& v) {
   return v.interp == kAffine ? std::string("affine ") + kDiagNames[int(v.diagonal)] : kInterpNames[v.interp];
 }
+// The key of a variant's measurements: its name with spaces and dashes made '_' (kink_deg[affine_tl_br]).
+std::string variantKey(const QuadDistortion::Variant& v) {
+  std::string key = variantName(v);
+  for (char& c : key)
+    if (c == ' ' || c == '-') c = '_';
+  return "[" + key + "]";
+}
 
 void QuadDistortion::addSquare(ts::Frame& f, ts::Panel& p, Variant v, int texture, bool edges) const {
   quad::Corners st = corners();
@@ -188,8 +195,8 @@ void QuadDistortion::addSquare(ts::Frame& f, ts::Panel& p, Variant v, int textur
   if (edges) {
     glm::vec2 d0 = v.diagonal == Diagonal::TopLeftBottomRight ? glm::vec2(0, 1) : glm::vec2(0, 0);
     glm::vec2 d1 = v.diagonal == Diagonal::TopLeftBottomRight ? glm::vec2(1, 0) : glm::vec2(1, 1);
-    p.batches.push_back(ts::lineSegments({d0, d1}, {1.0f, 0.55f, 0.0f, 1.0f}, 2.0f, "diagonal"));
-    p.batches.push_back(ts::lineLoop({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {1.0f, 0.55f, 0.0f, 1.0f}, 2.0f, "edges"));
+    p.batches.push_back(ts::lineSegments({d0, d1}, quad::views::kDiagonal, 2.0f, "diagonal"));
+    p.batches.push_back(ts::lineLoop({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, quad::views::kDiagonal, 2.0f, "edges"));
   }
 }
 
@@ -207,14 +214,15 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
   if (view_ == 0) {
     // The book's layout: texture left, square right (one above the other when tall), kink underneath.
     std::string name = variantName(current);
-    auto m = kinks.find(name);
-    std::string kink = m == kinks.end() ? std::string()
-                                        : "kink along the diagonal: " + fmt("%.1f", m->second) + " deg (predicted " +
-                                              fmt("%.1f", predicted(current)) + ")";
+    const bool haveKink = kinks.count(name) > 0;
+    const std::string key = variantKey(current);
+    const L::Text kink = haveKink ? "kink along the diagonal: " + L::measured(measured, "kink_deg" + key, "%.1f") +
+                                        " deg (predicted " + L::measured(measured, "kink_predicted_deg" + key, "%.1f") + ")"
+                                  : L::Text();
     L::FlowSpec spec;
     spec.n = 2;
     spec.linesAbove = 2;  // title, top corners
-    spec.linesBelow = kink.empty() ? 1 : 2;  // bottom corners (and the kink, under the last)
+    spec.linesBelow = (haveKink ? 2 : 1) + 1;  // bottom corners (and the kink), the colours' key under the last
     spec.gap = 16;
     std::vector<L::Cell> cells = L::flow(all, spec);
     ts::Panel left = L::unitPanel("texture_space", cells[0].picture), right = L::unitPanel("screen_space", cells[1].picture);
@@ -233,10 +241,14 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
                  c.scale);
       quad::views::cornerLabels(f, c, corners(), k == 1);
     }
-    // The kink: under the pictures, across the window.
+    // The kink, then the key of the marks' colours: under the pictures, across the window.
     const L::Cell& c = cells[1];
-    float y = std::max(cells[0].below.y1, cells[1].below.y1) - L::lineHeight(c.scale);
-    L::caption(f, {all.x0, y, all.x1, all.y1}, kink, amber, c.scale);
+    const float bottom = std::max(cells[0].below.y1, cells[1].below.y1), line = L::lineHeight(c.scale);
+    L::caption(f, {all.x0, bottom - 2 * line, all.x1, bottom - line}, kink, amber, c.scale);
+    std::vector<ts::LegendEntry> colours{{quad::views::kRegion, "the region the corners' (s,t) select"},
+                                     {quad::views::kDiagonal, edges_ ? "the diagonal (screen), its image (texture)"
+                                                                     : "the screen diagonal's image"}};
+    L::legend(f, {cells[0].below.x0, bottom - line, all.x1, bottom}, colours, c.scale);
   } else {
     // The four variants: both diagonals, then the two fixes.
     const std::vector<Variant> vs = shown();
@@ -244,7 +256,12 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
     spec.n = 4;
     spec.gap = 16;
     spec.minCellWidth = ts::text::width("kink 18.4 deg", 1) + 4;
-    std::vector<L::Cell> cells = L::flow(all, spec);
+    // The key of the triangles' edges under the pictures (when they are drawn).
+    const float keyH = edges_ ? L::lineHeight(1) : 0.0f;
+    std::vector<L::Cell> cells = L::flow({all.x0, all.y0, all.x1, all.y1 - keyH}, spec);
+    if (edges_)
+      L::legend(f, {cells[0].below.x0, cells[0].below.y1, all.x1, cells[0].below.y1 + keyH},
+                {{quad::views::kDiagonal, "the affine variants' triangles: edges and shared diagonal"}}, 1);
     for (int k = 0; k < 4; ++k) {
       const L::Cell& c = cells[size_t(k)];
       ts::Panel p = L::unitPanel("variant_" + std::to_string(k), c.picture);
@@ -252,8 +269,9 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
       f.panels.push_back(p);
       std::string name = variantName(vs[size_t(k)]);
       L::caption(f, c.above, name, white, c.scale);
-      auto m = kinks.find(name);
-      if (m != kinks.end()) L::caption(f, c.below, "kink " + fmt("%.1f", m->second) + " deg", amber, c.scale);
+      if (kinks.count(name))
+        L::caption(f, c.below, "kink " + L::measured(measured, "kink_deg" + variantKey(vs[size_t(k)]), "%.1f") + " deg",
+                   amber, c.scale);
     }
   }
   return f;
@@ -283,12 +301,10 @@ ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
     double kink = measureKink(r, v, &texelError);
     std::string name = variantName(v);
     kinks[name] = kink;
-    std::string key = name;
-    for (char& c : key)
-      if (c == ' ' || c == '-') c = '_';
-    out.push_back({"kink_deg[" + key + "]", kink, "measured angle between checker lines across the diagonal"});
-    out.push_back({"kink_predicted_deg[" + key + "]", predicted(v), "the same angle from the analytic maps (closed form for the affine split)"});
-    out.push_back({"texel_error_max[" + key + "]", texelError, "largest distance (texels of 2048) between the texel taken and the analytic one"});
+    const std::string key = variantKey(v);
+    out.push_back({"kink_deg" + key, kink, "measured angle between checker lines across the diagonal"});
+    out.push_back({"kink_predicted_deg" + key, predicted(v), "the same angle from the analytic maps (closed form for the affine split)"});
+    out.push_back({"texel_error_max" + key, texelError, "largest distance (texels of 2048) between the texel taken and the analytic one"});
   }
   out.push_back({"split_disagreement_texels", quad::splitDisagreement(corners(), current.diagonal) * 256.0,
                  "how far apart the two triangles' maps put one point (256 texels)"});

@@ -122,7 +122,8 @@ class SphereProjections final : public ts::Scene {
     auto it = all->find({int(m), resolution_});
     return it == all->end() ? nullptr : &it->second;
   }
-  void addSphere(ts::Frame& f, const ts::layout::Cell& cell, Mapping m, int texture, const Result* res) const;
+  void addSphere(ts::Frame& f, const ts::layout::Cell& cell, Mapping m, int texture, const Result* res,
+                 const ts::Measurements& measured) const;
   void addPlot(ts::Frame& f, int width, int height, const ts::Measurements& measured) const;
 
   int shown_ = kBoth, view_ = 0, rotation_ = 20, tilt_ = 20, resolution_ = 4;
@@ -135,7 +136,7 @@ class SphereProjections final : public ts::Scene {
 // The picture.
 
 void SphereProjections::addSphere(ts::Frame& f, const ts::layout::Cell& cell, Mapping m, int texture,
-                                  const Result* res) const {
+                                  const Result* res, const ts::Measurements& measured) const {
   const ts::Rect& vp = cell.picture;
   ts::Panel p;
   p.id = std::string("sphere_") + kKey[int(m)];
@@ -158,12 +159,17 @@ void SphereProjections::addSphere(ts::Frame& f, const ts::layout::Cell& cell, Ma
   // The equation and its formula above, the measured ratios below.
   namespace L = ts::layout;
   const auto [equation, formula] = L::halves(cell.above);
-  L::caption(f, equation, kEq[int(m)], kColour[int(m)], cell.scale);
+  // The equation's name is the key of its colour (the area-ratio plot draws
+  // each mapping in it): a swatch and the name, centred over the formula.
+  const float keyW = ts::text::height(cell.scale) + 4.0f * float(cell.scale) + ts::text::width(kEq[int(m)], cell.scale);
+  const float keyX = std::max(equation.x0, (equation.x0 + equation.x1 - keyW) / 2);
+  L::legend(f, {keyX, equation.y0, equation.x1, equation.y1}, {{kColour[int(m)], kEq[int(m)]}}, cell.scale);
   L::caption(f, formula, kFormula[int(m)], kWhite, cell.scale);
   if (res)
     L::caption(f, cell.below,
-               "texture/surface area: equator band " + fmt("%.2f", res->render[kBands / 2]) + ", pole bands " +
-                   fmt("%.2f", res->render[kBands - 1]),
+               "texture/surface area: equator band " +
+                   L::measured(measured, kKey[int(m)] + bandName(kBands / 2) + "_render", "%.2f") + ", pole bands " +
+                   L::measured(measured, kKey[int(m)] + bandName(kBands - 1) + "_render", "%.2f"),
                kWhite, cell.scale);
 }
 
@@ -185,7 +191,7 @@ void SphereProjections::addPlot(ts::Frame& f, int width, int height, const ts::M
     plot::Series analytic(std::string("analytic_") + kKey[int(m)], c, plot::Mark::Line, {}, 1.0f);
     for (double phi = -89.5; phi <= 89.5; phi += 1.0) analytic.points.push_back({phi, sphere::ratioAt(m, phi)});
     p.series.push_back(analytic);
-    std::string legend = std::string(kEq[int(m)]) + "  " + kFormula[int(m)] + ":  analytic (line)";
+    ts::layout::Text legend = std::string(kEq[int(m)]) + "  " + kFormula[int(m)] + ":  analytic (line)";
     if (const Result* res = found(measured, m)) {
       // Bars across each band and a 7-px square at its centre.
       plot::Series bars(std::string("measured_") + kKey[int(m)], c, plot::Mark::Bars, {}, 3.0f),
@@ -194,7 +200,7 @@ void SphereProjections::addPlot(ts::Frame& f, int width, int height, const ts::M
       bars.halfWidth = sphere::kBandDeg / 2 - 1;
       dots.points = bars.points;
       p.series.insert(p.series.end(), {bars, dots});
-      legend += ", measured (bars): max/min " + fmt("%.2f", res->spread);
+      legend = legend + ", measured (bars): max/min " + ts::layout::measured(measured, std::string(kKey[int(m)]) + "_spread", "%.2f");
     }
     p.legend.push_back({legend, c});
   }
@@ -223,7 +229,7 @@ ts::Frame SphereProjections::build(int width, int height, const ts::Measurements
   spec.linesBelow = 2;  // the measured ratios (wrapped when narrow)
   spec.gap = 16;
   std::vector<ts::layout::Cell> cells = ts::layout::flow({8, 8, float(width) - 8, float(height) - 8}, spec);
-  for (int k = 0; k < n; ++k) addSphere(f, cells[size_t(k)], ms[size_t(k)], tex, found(measured, ms[size_t(k)]));
+  for (int k = 0; k < n; ++k) addSphere(f, cells[size_t(k)], ms[size_t(k)], tex, found(measured, ms[size_t(k)]), measured);
   return f;
 }
 

@@ -107,8 +107,8 @@ class Torus final : public ts::Scene {
     return {
         {"vi6_torus", "Figure VI.6",
          "A checkerboard texture map (left) applied to a torus by s = theta/360, t = phi/360 (right), the torus "
-         "tilted towards the viewer.",
-         {"--mapping", "book", "--pattern", "checker", "--marker=off"}, 1024, 512,
+         "tilted towards the viewer; the red cross marks where the texture's centre lands.",
+         {"--mapping", "book", "--pattern", "checker", "--marker=on"}, 1024, 512,
          "With s = theta/360, t = phi/360 the texture's centre lands at z = {centre_3d_z[book]} = -(R - r), on the "
          "far inner wall of the hole."},
         {"vi6_torus_centre", "Exercise VI.2",
@@ -224,6 +224,8 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
   const int texSide = std::max(1, tc.picture.w * 3 / 4);  // the texture a little smaller than the tori
   addTexture(f, L::centred(tc.picture, texSide, texSide), tex, tc.scale);
   L::caption(f, L::halves(tc.above).first, "texture", kWhite, tc.scale);
+  // The crosses' key, under the texture (that cell has no measurement to show).
+  if (marker_) L::legend(f, tc.below, {{torus::views::kMarker, "the texture's centre (1/2, 1/2)"}}, tc.scale);
   for (size_t k = 0; k < shown.size(); ++k) {
     const Mapping m = shown[k];
     const torus::Params tp = params(m, d);
@@ -239,14 +241,20 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
                m == kMine ? ts::student::summary(measured)
                : m == Mapping::Book ? "s=theta/360, t=phi/360" : "s=theta/360+1/2, t=phi/360+1/2",
                kWhite, c.scale);
-    glm::dvec3 answer = torus::centrePoint(tp);
+    // Where the texture's centre lands: the z measured on the render (the
+    // claim's number), and what the exercise's answer says it should be.
+    const std::string n = std::string("[") + kMappingNames[int(m)] + "]";
+    // The claim's words too: where on the torus that z is.
+    const L::Text should = m == Mapping::Book ? " = -(R - r): the hole's far wall" : " = R + r: the front";
+    const bool seen = found && found->visible;
     L::caption(f, centre,
-               "centre at (0, 0, " + fmt("%.2f", answer.z) + ")" + (m == Mapping::Book ? " = -(R - r)" : " = R + r"),
-               kWhite, c.scale);
+               seen ? "centre lands at z = " + L::measured(measured, "centre_3d_z" + n, "%.2f") + should
+                    : "centre at z = " + L::given("z of the exercise's answer", torus::centrePoint(tp).z, "%.2f") + should,
+               seen ? kMeasured : kWhite, c.scale);
     if (found)
       L::caption(f, c.below,
-                 found->visible ? "measured: " + fmt("%.3f", glm::length(found->point - answer)) + " from the answer"
-                                : "measured: not visible from here",
+                 seen ? "measured: " + L::measured(measured, "centre_distance_to_answer" + n, "%.3f") + " from the answer"
+                      : "measured: not visible from here",
                  kMeasured, c.scale);
   }
   return f;

@@ -166,6 +166,8 @@ TEST(Projectors, TexGenIsPartOfTheFrame) {
   ASSERT_NE(clipped, nullptr);
   EXPECT_EQ(clipped->texGen.coords, 15u);
   EXPECT_EQ(clipped->clipPlane, clipped->texGen.planes[3]);
+  // The same plane in the same space: given under the modelview the Q plane was.
+  EXPECT_EQ(clipped->clipModelview, clipped->texGen.planeModelview);
 }
 
 // The window's texture-space panel: the state's share of columns, as the

@@ -73,6 +73,7 @@ TEST(TexGen, SidecarRoundTripsTexGenAndClipPlane) {
   ts::Batch b = texGenBatch(GL_EYE_LINEAR, glm::translate(glm::mat4(1.0f), {1, 2, 3}));
   b.clip = true;
   b.clipPlane = {0, 0, -1, 2};
+  b.clipModelview = glm::translate(glm::mat4(1.0f), {0, 0, -4});
   b.vertices.push_back({{0, 0, 0}});
   b.vertices.push_back({{1, 0, 0}});
   b.vertices.push_back({{0, 1, 0}});
@@ -87,6 +88,7 @@ TEST(TexGen, SidecarRoundTripsTexGenAndClipPlane) {
   EXPECT_EQ(r.texGen.planeModelview, b.texGen.planeModelview);
   EXPECT_TRUE(r.clip);
   EXPECT_EQ(r.clipPlane, b.clipPlane);
+  EXPECT_EQ(r.clipModelview, b.clipModelview);
 }
 // Issue 26: the environment-mapping modes, by the GL 2.1 §2.11.4 formulas
 // worked by hand.  A vertex at eye (1, 0, -1) with normal (0, 0, 1) (the
