@@ -146,7 +146,7 @@ TEST(FilterZoo, MethodsAgainstTheExactIntegral) {
   }
 }
 
-// Claim (the expected shape): ripmap and SAT lose as the texture
+// Claim (the shape box filters predict): ripmap and SAT lose as the texture
 // turns from 0 to 45 degrees, the probe line and EWA stay nearly flat.
 TEST(FilterZoo, AzimuthShape) {
   EXPECT_GT(rms("sat", "45"), 1.2 * rms("sat", "0"));
