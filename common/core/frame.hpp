@@ -266,7 +266,7 @@ struct Frame {
   int width = 0, height = 0;
   glm::vec4 clearColor{0.0f, 0.0f, 0.0f, 1.0f};
   // glHint(GL_PERSPECTIVE_CORRECTION_HINT, ...) as the book sets it.  Mesa
-  // ignores it (PLATFORM.md); Figure VI.2 detects that and says so.
+  // ignores it (docs/platform.md, "GL_PERSPECTIVE_CORRECTION_HINT"); Figure VI.2 detects that and says so.
   GLenum perspectiveHint = GL_NICEST;
   std::vector<TextureDesc> textures;
   std::vector<std::pair<std::string, Program>> programs;

@@ -221,7 +221,7 @@ TEST(FilterZoo, MipKernels) {
           << sharp << " vs " << soft;
 }
 
-// Claim (item 9, seed 001 ¶13): a positive LOD bias blurs (the far field's
+// Claim (seed 001 ¶13): a positive LOD bias blurs (the far field's
 // error grows) and flickers less on a moving plane; a negative one sharpens
 // and flickers more.
 TEST(FilterZoo, LodBias) {
