@@ -1,5 +1,5 @@
-// reference/combine.hpp — the second texture unit's environment (issue 29,
-// Batch::texture1 / texEnv1 / combine1): a classic environment (sampler.hpp's
+// reference/combine.hpp — the second texture unit's environment
+// (Batch::texture1 / texEnv1 / combine1): a classic environment (sampler.hpp's
 // texEnv with the unit before's result as the fragment colour) or GL_COMBINE
 // (GL 2.1 §3.8.13 table 3.24 plus GL_ATI_texture_env_combine3's
 // GL_MODULATE_ADD_ATI), per colour and over boxes of colours.

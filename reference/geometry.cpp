@@ -79,7 +79,7 @@ glm::dvec3 envTexGen(const glm::dmat4& modelview, GLenum mode, const glm::dvec3&
 glm::dvec4 texGenCoords(const ts::Panel& p, const ts::Batch& b, const ts::Vertex& v) {
   glm::dvec4 tex(v.tex);
   if (!b.texGen.on()) return tex;
-  if (b.texGen.needsNormal()) {  // GL_SPHERE_MAP, GL_REFLECTION_MAP, GL_NORMAL_MAP (issue 26)
+  if (b.texGen.needsNormal()) {  // GL_SPHERE_MAP, GL_REFLECTION_MAP, GL_NORMAL_MAP
     const glm::dvec3 g = envTexGen(glm::dmat4(p.modelview), b.texGen.mode, glm::dvec3(v.pos), glm::dvec3(v.normal));
     for (int k = 0; k < 3; ++k)
       if (b.texGen.coords & (1u << k)) tex[k] = g[k];
@@ -188,7 +188,7 @@ bool screenTriangle(const ts::Panel& p, const ts::Batch& b, size_t first, int fr
     // interpolation, as GL's vertex stage does.
     const glm::dvec4 st = glm::dmat4(b.textureMatrix) * texGenCoords(p, b, vx);
     if (b.clip) userDistance[k] = glm::dot(clipEye, toEye * glm::dvec4(glm::dvec3(vx.pos), 1.0));
-    // Unit 1 (issue 29): its own coordinates or unit 0's as sent, times its texture matrix.
+    // Unit 1: its own coordinates or unit 0's as sent, times its texture matrix.
     const glm::dvec4 u1 = glm::dmat4(b.textureMatrix1) * glm::dvec4(b.coords1 ? vx.tex1 : vx.tex);
     tri[k].attr = {st.x, st.y, st.z, st.w, vx.color.r, vx.color.g, vx.color.b, vx.color.a,
                    vx.secondary.r, vx.secondary.g, vx.secondary.b, u1.x, u1.y, u1.w};

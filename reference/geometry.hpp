@@ -20,7 +20,7 @@
 namespace ref {
 // Attribute slots of a screen vertex: (s,t,r,q), the primary colour, the
 // secondary colour, all divided by w, then 1/w and the window depth z.
-// Unit 1's (s, t, q) (issue 29: Vertex::tex1 or unit 0's as sent, times
+// Unit 1's (s, t, q) (Vertex::tex1 or unit 0's as sent, times
 // Batch::textureMatrix1) follow the secondary colour.
 enum AttributeSlot : int { kS = 0, kT, kR, kQ, kCr, kCg, kCb, kCa, kSr, kSg, kSb, kS1, kT1, kQ1, kW, kZ, kAttributes };
 
@@ -77,7 +77,7 @@ struct ScreenPoly {
   void coord(double x, double y, double* s, double* t) const;
   // Its derivatives along x and y, in closed form.
   Deriv deriv(double x, double y) const;
-  // Unit 1's (s/q, t/q) at (x, y) and their derivatives (issue 29).
+  // Unit 1's (s/q, t/q) at (x, y) and their derivatives.
   void coord1(double x, double y, double* s, double* t) const;
   Deriv deriv1(double x, double y) const;
   // The interpolated primary and secondary colours (alpha 0), clamped to [0, 1].

@@ -160,7 +160,7 @@ Inspection Inspector::fragment(int x, int y, int pi, int bi, const ScreenPoly& P
       notes.push_back("texture environment " + enumName(b.texEnv) + " is not modelled: the colour is the texel");
   }
   in.referenceRgba = shadeFragment(b, in.primary, in.secondary, in.textured ? &texel : nullptr);
-  // Issue 29: unit 1 at its own (s, t), over unit 0's result, then the colour sum.
+  // Unit 1 at its own (s, t), over unit 0's result, then the colour sum.
   std::string why1;
   const Texture* tex1 = in.textured && b.texture1 >= 0 && unitEnvModelled(b.texEnv1, b.combine1) ? texture(b.texture1, &why1) : nullptr;
   if (tex1) {
@@ -221,8 +221,8 @@ Inspection Inspector::at(int x, int y) const {
           float z = float(P.P[kZ].at(x + 0.5, y + 0.5));
           if (p.depthTest && !(z < depth)) continue;
           Inspection in = fragment(x, y, int(pi), int(bi), P);
-          if (b.alphaTest() && !alphaPasses(b.alphaFunc, in.referenceRgba[3], b.alphaRef)) continue;  // issue 29: discarded
-          if (b.blend && b.blendFactors())  // issue 29: the batch's own factors
+          if (b.alphaTest() && !alphaPasses(b.alphaFunc, in.referenceRgba[3], b.alphaRef)) continue;  // discarded
+          if (b.blend && b.blendFactors())  // the batch's own factors
             pixel = toRgba(blendWith(b.blendSrc, b.blendDst, in.referenceRgba, toColour(pixel)));
           else
             pixel = toRgba(b.blend ? blendOver(in.referenceRgba, pixel) : in.referenceRgba);

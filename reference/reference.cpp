@@ -65,7 +65,7 @@ Deriv cubeFaceDeriv(const ScreenPoly& P, int face, double x, double y) {
 }
 }  // namespace
 
-// Nested frames (issue 26): the texture's frame recomputed by a Reference
+// Nested frames: the texture's frame recomputed by a Reference
 // of its own (the same options but a narrower edge band), its picture the
 // texture's image.  Each texel keeps how wide the union of that frame's pixel's legal colour
 // ranges is (GL's pixel lies in it, give or take the verifier's
@@ -288,7 +288,7 @@ void Reference::place(int x, int y, const Candidate& c, bool sure, bool depthTes
     if (!mustPass) sure = false;
   }
   Candidate n = c;
-  if (n.blended && n.kind != Candidate::Kind::Exempt) n.below = h;  // issue 29: blended over what is there
+  if (n.blended && n.kind != Candidate::Kind::Exempt) n.below = h;  // blended over what is there
   n.next = sure ? -1 : h;
   pool_.push_back(n);
   h = int(pool_.size()) - 1;
@@ -374,7 +374,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     }
   }
   proto.colorSum = b.colorSum;
-  // Issue 29: a batch's own blend factors are modelled (Candidate::blended);
+  // A batch's own blend factors are modelled (Candidate::blended);
   // FixedState's blend is exempt as before.
   if (b.blend && b.blendFactors() && proto.kind != Candidate::Kind::Exempt) {
     proto.blended = true;
@@ -383,7 +383,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     proto.kind = Candidate::Kind::Exempt;
     proto.why = Exempt::Blend;
   }
-  // A cube map (issue 26): its faces are textures cubeFirstFace_ .. + 5; the
+  // A cube map: its faces are textures cubeFirstFace_ .. + 5; the
   // face and its (s, t) are chosen per fragment from the interpolated (s, t, r).
   const int cubeFirst = tex ? cubeFirstFace_[size_t(b.texture)] : -1;
   if (cubeFirst >= 0) tex = &textures_[size_t(cubeFirst)];
@@ -399,7 +399,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     }
   }
   const bool needLod = tex && (tex->mipmapped() || tex->desc().minFilter != tex->desc().magFilter);
-  // Issue 29: unit 1, a 2D texture read at unit 0's (s, t), modelled when
+  // Unit 1, a 2D texture read at unit 0's (s, t), modelled when
   // unit 0 is a plain 2D texture without texgen or texture matrix.
   // (A blended batch's candidates are exempt, but its reference picture still has unit 1.)
   const Texture* tex1 = nullptr;
@@ -493,7 +493,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           c.rho = std::max(c.rho, float(slices));
         }
       }
-      if (tex1 && c.kind == Candidate::Kind::Textured) {  // issue 29: unit 1 at its own (s, t)
+      if (tex1 && c.kind == Candidate::Kind::Textured) {  // unit 1 at its own (s, t)
         const Deriv g = P.deriv1(x, y);
         P.coord1(x, y, &c.s1, &c.t1);
         const double e = tex1->lod(g);
@@ -530,13 +530,13 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
         texel = tex->sample(s, t, tex->lod(P.deriv(x + 0.5, y + 0.5)));
       }
       Colour out = shadeFragment(b, col, sec, tex ? &texel : nullptr);
-      if (tex1) {  // issue 29: unit 1 over unit 0's result, then the colour sum
+      if (tex1) {  // unit 1 over unit 0's result, then the colour sum
         const Colour texel1 = tex1->sample(a[kS1] / a[kQ1], a[kT1] / a[kQ1], tex1->lod(P.deriv1(x + 0.5, y + 0.5)));
         const Colour prev = texEnv(b.texEnv, col, texel, {b.envColor.r, b.envColor.g, b.envColor.b, b.envColor.a});
         out = unitEnv(b.texEnv1, b.combine1, prev, texel1, col);
         if (b.colorSum) out = colourSum(out, sec);
       }
-      // Issue 29: a fragment failing the alpha test is discarded (no colour,
+      // A fragment failing the alpha test is discarded (no colour,
       // no depth); a batch's own blend factors act on colour, alpha stays.
       if (b.alphaTest() && !alphaPasses(b.alphaFunc, out[3], b.alphaRef)) return;
       if (b.blend && b.blendFactors()) {
@@ -573,13 +573,13 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
           continue;
         }
         const Candidate c = candidateAt(cx, cy);
-        if (b.alphaTest() && c.kind != Candidate::Kind::Exempt) {  // issue 29
+        if (b.alphaTest() && c.kind != Candidate::Kind::Exempt) {  // the alpha test drops what surely fails it
           const int verdict = alphaVerdict(b, c);
           if (verdict == 0) continue;  // discarded: no colour, no depth
           if (verdict < 0) sure = false;
         }
         place(x, y, c, sure, p.depthTest, b.depthFunc ? b.depthFunc : GLenum(GL_LESS));
-        // Near a cube's face boundary either face is legal (issue 26).
+        // Near a cube's face boundary either face is legal.
         Candidate other = c;
         if (cubeFirst >= 0 && c.kind == Candidate::Kind::Textured && cubeCandidate(P, cx, cy, cubeFirst, true, &other))
           place(x, y, other, false, p.depthTest, b.depthFunc ? b.depthFunc : GLenum(GL_LESS));
@@ -587,7 +587,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
   }
 }
 
-// ---- the alpha test and blend factors (issue 29) ----------------------------
+// ---- the alpha test and blend factors ---------------------------------------
 bool alphaPasses(GLenum func, float alpha, float ref) {
   ref = std::min(1.0f, std::max(0.0f, ref));
   switch (func) {

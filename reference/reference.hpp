@@ -5,7 +5,7 @@
 // environments GL_REPLACE, GL_MODULATE, GL_DECAL, GL_BLEND, GL_ADD with the
 // environment colour, the texture matrix applied to each vertex's (s,t,r,q)
 // before interpolation, GL_COLOR_SUM with the secondary colour, or the
-// "bilinear_quad" program of demos/quad_distortion; issue 29: a second
+// "bilinear_quad" program of demos/quad_distortion; a second
 // texture unit with GL_COMBINE (combine.hpp), the alpha test, and a batch's
 // own blend factors).
 //
@@ -84,11 +84,11 @@ struct Candidate {
   // (s, t, r); `texture` is then its first slice.  -1: a 2D texture.
   int volume = -1;
   double r = 0;
-  // A nested frame's picture (issue 26), or a remade picture GL may round
+  // A nested frame's picture, or a remade picture GL may round
   // its own way (TextureDesc::texelSlack, a DXT1 decode): how far GL's
   // texels may lie from the reference's, added to both ends of the legal ranges.
   float slack = 0;
-  // Unit 1 (issue 29, Batch::texture1): its texture (index into
+  // Unit 1 (Batch::texture1): its texture (index into
   // Reference::textures(), -1 = off), read at (s, t) like unit 0, its LOD
   // interval and texels per pixel, and its environment over unit 0's result.
   int texture1 = -1;
@@ -96,7 +96,7 @@ struct Candidate {
   float lodLo1 = 0, lodHi1 = 0, rho1 = 0;
   GLenum env1 = GL_MODULATE;
   ts::Combine combine1;
-  // A fragment blended with a batch's own factors (issue 29, Batch::blendSrc
+  // A fragment blended with a batch's own factors (Batch::blendSrc
   // / blendDst): its colour is blend(this fragment, what the
   // pixel held), `below` the first candidate of what it held (-1: the clear
   // colour); verify.cpp combines the two legal sets.
@@ -135,7 +135,7 @@ class Reference {
   void drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect scissor);
   void drawLines(const ts::Panel& p, const ts::Batch& b, PixelRect scissor);
   void drawLabels(const ts::Frame& f);
-  // Cube maps (issue 26): each cube texture's six faces as 2D textures
+  // Cube maps: each cube texture's six faces as 2D textures
   // appended to textures_, the first one's index in cubeFirstFace_ (-1: not
   // a cube); a fragment's face and (s, t) per GL 2.1 table 3.21.
   void addCubeFaces(const ts::Frame& f);
@@ -159,12 +159,12 @@ class Reference {
   // -1: it reads an unknown texel).
   float nestedSlack(int texture, double s, double t, double rho) const;
   std::vector<NestedTexels> nested_;
-  // The alpha test (issue 29): 1 when candidate c's alpha surely passes
+  // The alpha test: 1 when candidate c's alpha surely passes
   // batch b's test, 0 when it surely fails (the fragment is discarded: no
   // candidate), -1 when its legal alpha range straddles the reference value
   // (the fragment may or may not be there).
   int alphaVerdict(const ts::Batch& b, const Candidate& c) const;
-  // depthFunc: GL_LESS, or GL_LEQUAL (issue 29: a second pass over the same geometry passes where z is equal).
+  // depthFunc: GL_LESS, or GL_LEQUAL (a second pass over the same geometry passes where z is equal).
   void place(int x, int y, const Candidate& c, bool sure, bool depthTest, GLenum depthFunc = GL_LESS);
   void exemptDisc(double x, double y, double r, Exempt why, PixelRect clip);
   void note(const std::string& s);
@@ -180,7 +180,7 @@ class Reference {
   std::vector<std::string> notes_;
 };
 
-// Cube maps (issue 26), GL 2.1 §3.8.6 table 3.21: the face of direction r
+// Cube maps, GL 2.1 §3.8.6 table 3.21: the face of direction r
 // is its major axis, +X -X +Y -Y +Z -Z = 0..5; *alt is the face of the next
 // largest component when it is within a relative 1e-4 of the largest (where
 // GL's float arithmetic may pick either), else -1.  On face f, (s, t) =
@@ -189,7 +189,7 @@ class Reference {
 //   -Y: r_x, -r_z, -r_y   +Z: r_x, -r_y, r_z    -Z: -r_x, -r_y, -r_z
 int cubeFace(const glm::dvec3& r, int* alt);
 
-// The alpha test and blend factors (issue 29, Batch::alphaFunc, blendSrc/
+// The alpha test and blend factors (Batch::alphaFunc, blendSrc/
 // blendDst): does `alpha` pass glAlphaFunc(func, ref) (ref clamped to
 // [0, 1]); the colour src * srcFactor + dst * dstFactor per channel,
 // clamped, alpha the framebuffer's (FixedState's alpha factors).

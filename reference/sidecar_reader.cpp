@@ -112,7 +112,7 @@ ts::Rgba rgbaParam(const std::vector<std::pair<std::string, std::string>>& p, co
   return {uint8_t(c[0]), uint8_t(c[1]), uint8_t(c[2]), uint8_t(c[3])};
 }
 
-// glTexGen's environment-mapping modes (issue 26): the mode, no planes.
+// glTexGen's environment-mapping modes: the mode, no planes.
 // False if `mode` is not one of them.  Sphere mapping makes s and t only.
 bool readNormalTexGen(const Json& tg, const std::string& mode, const std::string& tw, ts::TexGen* out) {
   if (mode == "GL_SPHERE_MAP") out->mode = GL_SPHERE_MAP;
@@ -154,14 +154,14 @@ GLenum glEnumFromName(const std::string& name) {
       {"GL_FASTEST", GL_FASTEST},
       {"GL_NICEST", GL_NICEST},
       {"GL_DONT_CARE", GL_DONT_CARE},
-      // issue 29: alpha functions and blend factors
+      // alpha functions and blend factors
       {"GL_NEVER", GL_NEVER}, {"GL_LESS", GL_LESS}, {"GL_EQUAL", GL_EQUAL}, {"GL_LEQUAL", GL_LEQUAL},
       {"GL_GREATER", GL_GREATER}, {"GL_NOTEQUAL", GL_NOTEQUAL}, {"GL_GEQUAL", GL_GEQUAL}, {"GL_ALWAYS", GL_ALWAYS},
       {"GL_ZERO", GL_ZERO}, {"GL_ONE", GL_ONE}, {"GL_SRC_COLOR", GL_SRC_COLOR},
       {"GL_ONE_MINUS_SRC_COLOR", GL_ONE_MINUS_SRC_COLOR}, {"GL_DST_COLOR", GL_DST_COLOR},
       {"GL_ONE_MINUS_DST_COLOR", GL_ONE_MINUS_DST_COLOR}, {"GL_SRC_ALPHA", GL_SRC_ALPHA},
       {"GL_ONE_MINUS_SRC_ALPHA", GL_ONE_MINUS_SRC_ALPHA},
-      // issue 29: unit 1's GL_COMBINE
+      // unit 1's GL_COMBINE
       {"GL_TEXTURE", GL_TEXTURE}, {"GL_COMBINE", GL_COMBINE}, {"GL_ADD_SIGNED", GL_ADD_SIGNED},
       {"GL_INTERPOLATE", GL_INTERPOLATE}, {"GL_CONSTANT", GL_CONSTANT}, {"GL_PRIMARY_COLOR", GL_PRIMARY_COLOR},
       {"GL_PREVIOUS", GL_PREVIOUS}, {"GL_SUBTRACT", GL_SUBTRACT}, {"GL_MODULATE_ADD_ATI", GL_MODULATE_ADD_ATI},
@@ -188,10 +188,10 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
   if (name == "labelled_grid") return ts::labelledGrid(intParam(p, "size", name), intParam(p, "cells", name));
   if (name == "mip_level_colours") return ts::mipLevelColours(intParam(p, "size", name));
   if (name == "gradient") return ts::gradientTexture(intParam(p, "width", name), intParam(p, "height", name), strParam(p, "alpha", name) == "ramp");
-  if (name == "environment_map") return ts::envmaps::environmentMapFromParams(p);  // issue 26: common/core/env_maps.hpp
+  if (name == "environment_map") return ts::envmaps::environmentMapFromParams(p);  // common/core/env_maps.hpp
   ts::TextureDesc made;
-  if (ts::multitex::remake(name, p, &made)) return made;  // issue 29: the multitexture demo's textures
-  if (ts::dxt1::remake(name, p, &made)) return made;      // issue 29: the DXT1 pictures (common/core/dxt1_pictures.hpp)
+  if (ts::multitex::remake(name, p, &made)) return made;  // the multitexture demo's textures
+  if (ts::dxt1::remake(name, p, &made)) return made;      // the DXT1 pictures (common/core/dxt1_pictures.hpp)
   if (name == "file") {
     std::string path = strParam(p, "path", name);
     if (!baseDir.empty() && !path.empty() && path[0] != '/') path = baseDir + "/" + path;
@@ -232,7 +232,7 @@ static SidecarScene read(const std::string& jsonText, const std::string& baseDir
 }
 
 // The frame's keys of a sidecar object (the document, or a texture's
-// "rendered_from": a nested frame, issue 26) into out.frame; `nesting`
+// "rendered_from": a nested frame) into out.frame; `nesting`
 // counts the frames around it (at most kMaxNesting).
 static void readFrame(const Json& doc, const std::string& baseDir, int nesting, const SidecarReadOptions& ro,
                       SidecarScene& out) {
@@ -300,7 +300,7 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
       placeholder = true;
     };
     if (const Json* rf = find(t, "rendered_from")) {
-      // A nested frame (issue 26): the texture is that frame's picture,
+      // A nested frame: the texture is that frame's picture,
       // which the reference recomputes; no generator, no image here.  A
       // nested frame that shows an unknown picture is itself one.
       if (nesting >= kMaxNesting) fail(where + ".rendered_from", "frames nested deeper than " + std::to_string(kMaxNesting));
@@ -336,7 +336,7 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
     }
     if (const Json* w = find(t, "width"))
       if (d.image && integer(*w, where + ".width", 0, ts::kMaxImageDimension) != d.image->width) fail(where, "the remade texture's width differs");
-    // A cube map (issue 26): the generator's image holds the six faces
+    // A cube map: the generator's image holds the six faces
     // stacked, and "height" is a face's.
     if (const Json* c = find(t, "cube")) d.cube = boolean(*c, where + ".cube");
     if (d.cube && (!d.image || d.image->height != 6 * d.image->width))
@@ -472,7 +472,7 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
         if (!cm) fail(bw, "clip_plane needs clip_plane_modelview (the modelview it was given under)");
         b.clipModelview = mat(*cm, bw + ".clip_plane_modelview");
       }
-      // Issue 29 (absent = off / FixedState's): the alpha test, the blend's colour factors.
+      // Absent = off / FixedState's: the alpha test, the blend's colour factors.
       if (const Json* at = find(bv, "alpha_test")) {
         try {
           b.alphaFunc = glEnumFromName(text(member(*at, "func", bw + ".alpha_test"), bw + ".alpha_test.func"));
@@ -481,7 +481,7 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
         }
         b.alphaRef = float(number(member(*at, "ref", bw + ".alpha_test"), bw + ".alpha_test.ref"));
       }
-      if (const Json* df = find(bv, "depth_func")) {  // issue 29: a second pass's GL_LEQUAL
+      if (const Json* df = find(bv, "depth_func")) {  // a second pass's GL_LEQUAL
         try {
           b.depthFunc = glEnumFromName(text(*df, bw + ".depth_func"));
         } catch (const ts::Error& e) {
@@ -498,7 +498,7 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
           fail(bw + ".blend_func", e.what());
         }
       }
-      if (const Json* u1 = find(bv, "unit1")) {  // issue 29: the second texture unit
+      if (const Json* u1 = find(bv, "unit1")) {  // the second texture unit
         const std::string uw = bw + ".unit1";
         b.texture1 = integer(member(*u1, "texture", uw), uw + ".texture", 0, double(f.textures.size()) - 1);
         if (const Json* tm = find(*u1, "texture_matrix")) b.textureMatrix1 = mat(*tm, uw + ".texture_matrix");

@@ -74,7 +74,7 @@ struct BelowMemo {
   size_t used = 0;
   void clear() { index.clear(), used = 0; }
 };
-// Issue 29: the legal colours of a pixel from candidate h on (a blended
+// The legal colours of a pixel from candidate h on (a blended
 // candidate's `below`), as legalAt.
 void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Box>* outp, Exempt* why, BelowMemo* memo);
 
@@ -160,14 +160,14 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
           r.volume(c.volume).legal(c.s, c.t, c.r, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter, o.linearEpsTexels + jitter, &out);
         else
           t.legal(c.s, c.t, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter, o.linearEpsTexels + jitter, &out);
-        if (c.slack > 0)  // a nested frame's picture (issue 26), or TextureDesc::texelSlack
+        if (c.slack > 0)  // a nested frame's picture, or TextureDesc::texelSlack
           for (size_t k = first; k < out.size(); ++k)
             for (size_t ch = 0; ch < 4; ++ch) out[k].lo[ch] -= c.slack, out[k].hi[ch] += c.slack;
         if (c.env != GL_REPLACE) {  // the environment's table over the boxes (exact for GL_MODULATE as before)
           Box col = widen(c.colour, o.colourEps);
           for (size_t k = first; k < out.size(); ++k) out[k] = texEnvBox(c.env, col, out[k], c.envColour);
         }
-        if (c.texture1 >= 0) {  // issue 29: unit 1's texels over unit 0's result (combine.hpp)
+        if (c.texture1 >= 0) {  // unit 1's texels over unit 0's result (combine.hpp)
           std::vector<Box> texels1;
           const double j1 = o.positionEpsPixels * double(c.rho1);
           r.textures()[size_t(c.texture1)].legal(c.s1, c.t1, c.lodLo1, c.lodHi1, o.nearestEpsTexels + j1, o.linearEpsTexels + j1, &texels1);
@@ -189,7 +189,7 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
       // The colour as drawn, the pixel's alpha kept: what it held is not
       // followed (its chain may be deep, a mesh's layers), the alpha left free.
       for (size_t k = start; k < out.size(); ++k) out[k].lo[3] = 0.0f, out[k].hi[3] = 1.0f;
-    } else if (c.blended) {  // issue 29: this fragment's boxes blended over what the pixel held
+    } else if (c.blended) {  // this fragment's boxes blended over what the pixel held
       Exempt belowWhy;
       const std::vector<Box>& below = legalBelow(r, c.below, o, &belowWhy, memo);  // valid until the next legalBelow
       if (belowWhy != Exempt::None) {

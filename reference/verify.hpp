@@ -12,8 +12,8 @@
 // (REPLACE / MODULATE), and then a tolerance from the channel bits
 // (ts::probe::tolerance).  Pixels within RenderOptions::edgeBand of a
 // triangle's boundary are checked against both sides; pixels under lines,
-// points, labels, blended or unmodelled batches are exempt.  Issue 29:
-// unit 1 (GL_COMBINE) is applied over unit 0's result; the alpha test drops
+// points, labels, blended or unmodelled batches are exempt.
+// Unit 1 (GL_COMBINE) is applied over unit 0's result; the alpha test drops
 // a fragment whose legal alpha surely fails it (one that may fail leaves
 // what was beneath legal too); a batch blended with its own factors
 // (Batch::blendSrc / blendDst) is checked: its boxes blended

@@ -27,13 +27,13 @@ struct Vertex {
   // batch's colorSum is on: what GL_SEPARATE_SPECULAR_COLOR does with the
   // specular term, computed on the CPU here so the reference can redo it.
   glm::vec3 secondary{0.0f};
-  // --- environment-mapping texgen (issue 26) ---
+  // --- environment-mapping texgen ---
   // The normal (glNormal3f), object coordinates: sent, and written in the
   // sidecar, only for batches whose texgen reads it (TexGen::needsNormal).
   // GL's initial current normal is (0, 0, 1).
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
   // Unit 1's own (s, t, r, q) (glMultiTexCoord4f(GL_TEXTURE1, ...)), read
-  // only by batches with Batch::coords1 on (issue 29: the pear's sphere map
+  // only by batches with Batch::coords1 on (the pear's sphere map
   // beside its skin's (u, v)); written in the sidecar only for those.
   glm::vec4 tex1{0.0f, 0.0f, 0.0f, 1.0f};
 };
@@ -56,13 +56,13 @@ struct TextureDesc {
   // in rows k*h .. k*h+h-1), wrapR its third wrap.  No mipmaps.
   int depth = 1;
   GLenum wrapR = GL_REPEAT;
-  // --- cube maps (issue 26) ---
+  // --- cube maps ---
   // true: a GL_TEXTURE_CUBE_MAP whose six square faces (w x w, w =
   // image->width) are stacked in `image` in GL's face order +X, -X, +Y, -Y,
   // +Z, -Z (face f in rows f*w .. f*w+w-1, row 0 of a face its t = 0), each
   // uploaded to GL_TEXTURE_CUBE_MAP_POSITIVE_X + f.  No mipmaps.
   bool cube = false;
-  // --- nested frames (issue 26) ---
+  // --- nested frames ---
   // The Frame whose render `image` is (a pass a demo drew itself, e.g. a
   // texgen picture): the sidecar writes it as "rendered_from" in the
   // texture's entry, and the CPU reference recomputes that frame first and
@@ -104,7 +104,7 @@ struct Uniform {
 // alone they are world-fixed (the slide projector), with the identity they
 // are fixed to the eye (the texture "swims" as the object moves).
 //
-// The environment-mapping modes (issue 26) read the vertex's normal
+// The environment-mapping modes read the vertex's normal
 // (Vertex::normal) and position in eye coordinates, n' = (M⁻¹)ᵀ n (not
 // renormalised: GL_NORMALIZE stays off) and u = the unit vector from the
 // eye to the vertex; they take no planes:
@@ -125,7 +125,7 @@ struct TexGen {
   static constexpr unsigned S = 1, T = 2, R = 4, Q = 8;
 };
 
-// GL_COMBINE's colour function of a texture unit (issue 29): glTexEnvi
+// GL_COMBINE's colour function of a texture unit: glTexEnvi
 // GL_COMBINE_RGB, GL_SOURCEk_RGB, GL_OPERANDk_RGB.  Arg k = source k's
 // colour (GL_SRC_COLOR), 1 - it, its alpha (GL_SRC_ALPHA) or 1 - that;
 // sources GL_TEXTURE (this unit's texel), GL_PREVIOUS (the unit before's
@@ -176,7 +176,7 @@ struct Batch {
   bool clip = false;
   glm::vec4 clipPlane{0.0f};
   glm::mat4 clipModelview{1.0f};
-  // --- the alpha test and blend factors (issue 29, multitexturing) ---
+  // --- the alpha test and blend factors (multitexturing) ---
   // glEnable(GL_ALPHA_TEST); glAlphaFunc(alphaFunc, alphaRef): a fragment
   // whose alpha (after texturing) fails the comparison is discarded, so it
   // writes neither colour nor depth.  0 = the test off (GL's default).
@@ -187,7 +187,7 @@ struct Batch {
   // GL_ONE) adds the fragment to the framebuffer, (GL_DST_COLOR, GL_ZERO)
   // multiplies it in.  0, 0 = FixedState's (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).
   GLenum blendSrc = 0, blendDst = 0;
-  // --- a second texture unit (issue 29, multitexturing) ---
+  // --- a second texture unit (multitexturing) ---
   // Unit 1 textured with Frame::textures[texture1] (2D), reading the
   // (s, t, r, q) unit 0 is sent, or its own (coords1) (glMultiTexCoord4f(
   // GL_TEXTURE1, ...); no texgen on unit 1; its own texture matrix below),
@@ -271,7 +271,7 @@ struct Frame {
   int width = 0, height = 0;
   glm::vec4 clearColor{0.0f, 0.0f, 0.0f, 1.0f};
   // glHint(GL_PERSPECTIVE_CORRECTION_HINT, ...) as the book sets it.  Mesa
-  // ignores it (PLATFORM.md); Figure VI.2 detects that and says so.
+  // ignores it (docs/platform.md, "GL_PERSPECTIVE_CORRECTION_HINT"); Figure VI.2 detects that and says so.
   GLenum perspectiveHint = GL_NICEST;
   std::vector<TextureDesc> textures;
   std::vector<std::pair<std::string, Program>> programs;

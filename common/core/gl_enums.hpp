@@ -16,7 +16,7 @@ typedef unsigned int GLuint;
 #define GL_ONE 1
 #define GL_SRC_ALPHA 0x0302
 #define GL_ONE_MINUS_SRC_ALPHA 0x0303
-// The alpha test and blend factors a batch may set (issue 29: Batch::alphaFunc, blendSrc/blendDst).
+// The alpha test and blend factors a batch may set (Batch::alphaFunc, blendSrc/blendDst).
 #define GL_NEVER 0x0200
 #define GL_EQUAL 0x0202
 #define GL_LEQUAL 0x0203
@@ -61,7 +61,7 @@ typedef unsigned int GLuint;
 #define GL_DECAL 0x2101
 #define GL_BLEND 0x0BE2
 #define GL_ADD 0x0104
-// GL_COMBINE on a second texture unit (issue 29: Batch::texture1, ts::Combine).
+// GL_COMBINE on a second texture unit (Batch::texture1, ts::Combine).
 #define GL_TEXTURE 0x1702
 #define GL_COMBINE 0x8570
 #define GL_ADD_SIGNED 0x8574

@@ -1,5 +1,5 @@
 // common/core/multitexture_textures.hpp — the multitexture demo's textures
-// (issue 29) as named generators, so that a figure's sidecar alone remakes
+// as named generators, so that a figure's sidecar alone remakes
 // them (reference/sidecar_reader.cpp's remakeTexture): the name and params
 // of each TextureDesc say how it was made.  Images are indexed as GL uploads
 // them: texel (i, j), row j = 0 at t = 0 (the bottom).

@@ -91,7 +91,7 @@ void emit(std::string& out, const Json& v, const std::string& indent) {
   }
 }
 
-// The environment-mapping texgen modes (issue 26): the mode and the
+// The environment-mapping texgen modes: the mode and the
 // coordinates it generates; no planes (they read the normal).
 Json normalTexGenJson(const TexGen& g) {
   Json coords = Json::array();
@@ -196,12 +196,12 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
       textures.back()["height"] = t.image ? t.image->height / t.depth : 0;
       textures.back()["wrap_r"] = glEnumName(t.wrapR);
     }
-    if (t.renderedFrom) {  // a nested frame (issue 26): the frame this texture is the render of
+    if (t.renderedFrom) {  // a nested frame: the frame this texture is the render of
       Json nested;
       frameInto(nested, *t.renderedFrom, false);
       textures.back()["rendered_from"] = nested;
     }
-    if (t.cube) {  // a cube map (issue 26): only then; height is a face's
+    if (t.cube) {  // a cube map: only then; height is a face's
       textures.back()["cube"] = true;
       textures.back()["height"] = t.image ? t.image->height / 6 : 0;
     }
@@ -220,8 +220,8 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
       for (const Vertex& x : b.vertices) {
         Json v = {{"pos", vec(x.pos)}, {"tex", vec(x.tex)}, {"color", vec(x.color)}};
         if (b.colorSum) v["secondary"] = vec(x.secondary);
-        if (b.texGen.needsNormal()) v["normal"] = vec(x.normal);  // issue 26: only where texgen reads it
-        if (b.texture1 >= 0 && b.coords1) v["tex1"] = vec(x.tex1);  // issue 29: unit 1's own coordinates
+        if (b.texGen.needsNormal()) v["normal"] = vec(x.normal);  // only where texgen reads it
+        if (b.texture1 >= 0 && b.coords1) v["tex1"] = vec(x.tex1);  // unit 1's own coordinates
         vertices.push_back(v);
       }
       Json bj = {{"role", b.role},
@@ -258,7 +258,7 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
         bj["tex_gen"] = tg;
       }
       if (b.clip) bj["clip_plane"] = vec(b.clipPlane), bj["clip_plane_modelview"] = mat(b.clipModelview);
-      // Issue 29, written only when set: the alpha test, the blend's colour factors.
+      // Written only when set (absent reads as off): the alpha test, the blend's colour factors.
       if (b.alphaTest()) bj["alpha_test"] = {{"func", glEnumName(b.alphaFunc)}, {"ref", num(b.alphaRef)}};
       if (b.blendFactors()) bj["blend_func"] = {glEnumName(b.blendSrc), glEnumName(b.blendDst)};
       if (b.depthFunc) bj["depth_func"] = glEnumName(b.depthFunc);

@@ -3,7 +3,7 @@
 // Why a loader instead of linking libGL or libOSMesa:
 //   libOSMesa.so exports every GL entry point and dispatches to OSMesa
 //   contexts only; glvnd's libGL.so.1 exports them too and dispatches to
-//   GLX/EGL contexts only (see ../shared/PLATFORM.md). A program whose GL
+//   GLX/EGL contexts only (docs/platform.md, "How GL calls bind"). A program whose GL
 //   calls bind at link time to one of them cannot use the other's contexts,
 //   so one binary could not offer --backend osmesa|egl|window.  Instead no
 //   executable links a GL library: every GL function is a pointer fetched at

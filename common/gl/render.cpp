@@ -358,7 +358,7 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
     }
     for (const Batch& b : p.batches) {
       const bool tex3D = b.texture >= 0 && f.textures.at(size_t(b.texture)).depth > 1;
-      const bool texCube = b.texture >= 0 && f.textures.at(size_t(b.texture)).cube;  // issue 26
+      const bool texCube = b.texture >= 0 && f.textures.at(size_t(b.texture)).cube;  // a cube map binds GL_TEXTURE_CUBE_MAP
       if (b.texture >= 0) {
         glEnable(tex3D ? GL_TEXTURE_3D : texCube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D);
         if (tex3D || texCube) glDisable(GL_TEXTURE_2D);
@@ -427,18 +427,18 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         glEnable(GL_BLEND);
         // Colour blends over what is there; alpha stays the clear's (opaque):
         // a figure must not let the page show through where it blends.
-        if (b.blendFactors())  // issue 29: the batch's colour factors (adding, multiplying passes)
+        if (b.blendFactors())  // the batch's colour factors (adding, multiplying passes)
           glBlendFuncSeparate(b.blendSrc, b.blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
         else
           glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
       } else {
         glDisable(GL_BLEND);
       }
-      if (b.alphaTest()) {  // issue 29: discarded fragments write neither colour nor depth
+      if (b.alphaTest()) {  // discarded fragments write neither colour nor depth
         glEnable(GL_ALPHA_TEST);
         glAlphaFunc(b.alphaFunc, b.alphaRef);
       }
-      // Issue 29: unit 1's texture and environment (GL_COMBINE's function,
+      // Unit 1's texture and environment (GL_COMBINE's function,
       // sources and operands), set on unit 1 and back to unit 0.
       const bool unit1 = b.texture1 >= 0;
       if (unit1) {
@@ -460,7 +460,7 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         }
         glActiveTexture(GL_TEXTURE0);
       }
-      if (b.depthFunc) glDepthFunc(b.depthFunc);  // issue 29: GL_LEQUAL for a second pass; back after glEnd
+      if (b.depthFunc) glDepthFunc(b.depthFunc);  // GL_LEQUAL for a second pass; back after glEnd
       glLineWidth(b.lineWidth);
       glPointSize(b.pointSize);
       // The book's way: one glTexCoord per glVertex.  (s, t, r, q) are all
@@ -471,7 +471,7 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
         if (b.colorSum) glSecondaryColor3f(v.secondary.r, v.secondary.g, v.secondary.b);
         glTexCoord4f(v.tex.x, v.tex.y, v.tex.z, v.tex.w);
         if (b.texGen.needsNormal()) glNormal3f(v.normal.x, v.normal.y, v.normal.z);
-        if (unit1) {  // issue 29: unit 0's coordinates, or its own (Batch::coords1)
+        if (unit1) {  // unit 0's coordinates, or its own (Batch::coords1)
           const glm::vec4& u = b.coords1 ? v.tex1 : v.tex;
           glMultiTexCoord4f(GL_TEXTURE1, u.x, u.y, u.z, u.w);
         }

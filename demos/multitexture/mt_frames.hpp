@@ -1,5 +1,5 @@
-// demos/multitexture/mt_frames.hpp — the figures' pictures as Frames (issue
-// 29): the passes described as data, so the figure draws them
+// demos/multitexture/mt_frames.hpp — the figures' pictures as Frames: the
+// passes described as data, so the figure draws them
 // (common/gl/render.cpp) and the CPU reference recomputes them from the
 // sidecar, every texture a named generator (common/core/
 // multitexture_textures.hpp).  The cutout tree (the alpha test), the cross

@@ -23,7 +23,7 @@
 //   glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, 512, 512, 0, 131072, blocks);
 //   glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED_IMAGE_SIZE, &size);
 //   glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);   // GL's decode, shown
-// (GL_EXT_texture_compression_s3tc: llvmpipe and softpipe have it, ../shared/PLATFORM.md;
+// (GL_EXT_texture_compression_s3tc: llvmpipe and softpipe have it, docs/platform.md "Extensions";
 // without it the demo says so and shows the CPU decode.)  The pictures are
 // then drawn as plain textures (book_figures/dxt1_blocks.gl.txt).
 //

@@ -19,11 +19,11 @@
 //                         --animate --mode <mode> --frames N` (the demo's
 //                         default window; every frame draws the mode while
 //                         the view turns, at the live view's render scale), as
-//                         window_loop above; 20 frames per second is the
-//                         bar issue 13.7 sets for every mode but M4/M5
+//                         window_loop above; 20 frames per second (a turning view
+//                         still reads as motion) is the bar for every mode but M4/M5
 //
 //   <demo>/responsiveness
-//                         never frozen (issue 13.3): the demo at its default
+//                         never frozen: the demo at its default
 //                         window size, every key of its options typed one a
 //                         second (TS_TEST_KEY_INTERVAL_MS) while the window
 //                         logs its frames (TS_TEST_FRAME_LOG): the time from
@@ -133,7 +133,7 @@ void benchWindowDraw(benchmark::State& st, const Figure& f) {
 // inspection of that one pixel (no re-rasterizing of the frame), its card,
 // its footprint mapped into the figure's texture-space views and, for a
 // textured pixel, the 256 x 256 footprint cell rendered offscreen.
-// Issue 24.6's bar: within one frame, under 30 ms.  The pixel: the figure's
+// The bar: within one frame, under 30 ms, so a pick answers before the next frame.  The pixel: the figure's
 // centre (a textured pixel in most figures).
 void benchInspectPick(benchmark::State& st, const Figure& f) {
   try {
@@ -248,7 +248,7 @@ void benchLiveLoop(benchmark::State& st, const std::string& mode) {
   }
 }
 
-// Idle is idle (issue 13.4): a demo's window left alone for 5 s after it has
+// Idle is idle: a demo's window left alone for 5 s after it has
 // started (2 s), CPU seconds it used meanwhile, from /proc/<pid>/stat.
 double cpuSeconds(pid_t pid) {
   std::FILE* f = std::fopen(("/proc/" + std::to_string(pid) + "/stat").c_str(), "r");

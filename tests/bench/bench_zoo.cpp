@@ -1,4 +1,4 @@
-// bench_zoo — the filter zoo's exact reference (issue 25, "Speed"): the
+// bench_zoo — the filter zoo's exact reference ("Speed"): the
 // area integral over every pixel's preimage of the slanted plane at 800 x 600
 // must take at most 2 s on this machine, and its cost must grow with the
 // footprint's texel count, not with the texture's size.  No GL.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # tests/cli/export_c_test.sh FIRST_RUN RELIABILITY_TOOL DEMO_BIN_DIR — every
-# book figure exported as a standalone C program (--export-c, issue 14.4):
+# book figure exported as a standalone C program (--export-c):
 #   1. each builds with the system C compiler both ways, warnings as errors:
 #        cc -std=c99 -Wall -Werror FILE.c -o fig -lglfw -lGL -lm          (a window)
 #        cc -std=c99 -Wall -Werror -DOFFSCREEN FILE.c -o fig -lOSMesa -lm (no GLFW, no libGL)

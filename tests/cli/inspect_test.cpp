@@ -1,5 +1,5 @@
 // tests/cli/inspect_test.cpp — --inspect X,Y and --footprints as a user meets
-// them (issue 24.2, 24.5): the sidecar's "inspect" objects and their fields,
+// them: the sidecar's "inspect" objects and their fields,
 // the closed form of a magnified texture, gl_rgba as the PNG's own pixel, the
 // texel weights, and bad input (one line, exit 2, no file).  The demo runs
 // in this process through runDemo, exactly as its main() does.

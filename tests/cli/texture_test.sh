@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # tests/cli/texture_test.sh BIN_DIR CORPUS — `--texture FILE` in every demo
-# that maps a picture (issue 13.6), as a student meets it:
+# that maps a picture, as a student meets it:
 #   * --help shows `--texture FILE` and names the formats (PNG, JPEG, BMP);
 #     no file option shows TEXT;
 #   * a small PNG, a JPEG and a 32-bit BMP with alpha each render (exit 0)

@@ -146,7 +146,7 @@ TEST(FilterZoo, MethodsAgainstTheExactIntegral) {
   }
 }
 
-// Claim (the expected shape): ripmap and SAT lose as the texture
+// Claim (the shape box filters predict): ripmap and SAT lose as the texture
 // turns from 0 to 45 degrees, the probe line and EWA stay nearly flat.
 TEST(FilterZoo, AzimuthShape) {
   EXPECT_GT(rms("sat", "45"), 1.2 * rms("sat", "0"));
@@ -221,7 +221,7 @@ TEST(FilterZoo, MipKernels) {
           << sharp << " vs " << soft;
 }
 
-// Claim (item 9, seed 001 ¶13): a positive LOD bias blurs (the far field's
+// Claim (seed 001 ¶13): a positive LOD bias blurs (the far field's
 // error grows) and flickers less on a moving plane; a negative one sharpens
 // and flickers more.
 TEST(FilterZoo, LodBias) {

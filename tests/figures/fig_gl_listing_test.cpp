@@ -1,4 +1,4 @@
-// tests/figures/fig_gl_listing_test.cpp — the OpenGL listings (issue 14.3):
+// tests/figures/fig_gl_listing_test.cpp — the OpenGL listings:
 // a listing is the calls that drew the picture, so it changes exactly where
 // the state changes, it holds the call a figure is about, and every line of
 // every book figure's listing reads back as C with enums the GL headers know.

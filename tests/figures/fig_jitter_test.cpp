@@ -444,7 +444,7 @@ TEST(VI7Claims, JitterTradesAliasingForNoise) {
 // points": for each pattern the RMS error falls strictly from 1 to 4 to 9 to
 // 16 samples per pixel, and per-pixel jitter's noise with it; 16 jittered
 // samples leave under a third of one sample's error.
-// Claim (Buss, issue 25 item 10): pure random sampling clusters: n x n points
+// Claim (Buss): pure random sampling clusters: n x n points
 // anywhere in the pixel (the demo's mode "random", one GL shader pass like
 // jitter-pixel) leave more error than one point in each of the n x n
 // subpixels, at 9 samples.  The margin comes from the spread over seeds: over
@@ -514,7 +514,7 @@ TEST(VI7GL, RandomModeSamplesWhereTheCpuSays) {
   }
 }
 
-// Claim (issue 25, item 10b; Buss: supersampling "delays aliasing until the
+// Claim (Buss: supersampling "delays aliasing until the
 // texture resolution is about 3x the screen's"): on a zone plate the alias —
 // the render's error against the exact box filter, as a fraction of the box
 // filtered signal, read sample by sample from the CPU model of the patterns

@@ -10,7 +10,7 @@
 //     of GL_LINEAR_MIPMAP_LINEAR, and it is the level switch that makes it;
 //   * against a supersampled reference the far field's error falls from
 //     GL_NEAREST to trilinear to anisotropic.
-// Every filtering number is printed with the renderer string (PLATFORM.md:
+// Every filtering number is printed with the renderer string (docs/platform.md:
 // llvmpipe's anisotropic filter is EWA on one level; softpipe's LOD and
 // llvmpipe's differ).
 #include <gtest/gtest.h>

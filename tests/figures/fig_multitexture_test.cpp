@@ -110,7 +110,7 @@ TEST_F(MultitextureFigure, AbPlusCd) {
   EXPECT_GT(value(ms, "abcd_rms[framebuffer_only]"), 5.0);
 }
 
-// Claim: this Mesa has GL_ATI_texture_env_combine3 (../shared/PLATFORM.md);
+// Claim: this Mesa has GL_ATI_texture_env_combine3 (docs/platform.md);
 // the pear t_d i_diff + t_g t_r takes one pass with GL_MODULATE_ADD_ATI and
 // two without, the same within the two passes' extra rounding.
 TEST_F(MultitextureFigure, PearCombine3) {

@@ -283,7 +283,7 @@ TEST(VI2, SmallRatioGivesSmallErrorNegativeControl) {
 
 // Claim: the demo detects whether the driver honours the hint by rendering
 // both and comparing, and says so in the figure.  Mesa (llvmpipe and
-// softpipe) ignores it (PLATFORM.md): 0 pixels differ.
+// softpipe) ignores it (docs/platform.md): 0 pixels differ.
 TEST(VI2, HintDetectionIsReportedOnScreen) {
   Demo demo("perspective_correction", {"--tilt", "60", "--distance", "1.5"});
   ts::Measurements m = demo.measure();

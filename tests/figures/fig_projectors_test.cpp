@@ -3,7 +3,7 @@
 // against EYE_LINEAR, the slide projector, the solid texture, the cube.
 // Every number the demo prints comes from texel-index renders; here each is
 // held against its closed form computed independently (proj_math.hpp's
-// formulas or the trigonometry the issue names), with a tolerance from the
+// formulas or the trigonometry of the wraps' definitions), with a tolerance from the
 // texel size of the render that measured it.
 #include <gtest/gtest.h>
 

@@ -86,7 +86,7 @@ ts::Measurements TextureCompressionFigure::ms;
 // Claim (seed 001): a 512^2 DXT1 texture takes 131,072 bytes, the memory of a
 // 256^2 texture at 16 bits: 4 bits a texel, 4:1 and 6:1.
 TEST_F(TextureCompressionFigure, SizeAndRatios) {
-  ASSERT_EQ(value(ms, "s3tc_supported"), 1.0) << "this Mesa offers S3TC (../shared/PLATFORM.md)";
+  ASSERT_EQ(value(ms, "s3tc_supported"), 1.0) << "this Mesa offers S3TC (docs/platform.md, Extensions)";
   EXPECT_EQ(value(ms, "dxt1_bytes[512]"), 512.0 * 512.0 / 16.0 * 8.0);  // 64 bits per 4x4 block
   EXPECT_EQ(value(ms, "dxt1_bytes[512]"), 256.0 * 256.0 * 2.0);
   EXPECT_EQ(value(ms, "bits_per_texel"), 4.0);

@@ -398,7 +398,7 @@ TEST(VI1, TextureFileIsMappedUpright) {
   }
 }
 
-// Claim (issue 13.6): one orientation everywhere.  textures/ holds its files
+// Claim: one orientation everywhere.  textures/ holds its files
 // with the top row at t = 1, so `--texture textures/labelled_grid_512_8.png`
 // shows A1 at the bottom left, reading the right way: the square (identity
 // corners) matches the built-in grid cell by cell (texel row 0 = t = 0), and

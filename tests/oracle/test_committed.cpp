@@ -65,7 +65,8 @@ TEST(CommittedFigures, EachPngIsLegalForItsSidecar) {
 namespace {
 // Claim: book figures are opaque.  Blending (seam patches, label boxes) must
 // not blend into the framebuffer's alpha: a viewer would show the page
-// through a figure (vi4_seam_patch once had 27,051 pixels of alpha 192).
+// through a figure (a half-transparent seam patch blended into alpha would
+// leave tens of thousands of pixels at alpha 192).
 TEST(CommittedFigures, AreOpaque) {
   namespace fs = std::filesystem;
   fs::path dir = fs::path(TS_SOURCE_DIR) / "book_figures";

@@ -121,7 +121,7 @@ TEST_P(Figure, GLRenderIsALegalResultWithoutLabels) {
   EXPECT_GT(r.checked, r.pixels / 2) << r.summary();
 }
 
-// Issue 24: the pixel inspector (--inspect) tells the reference's colour at
+// The pixel inspector (--inspect) tells the reference's colour at
 // any pixel without drawing the frame.  At 50 random pixels of every figure
 // it must be the reference image's pixel (within an 8-bit step: the image
 // rounds once more), and GL's pixel there is legal for that reference (the
@@ -273,7 +273,7 @@ TEST(FigureList, HasTheQuadDistortionFigures) {
 }
 }  // namespace
 
-// The DXT1 figures' decode (issue 29): the sidecar remakes it with dxt1.hpp's
+// The DXT1 figures' decode: the sidecar remakes it with dxt1.hpp's
 // integer palette, GL decodes with its own rounding of the extension's
 // fractions (TextureDesc::texelSlack = 1 level).  Described as the picture
 // before compression, the same panel fails: the check sees the compression.

@@ -1,5 +1,5 @@
-// The oracle against OpenGL on glTexGen's environment-mapping modes (issue
-// 26): a sphere of glNormal3f + glVertex3f under GL_SPHERE_MAP texgen on a
+// The oracle against OpenGL on glTexGen's environment-mapping modes: a
+// sphere of glNormal3f + glVertex3f under GL_SPHERE_MAP texgen on a
 // 2D texture, and under GL_REFLECTION_MAP / GL_NORMAL_MAP texgen on a cube
 // map (six faces of distinct texels, GL_NEAREST and GL_LINEAR), with a
 // texture matrix turning eye space.  The CPU reference computes (s, t[, r])
@@ -259,7 +259,7 @@ TEST(GLNestedFrame, APanelShowingATexgenRender) {
   EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
 }
 
-// The environment-mapping figures' texgen pictures (issue 26): the compare
+// The environment-mapping figures' texgen pictures: the compare
 // view's cube-map and sphere-map panels are nested frames (GL_REFLECTION_MAP
 // with the texture matrix on an "environment_map" cube, GL_SPHERE_MAP on the
 // 2D map), and the picture GL drew of each is a legal result of the frame the

@@ -1,4 +1,4 @@
-// The oracle against OpenGL on the multitexturing state (issue 29): the
+// The oracle against OpenGL on the multitexturing state: the
 // alpha test (Batch::alphaFunc) and a batch's own blend factors
 // (Batch::blendSrc / blendDst).  A cutout texture (alpha 0 outside a disc,
 // 255 inside, a ring of 100 and one of 160 around it) on a quad drawn
@@ -142,7 +142,7 @@ TEST(GLBlendFactors, AddAndMultiplyAgainstTheReferencePicture) {
 }
 }  // namespace
 
-// ---- the second texture unit (issue 29) ---------------------------------
+// ---- the second texture unit --------------------------------------------
 namespace {
 // n x n texels of one hue, varying per texel, alpha varying too.
 ts::TextureDesc tinted(int n, glm::vec3 hue, GLenum filter, int seed) {

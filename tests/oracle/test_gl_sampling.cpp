@@ -214,7 +214,7 @@ TEST(GLRasterization, CentreEdgesAreLegalOnEveryRasterizer) {
 }
 }  // namespace
 
-// Issue 16: GL_CLAMP (the compatibility profile's clamp, border blended in
+// GL_CLAMP (the compatibility profile's clamp, border blended in
 // by GL_LINEAR), with pixel centres also exactly at integer s: each column
 // of the quad has one constant s, from -2 to 3 in steps of 1/4.
 TEST(GLSampling, LegacyClampAndIntegerCoordinates) {

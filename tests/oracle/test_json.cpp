@@ -328,7 +328,7 @@ TEST(Sidecar, UnknownTextureNameIsAClearError) {
 }
 }  // namespace
 
-// Issue 29: the alpha test, a batch's blend factors and unit 1 with
+// The alpha test, a batch's blend factors and unit 1 with
 // GL_COMBINE survive the round trip; a batch without them writes none of
 // their keys (so older sidecars stay byte-identical).
 TEST(Sidecar, RoundTripOfTheMultitextureState) {
@@ -394,7 +394,7 @@ TEST(Sidecar, RoundTripOfTheMultitextureState) {
   EXPECT_EQ(count("\"blend_func\""), 2u);
 }
 
-// The DXT1 pictures' generator (issue 29): every param is checked, and only
+// The DXT1 pictures' generator: every param is checked, and only
 // GL's decode carries the rounding freedom.
 TEST(Sidecar, Dxt1PictureGenerator) {
   using P = std::vector<std::pair<std::string, std::string>>;

@@ -117,7 +117,7 @@ ts::TextureDesc planeTexture() {
 // The same plane with every vertex projected on the CPU and sent with w = 1:
 // GL then interpolates (s, t) linearly in screen space — the "without
 // hyperbolic interpolation" picture (GL_PERSPECTIVE_CORRECTION_HINT is
-// ignored by Mesa, PLATFORM.md).
+// ignored by Mesa, docs/platform.md).
 ts::Frame preProjected(const ts::Frame& f) {
   ts::Frame g = f;
   for (ts::Panel& p : g.panels) {

@@ -226,7 +226,7 @@ TEST(Legal, BlendBoxes) {
   EXPECT_NEAR(out[0].lo[0], 0.25, 1e-6);
   EXPECT_NEAR(out[0].hi[0], 0.5, 1e-6);
 }
-// At integer coordinates, where the wrap modes part (issue 16): u = s N is a
+// At integer coordinates, where the wrap modes part: u = s N is a
 // texel boundary and GL_NEAREST takes floor(u), wrapped.  The 2x2 `tiny`:
 // row t = 0.25 is black (i = 0), white (i = 1); the border is green.
 TEST(Wrap, NearestAtIntegerCoordinates) {

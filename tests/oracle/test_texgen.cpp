@@ -90,7 +90,7 @@ TEST(TexGen, SidecarRoundTripsTexGenAndClipPlane) {
   EXPECT_EQ(r.clipPlane, b.clipPlane);
   EXPECT_EQ(r.clipModelview, b.clipModelview);
 }
-// Issue 26: the environment-mapping modes, by the GL 2.1 §2.11.4 formulas
+// The environment-mapping modes, by the GL 2.1 §2.11.4 formulas
 // worked by hand.  A vertex at eye (1, 0, -1) with normal (0, 0, 1) (the
 // modelview a translation, which leaves normals alone): u = (1, 0, -1)/√2,
 // n·u = -1/√2, r = u + √2 n = (1/√2, 0, 1/√2).

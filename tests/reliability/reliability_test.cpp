@@ -1,4 +1,4 @@
-// tests/reliability/reliability_test.cpp — issue #7: nothing a user feeds the
+// tests/reliability/reliability_test.cpp — nothing a user feeds the
 // suite may crash it.  Claims, each a test below:
 //   * the committed corpus is exactly what corpus_gen.hpp makes;
 //   * every good file (PNG: grey 1/4/8/16-bit, grey+alpha, palette with tRNS,

@@ -1,5 +1,5 @@
 // tests/unit/inspect_pick_test.cpp — what the window's inspect mode draws and
-// marks for a picked pixel (issue 24.1), on the test context:
+// marks for a picked pixel, on the test context:
 //   - the footprint in the demo's own texture-space view lands on the texels
 //     the pixel reads (common/app/inspect_view.hpp, footprintInTextureViews);
 //   - the GL pane's cyan marks are the calls that set the picked batch's

@@ -160,7 +160,7 @@ TEST(OctantOracle, MappingFromTheCorners) {
   EXPECT_NEAR(m.D, kPi / 2, 1e-15);
 }
 
-// Example 1: the line u = 1/4, to 3 decimals (the corrected table),
+// Example 1: the line u = 1/4, to 3 decimals (seed 004's table, corrected),
 // and exactly against radicals at w = 1/2 (θ = π/8, φ = 3π/8).
 TEST(OctantOracle, ForwardTableToThreeDecimals) {
   const Coeffs m = solveMapping();

@@ -2,7 +2,7 @@
 // (proj_math.hpp): seed 002's wraps as printed against corrected, box
 // mapping's stretch, the slide projector's planes, the cube's vertices.
 // Expected values are computed here independently (by hand or with the
-// library's trigonometry on the numbers the issue names).  No GL.
+// library's trigonometry on the numbers the demo prints).  No GL.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // tests/unit/zoo_test.cpp — the filter zoo's mathematics
-// (demos/filter_zoo/zoo_math.hpp) without GL: every closed form of issue 25
+// (demos/filter_zoo/zoo_math.hpp) without GL: every closed form the zoo draws
 // against a computation of this test's own, exactly, and the orderings of
 // the CPU methods against the exact area integral with their margins.
 // The GL methods' numbers are the figure test's (tests/figures/fig_filter_zoo_test.cpp).
@@ -339,7 +339,7 @@ const Table& table() {
 }
 double rms(const std::string& m, const char* az) { return table().rms.at(m + "@" + az); }
 
-// Claim (the issue's expected shape, on the checkerboard's far field, LOD
+// Claim (the shape box filters predict, on the checkerboard's far field, LOD
 // 1.5..5): ripmap and SAT are close to exact where the footprint runs along
 // the texture's axes and worse at 45 degrees, where their box grows (SAT:
 // the bounding box); the probe line and EWA follow the footprint's turn and

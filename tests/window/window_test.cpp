@@ -32,7 +32,7 @@
 //                                 screen (ImageMagick's import) shows its
 //                                 marked lines in the pane 2 s after the key,
 //                                 across its measurement's re-record, none
-//                                 before it or 6 s after (issue 24).
+//                                 before it or 6 s after.
 //   <id>.inspect_mode_clicks_a_pixel   at --size 640x480 and 1280x720, real X
 //                                 events (xdotool): the inspect key (i, or I
 //                                 where an option takes i), a click on the
@@ -44,7 +44,7 @@
 //                                 and a finite lambda where it has one; F12's
 //                                 command carries --inspect X,Y and, run with
 //                                 --png, its card names the same panel and
-//                                 batch; q ends the demo with 0 (issue 24).
+//                                 batch; q ends the demo with 0.
 //   <id>.resize_sequence          the window resized to 640x480, 700x1000 and
 //                                 1280x720 in turn: at each size the figure
 //                                 is the --png render at its new size.
@@ -772,7 +772,7 @@ void mouseLight(const std::string& id) {
   EXPECT_GT(d.overSmall, long(gWidth) * gHeight / 100) << "moving the light did not change the picture";
 }
 
-// The mouse (issue 13.5): a left drag and the wheel, fed through the
+// The mouse: a left drag and the wheel, fed through the
 // window's own mouse handlers (TS_TEST_MOUSE), turn --yaw/--pitch/--zoom;
 // the picture changes; F12's printed command (the state's flags) remakes the
 // same picture with --png.  In a demo without those options a drag changes
@@ -847,7 +847,7 @@ void dropFile(const std::string& id) {
   EXPECT_EQ(lines.back(), want.opts.stateText()) << "the dropped file is not the texture";
 }
 
-// A resize sequence (issue 13.2): the window opened at the tests' size is
+// A resize sequence: the window opened at the tests' size is
 // resized to a small landscape, a portrait and a laptop's size in turn
 // (TS_TEST_RESIZE); at each size the figure left of the side panel must be
 // the --png render at the figure's size then (so the layout and the numbers
@@ -941,7 +941,7 @@ void roundTrip(const std::string& id, const ts::Options& state, const std::strin
 }
 
 
-// --- never frozen (issue 13.3) ----------------------------------------------
+// --- never frozen -----------------------------------------------------------
 // The window's test hooks (common/app/test_hooks.hpp): TS_TEST_SLOW_MEASURE_MS
 // and _FRAMES make every measurement of the worker last at least that long
 // and that many window frames (in 10 ms steps that report progress and stop
@@ -1085,7 +1085,7 @@ void closeDuringMeasurement(const std::string& id) {
   EXPECT_EQ(win.err.find("LeakSanitizer"), std::string::npos) << win.err;
 }
 
-// --- the GL pane's marks under real X key events (issue 24) ------------------
+// --- the GL pane's marks under real X key events -----------------------------
 // The demo is started as a student starts it (no --keys, its own size) under
 // an Xvfb of its own; xdotool types real X key events into its window and
 // ImageMagick's import reads the screen back, in which the pane's marked
@@ -1522,7 +1522,7 @@ void glPaneMarksHold(const std::string& id, const std::vector<std::pair<char, st
   }
 }
 
-// --- the inspect mode under real X events (issue 24 item 4) -------------------
+// --- the inspect mode under real X events -------------------------------------
 // The demo started as a student starts it, at a size of its own (--size),
 // under an Xvfb of its own large enough for it; xdotool types the inspect key
 // and clicks a textured pixel near the figure's centre; the card printed for
@@ -1879,7 +1879,7 @@ void registerAll() {
         paneBesideFigure(id, std::string("l") + first, f.opts, "");
       });
     }
-    // The issue's two examples: f in quad_distortion changes the filter
+    // Two examples a student meets first: f in quad_distortion changes the filter
     // lines; c in cylinder_seam the seam's s from 0.1 to 1.1.
     if (id == "quad_distortion")
       fullCase(id, "gl_pane_shows_the_filter_change", [id] {
@@ -1909,7 +1909,7 @@ void registerAll() {
         paneBesideFigure(id, "le", f.opts, "glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);",
                          {"TS_TEST_KEY_WHEN=measured"});
       });
-    // Issue 24: the marks of a key hold their 4 s across the re-record its
+    // The marks of a key hold their 4 s across the re-record its
     // measurement brings, with real X key events.  wrap_modes: after its
     // first key (v: the single view), s marks the GL_TEXTURE_WRAP_S line.
     if (!keys.empty()) {
@@ -1917,7 +1917,7 @@ void registerAll() {
       if (id == "wrap_modes") extra.push_back({'s', "GL_TEXTURE_WRAP_S"});
       fullCase(id, "gl_pane_marks_hold_with_real_keys", [id, extra] { glPaneMarksHold(id, extra); });
     }
-    // Issue 24: a pixel picked with the mouse at 640x480 and 1280x720, its card read.
+    // A pixel picked with the mouse at 640x480 and 1280x720, its card read.
     fullCase(id, "inspect_mode_clicks_a_pixel", [id] { inspectModeClicks(id); });
     fullCase(id, "resize_sequence", [id] { resizeSequence(id); });
     fullCase(id, "reset_equals_arrow", [id] { resetEqualsArrow(id); });
