@@ -1,5 +1,5 @@
 // demos/environment_mapping/env_views.hpp — the figures' pictures of the
-// mirror object as ts::Frames (issue 26): each picture panel shows the render
+// mirror object as ts::Frames, so that each picture panel shows the render
 // of a nested frame (TextureDesc::renderedFrom), which the sidecar writes and
 // the CPU reference recomputes before it checks the figure.
 //

@@ -25,7 +25,7 @@
 //   m  mode: one | regular | jitter-global | jitter-pixel | reference | random
 //      (random: n x n points anywhere in the pixel, one shader pass like jitter-pixel; they cluster)
 //   + / -  samples per side n (1..4)      s / S  seed up / down
-//   v  view: mode (one image large) | compare (the figure) | plot (error vs n) | zone (issue 25, 10b: a
+//   v  view: mode (one image large) | compare (the figure) | plot (error vs n) | zone (a
 //      zone plate rendered with 1, n x n regular and n x n jittered samples; where its alias sets in)
 //   e  show the image's error against the reference instead of the image
 // Flag only: --average auto|accum|fbo (how the passes are averaged).
@@ -248,13 +248,13 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
                    "RMS of the error its 24 neighbours' errors predict: interference, moire"});
     out.push_back({"noise" + k, row.res->stats.noise, "RMS of the unpredictable rest: grain"});
   }
-  // Issue 25, item 10: pure random sampling against jittered (jitter_math.hpp, the CPU model).
+  // Pure random sampling against jittered (jitter_math.hpp, the CPU model).
   for (Pattern p : {Pattern::Random, Pattern::JitterPixel})
     out.push_back({std::string("rms_cpu[") + (p == Pattern::Random ? "random" : "jitter_pixel") + "_" + n + "]",
                    jitter::cpuRms(p, side_, uint32_t(seed_), reference_),
                    p == Pattern::Random ? "RMS error, n x n points anywhere in the pixel (pure random: they cluster), CPU"
                                         : "RMS error, n x n jittered per pixel, the same CPU model"});
-  jitter::zoneMeasure(r, out, side_, uint32_t(seed_), &found_.zone);  // issue 25, item 10b: the zone plate's aliasing onset
+  jitter::zoneMeasure(r, out, side_, uint32_t(seed_), &found_.zone);  // the zone plate's aliasing onset
   if (view_ == kViewPlot)
     for (int kind = 0; kind < 3; ++kind)
       for (int side = 1; side <= kMaxSide; ++side) {

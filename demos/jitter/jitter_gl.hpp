@@ -121,7 +121,7 @@ void main() {
 })";
 }
 
-// Pure random sampling (issue 25): the same one pass, but the n x n points
+// Pure random sampling (the contrast Buss VI.1.4 draws): the same one pass, but the n x n points
 // fall anywhere in the pixel (no strata), keyed by the seed xor
 // jitter::kRandomSalt — jitter::randomIn, bit for bit.  They can cluster.
 inline std::string pixelRandomFS() {
@@ -233,7 +233,7 @@ inline ts::Frame pixelJitterPass(const Camera& c, int n, uint32_t seed, int show
 }
 
 // ------------------------------------------------------------ the zone plate
-// Issue 25, item 10b, read from GL renders (jitter_zone.hpp has the CPU model
+// Where aliasing sets in, read from GL renders (jitter_zone.hpp has the CPU model
 // and the measure): bands of zone::kGlBandRows rows, band b at frequency
 // (b + 1) zone::kStep cycles per pixel, each row the signal
 // cos(2 pi f x + phase) across zone::kGlWidth columns, sampled by one pass of

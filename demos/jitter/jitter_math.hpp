@@ -144,7 +144,7 @@ inline glm::dvec2 regular(int n, int k) {
   return {(k % n + 0.5) / n, (k / n + 0.5) / n};
 }
 
-// Pure random sampling (issue 25, item 10): n x n points anywhere in the
+// Pure random sampling (Buss VI.1.4 contrasts it with jittering): n x n points anywhere in the
 // pixel, drawn independently per pixel, no strata — so they can cluster
 // (Buss: "pure random sampling clusters"), and at 9 samples its error
 // exceeds jittered sampling's.  The demo's mode "random" renders it with GL

@@ -25,7 +25,7 @@ namespace jitter::views {
 using jitter::Pattern;
 using ts::layout::fmt;
 
-// random: n x n points anywhere in the pixel, drawn anew per pixel (issue 25: "pure random sampling clusters").
+// random: n x n points anywhere in the pixel, drawn anew per pixel (it clusters: no strata).
 enum Mode { kOne, kRegular, kJitterGlobal, kJitterPixel, kReference, kRandom, kModes };
 const char* const kModeNames[] = {"one", "regular", "jitter-global", "jitter-pixel", "reference", "random"};
 constexpr int kMaxSide = 4;

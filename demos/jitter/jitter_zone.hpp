@@ -1,5 +1,5 @@
 // demos/jitter/jitter_zone.hpp — where aliasing sets in on a zone plate
-// (issue 25, item 10b): "about 0.5 cycles/pixel with 1 sample and about 1.5
+// (the expected onsets: "about 0.5 cycles/pixel with 1 sample and about 1.5
 // with 3 x 3 regular samples" (Buss: supersampling "delays aliasing until the
 // texture resolution is about 3x the screen's").  No OpenGL here: the CPU
 // model of the demo's sample patterns (jitter::samplePos), read sample by
