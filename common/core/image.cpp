@@ -235,6 +235,12 @@ void writePng(const std::string& path, const Image& img) {
 std::vector<uint8_t> readFileBytes(const std::string& path, size_t limit) {
   // O_NONBLOCK: opening a FIFO must not wait for a writer; the fstat below
   // refuses anything that is not a regular file before reading a byte.
+#ifdef _WIN32
+  // Windows refuses to open a folder (EACCES): say what it is, as below.
+  struct stat dir;
+  if (::stat(path.c_str(), &dir) == 0 && S_ISDIR(dir.st_mode))
+    throw Error(path + ": is a directory, not an image file");
+#endif
   int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) throw Error(path + ": cannot open: " + std::strerror(errno));
   struct Closer {
