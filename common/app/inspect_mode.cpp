@@ -143,8 +143,9 @@ void InspectMode::drawPanel(float width) {
     const ImVec2 c(at.x + (kLoupe / 2) * cell, at.y + (kLoupe / 2) * cell);
     d->AddRect(c, ImVec2(c.x + cell, c.y + cell), IM_COL32(255, 210, 60, 255), 0.0f, 0, 2.0f);
   }
+  // Every colour the cell draws (footprintCell: footprintBatches over level 0's texel grid).
   const char* legend = "preimage of the pixel (white), derivatives (cyan), EWA ellipse (magenta), 2^lambda square "
-                       "(yellow), texels read (orange)";
+                       "(yellow), texels read (orange), level 0's texels (grey grid, when they are large enough)";
   if (withCell) {
     if (loupe_) ImGui::SameLine();
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(cell_)), ImVec2(side, side));

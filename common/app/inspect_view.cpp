@@ -6,11 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "common/core/error.hpp"
 #include "common/core/layout.hpp"
-#include "common/core/textures.hpp"
+#include "common/core/text.hpp"
 #include "common/gl/figure.hpp"
 #include "common/gl/gl_listing.hpp"
 #include "common/gl/render.hpp"
@@ -52,7 +53,8 @@ std::string inspectJson(const Picked& p) {
 
 namespace {
 const glm::vec4 kPreimage{1.0f, 1.0f, 1.0f, 1.0f}, kParallelogram{0.2f, 0.9f, 1.0f, 1.0f},
-    kEllipse{1.0f, 0.3f, 0.9f, 1.0f}, kLodSquare{1.0f, 0.85f, 0.2f, 1.0f}, kTexels{1.0f, 0.55f, 0.1f, 1.0f};
+    kEllipse{1.0f, 0.3f, 0.9f, 1.0f}, kLodSquare{1.0f, 0.85f, 0.2f, 1.0f}, kTexels{1.0f, 0.55f, 0.1f, 1.0f},
+    kTexelGrid{0.42f, 0.42f, 0.47f, 1.0f};
 
 bool usable(const ref::Inspection& in) { return in.textured && in.texture >= 0 && std::isfinite(in.u); }
 
@@ -114,26 +116,70 @@ Panel cellPanel(Frame& f, const Frame& picture, const ref::Inspection& in, int n
     std::vector<glm::vec2> grid;
     for (double u = std::ceil(cu - halfU); u <= cu + halfU; ++u) grid.push_back({float(u), y0}), grid.push_back({float(u), y1});
     for (double v = std::ceil(cv - halfV); v <= cv + halfV; ++v) grid.push_back({x0, float(v)}), grid.push_back({x1, float(v)});
-    p.batches.push_back(lineSegments(grid, glm::vec4(0.42f, 0.42f, 0.47f, 1.0f), 1.0f, "texel_grid"));
+    p.batches.push_back(lineSegments(grid, kTexelGrid, 1.0f, "texel_grid"));
   }
   for (Batch& b : footprintBatches(picture, in)) p.batches.push_back(std::move(b));
   return p;
 }
 
-// One cell: the texture around pick `in`, in texels of level 0 (u right,
-// v up: t = 0 is the texture's row 0), with the footprint drawn over it.
-void addCell(Frame& f, const Frame& picture, const ref::Inspection& in, int number, const Rect& area, int scale) {
-  const int line = int(L::lineHeight(scale));
-  const Rect view{area.x, area.y + line, area.w, std::max(1, area.h - 3 * line)};
+// A cell's captions as phrases: above, the pick's number with its lambda,
+// and its rho; below, its (u, v), and its levels and texel count; each
+// number printed from the pick's measurement (applyInspect) or, the pick's
+// number, given.
+struct CellCaptions {
+  std::vector<L::Text> above, below;
+};
+CellCaptions cellCaptions(int number, const Measurements& measured) {
+  const std::string k = "[" + std::to_string(number) + "]";
+  const bool twoLevels = std::any_of(measured.begin(), measured.end(),
+                                     [&](const Measurement& x) { return x.name == "inspect_level1" + k; });
+  const std::string levels = twoLevels ? "levels {inspect_level0" + k + "|%.0f}+{inspect_level1" + k + "|%.0f}"
+                                       : "level {inspect_level0" + k + "|%.0f}";
+  return {{L::given("pick number", number, "%.0f") + L::measuredText(measured, ": lambda {inspect_lambda" + k + "|%.2f},"),
+           L::measuredText(measured, "rho {inspect_rho" + k + "|%.2f}")},
+          {L::measuredText(measured, "(u,v) = ({inspect_u" + k + "|%.1f}, {inspect_v" + k + "|%.1f}),"),
+           L::measuredText(measured, levels + ", {inspect_texels" + k + "|%.0f} texels")}};
+}
+
+// Phrases joined into the lines `width` holds at `scale`: a line breaks
+// between phrases, never inside one (a number stays with its name).
+std::vector<L::Text> phraseLines(const std::vector<L::Text>& phrases, int scale, float width) {
+  std::vector<L::Text> lines;
+  for (const L::Text& p : phrases) {
+    if (!lines.empty() && text::width(lines.back().text + " " + p.text, scale) <= width)
+      lines.back() = lines.back() + L::Text(" ") + p;
+    else
+      lines.push_back(p);
+  }
+  return lines;
+}
+int captionHeight(const std::vector<L::Text>& phrases, int scale, float width) {
+  int h = 0;
+  for (const L::Text& t : phraseLines(phrases, scale, width)) h += L::captionLines(t.text, scale, width) * int(L::lineHeight(scale));
+  return h;
+}
+// The lines from the top of `band` down.
+void phraseCaption(Frame& f, L::Box band, const std::vector<L::Text>& phrases, glm::vec4 colour, int scale) {
+  for (const L::Text& t : phraseLines(phrases, scale, band.w())) band.y0 = L::caption(f, band, t, colour, scale);
+}
+
+// One cell in `area`: the texture around pick `in` (number `number`), in
+// texels of level 0 (u right, v up: t = 0 is the texture's row 0), with the
+// footprint drawn over it, between its captions (cellCaptions), each given
+// the lines it needs at the cell's width.  Returns whether the cell draws
+// level 0's texel grid.
+bool addCell(Frame& f, const Frame& picture, const ref::Inspection& in, int number, const Measurements& measured,
+             const Rect& area, int scale) {
+  const CellCaptions c = cellCaptions(number, measured);
+  const float width = float(area.w);
+  const int above = captionHeight(c.above, scale, width), below = captionHeight(c.below, scale, width);
+  const Rect view{area.x, area.y + above, area.w, std::max(1, area.h - above - below - 2)};
   f.panels.push_back(cellPanel(f, picture, in, number, view));
-  L::caption(f, {float(area.x), float(area.y), float(area.x + area.w), float(area.y + line)},
-             std::to_string(number) + ": lambda " + L::fmt("%.2f", in.lambda) + ", rho " + L::fmt("%.2f", in.rhoEdge),
-             L::kAmber, scale);
-  L::caption(f, {float(area.x), float(view.y + view.h + 2), float(area.x + area.w), float(area.y + area.h)},
-             "(u,v) = (" + L::fmt("%.1f", in.u) + ", " + L::fmt("%.1f", in.v) + "), level " +
-                 std::to_string(in.level0) + (in.level1 != in.level0 ? "+" + std::to_string(in.level1) : "") + ", " +
-                 std::to_string(in.texels.size()) + " texels",
-             L::kWhite, scale);
+  phraseCaption(f, {float(area.x), float(area.y), float(area.x + area.w), float(view.y)}, c.above, L::kAmber, scale);
+  phraseCaption(f, {float(area.x), float(view.y + view.h + 2), float(area.x + area.w), float(area.y + area.h)}, c.below,
+                L::kWhite, scale);
+  const Panel& p = f.panels.back();
+  return std::any_of(p.batches.begin(), p.batches.end(), [](const Batch& b) { return b.role == "texel_grid"; });
 }
 
 // The affine map from a batch's (s, t) to its object coordinates, when one
@@ -171,12 +217,9 @@ std::vector<Batch> footprintBatches(const Frame& picture, const ref::Inspection&
   loop({{float(in.u) - hs, float(in.v) - hs}, {float(in.u) + hs, float(in.v) - hs}, {float(in.u) + hs, float(in.v) + hs},
         {float(in.u) - hs, float(in.v) + hs}},
        kLodSquare, 1.0f, "lod_square");
-  std::vector<glm::vec2> pts;
-  for (const glm::dvec2& c : in.parallelogram) pts.push_back(glm::vec2(c));
-  loop(pts, kParallelogram, 1.0f, "derivative_parallelogram");
   // The EWA ellipse is the image of the unit circle of screen space under
   // the Jacobian [du/dx du/dy; dv/dx dv/dy]: A du^2 + B du dv + C dv^2 = F.
-  pts.clear();
+  std::vector<glm::vec2> pts;
   for (int k = 0; k < 64; ++k) {
     const double a = 2 * M_PI * k / 64, cx = std::cos(a), cy = std::sin(a);
     pts.push_back({float(in.u + in.dudx * cx + in.dudy * cy), float(in.v + in.dvdx * cx + in.dvdy * cy)});
@@ -185,6 +228,11 @@ std::vector<Batch> footprintBatches(const Frame& picture, const ref::Inspection&
   pts.clear();
   for (const glm::dvec2& c : in.preimage) pts.push_back(glm::vec2(c));
   loop(pts, kPreimage, 2.0f, "preimage");
+  // The parallelogram is the preimage's first-order approximation and lies
+  // almost on it for a pixel: drawn thinner and after it, so both show.
+  pts.clear();
+  for (const glm::dvec2& c : in.parallelogram) pts.push_back(glm::vec2(c));
+  loop(pts, kParallelogram, 1.0f, "derivative_parallelogram");
   return out;
 }
 
@@ -225,69 +273,328 @@ bool footprintInTextureViews(const Frame& picture, const ref::Inspection& in, Fr
   return !over->panels.empty();
 }
 
-Frame footprintFrame(const std::string& demo, const Frame& picture, const Image& drawn, const std::vector<Picked>& picks,
-                     int w, int h) {
-  Frame f = L::blankFrame(w, h);
-  const int scale = std::max(1, std::min(w, h) / 500), line = int(L::lineHeight(scale));
-  // Left: the part of the picture around the picks (at least a third of
-  // it each way, padded), as large as fits in 45% of the width.
-  const int leftW = w * 45 / 100, top = 2 * line;
-  double bx0 = drawn.width, by0 = drawn.height, bx1 = 0, by1 = 0;
+namespace {
+// The panel the picture shows: the one holding the most picks (the first
+// such on a tie), -1 when no pick lies in a panel.
+int pickedPanel(const std::vector<Picked>& picks, size_t panels) {
+  std::vector<int> count(panels, 0);
   for (const Picked& p : picks)
-    bx0 = std::min(bx0, double(p.in.x)), by0 = std::min(by0, double(p.in.y)), bx1 = std::max(bx1, p.in.x + 1.0),
-    by1 = std::max(by1, p.in.y + 1.0);
-  const double areaAspect = double(leftW - 8) / double(h - top - 4);
-  double cw = std::max(bx1 - bx0 + drawn.width * 0.2, drawn.width / 3.0), ch = std::max(by1 - by0 + drawn.height * 0.2, drawn.height / 3.0);
-  if (cw / ch < areaAspect) cw = ch * areaAspect;
-  else ch = cw / areaAspect;
-  cw = std::min(cw, double(drawn.width)), ch = std::min(ch, double(drawn.height));
-  const double cx0 = std::clamp((bx0 + bx1 - cw) / 2, 0.0, drawn.width - cw), cy0 = std::clamp((by0 + by1 - ch) / 2, 0.0, drawn.height - ch);
-  const double k = std::min(double(leftW - 8) / cw, double(h - top - 4) / ch);
-  const Rect pic{4, top, std::max(1, int(cw * k)), std::max(1, int(ch * k))};
-  // The crop as the quad's (s, t): t = 0 is the image's bottom row.
-  const float s0 = float(cx0 / drawn.width), s1 = float((cx0 + cw) / drawn.width);
-  const float t0 = float(1 - (cy0 + ch) / drawn.height), t1 = float(1 - cy0 / drawn.height);
-  Panel left = L::unitPanel("picture", pic);
-  Batch crop;
-  crop.role = "image";
-  crop.texture = f.addTexture(renderedImageTexture(drawn, "inspect_picture", "the picture inspected", demo));
-  for (glm::vec4 c : {glm::vec4(0, 0, s0, t0), glm::vec4(1, 0, s1, t0), glm::vec4(1, 1, s1, t1), glm::vec4(0, 0, s0, t0),
-                      glm::vec4(1, 1, s1, t1), glm::vec4(0, 1, s0, t1)})
-    crop.vertices.push_back({glm::vec3(c.x, c.y, 0.0f), glm::vec4(c.z, c.w, 0.0f, 1.0f), glm::vec4(1.0f)});
-  left.batches.push_back(crop);
-  for (size_t n = 0; n < picks.size(); ++n) {  // a ring around each picked pixel, its number beside it
-    const float x = float((picks[n].in.x + 0.5 - cx0) / cw), y = 1.0f - float((picks[n].in.y + 0.5 - cy0) / ch);
-    const float rx = 4.0f / float(pic.w), ry = 4.0f / float(pic.h);
-    left.batches.push_back(lineLoop({{x - rx, y - ry}, {x + rx, y - ry}, {x + rx, y + ry}, {x - rx, y + ry}}, L::kAmber,
-                                    2.0f, "pick"));
-    Label l;
-    l.x = float(pic.x) + x * float(pic.w) + 7, l.y = float(pic.y) + (1 - y) * float(pic.h) - float(line) / 2;
-    l.text = std::to_string(n + 1), l.color = L::kAmber, l.scale = scale, l.background = {0, 0, 0, 0.6f};
-    f.labels.push_back(l);
+    if (p.in.panel >= 0 && size_t(p.in.panel) < panels) ++count[size_t(p.in.panel)];
+  int best = -1;
+  for (size_t k = 0; k < panels; ++k)
+    if (count[k] > 0 && (best < 0 || count[k] > count[size_t(best)])) best = int(k);
+  return best;
+}
+
+// Panel `src` of `picture` drawn again at `at`, showing the part `part` of
+// its viewport (frame pixels, the size of `at`): its projection is narrowed
+// so that each pixel of `part` lands on one pixel of `at` at the same place
+// in the panel, so every pixel centre gets the same (s, t), derivatives and
+// levels as in the picture inspected.  Its textures and programs are copied
+// into `f`.  The picture is the panel's own geometry, never a cut-out of the
+// rendered figure: no caption of the figure is in it.
+Panel reframed(Frame& f, const Frame& picture, const Panel& src, const Rect& part, const Rect& at) {
+  Panel p = src;
+  p.viewport = at;
+  const Rect& v = src.viewport;
+  // Normalised device coordinates of the panel -> those of the part.
+  const float sx = float(v.w) / float(part.w), sy = float(v.h) / float(part.h);
+  glm::mat4 narrow(1.0f);
+  narrow[0][0] = sx, narrow[1][1] = sy;
+  narrow[3][0] = sx - 1 - 2 * float(part.x - v.x) / float(part.w);
+  narrow[3][1] = 1 - sy - 2 * float(v.y - part.y) / float(part.h);
+  p.projection = narrow * src.projection;
+  std::vector<int> copied(picture.textures.size(), -1);
+  auto texture = [&](int t) {
+    if (t < 0 || size_t(t) >= picture.textures.size()) return t;
+    if (copied[size_t(t)] < 0) copied[size_t(t)] = f.addTexture(picture.textures[size_t(t)]);
+    return copied[size_t(t)];
+  };
+  for (Batch& b : p.batches) {
+    b.texture = texture(b.texture), b.texture1 = texture(b.texture1);
+    if (b.program.empty()) continue;
+    const bool have = std::any_of(f.programs.begin(), f.programs.end(), [&](const auto& q) { return q.first == b.program; });
+    if (!have)
+      for (const auto& q : picture.programs)
+        if (q.first == b.program) f.programs.push_back(q);
   }
-  f.panels.push_back(left);
-  L::caption(f, {4, 2, float(leftW), float(top - 2)}, "the picture, pixels picked", L::kWhite, scale);
-  // Right: a cell per textured pick.
+  return p;
+}
+
+// Whether segment a-b meets box `r` (Liang-Barsky).
+bool crosses(glm::vec2 a, glm::vec2 b, const L::Box& r) {
+  float t0 = 0, t1 = 1;
+  const glm::vec2 d = b - a;
+  const float p[4] = {-d.x, d.x, -d.y, d.y}, q[4] = {a.x - r.x0, r.x1 - a.x, a.y - r.y0, r.y1 - a.y};
+  for (int k = 0; k < 4; ++k) {
+    if (p[k] == 0) {
+      if (q[k] < 0) return false;
+      continue;
+    }
+    const float t = q[k] / p[k];
+    if (p[k] < 0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+// Whether segments a-b and c-d cross (touching ends do not count).
+bool crosses(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d) {
+  auto side = [](glm::vec2 o, glm::vec2 p, glm::vec2 q) { return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x); };
+  const float d1 = side(c, d, a), d2 = side(c, d, b), d3 = side(a, b, c), d4 = side(a, b, d);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+L::Box grown(const L::Box& b, float by) { return {b.x0 - by, b.y0 - by, b.x1 + by, b.y1 + by}; }
+
+// The picks' numbers beside their rings (frame pixels, `rings` their boxes),
+// inside `within`: each at the free place nearest its ring, right of it
+// first, never over another label, ring or leader, and either on the
+// picture or off it, never across its edge; a number that cannot sit beside
+// its ring gets a leader line to it (returned as segments).  Placed with
+// layout::placeFree, so the frame's other labels are respected too.
+std::vector<glm::vec2> numberPicks(Frame& f, const std::vector<L::Box>& rings, const std::vector<int>& numbers,
+                                   L::Box within, L::Box picture, int scale) {
+  std::vector<glm::vec2> leaders;
+  std::vector<L::Box> placed;
+  const float step = 3.0f * float(scale), ringGap = 2.0f * float(scale);
+  for (size_t k = 0; k < rings.size(); ++k) {
+    Label l;
+    l.text = std::to_string(numbers[k]), l.color = L::kAmber, l.scale = scale, l.background = {0, 0, 0, 0.6f};
+    l.given = {{"pick number", double(numbers[k])}};
+    const L::Box at0 = L::labelBox(l);  // at (0, 0): its offsets from the label's point
+    const float bw = at0.w(), bh = at0.h();
+    const L::Box& ring = rings[k];
+    const glm::vec2 c((ring.x0 + ring.x1) / 2, (ring.y0 + ring.y1) / 2);
+    struct Candidate {
+      float cost;
+      L::Box box;
+    };
+    std::vector<Candidate> candidates;
+    for (int side = 0; side < 2; ++side)
+      for (int i = 0; i <= 40; ++i)
+        for (int j = -40; j <= 40; ++j) {
+          const float x0 = side == 0 ? ring.x1 + ringGap + float(i) * step : ring.x0 - ringGap - bw - float(i) * step;
+          const float y0 = std::round(c.y - bh / 2 + float(j) * step);
+          // Near first, to the right before the left.
+          candidates.push_back({float(i + std::abs(j)) * step + (side ? 2 * step : 0), {std::round(x0), y0, std::round(x0) + bw, y0 + bh}});
+        }
+    std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
+    for (const Candidate& cand : candidates) {
+      const L::Box& b = cand.box;
+      if (!b.inside(within) || (b.overlaps(picture) && !b.inside(picture))) continue;
+      if (std::any_of(rings.begin(), rings.end(), [&](const L::Box& r) { return grown(r, 1).overlaps(b); })) continue;
+      if (std::any_of(placed.begin(), placed.end(), [&](const L::Box& o) { return o.overlaps(b); })) continue;
+      bool hitsLeader = false;
+      for (size_t s = 0; s + 1 < leaders.size(); s += 2) hitsLeader = hitsLeader || crosses(leaders[s], leaders[s + 1], b);
+      if (hitsLeader) continue;
+      // The leader: from the ring's edge to the nearest point of the label,
+      // when the label does not touch the ring.
+      const glm::vec2 q(std::clamp(c.x, b.x0, b.x1), std::clamp(c.y, b.y0, b.y1));
+      const float reach = std::max(std::abs(q.x - c.x) - (ring.x1 - ring.x0) / 2, std::abs(q.y - c.y) - (ring.y1 - ring.y0) / 2);
+      glm::vec2 from = c;
+      bool leader = reach > ringGap + 1;
+      if (leader) {
+        from = c + (q - c) * ((ring.x1 - ring.x0) / 2 / std::max(std::abs(q.x - c.x), std::abs(q.y - c.y)));
+        bool blocked = false;
+        // Rings that overlap this one (picks a few pixels apart) are left
+        // by any leader: only the others block it.
+        for (size_t r = 0; r < rings.size(); ++r)
+          blocked = blocked || (r != k && !rings[r].overlaps(ring) && crosses(from, q, grown(rings[r], 1)));
+        for (const L::Box& o : placed) blocked = blocked || crosses(from, q, o);
+        for (size_t s = 0; s + 1 < leaders.size(); s += 2) blocked = blocked || crosses(from, q, leaders[s], leaders[s + 1]);
+        if (blocked) continue;
+      }
+      Label at = l;
+      at.x = b.x0 - at0.x0, at.y = b.y0 - at0.y0;
+      if (!L::placeFree(f, at, within)) continue;
+      placed.push_back(b);
+      if (leader) leaders.push_back(from), leaders.push_back(q);
+      break;
+    }
+  }
+  return leaders;
+}
+
+// The key in `band`; returns the height it takes.  `draw` false: only measures.
+float drawKey(Frame& f, L::Box band, const std::vector<LegendEntry>& entries, int scale, bool draw = true) {
+  Frame scratch = L::blankFrame(f.width, f.height);
+  return L::legend(draw ? f : scratch, band, entries, scale) - band.y0;
+}
+
+// The cells' grid for n cells in `area`: the number of columns that gives
+// the largest square view (a cell `cellW` wide keeps captionH(cellW) pixels
+// for its captions).
+int cellColumns(int n, const Rect& area, const std::function<int(int cellW)>& captionH) {
+  int best = 1, bestSide = -1;
+  for (int cols = 1; cols <= n; ++cols) {
+    const int rows = (n + cols - 1) / cols;
+    const int side = std::min(area.w / cols - 6, area.h / rows - 6 - captionH(area.w / cols - 6));
+    if (side > bestSide) best = cols, bestSide = side;
+  }
+  return best;
+}
+}  // namespace
+
+Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, const Measurements& measured, int w, int h) {
+  Frame f = L::blankFrame(w, h);
+  f.perspectiveHint = picture.perspectiveHint;
+  const int scale = std::max(1, std::min(w, h) / 500), line = int(L::lineHeight(scale)), margin = 4;
   std::vector<const Picked*> cells;
   for (const Picked& p : picks)
     if (usable(p.in)) cells.push_back(&p);
-  const int areaX = leftW + 8, areaW = w - areaX - 4, n = int(cells.size());
-  L::caption(f, {float(areaX), 2, float(w - 4), float(top - 2)},
-             n ? "level 0 around each footprint: preimage (white), derivatives (cyan), EWA ellipse (magenta), 2^lambda "
-                 "(yellow), texels read (orange)"
-               : "no picked pixel is textured",
-             L::kWhite, scale);
-  if (n == 0) return f;
-  const int cols = n <= 2 ? n : n <= 4 ? 2 : 3, rows = (n + cols - 1) / cols;
-  const int cellW = areaW / cols, cellH = (h - top) / rows;
-  for (int c = 0; c < n; ++c) {
-    const Rect area{areaX + (c % cols) * cellW, top + (c / cols) * cellH, cellW - 6, cellH - 4};
-    addCell(f, picture, cells[size_t(c)]->in, int(cells[size_t(c)] - picks.data()) + 1, area, scale);
+  const int n = int(cells.size());
+  // The key: every entry it may hold (the ring only when a pick is ringed,
+  // the grid only when a cell draws it); its room is measured by laying it
+  // out on a scratch frame.
+  const std::string kRingMeaning = "pixel picked (ring, its number)", kGridMeaning = "texel grid";
+  std::vector<LegendEntry> entries = {{L::kAmber, kRingMeaning},
+                                      {kPreimage, "preimage of the pixel square"},
+                                      {kParallelogram, "derivatives' parallelogram"},
+                                      {kEllipse, "EWA ellipse"},
+                                      {kLodSquare, "a texel of level lambda"},
+                                      {kTexels, "texels read"},
+                                      {kTexelGrid, kGridMeaning}};
+  auto keyHeight = [&](int width) { return int(std::ceil(drawKey(f, {0, 0, float(width), float(h)}, entries, scale, false))); };
+  const L::Text cellsTitle =
+      n ? L::Text("the texture's level ") + L::given("the level the cells show", 0, "%.0f") +
+              L::Text(" around each footprint, in its texels (u right, v up)")
+        : L::Text("no picked pixel is textured");
+  // The picture: the picks' panel at its own pixels (reframed), whole when
+  // there is room, else the part around the picks; beside the cells (left)
+  // or above them, whichever shows more of it.  A band of half a line above
+  // and below it holds numbers that do not fit on it.
+  const int pi = pickedPanel(picks, picture.panels.size());
+  // The panel's own marks keep the meaning the inspected figure's legend
+  // gives their colours.
+  if (pi >= 0)
+    for (const Batch& b : picture.panels[size_t(pi)].batches)
+      for (const LegendEntry& e : picture.legend)
+        if (b.texture < 0 && !b.vertices.empty() && b.vertices[0].color == e.color &&
+            std::none_of(entries.begin(), entries.end(), [&](const LegendEntry& c) { return c.color == e.color; }))
+          entries.push_back(e);
+  Rect panel{0, 0, 0, 0};
+  if (pi >= 0) {
+    const Rect& v = picture.panels[size_t(pi)].viewport;
+    const int x0 = std::max(0, v.x), y0 = std::max(0, v.y);
+    panel = {x0, y0, std::max(0, std::min(picture.width, v.x + v.w) - x0), std::max(0, std::min(picture.height, v.y + v.h) - y0)};
   }
+  const bool one = std::count_if(picks.begin(), picks.end(), [&](const Picked& p) { return p.in.panel == pi; }) == 1;
+  const std::string whole = one ? "the pixel's panel, drawn again pixel for pixel" : "the pixels' panel, drawn again pixel for pixel",
+                    partOf = one ? "the pixel's part of its panel, drawn again pixel for pixel"
+                                 : "the pixels' part of their panel, drawn again pixel for pixel";
+  auto captionH = [&](int width) { return L::captionLines(partOf, scale, float(width)) * line; };
+  const int leftRoomW = w * 45 / 100 - 2 * margin, leftRoomH = h - captionH(leftRoomW) - line - 2 * margin;
+  const int topRoomW = w - 2 * margin, topRoomH = h * 2 / 5 - captionH(topRoomW) - line - margin;
+  auto shown = [&](int rw, int rh) { return double(std::min(panel.w, rw)) * double(std::min(panel.h, rh)); };
+  const bool above = pi >= 0 && shown(topRoomW, topRoomH) > shown(leftRoomW, leftRoomH);
+  const int cropW = std::min(panel.w, above ? topRoomW : leftRoomW), cropH = std::min(panel.h, above ? topRoomH : leftRoomH);
+  // The zone of the picture and the picks' numbers (under the picture's
+  // caption), the key's band, the cells' title and the cells.
+  Rect zone, cellArea;
+  L::Box key, title;
+  if (above) {
+    zone = {margin, captionH(topRoomW) + margin / 2, w - 2 * margin, cropH + line};
+    const float y = float(zone.y + zone.h + margin);
+    title = {float(margin), y, float(w - margin), y + float(L::captionLines(cellsTitle.text, scale, float(w - 2 * margin)) * line)};
+    key = {float(margin), title.y1, float(w - margin), title.y1 + float(keyHeight(w - 2 * margin))};
+    cellArea = {margin, int(key.y1) + margin, w - 2 * margin, h - int(key.y1) - 2 * margin};
+  } else {
+    const int leftW = pi >= 0 ? std::min(leftRoomW, std::max(cropW + 2 * line, w / 5)) : w / 5;
+    zone = {margin, captionH(leftW) + margin / 2, leftW, cropH + line};
+    const int x0 = zone.x + zone.w + 2 * margin, rightW = w - x0 - margin;
+    title = {float(x0), float(margin) / 2, float(w - margin),
+             float(margin) / 2 + float(L::captionLines(cellsTitle.text, scale, float(rightW)) * line)};
+    // The key under the picture when it fits there, else over the cells.
+    if (zone.y + zone.h + margin + keyHeight(leftW) <= h - margin) {
+      key = {float(margin), float(zone.y + zone.h + margin), float(margin + leftW), float(h - margin)};
+      cellArea = {x0, int(title.y1) + margin, rightW, h - int(title.y1) - 2 * margin};
+    } else {
+      key = {float(x0), title.y1, float(w - margin), title.y1 + float(keyHeight(rightW))};
+      cellArea = {x0, int(key.y1) + margin, rightW, h - int(key.y1) - 2 * margin};
+    }
+  }
+  bool anyRing = false;
+  if (pi >= 0) {
+    // The part of the panel around the picks in it, clamped to the panel.
+    double bx0 = panel.x + panel.w, by0 = panel.y + panel.h, bx1 = panel.x, by1 = panel.y;
+    for (const Picked& p : picks)
+      if (p.in.panel == pi)
+        bx0 = std::min(bx0, double(p.in.x)), by0 = std::min(by0, double(p.in.y)), bx1 = std::max(bx1, p.in.x + 1.0),
+        by1 = std::max(by1, p.in.y + 1.0);
+    const int px = std::clamp(int(std::lround((bx0 + bx1 - cropW) / 2)), panel.x, panel.x + panel.w - cropW);
+    const int py = std::clamp(int(std::lround((by0 + by1 - cropH) / 2)), panel.y, panel.y + panel.h - cropH);
+    const Rect part{px, py, cropW, cropH};
+    // Moved by whole 2 x 2 blocks of window pixels: a rasterizer takes the
+    // derivatives (and so lambda) per 2 x 2 quad, so the same pixels must
+    // fall in the same quads (window rows count from the bottom).
+    Rect at{zone.x + (zone.w - cropW) / 2, zone.y + line / 2, cropW, cropH};
+    if ((at.x - part.x) % 2) ++at.x;
+    if ((at.y - part.y + picture.height - h) % 2) ++at.y;
+    f.panels.push_back(reframed(f, picture, picture.panels[size_t(pi)], part, at));
+    L::caption(f, {float(zone.x), 2, float(zone.x + zone.w), float(zone.y)},
+               cropW == panel.w && cropH == panel.h ? whole : partOf, L::kWhite, scale);
+    // Rings round the picks in the part shown, numbered (frame pixels).
+    Panel marks;
+    marks.id = "picks";
+    marks.viewport = zone;
+    marks.projection = glm::ortho(float(zone.x), float(zone.x + zone.w), float(zone.y + zone.h), float(zone.y), -1.0f, 1.0f);
+    std::vector<const Picked*> ringed;
+    for (const Picked& p : picks)
+      if (p.in.panel == pi && part.contains(p.in.x, p.in.y)) ringed.push_back(&p);
+    // A ring's half side: 4 pixels, less when picks lie closer (down to 2,
+    // drawn thinner), so that neighbouring rings do not overlap.
+    int r = 4;
+    for (const Picked* a : ringed)
+      for (const Picked* b : ringed)
+        if (a != b) r = std::min(r, (std::max(std::abs(a->in.x - b->in.x), std::abs(a->in.y - b->in.y)) - 1) / 2);
+    r = std::max(r, 2);
+    std::vector<L::Box> rings;
+    std::vector<int> numbers;
+    for (const Picked* p : ringed) {
+      const float cx = float(at.x + p->in.x - part.x) + 0.5f, cy = float(at.y + p->in.y - part.y) + 0.5f, q = float(r);
+      marks.batches.push_back(lineLoop({{cx - q, cy - q}, {cx + q, cy - q}, {cx + q, cy + q}, {cx - q, cy + q}}, L::kAmber,
+                                       r >= 3 ? 2.0f : 1.0f, "pick"));
+      rings.push_back({cx - q - 1, cy - q - 1, cx + q + 1, cy + q + 1});
+      numbers.push_back(int(p - picks.data()) + 1);
+    }
+    anyRing = !rings.empty();
+    const std::vector<glm::vec2> leaders = numberPicks(f, rings, numbers, L::box(zone), L::box(at), scale);
+    if (!leaders.empty()) marks.batches.push_back(lineSegments(leaders, L::kAmber, 1.0f, "pick_leader"));
+    f.panels.push_back(marks);
+  } else {
+    L::caption(f, {float(zone.x), 2, float(zone.x + zone.w), float(zone.y)}, "no picked pixel lies in a panel",
+               L::kWhite, scale);
+  }
+  // The cells: the texture around each textured pick's footprint.
+  L::caption(f, title, cellsTitle, L::kWhite, scale, Align::Left);
+  if (n == 0) return f;
+  auto cellCaptionH = [&](int cellW) {
+    int most = 0;
+    for (const Picked* p : cells) {
+      const CellCaptions c = cellCaptions(int(p - picks.data()) + 1, measured);
+      most = std::max(most, captionHeight(c.above, scale, float(cellW)) + captionHeight(c.below, scale, float(cellW)));
+    }
+    return most;
+  };
+  const int cols = cellColumns(n, cellArea, cellCaptionH), rows = (n + cols - 1) / cols;
+  const int cellW = cellArea.w / cols, cellH = cellArea.h / rows;
+  bool grid = false;
+  for (int c = 0; c < n; ++c) {
+    const Rect area{cellArea.x + (c % cols) * cellW, cellArea.y + (c / cols) * cellH, cellW - 6, cellH - 4};
+    grid = addCell(f, picture, cells[size_t(c)]->in, int(cells[size_t(c)] - picks.data()) + 1, measured, area, scale) || grid;
+  }
+  // The key names the colours drawn, and only those.
+  auto drop = [&](const std::string& meaning) {
+    entries.erase(std::remove_if(entries.begin(), entries.end(), [&](const LegendEntry& e) { return e.meaning == meaning; }),
+                  entries.end());
+  };
+  if (!anyRing) drop(kRingMeaning);
+  if (!grid) drop(kGridMeaning);
+  drawKey(f, key, entries, scale);
   return f;
 }
 
-std::vector<std::string> applyInspect(const std::string& demo, const CommonFlags& flags, Renderer& r, Rendered* got,
+std::vector<std::string> applyInspect(const std::string& /*demo*/, const CommonFlags& flags, Renderer& r, Rendered* got,
                                       bool record, std::string* cards) {
   std::vector<std::string> objects;
   if (flags.inspect.empty()) {
@@ -305,6 +612,14 @@ std::vector<std::string> applyInspect(const std::string& demo, const CommonFlags
     const std::string k = "[" + std::to_string(n + 1) + "]";
     got->measurements.push_back({"inspect_lambda" + k, p.in.lambda, "--inspect pick " + k + ": lambda (level of detail)"});
     got->measurements.push_back({"inspect_rho" + k, p.in.rhoEdge, "--inspect pick " + k + ": rho, texels per pixel"});
+    got->measurements.push_back({"inspect_u" + k, p.in.u, "--inspect pick " + k + ": u = (s/q) x width, texels of level 0"});
+    got->measurements.push_back({"inspect_v" + k, p.in.v, "--inspect pick " + k + ": v = (t/q) x height, texels of level 0"});
+    got->measurements.push_back({"inspect_level0" + k, double(p.in.level0), "--inspect pick " + k + ": the mip level read"});
+    if (p.in.level1 != p.in.level0)
+      got->measurements.push_back({"inspect_level1" + k, double(p.in.level1),
+                                   "--inspect pick " + k + ": the second level the filter blends in"});
+    got->measurements.push_back({"inspect_texels" + k, double(p.in.texels.size()),
+                                 "--inspect pick " + k + ": texels the filter reads, both levels"});
     // The footprint's anisotropy: the ratio of the Jacobian's singular values
     // (the EWA ellipse's axes), from its squared Frobenius norm and determinant.
     const double a = p.in.dudx * p.in.dudx + p.in.dudy * p.in.dudy + p.in.dvdx * p.in.dvdx + p.in.dvdy * p.in.dvdy;
@@ -315,7 +630,7 @@ std::vector<std::string> applyInspect(const std::string& demo, const CommonFlags
                                    "--inspect pick " + k + ": the footprint's long axis over its short one"});
   }
   if (flags.footprints) {
-    got->frame = footprintFrame(demo, got->frame, got->image, picks, got->image.width, got->image.height);
+    got->frame = footprintFrame(got->frame, picks, got->measurements, got->image.width, got->image.height);
     if (record) got->calls = recordPicture(r, got->frame);
     got->image = r.render(got->frame);
   }

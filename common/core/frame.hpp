@@ -240,8 +240,8 @@ struct Label {
   struct Printed {
     std::string name, format, text;
   };
-  std::vector<Printed> printed;
-  std::vector<std::pair<std::string, double>> given;
+  std::vector<Printed> printed{};
+  std::vector<std::pair<std::string, double>> given{};
 };
 
 // A colour that carries meaning in a figure (a mark, a curve, a highlight)

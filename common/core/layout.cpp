@@ -162,10 +162,23 @@ Text measuredText(const Measurements& m, const std::string& templ) {
   return out;
 }
 
+Text measuredValue(const std::string& name, double value, const char* format) {
+  Text t(formatted(format, value));
+  t.printed.push_back({name, format, t.text});
+  return t;
+}
+
 Text given(const std::string& name, double value, const char* format) {
   Text t(formatted(format, value));
   t.given.push_back({name, value, t.text});
   return t;
+}
+
+Label textLabel(float x, float y, const Text& t, glm::vec4 color, int scale, Align align, glm::vec4 background) {
+  Label l{x, y, t.text, color, scale, align, background};
+  l.printed = t.printed;
+  for (const Text::Given& g : t.given) l.given.push_back({g.name, g.value});
+  return l;
 }
 
 void attachNumbers(Frame& f, size_t first, const Text& t) {
@@ -190,20 +203,28 @@ void attachNumbers(Frame& f, size_t first, const Text& t) {
 }
 
 float legend(Frame& f, Box band, const std::vector<LegendEntry>& entries, int scale) {
-  const float swatch = float(text::height(scale)), gap = 6.0f * float(scale);
+  // A swatch is a square panel of the colour, as tall as the text beside it.
+  const float swatch = text::height(scale), gap = 8.0f * float(scale), row = lineHeight(scale);
   float x = band.x0, y = band.y0;
   for (const LegendEntry& e : entries) {
     const float w = swatch + 4.0f * float(scale) + text::width(e.meaning, scale);
-    if (x > band.x0 && x + w > band.x1) x = band.x0, y += lineHeight(scale);
-    if (y + text::height(scale) > band.y1) break;
-    Label key;
-    key.x = x, key.y = y, key.text = " ", key.scale = scale, key.background = e.color;
-    f.labels.push_back(key);
-    f.labels.push_back({x + swatch + 4.0f * float(scale), y, e.meaning, e.color, scale, Align::Left, glm::vec4(0.0f)});
+    if (x > band.x0 && x + w > band.x1) x = band.x0, y += row;
+    if (w > band.w() || y + swatch > band.y1 + 0.5f) break;  // no room: left out, never cut
+    Panel key = unitPanel("legend_swatch", {int(x), int(y), int(swatch), int(swatch)});
+    Batch fill;
+    fill.role = "swatch";
+    for (glm::vec2 q : {glm::vec2(0, 0), {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}})
+      fill.vertices.push_back({{q, 0.0f}, {0, 0, 0, 1}, e.color});
+    key.batches.push_back(fill);
+    f.panels.push_back(key);
+    // The meaning in its colour, unless that colour is too dark to read on the figure's background.
+    const float luma = 0.3f * e.color.r + 0.59f * e.color.g + 0.11f * e.color.b;
+    f.labels.push_back({float(int(x)) + swatch + 4.0f * float(scale), y, e.meaning, luma < 0.35f ? kWhite : e.color, scale,
+                        Align::Left, glm::vec4(0.0f)});
     f.legend.push_back(e);
     x += w + gap;
   }
-  return y + lineHeight(scale);
+  return y + row;
 }
 
 namespace {

@@ -130,8 +130,15 @@ Text measured(const Measurements& m, const std::string& name, const char* format
 // A template whose "{name}" or "{name|%.2f}" stand for measurements of `m`
 // ("%g" when no format is given): "red: the ball, {mirror_ball_pixels|%.0f} px".
 Text measuredText(const Measurements& m, const std::string& templ);
+// A measurement's value that a view holds in measure()'s detail rather than
+// in the list: printed and named all the same, so the proofreader holds it
+// to the sidecar's value of `name`.
+Text measuredValue(const std::string& name, double value, const char* format);
 // A number that is not measured, with what it is: an axis tick, a parameter.
 Text given(const std::string& name, double value, const char* format);
+// One label of `t`, whole (no fitting): a tag, a note, a key placed by hand.
+Label textLabel(float x, float y, const Text& t, glm::vec4 color, int scale, Align align = Align::Left,
+                glm::vec4 background = glm::vec4(0.0f));
 // Hands `t`'s numbers to the labels f.labels[first..] that show them.
 void attachNumbers(Frame& f, size_t first, const Text& t);
 

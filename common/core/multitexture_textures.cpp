@@ -54,7 +54,7 @@ Image bricksImage() {
   return b;
 }
 double lightAt(double x, double y) {
-  const double h = 0.3, d = std::sqrt((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5) + h * h);
+  const double h = kLightHeight, d = std::sqrt((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5) + h * h);
   return 0.15 + 0.85 * std::pow(h / d, 3.0);
 }
 Image lightMapImage(int n) {

@@ -33,6 +33,8 @@ Image spotImage();
 Image perPixelLitImage(const Image& base, int w);
 // The gloss map, w x h grey: 1 on the left half, 51/255 on the right.
 constexpr double kGlossLow = 51.0 / 255.0;
+// The light map's point light: its height over the unit square's centre.
+constexpr double kLightHeight = 0.3;
 Image glossImage(int w, int h);
 // A, B, C, D: four 64 x 64 textures with AB + CD <= 1 (no clamping).
 constexpr int kAbcdSize = 64;

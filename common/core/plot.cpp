@@ -69,14 +69,16 @@ void tickLabels(Frame& f, const Rect& vp, const Rect& area, double x0, double x1
   const float h = text::height(scale), gap = 4.0f * float(scale);
   const L::Box under{float(area.x), float(vp.y + vp.h + 1), float(area.x + area.w), float(vp.y + vp.h) + gap + h + 2},
       leftOf{float(area.x), float(vp.y) - h, float(vp.x - 1), float(vp.y + vp.h) + h / 2 + 1};
+  // A tick's number is the axis's, not a measurement: the label names it so.
+  auto tick = [&](const Tick& t, const char* axis, float x, float y, Align a, const L::Box& within) {
+    Label l{x, y, t.text, color, scale, a};
+    l.given.push_back({std::string(axis) + " axis tick", t.at});
+    L::placeFree(f, l, within);
+  };
   for (const Tick& t : xs)
-    L::placeFree(f, {float(vp.x + (t.at - x0) / (x1 - x0) * vp.w), float(vp.y + vp.h) + gap, t.text, color, scale,
-                     Align::Center},
-                 under);
+    tick(t, "x", float(vp.x + (t.at - x0) / (x1 - x0) * vp.w), float(vp.y + vp.h) + gap, Align::Center, under);
   for (const Tick& t : ys)
-    L::placeFree(f, {float(vp.x) - gap - 2, float(vp.y + (1 - (t.at - y0) / (y1 - y0)) * vp.h) - h / 2, t.text, color,
-                     scale, Align::Right},
-                 leftOf);
+    tick(t, "y", float(vp.x) - gap - 2, float(vp.y + (1 - (t.at - y0) / (y1 - y0)) * vp.h) - h / 2, Align::Right, leftOf);
 }
 
 Rect draw(Frame& f, const Spec& s, Rect area) {
@@ -87,14 +89,14 @@ Rect draw(Frame& f, const Spec& s, Rect area) {
 
   // The bands around the plot: title, legend and the y axis's name above,
   // tick numbers left and below, the x axis's name at the bottom.
-  const float titleH = s.title.empty() ? 0.0f : float(std::min(2, L::captionLines(s.title, sc, x1 - x0 - 8))) * line;
+  const float titleH = s.title.empty() ? 0.0f : float(std::min(2, L::captionLines(s.title.text, sc, x1 - x0 - 8))) * line;
   float tickW = 0, lastX = 0;
   for (const Tick& t : s.yTicks) tickW = std::max(tickW, text::width(t.text, sc));
   if (!s.xTicks.empty()) lastX = text::width(s.xTicks.back().text, sc) / 2;
   // A legend line above the plot may wrap once when the plot is narrow.
   std::vector<float> legendLines;
   for (const Legend& l : s.legendInside ? std::vector<Legend>{} : s.legend)
-    legendLines.push_back(float(std::min(2, L::captionLines(l.text, sc, x1 - 4 - (x0 + 4 + tickW + gap + 4)))) * line);
+    legendLines.push_back(float(std::min(2, L::captionLines(l.text.text, sc, x1 - 4 - (x0 + 4 + tickW + gap + 4)))) * line);
   float legendH = 0;
   for (float h : legendLines) legendH += h;
   const int top = int(4 + titleH + legendH + (s.yLabel.empty() ? 0.0f : line) + th / 2 + 2);
@@ -151,6 +153,8 @@ Rect draw(Frame& f, const Spec& s, Rect area) {
     L::caption(f, {float(vp.x), y, x1 - 4, y + legendLines[k]}, s.legend[k].text, s.legend[k].color, sc, Align::Left);
     y += legendLines[k];
   }
+  // The legend's lines are written in their series' colours: each is the key of its colour.
+  for (const Legend& l : s.legend) f.legend.push_back({l.color, l.text.text});
   if (!s.yLabel.empty())
     L::caption(f, {float(vp.x), float(vp.y) - th / 2 - 2 - line, x1 - 4, float(vp.y) - th / 2 - 2}, s.yLabel, s.textColor,
                sc, Align::Left);
@@ -160,21 +164,21 @@ Rect draw(Frame& f, const Spec& s, Rect area) {
   if (s.legendInside) {
     float ly = float(vp.y + vp.h) - float(s.legend.size() + 1) * line;
     for (const Legend& l : s.legend) {
-      L::placeFree(f, {float(vp.x + vp.w - 12), ly, l.text, l.color, sc, Align::Right}, inPlot);
+      L::placeFree(f, L::textLabel(float(vp.x + vp.w - 12), ly, l.text, l.color, sc, Align::Right), inPlot);
       ly += line;
     }
   }
-  for (const Marker& m : s.markers)
-    if (!m.label.empty())
-      L::placeFree(f, {px({m.x, s.y1}).x + 6, float(vp.y + 6), m.label, m.color, sc, Align::Left}, inPlot);
+  for (const Marker& m : s.markers)  // a marker's label, in its colour, is its key
+    if (!m.label.empty() && L::placeFree(f, L::textLabel(px({m.x, s.y1}).x + 6, float(vp.y + 6), m.label, m.color, sc), inPlot))
+      f.legend.push_back({m.color, m.label.text});
   for (const Series& se : s.series)
     for (size_t k = 0; k < se.tags.size() && k < se.points.size(); ++k) {
       glm::vec2 q = px(se.points[k]);
-      L::placeFree(f, {q.x + se.size + 3, q.y + 4, se.tags[k], se.color, sc, Align::Left}, inPlot);
+      L::placeFree(f, L::textLabel(q.x + se.size + 3, q.y + 4, se.tags[k], se.color, sc), inPlot);
     }
   for (const Note& n : s.notes) {
     glm::vec2 q = px(n.at) + n.offset;
-    L::placeFree(f, {q.x, q.y, n.text, s.textColor, sc, Align::Left, kBackground}, inPlot);
+    L::placeFree(f, L::textLabel(q.x, q.y, n.text, s.textColor, sc, Align::Left, kBackground), inPlot);
   }
   return vp;
 }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "common/core/frame.hpp"
+#include "common/core/layout.hpp"
 
 namespace ts::plot {
 // A tick: where on its axis (data units) and what it says.  The grid's
@@ -50,31 +51,32 @@ struct Series {
   float width = 2.0f;             // line width (Line, Crosses, Bars, Rings)
   float size = 5.0f;              // half-size of a mark in pixels
   double halfWidth = 0;           // Bars, in data units
-  std::vector<std::string> tags;  // text beside each point, where it fits
+  std::vector<layout::Text> tags;  // text beside each point, where it fits
 };
 // A vertical line across the plot at x (dashed every 8 px, or solid), with
 // an optional label at its top.
 struct Marker {
   double x = 0;
   glm::vec4 color{0.85f, 0.85f, 0.85f, 1.0f};
-  std::string role{}, label{};
+  std::string role{};
+  layout::Text label{};
   bool dashed = true;
   float width = 1.0f;
 };
 struct Legend {
-  std::string text;
+  layout::Text text;
   glm::vec4 color{1.0f};
 };
 // Text beside a data point, boxed (it may cross a line), offset in pixels.
 struct Note {
   glm::dvec2 at{0.0};
-  std::string text;
+  layout::Text text;
   glm::vec2 offset{40.0f, -20.0f};
 };
 
 struct Spec {
   std::string id = "plot";
-  std::string title, xLabel, yLabel;
+  layout::Text title, xLabel, yLabel;
   double x0 = 0, x1 = 1, y0 = 0, y1 = 1;  // the data range shown
   std::vector<Tick> xTicks, yTicks;
   std::vector<Series> series;

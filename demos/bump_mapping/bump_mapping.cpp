@@ -70,7 +70,6 @@
 #include "common/core/user_texture.hpp"
 
 namespace {
-using ts::layout::fmt;
 using ts::layout::kAmber;
 using ts::layout::kWhite;
 using bump::Found;
@@ -190,7 +189,7 @@ ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const 
   BumpMapping v = *this;
   v.heightScale_ *= s.heightFactor, v.objectScale_ *= s.objectFactor, v.distance_ = s.distanceFactor;
   ts::Frame f = ts::layout::blankFrame(kMeasureSize, kMeasureSize);
-  if (s.normals || s.embossTermOnly) f.clearColor = {0.0f, 0.0f, 0.0f, 1.0f};  // "covered" = not black
+  if ((s.normals || s.embossTermOnly) && !s.onBackdrop) f.clearColor = {0.0f, 0.0f, 0.0f, 1.0f};  // "covered" = not black
   f.panels.push_back(v.torusPanel(f, {0, 0, kMeasureSize, kMeasureSize}, s));
   if (s.method == bump::kReference && !s.smoothGeometry) return bump::renderReference(r, f);
   if (!kMethods[s.method].fixedFunction) return r.renderOffscreen(f);
@@ -207,15 +206,24 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
   const Found* found = measured.detailAs<Found>();
   L::FlowSpec spec;
   const int kAll[] = {bump::kBlinn, bump::kSeed002, bump::kNormalMap, bump::kEmboss, bump::kDot3, bump::kReference};
-  spec.n = view_ == 0 ? 1 : view_ == 3 ? 6 : 2, spec.linesAbove = 1, spec.linesBelow = 2;
-  std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
   const bool normals = view_ == 2;
+  // Six narrow cells (view all) need a third line for emboss's contrasts; the normals view a second line
+  // above for the key of its colours.
+  spec.n = view_ == 0 ? 1 : view_ == 3 ? 6 : 2, spec.linesAbove = normals ? 2 : 1, spec.linesBelow = view_ == 3 ? 3 : 2;
+  std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
   for (size_t k = 0; k < cells.size(); ++k) {
     const L::Cell& c = cells[k];
     const int m = view_ == 3 ? kAll[k] : k == 0 ? method_ : int(bump::kReference);
     const bool picture = m == bump::kReference || kMethods[m].fixedFunction;  // drawn by measure()
     const bool noNormals = normals && kMethods[m].fixedFunction;
-    L::caption(f, c.above, std::string(kMethods[m].title) + (normals && !noNormals ? ", normals" : ""), kWhite, c.scale);
+    const L::Box title = normals ? L::halves(c.above).first : c.above;
+    L::caption(f, title, std::string(kMethods[m].title) + (normals && !noNormals ? ", normals" : ""), kWhite, c.scale);
+    if (normals && k == 0)  // one key for both pictures: each channel is 0.5 + 0.5 of an eye-space component
+      L::legend(f, L::halves(c.above).second,
+                {{{1.0f, 0.5f, 0.5f, 1.0f}, "n to the right (+x)"},
+                 {{0.5f, 1.0f, 0.5f, 1.0f}, "n up (+y)"},
+                 {{0.5f, 0.5f, 1.0f, 1.0f}, "n to the eye (+z)"}},
+                1);
     if (!picture) {
       f.panels.push_back(torusPanel(f, c.picture, {m, normals}));
     } else if (found && found->pictures.count(m)) {
@@ -229,22 +237,33 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
       L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
     }
     if (!found || !found->cmp.count(m)) continue;
-    const auto it = found->cmp.find(m);
-    const bump::Compare& q = it->second;
-    std::string note;
+    // The numbers are measure()'s, by name: R's own comparison is its [ideal] (its normal on the smooth torus).
+    const std::string key = std::string("[") + (m == bump::kReference ? "ideal" : kMethods[m].key) + "]";
+    auto num = [&](const std::string& name, const char* format) { return L::measured(measured, name + key, format); };
+    L::Text note;
     if (m == bump::kReference)
-      note = normals ? fmt("R's normals on the smooth torus: %.1f deg off in the same pixel (the geometry's share)", q.screenNormalDeg)
-                     : fmt("R's own normals on the smooth torus reach %.1f dB against it: the rest is geometry", q.psnr);
+      note = normals ? "R's normals on the smooth torus: " + num("screen_normal_err_deg", "%.1f") +
+                           " deg off in the same pixel (the geometry's share)"
+                     : "R's own normals on the smooth torus reach " + num("psnr_db", "%.1f") + " dB against it: the rest is geometry";
     else if (noNormals)
-      note = "fixed function: no normal to show (the shaded picture)" + fmt(", %.1f dB against R", q.psnr);
+      note = "fixed function: no normal to show (the shaded picture), " + num("psnr_db", "%.1f") + " dB against R";
     else if (normals)
-      note = fmt("normal off by %.1f deg at the same (s,t)", q.normalDeg) + fmt(", %.1f deg in the same pixel", q.screenNormalDeg);
+      note = "normal off by " + num("normal_err_deg", "%.1f") + " deg at the same (s,t), " + num("screen_normal_err_deg", "%.1f") +
+             " deg in the same pixel";
     else
-      note = fmt("against R: PSNR %.1f dB", q.psnr) + fmt(", mean |diff| %.1f", q.mad) +
-             (!kMethods[m].fixedFunction ? fmt(", normal off by %.1f deg", q.normalDeg) : std::string());
-    if (m == bump::kEmboss && !normals && found->embossContrast[3] >= 0)
-      note += fmt("; bump contrast %.3f with the light within 10 deg of the normal", found->embossContrast[0]) +
-              fmt(", %.3f beyond 60", found->embossContrast[3]);
+      note = "against R: PSNR " + num("psnr_db", "%.1f") + " dB, mean |diff| " + num("mad", "%.1f") +
+             (!kMethods[m].fixedFunction ? ", normal off by " + num("normal_err_deg", "%.1f") + " deg" : L::Text());
+    if (m == bump::kEmboss && !normals && found->embossContrast[3] >= 0) {
+      // The first and the last band of the light's angle to the normal (kEmbossBands).
+      auto band = [&](int b) {
+        return L::measured(measured, "emboss_contrast[" + std::to_string(int(bump::kEmbossBands[b])) + "-" +
+                                         std::to_string(int(bump::kEmbossBands[b + 1])) + "deg]",
+                           "%.3f");
+      };
+      note = note + "; bump contrast " + band(0) + " with the light within " +
+             L::given("emboss band: light to normal, degrees", bump::kEmbossBands[1], "%g") + " deg of the normal, " + band(3) +
+             " beyond " + L::given("emboss band: light to normal, degrees", bump::kEmbossBands[3], "%g") + " deg";
+    }
     L::caption(f, c.below, note, kAmber, c.scale);
   }
   return f;

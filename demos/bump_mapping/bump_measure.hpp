@@ -26,6 +26,10 @@ struct RenderSpec {
   bool mipmaps = false;         // mipmapped heights (B1) or normal map (B3), trilinear
   bool dxt1 = false;            // B3's normal map compressed to DXT1 (seed 001: "bad for normal maps")
   ts::gl::CallList* recordTo = nullptr;  // a picture shown: its GL calls recorded here (ts::recordRender)
+  // Normals shown in a figure: drawn on the figure's background.  The
+  // measurements' normal renders stay on black, which is how covered() tells
+  // the surface from the rest.
+  bool onBackdrop = false;
 };
 using RenderFn = std::function<ts::Image(const RenderSpec&)>;
 
@@ -36,7 +40,7 @@ inline const double kEmbossBands[] = {0, 10, 30, 60, 90};
 struct Found {
   std::map<int, Compare> cmp;  // method -> against R (normalDeg: at the same (s,t); screenNormalDeg: same pixel)
   std::map<int, std::shared_ptr<const ts::Image>> pictures;  // R and the fixed-function methods, shaded
-  std::shared_ptr<const ts::Image> refNormals;
+  std::shared_ptr<const ts::Image> refNormals;  // R's normals as shown (on the figure's background)
   std::map<int, ts::gl::CallList> picturesGL;  // the calls that rendered each picture (the GL listing)
   ts::gl::CallList refNormalsGL;
   double embossContrast[4] = {-1, -1, -1, -1};  // per band of kEmbossBands
@@ -54,9 +58,12 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
     return render(s);
   };
   auto refShaded = std::make_shared<const ts::Image>(recorded({kReference}, &found.picturesGL[kReference]));
-  auto refNormals = std::make_shared<const ts::Image>(recorded({kReference, true}, &found.refNormalsGL));
+  auto refNormals = std::make_shared<const ts::Image>(render({kReference, true}));
+  RenderSpec shownNormals{kReference, true};
+  shownNormals.onBackdrop = true;
+  found.refNormals = std::make_shared<const ts::Image>(recorded(shownNormals, &found.refNormalsGL));
   const ts::Image exact = render({kReference, true, true}), smooth = render({kFlat, true});
-  found.pictures[kReference] = refShaded, found.refNormals = refNormals;
+  found.pictures[kReference] = refShaded;
   ts::measureProgress(0.15);
   std::map<int, ts::Image> normals;
   for (int m = 0; m < kMethodCount; ++m) {

@@ -55,6 +55,12 @@ inline glm::mat4 projectionMatrix(float zoom) {
   return c.lens(glm::perspective(glm::radians(kFovDeg), 1.0f, 1.0f, 20.0f));
 }
 
+// The lens each object is seen through, as a zoom: the torus (outer radius
+// 1.4) is wider than the 30° view at the eye's distance (5 tan 15° = 1.34
+// units each side of its centre), so its passes zoom out to 0.8 (1.67 units)
+// and its sides stay in the picture; the sphere and the mirror fit at 1.
+inline float objectLens(int object) { return object == envmap::kTorus ? 0.8f : 1.0f; }
+
 // ---- view dependence -----------------------------------------------------
 // A sphere map made for the eye at yaw 0 read by the sphere from an eye
 // turned by each angle (per pixel, so only the stale view is measured): the
@@ -170,11 +176,12 @@ inline Mirror mirrorNear(const envmap::Pixels& ref, const glm::mat4& projection,
 
 // ---- all of the above, as the demo prints them -----------------------------
 inline void addStudies(envmap::EnvGL& g, int face, ts::Measurements& out) {
-  {  // the flat mirror in the default view
+  {  // the flat mirror in the default view, at the measuring size (Pass: 256 x 256; a figure's own picture
+     // counts its pixels as mirror_ball_pixels*[shown])
     envmap::Pass ps;
     ps.object = envmap::kMirror, ps.view = viewMatrix(0, 0), ps.projection = projectionMatrix(1);
     const Mirror m = mirrorNear(g.draw(ps), ps.projection, ps.view, ps.model);
-    out.push_back({"mirror_ball_pixels", double(m.truePixels), "mirror pixels that show the near ball in a true mirror"});
+    out.push_back({"mirror_ball_pixels", double(m.truePixels), "mirror pixels that show the near ball in a true mirror (the default view, 256 x 256)"});
     out.push_back({"mirror_ball_pixels_centre_map", double(m.mapPixels), "pixels a map made at the mirror's centre, ball included, shows it at"});
     out.push_back({"mirror_ball_pixels_both", double(m.both), "pixels where the true mirror and that map both show it"});
     out.push_back({"mirror_ball_error_mean_deg", m.meanDeg, "mean angle between r and the direction from the centre to the ball point shown"});

@@ -40,11 +40,14 @@
 //   + / -  memory (texels a cube face side; the others as many texels)
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+
 #include "common/gl/gl_listing.hpp"
 #include "common/core/layout.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
+#include "common/core/text.hpp"
 #include "common/core/textures.hpp"
 #include "env_gl.hpp"
 #include "env_measure.hpp"
@@ -90,7 +93,7 @@ class EnvironmentMapping final : public ts::Scene {
   std::vector<ts::FigureSpec> figures() const override {
     return {{"env_cube_sphere", "Buss VI.3 (seeds 001, 002)",
              "A mirror sphere reflecting the world stored as a cube map, r per vertex by GL_REFLECTION_MAP texgen: "
-             "the picture, the exact reflection per pixel, and the direction error in degrees (black 0, yellow 4 or more).",
+             "the picture, the exact reflection per pixel, and the direction error in degrees (black 0, red at half the scale, white at 4 or more).",
              {"--eval", "vertex"}, 1080, 440,
              "r per vertex, interpolated, through the cube map: {error_mean_deg[shown]} deg mean and "
              "{error_max_deg[shown]} deg largest direction error (r per pixel: {error_mean_deg[cube/sphere/pixel]})."},
@@ -121,8 +124,8 @@ class EnvironmentMapping final : public ts::Scene {
              "show it many times too large.",
              {"--object", "mirror", "--param", "latlong", "--eval", "vertex"}, 1080, 440,
              "Lat-long, r per vertex, across the seam: {error_mean_deg[shown]} deg mean, {error_max_deg[shown]} deg "
-             "largest error; a map made at the centre shows the near ball at {mirror_ball_pixels_centre_map} pixels, "
-             "not {mirror_ball_pixels}."}};
+             "largest error; a map made at the centre shows the near ball at {mirror_ball_pixels_centre_map[shown]} "
+             "pixels of the picture, not {mirror_ball_pixels[shown]}."}};
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
@@ -132,7 +135,7 @@ class EnvironmentMapping final : public ts::Scene {
     envmap::Pass p;
     p.param = param, p.object = object, p.perVertex = perVertex, p.directions = directions;
     p.view = envmap::viewMatrix(orbit_.yaw, orbit_.pitch);
-    p.projection = envmap::projectionMatrix(orbit_.zoom);
+    p.projection = envmap::projectionMatrix(orbit_.zoom * envmap::objectLens(object));
     // No texture coordinates: view * model becomes glLoadMatrixf(GL_MODELVIEW) in EnvGL::draw, r comes from it.
     p.model = glm::rotate(glm::mat4(1.0f), glm::radians(tilt_), glm::vec3(1, 0, 0)) *
               glm::rotate(glm::mat4(1.0f), glm::radians(turn_), glm::vec3(0, 1, 0));
@@ -140,8 +143,13 @@ class EnvironmentMapping final : public ts::Scene {
     p.faceTexels = face_, p.w = p.h = size;
     return p;
   }
-  std::string refCaption() const {  // the mirror's is the exact world; the others read a fine cube map (env_views.hpp)
-    return object_ == envmap::kMirror ? "reference: exact r per pixel" : fmt("reference: exact r, cube map %.0f", envmap::kReferenceFace);
+  ts::layout::Text refCaption() const {  // the mirror's is the exact world; the others read a fine cube map (env_views.hpp)
+    if (object_ == envmap::kMirror) return "reference: exact r per pixel";
+    return "reference: exact r, cube map " + ts::layout::given("reference cube map: texels along a face's side", envmap::kReferenceFace, "%.0f");
+  }
+  // The measurement table's key of `param` for the shown object and evaluation ("latlong/torus/vertex").
+  std::string tableKey(int param) const {
+    return std::string(envmap::kParamKeys[param]) + "/" + envmap::kObjectKeys[object_] + "/" + kEval[eval_];
   }
   std::string stateName(int param) const {
     return std::string(envmap::kParamLabels[param]) + ", r per " + kEval[eval_] +
@@ -159,9 +167,31 @@ ts::TextureDesc image(const ts::Image& img, const std::string& what, ts::gl::Cal
   t.renderedBy = std::move(gl);
   return t;
 }
-std::string statsLine(const envmap::ErrorStats& s) {
-  return fmt("error mean %.2f", s.mean) + fmt(", 95%% %.2f", s.p95) + fmt(", max %.1f deg", s.max) + " (" + s.maxRegion + ")";
+// The shown state's error, as measured (measure() names it [shown]).
+ts::layout::Text statsLine(const ts::Measurements& m, const envmap::ErrorStats& s) {
+  namespace L = ts::layout;
+  return L::measuredText(m, "error mean {error_mean_deg[shown]|%.2f}, ") + L::given("percentile", 95, "%g") +
+         L::measuredText(m, "% {error_p95_deg[shown]|%.2f}, max {error_max_deg[shown]|%.1f} deg") + " (" + s.maxRegion + ")";
 }
+// The error picture's key: the heat scale's colours at 0, half and the whole of the scale.
+std::vector<ts::LegendEntry> heatKey(double scaleDeg) {
+  auto c = [&](double e) { return glm::vec4(glm::vec3(envmap::heat(e, scaleDeg)), 1.0f); };
+  return {{c(0), "no error"}, {c(0.5 * scaleDeg), "half the scale"}, {c(scaleDeg), "the scale or more"}};
+}
+// A key in a cell's band: at the largest scale (at most `scale`) at which its widest entry fits; an entry
+// too wide even at scale 1 (a narrow window's cell) is left out rather than run into the next cell.
+void cellKey(ts::Frame& f, ts::layout::Box band, const std::vector<ts::LegendEntry>& entries, int scale) {
+  auto entryWidth = [](const ts::LegendEntry& e, int s) { return ts::text::height(s) + 4.0f * float(s) + ts::text::width(e.meaning, s); };
+  float widest = 0;
+  for (const ts::LegendEntry& e : entries) widest = std::max(widest, entryWidth(e, 1));
+  int s = std::max(1, scale);
+  while (s > 1 && widest * float(s) > band.w()) --s;
+  std::vector<ts::LegendEntry> fit;
+  for (const ts::LegendEntry& e : entries)
+    if (entryWidth(e, s) <= band.w()) fit.push_back(e);
+  ts::layout::legend(f, band, fit, s);
+}
+const glm::vec4 kNearBall{230 / 255.0f, 40 / 255.0f, 40 / 255.0f, 1.0f};  // painted on the flat mirror's reference
 
 ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurements& measured) const {
   namespace L = ts::layout;
@@ -170,10 +200,13 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   const L::Box area{6, 6, float(width) - 6, float(height) - 6};
   // The object pictures are resampled to the panel with GL_LINEAR: with GL_NEAREST the panel's middle row and
   // column sample exactly between two pixels, where backends round apart.  The map keeps its texels sharp.
-  auto show = [&](const L::Cell& c, const std::string& id, const ts::TextureDesc* t, const std::string& above,
-                  const std::string& below) {
+  // A cell's title takes the upper line of its band; a key of the picture's colours, when it has one, the lower.
+  auto show = [&](const L::Cell& c, const std::string& id, const ts::TextureDesc* t, const L::Text& above, const L::Text& below,
+                  const std::vector<ts::LegendEntry>& key = {}) {
     if (t && t->image) f.panels.push_back(L::picturePanel(f, id, c.picture, *t));  // a nested frame's picture upright
-    L::caption(f, c.above, above, kWhite, c.scale);
+    const L::Box title = key.empty() ? c.above : L::halves(c.above).first;
+    L::caption(f, title, above, kWhite, c.scale);
+    if (!key.empty()) cellKey(f, L::halves(c.above).second, key, c.scale);
     if (!below.empty()) L::caption(f, c.below, below, kAmber, c.scale);
   };
   if (view_ == kCompareView) {
@@ -183,7 +216,9 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     for (int k = 0; k < 4; ++k)
       show(cells[size_t(k)], envmap::kParamKeys[k], found ? &found->pictures[size_t(k)] : nullptr,
            std::string(envmap::kParamLabels[k]) + (eval_ == 1 && (k == envmap::kCube || k == envmap::kSphere) ? " (texgen)" : ""),
-           found ? fmt("mean %.2f", found->compare[size_t(k)].mean) + fmt(", max %.1f deg", found->compare[size_t(k)].max) : "");
+           found ? L::measuredText(measured, "mean {error_mean_deg[" + tableKey(k) + "]|%.2f}, max {error_max_deg[" +
+                                                   tableKey(k) + "]|%.1f} deg")
+                 : L::Text());
     show(cells[4], "reference", found ? &found->reference : nullptr, refCaption(),
          std::string("the maps: r per ") + kEval[eval_]);
     return f;
@@ -195,29 +230,37 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     spec.linesAbove = 1, spec.linesBelow = 2;
     spec.aspect = param_ == envmap::kCube ? 1.5f : float(sz.w) / float(sz.h);
     L::Cell m = L::flow({area.x0, area.y0, mid - 6, area.y1}, spec)[0];
+    const L::Text texels = found ? L::measured(measured, "texels", "%.0f")
+                                 : L::given("texels of the map", envmap::mapTexels(envmap::Param(param_), face_), "%.0f");
     show(m, "map", found ? &found->map : nullptr,
-         std::string(envmap::kParamLabels[param_]) + fmt(", %.0f texels", envmap::mapTexels(envmap::Param(param_), face_)) +
+         std::string(envmap::kParamLabels[param_]) + ", " + texels + " texels" +
              (param_ == envmap::kCube ? ": +X -X +Y / -Y +Z -Z, t down" : ""),
          "lit: the texels the object reads");
     if (found) envmap::lightTheReadTexels(f.panels.back(), found->lit);
     spec.aspect = 1.0f;
     show(L::flow({mid + 6, area.y0, area.x1, area.y1}, spec)[0], "picture", found ? &found->picture : nullptr,
-         stateName(param_), found ? statsLine(found->current) : "");
+         stateName(param_), found ? statsLine(measured, found->current) : L::Text());
     return f;
   }
+  // Two lines above each picture: its title, and the key of the colours the reference and the error carry.
   L::FlowSpec spec;
-  spec.n = 3, spec.linesAbove = 1, spec.linesBelow = 2, spec.gap = 8;
+  spec.n = 3, spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 8;
   std::vector<L::Cell> cells = L::flow(area, spec);
-  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(found->current) : "");
-  std::string refNote;
+  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(measured, found->current) : L::Text());
+  // The near ball's pixels are those painted red on this very picture (measure(): [shown]).
+  L::Text refNote;
   if (found && object_ == envmap::kMirror)
-    refNote = fmt("red: a near ball, %.0f px; a map made at the centre shows it at ", found->mirror.truePixels) +
-              fmt("%.0f px", found->mirror.mapPixels) + fmt(", %.0f right", found->mirror.both);
-  show(cells[1], "reference", found ? &found->reference : nullptr, refCaption(), refNote);
+    refNote = L::measuredText(measured, "red: a near ball, {mirror_ball_pixels[shown]|%.0f} px; a map made at the centre shows it at "
+                                        "{mirror_ball_pixels_centre_map[shown]|%.0f} px, {mirror_ball_pixels_both[shown]|%.0f} right");
+  std::vector<ts::LegendEntry> refKey;
+  if (object_ == envmap::kMirror) refKey = {{kNearBall, "the near ball (a true mirror)"}};
+  show(cells[1], "reference", found ? &found->reference : nullptr, refCaption(), refNote, refKey);
   const ts::TextureDesc errorTex = found ? image(found->error, "error") : ts::TextureDesc{};
+  const double scale = found ? found->errorScale : envmap::errorScale(eval_ == 1, 0);
   show(cells[2], "error", found ? &errorTex : nullptr,
-       fmt("direction error (black 0, yellow %g deg)", found ? found->errorScale : envmap::errorScale(eval_ == 1, 0)),
-       found ? "worst in: " + found->current.maxRegion : "");
+       "direction error (black " + L::given("error shown black, degrees", 0, "%g") + ", white " +
+           L::given("error shown white, degrees (the heat scale's top)", scale, "%g") + " deg or more)",
+       found ? "worst in: " + found->current.maxRegion : "", heatKey(scale));
   return f;
 }
 
@@ -261,6 +304,7 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
   const envmap::Pixels looked = g.draw(shown);
   std::vector<float> perPixel;
   found.current = envmap::errorStats(param_, looked, ref, shown.eyeRotation(), &perPixel);
+  out.insert(out.begin(), {"error_p95_deg[shown]", found.current.p95, "the picture shown: 95th percentile of the direction error, degrees"});
   out.insert(out.begin(), {"error_max_deg[shown]", found.current.max, "the picture shown: largest direction error, degrees"});
   out.insert(out.begin(), {"error_mean_deg[shown]", found.current.mean, "the picture shown: mean direction error, degrees"});
   auto picture = [&](int p) { return envmap::nestedTexture(r, envmap::passFrame(pass(p, object_, eval_ == 1, false, n)), stateName(p)); };
@@ -277,8 +321,15 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
     ts::Image painted = envmap::referenceImage(ref);
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x)
-        if (found.mirror.trueMask[size_t(y) * size_t(n) + size_t(x)]) painted.set(x, n - 1 - y, {230, 40, 40, 255});
+        if (found.mirror.trueMask[size_t(y) * size_t(n) + size_t(x)]) painted.set(x, n - 1 - y, envmap::toRgba(glm::dvec3(kNearBall)));
     found.reference = image(painted, "reference", refGL);
+    // The picture's own counts (render_ x render_ pixels), which its caption prints: the table's
+    // mirror_ball_pixels* come from addStudies' pass at the measuring size.
+    out.push_back({"mirror_ball_pixels[shown]", double(found.mirror.truePixels),
+                   "pixels of the shown reference picture painted red: the near ball in a true mirror"});
+    out.push_back({"mirror_ball_pixels_centre_map[shown]", double(found.mirror.mapPixels),
+                   "pixels of the shown picture where a map made at the mirror's centre, ball included, shows it"});
+    out.push_back({"mirror_ball_pixels_both[shown]", double(found.mirror.both), "pixels of the shown picture where both show it"});
   } else {
     found.reference = envmap::nestedTexture(r, envmap::referenceFrame(pass(-1, object_, false, false, n)), "reference");
   }

@@ -49,8 +49,13 @@
 // forms (the reference's log2(rho_edge/rho_max) at 45 degrees, and which
 // form this rasterizer uses: the level its trilinear filter reads at 0 and
 // 45 degrees); SAT's box ratio; every method's RMS against the exact
-// integral at 0, 22.5 and 45 degrees and its texels read per pixel; in the
-// kernels and bias views, each kernel's and each bias's numbers.
+// integral at 0, 22.5 and 45 degrees and its texels read per pixel; the
+// last mip level that keeps level 0's colours under a nearest sample and
+// where GL_NEAREST_MIPMAP_NEAREST's picture parts from GL_NEAREST's (the
+// checkerboard's levels 1..5 are the same board, so over the far field the
+// two draw the same picture); in the supports view, the picked pixel's
+// footprint; in the kernels and bias views, each kernel's and each bias's
+// numbers, and the mean each 1 x 1 level stands for.
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -143,10 +148,10 @@ ts::Frame FilterZoo::build(int width, int height, const ts::Measurements& measur
   ts::Frame f = ts::layout::blankFrame(width, height);
   const Views v = views();
   switch (view_) {
-    case kAzimuthGrid: v.buildAzimuths(f, m); break;
-    case kSupports: v.buildSupports(f, m); break;
-    case kMemory: v.buildMemory(f, m); break;
-    case kKernels: v.buildKernels(f, m); break;
+    case kAzimuthGrid: v.buildAzimuths(f, m, measured); break;
+    case kSupports: v.buildSupports(f, m, measured); break;
+    case kMemory: v.buildMemory(f, m, measured); break;
+    case kKernels: v.buildKernels(f, m, measured); break;
     case kBias: v.buildBias(f, m); break;
     default: v.buildMethods(f, m); break;
   }
@@ -216,6 +221,7 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
   ms.push_back({"ripmap_overhead", ripmapMemoryRatio(kTexels, kTexels) - 1, "what seed 001 calls 3x"});
   for (int s : {256, 512, 1024})
     ms.push_back({"sat_bits[" + std::to_string(s) + "]", double(satBits(s, s)), "bits a SAT entry needs at " + std::to_string(s) + "^2, 8-bit texels"});
+  ms.push_back({"sat_memory_ratio", satBits(kTexels, kTexels) / 8.0, "a 256^2 SAT over the 8-bit texture (its bits a channel / 8)"});
   const ts::Image white(1, 1, {255, 255, 255, 255});
   for (int s : {256, 512})
     ms.push_back({"sat_float_inexact[" + std::to_string(s) + "]", double(floatSatMismatches(white, s)),
@@ -255,6 +261,18 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
       ms.push_back({"rms_exact[" + std::string(methodKey(m)) + "@" + where + azKey(row.azimuth) + "]", row.rms[size_t(m)],
                     std::string(methodTitle(m)) + " against the exact area integral (8-bit RMS), texture turned " + azKey(row.azimuth) + " deg"});
   }
+  // GL_NEAREST_MIPMAP_NEAREST against GL_NEAREST: where the chain's levels
+  // keep level 0's colours under a nearest sample, the two pictures agree.
+  if (scene_ == kSlant) {
+    ms.push_back({"last_level_like_level0", double(lastLevelLikeLevel0(ts::buildMipChain(*sceneTexture(scene_, pattern_).image))),
+                  "the last mip level in which a nearest sample takes level 0's colour everywhere (GL_NEAREST_MIPMAP_NEAREST = "
+                  "GL_NEAREST up to lambda = it + 0.5)"});
+    long inMask = 0;
+    double fromLod = HUGE_VAL;
+    for (const Row& row : res.rows) inMask += row.nmnDiffersInMask, fromLod = std::min(fromLod, row.nmnDiffersFromLod);
+    ms.push_back({"nmn_nearest_differ_far", double(inMask), "far-field pixels where GL_NEAREST_MIPMAP_NEAREST's picture differs from GL_NEAREST's (every azimuth)"});
+    ms.push_back({"nmn_nearest_differ_lod_min", fromLod, "the lowest exact LOD of a pixel where the two pictures differ (every azimuth)"});
+  }
   const Row& cur = res.rows[size_t(res.current)];
   for (int m = 0; m < kMethodCount; ++m)
     if (cur.reads[size_t(m)] >= 0)
@@ -269,6 +287,31 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
       ms.push_back({"rms_kernel[" + key + "]", k.rms,
                     std::string("trilinear with this chain against the exact integral") + (k.linear ? " of linear light" : "") + " (far field)"});
       ms.push_back({"mip_top[" + key + "]", k.top, "the chain's 1 x 1 level (grey)"});
+    }
+    // What every 1 x 1 level stands for, and how far the kernels' chains end from it.
+    const ts::TextureDesc board = sceneTexture(kSlant, pattern_);
+    const ts::Image& base = *board.image;
+    for (bool lin : {false, true}) {
+      const std::string domain = lin ? "linear" : "srgb";
+      const double mean = meanGrey(base, lin);
+      double worst = 0;
+      for (const KernelRow& k : res.kernels)
+        if (k.linear == lin) worst = std::max(worst, std::abs(k.top - mean));
+      ms.push_back({"mip_mean[" + domain + "]", mean,
+                    std::string("the texture's mean grey in double precision, of its ") + (lin ? "linear-light values, encoded" : "sRGB values")});
+      ms.push_back({"mip_top_max_error[" + domain + "]", worst, "the largest |1 x 1 level - that mean| over the kernels (8-bit rounding at each level)"});
+    }
+  }
+  if (view_ == kSupports) {
+    const std::array<int, 2> px = ts::parsePixel(pick_, "--pick");
+    const PickedPixel p = pickedPixel(scene_, azimuth_, px[0], px[1], bias_);
+    if (p.on) {
+      ms.push_back({"pick_preimage_texels", p.preimageTexels, "the picked pixel's exact preimage: its area in texels of level 0"});
+      ms.push_back({"pick_sat_box_ratio", p.satBoxRatio, "SAT's box over the picked pixel's footprint (the derivative parallelogram)"});
+      ms.push_back({"pick_lambda", p.lambda, "the picked pixel's lambda, log2 rho_edge (+ bias)"});
+      ms.push_back({"pick_texels_per_pixel", p.texelsPerPixel, "the picked pixel's rho_edge: texels a pixel along its longer side"});
+      ms.push_back({"pick_probes", double(p.probe.n), "the probe line's probes at the picked pixel"});
+      ms.push_back({"pick_probe_lambda", p.probe.lambda, "... and the level they read, log2(P_max / N)"});
     }
   }
   if (view_ == kBias) {

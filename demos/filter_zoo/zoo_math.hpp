@@ -798,4 +798,35 @@ inline double topValue(const std::vector<ts::Image>& chain) {
   const ts::Rgba c = chain.back().at(0, 0);
   return (c.r + c.g + c.b) / 3.0;
 }
+// The last level k of a chain in which a nearest sample takes level 0's
+// colour wherever it lands: every level-0 texel (i, j) has the colour of
+// level k's texel (i >> k, j >> k).  A checkerboard of 32-texel checks
+// keeps its board through level 5 (1-texel checks), so up to there
+// GL_NEAREST_MIPMAP_NEAREST, which reads level round(lambda), draws exactly
+// what GL_NEAREST draws: the two differ only where lambda > 5.5.
+inline int lastLevelLikeLevel0(const std::vector<ts::Image>& chain) {
+  int last = 0;
+  for (size_t k = 1; k < chain.size(); ++k) {
+    const ts::Image& base = chain[0];
+    for (int j = 0; j < base.height; ++j)
+      for (int i = 0; i < base.width; ++i)
+        if (!(chain[k].at(std::min(i >> k, chain[k].width - 1), std::min(j >> k, chain[k].height - 1)) == base.at(i, j))) return last;
+    last = int(k);
+  }
+  return last;
+}
+// What a 1 x 1 level stands for: the image's mean grey in double precision,
+// of the sRGB values or of the linear-light values encoded back to sRGB.  A
+// kernel whose taps sum to 1 (GL_REPEAT) keeps the mean exactly; a chain's
+// 1 x 1 level departs from it only by the 8-bit rounding of each level.
+inline double meanGrey(const ts::Image& img, bool linearLight) {
+  double sum = 0;
+  for (int j = 0; j < img.height; ++j)
+    for (int i = 0; i < img.width; ++i) {
+      const ts::Rgba c = img.at(i, j);
+      for (double v : {double(c.r), double(c.g), double(c.b)}) sum += linearLight ? srgbToLinear(v) : v;
+    }
+  const double mean = sum / (3.0 * img.width * img.height);
+  return linearLight ? linearToSrgb(mean) : mean;
+}
 }  // namespace zoo

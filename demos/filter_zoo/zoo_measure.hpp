@@ -179,11 +179,38 @@ inline double glLevelAt(ts::Renderer& r, double azimuthDeg, double lambdaEdge) {
   return ts::lod::levelOfColour(ts::lod::meanOf(img, {16, 16, 32, 32}), kLevels);
 }
 
+// ---------------------------------------------------------------- one pixel's footprint
+// The supports view's pixel (column, row of the 384 x 192 picture, 0,0 top
+// left): what its footprint asks of each method, from the scene's homography.
+struct PickedPixel {
+  bool on = false;  // the whole pixel centre lies on the surface
+  double preimageTexels = 0, satBoxRatio = 0, lambda = 0, texelsPerPixel = 0;
+  ProbeLine probe;
+};
+inline PickedPixel pickedPixel(int scene, double az, int col, int row, double bias) {
+  const View v = sceneView(scene, az);
+  const double x = col + 0.5, y = kImageH - 1 - row + 0.5;
+  PickedPixel p;
+  p.on = v.covers(x, y);
+  if (!p.on) return p;
+  const Jacobian j = v.jacobian(x, y);
+  p.preimageTexels = std::abs(ts::signedArea(v.preimage(col, row)));
+  p.satBoxRatio = satBoxRatio(j);
+  p.lambda = glLambda(j, bias);
+  p.texelsPerPixel = ts::lod::rhoExact(j);
+  p.probe = probeLine(j, bias);
+  return p;
+}
+
 // ---------------------------------------------------------------- what measure() found
 struct Row {
   double azimuth = 0;
   std::array<ts::TextureDesc, kMethodCount> pictures;
   std::array<double, kMethodCount> rms{}, reads{};
+  // Where GL_NEAREST_MIPMAP_NEAREST's picture differs from GL_NEAREST's:
+  // pixels in the RMS's mask, and the lowest exact LOD of any pixel (+inf: none).
+  long nmnDiffersInMask = 0;
+  double nmnDiffersFromLod = HUGE_VAL;
 };
 struct KernelRow {
   int kernel = 0;
@@ -257,8 +284,9 @@ inline Row measureRow(ts::Renderer& r, int scene, int pattern, double az, double
   const std::vector<char> mask = sceneMask(scene, v);
   const std::shared_ptr<const Picture> exact = exactPicture(scene, pattern, az, p);
   const ts::TextureDesc tex = sceneTexture(scene, pattern);
+  std::array<ts::Image, kMethodCount> imgs;
   for (int m = 0; m < kMethodCount; ++m) {
-    ts::Image img;
+    ts::Image& img = imgs[size_t(m)];
     std::shared_ptr<const CpuResult> cpu;
     if (!byGL(m) || counts) cpu = cpuResult(m, scene, pattern, az, bias);
     if (byGL(m)) img = glPicture(r, v, tex, m, bias);
@@ -267,6 +295,13 @@ inline Row measureRow(ts::Renderer& r, int scene, int pattern, double az, double
     row.reads[size_t(m)] = counts ? cpu->reads : 0;
     row.pictures[size_t(m)] = pictureTexture(img, methodKey(m), scene, az);
   }
+  const ts::Image &nearest = imgs[kNearest], &nmn = imgs[kNearestMipNearest];
+  for (int y = 0; y < v.h; ++y)
+    for (int x = 0; x < v.w; ++x) {
+      if (nearest.at(x, y) == nmn.at(x, y) || !v.coversPixel(x, y)) continue;
+      row.nmnDiffersInMask += mask[size_t(y) * size_t(v.w) + size_t(x)];
+      row.nmnDiffersFromLod = std::min(row.nmnDiffersFromLod, std::log2(ts::lod::rhoExact(v.jacobian(x + 0.5, v.h - 1 - y + 0.5))));
+    }
   return row;
 }
 

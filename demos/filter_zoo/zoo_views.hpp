@@ -32,7 +32,7 @@ const glm::vec4 kGrey{0.6f, 0.6f, 0.65f, 1.0f};
 // and trilinear's 2^lambda square: common/app/inspect_view.cpp).
 const glm::vec4 kPreimageColour{1.0f, 1.0f, 1.0f, 1.0f}, kEllipseColour{1.0f, 0.3f, 0.9f, 1.0f},
     kSquareColour{1.0f, 0.85f, 0.2f, 1.0f}, kRipmapColour{0.35f, 1.0f, 0.35f, 1.0f}, kSatColour{0.2f, 0.9f, 1.0f, 1.0f},
-    kProbeColour{1.0f, 0.45f, 0.1f, 1.0f};
+    kProbeColour{1.0f, 0.45f, 0.1f, 1.0f}, kTexelGridColour{0.42f, 0.42f, 0.47f, 1.0f};
 
 // Bytes per texel of what each method keeps, over the texture's: the memory
 // figure's x (SAT: satBits / 8 a channel).
@@ -46,6 +46,85 @@ inline double memoryRatio(int m) {
   }
 }
 
+// Whether `ms` holds every measurement a label template names ("{name}" or
+// "{name|%.2f}"): a window draws before its first measurement, and the
+// click test builds over stand-in pictures with none.
+inline bool measuresAll(const ts::Measurements& ms, const std::string& templ) {
+  for (size_t open = templ.find('{'); open != std::string::npos; open = templ.find('{', open + 1)) {
+    const size_t close = templ.find('}', open);
+    const std::string name = templ.substr(open + 1, std::min(templ.find('|', open), close) - open - 1);
+    if (std::none_of(ms.begin(), ms.end(), [&](const ts::Measurement& x) { return x.name == name; })) return false;
+  }
+  return true;
+}
+// The template with its measurements printed, or `otherwise` when this
+// state has not measured them: a number is printed only from `ms`.
+inline L::Text printed(const ts::Measurements& ms, const std::string& templ, const L::Text& otherwise = L::Text()) {
+  return measuresAll(ms, templ) ? L::measuredText(ms, templ) : otherwise;
+}
+// A method's name; GL's anisotropic filter's says its limit, a parameter.
+inline L::Text methodText(int m) {
+  if (m == kAniso16) return L::Text("GL anisotropic ") + L::given("GL_TEXTURE_MAX_ANISOTROPY_EXT", kMaxAniso, "%g") + "x";
+  return L::Text(methodTitle(m));
+}
+// A number in a name (a kernel's width, a level's index): given, not measured.
+inline L::Text num(const std::string& what, double v) { return L::given(what, v, "%g"); }
+// A kernel's name, its parameters given.
+inline L::Text kernelText(int k) {
+  switch (k) {
+    case kBox: return "box (Buss's " + num("the box's width, texels", 2) + "x" + num("the box's height, texels", 2) + ")";
+    case kLanczos2: return "Lanczos-" + num("Lanczos lobes", 2);
+    case kLanczos3: return "Lanczos-" + num("Lanczos lobes", 3);
+    default: return L::Text(kernelTitle(k));
+  }
+}
+// "1x1 level": the chain's last level, named by its size.
+inline L::Text topLevelText() { return num("the last level's width", 1) + "x" + num("the last level's height", 1) + " level"; }
+// A key of meaningful colours (layout::legend) whose meanings print numbers:
+// the numbers attached to the labels that show them.
+inline float legendOf(ts::Frame& f, L::Box band, const std::vector<std::pair<glm::vec4, L::Text>>& entries, int scale) {
+  std::vector<ts::LegendEntry> plain;
+  L::Text all;
+  for (const auto& [colour, meaning] : entries) plain.push_back({colour, meaning.text}), all = all + meaning;
+  const size_t first = f.labels.size();
+  const float below = L::legend(f, band, plain, scale);
+  L::attachNumbers(f, first, all);
+  return below;
+}
+// A key line per entry (a swatch and its meaning in its colour), from the
+// top of `band` down, the meanings' numbers attached; returns the y below
+// the last line.  layout::legend's swatch is a boxed label, reaching 3 px a
+// scale beyond its text on every side: the lines keep that room.
+inline float keyPad(int scale) { return 3.0f * float(scale); }
+inline float keyStep(int scale) { return L::lineHeight(scale) + 3.0f * float(scale); }
+// The width a key line takes at `scale`: pad, swatch, gap and text (layout::legend's).
+inline float keyWidth(const std::string& meaning, int scale) {
+  return keyPad(scale) + ts::text::height(scale) + 4.0f * float(scale) + ts::text::width(meaning, scale);
+}
+inline float keyLines(ts::Frame& f, L::Box band, const std::vector<std::pair<glm::vec4, L::Text>>& entries, int scale) {
+  float y = band.y0 + keyPad(scale);
+  for (const auto& [colour, meaning] : entries) {
+    if (y + ts::text::height(scale) + keyPad(scale) > band.y1 + 1) break;
+    if (keyWidth(meaning.text, scale) <= band.w()) {
+      legendOf(f, {band.x0 + keyPad(scale), y, band.x1, y + L::lineHeight(scale)}, {{colour, meaning}}, scale);
+      y += keyStep(scale);
+      continue;
+    }
+    // Too wide for its line (a small window): layout::legend's swatch, the
+    // meaning wrapped beside it, and the entry in the frame's legend.
+    ts::Label swatch;
+    swatch.x = band.x0 + keyPad(scale), swatch.y = y, swatch.text = " ", swatch.scale = scale, swatch.background = colour;
+    f.labels.push_back(swatch);
+    f.legend.push_back({colour, meaning.text});
+    const float x0 = swatch.x + ts::text::height(scale) + 4.0f * float(scale);
+    const float below = L::caption(f, {x0, y, band.x1, band.y1}, meaning, colour, scale, ts::Align::Left);
+    y = std::max(y + keyStep(scale), below + keyPad(scale) + float(scale));
+  }
+  return y;
+}
+// The height `lines` key lines take at `scale`.
+inline float keyHeight(int lines, int scale) { return float(lines) * keyStep(scale) + keyPad(scale); }
+
 // The state a drawing needs.
 struct Views {
   int scene = kSlant, method = kProbes, pattern = kChecker, kernel = kBox;
@@ -54,36 +133,41 @@ struct Views {
   int pickX = 250, pickY = 100;  // the supports view's pixel, in the 384 x 192 picture (0,0 top left)
 
   void buildMethods(ts::Frame& f, const Result* m) const;
-  void buildAzimuths(ts::Frame& f, const Result* m) const;
-  void buildSupports(ts::Frame& f, const Result* m) const;
-  void buildMemory(ts::Frame& f, const Result* m) const;
-  void buildKernels(ts::Frame& f, const Result* m) const;
+  void buildAzimuths(ts::Frame& f, const Result* m, const ts::Measurements& ms) const;
+  void buildSupports(ts::Frame& f, const Result* m, const ts::Measurements& ms) const;
+  void buildMemory(ts::Frame& f, const Result* m, const ts::Measurements& ms) const;
+  void buildKernels(ts::Frame& f, const Result* m, const ts::Measurements& ms) const;
   void buildBias(ts::Frame& f, const Result* m) const;
 
-  std::string sceneText() const {
-    return scene == kSlant ? "slanted plane, texture turned " + fmt("%g", azimuth) + " deg"
-           : scene == kZonePlate ? "zone plate, turned " + fmt("%g", azimuth) + " deg, 2.5 texels a pixel"
-                                 : "magnified: 256 texels over 300 pixels, turned " + fmt("%g", azimuth) + " deg";
+  L::Text sceneText() const {
+    const L::Text turn = L::given("azimuth, degrees", azimuth, "%g");
+    return scene == kSlant ? "slanted plane, texture turned " + turn + " deg"
+           : scene == kZonePlate
+               ? "zone plate, turned " + turn + " deg, " + L::given("texels a pixel", kZoneTexelsPerPixel, "%g") + " texels a pixel"
+               : "magnified: " + L::given("texels across", kTexels, "%g") + " texels over " +
+                     L::given("pixels across", kMagnifyPixels, "%g") + " pixels, turned " + turn + " deg";
   }
-  std::string maskText() const {
-    return scene == kSlant ? "RMS (8-bit R,G,B) against the exact area integral over the far field, LOD 1.5..5"
-                           : "RMS (8-bit R,G,B) against the exact area integral over the picture";
+  L::Text maskText() const {
+    const L::Text rms = "RMS (" + L::given("bits a channel", 8, "%g") + "-bit R,G,B) against the exact area integral over ";
+    return scene == kSlant ? rms + "the far field, LOD " + L::given("the far field's lowest LOD", kFarLo, "%g") + ".." +
+                                 L::given("the far field's highest LOD", kFarHi, "%g")
+                           : rms + "the picture";
   }
 };
 
 // Lines of notes at one scale: the largest (up to maxScale) at which every
 // line fits the box's width (at 1 they may wrap); from the box's top down.
-inline void notes(ts::Frame& f, L::Box box, const std::vector<std::string>& lines, glm::vec4 colour, int maxScale,
+inline void notes(ts::Frame& f, L::Box box, const std::vector<L::Text>& lines, glm::vec4 colour, int maxScale,
                   ts::Align align = ts::Align::Left) {
   int s = std::max(1, maxScale);
   auto fits = [&](int sc) {
-    for (const std::string& l : lines)
-      if (ts::text::width(l, sc) > box.w()) return false;
+    for (const L::Text& l : lines)
+      if (ts::text::width(l.text, sc) > box.w()) return false;
     return true;
   };
   while (s > 1 && !fits(s)) --s;
   L::Column c(f, box);
-  for (const std::string& l : lines) c.add(l, colour, s, align);
+  for (const L::Text& l : lines) c.add(l, colour, s, align);
 }
 // The height `lines` lines of notes take at `scale` (one line each).
 inline int notesHeight(int lines, int scale) { return int(std::ceil(lines * L::lineHeight(scale))) + 4; }
@@ -122,43 +206,64 @@ inline void Views::buildMethods(ts::Frame& f, const Result* m) const {
                  colour, c.scale, ts::Align::Left);
   }
   notes(f, {4, float(h - 2 * line - 2), float(w - 4), float(h)},
-        {sceneText() + (bias != 0 ? ", LOD bias " + fmt("%g", bias) : std::string()) + ".  " + maskText(),
+        {sceneText().text + (bias != 0 ? ", LOD bias " + fmt("%g", bias) : std::string()) + ".  " + maskText().text,
          "GL_* and anisotropic: GL renders" + (m ? " (" + m->renderer + ")" : std::string()) +
              "; ripmap, SAT, probe line, EWA, exact: on the CPU, in double precision"},
         kGrey, sc, ts::Align::Center);
 }
 
-// Methods x azimuths (the slanted plane): a band per azimuth.
-inline void Views::buildAzimuths(ts::Frame& f, const Result* m) const {
+// Methods x azimuths (the slanted plane): a band per azimuth, each
+// method's RMS after its name; at the foot, the key of the highlight and
+// what the numbers are.
+inline void Views::buildAzimuths(ts::Frame& f, const Result* m, const ts::Measurements& ms) const {
   const int w = f.width, h = f.height;
   const int sc = L::scaleFor({0, 0, w, h / 3}, 2), line = int(L::lineHeight(sc));
-  const float bandH = float(h - line - 4) / 3;
+  // The foot: the highlight's key and two lines of notes, at one scale.
+  const L::Text same =
+      measuresAll(ms, "{last_level_like_level0}{nmn_nearest_differ_far}{nmn_nearest_differ_lod_min}")
+          ? "GL_NEAREST_MIPMAP_NEAREST's error is GL_NEAREST's: levels " + num("the first level above level 0", 1) + ".." +
+                L::measured(ms, "last_level_like_level0", "%.0f") +
+                " of the checkerboard are the same board, so a nearest sample takes level " + num("level", 0) +
+                "'s colour; the pictures differ in " + L::measured(ms, "nmn_nearest_differ_far", "%.0f") +
+                " far-field pixels, beyond it from LOD " + L::measured(ms, "nmn_nearest_differ_lod_min", "%.2f")
+          : L::Text();
+  const std::vector<L::Text> footNotes = {
+      "after each name: " + maskText() + (bias != 0 ? "; LOD bias " + L::given("LOD bias", bias, "%g") : L::Text()), same};
+  int fs = sc;
+  while (fs > 1 && std::any_of(footNotes.begin(), footNotes.end(), [&](const L::Text& t) { return ts::text::width(t.text, fs) > w - 8; }))
+    --fs;
+  const float footH = keyHeight(1, fs) + 2 * L::lineHeight(fs) + 4;
+  const float bandH = (float(h) - footH - 4) / 3;
   for (int b = 0; b < 3; ++b) {
     const double az = kAzimuths[size_t(b)];
     const float y0 = 2 + b * bandH;
-    L::caption(f, {4, y0, float(w - 4), y0 + float(line)}, "texture turned " + fmt("%g", az) + " deg", kAmber, sc, ts::Align::Left);
+    L::caption(f, {4, y0, float(w - 4), y0 + float(line)}, "texture turned " + L::given("azimuth, degrees", az, "%g") + " deg",
+               kWhite, sc, ts::Align::Left);
     L::FlowSpec spec;
     spec.n = kMethodCount, spec.aspect = float(kImageW) / kImageH, spec.linesAbove = 1, spec.linesBelow = 0, spec.gap = 6;
     const std::vector<L::Cell> cells = L::flow({4, y0 + float(line), float(w - 4), y0 + bandH - 2}, spec);
     const Row* row = m && m->scene == kSlant ? rowAt(m, az) : nullptr;
     for (int k = 0; k < kMethodCount && k < int(cells.size()); ++k) {
       const L::Cell& c = cells[size_t(k)];
-      std::string t = methodTitle(k);
-      if (row && k != kExact) t += "  " + fmt("%.1f", row->rms[size_t(k)]);
+      L::Text t = methodText(k);
+      if (k != kExact) t = t + printed(ms, "  {rms_exact[" + std::string(methodKey(k)) + "@" + azKey(az) + "]|%.1f}");
       L::caption(f, c.above, t, k == method ? kAmber : kWhite, c.scale, ts::Align::Left);
       picturePanel(f, std::string("az") + azKey(az) + "_" + methodKey(k), c.picture, row ? &row->pictures[size_t(k)] : nullptr,
                    c.scale);
     }
   }
-  L::caption(f, {4, float(h - line - 2), float(w - 4), float(h)},
-             "after each name: " + maskText() + (bias != 0 ? "; LOD bias " + fmt("%g", bias) : std::string()), kGrey, sc,
-             ts::Align::Left);
+  // The key of the highlight, then why GL_NEAREST_MIPMAP_NEAREST's number is GL_NEAREST's, measured.
+  const float foot = float(h) - footH;
+  const float below = keyLines(f, {4, foot, float(w - 4), foot + keyHeight(1, fs)},
+                               {{kAmber, "the method highlighted (--method): " + std::string(methodTitle(method))}}, fs);
+  notes(f, {4, below, float(w - 4), float(h)}, footNotes, kGrey, fs);
 }
 
 // One pixel's footprint on level 0 with every method's support: left (or
-// above, in a tall window) the picture with the pixel ringed and the key;
+// above, in a tall window) the picture with the pixel ringed, the claim's
+// number (SAT's box over an 8:1 footprint at 45 degrees) and the key;
 // right (or below) level 0 of the texture around the footprint.
-inline void Views::buildSupports(ts::Frame& f, const Result* m) const {
+inline void Views::buildSupports(ts::Frame& f, const Result* m, const ts::Measurements& ms) const {
   const int w = f.width, h = f.height;
   const bool wide = w >= h;
   const int sc = L::scaleFor({0, 0, wide ? w / 2 : w, wide ? h : h / 2}, 2), line = int(L::lineHeight(sc));
@@ -171,38 +276,62 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m) const {
   const ts::Polygon2 pre = on ? v.preimage(col, row) : ts::Polygon2{};
   const double lambda = on ? glLambda(j, bias) : 0;
   const ProbeLine probe = on ? probeLine(j, bias) : ProbeLine{};
-  const std::vector<std::pair<std::string, glm::vec4>> key = {
-      {"white: the exact preimage" + (on ? " (" + fmt("%.1f", std::abs(ts::signedArea(pre))) + " texels)" : std::string()), kPreimageColour},
-      {"yellow: trilinear's 2^lambda square", kSquareColour},
-      {"green: the ripmap's 2^i x 2^j", kRipmapColour},
-      {"cyan: the SAT's box" + (on ? " (" + fmt("%.2f", satBoxRatio(j)) + "x the area)" : std::string()), kSatColour},
-      {"orange: " + (on ? std::to_string(probe.n) + " probes, lambda " + fmt("%.2f", probe.lambda) : std::string("the probes")), kProbeColour},
-      {"magenta: EWA's ellipse", kEllipseColour},
-      {sceneText(), kGrey}};
+  // The key: each support's colour and what it is (this pixel's numbers, measured).
+  const std::vector<std::pair<glm::vec4, L::Text>> key = {
+      {kPreimageColour, "the exact preimage" + printed(ms, " ({pick_preimage_texels|%.1f} texels)")},
+      {kSquareColour, "trilinear's " + num("the levels' ratio", 2) + "^lambda square"},
+      {kRipmapColour, "the ripmap's " + num("the levels' ratio", 2) + "^i x " + num("the levels' ratio", 2) + "^j rectangle"},
+      {kSatColour, "the SAT's box" + printed(ms, ", {pick_sat_box_ratio|%.2f}x this pixel's footprint")},
+      {kProbeColour, printed(ms, "{pick_probes|%.0f} probes, lambda {pick_probe_lambda|%.2f}", "the probe line's probes")},
+      {kEllipseColour, "EWA's ellipse"},
+      {kAmber, "the pixel, ringed in the picture"},
+      {kTexelGridColour, "level " + num("level", 0) + "'s texel grid"}};
+  const L::Text where = sceneText();
+  // The claim's number, where the reader looks for the SAT's box.
+  const bool claimed = measuresAll(ms, "{sat_box_ratio[8to1_45deg]}{sat_box_ratio[8to1_0deg]}");
+  const L::Text eight = L::given("the footprint's long side over its short", 8, "%g") + ":" +
+                        L::given("the footprint's short side", 1, "%g");
+  const std::vector<std::pair<L::Text, int>> claim =
+      claimed ? std::vector<std::pair<L::Text, int>>{
+                    {"The SAT's box: " + L::measured(ms, "sat_box_ratio[8to1_45deg]", "%.2f") + "x the area", sc},
+                    {"of an " + eight + " footprint at " + L::given("the footprint's turn, degrees", 45, "%g") + " deg", sc},
+                    {"(along the axes: " + L::measured(ms, "sat_box_ratio[8to1_0deg]", "%.2f") + "x)", 1}}
+              : std::vector<std::pair<L::Text, int>>{};
+  auto placeClaim = [&](L::Box band) {
+    L::Column lines(f, band);
+    for (const auto& [text, scale] : claim) lines.add(text, scale == 1 ? kGrey : kWhite, scale, ts::Align::Left);
+  };
+  int claimH = 0;
+  for (const auto& c : claim) claimH += int(std::ceil(L::lineHeight(c.second)));
+  if (claimH) claimH += 6;
   // The key's scale: the largest (up to sc) at which its widest line fits `width`.
   auto keyScale = [&](float width) {
     int s2 = sc;
     auto fits = [&](int s3) {
+      if (ts::text::width(where.text, s3) > width) return false;
       for (const auto& kl : key)
-        if (ts::text::width(kl.first, s3) > width) return false;
+        if (keyWidth(kl.second.text, s3) > width) return false;
       return true;
     };
     while (s2 > 1 && !fits(s2)) --s2;
     return s2;
   };
-  // Wide: the picture and the key in a column left of the texture view.
-  // Tall: the picture and the key side by side above it.
-  float keyW = 0;
-  for (const auto& kl : key) keyW = std::max(keyW, ts::text::width(kl.first, 1) + 8);
+  // Wide: the picture, the claim and the key in a column left of the
+  // texture view.  Tall: the picture and the key side by side above it,
+  // the claim under both.
+  float keyW = ts::text::width(where.text, 1) + 8;
+  for (const auto& kl : key) keyW = std::max(keyW, keyWidth(kl.second.text, 1) + 8);
   const int leftW = wide ? w * 2 / 5 : std::max(40, w - 8 - int(keyW) - 8);
   const int ks = keyScale(wide ? float(leftW - 4) : keyW);
-  const int keyH = notesHeight(int(key.size()), ks);
-  const int pictureRoom = wide ? h - 2 * line - keyH : std::max(20, (h - 3 * line) / 3);
+  const int keyH = int(std::ceil(keyHeight(int(key.size()), ks) + L::lineHeight(ks))) + 4;
+  const int pictureRoom = wide ? h - 2 * line - keyH - claimH : std::max(20, (h - 3 * line - claimH) / 3);
   const double k = std::max(0.05, std::min(double(leftW - 8) / kImageW, double(pictureRoom) / kImageH));
   const ts::Rect pic{4, line + 2, std::max(8, int(kImageW * k)), std::max(4, int(kImageH * k))};
   const Row* r = m && m->scene == scene ? rowAt(m, azimuth) : nullptr;
   L::caption(f, {4, 2, float(wide ? leftW : w - 4), float(line)},
-             std::string(methodTitle(method)) + ", pixel " + std::to_string(col) + "," + std::to_string(row), kAmber, sc, ts::Align::Left);
+             L::Text(methodTitle(method)) + ", pixel " + L::given("the pixel's column", col, "%g") + "," +
+                 L::given("the pixel's row", row, "%g"),
+             kAmber, sc, ts::Align::Left);
   picturePanel(f, "picture", pic, r ? &r->pictures[size_t(method)] : nullptr, sc);
   {
     ts::Panel ring = L::unitPanel("pick", pic);
@@ -210,18 +339,30 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m) const {
     ring.batches.push_back(ts::lineLoop({{px - rx, py - ry}, {px + rx, py - ry}, {px + rx, py + ry}, {px - rx, py + ry}}, kAmber, 2.0f, "pick"));
     f.panels.push_back(ring);
   }
-  const L::Box keyBox = wide ? L::Box{4, float(pic.y + pic.h + 6), float(leftW), float(h)}
+  float below = float(pic.y + pic.h + 6);
+  if (wide && claimH) {
+    placeClaim({4, below, float(leftW), below + float(claimH)});
+    below += float(claimH);
+  }
+  const L::Box keyBox = wide ? L::Box{4, below, float(leftW), float(h)}
                              : L::Box{float(pic.x + pic.w + 8), float(pic.y), float(w - 4), float(pic.y + std::max(pic.h, keyH))};
   {
-    L::Column col2(f, keyBox);
-    for (const auto& kl : key) col2.add(kl.first, kl.second, ks, ts::Align::Left);
+    const float after = keyLines(f, keyBox, key, ks);
+    L::Column tail(f, {keyBox.x0, after, keyBox.x1, keyBox.y1});
+    tail.add(where, kGrey, ks, ts::Align::Left);
+  }
+  int areaY = wide ? line + 2 : pic.y + std::max(pic.h, keyH) + line + 4;
+  if (!wide && claimH) {
+    placeClaim({4, float(areaY - line), float(w - 4), float(areaY - line + claimH)});
+    areaY += claimH;
   }
   // The texture around the footprint.
-  const int areaX = wide ? leftW + 12 : 4, areaY = wide ? line + 2 : pic.y + std::max(pic.h, keyH) + line + 4;
+  const int areaX = wide ? leftW + 12 : 4;
   const ts::Rect view{areaX, areaY, std::max(8, w - areaX - 4), std::max(8, h - areaY - 4)};
   L::caption(f, {float(areaX), float(areaY - line), float(w - 4), float(areaY - 2)},
-             on ? "level 0 around its footprint: lambda " + fmt("%.2f", lambda) + ", " + fmt("%.1f", ts::lod::rhoExact(j)) + " texels a pixel"
-                : "the pixel is off the surface: pick another (--pick X,Y)",
+             on ? "level " + num("level", 0) + " around its footprint" +
+                      printed(ms, ": lambda {pick_lambda|%.2f}, {pick_texels_per_pixel|%.1f} texels a pixel")
+                : L::Text("the pixel is off the surface: pick another (--pick X,Y)"),
              kWhite, sc, ts::Align::Left);
   if (!on) return;
   const double side = std::exp2(std::max(0.0, lambda));
@@ -255,7 +396,7 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m) const {
     std::vector<glm::vec2> grid;
     for (double u = std::ceil(cu - halfU); u <= cu + halfU; ++u) grid.push_back({float(u), y0}), grid.push_back({float(u), y1});
     for (double t = std::ceil(cv - halfV); t <= cv + halfV; ++t) grid.push_back({x0, float(t)}), grid.push_back({x1, float(t)});
-    p.batches.push_back(ts::lineSegments(grid, glm::vec4(0.42f, 0.42f, 0.47f, 1.0f), 1.0f, "texel_grid"));
+    p.batches.push_back(ts::lineSegments(grid, kTexelGridColour, 1.0f, "texel_grid"));
   }
   auto rect = [&](glm::dvec2 half, glm::vec4 colour, float width, const char* role) {
     p.batches.push_back(ts::lineLoop({{float(c.x - half.x), float(c.y - half.y)}, {float(c.x + half.x), float(c.y - half.y)},
@@ -285,8 +426,10 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m) const {
 }
 
 // Memory against error: each method's bytes per texel over the texture's,
-// and its far-field RMS at 0 and 45 degrees.
-inline void Views::buildMemory(ts::Frame& f, const Result* m) const {
+// and its far-field RMS at 0 and 45 degrees.  Several methods share a
+// memory (the mip chain's), so each is named by a tag beside its pair of
+// marks, tags stacked apart with a leader to their marks.
+inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurements& ms) const {
   const int w = f.width, h = f.height;
   const int sc = L::scaleFor({0, 0, w, h}, 2), line = int(L::lineHeight(sc));
   const Row* a = m && m->scene == kSlant ? rowAt(m, 0.0) : nullptr;
@@ -296,37 +439,114 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m) const {
                m && m->scene != kSlant ? "the memory view measures the slanted plane (--scene slant)" : "measuring...", kWhite, 1);
     return;
   }
+  const glm::vec4 kBlue{0.35f, 0.65f, 1.0f, 1.0f};
+  float y = L::caption(f, {4, 2, float(w - 4), 2.0f + float(line)}, "memory against error", kWhite, sc);
+  y = keyLines(f, {8, y, float(w - 4), y + keyHeight(2, sc)},
+               {{kBlue, "squares: texture turned " + L::given("azimuth, degrees", 0, "%g") + " deg"},
+                {kAmber, "crosses: texture turned " + L::given("azimuth, degrees", 45, "%g") + " deg"}},
+               sc);
   ts::plot::Spec s;
   s.id = "memory_plot";
-  s.title = "memory against error (" + std::string(m->renderer.empty() ? "" : "GL methods: " + m->renderer) + ")";
   s.xLabel = "memory, over the 8-bit texture's";
   s.yLabel = "far-field RMS vs exact";
   s.scale = sc;
   double ymax = 0;
   for (int k = kNearest; k < kMethodCount; ++k) ymax = std::max({ymax, a->rms[size_t(k)], b->rms[size_t(k)]});
-  s.x0 = 0.8, s.x1 = 4.3, s.y0 = 0, s.y1 = std::ceil(ymax / 5 + 0.5) * 5;
+  // Room left of memory 1 for the tags of the methods there.
+  s.x0 = 0.3, s.x1 = 4.3, s.y0 = 0, s.y1 = std::ceil(ymax / 5 + 0.5) * 5;
   s.xTicks = ts::plot::ticks(1, 4, 0.5);
   s.yTicks = ts::plot::ticks(0, s.y1, ts::plot::niceStep(s.y1));
-  ts::plot::Series at0("rms_0deg", {0.35f, 0.65f, 1.0f, 1.0f}, ts::plot::Mark::Squares), at45("rms_45deg", kAmber, ts::plot::Mark::Crosses);
+  ts::plot::Series at0("rms_0deg", kBlue, ts::plot::Mark::Squares), at45("rms_45deg", kAmber, ts::plot::Mark::Crosses);
   for (int k = kNearest; k < kMethodCount; ++k) {
     at0.points.push_back({memoryRatio(k), a->rms[size_t(k)]});
-    at0.tags.push_back(methodKey(k));
     at45.points.push_back({memoryRatio(k), b->rms[size_t(k)]});
-    at45.tags.push_back("");
   }
   s.series = {at0, at45};
-  s.legend = {{"squares: texture turned 0 deg", {0.35f, 0.65f, 1.0f, 1.0f}}, {"crosses: turned 45 deg", kAmber}};
-  ts::plot::draw(f, s, {0, 0, w, h - 2 * line});
+  const size_t firstPlotLabel = f.labels.size();
+  const ts::Rect vp = ts::plot::draw(f, s, {0, int(y), w, h - 2 * line - int(y)});
+  L::attachNumbers(f, firstPlotLabel, L::given("bits a channel of the texture", 8, "%g"));
+
+  // The tags: a method at memory 1 or at the ripmap's (the plot's edges) to
+  // the left of its marks, the others to the right; in each column from
+  // the top down, each at its marks' height or a line below the one above;
+  // at the largest scale (up to the text's) at which they fit.  A tag that
+  // would still overlap another label tries the other side, else is left
+  // out (small windows only).
+  auto at = [&](double mx, double my) {
+    return glm::vec2(float(vp.x + (mx - s.x0) / (s.x1 - s.x0) * vp.w), float(vp.y + (1 - (my - s.y0) / (s.y1 - s.y0)) * vp.h));
+  };
+  struct Tag {
+    int method;
+    glm::vec2 mark;
+    bool left;
+    L::Text name;
+    float top = 0;
+  };
+  std::vector<Tag> tags;
+  for (int k = kNearest; k < kMethodCount; ++k) {
+    const double mx = memoryRatio(k);
+    tags.push_back({k, at(mx, (a->rms[size_t(k)] + b->rms[size_t(k)]) / 2), mx < 1.2 || mx > 3.5,
+                    k == kAniso16 ? "aniso " + L::given("GL_TEXTURE_MAX_ANISOTROPY_EXT", kMaxAniso, "%g") + "x" : L::Text(methodKey(k))});
+  }
+  std::stable_sort(tags.begin(), tags.end(), [](const Tag& p, const Tag& q) {
+    return p.mark.x != q.mark.x ? p.mark.x < q.mark.x : p.left != q.left ? p.left : p.mark.y < q.mark.y;
+  });
+  const float gap = 10.0f + 2.0f * float(sc);
+  auto fits = [&](int scale) {
+    int column = 0;
+    for (size_t k = 0; k < tags.size(); ++k) {
+      const float tw = ts::text::width(tags[k].name.text, scale);
+      if (tags[k].left ? tags[k].mark.x - gap - tw < float(vp.x) + 2 : tags[k].mark.x + gap + tw > float(vp.x + vp.w) - 2) return false;
+      column = k > 0 && tags[k].mark.x == tags[k - 1].mark.x && tags[k].left == tags[k - 1].left ? column + 1 : 1;
+      if (float(column) * L::lineHeight(scale) > float(vp.h) - 4) return false;
+    }
+    return true;
+  };
+  int tagScale = sc;
+  while (tagScale > 1 && !fits(tagScale)) --tagScale;
+  const float th = ts::text::height(tagScale), lh = L::lineHeight(tagScale);
+  for (size_t k = 0; k < tags.size();) {
+    size_t e = k;
+    while (e < tags.size() && tags[e].mark.x == tags[k].mark.x && tags[e].left == tags[k].left) ++e;
+    for (size_t i = k; i < e; ++i) tags[i].top = std::max(tags[i].mark.y - th / 2, i > k ? tags[i - 1].top + lh : float(vp.y) + 2);
+    // A column that runs out of the plot's bottom moves up, not above its top.
+    const float over = std::min(tags[e - 1].top + th - float(vp.y + vp.h - 2), tags[k].top - float(vp.y) - 2);
+    for (size_t i = k; over > 0 && i < e; ++i) tags[i].top -= over;
+    k = e;
+  }
+  ts::Panel leaders;
+  leaders.id = "memory_tags";
+  leaders.viewport = vp;
+  leaders.projection = glm::ortho(float(vp.x), float(vp.x + vp.w), float(vp.y + vp.h), float(vp.y), -1.0f, 1.0f);  // frame pixels, y down
+  std::vector<glm::vec2> segs;
+  for (const Tag& t : tags) {
+    for (bool left : {t.left, !t.left}) {
+      ts::Label l;
+      l.x = left ? t.mark.x - gap : t.mark.x + gap, l.y = std::round(t.top);
+      l.text = t.name.text, l.color = s.textColor, l.scale = tagScale, l.align = left ? ts::Align::Right : ts::Align::Left;
+      for (const L::Text::Given& g : t.name.given) l.given.push_back({g.name, g.value});
+      if (!L::placeFree(f, l, L::box(vp))) continue;
+      const L::Box placed = L::labelBox(f.labels.back());
+      segs.push_back({t.mark.x + (left ? -7.0f : 7.0f), t.mark.y});
+      segs.push_back({left ? placed.x1 + 2 : placed.x0 - 2, (placed.y0 + placed.y1) / 2});
+      break;
+    }
+  }
+  leaders.batches.push_back(ts::lineSegments(segs, kGrey, 1.0f, "tag_leaders"));
+  f.panels.push_back(leaders);
+
   notes(f, {4, float(h - 2 * line), float(w - 4), float(h)},
-        {"mip chain " + fmt("%.4f", mipMemoryRatio(kTexels, kTexels)) + "x (nmn, trilinear, aniso, probes, EWA); ripmap " +
-             fmt("%.5f", ripmapMemoryRatio(kTexels, kTexels)) + "x; SAT " + std::to_string(satBits(kTexels, kTexels)) +
-             " bits a channel = " + fmt("%g", memoryRatio(kSat)) + "x",
-         "256x256 texture; RMS over the slanted plane's far field (LOD 1.5..5)"},
+        {printed(ms, "mip chain {mip_memory_ratio|%.4f}x (nmn, trilinear, aniso, probes, EWA); ripmap {ripmap_memory_ratio|%.5f}x; "
+                     "SAT {sat_bits[256]|%.0f} bits a channel = {sat_memory_ratio|%g}x"),
+         L::given("texture side, texels", kTexels, "%g") + "x" + L::given("texture side, texels", kTexels, "%g") +
+             " texture; RMS over the slanted plane's far field (LOD " + L::given("the far field's lowest LOD", kFarLo, "%g") + ".." +
+             L::given("the far field's highest LOD", kFarHi, "%g") + ")"},
         kGrey, sc);
 }
 
-// The mip kernels: trilinear with each kernel's chain, sRGB values and linear light.
-inline void Views::buildKernels(ts::Frame& f, const Result* m) const {
+// The mip kernels: trilinear with each kernel's chain, sRGB values and
+// linear light; under each, its far-field RMS and its 1 x 1 level.
+inline void Views::buildKernels(ts::Frame& f, const Result* m, const ts::Measurements& ms) const {
   const int w = f.width, h = f.height;
   const int sc = L::scaleFor({0, 0, w, h}, 2), line = int(L::lineHeight(sc));
   L::FlowSpec spec;
@@ -342,15 +562,34 @@ inline void Views::buildKernels(ts::Frame& f, const Result* m) const {
       for (const KernelRow& r : m->kernels)
         if (r.kernel == kern && r.linear == lin) row = &r;
     const glm::vec4 colour = kern == kernel && lin == linearLight ? kAmber : kWhite;
-    L::caption(f, c.above, std::string(kernelTitle(kern)) + (lin ? ", linear light" : ", sRGB"), colour, c.scale, ts::Align::Left);
-    picturePanel(f, std::string("kernel_") + kernelKey(kern) + (lin ? "_linear" : "_srgb"), c.picture, row ? &row->picture : nullptr, c.scale);
-    if (row) L::caption(f, c.below, "RMS " + fmt("%.2f", row->rms) + ", 1x1 level " + fmt("%.0f", row->top), colour, c.scale, ts::Align::Left);
+    const std::string key = std::string(kernelKey(kern)) + (lin ? "_linear" : "_srgb");
+    L::caption(f, c.above, kernelText(kern) + (lin ? ", linear light" : ", sRGB"), colour, c.scale, ts::Align::Left);
+    picturePanel(f, "kernel_" + key, c.picture, row ? &row->picture : nullptr, c.scale);
+    if (row)
+      L::caption(f, c.below,
+                 printed(ms, "RMS {rms_kernel[" + key + "]|%.2f}, ") + topLevelText() + printed(ms, " {mip_top[" + key + "]|%.0f}"),
+                 colour, c.scale, ts::Align::Left);
   }
-  notes(f, {4, float(h - 2 * line - 2), float(w - 4), float(h)},
-        {"trilinear (GL) with each kernel's mip chain; " + maskText() + ", texture turned " + fmt("%g", azimuth) + " deg",
-         "linear light: against the exact integral of the linear-light values; 1x1 level: the checkerboard's mean, 128 in "
-         "sRGB values, 166 in linear light, whatever the kernel"},
-        kGrey, sc, ts::Align::Center);
+  const std::string tops =
+      ": the checkerboard's mean in double precision, {mip_mean[srgb]|%.1f} in sRGB values, {mip_mean[linear]|%.1f} "
+      "in linear light; each chain's is off it by at most {mip_top_max_error[srgb]|%.1f} and {mip_top_max_error[linear]|%.1f}: "
+      "every level is rounded to ";
+  // The foot: the highlight's key with a note beside it, then two notes.
+  const float foot = float(h - 2 * line - 2);
+  const int fs = std::max(1, sc - 1);
+  const L::Text highlighted =
+      "the chain highlighted (--kernel, --linear-light): " + kernelText(kernel) + (linearLight ? ", linear light" : ", sRGB values");
+  const float below = keyLines(f, {4, foot, float(w - 4), foot + keyHeight(1, fs)}, {{kAmber, highlighted}}, fs);
+  const float right = 4 + keyWidth(highlighted.text, fs) + 16;
+  if (right < float(w - 4))
+    L::caption(f, {right, foot + keyPad(fs), float(w - 4), foot + keyPad(fs) + L::lineHeight(fs)},
+               "linear light: against the exact integral of the linear-light values", kGrey, fs, ts::Align::Right);
+  notes(f, {4, below, float(w - 4), float(h)},
+        {"trilinear (GL) with each kernel's mip chain; " + maskText() + ", texture turned " +
+             L::given("azimuth, degrees", azimuth, "%g") + " deg",
+         measuresAll(ms, tops) ? topLevelText() + L::measuredText(ms, tops) + L::given("bits a channel", 8, "%g") + " bits"
+                               : topLevelText() + ": the checkerboard's mean"},
+        kGrey, fs, ts::Align::Center);
 }
 
 // The LOD bias: far-field RMS and flicker against the bias, one plot each.
@@ -404,7 +643,10 @@ inline std::vector<ts::FigureSpec> figureSpecs() {
        "filter: GL's (nearest, linear, nearest-mipmap-nearest, trilinear, anisotropic 16x), a ripmap, a summed-area "
        "table, the probe line and EWA, beside the exact area integral over each pixel's preimage. After each name: its "
        "RMS against the exact integral in the far field (LOD 1.5 to 5). The ripmap and the SAT fit footprints along the "
-       "texture's axes and lose as the texture turns; the probe line and EWA follow the footprint.",
+       "texture's axes and lose as the texture turns; the probe line and EWA follow the footprint. "
+       "GL_NEAREST_MIPMAP_NEAREST's error is GL_NEAREST's: the checkerboard's levels up to those the far field reads are "
+       "the same board, so a nearest sample in them takes level 0's colour (the note under the figure measures where the "
+       "two pictures part).",
        {"--view", "azimuths", "--method", "sat"}, 1500, 1100,
        "SAT's error grows from {rms_exact[sat@0]} at 0 deg to {rms_exact[sat@45]} at 45 deg and the ripmap's from "
        "{rms_exact[ripmap@0]} to {rms_exact[ripmap@45]}; the probe line stays at {rms_exact[probes@0]} .. "
@@ -429,8 +671,9 @@ inline std::vector<ts::FigureSpec> figureSpecs() {
        "2x2 box, Crow's tent, a Gaussian, Lanczos-2 and -3, a Kaiser-windowed sinc), each averaged in sRGB values and in "
        "linear light: far-field RMS against the exact integral, and the 1x1 level.",
        {"--view", "kernels", "--azimuth", "45"}, 1400, 760,
-       "The 1x1 level of the checkerboard is {mip_top[box_srgb]} averaged in sRGB values and {mip_top[box_linear]} in "
-       "linear light, for every kernel (Lanczos-3: {mip_top[lanczos3_srgb]}, {mip_top[lanczos3_linear]})."},
+       "The checkerboard's mean is {mip_mean[srgb]} in sRGB values and {mip_mean[linear]} in linear light; every kernel's "
+       "1x1 level is within {mip_top_max_error[srgb]} and {mip_top_max_error[linear]} of it (8-bit rounding at each level: "
+       "the box chain ends at {mip_top[box_linear]}, the tent's at {mip_top[tent_linear]})."},
   };
 }
 }  // namespace zoo::views

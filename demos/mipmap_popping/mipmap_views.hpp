@@ -73,6 +73,12 @@ inline void addFacing(ts::Frame& f, ts::Panel& p, double x, const mipmap::Look& 
   }
 }
 
+// "1.5 to 5": the far field's LODs, parameters of the measurement.
+inline ts::layout::Text farLods(const char* between) {
+  namespace L = ts::layout;
+  return L::given("the far field's lowest LOD", mipmap::kFarLodLo, "%g") + between +
+         L::given("the far field's highest LOD", mipmap::kFarLodHi, "%g");
+}
 inline std::string levelText(int filter, double lambda) {
   if (!usesMipmaps(filter)) return "level 0 (no mipmaps)";
   if (lambda <= 0) return "level 0 (magnified)";
@@ -195,7 +201,7 @@ inline void Views::buildFilmstrip(ts::Frame& f, const Result* m) const {
           // Under each frame, in its column: the LOD, and the level the top row shows.
           const L::Box col{lx - float(cell + gap) / 2, float(y + cell + 4), lx + float(cell + gap) / 2,
                            float(y + cell + 4 + line)};
-          L::caption(f, col, (narrow ? "" : "LOD ") + fmt("%.3f", lambda), kWhite, sc);
+          L::caption(f, col, (narrow ? "" : "LOD ") + L::given("the frame's LOD", lambda, "%.3f"), kWhite, sc);
           std::string top = usesMipmaps(rows[0]) && !blendsLevels(rows[0])
                                 ? std::to_string(nearestLevel(lambda))
                                 : fmt("%.2f", effectiveLevel(rows[0], lambda));
@@ -343,12 +349,11 @@ inline void Views::buildSlant(ts::Frame& f, const Result* m) const {
     if (fl < 0) {
       t = "reference: 8x8 samples/pixel (GLSL)";
       f.panels.push_back(farFieldOutline(p.viewport, look_.orbit));  // the far field's two edges
-      L::caption(f, below, "far field: LOD " + fmt("%g", mipmap::kFarLodLo) + " to " + fmt("%g", mipmap::kFarLodHi), kWhite,
-                 sc, ts::Align::Left);
+      L::caption(f, below, "far field: LOD " + farLods(" to "), kWhite, sc, ts::Align::Left);
     } else {
       t = fl == kAnisotropic ? "anisotropic x" + std::to_string(look_.anisotropy) : std::string(filterGLName(fl));
       if (m)
-        L::caption(f, below, "error " + fmt("%.1f", m->farError[fl]) +
+        L::caption(f, below, "error " + L::measuredValue("far_error[" + filterKey(fl) + "]", m->farError[fl], "%.1f") +
                                  (fl == kAnisotropic && !m->anisotropy ? " (no anisotropy here)" : ""),
                    fl == look_.filter ? kAmber : kWhite, sc, ts::Align::Left);
     }
@@ -357,10 +362,10 @@ inline void Views::buildSlant(ts::Frame& f, const Result* m) const {
     if (ts::text::width(t, sc) > float(pw) && fl < 0) t = "reference (8x8 samples)";
     L::caption(f, above, t, fl == look_.filter ? kAmber : kWhite, sc, ts::Align::Left);
   }
-  const std::string note1 = "error: RMS (R,G,B, 8-bit) against the reference in the far field, LOD " +
-                            fmt("%g", mipmap::kFarLodLo) + ".." + fmt("%g", mipmap::kFarLodHi) + " (between the white lines)";
-  std::string note2 = "measured at " + std::to_string(mipmap::kSlantW) + "x" + std::to_string(mipmap::kSlantH);
-  if (m) note2 += " on " + m->renderer;
+  const L::Text note1 = "error: RMS (R,G,B, 8-bit) against the reference in the far field, LOD " + farLods("..") +
+                        " (between the white lines)";
+  const L::Text note2 = "measured at " + L::given("the measured render's width", mipmap::kSlantW, "%d") + "x" +
+                        L::given("the measured render's height", mipmap::kSlantH, "%d");
   L::Column notes(f, {4, float(std::min(h - 2 * line, line / 2 + kRows * (ph + 2 * line + gap))), float(w - 4), float(h)});
   notes.add(note1, kGrey, sc);
   notes.add(note2, kGrey, sc);

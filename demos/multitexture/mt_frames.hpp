@@ -130,8 +130,12 @@ inline ts::Batch rect(glm::vec4 xy, float z, glm::vec4 st, int texture, glm::vec
                           {glm::mix(st.x, st.z, c[i].x), glm::mix(st.y, st.w, c[i].y), 0.0f, 1.0f}, colour});
   return b;
 }
+// The alpha test's reference: a texel is leaf or air, its alpha 1 or 0.
+constexpr float kAlphaRef = 0.5f;
+// The turn the cross tree is shown at: where its width is least.
+constexpr float kCrossTurnDeg = 45.0f;
 inline ts::Batch treeState(ts::Batch b, int mode) {
-  if (mode == kAlphaTest) b.alphaFunc = GL_GREATER, b.alphaRef = 0.5f;
+  if (mode == kAlphaTest) b.alphaFunc = GL_GREATER, b.alphaRef = kAlphaRef;
   // kBlend: FixedState's GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA.  Otherwise
   // (GL_ONE, GL_ZERO): the colour as drawn, and the framebuffer's alpha
   // kept (FixedState's alpha factors), so the picture stays opaque where

@@ -16,16 +16,16 @@ namespace L = ts::layout;
 
 struct Picture {
   ts::Image image;  // a picture made by measure(); empty: a panel the caller draws (or `texture`)
-  std::string title, note;
+  L::Text title, note;
   ts::gl::CallList calls = nullptr;
   ts::TextureDesc texture;  // a generator's texture shown as it is (the sidecar remakes it)
-  Picture(ts::Image i = {}, std::string t = {}, std::string n = {}, ts::gl::CallList c = nullptr, ts::TextureDesc d = {})
+  Picture(ts::Image i = {}, L::Text t = {}, L::Text n = {}, ts::gl::CallList c = nullptr, ts::TextureDesc d = {})
       : image(std::move(i)), title(std::move(t)), note(std::move(n)), calls(std::move(c)), texture(std::move(d)) {}
 };
 
 // Pictures of one aspect in a row (or grid) over the frame above a band of
 // `lines` lines for the numbers.
-inline void pictures(ts::Frame& f, const std::vector<Picture>& ps, float aspect, const std::string& numbers, int lines = 2) {
+inline void pictures(ts::Frame& f, const std::vector<Picture>& ps, float aspect, const L::Text& numbers, int lines = 2) {
   const float band = L::lineHeight(1) * float(lines) + 8;
   const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band};
   const std::vector<L::Cell> cells = L::flow(area, {int(ps.size()), aspect, 1, 1, 10, 2, 120});
@@ -33,7 +33,7 @@ inline void pictures(ts::Frame& f, const std::vector<Picture>& ps, float aspect,
     if (ps[k].image.width == 0 && !ps[k].texture.image) {  // drawn by the caller: an empty unit panel (mt_frames.hpp)
       f.panels.push_back(frames::unitPanel("picture_" + std::to_string(k), cells[k].picture));
     } else {
-    ts::TextureDesc t = ps[k].texture.image ? ps[k].texture : ts::renderedImageTexture(ps[k].image, "multitexture", ps[k].title, "multitexture");
+    ts::TextureDesc t = ps[k].texture.image ? ps[k].texture : ts::renderedImageTexture(ps[k].image, "multitexture", ps[k].title.text, "multitexture");
     t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
     // GL_LINEAR: a panel's pixel centre can fall on a texel boundary, where GL_NEAREST's tie goes either way.
     t.minFilter = t.magFilter = GL_LINEAR;

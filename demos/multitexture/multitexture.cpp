@@ -48,6 +48,7 @@
 namespace {
 using namespace mt;
 using ts::layout::fmt;
+namespace L = ts::layout;
 
 class Multitexture final : public ts::Scene {
  public:
@@ -140,25 +141,22 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
     ts::layout::caption(f, {8, 8, float(width - 8), float(height - 8)}, "rendering ...", ts::layout::kWhite, 2);
     return f;
   }
-  auto v = [&](const std::string& n) {
-    for (const auto& x : measured)
-      if (x.name == n) return x.value;
-    return -1.0;
-  };
+  // A label's numbers are the measurements it names (layout::measuredText).
+  auto M = [&](const std::string& templ) { return ts::layout::measuredText(measured, templ); };
   if (view_ == 0) {
     views::pictures(f,
-                    {{{}, "no alpha test", fmt("%.0f sky pixels hidden", v("cutout_hidden_px[no_alpha_test]"))},
-                     {{}, "GL_GREATER 0.5", fmt("%.0f hidden", v("cutout_hidden_px[alpha_test]"))},
-                     {{}, "blending, no test", fmt("%.0f hidden", v("cutout_hidden_px[blend]"))},
-                     {{}, "edge x16, blending", fmt("%.0f fringe pixels", v("edge_fringe_px[blend]"))},
-                     {{}, "edge x16, alpha test", fmt("%.0f fringe pixels", v("edge_fringe_px[alpha_test]"))},
-                     {{}, "cross tree, 45 deg",
-                      fmt("width >= %.4f", v("cross_tree_min_width"))}},
+                    {{{}, "no alpha test", M("{cutout_hidden_px[no_alpha_test]|%.0f} sky pixels hidden")},
+                     {{}, "GL_GREATER " + L::given("glAlphaFunc's reference", frames::kAlphaRef, "%g"), M("{cutout_hidden_px[alpha_test]|%.0f} hidden")},
+                     {{}, "blending, no test", M("{cutout_hidden_px[blend]|%.0f} hidden")},
+                     {{}, "edge x16, blending", M("{edge_fringe_px[blend]|%.0f} fringe pixels")},
+                     {{}, "edge x16, alpha test", M("{edge_fringe_px[alpha_test]|%.0f} fringe pixels")},
+                     {{}, "cross tree, " + L::given("the tree's turn, degrees", frames::kCrossTurnDeg, "%g") + " deg",
+                      M("width >= {cross_tree_min_width|%.4f}")}},
                     1.0f,
                     "Cutout tree drawn first, then the sky behind it (depth test).  Silhouette width over a full turn "
-                    "(orthographic, 5-degree steps): one quad " + fmt("%.4f", v("single_quad_min_width")) + " .. " +
-                        fmt("%.4f", v("single_quad_max_width")) + " (|cos|), cross tree " + fmt("%.4f", v("cross_tree_min_width")) +
-                        " .. " + fmt("%.4f", v("cross_tree_max_width")) + " (max(|cos|, |sin|) >= 0.7071).");
+                    "(orthographic, 5-degree steps): one quad " + M("{single_quad_min_width|%.4f}") + " .. " +
+                        M("{single_quad_max_width|%.4f}") + " (|cos|), cross tree " + M("{cross_tree_min_width|%.4f}") +
+                        " .. " + M("{cross_tree_max_width|%.4f}") + " (max(|cos|, |sin|) >= " + L::given("cos 45 deg", std::cos(glm::radians(45.0)), "%.4f") + ").");
     // The cutout passes are the Frames measure() rendered (mt_frames.hpp), drawn in their panels.
     const ts::Image tree = treeTexture();
     for (ts::Panel& p : f.panels)
@@ -166,19 +164,21 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
         if (p.id == "picture_" + std::to_string(k))
           p = k < 3   ? frames::hiddenPanel(f, tree, k, p.id, p.viewport)
               : k < 5 ? frames::edgePanel(f, tree, k == 3 ? kBlend : kAlphaTest, p.id, p.viewport)
-                      : frames::crossTreePanel(f, 45, p.id, p.viewport);
+                      : frames::crossTreePanel(f, frames::kCrossTurnDeg, p.id, p.viewport);
   } else if (view_ == 1) {
     // The light-mapped walls and the spot are Frames (mt_frames.hpp); the CPU's picture a generator.
     std::vector<views::Picture> ps = {{m->userBase ? m->perPixel : ts::Image(), "per-pixel (CPU)", "base x lighting"}};
     if (!m->userBase) ps[0].texture = ts::multitex::perPixelLitTexture(256);
     for (int k = 0; k < 4; ++k) {
       const std::string n = std::to_string(kLightSizes[k]);
-      ps.push_back({{}, "light map " + n + "^2", fmt("RMS %.2f", v("light_map_rms[" + n + "]")) + ", " + n + "^2 bytes"});
+      const L::Text side = L::given("the light map's side, texels", kLightSizes[k], "%g");
+      ps.push_back({{}, "light map " + side + "^2", M("RMS {light_map_rms[" + n + "]|%.2f}, ") + side + "^2 bytes"});
     }
-    ps.push_back({{}, "spot, texture matrix", "position " + std::to_string(spot_) + (animate_ ? " (moving)" : " (a: move)")});
+    ps.push_back({{}, "spot, texture matrix", "position " + L::given("the spot's frame", spot_, "%g") + (animate_ ? " (moving)" : "")});
     views::pictures(f, ps, 1.0f,
                     "c = base x L: unit 0 the bricks (GL_REPLACE), unit 1 the light map (GL_MODULATE, GL_LINEAR); the "
-                    "light a point at height 0.3 over the centre, L its irradiance at the texel centres (1 byte a texel).");
+                    "light a point at height " + L::given("the light's height over the wall", ts::multitex::kLightHeight, "%g") +
+                        " over the centre, L its irradiance at the texel centres (1 byte a texel).");
     for (ts::Panel& p : f.panels)
       for (int k = 1; k <= 5; ++k)
         if (p.id == "picture_" + std::to_string(k))
@@ -191,18 +191,20 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
     pears.renderedFrom = m->pears;
     views::pictures(f,
                     {{{}, "t_d x i_diff (pass 1)", "the diffuse alone"},
-                     {{}, "+ g x i_spec (pass 2, GL_ONE, GL_ONE)", "g = 1 left, 0.2 right"},
+                     {{}, "+ g x i_spec (pass 2, GL_ONE, GL_ONE)",
+                      "g = " + L::given("the gloss left", 1, "%g") + " left, " + L::given("the gloss right", ts::multitex::kGlossLow, "%.1f") + " right"},
                      {{}, "the specular added, x 2",
-                      fmt("peaks %.0f", v("gloss_peak[g=1]")) + fmt(" : %.0f", v("gloss_peak[g=0.2]"))},
+                      M("peaks {gloss_peak[g=1]|%.0f}") + M(" : {gloss_peak[g=0.2]|%.0f}")},
                      {{}, "pear: MODULATE_ADD_ATI | two passes",
-                      m->combine3 ? fmt("%.0f pass", v("pear_passes[combine3]")) + fmt(" | %.0f passes", v("pear_passes[two_passes]"))
+                      m->combine3 ? M("{pear_passes[combine3]|%.0f} pass") + M(" | {pear_passes[two_passes]|%.0f} passes")
                                   : std::string("no GL_ATI_texture_env_combine3 here"),
                       m->pearsCalls, pears}},
                     2.0f,
-                    "i = t_d x i_diff + g x i_spec in two passes: highlight ratio " + fmt("%.3f", v("gloss_peak_ratio")) +
-                        " (g 1 / 0.2 = 5), diffuse changed by " + fmt("%.0f", v("gloss_diffuse_change")) +
+                    "i = t_d x i_diff + g x i_spec in two passes: highlight ratio " + M("{gloss_peak_ratio|%.3f}") +
+                        " (g " + L::given("the gloss left", 1, "%g") + " / " + L::given("the gloss right", ts::multitex::kGlossLow, "%.1f") +
+                        " = " + L::given("the glosses' ratio", 1 / ts::multitex::kGlossLow, "%g") + "), diffuse changed by " + M("{gloss_diffuse_change|%.0f}") +
                         " levels.  The pear: t_d i_diff + t_g t_r, one combine3 stage against two passes: " +
-                        fmt("%.0f", v("pear_combine3_vs_two_passes_max_diff")) + " levels apart.");
+                        M("{pear_combine3_vs_two_passes_max_diff|%.0f}") + " levels apart.");
     // The plane's passes are Frames (mt_frames.hpp): diffuse; + g i_spec; g i_spec added twice.
     for (ts::Panel& p : f.panels)
       for (int k = 0; k < 3; ++k)
@@ -210,15 +212,15 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
   } else {
     const std::vector<ts::Image> t = abcdTextures();
     const views::Picture cpu({}, "AB + CD (CPU)", "the reference", nullptr, ts::multitex::abcdCpuTexture(128, "sum"));
-    const views::Picture error({}, "(AB+C)D - (AB+CD), x 4", fmt("GL's: RMS %.1f levels", v("abcd_rms[framebuffer_only]")), nullptr,
+    const views::Picture error({}, "(AB+C)D - (AB+CD), x 4", M("GL's: RMS {abcd_rms[framebuffer_only]|%.1f} levels"), nullptr,
                                ts::multitex::abcdCpuTexture(128, "error_x4"));
     views::pictures(
         f,
         {{{}, "A B / C D", "the four textures"},
          cpu,
-         {{}, "two units + add", fmt("%.0f passes", v("abcd_passes[multitexture]")) + fmt(", max %.0f", v("abcd_max_diff[multitexture]"))},
-         {{}, "one unit + a copy", fmt("%.0f passes", v("abcd_passes[stored]")) + fmt(", max %.0f", v("abcd_max_diff[stored]"))},
-         {{}, "framebuffer: (AB+C)D", fmt("%.0f passes", v("abcd_passes[framebuffer_only]")) + fmt(", max %.0f", v("abcd_max_diff[framebuffer_only]"))},
+         {{}, "two units + add", M("{abcd_passes[multitexture]|%.0f} passes") + M(", max {abcd_max_diff[multitexture]|%.0f}")},
+         {{}, "one unit + a copy", M("{abcd_passes[stored]|%.0f} passes") + M(", max {abcd_max_diff[stored]|%.0f}")},
+         {{}, "framebuffer: (AB+C)D", M("{abcd_passes[framebuffer_only]|%.0f} passes") + M(", max {abcd_max_diff[framebuffer_only]|%.0f}")},
          error},
         1.0f,
         "Multiplying needs the framebuffer (GL_DST_COLOR, GL_ZERO), adding too (GL_ONE, GL_ONE): with one unit, AB must "

@@ -44,7 +44,9 @@
 // against the exact area integral (common/core/area_filter.hpp): rms_exact[...],
 // and the pixels over a line that point sampling shows none of:
 // lost_line_pixels[nearest].
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include "common/core/error.hpp"
@@ -123,9 +125,9 @@ class OctantMapping final : public ts::Scene {
          "After {catmull_levels[5,9]} subdivisions the fragment covers one pixel centre and 4x4 texels, "
          "{catmull_line_texels} on lines: {catmull_fraction} = 7/16."},
         {"octant_inverse_pixel", "Seed 004: inverse pixel mapping",
-         "Pixel (21,15) mapped back onto the pattern: its corners joined as the seed prints them (amber, 3 decimals) "
-         "and unrounded (white), the true curved preimage (cyan), and the texel centres each counts; the corner "
-         "table with the seed's printed values, misprints in red.",
+         "Pixel (21,15) mapped back onto the pattern: its corners joined unrounded (red) and as the seed prints them "
+         "(orange dashes, 3 decimals), the true curved preimage (wide, blue), and the texel centres each counts; the "
+         "corner table with the seed's printed values, misprints in red.",
          {"--view", "inverse", "--pixel", "21,15"}, 1280, 720,
          "With the corners rounded as printed, {inverse_texels} texel centres, {inverse_line_texels} on lines: "
          "{inverse_fraction} (the seed's 5/18); unrounded {inverse_texels[unrounded]}, "
@@ -166,11 +168,13 @@ class OctantMapping final : public ts::Scene {
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override {
     frames::State s = s_;
     s.pixel = parsePixelOption(pixelText_);
-    return frames::build(s, width, height, measured.detailAs<frames::GlRasters>());
+    return frames::build(s, width, height, measured);
   }
   ts::Measurements measure(ts::Renderer& r) override;
 
  private:
+  using Add = std::function<void(const std::string&, double, const std::string&)>;
+  void addShownExamples(glm::ivec2 P, const Add& add) const;
   frames::State s_;
   std::string pixelText_ = "21,15";
   bool animate_ = false;
@@ -178,18 +182,77 @@ class OctantMapping final : public ts::Scene {
   double animClock_ = 0;
 };
 
+// The worked examples as the catmull and inverse views print them, for the
+// chosen pixel (and level): each row's numbers.
+void OctantMapping::addShownExamples(glm::ivec2 P, const Add& add) const {
+  namespace N = views::names;
+  const std::string at = "pixel (" + N::pixel(P) + ")";
+  const PixelGeometry& g = rasterGeometry()[size_t(pixelIndex(P.x, P.y))];
+  if (g.centreOnPatch)
+    for (int l = 0; l <= s_.level; ++l) {
+      const Fragment fr = fragmentAt(g.centreUW, l);
+      const Average a = fragmentAverage(fr);
+      const std::string which = "the fragment of level " + std::to_string(l) + " holding " + at + "'s centre";
+      add(N::catmull("line_texels", P, l), a.line, which + ": its texels on grid lines");
+      add(N::catmull("texels", P, l), a.total, which + ": its texels");
+      add(N::catmull("fraction", P, l), a.value(), which + ": line texels / texels, the pixel's intensity");
+      add(N::catmull("centres", P, l), double(centresCovered(fr).size()), which + ": the pixel centres it covers");
+    }
+  const auto corners = cornersUW(P.x, P.y);
+  if (!corners) return;
+  const char* what[10] = {"x'", "y'", "z'", "x", "y", "z", "phi_deg", "theta_deg", "u", "w"};
+  const char* meaning[10] = {"x' = Px/16 - 1", "y' = Py/16 - 1", "z' = sqrt(1 - x'^2 - y'^2), on the visible hemisphere",
+                             "x of (x,y,z) = V^T (x',y',z')", "y of V^T (x',y',z')", "z of V^T (x',y',z')",
+                             "phi = acos y, degrees", "theta = atan2(x, z), degrees", "u = theta/(pi/2)",
+                             "w = (pi/2 - phi)/(pi/4)"};
+  for (const glm::dvec2& c : pixelCorners(P.x, P.y)) {
+    const Back b = *backOfPixelPoint(c);
+    const double v[10] = {b.viewPoint.x, b.viewPoint.y, b.viewPoint.z, b.point.x, b.point.y, b.point.z,
+                          b.phi * 180 / kPi, b.theta * 180 / kPi, b.uw.x, b.uw.y};
+    for (int e = 0; e < 10; ++e)
+      add(N::corner(c, what[e]), v[e],
+          std::string("corner (") + std::to_string(int(c.x)) + "," + std::to_string(int(c.y)) + ") of " + at + ": " + meaning[e]);
+  }
+  const auto qe = toTexels(*corners), qr = toTexels(rounded3(*corners));
+  const CentreCount ce = countCentres(qe), cr = countCentres(qr), cc = countCentresCurved(P.x, P.y);
+  const std::pair<const char*, const CentreCount*> counts[] = {{"", &cr}, {"unrounded", &ce}, {"curved", &cc}};
+  const char* how[] = {"the quadrilateral of its corners to 3 decimals", "the quadrilateral of its corners unrounded",
+                       "its curved preimage"};
+  for (int k = 0; k < 3; ++k) {
+    const CentreCount& c = *counts[k].second;
+    add(N::inverse("texels", P, counts[k].first), c.texels, at + ": texel centres in " + how[k]);
+    add(N::inverse("line_texels", P, counts[k].first), c.lines, at + ": of them on grid lines, in " + how[k]);
+    add(N::inverse("fraction", P, counts[k].first), c.fraction(), at + ": line texels / texels, in " + how[k]);
+  }
+  for (const glm::ivec2& t : cr.inside)
+    if (std::find(ce.inside.begin(), ce.inside.end(), t) == ce.inside.end()) {
+      const std::string texel = "texel (" + std::to_string(t.x) + "," + std::to_string(t.y) + ")";
+      add(N::centreDepth("outside", P, t), -centreDepth(qe, t),
+          at + ": " + texel + "'s centre, counted only with the corners rounded: texels outside the unrounded quadrilateral");
+      add(N::centreDepth("inside_rounded", P, t), centreDepth(qr, t), at + ": the same centre, texels inside the rounded one");
+    }
+}
+
 ts::Measurements OctantMapping::measure(ts::Renderer& r) {
   ts::Measurements out;
   auto add = [&](const std::string& n, double v, const std::string& m) { out.push_back({n, v, m}); };
-  // Example 1: the line u = 1/4.
-  const auto rows = forwardTable(0.25);
-  const glm::dvec3 mid = rows[2].xyz;
-  add("table_xyz[u=1/4,w=1/2].x", mid.x, "x of u = 1/4, w = 1/2 (theta = pi/8, phi = 3pi/8): sqrt(2)/4 = 0.354");
-  add("table_xyz[u=1/4,w=1/2].y", mid.y, "y there: cos(3pi/8) = 0.383");
-  add("table_xyz[u=1/4,w=1/2].z", mid.z, "z there: (2 + sqrt(2))/4 = 0.854");
-  double err = 0;
-  for (const TableRow& row : rows) err = std::max(err, glm::length(row.xyz - closedForm(row.u, row.w)));
-  add("table_max_error[u=1/4]", err, "largest distance of the table's points from the closed form (sin, cos of u, w)");
+  // Example 1: the line u = 1/4 (and the table view's line, when another).
+  auto addTable = [&](double u) {
+    const auto rows = forwardTable(u);
+    const char* axis[3] = {"x = sin theta sin phi", "y = cos phi", "z = cos theta sin phi"};
+    for (const TableRow& row : rows)
+      for (int a = 0; a < 3; ++a)
+        add(views::names::tableXyz(u, row.w, a), row.xyz[a],
+            std::string(axis[a]) + " of the line u = " + views::fraction(u) + " at w = " + views::fraction(row.w) +
+                (u == 0.25 && row.w == 0.5 ? " (theta = pi/8, phi = 3pi/8: x = sqrt(2)/4, y = cos(3pi/8), z = (2 + sqrt(2))/4)"
+                                           : ""));
+    add(views::names::tableThetaDeg(u), rows[0].theta * 180 / kPi, "theta = (pi/2) u of the line, in degrees");
+    double err = 0;
+    for (const TableRow& row : rows) err = std::max(err, glm::length(row.xyz - closedForm(row.u, row.w)));
+    add(views::names::tableMaxError(u), err, "largest distance of the table's points from the closed form (sin, cos of u, w)");
+  };
+  addTable(0.25);
+  if (views::fraction(s_.u) != views::fraction(0.25)) addTable(s_.u);
   add("seed_table_xyz_wrong", seed::tableXyzWrong(), "of the 15 x, y, z the seed prints (2 decimals), how many are wrong");
   // Example 2: Catmull's fragment.
   const Fragment sf = fragmentAt({0.0, 0.0}, 4);
@@ -222,6 +285,7 @@ ts::Measurements OctantMapping::measure(ts::Renderer& r) {
   add("seed_corner_entries_wrong", cc.wrong, "of the 40 entries of the inverse example's corner tables, off by more than a unit of their last digit");
   // The chosen pixel.
   const glm::ivec2 P = parsePixelOption(pixelText_);
+  addShownExamples(P, add);
   const size_t k = size_t(pixelIndex(P.x, P.y));
   const Raster& R = raster();
   const double none = -1;

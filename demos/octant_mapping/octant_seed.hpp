@@ -50,10 +50,13 @@ inline const std::array<PrintedCorner, 4>& corners() {
   return c;
 }
 // The seed's worked answers.
+constexpr int kCatmullLevels = 4;                      // subdivisions
 constexpr int kCatmullLine = 7, kCatmullTexels = 16;   // 7/16
 constexpr int kInverseLine = 5, kInverseTexels = 18;   // 5/18
 constexpr int kCatmullPx = 5, kCatmullPy = 9;          // the pixel whose centre the seed's fragment covers
 constexpr int kInversePx = 21, kInversePy = 15;
+// Catmull's fragment's corners, as printed: phi = 59pi/64 for 31pi/64.
+constexpr double kCatmullPhiPrinted = 59 * kPi / 64;
 
 // A misprint the demo flags: what the seed prints, what it should be (both
 // as text), and the right value as a number (the gallery's value column).
@@ -63,6 +66,13 @@ struct Misprint {
   std::string printed;  // as printed (and what it would mean)
   std::string correct;  // the right entry
   double value = 0;     // the right value
+  // The same in parts, for a figure to print its numbers with their
+  // sources: the entry as printed ("\"p/2\" = pi/2") and the number it
+  // reads as (NaN: none), and the right entry without its value ("pi/8"),
+  // a note after it.
+  std::string printedAs{};
+  double printedValue = std::nan("");
+  std::string correctAs{}, note{};
 };
 
 inline std::string f3(double v) {
@@ -128,7 +138,8 @@ inline std::vector<Misprint> misprints() {
   const auto rows = forwardTable(0.25);
   // Example 1: the table.
   out.push_back({"table_theta_w0", "table u = 1/4, row w = 0: theta",
-                 "\"p/2\" = pi/2 = " + f3(kPi / 2), "pi/8 = " + f3(rows[0].theta) + " (theta = (pi/2) u)", rows[0].theta});
+                 "\"p/2\" = pi/2 = " + f3(kPi / 2), "pi/8 = " + f3(rows[0].theta) + " (theta = (pi/2) u)", rows[0].theta,
+                 "\"p/2\" = pi/2", kPi / 2, "pi/8", "(theta = (pi/2) u)"});
   const char* phiNames[] = {"", "7pi/16", "3pi/8", "5pi/16"};
   const double phiWrong[] = {0, 7 / (16 * kPi), 3 / (8 * kPi), 5 / (16 * kPi)};
   const char* rowNames[] = {"", "1/4", "1/2", "3/4"};
@@ -136,12 +147,13 @@ inline std::vector<Misprint> misprints() {
     out.push_back({std::string("table_phi_w") + (k == 1 ? "1/4" : k == 2 ? "1/2" : "3/4"),
                    std::string("table u = 1/4, row w = ") + rowNames[k] + ": phi",
                    std::string("\"") + table()[size_t(k)].phi + "\" = " + f3(phiWrong[k]),
-                   std::string(phiNames[k]) + " = " + f3(rows[size_t(k)].phi), rows[size_t(k)].phi});
+                   std::string(phiNames[k]) + " = " + f3(rows[size_t(k)].phi), rows[size_t(k)].phi,
+                   std::string("\"") + table()[size_t(k)].phi + "\"", phiWrong[k], phiNames[k], ""});
   // Example 2: the fragment's corners.
   const Fragment seedFragment = fragmentAt({0, 0}, 4);
   const double phiLow = seedFragment.phiRange().x;
   out.push_back({"catmull_phi", "Catmull fragment corners (twice): phi",
-                 "59pi/64 = " + f3(59 * kPi / 64) + " (w = " + f3(uwOf(0, 59 * kPi / 64).y) + ", off the patch)",
+                 "59pi/64 = " + f3(kCatmullPhiPrinted) + " (w = " + f3(uwOf(0, kCatmullPhiPrinted).y) + ", off the patch)",
                  "31pi/64 = " + f3(phiLow) + " (w = 1/16)", phiLow});
   // Example 3: the corners' tables.
   const auto first = backOfPixelPoint({21, 15});

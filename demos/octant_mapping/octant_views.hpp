@@ -31,6 +31,8 @@ const glm::vec4 kRed{1.0f, 0.3f, 0.25f, 1.0f}, kCyan{0.3f, 0.85f, 1.0f, 1.0f}, k
 // rounded one, the curved preimage, the counted centres.
 const glm::vec4 kQuad{0.95f, 0.1f, 0.1f, 1.0f}, kQuadRounded{1.0f, 0.55f, 0.0f, 1.0f}, kCurve{0.15f, 0.4f, 1.0f, 1.0f},
     kCounted{0.1f, 0.75f, 0.25f, 1.0f}, kFragmentEdge{0.25f, 0.55f, 0.75f, 1.0f};
+// The axes of the octant's view: x, y, z.
+const glm::vec4 kAxis[3] = {{1.0f, 0.35f, 0.35f, 1.0f}, {0.4f, 0.95f, 0.4f, 1.0f}, {0.45f, 0.6f, 1.0f, 1.0f}};
 const glm::vec4 kNoValue{0.3f, 0.3f, 0.36f, 1.0f};   // a pixel on the octant without a value (its edge)
 const glm::vec4 kPixelGrid{0.42f, 0.42f, 0.5f, 1.0f};
 
@@ -59,9 +61,83 @@ inline std::string fraction(double x) {
   return d == 1 ? std::to_string(n) : std::to_string(n) + "/" + std::to_string(d);
 }
 
+// --- the measurements the views print ----------------------------------------------
+// measure() adds them for the state shown, named by that state (the table's
+// u, the pixel, the level), so a view never prints another state's numbers.
+namespace names {
+inline std::string pixel(glm::ivec2 P) { return std::to_string(P.x) + "," + std::to_string(P.y); }
+// "table_xyz[u=1/4,w=1/2].x": the point of the line u at w.
+inline std::string tableXyz(double u, double w, int axis) {
+  return "table_xyz[u=" + fraction(u) + ",w=" + fraction(w) + "]." + std::string(1, "xyz"[axis]);
+}
+inline std::string tableThetaDeg(double u) { return "table_theta_deg[u=" + fraction(u) + "]"; }
+inline std::string tableMaxError(double u) { return "table_max_error[u=" + fraction(u) + "]"; }
+// "catmull_line_texels[5,9,4]": of the fragment of level 4 holding pixel (5,9)'s centre.
+inline std::string catmull(const std::string& what, glm::ivec2 P, int level) {
+  return "catmull_" + what + "[" + pixel(P) + "," + std::to_string(level) + "]";
+}
+// "inverse_texels[21,15]", "inverse_texels[21,15,unrounded]".
+inline std::string inverse(const std::string& what, glm::ivec2 P, const std::string& variant = "") {
+  return "inverse_" + what + "[" + pixel(P) + (variant.empty() ? "" : "," + variant) + "]";
+}
+// "corner[22,15].x'": a value of the inverse example's table at a pixel corner.
+inline std::string corner(glm::dvec2 c, const std::string& what) {
+  return "corner[" + std::to_string(int(c.x)) + "," + std::to_string(int(c.y)) + "]." + what;
+}
+// The texel counted only with the rounded corners: how far its centre lies
+// outside the unrounded quadrilateral and inside the rounded one.
+inline std::string centreDepth(const std::string& which, glm::ivec2 P, glm::ivec2 t) {
+  return "inverse_centre_" + which + "[" + pixel(P) + ";" + std::to_string(t.x) + "," + std::to_string(t.y) + "]";
+}
+}  // namespace names
+// A measurement as printed, or "-" while the state shown is not measured
+// yet (the window before its numbers arrive, the frame a click reads).
+inline L::Text num(const ts::Measurements& m, const std::string& name, const char* format) {
+  for (const ts::Measurement& x : m)
+    if (x.name == name) return L::measured(m, name, format);
+  return L::Text("-");
+}
+inline bool has(const ts::Measurements& m, const std::string& name) {
+  for (const ts::Measurement& x : m)
+    if (x.name == name) return true;
+  return false;
+}
+// A pixel's coordinates as the inputs they are: "(21,15)".
+inline L::Text pixelText(glm::ivec2 P) {
+  return "(" + L::given("pixel Px", P.x, "%.0f") + "," + L::given("pixel Py (up from the bottom row)", P.y, "%.0f") + ")";
+}
+// The largest scale, at most `scale`, at which layout::legend() places
+// every entry in `band` (its swatch, gap and wrapping reckoned the same way).
+inline int keyScale(Box band, const std::vector<ts::LegendEntry>& entries, int scale) {
+  for (int s = std::max(1, scale); s > 1; --s) {
+    float x = band.x0, y = band.y0;
+    bool fits = true;
+    for (const ts::LegendEntry& e : entries) {
+      const float w = ts::text::height(s) + 4.0f * float(s) + ts::text::width(e.meaning, s);
+      if (x > band.x0 && x + w > band.x1) x = band.x0, y += L::lineHeight(s);
+      if (w > band.w() || y + ts::text::height(s) > band.y1 + 0.5f) fits = false;
+      x += w + 8.0f * float(s);
+    }
+    if (fits) return s;
+  }
+  return 1;
+}
+// A key whose entries name the pixel: its coordinates go in as the inputs they are.
+inline void keyWithPixel(ts::Frame& f, Box band, const std::vector<ts::LegendEntry>& entries, int scale, glm::ivec2 P) {
+  const size_t first = f.labels.size();
+  L::legend(f, band, entries, keyScale(band, entries, scale));
+  L::attachNumbers(f, first, pixelText(P));
+}
+// The pattern's grid lines, as the texel columns they are: "0 15 31 47 63".
+inline L::Text gridLinesText() {
+  L::Text t;
+  for (int k : lineTexels()) t = t + (t.empty() ? "" : " ") + L::given("a grid line's texel column and row", k, "%.0f");
+  return t;
+}
+
 // --- text tables -------------------------------------------------------------
 struct Cell {
-  std::string text;
+  L::Text text;  // its numbers say where they come from
   glm::vec4 colour = kWhite;
 };
 using Row = std::vector<Cell>;
@@ -76,7 +152,7 @@ inline size_t tableChars(const std::vector<Row>& rows, std::vector<size_t>* widt
     if (r.size() > 1)
       for (size_t c = 0; c < r.size(); ++c) {
         if (widths.size() <= c) widths.push_back(0);
-        widths[c] = std::max(widths[c], r[c].text.size() + 2);
+        widths[c] = std::max(widths[c], r[c].text.text.size() + 2);
       }
   size_t longest = 0;  // the widest multi-cell row, in characters
   for (const Row& r : rows)
@@ -112,8 +188,8 @@ inline float table(ts::Frame& f, Box box, const std::vector<Row>& rows, int maxS
     } else {
       float x = box.x0;
       for (size_t c = 0; c < r.size(); ++c) {
-        if (x + ts::text::width(r[c].text, s) > box.x1) break;
-        if (!r[c].text.empty()) f.labels.push_back({x, y, r[c].text, r[c].colour, s, ts::Align::Left});
+        if (x + ts::text::width(r[c].text.text, s) > box.x1) break;
+        if (!r[c].text.empty()) f.labels.push_back(L::textLabel(x, y, r[c].text, r[c].colour, s, ts::Align::Left));
         x += float(widths[c]) * cw;
       }
     }
@@ -253,6 +329,22 @@ inline ts::Batch loopInPattern(const std::vector<glm::dvec2>& texelPts, glm::vec
   for (const auto& q : texelPts) pts.push_back(glm::vec2(q / double(kTexels)));
   return ts::lineLoop(pts, colour, width, role);
 }
+// The same loop dashed: `dash` texels drawn, `dash` left out, along each
+// edge, so a line lying on another shows both.
+inline ts::Batch dashedLoopInPattern(const std::vector<glm::dvec2>& texelPts, glm::vec4 colour, float width,
+                                     double dash, const std::string& role) {
+  std::vector<glm::vec2> pts;
+  for (size_t k = 0; k < texelPts.size(); ++k) {
+    const glm::dvec2 a = texelPts[k], b = texelPts[(k + 1) % texelPts.size()];
+    const double len = glm::length(b - a);
+    for (double t = 0; t < len; t += 2 * dash) {
+      const double e = std::min(len, t + dash);
+      pts.push_back(glm::vec2((a + (b - a) * (t / len)) / double(kTexels)));
+      pts.push_back(glm::vec2((a + (b - a) * (e / len)) / double(kTexels)));
+    }
+  }
+  return ts::lineSegments(pts, colour, width, role);
+}
 // Texel centres marked by small squares (0.36 texel a side).
 inline ts::Batch centreMarks(const std::vector<glm::ivec2>& texels, glm::vec4 colour, const std::string& role) {
   ts::Batch b = flat(role);
@@ -279,7 +371,7 @@ inline ts::Panel octantPanel(const ts::Rect& vp, int tex, const ts::OrbitCamera&
   p.depthTest = true;
   const glm::dvec3 toLight = glm::dvec3(glm::inverse(glm::mat3(p.modelview)) * glm::vec3(-0.3f, 0.4f, 1.0f));
   p.batches.push_back(ts::litMeshBatch(mesh(kPictureMesh), tex, toLight, 0.55, 0.45, "octant"));
-  const glm::vec4 axis[3] = {{1.0f, 0.35f, 0.35f, 1.0f}, {0.4f, 0.95f, 0.4f, 1.0f}, {0.45f, 0.6f, 1.0f, 1.0f}};
+  const glm::vec4* axis = kAxis;
   for (int k = 0; k < 3; ++k) {
     ts::Batch b = ts::lineSegments({}, axis[k], 2.0f, std::string("axis_") + "xyz"[k]);
     glm::vec3 tip(0.0f);

@@ -103,9 +103,10 @@ class PerspectiveCorrection final : public ts::Scene {
          "The screen-linear error grows with the tilt, from {sweep_t00_error_texels} texels facing the eye, where "
          "(d2 - d1)/d1 is already {sweep_t00_d_ratio}, to {sweep_t80_error_texels} at 80 deg."},
         {"inspect_vi2_footprints", "Figure VI.2 (inside six pixels)",
-         "The plane at 80 degrees, six pixels picked from near to far (--inspect X,Y --footprints); right: each "
-         "one's footprint on level 0 of the texture: the preimage of the pixel square (white), the derivatives' "
-         "parallelogram, the EWA ellipse, the 2^lambda square of its mip level and the texels trilinear reads.",
+         "The plane at 80 degrees, six pixels picked from near to far (--inspect X,Y --footprints), ringed in the "
+         "plane's panel drawn again pixel for pixel; below: each one's footprint on level 0 of the texture: the "
+         "preimage of the pixel square (white), the derivatives' parallelogram, the EWA ellipse, the 2^lambda "
+         "square of its mip level and the texels trilinear reads.",
          {"--view", "perspective", "--tilt", "80", "--distance", "1.5", "--footprints", "--inspect", "515,185",
           "--inspect", "515,160", "--inspect", "515,145", "--inspect", "515,133", "--inspect", "515,126", "--inspect",
           "515,121"}, 1024, 400,
@@ -191,11 +192,11 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
   }
   int tex = f.addTexture(checker());
   // The notes: the hint test, and the measured error against the rule of thumb (perspective_measure.hpp).
-  const auto notes = persp::notes(s, have ? last : nullptr);
+  const auto notes = persp::notes(s, have ? last : nullptr, measured);
   // Room for the notes under the pictures (at most a third of the height).
   const float margin = 8, noteW = float(width) - 2 * margin;
   float notesH = 0;
-  for (const auto& n : notes) notesH += float(ts::layout::captionLines(n.first, 1, noteW)) * ts::layout::lineHeight(1) + 4;
+  for (const auto& n : notes) notesH += float(ts::layout::captionLines(n.first.text, 1, noteW)) * ts::layout::lineHeight(1) + 4;
   notesH = std::min(notesH, float(height) / 3);
   const std::string how[2] = {"CPU-projected vertices, w = 1: screen-linear", "glHint(..., GL_NICEST): hyperbolic"};
   const char* titles[2] = {"Without hyperbolic interpolation", "With hyperbolic interpolation"};
@@ -269,6 +270,7 @@ ts::Measurements PerspectiveCorrection::measure(ts::Renderer& r) {
       {"d_ratio", d.ratio(), "(d2 - d1)/d1, the book's rule of thumb"},
       {"depth_ratio", d.depthRatio(), "(w2 - w1)/w1 over the corners' depths"},
       {"affine_error_texels", m.affine.maxErrorTexels, "largest |(s,t) - correct| of the screen-linear image, texels of 256"},
+      {"affine_error_checks", m.affine.maxErrorTexels / (persp::kTexels / persp::kChecks), "the same in checks of the checkerboard"},
       {"affine_error_predicted", m.affine.predictedTexels, "the same from the analytic maps at the same pixels"},
       {"perspective_error_index", double(m.perspective.maxIndexError), "hyperbolic image: largest texel-index error (of 2048)"},
       {"hint_pixels_differing", double(m.hintDiffering), "GL_FASTEST vs GL_NICEST render of the GL-projected square"},

@@ -30,6 +30,8 @@ inline uint64_t clipmapTexels(uint64_t size, uint64_t clip) {
   }
 }
 inline uint64_t chainTexels(uint64_t size) { return clipmapTexels(size, size); }
+// The clipmap the demo measures: a 65536 x 65536 texture, levels of at most 512 x 512.
+constexpr uint64_t kClipmapSide = 65536, kClipmapLevel = 512;
 
 // A texture of 64 x 64 tiles (it repeats), a view 6 x 6 tiles wide moving a
 // quarter tile right and an eighth down per frame for 1,024 frames; each
@@ -37,12 +39,15 @@ inline uint64_t chainTexels(uint64_t size) { return clipmapTexels(size, size); }
 // tiles: a hit when the tile is held, else a load (evicting the least
 // recently used).  Prefetching also loads, unasked, the column and row of
 // tiles the view enters next.
+// The camera path's view and step (lruRun), which the plot's title states.
+constexpr int kCacheView = 6;
+constexpr double kCacheStepX = 0.25, kCacheStepY = 0.125;
 struct CacheRun {
   long requests = 0, hits = 0, loads = 0;
   double hitRate() const { return requests ? double(hits) / double(requests) : 0.0; }
 };
 inline CacheRun lruRun(int capacity, bool prefetch) {
-  constexpr int kTiles = 64, kView = 6, kFrames = 1024;
+  constexpr int kTiles = 64, kView = kCacheView, kFrames = 1024;
   std::list<int> order;  // most recent first
   std::unordered_map<int, std::list<int>::iterator> held;
   CacheRun run;
@@ -61,7 +66,7 @@ inline CacheRun lruRun(int capacity, bool prefetch) {
     if (int(held.size()) > capacity) held.erase(order.back()), order.pop_back();
   };
   for (int f = 0; f < kFrames; ++f) {
-    const double x0 = f * 0.25, y0 = f * 0.125;
+    const double x0 = f * kCacheStepX, y0 = f * kCacheStepY;
     const int tx0 = int(std::floor(x0)), ty0 = int(std::floor(y0)), tx1 = int(std::floor(x0 + kView)), ty1 = int(std::floor(y0 + kView));
     for (int ty = ty0; ty <= ty1; ++ty)
       for (int tx = tx0; tx <= tx1; ++tx) touch(tx, ty, true);

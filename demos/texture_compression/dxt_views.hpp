@@ -45,18 +45,21 @@ inline int imageTexture(ts::Frame& f, const Result& m, Show show, Crop crop, con
 }
 
 // Picture | DXT1 | error x 8 | block (bx, by) and the 32 x 32 texels around it.
-inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const std::string& numbers) {
+inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const L::Text& numbers) {
   const L::Box area{8, 8, float(f.width - 8), float(f.height - 8)};
   const std::vector<L::Cell> cells = L::flow(area, {4, 1.0f, 1, 2, 10, 2, 150});
   const char* mode = m.threeColour ? "DXT1, every block in the 3-colour mode" : "DXT1, 4 bits per texel";
-  const std::string titles[4] = {std::string(kPictureNames[m.picture]) + ", 512 x 512, 24 bits per texel",
-                                 std::string(mode) + (m.glDecode ? " (GL's decode)" : " (CPU decode: no S3TC here)"),
-                                 "|error| x 8", "block (" + std::to_string(bx) + ", " + std::to_string(by) + ") and its palette"};
+  const L::Text titles[4] = {
+      std::string(kPictureNames[m.picture]) + ", " + L::given("the picture's width", m.original.width, "%d") + " x " +
+          L::given("the picture's height", m.original.height, "%d") + ", " + L::given("bits a texel", 24, "%d") + " bits per texel",
+      std::string(mode) + (m.glDecode ? " (GL's decode)" : " (CPU decode: no S3TC here)"),
+      "|error| x " + L::given("the error's magnification", 8, "%d"),
+      "block (" + L::given("the block's column", bx, "%d") + ", " + L::given("the block's row", by, "%d") + ") and its palette"};
   const ts::Image* shown[3] = {&m.original, &m.decoded, &m.error};
   const Show what[3] = {Show::Original, m.glDecode ? Show::DecodedGl : Show::DecodedCpu, Show::Error};
   for (int k = 0; k < 3; ++k)
     f.panels.push_back(L::texturePanel("image_" + std::to_string(k), cells[size_t(k)].picture,
-                                       imageTexture(f, m, what[k], {}, *shown[k], titles[k], k == 1 ? m.calls : nullptr)));
+                                       imageTexture(f, m, what[k], {}, *shown[k], titles[k].text, k == 1 ? m.calls : nullptr)));
   // The block, 8 x 8 blocks around it magnified, outlined; its palette below.
   // (A picture smaller than 32 texels a side is shown whole.)
   const int zw = std::min(32, m.decoded.width), zh = std::min(32, m.decoded.height);
@@ -65,8 +68,8 @@ inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const std
   for (int y = 0; y < zh; ++y)
     for (int x = 0; x < zw; ++x) zoom.set(x, y, m.decoded.at(x0 + x, y0 + y));
   ts::Rect zr = cells[3].picture;
-  const int sw = zr.h / 6;
-  zr.h -= sw + 4;
+  const int sw = zr.h / 6, keyH = int(L::lineHeight(1)) + 2;  // the palette's strip, the outline's key
+  zr.h -= sw + 4 + keyH;
   zr.w = zr.h, zr.x = cells[3].picture.x + (cells[3].picture.w - zr.w) / 2;
   ts::Panel z = L::texturePanel("block_zoom", zr, imageTexture(f, m, what[1], {x0, y0, zw, zh}, zoom, "the block magnified", nullptr, GL_NEAREST));
   const float ux = float(bx * 4 - x0) / float(zw), uy = 1.0f - float(by * 4 - y0) / float(zh);
@@ -88,9 +91,12 @@ inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const std
   f.panels.push_back(sp);
   for (int k = 0; k < 4; ++k) L::caption(f, cells[size_t(k)].above, titles[k], L::kWhite, cells[size_t(k)].scale);
   char pals[160];
-  std::snprintf(pals, sizeof pals, "c0 %04X %s c1 %04X: %s", b.c0, b.c0 > b.c1 ? ">" : "<=", b.c1,
+  std::snprintf(pals, sizeof pals, "c0 0x%04X %s c1 0x%04X: %s", b.c0, b.c0 > b.c1 ? ">" : "<=", b.c1,
                 b.c0 > b.c1 ? "c2 = (2c0+c1)/3, c3 = (c0+2c1)/3" : "c2 = (c0+c1)/2, c3 = black");
   L::caption(f, cells[3].below, pals, L::kWhite, cells[3].scale);
+  // The outline's colour is the block's: named under the picture it marks.
+  L::legend(f, {float(zr.x), float(zr.y + zr.h + 4 + sw + 2), float(cells[3].picture.x + cells[3].picture.w), cells[3].below.y0},
+            {{L::kAmber, "the block"}}, 1);
   L::caption(f, {cells[0].below.x0, cells[0].below.y0, cells[2].below.x1, cells[0].below.y1}, numbers, L::kAmber,
              cells[0].scale);
 }
@@ -99,19 +105,20 @@ inline void buildBlocks(ts::Frame& f, const Result& m, int bx, int by, const std
 // original, of DXT1 at full size, and of RGB565 at half size magnified back
 // (GL_NEAREST; each panel a multiple of 64 pixels, so no texel edge falls on
 // a pixel centre).
-inline void buildEqualMemory(ts::Frame& f, const Result& m, int bx, int by, const std::string& numbers) {
+inline void buildEqualMemory(ts::Frame& f, const Result& m, const ts::Measurements& ms, int bx, int by, const L::Text& numbers) {
   const L::Box area{8, 8, float(f.width - 8), float(f.height - 8)};
   const std::vector<L::Cell> cells = L::flow(area, {3, 1.0f, 1, 2, 10, 2, 150});
   const int n = std::min({64, m.original.width, m.original.height});
   const int x0 = std::clamp(bx * 4 + 2 - n / 2, 0, m.original.width - n), y0 = std::clamp(by * 4 + 2 - n / 2, 0, m.original.height - n);
   const ts::Image* shown[3] = {&m.original, &m.decoded, &m.rgb565};
   const Show what[3] = {Show::Original, m.glDecode ? Show::DecodedGl : Show::DecodedCpu, Show::Rgb565};
-  char rms[2][64];
-  std::snprintf(rms[0], sizeof rms[0], "RMS %.2f", m.rmsDxt1);
-  std::snprintf(rms[1], sizeof rms[1], "RMS %.2f", m.rmsRgb565);
-  const std::string dims = std::to_string(m.original.width) + " x " + std::to_string(m.original.height);
-  const std::string titles[3] = {m.name + ", " + dims + " at 24 bits", "DXT1 at " + dims + ": " + rms[0],
-                                 std::string("RGB565 at half the size, magnified: ") + rms[1]};
+  const std::string size = m.fromFile ? "file" : "512";
+  const L::Text dims = L::given("the picture's width", m.original.width, "%d") + " x " +
+                       L::given("the picture's height", m.original.height, "%d");
+  const L::Text titles[3] = {m.name + ", " + dims + " at " + L::given("bits a texel", 24, "%d") + " bits",
+                             "DXT1 at " + dims + L::measuredText(ms, ": RMS {rms_equal_memory[dxt1_" + size + "]|%.2f}"),
+                             L::measuredText(ms, "RGB565 at half the size, magnified: RMS {rms_equal_memory[rgb565_" +
+                                                     std::string(m.fromFile ? "half" : "256") + "]|%.2f}")};
   for (int k = 0; k < 3; ++k) {
     ts::Image crop(n, n);
     for (int y = 0; y < n; ++y)
@@ -119,7 +126,7 @@ inline void buildEqualMemory(ts::Frame& f, const Result& m, int bx, int by, cons
     const ts::Rect& c = cells[size_t(k)].picture;
     const int side = std::max(n, std::min(c.w, c.h) / n * n);
     f.panels.push_back(L::texturePanel("equal_" + std::to_string(k), L::centred(c, side, side),
-                                       imageTexture(f, m, what[k], {x0, y0, n, n}, crop, titles[k], k == 1 ? m.calls : nullptr, GL_NEAREST)));
+                                       imageTexture(f, m, what[k], {x0, y0, n, n}, crop, titles[k].text, k == 1 ? m.calls : nullptr, GL_NEAREST)));
     L::caption(f, cells[size_t(k)].above, titles[k], L::kWhite, cells[size_t(k)].scale);
   }
   L::caption(f, {cells[0].below.x0, cells[0].below.y0, cells[2].below.x1, cells[0].below.y1}, numbers, L::kAmber,
@@ -127,20 +134,37 @@ inline void buildEqualMemory(ts::Frame& f, const Result& m, int bx, int by, cons
 }
 
 // The LRU tile cache: hit rate against its size, with and without prefetching.
-inline void buildMemory(ts::Frame& f, const Result& m, const std::string& numbers) {
+// The title and the key are placed here, not by the plot, so that the
+// title's numbers say what they are and the key goes into the frame's legend.
+inline void buildMemory(ts::Frame& f, const Result& m, const L::Text& numbers) {
+  const glm::vec4 kLru{0.4f, 0.7f, 1.0f, 1.0f};
+  const float line = L::lineHeight(1);
+  const L::Text view = L::given("the view's side, tiles", kCacheView, "%.0f");
+  L::caption(f, {8, 8, float(f.width - 8), 8 + line},
+             "an LRU tile cache along a camera path (a view " + view + " x " + view + " tiles wide, moving " +
+                 L::given("the view's step across, tiles a frame", kCacheStepX, "%g") + " tile across and " +
+                 L::given("the view's step down, tiles a frame", kCacheStepY, "%g") + " down a frame)",
+             L::kWhite, 1);
+  L::legend(f, {40, 8 + line, float(f.width - 8), 8 + 2 * line},
+            {{kLru, "LRU"}, {L::kAmber, "LRU + prefetching the next column and row"}}, 1);
   ts::plot::Spec s;
-  s.title = "an LRU tile cache along a camera path (a view 6 x 6 tiles wide, 1/4 tile a frame)";
   s.xLabel = "cache size, tiles", s.yLabel = "hit rate, %";
-  s.x0 = 24, s.x1 = 136, s.y0 = 0, s.y1 = 100;
+  // The axis runs past 100 % so that a curve at its plateau near 100 stays clear of the border.
+  s.x0 = 24, s.x1 = 136, s.y0 = 0, s.y1 = 110;
   s.xTicks = ts::plot::ticks(32, 128, 16), s.yTicks = ts::plot::ticks(0, 100, 20);
   std::vector<glm::dvec2> a, b;
   for (size_t k = 0; k < cacheSizes().size(); ++k)
     a.push_back({double(cacheSizes()[k]), 100 * m.plain[k].hitRate()}), b.push_back({double(cacheSizes()[k]), 100 * m.prefetched[k].hitRate()});
-  s.series.push_back({"lru", glm::vec4(0.4f, 0.7f, 1.0f, 1.0f), ts::plot::Mark::Line, a});
-  s.series.push_back({"lru_prefetch", glm::vec4(1.0f, 0.75f, 0.3f, 1.0f), ts::plot::Mark::Line, b});
-  s.legend = {{"LRU", glm::vec4(0.4f, 0.7f, 1.0f, 1.0f)}, {"LRU + prefetching the next column and row", L::kAmber}};
-  const int notes = int(L::lineHeight(1)) * 3 + 8;
-  ts::plot::draw(f, s, {8, 8, f.width - 16, f.height - 16 - notes});
+  s.series.push_back({"lru", kLru, ts::plot::Mark::Line, a});
+  s.series.push_back({"lru_prefetch", L::kAmber, ts::plot::Mark::Line, b});
+  const int notes = int(line) * 3 + 8, top = 8 + int(2 * line);
+  const size_t first = f.labels.size();
+  ts::plot::draw(f, s, {8, top, f.width - 16, f.height - 8 - top - notes});
+  // The ticks the plot placed are axis positions, not measurements.
+  for (size_t k = first; k < f.labels.size(); ++k)
+    for (const auto& [ticks, what] : {std::pair{&s.xTicks, "cache-size axis tick, tiles"}, std::pair{&s.yTicks, "hit-rate axis tick, %"}})
+      for (const ts::plot::Tick& t : *ticks)
+        if (f.labels[k].text == t.text) f.labels[k].given.push_back({what, t.at});
   L::caption(f, {8, float(f.height - notes), float(f.width - 8), float(f.height - 4)}, numbers, L::kAmber, 1);
 }
 }  // namespace views

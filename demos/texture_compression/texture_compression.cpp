@@ -117,35 +117,42 @@ class TextureCompression final : public ts::Scene {
       ts::layout::caption(f, {8, 8, float(width - 8), float(height - 8)}, "compressing ...", ts::layout::kWhite, 2);
       return f;
     }
-    const std::string numbers = summary(measured);
+    const ts::layout::Text numbers = summary(measured);
     const int bx = std::min(bx_, blocksAcross(m->original.width) - 1), by = std::min(by_, blocksAcross(m->original.height) - 1);
     if (view_ == 0) views::buildBlocks(f, *m, bx, by, numbers);
-    else if (view_ == 1) views::buildEqualMemory(f, *m, bx, by, numbers);
-    else views::buildMemory(f, *m, numbers);
+    else if (view_ == 1) views::buildEqualMemory(f, *m, measured, bx, by, numbers);
+    else views::buildMemory(f, *m, memoryNotes(measured, *m));
     return f;
   }
 
   ts::Measurements measure(ts::Renderer& r) override;
 
  private:
-  std::string summary(const ts::Measurements& ms) const {
-    auto v = [&](const std::string& n) {
-      for (const auto& x : ms)
-        if (x.name == n) return x.value;
-      return 0.0;
-    };
-    if (view_ == 2)
-      return "clipmap of a 65536^2 texture, 512^2 a level: " + fmt("%.0f", v("clipmap_texels[65536/512]")) + " texels; the whole chain " +
-             fmt("%.0f", v("chain_texels")) + " (" + fmt("%.0f", v("clipmap_saving")) + " times).  DXT1: a 512^2 texture in " +
-             fmt("%.0f", v("dxt1_bytes[512]")) + " bytes, a 256^2 one's at 16 bits.";
+  ts::layout::Text summary(const ts::Measurements& ms) const {
     const std::string size = file_.active() ? "file" : "512";
-    return fmt("%.0f", v("dxt1_bytes[" + size + "]")) + " bytes (" + fmt("%.0f", v("bits_per_texel")) + " bits a texel, " +
-           fmt("%.0f", v("ratio_vs_rgb565")) + ":1 against RGB565, " + fmt("%.0f", v("ratio_vs_rgb888")) + ":1 against RGB888); PSNR " +
-           fmt("%.1f", v("psnr[" + (file_.active() ? std::string("file") : kPictureNames[picture_]) + "]")) + " dB; at most " +
-           fmt("%.0f", v("dxt1_max_colours_per_block")) + " colours a block; GL vs CPU decode: " + fmt("%.0f", v("gl_vs_cpu_max_diff")) +
-           " levels at most";
+    const std::string shown = file_.active() ? std::string("file") : kPictureNames[picture_];
+    return ts::layout::measuredText(ms, "{dxt1_bytes[" + size + "]|%.0f} bytes ({bits_per_texel|%.0f} bits a texel, "
+                                        "{ratio_vs_rgb565|%.0f}:1 against RGB565, {ratio_vs_rgb888|%.0f}:1 against RGB888); "
+                                        "PSNR {psnr[" + shown + "]|%.1f} dB; at most {dxt1_max_colours_per_block|%.0f} colours "
+                                        "a block; GL vs CPU decode: {gl_vs_cpu_max_diff|%.0f} levels at most");
   }
 
+  // The memory view's notes: the clipmap against the whole chain, and DXT1's bytes against RGB565's.
+  ts::layout::Text memoryNotes(const ts::Measurements& ms, const Result& m) const {
+    namespace L = ts::layout;
+    auto side = [](const char* what, double v) {
+      const L::Text n = L::given(what, v, "%.0f");
+      return n + " x " + n;
+    };
+    L::Text t = "clipmap of a " + side("clipmap: the texture's side, texels", double(kClipmapSide)) + " texture, " +
+                side("clipmap: a level's largest side, texels", double(kClipmapLevel)) + " a level: " +
+                L::measuredText(ms, "{clipmap_texels[65536/512]|%.0f} texels; the whole chain {chain_texels|%.0f} "
+                                    "({clipmap_saving|%.0f} times).  ");
+    if (m.fromFile) return t + L::measuredText(ms, "DXT1: the file's picture in {dxt1_bytes[file]|%.0f} bytes.");
+    return t + "DXT1: a " + side("the picture's side, texels", m.original.width) + " texture in " +
+           L::measuredText(ms, "{dxt1_bytes[512]|%.0f} bytes, as many as a ") + side("RGB565 texture's side, texels", 256) +
+           " one's at " + L::given("RGB565: bits a texel", 16, "%.0f") + L::measuredText(ms, " bits ({rgb565_bytes[256]|%.0f}).");
+  }
   int view_ = 0, picture_ = kPhoto, bx_ = 40, by_ = 14, cpuDecode_ = 0;
   bool three_ = false;
   ts::UserTexture file_;  // --texture FILE: the shown picture
@@ -204,9 +211,10 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
     ms.push_back({"cache_hit_rate" + n, out.plain[k].hitRate(), "LRU tile cache of this many tiles: hits / requests"});
     ms.push_back({"cache_hit_rate_prefetch" + n, out.prefetched[k].hitRate(), "the same, prefetching the next column and row"});
   }
-  ms.push_back({"clipmap_texels[65536/512]", double(clipmapTexels(65536, 512)), "a 65536^2 texture's mip chain, each level at most 512^2"});
-  ms.push_back({"chain_texels", double(chainTexels(65536)), "the whole mip chain of 65536^2"});
-  ms.push_back({"clipmap_saving", double(chainTexels(65536)) / double(clipmapTexels(65536, 512)), "chain / clipmap"});
+  static_assert(kClipmapSide == 65536 && kClipmapLevel == 512, "the measurements' names say 65536/512");
+  ms.push_back({"clipmap_texels[65536/512]", double(clipmapTexels(kClipmapSide, kClipmapLevel)), "a 65536^2 texture's mip chain, each level at most 512^2"});
+  ms.push_back({"chain_texels", double(chainTexels(kClipmapSide)), "the whole mip chain of 65536^2"});
+  ms.push_back({"clipmap_saving", double(chainTexels(kClipmapSide)) / double(clipmapTexels(kClipmapSide, kClipmapLevel)), "chain / clipmap"});
   ms.detail = out;
   return ms;
 }

@@ -218,12 +218,15 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
   }
   // The texture matrix: texture space with the image of the unit square,
   // and the quad (s,t in [0,1]) drawn with M on the texture matrix stack.
+  // Two lines above: the left title and the key of its lines; the call that loads M and its parameters.
   L::FlowSpec spec;
-  spec.n = 2, spec.linesAbove = 1, spec.linesBelow = 1;
+  spec.n = 2, spec.linesAbove = 2, spec.linesBelow = 1;
   std::vector<L::Cell> cells = L::flow(area, spec);
   const glm::mat4 m = matrix();
   wrap::views::addTextureSpace(f, cells[0].picture, "texture_space", tex, range_, &m);
-  L::caption(f, cells[0].above, "texture space: M (unit square)", kWhite, cells[0].scale);
+  L::caption(f, L::halves(cells[0].above).first, "texture space: M (unit square)", kWhite, cells[0].scale);
+  L::legend(f, L::halves(cells[0].above).second,
+            {{wrap::views::kSquare, "the unit square under M"}, {wrap::views::kGrid, "integer s and t"}}, cells[0].scale);
   L::caption(f, cells[0].below, state, kWhite, cells[0].scale);
   ts::Panel q;
   q.id = "quad";
@@ -233,12 +236,19 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
   b.textureMatrix = matrix();
   q.batches.push_back(b);
   f.panels.push_back(q);
-  L::caption(f, cells[1].above,
-             fmt("glMatrixMode(GL_TEXTURE): rotate %.0f", xf_.angleDeg) + fmt(", scale %.2f", xf_.scale.x) +
-                 fmt(", shear %.2f", xf_.shear) + fmt(", shift %.3f", xf_.shift.x) + fmt(", %.3f", xf_.shift.y),
+  // The call above, the state's parameters below it, as set (%g: no digits the option does not have).
+  L::caption(f, L::halves(cells[1].above).first, "glMatrixMode(GL_TEXTURE)", kWhite, cells[1].scale);
+  L::caption(f, L::halves(cells[1].above).second,
+             "rotate " + L::given("texture matrix: rotation, degrees", xf_.angleDeg, "%g") + ", scale " +
+                 L::given("texture matrix: scale of s and t", xf_.scale.x, "%g") + ", shear " +
+                 L::given("texture matrix: shear, s += shear t", xf_.shear, "%g") + ", shift (" +
+                 L::given("texture matrix: shift of s", xf_.shift.x, "%g") + ", " +
+                 L::given("texture matrix: shift of t", xf_.shift.y, "%g") + ")",
              kWhite, cells[1].scale);
   if (found && found->matrixMismatches >= 0)
-    L::caption(f, cells[1].below, fmt("%.0f probe texels differ from M applied on the CPU", found->matrixMismatches),
+    L::caption(f, cells[1].below,
+               L::measuredText(measured, "{texture_matrix_mismatches|%.0f} of {texture_matrix_probes|%.0f} probe texels differ "
+                                         "from M applied on the CPU"),
                kMeasured, cells[1].scale);
   return f;
 }

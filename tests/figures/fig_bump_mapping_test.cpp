@@ -18,10 +18,13 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "common/core/image.hpp"
 #include "demos/bump_mapping/bump_gl.hpp"
 #include "demos/bump_mapping/bump_math.hpp"
+#include "demos/bump_mapping/bump_measure.hpp"
+#include "common/core/layout.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
@@ -32,6 +35,37 @@ using ts::test::value;
 const ts::Measurements& defaults() {
   static const ts::Measurements m = Demo("bump_mapping", {}).measure();
   return m;
+}
+
+// The figures' pictures and captions: R's normals are shown on the
+// figure's background like every other panel (the measurements' renders
+// keep black, which tells the surface from the rest); the captions print
+// the measurements whole, every number as a measurement or a named value,
+// never cut with "...".
+TEST(BumpMapping, FiguresShowTheirNumbersWhole) {
+  const bump::Found* found = defaults().detailAs<bump::Found>();
+  ASSERT_NE(found, nullptr);
+  const ts::Frame blank = ts::layout::blankFrame(1, 1);
+  const ts::Rgba corner = found->refNormals->at(0, 0);
+  EXPECT_NEAR(corner.r, blank.clearColor.r * 255, 1);
+  EXPECT_NEAR(corner.g, blank.clearColor.g * 255, 1);
+  EXPECT_NEAR(corner.b, blank.clearColor.b * 255, 1);
+  // Each view's numbers: six cells of PSNR, |diff| and (GLSL) the normal's error, emboss's two contrasts; two
+  // cells of normal errors.
+  for (const auto& [view, w, h, numbers] : {std::tuple{"all", 1280, 720, 16u}, std::tuple{"normals", 1024, 560, 3u}}) {
+    Demo d("bump_mapping", {"--view", view, "--method", "normalmap"});
+    d.measured = defaults();
+    const ts::Frame f = d.frame(w, h);
+    size_t printed = 0;
+    for (const ts::Label& l : f.labels) {
+      EXPECT_EQ(l.text.find("..."), std::string::npos) << view << ": " << l.text;
+      for (const ts::Label::Printed& p : l.printed) {
+        EXPECT_EQ(ts::layout::measured(d.measured, p.name, p.format.c_str()).text, p.text) << p.name;
+        ++printed;
+      }
+    }
+    EXPECT_EQ(printed, numbers) << view;
+  }
 }
 
 TEST(BumpMapping, BlinnAndNormalMapFollowTheDisplacedSurface) {

@@ -10,8 +10,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "common/core/layout.hpp"
 #include "demos/environment_mapping/env_studies.hpp"
@@ -171,6 +173,60 @@ TEST(EnvironmentMapping, TexgenIsTheFormula) {
     EXPECT_LT(v("error_max_deg[" + key(p, "mirror", "vertex") + "]"), 0.2) << p;
     EXPECT_LT(value(orbited, "error_mean_deg[" + key(p, "mirror", "vertex") + "]"), 0.1) << p;
     EXPECT_LT(value(orbited, "error_max_deg[" + key(p, "mirror", "vertex") + "]"), 0.2) << p;
+  }
+}
+
+// The flat mirror's figure prints the near ball's pixels of the picture it
+// shows: as many pixels of its reference picture are painted red as the
+// caption prints, and the caption prints them as that measurement (its
+// sidecar holds the same number); no caption is cut.
+TEST(EnvironmentMapping, FlatMirrorPrintsItsOwnPicturesCount) {
+  Demo d("environment_mapping", {"--object", "mirror", "--param", "latlong", "--eval", "vertex", "--render", "160"});
+  const ts::Measurements m = d.measure();
+  const ts::Frame f = d.frame(1080, 440);
+  const ts::Image& ref = *f.textures.at(size_t(ts::test::panelOf(f, "reference").batches.front().texture)).image;
+  int red = 0;
+  for (int y = 0; y < ref.height; ++y)
+    for (int x = 0; x < ref.width; ++x) {
+      const ts::Rgba c = ref.at(x, y);
+      red += c.r == 230 && c.g == 40 && c.b == 40;
+    }
+  EXPECT_EQ(red, value(m, "mirror_ball_pixels[shown]"));
+  EXPECT_GT(value(m, "mirror_ball_pixels_centre_map[shown]"), 2 * value(m, "mirror_ball_pixels[shown]"));
+  EXPECT_LE(value(m, "mirror_ball_pixels_both[shown]"), value(m, "mirror_ball_pixels[shown]"));
+  std::map<std::string, std::string> printed;  // measurement -> the text a label shows for it
+  for (const ts::Label& l : f.labels) {
+    EXPECT_EQ(l.text.find("..."), std::string::npos) << l.text;
+    for (const ts::Label::Printed& p : l.printed) printed[p.name] = p.text;
+  }
+  for (const char* name : {"mirror_ball_pixels[shown]", "mirror_ball_pixels_centre_map[shown]", "error_mean_deg[shown]"}) {
+    ASSERT_TRUE(printed.count(name)) << name;
+    EXPECT_EQ(printed[name], ts::layout::measured(m, name, name == std::string("error_mean_deg[shown]") ? "%.2f" : "%.0f").text);
+  }
+  bool keyed = false;
+  for (const ts::LegendEntry& e : f.legend) keyed |= e.color.r > 0.85f && e.color.g < 0.2f && e.meaning.find("ball") != std::string::npos;
+  EXPECT_TRUE(keyed) << "the red ball has a key";
+}
+
+// The torus fits its pictures: in the comparison every picture's outermost
+// rows and columns are background, so no side of the torus is cut.
+TEST(EnvironmentMapping, CompareTorusShowsTheWholeTorus) {
+  Demo d("environment_mapping", {"--view", "compare", "--object", "torus", "--eval", "vertex", "--tilt", "30", "--render", "96"});
+  d.measure();
+  const ts::Frame f = d.frame(1280, 360);
+  const ts::Rgba bg = envmap::toRgba(envmap::kBackground);
+  std::vector<std::string> ids(envmap::kParamKeys, envmap::kParamKeys + 4);
+  ids.push_back("reference");
+  for (const std::string& id : ids) {
+    const ts::Image& img = *f.textures.at(size_t(ts::test::panelOf(f, id).batches.front().texture)).image;
+    int covered = 0;
+    auto at = [&](int x, int y) {
+      const ts::Rgba c = img.at(x, y);
+      covered += std::abs(c.r - bg.r) > 2 || std::abs(c.g - bg.g) > 2 || std::abs(c.b - bg.b) > 2;
+    };
+    for (int k = 0; k < img.width; ++k) at(k, 0), at(k, img.height - 1);
+    for (int k = 0; k < img.height; ++k) at(0, k), at(img.width - 1, k);
+    EXPECT_EQ(covered, 0) << id << ": the torus reaches the picture's edge";
   }
 }
 

@@ -5,6 +5,7 @@
 // whose answer is known.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -130,6 +131,33 @@ TEST_F(TextureCompressionFigure, ClipmapAndCache) {
   EXPECT_GT(value(ms, "cache_hit_rate[64]"), 0.9);
   EXPECT_GT(value(ms, "cache_hit_rate_prefetch[64]"), value(ms, "cache_hit_rate[64]") + 0.03);
   EXPECT_GT(value(ms, "cache_hit_rate_prefetch[128]"), 0.99);
+}
+
+// The memory figure: the hit-rate axis runs past 100 %, so the curves'
+// plateaus near 100 stay clear of the plot's top border; its notes print the
+// measurements and both curves have a key.
+TEST_F(TextureCompressionFigure, MemoryPlotHasHeadroom) {
+  ts::test::Demo d("texture_compression", {"--view", "memory"});
+  d.measured = ms;
+  const ts::Frame f = d.frame(1024, 520);
+  const ts::Panel* plot = nullptr;
+  for (const ts::Panel& p : f.panels)
+    for (const ts::Batch& b : p.batches)
+      if (b.role == "lru_prefetch") plot = &p;
+  ASSERT_NE(plot, nullptr);
+  float highest = 1e9f;  // the curve's highest point, pixels from the top
+  for (const ts::Batch& b : plot->batches)
+    if (b.role == "lru_prefetch" || b.role == "lru")
+      for (const ts::Vertex& v : b.vertices)
+        highest = std::min(highest, ts::panelToPixels(*plot, plot->projection * plot->modelview * glm::vec4(v.pos, 1.0f)).y);
+  EXPECT_GE(highest - float(plot->viewport.y), 0.05f * float(plot->viewport.h)) << "the plateau runs into the top border";
+  size_t printed = 0;
+  for (const ts::Label& l : f.labels) {
+    EXPECT_EQ(l.text.find("..."), std::string::npos) << l.text;
+    printed += l.printed.size();
+  }
+  EXPECT_EQ(printed, 5u) << "clipmap, chain, saving, DXT1 bytes, RGB565 bytes";
+  EXPECT_EQ(f.legend.size(), 2u);
 }
 
 // Claim: the 3-colour mode (c0 <= c1) is worse on the photo: its palette

@@ -131,6 +131,19 @@ TEST(WrapModes, TextureMatrixAtProbes) {
     EXPECT_EQ(value(m, "texture_matrix_mismatches"), 0) << s[1];
     EXPECT_GT(value(m, "texture_matrix_probes"), 40) << s[1];
   }
+  // The figure's state: the right title (the matrix's parameters, named) is whole, the count printed is the
+  // measurement, and the left picture's lines have a key.
+  Demo fig("wrap_modes", {"--view", "matrix", "--rotate", "30", "--scale", "1.5", "--shear", "0.25", "--wrap-s", "mirrored"});
+  fig.measure();
+  const ts::Frame f = fig.frame(1024, 512);
+  size_t given = 0, printed = 0;
+  for (const ts::Label& l : f.labels) {
+    EXPECT_EQ(l.text.find("..."), std::string::npos) << l.text;
+    given += l.given.size(), printed += l.printed.size();
+  }
+  EXPECT_EQ(given, 5u) << "rotation, scale, shear and the two shifts";
+  EXPECT_EQ(printed, 2u) << "mismatches and probes";
+  EXPECT_EQ(f.legend.size(), 2u);
   wrap::TexTransform x;
   x.angleDeg = 30;
   glm::mat4 m = wrap::textureMatrix(x);

@@ -24,9 +24,7 @@
 #include <string>
 
 namespace oracle {
-inline constexpr std::array<const char*, 17> kFiguresDrawnFromGlRenders = {
-    // --footprints: the left panel is the picture GL drew, inspected
-    "inspect_vi2_footprints", "inspect_aniso_footprint",
+inline constexpr std::array<const char*, 15> kFiguresDrawnFromGlRenders = {
     "vi7_jitter", "jitter_zone_plate", "parallax_modes", "parallax_error_band", "parallax_step",
     // environment_mapping: its object pictures are nested frames the reference recomputes (texgen) or
     // exempts (GLSL), its maps "environment_map" textures it remakes, the texels read quads in the
