@@ -28,7 +28,9 @@ jobs=${TS_JOBS:-$(nproc)}
 t_start=$(date +%s)
 
 # ---- Debian packages
-packages=(mingw-w64 wine64 libz-mingw-w64-dev dpkg-dev cmake make pkg-config zip unzip
+# wine: the launchers (wine, wineserver) in /usr/bin, which wine64 alone,
+# installed without its recommends, does not put there.
+packages=(mingw-w64 wine64 wine libz-mingw-w64-dev dpkg-dev cmake make pkg-config zip unzip
           libglm-dev nlohmann-json3-dev libstb-dev xvfb xauth)
 missing=()
 for p in "${packages[@]}"; do

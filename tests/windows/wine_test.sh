@@ -17,7 +17,11 @@
 #   5. the exercise checker as a child process (CreateProcess):
 #      cylinder_seam --seam mine asks exercise_check.exe for its verdict.
 # TS_WINE_PARTS (default "figures cli windows child") runs only those parts;
-# TS_WINE_FIGURES (a bash glob, default *) only the figures it matches.
+# TS_WINE_FIGURES (a bash glob, default *) only the figures it matches, or
+# "per-demo": the first figure each demo lists (the full level's subset:
+# every demo's drawing code under Wine at a quarter of the time);
+# TS_WINE_WINDOWS (demos' names, default every demo) opens only those demos'
+# windows (the window code is the same in every demo).
 # Wine's helper processes inherit the output of the program that starts them
 # and keep it open: wineserver is started persistent and the prefix booted
 # with its output on /dev/null before any test, each run has a time limit,
@@ -54,6 +58,8 @@ TOOL=$LINUX/bin/reliability_tool
 
 # ---- Wine: one prefix (made once, ~11 s), its server kept running
 mkdir -p "$WINEPREFIX"
+command -v wine >/dev/null && command -v wineserver >/dev/null ||
+  { echo "FAIL: no wine or wineserver command (Debian's package wine; scripts/windows.sh installs it)"; exit 1; }
 wineserver -p >/dev/null 2>&1
 wine wineboot </dev/null >/dev/null 2>&1
 # No debugger on a crash: Wine's would wait for a user until the time limit;
@@ -77,7 +83,9 @@ w() {
 if part figures; then
 echo "== figures: Linux (OSMesa) =="
 only=()
-if [ -n "${TS_WINE_FIGURES:-}" ]; then
+if [ "${TS_WINE_FIGURES:-}" = per-demo ]; then
+  only=(--only "$("$LINUX/bin/make_figures" --list | awk '!seen[$NF]++ { print $1 }' | paste -sd, -)")
+elif [ -n "${TS_WINE_FIGURES:-}" ]; then
   ids=$("$LINUX/bin/make_figures" --list | awk '{print $1}' | while read -r id; do
           # shellcheck disable=SC2053
           [[ "$id" == $TS_WINE_FIGURES ]] && echo "$id"; done | paste -sd, -)
@@ -197,6 +205,7 @@ for exe in "$WIN"/*.exe; do
   demo=$(basename "$exe" .exe)
   case "$demo" in make_figures|make_textures|exercise_*) continue ;; esac
   [ -x "$LINUX/bin/$demo" ] || continue
+  if [ -n "${TS_WINE_WINDOWS:-}" ] && [[ " $TS_WINE_WINDOWS " != *" $demo "* ]]; then continue; fi
   # The demo's first letter key, from its --help ("  --option ...  key x  ..." lines).
   key=$("$LINUX/bin/$demo" --help | sed -n 's/^  --.* key \([a-zA-Z0-9]\)[ /].*/\1/p' | head -1)
   [ -n "$key" ] || key=h
