@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "common/gl/context.hpp"
+#include "common/core/child_process.hpp"
 #include "common/core/error.hpp"
 #include "common/gl/export_c.hpp"
 #include "common/gl/figure.hpp"
@@ -73,6 +74,7 @@ static int renderOffscreen(Scene& scene, Options& opts, const CommonFlags& f, Ba
 }
 
 int runDemo(const std::string& id, int argc, char** argv) {
+  useUtf8Console();
   try {
     auto scene = makeScene(id);
     if (!scene) throw Error("no scene named '" + id + "' is registered", kExitFailure);
@@ -97,7 +99,7 @@ int runDemo(const std::string& id, int argc, char** argv) {
     int w = f.width ? f.width : scene->defaultWidth();
     int h = f.height ? f.height : scene->defaultHeight();
     if (!f.png.empty() || !f.glListing.empty() || !f.exportC.empty()) {
-      if (b == Backend::Window) throw Error("--png, --gl-listing and --export-c render offscreen: use --backend osmesa, egl or auto");
+      if (b == Backend::Window) throw Error("--png, --gl-listing and --export-c render offscreen: use --backend osmesa, egl, hidden or auto");
       if (!f.screenshot.empty() || f.frames)
         throw Error("--screenshot and --frames are for the window, not --png, --gl-listing or --export-c");
       checkPixels(f.inspect, w, h);  // before anything is rendered or written
@@ -105,7 +107,7 @@ int runDemo(const std::string& id, int argc, char** argv) {
     }
     if (f.footprints) throw Error("--footprints draws a PNG: add --png FILE and --inspect X,Y");
     if (!f.json.empty()) throw Error("--json needs --png FILE");
-    if (b == Backend::OSMesa || b == Backend::EGL)
+    if (b == Backend::OSMesa || b == Backend::EGL || b == Backend::Hidden)
       throw Error(std::string("backend ") + backendName(b) + " is offscreen: add --png FILE");
     checkPixels(f.inspect, w, h);  // --inspect X,Y in the window: opens with it picked
     // A screenshot that cannot be written is said before the window opens.

@@ -2,8 +2,10 @@
 // one process with one offscreen context (textures and shaders are shared
 // between figures), and writes the gallery README.md beside them.
 //
-//   make_figures [--out DIR] [--backend auto|osmesa|egl] [--scale F] [--only ID] [--list]
+//   make_figures [--out DIR] [--backend auto|osmesa|egl|hidden] [--scale F] [--only ID] [--list]
 #include <sys/stat.h>
+
+#include <filesystem>
 
 #include <algorithm>
 #include <cctype>
@@ -17,6 +19,7 @@
 
 #include "common/app/side_panel.hpp"
 #include "common/gl/context.hpp"
+#include "common/core/child_process.hpp"
 #include "common/core/error.hpp"
 #include "common/app/inspect_view.hpp"
 #include "common/gl/figure.hpp"
@@ -241,7 +244,7 @@ int run(int argc, char** argv) {
       scale = std::strtod(v.c_str(), &end);
       if (v.empty() || *end || !(scale > 0) || scale > 16) throw ts::Error("--scale: '" + v + "' is not in (0, 16]");
     } else if (a == "--help" || a == "-h") {
-      std::printf("usage: make_figures [--out DIR] [--backend auto|osmesa|egl] [--scale F] [--only ID] [--list] [--export-c]\n"
+      std::printf("usage: make_figures [--out DIR] [--backend auto|osmesa|egl|hidden] [--scale F] [--only ID] [--list] [--export-c]\n"
                   "Renders every registered book figure (PNG + sidecar JSON + GL listing) and the gallery README.md\n"
                   "into DIR (default book_figures). --scale multiplies every figure's size. --only ID[,ID...]: just\n"
                   "these figures or every figure of these demos (no gallery). --export-c: also each figure as a\n"
@@ -250,7 +253,7 @@ int run(int argc, char** argv) {
     } else throw ts::Error("unknown argument '" + a + "' (see --help)");
   }
   ts::Backend b = ts::parseBackend(backend);
-  if (b == ts::Backend::Window) throw ts::Error("figures render offscreen: --backend osmesa, egl or auto");
+  if (b == ts::Backend::Window) throw ts::Error("figures render offscreen: --backend osmesa, egl, hidden or auto");
 
   std::vector<Entry> todo;
   for (const auto& reg : ts::sceneRegistry())
@@ -269,9 +272,10 @@ int run(int argc, char** argv) {
     return 0;
   }
   if (todo.empty()) throw ts::Error("no figure or demo named '" + only + "' (see --list)");
-  struct stat st;
-  if (::stat(out.c_str(), &st) != 0 && ::mkdir(out.c_str(), 0777) != 0)
-    throw ts::Error("cannot create " + out + ": " + std::strerror(errno));
+  // std::filesystem: Windows' mkdir() takes no mode.
+  std::error_code made;
+  if (!std::filesystem::exists(out, made) && !std::filesystem::create_directory(out, made))
+    throw ts::Error("cannot create " + out + ": " + made.message());
   ts::checkWritable(out + "/README.md");
 
   ts::ContextOptions co;
@@ -343,6 +347,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  ts::useUtf8Console();
   try {
     return run(argc, argv);
   } catch (const ts::Error& e) {

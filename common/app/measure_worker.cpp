@@ -1,14 +1,12 @@
 #include "common/app/measure_worker.hpp"
 
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <exception>
 
+#include "common/core/child_process.hpp"
 #include "common/core/error.hpp"
 #include "common/gl/gl.hpp"
 #include "common/core/options.hpp"
@@ -19,12 +17,21 @@
 namespace ts {
 MeasureWorker::MeasureWorker(std::string sceneId, bool accumBuffer, void (*wake)())
     : sceneId_(std::move(sceneId)), accum_(accumBuffer), wake_(wake) {
+  // No OSMesa or EGL in this build (Windows), or both hidden (the tests'
+  // TS_HIDE_GL_LIBS=osmesa,egl): a hidden window, made on this (the main)
+  // thread for the worker's.
+  if (!haveDlopenBackends() || (glLibraryHidden("osmesa") && glLibraryHidden("egl"))) {
+    ContextOptions co;
+    co.accumBuffer = accumBuffer;
+    hidden_ = createHiddenContext(co, &hiddenWhy_, true);
+  }
   thread_ = std::thread([this] { run(); });
 }
 
 MeasureWorker::~MeasureWorker() {
   stop();
   if (thread_.joinable()) thread_.join();
+  hidden_.reset();  // here, on the thread that made its window
 }
 
 void MeasureWorker::stop() {
@@ -77,8 +84,9 @@ void MeasureWorker::run() {
   // still gets about a third of a core's share.  (Linux: the nice value is
   // per thread and inherited by the threads this one starts, llvmpipe's
   // rasterizer threads among them.)
-  setpriority(PRIO_PROCESS, id_t(::syscall(SYS_gettid)), 5);
+  lowerThreadPriority();
   std::unique_ptr<Context> ctx;
+  Context* context = nullptr;  // ctx, or the hidden window's context (hidden_)
   std::unique_ptr<Renderer> renderer;
   std::unique_ptr<Scene> scene;
   Options opts;
@@ -87,13 +95,23 @@ void MeasureWorker::run() {
     co.width = width_;
     co.height = height_;
     co.accumBuffer = accum_;
-    ctx = createOffscreenContext(Backend::Auto, co);
-    renderer = std::make_unique<Renderer>(*ctx);
+    co.allowHidden = false;  // GLFW makes windows on the main thread only
+    if (hidden_) {
+      hidden_->adopt();
+      context = hidden_.get();
+    } else {
+      if (!hiddenWhy_.empty()) throw Error(hiddenWhy_);
+      ctx = createOffscreenContext(Backend::Auto, co);
+      context = ctx.get();
+    }
+    renderer = std::make_unique<Renderer>(*context);
     scene = makeScene(sceneId_);
     if (!scene) throw Error("no scene '" + sceneId_ + "'");
     scene->addOptions(opts);
     opts.captureDefaults();
   } catch (const std::exception& e) {
+    renderer.reset();
+    if (hidden_) hidden_->detach();
     std::lock_guard<std::mutex> lock(mu_);
     failure_ = e.what();
     failed_.store(true);
@@ -132,8 +150,8 @@ void MeasureWorker::run() {
       opts.resetToDefaults();
       opts.parse(flags);
       r.stateText = opts.stateText();
-      if (ctx->width() != w || ctx->height() != h) ctx->resize(w, h);
-      ctx->bindTarget();
+      if (context->width() != w || context->height() != h) context->resize(w, h);
+      context->bindTarget();
       r.measured = scene->measure(*renderer);
       gl::check("a measurement");
     } catch (const MeasureCancelled&) {
@@ -162,5 +180,6 @@ void MeasureWorker::run() {
   scene.reset();
   renderer.reset();
   ctx.reset();
+  if (hidden_) hidden_->detach();  // the main thread destroys it (~MeasureWorker)
 }
 }  // namespace ts

@@ -67,6 +67,11 @@ class MeasureWorker {
 
  private:
   void run();
+  // Where there is no OSMesa or EGL (Windows), the worker's context is a
+  // hidden window made here, on the main thread (GLFW makes windows there
+  // only), used on the worker's thread and destroyed here again.
+  std::unique_ptr<Context> hidden_;
+  std::string hiddenWhy_;
   const std::string sceneId_;
   const bool accum_;
   void (*wake_)();

@@ -10,6 +10,9 @@
 #endif
 #include <cstdlib>
 #include <new>
+#ifdef _WIN32
+#include <malloc.h>
+#endif
 #include <utility>
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -19,14 +22,26 @@ namespace ts {
 namespace detail {
 void* allocateLarge(std::size_t bytes) {
   const std::size_t huge = std::size_t(1) << 21, align = bytes >= huge ? huge : 64;
+#ifdef _WIN32
+  // Windows' C runtime has no aligned_alloc (its free() cannot free such a
+  // block); _aligned_malloc pairs with _aligned_free below.
+  void* p = _aligned_malloc(std::max<std::size_t>(align, (bytes + align - 1) / align * align), align);
+#else
   void* p = std::aligned_alloc(align, std::max<std::size_t>(align, (bytes + align - 1) / align * align));
+#endif
   if (!p) throw std::bad_alloc();
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   if (align == huge) madvise(p, (bytes + align - 1) / align * align, MADV_HUGEPAGE);  // a hint: ignored if unavailable
 #endif
   return p;
 }
-void freeLarge(void* p) { std::free(p); }
+void freeLarge(void* p) {
+#ifdef _WIN32
+  _aligned_free(p);
+#else
+  std::free(p);
+#endif
+}
 }  // namespace detail
 
 double signedArea(const Polygon2& poly) {

@@ -1,15 +1,165 @@
-// common/core/child_process.cpp — fork + exec with pipes, poll with a deadline.
+// common/core/child_process.cpp — fork + exec with pipes, poll with a deadline
+// (POSIX); CreateProcess with pipes, a thread feeding the input and a polled
+// read with a deadline (Windows, which has neither fork nor poll on pipes).
 #include "common/core/child_process.hpp"
+
+#include <chrono>
+#include <climits>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <random>
+
+#ifdef _WIN32
+#ifndef NOMINMAX
+#define NOMINMAX
+#endif
+#include <windows.h>
+
+#include <thread>
+
+namespace ts {
+namespace {
+std::wstring widen(const std::string& s) {
+  if (s.empty()) return std::wstring();
+  const int n = MultiByteToWideChar(CP_UTF8, 0, s.data(), int(s.size()), nullptr, 0);
+  std::wstring w(size_t(n), L'\0');
+  MultiByteToWideChar(CP_UTF8, 0, s.data(), int(s.size()), w.data(), n);
+  return w;
+}
+std::string narrow(const std::wstring& w) {
+  if (w.empty()) return std::string();
+  const int n = WideCharToMultiByte(CP_UTF8, 0, w.data(), int(w.size()), nullptr, 0, nullptr, nullptr);
+  std::string s(size_t(n), '\0');
+  WideCharToMultiByte(CP_UTF8, 0, w.data(), int(w.size()), s.data(), n, nullptr, nullptr);
+  return s;
+}
+// One argument as the C runtime's command-line parser reads it back:
+// quoted when it holds a space, tab or quote; a quote escaped with a
+// backslash, and the backslashes before a quote (or the closing quote)
+// doubled.
+std::wstring quoteArg(const std::wstring& a) {
+  if (!a.empty() && a.find_first_of(L" \t\"") == std::wstring::npos) return a;
+  std::wstring q = L"\"";
+  size_t slashes = 0;
+  for (wchar_t c : a) {
+    if (c == L'\\') {
+      ++slashes;
+      continue;
+    }
+    if (c == L'"') q.append(slashes * 2 + 1, L'\\');
+    else q.append(slashes, L'\\');
+    slashes = 0;
+    q += c;
+  }
+  q.append(slashes * 2, L'\\');
+  return q + L"\"";
+}
+std::string lastError(const char* what) { return std::string(what) + ": Windows error " + std::to_string(GetLastError()); }
+}  // namespace
+
+ProcessResult runProcess(const std::vector<std::string>& argv, const std::string& input, double timeoutSeconds) {
+  ProcessResult r;
+  if (argv.empty()) return r.out = "no program to run", r;
+  SECURITY_ATTRIBUTES sa{sizeof(SECURITY_ATTRIBUTES), nullptr, TRUE};
+  HANDLE inRead = nullptr, inWrite = nullptr, outRead = nullptr, outWrite = nullptr;
+  if (!CreatePipe(&inRead, &inWrite, &sa, 0)) return r.out = lastError("CreatePipe"), r;
+  if (!CreatePipe(&outRead, &outWrite, &sa, 0)) {
+    CloseHandle(inRead), CloseHandle(inWrite);
+    return r.out = lastError("CreatePipe"), r;
+  }
+  // The child inherits only its ends.
+  SetHandleInformation(inWrite, HANDLE_FLAG_INHERIT, 0);
+  SetHandleInformation(outRead, HANDLE_FLAG_INHERIT, 0);
+  std::wstring cmd;
+  for (const auto& a : argv) cmd += (cmd.empty() ? L"" : L" ") + quoteArg(widen(a));
+  STARTUPINFOW si{};
+  si.cb = sizeof si;
+  si.dwFlags = STARTF_USESTDHANDLES;
+  si.hStdInput = inRead;
+  si.hStdOutput = outWrite;
+  si.hStdError = outWrite;
+  PROCESS_INFORMATION pi{};
+  const std::wstring exe = widen(argv[0]);
+  const BOOL ok = CreateProcessW(exe.c_str(), cmd.data(), nullptr, nullptr, TRUE, CREATE_NO_WINDOW, nullptr, nullptr,
+                                 &si, &pi);
+  CloseHandle(inRead), CloseHandle(outWrite);
+  if (!ok) {
+    CloseHandle(inWrite), CloseHandle(outRead);
+    r.out = "cannot run the program\n";
+    return r;
+  }
+  CloseHandle(pi.hThread);
+  r.started = true;
+  // A thread feeds the input (a pipe's write blocks while the child does not
+  // read); it ends when all is written or the child's end is gone.
+  std::thread feeder([inWrite, &input] {
+    size_t sent = 0;
+    while (sent < input.size()) {
+      DWORD n = 0;
+      const DWORD want = DWORD(std::min<size_t>(input.size() - sent, 65536));
+      if (!WriteFile(inWrite, input.data() + sent, want, &n, nullptr)) break;
+      sent += n;
+    }
+    CloseHandle(inWrite);
+  });
+  const auto start = std::chrono::steady_clock::now();
+  char buf[4096];
+  for (;;) {
+    DWORD avail = 0;
+    if (!PeekNamedPipe(outRead, nullptr, 0, nullptr, &avail, nullptr)) break;  // closed: it ended
+    if (avail > 0) {
+      DWORD n = 0;
+      if (!ReadFile(outRead, buf, std::min<DWORD>(avail, sizeof buf), &n, nullptr) || n == 0) break;
+      r.out.append(buf, n);
+      continue;
+    }
+    if (WaitForSingleObject(pi.hProcess, 0) == WAIT_OBJECT_0) {
+      // Ended: what it wrote last is in the pipe already.
+      while (PeekNamedPipe(outRead, nullptr, 0, nullptr, &avail, nullptr) && avail > 0) {
+        DWORD n = 0;
+        if (!ReadFile(outRead, buf, std::min<DWORD>(avail, sizeof buf), &n, nullptr) || n == 0) break;
+        r.out.append(buf, n);
+      }
+      break;
+    }
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= timeoutSeconds) {
+      r.timedOut = true;
+      TerminateProcess(pi.hProcess, 1);
+      break;
+    }
+    Sleep(5);
+  }
+  WaitForSingleObject(pi.hProcess, INFINITE);
+  CloseHandle(outRead);  // a feeder still blocked on a full pipe fails now
+  feeder.join();
+  DWORD code = 0;
+  GetExitCodeProcess(pi.hProcess, &code);
+  CloseHandle(pi.hProcess);
+  r.exitCode = r.timedOut ? -1 : int(code);
+  return r;
+}
+
+std::string programFolder() {
+  std::wstring buf(32768, L'\0');
+  const DWORD n = GetModuleFileNameW(nullptr, buf.data(), DWORD(buf.size()));
+  if (n == 0) return ".";
+  std::string p = narrow(buf.substr(0, n));
+  const size_t slash = p.find_last_of("\\/");
+  return slash == std::string::npos ? "." : p.substr(0, slash);
+}
+}  // namespace ts
+
+#else  // POSIX
 
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <chrono>
-#include <climits>
-#include <cstring>
 
 namespace ts {
 ProcessResult runProcess(const std::vector<std::string>& argv, const std::string& input, double timeoutSeconds) {
@@ -80,5 +230,47 @@ std::string programFolder() {
   std::string p(buf, size_t(n));
   const size_t slash = p.rfind('/');
   return slash == std::string::npos ? "." : p.substr(0, slash);
+}
+}  // namespace ts
+#endif  // POSIX
+
+namespace ts {
+void useUtf8Console() {
+#ifdef _WIN32
+  SetConsoleOutputCP(CP_UTF8);
+#endif
+}
+
+void lowerThreadPriority() {
+#ifdef _WIN32
+  SetThreadPriority(GetCurrentThread(), THREAD_PRIORITY_BELOW_NORMAL);
+#else
+  setpriority(PRIO_PROCESS, id_t(::syscall(SYS_gettid)), 5);
+#endif
+}
+
+std::string programPath(const std::string& name) {
+#ifdef _WIN32
+  return programFolder() + "/" + name + ".exe";
+#else
+  return programFolder() + "/" + name;
+#endif
+}
+
+std::string makeTempFolder(const std::string& prefix) {
+  // A random name created with create_directory, which fails when the name
+  // exists: the same guarantee as mkdtemp, on every system.
+  std::random_device rd;
+  std::mt19937_64 gen((uint64_t(rd()) << 32) ^ rd());
+  std::error_code ec;
+  const std::filesystem::path base = std::filesystem::temp_directory_path(ec);
+  if (ec) return "";
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    char suffix[17];
+    std::snprintf(suffix, sizeof suffix, "%016llx", static_cast<unsigned long long>(gen()));
+    const std::filesystem::path p = base / (prefix + suffix);
+    if (std::filesystem::create_directory(p, ec)) return p.string();
+  }
+  return "";
 }
 }  // namespace ts

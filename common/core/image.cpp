@@ -4,6 +4,16 @@
 #include <png.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#ifdef _WIN32
+#include <io.h>
+#include <windows.h>
+// Windows: every file here is opened in binary mode (text mode would turn
+// each \n byte of a PNG into \r\n); there is no exec to close a descriptor
+// on, no FIFO to block on, and _commit is fsync.
+#define O_CLOEXEC O_BINARY
+#define O_NONBLOCK 0
+#define fsync _commit
+#endif
 
 #include <algorithm>
 #include <cerrno>
@@ -190,6 +200,7 @@ void writeFileAtomic(const std::string& path, const std::string& bytes) {
     ::close(fd);
     fail(e, named);
   }
+#ifdef O_TMPFILE
   if (!named) {
     std::string self = "/proc/self/fd/" + std::to_string(fd);
     if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, tmp.c_str(), AT_SYMLINK_FOLLOW) != 0) {
@@ -204,8 +215,15 @@ void writeFileAtomic(const std::string& path, const std::string& bytes) {
       }
     }
   }
+#endif
   if (::close(fd) != 0) fail(errno, true);
+#ifdef _WIN32
+  // Windows' rename() refuses an existing target; this replaces it.
+  if (!MoveFileExA(tmp.c_str(), path.c_str(), MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH))
+    fail(GetLastError() == ERROR_ACCESS_DENIED ? EACCES : EIO, true);
+#else
   if (std::rename(tmp.c_str(), path.c_str()) != 0) fail(errno, true);
+#endif
 }
 
 void writePng(const std::string& path, const Image& img) {
@@ -217,6 +235,12 @@ void writePng(const std::string& path, const Image& img) {
 std::vector<uint8_t> readFileBytes(const std::string& path, size_t limit) {
   // O_NONBLOCK: opening a FIFO must not wait for a writer; the fstat below
   // refuses anything that is not a regular file before reading a byte.
+#ifdef _WIN32
+  // Windows refuses to open a folder (EACCES): say what it is, as below.
+  struct stat dir;
+  if (::stat(path.c_str(), &dir) == 0 && S_ISDIR(dir.st_mode))
+    throw Error(path + ": is a directory, not an image file");
+#endif
   int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) throw Error(path + ": cannot open: " + std::strerror(errno));
   struct Closer {

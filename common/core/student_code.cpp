@@ -1,8 +1,6 @@
 // common/core/student_code.cpp — the exercises' checker as a child process.
 #include "common/core/student_code.hpp"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -17,7 +15,7 @@ namespace {
 constexpr double kCheckerSeconds = 120.0;
 
 std::vector<std::string> command(std::vector<std::string> args) {
-  args.insert(args.begin(), programFolder() + "/exercise_check");
+  args.insert(args.begin(), programPath("exercise_check"));
   if (const char* impl = std::getenv("TS_EXERCISE_IMPL")) {
     const std::string v = impl;
     if (v == "solutions" || v == "wrong") args.push_back("--" + v);
@@ -37,8 +35,7 @@ Report check(const std::string& exercise) {
   Report r;
   // The checker's picture (yours | reference | difference) goes to a
   // folder of its own, removed after: the script is where it is kept.
-  std::string dir = (std::filesystem::temp_directory_path() / "ts_exercise_XXXXXX").string();
-  if (!mkdtemp(dir.data())) dir.clear();
+  std::string dir = makeTempFolder("ts_exercise_");
   std::vector<std::string> args = {exercise};
   if (!dir.empty()) args.insert(args.end(), {"--out", dir});
   const ProcessResult p = runProcess(command(args), "", kCheckerSeconds);

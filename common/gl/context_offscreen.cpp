@@ -1,10 +1,15 @@
 // OSMesa and EGL-surfaceless contexts.  Both libraries are opened with
 // dlopen(), not linked, so that (a) a machine without OSMesa (Mesa >= 25.1)
 // still runs every program through EGL, and (b) no GL entry point binds at
-// link time (see gl.hpp for why).
+// link time (see gl.hpp for why).  Windows has neither library: there the
+// hidden-window backend (context_hidden.cpp) is the only offscreen one, and
+// the dlopen code below is compiled out (TS_HAVE_DLOPEN_BACKENDS).
+#if !defined(_WIN32)
+#define TS_HAVE_DLOPEN_BACKENDS 1
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <dlfcn.h>
+#endif
 
 #include <cstdio>
 #include <cstdlib>
@@ -21,8 +26,9 @@ Backend parseBackend(const std::string& name) {
   if (name == "auto") return Backend::Auto;
   if (name == "osmesa") return Backend::OSMesa;
   if (name == "egl") return Backend::EGL;
+  if (name == "hidden") return Backend::Hidden;
   if (name == "window") return Backend::Window;
-  throw Error("unknown backend '" + name + "' (expected osmesa, egl, window or auto)");
+  throw Error("unknown backend '" + name + "' (expected osmesa, egl, hidden, window or auto)");
 }
 
 const char* backendName(Backend b) {
@@ -30,6 +36,7 @@ const char* backendName(Backend b) {
     case Backend::Auto: return "auto";
     case Backend::OSMesa: return "osmesa";
     case Backend::EGL: return "egl";
+    case Backend::Hidden: return "hidden";
     case Backend::Window: return "window";
   }
   return "?";
@@ -48,16 +55,19 @@ std::string Context::describe() const {
   return std::string(backendName(backend())) + " | " + gl::versionString() + " | " + gl::rendererString();
 }
 
-namespace {
 // TS_HIDE_GL_LIBS=osmesa,egl (tests): behave as if that library were not
 // installed, so the fallback and the "install these packages" paths run on
 // a machine that has everything.
-bool hidden(const char* lib) {
+bool glLibraryHidden(const char* lib) {
   const char* v = std::getenv("TS_HIDE_GL_LIBS");
   if (!v) return false;
   std::string list = std::string(",") + v + ",";
   return list.find(std::string(",") + lib + ",") != std::string::npos;
 }
+
+#if TS_HAVE_DLOPEN_BACKENDS
+namespace {
+bool hidden(const char* lib) { return glLibraryHidden(lib); }
 
 // ---------------------------------------------------------------- OSMesa
 // Values from GL/osmesa.h (stable ABI); spelled out so that the suite builds
@@ -236,9 +246,19 @@ class EglContext final : public Context {
   RenderTarget target_;
 };
 }  // namespace
+#endif  // TS_HAVE_DLOPEN_BACKENDS
+
+bool haveDlopenBackends() {
+#if TS_HAVE_DLOPEN_BACKENDS
+  return true;
+#else
+  return false;
+#endif
+}
 
 std::unique_ptr<Context> createOffscreenContext(Backend backend, const ContextOptions& opts) {
-  std::string whyOsmesa, whyEgl;
+  std::string whyOsmesa, whyEgl, whyHidden;
+#if TS_HAVE_DLOPEN_BACKENDS
   if (backend == Backend::OSMesa || backend == Backend::Auto) {
     if (auto c = OSMesaContext::create(opts, &whyOsmesa)) return c;
     if (backend == Backend::OSMesa)
@@ -254,8 +274,31 @@ std::unique_ptr<Context> createOffscreenContext(Backend backend, const ContextOp
     }
     if (backend == Backend::EGL)
       throw Error("EGL backend unavailable (" + whyEgl + "); install Debian's libegl1 libegl-mesa0 libgl1-mesa-dri");
+  }
+#else
+  if (backend == Backend::OSMesa || backend == Backend::EGL)
+    throw Error(std::string("the ") + backendName(backend) +
+                " backend exists on Linux only; use --backend hidden or auto");
+#endif
+  if (backend == Backend::Hidden || (backend == Backend::Auto && opts.allowHidden)) {
+    if (auto c = createHiddenContext(opts, &whyHidden)) {
+#if TS_HAVE_DLOPEN_BACKENDS
+      if (backend == Backend::Auto && opts.verbose)
+        note("note: " + whyOsmesa + "; " + whyEgl + "; using the hidden-window backend");
+#endif
+      return c;
+    }
+    if (backend == Backend::Hidden) throw Error("hidden-window backend unavailable (" + whyHidden + ")");
+  }
+  if (backend == Backend::Auto) {
+#if TS_HAVE_DLOPEN_BACKENDS
     throw Error("no offscreen OpenGL context: OSMesa: " + whyOsmesa + "; EGL: " + whyEgl +
+                (whyHidden.empty() ? std::string() : "; hidden window: " + whyHidden) +
                 "; install Debian's libosmesa6, or libegl1 libegl-mesa0 libgl1-mesa-dri");
+#else
+    throw Error("no offscreen OpenGL context (" + (whyHidden.empty() ? std::string("hidden window not allowed here") : whyHidden) +
+                "); update the graphics driver");
+#endif
   }
   throw Error("backend 'window' is not an offscreen backend");
 }

@@ -48,7 +48,22 @@ void checkWritable(const std::string& path) {
   std::remove(probe.c_str());
 }
 
-// Single-quotes an argument for a POSIX shell when it needs it.
+// Quotes an argument for the shell the student types into when it needs it:
+// single quotes for a POSIX shell; double quotes on Windows, where both
+// cmd.exe and PowerShell read them (and a program runs from its own folder,
+// the zip's layout, rather than from build/bin).
+#ifdef _WIN32
+static std::string shellQuote(const std::string& a) {
+  if (!a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_=./\\,:+") ==
+                        std::string::npos)
+    return a;
+  std::string q = "\"";
+  for (char c : a) q += c == '"' ? std::string("\\\"") : std::string(1, c);
+  return q + "\"";
+}
+static const char* const kProgramPrefix = "";
+static const char* const kProgramSuffix = ".exe";
+#else
 static std::string shellQuote(const std::string& a) {
   if (!a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_=./,:+") ==
                         std::string::npos)
@@ -57,16 +72,19 @@ static std::string shellQuote(const std::string& a) {
   for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
 }
+static const char* const kProgramPrefix = "build/bin/";
+static const char* const kProgramSuffix = "";
+#endif
 
 std::string stateCommand(const std::string& demo, int w, int h, const std::vector<std::string>& flags) {
-  std::string c = "build/bin/" + demo + " --size " + std::to_string(w) + "x" + std::to_string(h);
+  std::string c = kProgramPrefix + demo + kProgramSuffix + " --size " + std::to_string(w) + "x" + std::to_string(h);
   for (const auto& f : flags) c += " " + shellQuote(f);
   return c;
 }
 
 std::string figureCommand(const std::string& demo, const std::string& png, int w, int h,
                           const std::vector<std::string>& flags) {
-  std::string c = "build/bin/" + demo + " --png " + shellQuote(png) + " --size " + std::to_string(w) + "x" +
+  std::string c = kProgramPrefix + demo + kProgramSuffix + " --png " + shellQuote(png) + " --size " + std::to_string(w) + "x" +
                   std::to_string(h);
   for (const auto& f : flags) c += " " + shellQuote(f);
   return c;

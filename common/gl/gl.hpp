@@ -19,6 +19,17 @@
 #ifndef GL_GLEXT_PROTOTYPES
 #define GL_GLEXT_PROTOTYPES 1  // declarations only: used for decltype below
 #endif
+#if defined(_WIN32) && !(defined(WINGDIAPI) && defined(APIENTRY))
+// Windows' GL/gl.h wants these two and otherwise includes <windows.h> for
+// them, whose macros (near, far, ERROR, ...) break ordinary C++ names in the
+// demos.  The values are <windows.h>'s.
+#ifndef APIENTRY
+#define APIENTRY __stdcall
+#endif
+#ifndef WINGDIAPI
+#define WINGDIAPI __declspec(dllimport)
+#endif
+#endif
 #include <GL/gl.h>
 #include <GL/glext.h>
 

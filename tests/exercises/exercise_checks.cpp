@@ -9,6 +9,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -813,7 +814,8 @@ std::string namesList() {
 
 bool run(const Exercise& ex, const Functions& f, ts::Renderer& r, const std::string& outDir) {
   std::printf("%s (%s, exercises/%s.cpp)\n", ex.name, ex.source, ex.name);
-  mkdir(outDir.c_str(), 0755);
+  std::error_code made;  // std::filesystem: Windows' mkdir() takes no mode
+  std::filesystem::create_directory(outDir, made);
   bool ok = false;
   try {
     ok = ex.check(f, r, outDir + "/" + ex.name + ".png");

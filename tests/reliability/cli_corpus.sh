@@ -89,7 +89,7 @@ if [ "$rc" -ne 0 ] || [ -s "$T/err" ] || [ -s "$T/out" ]; then
 run_demo TS_HIDE_GL_LIBS=osmesa "$DEMO" --backend osmesa --png out.png
 if [ "$rc" -ne 2 ] || [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q "libosmesa6" "$T/err"; then
   fail "no OSMesa, --backend osmesa: status $rc: $(cat "$T/err")"; else pass; fi
-run_demo TS_HIDE_GL_LIBS=osmesa,egl "$DEMO" --backend auto --png out.png
+run_demo TS_HIDE_GL_LIBS=osmesa,egl,hidden "$DEMO" --backend auto --png out.png
 if [ "$rc" -ne 2 ] || [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q "libosmesa6" "$T/err" || ! grep -q "libegl1" "$T/err"; then
   fail "no GL at all: want exit 2 and one line naming the packages, got $rc: $(cat "$T/err")"; else pass; fi
 if [ -n "$(ls -A "$T/work")" ]; then fail "GL failures left files: $(ls -A "$T/work")"; else pass; fi

@@ -13,10 +13,17 @@
 #   2. OSMesa and EGL give byte-identical PNGs except the figures listed in
 #      backend_bounds.tsv, whose differences stay within the stated bounds
 #      (pixels that differ, largest channel difference).
+# With --hidden (the quick level), the same for the hidden-window backend (a
+# hidden GLFW window and a framebuffer object: Windows' offscreen backend)
+# against OSMesa, within hidden_bounds.tsv, on the first figure each demo
+# lists (every demo's drawing code through the backend at a quarter of the
+# cost of all figures; TS_HIDDEN_FIGURES=all renders every one); it needs a
+# display, so without one it runs under xvfb-run (77: skipped, without
+# xvfb-run).
 set -u
-FIGS=$(readlink -f "${1:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL FIRST_RUN [--backends]}")
-TOOL=$(readlink -f "${2:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL FIRST_RUN [--backends]}")
-A=$(readlink -f "${3:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL FIRST_RUN [--backends]}")
+FIGS=$(readlink -f "${1:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL FIRST_RUN [--backends|--hidden]}")
+TOOL=$(readlink -f "${2:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL FIRST_RUN [--backends|--hidden]}")
+A=$(readlink -f "${3:?usage: figures_repro.sh MAKE_FIGURES RELIABILITY_TOOL FIRST_RUN [--backends|--hidden]}")
 part=${4:-}
 HERE=$(cd "$(dirname "$0")" && pwd)
 T=$(mktemp -d "${TMPDIR:-/tmp}/ts_figures_repro.XXXXXX")
@@ -28,7 +35,7 @@ pass() { checks=$((checks + 1)); }
 
 figs() { "$FIGS" --out "$@" >"$T/log" 2>&1 || fail "make_figures --out $*: $(tail -3 "$T/log")"; }
 
-if [ "$part" != --backends ]; then
+if [ "$part" != --backends ] && [ "$part" != --hidden ]; then
 # ---------------------------------------------------- 1. run to run
 figs "$T/b" --backend osmesa
 n=0
@@ -48,26 +55,42 @@ done
 echo "run to run: $n figures byte-identical"
 fi
 
-if [ "$part" = --backends ]; then
-# ---------------------------------------------------- 2. OSMesa vs EGL
-figs "$T/e" --backend egl
+if [ "$part" = --backends ] || [ "$part" = --hidden ]; then
+# ---------------------------------------------------- 2. OSMesa vs EGL, or vs a hidden window
+if [ "$part" = --hidden ]; then
+  other=hidden bounds=$HERE/hidden_bounds.tsv label="the hidden window"
+  if [ -z "${DISPLAY:-}" ]; then
+    command -v xvfb-run >/dev/null || { echo "SKIPPED: no display and no xvfb-run"; exit 77; }
+    figs() { xvfb-run -a -s "-screen 0 640x480x24" "$FIGS" --out "$@" >"$T/log" 2>&1 || fail "make_figures --out $*: $(tail -3 "$T/log")"; }
+  fi
+else
+  other=egl bounds=$HERE/backend_bounds.tsv label=EGL
+fi
+only=() compared=("$A"/*.png)
+if [ "$part" = --hidden ] && [ "${TS_HIDDEN_FIGURES:-}" != all ]; then
+  ids=$("$FIGS" --list | awk '!seen[$NF]++ { print $1 }')
+  only=(--only "$(echo "$ids" | paste -sd, -)")
+  compared=()
+  for id in $ids; do compared+=("$A/$id.png"); done
+fi
+figs "$T/e" --backend "$other" "${only[@]}"
 declare -A maxpx maxdiff
 while read -r name px diff _; do
   case "$name" in ''|\#*) continue ;; esac
   maxpx[$name]=$px maxdiff[$name]=$diff
-done <"$HERE/backend_bounds.tsv"
+done <"$bounds"
 same=0 bounded=0
-for f in "$A"/*.png; do
+for f in "${compared[@]}"; do
   name=$(basename "$f" .png)
   if cmp -s "$f" "$T/e/$name.png"; then same=$((same + 1)); pass; continue; fi
   read -r px diff < <("$TOOL" diff "$f" "$T/e/$name.png") || { fail "$name: cannot compare"; continue; }
-  if [ -z "${maxpx[$name]:-}" ]; then fail "$name: OSMesa and EGL differ ($px pixels, up to $diff) and it is not in backend_bounds.tsv"
+  if [ -z "${maxpx[$name]:-}" ]; then fail "$name: OSMesa and $label differ ($px pixels, up to $diff) and it is not in $(basename "$bounds")"
   elif [ "$px" -gt "${maxpx[$name]}" ] || [ "$diff" -gt "${maxdiff[$name]}" ]; then
-    fail "$name: OSMesa and EGL differ in $px pixels by up to $diff, over the stated ${maxpx[$name]} pixels / ${maxdiff[$name]}"
+    fail "$name: OSMesa and $label differ in $px pixels by up to $diff, over the stated ${maxpx[$name]} pixels / ${maxdiff[$name]}"
   else bounded=$((bounded + 1)); pass; echo "  $name: $px pixels differ, by up to $diff (bound ${maxpx[$name]} / ${maxdiff[$name]})"; fi
 done
-echo "OSMesa vs EGL: $same figures byte-identical, $bounded within their stated bounds"
-echo "figures_repro --backends: $checks checks passed, $failures failed"
+echo "OSMesa vs $label: $same figures byte-identical, $bounded within their stated bounds"
+echo "figures_repro $part: $checks checks passed, $failures failed"
 [ "$failures" -eq 0 ]
 exit
 fi

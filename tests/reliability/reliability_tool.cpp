@@ -12,12 +12,18 @@
 //   reliability_tool diff A B   compares two images: prints
 //       "<pixels that differ> <largest channel difference>" (exit 0), or fails
 //       if either cannot be read or the sizes differ.
+//   reliability_tool measurements SIDECAR.json   prints the sidecar's
+//       measurements, "name<TAB>value" a line, every digit kept (%.17g), for
+//       comparing two runs' numbers in a shell (tests/windows/wine_test.sh).
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
 #include "common/core/error.hpp"
+#include "common/core/image.hpp"
 #include "corpus_gen.hpp"
 
 // A binary PPM (P6, maxval 255) as an opaque image; anything else: readImage.
@@ -79,10 +85,19 @@ int main(int argc, char** argv) {
       std::printf("%ld %d\n", n, most);
       return 0;
     }
+    if (cmd == "measurements" && argc == 3) {
+      const std::vector<uint8_t> bytes = ts::readFileBytes(argv[2], size_t(64) << 20);
+      const nlohmann::json j = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
+      if (j.is_discarded() || !j.is_object()) throw ts::Error(std::string(argv[2]) + ": not a JSON object", 1);
+      if (j.contains("measurements") && j["measurements"].is_object())
+        for (const auto& [name, v] : j["measurements"].items())
+          if (v.is_number()) std::printf("%s\t%.17g\n", name.c_str(), v.get<double>());
+      return 0;
+    }
   } catch (const ts::Error& e) {
     std::fprintf(stderr, "reliability_tool: %s\n", e.what());
     return e.exit_code;
   }
-  std::fprintf(stderr, "usage: reliability_tool corpus DIR | check FILE... | diff A B | diff-rgb A B\n");
+  std::fprintf(stderr, "usage: reliability_tool corpus DIR | check FILE... | diff A B | diff-rgb A B | measurements JSON\n");
   return 2;
 }
