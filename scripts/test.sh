@@ -10,10 +10,7 @@
 #                                 (each key of each demo, the GL pane, resizes,
 #                                 the mouse, never frozen), the GL tests again
 #                                 on Mesa's second rasterizer (softpipe) and on
-#                                 the EGL surfaceless backend, the Windows
-#                                 build (MinGW-w64) under Wine (the first
-#                                 figure of each demo, three windows), the
-#                                 benchmark
+#                                 the EGL surfaceless backend, the benchmark
 #                                 programs compiled (not run: scripts/bench.sh
 #                                 runs them), the suite built with
 #                                 AddressSanitizer + UndefinedBehaviorSanitizer
@@ -85,15 +82,6 @@ else
   stage "window tests, every case (llvmpipe)" ctest --preset full "$@"
   stage "GL tests on softpipe" ctest --preset softpipe "$@"
   stage "GL tests on the EGL backend" ctest --preset egl "$@"
-  # The Windows zip cross-built with MinGW-w64 (its dependencies cross-built
-  # once a machine and cached outside the checkout), then run under Wine on
-  # Xvfb against build/: the first figure of each demo (a quarter of them,
-  # to keep the stage short), the command line's errors, three demos'
-  # windows (the window code is shared: the flagship's side panel, GLSL with
-  # the mouse's light, nested frames), the exercise checker as a child
-  # process (tests/windows/wine_test.sh; scripts/windows.sh --test runs all).
-  stage "Windows build, tested under Wine" env TS_WINE_FIGURES=per-demo \
-    TS_WINE_WINDOWS="quad_distortion bump_mapping environment_mapping" bash scripts/windows.sh --test
   # The benchmark programs are compiled (into build/, reusing its objects),
   # so they cannot rot.
   stage "compile the benchmarks (build/, not run)" bash -c 'cmake --preset default -DTM_BUILD_BENCHMARKS=ON >/dev/null &&
