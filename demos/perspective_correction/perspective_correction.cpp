@@ -91,7 +91,7 @@ class PerspectiveCorrection final : public ts::Scene {
          "two triangles: without hyperbolic interpolation (left: (s,t) linear in screen space, the far squares are "
          "not shortened) and with it (right). The note says whether the driver honours "
          "GL_PERSPECTIVE_CORRECTION_HINT and how the left image was made.",
-         {"--view", "both", "--tilt", "60", "--distance", "1.5", "--filter", "mipmap"}, 1024, 380,
+         {"--view", "both", "--tilt", "60", "--distance", "1.5", "--filter", "mipmap"}, 1024, 300,
          "Interpolated linearly in screen space, (s,t) is off by up to {affine_error_texels} texels (of 256) at (d2 "
          "- d1)/d1 = {d_ratio}."},
         {"vi2_error_vs_depth_ratio", "Figure VI.2 (measured)",
@@ -199,7 +199,7 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
   for (const auto& n : notes) notesH += float(ts::layout::captionLines(n.first.text, 1, noteW)) * ts::layout::lineHeight(1) + 4;
   notesH = std::min(notesH, float(height) / 3);
   const std::string how[2] = {"CPU-projected vertices, w = 1: screen-linear", "glHint(..., GL_NICEST): hyperbolic"};
-  const char* titles[2] = {"Without hyperbolic interpolation", "With hyperbolic interpolation"};
+  const char* titles[2] = {"without hyperbolic interpolation", "with hyperbolic interpolation"};
   const Variant shown[2] = {view_ == kPerspective ? kPerspectiveVariant : kAffineVariant, kPerspectiveVariant};
   ts::layout::FlowSpec spec;
   spec.n = view_ == kBoth ? 2 : 1;

@@ -92,7 +92,7 @@ inline std::vector<std::pair<ts::layout::Text, glm::vec4>> notes(const persp::Se
                                                             "{hint_pixels_differing|%.0f} px (error up to "
                                                             "{hint_fastest_error_texels|%.1f} texels)"),
                      amber});
-    notes.push_back({L::measuredText(m, "Screen-linear image: largest (s,t) error {affine_error_texels|%.1f} texels of ") +
+    notes.push_back({L::measuredText(m, "screen-linear image: largest (s,t) error {affine_error_texels|%.1f} texels of ") +
                          L::given("texels across the checkerboard", persp::kTexels, "%g") +
                          L::measuredText(m, " ({affine_error_checks|%.2f} checks), measured from a texel-index render"),
                      white});
