@@ -116,7 +116,7 @@ inline ts::plot::Spec plotSpec(const persp::Setup& s, const Result* last) {
   using ts::layout::fmt;
   const glm::vec4 curveC{0.35f, 0.7f, 1.0f, 1.0f}, measuredC = ts::layout::kAmber, currentC{1.0f, 0.3f, 0.3f, 1.0f};
   plot::Spec p;
-  p.title = "Largest (s,t) error of the screen-linear image vs (d2 - d1)/d1: tilts 0.." + std::to_string(kSweepMaxDeg) +
+  p.title = "largest (s,t) error of the screen-linear image vs (d2 - d1)/d1: tilts 0.." + std::to_string(kSweepMaxDeg) +
             " deg at distance " + fmt("%g", s.distance);
   p.xLabel = "(d2 - d1)/d1   (d1, d2: nearest and farthest distance from the eye to the square)";
   p.yLabel = "error, texels of " + L::given("texels across the checkerboard", persp::kTexels, "%g") + " (one check = " +
