@@ -377,7 +377,8 @@ inline void Views::buildSlant(ts::Frame& f, const Result* m) const {
   const L::Text note1 = "error: RMS (R,G,B, 8-bit) against the reference in the far field, LOD " + farLods("..") +
                         " (between the white lines)";
   const L::Text note2 = "measured at " + L::given("the measured render's width", mipmap::kSlantW, "%.0f") + "x" +
-                        L::given("the measured render's height", mipmap::kSlantH, "%.0f");
+                        L::given("the measured render's height", mipmap::kSlantH, "%.0f") +
+                        "; amber: the filter chosen (key f, --filter)";
   L::Column notes(f, {4, float(std::min(h - 2 * line, line / 2 + kRows * (ph + 2 * line + gap))), float(w - 4), float(h)});
   notes.add(note1, kGrey, sc);
   notes.add(note2, kGrey, sc);
