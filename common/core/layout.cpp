@@ -161,6 +161,9 @@ Text measured(const Measurements& m, const std::string& name, const char* format
       t.printed.push_back({name, format, t.text});
       return t;
     }
+  // Before the first measurement ends (a window's first frames) every number
+  // is still coming; once measured, a name the state lacks is a mistake.
+  if (m.empty()) return Text("(measuring)");
   throw Error("a label prints the measurement '" + name + "', which this state does not measure");
 }
 

@@ -125,7 +125,8 @@ struct Text {
 Text operator+(const Text& a, const Text& b);
 // One measurement of `m`, printed with `format` ("%.1f"); throws ts::Error
 // when `m` has no measurement of that name (a figure would print a number
-// nobody measured).
+// nobody measured).  While `m` is empty (nothing measured yet, as in a
+// window's first frames) it prints "(measuring)".
 Text measured(const Measurements& m, const std::string& name, const char* format);
 // A template whose "{name}" or "{name|%.2f}" stand for measurements of `m`
 // ("%g" when no format is given): "red: the ball, {mirror_ball_pixels|%.0f} px".

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "common/core/error.hpp"
 #include "common/core/layout.hpp"
 #include "common/core/text.hpp"
 #include "tests/support/scene_test.hpp"
@@ -261,4 +262,23 @@ TEST(LayoutKit, WrapKeepsFormulasAndPhrasesWhole) {
     EXPECT_GT(f.labels[1].y, f.labels[0].y);
     EXPECT_LE(below, 100.0f);
   }
+}
+
+// A measured number before anything is measured (a window's first frames)
+// says it is coming; once measured, a name the state lacks is refused, as
+// is a format that does not print a double.
+TEST(LayoutKit, MeasuredNumbersBeforeAndAfterTheMeasurement) {
+  namespace L = ts::layout;
+  const ts::Measurements none;
+  EXPECT_EQ(L::measured(none, "kink_deg", "%.1f").text, "(measuring)");
+  ts::Measurements some;
+  some.push_back({"kink_deg", 18.43, "degrees"});
+  const L::Text t = L::measured(some, "kink_deg", "%.1f");
+  EXPECT_EQ(t.text, "18.4");
+  ASSERT_EQ(t.printed.size(), 1u);
+  EXPECT_EQ(t.printed[0].name, "kink_deg");
+  EXPECT_THROW(L::measured(some, "no_such_number", "%.1f"), ts::Error);
+  EXPECT_THROW(L::measured(some, "kink_deg", "%d"), ts::Error);
+  EXPECT_THROW(L::given("a width", 512, "%d"), ts::Error);
+  EXPECT_EQ(L::given("a width", 512, "%.0f").text, "512");
 }
