@@ -238,7 +238,10 @@ Reference::Reference(const ts::Frame& f, const RenderOptions& o) : opts_(o), wid
   image_ = ts::Image(f.width, f.height, toRgba(clear_));
   depth_.assign(size_t(f.width) * size_t(f.height), 1.0f);
   head_.assign(size_t(f.width) * size_t(f.height), -1);
-  pool_.reserve(size_t(f.width) * size_t(f.height) / 2);
+  // Most covered pixels hold two candidates (the clear colour and a fragment),
+  // edges, overlaps and labels more: reserved up front (address space only,
+  // pages are touched as they fill), so the pool is not copied as it grows.
+  pool_.reserve(size_t(f.width) * size_t(f.height) * 5 / 2);
   for (size_t i = 0; i < f.textures.size(); ++i)
     textures_.emplace_back(f.textures[i].renderedFrom ? nestedTexture(f.textures[i], i) : f.textures[i]);
   addCubeFaces(f);
@@ -247,12 +250,11 @@ Reference::Reference(const ts::Frame& f, const RenderOptions& o) : opts_(o), wid
   if (opts_.labels) drawLabels(f);
 }
 
-Reference Reference::withLabels(const ts::Frame& f, bool geometryKnown) const {
-  Reference r = *this;
-  r.opts_.labels = true;
-  r.opts_.labelGeometryKnown = geometryKnown;
-  r.drawLabels(f);
-  return r;
+void Reference::addLabels(const ts::Frame& f, bool geometryKnown) {
+  if (opts_.labels) throw ts::Error("reference: the labels are drawn already", ts::kExitFailure);
+  opts_.labels = true;
+  opts_.labelGeometryKnown = geometryKnown;
+  drawLabels(f);
 }
 
 void Reference::note(const std::string& s) {

@@ -124,9 +124,10 @@ class Reference {
     v.textures = &textures_;
     return v;
   }
-  // A copy with the frame's labels drawn and exempt (for an image rendered
-  // with labels, from a reference made with RenderOptions::labels off).
-  Reference withLabels(const ts::Frame& frame, bool geometryKnown = true) const;
+  // Draws the frame's labels, exempt, into a reference made with
+  // RenderOptions::labels off (for an image rendered with labels): in place,
+  // as a copy of a whole figure's candidates costs more than the check.
+  void addLabels(const ts::Frame& frame, bool geometryKnown = true);
   // Notes about what could not be modelled (unsupported programs etc.).
   const std::vector<std::string>& notes() const { return notes_; }
 
