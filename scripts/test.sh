@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The test commands (CI runs both, one after the other: .ci/run).
+# The test commands.  CI runs the first two, one after the other (.ci/run);
+# the third is run by hand before a release (README, "Testing").
 #
 #   bash scripts/test.sh          the quick level, minutes: set up, build, run
 #                                 every test on llvmpipe through OSMesa (the
@@ -12,15 +13,20 @@
 #                                 on Mesa's second rasterizer (softpipe) and on
 #                                 the EGL surfaceless backend, the benchmark
 #                                 programs compiled (not run: scripts/bench.sh
-#                                 runs them), the suite built with
-#                                 AddressSanitizer + UndefinedBehaviorSanitizer
-#                                 (build-asan/: the tests once each, the window
-#                                 smoke subset with leak checking off: GLX's
-#                                 libraries leak from code LeakSanitizer cannot
-#                                 name once unloaded), then each libFuzzer
-#                                 target for TS_FUZZ_SECONDS (default 180),
-#                                 two at a time.
-#   --under-load                  (before --full, or alone) runs the level
+#                                 runs them), then each libFuzzer target (the
+#                                 decoders and the sidecar reader under ASan +
+#                                 UBSan) for TS_FUZZ_SECONDS (default 90), two
+#                                 at a time.
+#   bash scripts/test.sh --asan   the sanitizer level, by hand: the suite
+#                                 built with AddressSanitizer +
+#                                 UndefinedBehaviorSanitizer (build-asan/: the
+#                                 tests once each, the window smoke subset with
+#                                 leak checking off: GLX's libraries leak from
+#                                 code LeakSanitizer cannot name once
+#                                 unloaded).  About 40 minutes on two cores:
+#                                 with the other two levels it would not fit
+#                                 CI's hour.
+#   --under-load                  (before a level, or alone) runs the level
 #                                 while two busy loops keep both cores loaded,
 #                                 as a shared machine is; the loops end with
 #                                 the run, however it ends.
@@ -35,6 +41,7 @@ level=quick load=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --full) level=full; shift ;;
+    --asan) level=asan; shift ;;
     --under-load) load=1; shift ;;
     *) break ;;
   esac
@@ -73,12 +80,18 @@ stage() {  # stage NAME COMMAND...: runs it, prints and remembers its duration
 }
 
 stage "set-up (Debian packages)" bash scripts/setup.sh
-# The release build; in the full level it is already there after the quick
-# level (CI), or built here.
-stage "configure + build (build/)" bash -c 'cmake --preset default >/dev/null && cmake --build --preset default'
+if [ "$level" = asan ]; then
+  stage "configure + build under ASan + UBSan" bash -c 'cmake --preset asan >/dev/null && cmake --build --preset asan'
+  stage "the suite under ASan + UBSan" ctest --preset asan "$@"
+  stage "window smoke tests under ASan + UBSan" ctest --preset asan-window "$@"
+else
+  # The release build; in the full level it is already there after the quick
+  # level (CI), or built here.
+  stage "configure + build (build/)" bash -c 'cmake --preset default >/dev/null && cmake --build --preset default'
+fi
 if [ "$level" = quick ]; then
   stage "quick suite (llvmpipe, OSMesa)" ctest --preset default "$@"
-else
+elif [ "$level" = full ]; then
   stage "window tests, every case (llvmpipe)" ctest --preset full "$@"
   stage "GL tests on softpipe" ctest --preset softpipe "$@"
   stage "GL tests on the EGL backend" ctest --preset egl "$@"
@@ -86,11 +99,8 @@ else
   # so they cannot rot.
   stage "compile the benchmarks (build/, not run)" bash -c 'cmake --preset default -DTM_BUILD_BENCHMARKS=ON >/dev/null &&
     cmake --build --preset default --target bench_figures bench_window bench_jitter bench_parallax'
-  stage "configure + build under ASan + UBSan" bash -c 'cmake --preset asan >/dev/null && cmake --build --preset asan'
-  stage "the suite under ASan + UBSan" ctest --preset asan "$@"
-  stage "window smoke tests under ASan + UBSan" ctest --preset asan-window "$@"
   targets=$(ls fuzz/fuzz_*.cpp | wc -l)
-  each=${TS_FUZZ_SECONDS:-180}
+  each=${TS_FUZZ_SECONDS:-90}
   stage "fuzzing: $targets targets, $each s each" bash fuzz/run.sh "$each"
 fi
 printf '\nstage durations (%s level%s, %d s in all):\n%s' "$level" "$([ "$load" = 1 ] && echo ', under two busy loops')" \
