@@ -7,6 +7,7 @@
 
 #include "common/core/error.hpp"
 #include "combine.hpp"
+#include "common/core/test_hooks.hpp"
 
 namespace ref {
 namespace {
@@ -49,8 +50,8 @@ std::string writeImage(const std::string& dir, const std::string& stem, const ch
 std::string failureDir(const std::string& requested) {
   std::string dir = requested;
   if (dir.empty()) {
-    const char* env = std::getenv("TS_ORACLE_OUT");
-    dir = env && *env ? env : "oracle_failures";
+    dir = ts::test_hooks::oracleOutDir();
+    if (dir.empty()) dir = "oracle_failures";
   }
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);

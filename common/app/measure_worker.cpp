@@ -11,7 +11,7 @@
 #include "common/gl/gl.hpp"
 #include "common/core/options.hpp"
 #include "common/gl/render.hpp"
-#include "common/app/test_hooks.hpp"
+#include "common/core/test_hooks.hpp"
 #include "common/core/measure_run.hpp"
 
 namespace ts {
@@ -118,7 +118,7 @@ void MeasureWorker::run() {
     if (wake_ && !quit_) wake_();  // under the lock: never after stop() (the window may be gone)
     return;
   }
-  // TS_TEST_SLOW_MEASURE_MS / _FRAMES (common/app/test_hooks.hpp): a slowed
+  // TS_TEST_SLOW_MEASURE_MS / _FRAMES (common/core/test_hooks.hpp): a slowed
   // measurement, so a test can press keys and close the window while one
   // runs, on a machine of any speed and load.
   const long slow = test_hooks::slowMeasureMs(), slowFrames = test_hooks::slowMeasureFrames();

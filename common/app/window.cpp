@@ -26,7 +26,7 @@
 #include "common/core/orbit_camera.hpp"
 #include "common/app/side_panel.hpp"
 #include "common/core/sidecar.hpp"
-#include "common/app/test_hooks.hpp"
+#include "common/core/test_hooks.hpp"
 #include "common/gl/render.hpp"
 
 namespace ts {
@@ -118,7 +118,7 @@ void onDrop(GLFWwindow* w, int n, const char** paths) {
   for (int i = 0; i < n; ++i) in->dropped.push_back(paths[i]);
 }
 
-// TS_TEST_MOUSE (common/app/test_hooks.hpp): mouse events given before the
+// TS_TEST_MOUSE (common/core/test_hooks.hpp): mouse events given before the
 // first frame, through the handlers above (xdotool drives the same ones
 // through GLFW in a real X session).
 void testMouse(Input* in) {
@@ -689,7 +689,7 @@ class FrameLoop {
   bool measuredOnce = false;         // a measurement is in
   int measuredW = 0, measuredH = 0;  // the figure size the numbers shown were (or are being) measured at
   bool savePending = false;          // F12 pressed
-  // The test hooks (common/app/test_hooks.hpp).
+  // The test hooks (common/core/test_hooks.hpp).
   test_hooks::KeyLog testLog;  // TS_TEST_FRAME_LOG, TS_TEST_KEY_WHEN
   std::vector<std::pair<int, int>> resizes = test_hooks::resizes();
   const bool resizing = !resizes.empty();

@@ -25,6 +25,7 @@
 #include "common/core/bmp.hpp"
 #include "common/core/error.hpp"
 #include "common/core/jpeg.hpp"
+#include "common/core/test_hooks.hpp"
 
 namespace ts {
 int maxChannelDiff(const Image& a, const Image& b) {
@@ -146,13 +147,10 @@ std::vector<uint8_t> encodePng(const Image& img) {
 // ------------------------------------------------------------ atomic writes
 namespace {
 bool writeAll(int fd, const char* p, size_t n) {
-  // TS_TEST_WRITE_PAUSE_MS (tests only): pause half-way through every file,
-  // so a test can kill a run in the middle of a write and check that no
-  // half-written file appears under the final name.
-  static const long pauseMs = [] {
-    const char* v = std::getenv("TS_TEST_WRITE_PAUSE_MS");
-    return v ? std::strtol(v, nullptr, 10) : 0L;
-  }();
+  // A test may pause half-way through every file (test_hooks.hpp), kill the
+  // run in the middle of a write, and check that no half-written file
+  // appears under the final name.
+  static const long pauseMs = test_hooks::writePauseMs();
   size_t half = pauseMs > 0 ? n / 2 : n, done = 0;
   while (done < n) {
     if (done == half && pauseMs > 0) ::usleep(useconds_t(pauseMs) * 1000);

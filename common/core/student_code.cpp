@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "common/core/child_process.hpp"
+#include "common/core/test_hooks.hpp"
 
 namespace ts::student {
 namespace {
@@ -16,10 +17,9 @@ constexpr double kCheckerSeconds = 120.0;
 
 std::vector<std::string> command(std::vector<std::string> args) {
   args.insert(args.begin(), programPath("exercise_check"));
-  if (const char* impl = std::getenv("TS_EXERCISE_IMPL")) {
-    const std::string v = impl;
-    if (v == "solutions" || v == "wrong") args.push_back("--" + v);
-  }
+  // A test runs the suite's solutions or a wrong one (test_hooks.hpp).
+  const std::string impl = test_hooks::exerciseImpl();
+  if (!impl.empty()) args.push_back("--" + impl);
   return args;
 }
 

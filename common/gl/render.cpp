@@ -11,6 +11,7 @@
 #include "common/core/error.hpp"
 #include "common/core/text.hpp"
 #include "common/core/textures.hpp"
+#include "common/core/test_hooks.hpp"
 
 namespace ts {
 Renderer::~Renderer() {
@@ -64,10 +65,9 @@ GLuint Renderer::texture(const TextureDesc& t) {
                   std::to_string(t.image->height) + ", over this context's GL_MAX_TEXTURE_SIZE " +
                   std::to_string(maxSize));
     std::shared_ptr<const Image> level0 = t.image;
-    // TS_GL_NO_NPOT=1 takes this path on any context: the tests' way to run
-    // it on real GL, where every context here has NPOT textures.
-    const char* noNpot = std::getenv("TS_GL_NO_NPOT");
-    bool npot = !(noNpot && *noNpot && *noNpot != '0') &&
+    // A test can take this path on any context (test_hooks.hpp): every
+    // context here has NPOT textures.
+    bool npot = !test_hooks::noNpotTextures() &&
                 (gl::version() >= 20 || gl::hasExtension("GL_ARB_texture_non_power_of_two"));
     if ((!powerOfTwo(level0->width) || !powerOfTwo(level0->height)) && !npot) {
       // GL 1.x without NPOT support: resample to powers of two, and say so.

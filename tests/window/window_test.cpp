@@ -942,7 +942,7 @@ void roundTrip(const std::string& id, const ts::Options& state, const std::strin
 
 
 // --- never frozen -----------------------------------------------------------
-// The window's test hooks (common/app/test_hooks.hpp): TS_TEST_SLOW_MEASURE_MS
+// The window's test hooks (common/core/test_hooks.hpp): TS_TEST_SLOW_MEASURE_MS
 // and _FRAMES make every measurement of the worker last at least that long
 // and that many window frames (in 10 ms steps that report progress and stop
 // when superseded), TS_TEST_KEY_WHEN=measuring types each --keys key after the

@@ -1,10 +1,12 @@
-// common/app/test_hooks.hpp — the window's test hooks, in one place.
+// common/core/test_hooks.hpp — the suite's one test seam.
 //
-// Environment variables read by the window and the measurement worker for
-// tests and benchmarks only; a student never sets them.  Every hook waits on
-// an event (a frame drawn, a measurement handed over, a measurement under
-// way), never on the clock alone, so that a test's verdict does not depend on
-// how busy the machine is.
+// Every environment variable that tests and benchmarks set is read here and
+// nowhere else; production code asks these functions.  A student never sets
+// them.  Every hook of the window waits on an event (a frame drawn, a
+// measurement handed over, a measurement under way), never on the clock
+// alone, so that a test's verdict does not depend on how busy the machine is.
+//
+// The window and the measurement worker:
 //
 //   TS_TEST_MOUSE="press X Y; move X Y; release; wheel N; drop FILE"
 //       mouse events given before the first frame ("rpress X Y": the right
@@ -36,6 +38,24 @@
 //   TS_SCREENSHOT_OVERLAY=1
 //       --screenshot takes the window as the student sees it (side panel,
 //       GL pane, help card) instead of the figure alone.
+//
+// The GL layer, files and the exercises:
+//
+//   TS_HIDE_GL_LIBS=osmesa,egl
+//       behave as if that library were not installed, so the fallback and
+//       the "install these packages" paths run on a machine that has all.
+//   TS_GL_NO_NPOT=1
+//       textures take the path of a GL 1.x context without non-power-of-two
+//       textures (resampled, with a note) on any context.
+//   TS_TEST_WRITE_PAUSE_MS=N
+//       every file written pauses N ms half-way, so a test can kill a run in
+//       the middle of a write and find no half-written file.
+//   TS_EXERCISE_IMPL=solutions|wrong
+//       the exercise checker a demo starts runs the suite's solutions or a
+//       deliberately wrong one instead of the student's code.
+//   TS_ORACLE_OUT=DIR
+//       where the oracle writes the images of a failed check (default
+//       oracle_failures/).
 #pragma once
 #include <cstdio>
 #include <string>
@@ -90,5 +110,16 @@ long framesDrawn();
 
 // TS_SCREENSHOT_OVERLAY=1: the screenshot with the overlay.
 bool screenshotWithOverlay();
+
+// TS_HIDE_GL_LIBS: whether `lib` (osmesa, egl) is to be taken as missing.
+bool glLibraryHidden(const char* lib);
+// TS_GL_NO_NPOT: whether to treat the context as lacking NPOT textures.
+bool noNpotTextures();
+// TS_TEST_WRITE_PAUSE_MS: the pause half-way through every file written.
+long writePauseMs();
+// TS_EXERCISE_IMPL: "solutions", "wrong", or "" (the student's code).
+std::string exerciseImpl();
+// TS_ORACLE_OUT: the oracle's folder for failure images, "" when unset.
+std::string oracleOutDir();
 
 }  // namespace ts::test_hooks

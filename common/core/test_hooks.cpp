@@ -1,4 +1,4 @@
-#include "common/app/test_hooks.hpp"
+#include "common/core/test_hooks.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -102,6 +102,34 @@ long framesDrawn() { return g_frames.load(); }
 bool screenshotWithOverlay() {
   const char* v = env("TS_SCREENSHOT_OVERLAY");
   return v && *v == '1';
+}
+
+bool glLibraryHidden(const char* lib) {
+  const char* v = env("TS_HIDE_GL_LIBS");
+  if (!v) return false;
+  const std::string list = std::string(",") + v + ",";
+  return list.find(std::string(",") + lib + ",") != std::string::npos;
+}
+
+bool noNpotTextures() {
+  const char* v = env("TS_GL_NO_NPOT");
+  return v && *v != '0';
+}
+
+long writePauseMs() {
+  const char* v = env("TS_TEST_WRITE_PAUSE_MS");
+  return v ? std::max(0L, std::strtol(v, nullptr, 10)) : 0L;
+}
+
+std::string exerciseImpl() {
+  const char* v = env("TS_EXERCISE_IMPL");
+  const std::string s = v ? v : "";
+  return s == "solutions" || s == "wrong" ? s : "";
+}
+
+std::string oracleOutDir() {
+  const char* v = env("TS_ORACLE_OUT");
+  return v ? v : "";
 }
 
 }  // namespace ts::test_hooks
