@@ -359,4 +359,4 @@ std::vector<ts::FigureSpec> BumpMapping::figures() const {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(BumpMapping);
+TS_REGISTER_SCENE(BumpMapping);

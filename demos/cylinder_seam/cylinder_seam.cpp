@@ -311,4 +311,4 @@ ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(CylinderSeam);
+TS_REGISTER_SCENE(CylinderSeam);

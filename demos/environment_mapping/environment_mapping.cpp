@@ -405,4 +405,4 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(EnvironmentMapping);
+TS_REGISTER_SCENE(EnvironmentMapping);

@@ -327,4 +327,4 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(FilterZoo);
+TS_REGISTER_SCENE(FilterZoo);

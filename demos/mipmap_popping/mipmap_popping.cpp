@@ -282,4 +282,4 @@ ts::Measurements MipmapPopping::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(MipmapPopping);
+TS_REGISTER_SCENE(MipmapPopping);

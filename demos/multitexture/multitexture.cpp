@@ -236,4 +236,4 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
 }
 }  // namespace
 
-TM_REGISTER_SCENE(Multitexture);
+TS_REGISTER_SCENE(Multitexture);

@@ -323,4 +323,4 @@ ts::Measurements OctantMapping::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(OctantMapping);
+TS_REGISTER_SCENE(OctantMapping);

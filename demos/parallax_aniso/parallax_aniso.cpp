@@ -297,4 +297,4 @@ class ParallaxAniso final : public ts::Scene {
 };
 }  // namespace
 
-TM_REGISTER_SCENE(ParallaxAniso);
+TS_REGISTER_SCENE(ParallaxAniso);

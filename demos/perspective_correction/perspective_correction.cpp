@@ -299,4 +299,4 @@ ts::Measurements PerspectiveCorrection::measure(ts::Renderer& r) {
 
 }  // namespace
 
-TM_REGISTER_SCENE(PerspectiveCorrection);
+TS_REGISTER_SCENE(PerspectiveCorrection);

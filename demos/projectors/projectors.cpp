@@ -307,4 +307,4 @@ ts::Measurements Projectors::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(Projectors);
+TS_REGISTER_SCENE(Projectors);

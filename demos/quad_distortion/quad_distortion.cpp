@@ -313,4 +313,4 @@ ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(QuadDistortion);
+TS_REGISTER_SCENE(QuadDistortion);

@@ -263,4 +263,4 @@ ts::Measurements SphereProjections::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(SphereProjections);
+TS_REGISTER_SCENE(SphereProjections);

@@ -234,4 +234,4 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(TextureCompression);
+TS_REGISTER_SCENE(TextureCompression);

@@ -314,4 +314,4 @@ ts::Measurements WrapModes::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(WrapModes);
+TS_REGISTER_SCENE(WrapModes);
