@@ -144,6 +144,95 @@ inline glm::ivec2 texelAt(ts::Renderer& r, const Shape& s, Projector pr, Axis ax
   return t(n / 2, n / 2);
 }
 
+// --- 2. Corrected cylindrical against Buss's Eq. VI.1, and its seam -----------
+// The cylinder (r 1, y from -1 to 1, 48 slices) from the back, where atan2's
+// cut lies (θ = 180°), ortho, kView px; its mesh carries cylinder_seam's
+// mapping (s = θ/360 with the winding tracked, t = (y + 1)/2) per vertex.
+struct SeamResult {
+  long perFragmentMismatch = 0, perFragmentFar = 0, perVertexFar = 0;
+  int reversedPatches = 0;
+  long lambdaImplicit = 0, lambdaGrad = 0;
+};
+inline SeamResult seamMeasure(ts::Renderer& r) {
+  const int slices = 48, grid = 256;
+  // θ from -3.75° (half a slice): the cut at 180° runs through the middle of a patch.
+  const ts::Mesh mesh = ts::parametricGrid(
+      slices, 8, true, false, [](int i, int j) { return ts::cylinderPoint(1.0, 2.0, 48, 8, i, j, -3.75); },
+      [](int i, int j) { return glm::dvec2((i - 0.5) / 48.0, j / 8.0); });
+  const Shape cyl = fromMesh(mesh);
+  // Turned 0.47° off the back: the cut (x = 0) falls one pixel right of the
+  // centre, between the pixel centres of one 2x2 quad (128 | 129), not on a
+  // quad's edge, where no quad would straddle it.
+  const glm::mat4 back = faceOn({std::sin(kPi * 0.47 / 180), 0, -std::cos(kPi * 0.47 / 180)});
+  ts::Frame fr = indexFrame(3 * kView, kView);
+  fr.programs.push_back({kProgramName, projectorProgram()});
+  ts::TextureDesc idx = ts::texelIndexTexture(grid);
+  idx.wrapT = GL_CLAMP_TO_EDGE;
+  int tex = fr.addTexture(idx);
+  ts::Batch buss = perVertexBatch(cyl, Projector::Cylindrical, Axis::Y, Formula::Corrected, tex, true);
+  ts::Batch frag = glslBatch(cyl, Projector::Cylindrical, Axis::Y, Formula::Corrected, tex);
+  ts::Batch vert = perVertexBatch(cyl, Projector::Cylindrical, Axis::Y, Formula::Corrected, tex);
+  const ts::Batch* bs[3] = {&buss, &frag, &vert};
+  for (int k = 0; k < 3; ++k) {
+    ts::Panel p = orthoPanel("cyl_" + std::to_string(k), {k * kView, 0, kView, kView}, back);
+    p.batches.push_back(*bs[k]);
+    fr.panels.push_back(p);
+  }
+  Texels t = decode(r.renderOffscreen(fr));
+  SeamResult res;
+  std::set<int> patches;
+  auto far = [&](glm::ivec2 a, glm::ivec2 b) {  // more than 1 texel apart, around the circle in s
+    int di = std::abs(a.x - b.x);
+    di = std::min(di, grid - di);
+    return di > 1 || std::abs(a.y - b.y) > 1;
+  };
+  for (int y = 0; y < kView; ++y)
+    for (int x = 0; x < kView; ++x) {
+      glm::ivec2 a = t(x, y), f = t(x + kView, y), v = t(x + 2 * kView, y);
+      if (a.x < 0 || f.x < 0 || v.x < 0) continue;
+      res.perFragmentMismatch += a != f;
+      res.perFragmentFar += far(a, f);
+      if (far(a, v)) {
+        ++res.perVertexFar;
+        patches.insert(int(std::floor((a.x + 0.5) / grid * slices + 0.5)) % slices);  // its patch (Buss's s)
+      }
+    }
+  res.reversedPatches = int(patches.size());
+  // λ: the level of a coloured mip chain (GL_NEAREST_MIPMAP_NEAREST) against
+  // the analytic one, λ = log2(N · max(|ds/dx|, |dt/dy|)) with, on the
+  // cylinder seen along -z, ds/dx = px / (2π cos φ) (φ = asin of the view x)
+  // and dt/dy = px / 2.  Pixels with |φ| < 60°: counted where the level is
+  // more than 1 above.
+  const int n = 256;
+  ts::Frame lf = indexFrame(2 * kView, kView);
+  lf.programs.push_back({kProgramName, projectorProgram()});
+  int lt = lf.addTexture(ts::mipLevelColours(n));
+  for (int k = 0; k < 2; ++k) {
+    ts::Panel p = orthoPanel(k ? "grad" : "implicit", {k * kView, 0, kView, kView}, back);
+    p.batches.push_back(glslBatch(cyl, Projector::Cylindrical, Axis::Y, Formula::Corrected, lt, k == 1));
+    lf.panels.push_back(p);
+  }
+  ts::Image li = r.renderOffscreen(lf);
+  const double px = 2.0 * kHalf / kView;
+  for (int k = 0; k < 2; ++k)
+    for (int y = 0; y < kView; ++y)
+      for (int x = 0; x < kView; ++x) {
+        double vx = -kHalf + (x + 0.5) * px, vy = kHalf - (y + 0.5) * px;
+        if (std::abs(vx) > std::sin(kPi / 3) || std::abs(vy) > 0.95) continue;
+        double phi = std::asin(vx);
+        double rho = n * std::max(px / (2 * kPi * std::cos(phi)), px / 2);
+        ts::Rgba c = li.at(k * kView + x, y);
+        int level = -1;
+        for (int l = 0; l < 9 && level < 0; ++l) {
+          ts::Rgba w = ts::mipLevelColour(l);
+          if (c.r == w.r && c.g == w.g && c.b == w.b) level = l;
+        }
+        if (level < 0) continue;
+        if (level > std::log2(rho) + 1) (k ? res.lambdaGrad : res.lambdaImplicit) += 1;
+      }
+  return res;
+}
+
 // --- 3. Stretch: surface area per texture area, from the texel Jacobian -----
 // The unit sphere face-on from `d` (ortho, kStretchPx); at each pixel the
 // sphere's point and normal come from the pixel's position (ray and sphere),
@@ -233,6 +322,105 @@ inline int swimChanges(ts::Renderer& r, GLenum mode) {
     else changes += v != first;
   }
   return changes;
+}
+
+// --- 5. The slide projector ---------------------------------------------------
+// A floor (y = 0) and a back wall (z = -3) seen from the front; the projector
+// at (0, 1.5, -1) aims forward and down.  Behind it q < 0, and the wall sits
+// in the mirrored cone: the back projection.
+struct Slide {
+  glm::dmat4 projL, viewL, camP, camV;
+};
+inline Slide slideSetup() {
+  return {glm::perspective(glm::radians(40.0), 1.0, 0.5, 20.0),
+          glm::lookAt(glm::dvec3(0, 1.5, -1), glm::dvec3(0, 0, 2.5), glm::dvec3(0, 1, 0)),
+          glm::perspective(glm::radians(60.0), 1.0, 0.5, 30.0),
+          glm::lookAt(glm::dvec3(0, 6, 6), glm::dvec3(0, 0.8, -1), glm::dvec3(0, 1, 0))};
+}
+// The floor and the wall as one tessellated batch (world = object coordinates).
+inline Shape slideStage() {
+  Shape s;
+  auto quad = [&](glm::dvec3 o, glm::dvec3 u, glm::dvec3 v, int n) {
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        glm::dvec3 a = o + u * (double(i) / n) + v * (double(j) / n), b = a + u / double(n), c = b + v / double(n),
+                   d = a + v / double(n);
+        for (glm::dvec3 p : {a, b, c, a, c, d}) s.push_back({p, glm::cross(u, v), {0, 0}});
+      }
+  };
+  quad({-4, 0, 4}, {8, 0, 0}, {0, 0, -7}, 16);   // floor, z from 4 to -3
+  quad({-4, 0, -3}, {8, 0, 0}, {0, 4, 0}, 8);    // back wall, facing +z
+  return s;
+}
+inline ts::Batch slideBatch(const Slide& sl, int texture, bool clip) {
+  auto planes = slidePlanes(sl.projL, sl.viewL);
+  ts::TexGen g;
+  g.mode = GL_EYE_LINEAR;
+  g.coords = ts::TexGen::S | ts::TexGen::T | ts::TexGen::R | ts::TexGen::Q;
+  for (int k = 0; k < 4; ++k) g.planes[k] = glm::vec4(planes[size_t(k)]);
+  g.planeModelview = glm::mat4(sl.camV);  // given with the camera's view in force: world-fixed planes
+  ts::Batch b = texGenBatch(slideStage(), g, texture);
+  b.role = "stage";
+  if (clip) {  // the fix: keep q >= 0 (the Q plane, world = object coordinates here)
+    b.clip = true;
+    b.clipPlane = glm::vec4(planes[3]);
+    b.clipModelview = glm::mat4(sl.camV);  // given under the camera's view, the stage panel's modelview: a world-fixed plane
+  }
+  return b;
+}
+constexpr int kSlidePx = 512, kSlideGrid = 64;
+struct SlideResult {
+  long mismatches = 0, checked = 0, back = 0;
+};
+inline SlideResult slideMeasure(ts::Renderer& r, bool clip) {
+  const Slide sl = slideSetup();
+  ts::Frame fr = indexFrame(kSlidePx, kSlidePx);
+  ts::TextureDesc slide = ts::texelIndexTexture(kSlideGrid);
+  slide.wrapS = slide.wrapT = GL_CLAMP_TO_BORDER;  // border (0,0,0,0): outside the slide = no texel
+  int tex = fr.addTexture(slide);
+  ts::Panel p;
+  p.id = "stage";
+  p.viewport = {0, 0, kSlidePx, kSlidePx};
+  p.projection = glm::mat4(sl.camP);
+  p.modelview = glm::mat4(sl.camV);
+  p.depthTest = true;
+  p.batches.push_back(slideBatch(sl, tex, clip));
+  fr.panels.push_back(p);
+  Texels t = decode(r.renderOffscreen(fr));
+  const auto planes = slidePlanes(sl.projL, sl.viewL);
+  const glm::dmat4 inv = glm::inverse(sl.camP * sl.camV);
+  const glm::dvec3 eye = glm::dvec3(glm::inverse(sl.camV)[3]);
+  SlideResult res;
+  for (int y = 0; y < kSlidePx; ++y)
+    for (int x = 0; x < kSlidePx; ++x) {
+      // The pixel centre's ray, hitting the floor (y = 0) or the wall (z = -3).
+      glm::dvec4 far = inv * glm::dvec4(2 * (x + 0.5) / kSlidePx - 1, 1 - 2 * (y + 0.5) / kSlidePx, 1, 1);
+      glm::dvec3 dir = glm::dvec3(far) / far.w - eye;
+      double best = 1e30;
+      glm::dvec3 hit(0.0);
+      double tf = -eye.y / dir.y, tw = (-3 - eye.z) / dir.z;
+      glm::dvec3 pf = eye + tf * dir, pw = eye + tw * dir;
+      if (tf > 0 && std::abs(pf.x) <= 4 && pf.z >= -3 && pf.z <= 4) best = tf, hit = pf;
+      if (tw > 0 && tw < best && std::abs(pw.x) <= 4 && pw.y >= 0 && pw.y <= 4) best = tw, hit = pw;
+      if (best == 1e30) continue;
+      glm::dvec4 c = slideCoords(planes, hit);
+      glm::ivec2 got = t(x, y);
+      if (c.w < 0) {  // behind the projector
+        res.back += got.x >= 0;
+        continue;
+      }
+      glm::dvec2 st(c.x / c.w, c.y / c.w);
+      if (c.w < 1e-6) continue;
+      glm::dvec2 g = st * double(kSlideGrid);
+      // A pixel centre within 1/1000 texel of a texel edge may round either way.
+      glm::dvec2 fr2 = g - glm::floor(g);
+      if (std::min({fr2.x, 1 - fr2.x, fr2.y, 1 - fr2.y}) < 1e-3) continue;
+      ++res.checked;
+      bool inside = st.x >= 0 && st.x < 1 && st.y >= 0 && st.y < 1;
+      glm::ivec2 want = inside ? glm::ivec2(glm::floor(g)) : glm::ivec2(-1);
+      res.mismatches += got != want;
+    }
+  return res;
 }
 
 // --- 6. A solid 3D texture against the sphere's Eq. VI.2 ---------------------
@@ -343,193 +531,6 @@ inline CubeResult cubeFaces(ts::Renderer& r, bool shared8) {
     else if (det < 0) ++res.mirrored;
     else ++res.other;
   }
-  return res;
-}
-
-// --- 5. The slide projector ---------------------------------------------------
-// A floor (y = 0) and a back wall (z = -3) seen from the front; the projector
-// at (0, 1.5, -1) aims forward and down.  Behind it q < 0, and the wall sits
-// in the mirrored cone: the back projection.
-struct Slide {
-  glm::dmat4 projL, viewL, camP, camV;
-};
-inline Slide slideSetup() {
-  return {glm::perspective(glm::radians(40.0), 1.0, 0.5, 20.0),
-          glm::lookAt(glm::dvec3(0, 1.5, -1), glm::dvec3(0, 0, 2.5), glm::dvec3(0, 1, 0)),
-          glm::perspective(glm::radians(60.0), 1.0, 0.5, 30.0),
-          glm::lookAt(glm::dvec3(0, 6, 6), glm::dvec3(0, 0.8, -1), glm::dvec3(0, 1, 0))};
-}
-// The floor and the wall as one tessellated batch (world = object coordinates).
-inline Shape slideStage() {
-  Shape s;
-  auto quad = [&](glm::dvec3 o, glm::dvec3 u, glm::dvec3 v, int n) {
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        glm::dvec3 a = o + u * (double(i) / n) + v * (double(j) / n), b = a + u / double(n), c = b + v / double(n),
-                   d = a + v / double(n);
-        for (glm::dvec3 p : {a, b, c, a, c, d}) s.push_back({p, glm::cross(u, v), {0, 0}});
-      }
-  };
-  quad({-4, 0, 4}, {8, 0, 0}, {0, 0, -7}, 16);   // floor, z from 4 to -3
-  quad({-4, 0, -3}, {8, 0, 0}, {0, 4, 0}, 8);    // back wall, facing +z
-  return s;
-}
-inline ts::Batch slideBatch(const Slide& sl, int texture, bool clip) {
-  auto planes = slidePlanes(sl.projL, sl.viewL);
-  ts::TexGen g;
-  g.mode = GL_EYE_LINEAR;
-  g.coords = ts::TexGen::S | ts::TexGen::T | ts::TexGen::R | ts::TexGen::Q;
-  for (int k = 0; k < 4; ++k) g.planes[k] = glm::vec4(planes[size_t(k)]);
-  g.planeModelview = glm::mat4(sl.camV);  // given with the camera's view in force: world-fixed planes
-  ts::Batch b = texGenBatch(slideStage(), g, texture);
-  b.role = "stage";
-  if (clip) {  // the fix: keep q >= 0 (the Q plane, world = object coordinates here)
-    b.clip = true;
-    b.clipPlane = glm::vec4(planes[3]);
-    b.clipModelview = glm::mat4(sl.camV);  // given under the camera's view, the stage panel's modelview: a world-fixed plane
-  }
-  return b;
-}
-constexpr int kSlidePx = 512, kSlideGrid = 64;
-struct SlideResult {
-  long mismatches = 0, checked = 0, back = 0;
-};
-inline SlideResult slideMeasure(ts::Renderer& r, bool clip) {
-  const Slide sl = slideSetup();
-  ts::Frame fr = indexFrame(kSlidePx, kSlidePx);
-  ts::TextureDesc slide = ts::texelIndexTexture(kSlideGrid);
-  slide.wrapS = slide.wrapT = GL_CLAMP_TO_BORDER;  // border (0,0,0,0): outside the slide = no texel
-  int tex = fr.addTexture(slide);
-  ts::Panel p;
-  p.id = "stage";
-  p.viewport = {0, 0, kSlidePx, kSlidePx};
-  p.projection = glm::mat4(sl.camP);
-  p.modelview = glm::mat4(sl.camV);
-  p.depthTest = true;
-  p.batches.push_back(slideBatch(sl, tex, clip));
-  fr.panels.push_back(p);
-  Texels t = decode(r.renderOffscreen(fr));
-  const auto planes = slidePlanes(sl.projL, sl.viewL);
-  const glm::dmat4 inv = glm::inverse(sl.camP * sl.camV);
-  const glm::dvec3 eye = glm::dvec3(glm::inverse(sl.camV)[3]);
-  SlideResult res;
-  for (int y = 0; y < kSlidePx; ++y)
-    for (int x = 0; x < kSlidePx; ++x) {
-      // The pixel centre's ray, hitting the floor (y = 0) or the wall (z = -3).
-      glm::dvec4 far = inv * glm::dvec4(2 * (x + 0.5) / kSlidePx - 1, 1 - 2 * (y + 0.5) / kSlidePx, 1, 1);
-      glm::dvec3 dir = glm::dvec3(far) / far.w - eye;
-      double best = 1e30;
-      glm::dvec3 hit(0.0);
-      double tf = -eye.y / dir.y, tw = (-3 - eye.z) / dir.z;
-      glm::dvec3 pf = eye + tf * dir, pw = eye + tw * dir;
-      if (tf > 0 && std::abs(pf.x) <= 4 && pf.z >= -3 && pf.z <= 4) best = tf, hit = pf;
-      if (tw > 0 && tw < best && std::abs(pw.x) <= 4 && pw.y >= 0 && pw.y <= 4) best = tw, hit = pw;
-      if (best == 1e30) continue;
-      glm::dvec4 c = slideCoords(planes, hit);
-      glm::ivec2 got = t(x, y);
-      if (c.w < 0) {  // behind the projector
-        res.back += got.x >= 0;
-        continue;
-      }
-      glm::dvec2 st(c.x / c.w, c.y / c.w);
-      if (c.w < 1e-6) continue;
-      glm::dvec2 g = st * double(kSlideGrid);
-      // A pixel centre within 1/1000 texel of a texel edge may round either way.
-      glm::dvec2 fr2 = g - glm::floor(g);
-      if (std::min({fr2.x, 1 - fr2.x, fr2.y, 1 - fr2.y}) < 1e-3) continue;
-      ++res.checked;
-      bool inside = st.x >= 0 && st.x < 1 && st.y >= 0 && st.y < 1;
-      glm::ivec2 want = inside ? glm::ivec2(glm::floor(g)) : glm::ivec2(-1);
-      res.mismatches += got != want;
-    }
-  return res;
-}
-// --- 2. Corrected cylindrical against Buss's Eq. VI.1, and its seam -----------
-// The cylinder (r 1, y from -1 to 1, 48 slices) from the back, where atan2's
-// cut lies (θ = 180°), ortho, kView px; its mesh carries cylinder_seam's
-// mapping (s = θ/360 with the winding tracked, t = (y + 1)/2) per vertex.
-struct SeamResult {
-  long perFragmentMismatch = 0, perFragmentFar = 0, perVertexFar = 0;
-  int reversedPatches = 0;
-  long lambdaImplicit = 0, lambdaGrad = 0;
-};
-inline SeamResult seamMeasure(ts::Renderer& r) {
-  const int slices = 48, grid = 256;
-  // θ from -3.75° (half a slice): the cut at 180° runs through the middle of a patch.
-  const ts::Mesh mesh = ts::parametricGrid(
-      slices, 8, true, false, [](int i, int j) { return ts::cylinderPoint(1.0, 2.0, 48, 8, i, j, -3.75); },
-      [](int i, int j) { return glm::dvec2((i - 0.5) / 48.0, j / 8.0); });
-  const Shape cyl = fromMesh(mesh);
-  // Turned 0.47° off the back: the cut (x = 0) falls one pixel right of the
-  // centre, between the pixel centres of one 2x2 quad (128 | 129), not on a
-  // quad's edge, where no quad would straddle it.
-  const glm::mat4 back = faceOn({std::sin(kPi * 0.47 / 180), 0, -std::cos(kPi * 0.47 / 180)});
-  ts::Frame fr = indexFrame(3 * kView, kView);
-  fr.programs.push_back({kProgramName, projectorProgram()});
-  ts::TextureDesc idx = ts::texelIndexTexture(grid);
-  idx.wrapT = GL_CLAMP_TO_EDGE;
-  int tex = fr.addTexture(idx);
-  ts::Batch buss = perVertexBatch(cyl, Projector::Cylindrical, Axis::Y, Formula::Corrected, tex, true);
-  ts::Batch frag = glslBatch(cyl, Projector::Cylindrical, Axis::Y, Formula::Corrected, tex);
-  ts::Batch vert = perVertexBatch(cyl, Projector::Cylindrical, Axis::Y, Formula::Corrected, tex);
-  const ts::Batch* bs[3] = {&buss, &frag, &vert};
-  for (int k = 0; k < 3; ++k) {
-    ts::Panel p = orthoPanel("cyl_" + std::to_string(k), {k * kView, 0, kView, kView}, back);
-    p.batches.push_back(*bs[k]);
-    fr.panels.push_back(p);
-  }
-  Texels t = decode(r.renderOffscreen(fr));
-  SeamResult res;
-  std::set<int> patches;
-  auto far = [&](glm::ivec2 a, glm::ivec2 b) {  // more than 1 texel apart, around the circle in s
-    int di = std::abs(a.x - b.x);
-    di = std::min(di, grid - di);
-    return di > 1 || std::abs(a.y - b.y) > 1;
-  };
-  for (int y = 0; y < kView; ++y)
-    for (int x = 0; x < kView; ++x) {
-      glm::ivec2 a = t(x, y), f = t(x + kView, y), v = t(x + 2 * kView, y);
-      if (a.x < 0 || f.x < 0 || v.x < 0) continue;
-      res.perFragmentMismatch += a != f;
-      res.perFragmentFar += far(a, f);
-      if (far(a, v)) {
-        ++res.perVertexFar;
-        patches.insert(int(std::floor((a.x + 0.5) / grid * slices + 0.5)) % slices);  // its patch (Buss's s)
-      }
-    }
-  res.reversedPatches = int(patches.size());
-  // λ: the level of a coloured mip chain (GL_NEAREST_MIPMAP_NEAREST) against
-  // the analytic one, λ = log2(N · max(|ds/dx|, |dt/dy|)) with, on the
-  // cylinder seen along -z, ds/dx = px / (2π cos φ) (φ = asin of the view x)
-  // and dt/dy = px / 2.  Pixels with |φ| < 60°: counted where the level is
-  // more than 1 above.
-  const int n = 256;
-  ts::Frame lf = indexFrame(2 * kView, kView);
-  lf.programs.push_back({kProgramName, projectorProgram()});
-  int lt = lf.addTexture(ts::mipLevelColours(n));
-  for (int k = 0; k < 2; ++k) {
-    ts::Panel p = orthoPanel(k ? "grad" : "implicit", {k * kView, 0, kView, kView}, back);
-    p.batches.push_back(glslBatch(cyl, Projector::Cylindrical, Axis::Y, Formula::Corrected, lt, k == 1));
-    lf.panels.push_back(p);
-  }
-  ts::Image li = r.renderOffscreen(lf);
-  const double px = 2.0 * kHalf / kView;
-  for (int k = 0; k < 2; ++k)
-    for (int y = 0; y < kView; ++y)
-      for (int x = 0; x < kView; ++x) {
-        double vx = -kHalf + (x + 0.5) * px, vy = kHalf - (y + 0.5) * px;
-        if (std::abs(vx) > std::sin(kPi / 3) || std::abs(vy) > 0.95) continue;
-        double phi = std::asin(vx);
-        double rho = n * std::max(px / (2 * kPi * std::cos(phi)), px / 2);
-        ts::Rgba c = li.at(k * kView + x, y);
-        int level = -1;
-        for (int l = 0; l < 9 && level < 0; ++l) {
-          ts::Rgba w = ts::mipLevelColour(l);
-          if (c.r == w.r && c.g == w.g && c.b == w.b) level = l;
-        }
-        if (level < 0) continue;
-        if (level > std::log2(rho) + 1) (k ? res.lambdaGrad : res.lambdaImplicit) += 1;
-      }
   return res;
 }
 
