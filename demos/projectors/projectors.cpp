@@ -47,6 +47,7 @@
 #include "projectors_gl.hpp"
 #include "projectors_math.hpp"
 #include "projectors_measure.hpp"
+#include "projectors_pose.hpp"
 #include "projectors_views.hpp"
 
 namespace {
@@ -150,7 +151,7 @@ void Projectors::objectView(ts::Frame& f, int w, int h, const ts::Measurements& 
   const Detail* d = m.detailAs<Detail>();
   const Usage* u = nullptr;
   if (d && d->usage.count(key())) u = &d->usage.at(key());
-  f.panels.push_back(views::usagePanel(right, grid, u, kUsageGrid));
+  f.panels.push_back(views::usagePanel(right, grid, u ? &u->used : nullptr, kUsageGrid));
   const int sc = ts::layout::scaleFor(left, 2);
   std::string what = std::string(kProj[proj_]) + " along " + kAxis[axis_] + ", " + kFormula[formula_] + ", coords " +
                      kCoordsName[int(views::effective(wy))] +

@@ -9,7 +9,7 @@
 
 #include "common/core/layout.hpp"
 #include "projectors_gl.hpp"
-#include "projectors_measure.hpp"
+#include "projectors_pose.hpp"
 
 namespace proj::views {
 // The batch for `s` with coordinates made by `c`; linear projectors only go
@@ -53,25 +53,26 @@ inline ts::Panel objectPanel(const std::string& id, const ts::Rect& vp, const ts
   p.batches.push_back(b);
   return p;
 }
-// Texture space: the texture dimmed, the texels the object uses (usage.used,
-// grid x grid) in amber on top, one quad per run of used texels in a row.
-inline ts::Panel usagePanel(const ts::Rect& vp, int tex, const Usage* u, int grid) {
+// Texture space: the texture dimmed, the texels the object uses (`used`, grid
+// x grid, row j from the bottom: Usage::used of projectors_measure.hpp) in
+// amber on top, one quad per run of used texels in a row.
+inline ts::Panel usagePanel(const ts::Rect& vp, int tex, const std::vector<unsigned char>* used, int grid) {
   ts::Panel p = ts::layout::texturePanel("texture_space", vp, tex, "texture");
   for (ts::Vertex& v : p.batches[0].vertices) v.color = {0.45f, 0.45f, 0.45f, 1.0f};
   p.batches[0].texEnv = GL_MODULATE;
-  if (!u || u->used.empty()) return p;
+  if (!used || used->empty()) return p;
   ts::Batch runs;
   runs.role = "used_texels";
   runs.blend = true;
   const glm::vec4 amber(1.0f, 0.7f, 0.2f, 0.55f);
   for (int j = 0; j < grid; ++j)
     for (int i = 0; i < grid;) {
-      if (!u->used[size_t(j) * size_t(grid) + size_t(i)]) {
+      if (!(*used)[size_t(j) * size_t(grid) + size_t(i)]) {
         ++i;
         continue;
       }
       int e = i;
-      while (e < grid && u->used[size_t(j) * size_t(grid) + size_t(e)]) ++e;
+      while (e < grid && (*used)[size_t(j) * size_t(grid) + size_t(e)]) ++e;
       float x0 = float(i) / grid, x1 = float(e) / grid, y0 = float(j) / grid, y1 = float(j + 1) / grid;
       for (glm::vec2 c : {glm::vec2(x0, y0), {x1, y0}, {x1, y1}, {x0, y0}, {x1, y1}, {x0, y1}})
         runs.vertices.push_back({{c, 0.0f}, {0, 0, 0, 1}, amber});
