@@ -15,7 +15,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 build=build-bench
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DTM_BUILD_TESTS=ON -DTM_BUILD_BENCHMARKS=ON >/dev/null
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DTS_BUILD_TESTS=ON -DTS_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build "$build" -j2 --target bench_figures bench_window bench_jitter bench_parallax bench_zoo
 mkdir -p "$build/bench"
 "$build/bin/bench_figures" --benchmark_out="$build/bench/figures.json" --benchmark_out_format=json "$@"

@@ -97,7 +97,7 @@ elif [ "$level" = full ]; then
   stage "GL tests on the EGL backend" ctest --preset egl "$@"
   # The benchmark programs are compiled (into build/, reusing its objects),
   # so they cannot rot.
-  stage "compile the benchmarks (build/, not run)" bash -c 'cmake --preset default -DTM_BUILD_BENCHMARKS=ON >/dev/null &&
+  stage "compile the benchmarks (build/, not run)" bash -c 'cmake --preset default -DTS_BUILD_BENCHMARKS=ON >/dev/null &&
     cmake --build --preset default --target bench_figures bench_window bench_jitter bench_parallax'
   targets=$(ls fuzz/fuzz_*.cpp | wc -l)
   each=${TS_FUZZ_SECONDS:-90}

@@ -176,7 +176,7 @@ t_deps=$(date +%s)
 # ---- the suite, cross-built
 bw=${TS_WINDOWS_BUILD:-$root/build-windows}
 cmake -S "$root" -B "$bw" -DCMAKE_TOOLCHAIN_FILE="$toolchain" -DCMAKE_BUILD_TYPE=Release \
-  -DTM_BUILD_TESTS=OFF -DTM_BUILD_BENCHMARKS=OFF ${TS_WINDOWS_CMAKE_ARGS:-} >/dev/null
+  -DTS_BUILD_TESTS=OFF -DTS_BUILD_BENCHMARKS=OFF ${TS_WINDOWS_CMAKE_ARGS:-} >/dev/null
 nice -n 15 cmake --build "$bw" -j"$jobs"
 t_build=$(date +%s)
 

@@ -2,7 +2,7 @@
 // math: the scale factor rho from the four screen derivatives of the texel
 // coordinates, the level(s) a mipmap filter reads at lambda, and reading a
 // level back from a render of the mip-level-colours texture.  Moved here from
-// the mipmap demo (demos/mipmap_popping/mipmap_math.hpp derives them) so the
+// the mipmap demo (demos/mipmap_popping/mipmap_popping_math.hpp derives them) so the
 // filter zoo (demos/filter_zoo) uses the same rules.  No GL.
 #pragma once
 #include <glm/glm.hpp>

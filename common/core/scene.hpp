@@ -115,7 +115,7 @@ class Scene {
   virtual std::vector<std::pair<std::string, std::string>> figureFiles() const { return {}; }
 };
 
-// Registry filled by TM_REGISTER_SCENE in each demo's file.
+// Registry filled by TS_REGISTER_SCENE in each demo's file.
 using SceneFactory = std::function<std::unique_ptr<Scene>()>;
 struct RegisteredScene {
   std::string id;
@@ -131,7 +131,7 @@ std::unique_ptr<Scene> makeScene(const std::string& id);  // nullptr if unknown
 int runDemo(const std::string& id, int argc, char** argv);
 }  // namespace ts
 
-#define TM_REGISTER_SCENE(Class)                                                          \
-  static const bool tm_registered_##Class = ::ts::registerScene(Class().id(), [] {        \
+#define TS_REGISTER_SCENE(Class)                                                          \
+  static const bool ts_registered_##Class = ::ts::registerScene(Class().id(), [] {        \
     return std::unique_ptr<::ts::Scene>(new Class());                                    \
   })

@@ -2,7 +2,7 @@
 // and the mipmap demo's slanted ground plane: the camera, where a pixel's ray
 // meets the plane with the texel-space Jacobian there, and the homography
 // from pixels to the plane.  Moved here from demos/mipmap_popping (whose
-// mipmap_math.hpp derives the formulas) so the filter zoo (demos/filter_zoo)
+// mipmap_popping_math.hpp derives the formulas) so the filter zoo (demos/filter_zoo)
 // looks at the same plane.  No GL.
 #pragma once
 #include <glm/glm.hpp>

@@ -1,7 +1,7 @@
 // common/core/torus_frame.inl — the torus's local frame at the angles
 // (th, ph) = (θ, φ) in radians, written once and compiled twice: as C++ by
 // common/core/torus.cpp (ts::torusFrame, vec3 = glm::dvec3) and as GLSL by
-// the bump-mapping shaders (demos/bump_mapping/bump_gl.hpp: frameAt), which
+// the bump-mapping shaders (demos/bump_mapping/bump_mapping_gl.hpp: frameAt), which
 // get these lines as the string ts::kTorusFrameGLSL (common/cmake/
 // embed_text.cmake copies them at build time, these leading // lines left
 // out).  So they may use only what both languages read alike: vec3(...),

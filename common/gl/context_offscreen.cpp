@@ -166,11 +166,11 @@ class EglContext final : public Context {
       *why = "libEGL lacks eglGetProcAddress";
       return nullptr;
     }
-#define TM_EGL(field, name) e.field = reinterpret_cast<decltype(e.field)>(dlsym(lib, name));
-    TM_EGL(initialize, "eglInitialize") TM_EGL(terminate, "eglTerminate") TM_EGL(bindAPI, "eglBindAPI")
-    TM_EGL(createContext, "eglCreateContext") TM_EGL(destroyContext, "eglDestroyContext")
-    TM_EGL(makeCurrent, "eglMakeCurrent") TM_EGL(queryString, "eglQueryString")
-#undef TM_EGL
+#define TS_EGL(field, name) e.field = reinterpret_cast<decltype(e.field)>(dlsym(lib, name));
+    TS_EGL(initialize, "eglInitialize") TS_EGL(terminate, "eglTerminate") TS_EGL(bindAPI, "eglBindAPI")
+    TS_EGL(createContext, "eglCreateContext") TS_EGL(destroyContext, "eglDestroyContext")
+    TS_EGL(makeCurrent, "eglMakeCurrent") TS_EGL(queryString, "eglQueryString")
+#undef TS_EGL
     e.getPlatformDisplay =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(e.getProcAddress("eglGetPlatformDisplayEXT"));
     e.queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(e.getProcAddress("eglQueryDevicesEXT"));

@@ -6,9 +6,9 @@
 #include "common/core/error.hpp"
 
 namespace ts::gl {
-#define TM_GL_DEFINE_POINTER(name) __thread decltype(p_##name) p_##name = nullptr;
-TM_GL_FUNCTIONS(TM_GL_DEFINE_POINTER)
-#undef TM_GL_DEFINE_POINTER
+#define TS_GL_DEFINE_POINTER(name) __thread decltype(p_##name) p_##name = nullptr;
+TS_GL_FUNCTIONS(TS_GL_DEFINE_POINTER)
+#undef TS_GL_DEFINE_POINTER
 
 namespace {
 thread_local bool g_loaded = false;  // per thread, as the table
@@ -20,10 +20,10 @@ const char* const kRequired[] = {
 }  // namespace
 
 bool load(ProcLoader loader, std::string* missing) {
-#define TM_GL_LOAD(name) \
+#define TS_GL_LOAD(name) \
   p_##name = reinterpret_cast<decltype(p_##name)>(loader(#name));
-  TM_GL_FUNCTIONS(TM_GL_LOAD)
-#undef TM_GL_LOAD
+  TS_GL_FUNCTIONS(TS_GL_LOAD)
+#undef TS_GL_LOAD
   for (const char* name : kRequired) {
     if (!loader(name)) {
       if (missing) *missing = name;

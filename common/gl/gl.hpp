@@ -12,7 +12,7 @@
 //   Frame renderer common/gl/render.cpp, the window, and the demos that draw
 //   passes of their own: VI.7's jitter, the parallax shaders) writes plain glBegin(...)
 //   — the macros below turn it into a call through the pointer.  Calling a GL
-//   function missing from TM_GL_FUNCTIONS fails at link time (undefined
+//   function missing from TS_GL_FUNCTIONS fails at link time (undefined
 //   glFoo), never silently at run time: add the name to the list.
 #pragma once
 
@@ -36,7 +36,7 @@
 #include <string>
 
 // Every GL function the suite calls.  Keep alphabetical within a group.
-#define TM_GL_FUNCTIONS(X)                                                     \
+#define TS_GL_FUNCTIONS(X)                                                     \
   /* GL 1.x fixed function */                                                  \
   X(glAccum) X(glBegin) X(glBindTexture) X(glBlendFunc) X(glClear)             \
   X(glClearColor) X(glClearDepth) X(glColor4f) X(glColorPointer)               \
@@ -85,9 +85,9 @@ namespace ts::gl {
 // not thread_local: the pointers need no constructor, and an extern
 // thread_local is read through a wrapper function that UBSan's null check
 // misreads as a null load (every GL call failed under ASan + UBSan).
-#define TM_GL_DECLARE_POINTER(name) extern __thread decltype(&::name) p_##name;
-TM_GL_FUNCTIONS(TM_GL_DECLARE_POINTER)
-#undef TM_GL_DECLARE_POINTER
+#define TS_GL_DECLARE_POINTER(name) extern __thread decltype(&::name) p_##name;
+TS_GL_FUNCTIONS(TS_GL_DECLARE_POINTER)
+#undef TS_GL_DECLARE_POINTER
 
 using ProcLoader = void* (*)(const char* name);
 
@@ -119,7 +119,7 @@ bool enableDebugOutput();
 }  // namespace ts::gl
 
 // Route every call site through the loaded pointers (one line per function
-// of TM_GL_FUNCTIONS).  The lists check each other: a name missing here links
+// of TS_GL_FUNCTIONS).  The lists check each other: a name missing here links
 // to an undefined ::glFoo, a name missing above is an undeclared pointer.
 #define glAccum ts::gl::p_glAccum
 #define glAlphaFunc ts::gl::p_glAlphaFunc

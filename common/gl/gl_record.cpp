@@ -275,15 +275,15 @@ Arg describe(char hint, const Raw& r, const std::vector<Raw>& all, size_t index,
 
 // ---- the wrappers -----------------------------------------------------------
 enum FunctionIndex {
-#define TM_GL_INDEX(name) k_##name,
-  TM_GL_FUNCTIONS(TM_GL_INDEX)
-#undef TM_GL_INDEX
+#define TS_GL_INDEX(name) k_##name,
+  TS_GL_FUNCTIONS(TS_GL_INDEX)
+#undef TS_GL_INDEX
   kFunctionCount
 };
 const char* const kNames[] = {
-#define TM_GL_NAME(name) #name,
-    TM_GL_FUNCTIONS(TM_GL_NAME)
-#undef TM_GL_NAME
+#define TS_GL_NAME(name) #name,
+    TS_GL_FUNCTIONS(TS_GL_NAME)
+#undef TS_GL_NAME
 };
 // Per thread, as the pointer table they stand in for (gl.hpp): each thread's
 // real pointers and innermost Recording.
@@ -357,16 +357,16 @@ struct Wrapper<Index, R (*)(A...)> {
 };
 
 void swapIn() {
-#define TM_GL_SWAP_IN(name)                                                          \
+#define TS_GL_SWAP_IN(name)                                                          \
   g_real[k_##name] = reinterpret_cast<void*>(p_##name);                              \
   if (p_##name) p_##name = &Wrapper<k_##name, decltype(p_##name)>::call;
-  TM_GL_FUNCTIONS(TM_GL_SWAP_IN)
-#undef TM_GL_SWAP_IN
+  TS_GL_FUNCTIONS(TS_GL_SWAP_IN)
+#undef TS_GL_SWAP_IN
 }
 void swapOut() {
-#define TM_GL_SWAP_OUT(name) p_##name = reinterpret_cast<decltype(p_##name)>(g_real[k_##name]);
-  TM_GL_FUNCTIONS(TM_GL_SWAP_OUT)
-#undef TM_GL_SWAP_OUT
+#define TS_GL_SWAP_OUT(name) p_##name = reinterpret_cast<decltype(p_##name)>(g_real[k_##name]);
+  TS_GL_FUNCTIONS(TS_GL_SWAP_OUT)
+#undef TS_GL_SWAP_OUT
 }
 
 // ---- formatting -------------------------------------------------------------

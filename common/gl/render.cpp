@@ -189,8 +189,8 @@ void Renderer::forgetTexture(const TextureDesc& t) {
 static int sourceLine(const std::string& file, const std::string& src) {
   if (file.empty() || src.empty()) return 0;
   std::vector<std::string> candidates{file};
-#ifdef TM_SOURCE_DIR
-  candidates.push_back(std::string(TM_SOURCE_DIR) + "/" + file);
+#ifdef TS_SOURCE_DIR
+  candidates.push_back(std::string(TS_SOURCE_DIR) + "/" + file);
 #endif
   for (const std::string& path : candidates) {
     std::FILE* f = std::fopen(path.c_str(), "rb");

@@ -35,18 +35,18 @@
 //   t  heights: procedural | bricks (--texture FILE: a picture's luminance)
 //   + / -  height scale   s / S  object scale (seed 004's claim)   w  the normal map's edge slopes wrap (the seam's fix)
 //   a / A, e / E  light 1 azimuth, elevation (or a right drag)   b / B, d / D  light 2   . / ,  tilt
-// What the GL does: one GLSL 1.30 program (bump_gl.hpp: kFS) for B1-B3, the
-// method a uniform (its number from bump_methods.hpp: kMethods, the one table
+// What the GL does: one GLSL 1.30 program (bump_mapping_gl.hpp: kFS) for B1-B3, the
+// method a uniform (its number from bump_mapping_methods.hpp: kMethods, the one table
 // of the methods): common/gl/render.cpp: Renderer::draw sends the torus as
 // glTexCoord4f(s, t, 0, 1) + glVertex3f after glUseProgram and glUniform4f,
 // and the shader reads the heights (or the normal map) in texture unit 0 with
 // textureLod (B2: texelFetch of the 8-bit texels).  R, B4 and B5 are passes
 // of their own, drawn by measure() and shown as pictures: R is
-// bump_gl.hpp: renderReference, the grid's (s, t) by glVertexPointer +
-// glDrawElements, displaced in the vertex shader; B4 and B5 are bump_ff.hpp:
+// bump_mapping_gl.hpp: renderReference, the grid's (s, t) by glVertexPointer +
+// glDrawElements, displaced in the vertex shader; B4 and B5 are bump_mapping_ff.hpp:
 // renderFixedFunction, immediate mode, emboss's glBlendFunc(GL_ONE, GL_ONE)
 // and (GL_DST_COLOR, GL_SRC_COLOR) passes, DOT3's glTexEnvi(GL_TEXTURE_ENV,
-// GL_COMBINE_RGB, GL_DOT3_RGB).  The numbers: bump_measure.hpp.  Listings (the
+// GL_COMBINE_RGB, GL_DOT3_RGB).  The numbers: bump_mapping_measure.hpp.  Listings (the
 // pictures' passes first, then the frame): book_figures/bump_two_lights.gl.txt,
 // bump_seed002.gl.txt, bump_normals.gl.txt, bump_methods.gl.txt and
 // bump_emboss_overhead.gl.txt.
@@ -55,11 +55,11 @@
 #include <cmath>
 #include <memory>
 
-#include "bump_ff.hpp"
-#include "bump_gl.hpp"
-#include "bump_math.hpp"
-#include "bump_measure.hpp"
-#include "bump_methods.hpp"
+#include "bump_mapping_ff.hpp"
+#include "bump_mapping_gl.hpp"
+#include "bump_mapping_math.hpp"
+#include "bump_mapping_measure.hpp"
+#include "bump_mapping_methods.hpp"
 #include "common/gl/gl_listing.hpp"
 #include "common/core/layout.hpp"
 #include "common/core/orbit_camera.hpp"
@@ -359,4 +359,4 @@ std::vector<ts::FigureSpec> BumpMapping::figures() const {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(BumpMapping);
+TS_REGISTER_SCENE(BumpMapping);

@@ -24,7 +24,7 @@
 //
 // What the GL does: each cylinder is one glBegin(GL_TRIANGLES) sent by
 // common/gl/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
-// per vertex, s from cylinder_math.hpp's sOf: across the book's seam patch
+// per vertex, s from cylinder_seam_math.hpp's sOf: across the book's seam patch
 // 0.9 and 0.1 reduced, 0.9 and 1.1 tracked.  glTexParameteri(GL_TEXTURE_2D,
 // GL_TEXTURE_WRAP_S, GL_REPEAT), made by Renderer::texture, reads 1.1 as
 // 0.1: the fix.  Listings: book_figures/vi3_cylinder.gl.txt and
@@ -50,9 +50,9 @@
 #include "common/core/orbit_camera.hpp"
 #include "common/core/student_code.hpp"
 #include "common/core/user_texture.hpp"
-#include "cylinder_math.hpp"
-#include "cylinder_measure.hpp"  // the patches drawn head-on and read back
-#include "cylinder_views.hpp"    // the texture-space view: the seam patch's regions
+#include "cylinder_seam_math.hpp"
+#include "cylinder_seam_measure.hpp"  // the patches drawn head-on and read back
+#include "cylinder_seam_views.hpp"    // the texture-space view: the seam patch's regions
 
 namespace {
 using cylinder::Coords;
@@ -159,7 +159,7 @@ class CylinderSeam final : public ts::Scene {
 void CylinderSeam::addTextureView(ts::Frame& f, const ts::Rect& vp, int tex, int scale, const Detail* d) const {
   ts::Panel p = ts::layout::texturePanel("texture_space", vp, tex, "texture");
   // The seam patch's intended region (green) and the one the shown
-  // coordinates select (cylinder_views.hpp).  The compare view shows the
+  // coordinates select (cylinder_seam_views.hpp).  The compare view shows the
   // wrong way here (the right one is the green region itself).
   if (patch_ && (seam_ != kMine || (d && d->mine.ok())))
     cylinder::views::markSeamPatch(f, p, params(Coords::Right, d), params(textureCoords(), d), scale);
@@ -279,7 +279,7 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
 }
 
 // Each patch is drawn head-on with a texel-index texture and the s it shows
-// fitted across it (cylinder_measure.hpp): the seam patch's span and sign.
+// fitted across it (cylinder_seam_measure.hpp): the seam patch's span and sign.
 ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
   ts::Measurements out;
   Detail d;
@@ -311,4 +311,4 @@ ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(CylinderSeam);
+TS_REGISTER_SCENE(CylinderSeam);

@@ -8,23 +8,23 @@
 //   lat-long (Blinn–Newell)  s = λ/2π + 1/2, t = φ/π + 1/2: a seam where λ
 //       wraps and whole rows of texels at the poles
 //   cube map (GL_TEXTURE_CUBE_MAP)  face = the largest |r_i|, (s, t) from the
-//       other two over it (env_math.hpp has the spec's table); texels 3√3
+//       other two over it (environment_mapping_math.hpp has the spec's table); texels 3√3
 //       times larger in solid angle at a face's centre than at its corners
 //   sphere map (GL_SPHERE_MAP)  m = 2 sqrt(r_x^2 + r_y^2 + (r_z + 1)^2),
 //       s = r_x/m + 1/2: made for one eye; the whole back is squeezed into its rim
 //   dual paraboloid  s = r_x / (2 (1 + |r_z|)) + 1/2 on two discs: no seam
 //       inside a disc, a ring where they meet
 // and whether r is computed per vertex, (s,t,r) then interpolated, or per pixel.  The
-// world (env_math.hpp) is made so any direction can be read: colour = direction, lines
+// world (environment_mapping_math.hpp) is made so any direction can be read: colour = direction, lines
 // every 15°, the six cube faces named.  Measured against the exact r per pixel: the
 // direction error in degrees of every parameterization x per vertex/pixel for the object
-// shown, and where it is largest (env_measure.hpp); texels per steradian, largest /
+// shown, and where it is largest (environment_mapping_measure.hpp); texels per steradian, largest /
 // smallest, at equal memory; a sphere map reused as the eye turns; seed 001's cube example
 // read back; seed 002's u = N_x/2 + 1/2 against GL_SPHERE_MAP and its R = 2 N_z N - I
 // against r off the view axis; the flat mirror that cannot show a nearby ball.
 //
-// What the GL does (env_gl.hpp: EnvGL::draw, into a float FBO read back for the measurements; the
-// figures' pictures are the same passes as ts::Frames nested in the figure, env_views.hpp): the mesh as
+// What the GL does (environment_mapping_gl.hpp: EnvGL::draw, into a float FBO read back for the measurements; the
+// figures' pictures are the same passes as ts::Frames nested in the figure, environment_mapping_views.hpp): the mesh as
 // glNormal3f + glVertex3f, no glTexCoord.  Cube and sphere maps per vertex are fixed
 // function: glTexGeni(GL_S/T/R, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP or GL_SPHERE_MAP)
 // and glEnable(GL_TEXTURE_GEN_S/T/R) make r from the normal and the modelview; the rest
@@ -50,17 +50,17 @@
 #include "common/core/scene.hpp"
 #include "common/core/text.hpp"
 #include "common/core/textures.hpp"
-#include "env_gl.hpp"
-#include "env_measure.hpp"
-#include "env_studies.hpp"
-#include "env_math.hpp"
-#include "env_views.hpp"
+#include "environment_mapping_gl.hpp"
+#include "environment_mapping_measure.hpp"
+#include "environment_mapping_studies.hpp"
+#include "environment_mapping_math.hpp"
+#include "environment_mapping_views.hpp"
 
 namespace {
 using ts::layout::fmt, ts::layout::kAmber, ts::layout::kWhite;
 enum View { kObjectView, kMapView, kCompareView };
 const char* const kEval[] = {"pixel", "vertex"};
-using envmap::Found;  // what measure() found (env_studies.hpp)
+using envmap::Found;  // what measure() found (environment_mapping_studies.hpp)
 class EnvironmentMapping final : public ts::Scene {
  public:
   std::string id() const override { return "environment_mapping"; }
@@ -144,7 +144,8 @@ class EnvironmentMapping final : public ts::Scene {
     p.faceTexels = face_, p.w = p.h = size;
     return p;
   }
-  ts::layout::Text refCaption() const {  // the mirror's is the exact world; the others read a fine cube map (env_views.hpp)
+  // The mirror's is the exact world; the others read a fine cube map (environment_mapping_views.hpp).
+  ts::layout::Text refCaption() const {
     if (object_ == envmap::kMirror) return "reference: exact r per pixel";
     return "reference: exact r, cube map " + ts::layout::given("reference cube map: texels along a face's side", envmap::kReferenceFace, "%.0f");
   }
@@ -359,7 +360,7 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
     ts::measureProgress(0.4);
   }
   // The shown state's pictures: nested frames drawn by GL (their calls recorded for the listings), which the
-  // reference recomputes (env_views.hpp); the measurements read the float passes.
+  // reference recomputes (environment_mapping_views.hpp); the measurements read the float passes.
   const int n = render_;
   envmap::Pixels ref;  // its calls recorded for the mirror's reference picture (the target made again: they show how)
   g.forget(pass(-1, object_, false, true, n));
@@ -405,4 +406,4 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(EnvironmentMapping);
+TS_REGISTER_SCENE(EnvironmentMapping);

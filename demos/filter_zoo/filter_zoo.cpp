@@ -32,15 +32,15 @@
 //   g  linear-light kernel                 t  texture: checkerboard | labelled grid
 //   a click on a picture: its pixel in the supports view (--pick X,Y)
 //
-// What the GL does (zoo_measure.hpp): the GL methods draw the scene's outline
+// What the GL does (filter_zoo_measure.hpp): the GL methods draw the scene's outline
 // as triangles with glTexCoord4f(s q, t q, 0, q), (s/q, t/q) the scene's
-// homography at every pixel (zoo_math.hpp: viewFrame), with
+// homography at every pixel (filter_zoo_math.hpp: viewFrame), with
 // glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST |
 // GL_LINEAR | GL_NEAREST_MIPMAP_NEAREST | GL_LINEAR_MIPMAP_LINEAR),
 // glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 16) for
 // anisotropic and GL_TEXTURE_LOD_BIAS; they are rendered offscreen at
 // 384 x 192 and read back.  Ripmap, SAT, probe line, EWA and the exact
-// integral are computed on the CPU in double precision (zoo_math.hpp), so
+// integral are computed on the CPU in double precision (filter_zoo_math.hpp), so
 // their pictures do not depend on the driver.  Every picture is shown as a
 // GL_NEAREST texture; listings: book_figures/filter_zoo_*.gl.txt.
 //
@@ -72,9 +72,9 @@
 #include "common/core/textures.hpp"
 #include "common/gl/gl.hpp"
 #include "common/gl/render.hpp"
-#include "zoo_math.hpp"
-#include "zoo_measure.hpp"
-#include "zoo_views.hpp"
+#include "filter_zoo_math.hpp"
+#include "filter_zoo_measure.hpp"
+#include "filter_zoo_views.hpp"
 
 namespace {
 using namespace zoo;
@@ -121,7 +121,7 @@ class FilterZoo final : public ts::Scene {
     });
   }
 
-  std::vector<ts::FigureSpec> figures() const override { return figureSpecs(); }  // zoo_views.hpp
+  std::vector<ts::FigureSpec> figures() const override { return figureSpecs(); }  // filter_zoo_views.hpp
 
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
@@ -327,4 +327,4 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(FilterZoo);
+TS_REGISTER_SCENE(FilterZoo);

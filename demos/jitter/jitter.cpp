@@ -284,4 +284,4 @@ ts::Frame Jitter::build(int width, int height, const ts::Measurements& measured)
 
 }  // namespace
 
-TM_REGISTER_SCENE(Jitter);
+TS_REGISTER_SCENE(Jitter);

@@ -31,21 +31,21 @@
 // glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, bias) and
 // glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, n) (where
 // the extension is; n = 1 but for the anisotropic filter); Renderer::draw
-// sends each plane (mipmap_sweep.hpp: facingBatch, probeBatch, addSlant) as
+// sends each plane (mipmap_popping_sweep.hpp: facingBatch, probeBatch, addSlant) as
 // glTexCoord4f(s, t, 0, 1) + glVertex3f, (s, t) the plane's own (x, y) (the
 // slant's (x, -z)), and GL picks the level from their screen derivatives.
-// The slant's reference panel is a GLSL program (mipmap_sweep.hpp: referenceFS,
+// The slant's reference panel is a GLSL program (mipmap_popping_sweep.hpp: referenceFS,
 // 8 x 8 texture2D lookups of level 0 per pixel).  Listings:
 // book_figures/mip_popping_filmstrip.gl.txt, mip_anisotropic.gl.txt;
 // mip_popping_plot.gl.txt draws only the plot (the sweep's renders are
-// mipmap_sweep.hpp's, through Renderer::renderOffscreen).
+// mipmap_popping_sweep.hpp's, through Renderer::renderOffscreen).
 //
 // The distance: the camera's focal length is 256 pixels and the 256-texel
 // texture repeats once per world unit, so at distance d a pixel covers d
-// texels and --distance-log2 x is the LOD (mipmap_math.hpp derives it).
+// texels and --distance-log2 x is the LOD (mipmap_popping_math.hpp derives it).
 //
 // Measured (printed, and on screen), every pass at a fixed size through
-// Renderer::renderOffscreen (mipmap_sweep.hpp): the chain's memory overhead (~1/3);
+// Renderer::renderOffscreen (mipmap_popping_sweep.hpp): the chain's memory overhead (~1/3);
 // the level GL used at the current distance, read back from the coloured
 // levels, next to the analytic LOD; the popping measure of every filter —
 // the largest jump of the probe's mean colour (coloured levels, 32 x 32
@@ -78,9 +78,9 @@
 #include "common/core/scene.hpp"
 #include "common/core/text.hpp"
 #include "common/core/textures.hpp"
-#include "mipmap_math.hpp"
-#include "mipmap_views.hpp"
-#include "mipmap_sweep.hpp"
+#include "mipmap_popping_math.hpp"
+#include "mipmap_popping_views.hpp"
+#include "mipmap_popping_sweep.hpp"
 
 namespace {
 using namespace mipmap;
@@ -191,7 +191,7 @@ class MipmapPopping final : public ts::Scene {
     return kMinLog2 + (p <= span ? p : 2 * span - p);
   }
   using Result = mipmap::views::Result;  // what measure() found (null: not measured yet)
-  // The drawing (mipmap_views.hpp) for the current flags.
+  // The drawing (mipmap_popping_views.hpp) for the current flags.
   mipmap::views::Views views() const { return {look(), levels_, animate_, shownLog2()}; }
   mipmap::Look look() const { return {filter_, aniso_, bias_, texture_, linearLight_, &picture_, camera_}; }
 
@@ -209,7 +209,8 @@ class MipmapPopping final : public ts::Scene {
 ts::Frame MipmapPopping::build(int width, int height, const ts::Measurements& measured) const {
   const Result* m = measured.detailAs<Result>();
   ts::Frame f = ts::layout::blankFrame(width, height);
-  // The planes' (s, t) are their (x, y) or (x, -z): glTexCoord4f(s, t, 0, 1) in Renderer::draw (mipmap_sweep.hpp).
+  // The planes' (s, t) are their (x, y) or (x, -z): glTexCoord4f(s, t, 0, 1) in Renderer::draw
+  // (mipmap_popping_sweep.hpp).
   switch (view_) {
     case kSingle: views().buildSingle(f, m); break;
     case kFilmstrip: views().buildFilmstrip(f, m); break;
@@ -282,4 +283,4 @@ ts::Measurements MipmapPopping::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(MipmapPopping);
+TS_REGISTER_SCENE(MipmapPopping);

@@ -1,7 +1,7 @@
 // Seed 001 ¶25–32, Buss VI intro — several textures on one surface, before
 // and after lighting: alpha cutouts, light maps, gloss maps, AB + CD, the pear.
 //
-// The claims, each measured on GL's own renders (mt_measure.hpp):
+// The claims, each measured on GL's own renders (multitexture_measure.hpp):
 //  - the alpha test (glAlphaFunc(GL_GREATER, 0.5)) discards a cutout tree's
 //    transparent texels, so they write no depth: drawn first, without it they
 //    hide the sky drawn behind them; blending alone hides it too (it needs
@@ -22,13 +22,13 @@
 //   v  view: alpha | lightmap | gloss | abcd     a  animate the spot
 //   s / S  the spot's position (0..11)          (--texture FILE: the base picture)
 //
-// The GL that carries it (Frames, mt_frames.hpp, drawn by common/gl/render.cpp):
+// The GL that carries it (Frames, multitexture_frames.hpp, drawn by common/gl/render.cpp):
 //   glEnable(GL_ALPHA_TEST); glAlphaFunc(GL_GREATER, 0.5f);
 //   glActiveTexture(GL_TEXTURE1); glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
 //   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);     // PREVIOUS x TEXTURE = AB
 //   glBlendFunc(GL_ONE, GL_ONE);                                // + CD, + g i_spec
 //   glBlendFunc(GL_DST_COLOR, GL_ZERO);                         // x B, one unit
-//   AB stored: a texture rendered from a frame of its own (a nested frame, mt_frames.hpp)
+//   AB stored: a texture rendered from a frame of its own (a nested frame, multitexture_frames.hpp)
 //   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE_ADD_ATI);  // t_r t_g + t_d i_diff
 //   glActiveTexture(GL_TEXTURE1); glMatrixMode(GL_TEXTURE); glLoadMatrixf(M1);  // the moving spot
 #include <string>
@@ -40,10 +40,10 @@
 #include "common/core/textures.hpp"
 #include "common/core/user_texture.hpp"
 #include "common/gl/render.hpp"
-#include "mt_gl.hpp"
-#include "mt_math.hpp"
-#include "mt_measure.hpp"
-#include "mt_views.hpp"
+#include "multitexture_gl.hpp"
+#include "multitexture_math.hpp"
+#include "multitexture_measure.hpp"
+#include "multitexture_views.hpp"
 
 namespace {
 using namespace mt;
@@ -157,7 +157,7 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
                     "(orthographic, 5-degree steps): one quad " + M("{single_quad_min_width|%.4f}") + " .. " +
                         M("{single_quad_max_width|%.4f}") + " (|cos|), cross tree " + M("{cross_tree_min_width|%.4f}") +
                         " .. " + M("{cross_tree_max_width|%.4f}") + " (max(|cos|, |sin|) >= " + L::given("cos 45 deg", std::cos(glm::radians(45.0)), "%.4f") + ").");
-    // The cutout passes are the Frames measure() rendered (mt_frames.hpp), drawn in their panels.
+    // The cutout passes are the Frames measure() rendered (multitexture_frames.hpp), drawn in their panels.
     const ts::Image tree = treeTexture();
     for (ts::Panel& p : f.panels)
       for (int k = 0; k < 6; ++k)
@@ -166,7 +166,7 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
               : k < 5 ? frames::edgePanel(f, tree, k == 3 ? kBlend : kAlphaTest, p.id, p.viewport)
                       : frames::crossTreePanel(f, frames::kCrossTurnDeg, p.id, p.viewport);
   } else if (view_ == 1) {
-    // The light-mapped walls and the spot are Frames (mt_frames.hpp); the CPU's picture a generator.
+    // The light-mapped walls and the spot are Frames (multitexture_frames.hpp); the CPU's picture a generator.
     std::vector<views::Picture> ps = {{m->userBase ? m->perPixel : ts::Image(), "per-pixel (CPU)", "base x lighting"}};
     if (!m->userBase) ps[0].texture = ts::multitex::perPixelLitTexture(256);
     for (int k = 0; k < 4; ++k) {
@@ -184,7 +184,7 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
         if (p.id == "picture_" + std::to_string(k))
           p.batches = {frames::lightMapped(f, m->base, m->userBase, k < 5 ? kLightSizes[k - 1] : 0, spot_, kSpotFrames)};
   } else if (view_ == 2) {
-    // The pears are a nested frame (mt_frames.hpp pearsFrame): its picture is GL's render, and the
+    // The pears are a nested frame (multitexture_frames.hpp pearsFrame): its picture is GL's render, and the
     // sidecar holds the frame, so the reference recomputes it (TextureDesc::renderedFrom).
     ts::TextureDesc pears = ts::renderedImageTexture(m->pearsImage, "multitexture", "the pears", "multitexture");
     pears.image = std::make_shared<const ts::Image>(m->pearsImage);  // row 0 the top, as rendered
@@ -205,7 +205,7 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
                         " = " + L::given("the glosses' ratio", 1 / ts::multitex::kGlossLow, "%g") + "), diffuse changed by " + M("{gloss_diffuse_change|%.0f}") +
                         " levels.  The pear: t_d i_diff + t_g t_r, one combine3 stage against two passes: " +
                         M("{pear_combine3_vs_two_passes_max_diff|%.0f}") + " levels apart.");
-    // The plane's passes are Frames (mt_frames.hpp): diffuse; + g i_spec; g i_spec added twice.
+    // The plane's passes are Frames (multitexture_frames.hpp): diffuse; + g i_spec; g i_spec added twice.
     for (ts::Panel& p : f.panels)
       for (int k = 0; k < 3; ++k)
         if (p.id == "picture_" + std::to_string(k)) p = frames::glossPanel(f, m->base, m->userBase, k, p.id, p.viewport);
@@ -225,7 +225,7 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
         1.0f,
         "Multiplying needs the framebuffer (GL_DST_COLOR, GL_ZERO), adding too (GL_ONE, GL_ONE): with one unit, AB must "
         "be stored (a texture rendered first) before CD is made; the sequence A, x B, + C, x D gives (AB + C) D.");
-    // The three GL paths are the Frames measure() rendered (mt_frames.hpp), drawn in their panels.
+    // The three GL paths are the Frames measure() rendered (multitexture_frames.hpp), drawn in their panels.
     for (int k = kMultitexture; k <= kFramebufferOnly; ++k)
       for (ts::Panel& p : f.panels)
         if (p.id == "picture_" + std::to_string(2 + k)) p.batches = frames::abcdBatches(f, t, k, m->abcdAb);
@@ -236,4 +236,4 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
 }
 }  // namespace
 
-TM_REGISTER_SCENE(Multitexture);
+TS_REGISTER_SCENE(Multitexture);

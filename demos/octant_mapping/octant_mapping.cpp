@@ -15,7 +15,7 @@
 // 0.005 texels outside the exact quadrilateral and 0.003 inside the rounded
 // one; unrounded (and over the true curved preimage) the count is 4/17.
 // The seed's misprints are flagged beside the corrected values
-// (octant_seed.hpp) and listed as measurements misprint[...].
+// (octant_mapping_seed.hpp) and listed as measurements misprint[...].
 //
 // Views (v): overview (the octant in 3D with the mouse orbit, the 32 x 32
 // raster enlarged with the chosen pixel, the pixel's preimage on the
@@ -32,13 +32,13 @@
 //   the bottom row, 0..31)
 //
 // What the GL does: the octant is one glBegin(GL_TRIANGLES) of
-// glTexCoord4f(u, w, 0, 1) + glVertex3f per vertex (octant_gl.hpp), the
+// glTexCoord4f(u, w, 0, 1) + glVertex3f per vertex (octant_mapping_gl.hpp), the
 // raster's pixels flat-coloured quads holding the values computed here (so
 // the sidecar has every value), the pattern ts::lineGrid(64, 4) on a unit
 // square.  measure() renders the 32 x 32 raster with GL_NEAREST, trilinear and
 // anisotropic 16x and reads the intensities back.
 //
-// Measured: the worked answers from octant_math.hpp (catmull_fraction,
+// Measured: the worked answers from octant_mapping_math.hpp (catmull_fraction,
 // inverse_fraction, table_xyz[u=1/4,w=1/2].x/.y/.z), and over the raster's
 // 212 pixels whose preimage lies on the octant, the RMS error of each method
 // against the exact area integral (common/core/area_filter.hpp): rms_exact[...],
@@ -54,10 +54,10 @@
 #include "common/core/orbit_camera.hpp"
 #include "common/core/scene.hpp"
 #include "common/gl/render.hpp"
-#include "octant_frames.hpp"  // the five views
-#include "octant_gl.hpp"      // the mesh and the GL renders of the raster
-#include "octant_math.hpp"
-#include "octant_seed.hpp"    // what the seed prints, and its misprints
+#include "octant_mapping_frames.hpp"  // the five views
+#include "octant_mapping_gl.hpp"      // the mesh and the GL renders of the raster
+#include "octant_mapping_math.hpp"
+#include "octant_mapping_seed.hpp"    // what the seed prints, and its misprints
 
 namespace {
 using namespace octant;
@@ -276,7 +276,7 @@ ts::Measurements OctantMapping::measure(ts::Renderer& r) {
   add("inverse_line_texels[unrounded]", exact.lines, "of them on lines");
   add("inverse_texels[curved]", curved.texels, "texel centres whose sphere point lands in the pixel (the true preimage)");
   add("inverse_line_texels[curved]", curved.lines, "of them on lines");
-  // The seed's misprints, each checked (octant_seed.hpp).
+  // The seed's misprints, each checked (octant_mapping_seed.hpp).
   const auto mp = seed::misprints();
   for (const seed::Misprint& m : mp)
     add("misprint[" + m.id + "]", m.value, m.where + ": printed " + m.printed + "; it is " + m.correct);
@@ -323,4 +323,4 @@ ts::Measurements OctantMapping::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(OctantMapping);
+TS_REGISTER_SCENE(OctantMapping);

@@ -8,7 +8,7 @@
 // hidden texel) should give truer colours.  The paper never measures it; this
 // demo does.  A relief plane (bricks with deep mortar, a synthetic step/ridge
 // map, or a flat map) is seen at a grazing angle through parallax occlusion
-// mapping (parallax_gl.hpp) and filtered six ways:
+// mapping (parallax_aniso_gl.hpp) and filtered six ways:
 //   M0 naive, texture() (implicit derivatives of the shifted coordinate: the
 //   artifact), M1 trilinear and M2 hardware anisotropic 16x (textureGrad with
 //   the unshifted gradients; whether the driver's anisotropic filter uses them
@@ -17,7 +17,7 @@
 //   seed's row walk,
 // and compared with R, n x n (--rays; the figures 12 x 12) stratified jittered
 // rays per pixel traced finely on the CPU, weighted by the same Gaussian
-// kernel (parallax_math.hpp).  Printed and written as CSV (parallax_measure.hpp; --csv FILE,
+// kernel (parallax_aniso_math.hpp).  Printed and written as CSV (parallax_aniso_measure.hpp; --csv FILE,
 // make_figures writes parallax_modes.csv): PSNR and SSIM over the whole
 // frame, the high-anisotropy pixels and the occlusion band (footprints that
 // cross an occluding edge), ms per frame, lookups per pixel, the renderer.
@@ -30,12 +30,12 @@
 //   r / R  render width          x  max-height pyramid acceleration
 //   g  gradients M1/M2 give textureGrad: x1 | x4 (does the filter use them?
 //      trilinear blurs; llvmpipe's anisotropic filter does not change)
-// The live view (parallax_live.hpp) draws the mode every frame at the
+// The live view (parallax_aniso_live.hpp) draws the mode every frame at the
 // window's size: M2 there is what "interactive" is measured on (the overlay,
 // h, shows live_ms_per_frame and live_fps).  Flags only: --rays N, --seed,
 // --time N (each mode's median of N frames, for the CSV), --csv FILE.
 //
-// What the GL does (parallax_gl.hpp: ReliefGL::pass, into an FBO): a GLSL
+// What the GL does (parallax_aniso_gl.hpp: ReliefGL::pass, into an FBO): a GLSL
 // program per mode over one glBegin(GL_TRIANGLES) of glVertex2f(±1, ±1), no
 // texture coordinates: the camera comes as glUniform3f (eye, fwd, rightV,
 // upV), each fragment marches its own ray.  M2 is M1 plus ReliefGL::bind's
@@ -61,11 +61,11 @@
 #include "common/core/text.hpp"
 #include "common/core/user_texture.hpp"
 #include "common/core/scene.hpp"
-#include "parallax_measure.hpp"
-#include "parallax_gl.hpp"
-#include "parallax_live.hpp"
-#include "parallax_views.hpp"
-#include "parallax_math.hpp"
+#include "parallax_aniso_measure.hpp"
+#include "parallax_aniso_gl.hpp"
+#include "parallax_aniso_live.hpp"
+#include "parallax_aniso_views.hpp"
+#include "parallax_aniso_math.hpp"
 
 namespace {
 using namespace pax;
@@ -224,7 +224,7 @@ class ParallaxAniso final : public ts::Scene {
   }
 
  private:
-  // The drawing (parallax_views.hpp) for the current flags.
+  // The drawing (parallax_aniso_views.hpp) for the current flags.
   Views views() const { return {map_, mode_, against_, gradients_, compare_, heightScale_, camera()}; }
   Camera camera() const {  // no texture coordinates: it becomes glUniform3f(eye, fwd, rightV, upV) in ReliefGL::pass
     Camera c;
@@ -262,7 +262,7 @@ class ParallaxAniso final : public ts::Scene {
   }
 
   float gradScale() const { return gradients_ ? 4.0f : 1.0f; }
-  // The live view (parallax_live.hpp): the mode drawn at the window's size, timed.
+  // The live view (parallax_aniso_live.hpp): the mode drawn at the window's size, timed.
   ts::Measurements measureLive(ts::Renderer& r, ReliefGL& gl) {
     char state[160];
     std::snprintf(state, sizeof state, "%d %.4f %.3f %d %d %d %d %d %d", map_, heightScale_, angle_, accel_ ? 1 : 0,
@@ -297,4 +297,4 @@ class ParallaxAniso final : public ts::Scene {
 };
 }  // namespace
 
-TM_REGISTER_SCENE(ParallaxAniso);
+TS_REGISTER_SCENE(ParallaxAniso);

@@ -45,14 +45,14 @@
 #include "common/core/textures.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/core/user_texture.hpp"
-#include "perspective_math.hpp"
-#include "perspective_measure.hpp"  // the texel-index comparison, the results and the plot
+#include "perspective_correction_math.hpp"
+#include "perspective_correction_measure.hpp"  // the texel-index comparison, the results and the plot
 
 namespace {
 enum View { kBoth, kAffine, kPerspective, kPlot };
 enum Variant { kAffineVariant, kPerspectiveVariant };
 
-// The measurement's sizes and sweep (perspective_measure.hpp).
+// The measurement's sizes and sweep (perspective_correction_measure.hpp).
 using persp::kMeasureSize, persp::kIndexTexels, persp::kSweepStepDeg, persp::kSweepMaxDeg;
 
 using ts::layout::fmt;
@@ -191,7 +191,7 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
     return f;
   }
   int tex = f.addTexture(checker());
-  // The notes: the hint test, and the measured error against the rule of thumb (perspective_measure.hpp).
+  // The notes: the hint test, and the measured error against the rule of thumb (perspective_correction_measure.hpp).
   const auto notes = persp::notes(s, have ? last : nullptr, measured);
   // Room for the notes under the pictures (at most a third of the height).
   const float margin = 8, noteW = float(width) - 2 * margin;
@@ -243,7 +243,7 @@ PerspectiveCorrection::Pass PerspectiveCorrection::measurePass(ts::Renderer& r, 
   addSquare(p, s, v, tex, false);
   mf.panels.push_back(p);
   ts::Image img = r.renderOffscreen(mf);
-  // Every covered pixel's texel against the ray through it (perspective_measure.hpp).
+  // Every covered pixel's texel against the ray through it (perspective_correction_measure.hpp).
   Pass pass = persp::compare(img, s, v == kAffineVariant);
   if (out) *out = std::move(img);
   return pass;
@@ -299,4 +299,4 @@ ts::Measurements PerspectiveCorrection::measure(ts::Renderer& r) {
 
 }  // namespace
 
-TM_REGISTER_SCENE(PerspectiveCorrection);
+TS_REGISTER_SCENE(PerspectiveCorrection);

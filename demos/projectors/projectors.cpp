@@ -27,9 +27,9 @@
 //   glEnable(GL_TEXTURE_GEN_S) — and T (R, Q); EYE_LINEAR planes are given under
 //   the batch's planeModelview (GL keeps plane·M⁻¹).  The slide adds
 //   glClipPlane(GL_CLIP_PLANE0, Q row).  The solid texture is glTexImage3D, 64³.
-//   Non-linear projectors run per fragment in proj_gl.hpp's GLSL.
+//   Non-linear projectors run per fragment in projectors_gl.hpp's GLSL.
 //
-// Measured from texel-index renders (proj_measure.hpp): columns/rows used and
+// Measured from texel-index renders (projectors_measure.hpp): columns/rows used and
 // mismatches against the corrected formula per axis, the spherical tv at the
 // pole and at 45°, the stretch of box and planar maps, the texel changes of a
 // moving point, the slide against the CPU, the 3D texture's seam and pinch,
@@ -44,16 +44,17 @@
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
 #include "common/gl/render.hpp"
-#include "proj_gl.hpp"
-#include "proj_math.hpp"
-#include "proj_measure.hpp"
-#include "proj_views.hpp"
+#include "projectors_gl.hpp"
+#include "projectors_math.hpp"
+#include "projectors_measure.hpp"
+#include "projectors_pose.hpp"
+#include "projectors_views.hpp"
 
 namespace {
 using namespace proj;
 using ts::layout::fmt;
 using ts::layout::kWhite;
-const char* const* const kAxis = kAxisName;  // "x", "y", "z" (proj_measure.hpp, the measurement names)
+const char* const* const kAxis = kAxisName;  // "x", "y", "z" (projectors_measure.hpp, the measurement names)
 const char* const* const kProj = kProjName;  // "planar" ... "solid"
 const char* const kFormula[] = {"printed", "corrected"};
 const char* const kCoordsName[] = {"cpu", "texgen", "glsl"};
@@ -150,7 +151,7 @@ void Projectors::objectView(ts::Frame& f, int w, int h, const ts::Measurements& 
   const Detail* d = m.detailAs<Detail>();
   const Usage* u = nullptr;
   if (d && d->usage.count(key())) u = &d->usage.at(key());
-  f.panels.push_back(views::usagePanel(right, grid, u, kUsageGrid));
+  f.panels.push_back(views::usagePanel(right, grid, u ? &u->used : nullptr, kUsageGrid));
   const int sc = ts::layout::scaleFor(left, 2);
   std::string what = std::string(kProj[proj_]) + " along " + kAxis[axis_] + ", " + kFormula[formula_] + ", coords " +
                      kCoordsName[int(views::effective(wy))] +
@@ -307,4 +308,4 @@ ts::Measurements Projectors::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(Projectors);
+TS_REGISTER_SCENE(Projectors);

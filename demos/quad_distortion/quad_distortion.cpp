@@ -20,7 +20,7 @@
 // What the GL does: common/gl/render.cpp: Renderer::draw sends the square as
 // one glBegin(GL_TRIANGLES) of six glTexCoord4f(s, t, 0, 1) + glVertex3f
 // (addSquare below), and GL interpolates (s, t) linearly in each triangle.
-// Projective: glTexCoord4f(s·q, t·q, 0, q) from quad_math.hpp's homography,
+// Projective: glTexCoord4f(s·q, t·q, 0, q) from quad_distortion_math.hpp's homography,
 // divided by q per pixel.  Bilinear: a GLSL program, texture2D(tex,
 // mix(bottom, top, ab.y)), the corners sent by glUniform4f.  Listings:
 // book_figures/vi1_quad_distortion.gl.txt, vi1_quad_variants.gl.txt.
@@ -37,9 +37,9 @@
 #include "common/core/text.hpp"
 #include "common/core/textures.hpp"
 #include "common/core/user_texture.hpp"
-#include "quad_math.hpp"
-#include "quad_measure.hpp"  // the kink fitted from a texel-index render
-#include "quad_views.hpp"    // the texture-space view and the corner labels
+#include "quad_distortion_math.hpp"
+#include "quad_distortion_measure.hpp"  // the kink fitted from a texel-index render
+#include "quad_distortion_views.hpp"    // the texture-space view and the corner labels
 
 namespace {
 using quad::Diagonal;
@@ -226,7 +226,7 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
     spec.gap = 16;
     std::vector<L::Cell> cells = L::flow(all, spec);
     ts::Panel left = L::unitPanel("texture_space", cells[0].picture), right = L::unitPanel("screen_space", cells[1].picture);
-    // The texture, the corners' region and the screen diagonal's image (quad_views.hpp; the affine
+    // The texture, the corners' region and the screen diagonal's image (quad_distortion_views.hpp; the affine
     // split's along its first triangle).
     const quad::Split sp = quad::split(corners(), current.diagonal);
     quad::views::addTextureView(left, corners(), current.diagonal, checker, [&](glm::dvec2 q) {
@@ -278,7 +278,7 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
 }
 
 // The measurement: the square drawn again, full-frame, texel (i, j) holding R = i, G = j
-// (GL_NEAREST); the kink fitted from the texels taken either side of the diagonal (quad_measure.hpp).
+// (GL_NEAREST); the kink fitted from the texels taken either side of the diagonal (quad_distortion_measure.hpp).
 double QuadDistortion::measureKink(ts::Renderer& r, Variant v, double* texelError) {
   const int N = 512;  // the same at any figure or window size
   ts::Frame mf;
@@ -313,4 +313,4 @@ ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(QuadDistortion);
+TS_REGISTER_SCENE(QuadDistortion);

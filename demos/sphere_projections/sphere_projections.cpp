@@ -16,17 +16,17 @@
 //
 // What the GL does: each sphere is one glBegin(GL_TRIANGLES) sent by
 // common/gl/render.cpp: Renderer::draw, glTexCoord4f(s, t, 0, 1) + glVertex3f
-// per vertex, (s, t) from sphere_math.hpp's texCoord (Eq. VI.2 or VI.3) at the
+// per vertex, (s, t) from sphere_projections_math.hpp's texCoord (Eq. VI.2 or VI.3) at the
 // grid's corners, interpolated by GL inside each cell; the two spheres differ
 // only in those t (book_figures/vi5_sphere_projections.gl.txt: the first
 // vertices' t = 0.0278 against 0.0019).  Renderer::texture uploads the
 // mipmapped checkerboard (GL_LINEAR_MIPMAP_LINEAR) and makes
 // glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE).
 // vi5_area_ratio.gl.txt draws only the plot; its numbers come from
-// sphere_measure.hpp's texel-index renders (Renderer::renderOffscreen).
+// sphere_projections_measure.hpp's texel-index renders (Renderer::renderOffscreen).
 //
 // Measured, per 20° band of latitude and per mapping: texture area / surface
-// area, normalised to a whole-sphere mean of 1 — analytic (sphere_math.hpp),
+// area, normalised to a whole-sphere mean of 1 — analytic (sphere_projections_math.hpp),
 // exact from the mesh's triangles, and from a render that shows which texel
 // every pixel took; plus the pinch (how much of the texture's width meets
 // within 3 px of a pole) and the texture the pole triangles draw nowhere.
@@ -45,8 +45,8 @@
 #include "common/core/textures.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/core/user_texture.hpp"
-#include "sphere_math.hpp"
-#include "sphere_measure.hpp"  // the band ratios and the pinch, from a texel-index render
+#include "sphere_projections_math.hpp"
+#include "sphere_projections_measure.hpp"  // the band ratios and the pinch, from a texel-index render
 
 namespace {
 using sphere::Mapping;
@@ -236,7 +236,7 @@ ts::Frame SphereProjections::build(int width, int height, const ts::Measurements
 // ---------------------------------------------------------------------------
 // The measurement: each band's region drawn face-on with a texel-index
 // texture, its surface area summed from the pixels that took its texels
-// (sphere_measure.hpp), against its texture area.
+// (sphere_projections_measure.hpp), against its texture area.
 
 ts::Measurements SphereProjections::measure(ts::Renderer& r) {
   ts::Measurements out;
@@ -263,4 +263,4 @@ ts::Measurements SphereProjections::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(SphereProjections);
+TS_REGISTER_SCENE(SphereProjections);

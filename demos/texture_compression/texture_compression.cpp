@@ -7,7 +7,7 @@
 // and "bad for normal maps".  Texture memory is also managed: tiles are
 // cached, and a clipmap keeps only a window of each large level.
 //
-// The mapping equation of the codec (dxt_math.hpp, the encoder and decoder
+// The mapping equation of the codec (texture_compression_math.hpp, the encoder and decoder
 // written out): per block, c0 > c1 gives c2 = (2 c0 + c1)/3, c3 = (c0 + 2 c1)/3;
 // c0 <= c1 gives the 3-colour mode, c2 = (c0 + c1)/2 and c3 = black (seed
 // 001 leaves it out; key 3 shows it); each texel = palette[its 2 bits].
@@ -19,7 +19,7 @@
 //   --texture FILE  your picture, compressed (sides not multiples of 4 are
 //                   padded by repeating the last row and column, as the format needs)
 //
-// What the GL does (dxt_gl.hpp; the listing's first section):
+// What the GL does (texture_compression_gl.hpp; the listing's first section):
 //   glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, 512, 512, 0, 131072, blocks);
 //   glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED_IMAGE_SIZE, &size);
 //   glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);   // GL's decode, shown
@@ -41,10 +41,10 @@
 #include "common/core/scene.hpp"
 #include "common/gl/gl_listing.hpp"
 #include "common/gl/render.hpp"
-#include "dxt_gl.hpp"
-#include "dxt_math.hpp"
-#include "dxt_measure.hpp"
-#include "dxt_views.hpp"
+#include "texture_compression_gl.hpp"
+#include "texture_compression_math.hpp"
+#include "texture_compression_measure.hpp"
+#include "texture_compression_views.hpp"
 
 namespace {
 using namespace dxt;
@@ -56,10 +56,10 @@ class TextureCompression final : public ts::Scene {
   std::string title() const override { return "Seed 001 - texture memory: DXT1 compression, caching, clipmaps"; }
   std::string about() const override {
     return "A 512 x 512 picture (a photograph-like brick texture, a checkerboard, a normal map) compressed to DXT1 by\n"
-           "the encoder in dxt_math.hpp, uploaded with glCompressedTexImage2D and decoded by GL.  Prints the\n"
-           "compressed size (131,072 bytes: a 256 x 256 texture's at 16 bits), 4 bits per texel, at most 4 colours\n"
-           "per block, GL's decode against the CPU's, PSNR, the normal map's angle error, DXT1 512 against RGB565\n"
-           "256 at equal memory, an LRU tile cache's hit rate with and without prefetching, and a clipmap's size.";
+           "the encoder in texture_compression_math.hpp, uploaded with glCompressedTexImage2D and decoded by GL.\n"
+           "Prints the compressed size (131,072 bytes: a 256 x 256 texture's at 16 bits), 4 bits per texel, at most\n"
+           "4 colours per block, GL's decode against the CPU's, PSNR, the normal map's angle error, DXT1 512 against\n"
+           "RGB565 256 at equal memory, an LRU tile cache's hit rate with and without prefetching, and a clipmap's size.";
   }
   int defaultWidth() const override { return 1280; }
   int defaultHeight() const override { return 440; }
@@ -234,4 +234,4 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(TextureCompression);
+TS_REGISTER_SCENE(TextureCompression);

@@ -304,4 +304,4 @@ ts::Measurements Torus::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(Torus);
+TS_REGISTER_SCENE(Torus);

@@ -3,7 +3,7 @@
 //
 // The claim: outside the unit square, what a texture shows is one
 // glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S/T, mode) call, and each
-// mode is a formula on the texel index (wrap_math.hpp, from the spec's table
+// mode is a formula on the texel index (wrap_modes_math.hpp, from the spec's table
 // 8.20): GL_REPEAT i mod N; GL_MIRRORED_REPEAT (N-1) - mirror((i mod 2N) - N);
 // GL_CLAMP_TO_EDGE clamp(i, 0, N-1); GL_CLAMP_TO_BORDER clamp(i, -1, N) with
 // the border colour outside; GL_CLAMP clamps s to [0,1], and GL_LINEAR then
@@ -31,7 +31,7 @@
 // What the GL does, all in common/gl/render.cpp: Renderer::texture makes the
 // glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S/T, mode) and
 // GL_TEXTURE_BORDER_COLOR calls; Renderer::draw sends each quad
-// (wrap_gl.hpp: stQuad) as glTexCoord4f(s, t, 0, 1) + glVertex3f, s and
+// (wrap_modes_gl.hpp: stQuad) as glTexCoord4f(s, t, 0, 1) + glVertex3f, s and
 // t from -range to 1 + range, loads a batch's texture matrix around it, and
 // makes glTexEnvi (with glTexEnvfv(GL_TEXTURE_ENV_COLOR) for GL_BLEND; for
 // the separate specular glEnable(GL_COLOR_SUM) and glSecondaryColor3f per
@@ -47,7 +47,7 @@
 // formula; the texel under probe points with the texture matrix on; each
 // texture environment on a grid of fragment colours x texels x alphas
 // against the table; the highlight's peak with and without
-// GL_SEPARATE_SPECULAR_COLOR.  The passes are in wrap_gl.hpp.
+// GL_SEPARATE_SPECULAR_COLOR.  The passes are in wrap_modes_gl.hpp.
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -58,12 +58,12 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
-#include "wrap_math.hpp"
-#include "wrap_gl.hpp"
-#include "wrap_views.hpp"  // the texture-space panel and the env view's lit planes
+#include "wrap_modes_math.hpp"
+#include "wrap_modes_gl.hpp"
+#include "wrap_modes_views.hpp"  // the texture-space panel and the env view's lit planes
 
 namespace {
-using wrap::kModes, wrap::kModeNames, wrap::kModeGL;  // the five wrap modes (wrap_math.hpp)
+using wrap::kModes, wrap::kModeNames, wrap::kModeGL;  // the five wrap modes (wrap_modes_math.hpp)
 const glm::vec4 kBorderColour{0.85f, 0.1f, 0.75f, 1.0f};
 const glm::vec4 &kWhite = ts::layout::kWhite, &kMeasured = ts::layout::kAmber;
 using ts::layout::fmt, wrap::stQuad;
@@ -149,7 +149,7 @@ class WrapModes final : public ts::Scene {
     x.scale.y = x.scale.x;
     return wrap::textureMatrix(x);
   }
-  // The environment view (wrap_views.hpp): a plane lit per vertex under the RGBA texture in each mode; separate_
+  // The environment view (wrap_modes_views.hpp): a plane lit per vertex under the RGBA texture in each mode; separate_
   // sends the specular as the secondary colour (GL_COLOR_SUM), else it is in the primary colour.
   ts::Frame envFrame(int width, int height, const Found* found) const {
     // GL_DECAL's texture has an alpha ramp (its alpha is the fragment's: the picture stays opaque); the others'
@@ -260,7 +260,8 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
   return f;
 }
 
-// Measured in small offscreen passes (wrap_gl.hpp), each read back and compared with wrap_math.hpp's formulas.
+// Measured in small offscreen passes (wrap_modes_gl.hpp), each read back and compared with
+// wrap_modes_math.hpp's formulas.
 ts::Measurements WrapModes::measure(ts::Renderer& r) {
   ts::Measurements out;
   Found found;
@@ -314,4 +315,4 @@ ts::Measurements WrapModes::measure(ts::Renderer& r) {
 }
 }  // namespace
 
-TM_REGISTER_SCENE(WrapModes);
+TS_REGISTER_SCENE(WrapModes);

@@ -72,7 +72,7 @@ class Args {
 
 // The default flags of both programs: five repetitions of at least 0.2 s
 // each (one iteration when it takes longer), aggregates only.
-#define TM_BENCH_DEFAULT_FLAGS \
+#define TS_BENCH_DEFAULT_FLAGS \
   "--benchmark_repetitions=5", "--benchmark_report_aggregates_only=true", "--benchmark_min_time=0.2"
 
 // An extra aggregate beside mean/median/stddev/cv: on a shared machine the
@@ -189,7 +189,7 @@ inline void printErrors(const SummaryReporter& rep) {
 
 // Runs the registered benchmarks with the summary reporter; returns main()'s status.
 inline int run(int argc, char** argv, const std::function<void(const SummaryReporter&)>& summary) {
-  Args args(argc, argv, {TM_BENCH_DEFAULT_FLAGS});
+  Args args(argc, argv, {TS_BENCH_DEFAULT_FLAGS});
   benchmark::Initialize(args.argc(), args.argv());
   if (benchmark::ReportUnrecognizedArguments(*args.argc(), args.argv())) return 2;
   SummaryReporter rep;

@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
                         {"jitter/jitter_pixel", Mode::JitterPixel, Average::Accum}};
   for (const Case& c : cases)
     benchmark::RegisterBenchmark(c.name, benchMode, c.m, c.a)->Unit(benchmark::kMillisecond)->UseRealTime();
-  ts::bench::Args args(argc, argv, {TM_BENCH_DEFAULT_FLAGS});
+  ts::bench::Args args(argc, argv, {TS_BENCH_DEFAULT_FLAGS});
   benchmark::Initialize(args.argc(), args.argv());
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

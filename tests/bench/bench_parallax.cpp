@@ -29,8 +29,8 @@
 #include "bench_common.hpp"
 #include "common/gl/context.hpp"
 #include "common/gl/render.hpp"
-#include "demos/parallax_aniso/parallax_gl.hpp"
-#include "demos/parallax_aniso/parallax_math.hpp"
+#include "demos/parallax_aniso/parallax_aniso_gl.hpp"
+#include "demos/parallax_aniso/parallax_aniso_math.hpp"
 
 namespace {
 struct Rig {

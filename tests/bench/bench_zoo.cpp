@@ -23,7 +23,7 @@
 
 #include "bench_common.hpp"
 #include "common/core/layout.hpp"
-#include "demos/filter_zoo/zoo_math.hpp"
+#include "demos/filter_zoo/filter_zoo_math.hpp"
 
 namespace {
 using namespace zoo;

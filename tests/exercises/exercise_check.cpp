@@ -17,8 +17,8 @@
 // reported in one line, and the next one runs.  Exit status: 0 when every
 // check passes, 1 when one fails, 2 on bad usage.
 //
-// The reference solutions are the demos' (cylinder_math.hpp's back seam,
-// torus_math.hpp's front mapping, wrap_math.hpp's GL formulas), never in
+// The reference solutions are the demos' (cylinder_seam_math.hpp's back seam,
+// torus_math.hpp's front mapping, wrap_modes_math.hpp's GL formulas), never in
 // exercises/.
 #ifdef _WIN32
 #include <io.h>

@@ -19,10 +19,10 @@
 #include "common/core/textures.hpp"
 #include "common/gl/render.hpp"
 #include "common/core/torus.hpp"
-#include "demos/bump_mapping/bump_math.hpp"
-#include "demos/cylinder_seam/cylinder_measure.hpp"
+#include "demos/bump_mapping/bump_mapping_math.hpp"
+#include "demos/cylinder_seam/cylinder_seam_measure.hpp"
 #include "demos/torus/torus_measure.hpp"
-#include "demos/wrap_modes/wrap_math.hpp"
+#include "demos/wrap_modes/wrap_modes_math.hpp"
 #include "exercises/exercise.hpp"
 #include "reference/raster.hpp"
 
@@ -85,7 +85,7 @@ ts::Image meshPicture(ts::Renderer& r, const ts::Mesh& mesh, const ts::TextureDe
   return r.renderOffscreen(f);
 }
 
-// Exercise VI.1: cylinder_seam's measurement (cylinder_measure.hpp) of a
+// Exercise VI.1: cylinder_seam's measurement (cylinder_seam_measure.hpp) of a
 // cylinder whose columns get the checked s, at 6 and 10 slices (a patch
 // centred on θ = 180° in both).
 bool checkBackSeam(const Functions& fn, ts::Renderer& r, const std::string& picture) {
@@ -654,11 +654,11 @@ Functions reference(Impl impl) {
     case Impl::Mine:
       break;
     case Impl::Solution:
-      // cylinder_math.hpp: Exercise VI.1 adds 1/2 (Seam::Back); GL_REPEAT does the rest.
+      // cylinder_seam_math.hpp: Exercise VI.1 adds 1/2 (Seam::Back); GL_REPEAT does the rest.
       f.cylinderS = [](double th) { return th / 360.0 + 0.5; };
       // torus_math.hpp: the front mapping adds offset(Mapping::Front) = (1/2, 1/2).
       f.torusST = [](double th, double ph) { return glm::dvec2(th, ph) / 360.0 + torus::offset(torus::Mapping::Front); };
-      // wrap_math.hpp: GL_NEAREST's texel at s = (x + 1/2) / w, t = (y + 1/2) / h.
+      // wrap_modes_math.hpp: GL_NEAREST's texel at s = (x + 1/2) / w, t = (y + 1/2) / h.
       f.blit = [](const ts::Image& t, int w, int h) {
         ts::Image out(w, h);
         for (int y = 0; y < h; ++y)
@@ -692,7 +692,7 @@ Functions reference(Impl impl) {
         const double m = 2.0 * std::sqrt(rf.x * rf.x + rf.y * rf.y + (rf.z + 1) * (rf.z + 1));
         return glm::dvec2(rf.x / m + 0.5, rf.y / m + 0.5);
       };
-      // bump_gl.hpp's B1: P_s, P_t from the central differences, then seed 004's (Blinn's) form.
+      // bump_mapping_gl.hpp's B1: P_s, P_t from the central differences, then seed 004's (Blinn's) form.
       f.bumpNormal = [](glm::dvec3 Qs, glm::dvec3 Qt, double gx, double gy, double ds, double dt, double scale) {
         const double Ps = scale * gx / (2 * ds), Pt = scale * gy / (2 * dt);
         const glm::dvec3 nv = glm::cross(Qs, Qt);

@@ -21,9 +21,9 @@
 #include <tuple>
 
 #include "common/core/image.hpp"
-#include "demos/bump_mapping/bump_gl.hpp"
-#include "demos/bump_mapping/bump_math.hpp"
-#include "demos/bump_mapping/bump_measure.hpp"
+#include "demos/bump_mapping/bump_mapping_gl.hpp"
+#include "demos/bump_mapping/bump_mapping_math.hpp"
+#include "demos/bump_mapping/bump_mapping_measure.hpp"
 #include "common/core/layout.hpp"
 #include "tests/support/scene_test.hpp"
 
@@ -246,8 +246,8 @@ TEST(BumpMapping, NormalMapBakesTheSlope) {
   EXPECT_NEAR(c.b / 255.0, 0.5 + 0.5 * want.z, 1.0 / 255);
 }
 
-// The shader's numbers come from the method table (bump_methods.hpp) and the
-// material (bump_gl.hpp): the text GL compiles holds the numbers, no name is
+// The shader's numbers come from the method table (bump_mapping_methods.hpp) and the
+// material (bump_mapping_gl.hpp): the text GL compiles holds the numbers, no name is
 // left over, and each method's branch tests its own shader id.
 TEST(BumpMapping, ShaderTextTakesItsNumbersFromTheTable) {
   const ts::Program p = bump::meshProgram();

@@ -1,7 +1,7 @@
 // tests/figures/fig_cylinder_seam_test.cpp — Figures VI.3, VI.4 and Exercise
 // VI.1 (demos/cylinder_seam): the label on the cylinder and the patch across
 // the seam, checked from renders against the mathematics in
-// demos/cylinder_seam/cylinder_math.hpp, never against a stored image.
+// demos/cylinder_seam/cylinder_seam_math.hpp, never against a stored image.
 //
 // Tolerances.  The demo's measurement reads s from a texel-index texture of
 // N = 2048 texels (GL_NEAREST): each pixel's s is the centre of the texel it
@@ -27,7 +27,7 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
-#include "demos/cylinder_seam/cylinder_math.hpp"
+#include "demos/cylinder_seam/cylinder_seam_math.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 

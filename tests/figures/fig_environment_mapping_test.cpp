@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "common/core/layout.hpp"
-#include "demos/environment_mapping/env_studies.hpp"
-#include "demos/environment_mapping/env_math.hpp"
+#include "demos/environment_mapping/environment_mapping_studies.hpp"
+#include "demos/environment_mapping/environment_mapping_math.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
@@ -161,7 +161,7 @@ TEST(EnvironmentMapping, FlatMirrorCannotReflectWhatIsNear) {
   EXPECT_LT(v("error_mean_deg[" + key("cube", "mirror", "vertex") + "]"), v("error_mean_deg[" + key("cube", "sphere", "vertex") + "]") / 10);
 }
 
-// The fixed-function texgen computes what the shaders and env_math.hpp say
+// The fixed-function texgen computes what the shaders and environment_mapping_math.hpp say
 // it does: on the flat mirror (r nearly linear across each triangle) the
 // GL's GL_REFLECTION_MAP (through the texture matrix into the world) and
 // GL_SPHERE_MAP per vertex land within a tenth of a degree of the GLSL

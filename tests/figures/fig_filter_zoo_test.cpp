@@ -16,9 +16,9 @@
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
 #include "common/gl/render.hpp"
-#include "demos/filter_zoo/zoo_math.hpp"
-#include "demos/filter_zoo/zoo_measure.hpp"
-#include "demos/filter_zoo/zoo_views.hpp"
+#include "demos/filter_zoo/filter_zoo_math.hpp"
+#include "demos/filter_zoo/filter_zoo_measure.hpp"
+#include "demos/filter_zoo/filter_zoo_views.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 

@@ -266,9 +266,9 @@ std::string checkCall(const std::string& raw) {
   s.erase(0, s.find_first_not_of(" \n\t"));
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
   static const std::set<std::string> functions = {
-#define TM_GL_NAME(name) #name,
-      TM_GL_FUNCTIONS(TM_GL_NAME)
-#undef TM_GL_NAME
+#define TS_GL_NAME(name) #name,
+      TS_GL_FUNCTIONS(TS_GL_NAME)
+#undef TS_GL_NAME
   };
   size_t open = s.find('(');
   if (open == std::string::npos || s.back() != ')') return "not a call";

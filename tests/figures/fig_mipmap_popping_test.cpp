@@ -1,6 +1,6 @@
 // tests/figures/fig_mipmap_popping_test.cpp — Section VI.1.3 (mipmapping and
 // popping), rendered offscreen and checked against the mathematics of
-// demos/mipmap_popping/mipmap_math.hpp, never against a stored image:
+// demos/mipmap_popping/mipmap_popping_math.hpp, never against a stored image:
 //   * the mip chain GL samples is the book's 2x2 average and costs ~1/3;
 //   * with coloured levels, the level GL used at every probe is the level the
 //     analytic derivatives give (GL 4.6 §8.14), allowing the neighbouring
@@ -31,8 +31,8 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
-#include "demos/mipmap_popping/mipmap_math.hpp"
-#include "demos/mipmap_popping/mipmap_sweep.hpp"
+#include "demos/mipmap_popping/mipmap_popping_math.hpp"
+#include "demos/mipmap_popping/mipmap_popping_sweep.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 
@@ -177,7 +177,7 @@ TEST(MipmapPopping, LinearLightAveragesAreBrighter) {
 
 // ---------------------------------------------------------------------------
 // The facing plane at many distances (1/32 level apart, LOD -1 .. 7.5) and
-// three LOD biases: the LOD from the analytic derivatives (mipmap_math.hpp:
+// three LOD biases: the LOD from the analytic derivatives (mipmap_popping_math.hpp:
 // planeAt, the ray-plane Jacobian, not the closed form) against the level
 // whose colour every pixel of the 32 x 32 probe shows.
 struct SweepCheck {

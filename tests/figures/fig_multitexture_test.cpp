@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "demos/multitexture/mt_math.hpp"
+#include "demos/multitexture/multitexture_math.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {

@@ -35,9 +35,9 @@
 #include <string>
 #include <vector>
 
-#include "demos/parallax_aniso/parallax_measure.hpp"
-#include "demos/parallax_aniso/parallax_gl.hpp"
-#include "demos/parallax_aniso/parallax_math.hpp"
+#include "demos/parallax_aniso/parallax_aniso_measure.hpp"
+#include "demos/parallax_aniso/parallax_aniso_gl.hpp"
+#include "demos/parallax_aniso/parallax_aniso_math.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 

@@ -1,6 +1,6 @@
 // tests/figures/fig_perspective_correction_test.cpp — Figure VI.2 (hyperbolic
 // interpolation), rendered offscreen and probed against the mathematics of
-// demos/perspective_correction/perspective_math.hpp, never against a stored
+// demos/perspective_correction/perspective_correction_math.hpp, never against a stored
 // image:
 //   * perspective panel: (s,t) of the ray through the pixel centre meeting
 //     the plane (ray-plane intersection);
@@ -25,7 +25,7 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
-#include "demos/perspective_correction/perspective_math.hpp"
+#include "demos/perspective_correction/perspective_correction_math.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 
@@ -105,7 +105,7 @@ BookView renderBook(double tilt, double distance) {
 // Claim (precondition): the book view shows the 256-texel, 8-check
 // checkerboard in two panels, left made from CPU-projected vertices with
 // w = 1 and identity matrices, right through GL's projection of the plane
-// (the matrices of perspective_math.hpp) under GL_NICEST.
+// (the matrices of perspective_correction_math.hpp) under GL_NICEST.
 TEST(VI2, BookViewIsTheTwoVariantsOfOneSquare) {
   BookView b = renderBook(60, 1.5);
   const ts::Panel &a = panelOf(b.frame, "affine"), &p = panelOf(b.frame, "perspective");

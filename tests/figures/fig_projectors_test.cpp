@@ -2,7 +2,7 @@
 // as printed against corrected, box mapping's stretch, glTexGen OBJECT_LINEAR
 // against EYE_LINEAR, the slide projector, the solid texture, the cube.
 // Every number the demo prints comes from texel-index renders; here each is
-// held against its closed form computed independently (proj_math.hpp's
+// held against its closed form computed independently (projectors_math.hpp's
 // formulas or the trigonometry of the wraps' definitions), with a tolerance from the
 // texel size of the render that measured it.
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 
 #include "common/core/frame.hpp"
 #include "common/core/scene.hpp"
-#include "demos/projectors/proj_math.hpp"
+#include "demos/projectors/projectors_math.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 
@@ -128,7 +128,7 @@ TEST(Projectors, SolidTextureHasNoSeamAndNoPinch) {
 
 // Seed 002's Task 2 and Buss's cube: 24 vertices give 6 faces reading the
 // unit square, not mirrored; 8 shared vertices ((x+1)/2, (y+1)/2) give one
-// (+Z), four smeared (±X, ±Y) and one mirrored (-Z) — as proj_math.hpp's
+// (+Z), four smeared (±X, ±Y) and one mirrored (-Z) — as projectors_math.hpp's
 // signed areas say.
 TEST(Projectors, CubeNeeds24Vertices) {
   EXPECT_EQ(v("cube24_good_faces"), 6.0);

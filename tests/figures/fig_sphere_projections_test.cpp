@@ -2,7 +2,7 @@
 // projections): the formulas, the area ratio by latitude band (analytic,
 // from the mesh, measured from a render), the pinch at the poles, and the
 // pictures, checked against the mathematics of
-// demos/sphere_projections/sphere_math.hpp — never against a stored image.
+// demos/sphere_projections/sphere_projections_math.hpp — never against a stored image.
 //
 // Tolerances:
 //  * mesh vs analytic: the mesh's flat cells are inscribed in the sphere;
@@ -35,7 +35,7 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
-#include "demos/sphere_projections/sphere_math.hpp"
+#include "demos/sphere_projections/sphere_projections_math.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 
@@ -128,7 +128,7 @@ TEST(VI5, FormulasAtKnownPoints) {
   }
 }
 
-// Claim (the derivation in sphere_math.hpp): the analytic ratio is the
+// Claim (the derivation in sphere_projections_math.hpp): the analytic ratio is the
 // Jacobian of (θ, φ) -> (s, t) over the sphere's area element cos φ,
 // normalised by 4π: checked against finite differences of the formulas, the
 // band values against a numerical integral, and the whole-sphere mean is 1.

@@ -1,7 +1,7 @@
 // tests/figures/fig_texture_compression_test.cpp — seed 001's texture-memory
 // claims (demos/texture_compression): DXT1's size and ratios, its blocks'
 // colours, GL's decode against the suite's, and the memory numbers, each
-// against a value computed here; and the codec (dxt_math.hpp) on blocks
+// against a value computed here; and the codec (texture_compression_math.hpp) on blocks
 // whose answer is known.
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 #include <string>
 #include <unistd.h>
 
-#include "demos/texture_compression/dxt_math.hpp"
-#include "demos/texture_compression/dxt_measure.hpp"
-#include "demos/texture_compression/dxt_views.hpp"
+#include "demos/texture_compression/texture_compression_math.hpp"
+#include "demos/texture_compression/texture_compression_measure.hpp"
+#include "demos/texture_compression/texture_compression_views.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
@@ -95,7 +95,7 @@ TEST_F(TextureCompressionFigure, SizeAndRatios) {
 }
 
 // Claim: a decoded block holds at most 4 colours, and GL decodes the
-// suite's blocks as dxt_math.hpp does, within one 8-bit level (the
+// suite's blocks as texture_compression_math.hpp does, within one 8-bit level (the
 // specification leaves the 2:1 mixes' rounding to the implementation).
 TEST_F(TextureCompressionFigure, BlocksAndGlDecode) {
   EXPECT_LE(value(ms, "dxt1_max_colours_per_block"), 4.0);

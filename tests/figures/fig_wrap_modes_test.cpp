@@ -1,6 +1,6 @@
 // tests/figures/fig_wrap_modes_test.cpp — demos/wrap_modes: the wrap modes,
 // the texture matrix and the texture environment, checked from renders
-// against the formulas of demos/wrap_modes/wrap_math.hpp, never against a
+// against the formulas of demos/wrap_modes/wrap_modes_math.hpp, never against a
 // stored image.
 //
 // Tolerances.  Texel-index renders are exact (GL_NEAREST, pixel centres a
@@ -17,7 +17,7 @@
 
 #include "common/core/image.hpp"
 #include "common/core/textures.hpp"
-#include "demos/wrap_modes/wrap_math.hpp"
+#include "demos/wrap_modes/wrap_modes_math.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {

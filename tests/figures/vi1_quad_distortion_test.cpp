@@ -1,7 +1,7 @@
 // tests/figures/vi1_quad_distortion_test.cpp — Figure VI.1 (quad distortion),
 // rendered offscreen and checked the way conformance suites check pictures:
 // probe pixels whose correct colour is known from the mathematics
-// (demos/quad_distortion/quad_math.hpp) with a tolerance from the channel
+// (demos/quad_distortion/quad_distortion_math.hpp) with a tolerance from the channel
 // bits, never against a stored image.
 //
 // Geometry used throughout: in a panel (viewport in image pixels, top-left
@@ -28,7 +28,7 @@
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
-#include "demos/quad_distortion/quad_math.hpp"
+#include "demos/quad_distortion/quad_distortion_math.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 

@@ -17,7 +17,7 @@
 #include <cmath>
 #include <functional>
 
-#include "demos/multitexture/mt_frames.hpp"
+#include "demos/multitexture/multitexture_frames.hpp"
 #include "oracle_support.hpp"
 #include "reference/reference.hpp"
 
@@ -414,7 +414,7 @@ TEST(GLSecondUnit, OwnCoordinatesAndASecondPassThroughLequal) {
   EXPECT_GT(bad.differing, 128L * 128L / 2) << "described with GL_LESS";
 }
 
-// The pear of the gloss_map figure (demos/multitexture mt_frames.hpp
+// The pear of the gloss_map figure (demos/multitexture multitexture_frames.hpp
 // pearPanel): a lathe mesh, front and back faces, the depth test on with
 // GL_LEQUAL, unit 1 on its own coordinates; in one pass (GL_MODULATE_ADD_ATI:
 // t_r x PREVIOUS's alpha + PREVIOUS) and in two (the second added, GL_ONE,

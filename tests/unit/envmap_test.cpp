@@ -1,4 +1,4 @@
-// tests/unit/envmap_test.cpp — demos/environment_mapping/env_math.hpp and common/core/env_maps: the
+// tests/unit/envmap_test.cpp — demos/environment_mapping/environment_mapping_math.hpp and common/core/env_maps: the
 // four parameterizations, the world and the solid-angle integrals, on the
 // CPU.  Every check is a relation (a map and its inverse, one convention
 // against another, analytic against numeric), never a stored number.
@@ -8,7 +8,7 @@
 #include <random>
 
 #include "common/core/error.hpp"
-#include "demos/environment_mapping/env_math.hpp"
+#include "demos/environment_mapping/environment_mapping_math.hpp"
 
 namespace {
 using namespace envmap;

@@ -207,16 +207,16 @@ TEST(GlRecord, EndingARecordingRestoresEveryPointer) {
   ts::test::context();
   std::vector<void*> before, during, after;
 #define TS_TAKE(name) before.push_back(reinterpret_cast<void*>(ts::gl::p_##name));
-  TM_GL_FUNCTIONS(TS_TAKE)
+  TS_GL_FUNCTIONS(TS_TAKE)
 #undef TS_TAKE
   {
     ts::gl::Recording rec;
 #define TS_TAKE(name) during.push_back(reinterpret_cast<void*>(ts::gl::p_##name));
-    TM_GL_FUNCTIONS(TS_TAKE)
+    TS_GL_FUNCTIONS(TS_TAKE)
 #undef TS_TAKE
   }
 #define TS_TAKE(name) after.push_back(reinterpret_cast<void*>(ts::gl::p_##name));
-  TM_GL_FUNCTIONS(TS_TAKE)
+  TS_GL_FUNCTIONS(TS_TAKE)
 #undef TS_TAKE
   EXPECT_EQ(before, after);
   size_t swapped = 0;

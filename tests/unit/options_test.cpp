@@ -314,8 +314,8 @@ TEST(Options, QuadDistortionCornersAreValidated) {
 }
 
 // Claim: corners that do not form a convex quadrilateral are refused too.
-// KNOWN BUG (demos/quad_distortion/quad_math.hpp, parseCorners): only collinear triples are rejected, so a bow-tie ("0,0 1,0 0,1
-// 1,1") or a concave quad ("0,0 1,0 0.2,0.2 0,1") is accepted; the
+// KNOWN BUG (demos/quad_distortion/quad_distortion_math.hpp, parseCorners): only collinear triples are
+// rejected, so a bow-tie ("0,0 1,0 0,1 1,1") or a concave quad ("0,0 1,0 0.2,0.2 0,1") is accepted; the
 // homography's q then changes sign inside the square and the projective
 // variant is garbage (measured: kink_deg[projective] = 135 deg for the
 // bow-tie, texel_error_max[projective] = 1024 for the concave quad), so the

@@ -1,5 +1,5 @@
 // tests/unit/projectors_test.cpp — the closed forms of demos/projectors
-// (proj_math.hpp): seed 002's wraps as printed against corrected, box
+// (projectors_math.hpp): seed 002's wraps as printed against corrected, box
 // mapping's stretch, the slide projector's planes, the cube's vertices.
 // Expected values are computed here independently (by hand or with the
 // library's trigonometry on the numbers the demo prints).  No GL.
@@ -11,7 +11,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "demos/projectors/proj_math.hpp"
+#include "demos/projectors/projectors_math.hpp"
 
 namespace {
 using proj::Axis;

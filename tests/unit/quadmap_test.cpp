@@ -1,12 +1,12 @@
 // tests/unit/quadmap_test.cpp — the mathematics of Figure VI.1
-// (demos/quad_distortion/quad_math.hpp), checked against values derived by
+// (demos/quad_distortion/quad_distortion_math.hpp), checked against values derived by
 // hand and against each other.  No GL.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "demos/quad_distortion/quad_math.hpp"
+#include "demos/quad_distortion/quad_distortion_math.hpp"
 
 namespace {
 using quad::Corners;

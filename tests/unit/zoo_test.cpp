@@ -1,5 +1,5 @@
 // tests/unit/zoo_test.cpp — the filter zoo's mathematics
-// (demos/filter_zoo/zoo_math.hpp) without GL: every closed form the zoo draws
+// (demos/filter_zoo/filter_zoo_math.hpp) without GL: every closed form the zoo draws
 // against a computation of this test's own, exactly, and the orderings of
 // the CPU methods against the exact area integral with their margins.
 // The GL methods' numbers are the figure test's (tests/figures/fig_filter_zoo_test.cpp).
@@ -10,7 +10,7 @@
 #include <memory>
 #include <random>
 
-#include "demos/filter_zoo/zoo_math.hpp"
+#include "demos/filter_zoo/filter_zoo_math.hpp"
 
 namespace {
 using namespace zoo;
