@@ -69,8 +69,7 @@ GLFWwindow* openWindow(Scene& scene, const CommonFlags& flags, int width, int he
 void printGreeting(const Scene& scene, const Options& opts, const WindowContext& ctx) {
   std::printf("%s | %s\nkeys: %s  h: side panel  l: OpenGL calls  ?/F1: help  F12: save  Backspace: reset  "
               "arrows: turn/tilt  esc/q: quit\n",
-              scene.title().c_str(),
-              ctx.describe().c_str(), opts.keysText().c_str());
+              scene.title().c_str(), ctx.describe().c_str(), opts.keysText().c_str());
 }
 
 // Closes in the order the parts depend on: the worker stops, the renderer's
@@ -92,14 +91,15 @@ void closeWindow(GLFWwindow* win, std::unique_ptr<Renderer>& renderer, std::uniq
 }  // namespace window_parts
 
 int runWindow(Scene& scene, Options& opts, const CommonFlags& flags, int width, int height) {
-  using namespace window_parts;  // window_parts.hpp
+  using namespace window_parts;  // the parts in window_parts.hpp
+
   GLFWwindow* win = openWindow(scene, flags, width, height);  // the window and its GL context
   Input input;
   connectInput(win, flags, &input);  // keys, mouse, dropped files; --keys, TS_TEST_MOUSE
   GLuint fontTex = startImGui(win);  // the overlay's Dear ImGui and its font texture
   WindowContext ctx(win);
   auto renderer = std::make_unique<Renderer>(ctx);  // destroyed before the window, by closeWindow
-  printGreeting(scene, opts, ctx);  // the demo, its GL and its keys on stdout
+  printGreeting(scene, opts, ctx);                  // the demo, its GL and its keys on stdout
   // Measurements run on a worker thread with a context of its own (see
   // measure_worker.hpp); the loop keeps drawing meanwhile.  If the worker
   // cannot make a context, the loop measures itself.

@@ -27,12 +27,12 @@ void FrameLoop::waitForEvents() {
          (flags.frames && !measuring && input.keys.empty());
   if (busy) glfwPollEvents();
   else if (keyWait > 0) glfwWaitEventsTimeout(measuring ? std::min(keyWait, 1.0 / 30) : keyWait);
-  else if (measuring || !input.keys.empty()) glfwWaitEventsTimeout(1.0 / 30);  // the progress moves; the worker wakes us when done
-  else if (scene.animating()) glfwWaitEventsTimeout(0.05);  // an animation that steps now and then
+  else if (measuring || !input.keys.empty())  // the progress moves; the worker wakes us when done
+    glfwWaitEventsTimeout(1.0 / 30);
+  else if (scene.animating()) glfwWaitEventsTimeout(0.05);           // an animation that steps now and then
   else if (pane.visible && glfwGetTime() < pane.marksUntil() + 0.1)  // the marks fade on time
     glfwWaitEventsTimeout(0.25);
-  else
-    glfwWaitEvents();
+  else glfwWaitEvents();
   redraw = false;
 }
 
@@ -145,7 +145,8 @@ void FrameLoop::inspectPixel(const Frame& f) {
 // state.  TS_TEST_RESIZE (tests): at what would be the last frame, keep
 // that frame as <screenshot>.WxH.png, resize to the next size and go on.
 bool FrameLoop::isLastFrame() {
-  bool lastFrame = flags.frames && counted >= flags.frames && input.keys.empty() && !measuring && !dirty && !savePending;
+  bool lastFrame = flags.frames && counted >= flags.frames && input.keys.empty() && !measuring && !dirty &&
+                   !savePending;
   if (lastFrame && resizing && !flags.screenshot.empty())
     writePng(test_hooks::sizedName(flags.screenshot, ctx.width(), ctx.height()), ctx.readPixels());
   if (lastFrame && !resizes.empty()) {

@@ -26,7 +26,10 @@ void mouseButton(Input* in, bool press, double x, double y) {
   in->lastX = x, in->lastY = y;
 }
 void mouseMove(Input* in, double x, double y) {
-  if (in->dragging) (in->lightDrag ? in->lightX : in->dragX) += x - in->lastX, (in->lightDrag ? in->lightY : in->dragY) += y - in->lastY;
+  if (in->dragging) {
+    (in->lightDrag ? in->lightX : in->dragX) += x - in->lastX;
+    (in->lightDrag ? in->lightY : in->dragY) += y - in->lastY;
+  }
   in->lastX = x, in->lastY = y, in->knowPos = true;
 }
 void mouseWheel(Input* in, double clicks) { in->wheel += clicks; }
@@ -79,13 +82,15 @@ bool mouseToOptions(Input* in, Options& opts) {
     changed |= opts.adjust(OrbitCamera::kPitch,
                            [&](double v) { return std::round((v + in->dragY * kDegreesPerPixel) * 10) / 10; });
   if (in->wheel != 0)
-    changed |= opts.adjust(OrbitCamera::kZoom, [&](double v) { return std::round(v * std::pow(1.1, in->wheel) * 1000) / 1000; });
+    changed |= opts.adjust(OrbitCamera::kZoom,
+                           [&](double v) { return std::round(v * std::pow(1.1, in->wheel) * 1000) / 1000; });
   if (in->lightX != 0)
     changed |= opts.adjust("light1-az", [&](double v) {
       return std::round(std::remainder(v + in->lightX * kDegreesPerPixel, 360.0) * 10) / 10;
     });
   if (in->lightY != 0)
-    changed |= opts.adjust("light1-el", [&](double v) { return std::round((v - in->lightY * kDegreesPerPixel) * 10) / 10; });
+    changed |= opts.adjust("light1-el",
+                           [&](double v) { return std::round((v - in->lightY * kDegreesPerPixel) * 10) / 10; });
   in->dragX = in->dragY = in->wheel = in->lightX = in->lightY = 0;
   return changed;
 }

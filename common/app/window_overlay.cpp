@@ -16,8 +16,9 @@ void drawHelp(Scene& scene, const Options& opts, int w, int h, bool* open, char 
   ImGui::SetNextWindowPos(ImVec2((float(w) - cw) / 2, (float(h) - ch) / 2), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(cw, ch), ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(0.95f);
-  ImGui::Begin("Help (? or F1 or Esc closes it)", open, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                                              ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::Begin("Help (? or F1 or Esc closes it)", open,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoSavedSettings);
   ImGui::TextWrapped("%s", scene.title().c_str());
   ImGui::Separator();
   std::string about = scene.about();  // single line breaks of the source are spaces here
@@ -33,15 +34,16 @@ void drawHelp(Scene& scene, const Options& opts, int w, int h, bool* open, char 
     ImGui::TextWrapped("%s  %s: %s", keys.c_str(), it.name.c_str(), it.help.c_str());
   }
   ImGui::Separator();
-  ImGui::TextWrapped("Window keys: arrows turn and tilt (where the demo has them), = acts as +, Backspace resets every "
-                     "option, a left drag orbits and the wheel zooms (3D views: --yaw, --pitch, --zoom), a picture file dropped on "
-                     "the window is mapped (--texture), F12 saves the picture and its sidecar and prints the command that remakes them, l shows "
-                     "the OpenGL calls beside the picture, h hides the side panel, ? or F1 this card, Esc or q quits.");
-  ImGui::TextWrapped("%c inspects a pixel: click one of the figure, and the side panel shows it magnified and what happens "
-                     "inside it: (s,t,r,q), the derivatives, rho, lambda, the mip levels, the texels read and their weights, "
-                     "the reference's colour beside GL's, and its footprint on the texture (also in a texture-space view, where the "
-                     "demo has one); with the GL pane open (l), the calls that set its texture turn cyan (--inspect X,Y "
-                     "does it from the command line).",
+  ImGui::TextWrapped("Window keys: arrows turn and tilt (where the demo has them), = acts as +, Backspace resets "
+                     "every option, a left drag orbits and the wheel zooms (3D views: --yaw, --pitch, --zoom), a "
+                     "picture file dropped on the window is mapped (--texture), F12 saves the picture and its "
+                     "sidecar and prints the command that remakes them, l shows the OpenGL calls beside the picture, "
+                     "h hides the side panel, ? or F1 this card, Esc or q quits.");
+  ImGui::TextWrapped("%c inspects a pixel: click one of the figure, and the side panel shows it magnified and what "
+                     "happens inside it: (s,t,r,q), the derivatives, rho, lambda, the mip levels, the texels read "
+                     "and their weights, the reference's colour beside GL's, and its footprint on the texture (also "
+                     "in a texture-space view, where the demo has one); with the GL pane open (l), the calls that "
+                     "set its texture turn cyan (--inspect X,Y does it from the command line).",
                      inspectKey);
   if (opts.has("pixel"))
     ImGui::TextWrapped("Outside the inspect mode a click on a raster picks its pixel (--pixel X,Y).");
@@ -69,8 +71,9 @@ void drawImGui(ImDrawData* d, int fbw, int fbh) {
   glMatrixMode(GL_PROJECTION);
   glPushMatrix();
   glLoadIdentity();
-  glOrtho(d->DisplayPos.x, d->DisplayPos.x + d->DisplaySize.x, d->DisplayPos.y + d->DisplaySize.y, d->DisplayPos.y,
-          -1, 1);
+  const float left = d->DisplayPos.x, right = left + d->DisplaySize.x;
+  const float top = d->DisplayPos.y, bottom = top + d->DisplaySize.y;
+  glOrtho(left, right, bottom, top, -1, 1);
   glMatrixMode(GL_MODELVIEW);
   glPushMatrix();
   glLoadIdentity();
@@ -109,7 +112,7 @@ void drawImGui(ImDrawData* d, int fbw, int fbh) {
 GLuint startImGui(GLFWwindow* win) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the student's folder
+  ImGui::GetIO().IniFilename = nullptr;     // no imgui.ini left in the student's folder
   ImGui_ImplGlfw_InitForOpenGL(win, true);  // chains to the callbacks of connectInput
   GLuint fontTex = 0;
   unsigned char* px = nullptr;

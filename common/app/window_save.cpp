@@ -13,7 +13,8 @@ namespace ts::window_parts {
 namespace {
 // F12: the window's picture as PNG + sidecar under a name not yet taken
 // (<demo>-<n>.png in the working folder), and the command that remakes it.
-void saveState(Scene& scene, const Options& opts, const Frame& f, const Image& window, const std::vector<std::string>& extra) {
+void saveState(Scene& scene, const Options& opts, const Frame& f, const Image& window,
+               const std::vector<std::string>& extra) {
   std::string base;
   for (int n = 1; n < 10000; ++n) {
     base = scene.id() + "-" + std::to_string(n);

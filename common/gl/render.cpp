@@ -38,8 +38,7 @@ static int nextPowerOfTwo(int v) {
 }
 
 static void upload(const Image& img, int level) {
-  glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-               img.pixels.data());
+  glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
 }
 
 GLuint Renderer::texture(const TextureDesc& t) {
@@ -98,8 +97,7 @@ GLuint Renderer::texture(const TextureDesc& t) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(t.wrapT));
   glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, glm::value_ptr(t.border));
   glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, t.lodBias);
-  if (gl::hasAnisotropicFiltering())
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, t.maxAnisotropy);
+  if (gl::hasAnisotropicFiltering()) glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, t.maxAnisotropy);
   gl::check(("setting the parameters of texture " + t.key()).c_str());
   return id;
 }
@@ -220,10 +218,8 @@ std::string formatShaderLog(const std::string& log, const std::string& file, int
     while (!msg.empty() && (msg[0] == ':' || msg[0] == ' ')) msg.erase(0, 1);
     if (ln > 0 && firstLine > 0)
       where = file + ":" + std::to_string(firstLine + ln - 1) + (col > 0 ? ":" + std::to_string(col) : "");
-    else if (ln > 0)
-      where = file + ": " + stage + " shader line " + std::to_string(ln);
-    else
-      where = file;
+    else if (ln > 0) where = file + ": " + stage + " shader line " + std::to_string(ln);
+    else where = file;
     if (!out.empty()) out += "; ";
     out += where + ": " + msg;
   }
@@ -246,9 +242,8 @@ static GLuint compile(GLenum type, const Program& p, const std::string& key) {
     glGetShaderInfoLog(s, GLsizei(log.size()), nullptr, log.data());
     log.resize(std::strlen(log.c_str()));
     glDeleteShader(s);
-    throw Error(std::string(stage) + " shader of program '" + key + "' does not compile: " +
-                    formatShaderLog(log, p.file, sourceLine(p.file, src), stage),
-                kExitFailure);
+    const std::string why = formatShaderLog(log, p.file, sourceLine(p.file, src), stage);
+    throw Error(std::string(stage) + " shader of program '" + key + "' does not compile: " + why, kExitFailure);
   }
   gl::check((std::string("compiling the ") + stage + " shader of program " + key).c_str());
   return s;
