@@ -6,7 +6,7 @@
 # `git add -A` would commit).  Without git (an exported tree): skipped (77).
 set -u
 cd "$(dirname "$0")/.."
-allowed=" .ci .gitignore CMakeLists.txt CMakePresets.json LICENSE README.md book_figures common demos docs exercises fuzz reference scripts tests textures "
+allowed=" .ci .clang-format .gitignore CMakeLists.txt CMakePresets.json LICENSE README.md book_figures common demos docs exercises fuzz reference scripts tests textures "
 if ! git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
   echo "SKIPPED: not a git work tree; nothing to check"; exit 77
 fi

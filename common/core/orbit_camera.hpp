@@ -2,7 +2,7 @@
 //
 // Three options, --yaw and --pitch (degrees) and --zoom (a factor), are part
 // of the demo's state like any other: the window turns them with a left drag
-// and the wheel (window.cpp finds them by these names), the overlay shows
+// and the wheel (window_input.cpp finds them by these names), the overlay shows
 // them, F12's command and the sidecar carry them, so whatever view a student
 // finds is one --png away.  At the defaults (0, 0, 1) nothing is changed, not
 // a bit: the book's figures are the figures' own views.

@@ -39,8 +39,7 @@ static int nextPowerOfTwo(int v) {
 }
 
 static void upload(const Image& img, int level) {
-  glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-               img.pixels.data());
+  glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
 }
 
 GLuint Renderer::texture(const TextureDesc& t) {
@@ -98,8 +97,7 @@ GLuint Renderer::texture(const TextureDesc& t) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(t.wrapT));
   glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, glm::value_ptr(t.border));
   glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, t.lodBias);
-  if (gl::hasAnisotropicFiltering())
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, t.maxAnisotropy);
+  if (gl::hasAnisotropicFiltering()) glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, t.maxAnisotropy);
   gl::check(("setting the parameters of texture " + t.key()).c_str());
   return id;
 }
@@ -163,19 +161,6 @@ GLuint Renderer::textureCube(const TextureDesc& t) {
   return id;
 }
 
-// glTexGen's environment-mapping modes (GL_SPHERE_MAP, GL_REFLECTION_MAP,
-// GL_NORMAL_MAP): the mode only, no planes (they read the normal, which the
-// vertex loop sends with glNormal3f).
-static void enableNormalTexGen(const TexGen& g) {
-  static const GLenum kGenCoord[4] = {GL_S, GL_T, GL_R, GL_Q};
-  static const GLenum kGenEnable[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
-  for (int k = 0; k < 4; ++k) {
-    if (!(g.coords & (1u << k))) continue;
-    glTexGeni(kGenCoord[k], GL_TEXTURE_GEN_MODE, GLint(g.mode));
-    glEnable(kGenEnable[k]);
-  }
-}
-
 void Renderer::forgetTexture(const TextureDesc& t) {
   auto it = textures_.find(t.key());
   if (it == textures_.end()) return;
@@ -233,10 +218,8 @@ std::string formatShaderLog(const std::string& log, const std::string& file, int
     while (!msg.empty() && (msg[0] == ':' || msg[0] == ' ')) msg.erase(0, 1);
     if (ln > 0 && firstLine > 0)
       where = file + ":" + std::to_string(firstLine + ln - 1) + (col > 0 ? ":" + std::to_string(col) : "");
-    else if (ln > 0)
-      where = file + ": " + stage + " shader line " + std::to_string(ln);
-    else
-      where = file;
+    else if (ln > 0) where = file + ": " + stage + " shader line " + std::to_string(ln);
+    else where = file;
     if (!out.empty()) out += "; ";
     out += where + ": " + msg;
   }
@@ -259,9 +242,8 @@ static GLuint compile(GLenum type, const Program& p, const std::string& key) {
     glGetShaderInfoLog(s, GLsizei(log.size()), nullptr, log.data());
     log.resize(std::strlen(log.c_str()));
     glDeleteShader(s);
-    throw Error(std::string(stage) + " shader of program '" + key + "' does not compile: " +
-                    formatShaderLog(log, p.file, sourceLine(p.file, src), stage),
-                kExitFailure);
+    const std::string why = formatShaderLog(log, p.file, sourceLine(p.file, src), stage);
+    throw Error(std::string(stage) + " shader of program '" + key + "' does not compile: " + why, kExitFailure);
   }
   gl::check((std::string("compiling the ") + stage + " shader of program " + key).c_str());
   return s;
@@ -314,7 +296,14 @@ void Renderer::draw(const Frame& f, bool labels) { drawFrame(f, labels, true); }
 
 void Renderer::drawOver(const Frame& f) { drawFrame(f, true, false); }
 
-void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
+// ---- drawFrame's steps, in the order it takes them ----
+// The figures' listings (.gl.txt) record these calls in this order and are
+// compared byte for byte: a step keeps its calls where they are, and sets a
+// piece of state only when its frame, panel or batch asks for it.
+
+// The target: the measurement pass's framebuffer while renderOffscreen
+// draws, else the context's own (which must hold the whole frame).
+void Renderer::bindFrameTarget(const Frame& f) {
   if (overrideTarget_) {
     glBindFramebuffer(GL_FRAMEBUFFER, overrideTarget_);
     glDrawBuffer(GL_COLOR_ATTACHMENT0);
@@ -324,6 +313,10 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
                   kExitFailure);
     ctx_.bindTarget();
   }
+}
+
+// The whole frame's viewport, and its clear (drawOver keeps what is there).
+static void clearFrame(const Frame& f, bool clear) {
   glDisable(GL_SCISSOR_TEST);
   glViewport(0, 0, f.width, f.height);
   if (clear) {
@@ -331,179 +324,273 @@ void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   }
+}
+
+// The fixed state every batch of the frame is drawn with (FixedState, which
+// the sidecar records): no lighting, no culling, the shading model and the
+// perspective-correction hint.
+static void setFixedState(const Frame& f) {
   static_assert(!FixedState::lighting && !FixedState::cullFace, "the sidecar says what is drawn with");
   glDisable(GL_LIGHTING);
   glDisable(GL_CULL_FACE);
   glShadeModel(FixedState::shadeModel);
   glHint(GL_PERSPECTIVE_CORRECTION_HINT, f.perspectiveHint);
+}
+
+// A panel: its viewport and scissor, its clear, its projection and modelview
+// matrices, and whether it tests depth.
+static void setUpPanel(const Frame& f, const Panel& p) {
+  // The frame's rows count from the top; GL's from the bottom.
+  int glY = f.height - p.viewport.y - p.viewport.h;
+  glViewport(p.viewport.x, glY, p.viewport.w, p.viewport.h);
+  glScissor(p.viewport.x, glY, p.viewport.w, p.viewport.h);
+  glEnable(GL_SCISSOR_TEST);
+  if (p.clear) {
+    glClearColor(p.clearColor.r, p.clearColor.g, p.clearColor.b, p.clearColor.a);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
+  glMatrixMode(GL_PROJECTION);
+  glLoadMatrixf(glm::value_ptr(p.projection));
+  glMatrixMode(GL_MODELVIEW);
+  glLoadMatrixf(glm::value_ptr(p.modelview));
+  if (p.depthTest) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(FixedState::depthFunc);
+  } else {
+    glDisable(GL_DEPTH_TEST);
+  }
+}
+
+// What unit 0's texture is bound as: a 3D texture and a cube map have
+// targets of their own (GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP).
+static bool unit0Is3D(const Frame& f, const Batch& b) {
+  return b.texture >= 0 && f.textures.at(size_t(b.texture)).depth > 1;
+}
+static bool unit0IsCube(const Frame& f, const Batch& b) {
+  return b.texture >= 0 && f.textures.at(size_t(b.texture)).cube;
+}
+
+// Unit 0: the batch's texture enabled on its target and bound, and its
+// environment (how the texel and the vertex colour combine); no texture
+// turns texturing off.
+static void bindUnit0(Renderer& r, const Frame& f, const Batch& b) {
+  const bool tex3D = unit0Is3D(f, b), texCube = unit0IsCube(f, b);
+  if (b.texture >= 0) {
+    glEnable(tex3D ? GL_TEXTURE_3D : texCube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D);
+    if (tex3D || texCube) glDisable(GL_TEXTURE_2D);
+    r.texture(f.textures.at(size_t(b.texture)));
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(b.texEnv));
+    // The constant colour only GL_BLEND reads: set where it is used, so
+    // every other batch's listing stays as it was.
+    if (b.texEnv == GL_BLEND) glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, glm::value_ptr(b.envColor));
+  } else {
+    glDisable(GL_TEXTURE_2D);
+  }
+}
+
+// The active unit's texture matrix, loaded for one batch and back to the
+// identity after its glEnd.  Only a batch whose matrix is not the identity
+// touches it, so the other figures' calls are unchanged.
+static void loadTextureMatrix(const glm::mat4& m) {
+  glMatrixMode(GL_TEXTURE);
+  glLoadMatrixf(glm::value_ptr(m));
+  glMatrixMode(GL_MODELVIEW);
+}
+static void resetTextureMatrix() {
+  glMatrixMode(GL_TEXTURE);
+  glLoadIdentity();
+  glMatrixMode(GL_MODELVIEW);
+}
+
+// The texture coordinates glTexGen makes, and the switch of each.
+static const GLenum kGenCoord[4] = {GL_S, GL_T, GL_R, GL_Q};
+static const GLenum kGenEnable[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
+
+// glTexGen's environment-mapping modes (GL_SPHERE_MAP, GL_REFLECTION_MAP,
+// GL_NORMAL_MAP): the mode only, no planes (they read the normal, which the
+// vertex loop sends with glNormal3f).
+static void enableNormalTexGen(const TexGen& g) {
+  for (int k = 0; k < 4; ++k) {
+    if (!(g.coords & (1u << k))) continue;
+    glTexGeni(kGenCoord[k], GL_TEXTURE_GEN_MODE, GLint(g.mode));
+    glEnable(kGenEnable[k]);
+  }
+}
+
+// glTexGen: texture coordinates GL makes from the vertex (planes) or from
+// the normal (environment maps) instead of the batch's own.  The planes are
+// given under the batch's planeModelview (GL keeps eye planes multiplied by
+// its inverse), then the panel's modelview goes back.
+static void enableTexGen(const Panel& p, const Batch& b) {
+  if (b.texGen.needsNormal()) {
+    enableNormalTexGen(b.texGen);
+  } else if (b.texGen.on()) {
+    const bool eye = b.texGen.mode == GL_EYE_LINEAR;
+    if (eye) glLoadMatrixf(glm::value_ptr(b.texGen.planeModelview));
+    for (int k = 0; k < 4; ++k) {
+      if (!(b.texGen.coords & (1u << k))) continue;
+      glTexGeni(kGenCoord[k], GL_TEXTURE_GEN_MODE, GLint(b.texGen.mode));
+      glTexGenfv(kGenCoord[k], eye ? GL_EYE_PLANE : GL_OBJECT_PLANE, glm::value_ptr(b.texGen.planes[k]));
+      glEnable(kGenEnable[k]);
+    }
+    if (eye) glLoadMatrixf(glm::value_ptr(p.modelview));
+  }
+}
+
+// A user clip plane, given under the batch's clipModelview (GL keeps
+// plane · M⁻¹), as the sidecar records it, then the panel's modelview back.
+static void enableClipPlane(const Panel& p, const Batch& b) {
+  if (!b.clip) return;
+  const double plane[4] = {b.clipPlane.x, b.clipPlane.y, b.clipPlane.z, b.clipPlane.w};
+  glLoadMatrixf(glm::value_ptr(b.clipModelview));
+  glClipPlane(GL_CLIP_PLANE0, plane);
+  glLoadMatrixf(glm::value_ptr(p.modelview));
+  glEnable(GL_CLIP_PLANE0);
+}
+
+// The batch's shader program, if it names one: made once, then bound with
+// its sampler "tex" on unit 0 and the batch's uniforms.  0: fixed function.
+static GLuint useProgram(Renderer& r, const Frame& f, const Batch& b) {
+  if (b.program.empty()) return 0;
+  const Program* src = nullptr;
+  for (const auto& [k, pr] : f.programs)
+    if (k == b.program) src = &pr;
+  if (!src) throw Error("batch uses unknown program '" + b.program + "'", kExitFailure);
+  GLuint prog = r.program(b.program, *src);
+  glUseProgram(prog);
+  GLint tex = glGetUniformLocation(prog, "tex");
+  if (tex >= 0) glUniform1i(tex, 0);
+  for (const Uniform& u : b.uniforms) {
+    GLint loc = glGetUniformLocation(prog, u.name.c_str());
+    if (loc >= 0) glUniform4f(loc, u.value.x, u.value.y, u.value.z, u.value.w);
+  }
+  return prog;
+}
+
+// Blending and the alpha test: how the batch's fragments combine with what
+// is there, and which are discarded.
+static void setBlending(const Batch& b) {
+  if (b.blend) {
+    glEnable(GL_BLEND);
+    // Colour blends over what is there; alpha stays the clear's (opaque):
+    // a figure must not let the page show through where it blends.
+    if (b.blendFactors())  // the batch's colour factors (adding, multiplying passes)
+      glBlendFuncSeparate(b.blendSrc, b.blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
+    else
+      glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha,
+                          FixedState::blendDstAlpha);
+  } else {
+    glDisable(GL_BLEND);
+  }
+  if (b.alphaTest()) {  // discarded fragments write neither colour nor depth
+    glEnable(GL_ALPHA_TEST);
+    glAlphaFunc(b.alphaFunc, b.alphaRef);
+  }
+}
+
+// Unit 1 (multitexturing): its texture, its environment (GL_COMBINE's
+// function, sources and operands) and its texture matrix, set on unit 1,
+// then unit 0 is active again.
+static void bindUnit1(Renderer& r, const Frame& f, const Batch& b) {
+  if (b.texture1 < 0) return;
+  glActiveTexture(GL_TEXTURE1);
+  glEnable(GL_TEXTURE_2D);
+  r.texture(f.textures.at(size_t(b.texture1)));
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(b.texEnv1));
+  if (b.texEnv1 == GL_COMBINE) {
+    glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GLint(b.combine1.rgb));
+    for (int k = 0; k < 3; ++k) {
+      glTexEnvi(GL_TEXTURE_ENV, GLenum(GL_SOURCE0_RGB + k), GLint(b.combine1.source[k]));
+      glTexEnvi(GL_TEXTURE_ENV, GLenum(GL_OPERAND0_RGB + k), GLint(b.combine1.operand[k]));
+    }
+  }
+  if (b.textureMatrix1 != glm::mat4(1.0f)) loadTextureMatrix(b.textureMatrix1);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+// The depth comparison (GL_LEQUAL for a second pass over the same
+// surface), the line width and the point size.
+static void setRasterState(const Batch& b) {
+  if (b.depthFunc) glDepthFunc(b.depthFunc);
+  glLineWidth(b.lineWidth);
+  glPointSize(b.pointSize);
+}
+
+// The batch itself, the book's way: one glTexCoord per glVertex.  (s, t, r,
+// q) are all sent; q != 1 gives projective texture mapping.
+static void sendVertices(const Batch& b) {
+  const bool unit1 = b.texture1 >= 0;
+  glBegin(glPrim(b.prim));
+  for (const Vertex& v : b.vertices) {
+    glColor4f(v.color.r, v.color.g, v.color.b, v.color.a);
+    if (b.colorSum) glSecondaryColor3f(v.secondary.r, v.secondary.g, v.secondary.b);
+    glTexCoord4f(v.tex.x, v.tex.y, v.tex.z, v.tex.w);
+    if (b.texGen.needsNormal()) glNormal3f(v.normal.x, v.normal.y, v.normal.z);
+    if (unit1) {  // unit 0's coordinates, or its own (Batch::coords1)
+      const glm::vec4& u = b.coords1 ? v.tex1 : v.tex;
+      glMultiTexCoord4f(GL_TEXTURE1, u.x, u.y, u.z, u.w);
+    }
+    glVertex3f(v.pos.x, v.pos.y, v.pos.z);
+  }
+  glEnd();
+}
+
+// After glEnd: what the batch turned on goes back off, so the next batch
+// starts from the fixed state and the panel's.
+static void undoBatchState(const Frame& f, const Batch& b, GLuint prog) {
+  if (b.colorSum) glDisable(GL_COLOR_SUM);
+  if (b.texGen.on())
+    for (int k = 0; k < 4; ++k)
+      if (b.texGen.coords & (1u << k)) glDisable(kGenEnable[k]);
+  if (b.clip) glDisable(GL_CLIP_PLANE0);
+  if (b.alphaTest()) glDisable(GL_ALPHA_TEST);
+  if (b.depthFunc) glDepthFunc(FixedState::depthFunc);
+  if (b.texture1 >= 0) {
+    glActiveTexture(GL_TEXTURE1);
+    glDisable(GL_TEXTURE_2D);
+    if (b.textureMatrix1 != glm::mat4(1.0f)) resetTextureMatrix();
+    glActiveTexture(GL_TEXTURE0);
+  }
+  if (unit0Is3D(f, b)) glDisable(GL_TEXTURE_3D);
+  if (unit0IsCube(f, b)) glDisable(GL_TEXTURE_CUBE_MAP);
+  if (b.textureMatrix != glm::mat4(1.0f)) resetTextureMatrix();
+  if (prog) glUseProgram(0);
+}
+
+// One batch: its state step by step, its vertices, then its state undone.
+static void drawBatch(Renderer& r, const Frame& f, const Panel& p, const Batch& b) {
+  bindUnit0(r, f, b);
+  if (b.textureMatrix != glm::mat4(1.0f)) loadTextureMatrix(b.textureMatrix);
+  // GL_SEPARATE_SPECULAR_COLOR's second half: the secondary colour is
+  // added after texturing (GL 1.4 colour sum; lighting stays off here).
+  if (b.colorSum) glEnable(GL_COLOR_SUM);
+  enableTexGen(p, b);
+  enableClipPlane(p, b);
+  const GLuint prog = useProgram(r, f, b);
+  setBlending(b);
+  bindUnit1(r, f, b);
+  setRasterState(b);
+  sendVertices(b);
+  undoBatchState(f, b, prog);
+}
+
+// The steps, in order:
+//   1. bindFrameTarget  the framebuffer drawn into
+//   2. clearFrame       the whole frame's viewport and clear
+//   3. setFixedState    lighting, culling, shading, perspective hint
+//   4. for each panel: setUpPanel (viewport, scissor, matrices, depth test),
+//      then for each batch drawBatch:
+//        bindUnit0, the texture matrix, colour sum, enableTexGen,
+//        enableClipPlane, useProgram, setBlending, bindUnit1,
+//        setRasterState, sendVertices (glBegin ... glEnd), undoBatchState
+//   5. the frame's state off again, then drawLabels (the text)
+void Renderer::drawFrame(const Frame& f, bool labels, bool clear) {
+  bindFrameTarget(f);
+  clearFrame(f, clear);
+  setFixedState(f);
   for (const Panel& p : f.panels) {
-    // The frame's rows count from the top; GL's from the bottom.
-    int glY = f.height - p.viewport.y - p.viewport.h;
-    glViewport(p.viewport.x, glY, p.viewport.w, p.viewport.h);
-    glScissor(p.viewport.x, glY, p.viewport.w, p.viewport.h);
-    glEnable(GL_SCISSOR_TEST);
-    if (p.clear) {
-      glClearColor(p.clearColor.r, p.clearColor.g, p.clearColor.b, p.clearColor.a);
-      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    }
-    glMatrixMode(GL_PROJECTION);
-    glLoadMatrixf(glm::value_ptr(p.projection));
-    glMatrixMode(GL_MODELVIEW);
-    glLoadMatrixf(glm::value_ptr(p.modelview));
-    if (p.depthTest) {
-      glEnable(GL_DEPTH_TEST);
-      glDepthFunc(FixedState::depthFunc);
-    } else {
-      glDisable(GL_DEPTH_TEST);
-    }
-    for (const Batch& b : p.batches) {
-      const bool tex3D = b.texture >= 0 && f.textures.at(size_t(b.texture)).depth > 1;
-      const bool texCube = b.texture >= 0 && f.textures.at(size_t(b.texture)).cube;  // a cube map binds GL_TEXTURE_CUBE_MAP
-      if (b.texture >= 0) {
-        glEnable(tex3D ? GL_TEXTURE_3D : texCube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D);
-        if (tex3D || texCube) glDisable(GL_TEXTURE_2D);
-        texture(f.textures.at(size_t(b.texture)));
-        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(b.texEnv));
-        // The constant colour only GL_BLEND reads: set where it is used, so
-        // every other batch's listing stays as it was.
-        if (b.texEnv == GL_BLEND) glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, glm::value_ptr(b.envColor));
-      } else {
-        glDisable(GL_TEXTURE_2D);
-      }
-      // The texture matrix, for this batch only: loaded here, back to the
-      // identity after glEnd (only when it is not the identity, so the other
-      // figures' calls are unchanged).
-      const bool texMatrix = b.textureMatrix != glm::mat4(1.0f);
-      if (texMatrix) {
-        glMatrixMode(GL_TEXTURE);
-        glLoadMatrixf(glm::value_ptr(b.textureMatrix));
-        glMatrixMode(GL_MODELVIEW);
-      }
-      // GL_SEPARATE_SPECULAR_COLOR's second half: the secondary colour is
-      // added after texturing (GL 1.4 colour sum; lighting stays off here).
-      if (b.colorSum) glEnable(GL_COLOR_SUM);
-      // glTexGen: the planes given under the batch's planeModelview (GL keeps
-      // eye planes multiplied by its inverse), then the panel's modelview back.
-      static const GLenum kGenCoord[4] = {GL_S, GL_T, GL_R, GL_Q};
-      static const GLenum kGenEnable[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
-      if (b.texGen.needsNormal()) {
-        enableNormalTexGen(b.texGen);
-      } else if (b.texGen.on()) {
-        const bool eye = b.texGen.mode == GL_EYE_LINEAR;
-        if (eye) glLoadMatrixf(glm::value_ptr(b.texGen.planeModelview));
-        for (int k = 0; k < 4; ++k) {
-          if (!(b.texGen.coords & (1u << k))) continue;
-          glTexGeni(kGenCoord[k], GL_TEXTURE_GEN_MODE, GLint(b.texGen.mode));
-          glTexGenfv(kGenCoord[k], eye ? GL_EYE_PLANE : GL_OBJECT_PLANE, glm::value_ptr(b.texGen.planes[k]));
-          glEnable(kGenEnable[k]);
-        }
-        if (eye) glLoadMatrixf(glm::value_ptr(p.modelview));
-      }
-      if (b.clip) {
-        // Given under the batch's clipModelview (GL keeps plane · M⁻¹), as the
-        // sidecar records it, then the panel's modelview back.
-        const double plane[4] = {b.clipPlane.x, b.clipPlane.y, b.clipPlane.z, b.clipPlane.w};
-        glLoadMatrixf(glm::value_ptr(b.clipModelview));
-        glClipPlane(GL_CLIP_PLANE0, plane);
-        glLoadMatrixf(glm::value_ptr(p.modelview));
-        glEnable(GL_CLIP_PLANE0);
-      }
-      GLuint prog = 0;
-      if (!b.program.empty()) {
-        const Program* src = nullptr;
-        for (const auto& [k, pr] : f.programs)
-          if (k == b.program) src = &pr;
-        if (!src) throw Error("batch uses unknown program '" + b.program + "'", kExitFailure);
-        prog = program(b.program, *src);
-        glUseProgram(prog);
-        GLint tex = glGetUniformLocation(prog, "tex");
-        if (tex >= 0) glUniform1i(tex, 0);
-        for (const Uniform& u : b.uniforms) {
-          GLint loc = glGetUniformLocation(prog, u.name.c_str());
-          if (loc >= 0) glUniform4f(loc, u.value.x, u.value.y, u.value.z, u.value.w);
-        }
-      }
-      if (b.blend) {
-        glEnable(GL_BLEND);
-        // Colour blends over what is there; alpha stays the clear's (opaque):
-        // a figure must not let the page show through where it blends.
-        if (b.blendFactors())  // the batch's colour factors (adding, multiplying passes)
-          glBlendFuncSeparate(b.blendSrc, b.blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
-        else
-          glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
-      } else {
-        glDisable(GL_BLEND);
-      }
-      if (b.alphaTest()) {  // discarded fragments write neither colour nor depth
-        glEnable(GL_ALPHA_TEST);
-        glAlphaFunc(b.alphaFunc, b.alphaRef);
-      }
-      // Unit 1's texture and environment (GL_COMBINE's function,
-      // sources and operands), set on unit 1 and back to unit 0.
-      const bool unit1 = b.texture1 >= 0;
-      if (unit1) {
-        glActiveTexture(GL_TEXTURE1);
-        glEnable(GL_TEXTURE_2D);
-        texture(f.textures.at(size_t(b.texture1)));
-        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(b.texEnv1));
-        if (b.texEnv1 == GL_COMBINE) {
-          glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GLint(b.combine1.rgb));
-          for (int k = 0; k < 3; ++k) {
-            glTexEnvi(GL_TEXTURE_ENV, GLenum(GL_SOURCE0_RGB + k), GLint(b.combine1.source[k]));
-            glTexEnvi(GL_TEXTURE_ENV, GLenum(GL_OPERAND0_RGB + k), GLint(b.combine1.operand[k]));
-          }
-        }
-        if (b.textureMatrix1 != glm::mat4(1.0f)) {  // unit 1's texture matrix, back to the identity after glEnd
-          glMatrixMode(GL_TEXTURE);
-          glLoadMatrixf(glm::value_ptr(b.textureMatrix1));
-          glMatrixMode(GL_MODELVIEW);
-        }
-        glActiveTexture(GL_TEXTURE0);
-      }
-      if (b.depthFunc) glDepthFunc(b.depthFunc);  // GL_LEQUAL for a second pass; back after glEnd
-      glLineWidth(b.lineWidth);
-      glPointSize(b.pointSize);
-      // The book's way: one glTexCoord per glVertex.  (s, t, r, q) are all
-      // sent; q != 1 gives projective texture mapping.
-      glBegin(glPrim(b.prim));
-      for (const Vertex& v : b.vertices) {
-        glColor4f(v.color.r, v.color.g, v.color.b, v.color.a);
-        if (b.colorSum) glSecondaryColor3f(v.secondary.r, v.secondary.g, v.secondary.b);
-        glTexCoord4f(v.tex.x, v.tex.y, v.tex.z, v.tex.w);
-        if (b.texGen.needsNormal()) glNormal3f(v.normal.x, v.normal.y, v.normal.z);
-        if (unit1) {  // unit 0's coordinates, or its own (Batch::coords1)
-          const glm::vec4& u = b.coords1 ? v.tex1 : v.tex;
-          glMultiTexCoord4f(GL_TEXTURE1, u.x, u.y, u.z, u.w);
-        }
-        glVertex3f(v.pos.x, v.pos.y, v.pos.z);
-      }
-      glEnd();
-      if (b.colorSum) glDisable(GL_COLOR_SUM);
-      if (b.texGen.on())
-        for (int k = 0; k < 4; ++k)
-          if (b.texGen.coords & (1u << k)) glDisable(kGenEnable[k]);
-      if (b.clip) glDisable(GL_CLIP_PLANE0);
-      if (b.alphaTest()) glDisable(GL_ALPHA_TEST);
-      if (b.depthFunc) glDepthFunc(FixedState::depthFunc);
-      if (unit1) {
-        glActiveTexture(GL_TEXTURE1);
-        glDisable(GL_TEXTURE_2D);
-        if (b.textureMatrix1 != glm::mat4(1.0f)) {
-          glMatrixMode(GL_TEXTURE);
-          glLoadIdentity();
-          glMatrixMode(GL_MODELVIEW);
-        }
-        glActiveTexture(GL_TEXTURE0);
-      }
-      if (tex3D) glDisable(GL_TEXTURE_3D);
-      if (texCube) glDisable(GL_TEXTURE_CUBE_MAP);
-      if (texMatrix) {
-        glMatrixMode(GL_TEXTURE);
-        glLoadIdentity();
-        glMatrixMode(GL_MODELVIEW);
-      }
-      if (prog) glUseProgram(0);
-    }
+    setUpPanel(f, p);
+    for (const Batch& b : p.batches) drawBatch(*this, f, p, b);
     gl::check(("drawing panel " + p.id).c_str());
   }
   glDisable(GL_SCISSOR_TEST);
@@ -530,7 +617,8 @@ void Renderer::drawLabels(const Frame& f) {
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
   glEnable(GL_BLEND);
-  glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);  // alpha stays opaque
+  // Alpha stays opaque, as in the batches.
+  glBlendFuncSeparate(FixedState::blendSrc, FixedState::blendDst, FixedState::blendSrcAlpha, FixedState::blendDstAlpha);
   for (const Label& l : f.labels) {
     float w = text::width(l.text, l.scale), h = text::height(l.scale);
     float x = l.align == Align::Left ? l.x : l.align == Align::Center ? l.x - w / 2 : l.x - w;

@@ -90,6 +90,7 @@ class Renderer {
  private:
   void drawLabels(const Frame& frame);
   void drawFrame(const Frame& frame, bool labels, bool clear);
+  void bindFrameTarget(const Frame& frame);  // drawFrame's first step
   Context& ctx_;
   std::map<std::type_index, std::unique_ptr<Attachment>> attachments_;
   int pictureW_ = 0, pictureH_ = 0;
