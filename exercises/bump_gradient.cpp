@@ -20,7 +20,8 @@
 // truly displaced surface Q + scale h N: the mean angle at most 1°.
 #include "exercise.hpp"
 
-glm::dvec3 exercise::bumpNormal(glm::dvec3 Qs, glm::dvec3 Qt, double gx, double gy, double ds, double dt, double scale) {
+glm::dvec3 exercise::bumpNormal(glm::dvec3 Qs, glm::dvec3 Qt, double gx, double gy, double ds, double dt,
+                                double scale) {
   (void)Qs, (void)Qt, (void)gx, (void)gy, (void)ds, (void)dt, (void)scale;
   TS_EXERCISE_NOT_DONE("bump_gradient");
 }

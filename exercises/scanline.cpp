@@ -57,13 +57,13 @@ void exercise::scanlineTriangle(const ScanVertex v[3], const Plot& plot) {
   double y = y1, x11 = x1, x12 = x2, xd1 = xt1, xd2 = xt2, yd1 = yt1, yd2 = yt2;
 step4:
   span(y, x11, x12, xd1, yd1, xd2, yd2);
-  x11 += dx12;  // 5.
-  x12 += dx13;  // 6.
-  xd1 += tx12;  // 7.
-  xd2 += tx13;  // 8.
-  yd1 += ty12;  // 9.
-  yd2 += ty13;  // 10.
-  y += 1;       // 11.
+  x11 += dx12;             // 5.
+  x12 += dx13;             // 6.
+  xd1 += tx12;             // 7.
+  xd2 += tx13;             // 8.
+  yd1 += ty12;             // 9.
+  yd2 += ty13;             // 10.
+  y += 1;                  // 11.
   if (y < y2) goto step4;  // 12.
   // 13. (printed "y = y21")
   y = y2, x11 = x2, xd1 = xt2, yd1 = yt2;

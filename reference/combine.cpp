@@ -6,8 +6,10 @@ namespace ref {
 namespace {
 float arg(const ts::Combine& c, int k, const Colour& previous, const Colour& texel, const Colour& primary, size_t ch) {
   const Colour zero{0, 0, 0, 0};
-  const Colour& s = c.source[k] == GL_TEXTURE ? texel : c.source[k] == GL_PREVIOUS ? previous
-                                                     : c.source[k] == GL_PRIMARY_COLOR ? primary : zero;
+  const Colour& s = c.source[k] == GL_TEXTURE         ? texel
+                    : c.source[k] == GL_PREVIOUS      ? previous
+                    : c.source[k] == GL_PRIMARY_COLOR ? primary
+                                                      : zero;
   switch (c.operand[k]) {
     case GL_ONE_MINUS_SRC_COLOR: return 1.0f - s[ch];
     case GL_SRC_ALPHA: return s[3];
@@ -20,13 +22,14 @@ float arg(const ts::Combine& c, int k, const Colour& previous, const Colour& tex
 bool unitEnvModelled(GLenum env, const ts::Combine& c) {
   if (env != GL_COMBINE) return texEnvModelled(env);
   const GLenum f = c.rgb;
-  if (f != GL_REPLACE && f != GL_MODULATE && f != GL_ADD && f != GL_ADD_SIGNED && f != GL_SUBTRACT && f != GL_INTERPOLATE &&
-      f != GL_MODULATE_ADD_ATI)
+  if (f != GL_REPLACE && f != GL_MODULATE && f != GL_ADD && f != GL_ADD_SIGNED && f != GL_SUBTRACT &&
+      f != GL_INTERPOLATE && f != GL_MODULATE_ADD_ATI)
     return false;
   for (int k = 0; k < 3; ++k) {
     const GLenum s = c.source[k], o = c.operand[k];
     if (s != GL_TEXTURE && s != GL_PREVIOUS && s != GL_PRIMARY_COLOR && s != GL_CONSTANT) return false;
-    if (o != GL_SRC_COLOR && o != GL_ONE_MINUS_SRC_COLOR && o != GL_SRC_ALPHA && o != GL_ONE_MINUS_SRC_ALPHA) return false;
+    if (o != GL_SRC_COLOR && o != GL_ONE_MINUS_SRC_COLOR && o != GL_SRC_ALPHA && o != GL_ONE_MINUS_SRC_ALPHA)
+      return false;
   }
   return true;
 }

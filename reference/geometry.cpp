@@ -142,14 +142,14 @@ Deriv ScreenPoly::deriv1(double x, double y) const {
 
 Colour ScreenPoly::colour(double x, double y) const {
   double w = P[kW].at(x, y);
-  return {float(clamp01(P[kCr].at(x, y) / w)), float(clamp01(P[kCg].at(x, y) / w)),
-          float(clamp01(P[kCb].at(x, y) / w)), float(clamp01(P[kCa].at(x, y) / w))};
+  return {float(clamp01(P[kCr].at(x, y) / w)), float(clamp01(P[kCg].at(x, y) / w)), float(clamp01(P[kCb].at(x, y) / w)),
+          float(clamp01(P[kCa].at(x, y) / w))};
 }
 
 Colour ScreenPoly::secondary(double x, double y) const {
   double w = P[kW].at(x, y);
-  return {float(clamp01(P[kSr].at(x, y) / w)), float(clamp01(P[kSg].at(x, y) / w)),
-          float(clamp01(P[kSb].at(x, y) / w)), 0.0f};
+  return {float(clamp01(P[kSr].at(x, y) / w)), float(clamp01(P[kSg].at(x, y) / w)), float(clamp01(P[kSb].at(x, y) / w)),
+          0.0f};
 }
 
 void ScreenPoly::prepareEdges() {
@@ -177,8 +177,8 @@ bool screenTriangle(const ts::Panel& p, const ts::Batch& b, size_t first, int fr
   double userDistance[3] = {0, 0, 0};
   // glClipPlane: GL stores plane · M⁻¹ (M the modelview it was given under)
   // and evaluates it at the vertex in eye coordinates.
-  const glm::dvec4 clipEye =
-      b.clip ? glm::dvec4(b.clipPlane) * glm::inverse(glm::dmat4(b.clipModelview)) : glm::dvec4(0.0);
+  const glm::dvec4 clipEye = b.clip ? glm::dvec4(b.clipPlane) * glm::inverse(glm::dmat4(b.clipModelview))
+                                    : glm::dvec4(0.0);
   const glm::dmat4 toEye(p.modelview);
   for (size_t k = 0; k < 3; ++k) {
     const ts::Vertex& vx = b.vertices[first + k];
@@ -190,8 +190,8 @@ bool screenTriangle(const ts::Panel& p, const ts::Batch& b, size_t first, int fr
     if (b.clip) userDistance[k] = glm::dot(clipEye, toEye * glm::dvec4(glm::dvec3(vx.pos), 1.0));
     // Unit 1: its own coordinates or unit 0's as sent, times its texture matrix.
     const glm::dvec4 u1 = glm::dmat4(b.textureMatrix1) * glm::dvec4(b.coords1 ? vx.tex1 : vx.tex);
-    tri[k].attr = {st.x, st.y, st.z, st.w, vx.color.r, vx.color.g, vx.color.b, vx.color.a,
-                   vx.secondary.r, vx.secondary.g, vx.secondary.b, u1.x, u1.y, u1.w};
+    tri[k].attr = {st.x,       st.y,           st.z,           st.w,           vx.color.r, vx.color.g, vx.color.b,
+                   vx.color.a, vx.secondary.r, vx.secondary.g, vx.secondary.b, u1.x,       u1.y,       u1.w};
   }
   if (b.clip) {
     // Keep the distance >= 0.  The distance is linear

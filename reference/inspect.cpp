@@ -162,7 +162,9 @@ Inspection Inspector::fragment(int x, int y, int pi, int bi, const ScreenPoly& P
   in.referenceRgba = shadeFragment(b, in.primary, in.secondary, in.textured ? &texel : nullptr);
   // Unit 1 at its own (s, t), over unit 0's result, then the colour sum.
   std::string why1;
-  const Texture* tex1 = in.textured && b.texture1 >= 0 && unitEnvModelled(b.texEnv1, b.combine1) ? texture(b.texture1, &why1) : nullptr;
+  const Texture* tex1 = in.textured && b.texture1 >= 0 && unitEnvModelled(b.texEnv1, b.combine1)
+                            ? texture(b.texture1, &why1)
+                            : nullptr;
   if (tex1) {
     double s1, t1;  // unit 1's own coordinates (its texture matrix, Vertex::tex1 where Batch::coords1)
     P.coord1(cx, cy, &s1, &t1);
@@ -170,12 +172,14 @@ Inspection Inspector::fragment(int x, int y, int pi, int bi, const ScreenPoly& P
     const Colour prev = texEnv(b.texEnv, in.primary, texel, {b.envColor.r, b.envColor.g, b.envColor.b, b.envColor.a});
     in.referenceRgba = unitEnv(b.texEnv1, b.combine1, prev, texel1, in.primary);
     if (b.colorSum) in.referenceRgba = colourSum(in.referenceRgba, in.secondary);
-    notes.push_back("unit 1: texture " + std::to_string(b.texture1) + " '" + tex1->desc().name + "' by " + enumName(b.texEnv1) +
-                    (b.texEnv1 == GL_COMBINE ? " (" + enumName(b.combine1.rgb) + ")" : std::string()) + " over unit 0's result");
+    notes.push_back(
+        "unit 1: texture " + std::to_string(b.texture1) + " '" + tex1->desc().name + "' by " + enumName(b.texEnv1) +
+        (b.texEnv1 == GL_COMBINE ? " (" + enumName(b.combine1.rgb) + ")" : std::string()) + " over unit 0's result");
   }
   if (b.alphaTest())
     notes.push_back("alpha test " + enumName(b.alphaFunc) + " " + std::to_string(b.alphaRef) +
-                    (alphaPasses(b.alphaFunc, in.referenceRgba[3], b.alphaRef) ? ": passes" : ": fails, the fragment is discarded"));
+                    (alphaPasses(b.alphaFunc, in.referenceRgba[3], b.alphaRef) ? ": passes"
+                                                                               : ": fails, the fragment is discarded"));
   if (b.blend && b.blendFactors())
     notes.push_back("blended (" + enumName(b.blendSrc) + ", " + enumName(b.blendDst) + ") with the colour beneath");
   else if (b.blend)
@@ -224,8 +228,7 @@ Inspection Inspector::at(int x, int y) const {
           if (b.alphaTest() && !alphaPasses(b.alphaFunc, in.referenceRgba[3], b.alphaRef)) continue;  // discarded
           if (b.blend && b.blendFactors())  // the batch's own factors
             pixel = toRgba(blendWith(b.blendSrc, b.blendDst, in.referenceRgba, toColour(pixel)));
-          else
-            pixel = toRgba(b.blend ? blendOver(in.referenceRgba, pixel) : in.referenceRgba);
+          else pixel = toRgba(b.blend ? blendOver(in.referenceRgba, pixel) : in.referenceRgba);
           in.pixelRgba = toColour(pixel);
           if (p.depthTest) depth = z;
           top = std::move(in);
@@ -242,7 +245,8 @@ Inspection Inspector::at(int x, int y) const {
       if (b.prim == ts::Prim::Points) {
         for (const ts::Vertex& v : b.vertices) {
           glm::dvec2 w;
-          if (windowPoint(p, v, f.height, &w) && inside(pointSquare(w, b.pointSize), x, y)) hit = true, colour = v.color;
+          if (windowPoint(p, v, f.height, &w) && inside(pointSquare(w, b.pointSize), x, y))
+            hit = true, colour = v.color;
         }
         in.what = Inspection::What::Point;
         in.note = "point batch (size " + std::to_string(int(b.pointSize)) +
@@ -286,7 +290,8 @@ Inspection Inspector::at(int x, int y) const {
       in.x = x, in.y = y;
       in.what = Inspection::What::Label;
       in.batchRole = "label";
-      in.note = "label \"" + l.text + "\": drawn over the frame after every panel (its background box, then its "
+      in.note = "label \"" + l.text +
+                "\": drawn over the frame after every panel (its background box, then its "
                 "glyphs), untextured";
       in.referenceRgba = in.pixelRgba = toColour(pixel);
       top = std::move(in);
@@ -333,14 +338,15 @@ std::string formatInspection(const Inspection& in) {
   if (in.batch >= 0) o += fmt("  batch %d '%s'", in.batch, in.batchRole.c_str());
   o += fmt("  [%s%s%s]\n", whatName(in.what), in.textured ? ", textured" : "", in.program ? ", GLSL program" : "");
   if (!in.note.empty()) o += "note: " + in.note + "\n";
-  if (in.what == Inspection::What::Triangle) o += fmt("depth z      = %.6f   vertex colour %s\n", in.z, bytes(in.primary).c_str());
+  if (in.what == Inspection::What::Triangle)
+    o += fmt("depth z      = %.6f   vertex colour %s\n", in.z, bytes(in.primary).c_str());
   if (in.what == Inspection::What::Triangle && (in.texture >= 0 || in.program)) {
     o += fmt("(s,t,r,q)    = (%.6f, %.6f, %.6f, %.6f)\n", in.s, in.t, in.r, in.q);
     o += fmt("(s/q,t/q)    = (%.6f, %.6f)\n", in.sq, in.tq);
   }
   if (in.texture >= 0) {
-    o += fmt("texture %d '%s' %dx%d, min %s, mag %s%s%s\n", in.texture, in.textureName.c_str(), in.width0,
-             in.height0, enumName(in.minFilter).c_str(), enumName(in.magFilter).c_str(), in.texEnv ? ", env " : "",
+    o += fmt("texture %d '%s' %dx%d, min %s, mag %s%s%s\n", in.texture, in.textureName.c_str(), in.width0, in.height0,
+             enumName(in.minFilter).c_str(), enumName(in.magFilter).c_str(), in.texEnv ? ", env " : "",
              in.texEnv ? enumName(in.texEnv).c_str() : "");
     o += fmt("(u,v)        = (%.4f, %.4f) texels of level 0\n", in.u, in.v);
     o += fmt("du/dx, dv/dx = (%.6f, %.6f)   du/dy, dv/dy = (%.6f, %.6f)\n", in.dudx, in.dvdx, in.dudy, in.dvdy);
@@ -348,15 +354,13 @@ std::string formatInspection(const Inspection& in) {
   if (in.textured) {
     o += fmt("rho          = %.6f  max(|(du/dx,dv/dx)|, |(du/dy,dv/dy)|) (GL)\n", in.rhoEdge);
     o += fmt("               %.6f  max(|du/dx|, |dv/dx|, |du/dy|, |dv/dy|)\n", in.rhoMax);
-    o += fmt("lambda       = log2(rho) %+.6f  + bias %g = %+.6f  (clamped to [-1000, 1000])\n", in.lambdaBase,
-             in.bias, in.lambda);
-    if (in.magnified)
-      o += fmt("filter       magnified (lambda <= 0): %s on level 0\n", enumName(in.filter).c_str());
+    o += fmt("lambda       = log2(rho) %+.6f  + bias %g = %+.6f  (clamped to [-1000, 1000])\n", in.lambdaBase, in.bias,
+             in.lambda);
+    if (in.magnified) o += fmt("filter       magnified (lambda <= 0): %s on level 0\n", enumName(in.filter).c_str());
     else if (in.level1 != in.level0)
       o += fmt("filter       minified: %s on levels %d and %d, weight of level %d = %.6f\n",
                enumName(in.filter).c_str(), in.level0, in.level1, in.level1, in.levelWeight);
-    else
-      o += fmt("filter       minified: %s on level %d\n", enumName(in.filter).c_str(), in.level0);
+    else o += fmt("filter       minified: %s on level %d\n", enumName(in.filter).c_str(), in.level0);
     o += "texels       level    i    j   weight    rgba\n";
     for (const InspectTexel& t : in.texels)
       o += fmt("             %5d %4d %4d %8.6f  %s\n", t.level, t.i, t.j, t.weight, bytes(t.rgba).c_str());

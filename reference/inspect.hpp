@@ -58,10 +58,10 @@ struct Inspection {
   std::string note;       // what the pixel is, in words, and what is not modelled
 
   // A triangle's fragment at the pixel centre.
-  double z = kNone;            // window depth in [0, 1]
-  Colour primary{}, secondary{};  // interpolated vertex colours (secondary: alpha 0)
+  double z = kNone;                                   // window depth in [0, 1]
+  Colour primary{}, secondary{};                      // interpolated vertex colours (secondary: alpha 0)
   double s = kNone, t = kNone, r = kNone, q = kNone;  // interpolated (s, t, r, q), after the texture matrix
-  double sq = kNone, tq = kNone;  // (s/q, t/q); for the bilinear program its map of them
+  double sq = kNone, tq = kNone;                      // (s/q, t/q); for the bilinear program its map of them
   // The texture (when the batch names one).
   int texture = -1;
   std::string textureName;

@@ -171,8 +171,7 @@ long scanTriangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVe
   }
   return emitted;
 }
-bool coversCentre(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int x, int y,
-                  FillRule rule) {
+bool coversCentre(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int x, int y, FillRule rule) {
   if (!inRange(v0) || !inRange(v1) || !inRange(v2)) return false;
   const Sorted o = sortByY(v0, v1, v2);
   if (o.cross == 0) return false;

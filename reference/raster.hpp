@@ -51,8 +51,7 @@ long scanTriangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVe
 // Whether scanTriangle would emit pixel (x, y): the same exact test of the
 // centre (x + 1/2, y + 1/2) with the same fill rule, for one pixel, without
 // walking the triangle.
-bool coversCentre(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int x, int y,
-                  FillRule rule);
+bool coversCentre(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2, int x, int y, FillRule rule);
 
 // An attribute that is linear in screen space: value = a x + b y + c.
 struct Plane {

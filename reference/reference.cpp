@@ -152,8 +152,8 @@ void addStacked(const ts::TextureDesc& d, int w, int h, int count, const char* w
     sd.mipmaps = false;
     sd.mipLevels = nullptr;
     auto img = std::make_shared<ts::Image>(w, h);
-    std::copy_n(d.image->pixels.begin() + std::ptrdiff_t(size_t(k) * size_t(w) * size_t(h) * 4), size_t(w) * size_t(h) * 4,
-                img->pixels.begin());
+    std::copy_n(d.image->pixels.begin() + std::ptrdiff_t(size_t(k) * size_t(w) * size_t(h) * 4),
+                size_t(w) * size_t(h) * 4, img->pixels.begin());
     sd.image = img;
     sd.name += "[" + std::string(what) + " " + std::to_string(k) + "]";
     out->emplace_back(sd);
@@ -349,7 +349,8 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
   }
   // A picture the sidecar cannot remake (RenderOptions::exemptTextures): its texels are unknown.
   const auto unknownPicture = [&](int t) {
-    return t >= 0 && std::find(opts_.exemptTextures.begin(), opts_.exemptTextures.end(), t) != opts_.exemptTextures.end();
+    return t >= 0 &&
+           std::find(opts_.exemptTextures.begin(), opts_.exemptTextures.end(), t) != opts_.exemptTextures.end();
   };
   if (proto.kind != Candidate::Kind::Exempt && (unknownPicture(b.texture) || unknownPicture(b.texture1))) {
     proto.kind = Candidate::Kind::Exempt;
@@ -407,8 +408,9 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
   const Texture* tex1 = nullptr;
   if (b.texture1 >= 0 && (tex || proto.kind != Candidate::Kind::Exempt)) {
     // Unit 1's coordinates are its own planes (kS1 ..: Vertex::tex1 or unit 0's as sent, times textureMatrix1).
-    const bool plain = tex && cubeFirst < 0 && volumeIndex < 0 && !b.texGen.on() && b.textureMatrix == glm::mat4(1.0f) &&
-                       b.program.empty() && cubeFirstFace_[size_t(b.texture1)] < 0 && volumeOf_[size_t(b.texture1)] < 0;
+    const bool plain = tex && cubeFirst < 0 && volumeIndex < 0 && !b.texGen.on() &&
+                       b.textureMatrix == glm::mat4(1.0f) && b.program.empty() &&
+                       cubeFirstFace_[size_t(b.texture1)] < 0 && volumeOf_[size_t(b.texture1)] < 0;
     if (plain && unitEnvModelled(b.texEnv1, b.combine1) && texEnvModelled(b.texEnv)) {
       tex1 = &textures_.at(size_t(b.texture1));
     } else if (proto.kind != Candidate::Kind::Exempt) {
@@ -490,7 +492,8 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
         }
         if (volumeIndex >= 0) {  // the position jitter in r: slices per pixel
           auto rAt = [&](double u, double v) { return P.P[kR].at(u, v) / P.P[kQ].at(u, v); };
-          const double slices = std::max(std::abs(rAt(x + 0.5, y) - rAt(x - 0.5, y)), std::abs(rAt(x, y + 0.5) - rAt(x, y - 0.5))) *
+          const double slices = std::max(std::abs(rAt(x + 0.5, y) - rAt(x - 0.5, y)),
+                                         std::abs(rAt(x, y + 0.5) - rAt(x, y - 0.5))) *
                                 volumes_[size_t(volumeIndex)].depth;
           c.rho = std::max(c.rho, float(slices));
         }
@@ -525,7 +528,8 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       if (tex && cubeFirst >= 0) {
         texel = cubeSample(P, x + 0.5, y + 0.5, cubeFirst);
       } else if (tex && volumeIndex >= 0) {
-        texel = volume(volumeIndex).sample(a[kS] / a[kQ], a[kT] / a[kQ], a[kR] / a[kQ], tex->lod(P.deriv(x + 0.5, y + 0.5)));
+        texel = volume(volumeIndex)
+                    .sample(a[kS] / a[kQ], a[kT] / a[kQ], a[kR] / a[kQ], tex->lod(P.deriv(x + 0.5, y + 0.5)));
       } else if (tex) {
         double s, t;
         P.coordFrom(a[kS] / a[kQ], a[kT] / a[kQ], &s, &t);
@@ -551,11 +555,13 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       image_.set(x, y, toRgba(out));
       if (p.depthTest) depth_[idx] = z;
     };
-    for (size_t k = 1; k + 1 < P.v.size(); ++k) scanTriangle(P.v[0], P.v[k], P.v[k + 1], kAttributes, sc, opts_.fill, emit);
+    for (size_t k = 1; k + 1 < P.v.size(); ++k)
+      scanTriangle(P.v[0], P.v[k], P.v[k + 1], kAttributes, sc, opts_.fill, emit);
 
     // 2. The candidates: sure inside, either way within the edge band.
     double minx = 1e300, maxx = -1e300, miny = 1e300, maxy = -1e300;
-    for (const auto& s : P.v) minx = std::min(minx, s.x), maxx = std::max(maxx, s.x), miny = std::min(miny, s.y), maxy = std::max(maxy, s.y);
+    for (const auto& s : P.v)
+      minx = std::min(minx, s.x), maxx = std::max(maxx, s.x), miny = std::min(miny, s.y), maxy = std::max(maxy, s.y);
     const double band = opts_.edgeBand;
     int x0 = std::max(sc.x0, int(std::floor(std::max(minx - band - 1, -1e9)))),
         x1 = std::min(sc.x1, int(std::ceil(std::min(maxx + band + 1, 1e9)))),
@@ -640,18 +646,21 @@ int Reference::alphaVerdict(const ts::Batch& b, const Candidate& c) const {
     if (c.volume >= 0 || c.texture1 >= 0) return -1;
     std::vector<Box> boxes;
     const double jitter = vo.positionEpsPixels * double(c.rho);
-    textures_[size_t(c.texture)].legal(c.s, c.t, c.lodLo, c.lodHi, vo.nearestEpsTexels + jitter, vo.linearEpsTexels + jitter, &boxes);
+    textures_[size_t(c.texture)].legal(c.s, c.t, c.lodLo, c.lodHi, vo.nearestEpsTexels + jitter,
+                                       vo.linearEpsTexels + jitter, &boxes);
     if (boxes.empty()) return -1;
     Box col;
     for (size_t k = 0; k < 4; ++k)
-      col.lo[k] = float(std::max(0.0, double(c.colour[k]) - vo.colourEps)), col.hi[k] = float(std::min(1.0, double(c.colour[k]) + vo.colourEps));
+      col.lo[k] = float(std::max(0.0, double(c.colour[k]) - vo.colourEps)),
+      col.hi[k] = float(std::min(1.0, double(c.colour[k]) + vo.colourEps));
     lo = 2, hi = -1;
     for (Box bx : boxes) {
       if (c.env != GL_REPLACE) bx = texEnvBox(c.env, col, bx, c.envColour);
       lo = std::min(lo, double(bx.lo[3]) - c.slack), hi = std::max(hi, double(bx.hi[3]) + c.slack);
     }
   }
-  const bool atLo = alphaPasses(b.alphaFunc, float(lo - eps), b.alphaRef), atHi = alphaPasses(b.alphaFunc, float(hi + eps), b.alphaRef);
+  const bool atLo = alphaPasses(b.alphaFunc, float(lo - eps), b.alphaRef),
+             atHi = alphaPasses(b.alphaFunc, float(hi + eps), b.alphaRef);
   const bool mid = alphaPasses(b.alphaFunc, float((lo + hi) / 2), b.alphaRef);
   if (b.alphaFunc == GL_EQUAL || b.alphaFunc == GL_NOTEQUAL) return -1;
   if (atLo && atHi && mid) return 1;

@@ -46,13 +46,13 @@ enum class EdgePolicy { Union, Exempt };
 struct RenderOptions {
   Interpolation interpolation = Interpolation::Perspective;
   FillRule fill = FillRule::GLTopLeft;  // llvmpipe's, measured
-  bool labels = true;              // the image has labels: draw them, exempt their boxes
-  bool labelGeometryKnown = true;  // false (a sidecar without label scale/align): exempt wide boxes
-  double edgeBand = 1.0;           // pixels
+  bool labels = true;                   // the image has labels: draw them, exempt their boxes
+  bool labelGeometryKnown = true;       // false (a sidecar without label scale/align): exempt wide boxes
+  double edgeBand = 1.0;                // pixels
   EdgePolicy edges = EdgePolicy::Union;
   double lineMargin = 1.0;  // exempt this many pixels beyond a line's or point's footprint
   LodModel lodModel = LodModel::Bounded;
-  double lodMargin = 0.1;     // levels added on both sides of the LOD interval
+  double lodMargin = 0.1;      // levels added on both sides of the LOD interval
   double depthEpsilon = 1e-5;  // window z closer than this: either fragment may win
   // Textures of the frame (indices) whose texels are not known: pictures a
   // sidecar cannot remake (SidecarScene::unknownPictures).  A batch that
@@ -68,15 +68,15 @@ struct Candidate {
   enum class Kind : uint8_t { Flat, Textured, Exempt };
   Kind kind = Kind::Flat;
   Exempt why = Exempt::None;
-  bool modulate = false;  // GL_MODULATE: texture times colour
-  GLenum env = GL_REPLACE;  // the texture environment (sampler.hpp's texEnv)
-  bool colorSum = false;    // GL_COLOR_SUM: `secondary` added after texturing
-  Colour envColour{};       // GL_TEXTURE_ENV_COLOR
-  Colour secondary{};       // the fragment's secondary colour (alpha unused)
-  int texture = -1;       // index into Reference::textures()
-  int next = -1;          // the next candidate of the same pixel
-  Colour colour{};        // flat colour, or the fragment's primary colour
-  double s = 0, t = 0;    // texture coordinate after the division by q
+  bool modulate = false;       // GL_MODULATE: texture times colour
+  GLenum env = GL_REPLACE;     // the texture environment (sampler.hpp's texEnv)
+  bool colorSum = false;       // GL_COLOR_SUM: `secondary` added after texturing
+  Colour envColour{};          // GL_TEXTURE_ENV_COLOR
+  Colour secondary{};          // the fragment's secondary colour (alpha unused)
+  int texture = -1;            // index into Reference::textures()
+  int next = -1;               // the next candidate of the same pixel
+  Colour colour{};             // flat colour, or the fragment's primary colour
+  double s = 0, t = 0;         // texture coordinate after the division by q
   float lodLo = 0, lodHi = 0;  // lambda_base interval (without bias), margin included
   float rho = 0;               // texels per pixel (for position jitter)
   float z = 1;

@@ -102,10 +102,8 @@ Colour colourSum(const Colour& c, const Colour& s) {
 
 Texture::Texture(const ts::TextureDesc& d) : desc_(d) {
   if (!d.image) throw ts::Error("reference sampler: texture '" + d.name + "' has no image");
-  if (d.mipmaps)
-    levels_ = d.mipLevels ? *d.mipLevels : ts::buildMipChain(*d.image, d.linearLightMips);
-  else
-    levels_ = {*d.image};
+  if (d.mipmaps) levels_ = d.mipLevels ? *d.mipLevels : ts::buildMipChain(*d.image, d.linearLightMips);
+  else levels_ = {*d.image};
   if (levels_.empty()) throw ts::Error("reference sampler: texture '" + d.name + "' has no levels");
   for (const ts::Image& img : levels_) {
     Box b{{2, 2, 2, 2}, {-1, -1, -1, -1}};
@@ -117,7 +115,8 @@ Texture::Texture(const ts::TextureDesc& d) : desc_(d) {
                   d.wrapT == GL_CLAMP;
     if (border)
       for (int k = 0; k < 4; ++k)
-        b.lo[size_t(k)] = std::min(b.lo[size_t(k)], d.border[k]), b.hi[size_t(k)] = std::max(b.hi[size_t(k)], d.border[k]);
+        b.lo[size_t(k)] = std::min(b.lo[size_t(k)], d.border[k]),
+        b.hi[size_t(k)] = std::max(b.hi[size_t(k)], d.border[k]);
     ranges_.push_back(b);
   }
 }

@@ -57,7 +57,8 @@ double number(const Json& v, const std::string& where) {
 }
 int integer(const Json& v, const std::string& where, double lo, double hi) {
   double x = number(v, where);
-  if (!(x >= lo && x <= hi)) fail(where, "expected a number in " + std::to_string(int(lo)) + ".." + std::to_string(int(hi)));
+  if (!(x >= lo && x <= hi))
+    fail(where, "expected a number in " + std::to_string(int(lo)) + ".." + std::to_string(int(hi)));
   return int(x);
 }
 std::string text(const Json& v, const std::string& where) {
@@ -155,16 +156,32 @@ GLenum glEnumFromName(const std::string& name) {
       {"GL_NICEST", GL_NICEST},
       {"GL_DONT_CARE", GL_DONT_CARE},
       // alpha functions and blend factors
-      {"GL_NEVER", GL_NEVER}, {"GL_LESS", GL_LESS}, {"GL_EQUAL", GL_EQUAL}, {"GL_LEQUAL", GL_LEQUAL},
-      {"GL_GREATER", GL_GREATER}, {"GL_NOTEQUAL", GL_NOTEQUAL}, {"GL_GEQUAL", GL_GEQUAL}, {"GL_ALWAYS", GL_ALWAYS},
-      {"GL_ZERO", GL_ZERO}, {"GL_ONE", GL_ONE}, {"GL_SRC_COLOR", GL_SRC_COLOR},
-      {"GL_ONE_MINUS_SRC_COLOR", GL_ONE_MINUS_SRC_COLOR}, {"GL_DST_COLOR", GL_DST_COLOR},
-      {"GL_ONE_MINUS_DST_COLOR", GL_ONE_MINUS_DST_COLOR}, {"GL_SRC_ALPHA", GL_SRC_ALPHA},
+      {"GL_NEVER", GL_NEVER},
+      {"GL_LESS", GL_LESS},
+      {"GL_EQUAL", GL_EQUAL},
+      {"GL_LEQUAL", GL_LEQUAL},
+      {"GL_GREATER", GL_GREATER},
+      {"GL_NOTEQUAL", GL_NOTEQUAL},
+      {"GL_GEQUAL", GL_GEQUAL},
+      {"GL_ALWAYS", GL_ALWAYS},
+      {"GL_ZERO", GL_ZERO},
+      {"GL_ONE", GL_ONE},
+      {"GL_SRC_COLOR", GL_SRC_COLOR},
+      {"GL_ONE_MINUS_SRC_COLOR", GL_ONE_MINUS_SRC_COLOR},
+      {"GL_DST_COLOR", GL_DST_COLOR},
+      {"GL_ONE_MINUS_DST_COLOR", GL_ONE_MINUS_DST_COLOR},
+      {"GL_SRC_ALPHA", GL_SRC_ALPHA},
       {"GL_ONE_MINUS_SRC_ALPHA", GL_ONE_MINUS_SRC_ALPHA},
       // unit 1's GL_COMBINE
-      {"GL_TEXTURE", GL_TEXTURE}, {"GL_COMBINE", GL_COMBINE}, {"GL_ADD_SIGNED", GL_ADD_SIGNED},
-      {"GL_INTERPOLATE", GL_INTERPOLATE}, {"GL_CONSTANT", GL_CONSTANT}, {"GL_PRIMARY_COLOR", GL_PRIMARY_COLOR},
-      {"GL_PREVIOUS", GL_PREVIOUS}, {"GL_SUBTRACT", GL_SUBTRACT}, {"GL_MODULATE_ADD_ATI", GL_MODULATE_ADD_ATI},
+      {"GL_TEXTURE", GL_TEXTURE},
+      {"GL_COMBINE", GL_COMBINE},
+      {"GL_ADD_SIGNED", GL_ADD_SIGNED},
+      {"GL_INTERPOLATE", GL_INTERPOLATE},
+      {"GL_CONSTANT", GL_CONSTANT},
+      {"GL_PRIMARY_COLOR", GL_PRIMARY_COLOR},
+      {"GL_PREVIOUS", GL_PREVIOUS},
+      {"GL_SUBTRACT", GL_SUBTRACT},
+      {"GL_MODULATE_ADD_ATI", GL_MODULATE_ADD_ATI},
   };
   for (const auto& [n, e] : k)
     if (name == n) return e;
@@ -187,7 +204,9 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
   if (name == "texel_index") return ts::texelIndexTexture(intParam(p, "size", name));
   if (name == "labelled_grid") return ts::labelledGrid(intParam(p, "size", name), intParam(p, "cells", name));
   if (name == "mip_level_colours") return ts::mipLevelColours(intParam(p, "size", name));
-  if (name == "gradient") return ts::gradientTexture(intParam(p, "width", name), intParam(p, "height", name), strParam(p, "alpha", name) == "ramp");
+  if (name == "gradient")
+    return ts::gradientTexture(intParam(p, "width", name), intParam(p, "height", name),
+                               strParam(p, "alpha", name) == "ramp");
   if (name == "environment_map") return ts::envmaps::environmentMapFromParams(p);  // common/core/env_maps.hpp
   ts::TextureDesc made;
   if (ts::multitex::remake(name, p, &made)) return made;  // the multitexture demo's textures
@@ -199,8 +218,10 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
     t.params = p;  // keep the recorded key
     return t;
   }
-  throw UnknownGenerator("sidecar: unknown texture generator '" + name +
-                  "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, environment_map, file, multitexture_*, dxt1_picture)");
+  throw UnknownGenerator(
+      "sidecar: unknown texture generator '" + name +
+      "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, environment_map, "
+      "file, multitexture_*, dxt1_picture)");
 }
 
 constexpr int kMaxNesting = 4;  // frames inside frames: a texture's rendered_from, at most this deep
@@ -260,9 +281,11 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
     };
     const Json& bf = member(*fs, "blend_func", "fixed_state");
     std::string blend;
-    for (size_t k = 0; k < array(bf, "fixed_state.blend_func").size(); ++k) blend += (k ? " " : "") + text(bf[k], "fixed_state.blend_func");
+    for (size_t k = 0; k < array(bf, "fixed_state.blend_func").size(); ++k)
+      blend += (k ? " " : "") + text(bf[k], "fixed_state.blend_func");
     if (blend != "GL_SRC_ALPHA GL_ONE_MINUS_SRC_ALPHA GL_ZERO GL_ONE")
-      fail("fixed_state.blend_func", "'" + blend + "', the reference models GL_SRC_ALPHA GL_ONE_MINUS_SRC_ALPHA GL_ZERO GL_ONE only");
+      fail("fixed_state.blend_func",
+           "'" + blend + "', the reference models GL_SRC_ALPHA GL_ONE_MINUS_SRC_ALPHA GL_ZERO GL_ONE only");
     expect("depth_func", "GL_LESS");
     expect("shade_model", "GL_SMOOTH");
     if (boolean(member(*fs, "cull_face", "fixed_state"), "fixed_state.cull_face") ||
@@ -280,7 +303,8 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
     std::string name = text(member(t, "name", where), where + ".name");
     std::vector<std::pair<std::string, std::string>> params;
     if (const Json* pv = find(t, "params"))
-      for (const auto& [k, v] : object(*pv, where + ".params").items()) params.emplace_back(k, text(v, where + ".params." + k));
+      for (const auto& [k, v] : object(*pv, where + ".params").items())
+        params.emplace_back(k, text(v, where + ".params." + k));
     ts::TextureDesc d;
     bool placeholder = false;  // a picture no generator remakes (SidecarReadOptions::unknownPictures)
     // A picture no generator remakes, when the options allow one here (the
@@ -303,10 +327,13 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
       // A nested frame: the texture is that frame's picture,
       // which the reference recomputes; no generator, no image here.  A
       // nested frame that shows an unknown picture is itself one.
-      if (nesting >= kMaxNesting) fail(where + ".rendered_from", "frames nested deeper than " + std::to_string(kMaxNesting));
+      if (nesting >= kMaxNesting)
+        fail(where + ".rendered_from", "frames nested deeper than " + std::to_string(kMaxNesting));
       SidecarScene inner;
       std::string unknown;  // the nested frame shows a texture no generator remakes
-      const auto withoutPrefix = [](std::string what) { return what.rfind("sidecar: ", 0) == 0 ? what.substr(9) : what; };
+      const auto withoutPrefix = [](std::string what) {
+        return what.rfind("sidecar: ", 0) == 0 ? what.substr(9) : what;
+      };
       try {
         readFrame(object(*rf, where + ".rendered_from"), baseDir, nesting + 1, SidecarReadOptions{}, inner);
       } catch (const UnknownGenerator& e) {
@@ -320,9 +347,11 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
         d.name = name, d.params = params;
         const ts::Frame& nf = inner.frame;
         if (const Json* w = find(t, "width"))
-          if (integer(*w, where + ".width", 0, ts::kMaxImageDimension) != nf.width) fail(where, "width differs from its frame's");
+          if (integer(*w, where + ".width", 0, ts::kMaxImageDimension) != nf.width)
+            fail(where, "width differs from its frame's");
         if (const Json* h = find(t, "height"))
-          if (integer(*h, where + ".height", 0, ts::kMaxImageDimension) != nf.height) fail(where, "height differs from its frame's");
+          if (integer(*h, where + ".height", 0, ts::kMaxImageDimension) != nf.height)
+            fail(where, "height differs from its frame's");
         d.renderedFrom = std::make_shared<const ts::Frame>(nf);
       }
     } else {
@@ -335,7 +364,8 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
       }
     }
     if (const Json* w = find(t, "width"))
-      if (d.image && integer(*w, where + ".width", 0, ts::kMaxImageDimension) != d.image->width) fail(where, "the remade texture's width differs");
+      if (d.image && integer(*w, where + ".width", 0, ts::kMaxImageDimension) != d.image->width)
+        fail(where, "the remade texture's width differs");
     // A cube map: the generator's image holds the six faces
     // stacked, and "height" is a face's.
     if (const Json* c = find(t, "cube")) d.cube = boolean(*c, where + ".cube");
@@ -346,7 +376,8 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
     if (const Json* dp = find(t, "depth")) {
       d.depth = integer(*dp, where + ".depth", 1, ts::kMaxImageDimension);
       if (d.cube && d.depth > 1) fail(where, "a texture is a cube map or 3D, not both");
-      if (!d.image || d.image->height % d.depth != 0) fail(where, "a 3D texture needs an image of depth stacked slices");
+      if (!d.image || d.image->height % d.depth != 0)
+        fail(where, "a 3D texture needs an image of depth stacked slices");
       try {
         d.wrapR = glEnumFromName(text(member(t, "wrap_r", where), where + ".wrap_r"));
       } catch (const ts::Error& e) {
@@ -354,7 +385,8 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
       }
     }
     if (const Json* h = find(t, "height"))
-      if (d.image && integer(*h, where + ".height", 0, ts::kMaxImageDimension) * (d.cube ? 6 : d.depth) != d.image->height)
+      if (d.image &&
+          integer(*h, where + ".height", 0, ts::kMaxImageDimension) * (d.cube ? 6 : d.depth) != d.image->height)
         fail(where, "the remade texture's height differs");
     const Json& mips = member(t, "mipmaps", where);
     if (mips.is_boolean()) {
@@ -430,7 +462,8 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
       }
       if (const Json* pr = find(bv, "program")) b.program = text(*pr, bw + ".program");
       if (const Json* us = find(bv, "uniforms"))
-        for (const auto& [k, v] : object(*us, bw + ".uniforms").items()) b.uniforms.push_back({k, vec<4>(v, bw + ".uniforms." + k)});
+        for (const auto& [k, v] : object(*us, bw + ".uniforms").items())
+          b.uniforms.push_back({k, vec<4>(v, bw + ".uniforms." + k)});
       if (const Json* lw = find(bv, "line_width")) b.lineWidth = float(number(*lw, bw));
       if (const Json* ps = find(bv, "point_size")) b.pointSize = float(number(*ps, bw));
       else if (b.prim == ts::Prim::Points) out.missing.push_back(bw + ".point_size");
@@ -444,8 +477,10 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
         const std::string tw = bw + ".tex_gen", mode = text(member(*tg, "mode", tw), tw + ".mode");
         if (mode == "GL_OBJECT_LINEAR") b.texGen.mode = GL_OBJECT_LINEAR;
         else if (mode == "GL_EYE_LINEAR") b.texGen.mode = GL_EYE_LINEAR;
-        else if (readNormalTexGen(*tg, mode, tw, &b.texGen)) {}  // GL_SPHERE_MAP, GL_REFLECTION_MAP, GL_NORMAL_MAP
-        else fail(tw + ".mode", "unknown texgen mode '" + mode + "'");
+        else if (readNormalTexGen(*tg, mode, tw, &b.texGen)) {
+        }  // GL_SPHERE_MAP, GL_REFLECTION_MAP, GL_NORMAL_MAP
+        else
+          fail(tw + ".mode", "unknown texgen mode '" + mode + "'");
         const Json& coords = member(*tg, "coords", tw);
         const bool fromNormal = b.texGen.mode != GL_OBJECT_LINEAR && b.texGen.mode != GL_EYE_LINEAR;
         const Json& planes = fromNormal ? Json::object() : member(*tg, "planes", tw);
@@ -487,7 +522,8 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
         } catch (const ts::Error& e) {
           fail(bw + ".depth_func", e.what());
         }
-        if (b.depthFunc != GL_LESS && b.depthFunc != GL_LEQUAL) fail(bw + ".depth_func", "must be GL_LESS or GL_LEQUAL");
+        if (b.depthFunc != GL_LESS && b.depthFunc != GL_LEQUAL)
+          fail(bw + ".depth_func", "must be GL_LESS or GL_LEQUAL");
       }
       if (const Json* bf = find(bv, "blend_func")) {
         if (array(*bf, bw + ".blend_func").size() != 2) fail(bw + ".blend_func", "needs [source, destination]");
@@ -536,7 +572,8 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
         if (const Json* t1 = find(vv, "tex1")) x.tex1 = vec<4>(*t1, vw + ".tex1");
         else if (b.coords1) fail(vw, "unit 1 reads its own coordinates: each vertex needs \"tex1\"");
         if (const Json* n = find(vv, "normal")) x.normal = vec<3>(*n, vw + ".normal");
-        else if (b.texGen.needsNormal()) fail(vw, "texgen " + ts::glEnumName(b.texGen.mode) + " needs each vertex's normal");
+        else if (b.texGen.needsNormal())
+          fail(vw, "texgen " + ts::glEnumName(b.texGen.mode) + " needs each vertex's normal");
         b.vertices.push_back(x);
       }
       p.batches.push_back(std::move(b));

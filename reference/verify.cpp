@@ -12,8 +12,8 @@
 namespace ref {
 namespace {
 std::string rgba(ts::Rgba c) {
-  return "(" + std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b) + "," +
-         std::to_string(c.a) + ")";
+  return "(" + std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b) + "," + std::to_string(c.a) +
+         ")";
 }
 std::string box(const Box& b) {
   ts::Rgba lo = toRgba(b.lo), hi = toRgba(b.hi);
@@ -30,8 +30,7 @@ bool inside(ts::Rgba c, const Box& b, int tol) {
 }
 Box widen(const Colour& c, double e) {
   Box b;
-  for (size_t k = 0; k < 4; ++k)
-    b.lo[k] = float(std::max(0.0, c[k] - e)), b.hi[k] = float(std::min(1.0, c[k] + e));
+  for (size_t k = 0; k < 4; ++k) b.lo[k] = float(std::max(0.0, c[k] - e)), b.hi[k] = float(std::min(1.0, c[k] + e));
   return b;
 }
 std::string writeImage(const std::string& dir, const std::string& stem, const char* kind, const ts::Image& img,
@@ -112,14 +111,16 @@ namespace {
 // The legal colours beneath a blended candidate: what the pixel held from
 // candidate `below` on, GL's 8-bit storage of it (half a step either way);
 // *why != None: exempt.  Memoised per pixel (BelowMemo).
-const std::vector<Box>& legalBelow(const Reference& r, int below, const VerifyOptions& o, Exempt* why, BelowMemo* memo) {
+const std::vector<Box>& legalBelow(const Reference& r, int below, const VerifyOptions& o, Exempt* why,
+                                   BelowMemo* memo) {
   for (const auto& [c, slot] : memo->index)
     if (c == below) return *why = memo->why[slot], memo->boxes[slot];
   std::vector<Box> held;
   Exempt heldWhy;
   legalFrom(r, below, o, &held, &heldWhy, memo);
   for (Box& d : held)  // GL stored what the pixel held in 8 bits: half a step either way
-    for (size_t k = 0; k < 3; ++k) d.lo[k] = std::max(0.0f, d.lo[k] - 0.5f / 255), d.hi[k] = std::min(1.0f, d.hi[k] + 0.5f / 255);
+    for (size_t k = 0; k < 3; ++k)
+      d.lo[k] = std::max(0.0f, d.lo[k] - 0.5f / 255), d.hi[k] = std::min(1.0f, d.hi[k] + 0.5f / 255);
   const size_t slot = memo->used++;  // slots are reused across pixels (their vectors keep their capacity)
   if (memo->boxes.size() <= slot) memo->boxes.emplace_back(), memo->why.emplace_back();
   memo->boxes[slot] = std::move(held), memo->why[slot] = heldWhy;
@@ -128,7 +129,8 @@ const std::vector<Box>& legalBelow(const Reference& r, int below, const VerifyOp
   return memo->boxes[slot];
 }
 
-void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Box>* outp, Exempt* why, BelowMemo* memo) {
+void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Box>* outp, Exempt* why,
+               BelowMemo* memo) {
   std::vector<Box>& out = *outp;
   out.clear();
   *why = Exempt::None;
@@ -158,9 +160,9 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
         double jitter = o.positionEpsPixels * double(c.rho);
         size_t first = out.size();
         if (c.volume >= 0)  // a 3D texture (volume.hpp); r's jitter in slices is taken as s and t's in texels
-          r.volume(c.volume).legal(c.s, c.t, c.r, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter, o.linearEpsTexels + jitter, &out);
-        else
-          t.legal(c.s, c.t, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter, o.linearEpsTexels + jitter, &out);
+          r.volume(c.volume).legal(c.s, c.t, c.r, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter,
+                                   o.linearEpsTexels + jitter, &out);
+        else t.legal(c.s, c.t, c.lodLo, c.lodHi, o.nearestEpsTexels + jitter, o.linearEpsTexels + jitter, &out);
         if (c.slack > 0)  // a nested frame's picture, or TextureDesc::texelSlack
           for (size_t k = first; k < out.size(); ++k)
             for (size_t ch = 0; ch < 4; ++ch) out[k].lo[ch] -= c.slack, out[k].hi[ch] += c.slack;
@@ -171,7 +173,8 @@ void legalFrom(const Reference& r, int h, const VerifyOptions& o, std::vector<Bo
         if (c.texture1 >= 0) {  // unit 1's texels over unit 0's result (combine.hpp)
           std::vector<Box> texels1;
           const double j1 = o.positionEpsPixels * double(c.rho1);
-          r.textures()[size_t(c.texture1)].legal(c.s1, c.t1, c.lodLo1, c.lodHi1, o.nearestEpsTexels + j1, o.linearEpsTexels + j1, &texels1);
+          r.textures()[size_t(c.texture1)].legal(c.s1, c.t1, c.lodLo1, c.lodHi1, o.nearestEpsTexels + j1,
+                                                 o.linearEpsTexels + j1, &texels1);
           const Box primary = widen(c.colour, o.colourEps);
           const std::vector<Box> unit0(out.begin() + std::ptrdiff_t(first), out.end());
           out.resize(first);
@@ -231,8 +234,8 @@ VerifyResult verifyImage(const ts::Image& got, const Reference& r, const VerifyO
   if (got.width != r.width() || got.height != r.height()) {
     res.invalid = 1;
     res.checked = 1;
-    res.notes.push_back("image is " + std::to_string(got.width) + "x" + std::to_string(got.height) +
-                        ", the frame " + std::to_string(r.width()) + "x" + std::to_string(r.height()));
+    res.notes.push_back("image is " + std::to_string(got.width) + "x" + std::to_string(got.height) + ", the frame " +
+                        std::to_string(r.width()) + "x" + std::to_string(r.height()));
     return res;
   }
   res.mask = ts::Image(got.width, got.height, {0, 0, 0, 255});
@@ -297,12 +300,13 @@ std::string VerifyResult::summary() const {
     if (firstLegal.size() > 4) s += " | ...";
     s += ")";
   }
-  s += "; " + std::to_string(textured) + " textured, " + std::to_string(pinned) + " pinned to +-1 step; " + std::to_string(edges) + " edge pixels checked against both sides; " + std::to_string(exempt) +
-       " exempt";
+  s += "; " + std::to_string(textured) + " textured, " + std::to_string(pinned) + " pinned to +-1 step; " +
+       std::to_string(edges) + " edge pixels checked against both sides; " + std::to_string(exempt) + " exempt";
   if (exempt) {
     std::string by;
     for (size_t k = 1; k < exemptBy.size(); ++k)
-      if (exemptBy[k]) by += (by.empty() ? "" : ", ") + std::string(exemptName(Exempt(k))) + " " + std::to_string(exemptBy[k]);
+      if (exemptBy[k])
+        by += (by.empty() ? "" : ", ") + std::string(exemptName(Exempt(k))) + " " + std::to_string(exemptBy[k]);
     s += " (" + by + ")";
   }
   for (const auto& n : notes) s += "; note: " + n;

@@ -37,11 +37,11 @@ namespace ref {
 struct VerifyOptions {
   RenderOptions render;
   int tolerance = ts::probe::tolerance(8);  // 8-bit steps allowed beyond the legal range
-  double nearestEpsTexels = 1.0 / 128;  // GL_NEAREST: a coordinate this close to a texel edge may go either way
-  double linearEpsTexels = 1.0 / 128;   // GL_LINEAR: coordinate jitter (llvmpipe weighs with 8 bits: 1/256)
-  double positionEpsPixels = 1.0 / 128;  // plus this many pixels of position error, times texels per pixel
-  double colourEps = 1.0 / 255;      // interpolated vertex colours
-  long maxInvalid = 0;               // invalid pixels allowed
+  double nearestEpsTexels = 1.0 / 128;      // GL_NEAREST: a coordinate this close to a texel edge may go either way
+  double linearEpsTexels = 1.0 / 128;       // GL_LINEAR: coordinate jitter (llvmpipe weighs with 8 bits: 1/256)
+  double positionEpsPixels = 1.0 / 128;     // plus this many pixels of position error, times texels per pixel
+  double colourEps = 1.0 / 255;             // interpolated vertex colours
+  long maxInvalid = 0;                      // invalid pixels allowed
   // Where failure images go: "" = $TS_ORACLE_OUT, else ./oracle_failures.
   std::string outputDir;
   std::string name = "oracle";  // file name stem

@@ -25,7 +25,8 @@ Colour Volume::sample(double s, double t, double r, double lambdaBase) const {
   return out;
 }
 
-void Volume::legal(double s, double t, double r, double lodLo, double lodHi, double epsN, double epsL, Boxes* out) const {
+void Volume::legal(double s, double t, double r, double lodLo, double lodHi, double epsN, double epsL,
+                   Boxes* out) const {
   auto sliceBoxes = [&](int k, GLenum wrapped, Boxes* into) {
     const int w = wrapped == GL_NEAREST ? wrapTexelNearest(wrapR, k, depth) : wrapTexel(wrapR, k, depth);
     if (w < 0 || w >= depth) into->push_back(Box::point(border()));

@@ -87,19 +87,21 @@ int runDemo(const std::string& id, int argc, char** argv) {
     opts.parse(rest);
     if (f.help) {
       std::printf("%s\n\n%s\n\nusage: %s [flags]\n\ncommon flags:\n%s\n%s flags (each key works in the window):\n%s",
-                  scene->title().c_str(), scene->about().c_str(), id.c_str(), commonFlagsHelp().c_str(),
-                  id.c_str(), opts.helpText().c_str());
+                  scene->title().c_str(), scene->about().c_str(), id.c_str(), commonFlagsHelp().c_str(), id.c_str(),
+                  opts.helpText().c_str());
       std::printf("\nwindow keys: %s  h: overlay on/off  l: the OpenGL calls beside the picture\n"
                   "  ?/F1: help card  F12: save PNG + sidecar and print the command  Backspace: reset every option\n"
                   "  i (I where the demo takes i): inspect mode, click a pixel: its loupe and what happens inside it\n"
-                  "  =: as +  arrows: turn/tilt where the demo has them  esc/q: quit\n", opts.keysText().c_str());
+                  "  =: as +  arrows: turn/tilt where the demo has them  esc/q: quit\n",
+                  opts.keysText().c_str());
       return kExitOk;
     }
     Backend b = parseBackend(f.backend);
     int w = f.width ? f.width : scene->defaultWidth();
     int h = f.height ? f.height : scene->defaultHeight();
     if (!f.png.empty() || !f.glListing.empty() || !f.exportC.empty()) {
-      if (b == Backend::Window) throw Error("--png, --gl-listing and --export-c render offscreen: use --backend osmesa, egl, hidden or auto");
+      if (b == Backend::Window)
+        throw Error("--png, --gl-listing and --export-c render offscreen: use --backend osmesa, egl, hidden or auto");
       if (!f.screenshot.empty() || f.frames)
         throw Error("--screenshot and --frames are for the window, not --png, --gl-listing or --export-c");
       checkPixels(f.inspect, w, h);  // before anything is rendered or written

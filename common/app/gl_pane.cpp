@@ -80,7 +80,8 @@ void GlPane::draw(int x, int w, int h, double now) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
   bool fresh = now - changedAt_ < kHighlightSeconds;
   ImGui::TextWrapped("%zu lines, recorded as drawn. %s%s", lines_.size(),
-                     fresh ? "Yellow: changed by the last key." : "Press a key of the demo: what it changes turns yellow.",
+                     fresh ? "Yellow: changed by the last key."
+                           : "Press a key of the demo: what it changes turns yellow.",
                      firstPicked_ >= 0 ? " Cyan: the calls that set the picked pixel's texture state." : "");
   ImGui::Separator();
   ImGui::BeginChild("listing", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
@@ -96,14 +97,11 @@ void GlPane::draw(int x, int w, int h, double now) {
   while (clipper.Step())
     for (int k = clipper.DisplayStart; k < clipper.DisplayEnd; ++k) {
       const ListingLine& l = lines_[size_t(k)];
-      if (l.changed && fresh)
-        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.2f, 1.0f), "%s", l.text.c_str());
-      else if (l.picked)
-        ImGui::TextColored(ImVec4(0.35f, 0.9f, 1.0f, 1.0f), "%s", l.text.c_str());
+      if (l.changed && fresh) ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.2f, 1.0f), "%s", l.text.c_str());
+      else if (l.picked) ImGui::TextColored(ImVec4(0.35f, 0.9f, 1.0f, 1.0f), "%s", l.text.c_str());
       else if (l.text.rfind("/*", 0) == 0 || l.text.rfind("    \"", 0) == 0)
         ImGui::TextColored(ImVec4(0.6f, 0.7f, 0.6f, 1.0f), "%s", l.text.c_str());
-      else
-        ImGui::TextUnformatted(l.text.c_str());
+      else ImGui::TextUnformatted(l.text.c_str());
     }
   clipper.End();
   ImGui::EndChild();

@@ -37,7 +37,7 @@ void upload(GLuint id, const Image& img) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
   glBindTexture(GL_TEXTURE_2D, GLuint(prev));
 }
-}
+}  // namespace
 
 InspectMode::InspectMode(const Options& opts, const CommonFlags& flags) {
   for (const auto& it : opts.items())

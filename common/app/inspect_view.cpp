@@ -27,7 +27,8 @@ void checkPixels(const std::vector<std::array<int, 2>>& pixels, int w, int h) {
                   std::to_string(h - 1) + ", 0,0 = top left)");
 }
 
-std::vector<Picked> inspectPixels(const Frame& frame, const Image& drawn, const std::vector<std::array<int, 2>>& pixels) {
+std::vector<Picked> inspectPixels(const Frame& frame, const Image& drawn,
+                                  const std::vector<std::array<int, 2>>& pixels) {
   ref::Inspector inspector(frame);  // each texture's levels made once for all the pixels
   std::vector<Picked> out;
   for (const auto& p : pixels) out.push_back({inspector.at(p[0], p[1]), drawn.at(p[0], p[1])});
@@ -75,7 +76,9 @@ glm::dvec2 texelCorner(const ref::Inspection& in, const Frame& picture, const re
 void cellRegion(const Frame& picture, const ref::Inspection& in, double* cu, double* cv, double* extent) {
   const double side = std::exp2(std::max(0.0, in.lambda));
   double u0 = in.u - side / 2, u1 = in.u + side / 2, v0 = in.v - side / 2, v1 = in.v + side / 2;
-  auto grow = [&](glm::dvec2 p) { u0 = std::min(u0, p.x), u1 = std::max(u1, p.x), v0 = std::min(v0, p.y), v1 = std::max(v1, p.y); };
+  auto grow = [&](glm::dvec2 p) {
+    u0 = std::min(u0, p.x), u1 = std::max(u1, p.x), v0 = std::min(v0, p.y), v1 = std::max(v1, p.y);
+  };
   for (const glm::dvec2& p : in.preimage) grow(p);
   for (const glm::dvec2& p : in.parallelogram) grow(p);
   const double eu = std::hypot(in.dudx, in.dudy), ev = std::hypot(in.dvdx, in.dvdy);  // the ellipse's half extents
@@ -114,8 +117,10 @@ Panel cellPanel(Frame& f, const Frame& picture, const ref::Inspection& in, int n
   p.batches.push_back(quad);
   if (halfU <= 48 && halfV <= 48) {  // the texel grid of level 0, faint
     std::vector<glm::vec2> grid;
-    for (double u = std::ceil(cu - halfU); u <= cu + halfU; ++u) grid.push_back({float(u), y0}), grid.push_back({float(u), y1});
-    for (double v = std::ceil(cv - halfV); v <= cv + halfV; ++v) grid.push_back({x0, float(v)}), grid.push_back({x1, float(v)});
+    for (double u = std::ceil(cu - halfU); u <= cu + halfU; ++u)
+      grid.push_back({float(u), y0}), grid.push_back({float(u), y1});
+    for (double v = std::ceil(cv - halfV); v <= cv + halfV; ++v)
+      grid.push_back({x0, float(v)}), grid.push_back({x1, float(v)});
     p.batches.push_back(lineSegments(grid, kTexelGrid, 1.0f, "texel_grid"));
   }
   for (Batch& b : footprintBatches(picture, in)) p.batches.push_back(std::move(b));
@@ -135,7 +140,8 @@ CellCaptions cellCaptions(int number, const Measurements& measured) {
                                      [&](const Measurement& x) { return x.name == "inspect_level1" + k; });
   const std::string levels = twoLevels ? "levels {inspect_level0" + k + "|%.0f}+{inspect_level1" + k + "|%.0f}"
                                        : "level {inspect_level0" + k + "|%.0f}";
-  return {{L::given("pick number", number, "%.0f") + L::measuredText(measured, ": lambda {inspect_lambda" + k + "|%.2f},"),
+  return {{L::given("pick number", number, "%.0f") +
+               L::measuredText(measured, ": lambda {inspect_lambda" + k + "|%.2f},"),
            L::measuredText(measured, "rho {inspect_rho" + k + "|%.2f}")},
           {L::measuredText(measured, "(u,v) = ({inspect_u" + k + "|%.1f}, {inspect_v" + k + "|%.1f}),"),
            L::measuredText(measured, levels + ", {inspect_texels" + k + "|%.0f} texels")}};
@@ -148,14 +154,14 @@ std::vector<L::Text> phraseLines(const std::vector<L::Text>& phrases, int scale,
   for (const L::Text& p : phrases) {
     if (!lines.empty() && text::width(lines.back().text + " " + p.text, scale) <= width)
       lines.back() = lines.back() + L::Text(" ") + p;
-    else
-      lines.push_back(p);
+    else lines.push_back(p);
   }
   return lines;
 }
 int captionHeight(const std::vector<L::Text>& phrases, int scale, float width) {
   int h = 0;
-  for (const L::Text& t : phraseLines(phrases, scale, width)) h += L::captionLines(t.text, scale, width) * int(L::lineHeight(scale));
+  for (const L::Text& t : phraseLines(phrases, scale, width))
+    h += L::captionLines(t.text, scale, width) * int(L::lineHeight(scale));
   return h;
 }
 // The lines from the top of `band` down.
@@ -214,7 +220,9 @@ std::vector<Batch> footprintBatches(const Frame& picture, const ref::Inspection&
     loop({{a, b}, {a + size, b}, {a + size, b + size}, {a, b + size}}, kTexels, 2.0f, "texel_read");
   }
   const float hs = float(std::exp2(std::max(0.0, in.lambda)) / 2);
-  loop({{float(in.u) - hs, float(in.v) - hs}, {float(in.u) + hs, float(in.v) - hs}, {float(in.u) + hs, float(in.v) + hs},
+  loop({{float(in.u) - hs, float(in.v) - hs},
+        {float(in.u) + hs, float(in.v) - hs},
+        {float(in.u) + hs, float(in.v) + hs},
         {float(in.u) - hs, float(in.v) + hs}},
        kLodSquare, 1.0f, "lod_square");
   // The EWA ellipse is the image of the unit circle of screen space under
@@ -257,8 +265,8 @@ bool footprintInTextureViews(const Frame& picture, const ref::Inspection& in, Fr
           picture.textures[size_t(b.texture)].params != shown.params || !flatTextureMap(b, &st2pos))
         continue;
       // (u, v) in texels of level 0 -> (s, t) -> the view's object coordinates.
-      const glm::dmat3 uv2pos = st2pos * glm::dmat3(glm::dvec3(1.0 / in.width0, 0, 0), glm::dvec3(0, 1.0 / in.height0, 0),
-                                                     glm::dvec3(0, 0, 1));
+      const glm::dmat3 uv2pos = st2pos * glm::dmat3(glm::dvec3(1.0 / in.width0, 0, 0),
+                                                    glm::dvec3(0, 1.0 / in.height0, 0), glm::dvec3(0, 0, 1));
       Panel o;
       o.id = p.id + "_footprint";
       o.viewport = p.viewport, o.projection = p.projection, o.modelview = p.modelview;
@@ -313,7 +321,8 @@ Panel reframed(Frame& f, const Frame& picture, const Panel& src, const Rect& par
   for (Batch& b : p.batches) {
     b.texture = texture(b.texture), b.texture1 = texture(b.texture1);
     if (b.program.empty()) continue;
-    const bool have = std::any_of(f.programs.begin(), f.programs.end(), [&](const auto& q) { return q.first == b.program; });
+    const bool have = std::any_of(f.programs.begin(), f.programs.end(),
+                                  [&](const auto& q) { return q.first == b.program; });
     if (!have)
       for (const auto& q : picture.programs)
         if (q.first == b.program) f.programs.push_back(q);
@@ -340,7 +349,9 @@ bool crosses(glm::vec2 a, glm::vec2 b, const L::Box& r) {
 }
 // Whether segments a-b and c-d cross (touching ends do not count).
 bool crosses(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d) {
-  auto side = [](glm::vec2 o, glm::vec2 p, glm::vec2 q) { return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x); };
+  auto side = [](glm::vec2 o, glm::vec2 p, glm::vec2 q) {
+    return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x);
+  };
   const float d1 = side(c, d, a), d2 = side(c, d, b), d3 = side(a, b, c), d4 = side(a, b, d);
   return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
@@ -376,21 +387,25 @@ std::vector<glm::vec2> numberPicks(Frame& f, const std::vector<L::Box>& rings, c
           const float x0 = side == 0 ? ring.x1 + ringGap + float(i) * step : ring.x0 - ringGap - bw - float(i) * step;
           const float y0 = std::round(c.y - bh / 2 + float(j) * step);
           // Near first, to the right before the left.
-          candidates.push_back({float(i + std::abs(j)) * step + (side ? 2 * step : 0), {std::round(x0), y0, std::round(x0) + bw, y0 + bh}});
+          candidates.push_back({float(i + std::abs(j)) * step + (side ? 2 * step : 0),
+                                {std::round(x0), y0, std::round(x0) + bw, y0 + bh}});
         }
-    std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
     for (const Candidate& cand : candidates) {
       const L::Box& b = cand.box;
       if (!b.inside(within) || (b.overlaps(picture) && !b.inside(picture))) continue;
       if (std::any_of(rings.begin(), rings.end(), [&](const L::Box& r) { return grown(r, 1).overlaps(b); })) continue;
       if (std::any_of(placed.begin(), placed.end(), [&](const L::Box& o) { return o.overlaps(b); })) continue;
       bool hitsLeader = false;
-      for (size_t s = 0; s + 1 < leaders.size(); s += 2) hitsLeader = hitsLeader || crosses(leaders[s], leaders[s + 1], b);
+      for (size_t s = 0; s + 1 < leaders.size(); s += 2)
+        hitsLeader = hitsLeader || crosses(leaders[s], leaders[s + 1], b);
       if (hitsLeader) continue;
       // The leader: from the ring's edge to the nearest point of the label,
       // when the label does not touch the ring.
       const glm::vec2 q(std::clamp(c.x, b.x0, b.x1), std::clamp(c.y, b.y0, b.y1));
-      const float reach = std::max(std::abs(q.x - c.x) - (ring.x1 - ring.x0) / 2, std::abs(q.y - c.y) - (ring.y1 - ring.y0) / 2);
+      const float reach = std::max(std::abs(q.x - c.x) - (ring.x1 - ring.x0) / 2,
+                                   std::abs(q.y - c.y) - (ring.y1 - ring.y0) / 2);
       glm::vec2 from = c;
       bool leader = reach > ringGap + 1;
       if (leader) {
@@ -401,7 +416,8 @@ std::vector<glm::vec2> numberPicks(Frame& f, const std::vector<L::Box>& rings, c
         for (size_t r = 0; r < rings.size(); ++r)
           blocked = blocked || (r != k && !rings[r].overlaps(ring) && crosses(from, q, grown(rings[r], 1)));
         for (const L::Box& o : placed) blocked = blocked || crosses(from, q, o);
-        for (size_t s = 0; s + 1 < leaders.size(); s += 2) blocked = blocked || crosses(from, q, leaders[s], leaders[s + 1]);
+        for (size_t s = 0; s + 1 < leaders.size(); s += 2)
+          blocked = blocked || crosses(from, q, leaders[s], leaders[s + 1]);
         if (blocked) continue;
       }
       Label at = l;
@@ -435,7 +451,8 @@ int cellColumns(int n, const Rect& area, const std::function<int(int cellW)>& ca
 }
 }  // namespace
 
-Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, const Measurements& measured, int w, int h) {
+Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, const Measurements& measured, int w,
+                     int h) {
   Frame f = L::blankFrame(w, h);
   f.perspectiveHint = picture.perspectiveHint;
   const int scale = std::max(1, std::min(w, h) / 500), line = int(L::lineHeight(scale)), margin = 4;
@@ -454,11 +471,12 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
                                       {kLodSquare, "a texel of level lambda"},
                                       {kTexels, "texels read"},
                                       {kTexelGrid, kGridMeaning}};
-  auto keyHeight = [&](int width) { return int(std::ceil(drawKey(f, {0, 0, float(width), float(h)}, entries, scale, false))); };
-  const L::Text cellsTitle =
-      n ? L::Text("the texture's level ") + L::given("the level the cells show", 0, "%.0f") +
-              L::Text(" around each footprint, in its texels (u right, v up)")
-        : L::Text("no picked pixel is textured");
+  auto keyHeight = [&](int width) {
+    return int(std::ceil(drawKey(f, {0, 0, float(width), float(h)}, entries, scale, false)));
+  };
+  const L::Text cellsTitle = n ? L::Text("the texture's level ") + L::given("the level the cells show", 0, "%.0f") +
+                                     L::Text(" around each footprint, in its texels (u right, v up)")
+                               : L::Text("no picked pixel is textured");
   // The picture: the picks' panel at its own pixels (reframed), whole when
   // there is room, else the part around the picks; beside the cells (left)
   // or above them, whichever shows more of it.  A band of half a line above
@@ -476,10 +494,12 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
   if (pi >= 0) {
     const Rect& v = picture.panels[size_t(pi)].viewport;
     const int x0 = std::max(0, v.x), y0 = std::max(0, v.y);
-    panel = {x0, y0, std::max(0, std::min(picture.width, v.x + v.w) - x0), std::max(0, std::min(picture.height, v.y + v.h) - y0)};
+    panel = {x0, y0, std::max(0, std::min(picture.width, v.x + v.w) - x0),
+             std::max(0, std::min(picture.height, v.y + v.h) - y0)};
   }
   const bool one = std::count_if(picks.begin(), picks.end(), [&](const Picked& p) { return p.in.panel == pi; }) == 1;
-  const std::string whole = one ? "the pixel's panel, drawn again pixel for pixel" : "the pixels' panel, drawn again pixel for pixel",
+  const std::string whole = one ? "the pixel's panel, drawn again pixel for pixel"
+                                : "the pixels' panel, drawn again pixel for pixel",
                     partOf = one ? "the pixel's part of its panel, drawn again pixel for pixel"
                                  : "the pixels' part of their panel, drawn again pixel for pixel";
   auto captionH = [&](int width) { return L::captionLines(partOf, scale, float(width)) * line; };
@@ -487,7 +507,8 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
   const int topRoomW = w - 2 * margin, topRoomH = h * 2 / 5 - captionH(topRoomW) - line - margin;
   auto shown = [&](int rw, int rh) { return double(std::min(panel.w, rw)) * double(std::min(panel.h, rh)); };
   const bool above = pi >= 0 && shown(topRoomW, topRoomH) > shown(leftRoomW, leftRoomH);
-  const int cropW = std::min(panel.w, above ? topRoomW : leftRoomW), cropH = std::min(panel.h, above ? topRoomH : leftRoomH);
+  const int cropW = std::min(panel.w, above ? topRoomW : leftRoomW),
+            cropH = std::min(panel.h, above ? topRoomH : leftRoomH);
   // The zone of the picture and the picks' numbers (under the picture's
   // caption), the key's band, the cells' title and the cells.
   Rect zone, cellArea;
@@ -495,7 +516,8 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
   if (above) {
     zone = {margin, captionH(topRoomW) + margin / 2, w - 2 * margin, cropH + line};
     const float y = float(zone.y + zone.h + margin);
-    title = {float(margin), y, float(w - margin), y + float(L::captionLines(cellsTitle.text, scale, float(w - 2 * margin)) * line)};
+    title = {float(margin), y, float(w - margin),
+             y + float(L::captionLines(cellsTitle.text, scale, float(w - 2 * margin)) * line)};
     key = {float(margin), title.y1, float(w - margin), title.y1 + float(keyHeight(w - 2 * margin))};
     cellArea = {margin, int(key.y1) + margin, w - 2 * margin, h - int(key.y1) - 2 * margin};
   } else {
@@ -537,7 +559,8 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
     Panel marks;
     marks.id = "picks";
     marks.viewport = zone;
-    marks.projection = glm::ortho(float(zone.x), float(zone.x + zone.w), float(zone.y + zone.h), float(zone.y), -1.0f, 1.0f);
+    marks.projection = glm::ortho(float(zone.x), float(zone.x + zone.w), float(zone.y + zone.h), float(zone.y), -1.0f,
+                                  1.0f);
     std::vector<const Picked*> ringed;
     for (const Picked& p : picks)
       if (p.in.panel == pi && part.contains(p.in.x, p.in.y)) ringed.push_back(&p);
@@ -552,8 +575,8 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
     std::vector<int> numbers;
     for (const Picked* p : ringed) {
       const float cx = float(at.x + p->in.x - part.x) + 0.5f, cy = float(at.y + p->in.y - part.y) + 0.5f, q = float(r);
-      marks.batches.push_back(lineLoop({{cx - q, cy - q}, {cx + q, cy - q}, {cx + q, cy + q}, {cx - q, cy + q}}, L::kAmber,
-                                       r >= 3 ? 2.0f : 1.0f, "pick"));
+      marks.batches.push_back(lineLoop({{cx - q, cy - q}, {cx + q, cy - q}, {cx + q, cy + q}, {cx - q, cy + q}},
+                                       L::kAmber, r >= 3 ? 2.0f : 1.0f, "pick"));
       rings.push_back({cx - q - 1, cy - q - 1, cx + q + 1, cy + q + 1});
       numbers.push_back(int(p - picks.data()) + 1);
     }
@@ -581,11 +604,13 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
   bool grid = false;
   for (int c = 0; c < n; ++c) {
     const Rect area{cellArea.x + (c % cols) * cellW, cellArea.y + (c / cols) * cellH, cellW - 6, cellH - 4};
-    grid = addCell(f, picture, cells[size_t(c)]->in, int(cells[size_t(c)] - picks.data()) + 1, measured, area, scale) || grid;
+    grid = addCell(f, picture, cells[size_t(c)]->in, int(cells[size_t(c)] - picks.data()) + 1, measured, area, scale) ||
+           grid;
   }
   // The key names the colours drawn, and only those.
   auto drop = [&](const std::string& meaning) {
-    entries.erase(std::remove_if(entries.begin(), entries.end(), [&](const LegendEntry& e) { return e.meaning == meaning; }),
+    entries.erase(std::remove_if(entries.begin(), entries.end(),
+                                 [&](const LegendEntry& e) { return e.meaning == meaning; }),
                   entries.end());
   };
   if (!anyRing) drop(kRingMeaning);
@@ -610,11 +635,15 @@ std::vector<std::string> applyInspect(const std::string& /*demo*/, const CommonF
     // The numbers a figure's claim can quote, pick by pick (1-based).
     if (!usable(p.in)) continue;
     const std::string k = "[" + std::to_string(n + 1) + "]";
-    got->measurements.push_back({"inspect_lambda" + k, p.in.lambda, "--inspect pick " + k + ": lambda (level of detail)"});
+    got->measurements.push_back(
+        {"inspect_lambda" + k, p.in.lambda, "--inspect pick " + k + ": lambda (level of detail)"});
     got->measurements.push_back({"inspect_rho" + k, p.in.rhoEdge, "--inspect pick " + k + ": rho, texels per pixel"});
-    got->measurements.push_back({"inspect_u" + k, p.in.u, "--inspect pick " + k + ": u = (s/q) x width, texels of level 0"});
-    got->measurements.push_back({"inspect_v" + k, p.in.v, "--inspect pick " + k + ": v = (t/q) x height, texels of level 0"});
-    got->measurements.push_back({"inspect_level0" + k, double(p.in.level0), "--inspect pick " + k + ": the mip level read"});
+    got->measurements.push_back(
+        {"inspect_u" + k, p.in.u, "--inspect pick " + k + ": u = (s/q) x width, texels of level 0"});
+    got->measurements.push_back(
+        {"inspect_v" + k, p.in.v, "--inspect pick " + k + ": v = (t/q) x height, texels of level 0"});
+    got->measurements.push_back(
+        {"inspect_level0" + k, double(p.in.level0), "--inspect pick " + k + ": the mip level read"});
     if (p.in.level1 != p.in.level0)
       got->measurements.push_back({"inspect_level1" + k, double(p.in.level1),
                                    "--inspect pick " + k + ": the second level the filter blends in"});

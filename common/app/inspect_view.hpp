@@ -36,7 +36,8 @@ struct Picked {
 // anything is rendered or written.
 void checkPixels(const std::vector<std::array<int, 2>>& pixels, int w, int h);
 // Each pixel of `frame` inspected, beside the pixel of `drawn` (GL's picture of it).
-std::vector<Picked> inspectPixels(const Frame& frame, const Image& drawn, const std::vector<std::array<int, 2>>& pixels);
+std::vector<Picked> inspectPixels(const Frame& frame, const Image& drawn,
+                                  const std::vector<std::array<int, 2>>& pixels);
 // The card: the reference's (ref::formatInspection) and GL's colour beside
 // the reference's, with their difference in 8-bit steps.
 std::string inspectCard(const Picked& p);
@@ -58,7 +59,8 @@ std::string inspectJson(const Picked& p);
 // levels and texel count, printed from the pick's measurements in
 // `measured` (applyInspect's inspect_*[n]).  A legend names each colour
 // drawn.
-Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, const Measurements& measured, int w, int h);
+Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, const Measurements& measured, int w,
+                     int h);
 
 // The footprint of one inspected pixel as line batches in texels of level 0
 // (u right, v up): the texels read (orange), the square of side 2^lambda

@@ -180,7 +180,9 @@ std::string gallery(const std::vector<Entry>& entries, const std::string& regene
   std::string md =
       "# Book figures\n\n"
       "Every image here is made by the suite; none is drawn by hand. Regenerate all of them with\n\n"
-      "    " + regenerate + "\n\n"
+      "    " +
+      regenerate +
+      "\n\n"
       "Each PNG has a sidecar `.json` beside it with every parameter needed to recompute it without OpenGL:\n"
       "size, projection and modelview matrices, textures (how they were made, filters, wrap modes), and every\n"
       "vertex with its (s,t,r,q). The measured numbers below are the figure's claim, checked by the tests.\n\n";
@@ -244,7 +246,8 @@ int run(int argc, char** argv) {
       scale = std::strtod(v.c_str(), &end);
       if (v.empty() || *end || !(scale > 0) || scale > 16) throw ts::Error("--scale: '" + v + "' is not in (0, 16]");
     } else if (a == "--help" || a == "-h") {
-      std::printf("usage: make_figures [--out DIR] [--backend auto|osmesa|egl|hidden] [--scale F] [--only ID] [--list] [--export-c]\n"
+      std::printf("usage: make_figures [--out DIR] [--backend auto|osmesa|egl|hidden] "
+                  "[--scale F] [--only ID] [--list] [--export-c]\n"
                   "Renders every registered book figure (PNG + sidecar JSON + GL listing) and the gallery README.md\n"
                   "into DIR (default book_figures). --scale multiplies every figure's size. --only ID[,ID...]: just\n"
                   "these figures or every figure of these demos (no gallery). --export-c: also each figure as a\n"
@@ -267,8 +270,9 @@ int run(int argc, char** argv) {
       todo.push_back(e);
     }
   if (list) {
-    for (const auto& e : todo) std::printf("%-28s %-24s %dx%d  demos/%s\n", e.spec.id.c_str(), e.spec.bookNumber.c_str(),
-                                           e.spec.width, e.spec.height, e.demo.c_str());
+    for (const auto& e : todo)
+      std::printf("%-28s %-24s %dx%d  demos/%s\n", e.spec.id.c_str(), e.spec.bookNumber.c_str(), e.spec.width,
+                  e.spec.height, e.demo.c_str());
     return 0;
   }
   if (todo.empty()) throw ts::Error("no figure or demo named '" + only + "' (see --list)");
@@ -316,12 +320,15 @@ int run(int argc, char** argv) {
     e.command = ts::figureCommand(e.demo, png, e.spec.width, e.spec.height, flags);
     e.measurements = got.measurements;
     e.claim = claimLine(e.spec, *scene, got.measurements);
-    ts::SidecarInfo info{e.spec.id, e.spec.bookNumber, e.spec.caption, e.demo, e.command, opts.state(), got.measurements,
-                         ts::gl::rendererString() + " | " + ts::gl::versionString()};
+    ts::SidecarInfo info{e.spec.id,        e.spec.bookNumber,
+                         e.spec.caption,   e.demo,
+                         e.command,        opts.state(),
+                         got.measurements, ts::gl::rendererString() + " | " + ts::gl::versionString()};
     info.inspect = inspected;
     ts::writePng(png, got.image);
     ts::writeFileAtomic(json, ts::sidecarJson(got.frame, info));
-    ts::writeFileAtomic(listing, ts::glListingFile(got, ts::stateCommand(e.demo, e.spec.width, e.spec.height, e.spec.flags)));
+    ts::writeFileAtomic(listing,
+                        ts::glListingFile(got, ts::stateCommand(e.demo, e.spec.width, e.spec.height, e.spec.flags)));
     if (exportPrograms) {
       ts::ExportInfo info;
       info.demo = e.demo;

@@ -1,6 +1,5 @@
 #include "common/app/measure_worker.hpp"
 
-
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>

@@ -48,8 +48,8 @@ class MeasureWorker {
     uint64_t id = 0;        // the request's number
     std::string stateText;  // Options::stateText() of the measured state
     Measurements measured;
-    std::string error;      // a measurement failed: its message (measured is empty)
-    int errorCode = 0;      // and its ts::Error exit status
+    std::string error;  // a measurement failed: its message (measured is empty)
+    int errorCode = 0;  // and its ts::Error exit status
   };
   // The newest finished result not taken yet; false if none.
   bool take(Result* out);

@@ -55,14 +55,14 @@ void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& 
   ImGui::SetNextWindowBgAlpha(1.0f);  // beside the figure: nothing shows through
   ImGui::Begin("##side_panel", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoTitleBar);
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoTitleBar);
   const ImVec4 gold(1.0f, 0.85f, 0.35f, 1.0f), dim(0.65f, 0.65f, 0.7f, 1.0f), stale(0.6f, 0.6f, 0.6f, 1.0f);
   ImGui::TextWrapped("%s", scene.title().c_str());
   ImGui::Separator();
   if (extra) extra();  // the inspect mode, when on: first, where the student looks
   // The claim: its numbers large, each with what it means.
-  if (status.measuring)
-    ImGui::TextColored(gold, "measuring... %.0f%%", 100.0 * std::clamp(status.progress, 0.0, 1.0));
+  if (status.measuring) ImGui::TextColored(gold, "measuring... %.0f%%", 100.0 * std::clamp(status.progress, 0.0, 1.0));
   if (m.empty() && !status.measuring) ImGui::TextColored(dim, "not measured yet");
   for (const Measurement* c : claimed(scene, m)) {
     ImGui::TextColored(status.stale ? stale : gold, "%s", c->name.c_str());
@@ -80,8 +80,10 @@ void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& 
   for (const auto& x : m)
     if (x.name.rfind("exercise_check[", 0) == 0) {
       const bool pass = x.value > 0.5;
-      ImGui::TextColored(status.stale ? stale : pass ? ImVec4(0.45f, 0.9f, 0.45f, 1) : ImVec4(1, 0.45f, 0.4f, 1), "%s",
-                         pass ? "pass" : "FAIL");
+      ImGui::TextColored(status.stale ? stale
+                         : pass       ? ImVec4(0.45f, 0.9f, 0.45f, 1)
+                                      : ImVec4(1, 0.45f, 0.4f, 1),
+                         "%s", pass ? "pass" : "FAIL");
       ImGui::SameLine();
       std::string line = x.meaning;  // the verdict is in front: not again at the end
       for (const char* tail : {": pass", ": FAIL"})
@@ -99,14 +101,16 @@ void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& 
       if (n == it.name) value = v;
     char padded[256];
     std::snprintf(padded, sizeof padded, "%-12s %s", it.name.c_str(), value.c_str());
-    std::string line = ImGui::CalcTextSize(padded).x <= ImGui::GetContentRegionAvail().x ? padded : it.name + " " + value;
+    std::string line = ImGui::CalcTextSize(padded).x <= ImGui::GetContentRegionAvail().x ? padded
+                                                                                         : it.name + " " + value;
     std::string keys = !it.key && !it.keyDown ? ""
                        : it.keyDown           ? std::string(1, it.key) + "/" + std::string(1, it.keyDown)
                                               : std::string(1, it.key);
     float avail = ImGui::GetContentRegionAvail().x, need = ImGui::CalcTextSize(keys.c_str()).x;
     ImGui::TextWrapped("%s", line.c_str());
     if (keys.empty()) continue;
-    if (ImGui::CalcTextSize(line.c_str()).x + spacing + need <= avail) ImGui::SameLine(avail - need + ImGui::GetStyle().WindowPadding.x);
+    if (ImGui::CalcTextSize(line.c_str()).x + spacing + need <= avail)
+      ImGui::SameLine(avail - need + ImGui::GetStyle().WindowPadding.x);
     else ImGui::SetCursorPosX(ImGui::GetCursorPosX() + std::max(0.0f, avail - need));
     ImGui::TextColored(dim, "%s", keys.c_str());
   }

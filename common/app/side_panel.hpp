@@ -20,10 +20,10 @@ namespace ts {
 // state.
 struct PanelStatus {
   double fps = 0;
-  bool idle = false;        // nothing animating: drawn only when something changes
+  bool idle = false;  // nothing animating: drawn only when something changes
   bool measuring = false;
-  double progress = 0;      // 0..1 while measuring
-  bool stale = false;       // the numbers shown are not the current state's
+  double progress = 0;  // 0..1 while measuring
+  bool stale = false;   // the numbers shown are not the current state's
 };
 
 // The panel's width in a window `windowWidth` pixels wide (0 when closed).

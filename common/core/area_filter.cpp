@@ -1,7 +1,6 @@
 // common/core/area_filter.cpp — see area_filter.hpp.
 #include "common/core/area_filter.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -76,10 +75,14 @@ glm::dvec2 atY(glm::dvec2 a, glm::dvec2 b, double c) { return {a.x + (b.x - a.x)
 
 Polygon2 clipToBox(const Polygon2& poly, double x0, double y0, double x1, double y1) {
   Polygon2 p = poly;
-  p = clipEdge(p, [&](glm::dvec2 q) { return q.x >= x0; }, [&](glm::dvec2 a, glm::dvec2 b) { return atX(a, b, x0); });
-  p = clipEdge(p, [&](glm::dvec2 q) { return q.x <= x1; }, [&](glm::dvec2 a, glm::dvec2 b) { return atX(a, b, x1); });
-  p = clipEdge(p, [&](glm::dvec2 q) { return q.y >= y0; }, [&](glm::dvec2 a, glm::dvec2 b) { return atY(a, b, y0); });
-  p = clipEdge(p, [&](glm::dvec2 q) { return q.y <= y1; }, [&](glm::dvec2 a, glm::dvec2 b) { return atY(a, b, y1); });
+  p = clipEdge(
+      p, [&](glm::dvec2 q) { return q.x >= x0; }, [&](glm::dvec2 a, glm::dvec2 b) { return atX(a, b, x0); });
+  p = clipEdge(
+      p, [&](glm::dvec2 q) { return q.x <= x1; }, [&](glm::dvec2 a, glm::dvec2 b) { return atX(a, b, x1); });
+  p = clipEdge(
+      p, [&](glm::dvec2 q) { return q.y >= y0; }, [&](glm::dvec2 a, glm::dvec2 b) { return atY(a, b, y0); });
+  p = clipEdge(
+      p, [&](glm::dvec2 q) { return q.y <= y1; }, [&](glm::dvec2 a, glm::dvec2 b) { return atY(a, b, y1); });
   return p;
 }
 
@@ -116,7 +119,7 @@ glm::dvec4 exactAreaAverage(const Image& texture, const Polygon2& preimage) {
   glm::dvec4 sum(0.0);
   if (texture.empty()) return sum;
   for (const TexelWeight& t : exactAreaWeights(preimage)) {
-    const int i = ((t.i % texture.width) + texture.width) % texture.width;    // GL_REPEAT
+    const int i = ((t.i % texture.width) + texture.width) % texture.width;  // GL_REPEAT
     const int j = ((t.j % texture.height) + texture.height) % texture.height;
     const Rgba c = texture.at(i, j);
     sum += t.weight * glm::dvec4(c.r, c.g, c.b, c.a);
@@ -161,7 +164,9 @@ struct SumTable {
   int cols = 0, rows = 0, tilesAcross = 0;
   std::vector<Sum, detail::LargeAllocator<Sum>> sums;
   SumTable(int w, int h)
-      : cols(w + 1), rows(h), tilesAcross((w + 1 + kTileW - 1) / kTileW),
+      : cols(w + 1),
+        rows(h),
+        tilesAcross((w + 1 + kTileW - 1) / kTileW),
         sums(size_t(tilesAcross) * size_t((h + kTileH - 1) / kTileH) * kTileW * kTileH) {}
   // Where row j's sums start (add column(i)).
   size_t rowBase(long j) const {
@@ -192,7 +197,8 @@ inline glm::dvec4 Piece<IntegerSum>::g() const {
   const __m128i sumL = _mm_and_si128(l, mask), texel = _mm_srli_epi32(l, 24), sumT = _mm_and_si128(t, mask);
   const __m128d p = _mm_set1_pd(periods), d = _mm_set1_pd(du);
   const auto half = [&](__m128i tot, __m128i sum, __m128i tex) {  // lanes 0 and 1 of each
-    return _mm_add_pd(_mm_add_pd(_mm_mul_pd(p, _mm_cvtepi32_pd(tot)), _mm_cvtepi32_pd(sum)), _mm_mul_pd(_mm_cvtepi32_pd(tex), d));
+    return _mm_add_pd(_mm_add_pd(_mm_mul_pd(p, _mm_cvtepi32_pd(tot)), _mm_cvtepi32_pd(sum)),
+                      _mm_mul_pd(_mm_cvtepi32_pd(tex), d));
   };
   const auto upper = [](__m128i v) { return _mm_unpackhi_epi64(v, v); };
   glm::dvec4 out;
@@ -254,7 +260,7 @@ glm::dvec4 outlineAverage(const SumTable<Sum>& table, int w_, int h_, const Poly
     const glm::dvec2 m0 = a + 0.5 * t1 * d;
     const long i = long(std::floor(m0.x)), j = long(std::floor(m0.y));
     long q = i >= 0 ? i / w_ : -((-i + w_ - 1) / w_);  // whole periods left of texel i
-    long mi = i - q * w_;                             // its column in the texture
+    long mi = i - q * w_;                              // its column in the texture
     long row = ((j % h_) + h_) % h_;
     const Sum* sums = &table.sums[table.rowBase(row)];  // row's sums: sums[Table::column(i)]
     // A table larger than the caches is walked in two passes over the edge:
@@ -268,8 +274,12 @@ glm::dvec4 outlineAverage(const SumTable<Sum>& table, int w_, int h_, const Poly
         const double um = a.x + 0.5 * (t0 + t1) * d.x;  // G is linear in u within the texel: its midpoint value
         // No whole periods to add (q = 0): the row total is not read, a zero
         // stands in (a select, not a branch: q changes often on a tiled plane).
-        const Piece<Sum> pc{&sums[Table::column(mi)], &sums[Table::column(mi + 1)], q != 0 ? &sums[totalColumn] : &zero,
-                            d.y * (t1 - t0), double(q), um - double(q * w_ + mi)};
+        const Piece<Sum> pc{&sums[Table::column(mi)],
+                            &sums[Table::column(mi + 1)],
+                            q != 0 ? &sums[totalColumn] : &zero,
+                            d.y * (t1 - t0),
+                            double(q),
+                            um - double(q * w_ + mi)};
         if (prefetch) {
           __builtin_prefetch(pc.left);
           if (!Sum::kHoldsTexel) __builtin_prefetch(pc.right);
@@ -305,7 +315,7 @@ glm::dvec4 outlineAverage(const SumTable<Sum>& table, int w_, int h_, const Poly
 
 struct AreaIntegral::Tables {
   std::unique_ptr<SumTable<IntegerSum>> integer;  // an 8-bit texture's
-  std::unique_ptr<SumTable<RealSum>> real;     // texels given as numbers
+  std::unique_ptr<SumTable<RealSum>> real;        // texels given as numbers
 };
 
 AreaIntegral::AreaIntegral(const Image& texture) : w_(texture.width), h_(texture.height) {

@@ -53,8 +53,8 @@ double signedArea(const Polygon2& poly);
 Polygon2 clipToBox(const Polygon2& poly, double x0, double y0, double x1, double y1);
 
 struct TexelWeight {
-  int i = 0, j = 0;    // texel index before wrapping (may be < 0 or ≥ size)
-  double weight = 0;   // overlap area / preimage area
+  int i = 0, j = 0;   // texel index before wrapping (may be < 0 or ≥ size)
+  double weight = 0;  // overlap area / preimage area
 };
 
 // Each texel the convex polygon overlaps, with its share of the polygon's

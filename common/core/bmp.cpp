@@ -7,7 +7,9 @@
 
 namespace ts {
 namespace {
-uint32_t le32(const uint8_t* p) { return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24; }
+uint32_t le32(const uint8_t* p) {
+  return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
+}
 uint16_t le16(const uint8_t* p) { return uint16_t(p[0] | p[1] << 8); }
 void put32(std::vector<uint8_t>& v, uint32_t x) {
   for (int k = 0; k < 4; ++k) v.push_back(uint8_t(x >> (8 * k)));
@@ -25,8 +27,10 @@ Image decodeBmp(const uint8_t* data, size_t size, const std::string& name) {
   if (size < 18) throw bad("the file ends inside the file header (truncated)");
   uint32_t pixelOffset = le32(data + 10);
   uint32_t infoSize = le32(data + 14);
-  if (infoSize == 12) throw Error(name + ": unsupported BMP: OS/2 (BITMAPCOREHEADER) files are not read; save as 24-bit Windows BMP");
-  if (infoSize < 40 || infoSize > 1024) throw bad("info header size " + std::to_string(infoSize) + " is not a Windows BITMAPINFOHEADER (40..124)");
+  if (infoSize == 12)
+    throw Error(name + ": unsupported BMP: OS/2 (BITMAPCOREHEADER) files are not read; save as 24-bit Windows BMP");
+  if (infoSize < 40 || infoSize > 1024)
+    throw bad("info header size " + std::to_string(infoSize) + " is not a Windows BITMAPINFOHEADER (40..124)");
   if (size < 14 + size_t(infoSize)) throw bad("the file ends inside the info header (truncated)");
   const uint8_t* ih = data + 14;
   int32_t width = int32_t(le32(ih + 4)), height = int32_t(le32(ih + 8));

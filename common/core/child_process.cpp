@@ -56,7 +56,9 @@ std::wstring quoteArg(const std::wstring& a) {
   q.append(slashes * 2, L'\\');
   return q + L"\"";
 }
-std::string lastError(const char* what) { return std::string(what) + ": Windows error " + std::to_string(GetLastError()); }
+std::string lastError(const char* what) {
+  return std::string(what) + ": Windows error " + std::to_string(GetLastError());
+}
 }  // namespace
 
 ProcessResult runProcess(const std::vector<std::string>& argv, const std::string& input, double timeoutSeconds) {
@@ -194,7 +196,8 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::string
   else fcntl(in[1], F_SETFL, O_NONBLOCK);
   const auto start = std::chrono::steady_clock::now();
   while (true) {
-    const double left = timeoutSeconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double left = timeoutSeconds -
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (left <= 0) {
       r.timedOut = true;
       break;

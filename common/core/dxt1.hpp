@@ -49,7 +49,8 @@ struct Block {
 // the S3TC specification writes it; alpha 0 marks the 3-colour mode's black).
 inline std::array<glm::ivec4, 4> palette(uint16_t c0, uint16_t c1) {
   const glm::ivec3 a = unpack565(c0), b = unpack565(c1);
-  if (c0 > c1) return {glm::ivec4(a, 255), glm::ivec4(b, 255), glm::ivec4((2 * a + b) / 3, 255), glm::ivec4((a + 2 * b) / 3, 255)};
+  if (c0 > c1)
+    return {glm::ivec4(a, 255), glm::ivec4(b, 255), glm::ivec4((2 * a + b) / 3, 255), glm::ivec4((a + 2 * b) / 3, 255)};
   return {glm::ivec4(a, 255), glm::ivec4(b, 255), glm::ivec4((a + b) / 2, 255), glm::ivec4(0, 0, 0, 0)};
 }
 

@@ -19,7 +19,8 @@ Image picture(int which) {
   auto at = [&](int x, int y) { return h.at((x + h.width) % h.width, (y + h.height) % h.height).r / 255.0; };
   for (int y = 0; y < h.height; ++y)
     for (int x = 0; x < h.width; ++x) {
-      const glm::dvec3 n = glm::normalize(glm::dvec3(-4 * (at(x + 1, y) - at(x - 1, y)), -4 * (at(x, y + 1) - at(x, y - 1)), 1.0));
+      const glm::dvec3 n = glm::normalize(
+          glm::dvec3(-4 * (at(x + 1, y) - at(x - 1, y)), -4 * (at(x, y + 1) - at(x, y - 1)), 1.0));
       auto u8 = [](double v) { return uint8_t(std::lround(std::clamp(127.5 * (v + 1.0), 0.0, 255.0))); };
       out.set(x, y, {u8(n.x), u8(n.y), u8(n.z), 255});
     }
@@ -92,8 +93,9 @@ TextureDesc pictureTexture(int which, bool three, Show show, Crop crop, const Im
   t.params = {{"picture", kPictureNames[which]},
               {"three_colour", three ? "1" : "0"},
               {"show", kShowNames[int(show)]},
-              {"crop", crop.w == 0 ? "all" : std::to_string(crop.x) + "," + std::to_string(crop.y) + "," +
-                                                 std::to_string(crop.w) + "," + std::to_string(crop.h)}};
+              {"crop", crop.w == 0 ? "all"
+                                   : std::to_string(crop.x) + "," + std::to_string(crop.y) + "," +
+                                         std::to_string(crop.w) + "," + std::to_string(crop.h)}};
   Image flipped = shown;
   flipped.flipVertical();  // texture row 0 is t = 0, the bottom
   t.image = std::make_shared<const Image>(std::move(flipped));

@@ -51,10 +51,8 @@ TextureDesc unwrappedMap(Param p, int face, const glm::dmat3& sphereView) {
         const double u = 2 * (i + 0.5) / sz.w - 1, v = 2 * (j + 0.5) / sz.h - 1;
         const double up = 4 * (i + 0.5) / sz.w - (i < sz.w / 2 ? 1 : 3);  // across the paraboloid's disc
         if ((p == kSphere && u * u + v * v > 1) || (p == kParaboloid && up * up + v * v > 1)) c = toRgba(kBackground);
-        if (p == kCube)
-          img.set((f % 3) * sz.w + i, (f / 3) * sz.h + j, c);  // t down
-        else
-          img.set(i, sz.h - 1 - j, c);  // t up
+        if (p == kCube) img.set((f % 3) * sz.w + i, (f / 3) * sz.h + j, c);  // t down
+        else img.set(i, sz.h - 1 - j, c);                                    // t up
       }
   img.flipVertical();  // a texture's row 0 is v = 0, the bottom
   t.image = std::make_shared<const Image>(std::move(img));

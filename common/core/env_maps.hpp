@@ -127,9 +127,16 @@ struct Size {
 inline Size mapSize(Param p, int face) {
   const double total = 6.0 * face * face;
   switch (p) {
-    case kLatLong: case kParaboloid: { int h = int(std::lround(std::sqrt(total / 2))); return {2 * h, h}; }
+    case kLatLong:
+    case kParaboloid: {
+      int h = int(std::lround(std::sqrt(total / 2)));
+      return {2 * h, h};
+    }
     case kCube: return {face, face};
-    default: { int n = int(std::lround(std::sqrt(total))); return {n, n}; }
+    default: {
+      int n = int(std::lround(std::sqrt(total)));
+      return {n, n};
+    }
   }
 }
 inline int mapTexels(Param p, int face) {
@@ -148,7 +155,11 @@ inline dvec3 texelDir(Param p, int face, double s, double t, const glm::dmat3& t
 inline dvec2 mapST(Param p, dvec3 d, const glm::dmat3& toEye, int* face = nullptr) {
   switch (p) {
     case kLatLong: return latlongST(d);
-    case kCube: { CubeST c = cubeST(d); if (face) *face = c.face; return {c.s, c.t}; }
+    case kCube: {
+      CubeST c = cubeST(d);
+      if (face) *face = c.face;
+      return {c.s, c.t};
+    }
     case kSphere: return sphereST(toEye * d);
     default: return paraboloidST(d);
   }
@@ -212,7 +223,8 @@ inline dvec3 worldColour(dvec3 d) {
       return x >= 0 && y >= 0 && x < label.width && y < label.height ? label.at(x, y).r / 255.0 : 0.0;
     };
     const double fx = u - x0, fy = v - y0;
-    const double cov = glm::mix(glm::mix(at(x0, y0), at(x0 + 1, y0), fx), glm::mix(at(x0, y0 + 1), at(x0 + 1, y0 + 1), fx), fy);
+    const double cov = glm::mix(glm::mix(at(x0, y0), at(x0 + 1, y0), fx),
+                                glm::mix(at(x0, y0 + 1), at(x0 + 1, y0 + 1), fx), fy);
     const double ink = std::clamp((cov - 0.5) * 4 + 0.5, 0.0, 1.0);
     c = glm::mix(c, glm::mix(dvec3(0.95), dvec3(0.05), ink), box);
   }

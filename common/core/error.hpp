@@ -19,8 +19,7 @@ void note(const std::string& line);
 void setQuietNotes(bool quiet);
 
 struct Error : std::runtime_error {
-  explicit Error(const std::string& what, int code = kExitUsage)
-      : std::runtime_error(what), exit_code(code) {}
+  explicit Error(const std::string& what, int code = kExitUsage) : std::runtime_error(what), exit_code(code) {}
   int exit_code;
 };
 }  // namespace ts

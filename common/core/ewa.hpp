@@ -137,8 +137,8 @@ glm::dvec4 ewaFilter(const Texel& texel, int levels, double u, double v, double 
   const double f = l - L0;
   auto at = [&](int L) {
     const double s = std::ldexp(1.0, -L);
-    return ewaLevel([&](long i, long j) { return texel(L, i, j); }, u * s, v * s, Ux * s, Vx * s, Uy * s, Vy * s,
-                    alpha, reads);
+    return ewaLevel([&](long i, long j) { return texel(L, i, j); }, u * s, v * s, Ux * s, Vx * s, Uy * s, Vy * s, alpha,
+                    reads);
   };
   const glm::dvec4 a = at(L0);
   if (f <= 0 || L0 >= levels - 1) return a;

@@ -44,8 +44,8 @@ struct TextureDesc {
   std::string name;                                         // "checkerboard"
   std::vector<std::pair<std::string, std::string>> params;  // how it was made
   std::shared_ptr<const Image> image;                       // level 0
-  bool mipmaps = false;  // levels built on the CPU by the book's 2x2 average
-  bool linearLightMips = false;  // average in linear light instead of sRGB values
+  bool mipmaps = false;                                     // levels built on the CPU by the book's 2x2 average
+  bool linearLightMips = false;                             // average in linear light instead of sRGB values
   // Explicit levels 0..n (then `mipmaps` must be on); overrides the 2x2 average.
   std::shared_ptr<const std::vector<Image>> mipLevels;
   GLenum minFilter = GL_LINEAR, magFilter = GL_LINEAR;
@@ -137,7 +137,7 @@ struct TexGen {
 // defaults: GL_MODULATE of GL_TEXTURE and GL_PREVIOUS alphas.
 struct Combine {
   GLenum rgb = GL_MODULATE;
-  GLenum source[3] = {GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT};        // GL's defaults
+  GLenum source[3] = {GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT};       // GL's defaults
   GLenum operand[3] = {GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA};  // GL's defaults
 };
 
@@ -261,7 +261,7 @@ struct LegendEntry {
 // sidecar so that a reader knows it without reading the renderer.
 struct FixedState {
   static constexpr GLenum blendSrc = GL_SRC_ALPHA, blendDst = GL_ONE_MINUS_SRC_ALPHA;  // colour
-  static constexpr GLenum blendSrcAlpha = GL_ZERO, blendDstAlpha = GL_ONE;            // alpha: stays opaque
+  static constexpr GLenum blendSrcAlpha = GL_ZERO, blendDstAlpha = GL_ONE;             // alpha: stays opaque
   static constexpr GLenum depthFunc = GL_LESS;
   static constexpr GLenum shadeModel = GL_SMOOTH;
   static constexpr bool cullFace = false, lighting = false;

@@ -36,11 +36,11 @@ struct Arg {
 };
 
 struct Call {
-  const char* name = "";   // "glTexParameteri"
+  const char* name = "";  // "glTexParameteri"
   std::vector<Arg> args;
   bool hasResult = false;  // glGenLists, glCreateShader, glGetUniformLocation ...
   long long result = 0;
-  bool query = false;      // glGet*, glIsEnabled, glCheckFramebufferStatus: reads state, draws nothing
+  bool query = false;  // glGet*, glIsEnabled, glCheckFramebufferStatus: reads state, draws nothing
 };
 
 // The calls that made one picture, shared (a frame is built every window frame).

@@ -46,7 +46,10 @@ Image::Image(int w, int h, Rgba fill) : width(w), height(h) {
     throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range");
   pixels.resize(size_t(w) * size_t(h) * 4);
   for (size_t i = 0; i < pixels.size(); i += 4) {
-    pixels[i] = fill.r; pixels[i + 1] = fill.g; pixels[i + 2] = fill.b; pixels[i + 3] = fill.a;
+    pixels[i] = fill.r;
+    pixels[i + 1] = fill.g;
+    pixels[i + 2] = fill.b;
+    pixels[i + 3] = fill.a;
   }
 }
 
@@ -58,7 +61,10 @@ Rgba Image::at(int x, int y) const {
 void Image::set(int x, int y, Rgba c) {
   if (x < 0 || y < 0 || x >= width || y >= height) return;
   uint8_t* p = &pixels[(size_t(y) * width + x) * 4];
-  p[0] = c.r; p[1] = c.g; p[2] = c.b; p[3] = c.a;
+  p[0] = c.r;
+  p[1] = c.g;
+  p[2] = c.b;
+  p[3] = c.a;
 }
 
 void Image::blit(const Image& src, int x0, int y0) {
@@ -133,16 +139,14 @@ std::vector<uint8_t> encodePng(const Image& img) {
   // Fixed settings so the same pixels always give the same bytes.
   png_set_compression_level(png, 6);
   png_set_filter(png, 0, PNG_FILTER_SUB | PNG_FILTER_UP | PNG_FILTER_PAETH);
-  png_set_IHDR(png, info, png_uint_32(img.width), png_uint_32(img.height), 8, PNG_COLOR_TYPE_RGBA,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  for (int y = 0; y < img.height; ++y)
-    rows[size_t(y)] = const_cast<png_bytep>(&img.pixels[size_t(y) * img.width * 4]);
+  png_set_IHDR(png, info, png_uint_32(img.width), png_uint_32(img.height), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  for (int y = 0; y < img.height; ++y) rows[size_t(y)] = const_cast<png_bytep>(&img.pixels[size_t(y) * img.width * 4]);
   png_set_rows(png, info, rows.data());
   png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
   png_destroy_write_struct(&png, &info);
   return out;
 }
-
 
 // ------------------------------------------------------------ atomic writes
 namespace {

@@ -48,7 +48,8 @@ Panel unitPanel(const std::string& id, const Rect& viewport) {
   return p;
 }
 
-Panel texturePanel(const std::string& id, const Rect& viewport, int texture, const std::string& role, float s0, float s1) {
+Panel texturePanel(const std::string& id, const Rect& viewport, int texture, const std::string& role, float s0,
+                   float s1) {
   Panel p = unitPanel(id, viewport);
   p.batches.push_back(unitSquare(texture, role, s0, s1));
   return p;
@@ -244,8 +245,8 @@ float legend(Frame& f, Box band, const std::vector<LegendEntry>& entries, int sc
     f.panels.push_back(key);
     // The meaning in its colour, unless that colour is too dark to read on the figure's background.
     const float luma = 0.3f * e.color.r + 0.59f * e.color.g + 0.11f * e.color.b;
-    f.labels.push_back({float(int(x)) + swatch + 4.0f * float(scale), y, e.meaning, luma < 0.35f ? kWhite : e.color, scale,
-                        Align::Left, glm::vec4(0.0f)});
+    f.labels.push_back({float(int(x)) + swatch + 4.0f * float(scale), y, e.meaning, luma < 0.35f ? kWhite : e.color,
+                        scale, Align::Left, glm::vec4(0.0f)});
     f.legend.push_back(e);
     x += w + gap;
   }
@@ -275,8 +276,7 @@ float plainCaption(Frame& f, Box band, const std::string& text, glm::vec4 color,
   // One line, as large as fits (at most `scale`).
   for (int s = std::max(1, scale); s >= 1; --s) {
     float p = pad * float(s);
-    if (text::width(text, s) + 2 * p <= band.w() - 1 && text::height(s) + 2 * p <= band.h())
-      return place({text}, s);
+    if (text::width(text, s) + 2 * p <= band.w() - 1 && text::height(s) + 2 * p <= band.h()) return place({text}, s);
   }
   // Wrapped at scale 1 onto the lines the band has room for; the last cut.
   float p = pad;
@@ -333,12 +333,14 @@ float phrases(Frame& f, Box band, const std::vector<Text>& parts, glm::vec4 colo
     for (const Text& p : parts) {
       if (p.empty()) continue;
       fits = fits && text::width(p.text, s) <= width;
-      if (!lines.empty() && text::width(lines.back().text + " " + p.text, s) <= width) lines.back() = lines.back() + " " + p;
+      if (!lines.empty() && text::width(lines.back().text + " " + p.text, s) <= width)
+        lines.back() = lines.back() + " " + p;
       else lines.push_back(p);
     }
     if (!fits || float(lines.size()) * lineHeight(s) - float(4 * s) > band.h()) continue;
     float y = band.y0;
-    for (const Text& l : lines) y = caption(f, {band.x0, y, band.x1, y + lineHeight(s)}, l, color, s, align) + float(4 * s);
+    for (const Text& l : lines)
+      y = caption(f, {band.x0, y, band.x1, y + lineHeight(s)}, l, color, s, align) + float(4 * s);
     return y - float(4 * s);
   }
   return caption(f, band, all, color, scale, align);  // a phrase wider than the band: wrapped at its words

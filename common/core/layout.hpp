@@ -152,8 +152,8 @@ float legend(Frame& f, Box band, const std::vector<LegendEntry>& entries, int sc
 // spaces onto the lines the box has room for, else cut with "...".  Adds
 // the labels and returns the y below the last line (band.y0 when nothing
 // fits).  Never places text outside `band`.
-float caption(Frame& f, Box band, const Text& text, glm::vec4 color, int scale,
-              Align align = Align::Center, glm::vec4 background = glm::vec4(0.0f));
+float caption(Frame& f, Box band, const Text& text, glm::vec4 color, int scale, Align align = Align::Center,
+              glm::vec4 background = glm::vec4(0.0f));
 // A caption made of phrases (its clauses, each with its punctuation): on
 // one line when all fit, else on as few lines as the phrases need, breaking
 // only between phrases, each line at the largest scale (at most `scale`) at

@@ -58,7 +58,8 @@ Batch meshBatch(const Mesh& m, int texture, glm::vec4 color, std::string role) {
   b.texture = texture;
   b.texEnv = GL_MODULATE;
   for (unsigned k : m.triangles())
-    b.vertices.push_back({glm::vec3(m.points[k].pos), glm::vec4(float(m.st[k].x), float(m.st[k].y), 0.0f, 1.0f), color});
+    b.vertices.push_back(
+        {glm::vec3(m.points[k].pos), glm::vec4(float(m.st[k].x), float(m.st[k].y), 0.0f, 1.0f), color});
   return b;
 }
 Batch litMeshBatch(const Mesh& m, int texture, glm::dvec3 toLight, double ambient, double diffuse, std::string role) {

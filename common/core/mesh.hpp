@@ -25,10 +25,10 @@ struct SurfacePoint {
 };
 
 struct Mesh {
-  int nu = 0, nv = 0;                 // grid cells along u and v
-  std::vector<SurfacePoint> points;   // (nu+1) x (nv+1), row-major in v
-  std::vector<glm::dvec2> st;         // texture coordinate per grid vertex
-  std::vector<glm::ivec2> index;      // the (i, j) of each grid vertex
+  int nu = 0, nv = 0;                // grid cells along u and v
+  std::vector<SurfacePoint> points;  // (nu+1) x (nv+1), row-major in v
+  std::vector<glm::dvec2> st;        // texture coordinate per grid vertex
+  std::vector<glm::ivec2> index;     // the (i, j) of each grid vertex
   int at(int i, int j) const { return j * (nu + 1) + i; }
   // Two triangles per cell, counter-clockwise seen from outside.
   std::vector<unsigned> triangles() const;

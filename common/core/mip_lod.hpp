@@ -23,9 +23,7 @@ struct Jacobian {
 };
 // GL's formula (the "edge" form): the longer of the two derivative vectors,
 // rho = max(|(du/dx, dv/dx)|, |(du/dy, dv/dy)|).
-inline double rhoExact(const Jacobian& j) {
-  return std::max(std::hypot(j.dudx, j.dvdx), std::hypot(j.dudy, j.dvdy));
-}
+inline double rhoExact(const Jacobian& j) { return std::max(std::hypot(j.dudx, j.dvdx), std::hypot(j.dudy, j.dvdy)); }
 // The cheaper bound GL also allows (seed 001: "the largest partial
 // derivative"): rho = max(|du/dx|, |dv/dx|, |du/dy|, |dv/dy|).
 inline double rhoMax(const Jacobian& j) {

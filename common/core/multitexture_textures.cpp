@@ -141,7 +141,8 @@ Image pearSkinImage() {
 }
 Image pearGlossImage() {
   Image t = pearSkinImage();
-  for (size_t k = 0; k < t.pixels.size(); k += 4) t.pixels[k] = t.pixels[k + 1] = t.pixels[k + 2] = t.pixels[k + 3], t.pixels[k + 3] = 255;
+  for (size_t k = 0; k < t.pixels.size(); k += 4)
+    t.pixels[k] = t.pixels[k + 1] = t.pixels[k + 2] = t.pixels[k + 3], t.pixels[k + 3] = 255;
   return t;
 }
 Image pearSkyImage() {
@@ -158,7 +159,9 @@ Image pearSkyImage() {
 
 TextureDesc treeTexture() { return desc("multitexture_tree", {{"size", "64"}}, treeImage()); }
 TextureDesc bricksTexture() { return desc("multitexture_bricks", {{"size", "128"}}, bricksImage()); }
-TextureDesc lightMapTexture(int n) { return desc("multitexture_light_map", {{"size", std::to_string(n)}}, lightMapImage(n)); }
+TextureDesc lightMapTexture(int n) {
+  return desc("multitexture_light_map", {{"size", std::to_string(n)}}, lightMapImage(n));
+}
 TextureDesc spotTexture() { return desc("multitexture_spot", {{"size", "32"}}, spotImage()); }
 TextureDesc perPixelLitTexture(int w) {
   return desc("multitexture_per_pixel_lit", {{"base", "multitexture_bricks"}, {"size", std::to_string(w)}},
@@ -205,7 +208,8 @@ bool remake(const std::string& name, const std::vector<std::pair<std::string, st
     const std::string v = param(key);
     char* end = nullptr;
     const long n = std::strtol(v.c_str(), &end, 10);
-    if (v.empty() || *end || n < lo || n > hi) throw Error(name + ": param '" + key + "' must be " + std::to_string(lo) + ".." + std::to_string(hi));
+    if (v.empty() || *end || n < lo || n > hi)
+      throw Error(name + ": param '" + key + "' must be " + std::to_string(lo) + ".." + std::to_string(hi));
     return int(n);
   };
   if (name == "multitexture_tree") return *out = treeTexture(), true;

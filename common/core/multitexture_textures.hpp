@@ -54,19 +54,19 @@ Image pearSkyImage();
 // ---- the generators (name "multitexture_<what>") ----------------------------
 // Texture descs without filters or wraps (the caller sets those; the sidecar
 // records them beside the params).
-TextureDesc treeTexture();                  // "multitexture_tree"
-TextureDesc bricksTexture();                // "multitexture_bricks"
-TextureDesc lightMapTexture(int n);         // "multitexture_light_map", size n
-TextureDesc spotTexture();                  // "multitexture_spot"
-TextureDesc perPixelLitTexture(int w);      // "multitexture_per_pixel_lit": bricks x lighting, w x w
-TextureDesc glossTexture(int w, int h);     // "multitexture_gloss"
-TextureDesc abcdTexture(int k);             // "multitexture_abcd", texture A..D (k = 0..3)
+TextureDesc treeTexture();               // "multitexture_tree"
+TextureDesc bricksTexture();             // "multitexture_bricks"
+TextureDesc lightMapTexture(int n);      // "multitexture_light_map", size n
+TextureDesc spotTexture();               // "multitexture_spot"
+TextureDesc perPixelLitTexture(int w);   // "multitexture_per_pixel_lit": bricks x lighting, w x w
+TextureDesc glossTexture(int w, int h);  // "multitexture_gloss"
+TextureDesc abcdTexture(int k);          // "multitexture_abcd", texture A..D (k = 0..3)
 // "multitexture_abcd_cpu": AB + CD at w x w (what = "sum"), (AB + C) D
 // ("framebuffer_only"), or |(AB + C) D - (AB + CD)| x 4 ("error_x4").
 TextureDesc abcdCpuTexture(int w, const std::string& what);
-TextureDesc pearSkinTexture();              // "multitexture_pear_skin"
-TextureDesc pearGlossTexture();             // "multitexture_pear_gloss"
-TextureDesc pearSkyTexture();               // "multitexture_pear_sky"
+TextureDesc pearSkinTexture();   // "multitexture_pear_skin"
+TextureDesc pearGlossTexture();  // "multitexture_pear_gloss"
+TextureDesc pearSkyTexture();    // "multitexture_pear_sky"
 // The generator `name` with `params` (as the sidecar records them); false
 // when `name` is not one of these.  Throws ts::Error on a bad param.
 bool remake(const std::string& name, const std::vector<std::pair<std::string, std::string>>& params, TextureDesc* out);

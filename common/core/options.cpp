@@ -96,8 +96,8 @@ void Options::set(const std::string& name, const std::string& value) {
     case Item::Float: {
       double v = parseNumber(name, value);
       if (v < it->lo || v > it->hi)
-        throw Error("--" + name + ": " + value + " is outside [" + formatNumber(it->lo) + ", " +
-                    formatNumber(it->hi) + "]");
+        throw Error("--" + name + ": " + value + " is outside [" + formatNumber(it->lo) + ", " + formatNumber(it->hi) +
+                    "]");
       *static_cast<float*>(it->target) = float(v);
       break;
     }
@@ -342,7 +342,8 @@ std::vector<std::string> parseCommonFlags(int argc, char** argv, CommonFlags* f)
     else if (name == "--footprints") noValue(), f->footprints = true;
     else if (name == "--frames") {
       std::string v = need();
-      if (v.empty() || v.size() > 7 || v.find_first_not_of("0123456789") != std::string::npos || std::atoi(v.c_str()) < 1)
+      if (v.empty() || v.size() > 7 || v.find_first_not_of("0123456789") != std::string::npos ||
+          std::atoi(v.c_str()) < 1)
         throw Error("--frames: '" + v + "' is not a positive integer");
       f->frames = std::atoi(v.c_str());
     } else {
@@ -358,7 +359,8 @@ std::vector<std::string> parseCommonFlags(int argc, char** argv, CommonFlags* f)
     std::string ext = p->substr(dot);
     for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
     if (ext != ".png")
-      throw Error("'" + *p + "' ends in " + p->substr(dot) + ", but --png and --screenshot write PNG files: name it .png");
+      throw Error("'" + *p + "' ends in " + p->substr(dot) +
+                  ", but --png and --screenshot write PNG files: name it .png");
   }
   return rest;
 }
@@ -374,7 +376,8 @@ std::string commonFlagsHelp() {
   return "  --help                             this text\n"
          "  --png FILE                         render offscreen into FILE (no window) and print the measurement\n"
          "  --json FILE                        with --png: also write the sidecar (every parameter of the image)\n"
-         "  --gl-listing FILE                  write the OpenGL calls that draw the state's picture (offscreen, no window)\n"
+         "  --gl-listing FILE                  write the OpenGL calls "
+         "that draw the state's picture (offscreen, no window)\n"
          "  --export-c FILE.c                  write a standalone C99 program making those calls (and FILE.texels)\n"
          "  --size WxH                         image or window size, 1..16384 each\n"
          "  --backend NAME                     osmesa, egl, hidden (a hidden window), window or auto: a window,\n"
@@ -387,7 +390,8 @@ std::string commonFlagsHelp() {
          "                                     (s,t,r,q), derivatives, rho, lambda, levels, the texels read and their\n"
          "                                     weights, the reference colour beside GL's; --json gets an \"inspect\"\n"
          "                                     list.  May be given several times.\n"
-         "  --footprints                       with --inspect: the PNG shows the picture with those pixels ringed and,\n"
+         "  --footprints                       with --inspect: the "
+         "PNG shows the picture with those pixels ringed and,\n"
          "                                     for each, level 0 of its texture around its footprint (preimage,\n"
          "                                     derivatives, EWA ellipse, the 2^lambda square, the texels read)\n";
 }

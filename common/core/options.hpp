@@ -19,8 +19,8 @@ class Options {
   void addEnum(const std::string& name, int* v, std::vector<std::string> choices, const std::string& help,
                char key = 0);
   // Int and float in [lo, hi]; `up`/`down` keys step by `step`.
-  void addInt(const std::string& name, int* v, int lo, int hi, const std::string& help, char up = 0,
-              char down = 0, int step = 1);
+  void addInt(const std::string& name, int* v, int lo, int hi, const std::string& help, char up = 0, char down = 0,
+              int step = 1);
   void addFloat(const std::string& name, float* v, float lo, float hi, const std::string& help, char up = 0,
                 char down = 0, float step = 1.0f);
   // Free text checked by `parse` (which throws ts::Error with a reason).
@@ -79,16 +79,16 @@ class Options {
 // The flags every program of the suite shares.
 struct CommonFlags {
   bool help = false;
-  std::string png;         // --png FILE: render offscreen, no window
-  std::string json;        // --json FILE: the sidecar of that render
-  std::string glListing;   // --gl-listing FILE: the GL calls that draw that render
-  std::string exportC;     // --export-c FILE.c: a standalone C program making those calls
+  std::string png;            // --png FILE: render offscreen, no window
+  std::string json;           // --json FILE: the sidecar of that render
+  std::string glListing;      // --gl-listing FILE: the GL calls that draw that render
+  std::string exportC;        // --export-c FILE.c: a standalone C program making those calls
   int width = 0, height = 0;  // --size WxH (0 = the demo's default)
   std::string backend = "auto";
-  int frames = 0;          // --frames N: window closes after N frames once measured (tests)
-  std::string screenshot;  // --screenshot FILE: the window's last frame
-  std::string keys;        // --keys STRING: typed into the window, one per frame
-  bool quiet = false;      // --quiet: no measurement printout
+  int frames = 0;                           // --frames N: window closes after N frames once measured (tests)
+  std::string screenshot;                   // --screenshot FILE: the window's last frame
+  std::string keys;                         // --keys STRING: typed into the window, one per frame
+  bool quiet = false;                       // --quiet: no measurement printout
   std::vector<std::array<int, 2>> inspect;  // --inspect X,Y (repeatable): the pixels to look inside
   bool footprints = false;  // --footprints: the PNG shows the inspected pixels' footprints on the texture
 };

@@ -19,18 +19,13 @@ Batch seriesBatch(const Series& s, double ux, double uy) {
   for (const glm::dvec2& q : s.points) {
     const float x = float(q.x), y = float(q.y);
     switch (s.mark) {
-      case Mark::Line:
-        v.push_back({x, y});
-        break;
-      case Mark::Crosses:
-        v.insert(v.end(), {{x - a, y - b}, {x + a, y + b}, {x - a, y + b}, {x + a, y - b}});
-        break;
+      case Mark::Line: v.push_back({x, y}); break;
+      case Mark::Crosses: v.insert(v.end(), {{x - a, y - b}, {x + a, y + b}, {x - a, y + b}, {x + a, y - b}}); break;
       case Mark::Squares:
-        v.insert(v.end(), {{x - a, y - b}, {x + a, y - b}, {x + a, y + b}, {x - a, y - b}, {x + a, y + b}, {x - a, y + b}});
+        v.insert(v.end(),
+                 {{x - a, y - b}, {x + a, y - b}, {x + a, y + b}, {x - a, y - b}, {x + a, y + b}, {x - a, y + b}});
         break;
-      case Mark::Bars:
-        v.insert(v.end(), {{float(q.x - s.halfWidth), y}, {float(q.x + s.halfWidth), y}});
-        break;
+      case Mark::Bars: v.insert(v.end(), {{float(q.x - s.halfWidth), y}, {float(q.x + s.halfWidth), y}}); break;
       case Mark::Rings:
         for (int k = 0; k < 16; ++k)
           for (int e : {k, k + 1}) {
@@ -52,7 +47,8 @@ Batch seriesBatch(const Series& s, double ux, double uy) {
 
 std::vector<Tick> ticks(double lo, double hi, double step, const char* format) {
   std::vector<Tick> out;
-  for (double v = lo; v <= hi + 1e-9 * std::max(1.0, std::abs(hi)); v += step) out.push_back({v, layout::fmt(format, v)});
+  for (double v = lo; v <= hi + 1e-9 * std::max(1.0, std::abs(hi)); v += step)
+    out.push_back({v, layout::fmt(format, v)});
   return out;
 }
 
@@ -78,7 +74,8 @@ void tickLabels(Frame& f, const Rect& vp, const Rect& area, double x0, double x1
   for (const Tick& t : xs)
     tick(t, "x", float(vp.x + (t.at - x0) / (x1 - x0) * vp.w), float(vp.y + vp.h) + gap, Align::Center, under);
   for (const Tick& t : ys)
-    tick(t, "y", float(vp.x) - gap - 2, float(vp.y + (1 - (t.at - y0) / (y1 - y0)) * vp.h) - h / 2, Align::Right, leftOf);
+    tick(t, "y", float(vp.x) - gap - 2, float(vp.y + (1 - (t.at - y0) / (y1 - y0)) * vp.h) - h / 2, Align::Right,
+         leftOf);
 }
 
 Rect draw(Frame& f, const Spec& s, Rect area) {
@@ -89,14 +86,16 @@ Rect draw(Frame& f, const Spec& s, Rect area) {
 
   // The bands around the plot: title, legend and the y axis's name above,
   // tick numbers left and below, the x axis's name at the bottom.
-  const float titleH = s.title.empty() ? 0.0f : float(std::min(2, L::captionLines(s.title.text, sc, x1 - x0 - 8))) * line;
+  const float titleH = s.title.empty() ? 0.0f
+                                       : float(std::min(2, L::captionLines(s.title.text, sc, x1 - x0 - 8))) * line;
   float tickW = 0, lastX = 0;
   for (const Tick& t : s.yTicks) tickW = std::max(tickW, text::width(t.text, sc));
   if (!s.xTicks.empty()) lastX = text::width(s.xTicks.back().text, sc) / 2;
   // A legend line above the plot may wrap once when the plot is narrow.
   std::vector<float> legendLines;
   for (const Legend& l : s.legendInside ? std::vector<Legend>{} : s.legend)
-    legendLines.push_back(float(std::min(2, L::captionLines(l.text.text, sc, x1 - 4 - (x0 + 4 + tickW + gap + 4)))) * line);
+    legendLines.push_back(float(std::min(2, L::captionLines(l.text.text, sc, x1 - 4 - (x0 + 4 + tickW + gap + 4)))) *
+                          line);
   float legendH = 0;
   for (float h : legendLines) legendH += h;
   const int top = int(4 + titleH + legendH + (s.yLabel.empty() ? 0.0f : line) + th / 2 + 2);
@@ -109,7 +108,8 @@ Rect draw(Frame& f, const Spec& s, Rect area) {
   const Rect vp = p.viewport;
   const double ux = (s.x1 - s.x0) / vp.w, uy = (s.y1 - s.y0) / vp.h;
   auto px = [&](glm::dvec2 q) {
-    return glm::vec2(float(vp.x + (q.x - s.x0) / (s.x1 - s.x0) * vp.w), float(vp.y + (1 - (q.y - s.y0) / (s.y1 - s.y0)) * vp.h));
+    return glm::vec2(float(vp.x + (q.x - s.x0) / (s.x1 - s.x0) * vp.w),
+                     float(vp.y + (1 - (q.y - s.y0) / (s.y1 - s.y0)) * vp.h));
   };
   const float fx0 = float(s.x0), fx1 = float(s.x1), fy0 = float(s.y0), fy1 = float(s.y1);
 
@@ -156,8 +156,8 @@ Rect draw(Frame& f, const Spec& s, Rect area) {
   // The legend's lines are written in their series' colours: each is the key of its colour.
   for (const Legend& l : s.legend) f.legend.push_back({l.color, l.text.text});
   if (!s.yLabel.empty())
-    L::caption(f, {float(vp.x), float(vp.y) - th / 2 - 2 - line, x1 - 4, float(vp.y) - th / 2 - 2}, s.yLabel, s.textColor,
-               sc, Align::Left);
+    L::caption(f, {float(vp.x), float(vp.y) - th / 2 - 2 - line, x1 - 4, float(vp.y) - th / 2 - 2}, s.yLabel,
+               s.textColor, sc, Align::Left);
   if (!s.xLabel.empty())
     L::caption(f, {x0 + 4, float(vp.y + vp.h) + gap + th + 4, x1 - 4, y1 - 1}, s.xLabel, s.textColor, sc);
   tickLabels(f, vp, area, s.x0, s.x1, s.y0, s.y1, s.xTicks, s.yTicks, s.textColor, sc);
@@ -169,7 +169,8 @@ Rect draw(Frame& f, const Spec& s, Rect area) {
     }
   }
   for (const Marker& m : s.markers)  // a marker's label, in its colour, is its key
-    if (!m.label.empty() && L::placeFree(f, L::textLabel(px({m.x, s.y1}).x + 6, float(vp.y + 6), m.label, m.color, sc), inPlot))
+    if (!m.label.empty() &&
+        L::placeFree(f, L::textLabel(px({m.x, s.y1}).x + 6, float(vp.y + 6), m.label, m.color, sc), inPlot))
       f.legend.push_back({m.color, m.label.text});
   for (const Series& se : s.series)
     for (size_t k = 0; k < se.tags.size() && k < se.points.size(); ++k) {

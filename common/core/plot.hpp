@@ -48,9 +48,9 @@ struct Series {
   glm::vec4 color{1.0f};
   Mark mark = Mark::Line;
   std::vector<glm::dvec2> points;
-  float width = 2.0f;             // line width (Line, Crosses, Bars, Rings)
-  float size = 5.0f;              // half-size of a mark in pixels
-  double halfWidth = 0;           // Bars, in data units
+  float width = 2.0f;              // line width (Line, Crosses, Bars, Rings)
+  float size = 5.0f;               // half-size of a mark in pixels
+  double halfWidth = 0;            // Bars, in data units
   std::vector<layout::Text> tags;  // text beside each point, where it fits
 };
 // A vertical line across the plot at x (dashed every 8 px, or solid), with

@@ -17,8 +17,8 @@ bool close(Rgba a, Rgba b, int tol) {
 }
 
 static std::string rgba(Rgba c) {
-  return "(" + std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b) + "," +
-         std::to_string(c.a) + ")";
+  return "(" + std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b) + "," + std::to_string(c.a) +
+         ")";
 }
 
 std::string Result::describe() const {

@@ -38,7 +38,9 @@ struct Fit {
   std::array<double, 6> c{};
   double rms = 0;
   long samples = 0;
-  double at(double x, double y) const { return c[0] + c[1] * x + c[2] * y + c[3] * x * x + c[4] * x * y + c[5] * y * y; }
+  double at(double x, double y) const {
+    return c[0] + c[1] * x + c[2] * y + c[3] * x * x + c[4] * x * y + c[5] * y * y;
+  }
   double dx(double x, double y) const { return c[1] + 2 * c[3] * x + c[4] * y; }
   double dy(double x, double y) const { return c[2] + c[4] * x + 2 * c[5] * y; }
 };

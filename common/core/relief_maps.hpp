@@ -19,9 +19,9 @@ namespace ts::relief {
 constexpr int kTexSize = 512;  // every relief map is 512 x 512
 
 struct Relief {
-  std::string name;                // "bricks" | "step" | "flat"
-  std::vector<ts::Image> albedo;   // mip chain, level 0 = 512 x 512 (2x2 averages)
-  std::vector<ts::Image> height;   // mip chain of the heights (R = G = B = h * 255), 2x2 averages
+  std::string name;                  // "bricks" | "step" | "flat"
+  std::vector<ts::Image> albedo;     // mip chain, level 0 = 512 x 512 (2x2 averages)
+  std::vector<ts::Image> height;     // mip chain of the heights (R = G = B = h * 255), 2x2 averages
   std::vector<ts::Image> heightMax;  // max-height pyramid: each texel the largest height of the 2x2 below it
 };
 
@@ -39,7 +39,9 @@ inline ts::Image halve(const ts::Image& a, bool takeMax) {
         for (int dy = 0; dy < 2; ++dy)
           for (int dx = 0; dx < 2; ++dx)
             v[k++] = a.pixels[(size_t(std::min(2 * y + dy, a.height - 1)) * size_t(a.width) +
-                               size_t(std::min(2 * x + dx, a.width - 1))) * 4 + size_t(c)];
+                               size_t(std::min(2 * x + dx, a.width - 1))) *
+                                  4 +
+                              size_t(c)];
         int r = takeMax ? std::max({v[0], v[1], v[2], v[3]}) : (v[0] + v[1] + v[2] + v[3] + 2) / 4;
         out.pixels[(size_t(y) * size_t(out.width) + size_t(x)) * 4 + size_t(c)] = uint8_t(r);
       }

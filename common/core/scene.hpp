@@ -131,7 +131,7 @@ std::unique_ptr<Scene> makeScene(const std::string& id);  // nullptr if unknown
 int runDemo(const std::string& id, int argc, char** argv);
 }  // namespace ts
 
-#define TS_REGISTER_SCENE(Class)                                                          \
-  static const bool ts_registered_##Class = ::ts::registerScene(Class().id(), [] {        \
-    return std::unique_ptr<::ts::Scene>(new Class());                                    \
+#define TS_REGISTER_SCENE(Class)                                                   \
+  static const bool ts_registered_##Class = ::ts::registerScene(Class().id(), [] { \
+    return std::unique_ptr<::ts::Scene>(new Class());                              \
   })

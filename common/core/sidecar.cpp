@@ -163,13 +163,13 @@ std::string glEnumName(GLenum e) {
 static void frameInto(Json& d, const Frame& f, bool withFixedState) {
   d["size"] = {f.width, f.height};
   if (withFixedState)
-    d["fixed_state"] = {
-        {"blend_func", {glEnumName(FixedState::blendSrc), glEnumName(FixedState::blendDst),
-                        glEnumName(FixedState::blendSrcAlpha), glEnumName(FixedState::blendDstAlpha)}},
-        {"depth_func", glEnumName(FixedState::depthFunc)},
-        {"shade_model", glEnumName(FixedState::shadeModel)},
-        {"cull_face", FixedState::cullFace},
-        {"lighting", FixedState::lighting}};
+    d["fixed_state"] = {{"blend_func",
+                         {glEnumName(FixedState::blendSrc), glEnumName(FixedState::blendDst),
+                          glEnumName(FixedState::blendSrcAlpha), glEnumName(FixedState::blendDstAlpha)}},
+                        {"depth_func", glEnumName(FixedState::depthFunc)},
+                        {"shade_model", glEnumName(FixedState::shadeModel)},
+                        {"cull_face", FixedState::cullFace},
+                        {"lighting", FixedState::lighting}};
   d["clear_color"] = vec(f.clearColor);
   d["perspective_correction_hint"] = f.perspectiveHint == GL_FASTEST  ? "GL_FASTEST"
                                      : f.perspectiveHint == GL_NICEST ? "GL_NICEST"
@@ -178,7 +178,10 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
   for (const TextureDesc& t : f.textures) {
     Json params = Json::object();
     for (const auto& [k, v] : t.params) params[k] = v;
-    Json mips = t.mipmaps ? Json(t.mipLevels ? "explicit" : t.linearLightMips ? "box_linear_light" : "box_2x2") : Json(false);
+    Json mips = t.mipmaps ? Json(t.mipLevels         ? "explicit"
+                                 : t.linearLightMips ? "box_linear_light"
+                                                     : "box_2x2")
+                          : Json(false);
     textures.push_back({{"name", t.name},
                         {"params", params},
                         {"width", t.image ? t.image->width : 0},
@@ -220,7 +223,7 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
       for (const Vertex& x : b.vertices) {
         Json v = {{"pos", vec(x.pos)}, {"tex", vec(x.tex)}, {"color", vec(x.color)}};
         if (b.colorSum) v["secondary"] = vec(x.secondary);
-        if (b.texGen.needsNormal()) v["normal"] = vec(x.normal);  // only where texgen reads it
+        if (b.texGen.needsNormal()) v["normal"] = vec(x.normal);    // only where texgen reads it
         if (b.texture1 >= 0 && b.coords1) v["tex1"] = vec(x.tex1);  // unit 1's own coordinates
         vertices.push_back(v);
       }
@@ -266,7 +269,8 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
         Json u = {{"texture", b.texture1}, {"tex_env", glEnumName(b.texEnv1)}};
         if (b.texEnv1 == GL_COMBINE) {
           Json src = Json::array(), op = Json::array();
-          for (int k = 0; k < 3; ++k) src.push_back(glEnumName(b.combine1.source[k])), op.push_back(glEnumName(b.combine1.operand[k]));
+          for (int k = 0; k < 3; ++k)
+            src.push_back(glEnumName(b.combine1.source[k])), op.push_back(glEnumName(b.combine1.operand[k]));
           u["combine_rgb"] = glEnumName(b.combine1.rgb);
           u["sources"] = src;
           u["operands"] = op;
@@ -294,7 +298,9 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
               {"y", num(l.y)},
               {"text", l.text},
               {"scale", l.scale},
-              {"align", l.align == Align::Left ? "left" : l.align == Align::Center ? "center" : "right"},
+              {"align", l.align == Align::Left     ? "left"
+                        : l.align == Align::Center ? "center"
+                                                   : "right"},
               {"color", vec(l.color)},
               {"background", vec(l.background)}};
     // Where its numbers come from (written only when it prints any).

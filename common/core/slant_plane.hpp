@@ -37,7 +37,7 @@ struct Camera {
 };
 struct Plane {
   glm::dvec3 origin{0.0}, e1{1, 0, 0}, e2{0, 1, 0};  // e1, e2 orthonormal
-  double density = 256;                               // texels per world unit
+  double density = 256;                              // texels per world unit
   glm::dvec3 normal() const { return glm::cross(e1, e2); }
 };
 

@@ -119,7 +119,8 @@ std::string summary(const Measurements& ms) {
     if (m.name == "exercise_verdict") verdict = m.meaning;
   }
   if (passed < 0) return "your code: checking ...";
-  if (total > 0) return "your code: " + std::to_string(int(passed)) + " of " + std::to_string(int(total)) + " checks pass";
+  if (total > 0)
+    return "your code: " + std::to_string(int(passed)) + " of " + std::to_string(int(total)) + " checks pass";
   return verdict;
 }
 
@@ -127,7 +128,8 @@ void addTo(Measurements& ms, const std::string& exercise, const Report& r) {
   int passed = 0;
   for (const Check& c : r.checks) passed += c.pass;
   ms.push_back({"exercise_checks_passed", double(passed), exercise + ": checks your code passes (" + r.verdict + ")"});
-  ms.push_back({"exercise_checks_total", double(r.checks.size()), "checks made (none: the code is not done or did not run)"});
+  ms.push_back(
+      {"exercise_checks_total", double(r.checks.size()), "checks made (none: the code is not done or did not run)"});
   for (size_t k = 0; k < r.checks.size(); ++k)
     ms.push_back({"exercise_check[" + std::to_string(k + 1) + "]", r.checks[k].pass ? 1.0 : 0.0, r.checks[k].text});
   ms.push_back({"exercise_verdict", r.pass ? 1.0 : 0.0, r.verdict});

@@ -51,7 +51,8 @@ std::vector<std::pair<int, int>> resizes() {
 }
 
 std::string sizedName(const std::string& png, int w, int h) {
-  std::string stem = png.size() > 4 && png.compare(png.size() - 4, 4, ".png") == 0 ? png.substr(0, png.size() - 4) : png;
+  std::string stem = png.size() > 4 && png.compare(png.size() - 4, 4, ".png") == 0 ? png.substr(0, png.size() - 4)
+                                                                                   : png;
   return stem + "." + std::to_string(w) + "x" + std::to_string(h) + ".png";
 }
 

@@ -68,9 +68,7 @@ void draw(Image& img, float x, float y, const std::string& s, Rgba color, int sc
         if (px < 0 || py < 0 || px >= img.width || py >= img.height) continue;
         unsigned cov = a.at(ax + i, ay + j).a * unsigned(color.a) / 255u;
         Rgba d = img.at(px, py);
-        auto mix = [cov](uint8_t dst, uint8_t src) {
-          return uint8_t((src * cov + dst * (255u - cov) + 127u) / 255u);
-        };
+        auto mix = [cov](uint8_t dst, uint8_t src) { return uint8_t((src * cov + dst * (255u - cov) + 127u) / 255u); };
         img.set(px, py, {mix(d.r, color.r), mix(d.g, color.g), mix(d.b, color.b), d.a});
       }
     pen += g.advance;

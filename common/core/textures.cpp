@@ -12,9 +12,7 @@
 
 namespace ts {
 static std::string str(int v) { return std::to_string(v); }
-static std::string str(Rgba c) {
-  return str(c.r) + "," + str(c.g) + "," + str(c.b) + "," + str(c.a);
-}
+static std::string str(Rgba c) { return str(c.r) + "," + str(c.g) + "," + str(c.b) + "," + str(c.a); }
 
 // Images are stored top row first (PNG order) but GL's texel row 0 is t = 0,
 // the bottom.  Textures are uploaded row 0 first, so the Image's row 0 is
@@ -45,7 +43,10 @@ TextureDesc lineGrid(int size, int cells, Rgba line, Rgba background) {
     for (int i = 0; i < size; ++i) img->set(i, j, onLine[size_t(i)] || onLine[size_t(j)] ? line : background);
   TextureDesc t;
   t.name = "line_grid";
-  t.params = {{"size", str(size)}, {"cells", str(cells)}, {"color_line", str(line)}, {"color_background", str(background)}};
+  t.params = {{"size", str(size)},
+              {"cells", str(cells)},
+              {"color_line", str(line)},
+              {"color_background", str(background)}};
   t.image = img;
   return t;
 }
@@ -79,8 +80,9 @@ TextureDesc gradientTexture(int width, int height, bool alphaRamp) {
   auto img = std::make_shared<Image>(width, height);
   for (int j = 0; j < height; ++j)
     for (int i = 0; i < width; ++i)
-      img->set(i, j, {uint8_t(40 + 200 * i / (width - 1)), uint8_t(40 + 200 * j / (height - 1)),
-                      uint8_t((i + j) % 2 ? 50 : 150), uint8_t(alphaRamp ? 255 - 191 * i / (width - 1) : 255)});
+      img->set(i, j,
+               {uint8_t(40 + 200 * i / (width - 1)), uint8_t(40 + 200 * j / (height - 1)),
+                uint8_t((i + j) % 2 ? 50 : 150), uint8_t(alphaRamp ? 255 - 191 * i / (width - 1) : 255)});
   TextureDesc t;
   t.name = "gradient";
   t.params = {{"width", str(width)}, {"height", str(height)}, {"alpha", alphaRamp ? "ramp" : "opaque"}};
@@ -89,7 +91,8 @@ TextureDesc gradientTexture(int width, int height, bool alphaRamp) {
 }
 
 TextureDesc renderedImageTexture(const Image& img, const std::string& generator, const std::string& what,
-                                 const std::string& demo, std::vector<std::pair<std::string, std::string>> extraParams) {
+                                 const std::string& demo,
+                                 std::vector<std::pair<std::string, std::string>> extraParams) {
   uint64_t h = 1469598103934665603ull;  // FNV-1a 64
   for (uint8_t b : img.pixels) h = (h ^ b) * 1099511628211ull;
   char digest[20];
@@ -111,7 +114,7 @@ TextureDesc renderedImageTexture(const Image& img, const std::string& generator,
 
 TextureDesc fileTexture(const std::string& path) {
   Image img = readImage(path);  // PNG, JPEG or 24/32-bit BMP, by content
-  img.flipVertical();  // a picture's top row is t = 1
+  img.flipVertical();           // a picture's top row is t = 1
   TextureDesc t;
   t.name = "file";
   t.params = {{"path", path}, {"width", str(img.width)}, {"height", str(img.height)}};
@@ -135,8 +138,9 @@ Image resizeBilinear(const Image& src, int width, int height) {
         double v = (a * (1 - ax) + b * ax) * (1 - ay) + (c * (1 - ax) + d * ax) * ay;
         return uint8_t(std::clamp(std::lround(v), 0L, 255L));
       };
-      dst.set(x, y, {mix(p00.r, p10.r, p01.r, p11.r), mix(p00.g, p10.g, p01.g, p11.g), mix(p00.b, p10.b, p01.b, p11.b),
-                     mix(p00.a, p10.a, p01.a, p11.a)});
+      dst.set(x, y,
+              {mix(p00.r, p10.r, p01.r, p11.r), mix(p00.g, p10.g, p01.g, p11.g), mix(p00.b, p10.b, p01.b, p11.b),
+               mix(p00.a, p10.a, p01.a, p11.a)});
     }
   }
   return dst;
@@ -148,8 +152,7 @@ void decodeTexelIndex(Rgba c, int* i, int* j) {
 }
 
 TextureDesc labelledGrid(int size, int cells) {
-  if (size < 16 || size > 4096 || cells < 1 || cells > 26)
-    throw Error("labelled grid: size 16..4096 and 1..26 cells");
+  if (size < 16 || size > 4096 || cells < 1 || cells > 26) throw Error("labelled grid: size 16..4096 and 1..26 cells");
   // Drawn top-down as a picture, then flipped so the picture's top is t = 1.
   Image pic(size, size);
   // Cell k spans pixels [k*size/cells, (k+1)*size/cells): every pixel belongs
@@ -186,10 +189,10 @@ TextureDesc labelledGrid(int size, int cells) {
 }
 
 Rgba mipLevelColour(int level) {
-  static const Rgba k[] = {{230, 40, 40, 255},  {40, 200, 40, 255},  {40, 80, 230, 255}, {230, 210, 40, 255},
-                           {200, 40, 200, 255}, {40, 200, 200, 255}, {240, 140, 30, 255}, {240, 240, 240, 255},
-                           {120, 120, 120, 255}, {20, 20, 20, 255},  {150, 90, 40, 255},  {90, 40, 150, 255},
-                           {40, 110, 60, 255},  {250, 170, 180, 255}, {60, 60, 140, 255}};
+  static const Rgba k[] = {{230, 40, 40, 255},   {40, 200, 40, 255},   {40, 80, 230, 255},  {230, 210, 40, 255},
+                           {200, 40, 200, 255},  {40, 200, 200, 255},  {240, 140, 30, 255}, {240, 240, 240, 255},
+                           {120, 120, 120, 255}, {20, 20, 20, 255},    {150, 90, 40, 255},  {90, 40, 150, 255},
+                           {40, 110, 60, 255},   {250, 170, 180, 255}, {60, 60, 140, 255}};
   return k[size_t(std::max(0, level)) % (sizeof k / sizeof k[0])];
 }
 

@@ -49,17 +49,15 @@ Mesh torusMesh(const TorusShape& t, glm::dvec2 stOffset = glm::dvec2(0.0));
 // The local frame at (θ, φ).  The derivatives are by s and t (the texture's
 // coordinates), as a bump map needs them.
 struct TorusFrame {
-  glm::dvec3 Q, N;     // the point and its unit normal
-  glm::dvec3 Qs, Qt;   // ∂Q/∂s, ∂Q/∂t
-  glm::dvec3 Ns, Nt;   // ∂N/∂s, ∂N/∂t
-  glm::dvec3 T, B;     // the unit tangents along θ and φ: Qs/|Qs|, Qt/|Qt|
+  glm::dvec3 Q, N;    // the point and its unit normal
+  glm::dvec3 Qs, Qt;  // ∂Q/∂s, ∂Q/∂t
+  glm::dvec3 Ns, Nt;  // ∂N/∂s, ∂N/∂t
+  glm::dvec3 T, B;    // the unit tangents along θ and φ: Qs/|Qs|, Qt/|Qt|
 };
 // thetaRad, phiRad: θ and φ in radians.
 TorusFrame torusFrame(double R, double r, double thetaRad, double phiRad);
 // The same at the texture coordinates (s, t): θ = 2π s, φ = 2π t.
-inline TorusFrame torusFrameAt(double R, double r, glm::dvec2 st) {
-  return torusFrame(R, r, kTau * st.x, kTau * st.y);
-}
+inline TorusFrame torusFrameAt(double R, double r, glm::dvec2 st) { return torusFrame(R, r, kTau * st.x, kTau * st.y); }
 
 // torus_frame.inl's lines as GLSL text: they expect float th, ph, R, r and
 // TAU, and out vec3 N, Q, Qs, Qt, Ns, Nt to be declared around them.

@@ -68,8 +68,8 @@ bool hidden(const char* lib) { return glLibraryHidden(lib); }
 // ---------------------------------------------------------------- OSMesa
 // Values from GL/osmesa.h (stable ABI); spelled out so that the suite builds
 // where the header is gone too.
-constexpr int kOsmesaFormat = 0x22, kOsmesaDepthBits = 0x30, kOsmesaStencilBits = 0x31,
-              kOsmesaAccumBits = 0x32, kOsmesaProfile = 0x33, kOsmesaCompatProfile = 0x35;
+constexpr int kOsmesaFormat = 0x22, kOsmesaDepthBits = 0x30, kOsmesaStencilBits = 0x31, kOsmesaAccumBits = 0x32,
+              kOsmesaProfile = 0x33, kOsmesaCompatProfile = 0x35;
 using OSMesaContextHandle = void*;
 using PfnCreateAttribs = OSMesaContextHandle (*)(const int*, OSMesaContextHandle);
 using PfnDestroy = void (*)(OSMesaContextHandle);
@@ -96,9 +96,9 @@ class OSMesaContext final : public Context {
       *why = "libOSMesa lacks OSMesaCreateContextAttribs";
       return nullptr;
     }
-    const int attribs[] = {kOsmesaFormat, GL_RGBA, kOsmesaDepthBits, 24, kOsmesaStencilBits, 8,
-                           kOsmesaAccumBits, o.accumBuffer ? 16 : 0, kOsmesaProfile,
-                           kOsmesaCompatProfile, 0};
+    const int attribs[] = {
+        kOsmesaFormat,          GL_RGBA,        kOsmesaDepthBits,     24, kOsmesaStencilBits, 8, kOsmesaAccumBits,
+        o.accumBuffer ? 16 : 0, kOsmesaProfile, kOsmesaCompatProfile, 0};
     OSMesaContextHandle ctx = create(attribs, nullptr);
     if (!ctx) {
       *why = "OSMesaCreateContextAttribs failed";
@@ -167,12 +167,13 @@ class EglContext final : public Context {
       return nullptr;
     }
 #define TS_EGL(field, name) e.field = reinterpret_cast<decltype(e.field)>(dlsym(lib, name));
-    TS_EGL(initialize, "eglInitialize") TS_EGL(terminate, "eglTerminate") TS_EGL(bindAPI, "eglBindAPI")
-    TS_EGL(createContext, "eglCreateContext") TS_EGL(destroyContext, "eglDestroyContext")
-    TS_EGL(makeCurrent, "eglMakeCurrent") TS_EGL(queryString, "eglQueryString")
+    TS_EGL(initialize, "eglInitialize")
+    TS_EGL(terminate, "eglTerminate") TS_EGL(bindAPI, "eglBindAPI") TS_EGL(createContext, "eglCreateContext")
+        TS_EGL(destroyContext, "eglDestroyContext") TS_EGL(makeCurrent, "eglMakeCurrent")
+            TS_EGL(queryString, "eglQueryString")
 #undef TS_EGL
-    e.getPlatformDisplay =
-        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(e.getProcAddress("eglGetPlatformDisplayEXT"));
+                e.getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+        e.getProcAddress("eglGetPlatformDisplayEXT"));
     e.queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(e.getProcAddress("eglQueryDevicesEXT"));
     if (!e.initialize || !e.createContext || !e.makeCurrent || !e.getPlatformDisplay) {
       *why = "libEGL lacks EGL_EXT_platform_base";
@@ -198,8 +199,7 @@ class EglContext final : public Context {
       *why = "EGL cannot bind desktop OpenGL";
       return nullptr;
     }
-    const EGLint attribs[] = {EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
-                              EGL_NONE};
+    const EGLint attribs[] = {EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT, EGL_NONE};
     EGLContext ctx = e.createContext(dpy, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
     if (ctx == EGL_NO_CONTEXT || !e.makeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) {
       *why = "eglCreateContext (compatibility profile, no config) failed";
@@ -258,14 +258,12 @@ std::unique_ptr<Context> createOffscreenContext(Backend backend, const ContextOp
   if (backend == Backend::OSMesa || backend == Backend::Auto) {
     if (auto c = OSMesaContext::create(opts, &whyOsmesa)) return c;
     if (backend == Backend::OSMesa)
-      throw Error("OSMesa backend unavailable (" + whyOsmesa +
-                  "); install Debian's libosmesa6 or use --backend egl");
+      throw Error("OSMesa backend unavailable (" + whyOsmesa + "); install Debian's libosmesa6 or use --backend egl");
   }
   if (backend == Backend::EGL || backend == Backend::Auto) {
     if (auto c = EglContext::create(opts, &whyEgl)) {
       // The note only when the fallback worked: a failure is one line.
-      if (backend == Backend::Auto && opts.verbose)
-        note("note: " + whyOsmesa + "; using the EGL backend");
+      if (backend == Backend::Auto && opts.verbose) note("note: " + whyOsmesa + "; using the EGL backend");
       return c;
     }
     if (backend == Backend::EGL)
@@ -292,7 +290,8 @@ std::unique_ptr<Context> createOffscreenContext(Backend backend, const ContextOp
                 (whyHidden.empty() ? std::string() : "; hidden window: " + whyHidden) +
                 "; install Debian's libosmesa6, or libegl1 libegl-mesa0 libgl1-mesa-dri");
 #else
-    throw Error("no offscreen OpenGL context (" + (whyHidden.empty() ? std::string("hidden window not allowed here") : whyHidden) +
+    throw Error("no offscreen OpenGL context (" +
+                (whyHidden.empty() ? std::string("hidden window not allowed here") : whyHidden) +
                 "); update the graphics driver");
 #endif
   }

@@ -144,8 +144,7 @@ struct Generator {
     size_t col = 0;
     for (const gl::Call* c : groups[0]) {
       std::string line = "    " + std::string(c->name) + "(";
-      for (size_t k = 0; k < c->args.size(); ++k)
-        line += (k ? ", " : "") + name + "[i][" + std::to_string(col++) + "]";
+      for (size_t k = 0; k < c->args.size(); ++k) line += (k ? ", " : "") + name + "[i][" + std::to_string(col++) + "]";
       display.push_back(line + ");");
     }
     display.push_back("  }");
@@ -200,9 +199,10 @@ struct Generator {
         continue;
       }
       // Shaders and programs: made once, in init(); object[k] as numbered.
-      static const std::map<std::string, int> objectArgs = {
-          {"glShaderSource", 1}, {"glCompileShader", 1}, {"glLinkProgram", 1}, {"glDeleteShader", 1},
-          {"glAttachShader", 2}, {"glBindAttribLocation", 1}, {"glUseProgram", 1}, {"glGetUniformLocation", 1}};
+      static const std::map<std::string, int> objectArgs = {{"glShaderSource", 1}, {"glCompileShader", 1},
+                                                            {"glLinkProgram", 1},  {"glDeleteShader", 1},
+                                                            {"glAttachShader", 2}, {"glBindAttribLocation", 1},
+                                                            {"glUseProgram", 1},   {"glGetUniformLocation", 1}};
       auto obj = objectArgs.find(c.name);
       if (obj != objectArgs.end())
         for (int k = 0; k < obj->second; ++k)
@@ -264,12 +264,19 @@ ExportedProgram exportC(const std::vector<gl::Call>& recorded, const Frame& fram
   s += "/* " + commentSafe(info.title) + "\n *\n";
   s += wrap(commentSafe(info.about), " * ");
   s += " *\n * The OpenGL calls below are the ones the suite made to draw this state of the demo, recorded\n"
-       " * as they were made:\n *     " + commentSafe(info.state) + "\n"
-       " * so this program draws the same picture (demos/" + info.demo + "/ holds the demo that made it).\n"
+       " * as they were made:\n *     " +
+       commentSafe(info.state) +
+       "\n"
+       " * so this program draws the same picture (demos/" +
+       info.demo +
+       "/ holds the demo that made it).\n"
        " *\n * Build and run it in a window (Esc closes it):\n"
-       " *     cc -std=c99 -Wall -Werror " + info.sourceName + " -o fig -lglfw -lGL -lm && ./fig\n"
+       " *     cc -std=c99 -Wall -Werror " +
+       info.sourceName +
+       " -o fig -lglfw -lGL -lm && ./fig\n"
        " * or offscreen with OSMesa, writing the picture as a binary PPM:\n"
-       " *     cc -std=c99 -Wall -Werror -DOFFSCREEN " + info.sourceName + " -o fig -lOSMesa -lm && ./fig out.ppm\n";
+       " *     cc -std=c99 -Wall -Werror -DOFFSCREEN " +
+       info.sourceName + " -o fig -lOSMesa -lm && ./fig out.ppm\n";
   if (!g.texels.empty())
     s += " * The texture images are read from " + info.texelsName +
          " (every glTexImage2D's bytes, in call order):\n * run the program in the folder that holds it.\n";
@@ -288,30 +295,43 @@ ExportedProgram exportC(const std::vector<gl::Call>& recorded, const Frame& fram
       if (count[n]++ == 0) order.push_back(n);
     std::string names;
     for (const std::string& n : order)
-      names += (names.empty() ? "" : ", ") + n +
-               (count[n] > 1 ? " (" + std::to_string(count[n]) + " textures)" : "");
-    s += " *\n" + wrap(commentSafe("Some panels show pictures the demo rendered in earlier passes of its own (its measurement, "
-                                   "with shaders or the accumulation buffer): " + names + ". This program draws those "
-                                   "pictures as textures; the passes that made them are in demos/" + info.demo + "/."),
-                       " * ");
+      names += (names.empty() ? "" : ", ") + n + (count[n] > 1 ? " (" + std::to_string(count[n]) + " textures)" : "");
+    s += " *\n" +
+         wrap(commentSafe("Some panels show pictures the demo rendered in earlier passes of its own (its measurement, "
+                          "with shaders or the accumulation buffer): " +
+                          names +
+                          ". This program draws those "
+                          "pictures as textures; the passes that made them are in demos/" +
+                          info.demo + "/."),
+              " * ");
   }
   s += " * Change a call, build again, and see what it does.\n */\n";
   s += "#define GL_GLEXT_PROTOTYPES 1\n#include <stdio.h>\n#include <stdlib.h>\n"
        "#ifdef OFFSCREEN\n#include <GL/osmesa.h>\n#else\n#include <GLFW/glfw3.h>\n#endif\n"
        "#include <GL/gl.h>\n#include <GL/glext.h>\n\n";
   s += "enum { WIDTH = " + std::to_string(info.width) + ", HEIGHT = " + std::to_string(info.height) + " };\n";
-  if (g.maxTexture) s += "static GLuint texture[" + std::to_string(g.maxTexture + 1) + "]; /* texture[k]: the k-th texture made */\n";
-  if (g.maxObject) s += "static GLuint object[" + std::to_string(g.maxObject + 1) + "];  /* shaders and programs, in the order made */\n";
+  if (g.maxTexture)
+    s += "static GLuint texture[" + std::to_string(g.maxTexture + 1) + "]; /* texture[k]: the k-th texture made */\n";
+  if (g.maxObject)
+    s += "static GLuint object[" + std::to_string(g.maxObject + 1) +
+         "];  /* shaders and programs, in the order made */\n";
   if (g.locations) s += "static GLint location[" + std::to_string(g.locations + 1) + "];  /* uniform locations */\n";
   if (!g.texels.empty()) {
-    s += "\n/* The texture images: " + std::to_string(g.texels.size()) + " bytes from " + info.texelsName + ". */\n"
+    s += "\n/* The texture images: " + std::to_string(g.texels.size()) + " bytes from " + info.texelsName +
+         ". */\n"
          "static unsigned char *texel_file;\n\n"
          "static void load_texels(void) {\n"
-         "  FILE *f = fopen(\"" + info.texelsName + "\", \"rb\");\n"
-         "  long want = " + std::to_string(g.texels.size()) + "L;\n"
+         "  FILE *f = fopen(\"" +
+         info.texelsName +
+         "\", \"rb\");\n"
+         "  long want = " +
+         std::to_string(g.texels.size()) +
+         "L;\n"
          "  texel_file = malloc((size_t)want);\n"
          "  if (!f || !texel_file || fread(texel_file, 1, (size_t)want, f) != (size_t)want) {\n"
-         "    fprintf(stderr, \"cannot read %ld bytes of " + info.texelsName + " (run this program in its folder)\\n\", want);\n"
+         "    fprintf(stderr, \"cannot read %ld bytes of " +
+         info.texelsName +
+         " (run this program in its folder)\\n\", want);\n"
          "    exit(2);\n  }\n  fclose(f);\n}\n\n"
          "static const void *texels(long offset, long bytes) {\n  (void)bytes;\n  return texel_file + offset;\n}\n";
   }
@@ -327,7 +347,9 @@ ExportedProgram exportC(const std::vector<gl::Call>& recorded, const Frame& fram
        "int main(int argc, char **argv) {\n"
        "  if (argc != 2) {\n    fprintf(stderr, \"usage: %s OUT.ppm\\n\", argv[0]);\n    return 2;\n  }\n"
        "  const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,\n"
-       "                         OSMESA_ACCUM_BITS, " + accumBits + ", OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};\n"
+       "                         OSMESA_ACCUM_BITS, " +
+       accumBits +
+       ", OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};\n"
        "  OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, NULL);\n"
        "  unsigned char *rgba = malloc((size_t)WIDTH * HEIGHT * 4);\n"
        "  if (!ctx || !rgba || !OSMesaMakeCurrent(ctx, rgba, GL_UNSIGNED_BYTE, WIDTH, HEIGHT)) {\n"
@@ -353,7 +375,8 @@ ExportedProgram exportC(const std::vector<gl::Call>& recorded, const Frame& fram
   if (accum)
     s += "  glfwWindowHint(GLFW_ACCUM_RED_BITS, 16);\n  glfwWindowHint(GLFW_ACCUM_GREEN_BITS, 16);\n"
          "  glfwWindowHint(GLFW_ACCUM_BLUE_BITS, 16);\n  glfwWindowHint(GLFW_ACCUM_ALPHA_BITS, 16);\n";
-  s += "  GLFWwindow *win = glfwCreateWindow(WIDTH, HEIGHT, \"" + commentSafe(info.demo) + "\", NULL, NULL);\n"
+  s += "  GLFWwindow *win = glfwCreateWindow(WIDTH, HEIGHT, \"" + commentSafe(info.demo) +
+       "\", NULL, NULL);\n"
        "  if (!win) {\n    glfwTerminate();\n    return 1;\n  }\n"
        "  glfwMakeContextCurrent(win);\n  glfwSetKeyCallback(win, key);\n" +
        std::string(g.texels.empty() ? "" : "  load_texels();\n") +

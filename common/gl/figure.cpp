@@ -32,15 +32,18 @@ Rendered renderScene(Scene& scene, Renderer& r, int width, int height, bool reco
 std::string glListingFile(const Rendered& got, const std::string& state) {
   return listingText(listing(pictureSections(got.frame, got.calls), nullptr, 3),
                      "The OpenGL calls that draw this picture, recorded as they were made by\n"
-                     "       " + state + " --gl-listing FILE\n"
-                     "   Object names are numbered in order of creation; queries (glGet*) are left out;\n"
-                     "   each glBegin shows its first 3 vertices. Every line is C.");
+                     "       " +
+                         state +
+                         " --gl-listing FILE\n"
+                         "   Object names are numbered in order of creation; queries (glGet*) are left out;\n"
+                         "   each glBegin shows its first 3 vertices. Every line is C.");
 }
 
 void checkWritable(const std::string& path) {
   if (path.empty()) throw Error("empty output path");
   struct stat st;
-  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) throw Error("cannot write " + path + ": it is a directory");
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw Error("cannot write " + path + ": it is a directory");
   std::string probe = path + ".tmp-" + std::to_string(::getpid());
   std::FILE* f = std::fopen(probe.c_str(), "wb");
   if (!f) throw Error("cannot write " + path + ": " + std::strerror(errno));
@@ -84,8 +87,8 @@ std::string stateCommand(const std::string& demo, int w, int h, const std::vecto
 
 std::string figureCommand(const std::string& demo, const std::string& png, int w, int h,
                           const std::vector<std::string>& flags) {
-  std::string c = kProgramPrefix + demo + kProgramSuffix + " --png " + shellQuote(png) + " --size " + std::to_string(w) + "x" +
-                  std::to_string(h);
+  std::string c = kProgramPrefix + demo + kProgramSuffix + " --png " + shellQuote(png) + " --size " +
+                  std::to_string(w) + "x" + std::to_string(h);
   for (const auto& f : flags) c += " " + shellQuote(f);
   return c;
 }

@@ -14,14 +14,12 @@ namespace {
 thread_local bool g_loaded = false;  // per thread, as the table
 // Functions of GL <= 2.1 that every backend must give us; the rest is checked
 // by whoever needs it.
-const char* const kRequired[] = {
-    "glBegin", "glEnd", "glTexImage2D", "glReadPixels", "glViewport",
-    "glGetString", "glGetError", "glCreateShader", "glUseProgram"};
+const char* const kRequired[] = {"glBegin",     "glEnd",      "glTexImage2D",   "glReadPixels", "glViewport",
+                                 "glGetString", "glGetError", "glCreateShader", "glUseProgram"};
 }  // namespace
 
 bool load(ProcLoader loader, std::string* missing) {
-#define TS_GL_LOAD(name) \
-  p_##name = reinterpret_cast<decltype(p_##name)>(loader(#name));
+#define TS_GL_LOAD(name) p_##name = reinterpret_cast<decltype(p_##name)>(loader(#name));
   TS_GL_FUNCTIONS(TS_GL_LOAD)
 #undef TS_GL_LOAD
   for (const char* name : kRequired) {
@@ -95,8 +93,7 @@ static const char* errorName(GLenum e) {
 // width)"), kept until the next check() so its message can quote them.
 namespace {
 thread_local std::string g_debugErrors;  // the callback is synchronous: the failing call's thread
-void APIENTRY onDebugMessage(GLenum, GLenum type, GLuint, GLenum, GLsizei length, const GLchar* message,
-                             const void*) {
+void APIENTRY onDebugMessage(GLenum, GLenum type, GLuint, GLenum, GLsizei length, const GLchar* message, const void*) {
   if (type != GL_DEBUG_TYPE_ERROR || !message || g_debugErrors.size() > 1024) return;
   if (!g_debugErrors.empty()) g_debugErrors += "; ";
   g_debugErrors += length > 0 ? std::string(message, size_t(length)) : std::string(message);

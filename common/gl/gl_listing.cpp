@@ -39,7 +39,8 @@ std::vector<CallSection> pictureSections(const Frame& frame, std::vector<gl::Cal
                        (size.empty() ? "" : " (a " + size + " texture)") + " was rendered by:",
                    d.renderedBy});
   }
-  std::string heading = out.empty() ? "" : "the frame, drawn with those pictures as textures (object names numbered anew):";
+  std::string heading = out.empty() ? ""
+                                    : "the frame, drawn with those pictures as textures (object names numbered anew):";
   out.push_back({heading, std::make_shared<const std::vector<gl::Call>>(std::move(frameCalls))});
   return out;
 }
@@ -50,15 +51,31 @@ bool is(const gl::Call& c, const char* name) { return std::strcmp(c.name, name) 
 // Which arguments of a call name a texture ('t'), a program/shader ('p'), a
 // framebuffer ('f') or a renderbuffer ('r').
 const char* nameRoles(const gl::Call& c) {
-  static const std::map<std::string, const char*> roles = {
-      {"glBindTexture", " t"}, {"glDeleteTextures", " t"}, {"glGenTextures", " t"},
-      {"glFramebufferTexture2D", "   t"}, {"glGenFramebuffers", " f"}, {"glBindFramebuffer", " f"},
-      {"glDeleteFramebuffers", " f"}, {"glGenRenderbuffers", " r"}, {"glBindRenderbuffer", " r"},
-      {"glDeleteRenderbuffers", " r"}, {"glFramebufferRenderbuffer", "   r"}, {"glUseProgram", "p"}, {"glAttachShader", "pp"},
-      {"glShaderSource", "p"}, {"glCompileShader", "p"}, {"glLinkProgram", "p"}, {"glDeleteShader", "p"},
-      {"glDeleteProgram", "p"}, {"glGetUniformLocation", "p"}, {"glGetAttribLocation", "p"},
-      {"glBindAttribLocation", "p"}, {"glGetProgramiv", "p"}, {"glGetShaderiv", "p"},
-      {"glGetProgramInfoLog", "p"}, {"glGetShaderInfoLog", "p"}};
+  static const std::map<std::string, const char*> roles = {{"glBindTexture", " t"},
+                                                           {"glDeleteTextures", " t"},
+                                                           {"glGenTextures", " t"},
+                                                           {"glFramebufferTexture2D", "   t"},
+                                                           {"glGenFramebuffers", " f"},
+                                                           {"glBindFramebuffer", " f"},
+                                                           {"glDeleteFramebuffers", " f"},
+                                                           {"glGenRenderbuffers", " r"},
+                                                           {"glBindRenderbuffer", " r"},
+                                                           {"glDeleteRenderbuffers", " r"},
+                                                           {"glFramebufferRenderbuffer", "   r"},
+                                                           {"glUseProgram", "p"},
+                                                           {"glAttachShader", "pp"},
+                                                           {"glShaderSource", "p"},
+                                                           {"glCompileShader", "p"},
+                                                           {"glLinkProgram", "p"},
+                                                           {"glDeleteShader", "p"},
+                                                           {"glDeleteProgram", "p"},
+                                                           {"glGetUniformLocation", "p"},
+                                                           {"glGetAttribLocation", "p"},
+                                                           {"glBindAttribLocation", "p"},
+                                                           {"glGetProgramiv", "p"},
+                                                           {"glGetShaderiv", "p"},
+                                                           {"glGetProgramInfoLog", "p"},
+                                                           {"glGetShaderInfoLog", "p"}};
   auto it = roles.find(c.name);
   return it == roles.end() ? "" : it->second;
 }
@@ -85,8 +102,7 @@ std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls) {
       gl::Arg& a = c.args[k];
       if (a.kind == gl::Arg::Kind::Ints)
         for (long long& v : a.ints) v = number(roles[k], v);
-      else
-        a.i = number(roles[k], a.i);
+      else a.i = number(roles[k], a.i);
     }
   }
   return out;
@@ -141,7 +157,7 @@ void markChanged(const std::vector<Entry>& before, std::vector<Entry>* now) {
     for (size_t i = n; i-- > 0;)
       for (size_t j = m; j-- > 0;)
         at(i, j) = before[i].text == (*now)[j].text ? (unsigned short)(at(i + 1, j + 1) + 1)
-                                                     : std::max(at(i + 1, j), at(i, j + 1));
+                                                    : std::max(at(i + 1, j), at(i, j + 1));
     for (Entry& e : *now) e.changed = true;
     for (size_t i = 0, j = 0; i < n && j < m;) {
       if (before[i].text == (*now)[j].text) {
@@ -206,7 +222,8 @@ std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const
     size_t groupStart = i;
     auto flushSkipped = [&] {
       if (skipped > 0)
-        out.push_back({"/* ... " + std::to_string(skipped) + (skipped == 1 ? " more vertex */" : " more vertices */"), false});
+        out.push_back(
+            {"/* ... " + std::to_string(skipped) + (skipped == 1 ? " more vertex */" : " more vertices */"), false});
       skipped = 0;
     };
     for (size_t k = i; k < end; ++k) {
@@ -232,7 +249,9 @@ std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const
 
 namespace {
 bool named(const gl::Call& c, const char* name) { return std::strcmp(c.name, name) == 0; }
-bool startsWith(const gl::Call& c, const char* prefix) { return std::strncmp(c.name, prefix, std::strlen(prefix)) == 0; }
+bool startsWith(const gl::Call& c, const char* prefix) {
+  return std::strncmp(c.name, prefix, std::strlen(prefix)) == 0;
+}
 bool firstArg(const gl::Call& c, long long value) { return !c.args.empty() && c.args[0].i == value; }
 }  // namespace
 
@@ -278,7 +297,8 @@ std::vector<bool> batchTextureCalls(const std::vector<gl::Call>& calls, int ordi
       if (k > 0 && named(calls[k - 1], "glGenTextures")) picked[k - 1] = true;
       for (size_t m = k + 1; m < j; ++m) picked[m] = named(calls[m], "glPixelStorei");
       for (; j < begin && (startsWith(calls[j], "glTexImage") || named(calls[j], "glPixelStorei") ||
-                           (named(calls[j], "glTexParameteri") && calls[j].args.size() > 1 && calls[j].args[1].i == GL_TEXTURE_MAX_LEVEL));
+                           (named(calls[j], "glTexParameteri") && calls[j].args.size() > 1 &&
+                            calls[j].args[1].i == GL_TEXTURE_MAX_LEVEL));
            ++j)
         picked[j] = true;
       break;

@@ -32,10 +32,11 @@ const EnumEntry kEnums[] = {
 
 // A vendor or ARB suffix: GL_FOO_EXT is a second name for GL_FOO.
 bool suffixed(const char* name) {
-  static const char* const kSuffixes[] = {"_ARB", "_EXT", "_KHR", "_OES", "_NV", "_AMD", "_ATI", "_SGIS", "_SGIX",
-                                          "_APPLE", "_MESA", "_INTEL", "_IBM", "_SUN", "_HP", "_3DFX", "_NVX", "_OML",
-                                          "_INGR", "_PGI", "_REND", "_S3", "_WIN", "_SGI", "_MESAX", "_GREMEDY", "_OVR",
-                                          "_QCOM", "_IMG", "_ARM", "_ANGLE", "_NVX", "_SUNX"};
+  static const char* const kSuffixes[] = {"_ARB",  "_EXT",  "_KHR",   "_OES",   "_NV",      "_AMD", "_ATI",
+                                          "_SGIS", "_SGIX", "_APPLE", "_MESA",  "_INTEL",   "_IBM", "_SUN",
+                                          "_HP",   "_3DFX", "_NVX",   "_OML",   "_INGR",    "_PGI", "_REND",
+                                          "_S3",   "_WIN",  "_SGI",   "_MESAX", "_GREMEDY", "_OVR", "_QCOM",
+                                          "_IMG",  "_ARM",  "_ANGLE", "_NVX",   "_SUNX"};
   size_t n = std::strlen(name);
   for (const char* s : kSuffixes) {
     size_t k = std::strlen(s);
@@ -98,34 +99,108 @@ Raw toRaw(T v) {
 // A leading '?' marks a query: it reads state and draws nothing.
 const std::map<std::string, std::string>& hints() {
   static const std::map<std::string, std::string> h = {
-      {"glAccum", "e"}, {"glBegin", "P"}, {"glBindTexture", "eu"}, {"glBlendFunc", "FF"}, {"glBlendFuncSeparate", "FFFF"}, {"glClear", "b"}, {"glPushAttrib", "b"},
-      {"glCopyTexImage2D", "eie"}, {"glCullFace", "e"}, {"glDeleteTextures", "in"}, {"glDepthFunc", "e"},
-      {"glDepthMask", "B"}, {"glDisable", "e"}, {"glDisableClientState", "e"}, {"glDrawArrays", "P"},
-      {"glDrawElements", "Pie-"}, {"glEnable", "e"}, {"glEnableClientState", "e"}, {"glFrontFace", "e"},
-      {"glGenTextures", "io"}, {"glHint", "ee"}, {"glLoadMatrixf", "m"}, {"glMatrixMode", "e"},
-      {"glMultMatrixf", "m"}, {"glPixelStorei", "e"}, {"glPolygonMode", "ee"}, {"glShadeModel", "e"},
-      {"glTexEnvf", "eex"}, {"glTexEnvfv", "eev"}, {"glTexEnvi", "eex"}, {"glTexGenfv", "eev"}, {"glTexGeni", "eex"},
-      {"glTexImage2D", "eieiiieeT"}, {"glCompressedTexImage2D", "eieiiii-"}, {"glTexImage3D", "eieiiiiee-"}, {"glClipPlane", "eD"}, {"glTexSubImage2D", "eiiiiieeT"}, {"glTexParameterf", "eex"},
-      {"glTexParameterfv", "eev"}, {"glTexParameteri", "eex"}, {"glLightfv", "eev"}, {"glLightModeli", "ex"},
-      {"glMaterialfv", "eev"}, {"glReadBuffer", "e"}, {"glDrawBuffer", "e"}, {"glColorMask", "BBBB"},
-      {"glStencilFunc", "eiu"}, {"glStencilOp", "eee"}, {"glActiveTexture", "e"}, {"glClientActiveTexture", "e"},
-      {"glMultiTexCoord4f", "e"}, {"glMultiTexCoord2f", "e"}, {"glAlphaFunc", "e"}, {"glCreateShader", "e"}, {"glShaderSource", "uiS"},
-      {"glGetUniformLocation", "us"}, {"glGetAttribLocation", "us"}, {"glBindAttribLocation", "uus"},
-      {"glUniformMatrix4fv", "iiBM"}, {"glUniformMatrix3fv", "iiBN"}, {"glUniform4fv", "iiV"}, {"glGenerateMipmap", "e"},
-      {"glBindFramebuffer", "eu"}, {"glBindRenderbuffer", "eu"}, {"glRenderbufferStorage", "eeii"},
-      {"glFramebufferTexture2D", "eeeui"}, {"glFramebufferRenderbuffer", "eeeu"}, {"glGenFramebuffers", "io"},
-      {"glGenRenderbuffers", "io"}, {"glDeleteFramebuffers", "in"}, {"glDeleteRenderbuffers", "in"},
-      {"glBlitFramebuffer", "iiiiiiiibe"}, {"glGenBuffers", "io"}, {"glDeleteBuffers", "in"},
-      {"glBindBuffer", "eu"}, {"glBufferData", "ei-e"}, {"glGenVertexArrays", "io"},
-      {"glDeleteVertexArrays", "in"}, {"glVertexAttribPointer", "uieBi-"}, {"glReadPixels", "iiiiee-"},
-      {"glColorPointer", "ie--"}, {"glTexCoordPointer", "ie--"}, {"glVertexPointer", "ie--"},
-      {"glNormalPointer", "e--"}, {"glDebugMessageControl", "eeei-B"},
+      {"glAccum", "e"},
+      {"glBegin", "P"},
+      {"glBindTexture", "eu"},
+      {"glBlendFunc", "FF"},
+      {"glBlendFuncSeparate", "FFFF"},
+      {"glClear", "b"},
+      {"glPushAttrib", "b"},
+      {"glCopyTexImage2D", "eie"},
+      {"glCullFace", "e"},
+      {"glDeleteTextures", "in"},
+      {"glDepthFunc", "e"},
+      {"glDepthMask", "B"},
+      {"glDisable", "e"},
+      {"glDisableClientState", "e"},
+      {"glDrawArrays", "P"},
+      {"glDrawElements", "Pie-"},
+      {"glEnable", "e"},
+      {"glEnableClientState", "e"},
+      {"glFrontFace", "e"},
+      {"glGenTextures", "io"},
+      {"glHint", "ee"},
+      {"glLoadMatrixf", "m"},
+      {"glMatrixMode", "e"},
+      {"glMultMatrixf", "m"},
+      {"glPixelStorei", "e"},
+      {"glPolygonMode", "ee"},
+      {"glShadeModel", "e"},
+      {"glTexEnvf", "eex"},
+      {"glTexEnvfv", "eev"},
+      {"glTexEnvi", "eex"},
+      {"glTexGenfv", "eev"},
+      {"glTexGeni", "eex"},
+      {"glTexImage2D", "eieiiieeT"},
+      {"glCompressedTexImage2D", "eieiiii-"},
+      {"glTexImage3D", "eieiiiiee-"},
+      {"glClipPlane", "eD"},
+      {"glTexSubImage2D", "eiiiiieeT"},
+      {"glTexParameterf", "eex"},
+      {"glTexParameterfv", "eev"},
+      {"glTexParameteri", "eex"},
+      {"glLightfv", "eev"},
+      {"glLightModeli", "ex"},
+      {"glMaterialfv", "eev"},
+      {"glReadBuffer", "e"},
+      {"glDrawBuffer", "e"},
+      {"glColorMask", "BBBB"},
+      {"glStencilFunc", "eiu"},
+      {"glStencilOp", "eee"},
+      {"glActiveTexture", "e"},
+      {"glClientActiveTexture", "e"},
+      {"glMultiTexCoord4f", "e"},
+      {"glMultiTexCoord2f", "e"},
+      {"glAlphaFunc", "e"},
+      {"glCreateShader", "e"},
+      {"glShaderSource", "uiS"},
+      {"glGetUniformLocation", "us"},
+      {"glGetAttribLocation", "us"},
+      {"glBindAttribLocation", "uus"},
+      {"glUniformMatrix4fv", "iiBM"},
+      {"glUniformMatrix3fv", "iiBN"},
+      {"glUniform4fv", "iiV"},
+      {"glGenerateMipmap", "e"},
+      {"glBindFramebuffer", "eu"},
+      {"glBindRenderbuffer", "eu"},
+      {"glRenderbufferStorage", "eeii"},
+      {"glFramebufferTexture2D", "eeeui"},
+      {"glFramebufferRenderbuffer", "eeeu"},
+      {"glGenFramebuffers", "io"},
+      {"glGenRenderbuffers", "io"},
+      {"glDeleteFramebuffers", "in"},
+      {"glDeleteRenderbuffers", "in"},
+      {"glBlitFramebuffer", "iiiiiiiibe"},
+      {"glGenBuffers", "io"},
+      {"glDeleteBuffers", "in"},
+      {"glBindBuffer", "eu"},
+      {"glBufferData", "ei-e"},
+      {"glGenVertexArrays", "io"},
+      {"glDeleteVertexArrays", "in"},
+      {"glVertexAttribPointer", "uieBi-"},
+      {"glReadPixels", "iiiiee-"},
+      {"glColorPointer", "ie--"},
+      {"glTexCoordPointer", "ie--"},
+      {"glVertexPointer", "ie--"},
+      {"glNormalPointer", "e--"},
+      {"glDebugMessageControl", "eeei-B"},
       // Queries: they read state and draw nothing.
-      {"glGetError", "?"}, {"glGetFloatv", "?e-"}, {"glGetIntegerv", "?e-"}, {"glGetString", "?e"},
-      {"glGetStringi", "?eu"}, {"glGetTexImage", "?eiee-"}, {"glGetTexLevelParameteriv", "?eie-"},
-      {"glIsEnabled", "?e"}, {"glGetProgramiv", "?ue-"}, {"glGetShaderiv", "?ue-"},
-      {"glGetProgramInfoLog", "?ui--"}, {"glGetShaderInfoLog", "?ui--"}, {"glCheckFramebufferStatus", "?e"},
-      {"glFinish", "?"}, {"glFlush", "?"}, {"glDebugMessageCallback", "?--"},
+      {"glGetError", "?"},
+      {"glGetFloatv", "?e-"},
+      {"glGetIntegerv", "?e-"},
+      {"glGetString", "?e"},
+      {"glGetStringi", "?eu"},
+      {"glGetTexImage", "?eiee-"},
+      {"glGetTexLevelParameteriv", "?eie-"},
+      {"glIsEnabled", "?e"},
+      {"glGetProgramiv", "?ue-"},
+      {"glGetShaderiv", "?ue-"},
+      {"glGetProgramInfoLog", "?ui--"},
+      {"glGetShaderInfoLog", "?ui--"},
+      {"glCheckFramebufferStatus", "?e"},
+      {"glFinish", "?"},
+      {"glFlush", "?"},
+      {"glDebugMessageCallback", "?--"},
   };
   return h;
 }
@@ -133,47 +208,70 @@ const std::map<std::string, std::string>& hints() {
 // Parameters named by a pname whose value is a number, never an enum.
 bool numericPname(long long pname) {
   switch (pname) {
-    case GL_TEXTURE_MAX_LEVEL: case GL_TEXTURE_BASE_LEVEL: case GL_TEXTURE_MIN_LOD: case GL_TEXTURE_MAX_LOD:
-    case GL_TEXTURE_LOD_BIAS: case GL_TEXTURE_MAX_ANISOTROPY_EXT: case GL_UNPACK_ALIGNMENT: case GL_PACK_ALIGNMENT:
-    case GL_UNPACK_ROW_LENGTH: case GL_PACK_ROW_LENGTH: case GL_RGB_SCALE: case GL_ALPHA_SCALE:
-    case GL_LIGHT_MODEL_TWO_SIDE: case GL_LIGHT_MODEL_LOCAL_VIEWER: case GL_GENERATE_MIPMAP:
-      return true;
-    default:
-      return false;
+    case GL_TEXTURE_MAX_LEVEL:
+    case GL_TEXTURE_BASE_LEVEL:
+    case GL_TEXTURE_MIN_LOD:
+    case GL_TEXTURE_MAX_LOD:
+    case GL_TEXTURE_LOD_BIAS:
+    case GL_TEXTURE_MAX_ANISOTROPY_EXT:
+    case GL_UNPACK_ALIGNMENT:
+    case GL_PACK_ALIGNMENT:
+    case GL_UNPACK_ROW_LENGTH:
+    case GL_PACK_ROW_LENGTH:
+    case GL_RGB_SCALE:
+    case GL_ALPHA_SCALE:
+    case GL_LIGHT_MODEL_TWO_SIDE:
+    case GL_LIGHT_MODEL_LOCAL_VIEWER:
+    case GL_GENERATE_MIPMAP: return true;
+    default: return false;
   }
 }
 
 // How many floats a ...fv call reads for its pname.
 int vectorLength(long long pname) {
   switch (pname) {
-    case GL_SHININESS: case GL_SPOT_EXPONENT: case GL_SPOT_CUTOFF: case GL_CONSTANT_ATTENUATION:
-    case GL_LINEAR_ATTENUATION: case GL_QUADRATIC_ATTENUATION: case GL_TEXTURE_LOD_BIAS:
-    case GL_TEXTURE_MAX_ANISOTROPY_EXT: case GL_TEXTURE_MIN_LOD: case GL_TEXTURE_MAX_LOD:
-      return 1;
-    case GL_SPOT_DIRECTION: case GL_COLOR_INDEXES:
-      return 3;
-    default:
-      return 4;
+    case GL_SHININESS:
+    case GL_SPOT_EXPONENT:
+    case GL_SPOT_CUTOFF:
+    case GL_CONSTANT_ATTENUATION:
+    case GL_LINEAR_ATTENUATION:
+    case GL_QUADRATIC_ATTENUATION:
+    case GL_TEXTURE_LOD_BIAS:
+    case GL_TEXTURE_MAX_ANISOTROPY_EXT:
+    case GL_TEXTURE_MIN_LOD:
+    case GL_TEXTURE_MAX_LOD: return 1;
+    case GL_SPOT_DIRECTION:
+    case GL_COLOR_INDEXES: return 3;
+    default: return 4;
   }
 }
 
 int components(long long format) {
   switch (format) {
-    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: case GL_DEPTH_COMPONENT:
-    case GL_RED_INTEGER:
-      return 1;
-    case GL_RG: case GL_LUMINANCE_ALPHA: case GL_DEPTH_STENCIL:
-      return 2;
-    case GL_RGB: case GL_BGR:
-      return 3;
-    default:
-      return 4;
+    case GL_RED:
+    case GL_GREEN:
+    case GL_BLUE:
+    case GL_ALPHA:
+    case GL_LUMINANCE:
+    case GL_DEPTH_COMPONENT:
+    case GL_RED_INTEGER: return 1;
+    case GL_RG:
+    case GL_LUMINANCE_ALPHA:
+    case GL_DEPTH_STENCIL: return 2;
+    case GL_RGB:
+    case GL_BGR: return 3;
+    default: return 4;
   }
 }
 int typeBytes(long long type) {
   switch (type) {
-    case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_HALF_FLOAT: return 2;
-    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: case GL_UNSIGNED_INT_24_8: return 4;
+    case GL_UNSIGNED_SHORT:
+    case GL_SHORT:
+    case GL_HALF_FLOAT: return 2;
+    case GL_UNSIGNED_INT:
+    case GL_INT:
+    case GL_FLOAT:
+    case GL_UNSIGNED_INT_24_8: return 4;
     default: return 1;
   }
 }
@@ -189,7 +287,9 @@ Arg describe(char hint, const Raw& r, const std::vector<Raw>& all, size_t index,
     if (v) a.floats.assign(v, v + n);
   };
   switch (hint) {
-    case 'e': case 'P': case 'F': a.kind = Arg::Kind::Enum; return a;
+    case 'e':
+    case 'P':
+    case 'F': a.kind = Arg::Kind::Enum; return a;
     case 'b': a.kind = Arg::Kind::Bitfield; return a;
     case 'B': a.kind = Arg::Kind::Boolean; return a;
     case 'u': a.kind = Arg::Kind::Uint; return a;
@@ -255,7 +355,8 @@ Arg describe(char hint, const Raw& r, const std::vector<Raw>& all, size_t index,
         auto copy = std::make_shared<std::vector<unsigned char>>();
         const unsigned char* src = static_cast<const unsigned char*>(r.p);
         copy->reserve(row * size_t(h));
-        for (long long y = 0; y < h; ++y) copy->insert(copy->end(), src + size_t(y) * stride, src + size_t(y) * stride + row);
+        for (long long y = 0; y < h; ++y)
+          copy->insert(copy->end(), src + size_t(y) * stride, src + size_t(y) * stride + row);
         a.bytes = std::move(copy);
       }
       return a;
@@ -266,7 +367,8 @@ Arg describe(char hint, const Raw& r, const std::vector<Raw>& all, size_t index,
   // No hint: the C type says.
   switch (r.type) {
     case Raw::Ptr: a.kind = Arg::Kind::Pointer; break;
-    case Raw::Real: case Raw::RealDouble: a.kind = Arg::Kind::Float; break;
+    case Raw::Real:
+    case Raw::RealDouble: a.kind = Arg::Kind::Float; break;
     case Raw::Unsigned: a.kind = Arg::Kind::Uint; break;
     default: a.kind = Arg::Kind::Int; break;
   }
@@ -278,7 +380,7 @@ enum FunctionIndex {
 #define TS_GL_INDEX(name) k_##name,
   TS_GL_FUNCTIONS(TS_GL_INDEX)
 #undef TS_GL_INDEX
-  kFunctionCount
+      kFunctionCount
 };
 const char* const kNames[] = {
 #define TS_GL_NAME(name) #name,
@@ -346,10 +448,8 @@ struct Wrapper<Index, R (*)(A...)> {
     } else {
       R result = real(a...);
       c.hasResult = true;
-      if constexpr (std::is_pointer_v<R>)
-        c.result = 0;
-      else
-        c.result = (long long)(result);
+      if constexpr (std::is_pointer_v<R>) c.result = 0;
+      else c.result = (long long)(result);
       finish(Index, c, raws);
       return result;
     }
@@ -357,8 +457,8 @@ struct Wrapper<Index, R (*)(A...)> {
 };
 
 void swapIn() {
-#define TS_GL_SWAP_IN(name)                                                          \
-  g_real[k_##name] = reinterpret_cast<void*>(p_##name);                              \
+#define TS_GL_SWAP_IN(name)                             \
+  g_real[k_##name] = reinterpret_cast<void*>(p_##name); \
   if (p_##name) p_##name = &Wrapper<k_##name, decltype(p_##name)>::call;
   TS_GL_FUNCTIONS(TS_GL_SWAP_IN)
 #undef TS_GL_SWAP_IN
@@ -405,9 +505,9 @@ std::string floatLiteral(double v) {
 namespace {
 std::string enumText(const Arg& a, char group) {
   unsigned long long v = (unsigned long long)(a.i);
-  static const char* const kPrims[] = {"GL_POINTS",         "GL_LINES",        "GL_LINE_LOOP", "GL_LINE_STRIP",
-                                       "GL_TRIANGLES",      "GL_TRIANGLE_STRIP", "GL_TRIANGLE_FAN", "GL_QUADS",
-                                       "GL_QUAD_STRIP",     "GL_POLYGON"};
+  static const char* const kPrims[] = {"GL_POINTS",     "GL_LINES",          "GL_LINE_LOOP",    "GL_LINE_STRIP",
+                                       "GL_TRIANGLES",  "GL_TRIANGLE_STRIP", "GL_TRIANGLE_FAN", "GL_QUADS",
+                                       "GL_QUAD_STRIP", "GL_POLYGON"};
   if (group == 'P' && v < 10) return kPrims[v];
   if (v == 0) return group == 'F' ? "GL_ZERO" : "GL_NONE";
   if (v == 1 && group == 'F') return "GL_ONE";
@@ -420,9 +520,10 @@ std::string enumText(const Arg& a, char group) {
 
 std::string bitfieldText(long long v) {
   if (v == 0xFFFFFFFFLL) return "GL_ALL_ATTRIB_BITS";  // glPushAttrib's everything
-  static const std::pair<long long, const char*> kBits[] = {
-      {GL_COLOR_BUFFER_BIT, "GL_COLOR_BUFFER_BIT"}, {GL_DEPTH_BUFFER_BIT, "GL_DEPTH_BUFFER_BIT"},
-      {GL_STENCIL_BUFFER_BIT, "GL_STENCIL_BUFFER_BIT"}, {GL_ACCUM_BUFFER_BIT, "GL_ACCUM_BUFFER_BIT"}};
+  static const std::pair<long long, const char*> kBits[] = {{GL_COLOR_BUFFER_BIT, "GL_COLOR_BUFFER_BIT"},
+                                                            {GL_DEPTH_BUFFER_BIT, "GL_DEPTH_BUFFER_BIT"},
+                                                            {GL_STENCIL_BUFFER_BIT, "GL_STENCIL_BUFFER_BIT"},
+                                                            {GL_ACCUM_BUFFER_BIT, "GL_ACCUM_BUFFER_BIT"}};
   std::string out;
   for (auto [bit, name] : kBits)
     if (v & bit) {
@@ -475,16 +576,16 @@ std::string formatCall(const Call& c, bool floatSuffix) {
     char group = k < hint.size() ? hint[k] : ' ';
     if (k) out += ", ";
     switch (a.kind) {
-      case Arg::Kind::Int: case Arg::Kind::Uint: out += std::to_string(a.i); break;
-      case Arg::Kind::Float:
-        out += floatSuffix && !a.isDouble ? floatLiteral(a.f) : number(a.f, a.isDouble);
-        break;
+      case Arg::Kind::Int:
+      case Arg::Kind::Uint: out += std::to_string(a.i); break;
+      case Arg::Kind::Float: out += floatSuffix && !a.isDouble ? floatLiteral(a.f) : number(a.f, a.isDouble); break;
       case Arg::Kind::Code: out += a.text.empty() ? "0" : a.text[0]; break;
       case Arg::Kind::Enum: out += enumText(a, group); break;
       case Arg::Kind::Bitfield: out += bitfieldText(a.i); break;
       case Arg::Kind::Boolean: out += a.i ? "GL_TRUE" : "GL_FALSE"; break;
       case Arg::Kind::Floats: {
-        out += std::string(a.isDouble ? "(const GLdouble[" : "(const GLfloat[") + std::to_string(a.floats.size()) + "]){";
+        out += std::string(a.isDouble ? "(const GLdouble[" : "(const GLfloat[") + std::to_string(a.floats.size()) +
+               "]){";
         for (size_t n = 0; n < a.floats.size(); ++n)
           out += (n ? ", " : "") +
                  (floatSuffix && !a.isDouble ? floatLiteral(a.floats[n]) : number(a.floats[n], a.isDouble));
@@ -513,7 +614,8 @@ std::string formatCall(const Call& c, bool floatSuffix) {
         std::snprintf(buf, sizeof buf, "NULL /* %lldx%lld %s %s, %zu bytes */", a.ints.size() > 1 ? a.ints[0] : 0,
                       a.ints.size() > 1 ? a.ints[1] : 0,
                       a.ints.size() > 2 ? enumName((unsigned long long)(a.ints[2])) : "",
-                      a.ints.size() > 3 ? enumName((unsigned long long)(a.ints[3])) : "", a.bytes ? a.bytes->size() : 0);
+                      a.ints.size() > 3 ? enumName((unsigned long long)(a.ints[3])) : "",
+                      a.bytes ? a.bytes->size() : 0);
         out += buf;
         break;
       }
@@ -524,8 +626,7 @@ std::string formatCall(const Call& c, bool floatSuffix) {
   if (c.hasResult) {
     if (std::strcmp(c.name, "glCheckFramebufferStatus") == 0)
       out += std::string("  /* = ") + enumName((unsigned long long)(c.result)) + " */";
-    else
-      out += "  /* = " + std::to_string(c.result) + " */";
+    else out += "  /* = " + std::to_string(c.result) + " */";
   }
   return out;
 }

@@ -101,7 +101,8 @@ RenderTarget::Bind::~Bind() {
   glGetIntegerv(GL_READ_BUFFER, &now);
   if (now != read_) glReadBuffer(GLenum(read_));
   glGetIntegerv(GL_VIEWPORT, viewport);
-  if (!std::equal(viewport, viewport + 4, viewport_)) glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+  if (!std::equal(viewport, viewport + 4, viewport_))
+    glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
 }
 
 }  // namespace ts

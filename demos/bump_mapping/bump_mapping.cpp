@@ -33,7 +33,8 @@
 //   m  method: flat | B1 blinn | B2 seed002 | B3 normalmap | R reference | B4 emboss | B5 dot3
 //   v  view: single | compare (the method beside R) | normals (both as colours) | all (B1-B5 and R)
 //   t  heights: procedural | bricks (--texture FILE: a picture's luminance)
-//   + / -  height scale   s / S  object scale (seed 004's claim)   w  the normal map's edge slopes wrap (the seam's fix)
+//   + / -  height scale   s / S  object scale (seed 004's claim)
+//     w  the normal map's edge slopes wrap (the seam's fix)
 //   a / A, e / E  light 1 azimuth, elevation (or a right drag)   b / B, d / D  light 2   . / ,  tilt
 // What the GL does: one GLSL 1.30 program (bump_mapping_gl.hpp: kFS) for B1-B3, the
 // method a uniform (its number from bump_mapping_methods.hpp: kMethods, the one table
@@ -82,26 +83,34 @@ class BumpMapping final : public ts::Scene {
   std::string id() const override { return "bump_mapping"; }
   std::string title() const override { return "Bump mapping on the torus (Buss VI.2; seeds 001, 002, 004)"; }
   std::string about() const override {
-    return "A torus with dimples and ridges (or bricks), lit by two lights, bump mapped per pixel by Blinn's perturbed\n"
-           "normal (seed 004), seed 002's height differences, a normal map, emboss and DOT3; each measured against the\n"
+    return "A torus with dimples and ridges (or bricks), lit by two "
+           "lights, bump mapped per pixel by Blinn's perturbed\n"
+           "normal (seed 004), seed 002's height differences, a "
+           "normal map, emboss and DOT3; each measured against the\n"
            "same heights displacing a finely tessellated torus: PSNR, mean difference, normal error in degrees.";
   }
   std::vector<std::string> claim() const override { return {"normal_err_deg[blinn]", "normal_err_deg[seed002]"}; }
   void addOptions(ts::Options& o) override {
     std::vector<std::string> keys;
     for (const bump::MethodInfo& m : kMethods) keys.push_back(m.key);
-    o.addEnum("method", &method_, keys,
-              "flat | B1 Blinn (seed 004) | B2 seed 002 | B3 normal map | R the displaced reference | B4 emboss | B5 DOT3", 'm');
+    o.addEnum(
+        "method", &method_, keys,
+        "flat | B1 Blinn (seed 004) | B2 seed 002 | B3 normal map | R the displaced reference | B4 emboss | B5 DOT3",
+        'm');
     o.addEnum("view", &view_, {"single", "compare", "normals", "all"},
               "single | compare: the method beside R | normals as colours | all: B1-B5 and R side by side", 'v');
     o.addEnum("heights", &heights_, {"procedural", "bricks"}, "the height field: dimples and ridges | bricks", 't');
-    o.addFloat("height-scale", &heightScale_, 0.0f, 0.12f, "P = scale h: the bumps' height in the torus's units (r = 0.4)", '+', '-', 0.01f);
-    o.addFloat("object-scale", &objectScale_, 1.0f, 4.0f, "the torus scaled (R, r and the eye's distance), the bumps not", 's', 'S', 1.0f);
-    o.addFloat("light1-az", &light_[0].x, -180.0f, 180.0f, "light 1 azimuth, degrees, 0 = from the eye", 'a', 'A', 15.0f);
+    o.addFloat("height-scale", &heightScale_, 0.0f, 0.12f,
+               "P = scale h: the bumps' height in the torus's units (r = 0.4)", '+', '-', 0.01f);
+    o.addFloat("object-scale", &objectScale_, 1.0f, 4.0f,
+               "the torus scaled (R, r and the eye's distance), the bumps not", 's', 'S', 1.0f);
+    o.addFloat("light1-az", &light_[0].x, -180.0f, 180.0f, "light 1 azimuth, degrees, 0 = from the eye", 'a', 'A',
+               15.0f);
     o.addFloat("light1-el", &light_[0].y, -90.0f, 90.0f, "light 1 elevation, degrees", 'e', 'E', 15.0f);
     o.addFloat("light2-az", &light_[1].x, -180.0f, 180.0f, "light 2 azimuth, degrees", 'b', 'B', 15.0f);
     o.addFloat("light2-el", &light_[1].y, -90.0f, 90.0f, "light 2 elevation, degrees", 'd', 'D', 15.0f);
-    o.addBool("wrap-slopes", &wrapSlopes_, "the normal map's slopes wrap across the texture's edge (off: one-sided there, the seam)", 'w');
+    o.addBool("wrap-slopes", &wrapSlopes_,
+              "the normal map's slopes wrap across the texture's edge (off: one-sided there, the seam)", 'w');
     o.addFloat("tilt", &tilt_, -90.0f, 90.0f, "the eye's height above the torus's plane, degrees", '.', ',', 5.0f);
     camera_.addOptions(o);
     file_.addOption(o, "the built-in heights (its luminance is the height)");
@@ -111,7 +120,8 @@ class BumpMapping final : public ts::Scene {
   ts::Measurements measure(ts::Renderer& r) override {
     const bump::Heights& H = heights();
     return bump::measureAll([&](const bump::RenderSpec& s) { return render(r, s); }, toLight(0),
-                            bump::normalMap(H, 1.0, 0.4, heightScale_, true), bump::normalMap(H, 1.0, 0.4, heightScale_, false));
+                            bump::normalMap(H, 1.0, 0.4, heightScale_, true),
+                            bump::normalMap(H, 1.0, 0.4, heightScale_, false));
   }
 
  private:
@@ -119,8 +129,8 @@ class BumpMapping final : public ts::Scene {
     const std::string want = file_.active() ? file_.path() : heights_ ? "bricks" : "procedural";
     if (!cache_ || cacheKey_ != want) {
       cache_ = std::make_shared<bump::Heights>(file_.active() ? bump::fromImage(file_.image())
-                                               : heights_      ? bump::bricks()
-                                                               : bump::procedural());
+                                               : heights_     ? bump::bricks()
+                                                              : bump::procedural());
       cacheKey_ = want;
     }
     return *cache_;
@@ -157,13 +167,15 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
   p.id = std::string("torus_") + kMethods[s.method].key;
   p.viewport = vp;
   p.depthTest = true;
-  p.projection = glm::perspective(glm::radians(35.0f), float(vp.w) / float(vp.h), 0.5f * objectScale_, 20.0f * objectScale_ * distance_);
+  p.projection = glm::perspective(glm::radians(35.0f), float(vp.w) / float(vp.h), 0.5f * objectScale_,
+                                  20.0f * objectScale_ * distance_);
   p.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -4.8f * objectScale_ * distance_));
   p.modelview = glm::rotate(p.modelview, glm::radians(tilt_), glm::vec3(1, 0, 0));
   camera_.apply(p);
   const bump::Heights& H = heights();
-  ts::TextureDesc tex = s.method == bump::kNormalMap ? bump::normalTexture(H, cacheKey_, heightScale_, s.mipmaps, wrapSlopes_, s.dxt1)
-                                                     : bump::heightTexture(H, cacheKey_, false, s.mipmaps);
+  ts::TextureDesc tex = s.method == bump::kNormalMap
+                            ? bump::normalTexture(H, cacheKey_, heightScale_, s.mipmaps, wrapSlopes_, s.dxt1)
+                            : bump::heightTexture(H, cacheKey_, false, s.mipmaps);
   // The mesh's (s, t) become glTexCoord4f(s, t, 0, 1) in Renderer::draw: the shader's gl_MultiTexCoord0.
   ts::Batch b = ts::meshBatch(ts::torusMesh(tp), f.addTexture(tex));
   b.role = "torus";
@@ -189,14 +201,21 @@ ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const 
   BumpMapping v = *this;
   v.heightScale_ *= s.heightFactor, v.objectScale_ *= s.objectFactor, v.distance_ = s.distanceFactor;
   ts::Frame f = ts::layout::blankFrame(kMeasureSize, kMeasureSize);
-  if ((s.normals || s.embossTermOnly) && !s.onBackdrop) f.clearColor = {0.0f, 0.0f, 0.0f, 1.0f};  // "covered" = not black
+  if ((s.normals || s.embossTermOnly) && !s.onBackdrop)
+    f.clearColor = {0.0f, 0.0f, 0.0f, 1.0f};  // "covered" = not black
   f.panels.push_back(v.torusPanel(f, {0, 0, kMeasureSize, kMeasureSize}, s));
   if (s.method == bump::kReference && !s.smoothGeometry) return bump::renderReference(r, f);
   if (!kMethods[s.method].fixedFunction) return r.renderOffscreen(f);
   const bump::Heights& H = v.heights();
-  bump::FixedInputs in{v.torus(), H.rep, glm::vec2(float(H.w), float(H.h)), {v.toLight(0), v.toLight(1)}, {kIntensity[0], kIntensity[1]},
-                       bump::heightTexture(H, v.cacheKey_), bump::heightTexture(H, v.cacheKey_, true),
-                       bump::normalTexture(H, v.cacheKey_, v.heightScale_, false, wrapSlopes_), s.embossTermOnly};
+  bump::FixedInputs in{v.torus(),
+                       H.rep,
+                       glm::vec2(float(H.w), float(H.h)),
+                       {v.toLight(0), v.toLight(1)},
+                       {kIntensity[0], kIntensity[1]},
+                       bump::heightTexture(H, v.cacheKey_),
+                       bump::heightTexture(H, v.cacheKey_, true),
+                       bump::normalTexture(H, v.cacheKey_, v.heightScale_, false, wrapSlopes_),
+                       s.embossTermOnly};
   return bump::renderFixedFunction(r, f, s.method, in);
 }
 
@@ -225,8 +244,9 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
     return L::measured(measured, name + "[" + (m == bump::kReference ? "ideal" : kMethods[m].key) + "]", format);
   };
   auto band = [&](int b) {  // emboss's contrast in band b of the light's angle to the normal (kEmbossBands)
-    return L::measured(measured, "emboss_contrast[" + std::to_string(int(bump::kEmbossBands[b])) + "-" +
-                                     std::to_string(int(bump::kEmbossBands[b + 1])) + "deg]",
+    return L::measured(measured,
+                       "emboss_contrast[" + std::to_string(int(bump::kEmbossBands[b])) + "-" +
+                           std::to_string(int(bump::kEmbossBands[b + 1])) + "deg]",
                        "%.3f");
   };
   auto bandDeg = [&](int b) { return L::given("emboss band: light to normal, degrees", bump::kEmbossBands[b], "%g"); };
@@ -244,7 +264,9 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
       L::caption(f, title, "B2's tilt along x against R's", kWhite, c.scale);
       auto rgba = [](ts::Rgba q) { return glm::vec4(q.r, q.g, q.b, 255) / 255.0f; };
       L::legend(f, L::halves(c.above).second,
-                {{rgba(bump::kTiltWith), "with R"}, {rgba(bump::kTiltAgainst), "against R"}, {rgba(bump::kTiltUncounted), "not counted"}},
+                {{rgba(bump::kTiltWith), "with R"},
+                 {rgba(bump::kTiltAgainst), "against R"},
+                 {rgba(bump::kTiltUncounted), "not counted"}},
                 1);
       if (!found) continue;
       picture(c, "picture_seed002_tilt_x", found->seedTiltX, "seed002 x tilt against R", nullptr);
@@ -257,16 +279,21 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
       continue;
     }
     if (m == kTermCell) {
-      L::caption(f, title, "B4's term (1+H-H')/2 alone, shown x" + L::given("emboss term's magnification", bump::kEmbossGain, "%g"),
+      L::caption(f, title,
+                 "B4's term (1+H-H')/2 alone, shown x" +
+                     L::given("emboss term's magnification", bump::kEmbossGain, "%g"),
                  kWhite, c.scale);
       auto rgba = [](ts::Rgba q) { return glm::vec4(q.r, q.g, q.b, 255) / 255.0f; };
       L::legend(f, L::halves(c.above).second,
-                {{rgba(bump::kEmbossEdge), "light 1 within " + L::fmt("%g", bump::kEmbossBands[1]) + " deg of the normal"}}, 1);
+                {{rgba(bump::kEmbossEdge),
+                  "light 1 within " + L::fmt("%g", bump::kEmbossBands[1]) + " deg of the normal"}},
+                1);
       if (!found || !found->embossTerm) continue;
       picture(c, "picture_emboss_term", found->embossTerm, "emboss term", found->embossTermGL);
       // The contrast per band: where the light is along the normal the bricks are gone.
       L::phrases(f, c.below,
-                 {"mean contrast |H-H'|:", band(0) + " inside the line,", band(1) + " at " + bandDeg(1) + "-" + bandDeg(2) + " deg,",
+                 {"mean contrast |H-H'|:", band(0) + " inside the line,",
+                  band(1) + " at " + bandDeg(1) + "-" + bandDeg(2) + " deg,",
                   band(2) + " at " + bandDeg(2) + "-" + bandDeg(3) + ",", band(3) + " beyond " + bandDeg(3) + " deg"},
                  kAmber, c.scale);
       continue;
@@ -287,7 +314,9 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
       const auto gl = found->picturesGL.find(m);
       picture(c, std::string("picture_") + kMethods[m].key, n ? found->refNormals : found->pictures.at(m),
               std::string(kMethods[m].key) + (n ? " normals" : ""),
-              n ? found->refNormalsGL : gl != found->picturesGL.end() ? gl->second : nullptr);
+              n                               ? found->refNormalsGL
+              : gl != found->picturesGL.end() ? gl->second
+                                              : nullptr);
     } else {
       L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
     }
@@ -295,20 +324,24 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
     // The note as phrases: a line breaks between them, never inside one.
     std::vector<L::Text> note;
     if (m == bump::kReference)
-      note = normals ? std::vector<L::Text>{"R's normals on the smooth torus:", num("screen_normal_err_deg", m, "%.1f") + " deg off",
-                                            "in the same pixel", "(the geometry's share)"}
-                     : std::vector<L::Text>{"R's own normals on the smooth torus", "reach " + num("psnr_db", m, "%.1f") + " dB against it:",
+      note = normals ? std::vector<L::Text>{"R's normals on the smooth torus:",
+                                            num("screen_normal_err_deg", m, "%.1f") + " deg off", "in the same pixel",
+                                            "(the geometry's share)"}
+                     : std::vector<L::Text>{"R's own normals on the smooth torus",
+                                            "reach " + num("psnr_db", m, "%.1f") + " dB against it:",
                                             "the rest is geometry"};
     else if (noNormals)
-      note = {"fixed function: no normal to show", "(the shaded picture),", num("psnr_db", m, "%.1f") + " dB against R"};
+      note = {"fixed function: no normal to show", "(the shaded picture),",
+              num("psnr_db", m, "%.1f") + " dB against R"};
     else if (normals)
       note = {"normal off by " + num("normal_err_deg", m, "%.1f") + " deg at the same (s,t),",
               num("screen_normal_err_deg", m, "%.1f") + " deg in the same pixel"};
     else
-      note = {"against R: PSNR " + num("psnr_db", m, "%.1f") + " dB,", "mean |diff| " + num("mad", m, "%.1f") +
-                                                                          (!kMethods[m].fixedFunction ? L::Text(",") : L::Text())};
+      note = {"against R: PSNR " + num("psnr_db", m, "%.1f") + " dB,",
+              "mean |diff| " + num("mad", m, "%.1f") + (!kMethods[m].fixedFunction ? L::Text(",") : L::Text())};
     if (!normals && !kMethods[m].fixedFunction && m != bump::kReference)
-      note.push_back("normal off by " + num("normal_err_deg", m, "%.1f") + " deg" + (m == bump::kSeed002 && shown.size() == 3 ? ";" : ""));
+      note.push_back("normal off by " + num("normal_err_deg", m, "%.1f") + " deg" +
+                     (m == bump::kSeed002 && shown.size() == 3 ? ";" : ""));
     if (m == bump::kSeed002 && shown.size() == 3)  // the second half of seed 002's claim: its tilt has no scale in it
       note.push_back("twice the heights: tilt ratio " + L::measured(measured, "tilt_ratio_height_x2[seed002]", "%.2f"));
     if (m == bump::kEmboss && !normals && shown.size() != 3 && found->embossContrast[3] >= 0) {
@@ -322,40 +355,63 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
 }
 
 std::vector<ts::FigureSpec> BumpMapping::figures() const {
-  return {{"bump_two_lights", "Buss VI.2 (seed 002, Fig. 1)",
-           "Seed 002's figure: a torus under Phong shading and two lights, bump mapped per pixel (Blinn's perturbed normal, "
-           "seed 004), beside the same heights displacing a 1024x512 grid (R). Captions: the shading and normal error against R.",
-           {"--view", "compare", "--method", "blinn", "--heights", "bricks"}, 1024, 560,
-           "Blinn's perturbed normal is {normal_err_deg[blinn]} deg from the displaced surface's and tilts "
-           "{tilt_deg[blinn]} deg from the smooth torus's (the surface: {tilt_deg[reference]})."},
-          {"bump_seed002", "Buss VI.2 (seed 002)",
-           "Seed 002's shortcut taken literally: the 8-bit height differences added to the eye-space normal's x and y. "
-           "Its tilt along x runs against the true surface's on the near side of the ring and with it on the far side, and "
-           "does not grow with the height scale: measured. The middle picture shows, in the near and the far third of the ring, "
-           "each pixel where B2 tilts the normal along x as R does (green) or against it (magenta).",
-           {"--view", "compare", "--method", "seed002"}, 1024, 560,
-           "Seed 002's shortcut tilts the normal along x against the surface on the near side "
-           "({tilt_agreement_x_near[seed002]}; +1 agrees), and no more with twice the heights (ratio "
-           "{tilt_ratio_height_x2[seed002]})."},
-          {"bump_normals", "Buss VI.2 (normal map)",
-           "Normals as colours (0.5 + 0.5 n, eye space): the normal map baked from the same heights (B3) beside R's.",
-           {"--view", "normals", "--method", "normalmap", "--heights", "bricks"}, 1024, 560,
-           "The normal map baked from the heights is {normal_err_deg[normalmap]} deg from the displaced surface's "
-           "normal on average (Blinn's per pixel: {normal_err_deg[blinn]})."},
-          {"bump_methods", "Buss VI.2 (seeds 001, 002, 004)",
-           "Every method side by side on bricks under two lights: B1 Blinn (seed 004), B2 seed 002's shortcut, B3 a normal map "
-           "(GLSL), B4 emboss and B5 DOT3 (fixed function), and R, the heights displacing a 1024x512 grid.",
-           {"--view", "all", "--heights", "bricks"}, 1280, 720,
-           "Mean normal error against the displaced surface: B1 Blinn {normal_err_deg[blinn]} deg, B3 normal map "
-           "{normal_err_deg[normalmap]}, B2 seed 002 {normal_err_deg[seed002]}, no bumps {normal_err_deg[flat]}."},
-          {"bump_emboss_overhead", "Buss VI.2 (seed 001, emboss)",
-           "Emboss (seed 001), three fixed-function passes, with light 1 at the eye: where the light falls along the normal "
-           "(the middle of the ring) the shift toward it is 0 and the bricks vanish; R keeps them. The middle picture is emboss's "
-           "term alone, magnified, the region where the light is nearly along the normal outlined: the bricks are gone inside "
-           "it. The contrast is measured per band of the light-normal angle.",
-           {"--view", "compare", "--method", "emboss", "--heights", "bricks", "--light1-az", "0", "--light1-el", "0"}, 1024, 560,
-           "With light 1 at the eye, emboss contrast is {emboss_contrast[0-10deg]} where the light is within 10 deg "
-           "of the normal, {emboss_contrast[60-90deg]} at 60-90 deg."}};
+  return {
+      {"bump_two_lights",
+       "Buss VI.2 (seed 002, Fig. 1)",
+       "Seed 002's figure: a torus under Phong shading and two "
+       "lights, bump mapped per pixel (Blinn's perturbed normal, "
+       "seed 004), beside the same heights displacing a 1024x512 "
+       "grid (R). Captions: the shading and normal error against R.",
+       {"--view", "compare", "--method", "blinn", "--heights", "bricks"},
+       1024,
+       560,
+       "Blinn's perturbed normal is {normal_err_deg[blinn]} deg from the displaced surface's and tilts "
+       "{tilt_deg[blinn]} deg from the smooth torus's (the surface: {tilt_deg[reference]})."},
+      {"bump_seed002",
+       "Buss VI.2 (seed 002)",
+       "Seed 002's shortcut taken literally: the 8-bit height differences added to the eye-space normal's x and y. "
+       "Its tilt along x runs against the true surface's on the near side of the ring and with it on the far side, and "
+       "does not grow with the height scale: measured. The middle "
+       "picture shows, in the near and the far third of the ring, "
+       "each pixel where B2 tilts the normal along x as R does (green) or against it (magenta).",
+       {"--view", "compare", "--method", "seed002"},
+       1024,
+       560,
+       "Seed 002's shortcut tilts the normal along x against the surface on the near side "
+       "({tilt_agreement_x_near[seed002]}; +1 agrees), and no more with twice the heights (ratio "
+       "{tilt_ratio_height_x2[seed002]})."},
+      {"bump_normals",
+       "Buss VI.2 (normal map)",
+       "Normals as colours (0.5 + 0.5 n, eye space): the normal map baked from the same heights (B3) beside R's.",
+       {"--view", "normals", "--method", "normalmap", "--heights", "bricks"},
+       1024,
+       560,
+       "The normal map baked from the heights is {normal_err_deg[normalmap]} deg from the displaced surface's "
+       "normal on average (Blinn's per pixel: {normal_err_deg[blinn]})."},
+      {"bump_methods",
+       "Buss VI.2 (seeds 001, 002, 004)",
+       "Every method side by side on bricks under two lights: B1 "
+       "Blinn (seed 004), B2 seed 002's shortcut, B3 a normal map "
+       "(GLSL), B4 emboss and B5 DOT3 (fixed function), and R, the heights displacing a 1024x512 grid.",
+       {"--view", "all", "--heights", "bricks"},
+       1280,
+       720,
+       "Mean normal error against the displaced surface: B1 Blinn {normal_err_deg[blinn]} deg, B3 normal map "
+       "{normal_err_deg[normalmap]}, B2 seed 002 {normal_err_deg[seed002]}, no bumps {normal_err_deg[flat]}."},
+      {"bump_emboss_overhead",
+       "Buss VI.2 (seed 001, emboss)",
+       "Emboss (seed 001), three fixed-function passes, with light "
+       "1 at the eye: where the light falls along the normal "
+       "(the middle of the ring) the shift toward it is 0 and the "
+       "bricks vanish; R keeps them. The middle picture is emboss's "
+       "term alone, magnified, the region where the light is nearly "
+       "along the normal outlined: the bricks are gone inside "
+       "it. The contrast is measured per band of the light-normal angle.",
+       {"--view", "compare", "--method", "emboss", "--heights", "bricks", "--light1-az", "0", "--light1-el", "0"},
+       1024,
+       560,
+       "With light 1 at the eye, emboss contrast is {emboss_contrast[0-10deg]} where the light is within 10 deg "
+       "of the normal, {emboss_contrast[60-90deg]} at 60-90 deg."}};
 }
 }  // namespace
 

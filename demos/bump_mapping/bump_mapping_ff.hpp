@@ -40,7 +40,7 @@ constexpr float kEmbossShift = 2.0f;  // texels toward the light, at |tangent pa
 struct FixedInputs {
   ts::TorusShape torus;
   glm::vec2 rep{1.0f}, texSize{256.0f};
-  glm::vec3 light[2];       // eye space, unit
+  glm::vec3 light[2];                 // eye space, unit
   float intensity[2] = {0.0f, 0.0f};  // the lights' (the shader's l0.w, l1.w)
   ts::TextureDesc heights, inverted, normalMap;
   bool embossTermOnly = false;  // B4: passes 1 and 2 only (0.5 + 0.5 (H - H'))
@@ -48,9 +48,9 @@ struct FixedInputs {
 
 struct FixedVertex {
   glm::vec3 pos;
-  glm::vec2 st;     // the heights' coordinates (s rep.x, t rep.y)
+  glm::vec2 st;  // the heights' coordinates (s rep.x, t rep.y)
   glm::vec2 shifted;
-  glm::vec4 colour;  // per pass
+  glm::vec4 colour;   // per pass
   glm::vec3 n, t, b;  // the tangent frame: normal, tangents along θ and φ
 };
 
@@ -106,12 +106,12 @@ inline ts::Image renderFixedFunction(ts::Renderer& r, const ts::Frame& f, int me
       }
       bind(in.heights);
       glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-      drawWith(false, true);                                  // 0.5 H
+      drawWith(false, true);  // 0.5 H
       glDepthFunc(GL_LEQUAL);
       glEnable(GL_BLEND);
       glBlendFunc(GL_ONE, GL_ONE);
       bind(in.inverted);
-      drawWith(true, true);                                   // + 0.5 (1 - H')
+      drawWith(true, true);  // + 0.5 (1 - H')
       glDisable(GL_TEXTURE_2D);
       if (!in.embossTermOnly) {
         for (FixedVertex& v : vs) {
@@ -119,13 +119,13 @@ inline ts::Image renderFixedFunction(ts::Renderer& r, const ts::Frame& f, int me
           for (int k = 0; k < 2; ++k) d += in.intensity[k] * std::max(0.0f, glm::dot(v.n, L[k]));
           v.colour = glm::vec4(kAlbedo * d, 1.0f);
         }
-        glBlendFunc(GL_DST_COLOR, GL_SRC_COLOR);              // * 2 diffuse
+        glBlendFunc(GL_DST_COLOR, GL_SRC_COLOR);  // * 2 diffuse
         drawWith(false, false);
       }
     } else {
       for (FixedVertex& v : vs) v.colour = glm::vec4(kAlbedo * kAmbient, 1.0f);
       glDisable(GL_TEXTURE_2D);
-      drawWith(false, false);                                 // ambient
+      drawWith(false, false);  // ambient
       glDepthFunc(GL_LEQUAL);
       glEnable(GL_BLEND);
       glBlendFunc(GL_ONE, GL_ONE);
@@ -152,7 +152,7 @@ inline ts::Image renderFixedFunction(ts::Renderer& r, const ts::Frame& f, int me
           glm::vec3 lt(glm::dot(v.t, L[k]), glm::dot(v.b, L[k]), glm::dot(v.n, L[k]));
           v.colour = glm::vec4(0.5f + 0.5f * in.intensity[k] * lt, 1.0f);
         }
-        drawWith(false, true);                                // + albedo I n.L
+        drawWith(false, true);  // + albedo I n.L
       }
       glActiveTexture(GL_TEXTURE1);
       glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);

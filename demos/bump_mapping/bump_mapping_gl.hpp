@@ -203,7 +203,9 @@ void main() {
 )";
 
 inline ts::Program meshProgram() { return {kSourceFile, glsl(kCommonGLSL + kMeshVS), glsl(kCommonGLSL + kFS)}; }
-inline ts::Program referenceProgram() { return {kSourceFile, glsl(kCommonGLSL + kReferenceVS), glsl(kCommonGLSL + kFS)}; }
+inline ts::Program referenceProgram() {
+  return {kSourceFile, glsl(kCommonGLSL + kReferenceVS), glsl(kCommonGLSL + kFS)};
+}
 
 // The reference R: a (nu + 1) x (nv + 1) grid of (s, t), drawn from client
 // arrays with glDrawElements into a framebuffer of its own and read back.

@@ -46,7 +46,7 @@ inline Heights procedural(int n = 256) {
       double u = (x + 0.5) / n * 4.0, v = (y + 0.5) / n * 4.0;
       double du = u - std::floor(u) - 0.5, dv = v - std::floor(v) - 0.5;  // from the nearest dimple centre
       double dimple = std::exp(-(du * du + dv * dv) / (2 * 0.17 * 0.17));
-      double dr = std::fabs(v - std::floor(v));                            // from the ridge line v = k / 4
+      double dr = std::fabs(v - std::floor(v));  // from the ridge line v = k / 4
       dr = std::min(dr, 1.0 - dr);
       double ridge = std::exp(-dr * dr / (2 * 0.06 * 0.06));
       H.v[size_t(y) * size_t(n) + size_t(x)] = float(std::clamp(0.55 - 0.55 * dimple + 0.45 * ridge, 0.0, 1.0));
@@ -128,7 +128,8 @@ inline void withMipmaps(ts::TextureDesc& t, bool mip) {
   t.minFilter = GL_LINEAR_MIPMAP_LINEAR;
   t.params.push_back({"mipmaps", "2x2 average"});
 }
-inline ts::TextureDesc heightTexture(const Heights& H, const std::string& key, bool inverted = false, bool mip = false) {
+inline ts::TextureDesc heightTexture(const Heights& H, const std::string& key, bool inverted = false,
+                                     bool mip = false) {
   ts::Image img = heightImage(H);
   if (inverted)
     for (size_t k = 0; k < img.pixels.size(); ++k)
@@ -149,11 +150,15 @@ inline ts::TextureDesc normalTexture(const Heights& H, const std::string& key, d
   t.name = "bump_normal_map";
   char sc[32];
   std::snprintf(sc, sizeof sc, "%.4f", scale);
-  t.params = {{"source", key}, {"height_scale", sc}, {"baked_for", "R = 1, r = 0.4"}, {"edge_slopes", wrap ? "wrapped" : "one-sided"}};
+  t.params = {{"source", key},
+              {"height_scale", sc},
+              {"baked_for", "R = 1, r = 0.4"},
+              {"edge_slopes", wrap ? "wrapped" : "one-sided"}};
   t.image = std::make_shared<const ts::Image>(normalMap(H, 1.0, 0.4, scale, wrap));
   if (dxt1) {
     t.params.push_back({"compressed", "DXT1"});
-    t.image = std::make_shared<const ts::Image>(ts::dxt1::decode(ts::dxt1::encode(*t.image), t.image->width, t.image->height));
+    t.image = std::make_shared<const ts::Image>(
+        ts::dxt1::decode(ts::dxt1::encode(*t.image), t.image->width, t.image->height));
   }
   t.minFilter = t.magFilter = GL_LINEAR;
   withMipmaps(t, mip);
@@ -250,7 +255,8 @@ inline double meanTiltDeg(const ts::Image& normals, const ts::Image& smooth) {
   long n = 0;
   for (int y = 0; y < normals.height; ++y)
     for (int x = 0; x < normals.width; ++x)
-      if (covered(normals, x, y) && covered(smooth, x, y)) sum += angleDeg(normalAt(normals, x, y), normalAt(smooth, x, y)), ++n;
+      if (covered(normals, x, y) && covered(smooth, x, y))
+        sum += angleDeg(normalAt(normals, x, y), normalAt(smooth, x, y)), ++n;
   return n ? sum / double(n) : 0.0;
 }
 
@@ -279,8 +285,8 @@ inline glm::dvec2 perturbationAgreement(const ts::Image& normals, const ts::Imag
 // `surface`, the rest `background`.  (with - against) / (with + against)
 // over a band's rows is that band's agreement.
 inline ts::Image agreementPicture(const ts::Image& normals, const ts::Image& ref, const ts::Image& smooth,
-                                  const std::vector<glm::ivec2>& bands, ts::Rgba with, ts::Rgba against, ts::Rgba surface,
-                                  ts::Rgba background) {
+                                  const std::vector<glm::ivec2>& bands, ts::Rgba with, ts::Rgba against,
+                                  ts::Rgba surface, ts::Rgba background) {
   ts::Image out(normals.width, normals.height, background);
   for (int y = 0; y < normals.height; ++y)
     for (int x = 0; x < normals.width; ++x) {

@@ -22,9 +22,9 @@ struct RenderSpec {
   bool embossTermOnly = false;  // B4's 0.5 + 0.5 (H - H') alone
   bool noSpecular = false;      // the shader's diffuse sum only (to compare with DOT3)
   float heightFactor = 1.0f, objectFactor = 1.0f;
-  float distanceFactor = 1.0f;  // the eye this many times as far
-  bool mipmaps = false;         // mipmapped heights (B1) or normal map (B3), trilinear
-  bool dxt1 = false;            // B3's normal map compressed to DXT1 (seed 001: "bad for normal maps")
+  float distanceFactor = 1.0f;           // the eye this many times as far
+  bool mipmaps = false;                  // mipmapped heights (B1) or normal map (B3), trilinear
+  bool dxt1 = false;                     // B3's normal map compressed to DXT1 (seed 001: "bad for normal maps")
   ts::gl::CallList* recordTo = nullptr;  // a picture shown: its GL calls recorded here (ts::recordRender)
   // Normals shown in a figure: drawn on the figure's background.  The
   // measurements' normal renders stay on black, which is how covered() tells
@@ -49,8 +49,8 @@ inline const ts::Rgba kEmbossEdge{60, 210, 255, 255};
 struct Found {
   std::map<int, Compare> cmp;  // method -> against R (normalDeg: at the same (s,t); screenNormalDeg: same pixel)
   std::map<int, std::shared_ptr<const ts::Image>> pictures;  // R and the fixed-function methods, shaded
-  std::shared_ptr<const ts::Image> refNormals;  // R's normals as shown (on the figure's background)
-  std::map<int, ts::gl::CallList> picturesGL;  // the calls that rendered each picture (the GL listing)
+  std::shared_ptr<const ts::Image> refNormals;               // R's normals as shown (on the figure's background)
+  std::map<int, ts::gl::CallList> picturesGL;                // the calls that rendered each picture (the GL listing)
   ts::gl::CallList refNormalsGL;
   double embossContrast[4] = {-1, -1, -1, -1};  // per band of kEmbossBands
   // Seed 002's x tilt against R's per pixel (agreementPicture) and the rows of
@@ -95,9 +95,11 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
       c.screenNormalDeg = c.normalDeg;
       c.normalDeg = compare(shaded, normals[m], shaded, exact).normalDeg;
       if (!ideal)
-        out.push_back({"normal_err_deg" + k, c.normalDeg,
-                       "mean angle between the method's normal and the displaced surface's at the same (s,t), degrees"});
-      out.push_back({"screen_normal_err_deg" + k, c.screenNormalDeg, "mean angle between the normal and R's in the same pixel, degrees"});
+        out.push_back(
+            {"normal_err_deg" + k, c.normalDeg,
+             "mean angle between the method's normal and the displaced surface's at the same (s,t), degrees"});
+      out.push_back({"screen_normal_err_deg" + k, c.screenNormalDeg,
+                     "mean angle between the normal and R's in the same pixel, degrees"});
     } else {
       found.pictures[m] = std::make_shared<const ts::Image>(shaded);
     }
@@ -116,26 +118,31 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
     out.push_back({"normal_err_deg[normalmap_dxt1]", compare(shaded, render(s), shaded, exact).normalDeg,
                    "the same for B3 with its normal map compressed to DXT1 (4 bits a texel), degrees"});
   }
-    // Seed 002 adds to the eye's x and y, not along the surface: on the near
+  // Seed 002 adds to the eye's x and y, not along the surface: on the near
   // side of the ring s runs along +x, on the far side along -x.
   const glm::ivec2 rows = coveredRows(smooth);
   const int third = (rows.y - rows.x) / 3;
   found.nearRows = {rows.y - third, rows.y}, found.farRows = {rows.x, rows.x + third};
-  found.seedTiltX = std::make_shared<const ts::Image>(agreementPicture(
-      normals[kSeed002], exact, smooth, {found.nearRows, found.farRows}, kTiltWith, kTiltAgainst, kTiltUncounted,
-      found.refNormals->at(0, 0)));  // the figure's background, as R's normals are shown on it
+  found.seedTiltX = std::make_shared<const ts::Image>(
+      agreementPicture(normals[kSeed002], exact, smooth, {found.nearRows, found.farRows}, kTiltWith, kTiltAgainst,
+                       kTiltUncounted,
+                       found.refNormals->at(0, 0)));  // the figure's background, as R's normals are shown on it
   for (int m = kBlinn; m <= kNormalMap; ++m)
     for (int side = 0; side < 2; ++side) {
       glm::ivec2 band = side == 0 ? found.nearRows : found.farRows;
       glm::dvec2 a = perturbationAgreement(normals[m], exact, smooth, band);
       const std::string where = side == 0 ? "near" : "far";
-      out.push_back({"tilt_agreement_x_" + where + "[" + kMethods[m].key + "]", a.x,
-                     "+1: tilts the normal along eye x as the true surface does, -1: the opposite way (" + where + " side)"});
-      out.push_back({"tilt_agreement_y_" + where + "[" + kMethods[m].key + "]", a.y, "the same along eye y (" + where + " side)"});
+      out.push_back(
+          {"tilt_agreement_x_" + where + "[" + kMethods[m].key + "]", a.x,
+           "+1: tilts the normal along eye x as the true surface does, -1: the opposite way (" + where + " side)"});
+      out.push_back({"tilt_agreement_y_" + where + "[" + kMethods[m].key + "]", a.y,
+                     "the same along eye y (" + where + " side)"});
     }
-  out.push_back({"tilt_deg[reference]", meanTiltDeg(exact, smooth), "mean angle of the displaced surface's normal from the smooth torus's"});
+  out.push_back({"tilt_deg[reference]", meanTiltDeg(exact, smooth),
+                 "mean angle of the displaced surface's normal from the smooth torus's"});
   for (int m = kBlinn; m <= kNormalMap; ++m)
-    out.push_back({std::string("tilt_deg[") + kMethods[m].key + "]", meanTiltDeg(normals[m], smooth), "mean angle from the smooth normal"});
+    out.push_back({std::string("tilt_deg[") + kMethods[m].key + "]", meanTiltDeg(normals[m], smooth),
+                   "mean angle from the smooth normal"});
   // Twice the height scale: B1 and R tilt about twice as far (small angles);
   // seed 002's formula has no scale in it.
   for (int m : {kBlinn, kSeed002, kReference}) {
@@ -186,13 +193,17 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
     // light within kEmbossBands[1] degrees of the normal) two pixels wide.
     ts::Image shown(term.width, term.height, found.refNormals->at(0, 0));
     auto band = [&](int x, int y) {
-      return x < 0 || y < 0 || x >= term.width || y >= term.height ? -1 : int(found.embossBand[size_t(y) * size_t(term.width) + size_t(x)]);
+      return x < 0 || y < 0 || x >= term.width || y >= term.height
+                 ? -1
+                 : int(found.embossBand[size_t(y) * size_t(term.width) + size_t(x)]);
     };
     for (int y = 0; y < term.height; ++y)
       for (int x = 0; x < term.width; ++x) {
         if (band(x, y) < 0) continue;
         const ts::Rgba t = term.at(x, y);
-        auto magnified = [](uint8_t v) { return uint8_t(std::lround(std::clamp(127.5 + kEmbossGain * (v - 127.5), 0.0, 255.0))); };
+        auto magnified = [](uint8_t v) {
+          return uint8_t(std::lround(std::clamp(127.5 + kEmbossGain * (v - 127.5), 0.0, 255.0)));
+        };
         shown.set(x, y, {magnified(t.r), magnified(t.g), magnified(t.b), 255});
         bool edge = false;
         for (int dy = -1; dy <= 1 && !edge; ++dy)
@@ -201,8 +212,10 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
       }
     found.embossTerm = std::make_shared<const ts::Image>(std::move(shown));
     for (int b = 0; b < 4; ++b)
-      out.push_back({"emboss_contrast[" + std::to_string(int(kEmbossBands[b])) + "-" + std::to_string(int(kEmbossBands[b + 1])) + "deg]",
-                     found.embossContrast[b], "mean |H - H'| where the light is this far from the normal (-1: no pixels)"});
+      out.push_back({"emboss_contrast[" + std::to_string(int(kEmbossBands[b])) + "-" +
+                         std::to_string(int(kEmbossBands[b + 1])) + "deg]",
+                     found.embossContrast[b],
+                     "mean |H - H'| where the light is this far from the normal (-1: no pixels)"});
   }
   // The outline: the bump methods keep the smooth torus's, R does not.
   out.push_back({"outline_deviation_px[blinn]", outlineDeviationPx(normals[kBlinn], smooth),
@@ -214,7 +227,8 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
     RenderSpec s{kNormalMap};
     s.noSpecular = true;
     Compare c = compare(render(s), smooth, *found.pictures[kDot3], smooth);
-    out.push_back({"dot3_vs_shader_mad", c.mad, "GL_DOT3_RGB's picture against the GLSL diffuse sum of the same normal map, 8-bit units"});
+    out.push_back({"dot3_vs_shader_mad", c.mad,
+                   "GL_DOT3_RGB's picture against the GLSL diffuse sum of the same normal map, 8-bit units"});
   }
   // Minification: the torus further away, its texels smaller than pixels.
   // Mipmapped heights (B1: slopes from the averaged heights) and a
@@ -229,8 +243,10 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
       near.method = m, near.distanceFactor = 1.0f;
       s.method = m;
       double t1 = meanTiltDeg(render(near), smooth), t2 = meanTiltDeg(render(s), far);
-      out.push_back({std::string("mip_tilt_ratio[") + kMethods[m].key + "@" + std::to_string(int(dist)) + "x]", t1 > 0 ? t2 / t1 : 0,
-                     std::string("mean tilt at this distance / at the nearest, mipmapped ") + (m == kBlinn ? "heights" : "normal map")});
+      out.push_back({std::string("mip_tilt_ratio[") + kMethods[m].key + "@" + std::to_string(int(dist)) + "x]",
+                     t1 > 0 ? t2 / t1 : 0,
+                     std::string("mean tilt at this distance / at the nearest, mipmapped ") +
+                         (m == kBlinn ? "heights" : "normal map")});
       s.method = kFlat;
     }
     ts::measureProgress(0.85 + 0.03 * dist / 2);
@@ -238,7 +254,8 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   // The seam of the normal map where the texture repeats (s wraps at the
   // front of the ring): one-sided differences at the edge make a crease.
   const glm::dvec2 seamBad = seamJumpDeg(unwrapped), seamFixed = seamJumpDeg(wrapped);
-  out.push_back({"seam_jump_deg[unwrapped]", seamBad.x, "mean normal-map angle across the texture's edge, slopes baked one-sided there, degrees"});
+  out.push_back({"seam_jump_deg[unwrapped]", seamBad.x,
+                 "mean normal-map angle across the texture's edge, slopes baked one-sided there, degrees"});
   out.push_back({"seam_jump_deg[wrapped]", seamFixed.x, "the same baked with differences that wrap (the fix)"});
   out.push_back({"neighbour_jump_deg", seamFixed.y, "mean angle between any other two neighbouring columns, degrees"});
   out.detail = found;

@@ -12,11 +12,11 @@ namespace bump {
 enum Method : int { kFlat, kBlinn, kSeed002, kNormalMap, kReference, kEmboss, kDot3, kMethodCount };
 
 struct MethodInfo {
-  Method method;        // its place in the table (checked below)
-  const char* key;      // --method's value; the measurements' [key]
-  const char* title;    // the caption above its picture
-  int shaderId;         // the fragment shader's `method` (the torus uniform's w): which normal it computes
-  bool fixedFunction;   // B4, B5: no shader, drawn by bump_mapping_ff.hpp and shown as a picture
+  Method method;       // its place in the table (checked below)
+  const char* key;     // --method's value; the measurements' [key]
+  const char* title;   // the caption above its picture
+  int shaderId;        // the fragment shader's `method` (the torus uniform's w): which normal it computes
+  bool fixedFunction;  // B4, B5: no shader, drawn by bump_mapping_ff.hpp and shown as a picture
 };
 
 // Shader ids: 0 is the smooth torus's own normal (the shader's last

@@ -88,8 +88,10 @@ class CylinderSeam final : public ts::Scene {
   void addOptions(ts::Options& o) override {
     o.addEnum("coords", &coords_, {kCoordNames[0], kCoordNames[1]},
               "s per vertex: wrong = theta/360 reduced to [0,1); right = winding tracked (0.9 -> 1.1), GL_REPEAT", 'c');
-    o.addEnum("seam", &seam_, {"front", "back", "mine"},
-              "where the texture edges meet: front (Eq. VI.1) | back (Exercise VI.1) | mine (exercises/vi1_back_seam.cpp)", 'b');
+    o.addEnum(
+        "seam", &seam_, {"front", "back", "mine"},
+        "where the texture edges meet: front (Eq. VI.1) | back (Exercise VI.1) | mine (exercises/vi1_back_seam.cpp)",
+        'b');
     // 3 patches at least (a triangle prism); beyond 36 the seam patch is a sliver.
     o.addInt("slices", &slices_, 3, 36, "patches around the cylinder (the book's patch: 5, 72 degrees wide)", '+', '-');
     o.addFloat("turn", &turn_, -180.0f, 180.0f, "turn the cylinder (degrees; 180 shows the back)", ']', '[', 30.0f);
@@ -100,17 +102,23 @@ class CylinderSeam final : public ts::Scene {
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
-        {"vi3_cylinder", "Figure VI.3",
+        {"vi3_cylinder",
+         "Figure VI.3",
          "A texture map (left) wrapped around the side of a cylinder by Eq. VI.1 (right): its left and right edges "
          "meet on the front line x = 0, z = r, where column J meets column A.",
-         {"--coords", "right", "--slices", "24", "--patch=off"}, 1024, 512,
+         {"--coords", "right", "--slices", "24", "--patch=off"},
+         1024,
+         512,
          "Wrapped by Eq. VI.1 with the winding tracked, {reversed_patches[right]} patches show the texture "
          "backwards; the seam patch shows {seam_patch_span_s[right]} of s, one slice of 24."},
-        {"vi4_seam_patch", "Figure VI.4",
+        {"vi4_seam_patch",
+         "Figure VI.4",
          "The patch x, y, z, w across the seam (theta = -36 deg at x, w; +36 deg at y, z). Left: the intended region "
          "0.9..1.1 (green, wrapping) and the region 0.1..0.9 that s = 0.9 and 0.1 select (red). Middle: s reduced "
          "to [0,1) shows 0.8 of the texture backwards. Right: s = 0.9 -> 1.1 with GL_REPEAT.",
-         {"--view", "compare", "--slices", "5", "--seam", "front"}, 1280, 456,
+         {"--view", "compare", "--slices", "5", "--seam", "front"},
+         1280,
+         456,
          "s = 0.9 and 0.1 make the seam patch show {seam_patch_span_s[wrong]} of the texture backwards; s = 0.9 -> "
          "1.1 with GL_REPEAT shows the {seam_patch_span_s[right]} intended."},
     };
@@ -200,9 +208,10 @@ void CylinderSeam::addCylinder(ts::Frame& f, const ts::Rect& vp, Coords c, int t
       glm::vec2 q = ts::panelToPixels(p, mvp * glm::vec4(glm::vec3(corner[i]), 1.0f));
       float dx = (i == 0 || i == 3 ? -1.0f : 1.0f) * 6.0f * float(scale);
       float dy = i < 2 ? 2.0f * float(scale) : -ts::text::height(scale) - 2.0f * float(scale);
-      ts::layout::placeFree(
-          f, {q.x + dx, q.y + dy, names[i], kPatch, scale, i == 0 || i == 3 ? ts::Align::Right : ts::Align::Left},
-          ts::layout::box(vp));
+      ts::layout::placeFree(f,
+                            {q.x + dx, q.y + dy, names[i], kPatch, scale,
+                             i == 0 || i == 3 ? ts::Align::Right : ts::Align::Left},
+                            ts::layout::box(vp));
     }
   }
   f.panels.push_back(p);
@@ -238,7 +247,8 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
   const int keyScale = L::flow(all, spec)[0].scale;
   float keyW = 0;
   for (const ts::LegendEntry& e : key)
-    keyW += ts::text::height(keyScale) + 4.0f * float(keyScale) + ts::text::width(e.meaning, keyScale) + 8.0f * float(keyScale);
+    keyW += ts::text::height(keyScale) + 4.0f * float(keyScale) + ts::text::width(e.meaning, keyScale) +
+            8.0f * float(keyScale);
   const float keyH = key.empty() ? 0.0f : L::lineHeight(keyScale) * std::ceil(keyW / all.w());
   std::vector<L::Cell> cells = L::flow({all.x0, all.y0, all.x1, all.y1 - keyH}, spec);
   if (!key.empty()) {  // right under the captions (the flow centres the cells in its area)
@@ -258,13 +268,15 @@ ts::Frame CylinderSeam::build(int width, int height, const ts::Measurements& mea
   for (size_t c = 0; c < shown.size(); ++c) {
     const L::Cell& cell = cells[c + 1];
     if (seam_ == kMine && !(d && d->mine.ok())) {  // not done yet, or it failed: say so, draw nothing
-      L::caption(f, L::box(cell.picture), d ? d->mine.failure : "asking the exercise checker for your s ...", kFailed, cell.scale);
+      L::caption(f, L::box(cell.picture), d ? d->mine.failure : "asking the exercise checker for your s ...", kFailed,
+                 cell.scale);
       continue;
     }
     addCylinder(f, cell.picture, shown[c], tex, cell.scale, d);
     L::caption(f, cell.above,
-               seam_ == kMine ? ts::student::summary(measured)
-               : shown[c] == Coords::Wrong ? "s reduced to [0,1): wrong" : "s winding tracked: right",
+               seam_ == kMine              ? ts::student::summary(measured)
+               : shown[c] == Coords::Wrong ? "s reduced to [0,1): wrong"
+                                           : "s winding tracked: right",
                kWhite, cell.scale);
     if (d && d->spans.count(int(shown[c]))) {
       double span = d->spans.at(int(shown[c]));
@@ -299,12 +311,16 @@ ts::Measurements CylinderSeam::measure(ts::Renderer& r) {
     double err = 0;
     for (const auto& pr : res) reversed += pr.span < 0, err = std::max(err, pr.texelErr);
     d.spans[int(c)] = res[size_t(k)].span;
-    out.push_back({"seam_patch_span_s" + n, std::abs(res[size_t(k)].span), "how much of the texture (in s) the seam patch shows"});
-    out.push_back({"seam_patch_direction" + n, res[size_t(k)].span < 0 ? -1.0 : 1.0, "sign of ds/dx across it: -1 = backwards"});
-    out.push_back({"front_patch_span_s" + n, std::abs(res[0].span), "the same for the patch facing +z (theta -180/n..180/n)"});
+    out.push_back({"seam_patch_span_s" + n, std::abs(res[size_t(k)].span),
+                   "how much of the texture (in s) the seam patch shows"});
+    out.push_back(
+        {"seam_patch_direction" + n, res[size_t(k)].span < 0 ? -1.0 : 1.0, "sign of ds/dx across it: -1 = backwards"});
+    out.push_back(
+        {"front_patch_span_s" + n, std::abs(res[0].span), "the same for the patch facing +z (theta -180/n..180/n)"});
     out.push_back({"front_patch_direction" + n, res[0].span < 0 ? -1.0 : 1.0, "sign of ds/dx across the front patch"});
     out.push_back({"reversed_patches" + n, double(reversed), "patches showing the texture backwards"});
-    out.push_back({"texel_error_max" + n, err, "largest distance (texels of 2048) between the texel shown and the assigned s"});
+    out.push_back(
+        {"texel_error_max" + n, err, "largest distance (texels of 2048) between the texel shown and the assigned s"});
   }
   out.detail = d;
   return out;

@@ -65,7 +65,7 @@ inline double sOf(const Params& p, int i) {
   }
   const long n2 = 2L * p.slices;
   if (p.coords == Coords::Wrong) return double(mod(halfSteps(p, i), n2)) / double(n2);  // reduced per vertex
-  return double(mod(halfSteps(p, 0), n2) + 2L * i) / double(n2);                       // winding tracked
+  return double(mod(halfSteps(p, 0), n2) + 2L * i) / double(n2);                        // winding tracked
 }
 // t of row j: (y + h/2)/h with y = -h/2 + h j / stacks.
 inline double tOf(const Params& p, int j) { return double(j) / p.stacks; }

@@ -45,17 +45,20 @@ inline void markSeamPatch(ts::Frame& f, ts::Panel& p, const cylinder::Params& ri
       shade.vertices.push_back({{c, 0}, {0, 0, 0, 1}, {kIntended.r, kIntended.g, kIntended.b, 0.45f}});
     }
     p.batches.push_back(shade);
-    p.batches.push_back(ts::lineLoop({{float(lo), 0.003f}, {float(hi), 0.003f}, {float(hi), 0.997f}, {float(lo), 0.997f}},
-                                     kIntended, 3.0f, "intended_outline"));
+    p.batches.push_back(
+        ts::lineLoop({{float(lo), 0.003f}, {float(hi), 0.003f}, {float(hi), 0.997f}, {float(lo), 0.997f}}, kIntended,
+                     3.0f, "intended_outline"));
   }
   // Actual: from column k's s to column k+1's s, walked left to right on
   // screen; an arrow at mid-height shows the way.
   double sa = cylinder::sOf(shown, k), sb = cylinder::sOf(shown, k + 1);
   if (shown.coords == cylinder::Coords::Wrong) {
     float lo = float(std::min(sa, sb)), hi = float(std::max(sa, sb));
-    p.batches.push_back(ts::lineLoop({{lo, 0.01f}, {hi, 0.01f}, {hi, 0.99f}, {lo, 0.99f}}, kActual, 3.0f, "actual_region"));
+    p.batches.push_back(
+        ts::lineLoop({{lo, 0.01f}, {hi, 0.01f}, {hi, 0.99f}, {lo, 0.99f}}, kActual, 3.0f, "actual_region"));
     std::vector<glm::vec2> hatch;  // the book's cross-hatching
-    for (float u = lo + 0.05f; u < hi; u += 0.1f) hatch.insert(hatch.end(), {{u, 0.01f}, {std::min(u + 0.05f, hi), 0.99f}});
+    for (float u = lo + 0.05f; u < hi; u += 0.1f)
+      hatch.insert(hatch.end(), {{u, 0.01f}, {std::min(u + 0.05f, hi), 0.99f}});
     p.batches.push_back(ts::lineSegments(hatch, {kActual.r, kActual.g, kActual.b, 1.0f}, 1.0f, "actual_hatch"));
   }
   // The arrow: s from x (left edge) to y (right edge), as GL_REPEAT reads
@@ -80,8 +83,9 @@ inline void markSeamPatch(ts::Frame& f, ts::Panel& p, const cylinder::Params& ri
   } names[] = {{"x", from, 0}, {"y", tip, 0}, {"z", tip, 1}, {"w", from, 1}};
   for (auto& v : names) {
     glm::vec2 q = at(v.s, v.t);
-    ts::layout::placeFree(f, {q.x, v.t > 0.5 ? q.y - line - 4.0f * float(scale) : q.y + 4.0f * float(scale), v.n, kPatch,
-                              scale, ts::Align::Center},
+    ts::layout::placeFree(f,
+                          {q.x, v.t > 0.5 ? q.y - line - 4.0f * float(scale) : q.y + 4.0f * float(scale), v.n, kPatch,
+                           scale, ts::Align::Center},
                           {0, 0, float(f.width), float(f.height)});
   }
 }

@@ -70,7 +70,8 @@ class EnvironmentMapping final : public ts::Scene {
            "cube faces named) stored as a lat-long map, a cube map (GL_REFLECTION_MAP texgen), a sphere map\n"
            "(GL_SPHERE_MAP texgen) and a dual paraboloid (GLSL), at equal memory, r per vertex or per pixel.\n"
            "Measured against the exact reflection per pixel: direction error in degrees and where it concentrates;\n"
-           "texels per steradian; a sphere map reused as the eye turns; seed 001's cube example; seed 002's sphere and\n"
+           "texels per steradian; a sphere map reused as the eye "
+           "turns; seed 001's cube example; seed 002's sphere and\n"
            "cube formulas off the view axis; a ball near the flat mirror that no environment map can show.";
   }
   int defaultWidth() const override { return 1080; }
@@ -80,50 +81,70 @@ class EnvironmentMapping final : public ts::Scene {
     std::vector<std::string> params(envmap::kParamKeys, envmap::kParamKeys + 4);
     o.addEnum("param", &param_, params, "how the world is stored: latlong | cube | sphere | paraboloid", 'p');
     o.addEnum("object", &object_, {"sphere", "torus", "mirror"}, "the mirror object", 'o');
-    o.addEnum("eval", &eval_, {"pixel", "vertex"}, "r per pixel (GLSL) or per vertex (texgen / vertex shader), interpolated", 'e');
+    o.addEnum("eval", &eval_, {"pixel", "vertex"},
+              "r per pixel (GLSL) or per vertex (texgen / vertex shader), interpolated", 'e');
     o.addEnum("view", &view_, {"object", "map", "compare"},
-              "object: picture | reference | error; map: the unwrapped map, the texels the object reads lit; compare: the four maps", 'v');
+              "object: picture | reference | error; map: the unwrapped map, "
+              "the texels the object reads lit; compare: the four maps",
+              'v');
     o.addFloat("turn", &turn_, -180.0f, 180.0f, "turn the object about the vertical, degrees", ']', '[', 15.0f);
     o.addFloat("tilt", &tilt_, -90.0f, 90.0f, "tilt the object about the horizontal, degrees", '.', ',', 15.0f);
     o.addEnum("sphere-eye", &sphereEye_, {"this", "first"},
               "the sphere map is made for this eye, or for the first one (yaw 0, pitch 0) and reused", 's');
-    o.addInt("face", &face_, 16, 256, "memory: texels along a cube face's side (6 face^2 texels; the others as many)", '+', '-', 16);
+    o.addInt("face", &face_, 16, 256, "memory: texels along a cube face's side (6 face^2 texels; the others as many)",
+             '+', '-', 16);
     o.addInt("render", &render_, 64, 1024, "side of the rendered pictures in pixels");
     orbit_.addOptions(o);
   }
   std::vector<ts::FigureSpec> figures() const override {
-    return {{"env_cube_sphere", "Buss VI.3 (seeds 001, 002)",
+    return {{"env_cube_sphere",
+             "Buss VI.3 (seeds 001, 002)",
              "A mirror sphere reflecting the world stored as a cube map, r per vertex by GL_REFLECTION_MAP texgen: "
-             "the picture, the exact reflection per pixel, and the direction error in degrees (black 0, red at half the scale, white at 4 or more).",
-             {"--eval", "vertex"}, 1080, 440,
+             "the picture, the exact reflection per pixel, and the direction error "
+             "in degrees (black 0, red at half the scale, white at 4 or more).",
+             {"--eval", "vertex"},
+             1080,
+             440,
              "r per vertex, interpolated, through the cube map: {error_mean_deg[shown]} deg mean and "
              "{error_max_deg[shown]} deg largest direction error (r per pixel: {error_mean_deg[cube/sphere/pixel]})."},
-            {"env_compare_torus", "Buss VI.3 (seed 001)",
+            {"env_compare_torus",
+             "Buss VI.3 (seed 001)",
              "A torus in the four parameterizations at equal memory (24,576 texels), r per vertex: lat-long tears at "
              "its seam, the sphere map smears toward its rim; the reference is the exact reflection per pixel.",
-             {"--view", "compare", "--object", "torus", "--eval", "vertex", "--tilt", "30"}, 1280, 360,
+             {"--view", "compare", "--object", "torus", "--eval", "vertex", "--tilt", "30"},
+             1280,
+             360,
              "Mean direction error, r per vertex: lat-long {error_mean_deg[latlong/torus/vertex]} deg "
              "({error_region_deg[latlong/torus/vertex@seam]} at its seam), sphere map "
              "{error_mean_deg[sphere/torus/vertex]}, cube {error_mean_deg[cube/torus/vertex]}, paraboloid "
              "{error_mean_deg[paraboloid/torus/vertex]}."},
-            {"env_latlong_map", "Buss VI.3 (seed 001)",
+            {"env_latlong_map",
+             "Buss VI.3 (seed 001)",
              "The lat-long map unwrapped, the texels the flat mirror reads lit: a region at the +Y pole, spread along "
              "whole rows and cut in two by the seam at the map's left and right edges.",
-             {"--view", "map", "--param", "latlong", "--object", "mirror"}, 1080, 440,
+             {"--view", "map", "--param", "latlong", "--object", "mirror"},
+             1080,
+             440,
              "The mirror reads lat-long texels {texel_aspect[latlong@pole]} times longer than wide at the pole "
              "({texel_aspect[latlong@body]} elsewhere); the map's texel solid angles differ "
              "{texel_solid_angle_ratio[latlong]}x."},
-            {"env_cube_map", "Buss VI.3 (seed 001)",
+            {"env_cube_map",
+             "Buss VI.3 (seed 001)",
              "The cube map's six faces as GL stores them (s right, t down), the texels the flat mirror reads lit: one "
              "small patch of +Y, magnified across the whole mirror, texels visible.",
-             {"--view", "map", "--param", "cube", "--object", "mirror"}, 1080, 440,
+             {"--view", "map", "--param", "cube", "--object", "mirror"},
+             1080,
+             440,
              "Cube-map texels stay near square ({texel_aspect[cube@face]} on a face) and differ in solid angle at "
              "most {texel_solid_angle_ratio[cube]}x (lat-long: {texel_solid_angle_ratio[latlong]}x)."},
-            {"env_flat_mirror", "Buss VI.3 (seed 001)",
+            {"env_flat_mirror",
+             "Buss VI.3 (seed 001)",
              "A flat mirror leaning back 35 degrees, lat-long with r per vertex: the seam runs across it, and a ball "
              "near the mirror (red in the reference) is in no environment map; one made at the mirror's centre would "
              "show it many times too large.",
-             {"--object", "mirror", "--param", "latlong", "--eval", "vertex"}, 1080, 440,
+             {"--object", "mirror", "--param", "latlong", "--eval", "vertex"},
+             1080,
+             440,
              "Lat-long, r per vertex, across the seam: {error_mean_deg[shown]} deg mean, {error_max_deg[shown]} deg "
              "largest error; a map made at the centre shows the near ball at {mirror_ball_pixels_centre_map[shown]} "
              "pixels of the picture, not {mirror_ball_pixels[shown]}."}};
@@ -147,7 +168,8 @@ class EnvironmentMapping final : public ts::Scene {
   // The mirror's is the exact world; the others read a fine cube map (environment_mapping_views.hpp).
   ts::layout::Text refCaption() const {
     if (object_ == envmap::kMirror) return "reference: exact r per pixel";
-    return "reference: exact r, cube map " + ts::layout::given("reference cube map: texels along a face's side", envmap::kReferenceFace, "%.0f");
+    return "reference: exact r, cube map " +
+           ts::layout::given("reference cube map: texels along a face's side", envmap::kReferenceFace, "%.0f");
   }
   // The measurement table's key of `param` for the shown object and evaluation ("latlong/torus/vertex").
   std::string tableKey(int param) const {
@@ -155,7 +177,9 @@ class EnvironmentMapping final : public ts::Scene {
   }
   std::string stateName(int param) const {
     return std::string(envmap::kParamLabels[param]) + ", r per " + kEval[eval_] +
-           (eval_ == 1 && param == envmap::kCube ? " (GL_REFLECTION_MAP)" : eval_ == 1 && param == envmap::kSphere ? " (GL_SPHERE_MAP)" : "");
+           (eval_ == 1 && param == envmap::kCube     ? " (GL_REFLECTION_MAP)"
+            : eval_ == 1 && param == envmap::kSphere ? " (GL_SPHERE_MAP)"
+                                                     : "");
   }
   int param_ = envmap::kCube, object_ = envmap::kSphereObject, eval_ = 0, view_ = kObjectView, sphereEye_ = 0;
   int face_ = 64, render_ = 320;
@@ -184,7 +208,9 @@ std::vector<ts::LegendEntry> heatKey(double scaleDeg) {
 // A key in a cell's band: at the largest scale (at most `scale`) at which its widest entry fits; an entry
 // too wide even at scale 1 (a narrow window's cell) is left out rather than run into the next cell.
 void cellKey(ts::Frame& f, ts::layout::Box band, const std::vector<ts::LegendEntry>& entries, int scale) {
-  auto entryWidth = [](const ts::LegendEntry& e, int s) { return ts::text::height(s) + 4.0f * float(s) + ts::text::width(e.meaning, s); };
+  auto entryWidth = [](const ts::LegendEntry& e, int s) {
+    return ts::text::height(s) + 4.0f * float(s) + ts::text::width(e.meaning, s);
+  };
   float widest = 0;
   for (const ts::LegendEntry& e : entries) widest = std::max(widest, entryWidth(e, 1));
   int s = std::max(1, scale);
@@ -219,8 +245,8 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   // A cell's title takes the upper line of its band; a key of the picture's colours, when it has one, the lower.
   // The note below is set as phrases: a line breaks between them, never inside one.
   auto show = [&](const L::Cell& c, const std::string& id, const ts::TextureDesc* t, const L::Text& above,
-                  const std::vector<L::Text>& below,
-                  const std::vector<ts::LegendEntry>& key = {}, bool keyLine = false) {
+                  const std::vector<L::Text>& below, const std::vector<ts::LegendEntry>& key = {},
+                  bool keyLine = false) {
     if (t && t->image) f.panels.push_back(L::picturePanel(f, id, c.picture, *t));  // a nested frame's picture upright
     // keyLine: the lower line holds a key drawn across cells (the caller's).
     const L::Box title = key.empty() && !keyLine ? c.above : L::halves(c.above).first;
@@ -234,7 +260,8 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     std::vector<L::Cell> cells = L::flow(area, spec);
     for (int k = 0; k < 4; ++k)
       show(cells[size_t(k)], envmap::kParamKeys[k], found ? &found->pictures[size_t(k)] : nullptr,
-           std::string(envmap::kParamLabels[k]) + (eval_ == 1 && (k == envmap::kCube || k == envmap::kSphere) ? " (texgen)" : ""),
+           std::string(envmap::kParamLabels[k]) +
+               (eval_ == 1 && (k == envmap::kCube || k == envmap::kSphere) ? " (texgen)" : ""),
            found ? std::vector<L::Text>{L::measuredText(measured, "mean {error_mean_deg[" + tableKey(k) + "]|%.2f},"),
                                         L::measuredText(measured, "max {error_max_deg[" + tableKey(k) + "]|%.1f} deg")}
                  : std::vector<L::Text>{});
@@ -261,15 +288,17 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     spec.aspect = 1.0f;  // the picture: in the rows the map's cell takes, its title beside the map's
     L::Cell p = L::flow({mid + 6, m.above.y0, area.x1, m.below.y1}, spec)[0];
     m.scale = p.scale = std::min(m.scale, p.scale);
-    const L::Text texels = found ? L::measured(measured, "texels", "%.0f")
-                                 : L::given("texels of the map", envmap::mapTexels(envmap::Param(param_), face_), "%.0f");
+    const L::Text texels = found
+                               ? L::measured(measured, "texels", "%.0f")
+                               : L::given("texels of the map", envmap::mapTexels(envmap::Param(param_), face_), "%.0f");
     if (found) f.panels.push_back(L::picturePanel(f, "map", m.picture, found->map));
     L::caption(f, L::halves(m.above).first,
                std::string(envmap::kParamLabels[param_]) + ", " + texels + " texels" +
                    (param_ == envmap::kCube ? ", faces as GL stores them (t down)" : ""),
                kWhite, m.scale);
     L::caption(f, L::halves(m.above).second,
-               std::string("lit: the texels the ") + envmap::kObjectKeys[object_] + " reads; the rest dimmed", kWhite, m.scale);
+               std::string("lit: the texels the ") + envmap::kObjectKeys[object_] + " reads; the rest dimmed", kWhite,
+               m.scale);
     if (found) {
       envmap::lightTheReadTexels(f.panels.back(), found->lit);
       // The texels the object reads: how much longer than wide, per region of the map it reads them in.
@@ -285,22 +314,23 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
         shape.back() = shape.back() + ";";
         shape.insert(shape.begin(), "texels read, longer / shorter side:");
       }
-      shape.push_back("texel solid angles differ " + L::measured(measured, "texel_solid_angle_ratio[" + key + "]", "%.1f") +
-                      "x across the map" +
+      shape.push_back("texel solid angles differ " +
+                      L::measured(measured, "texel_solid_angle_ratio[" + key + "]", "%.1f") + "x across the map" +
                       (param_ != envmap::kLatLong && has(measured, "texel_solid_angle_ratio[latlong]")
                            ? " (lat-long " + L::measured(measured, "texel_solid_angle_ratio[latlong]", "%.1f") + "x)"
                            : L::Text()));
       L::phrases(f, m.below, shape, kAmber, m.scale);
     }
-    show(p, "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(measured, found->current) : std::vector<L::Text>{});
+    show(p, "picture", found ? &found->picture : nullptr, stateName(param_),
+         found ? statsLine(measured, found->current) : std::vector<L::Text>{});
     return f;
   }
   // Two lines above each picture: its title, and the key of the colours the reference and the error carry.
   L::FlowSpec spec;
   spec.n = 3, spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 8;
   std::vector<L::Cell> cells = L::flow(area, spec);
-  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), found ? statsLine(measured, found->current) : std::vector<L::Text>{},
-       {}, true);
+  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_),
+       found ? statsLine(measured, found->current) : std::vector<L::Text>{}, {}, true);
   // The near ball's pixels are those painted red on this very picture (measure(): [shown]).
   std::vector<L::Text> refNote;
   if (found && object_ == envmap::kMirror)
@@ -312,13 +342,16 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   std::vector<ts::LegendEntry> key = worldKey();
   if (object_ == envmap::kMirror) key.push_back({kNearBall, "the near ball"});
   show(cells[1], "reference", found ? &found->reference : nullptr, refCaption(), refNote, {}, true);
-  cellKey(f, {cells[0].above.x0, L::halves(cells[0].above).second.y0, cells[1].above.x1, cells[0].above.y1}, key, cells[0].scale);
+  cellKey(f, {cells[0].above.x0, L::halves(cells[0].above).second.y0, cells[1].above.x1, cells[0].above.y1}, key,
+          cells[0].scale);
   // Where the error is worst, and the other evaluation's mean beside it (the figures' claims compare them).
   auto errorNote = [&]() -> std::vector<L::Text> {
-    const std::string other = std::string(envmap::kParamKeys[param_]) + "/" + envmap::kObjectKeys[object_] + "/" + kEval[1 - eval_];
+    const std::string other = std::string(envmap::kParamKeys[param_]) + "/" + envmap::kObjectKeys[object_] + "/" +
+                              kEval[1 - eval_];
     if (!has(measured, "error_mean_deg[" + other + "]")) return {"worst in: " + found->current.maxRegion};
     return {"worst in: " + found->current.maxRegion + ";",
-            std::string("r per ") + kEval[1 - eval_] + ": " + L::measured(measured, "error_mean_deg[" + other + "]", "%.2f") + " deg mean"};
+            std::string("r per ") + kEval[1 - eval_] + ": " +
+                L::measured(measured, "error_mean_deg[" + other + "]", "%.2f") + " deg mean"};
   };
   const ts::TextureDesc errorTex = found ? image(found->error, "error") : ts::TextureDesc{};
   const double scale = found ? found->errorScale : envmap::errorScale(eval_ == 1, 0);
@@ -343,17 +376,20 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
         const std::string key = std::string(envmap::kParamKeys[p]) + "/" + envmap::kObjectKeys[o] + "/" + kEval[e];
         out.push_back({"error_mean_deg[" + key + "]", s.mean, "mean direction error against the exact r, degrees"});
         out.push_back({"error_p95_deg[" + key + "]", s.p95, "95th percentile of the direction error, degrees"});
-        out.push_back({"error_max_deg[" + key + "]", s.max, "largest direction error, degrees, in region " + s.maxRegion});
+        out.push_back(
+            {"error_max_deg[" + key + "]", s.max, "largest direction error, degrees, in region " + s.maxRegion});
         for (const auto& [region, mean] : s.regionMean)
-          out.push_back({"error_region_deg[" + key + "@" + region + "]", mean,
-                         fmt("mean error in this region of the map, degrees (%.0f pixels)", s.regionPixels.at(region))});
+          out.push_back(
+              {"error_region_deg[" + key + "@" + region + "]", mean,
+               fmt("mean error in this region of the map, degrees (%.0f pixels)", s.regionPixels.at(region))});
         if (o == object_ && e == eval_) found.compare[size_t(p)] = s;
       }
     for (int p = 0; p < envmap::kParams; ++p) {
       const envmap::Pass ps = pass(p, o, false, true, kMeasureSize);
       for (const auto& [region, t] : envmap::texelShape(p, face_, ref, ps.sphereView, ps.eyeRotation())) {
         const std::string k = std::string(envmap::kParamKeys[p]) + "@" + region;
-        out.push_back({"texel_extent_deg[" + k + "]", t.extentDeg, "mean size of the texel read here, degrees along its longer side"});
+        out.push_back({"texel_extent_deg[" + k + "]", t.extentDeg,
+                       "mean size of the texel read here, degrees along its longer side"});
         out.push_back({"texel_aspect[" + k + "]", t.aspect, "mean longer / shorter side of the texel read here"});
       }
     }
@@ -369,10 +405,15 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
   const envmap::Pixels looked = g.draw(shown);
   std::vector<float> perPixel;
   found.current = envmap::errorStats(param_, looked, ref, shown.eyeRotation(), &perPixel);
-  out.insert(out.begin(), {"error_p95_deg[shown]", found.current.p95, "the picture shown: 95th percentile of the direction error, degrees"});
-  out.insert(out.begin(), {"error_max_deg[shown]", found.current.max, "the picture shown: largest direction error, degrees"});
-  out.insert(out.begin(), {"error_mean_deg[shown]", found.current.mean, "the picture shown: mean direction error, degrees"});
-  auto picture = [&](int p) { return envmap::nestedTexture(r, envmap::passFrame(pass(p, object_, eval_ == 1, false, n)), stateName(p)); };
+  out.insert(out.begin(), {"error_p95_deg[shown]", found.current.p95,
+                           "the picture shown: 95th percentile of the direction error, degrees"});
+  out.insert(out.begin(),
+             {"error_max_deg[shown]", found.current.max, "the picture shown: largest direction error, degrees"});
+  out.insert(out.begin(),
+             {"error_mean_deg[shown]", found.current.mean, "the picture shown: mean direction error, degrees"});
+  auto picture = [&](int p) {
+    return envmap::nestedTexture(r, envmap::passFrame(pass(p, object_, eval_ == 1, false, n)), stateName(p));
+  };
   found.picture = picture(param_);
   found.errorScale = envmap::errorScale(eval_ == 1, found.current.p95);
   found.error = envmap::errorImage(perPixel, n, n, found.errorScale);
@@ -386,7 +427,8 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
     ts::Image painted = envmap::referenceImage(ref);
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x)
-        if (found.mirror.trueMask[size_t(y) * size_t(n) + size_t(x)]) painted.set(x, n - 1 - y, envmap::toRgba(glm::dvec3(kNearBall)));
+        if (found.mirror.trueMask[size_t(y) * size_t(n) + size_t(x)])
+          painted.set(x, n - 1 - y, envmap::toRgba(glm::dvec3(kNearBall)));
     found.reference = image(painted, "reference", refGL);
     // The picture's own counts (render_ x render_ pixels), which its caption prints: the table's
     // mirror_ball_pixels* come from addStudies' pass at the measuring size.
@@ -394,7 +436,8 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
                    "pixels of the shown reference picture painted red: the near ball in a true mirror"});
     out.push_back({"mirror_ball_pixels_centre_map[shown]", double(found.mirror.mapPixels),
                    "pixels of the shown picture where a map made at the mirror's centre, ball included, shows it"});
-    out.push_back({"mirror_ball_pixels_both[shown]", double(found.mirror.both), "pixels of the shown picture where both show it"});
+    out.push_back({"mirror_ball_pixels_both[shown]", double(found.mirror.both),
+                   "pixels of the shown picture where both show it"});
   } else {
     found.reference = envmap::nestedTexture(r, envmap::referenceFrame(pass(-1, object_, false, false, n)), "reference");
   }

@@ -45,24 +45,31 @@ enum Object { kSphereObject, kTorus, kMirror, kObjects };
 inline const char* const kObjectKeys[] = {"sphere", "torus", "mirror"};
 constexpr int kSeedSphere = 4, kSeedCube = 5;
 // The map a pass reads: the seeds' variants read the sphere and the cube map.
-inline int mapOf(int param) { return param == kSeedSphere ? envmap::kSphere : param == kSeedCube ? envmap::kCube : param; }
+inline int mapOf(int param) {
+  return param == kSeedSphere ? envmap::kSphere : param == kSeedCube ? envmap::kCube : param;
+}
 constexpr double kMirrorTiltDeg = 35.0;  // the mirror leans back: it reflects the upper world
 
 // Meshes coarse enough that per-vertex interpolation shows.
 inline ts::Mesh objectMesh(int object) {
   auto noTex = [](int, int) { return glm::dvec2(0.0); };
   if (object == kSphereObject)
-    return ts::parametricGrid(24, 12, true, false, [](int i, int j) { return ts::spherePoint(1.0, 24, 12, i, j); }, noTex);
+    return ts::parametricGrid(
+        24, 12, true, false, [](int i, int j) { return ts::spherePoint(1.0, 24, 12, i, j); }, noTex);
   if (object == kTorus)
-    return ts::parametricGrid(32, 16, true, true, [](int i, int j) { return ts::torusPoint(1.0, 0.4, 32, 16, i, j); }, noTex);
+    return ts::parametricGrid(
+        32, 16, true, true, [](int i, int j) { return ts::torusPoint(1.0, 0.4, 32, 16, i, j); }, noTex);
   const double a = envmap::rad(kMirrorTiltDeg);
-  return ts::parametricGrid(8, 8, false, false, [a](int i, int j) {
-    const double x = -1.2 + 0.3 * i, y = -1.2 + 0.3 * j;
-    ts::SurfacePoint p;
-    p.pos = {x, y * std::cos(a), -y * std::sin(a)};
-    p.normal = {0, std::sin(a), std::cos(a)};
-    return p;
-  }, noTex);
+  return ts::parametricGrid(
+      8, 8, false, false,
+      [a](int i, int j) {
+        const double x = -1.2 + 0.3 * i, y = -1.2 + 0.3 * j;
+        ts::SurfacePoint p;
+        p.pos = {x, y * std::cos(a), -y * std::sin(a)};
+        p.normal = {0, std::sin(a), std::cos(a)};
+        return p;
+      },
+      noTex);
 }
 
 struct Pass {
@@ -70,11 +77,11 @@ struct Pass {
                    // kSeedCube: seed 002's R = 2 N_z N - I on the cube map (per pixel)
   int object = kSphereObject;
   bool perVertex = false;
-  bool directions = true;         // texels hold directions (measure) | the world's colours (picture)
+  bool directions = true;                  // texels hold directions (measure) | the world's colours (picture)
   glm::mat4 projection{1.0f}, view{1.0f};  // view: world -> eye (the object at the world's origin)
   glm::mat4 model{1.0f};                   // the object turned in the world
-  glm::dmat3 sphereView{1.0};     // the rotation of the eye the sphere map was made for (world -> its eye);
-                                  // it is read in this pass's eye space, as GL_SPHERE_MAP texgen does
+  glm::dmat3 sphereView{1.0};              // the rotation of the eye the sphere map was made for (world -> its eye);
+                                           // it is read in this pass's eye space, as GL_SPHERE_MAP texgen does
   glm::dmat3 eyeRotation() const { return glm::dmat3(glm::mat3(view)); }
   int faceTexels = 64;
   int w = 256, h = 256;
@@ -107,10 +114,18 @@ uniform mat3 sphereEye;  // world -> this eye (the sphere map is read in eye spa
 #define NORMAL gl_Normal
 #endif
 vec3 reflectWorld(vec3 p, vec3 n) { return toWorld * reflect(normalize(p), normalize(n)); }
-vec2 latlong(vec3 d) { d = normalize(d); return vec2(atan(-d.x, -d.z) / (2.0 * PI) + 0.5, asin(clamp(d.y, -1.0, 1.0)) / PI + 0.5); }
-vec2 sphereST(vec3 r) { float m = 2.0 * sqrt(r.x * r.x + r.y * r.y + (r.z + 1.0) * (r.z + 1.0)); return r.xy / m + 0.5; }
+vec2 latlong(vec3 d) {
+  d = normalize(d);
+  return vec2(atan(-d.x, -d.z) / (2.0 * PI) + 0.5, asin(clamp(d.y, -1.0, 1.0)) / PI + 0.5);
+}
+vec2 sphereST(vec3 r) {
+  float m = 2.0 * sqrt(r.x * r.x + r.y * r.y + (r.z + 1.0) * (r.z + 1.0));
+  return r.xy / m + 0.5;
+}
 vec2 disc(vec3 d, float side) { d = normalize(d); return d.xy / (2.0 * (1.0 + side * d.z)) + 0.5; }
-vec2 paraboloid(vec2 front, vec2 back, float z) { return z >= 0.0 ? vec2(front.x / 2.0, front.y) : vec2((back.x + 1.0) / 2.0, back.y); }
+vec2 paraboloid(vec2 front, vec2 back, float z) {
+  return z >= 0.0 ? vec2(front.x / 2.0, front.y) : vec2((back.x + 1.0) / 2.0, back.y);
+}
 )";
 }
 inline std::string header(int param, bool perVertex, bool frame) {
@@ -118,8 +133,7 @@ inline std::string header(int param, bool perVertex, bool frame) {
          "\n#define FRAME " + (frame ? "1" : "0");
 }
 inline std::string vertexShader(int param, bool perVertex, bool frame = false) {
-  return header(param, perVertex, frame) +
-         mapFunctions() + R"(
+  return header(param, perVertex, frame) + mapFunctions() + R"(
 out vec3 posEye, nEye;
 out vec4 coord;    // per vertex: the map coordinates (paraboloid: front xy, back zw)
 out float side;    // per vertex: r_z, which paraboloid half
@@ -143,8 +157,7 @@ void main() {
 )";
 }
 inline std::string fragmentShader(int param, bool perVertex, bool frame = false) {
-  return header(param, perVertex, frame) +
-         mapFunctions() + R"(
+  return header(param, perVertex, frame) + mapFunctions() + R"(
 #if FRAME && (PARAM == 1 || PARAM == 5)
 uniform samplerCube tex;  // a Frame's program reads unit 0 as "tex"
 #define mapCube tex
@@ -241,7 +254,8 @@ class EnvGL : public ts::Renderer::Attachment {
         if (p.param == envmap::kCube) glLoadMatrixf(glm::value_ptr(glm::mat4(toWorld)));  // eye-space r -> the world's
       } else {
         const std::string key = "envmap_p" + std::to_string(p.param) + (p.perVertex ? "_v" : "_f");
-        GLuint prog = r_.program(key, {kFile, vertexShader(p.param, p.perVertex), fragmentShader(p.param, p.perVertex)});
+        GLuint prog = r_.program(key,
+                                 {kFile, vertexShader(p.param, p.perVertex), fragmentShader(p.param, p.perVertex)});
         glUseProgram(prog);
         glUniformMatrix3fv(glGetUniformLocation(prog, "toWorld"), 1, GL_FALSE, glm::value_ptr(toWorld));
         // The lookup is in this eye's space, as GL_SPHERE_MAP's is: a map made
@@ -298,7 +312,8 @@ class EnvGL : public ts::Renderer::Attachment {
           float* q = &texels[(size_t(j) * size_t(n) + size_t(i)) * 4];
           q[0] = float(i), q[1] = float(j), q[2] = float(f), q[3] = 1;
         }
-      glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA32F, n, n, 0, GL_RGBA, GL_FLOAT, texels.data());
+      glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA32F, n, n, 0, GL_RGBA, GL_FLOAT,
+                   texels.data());
     }
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -341,7 +356,8 @@ class EnvGL : public ts::Renderer::Attachment {
   static std::string mapKey(Pass p) {
     p.param = mapOf(p.param);  // the seeds' coordinates read the same maps
     if (p.param < 0) return "";
-    std::string key = std::string(envmap::kParamKeys[p.param]) + (p.directions ? "_dir_" : "_colour_") + std::to_string(p.faceTexels);
+    std::string key = std::string(envmap::kParamKeys[p.param]) + (p.directions ? "_dir_" : "_colour_") +
+                      std::to_string(p.faceTexels);
     if (p.param == envmap::kSphere)
       for (int c = 0; c < 3; ++c)
         for (int k = 0; k < 3; ++k) key += "_" + std::to_string(p.sphereView[c][k]);

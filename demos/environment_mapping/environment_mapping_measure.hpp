@@ -57,8 +57,8 @@ struct ErrorStats {
 };
 // Pixels covered in both read-backs; `perPixel` (optional) gets each pixel's
 // error, -1 off the object.
-inline ErrorStats errorStats(int param, const envmap::Pixels& lookup, const envmap::Pixels& ref, const glm::dmat3& sphereEye,
-                             std::vector<float>* perPixel = nullptr) {
+inline ErrorStats errorStats(int param, const envmap::Pixels& lookup, const envmap::Pixels& ref,
+                             const glm::dmat3& sphereEye, std::vector<float>* perPixel = nullptr) {
   ErrorStats s;
   std::vector<double> all;
   if (perPixel) perPixel->assign(size_t(ref.w) * size_t(ref.h), -1.0f);
@@ -161,13 +161,14 @@ struct LitTexels {
   std::vector<char> hit;  // w x h, row 0 at the top
 };
 inline LitTexels litTexels(int param, int faceTexels, const glm::dmat3& sphereView, const envmap::Pixels& looked) {
-  const envmap::Size sz = envmap::mapSize(Param(param), faceTexels), all = envmap::unwrappedSize(Param(param), faceTexels);
+  const envmap::Size sz = envmap::mapSize(Param(param), faceTexels),
+                     all = envmap::unwrappedSize(Param(param), faceTexels);
   const int W = all.w, H = all.h;
   std::vector<char> hit(size_t(W) * size_t(H), 0);
   // Where texel (face, i, j) of the map lands in the unwrapped picture.
   auto place = [&](int face, int i, int j) {
     if (param == envmap::kCube) return glm::ivec2((face % 3) * sz.w + i, (face / 3) * sz.h + j);  // t down
-    return glm::ivec2(i, sz.h - 1 - j);                                                          // t up
+    return glm::ivec2(i, sz.h - 1 - j);                                                           // t up
   };
   for (int y = 0; y < looked.h; ++y)
     for (int x = 0; x < looked.w; ++x) {
@@ -187,7 +188,8 @@ inline LitTexels litTexels(int param, int faceTexels, const glm::dmat3& sphereVi
         if (hit[size_t(y) * size_t(W) + size_t(x)])
           for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx)
-              if (x + dx >= 0 && y + dy >= 0 && x + dx < W && y + dy < H) grown[size_t(y + dy) * size_t(W) + size_t(x + dx)] = 1;
+              if (x + dx >= 0 && y + dy >= 0 && x + dx < W && y + dy < H)
+                grown[size_t(y + dy) * size_t(W) + size_t(x + dx)] = 1;
     hit.swap(grown);
   }
   return {W, H, hit};

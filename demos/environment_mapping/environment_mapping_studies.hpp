@@ -148,7 +148,8 @@ struct Mirror {
   double meanDeg = 0, maxDeg = 0;
   std::vector<char> trueMask;  // per read-back pixel (GL order): the ball in the true mirror
 };
-inline Mirror mirrorNear(const envmap::Pixels& ref, const glm::mat4& projection, const glm::mat4& view, const glm::mat4& model) {
+inline Mirror mirrorNear(const envmap::Pixels& ref, const glm::mat4& projection, const glm::mat4& view,
+                         const glm::mat4& model) {
   Mirror m;
   m.trueMask.assign(size_t(ref.w) * size_t(ref.h), 0);
   const glm::dmat4 toWorld = glm::inverse(glm::dmat4(view)), invP = glm::inverse(glm::dmat4(projection));
@@ -181,10 +182,14 @@ inline void addStudies(envmap::EnvGL& g, int face, ts::Measurements& out) {
     envmap::Pass ps;
     ps.object = envmap::kMirror, ps.view = viewMatrix(0, 0), ps.projection = projectionMatrix(1);
     const Mirror m = mirrorNear(g.draw(ps), ps.projection, ps.view, ps.model);
-    out.push_back({"mirror_ball_pixels", double(m.truePixels), "mirror pixels that show the near ball in a true mirror (the default view, 256 x 256)"});
-    out.push_back({"mirror_ball_pixels_centre_map", double(m.mapPixels), "pixels a map made at the mirror's centre, ball included, shows it at"});
-    out.push_back({"mirror_ball_pixels_both", double(m.both), "pixels where the true mirror and that map both show it"});
-    out.push_back({"mirror_ball_error_mean_deg", m.meanDeg, "mean angle between r and the direction from the centre to the ball point shown"});
+    out.push_back({"mirror_ball_pixels", double(m.truePixels),
+                   "mirror pixels that show the near ball in a true mirror (the default view, 256 x 256)"});
+    out.push_back({"mirror_ball_pixels_centre_map", double(m.mapPixels),
+                   "pixels a map made at the mirror's centre, ball included, shows it at"});
+    out.push_back(
+        {"mirror_ball_pixels_both", double(m.both), "pixels where the true mirror and that map both show it"});
+    out.push_back({"mirror_ball_error_mean_deg", m.meanDeg,
+                   "mean angle between r and the direction from the centre to the ball point shown"});
     out.push_back({"mirror_ball_error_max_deg", m.maxDeg, "largest such angle, degrees"});
   }
   // Seed 001's cube example: the spec's table, the seed's mirrored faces, the GL.
@@ -195,15 +200,18 @@ inline void addStudies(envmap::EnvGL& g, int face, ts::Measurements& out) {
   out.push_back({"seed_cube_seed_s", c.seed.s, "s as seed 001 computes it (sc = +r_x: the face mirrored)"});
   out.push_back({"seed_cube_seed_t", c.seed.t, "t as seed 001 computes it (tc = +r_y)"});
   out.push_back({"seed_cube_readback_face", double(c.readBack.z), "the face the GL's lookup read"});
-  out.push_back({"seed_cube_readback_s", (c.readBack.x + 0.5) / c.n, "the GL's texel centre s (1000 x 1000 faces, GL_NEAREST)"});
+  out.push_back(
+      {"seed_cube_readback_s", (c.readBack.x + 0.5) / c.n, "the GL's texel centre s (1000 x 1000 faces, GL_NEAREST)"});
   out.push_back({"seed_cube_readback_t", (c.readBack.y + 0.5) / c.n, "the GL's texel centre t"});
   // Texels per steradian at equal memory.
   for (int p = 0; p < envmap::kParams; ++p) {
     const envmap::Uniformity u = envmap::uniformity(envmap::Param(p), face);
     const std::string k = envmap::kParamKeys[p];
-    out.push_back({"texel_solid_angle_ratio[" + k + "]", u.analyticRatio(), "largest / smallest texel solid angle, analytic"});
+    out.push_back(
+        {"texel_solid_angle_ratio[" + k + "]", u.analyticRatio(), "largest / smallest texel solid angle, analytic"});
     out.push_back({"texel_solid_angle_ratio_numeric[" + k + "]", u.numericRatio(), "the same by numeric integration"});
-    out.push_back({"texel_solid_angle_reldiff[" + k + "]", u.largestRelDiff, "largest |numeric - analytic| / analytic of a texel"});
+    out.push_back({"texel_solid_angle_reldiff[" + k + "]", u.largestRelDiff,
+                   "largest |numeric - analytic| / analytic of a texel"});
   }
   ts::measureProgress(0.8);
   const std::vector<double> vd = viewDependence(g, face);
@@ -214,20 +222,23 @@ inline void addStudies(envmap::EnvGL& g, int face, ts::Measurements& out) {
                  sc = seedVsGl(g, face, envmap::kCube, envmap::kSeedCube);
   for (size_t b = 0; b + 1 < kAxisBins.size(); ++b) {
     const std::string k = ts::layout::fmt("%g", kAxisBins[b]) + "-" + ts::layout::fmt("%g", kAxisBins[b + 1]);
-    out.push_back({"seed_sphere_vs_gl_deg[" + k + "]", ss.meanDeg[b], "seed 002's (N_x/2 + 1/2) against GL_SPHERE_MAP: mean angle, pixels this far off the view axis"});
+    out.push_back({"seed_sphere_vs_gl_deg[" + k + "]", ss.meanDeg[b],
+                   "seed 002's (N_x/2 + 1/2) against GL_SPHERE_MAP: mean angle, pixels this far off the view axis"});
     out.push_back({"seed_sphere_vs_gl_max_deg[" + k + "]", ss.maxDeg[b], "the same, largest"});
-    out.push_back({"seed_cube_r_vs_gl_deg[" + k + "]", sc.meanDeg[b], "seed 002's R = 2 N_z N - I against r = 2 (N.I) N - I on the cube map: mean angle"});
+    out.push_back({"seed_cube_r_vs_gl_deg[" + k + "]", sc.meanDeg[b],
+                   "seed 002's R = 2 N_z N - I against r = 2 (N.I) N - I on the cube map: mean angle"});
   }
 }
 
 // What the demo's measure() found: the numbers for the captions and the pictures.
 struct Found {
-  ErrorStats current;                    // the shown state
-  std::array<ErrorStats, 4> compare;     // each parameterization, this object and evaluation
-  // The pictures of the object: nested frames (environment_mapping_views.hpp), their GL calls recorded (renderedBy); the
+  ErrorStats current;                 // the shown state
+  std::array<ErrorStats, 4> compare;  // each parameterization, this object and evaluation
+  // The pictures of the object: nested frames (environment_mapping_views.hpp),
+  // their GL calls recorded (renderedBy); the
   // flat mirror's reference is an image (the near ball is painted on it), as are the error and the map.
-  ts::TextureDesc picture, reference;                // object view, map view
-  std::array<ts::TextureDesc, 4> pictures;           // compare view
+  ts::TextureDesc picture, reference;       // object view, map view
+  std::array<ts::TextureDesc, 4> pictures;  // compare view
   ts::Image error;
   ts::TextureDesc map;  // the map unwrapped (a generator), and the texels the object reads
   LitTexels lit;

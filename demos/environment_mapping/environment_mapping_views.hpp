@@ -66,7 +66,8 @@ inline ts::Frame passFrame(const Pass& p) {
     if (p.param == kCube) b.textureMatrix = glm::mat4(toWorld);  // eye-space r -> the world's
   } else {
     b.program = "envmap_frame_p" + std::to_string(p.param) + (p.perVertex ? "_v" : "_f");
-    f.programs.push_back({b.program, {kFile, vertexShader(p.param, p.perVertex, true), fragmentShader(p.param, p.perVertex, true)}});
+    f.programs.push_back(
+        {b.program, {kFile, vertexShader(p.param, p.perVertex, true), fragmentShader(p.param, p.perVertex, true)}});
     const glm::mat3 sphereEye(p.view);  // read in this eye's space, as GL_SPHERE_MAP does
     for (int c = 0; c < 3; ++c) {
       b.uniforms.push_back({"toWorld" + std::to_string(c), glm::vec4(toWorld[c], 0.0f)});
@@ -128,7 +129,10 @@ inline void lightTheReadTexels(ts::Panel& panel, const LitTexels& lit) {
   b.vertices.clear();
   for (int y = 0; y < lit.h; ++y)
     for (int x0 = 0; x0 < lit.w;) {
-      if (!lit.hit[size_t(y) * size_t(lit.w) + size_t(x0)]) { ++x0; continue; }
+      if (!lit.hit[size_t(y) * size_t(lit.w) + size_t(x0)]) {
+        ++x0;
+        continue;
+      }
       int x1 = x0;
       while (x1 < lit.w && lit.hit[size_t(y) * size_t(lit.w) + size_t(x1)]) ++x1;
       const float u0 = float(x0) / float(lit.w), u1 = float(x1) / float(lit.w);

@@ -86,8 +86,10 @@ class FilterZoo final : public ts::Scene {
   std::string id() const override { return "filter_zoo"; }
   std::string title() const override { return "Section VI.1.3 - the filter zoo against the exact footprint integral"; }
   std::string about() const override {
-    return "Minification filters side by side on the mipmap demo's slanted plane with the texture turned 0, 22.5 and 45\n"
-           "degrees (and on a zone plate, and magnified): GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, trilinear,\n"
+    return "Minification filters side by side on the mipmap demo's "
+           "slanted plane with the texture turned 0, 22.5 and 45\n"
+           "degrees (and on a zone plate, and magnified): GL_NEAREST, "
+           "GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, trilinear,\n"
            "GL's anisotropic 16x (GL renders), a ripmap, a summed-area table, the probe line and EWA (on the CPU),\n"
            "each against the exact area integral over the pixel's preimage.  Prints the RMS and texels read of every\n"
            "method, the memory each costs, the seeds' numbers corrected, and the mip kernels' and LOD bias's effect.";
@@ -98,27 +100,33 @@ class FilterZoo final : public ts::Scene {
   std::vector<std::string> claim() const override { return {"rms_exact[sat@*", "rms_exact[probes@*"}; }
 
   void addOptions(ts::Options& o) override {
-    o.addEnum("view", &view_, {kViewKeys[0], kViewKeys[1], kViewKeys[2], kViewKeys[3], kViewKeys[4], kViewKeys[5]},
-              "methods side by side | methods x azimuths | one pixel's supports | memory vs error | mip kernels | LOD bias",
-              'v');
+    o.addEnum(
+        "view", &view_, {kViewKeys[0], kViewKeys[1], kViewKeys[2], kViewKeys[3], kViewKeys[4], kViewKeys[5]},
+        "methods side by side | methods x azimuths | one pixel's supports | memory vs error | mip kernels | LOD bias",
+        'v');
     std::vector<std::string> methods;
     for (int m = 0; m < kMethodCount; ++m) methods.push_back(methodKey(m));
     o.addEnum("method", &method_, methods, "the method highlighted (and pictured in the supports view)", 'm');
     o.addFloat("azimuth", &azimuth_, 0.0f, 90.0f, "the texture's turn on the plane, degrees", 'a', 'A', 22.5f);
-    o.addEnum("scene", &scene_, {kSceneKeys[0], kSceneKeys[1], kSceneKeys[2]},
-              "the mipmap demo's slanted plane | a zone plate (2.5 texels a pixel) | magnified (256 texels over 300 pixels)", 's');
-    o.addFloat("lod-bias", &bias_, -1.0f, 1.0f, "LOD bias added to every method's level (GL_TEXTURE_LOD_BIAS for GL's)", 'b', 'B',
-               0.25f);
+    o.addEnum(
+        "scene", &scene_, {kSceneKeys[0], kSceneKeys[1], kSceneKeys[2]},
+        "the mipmap demo's slanted plane | a zone plate (2.5 texels a pixel) | magnified (256 texels over 300 pixels)",
+        's');
+    o.addFloat("lod-bias", &bias_, -1.0f, 1.0f, "LOD bias added to every method's level (GL_TEXTURE_LOD_BIAS for GL's)",
+               'b', 'B', 0.25f);
     std::vector<std::string> kernels;
     for (int k = 0; k < kKernelCount; ++k) kernels.push_back(kernelKey(k));
     o.addEnum("kernel", &kernel_, kernels, "the mip kernel highlighted in the kernels view", 'k');
     o.addBool("linear-light", &linearLight_, "the kernels view's highlight: the chain made in linear light", 'g');
-    o.addEnum("pattern", &pattern_, {"checker", "grid"}, "the slanted plane's texture: checkerboard | labelled grid (256 x 256)", 't');
-    o.addText("pick", &pick_, "the supports view's pixel X,Y in the 384 x 192 picture (0,0 top left); in the window, click a picture", [](const std::string& s) {
-      const std::array<int, 2> p = ts::parsePixel(s, "--pick");
-      if (p[0] < 0 || p[1] < 0 || p[0] >= kImageW || p[1] >= kImageH)
-        throw ts::Error("--pick " + s + ": outside the 384 x 192 picture");
-    });
+    o.addEnum("pattern", &pattern_, {"checker", "grid"},
+              "the slanted plane's texture: checkerboard | labelled grid (256 x 256)", 't');
+    o.addText("pick", &pick_,
+              "the supports view's pixel X,Y in the 384 x 192 picture (0,0 top left); in the window, click a picture",
+              [](const std::string& s) {
+                const std::array<int, 2> p = ts::parsePixel(s, "--pick");
+                if (p[0] < 0 || p[1] < 0 || p[0] >= kImageW || p[1] >= kImageH)
+                  throw ts::Error("--pick " + s + ": outside the 384 x 192 picture");
+              });
   }
 
   std::vector<ts::FigureSpec> figures() const override { return figureSpecs(); }  // filter_zoo_views.hpp
@@ -195,8 +203,10 @@ std::vector<std::pair<std::string, std::string>> FilterZoo::click(int x, int y, 
     }
     const int px = std::clamp(int((x - p.viewport.x + 0.5) * kImageW / p.viewport.w), 0, kImageW - 1);
     const int py = std::clamp(int((y - p.viewport.y + 0.5) * kImageH / p.viewport.h), 0, kImageH - 1);
-    return {{"pick", std::to_string(px) + "," + std::to_string(py)}, {"view", kViewKeys[kSupports]},
-            {"method", method}, {"azimuth", fmt("%g", az)}};
+    return {{"pick", std::to_string(px) + "," + std::to_string(py)},
+            {"view", kViewKeys[kSupports]},
+            {"method", method},
+            {"azimuth", fmt("%g", az)}};
   }
   return {};
 }
@@ -210,37 +220,48 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
   // 1. Magnification counts, read from texel-index renders.
   auto counts = [&](int pixels) { return countTexels(texelsShown(r, pixels)); };
   res.mag300 = counts(300), res.mag512 = counts(512), res.mag200 = counts(200);
-  ms.push_back({"mag_texels_twice[300]", double(res.mag300.twice), "GL_NEAREST, 256 texels over 300 pixels: texels shown twice"});
+  ms.push_back({"mag_texels_twice[300]", double(res.mag300.twice),
+                "GL_NEAREST, 256 texels over 300 pixels: texels shown twice"});
   ms.push_back({"mag_texels_once[300]", double(res.mag300.once), "... texels shown once (unequal pixel counts)"});
-  ms.push_back({"mag_texels_twice[512]", double(res.mag512.twice), "256 texels over 512 pixels: texels shown twice (all)"});
+  ms.push_back(
+      {"mag_texels_twice[512]", double(res.mag512.twice), "256 texels over 512 pixels: texels shown twice (all)"});
   ms.push_back({"min_texels_unseen[200]", double(res.mag200.unseen), "256 texels over 200 pixels: texels never shown"});
 
   // 2. Memory, 3. levels.
   ms.push_back({"mip_memory_ratio", mipMemoryRatio(kTexels, kTexels), "a 256^2 mip chain over the texture (4/3)"});
-  ms.push_back({"ripmap_memory_ratio", ripmapMemoryRatio(kTexels, kTexels), "a 256^2 ripmap over the texture, (2 - 2^-8)^2"});
+  ms.push_back(
+      {"ripmap_memory_ratio", ripmapMemoryRatio(kTexels, kTexels), "a 256^2 ripmap over the texture, (2 - 2^-8)^2"});
   ms.push_back({"ripmap_overhead", ripmapMemoryRatio(kTexels, kTexels) - 1, "what seed 001 calls 3x"});
   for (int s : {256, 512, 1024})
-    ms.push_back({"sat_bits[" + std::to_string(s) + "]", double(satBits(s, s)), "bits a SAT entry needs at " + std::to_string(s) + "^2, 8-bit texels"});
-  ms.push_back({"sat_memory_ratio", satBits(kTexels, kTexels) / 8.0, "a 256^2 SAT over the 8-bit texture (its bits a channel / 8)"});
+    ms.push_back({"sat_bits[" + std::to_string(s) + "]", double(satBits(s, s)),
+                  "bits a SAT entry needs at " + std::to_string(s) + "^2, 8-bit texels"});
+  ms.push_back({"sat_memory_ratio", satBits(kTexels, kTexels) / 8.0,
+                "a 256^2 SAT over the 8-bit texture (its bits a channel / 8)"});
   const ts::Image white(1, 1, {255, 255, 255, 255});
   for (int s : {256, 512})
     ms.push_back({"sat_float_inexact[" + std::to_string(s) + "]", double(floatSatMismatches(white, s)),
                   "SAT entries of an all-255 " + std::to_string(s) + "^2 texture that 32-bit float sums get wrong"});
-  ms.push_back({"levels[32x64]", double(ts::buildMipChain(ts::Image(32, 64)).size()), "levels of a 32 x 64 texture in GL (to 1 x 1)"});
+  ms.push_back({"levels[32x64]", double(ts::buildMipChain(ts::Image(32, 64)).size()),
+                "levels of a 32 x 64 texture in GL (to 1 x 1)"});
   ms.push_back({"levels_seed[32x64]", double(seedLevelCount(32, 64)), "seed 001's rule: until either side is 1"});
 
   // 4. The two LOD forms: the reference on a flat view turned 45 degrees, and GL.
   const View turned = flatView(64, 64, 45, 4, {128, 128});
-  ms.push_back({"lod_form_gap_45deg", lodFormGap(turned.jacobian(32.5, 32.5)), "log2(rho_edge / rho_max), footprint at 45 deg"});
-  ms.push_back({"lod_form_gap_0deg", lodFormGap(flatView(64, 64, 0, 4, {128, 128}).jacobian(32.5, 32.5)), "... along the axes"});
+  ms.push_back(
+      {"lod_form_gap_45deg", lodFormGap(turned.jacobian(32.5, 32.5)), "log2(rho_edge / rho_max), footprint at 45 deg"});
+  ms.push_back(
+      {"lod_form_gap_0deg", lodFormGap(flatView(64, 64, 0, 4, {128, 128}).jacobian(32.5, 32.5)), "... along the axes"});
   res.lodGl0 = glLevelAt(r, 0, 2.5), res.lodGl45 = glLevelAt(r, 45, 2.5);
-  ms.push_back({"lod_gl[0deg]", res.lodGl0, "the level GL's trilinear filter reads where rho_edge = 2^2.5, footprint along the axes"});
-  ms.push_back({"lod_gl[45deg]", res.lodGl45, "... the same footprint turned 45 deg (edge form: 2.5; largest component: 2.0)"});
+  ms.push_back({"lod_gl[0deg]", res.lodGl0,
+                "the level GL's trilinear filter reads where rho_edge = 2^2.5, footprint along the axes"});
+  ms.push_back(
+      {"lod_gl[45deg]", res.lodGl45, "... the same footprint turned 45 deg (edge form: 2.5; largest component: 2.0)"});
   ms.push_back({"lod_gl_drop_45deg", res.lodGl0 - res.lodGl45,
                 "0: this rasterizer uses GL's edge form (llvmpipe); 0.5: the largest-component form (softpipe)"});
 
   // 5. SAT's box.
-  ms.push_back({"sat_box_ratio[8to1_45deg]", satBoxRatio(footprint(8, 1, 45)), "SAT's bounding box over an 8:1 footprint at 45 deg"});
+  ms.push_back({"sat_box_ratio[8to1_45deg]", satBoxRatio(footprint(8, 1, 45)),
+                "SAT's bounding box over an 8:1 footprint at 45 deg"});
   ms.push_back({"sat_box_ratio[8to1_0deg]", satBoxRatio(footprint(8, 1, 0)), "... along the axes"});
 
   // 6, 7. Every method against the exact integral.
@@ -256,28 +277,37 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
   }
   const std::string where = scene_ == kSlant ? "" : std::string(kSceneKeys[scene_]) + "_";
   for (const Row& row : res.rows) {
-    if (scene_ == kSlant && row.azimuth != kAzimuths[0] && row.azimuth != kAzimuths[1] && row.azimuth != kAzimuths[2]) continue;
+    if (scene_ == kSlant && row.azimuth != kAzimuths[0] && row.azimuth != kAzimuths[1] && row.azimuth != kAzimuths[2])
+      continue;
     for (int m = kNearest; m < kMethodCount; ++m)
-      ms.push_back({"rms_exact[" + std::string(methodKey(m)) + "@" + where + azKey(row.azimuth) + "]", row.rms[size_t(m)],
-                    std::string(methodTitle(m)) + " against the exact area integral (8-bit RMS), texture turned " + azKey(row.azimuth) + " deg"});
+      ms.push_back({"rms_exact[" + std::string(methodKey(m)) + "@" + where + azKey(row.azimuth) + "]",
+                    row.rms[size_t(m)],
+                    std::string(methodTitle(m)) + " against the exact area integral (8-bit RMS), texture turned " +
+                        azKey(row.azimuth) + " deg"});
   }
   // GL_NEAREST_MIPMAP_NEAREST against GL_NEAREST: where the chain's levels
   // keep level 0's colours under a nearest sample, the two pictures agree.
   if (scene_ == kSlant) {
-    ms.push_back({"last_level_like_level0", double(lastLevelLikeLevel0(ts::buildMipChain(*sceneTexture(scene_, pattern_).image))),
-                  "the last mip level in which a nearest sample takes level 0's colour everywhere (GL_NEAREST_MIPMAP_NEAREST = "
-                  "GL_NEAREST up to lambda = it + 0.5)"});
+    ms.push_back(
+        {"last_level_like_level0",
+         double(lastLevelLikeLevel0(ts::buildMipChain(*sceneTexture(scene_, pattern_).image))),
+         "the last mip level in which a nearest sample takes level 0's colour everywhere (GL_NEAREST_MIPMAP_NEAREST = "
+         "GL_NEAREST up to lambda = it + 0.5)"});
     long inMask = 0;
     double fromLod = HUGE_VAL;
     for (const Row& row : res.rows) inMask += row.nmnDiffersInMask, fromLod = std::min(fromLod, row.nmnDiffersFromLod);
-    ms.push_back({"nmn_nearest_differ_far", double(inMask), "far-field pixels where GL_NEAREST_MIPMAP_NEAREST's picture differs from GL_NEAREST's (every azimuth)"});
-    ms.push_back({"nmn_nearest_differ_lod_min", fromLod, "the lowest exact LOD of a pixel where the two pictures differ (every azimuth)"});
+    ms.push_back(
+        {"nmn_nearest_differ_far", double(inMask),
+         "far-field pixels where GL_NEAREST_MIPMAP_NEAREST's picture differs from GL_NEAREST's (every azimuth)"});
+    ms.push_back({"nmn_nearest_differ_lod_min", fromLod,
+                  "the lowest exact LOD of a pixel where the two pictures differ (every azimuth)"});
   }
   const Row& cur = res.rows[size_t(res.current)];
   for (int m = 0; m < kMethodCount; ++m)
     if (cur.reads[size_t(m)] >= 0)
-      ms.push_back({"texels_per_pixel[" + std::string(methodKey(m)) + "]", cur.reads[size_t(m)],
-                    m == kExact ? "texels the exact integral weighs, mean per pixel" : "texels read per pixel, mean, counted"});
+      ms.push_back(
+          {"texels_per_pixel[" + std::string(methodKey(m)) + "]", cur.reads[size_t(m)],
+           m == kExact ? "texels the exact integral weighs, mean per pixel" : "texels read per pixel, mean, counted"});
 
   // 8, 9. The kernels and the bias, in their views.
   if (view_ == kKernels) {
@@ -285,7 +315,8 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
     for (const KernelRow& k : res.kernels) {
       const std::string key = std::string(kernelKey(k.kernel)) + (k.linear ? "_linear" : "_srgb");
       ms.push_back({"rms_kernel[" + key + "]", k.rms,
-                    std::string("trilinear with this chain against the exact integral") + (k.linear ? " of linear light" : "") + " (far field)"});
+                    std::string("trilinear with this chain against the exact integral") +
+                        (k.linear ? " of linear light" : "") + " (far field)"});
       ms.push_back({"mip_top[" + key + "]", k.top, "the chain's 1 x 1 level (grey)"});
     }
     // What every 1 x 1 level stands for, and how far the kernels' chains end from it.
@@ -298,18 +329,23 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
       for (const KernelRow& k : res.kernels)
         if (k.linear == lin) worst = std::max(worst, std::abs(k.top - mean));
       ms.push_back({"mip_mean[" + domain + "]", mean,
-                    std::string("the texture's mean grey in double precision, of its ") + (lin ? "linear-light values, encoded" : "sRGB values")});
-      ms.push_back({"mip_top_max_error[" + domain + "]", worst, "the largest |1 x 1 level - that mean| over the kernels (8-bit rounding at each level)"});
+                    std::string("the texture's mean grey in double precision, of its ") +
+                        (lin ? "linear-light values, encoded" : "sRGB values")});
+      ms.push_back({"mip_top_max_error[" + domain + "]", worst,
+                    "the largest |1 x 1 level - that mean| over the kernels (8-bit rounding at each level)"});
     }
   }
   if (view_ == kSupports) {
     const std::array<int, 2> px = ts::parsePixel(pick_, "--pick");
     const PickedPixel p = pickedPixel(scene_, azimuth_, px[0], px[1], bias_);
     if (p.on) {
-      ms.push_back({"pick_preimage_texels", p.preimageTexels, "the picked pixel's exact preimage: its area in texels of level 0"});
-      ms.push_back({"pick_sat_box_ratio", p.satBoxRatio, "SAT's box over the picked pixel's footprint (the derivative parallelogram)"});
+      ms.push_back({"pick_preimage_texels", p.preimageTexels,
+                    "the picked pixel's exact preimage: its area in texels of level 0"});
+      ms.push_back({"pick_sat_box_ratio", p.satBoxRatio,
+                    "SAT's box over the picked pixel's footprint (the derivative parallelogram)"});
       ms.push_back({"pick_lambda", p.lambda, "the picked pixel's lambda, log2 rho_edge (+ bias)"});
-      ms.push_back({"pick_texels_per_pixel", p.texelsPerPixel, "the picked pixel's rho_edge: texels a pixel along its longer side"});
+      ms.push_back({"pick_texels_per_pixel", p.texelsPerPixel,
+                    "the picked pixel's rho_edge: texels a pixel along its longer side"});
       ms.push_back({"pick_probes", double(p.probe.n), "the probe line's probes at the picked pixel"});
       ms.push_back({"pick_probe_lambda", p.probe.lambda, "... and the level they read, log2(P_max / N)"});
     }
@@ -317,8 +353,10 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
   if (view_ == kBias) {
     res.bias = measureBias(r, pattern_, azimuth_, &res.flickerExact);
     for (const BiasRow& b : res.bias) {
-      ms.push_back({"rms_bias[" + fmt("%g", b.bias) + "]", b.rms, "trilinear at this LOD bias against the exact integral"});
-      ms.push_back({"flicker[" + fmt("%g", b.bias) + "]", b.flicker, "RMS of a frame's change, the plane moving 1/8 texel a frame"});
+      ms.push_back(
+          {"rms_bias[" + fmt("%g", b.bias) + "]", b.rms, "trilinear at this LOD bias against the exact integral"});
+      ms.push_back({"flicker[" + fmt("%g", b.bias) + "]", b.flicker,
+                    "RMS of a frame's change, the plane moving 1/8 texel a frame"});
     }
     ms.push_back({"flicker_exact", res.flickerExact, "RMS of the exact picture's own change a frame"});
   }

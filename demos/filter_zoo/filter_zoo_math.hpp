@@ -72,7 +72,7 @@ using ts::lod::Jacobian;
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kTexels = 256;  // every texture of the zoo is 256 x 256: levels 0..8
 constexpr int kLevels = 9;
-constexpr double kMaxAniso = 16;  // GL's anisotropic 16x, the probe line's and EWA's limit
+constexpr double kMaxAniso = 16;   // GL's anisotropic 16x, the probe line's and EWA's limit
 constexpr double kEwaAlpha = 2.0;  // EWA's Gaussian falloff, exp(-alpha Q/F) (the parallax demo's)
 
 // ---------------------------------------------------------------- 1. magnification
@@ -205,14 +205,18 @@ struct Level {
 
 // 2:1 in u (axis 0) or v (axis 1), 8-bit, rounding half up (the ripmap's step).
 inline ts::Image halve(const ts::Image& src, int axis) {
-  const int w = axis == 0 ? std::max(1, src.width / 2) : src.width, h = axis == 1 ? std::max(1, src.height / 2) : src.height;
+  const int w = axis == 0 ? std::max(1, src.width / 2) : src.width,
+            h = axis == 1 ? std::max(1, src.height / 2) : src.height;
   ts::Image dst(w, h);
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
-      const ts::Rgba a = axis == 0 ? src.at(std::min(2 * i, src.width - 1), j) : src.at(i, std::min(2 * j, src.height - 1));
-      const ts::Rgba b = axis == 0 ? src.at(std::min(2 * i + 1, src.width - 1), j) : src.at(i, std::min(2 * j + 1, src.height - 1));
-      dst.set(i, j, {uint8_t((a.r + b.r + 1) / 2), uint8_t((a.g + b.g + 1) / 2), uint8_t((a.b + b.b + 1) / 2),
-                     uint8_t((a.a + b.a + 1) / 2)});
+      const ts::Rgba a = axis == 0 ? src.at(std::min(2 * i, src.width - 1), j)
+                                   : src.at(i, std::min(2 * j, src.height - 1));
+      const ts::Rgba b = axis == 0 ? src.at(std::min(2 * i + 1, src.width - 1), j)
+                                   : src.at(i, std::min(2 * j + 1, src.height - 1));
+      dst.set(i, j,
+              {uint8_t((a.r + b.r + 1) / 2), uint8_t((a.g + b.g + 1) / 2), uint8_t((a.b + b.b + 1) / 2),
+               uint8_t((a.a + b.a + 1) / 2)});
     }
   return dst;
 }
@@ -220,7 +224,7 @@ inline ts::Image halve(const ts::Image& src, int axis) {
 // A ripmap: level (i, j) is W/2^i x H/2^j, made from (i - 1, j) by halving u
 // (from (0, j - 1) by halving v in the first column).
 struct Ripmap {
-  int nu = 0, nv = 0;  // levels along u and v
+  int nu = 0, nv = 0;         // levels along u and v
   std::vector<Level> levels;  // (i, j) at j * nu + i
   std::vector<ts::Image> images;
   explicit Ripmap(const ts::Image& base) {
@@ -228,7 +232,7 @@ struct Ripmap {
     images.resize(size_t(nu) * size_t(nv));
     for (int j = 0; j < nv; ++j)
       for (int i = 0; i < nu; ++i)
-        images[size_t(j * nu + i)] = i > 0 ? halve(images[size_t(j * nu + i - 1)], 0)
+        images[size_t(j * nu + i)] = i > 0   ? halve(images[size_t(j * nu + i - 1)], 0)
                                      : j > 0 ? halve(images[size_t((j - 1) * nu)], 1)
                                              : base;
     for (const ts::Image& im : images) levels.emplace_back(im);
@@ -248,7 +252,8 @@ struct Ripmap {
 struct Sat {
   int w = 0, h = 0;
   std::vector<glm::dvec4> s;  // (w + 1) x (h + 1)
-  explicit Sat(const ts::Image& img) : w(img.width), h(img.height), s(size_t(img.width + 1) * size_t(img.height + 1), glm::dvec4(0.0)) {
+  explicit Sat(const ts::Image& img)
+      : w(img.width), h(img.height), s(size_t(img.width + 1) * size_t(img.height + 1), glm::dvec4(0.0)) {
     for (int j = 1; j <= h; ++j)
       for (int i = 1; i <= w; ++i) {
         const ts::Rgba c = img.at(i - 1, j - 1);
@@ -297,7 +302,12 @@ struct Pyramids {
   ts::AreaIntegral exact;
   ts::AreaIntegral exactLinear;  // of the linear-light values (0..1; alpha / 255)
   explicit Pyramids(const ts::Image& img)
-      : base(img), mip8(ts::buildMipChain(img)), rip(img), sat(img), exact(img), exactLinear(img.width, img.height, linearTexels(img)) {
+      : base(img),
+        mip8(ts::buildMipChain(img)),
+        rip(img),
+        sat(img),
+        exact(img),
+        exactLinear(img.width, img.height, linearTexels(img)) {
     for (const ts::Image& l : mip8) chain.emplace_back(l);
   }
   static std::vector<glm::dvec4> linearTexels(const ts::Image& img) {
@@ -350,7 +360,8 @@ inline glm::dvec4 trilinearAt(const std::vector<Level>& chain, double u, double 
   if (b.weight <= 0 || b.hi == b.lo) return a;
   return glm::mix(a, bilinearAt(chain, b.hi, u, v, reads), b.weight);
 }
-inline glm::dvec4 trilinear(const std::vector<Level>& chain, double u, double v, const Jacobian& j, double bias, long* reads) {
+inline glm::dvec4 trilinear(const std::vector<Level>& chain, double u, double v, const Jacobian& j, double bias,
+                            long* reads) {
   return trilinearAt(chain, u, v, glLambda(j, bias), reads);
 }
 
@@ -381,7 +392,8 @@ inline glm::dvec4 ripmap(const Ripmap& r, double u, double v, const Jacobian& j,
 // (u, v), each side at least one texel, scaled by 2^bias.
 inline glm::dvec2 satHalfBox(const Jacobian& j, double bias) {
   const double k = 0.5 * std::exp2(bias);
-  return {std::max(0.5, k * (std::abs(j.dudx) + std::abs(j.dudy))), std::max(0.5, k * (std::abs(j.dvdx) + std::abs(j.dvdy)))};
+  return {std::max(0.5, k * (std::abs(j.dudx) + std::abs(j.dudy))),
+          std::max(0.5, k * (std::abs(j.dvdx) + std::abs(j.dvdy)))};
 }
 inline glm::dvec4 sat(const Sat& s, double u, double v, const Jacobian& j, double bias, long* reads) {
   const glm::dvec2 hb = satHalfBox(j, bias);
@@ -405,7 +417,8 @@ inline ProbeLine probeLine(const Jacobian& j, double bias, double maxAniso = kMa
   p.axis = px >= py ? glm::dvec2(j.dudx, j.dvdx) : glm::dvec2(j.dudy, j.dvdy);
   return p;
 }
-inline glm::dvec4 probes(const std::vector<Level>& chain, double u, double v, const Jacobian& j, double bias, long* reads) {
+inline glm::dvec4 probes(const std::vector<Level>& chain, double u, double v, const Jacobian& j, double bias,
+                         long* reads) {
   const ProbeLine p = probeLine(j, bias);
   glm::dvec4 sum(0.0);
   for (int k = 0; k < p.n; ++k) {
@@ -416,7 +429,8 @@ inline glm::dvec4 probes(const std::vector<Level>& chain, double u, double v, co
 }
 
 // EWA (common/core/ewa.hpp): the ellipse of the derivatives, Gaussian weights.
-inline glm::dvec4 ewa(const std::vector<Level>& chain, double u, double v, const Jacobian& j, double bias, long* reads) {
+inline glm::dvec4 ewa(const std::vector<Level>& chain, double u, double v, const Jacobian& j, double bias,
+                      long* reads) {
   return ts::ewa::ewaFilter([&](int L, long i, long jj) { return chain[size_t(L)].at(i, jj); }, int(chain.size()), u, v,
                             j.dudx, j.dvdx, j.dudy, j.dvdy, kEwaAlpha, kMaxAniso, bias, reads);
 }
@@ -496,9 +510,9 @@ inline View slantView(int w, int h, double azimuthDeg) {
   v.H = turnAndScale(azimuthDeg) * G;
   auto row = [&](int r) { return glm::dvec3(G[0][r], G[1][r], G[2][r]); };
   const glm::dvec3 s = row(0), t = row(1), q = row(2);
-  v.inside = {q - 1e-9 * glm::dvec3(0, 0, 1),                                     // in front of the eye
+  v.inside = {q - 1e-9 * glm::dvec3(0, 0, 1),                                            // in front of the eye
               ts::slant::kGroundHalfWidth * q - s, ts::slant::kGroundHalfWidth * q + s,  // |s| <= half width
-              t, ts::slant::kGroundDepth * q - t};                                 // 0 <= t <= depth
+              t, ts::slant::kGroundDepth * q - t};                                       // 0 <= t <= depth
   return v;
 }
 // A flat view: u = centre + texelsPerPixel R(azimuth) (x - w/2, y - h/2).
@@ -536,7 +550,8 @@ inline ts::TextureDesc zonePlate(int size = kTexels) {
     }
   ts::TextureDesc t;
   t.name = "zone_plate";
-  t.params = {{"size", std::to_string(size)}, {"grey", "127.5 + 127.5 cos(pi r^2 / size), r from the centre in texels"}};
+  t.params = {{"size", std::to_string(size)},
+              {"grey", "127.5 + 127.5 cos(pi r^2 / size), r from the centre in texels"}};
   t.image = img;
   return t;
 }
@@ -555,14 +570,34 @@ inline std::vector<char> farField(const View& v, double lo, double hi) {
 }
 
 // ---------------------------------------------------------------- the methods by name
-enum Method { kExact, kNearest, kLinear, kNearestMipNearest, kTrilinear, kAniso16, kRipmap, kSat, kProbes, kEwa, kMethodCount };
+enum Method {
+  kExact,
+  kNearest,
+  kLinear,
+  kNearestMipNearest,
+  kTrilinear,
+  kAniso16,
+  kRipmap,
+  kSat,
+  kProbes,
+  kEwa,
+  kMethodCount
+};
 inline const char* methodKey(int m) {
-  static const char* const k[] = {"exact", "nearest", "linear", "nmn", "trilinear", "aniso16", "ripmap", "sat", "probes", "ewa"};
+  static const char* const k[] = {"exact",   "nearest", "linear", "nmn",    "trilinear",
+                                  "aniso16", "ripmap",  "sat",    "probes", "ewa"};
   return k[m];
 }
 inline const char* methodTitle(int m) {
-  static const char* const k[] = {"exact area integral", "GL_NEAREST", "GL_LINEAR", "GL_NEAREST_MIPMAP_NEAREST",
-                                  "trilinear", "GL anisotropic 16x", "ripmap", "summed-area table", "probe line",
+  static const char* const k[] = {"exact area integral",
+                                  "GL_NEAREST",
+                                  "GL_LINEAR",
+                                  "GL_NEAREST_MIPMAP_NEAREST",
+                                  "trilinear",
+                                  "GL anisotropic 16x",
+                                  "ripmap",
+                                  "summed-area table",
+                                  "probe line",
                                   "EWA"};
   return k[m];
 }
@@ -577,7 +612,8 @@ inline glm::dvec4 lookup(int method, const Pyramids& p, const View& v, double x,
     case kNearest: return nearest(p.chain[0], uv.x, uv.y, reads);
     case kLinear: return bilinear(p.chain[0], uv.x, uv.y, reads);
     case kNearestMipNearest: return nearestMipNearest(p.chain, uv.x, uv.y, j, bias, reads);
-    case kTrilinear: case kAniso16: return trilinear(p.chain, uv.x, uv.y, j, bias, reads);  // (no CPU anisotropic model of the GL's)
+    case kTrilinear:
+    case kAniso16: return trilinear(p.chain, uv.x, uv.y, j, bias, reads);  // (no CPU anisotropic model of the GL's)
     case kRipmap: return ripmap(p.rip, uv.x, uv.y, j, bias, reads);
     case kSat: return sat(p.sat, uv.x, uv.y, j, bias, reads);
     case kProbes: return probes(p.chain, uv.x, uv.y, j, bias, reads);
@@ -605,7 +641,8 @@ inline Picture cpuPicture(int method, const Pyramids& p, const View& v, double b
                           ts::Rgba background = {77, 92, 115, 255}, bool onlyMask = false) {
   Picture out;
   out.image = ts::Image(v.w, v.h, background);
-  if (method == kExact) out.exact.assign(size_t(v.w) * size_t(v.h), glm::dvec4(background.r, background.g, background.b, 255));
+  if (method == kExact)
+    out.exact.assign(size_t(v.w) * size_t(v.h), glm::dvec4(background.r, background.g, background.b, 255));
   long reads = 0, counted = 0;
   for (int row = 0; row < v.h; ++row)
     for (int col = 0; col < v.w; ++col) {
@@ -636,7 +673,8 @@ inline double exactTexels(const View& v, const std::vector<char>& mask) {
       if (!mask[size_t(row) * size_t(v.w) + size_t(col)]) continue;
       const ts::Polygon2 poly = v.preimage(col, row);
       double u0 = poly[0].x, u1 = u0, v0 = poly[0].y, v1 = v0;
-      for (const glm::dvec2& q : poly) u0 = std::min(u0, q.x), u1 = std::max(u1, q.x), v0 = std::min(v0, q.y), v1 = std::max(v1, q.y);
+      for (const glm::dvec2& q : poly)
+        u0 = std::min(u0, q.x), u1 = std::max(u1, q.x), v0 = std::min(v0, q.y), v1 = std::max(v1, q.y);
       for (long j = long(std::floor(v0)); j < long(std::ceil(v1)); ++j) {
         const ts::Polygon2 strip = ts::clipToBox(poly, u0, double(j), u1, double(j + 1));
         if (strip.size() < 3 || std::fabs(ts::signedArea(strip)) <= 0) continue;
@@ -687,7 +725,9 @@ inline ts::Frame viewFrame(const View& v, const ts::TextureDesc& texture, glm::v
   auto vertex = [&](glm::dvec2 x) {
     const glm::dvec3 q = v.H * glm::dvec3(x, 1.0);
     // (s q, t q, 0, q): glTexCoord4f in Renderer::draw (common/gl/render.cpp)
-    return ts::Vertex{{float(x.x), float(x.y), 0.0f}, {float(q.x / kTexels), float(q.y / kTexels), 0.0f, float(q.z)}, glm::vec4(1.0f)};
+    return ts::Vertex{{float(x.x), float(x.y), 0.0f},
+                      {float(q.x / kTexels), float(q.y / kTexels), 0.0f, float(q.z)},
+                      glm::vec4(1.0f)};
   };
   for (size_t k = 1; k + 1 < o.size(); ++k)
     for (size_t i : {size_t(0), k, k + 1}) b.vertices.push_back(vertex(o[i]));
@@ -703,8 +743,9 @@ inline const char* kernelKey(int k) {
   return n[k];
 }
 inline const char* kernelTitle(int k) {
-  static const char* const n[] = {"box (Buss's 2x2)", "tent (Crow's pyramid)", "Gaussian", "Lanczos-2", "Lanczos-3",
-                                  "Kaiser"};
+  static const char* const n[] = {"box (Buss's 2x2)", "tent (Crow's pyramid)",
+                                  "Gaussian",         "Lanczos-2",
+                                  "Lanczos-3",        "Kaiser"};
   return n[k];
 }
 inline double sinc(double x) { return x == 0 ? 1.0 : std::sin(kPi * x) / (kPi * x); }
@@ -781,7 +822,8 @@ inline ts::Image decimate(const ts::Image& src, int kernel, bool linearLight) {
         double s = 0;
         if (src.height == 1) s = m(i, 0, c);
         else
-          for (size_t n = 0; n < taps.size(); ++n) s += taps[n] * (m(i, 2 * j - int(n), c) + m(i, 2 * j + 1 + int(n), c));
+          for (size_t n = 0; n < taps.size(); ++n)
+            s += taps[n] * (m(i, 2 * j - int(n), c) + m(i, 2 * j + 1 + int(n), c));
         out[c] = linearLight && c < 3 ? linearToSrgb(s) : s;
       }
       dst.set(i, j, toRgba({out[0], out[1], out[2], out[3]}));
@@ -790,7 +832,8 @@ inline ts::Image decimate(const ts::Image& src, int kernel, bool linearLight) {
 }
 inline std::vector<ts::Image> kernelChain(const ts::Image& base, int kernel, bool linearLight) {
   std::vector<ts::Image> chain{base};
-  while (chain.back().width > 1 || chain.back().height > 1) chain.push_back(decimate(chain.back(), kernel, linearLight));
+  while (chain.back().width > 1 || chain.back().height > 1)
+    chain.push_back(decimate(chain.back(), kernel, linearLight));
   return chain;
 }
 // The 1 x 1 level's grey (mean of R, G, B).
@@ -810,7 +853,9 @@ inline int lastLevelLikeLevel0(const std::vector<ts::Image>& chain) {
     const ts::Image& base = chain[0];
     for (int j = 0; j < base.height; ++j)
       for (int i = 0; i < base.width; ++i)
-        if (!(chain[k].at(std::min(i >> k, chain[k].width - 1), std::min(j >> k, chain[k].height - 1)) == base.at(i, j))) return last;
+        if (!(chain[k].at(std::min(i >> k, chain[k].width - 1), std::min(j >> k, chain[k].height - 1)) ==
+              base.at(i, j)))
+          return last;
     last = int(k);
   }
   return last;

@@ -33,7 +33,7 @@
 #include "filter_zoo_math.hpp"
 
 namespace zoo {
-constexpr int kImageW = 384, kImageH = 192;  // every measured picture (the mipmap demo's slant size)
+constexpr int kImageW = 384, kImageH = 192;   // every measured picture (the mipmap demo's slant size)
 constexpr double kFarLo = 1.5, kFarHi = 5.0;  // the slanted plane's far field: LOD 1.5 .. 5
 inline const std::array<double, 3> kAzimuths = {0.0, 22.5, 45.0};
 enum Pattern { kChecker, kGrid };
@@ -47,12 +47,16 @@ inline std::string azKey(double az) { return ts::layout::fmt("%g", az); }
 
 // The scene's texture (256 x 256, the book's 2x2 mip chain).
 inline ts::TextureDesc sceneTexture(int scene, int pattern) {
-  ts::TextureDesc t = scene == kZonePlate ? zonePlate() : pattern == kGrid ? ts::labelledGrid(kTexels, 8) : ts::checkerboard(kTexels, 8);
+  ts::TextureDesc t = scene == kZonePlate ? zonePlate()
+                      : pattern == kGrid  ? ts::labelledGrid(kTexels, 8)
+                                          : ts::checkerboard(kTexels, 8);
   t.mipmaps = true;
   return t;
 }
 inline View sceneView(int scene, double azimuthDeg, int w = kImageW, int h = kImageH) {
-  return scene == kZonePlate ? zonePlateView(w, h, azimuthDeg) : scene == kMagnify ? magnifyView(w, h, azimuthDeg) : slantView(w, h, azimuthDeg);
+  return scene == kZonePlate ? zonePlateView(w, h, azimuthDeg)
+         : scene == kMagnify ? magnifyView(w, h, azimuthDeg)
+                             : slantView(w, h, azimuthDeg);
 }
 // Where the RMS is taken: the slanted plane's far field, every pixel of the flat scenes.
 inline std::vector<char> sceneMask(int scene, const View& v) {
@@ -151,7 +155,8 @@ inline std::vector<int> texelsShown(ts::Renderer& r, int pixels) {
   b.role = "texel_index_row";
   b.texture = f.addTexture(t);
   const float tr = 0.5f / kTexels;  // the first texel row's centre
-  for (glm::vec2 c : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)})
+  for (glm::vec2 c :
+       {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)})
     b.vertices.push_back({glm::vec3(c, 0.0f), glm::vec4(c.x, tr, 0.0f, 1.0f), glm::vec4(1.0f)});
   p.batches.push_back(b);
   f.panels.push_back(p);
@@ -249,8 +254,8 @@ struct CpuResult {
 inline std::shared_ptr<const CpuResult> cpuResult(int method, int scene, int pattern, double az, double bias) {
   static std::mutex lock;
   static std::map<std::string, std::shared_ptr<const CpuResult>> cache;
-  const std::string key = std::string(methodKey(method)) + "/" + kSceneKeys[scene] + "/" + std::to_string(pattern) + "/" +
-                          azKey(az) + "/" + ts::layout::fmt("%g", bias);
+  const std::string key = std::string(methodKey(method)) + "/" + kSceneKeys[scene] + "/" + std::to_string(pattern) +
+                          "/" + azKey(az) + "/" + ts::layout::fmt("%g", bias);
   {
     std::lock_guard<std::mutex> g(lock);
     auto it = cache.find(key);
@@ -300,7 +305,8 @@ inline Row measureRow(ts::Renderer& r, int scene, int pattern, double az, double
     for (int x = 0; x < v.w; ++x) {
       if (nearest.at(x, y) == nmn.at(x, y) || !v.coversPixel(x, y)) continue;
       row.nmnDiffersInMask += mask[size_t(y) * size_t(v.w) + size_t(x)];
-      row.nmnDiffersFromLod = std::min(row.nmnDiffersFromLod, std::log2(ts::lod::rhoExact(v.jacobian(x + 0.5, v.h - 1 - y + 0.5))));
+      row.nmnDiffersFromLod = std::min(row.nmnDiffersFromLod,
+                                       std::log2(ts::lod::rhoExact(v.jacobian(x + 0.5, v.h - 1 - y + 0.5))));
     }
   return row;
 }
@@ -328,7 +334,8 @@ inline std::vector<KernelRow> measureKernels(ts::Renderer& r, int pattern, doubl
       const ts::Image img = glPicture(r, v, t, kTrilinear, bias);
       row.rms = rmsAgainst(img, (lin ? exactLinear : exact)->exact, mask);
       row.top = topValue(*chain);
-      row.picture = pictureTexture(img, std::string("trilinear_") + kernelKey(k) + (lin ? "_linear" : "_srgb"), kSlant, az);
+      row.picture = pictureTexture(img, std::string("trilinear_") + kernelKey(k) + (lin ? "_linear" : "_srgb"), kSlant,
+                                   az);
       out.push_back(row);
     }
   return out;
@@ -356,7 +363,8 @@ inline std::vector<BiasRow> measureBias(ts::Renderer& r, int pattern, double az,
   }
   const std::vector<char> mask = sceneMask(kSlant, views[0]);
   std::vector<Picture> exact;
-  for (const View& v : views) exact.push_back(cpuPicture(kExact, p, v, 0, mask, kBackground, true));  // the far field only
+  for (const View& v : views)
+    exact.push_back(cpuPicture(kExact, p, v, 0, mask, kBackground, true));  // the far field only
   auto change = [&](const ts::Image& a, const ts::Image& b) {
     double sum = 0;
     long n = 0;
@@ -370,7 +378,8 @@ inline std::vector<BiasRow> measureBias(ts::Renderer& r, int pattern, double az,
     return n ? std::sqrt(sum / double(n)) : 0.0;
   };
   *flickerExact = 0;
-  for (int k = 1; k < kFrames; ++k) *flickerExact += change(exact[size_t(k) - 1].image, exact[size_t(k)].image) / (kFrames - 1);
+  for (int k = 1; k < kFrames; ++k)
+    *flickerExact += change(exact[size_t(k) - 1].image, exact[size_t(k)].image) / (kFrames - 1);
   for (double b = -1.0; b <= 1.0 + 1e-9; b += 0.5) {
     ts::measureProgress(0.6 + 0.3 * (b + 1) / 2);
     BiasRow row;

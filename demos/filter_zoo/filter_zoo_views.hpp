@@ -38,7 +38,8 @@ const glm::vec4 kPreimageColour{1.0f, 1.0f, 1.0f, 1.0f}, kEllipseColour{1.0f, 0.
 // figure's x (SAT: satBits / 8 a channel).
 inline double memoryRatio(int m) {
   switch (m) {
-    case kNearest: case kLinear: return 1.0;
+    case kNearest:
+    case kLinear: return 1.0;
     case kRipmap: return ripmapMemoryRatio(kTexels, kTexels);
     case kSat: return satBits(kTexels, kTexels) / 8.0;
     case kExact: return 1.0;  // the texture, and per-row sums to go fast (ts::AreaIntegral) if wanted
@@ -64,7 +65,8 @@ inline L::Text printed(const ts::Measurements& ms, const std::string& templ, con
 }
 // A method's name; GL's anisotropic filter's says its limit, a parameter.
 inline L::Text methodText(int m) {
-  if (m == kAniso16) return L::Text("GL anisotropic ") + L::given("GL_TEXTURE_MAX_ANISOTROPY_EXT", kMaxAniso, "%g") + "x";
+  if (m == kAniso16)
+    return L::Text("GL anisotropic ") + L::given("GL_TEXTURE_MAX_ANISOTROPY_EXT", kMaxAniso, "%g") + "x";
   return L::Text(methodTitle(m));
 }
 // A number in a name (a kernel's width, a level's index): given, not measured.
@@ -72,14 +74,17 @@ inline L::Text num(const std::string& what, double v) { return L::given(what, v,
 // A kernel's name, its parameters given.
 inline L::Text kernelText(int k) {
   switch (k) {
-    case kBox: return "box (Buss's " + num("the box's width, texels", 2) + "x" + num("the box's height, texels", 2) + ")";
+    case kBox:
+      return "box (Buss's " + num("the box's width, texels", 2) + "x" + num("the box's height, texels", 2) + ")";
     case kLanczos2: return "Lanczos-" + num("Lanczos lobes", 2);
     case kLanczos3: return "Lanczos-" + num("Lanczos lobes", 3);
     default: return L::Text(kernelTitle(k));
   }
 }
 // "1x1 level": the chain's last level, named by its size.
-inline L::Text topLevelText() { return num("the last level's width", 1) + "x" + num("the last level's height", 1) + " level"; }
+inline L::Text topLevelText() {
+  return num("the last level's width", 1) + "x" + num("the last level's height", 1) + " level";
+}
 // A key of meaningful colours (layout::legend) whose meanings print numbers:
 // the numbers attached to the labels that show them.
 inline float legendOf(ts::Frame& f, L::Box band, const std::vector<std::pair<glm::vec4, L::Text>>& entries, int scale) {
@@ -113,7 +118,8 @@ inline float keyLines(ts::Frame& f, L::Box band, const std::vector<std::pair<glm
     // Too wide for its line (a small window): layout::legend's swatch, the
     // meaning wrapped beside it, and the entry in the frame's legend.
     ts::Label swatch;
-    swatch.x = band.x0 + keyPad(scale), swatch.y = y, swatch.text = " ", swatch.scale = scale, swatch.background = colour;
+    swatch.x = band.x0 + keyPad(scale), swatch.y = y, swatch.text = " ", swatch.scale = scale,
+    swatch.background = colour;
     f.labels.push_back(swatch);
     f.legend.push_back({colour, meaning.text});
     const float x0 = swatch.x + ts::text::height(scale) + 4.0f * float(scale);
@@ -143,12 +149,14 @@ struct Views {
     const L::Text turn = L::given("azimuth, degrees", azimuth, "%g");
     return scene == kSlant ? "slanted plane, texture turned " + turn + " deg"
            : scene == kZonePlate
-               ? "zone plate, turned " + turn + " deg, " + L::given("texels a pixel", kZoneTexelsPerPixel, "%g") + " texels a pixel"
+               ? "zone plate, turned " + turn + " deg, " + L::given("texels a pixel", kZoneTexelsPerPixel, "%g") +
+                     " texels a pixel"
                : "magnified: " + L::given("texels across", kTexels, "%g") + " texels over " +
                      L::given("pixels across", kMagnifyPixels, "%g") + " pixels, turned " + turn + " deg";
   }
   L::Text maskText() const {
-    const L::Text rms = "RMS (" + L::given("bits a channel", 8, "%g") + "-bit R,G,B) against the exact area integral over ";
+    const L::Text rms = "RMS (" + L::given("bits a channel", 8, "%g") +
+                        "-bit R,G,B) against the exact area integral over ";
     return scene == kSlant ? rms + "the far field, LOD " + L::given("the far field's lowest LOD", kFarLo, "%g") + ".." +
                                  L::given("the far field's highest LOD", kFarHi, "%g")
                            : rms + "the picture";
@@ -198,7 +206,8 @@ inline void Views::buildMethods(ts::Frame& f, const Result* m) const {
     const L::Cell& c = cells[size_t(k)];
     const glm::vec4 colour = k == method ? kAmber : kWhite;
     L::caption(f, c.above, methodTitle(k), colour, c.scale, ts::Align::Left);
-    picturePanel(f, std::string("method_") + methodKey(k), c.picture, row ? &row->pictures[size_t(k)] : nullptr, c.scale);
+    picturePanel(f, std::string("method_") + methodKey(k), c.picture, row ? &row->pictures[size_t(k)] : nullptr,
+                 c.scale);
     if (row)
       L::caption(f, c.below,
                  k == kExact ? "the reference (" + readsText(row->reads[size_t(k)]) + ")"
@@ -219,28 +228,34 @@ inline void Views::buildAzimuths(ts::Frame& f, const Result* m, const ts::Measur
   const int w = f.width, h = f.height;
   const int sc = L::scaleFor({0, 0, w, h / 3}, 2), line = int(L::lineHeight(sc));
   // The foot: the highlight's key and two lines of notes, at one scale.
-  const L::Text same =
-      measuresAll(ms, "{last_level_like_level0}{nmn_nearest_differ_far}{nmn_nearest_differ_lod_min}")
-          ? "GL_NEAREST_MIPMAP_NEAREST's error is GL_NEAREST's: levels " + num("the first level above level 0", 1) + ".." +
-                L::measured(ms, "last_level_like_level0", "%.0f") +
-                " of the checkerboard are the same board, so a nearest sample takes level " + num("level", 0) +
-                "'s colour; the pictures differ in " + L::measured(ms, "nmn_nearest_differ_far", "%.0f") +
-                " far-field pixels, beyond it from LOD " + L::measured(ms, "nmn_nearest_differ_lod_min", "%.2f")
-          : L::Text();
-  const std::vector<L::Text> footNotes = {
-      "after each name: " + maskText() + (bias != 0 ? "; LOD bias " + L::given("LOD bias", bias, "%g") : L::Text()), same};
+  const L::Text same = measuresAll(ms, "{last_level_like_level0}{nmn_nearest_differ_far}{nmn_nearest_differ_lod_min}")
+                           ? "GL_NEAREST_MIPMAP_NEAREST's error is GL_NEAREST's: levels " +
+                                 num("the first level above level 0", 1) + ".." +
+                                 L::measured(ms, "last_level_like_level0", "%.0f") +
+                                 " of the checkerboard are the same board, so a nearest sample takes level " +
+                                 num("level", 0) + "'s colour; the pictures differ in " +
+                                 L::measured(ms, "nmn_nearest_differ_far", "%.0f") +
+                                 " far-field pixels, beyond it from LOD " +
+                                 L::measured(ms, "nmn_nearest_differ_lod_min", "%.2f")
+                           : L::Text();
+  const std::vector<L::Text> footNotes = {"after each name: " + maskText() +
+                                              (bias != 0 ? "; LOD bias " + L::given("LOD bias", bias, "%g")
+                                                         : L::Text()),
+                                          same};
   int fs = sc;
-  while (fs > 1 && std::any_of(footNotes.begin(), footNotes.end(), [&](const L::Text& t) { return ts::text::width(t.text, fs) > w - 8; }))
+  while (fs > 1 && std::any_of(footNotes.begin(), footNotes.end(),
+                               [&](const L::Text& t) { return ts::text::width(t.text, fs) > w - 8; }))
     --fs;
   const float footH = keyHeight(1, fs) + 2 * L::lineHeight(fs) + 4;
   const float bandH = (float(h) - footH - 4) / 3;
   for (int b = 0; b < 3; ++b) {
     const double az = kAzimuths[size_t(b)];
     const float y0 = 2 + b * bandH;
-    L::caption(f, {4, y0, float(w - 4), y0 + float(line)}, "texture turned " + L::given("azimuth, degrees", az, "%g") + " deg",
-               kWhite, sc, ts::Align::Left);
+    L::caption(f, {4, y0, float(w - 4), y0 + float(line)},
+               "texture turned " + L::given("azimuth, degrees", az, "%g") + " deg", kWhite, sc, ts::Align::Left);
     L::FlowSpec spec;
-    spec.n = kMethodCount, spec.aspect = float(kImageW) / kImageH, spec.linesAbove = 1, spec.linesBelow = 0, spec.gap = 6;
+    spec.n = kMethodCount, spec.aspect = float(kImageW) / kImageH, spec.linesAbove = 1, spec.linesBelow = 0,
+    spec.gap = 6;
     const std::vector<L::Cell> cells = L::flow({4, y0 + float(line), float(w - 4), y0 + bandH - 2}, spec);
     const Row* row = m && m->scene == kSlant ? rowAt(m, az) : nullptr;
     for (int k = 0; k < kMethodCount && k < int(cells.size()); ++k) {
@@ -248,14 +263,15 @@ inline void Views::buildAzimuths(ts::Frame& f, const Result* m, const ts::Measur
       L::Text t = methodText(k);
       if (k != kExact) t = t + printed(ms, "  {rms_exact[" + std::string(methodKey(k)) + "@" + azKey(az) + "]|%.1f}");
       L::caption(f, c.above, t, k == method ? kAmber : kWhite, c.scale, ts::Align::Left);
-      picturePanel(f, std::string("az") + azKey(az) + "_" + methodKey(k), c.picture, row ? &row->pictures[size_t(k)] : nullptr,
-                   c.scale);
+      picturePanel(f, std::string("az") + azKey(az) + "_" + methodKey(k), c.picture,
+                   row ? &row->pictures[size_t(k)] : nullptr, c.scale);
     }
   }
   // The key of the highlight, then why GL_NEAREST_MIPMAP_NEAREST's number is GL_NEAREST's, measured.
   const float foot = float(h) - footH;
   const float below = keyLines(f, {4, foot, float(w - 4), foot + keyHeight(1, fs)},
-                               {{kAmber, "the method highlighted (--method): " + std::string(methodTitle(method))}}, fs);
+                               {{kAmber, "the method highlighted (--method): " + std::string(methodTitle(method))}},
+                               fs);
   notes(f, {4, below, float(w - 4), float(h)}, footNotes, kGrey, fs);
 }
 
@@ -280,9 +296,11 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m, const ts::Measur
   const std::vector<std::pair<glm::vec4, L::Text>> key = {
       {kPreimageColour, "the exact preimage" + printed(ms, " ({pick_preimage_texels|%.1f} texels)")},
       {kSquareColour, "trilinear's " + num("the levels' ratio", 2) + "^lambda square"},
-      {kRipmapColour, "the ripmap's " + num("the levels' ratio", 2) + "^i x " + num("the levels' ratio", 2) + "^j rectangle"},
+      {kRipmapColour,
+       "the ripmap's " + num("the levels' ratio", 2) + "^i x " + num("the levels' ratio", 2) + "^j rectangle"},
       {kSatColour, "the SAT's box" + printed(ms, ", {pick_sat_box_ratio|%.2f}x this pixel's footprint")},
-      {kProbeColour, printed(ms, "{pick_probes|%.0f} probes, lambda {pick_probe_lambda|%.2f}", "the probe line's probes")},
+      {kProbeColour,
+       printed(ms, "{pick_probes|%.0f} probes, lambda {pick_probe_lambda|%.2f}", "the probe line's probes")},
       {kEllipseColour, "EWA's ellipse"},
       {kAmber, "the pixel, ringed in the picture"},
       {kTexelGridColour, "level " + num("level", 0) + "'s texel grid"}};
@@ -292,10 +310,16 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m, const ts::Measur
   const L::Text eight = L::given("the footprint's long side over its short", 8, "%g") + ":" +
                         L::given("the footprint's short side", 1, "%g");
   const std::vector<std::pair<L::Text, int>> claim =
-      claimed ? std::vector<std::pair<L::Text, int>>{
-                    {"The SAT's box: " + L::measured(ms, "sat_box_ratio[8to1_45deg]", "%.2f") + "x the area", sc},
-                    {"of an " + eight + " footprint at " + L::given("the footprint's turn, degrees", 45, "%g") + " deg", sc},
-                    {"(along the axes: " + L::measured(ms, "sat_box_ratio[8to1_0deg]", "%.2f") + "x)", 1}}
+      claimed ? std::vector<std::pair<L::Text, int>>{{"The SAT's box: " +
+                                                          L::measured(ms, "sat_box_ratio[8to1_45deg]", "%.2f") +
+                                                          "x the area",
+                                                      sc},
+                                                     {"of an " + eight + " footprint at " +
+                                                          L::given("the footprint's turn, degrees", 45, "%g") + " deg",
+                                                      sc},
+                                                     {"(along the axes: " +
+                                                          L::measured(ms, "sat_box_ratio[8to1_0deg]", "%.2f") + "x)",
+                                                      1}}
               : std::vector<std::pair<L::Text, int>>{};
   auto placeClaim = [&](L::Box band) {
     L::Column lines(f, band);
@@ -336,7 +360,9 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m, const ts::Measur
   {
     ts::Panel ring = L::unitPanel("pick", pic);
     const float px = float(x / kImageW), py = float(y / kImageH), rx = 5.0f / float(pic.w), ry = 5.0f / float(pic.h);
-    ring.batches.push_back(ts::lineLoop({{px - rx, py - ry}, {px + rx, py - ry}, {px + rx, py + ry}, {px - rx, py + ry}}, kAmber, 2.0f, "pick"));
+    ring.batches.push_back(
+        ts::lineLoop({{px - rx, py - ry}, {px + rx, py - ry}, {px + rx, py + ry}, {px - rx, py + ry}}, kAmber, 2.0f,
+                     "pick"));
     f.panels.push_back(ring);
   }
   float below = float(pic.y + pic.h + 6);
@@ -345,7 +371,8 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m, const ts::Measur
     below += float(claimH);
   }
   const L::Box keyBox = wide ? L::Box{4, below, float(leftW), float(h)}
-                             : L::Box{float(pic.x + pic.w + 8), float(pic.y), float(w - 4), float(pic.y + std::max(pic.h, keyH))};
+                             : L::Box{float(pic.x + pic.w + 8), float(pic.y), float(w - 4),
+                                      float(pic.y + std::max(pic.h, keyH))};
   {
     const float after = keyLines(f, keyBox, key, ks);
     L::Column tail(f, {keyBox.x0, after, keyBox.x1, keyBox.y1});
@@ -367,10 +394,13 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m, const ts::Measur
   if (!on) return;
   const double side = std::exp2(std::max(0.0, lambda));
   const glm::dvec2 rip = ripmapLevels(j, bias);
-  const glm::dvec2 ripSize(std::exp2(std::clamp(rip.x, 0.0, double(kLevels - 1))), std::exp2(std::clamp(rip.y, 0.0, double(kLevels - 1))));
+  const glm::dvec2 ripSize(std::exp2(std::clamp(rip.x, 0.0, double(kLevels - 1))),
+                           std::exp2(std::clamp(rip.y, 0.0, double(kLevels - 1))));
   const glm::dvec2 box = satHalfBox(j, bias);
   double u0 = c.x - box.x, u1 = c.x + box.x, v0 = c.y - box.y, v1 = c.y + box.y;
-  auto grow = [&](glm::dvec2 p) { u0 = std::min(u0, p.x), u1 = std::max(u1, p.x), v0 = std::min(v0, p.y), v1 = std::max(v1, p.y); };
+  auto grow = [&](glm::dvec2 p) {
+    u0 = std::min(u0, p.x), u1 = std::max(u1, p.x), v0 = std::min(v0, p.y), v1 = std::max(v1, p.y);
+  };
   for (const glm::dvec2& p : pre) grow(p);
   grow(c - side / 2), grow(c + side / 2), grow(c - ripSize / 2.0), grow(c + ripSize / 2.0);
   const double eu = std::hypot(j.dudx, j.dudy), ev = std::hypot(j.dvdx, j.dvdy);
@@ -389,18 +419,23 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m, const ts::Measur
   quad.role = "texture";
   quad.texture = f.addTexture(tex);
   const float x0 = float(cu - halfU), x1 = float(cu + halfU), y0 = float(cv - halfV), y1 = float(cv + halfV);
-  for (glm::vec2 q : {glm::vec2(x0, y0), glm::vec2(x1, y0), glm::vec2(x1, y1), glm::vec2(x0, y0), glm::vec2(x1, y1), glm::vec2(x0, y1)})
+  for (glm::vec2 q : {glm::vec2(x0, y0), glm::vec2(x1, y0), glm::vec2(x1, y1), glm::vec2(x0, y0), glm::vec2(x1, y1),
+                      glm::vec2(x0, y1)})
     quad.vertices.push_back({glm::vec3(q, 0.0f), glm::vec4(q.x / kTexels, q.y / kTexels, 0.0f, 1.0f), glm::vec4(1.0f)});
   p.batches.push_back(quad);
   if (halfU <= 40 && halfV <= 40) {  // level 0's texel grid, faint
     std::vector<glm::vec2> grid;
-    for (double u = std::ceil(cu - halfU); u <= cu + halfU; ++u) grid.push_back({float(u), y0}), grid.push_back({float(u), y1});
-    for (double t = std::ceil(cv - halfV); t <= cv + halfV; ++t) grid.push_back({x0, float(t)}), grid.push_back({x1, float(t)});
+    for (double u = std::ceil(cu - halfU); u <= cu + halfU; ++u)
+      grid.push_back({float(u), y0}), grid.push_back({float(u), y1});
+    for (double t = std::ceil(cv - halfV); t <= cv + halfV; ++t)
+      grid.push_back({x0, float(t)}), grid.push_back({x1, float(t)});
     p.batches.push_back(ts::lineSegments(grid, kTexelGridColour, 1.0f, "texel_grid"));
   }
   auto rect = [&](glm::dvec2 half, glm::vec4 colour, float width, const char* role) {
-    p.batches.push_back(ts::lineLoop({{float(c.x - half.x), float(c.y - half.y)}, {float(c.x + half.x), float(c.y - half.y)},
-                                      {float(c.x + half.x), float(c.y + half.y)}, {float(c.x - half.x), float(c.y + half.y)}},
+    p.batches.push_back(ts::lineLoop({{float(c.x - half.x), float(c.y - half.y)},
+                                      {float(c.x + half.x), float(c.y - half.y)},
+                                      {float(c.x + half.x), float(c.y + half.y)},
+                                      {float(c.x - half.x), float(c.y + half.y)}},
                                      colour, width, role));
   };
   rect(box, kSatColour, 1.0f, "sat_box");
@@ -417,7 +452,8 @@ inline void Views::buildSupports(ts::Frame& f, const Result* m, const ts::Measur
   for (int q = 0; q < probe.n; ++q) {
     const glm::dvec2 at = probe.at(c, q);
     const float a = float(at.x), b = float(at.y), s = float(std::max(ps, extent / 150));
-    p.batches.push_back(ts::lineLoop({{a - s, b - s}, {a + s, b - s}, {a + s, b + s}, {a - s, b + s}}, kProbeColour, 2.0f, "probe"));
+    p.batches.push_back(
+        ts::lineLoop({{a - s, b - s}, {a + s, b - s}, {a + s, b + s}, {a - s, b + s}}, kProbeColour, 2.0f, "probe"));
   }
   pts.clear();
   for (const glm::dvec2& q : pre) pts.push_back(glm::vec2(q));
@@ -436,7 +472,8 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurem
   const Row* b = m && m->scene == kSlant ? rowAt(m, 45.0) : nullptr;
   if (!a || !b) {
     L::caption(f, {4, float(h / 2), float(w - 4), float(h)},
-               m && m->scene != kSlant ? "the memory view measures the slanted plane (--scene slant)" : "measuring...", kWhite, 1);
+               m && m->scene != kSlant ? "the memory view measures the slanted plane (--scene slant)" : "measuring...",
+               kWhite, 1);
     return;
   }
   const glm::vec4 kBlue{0.35f, 0.65f, 1.0f, 1.0f};
@@ -473,7 +510,8 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurem
   // would still overlap another label tries the other side, else is left
   // out (small windows only).
   auto at = [&](double mx, double my) {
-    return glm::vec2(float(vp.x + (mx - s.x0) / (s.x1 - s.x0) * vp.w), float(vp.y + (1 - (my - s.y0) / (s.y1 - s.y0)) * vp.h));
+    return glm::vec2(float(vp.x + (mx - s.x0) / (s.x1 - s.x0) * vp.w),
+                     float(vp.y + (1 - (my - s.y0) / (s.y1 - s.y0)) * vp.h));
   };
   struct Tag {
     int method;
@@ -486,7 +524,8 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurem
   for (int k = kNearest; k < kMethodCount; ++k) {
     const double mx = memoryRatio(k);
     tags.push_back({k, at(mx, (a->rms[size_t(k)] + b->rms[size_t(k)]) / 2), mx < 1.2 || mx > 3.5,
-                    k == kAniso16 ? "aniso " + L::given("GL_TEXTURE_MAX_ANISOTROPY_EXT", kMaxAniso, "%g") + "x" : L::Text(methodKey(k))});
+                    k == kAniso16 ? "aniso " + L::given("GL_TEXTURE_MAX_ANISOTROPY_EXT", kMaxAniso, "%g") + "x"
+                                  : L::Text(methodKey(k))});
   }
   std::stable_sort(tags.begin(), tags.end(), [](const Tag& p, const Tag& q) {
     return p.mark.x != q.mark.x ? p.mark.x < q.mark.x : p.left != q.left ? p.left : p.mark.y < q.mark.y;
@@ -496,7 +535,9 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurem
     int column = 0;
     for (size_t k = 0; k < tags.size(); ++k) {
       const float tw = ts::text::width(tags[k].name.text, scale);
-      if (tags[k].left ? tags[k].mark.x - gap - tw < float(vp.x) + 2 : tags[k].mark.x + gap + tw > float(vp.x + vp.w) - 2) return false;
+      if (tags[k].left ? tags[k].mark.x - gap - tw < float(vp.x) + 2
+                       : tags[k].mark.x + gap + tw > float(vp.x + vp.w) - 2)
+        return false;
       column = k > 0 && tags[k].mark.x == tags[k - 1].mark.x && tags[k].left == tags[k - 1].left ? column + 1 : 1;
       if (float(column) * L::lineHeight(scale) > float(vp.h) - 4) return false;
     }
@@ -508,7 +549,8 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurem
   for (size_t k = 0; k < tags.size();) {
     size_t e = k;
     while (e < tags.size() && tags[e].mark.x == tags[k].mark.x && tags[e].left == tags[k].left) ++e;
-    for (size_t i = k; i < e; ++i) tags[i].top = std::max(tags[i].mark.y - th / 2, i > k ? tags[i - 1].top + lh : float(vp.y) + 2);
+    for (size_t i = k; i < e; ++i)
+      tags[i].top = std::max(tags[i].mark.y - th / 2, i > k ? tags[i - 1].top + lh : float(vp.y) + 2);
     // A column that runs out of the plot's bottom moves up, not above its top.
     const float over = std::min(tags[e - 1].top + th - float(vp.y + vp.h - 2), tags[k].top - float(vp.y) - 2);
     for (size_t i = k; over > 0 && i < e; ++i) tags[i].top -= over;
@@ -517,13 +559,15 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurem
   ts::Panel leaders;
   leaders.id = "memory_tags";
   leaders.viewport = vp;
-  leaders.projection = glm::ortho(float(vp.x), float(vp.x + vp.w), float(vp.y + vp.h), float(vp.y), -1.0f, 1.0f);  // frame pixels, y down
+  leaders.projection = glm::ortho(float(vp.x), float(vp.x + vp.w), float(vp.y + vp.h), float(vp.y), -1.0f,
+                                  1.0f);  // frame pixels, y down
   std::vector<glm::vec2> segs;
   for (const Tag& t : tags) {
     for (bool left : {t.left, !t.left}) {
       ts::Label l;
       l.x = left ? t.mark.x - gap : t.mark.x + gap, l.y = std::round(t.top);
-      l.text = t.name.text, l.color = s.textColor, l.scale = tagScale, l.align = left ? ts::Align::Right : ts::Align::Left;
+      l.text = t.name.text, l.color = s.textColor, l.scale = tagScale,
+      l.align = left ? ts::Align::Right : ts::Align::Left;
       for (const L::Text::Given& g : t.name.given) l.given.push_back({g.name, g.value});
       if (!L::placeFree(f, l, L::box(vp))) continue;
       const L::Box placed = L::labelBox(f.labels.back());
@@ -536,10 +580,12 @@ inline void Views::buildMemory(ts::Frame& f, const Result* m, const ts::Measurem
   f.panels.push_back(leaders);
 
   notes(f, {4, float(h - 2 * line), float(w - 4), float(h)},
-        {printed(ms, "mip chain {mip_memory_ratio|%.4f}x (nmn, trilinear, aniso, probes, EWA); ripmap {ripmap_memory_ratio|%.5f}x; "
+        {printed(ms, "mip chain {mip_memory_ratio|%.4f}x (nmn, trilinear, aniso, probes, EWA); ripmap "
+                     "{ripmap_memory_ratio|%.5f}x; "
                      "SAT {sat_bits[256]|%.0f} bits a channel = {sat_memory_ratio|%g}x"),
          L::given("texture side, texels", kTexels, "%g") + "x" + L::given("texture side, texels", kTexels, "%g") +
-             " texture; RMS over the slanted plane's far field (LOD " + L::given("the far field's lowest LOD", kFarLo, "%g") + ".." +
+             " texture; RMS over the slanted plane's far field (LOD " +
+             L::given("the far field's lowest LOD", kFarLo, "%g") + ".." +
              L::given("the far field's highest LOD", kFarHi, "%g") + ")"},
         kGrey, sc);
 }
@@ -550,7 +596,8 @@ inline void Views::buildKernels(ts::Frame& f, const Result* m, const ts::Measure
   const int w = f.width, h = f.height;
   const int sc = L::scaleFor({0, 0, w, h}, 2), line = int(L::lineHeight(sc));
   L::FlowSpec spec;
-  spec.n = 2 * kKernelCount, spec.aspect = float(kImageW) / kImageH, spec.linesAbove = 1, spec.linesBelow = 1, spec.gap = 8;
+  spec.n = 2 * kKernelCount, spec.aspect = float(kImageW) / kImageH, spec.linesAbove = 1, spec.linesBelow = 1,
+  spec.gap = 8;
   spec.minCellWidth = 150;
   const std::vector<L::Cell> cells = L::flow({4, 4, float(w - 4), float(h - 2 * line - 4)}, spec);
   for (int k = 0; k < 2 * kKernelCount && k < int(cells.size()); ++k) {
@@ -567,18 +614,20 @@ inline void Views::buildKernels(ts::Frame& f, const Result* m, const ts::Measure
     picturePanel(f, "kernel_" + key, c.picture, row ? &row->picture : nullptr, c.scale);
     if (row)
       L::caption(f, c.below,
-                 printed(ms, "RMS {rms_kernel[" + key + "]|%.2f}, ") + topLevelText() + printed(ms, " {mip_top[" + key + "]|%.0f}"),
+                 printed(ms, "RMS {rms_kernel[" + key + "]|%.2f}, ") + topLevelText() +
+                     printed(ms, " {mip_top[" + key + "]|%.0f}"),
                  colour, c.scale, ts::Align::Left);
   }
   const std::string tops =
       ": the checkerboard's mean in double precision, {mip_mean[srgb]|%.1f} in sRGB values, {mip_mean[linear]|%.1f} "
-      "in linear light; each chain's is off it by at most {mip_top_max_error[srgb]|%.1f} and {mip_top_max_error[linear]|%.1f}: "
+      "in linear light; each chain's is off it by at most {mip_top_max_error[srgb]|%.1f} and "
+      "{mip_top_max_error[linear]|%.1f}: "
       "every level is rounded to ";
   // The foot: the highlight's key with a note beside it, then two notes.
   const float foot = float(h - 2 * line - 2);
   const int fs = std::max(1, sc - 1);
-  const L::Text highlighted =
-      "the chain highlighted (--kernel, --linear-light): " + kernelText(kernel) + (linearLight ? ", linear light" : ", sRGB values");
+  const L::Text highlighted = "the chain highlighted (--kernel, --linear-light): " + kernelText(kernel) +
+                              (linearLight ? ", linear light" : ", sRGB values");
   const float below = keyLines(f, {4, foot, float(w - 4), foot + keyHeight(1, fs)}, {{kAmber, highlighted}}, fs);
   const float right = 4 + keyWidth(highlighted.text, fs) + 16;
   if (right < float(w - 4))
@@ -587,8 +636,9 @@ inline void Views::buildKernels(ts::Frame& f, const Result* m, const ts::Measure
   notes(f, {4, below, float(w - 4), float(h)},
         {"trilinear (GL) with each kernel's mip chain; " + maskText() + ", texture turned " +
              L::given("azimuth, degrees", azimuth, "%g") + " deg",
-         measuresAll(ms, tops) ? topLevelText() + L::measuredText(ms, tops) + L::given("bits a channel", 8, "%g") + " bits"
-                               : topLevelText() + ": the checkerboard's mean"},
+         measuresAll(ms, tops)
+             ? topLevelText() + L::measuredText(ms, tops) + L::given("bits a channel", 8, "%g") + " bits"
+             : topLevelText() + ": the checkerboard's mean"},
         kGrey, fs, ts::Align::Center);
 }
 
@@ -604,12 +654,14 @@ inline void Views::buildBias(ts::Frame& f, const Result* m) const {
   for (int k = 0; k < 2; ++k) {
     ts::plot::Spec s;
     s.id = k == 0 ? "bias_rms_plot" : "bias_flicker_plot";
-    s.title = k == 0 ? "trilinear with LOD bias: far-field RMS against the exact integral (turned " + fmt("%g", azimuth) + " deg)"
+    s.title = k == 0 ? "trilinear with LOD bias: far-field RMS against the exact integral (turned " +
+                           fmt("%g", azimuth) + " deg)"
                      : "flicker: RMS of a frame's change, the plane moving 1/8 texel a frame";
     s.xLabel = k == 1 ? "LOD bias" : "";
     s.scale = sc;
     double ymax = k == 1 ? m->flickerExact : 0;
-    ts::plot::Series line(k == 0 ? "rms" : "flicker", k == 0 ? glm::vec4(0.35f, 0.65f, 1.0f, 1.0f) : kAmber, ts::plot::Mark::Line);
+    ts::plot::Series line(k == 0 ? "rms" : "flicker", k == 0 ? glm::vec4(0.35f, 0.65f, 1.0f, 1.0f) : kAmber,
+                          ts::plot::Mark::Line);
     ts::plot::Series marks(k == 0 ? "rms_points" : "flicker_points", line.color, ts::plot::Mark::Squares);
     for (const BiasRow& r : m->bias) {
       const double y = k == 0 ? r.rms : r.flicker;
@@ -632,47 +684,66 @@ inline void Views::buildBias(ts::Frame& f, const Result* m) const {
     ts::plot::draw(f, s, {0, k * plotH, w, plotH});
   }
   notes(f, {4, float(h - 2 * line), float(w - 4), float(h)},
-        {"seed 001: a positive bias blurs, a negative one sharpens and aliases (and flickers when the surface moves)"}, kGrey, sc,
-        ts::Align::Center);
+        {"seed 001: a positive bias blurs, a negative one sharpens and aliases (and flickers when the surface moves)"},
+        kGrey, sc, ts::Align::Center);
 }
 // The four book figures (the gallery's captions and their {measurements}).
 inline std::vector<ts::FigureSpec> figureSpecs() {
   return {
-      {"filter_zoo_azimuth", "Section VI.1.3 (seeds 001, 003)",
+      {"filter_zoo_azimuth",
+       "Section VI.1.3 (seeds 001, 003)",
        "The mipmap demo's slanted plane with a checkerboard turned 0, 22.5 and 45 degrees, drawn by every minification "
        "filter: GL's (nearest, linear, nearest-mipmap-nearest, trilinear, anisotropic 16x), a ripmap, a summed-area "
        "table, the probe line and EWA, beside the exact area integral over each pixel's preimage. After each name: its "
-       "RMS against the exact integral in the far field (LOD 1.5 to 5). The ripmap and the SAT fit footprints along the "
+       "RMS against the exact integral in the far field (LOD 1.5 "
+       "to 5). The ripmap and the SAT fit footprints along the "
        "texture's axes and lose as the texture turns; the probe line and EWA follow the footprint. "
-       "GL_NEAREST_MIPMAP_NEAREST's error is GL_NEAREST's: the checkerboard's levels up to those the far field reads are "
-       "the same board, so a nearest sample in them takes level 0's colour (the note under the figure measures where the "
+       "GL_NEAREST_MIPMAP_NEAREST's error is GL_NEAREST's: the "
+       "checkerboard's levels up to those the far field reads are "
+       "the same board, so a nearest sample in them takes level "
+       "0's colour (the note under the figure measures where the "
        "two pictures part).",
-       {"--view", "azimuths", "--method", "sat"}, 1500, 1100,
+       {"--view", "azimuths", "--method", "sat"},
+       1500,
+       1100,
        "SAT's error grows from {rms_exact[sat@0]} at 0 deg to {rms_exact[sat@45]} at 45 deg and the ripmap's from "
        "{rms_exact[ripmap@0]} to {rms_exact[ripmap@45]}; the probe line stays at {rms_exact[probes@0]} .. "
        "{rms_exact[probes@45]}, EWA at {rms_exact[ewa@0]} .. {rms_exact[ewa@45]}."},
-      {"filter_zoo_supports", "Section VI.1.3 (inside a pixel)",
+      {"filter_zoo_supports",
+       "Section VI.1.3 (inside a pixel)",
        "One far pixel of the slanted plane with the texture turned 45 degrees: on level 0 of the texture, its exact "
        "preimage (white) and what each method reads instead: trilinear's 2^lambda square (yellow), the ripmap's "
        "2^i x 2^j rectangle (green), the SAT's bounding box (cyan), the probe line's probes (orange), the EWA ellipse "
        "(magenta).",
-       {"--view", "supports", "--azimuth", "45", "--method", "probes", "--pick", "250,100"}, 1200, 640,
+       {"--view", "supports", "--azimuth", "45", "--method", "probes", "--pick", "250,100"},
+       1200,
+       640,
        "At 45 deg the SAT's box is {sat_box_ratio[8to1_45deg]} times an 8:1 footprint; log2(rho_edge/rho_max) = "
        "{lod_form_gap_45deg}."},
-      {"filter_zoo_memory", "Section VI.1.3 (seed 001)",
+      {"filter_zoo_memory",
+       "Section VI.1.3 (seed 001)",
        "Memory against error: each method's storage over the 8-bit texture's (mip chain 4/3, ripmap (2 - 2^-8)^2, SAT "
        "24 bits a channel) against its far-field RMS on the slanted plane, the texture turned 0 (squares) and 45 "
        "degrees (crosses).",
-       {"--view", "memory"}, 1024, 640,
+       {"--view", "memory"},
+       1024,
+       640,
        "A ripmap costs {ripmap_memory_ratio} times the texture (seed 001: 3x), a SAT {sat_bits[256]} bits a channel "
        "(seed 001: >= 16); the probe line reads the mip chain alone ({mip_memory_ratio})."},
-      {"mip_kernels", "Section VI.1.3 (seed 001)",
-       "Trilinear filtering of the slanted plane (texture turned 45 degrees) with mip chains made by six kernels (Buss's "
-       "2x2 box, Crow's tent, a Gaussian, Lanczos-2 and -3, a Kaiser-windowed sinc), each averaged in sRGB values and in "
+      {"mip_kernels",
+       "Section VI.1.3 (seed 001)",
+       "Trilinear filtering of the slanted plane (texture turned "
+       "45 degrees) with mip chains made by six kernels (Buss's "
+       "2x2 box, Crow's tent, a Gaussian, Lanczos-2 and -3, a "
+       "Kaiser-windowed sinc), each averaged in sRGB values and in "
        "linear light: far-field RMS against the exact integral, and the 1x1 level.",
-       {"--view", "kernels", "--azimuth", "45"}, 1400, 760,
-       "The checkerboard's mean is {mip_mean[srgb]} in sRGB values and {mip_mean[linear]} in linear light; every kernel's "
-       "1x1 level is within {mip_top_max_error[srgb]} and {mip_top_max_error[linear]} of it (8-bit rounding at each level: "
+       {"--view", "kernels", "--azimuth", "45"},
+       1400,
+       760,
+       "The checkerboard's mean is {mip_mean[srgb]} in sRGB values "
+       "and {mip_mean[linear]} in linear light; every kernel's "
+       "1x1 level is within {mip_top_max_error[srgb]} and "
+       "{mip_top_max_error[linear]} of it (8-bit rounding at each level: "
        "the box chain ends at {mip_top[box_linear]}, the tent's at {mip_top[tent_linear]})."},
   };
 }

@@ -83,7 +83,8 @@ using jitter::Pattern;
 using namespace jitter::views;  // the modes, the results and their drawing
 enum View { kViewMode, kViewCompare, kViewPlot, kViewZone };
 enum Average { kAuto, kAccum, kFbo };
-constexpr Pattern kKinds[4] = {Pattern::Regular, Pattern::JitterGlobal, Pattern::JitterPixel, Pattern::Random};  // kKindKeys
+constexpr Pattern kKinds[4] = {Pattern::Regular, Pattern::JitterGlobal, Pattern::JitterPixel,
+                               Pattern::Random};  // kKindKeys
 
 using ts::layout::fmt;
 
@@ -105,7 +106,8 @@ class Jitter final : public ts::Scene {
   std::vector<std::string> claim() const override { return {"aliasing[*"}; }
 
   void addOptions(ts::Options& o) override {
-    o.addEnum("mode", &mode_, {kModeNames[0], kModeNames[1], kModeNames[2], kModeNames[3], kModeNames[4], kModeNames[5]},
+    o.addEnum("mode", &mode_,
+              {kModeNames[0], kModeNames[1], kModeNames[2], kModeNames[3], kModeNames[4], kModeNames[5]},
               "one sample | regular n x n | jittered, one pattern for all pixels | jittered per pixel | reference | "
               "pure random n x n per pixel",
               'm');
@@ -113,7 +115,8 @@ class Jitter final : public ts::Scene {
     o.addInt("seed", &seed_, 0, 1000000, "seed of the jitter (the hash of seed, pixel and sample)", 's', 'S');
     o.addEnum("view", &view_, {"mode", "compare", "plot", "zone"},
               "mode: the current mode large; compare: every mode and the sample patterns; plot: error vs n; "
-              "zone: where aliasing sets in on a zone plate", 'v');
+              "zone: where aliasing sets in on a zone plate",
+              'v');
     o.addBool("error", &showError_, "show the error against the reference (orange brighter, blue darker, x3)", 'e');
     o.addEnum("average", &average_, {"auto", "accum", "fbo"},
               "how the passes are averaged: glAccum when the context has an accumulation buffer (auto), or FBO "
@@ -212,9 +215,9 @@ void Jitter::ensure(ts::Renderer& r, int kind, int side) {
   res.texture = imageTexture(res.image, kKindKeys[kind],
                              {{"samples", n},
                               {"seed", kKinds[kind] == Pattern::Regular ? "-" : std::to_string(seed_)},
-                              {"averaging", shader ? "shader"
-                                            : accum_                             ? "glAccum"
-                                                                                 : "fbo"}});
+                              {"averaging", shader   ? "shader"
+                                            : accum_ ? "glAccum"
+                                                     : "fbo"}});
   res.errorTexture = errorTexture(res);
   res.valid = true;
 }
@@ -229,7 +232,8 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
   for (int kind = 0; kind < 4; ++kind) ts::measureProgress((1 + kind) / passes), ensure(r, kind, side_);
   if (view_ == kViewPlot)
     for (int kind = 0; kind < 3; ++kind)
-      for (int side = 1; side <= kMaxSide; ++side) ts::measureProgress((5 + kind * kMaxSide + side - 1) / passes), ensure(r, kind, side);
+      for (int side = 1; side <= kMaxSide; ++side)
+        ts::measureProgress((5 + kind * kMaxSide + side - 1) / passes), ensure(r, kind, side);
   ts::Measurements out;
   const std::string n = std::to_string(side_) + "x" + std::to_string(side_);
   struct Row {
@@ -243,7 +247,8 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
               {"random", &result(3, side_), n + " pure random points per pixel (GL, as jitter_pixel)"}};
   for (const Row& row : rows) {
     std::string k = std::string("[") + row.key + "]";
-    out.push_back({"rms" + k, row.res->stats.rms, "RMS error vs the 256-sample reference (1 = full scale); " + row.what});
+    out.push_back(
+        {"rms" + k, row.res->stats.rms, "RMS error vs the 256-sample reference (1 = full scale); " + row.what});
     out.push_back({"aliasing" + k, row.res->stats.aliasing,
                    "RMS of the error its 24 neighbours' errors predict: interference, moire"});
     out.push_back({"noise" + k, row.res->stats.noise, "RMS of the unpredictable rest: grain"});
@@ -252,14 +257,17 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
   for (Pattern p : {Pattern::Random, Pattern::JitterPixel})
     out.push_back({std::string("rms_cpu[") + (p == Pattern::Random ? "random" : "jitter_pixel") + "_" + n + "]",
                    jitter::cpuRms(p, side_, uint32_t(seed_), reference_),
-                   p == Pattern::Random ? "RMS error, n x n points anywhere in the pixel (pure random: they cluster), CPU"
-                                        : "RMS error, n x n jittered per pixel, the same CPU model"});
+                   p == Pattern::Random
+                       ? "RMS error, n x n points anywhere in the pixel (pure random: they cluster), CPU"
+                       : "RMS error, n x n jittered per pixel, the same CPU model"});
   jitter::zoneMeasure(r, out, side_, uint32_t(seed_), &found_.zone);  // the zone plate's aliasing onset
   if (view_ == kViewPlot)
     for (int kind = 0; kind < 3; ++kind)
       for (int side = 1; side <= kMaxSide; ++side) {
-        std::string k = std::string("[") + kKindKeys[kind] + "_" + std::to_string(side) + "x" + std::to_string(side) + "]";
-        out.push_back({"rms" + k, result(kind, side).stats.rms, "RMS error, " + std::to_string(side * side) + " samples"});
+        std::string k = std::string("[") + kKindKeys[kind] + "_" + std::to_string(side) + "x" + std::to_string(side) +
+                        "]";
+        out.push_back(
+            {"rms" + k, result(kind, side).stats.rms, "RMS error, " + std::to_string(side * side) + " samples"});
         out.push_back({"aliasing" + k, result(kind, side).stats.aliasing, "its predictable part"});
       }
   out.detail = found_;

@@ -201,7 +201,8 @@ inline ts::Frame groundPass(const Camera& c, glm::dvec2 samplePos) {
 // Two triangles over the whole viewport (clip coordinates -1..1): the
 // fragment shader is then run once per pixel.
 inline void fullViewport(ts::Batch& b) {
-  for (auto q : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+  for (auto q :
+       {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
     ts::Vertex v;
     v.pos = glm::vec3(q, 0.0f);
     b.vertices.push_back(v);
@@ -317,8 +318,8 @@ inline void zoneMeasure(ts::Renderer& r, ts::Measurements& out, int n, uint32_t 
   for (int k : n == 1 ? std::vector<int>{0} : std::vector<int>{0, 1})
     out.push_back({"alias_onset_gl[" + std::string(k == 0 ? "1x1" : nn) + "]", plate.sweeps[size_t(k)].onset,
                    "the same onset read from a GL render of the zone plate (8-bit pixels), regular samples"});
-  out.push_back({"alias_onset_gl[jitter_pixel_" + nn + "]", plate.sweeps[2].onset,
-                 "the same, GL, jittered per pixel (noise)"});
+  out.push_back(
+      {"alias_onset_gl[jitter_pixel_" + nn + "]", plate.sweeps[2].onset, "the same, GL, jittered per pixel (noise)"});
   plate.valid = true;
   *keep = std::move(plate);
 }

@@ -140,9 +140,7 @@ inline glm::dvec2 jittered(uint32_t key, int n, int k) {
   float u = unitFloat(hash32(key + 2u * uint32_t(k))), v = unitFloat(hash32(key + 2u * uint32_t(k) + 1u));
   return {double((float(a) + u) / float(n)), double((float(b) + v) / float(n))};
 }
-inline glm::dvec2 regular(int n, int k) {
-  return {(k % n + 0.5) / n, (k / n + 0.5) / n};
-}
+inline glm::dvec2 regular(int n, int k) { return {(k % n + 0.5) / n, (k / n + 0.5) / n}; }
 
 // Pure random sampling (Buss VI.1.4 contrasts it with jittering): n x n points anywhere in the
 // pixel, drawn independently per pixel, no strata — so they can cluster

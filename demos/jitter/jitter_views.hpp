@@ -47,34 +47,43 @@ const glm::vec4 kSeriesColour[3] = {{0.35f, 0.65f, 1.0f, 1.0f}, {1.0f, 0.55f, 0.
 // The demo's figures (jitter.cpp's figures()).
 inline std::vector<ts::FigureSpec> figureSpecs() {
   return {
-        {"vi7_jitter", "Figure VI.7",
-         "A checkerboard receding to the horizon, 288x192 pixels each: one sample per pixel; 3x3 samples at the "
-         "subpixel centres; 3x3 jittered with one pattern for every pixel (the accumulation buffer); 3x3 jittered "
-         "independently per pixel; below, each one's error against a 256-sample reference (x3). Regular samples "
-         "and one jitter pattern for all pixels keep interference patterns; jitter chosen per pixel turns them into "
-         "grain. Bottom: the reference, and the sample patterns of Figure VI.7: regular; jittered, one pattern for "
-         "every pixel; jittered anew in each pixel (2x2 pixels shown).",
-         {"--view", "compare", "--samples", "3", "--seed", "1"}, 1320, 760,
-         "Aliasing (the error the neighbours' errors predict) at 3x3 samples: regular {aliasing[regular]}, one "
-         "jitter pattern {aliasing[jitter_global]}, jittered per pixel {aliasing[jitter_pixel]}."},
-        {"vi7_error_vs_samples", "Figure VI.7 (error vs samples)",
-         "RMS error against the reference, and its aliasing (the part of each pixel's error its neighbours' errors "
-         "predict), for 1, 4, 9 and 16 samples per pixel: "
-         "the error falls as samples rise; jitter per pixel leaves almost no aliasing; one jitter pattern for all "
-         "pixels keeps much of it (with seed 1 about as much as regular sampling; how much depends on the pattern).",
-         {"--view", "plot", "--seed", "1"}, 1024, 600,
-         "Jittered per pixel, the RMS error falls from {rms[jitter_pixel_1x1]} (1 sample) to {rms[jitter_pixel_4x4]} "
-         "(16) with aliasing {aliasing[jitter_pixel_4x4]}; regular 4x4 keeps {aliasing[regular_4x4]}."},
-        {"jitter_zone_plate", "Figure VI.7 (where aliasing sets in)",
-         "A zone plate, its frequency rising upwards from 0.02 to 3 cycles per pixel (bands of 2 rows, 64 pixels "
-         "wide, shown 2x), rendered by GL with 1 sample per pixel, 3x3 samples at the subpixel centres and 3x3 "
-         "jittered per pixel; right, the alias of each band, its error against the exact box filter of the pixel "
-         "as a fraction of the box-filtered signal, with the onsets (the alias reaching half the signal) marked: "
-         "at the sample grid's Nyquist, 0.5 and 1.5 cycles per pixel. Jitter's error starts lower and stays noise.",
-         {"--view", "zone", "--samples", "3", "--seed", "1"}, 1100, 700,
-         "Aliasing sets in at {alias_onset_gl[1x1]} cycles per pixel with 1 sample and at {alias_onset_gl[3x3]} with "
-         "3x3 regular samples (GL; the CPU model: {alias_onset_cpp[1x1]}, {alias_onset_cpp[3x3]})."},
-    };
+      {"vi7_jitter",
+       "Figure VI.7",
+       "A checkerboard receding to the horizon, 288x192 pixels each: one sample per pixel; 3x3 samples at the "
+       "subpixel centres; 3x3 jittered with one pattern for every pixel (the accumulation buffer); 3x3 jittered "
+       "independently per pixel; below, each one's error against a 256-sample reference (x3). Regular samples "
+       "and one jitter pattern for all pixels keep interference patterns; jitter chosen per pixel turns them into "
+       "grain. Bottom: the reference, and the sample patterns of Figure VI.7: regular; jittered, one pattern for "
+       "every pixel; jittered anew in each pixel (2x2 pixels shown).",
+       {"--view", "compare", "--samples", "3", "--seed", "1"},
+       1320,
+       760,
+       "Aliasing (the error the neighbours' errors predict) at 3x3 samples: regular {aliasing[regular]}, one "
+       "jitter pattern {aliasing[jitter_global]}, jittered per pixel {aliasing[jitter_pixel]}."},
+      {"vi7_error_vs_samples",
+       "Figure VI.7 (error vs samples)",
+       "RMS error against the reference, and its aliasing (the part of each pixel's error its neighbours' errors "
+       "predict), for 1, 4, 9 and 16 samples per pixel: "
+       "the error falls as samples rise; jitter per pixel leaves almost no aliasing; one jitter pattern for all "
+       "pixels keeps much of it (with seed 1 about as much as regular sampling; how much depends on the pattern).",
+       {"--view", "plot", "--seed", "1"},
+       1024,
+       600,
+       "Jittered per pixel, the RMS error falls from {rms[jitter_pixel_1x1]} (1 sample) to {rms[jitter_pixel_4x4]} "
+       "(16) with aliasing {aliasing[jitter_pixel_4x4]}; regular 4x4 keeps {aliasing[regular_4x4]}."},
+      {"jitter_zone_plate",
+       "Figure VI.7 (where aliasing sets in)",
+       "A zone plate, its frequency rising upwards from 0.02 to 3 cycles per pixel (bands of 2 rows, 64 pixels "
+       "wide, shown 2x), rendered by GL with 1 sample per pixel, 3x3 samples at the subpixel centres and 3x3 "
+       "jittered per pixel; right, the alias of each band, its error against the exact box filter of the pixel "
+       "as a fraction of the box-filtered signal, with the onsets (the alias reaching half the signal) marked: "
+       "at the sample grid's Nyquist, 0.5 and 1.5 cycles per pixel. Jitter's error starts lower and stays noise.",
+       {"--view", "zone", "--samples", "3", "--seed", "1"},
+       1100,
+       700,
+       "Aliasing sets in at {alias_onset_gl[1x1]} cycles per pixel with 1 sample and at {alias_onset_gl[3x3]} with "
+       "3x3 regular samples (GL; the CPU model: {alias_onset_cpp[1x1]}, {alias_onset_cpp[3x3]})."},
+  };
 }
 
 // One image measure() made, and its error against the reference.
@@ -151,7 +160,8 @@ struct Views {
   void buildPlot(ts::Frame& f, const Found& fd) const;
   void buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) const;
   // Draws one plot of the sweep in `area`; returns its data area.
-  ts::Rect addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd, int scale) const;
+  ts::Rect addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd,
+                   int scale) const;
 };
 
 inline const Result* Views::current(const Found& fd) const {
@@ -190,8 +200,14 @@ inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int
   for (int cy = 0; cy < cells; ++cy)
     for (int cx = 0; cx < cells; ++cx) {
       float x0 = float(box.x) + cx * cell, y0 = float(box.y) + cy * cell;
-      border.insert(border.end(), {{x0, y0}, {x0 + cell, y0}, {x0 + cell, y0}, {x0 + cell, y0 + cell},
-                                   {x0 + cell, y0 + cell}, {x0, y0 + cell}, {x0, y0 + cell}, {x0, y0}});
+      border.insert(border.end(), {{x0, y0},
+                                   {x0 + cell, y0},
+                                   {x0 + cell, y0},
+                                   {x0 + cell, y0 + cell},
+                                   {x0 + cell, y0 + cell},
+                                   {x0, y0 + cell},
+                                   {x0, y0 + cell},
+                                   {x0, y0}});
       if (mode != kOne && mode != kRandom && n <= 8)  // random has no strata
         for (int k = 1; k < n; ++k) {
           float t = float(k) / float(n) * cell;
@@ -199,8 +215,11 @@ inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int
         }
       // The pixel shown: for jitter-pixel, (100 + cx, 100 + 1 - cy) of the image (GL rows from the bottom).
       const int pi = 100 + cx, pj = 100 + (cells - 1 - cy);
-      Pattern p = mode == kJitterGlobal ? Pattern::JitterGlobal : mode == kJitterPixel ? Pattern::JitterPixel
-                  : mode == kReference ? Pattern::Reference : mode == kRandom ? Pattern::Random : Pattern::Regular;
+      Pattern p = mode == kJitterGlobal  ? Pattern::JitterGlobal
+                  : mode == kJitterPixel ? Pattern::JitterPixel
+                  : mode == kReference   ? Pattern::Reference
+                  : mode == kRandom      ? Pattern::Random
+                                         : Pattern::Regular;
       for (int k = 0; k < n * n; ++k) {
         glm::dvec2 s = jitter::samplePos(p, n, uint32_t(seed_), pi, pj, k);
         dots.push_back({x0 + float(s.x) * cell, y0 + float(1.0 - s.y) * cell});
@@ -214,14 +233,17 @@ inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int
   canvas.batches.push_back(d);
   if (labels) {
     std::string nn = std::to_string(n) + "x" + std::to_string(n);
-    std::string l1 = mode == kOne ? "1 sample" : mode == kReference ? "16x16 stratified" : mode == kRegular ? nn + " regular"
-                     : mode == kRandom ? nn + " random" : nn + " jittered";
-    std::string l2 = mode == kOne ? "the pixel centre"
-                     : mode == kRegular ? "subpixel centres"
+    std::string l1 = mode == kOne         ? "1 sample"
+                     : mode == kReference ? "16x16 stratified"
+                     : mode == kRegular   ? nn + " regular"
+                     : mode == kRandom    ? nn + " random"
+                                          : nn + " jittered";
+    std::string l2 = mode == kOne            ? "the pixel centre"
+                     : mode == kRegular      ? "subpixel centres"
                      : mode == kJitterGlobal ? "same in every pixel"
-                     : mode == kJitterPixel ? "new in every pixel"
-                     : mode == kRandom ? "anywhere, new per pixel"
-                                            : "jittered (the reference)";
+                     : mode == kJitterPixel  ? "new in every pixel"
+                     : mode == kRandom       ? "anywhere, new per pixel"
+                                             : "jittered (the reference)";
     // Under the box, in a band as wide as the box and its margins, two lines at `scale`.
     const float half = (labelW > 0 ? labelW : std::max(float(box.w), 120.0f * float(scale))) / 2,
                 cx = float(box.x + box.w / 2), y = float(box.y + box.h + 5), line = float(16 * scale);
@@ -235,12 +257,12 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   namespace L = ts::layout;
   const int W = jitter::kImageW, H = jitter::kImageH;
   std::string n = std::to_string(side_) + "x" + std::to_string(side_);
-  std::string what = mode_ == kOne ? "1 sample per pixel"
-                     : mode_ == kRegular ? n + " regular samples per pixel"
+  std::string what = mode_ == kOne            ? "1 sample per pixel"
+                     : mode_ == kRegular      ? n + " regular samples per pixel"
                      : mode_ == kJitterGlobal ? n + " jittered, one pattern for all pixels"
-                     : mode_ == kJitterPixel ? n + " jittered independently per pixel"
-                     : mode_ == kRandom ? n + " pure random points per pixel (they cluster)"
-                                             : "reference: 16x16 stratified samples per pixel";
+                     : mode_ == kJitterPixel  ? n + " jittered independently per pixel"
+                     : mode_ == kRandom       ? n + " pure random points per pixel (they cluster)"
+                                              : "reference: 16x16 stratified samples per pixel";
   // The image as large as the window allows (whole zooms are pixel-exact;
   // a zoom is rounded down to a whole one when that loses little), the
   // sample pattern and the numbers beside it (a wide window) or under it,
@@ -274,7 +296,8 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   const Place p = placeAt(sc);
   const ts::Rect rect = p.rect;
   std::string title = "Figure VI.7: " + what + (showError_ ? "  (error x3)" : "");
-  if (ts::text::width(title, sc) > float(f.width - 25)) title = title.substr(7);  // "Figure " goes before the scale does
+  if (ts::text::width(title, sc) > float(f.width - 25))
+    title = title.substr(7);  // "Figure " goes before the scale does
   L::caption(f, {12, 8, float(f.width) - 12, float(p.top - 2)}, title, kWhite, sc, ts::Align::Left);
   const Result* res = current(fd);
   if (res) addImage(f, "image", rect, showError_ ? res->errorTexture : res->texture);
@@ -315,7 +338,8 @@ inline void Views::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd
   auto scaleFor = [&](int cols, int numberLines) {
     const int R = 4 / cols;
     const int textH = 2 * line + 2 + R * ((numberLines + 1) * line + 10) + 2 * line + R * (2 * line) + 8;
-    return std::min({1.0, double(f.width - 16 - (cols - 1) * gap) / (cols * W), double(f.height - textH) / (3 * R * H)});
+    return std::min(
+        {1.0, double(f.width - 16 - (cols - 1) * gap) / (cols * W), double(f.height - textH) / (3 * R * H)});
   };
   int cols = scaleFor(2, 3) > scaleFor(4, 2) * 1.05 ? 2 : 4;
   double s = scaleFor(cols, 2);
@@ -349,7 +373,10 @@ inline void Views::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd
   };
   for (int k = 0; k < 4; ++k) {
     const Result& res = modes[k] == kOne ? fd.at(0, 1)
-                                         : fd.at(modes[k] == kRegular ? 0 : modes[k] == kJitterGlobal ? 1 : 2, side_);
+                                         : fd.at(modes[k] == kRegular        ? 0
+                                                 : modes[k] == kJitterGlobal ? 1
+                                                                             : 2,
+                                                 side_);
     int x = left + (k % cols) * (w + g), r = k / cols;
     int ya = rowA + r * blockA + line, yb = rowB + r * (h + g);
     addImage(f, std::string("image_") + kModeNames[modes[k]], {x, ya, w, h}, res.texture);
@@ -382,7 +409,7 @@ inline void Views::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd
 }
 
 inline ts::Rect Views::addPlot(ts::Frame& f, ts::Rect area, const std::string& title, bool aliasing, const Found& fd,
-                           int scale) const {
+                               int scale) const {
   namespace plot = ts::plot;
   plot::Spec p;
   p.id = aliasing ? "plot_aliasing" : "plot_rms";
@@ -435,11 +462,13 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
     for (p.tableScale = sc; p.tableScale >= 1; --p.tableScale) {
       const int t = p.tableScale;
       // (the names are keys: a swatch as tall as the text before each)
-      p.nameW = std::min(ts::text::height(t) + 4.0f * float(t) + ts::text::width(kKindTitles[1], t) + 12, float(f.width) / 3);
+      p.nameW = std::min(ts::text::height(t) + 4.0f * float(t) + ts::text::width(kKindTitles[1], t) + 12,
+                         float(f.width) / 3);
       p.colW = std::min(150.0f * float(t), (float(f.width) - 16 - p.nameW) / 4.0f);
       p.twoLines = p.colW < ts::text::width("0.0000 / 0.0000", t) + 8;
       // Above scale 1 only on one line a row: the plots, the figure's claim, keep the height.
-      if (t == 1 || (!p.twoLines && ts::text::height(t) + 4.0f * float(t) + ts::text::width(kKindTitles[1], t) <= p.nameW - 4))
+      if (t == 1 ||
+          (!p.twoLines && ts::text::height(t) + 4.0f * float(t) + ts::text::width(kKindTitles[1], t) <= p.nameW - 4))
         break;
     }
     p.tableLine = int(L::lineHeight(p.tableScale));
@@ -448,7 +477,8 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
     return p;
   };
   auto plotArea = [&](const Place& p) {
-    return f.width >= f.height ? ts::Rect{0, 2 * p.line, f.width / 2, p.plotsH} : ts::Rect{0, 2 * p.line, f.width, p.plotsH / 2};
+    return f.width >= f.height ? ts::Rect{0, 2 * p.line, f.width / 2, p.plotsH}
+                               : ts::Rect{0, 2 * p.line, f.width, p.plotsH / 2};
   };
   // The scale the plots' data areas ask for, each laid out on a scratch frame (the wider title).
   const int sc = L::fitScale([&](int s) {
@@ -461,7 +491,8 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
   const bool twoLines = pl.twoLines;
   L::caption(f, {4, 6, float(f.width) - 4, float(6 + line)},
              "Figure VI.7  error against a " +
-                 L::given("reference samples per pixel", double(jitter::kReferenceSide * jitter::kReferenceSide), "%g") +
+                 L::given("reference samples per pixel", double(jitter::kReferenceSide * jitter::kReferenceSide),
+                          "%g") +
                  "-sample reference, seed " + L::given("seed", seed_, "%g"),
              kWhite, sc);
   for (const auto& row : fd.results)
@@ -469,12 +500,11 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
       if (!res.valid) return;  // measure() makes them (view=plot)
   if (f.width >= f.height) {
     addPlot(f, {0, 2 * line, f.width / 2, plotsH}, "RMS error (1 = full scale)", false, fd, sc);
-    addPlot(f, {f.width / 2, 2 * line, f.width - f.width / 2, plotsH},
-            "aliasing (the predictable part)", true, fd, sc);
+    addPlot(f, {f.width / 2, 2 * line, f.width - f.width / 2, plotsH}, "aliasing (the predictable part)", true, fd, sc);
   } else {
     addPlot(f, {0, 2 * line, f.width, plotsH / 2}, "RMS error (1 = full scale)", false, fd, sc);
-    addPlot(f, {0, 2 * line + plotsH / 2, f.width, plotsH - plotsH / 2},
-            "aliasing (the predictable part)", true, fd, sc);
+    addPlot(f, {0, 2 * line + plotsH / 2, f.width, plotsH - plotsH / 2}, "aliasing (the predictable part)", true, fd,
+            sc);
   }
   float y = float(2 * line + plotsH + 4);
   const float x0 = std::max(8.0f, (float(f.width) - nameW - 4 * colW) / 2.0f);
@@ -488,9 +518,11 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
   for (int kind = 0; kind < 3; ++kind) {
     y += float(pl.tableLine);
     // The row's name is the key of its colour in both plots: a swatch and the name.
-    L::legend(f, {x0, y, x0 + nameW, y + float(pl.tableLine)}, {{kSeriesColour[kind], kKindTitles[kind]}}, pl.tableScale);
+    L::legend(f, {x0, y, x0 + nameW, y + float(pl.tableLine)}, {{kSeriesColour[kind], kKindTitles[kind]}},
+              pl.tableScale);
     for (int side = 1; side <= kMaxSide; ++side) {
-      const std::string key = std::string("[") + kKindKeys[kind] + "_" + std::to_string(side) + "x" + std::to_string(side) + "]";
+      const std::string key = std::string("[") + kKindKeys[kind] + "_" + std::to_string(side) + "x" +
+                              std::to_string(side) + "]";
       cell(x0 + nameW + colW * float(side - 1), colW,
            twoLines ? num("rms" + key) : num("rms" + key) + " / " + num("aliasing" + key), kSeriesColour[kind]);
     }
@@ -498,7 +530,8 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
       y += float(pl.tableLine);
       for (int side = 1; side <= kMaxSide; ++side)
         cell(x0 + nameW + colW * float(side - 1), colW,
-             num(std::string("aliasing[") + kKindKeys[kind] + "_" + std::to_string(side) + "x" + std::to_string(side) + "]"),
+             num(std::string("aliasing[") + kKindKeys[kind] + "_" + std::to_string(side) + "x" + std::to_string(side) +
+                 "]"),
              kSeriesColour[kind]);
     }
   }
@@ -512,8 +545,9 @@ inline void Views::buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   namespace plot = ts::plot;
   const int line = 17;
   L::caption(f, {4, 4, float(f.width) - 4, float(line + 4)},
-             "Figure VI.7  where aliasing sets in: a zone plate, " + L::given("lowest frequency (the sweep's step)", zone::kStep, "%g") +
-                 " to " + L::given("highest frequency", zone::kMaxF, "%g") + " cycles per pixel upwards",
+             "Figure VI.7  where aliasing sets in: a zone plate, " +
+                 L::given("lowest frequency (the sweep's step)", zone::kStep, "%g") + " to " +
+                 L::given("highest frequency", zone::kMaxF, "%g") + " cycles per pixel upwards",
              kWhite, 1);
   const zone::Plate& z = fd.zone;
   if (!z.valid) return;  // measure() makes it
@@ -531,8 +565,8 @@ inline void Views::buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   std::vector<glm::vec2> onsetLines[3];
   for (int k = 0; k < 3; ++k) {
     const int x = left + k * (w + gap);
-    ts::TextureDesc t = renderedImageTexture(z.images[size_t(k)], "jitter_render", "zone_plate",
-                                             "jitter", {{"samples", titles[k]}});
+    ts::TextureDesc t = renderedImageTexture(z.images[size_t(k)], "jitter_render", "zone_plate", "jitter",
+                                             {{"samples", titles[k]}});
     if (zoom < 1) t.minFilter = GL_LINEAR;
     f.panels.push_back(ts::layout::texturePanel("zone_" + std::to_string(k), {x, top, w, h}, f.addTexture(t)));
     L::caption(f, {float(x - gap / 2), float(top - line - 2), float(x + w + gap / 2), float(top - 2)}, titles[k],
@@ -548,8 +582,8 @@ inline void Views::buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   // The frequency scale left of the images.
   for (double fr : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}) {
     const float y = float(top + h) - float((fr / zone::kStep) * zone::kGlBandRows * (double(h) / imgH));
-    L::caption(f, {4, y - line / 2.0f, float(left - 6), y + line / 2.0f}, L::given("frequency, cycles per pixel", fr, "%.1f"),
-               kGrey, 1, ts::Align::Right);
+    L::caption(f, {4, y - line / 2.0f, float(left - 6), y + line / 2.0f},
+               L::given("frequency, cycles per pixel", fr, "%.1f"), kGrey, 1, ts::Align::Right);
   }
   for (int k = 0; k < 3; ++k)
     if (!onsetLines[k].empty()) canvas.batches.push_back(ts::lineSegments(onsetLines[k], colours[k], 2.0f, "onset"));
@@ -576,7 +610,8 @@ inline void Views::buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
     p.legend.push_back({titles[k], colours[k]});
     if (sw.onset > 0) p.markers.push_back({sw.onset, colours[k], "onset", num(onsetNames[k], "%.2f")});
   }
-  p.series.push_back(plot::Series("threshold", kGrey, plot::Mark::Line, {{0, zone::kThreshold}, {zone::kMaxF, zone::kThreshold}}, 1.0f));
+  p.series.push_back(plot::Series("threshold", kGrey, plot::Mark::Line,
+                                  {{0, zone::kThreshold}, {zone::kMaxF, zone::kThreshold}}, 1.0f));
   const int px = left + 3 * (w + gap) + 8;
   plot::draw(f, p, {px, 2 * line, f.width - px - 4, f.height - 2 * line - 4});
 }

@@ -72,7 +72,8 @@ inline double render(Pattern p, int n, uint32_t seed, double f, double phi, int 
 inline std::vector<double> errorBand(Pattern p, int n, uint32_t seed, double f, double phi, int w, int h, int i0 = 0) {
   std::vector<double> e(size_t(w) * size_t(h));
   for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) e[size_t(j) * size_t(w) + size_t(i)] = render(p, n, seed, f, phi, i0 + i, j) - truth(f, phi, i0 + i);
+    for (int i = 0; i < w; ++i)
+      e[size_t(j) * size_t(w) + size_t(i)] = render(p, n, seed, f, phi, i0 + i, j) - truth(f, phi, i0 + i);
   return e;
 }
 

@@ -136,40 +136,50 @@ class MipmapPopping final : public ts::Scene {
 
   std::vector<ts::FigureSpec> figures() const override {
     return {
-        {"mip_popping_filmstrip", "Section VI.1.3",
+        {"mip_popping_filmstrip",
+         "Section VI.1.3",
          "A plane facing the eye at eight distances, 1/4 level apart (left half: the texture; right half: a texture "
          "whose mip levels are coloured). Top: GL_NEAREST_MIPMAP_NEAREST uses one level and jumps to the next at "
          "LOD k + 1/2 (popping). Bottom: GL_LINEAR_MIPMAP_LINEAR blends the two nearest levels: the colour, and the "
          "blur, change smoothly.",
          {"--view", "filmstrip", "--filter", "nearest-mipmap-nearest", "--distance-log2", "2.875", "--levels", "split"},
-         1024, 400,
+         1024,
+         400,
          "One level per pixel pops: the colour jumps by {popping[nearest_mipmap_nearest]} (8-bit) at a level change, "
          "{popping_ratio} times trilinear's largest step; the chain costs {mip_overhead} more memory."},
-        {"mip_popping_plot", "Section VI.1.3",
+        {"mip_popping_plot",
+         "Section VI.1.3",
          "Mean colour of a probe region (coloured mip levels) against log2 distance, in steps of 1/16 level. "
          "GL_NEAREST_MIPMAP_NEAREST (top) steps from one level's colour to the next: popping. "
          "GL_LINEAR_MIPMAP_LINEAR (bottom) ramps between them. The popping measure is the largest jump between "
          "neighbouring distances.",
-         {"--view", "plot", "--filter", "nearest-mipmap-nearest", "--distance-log2", "2.875"}, 1024, 640,
+         {"--view", "plot", "--filter", "nearest-mipmap-nearest", "--distance-log2", "2.875"},
+         1024,
+         640,
          "Largest step of the probe's mean colour, distances 1/16 level apart: {popping[nearest_mipmap_nearest]} "
          "with GL_NEAREST_MIPMAP_NEAREST, {popping[linear_mipmap_linear]} with GL_LINEAR_MIPMAP_LINEAR."},
-        {"mip_anisotropic", "Section VI.1.3",
+        {"mip_anisotropic",
+         "Section VI.1.3",
          "A ground plane seen at a slant: the supersampled reference (8x8 samples of level 0 per pixel) and the "
          "seven filters. GL_NEAREST and GL_LINEAR alias; the mipmap filters choose their level from the long side "
          "of the pixel's footprint and over-blur the distance, most visibly trilinear "
          "(GL_LINEAR_MIPMAP_LINEAR); anisotropic filtering (16) keeps the detail across the view. Numbers: RMS "
          "error against the reference in the far field (LOD 1.5 to 5, between the white lines).",
-         {"--view", "slant", "--filter", "linear-mipmap-linear", "--anisotropy", "16", "--levels", "texture"}, 1280,
+         {"--view", "slant", "--filter", "linear-mipmap-linear", "--anisotropy", "16", "--levels", "texture"},
+         1280,
          640,
          "Far-field RMS error against the supersampled reference: trilinear {far_error[linear_mipmap_linear]} "
          "(over-blur), anisotropic 16x {far_error[anisotropic]}, GL_NEAREST {far_error[nearest]} (aliasing)."},
-        {"inspect_aniso_footprint", "Section VI.1.3 (inside a pixel)",
+        {"inspect_aniso_footprint",
+         "Section VI.1.3 (inside a pixel)",
          "One far pixel of the slanted plane (GL_LINEAR_MIPMAP_LINEAR), looked inside with --inspect X,Y "
          "--footprints: on level 0 of the texture, its exact preimage (white) is long and thin; trilinear filtering "
          "reads a square of side 2^lambda (yellow) from the long side, the texels outlined, and so over-blurs across; "
          "the EWA ellipse (magenta) is what an anisotropic filter reads instead.",
          {"--view", "slant", "--filter", "linear-mipmap-linear", "--anisotropy", "16", "--levels", "texture",
-          "--inspect", "760,400", "--footprints"}, 1280, 640,
+          "--inspect", "760,400", "--footprints"},
+         1280,
+         640,
          "The footprint is {inspect_anisotropy[1]} times longer than wide; trilinear reads at lambda "
          "{inspect_lambda[1]} (rho {inspect_rho[1]} texels), blurring the short side."},
     };
@@ -195,16 +205,13 @@ class MipmapPopping final : public ts::Scene {
   mipmap::views::Views views() const { return {look(), levels_, animate_, shownLog2()}; }
   mipmap::Look look() const { return {filter_, aniso_, bias_, texture_, linearLight_, &picture_, camera_}; }
 
-
   int view_ = kFilmstrip, filter_ = kNearestMipNearest, aniso_ = 16, levels_ = kSplit, texture_ = 0;
   ts::UserTexture picture_;  // --texture FILE
   ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse, on the slanted plane
   float distLog2_ = 2.375f, bias_ = 0.0f;
   bool linearLight_ = false, animate_ = false;
   long animFrames_ = 0;
-
 };
-
 
 ts::Frame MipmapPopping::build(int width, int height, const ts::Measurements& measured) const {
   const Result* m = measured.detailAs<Result>();
@@ -219,7 +226,6 @@ ts::Frame MipmapPopping::build(int width, int height, const ts::Measurements& me
   }
   return f;
 }
-
 
 ts::Measurements MipmapPopping::measure(ts::Renderer& r) {
   Result out;
@@ -260,9 +266,11 @@ ts::Measurements MipmapPopping::measure(ts::Renderer& r) {
   ms.push_back({"mip_overhead", out.overhead, "bytes of levels 1.. over level 0's bytes (the book: about 1/3)"});
   ms.push_back({"mip_levels", double(chain.size()), "levels of the 256 x 256 chain (256 .. 1)"});
   ms.push_back({"mip_top_level_value", out.topLevel,
-                std::string("the 1x1 level: mean of the texture, averaged in ") + (linearLight_ ? "linear light" : "sRGB values")});
+                std::string("the 1x1 level: mean of the texture, averaged in ") +
+                    (linearLight_ ? "linear light" : "sRGB values")});
   ms.push_back({"lod_analytic", lambda, "log2(texels per pixel) + bias at the current distance"});
-  ms.push_back({"level_expected", effectiveLevel(filter_, lambda), "level (k + blend weight) GL's rules give at that LOD"});
+  ms.push_back(
+      {"level_expected", effectiveLevel(filter_, lambda), "level (k + blend weight) GL's rules give at that LOD"});
   ms.push_back({"level_observed", out.levelObserved, "level read back from the coloured levels at that distance"});
   for (int fl = 0; fl < kFilterCount; ++fl)
     ms.push_back({"popping[" + filterKey(fl) + "]", out.popping[fl],

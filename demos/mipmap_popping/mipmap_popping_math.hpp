@@ -68,11 +68,11 @@
 #include "common/core/slant_plane.hpp"
 
 namespace mipmap {
-constexpr int kTexels = 256;             // the textures are 256 x 256: levels 0..8
+constexpr int kTexels = 256;  // the textures are 256 x 256: levels 0..8
 constexpr int kLevels = 9;
-constexpr double kTexelsPerUnit = 256;   // D: the texture repeats once per world unit
-constexpr double kFocalPixels = 256;     // F of the facing-plane camera
-constexpr double kPlaneHalf = 32;        // the facing plane is 64 x 64 world units
+constexpr double kTexelsPerUnit = 256;  // D: the texture repeats once per world unit
+constexpr double kFocalPixels = 256;    // F of the facing-plane camera
+constexpr double kPlaneHalf = 32;       // the facing plane is 64 x 64 world units
 
 // The seven minification filters of the demo, in the order of --filter.
 enum Filter {
@@ -236,8 +236,9 @@ inline ts::Image boxDownsample(const ts::Image& big, int k) {
           s[0] += c.r, s[1] += c.g, s[2] += c.b, s[3] += c.a;
         }
       long n = long(k) * k;
-      out.set(x, y, {uint8_t((s[0] + n / 2) / n), uint8_t((s[1] + n / 2) / n), uint8_t((s[2] + n / 2) / n),
-                     uint8_t((s[3] + n / 2) / n)});
+      out.set(x, y,
+              {uint8_t((s[0] + n / 2) / n), uint8_t((s[1] + n / 2) / n), uint8_t((s[2] + n / 2) / n),
+               uint8_t((s[3] + n / 2) / n)});
     }
   return out;
 }

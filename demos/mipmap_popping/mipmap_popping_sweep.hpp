@@ -232,7 +232,8 @@ inline void addSlant(ts::Frame& f, ts::Panel& p, const Look& l, SlantKind kind, 
     bool have = false;
     for (const auto& pr : f.programs) have |= pr.first == b.program;
     if (!have)
-      f.programs.push_back({b.program, {"demos/mipmap_popping/mipmap_popping_sweep.hpp", referenceVS(), referenceFS()}});
+      f.programs.push_back(
+          {b.program, {"demos/mipmap_popping/mipmap_popping_sweep.hpp", referenceVS(), referenceFS()}});
   }
   p.batches.push_back(b);
 }

@@ -43,10 +43,10 @@ struct Result {
 
 // The demo's state as the views see it (its flags), and how it draws them.
 struct Views {
-  mipmap::Look look_;      // filter, anisotropy, bias, texture, camera
-  int levels_ = kSplit;   // how the level colours show
+  mipmap::Look look_;    // filter, anisotropy, bias, texture, camera
+  int levels_ = kSplit;  // how the level colours show
   bool animate_ = false;
-  double shown_ = 0;      // the plane's log2 distance as drawn
+  double shown_ = 0;  // the plane's log2 distance as drawn
 
   void buildSingle(ts::Frame& f, const Result* m) const;
   void buildFilmstrip(ts::Frame& f, const Result* m) const;
@@ -55,8 +55,7 @@ struct Views {
 };
 
 using ts::layout::kWhite, ts::layout::kAmber;
-const glm::vec4 kGrey{0.75f, 0.75f, 0.78f, 1.0f},
-    kBox{0.0f, 0.0f, 0.0f, 0.65f};
+const glm::vec4 kGrey{0.75f, 0.75f, 0.78f, 1.0f}, kBox{0.0f, 0.0f, 0.0f, 0.65f};
 
 // A facing-plane panel: the plane (split or not) at log2 distance x.
 inline void addFacing(ts::Frame& f, ts::Panel& p, double x, const mipmap::Look& look, int levels) {
@@ -85,8 +84,8 @@ inline std::string levelText(int filter, double lambda) {
   if (blendsLevels(filter)) {
     LevelBlend b = linearLevels(lambda);
     if (b.lo == b.hi) return "level " + std::to_string(b.lo);
-    return "levels " + std::to_string(b.lo) + "+" + std::to_string(b.hi) + " (" + fmt("%.0f", 100 * b.weight) + "% of " +
-           std::to_string(b.hi) + ")";
+    return "levels " + std::to_string(b.lo) + "+" + std::to_string(b.hi) + " (" + fmt("%.0f", 100 * b.weight) +
+           "% of " + std::to_string(b.hi) + ")";
   }
   return "level " + std::to_string(nearestLevel(lambda));
 }
@@ -121,9 +120,12 @@ inline void Views::buildSingle(ts::Frame& f, const Result* m) const {
   // window is too narrow for both side by side.
   namespace L = ts::layout;
   std::vector<std::pair<std::string, glm::vec4>> left = {
-      {std::string(filterGLName(look_.filter)) + (look_.filter == kAnisotropic ? " x" + std::to_string(look_.anisotropy) : ""), kWhite},
+      {std::string(filterGLName(look_.filter)) +
+           (look_.filter == kAnisotropic ? " x" + std::to_string(look_.anisotropy) : ""),
+       kWhite},
       {"distance 2^" + fmt("%.3f", x) + " = " + fmt("%.3g", facingDistance(x)) + " texels per pixel", kWhite},
-      {"LOD = " + (look_.lodBias != 0 ? fmt("%.3f", x) + " + bias " + fmt("%g", look_.lodBias) + " = " : std::string()) +
+      {"LOD = " +
+           (look_.lodBias != 0 ? fmt("%.3f", x) + " + bias " + fmt("%g", look_.lodBias) + " = " : std::string()) +
            fmt("%.3f", lambda) + " -> " + levelText(look_.filter, lambda),
        kAmber}};
   std::vector<std::pair<std::string, glm::vec4>> right;
@@ -165,7 +167,8 @@ inline void Views::buildFilmstrip(ts::Frame& f, const Result* m) const {
   // text at the scale the frames ask for.
   auto lineAt = [](int s) { return int(ts::text::height(s)) + 6 * s; };
   auto cellAt = [&](int s, int bands) {
-    int c = std::min((w - 2 * gap) / (kFrames / bands) - gap, (h - 2 * lineAt(s) - bands * (4 * lineAt(s) + 3 * gap) + 2 * gap) / (2 * bands));
+    int c = std::min((w - 2 * gap) / (kFrames / bands) - gap,
+                     (h - 2 * lineAt(s) - bands * (4 * lineAt(s) + 3 * gap) + 2 * gap) / (2 * bands));
     return ts::Rect{0, 0, std::max(8, c), std::max(8, c)};
   };
   auto scaleOf = [&](int bands) { return L::fitScale([&](int s) { return cellAt(s, bands); }); };
@@ -184,7 +187,8 @@ inline void Views::buildFilmstrip(ts::Frame& f, const Result* m) const {
       int y = rowsTop + b * bandH + r * (cell + line + gap) + line;
       mipmap::Look lk = look_;
       lk.filter = rows[r];
-      std::string name = std::string(filterGLName(rows[r])) + (rows[r] == kAnisotropic ? " x" + std::to_string(look_.anisotropy) : "");
+      std::string name = std::string(filterGLName(rows[r])) +
+                         (rows[r] == kAnisotropic ? " x" + std::to_string(look_.anisotropy) : "");
       if (m) name += "   popping " + fmt("%.1f", m->popping[rows[r]]);
       L::caption(f, {float(x0), float(y - line), float(w - 2), float(y - 2)}, name, r == 0 ? kAmber : kWhite, sc,
                  ts::Align::Left);
@@ -205,19 +209,22 @@ inline void Views::buildFilmstrip(ts::Frame& f, const Result* m) const {
           std::string top = usesMipmaps(rows[0]) && !blendsLevels(rows[0])
                                 ? std::to_string(nearestLevel(lambda))
                                 : fmt("%.2f", effectiveLevel(rows[0], lambda));
-          L::caption(f, {col.x0, col.y1, col.x1, col.y1 + float(line)}, (narrow ? "L " : "top: level ") + top, kGrey, sc);
+          L::caption(f, {col.x0, col.y1, col.x1, col.y1 + float(line)}, (narrow ? "L " : "top: level ") + top, kGrey,
+                     sc);
         }
       }
     }
 }
 
 // The probe's mean R, G, B as the plot draws and its key names them.
-inline const glm::vec4 kMeanColours[3] = {{1.0f, 0.3f, 0.3f, 1.0f}, {0.3f, 0.95f, 0.3f, 1.0f}, {0.4f, 0.55f, 1.0f, 1.0f}};
+inline const glm::vec4 kMeanColours[3] = {{1.0f, 0.3f, 0.3f, 1.0f},
+                                          {0.3f, 0.95f, 0.3f, 1.0f},
+                                          {0.4f, 0.55f, 1.0f, 1.0f}};
 inline const glm::vec4 kSwitchColour{0.55f, 0.55f, 0.6f, 1.0f};
 
 // A plot of the probe's mean R, G, B against log2 distance; returns its data area.
 inline ts::Rect plotSweep(ts::Frame& f, ts::Rect area, const std::string& title, const std::vector<double>& xs,
-               const std::vector<Mean>& ys, double current, const std::vector<double>& switches, int scale) {
+                          const std::vector<Mean>& ys, double current, const std::vector<double>& switches, int scale) {
   namespace plot = ts::plot;
   plot::Spec p;
   p.id = "plot_" + std::to_string(f.panels.size());
@@ -228,7 +235,8 @@ inline ts::Rect plotSweep(ts::Frame& f, ts::Rect area, const std::string& title,
   const char* roles[3] = {"mean_red", "mean_green", "mean_blue"};
   for (int c = 0; c < 3; ++c) {
     plot::Series se(roles[c], kMeanColours[c]);
-    for (size_t k = 0; k < xs.size() && k < ys.size(); ++k) se.points.push_back({xs[k], c == 0 ? ys[k].r : c == 1 ? ys[k].g : ys[k].b});
+    for (size_t k = 0; k < xs.size() && k < ys.size(); ++k)
+      se.points.push_back({xs[k], c == 0 ? ys[k].r : c == 1 ? ys[k].g : ys[k].b});
     p.series.push_back(se);
   }
   for (double sw : switches) p.markers.push_back({sw, kSwitchColour, "level_switches"});  // where the level changes
@@ -269,7 +277,8 @@ inline void Views::buildPlot(ts::Frame& f, const Result* m) const {
               switches, sc);
   }
   L::Column notes(f, {4, float(h - 3 * line), float(w - 4), float(h - line - 1)});
-  notes.add("the probe's mean R, G, B against x = log2 distance = LOD - bias (" + fmt("%g", look_.lodBias) + ")", kGrey, sc);
+  notes.add("the probe's mean R, G, B against x = log2 distance = LOD - bias (" + fmt("%g", look_.lodBias) + ")", kGrey,
+            sc);
   // The key of the curves and lines, centred on its line.
   const std::vector<ts::LegendEntry> key = {{kMeanColours[0], "mean R"},
                                             {kMeanColours[1], "mean G"},
@@ -277,7 +286,8 @@ inline void Views::buildPlot(ts::Frame& f, const Result* m) const {
                                             {kAmber, "the current distance"},
                                             {kSwitchColour, "dashed: GL's rule changes level"}};
   float keyW = 0;
-  for (const auto& e : key) keyW += ts::text::height(sc) + 4.0f * float(sc) + ts::text::width(e.meaning, sc) + 8.0f * float(sc);
+  for (const auto& e : key)
+    keyW += ts::text::height(sc) + 4.0f * float(sc) + ts::text::width(e.meaning, sc) + 8.0f * float(sc);
   const float keyX = std::max(4.0f, (float(w) - keyW) / 2);
   L::legend(f, {keyX, notes.y(), float(w - 4), float(h - line - 1)}, key, sc);
   // The level colours the probe sees, as a key (its lead shortened when narrow).
@@ -293,8 +303,9 @@ inline void Views::buildPlot(ts::Frame& f, const Result* m) const {
     ts::Rgba c = ts::mipLevelColour(k);
     glm::vec4 bg(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f);
     bool dark = c.r * 0.3 + c.g * 0.59 + c.b * 0.11 < 140;
-    L::placeFree(f, {x + float(k) * step, y, " " + std::to_string(k) + " ", dark ? kWhite : glm::vec4(0, 0, 0, 1), sc,
-                     ts::Align::Left, bg},
+    L::placeFree(f,
+                 {x + float(k) * step, y, " " + std::to_string(k) + " ", dark ? kWhite : glm::vec4(0, 0, 0, 1), sc,
+                  ts::Align::Left, bg},
                  keyRow);
   }
 }
@@ -320,7 +331,8 @@ inline ts::Panel farFieldOutline(const ts::Rect& vp, const ts::OrbitCamera& orbi
         }
       }
     }
-    ts::Batch b = ts::lineSegments(pts, kWhite, 2.0f, lod == mipmap::kFarLodLo ? "far_field_near_edge" : "far_field_far_edge");
+    ts::Batch b = ts::lineSegments(pts, kWhite, 2.0f,
+                                   lod == mipmap::kFarLodLo ? "far_field_near_edge" : "far_field_far_edge");
     b.prim = ts::Prim::LineStrip;
     if (pts.size() > 1) o.batches.push_back(b);
   }
@@ -352,8 +364,11 @@ inline void Views::buildSlant(ts::Frame& f, const Result* m) const {
     p.viewport = {cx, cy, pw, ph};
     mipmap::Look lk = look_;
     if (fl >= 0) lk.filter = fl;
-    mipmap::addSlant(f, p, lk, fl < 0 ? mipmap::kReferenceProgram : levels_ == kColoursOnly ? mipmap::kColoured : mipmap::kTextured,
-                    h);
+    mipmap::addSlant(f, p, lk,
+                     fl < 0                    ? mipmap::kReferenceProgram
+                     : levels_ == kColoursOnly ? mipmap::kColoured
+                                               : mipmap::kTextured,
+                     h);
     f.panels.push_back(p);
     const L::Box above{float(cx), float(cy - line + 2), float(cx + pw), float(cy - 1)},
         below{float(cx), float(cy + ph + 2), float(cx + pw), float(cy + ph + line)};
@@ -365,8 +380,9 @@ inline void Views::buildSlant(ts::Frame& f, const Result* m) const {
     } else {
       t = fl == kAnisotropic ? "anisotropic x" + std::to_string(look_.anisotropy) : std::string(filterGLName(fl));
       if (m)
-        L::caption(f, below, "error " + L::measuredValue("far_error[" + filterKey(fl) + "]", m->farError[fl], "%.1f") +
-                                 (fl == kAnisotropic && !m->anisotropy ? " (no anisotropy here)" : ""),
+        L::caption(f, below,
+                   "error " + L::measuredValue("far_error[" + filterKey(fl) + "]", m->farError[fl], "%.1f") +
+                       (fl == kAnisotropic && !m->anisotropy ? " (no anisotropy here)" : ""),
                    fl == look_.filter ? kAmber : kWhite, sc, ts::Align::Left);
     }
     // Titles: "GL_" goes, then the reference's detail, when the panel is narrow.
@@ -379,7 +395,8 @@ inline void Views::buildSlant(ts::Frame& f, const Result* m) const {
   const L::Text note2 = "measured at " + L::given("the measured render's width", mipmap::kSlantW, "%.0f") + "x" +
                         L::given("the measured render's height", mipmap::kSlantH, "%.0f") +
                         "; amber: the filter chosen (key f, --filter)";
-  L::Column notes(f, {4, float(std::min(h - 2 * line, line / 2 + kRows * (ph + 2 * line + gap))), float(w - 4), float(h)});
+  L::Column notes(f,
+                  {4, float(std::min(h - 2 * line, line / 2 + kRows * (ph + 2 * line + gap))), float(w - 4), float(h)});
   notes.add(note1, kGrey, sc);
   notes.add(note2, kGrey, sc);
 }

@@ -56,7 +56,8 @@ class Multitexture final : public ts::Scene {
   std::string title() const override { return "Seed 001 - multitexturing: alpha, light maps, gloss maps, AB + CD"; }
   std::string about() const override {
     return "Several textures on one surface, each measured on GL's renders: a cutout tree with and without the alpha\n"
-           "test (the sky its transparent texels hide: 0 with the test), a cross tree's width over a turn (never below\n"
+           "test (the sky its transparent texels hide: 0 with the "
+           "test), a cross tree's width over a turn (never below\n"
            "0.7071), light maps of 8^2 to 64^2 against per-pixel lighting, a gloss map's highlights (ratio 5 for\n"
            "g = 1 and 0.2), AB + CD with two texture units, with one unit and a stored copy, and with the framebuffer\n"
            "alone ((AB + C) D), and the pear t_d i_diff + t_g t_r in one GL_MODULATE_ADD_ATI stage against two passes.";
@@ -80,31 +81,44 @@ class Multitexture final : public ts::Scene {
 
   std::vector<ts::FigureSpec> figures() const override {
     return {
-        {"alpha_cutout_tree", "Seed 001 (multitexturing: alpha)",
+        {"alpha_cutout_tree",
+         "Seed 001 (multitexturing: alpha)",
          "A cutout tree drawn before the sky behind it: without the alpha test its transparent texels write depth and "
          "hide the sky; blending hides it too; the alpha test discards them.  Its edge magnified: blending mixes sky "
          "and tree, the test cuts.  A cross tree at 0, 30 and 45 degrees.",
-         {"--view", "alpha"}, 1280, 440,
-         "Drawn first, the tree's transparent texels hide {cutout_hidden_px[no_alpha_test]} sky pixels without the alpha "
+         {"--view", "alpha"},
+         1280,
+         440,
+         "Drawn first, the tree's transparent texels hide "
+         "{cutout_hidden_px[no_alpha_test]} sky pixels without the alpha "
          "test, {cutout_hidden_px[alpha_test]} with it; a cross tree is never narrower than {cross_tree_min_width} "
          "(one quad: {single_quad_min_width})."},
-        {"light_map_resolution", "Seed 001 (multitexturing: light maps)",
+        {"light_map_resolution",
+         "Seed 001 (multitexturing: light maps)",
          "A wall's bricks times a light map of 8^2, 16^2, 32^2 and 64^2 texels (unit 1, GL_MODULATE, bilinear) against "
          "the CPU's per-pixel lighting; last, a spot light map moved by the texture matrix.",
-         {"--view", "lightmap", "--spot", "2"}, 1280, 360,
+         {"--view", "lightmap", "--spot", "2"},
+         1280,
+         360,
          "RMS against per-pixel lighting: {light_map_rms[8]} levels at 8^2 ({light_map_bytes[8]} bytes), "
          "{light_map_rms[64]} at 64^2 ({light_map_bytes[64]} bytes)."},
-        {"gloss_map", "Seed 001 (multitexturing: gloss maps, the pear)",
+        {"gloss_map",
+         "Seed 001 (multitexturing: gloss maps, the pear)",
          "A plane lit by two lights, diffuse only, then with the gloss map (g = 1 left, 0.2 right) times the specular "
          "added in a second pass, the specular alone (x 2); the pear t_d i_diff + t_g t_r in one "
          "GL_MODULATE_ADD_ATI stage and in two passes.",
-         {"--view", "gloss"}, 1280, 360,
+         {"--view", "gloss"},
+         1280,
+         360,
          "The highlight under g = 1 is {gloss_peak_ratio} times the one under g = 0.2, the diffuse unchanged; the pear "
          "takes {pear_passes[combine3]} pass with GL_ATI_texture_env_combine3, {pear_passes[two_passes]} without."},
-        {"multitexture_ab_cd", "Seed 001 (multitexturing: AB + CD)",
+        {"multitexture_ab_cd",
+         "Seed 001 (multitexturing: AB + CD)",
          "A, B, C, D; AB + CD on the CPU; with two texture units and an additive pass; with one unit, a multiplying "
          "blend and a stored copy; with the framebuffer alone, which makes (AB + C) D; that one's error x 4.",
-         {"--view", "abcd"}, 1280, 330,
+         {"--view", "abcd"},
+         1280,
+         330,
          "Two units: {abcd_passes[multitexture]} passes, within {abcd_max_diff[multitexture]} level of the CPU; one "
          "unit and a copy: {abcd_passes[stored]} passes, within {abcd_max_diff[stored]}; the framebuffer alone is off "
          "by {abcd_max_diff[framebuffer_only]} levels."},
@@ -146,17 +160,22 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
   if (view_ == 0) {
     views::pictures(f,
                     {{{}, "no alpha test", M("{cutout_hidden_px[no_alpha_test]|%.0f} sky pixels hidden")},
-                     {{}, "GL_GREATER " + L::given("glAlphaFunc's reference", frames::kAlphaRef, "%g"), M("{cutout_hidden_px[alpha_test]|%.0f} hidden")},
+                     {{},
+                      "GL_GREATER " + L::given("glAlphaFunc's reference", frames::kAlphaRef, "%g"),
+                      M("{cutout_hidden_px[alpha_test]|%.0f} hidden")},
                      {{}, "blending, no test", M("{cutout_hidden_px[blend]|%.0f} hidden")},
                      {{}, "edge x16, blending", M("{edge_fringe_px[blend]|%.0f} fringe pixels")},
                      {{}, "edge x16, alpha test", M("{edge_fringe_px[alpha_test]|%.0f} fringe pixels")},
-                     {{}, "cross tree, " + L::given("the tree's turn, degrees", frames::kCrossTurnDeg, "%g") + " deg",
+                     {{},
+                      "cross tree, " + L::given("the tree's turn, degrees", frames::kCrossTurnDeg, "%g") + " deg",
                       M("width >= {cross_tree_min_width|%.4f}")}},
                     1.0f,
                     "Cutout tree drawn first, then the sky behind it (depth test).  Silhouette width over a full turn "
-                    "(orthographic, 5-degree steps): one quad " + M("{single_quad_min_width|%.4f}") + " .. " +
-                        M("{single_quad_max_width|%.4f}") + " (|cos|), cross tree " + M("{cross_tree_min_width|%.4f}") +
-                        " .. " + M("{cross_tree_max_width|%.4f}") + " (max(|cos|, |sin|) >= " + L::given("cos 45 deg", std::cos(glm::radians(45.0)), "%.4f") + ").");
+                    "(orthographic, 5-degree steps): one quad " +
+                        M("{single_quad_min_width|%.4f}") + " .. " + M("{single_quad_max_width|%.4f}") +
+                        " (|cos|), cross tree " + M("{cross_tree_min_width|%.4f}") + " .. " +
+                        M("{cross_tree_max_width|%.4f}") + " (max(|cos|, |sin|) >= " +
+                        L::given("cos 45 deg", std::cos(glm::radians(45.0)), "%.4f") + ").");
     // The cutout passes are the Frames measure() rendered (multitexture_frames.hpp), drawn in their panels.
     const ts::Image tree = treeTexture();
     for (ts::Panel& p : f.panels)
@@ -174,56 +193,71 @@ ts::Frame Multitexture::build(int width, int height, const ts::Measurements& mea
       const L::Text side = L::given("the light map's side, texels", kLightSizes[k], "%g");
       ps.push_back({{}, "light map " + side + "^2", M("RMS {light_map_rms[" + n + "]|%.2f}, ") + side + "^2 bytes"});
     }
-    ps.push_back({{}, "spot, texture matrix", "position " + L::given("the spot's frame", spot_, "%g") + (animate_ ? " (moving)" : "")});
+    ps.push_back({{},
+                  "spot, texture matrix",
+                  "position " + L::given("the spot's frame", spot_, "%g") + (animate_ ? " (moving)" : "")});
     views::pictures(f, ps, 1.0f,
                     "c = base x L: unit 0 the bricks (GL_REPLACE), unit 1 the light map (GL_MODULATE, GL_LINEAR); the "
-                    "light a point at height " + L::given("the light's height over the wall", ts::multitex::kLightHeight, "%g") +
+                    "light a point at height " +
+                        L::given("the light's height over the wall", ts::multitex::kLightHeight, "%g") +
                         " over the centre, L its irradiance at the texel centres (1 byte a texel).");
     for (ts::Panel& p : f.panels)
       for (int k = 1; k <= 5; ++k)
         if (p.id == "picture_" + std::to_string(k))
-          p.batches = {frames::lightMapped(f, m->base, m->userBase, k < 5 ? kLightSizes[k - 1] : 0, spot_, kSpotFrames)};
+          p.batches = {
+              frames::lightMapped(f, m->base, m->userBase, k < 5 ? kLightSizes[k - 1] : 0, spot_, kSpotFrames)};
   } else if (view_ == 2) {
     // The pears are a nested frame (multitexture_frames.hpp pearsFrame): its picture is GL's render, and the
     // sidecar holds the frame, so the reference recomputes it (TextureDesc::renderedFrom).
     ts::TextureDesc pears = ts::renderedImageTexture(m->pearsImage, "multitexture", "the pears", "multitexture");
     pears.image = std::make_shared<const ts::Image>(m->pearsImage);  // row 0 the top, as rendered
     pears.renderedFrom = m->pears;
-    views::pictures(f,
-                    {{{}, "t_d x i_diff (pass 1)", "the diffuse alone"},
-                     {{}, "+ g x i_spec (pass 2, GL_ONE, GL_ONE)",
-                      "g = " + L::given("the gloss left", 1, "%g") + " left, " + L::given("the gloss right", ts::multitex::kGlossLow, "%.1f") + " right"},
-                     {{}, "the specular added, x 2",
-                      M("peaks {gloss_peak[g=1]|%.0f}") + M(" : {gloss_peak[g=0.2]|%.0f}")},
-                     {{}, "pear: MODULATE_ADD_ATI | two passes",
-                      m->combine3 ? M("{pear_passes[combine3]|%.0f} pass") + M(" | {pear_passes[two_passes]|%.0f} passes")
-                                  : std::string("no GL_ATI_texture_env_combine3 here"),
-                      m->pearsCalls, pears}},
-                    2.0f,
-                    "i = t_d x i_diff + g x i_spec in two passes: highlight ratio " + M("{gloss_peak_ratio|%.3f}") +
-                        " (g " + L::given("the gloss left", 1, "%g") + " / " + L::given("the gloss right", ts::multitex::kGlossLow, "%.1f") +
-                        " = " + L::given("the glosses' ratio", 1 / ts::multitex::kGlossLow, "%g") + "), diffuse changed by " + M("{gloss_diffuse_change|%.0f}") +
-                        " levels.  The pear: t_d i_diff + t_g t_r, one combine3 stage against two passes: " +
-                        M("{pear_combine3_vs_two_passes_max_diff|%.0f}") + " levels apart.");
+    views::pictures(
+        f,
+        {{{}, "t_d x i_diff (pass 1)", "the diffuse alone"},
+         {{},
+          "+ g x i_spec (pass 2, GL_ONE, GL_ONE)",
+          "g = " + L::given("the gloss left", 1, "%g") + " left, " +
+              L::given("the gloss right", ts::multitex::kGlossLow, "%.1f") + " right"},
+         {{}, "the specular added, x 2", M("peaks {gloss_peak[g=1]|%.0f}") + M(" : {gloss_peak[g=0.2]|%.0f}")},
+         {{},
+          "pear: MODULATE_ADD_ATI | two passes",
+          m->combine3 ? M("{pear_passes[combine3]|%.0f} pass") + M(" | {pear_passes[two_passes]|%.0f} passes")
+                      : std::string("no GL_ATI_texture_env_combine3 here"),
+          m->pearsCalls,
+          pears}},
+        2.0f,
+        "i = t_d x i_diff + g x i_spec in two passes: highlight ratio " + M("{gloss_peak_ratio|%.3f}") + " (g " +
+            L::given("the gloss left", 1, "%g") + " / " + L::given("the gloss right", ts::multitex::kGlossLow, "%.1f") +
+            " = " + L::given("the glosses' ratio", 1 / ts::multitex::kGlossLow, "%g") + "), diffuse changed by " +
+            M("{gloss_diffuse_change|%.0f}") +
+            " levels.  The pear: t_d i_diff + t_g t_r, one combine3 stage against two passes: " +
+            M("{pear_combine3_vs_two_passes_max_diff|%.0f}") + " levels apart.");
     // The plane's passes are Frames (multitexture_frames.hpp): diffuse; + g i_spec; g i_spec added twice.
     for (ts::Panel& p : f.panels)
       for (int k = 0; k < 3; ++k)
-        if (p.id == "picture_" + std::to_string(k)) p = frames::glossPanel(f, m->base, m->userBase, k, p.id, p.viewport);
+        if (p.id == "picture_" + std::to_string(k))
+          p = frames::glossPanel(f, m->base, m->userBase, k, p.id, p.viewport);
   } else {
     const std::vector<ts::Image> t = abcdTextures();
     const views::Picture cpu({}, "AB + CD (CPU)", "the reference", nullptr, ts::multitex::abcdCpuTexture(128, "sum"));
-    const views::Picture error({}, "(AB+C)D - (AB+CD), x 4", M("GL's: RMS {abcd_rms[framebuffer_only]|%.1f} levels"), nullptr,
-                               ts::multitex::abcdCpuTexture(128, "error_x4"));
+    const views::Picture error({}, "(AB+C)D - (AB+CD), x 4", M("GL's: RMS {abcd_rms[framebuffer_only]|%.1f} levels"),
+                               nullptr, ts::multitex::abcdCpuTexture(128, "error_x4"));
     views::pictures(
         f,
         {{{}, "A B / C D", "the four textures"},
          cpu,
-         {{}, "two units + add", M("{abcd_passes[multitexture]|%.0f} passes") + M(", max {abcd_max_diff[multitexture]|%.0f}")},
+         {{},
+          "two units + add",
+          M("{abcd_passes[multitexture]|%.0f} passes") + M(", max {abcd_max_diff[multitexture]|%.0f}")},
          {{}, "one unit + a copy", M("{abcd_passes[stored]|%.0f} passes") + M(", max {abcd_max_diff[stored]|%.0f}")},
-         {{}, "framebuffer: (AB+C)D", M("{abcd_passes[framebuffer_only]|%.0f} passes") + M(", max {abcd_max_diff[framebuffer_only]|%.0f}")},
+         {{},
+          "framebuffer: (AB+C)D",
+          M("{abcd_passes[framebuffer_only]|%.0f} passes") + M(", max {abcd_max_diff[framebuffer_only]|%.0f}")},
          error},
         1.0f,
-        "Multiplying needs the framebuffer (GL_DST_COLOR, GL_ZERO), adding too (GL_ONE, GL_ONE): with one unit, AB must "
+        "Multiplying needs the framebuffer (GL_DST_COLOR, GL_ZERO), "
+        "adding too (GL_ONE, GL_ONE): with one unit, AB must "
         "be stored (a texture rendered first) before CD is made; the sequence A, x B, + C, x D gives (AB + C) D.");
     // The three GL paths are the Frames measure() rendered (multitexture_frames.hpp), drawn in their panels.
     for (int k = kMultitexture; k <= kFramebufferOnly; ++k)

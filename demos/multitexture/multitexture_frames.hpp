@@ -84,8 +84,10 @@ inline ts::Frame abFrame(const std::vector<ts::Image>& t) {
 inline std::vector<ts::Batch> abcdBatches(ts::Frame& f, const std::vector<ts::Image>& t, int m, const ts::Image& ab) {
   const std::array<int, 4> ix = addTextures(f, t);
   const int A = ix[0], B = ix[1], C = ix[2], D = ix[3];
-  if (m == kMultitexture) return {withUnit1(square(A, "A, unit 1: x B"), B), plus(withUnit1(square(C, "+ C, unit 1: x D"), D))};
-  if (m == kFramebufferOnly) return {square(A, "A"), times(square(B, "x B")), plus(square(C, "+ C")), times(square(D, "x D"))};
+  if (m == kMultitexture)
+    return {withUnit1(square(A, "A, unit 1: x B"), B), plus(withUnit1(square(C, "+ C, unit 1: x D"), D))};
+  if (m == kFramebufferOnly)
+    return {square(A, "A"), times(square(B, "x B")), plus(square(C, "+ C")), times(square(D, "x D"))};
   ts::TextureDesc d = ts::renderedImageTexture(ab, "multitexture", "AB, the intermediate buffer", "multitexture");
   d.minFilter = d.magFilter = GL_NEAREST;
   d.wrapS = d.wrapT = GL_CLAMP_TO_EDGE;
@@ -127,7 +129,8 @@ inline ts::Batch rect(glm::vec4 xy, float z, glm::vec4 st, int texture, glm::vec
   const glm::vec2 c[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   for (int i : {0, 1, 2, 0, 2, 3})
     b.vertices.push_back({{glm::mix(xy.x, xy.z, c[i].x), glm::mix(xy.y, xy.w, c[i].y), z},
-                          {glm::mix(st.x, st.z, c[i].x), glm::mix(st.y, st.w, c[i].y), 0.0f, 1.0f}, colour});
+                          {glm::mix(st.x, st.z, c[i].x), glm::mix(st.y, st.w, c[i].y), 0.0f, 1.0f},
+                          colour});
   return b;
 }
 // The alpha test's reference: a texel is leaf or air, its alpha 1 or 0.
@@ -154,7 +157,9 @@ inline glm::vec4 sky() { return glm::vec4(kSky.r, kSky.g, kSky.b, 255) / 255.0f;
 // The tree drawn first, in front (z = 0.5), then the sky behind it (z = -0.5), depth test on.
 inline ts::Panel hiddenPanel(ts::Frame& f, const ts::Image& tree, int mode, const std::string& id, ts::Rect viewport) {
   ts::Panel p = pixelPanel(id, viewport, true);
-  p.batches = {treeState(rect({64, 64, 192, 192}, 0.5f, {0, 0, 1, 1}, addTree(f, tree, GL_NEAREST), glm::vec4(1), "the tree, first"), mode),
+  p.batches = {treeState(rect({64, 64, 192, 192}, 0.5f, {0, 0, 1, 1}, addTree(f, tree, GL_NEAREST), glm::vec4(1),
+                              "the tree, first"),
+                         mode),
                rect({0, 0, 256, 256}, -0.5f, {0, 0, 1, 1}, -1, sky(), "the sky, behind")};
   return p;
 }
@@ -162,8 +167,9 @@ inline ts::Panel hiddenPanel(ts::Frame& f, const ts::Image& tree, int mode, cons
 inline ts::Panel edgePanel(ts::Frame& f, const ts::Image& tree, int mode, const std::string& id, ts::Rect viewport) {
   ts::Panel p = pixelPanel(id, viewport, false);
   p.batches = {rect({0, 0, 256, 256}, 0, {0, 0, 1, 1}, -1, sky(), "the sky"),
-               treeState(rect({0, 0, 256, 256}, 0, {0.0625f, 0.5f, 0.3125f, 0.75f}, addTree(f, tree, GL_LINEAR), glm::vec4(1),
-                              "the tree's edge x16"), mode)};
+               treeState(rect({0, 0, 256, 256}, 0, {0.0625f, 0.5f, 0.3125f, 0.75f}, addTree(f, tree, GL_LINEAR),
+                              glm::vec4(1), "the tree's edge x16"),
+                         mode)};
   return p;
 }
 inline ts::Frame alone(int w, int h, const std::function<ts::Panel(ts::Frame&, ts::Rect)>& panel) {
@@ -178,7 +184,8 @@ inline ts::Frame alone(int w, int h, const std::function<ts::Panel(ts::Frame&, t
 inline ts::Panel crossTreePanel(ts::Frame& f, float degrees, const std::string& id, ts::Rect viewport) {
   ts::Panel p = unitPanel(id, viewport);
   p.projection = glm::ortho(-0.7f, 0.7f, -0.7f, 0.7f, -2.0f, 2.0f);
-  p.modelview = glm::rotate(glm::rotate(glm::mat4(1.0f), glm::radians(15.0f), glm::vec3(1, 0, 0)), glm::radians(degrees), glm::vec3(0, 1, 0));
+  p.modelview = glm::rotate(glm::rotate(glm::mat4(1.0f), glm::radians(15.0f), glm::vec3(1, 0, 0)),
+                            glm::radians(degrees), glm::vec3(0, 1, 0));
   p.depthTest = true;
   p.clearColor = sky();
   ts::Batch b = treeState(square(addTree(f, {}, GL_NEAREST), "the cross tree: two quads"), kAlphaTest);
@@ -221,12 +228,14 @@ inline glm::vec2 spotCentre(int k, int n) {
   return {float(0.5 + 0.28 * std::cos(a)), float(0.5 + 0.28 * std::sin(a))};
 }
 inline ts::Batch lightMapped(ts::Frame& f, const ts::Image& base, bool user, int n, int k = 0, int frames = 12) {
-  ts::Batch b = square(addBase(f, base, user), n ? "the bricks, unit 1: x the light map" : "the bricks, unit 1: x the spot");
+  ts::Batch b = square(addBase(f, base, user),
+                       n ? "the bricks, unit 1: x the light map" : "the bricks, unit 1: x the spot");
   b.texture1 = addGrey(f, n ? ts::multitex::lightMapTexture(n) : ts::multitex::spotTexture(), GL_LINEAR);
   b.texEnv1 = GL_MODULATE;
   if (!n) {
     const glm::vec2 c = spotCentre(k, frames);
-    b.textureMatrix1 = glm::translate(glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 0)), glm::vec3(1.6f, 1.6f, 1)),
+    b.textureMatrix1 = glm::translate(glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.5f, 0)),
+                                                 glm::vec3(1.6f, 1.6f, 1)),
                                       glm::vec3(-c, 0));
   }
   return b;
@@ -246,14 +255,17 @@ inline ts::Batch glossGrid(int texture, bool spec, const std::string& role) {
         const double x = i / 32.0, y = (j + dj) / 32.0;
         const glm::dvec2 l = glossLighting(x, y);
         const float c = float(spec ? l.y : l.x);
-        strip.push_back({{float(x * 128), float(y * 128), 0.0f}, {float(spec ? x / 2 : x), float(y), 0.0f, 1.0f}, {c, c, c, 1.0f}});
+        strip.push_back(
+            {{float(x * 128), float(y * 128), 0.0f}, {float(spec ? x / 2 : x), float(y), 0.0f, 1.0f}, {c, c, c, 1.0f}});
       }
-    for (size_t k = 0; k + 2 < strip.size(); ++k) b.vertices.insert(b.vertices.end(), {strip[k], strip[k + 1], strip[k + 2]});
+    for (size_t k = 0; k + 2 < strip.size(); ++k)
+      b.vertices.insert(b.vertices.end(), {strip[k], strip[k + 1], strip[k + 2]});
   }
   return b;
 }
 enum Gloss { kDiffuseOnly, kGlossed, kSpecularTwice };
-inline ts::Panel glossPanel(ts::Frame& f, const ts::Image& base, bool user, int what, const std::string& id, ts::Rect viewport) {
+inline ts::Panel glossPanel(ts::Frame& f, const ts::Image& base, bool user, int what, const std::string& id,
+                            ts::Rect viewport) {
   ts::Panel p = unitPanel(id, viewport);
   p.projection = glm::ortho(0.0f, 256.0f, 0.0f, 128.0f, -1.0f, 1.0f);
   const int g = addGrey(f, ts::multitex::glossTexture(64, 32), GL_NEAREST);
@@ -274,7 +286,8 @@ struct PearVertex {
 };
 inline PearVertex pearVertex(int i, int j) {
   const double u = i / 48.0, v = j / 32.0, a = 6.283185307179586 * u;
-  const glm::dvec2 c = pearProfile(v), d = (pearProfile(std::min(1.0, v + 1e-3)) - pearProfile(std::max(0.0, v - 1e-3)));
+  const glm::dvec2 c = pearProfile(v),
+                   d = (pearProfile(std::min(1.0, v + 1e-3)) - pearProfile(std::max(0.0, v - 1e-3)));
   const glm::dvec3 p(c.x * std::sin(a), c.y, c.x * std::cos(a));
   glm::dvec3 n = glm::normalize(glm::dvec3(d.y * std::sin(a), -d.x, d.y * std::cos(a)));
   if (glm::length(d) < 1e-9) n = {0, v < 0.5 ? -1 : 1, 0};
@@ -304,7 +317,8 @@ inline ts::Batch pearMesh(int texture, bool skinFirst, const std::string& role) 
         v.color = {q.diffuse, q.diffuse, q.diffuse, 1.0f};
         strip.push_back(v);
       }
-    for (size_t k = 0; k + 2 < strip.size(); ++k) b.vertices.insert(b.vertices.end(), {strip[k], strip[k + 1], strip[k + 2]});
+    for (size_t k = 0; k + 2 < strip.size(); ++k)
+      b.vertices.insert(b.vertices.end(), {strip[k], strip[k + 1], strip[k + 2]});
   }
   return b;
 }

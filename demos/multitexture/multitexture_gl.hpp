@@ -66,10 +66,12 @@ inline ts::Image turningWidths(ts::Renderer& r, int steps, double step) {
         glViewport(0, (cross * steps + k) * 8, 256, 8);
         glLoadIdentity(), glRotatef(float(k * step), 0, 1, 0);
         glBegin(GL_QUADS);
-        for (glm::vec3 p : {glm::vec3(-0.5f, -0.2f, 0), glm::vec3(0.5f, -0.2f, 0), glm::vec3(0.5f, 0.2f, 0), glm::vec3(-0.5f, 0.2f, 0)})
+        for (glm::vec3 p : {glm::vec3(-0.5f, -0.2f, 0), glm::vec3(0.5f, -0.2f, 0), glm::vec3(0.5f, 0.2f, 0),
+                            glm::vec3(-0.5f, 0.2f, 0)})
           glVertex3f(p.x, p.y, p.z);
         if (cross)
-          for (glm::vec3 p : {glm::vec3(0, -0.2f, -0.5f), glm::vec3(0, -0.2f, 0.5f), glm::vec3(0, 0.2f, 0.5f), glm::vec3(0, 0.2f, -0.5f)})
+          for (glm::vec3 p : {glm::vec3(0, -0.2f, -0.5f), glm::vec3(0, -0.2f, 0.5f), glm::vec3(0, 0.2f, 0.5f),
+                              glm::vec3(0, 0.2f, -0.5f)})
             glVertex3f(p.x, p.y, p.z);
         glEnd();
       }

@@ -22,18 +22,18 @@ constexpr int kPearPixels = 192;
 inline ts::Image basePicture() { return ts::multitex::bricksImage(); }
 
 struct Result {
-  ts::Image hidden[3], edge[3];  // by Cutout mode
+  ts::Image hidden[3], edge[3];                 // by Cutout mode
   std::vector<double> singleWidth, crossWidth;  // per 5 degrees, in quad widths
-  ts::Image base;                              // the base picture (bricks, or --texture's)
+  ts::Image base;                               // the base picture (bricks, or --texture's)
   bool userBase = false;
-  ts::Image lit[4], perPixel;                  // by kLightSizes; the CPU's
-  ts::Image diffuseOnly, glossed;              // the gloss map's passes
-  ts::Image abcdCpu, abcd[3];                  // the CPU's AB + CD; by Abcd
-  ts::Image abcdAb;                            // the one-unit path's intermediate buffer (multitexture_frames.hpp)
-  ts::Image pear[2];                           // by Pear
+  ts::Image lit[4], perPixel;      // by kLightSizes; the CPU's
+  ts::Image diffuseOnly, glossed;  // the gloss map's passes
+  ts::Image abcdCpu, abcd[3];      // the CPU's AB + CD; by Abcd
+  ts::Image abcdAb;                // the one-unit path's intermediate buffer (multitexture_frames.hpp)
+  ts::Image pear[2];               // by Pear
   bool combine3 = false;
-  std::shared_ptr<const ts::Frame> pears;      // both methods side by side (frames::pearsFrame)
-  ts::Image pearsImage;                        // its render (row 0 the top)
+  std::shared_ptr<const ts::Frame> pears;  // both methods side by side (frames::pearsFrame)
+  ts::Image pearsImage;                    // its render (row 0 the top)
   ts::gl::CallList abcdCalls[3], pearCalls[2], glossCalls, pearsCalls;
 };
 
@@ -81,15 +81,18 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, bool userBase, ts::
   const char* modes[3] = {"no_alpha_test", "alpha_test", "blend"};
   // The Frames the figure draws (multitexture_frames.hpp: Batch::alphaFunc, blend), rendered by the Renderer.
   auto hiddenFrame = [&](int m) {
-    return frames::alone(256, 256, [&](ts::Frame& f, ts::Rect v) { return frames::hiddenPanel(f, treeImg, m, "hidden", v); });
+    return frames::alone(256, 256,
+                         [&](ts::Frame& f, ts::Rect v) { return frames::hiddenPanel(f, treeImg, m, "hidden", v); });
   };
   for (int m = 0; m < 3; ++m) {
     out.hidden[m] = opaque(r.renderOffscreen(hiddenFrame(m)));
-    out.edge[m] = opaque(r.renderOffscreen(
-        frames::alone(256, 256, [&](ts::Frame& f, ts::Rect v) { return frames::edgePanel(f, treeImg, m, "edge", v); })));
+    out.edge[m] = opaque(r.renderOffscreen(frames::alone(256, 256, [&](ts::Frame& f, ts::Rect v) {
+      return frames::edgePanel(f, treeImg, m, "edge", v);
+    })));
     put(std::string("cutout_hidden_px[") + modes[m] + "]", hiddenSky(out.hidden[m], treeImg),
         "sky pixels hidden by the transparent texels' depth, the tree drawn first");
-    put(std::string("edge_fringe_px[") + modes[m] + "]", fringe(out.edge[m]), "pixels mixing sky and tree at the edge, magnified 16x");
+    put(std::string("edge_fringe_px[") + modes[m] + "]", fringe(out.edge[m]),
+        "pixels mixing sky and tree at the edge, magnified 16x");
   }
   ts::measureProgress(0.2);
   const ts::Image turning = turningWidths(r, kTurnSteps, 360.0 / kTurnSteps);
@@ -112,14 +115,18 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, bool userBase, ts::
       return p;
     })));
     const std::string s = "[" + std::to_string(n) + "]";
-    put("light_map_rms" + s, rms(out.lit[k], out.perPixel), "8-bit levels, base x L (GL) against base x per-pixel lighting (CPU)");
-    put("light_map_bytes" + s, double(n * n), "bytes as GL_LUMINANCE8, 1 a texel (the Frame uploads the same grey as RGBA8, 4 a texel; the base: " +
-                                                  std::to_string(base.width * base.height * 4) + " bytes)");
+    put("light_map_rms" + s, rms(out.lit[k], out.perPixel),
+        "8-bit levels, base x L (GL) against base x per-pixel lighting (CPU)");
+    put("light_map_bytes" + s, double(n * n),
+        "bytes as GL_LUMINANCE8, 1 a texel (the Frame uploads the same grey as RGBA8, 4 a texel; the base: " +
+            std::to_string(base.width * base.height * 4) + " bytes)");
   }
   // Gloss map (two passes, Frames).
   ts::measureProgress(0.5);
   auto glossFrame = [&](int what) {
-    return frames::alone(256, 128, [&](ts::Frame& f, ts::Rect v) { return frames::glossPanel(f, base, userBase, what, "gloss", v); });
+    return frames::alone(256, 128, [&](ts::Frame& f, ts::Rect v) {
+      return frames::glossPanel(f, base, userBase, what, "gloss", v);
+    });
   };
   out.diffuseOnly = opaque(r.renderOffscreen(glossFrame(frames::kDiffuseOnly)));
   out.glossCalls = ts::recordRender(r, [&] { out.glossed = opaque(r.renderOffscreen(glossFrame(frames::kGlossed))); });
@@ -129,18 +136,22 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, bool userBase, ts::
       const ts::Rgba f = out.glossed.at(x, y), d = out.diffuseOnly.at(x, y);
       const int s = std::max({int(f.r) - d.r, int(f.g) - d.g, int(f.b) - d.b});
       peak[x >= 128] = std::max(peak[x >= 128], s);
-      // Where every vertex of the pixel's cell has i_spec < 0.1/255, pass 2 adds 0 (well below half a level): the diffuse must be untouched.
+      // Where every vertex of the pixel's cell has i_spec < 0.1/255, pass
+      // 2 adds 0 (well below half a level): the diffuse must be untouched.
       const int ci = x / 4, cj = (127 - y) / 4;
       double most = 0;
       for (int v2 = 0; v2 < 4; ++v2) most = std::max(most, glossLighting((ci + v2 % 2) / 32.0, (cj + v2 / 2) / 32.0).y);
-      if (most < 0.1 / 255) ++far, diffuseChange = std::max({diffuseChange, std::abs(int(f.r) - d.r), std::abs(int(f.g) - d.g), std::abs(int(f.b) - d.b)});
+      if (most < 0.1 / 255)
+        ++far, diffuseChange = std::max(
+                   {diffuseChange, std::abs(int(f.r) - d.r), std::abs(int(f.g) - d.g), std::abs(int(f.b) - d.b)});
     }
   put("gloss_peak[g=1]", peak[0], "highest specular step (levels) in the g = 1 half");
   put("gloss_peak[g=0.2]", peak[1], "highest specular step (levels) in the g = 0.2 half");
   put("gloss_peak_ratio", peak[1] ? double(peak[0]) / peak[1] : 0.0, "their ratio: g 1 / 0.2 = 5");
   put("gloss_diffuse_change", diffuseChange, "largest change the gloss pass makes away from the highlights (levels)");
   put("gloss_diffuse_px", far, "pixels where that is checked (i_spec < 0.1/255 at the cell's vertices)");
-  put("gloss_passes", countCalls(out.glossCalls, "glBegin"), "passes over the plane (glBegin ... glEnd: diffuse, + g i_spec)");
+  put("gloss_passes", countCalls(out.glossCalls, "glBegin"),
+      "passes over the plane (glBegin ... glEnd: diffuse, + g i_spec)");
   // AB + CD.
   ts::measureProgress(0.65);
   const std::vector<ts::Image> abcdImg = abcdTextures();
@@ -160,7 +171,8 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, bool userBase, ts::
     const std::string s = std::string("[") + methods[m] + "]";
     put("abcd_max_diff" + s, maxDiff(out.abcd[m], out.abcdCpu), "levels, against the CPU's AB + CD");
     put("abcd_rms" + s, rms(out.abcd[m], out.abcdCpu), "RMS levels, against the CPU's AB + CD");
-    put("abcd_passes" + s, countCalls(out.abcdCalls[m], "glBegin"), "geometry passes (glBegin ... glEnd over the square)");
+    put("abcd_passes" + s, countCalls(out.abcdCalls[m], "glBegin"),
+        "geometry passes (glBegin ... glEnd over the square)");
     put("abcd_copies" + s, intermediate, "intermediate buffers (a texture rendered from a frame of its own)");
   }
   put("abcd_max_diff[framebuffer_only_vs_cpu_model]", maxDiff(out.abcd[kFramebufferOnly], fbCpu),
@@ -168,7 +180,8 @@ inline Result runAll(ts::Renderer& r, const ts::Image& base, bool userBase, ts::
   // The pear.
   ts::measureProgress(0.8);
   out.combine3 = ts::gl::hasExtension("GL_ATI_texture_env_combine3");
-  put("combine3_supported", out.combine3 ? 1 : 0, "GL_ATI_texture_env_combine3 in the extension string (renderer: " + ts::gl::rendererString() + ")");
+  put("combine3_supported", out.combine3 ? 1 : 0,
+      "GL_ATI_texture_env_combine3 in the extension string (renderer: " + ts::gl::rendererString() + ")");
   // Each method alone (the Frames of multitexture_frames.hpp: one glBegin a pass), then both side by side: the
   // figure's picture, a nested frame the reference recomputes.
   for (int m = kCombine3; m <= kTwoPasses; ++m) {

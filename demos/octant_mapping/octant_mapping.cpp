@@ -57,7 +57,7 @@
 #include "octant_mapping_frames.hpp"  // the five views
 #include "octant_mapping_gl.hpp"      // the mesh and the GL renders of the raster
 #include "octant_mapping_math.hpp"
-#include "octant_mapping_seed.hpp"    // what the seed prints, and its misprints
+#include "octant_mapping_seed.hpp"  // what the seed prints, and its misprints
 
 namespace {
 using namespace octant;
@@ -109,34 +109,46 @@ class OctantMapping final : public ts::Scene {
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
-        {"octant_tables", "Seed 004: the forward table",
+        {"octant_tables",
+         "Seed 004: the forward table",
          "The line u = 1/4 of Rogers' grid mapped onto the sphere octant (theta = (pi/2) u, phi = pi/2 - (pi/4) w), "
          "tabulated as the seed prints it, the seed's misprints flagged in red beside the corrected values; right: "
          "the line on the octant.",
-         {"--view", "table", "--u", "0.25"}, 1280, 600,
+         {"--view", "table", "--u", "0.25"},
+         1280,
+         600,
          "u = 1/4, w = 1/2 lands at ({table_xyz[u=1/4,w=1/2].x}, {table_xyz[u=1/4,w=1/2].y}, "
          "{table_xyz[u=1/4,w=1/2].z}); the seed's x, y, z agree ({seed_table_xyz_wrong} wrong), its theta and phi "
          "carry 4 misprints."},
-        {"octant_catmull", "Seed 004: Catmull subdivision",
+        {"octant_catmull",
+         "Seed 004: Catmull subdivision",
          "Catmull's subdivision on pixel (5,9): left, the raster with each pixel the mean of the fragment of level 4 "
          "holding its centre, the fragments' images and the chosen one's; middle, the fragments on the pattern; "
          "right, the chosen fragment's texels; below, level by level.",
-         {"--view", "catmull", "--pixel", "5,9", "--level", "4"}, 1280, 720,
+         {"--view", "catmull", "--pixel", "5,9", "--level", "4"},
+         1280,
+         720,
          "After {catmull_levels[5,9]} subdivisions the fragment covers one pixel centre and 4x4 texels, "
          "{catmull_line_texels} on lines: {catmull_fraction} = 7/16."},
-        {"octant_inverse_pixel", "Seed 004: inverse pixel mapping",
+        {"octant_inverse_pixel",
+         "Seed 004: inverse pixel mapping",
          "Pixel (21,15) mapped back onto the pattern: its corners joined unrounded (red) and as the seed prints them "
          "(orange dashes, 3 decimals), the true curved preimage (wide, blue), and the texel centres each counts; the "
          "corner table with the seed's printed values, misprints in red.",
-         {"--view", "inverse", "--pixel", "21,15"}, 1280, 720,
+         {"--view", "inverse", "--pixel", "21,15"},
+         1280,
+         720,
          "With the corners rounded as printed, {inverse_texels} texel centres, {inverse_line_texels} on lines: "
          "{inverse_fraction} (the seed's 5/18); unrounded {inverse_texels[unrounded]}, "
          "{inverse_line_texels[unrounded]}: {inverse_fraction[unrounded]}."},
-        {"octant_methods", "Seed 004: four methods",
+        {"octant_methods",
+         "Seed 004: four methods",
          "The 32x32 raster by the exact area integral of the pattern under each pixel's preimage, point sampling "
          "(GL_NEAREST), Catmull at 4 levels, inverse mapping (texel centres in the preimage), GL trilinear and GL "
          "anisotropic 16x; under each, its RMS error against the exact values over the pixels wholly on the octant.",
-         {"--view", "methods"}, 1280, 560,
+         {"--view", "methods"},
+         1280,
+         560,
          "RMS error against the exact area integral: GL_NEAREST {rms_exact[nearest]}, Catmull-4 "
          "{rms_exact[catmull4]}, inverse mapping {rms_exact[inverse]}, trilinear {rms_exact[trilinear]}, "
          "anisotropic {rms_exact[anisotropic]}; point sampling shows nothing of {lost_line_pixels[nearest]} of "
@@ -201,17 +213,24 @@ void OctantMapping::addShownExamples(glm::ivec2 P, const Add& add) const {
   const auto corners = cornersUW(P.x, P.y);
   if (!corners) return;
   const char* what[10] = {"x'", "y'", "z'", "x", "y", "z", "phi_deg", "theta_deg", "u", "w"};
-  const char* meaning[10] = {"x' = Px/16 - 1", "y' = Py/16 - 1", "z' = sqrt(1 - x'^2 - y'^2), on the visible hemisphere",
-                             "x of (x,y,z) = V^T (x',y',z')", "y of V^T (x',y',z')", "z of V^T (x',y',z')",
-                             "phi = acos y, degrees", "theta = atan2(x, z), degrees", "u = theta/(pi/2)",
+  const char* meaning[10] = {"x' = Px/16 - 1",
+                             "y' = Py/16 - 1",
+                             "z' = sqrt(1 - x'^2 - y'^2), on the visible hemisphere",
+                             "x of (x,y,z) = V^T (x',y',z')",
+                             "y of V^T (x',y',z')",
+                             "z of V^T (x',y',z')",
+                             "phi = acos y, degrees",
+                             "theta = atan2(x, z), degrees",
+                             "u = theta/(pi/2)",
                              "w = (pi/2 - phi)/(pi/4)"};
   for (const glm::dvec2& c : pixelCorners(P.x, P.y)) {
     const Back b = *backOfPixelPoint(c);
-    const double v[10] = {b.viewPoint.x, b.viewPoint.y, b.viewPoint.z, b.point.x, b.point.y, b.point.z,
-                          b.phi * 180 / kPi, b.theta * 180 / kPi, b.uw.x, b.uw.y};
+    const double v[10] = {b.viewPoint.x, b.viewPoint.y,     b.viewPoint.z,       b.point.x, b.point.y,
+                          b.point.z,     b.phi * 180 / kPi, b.theta * 180 / kPi, b.uw.x,    b.uw.y};
     for (int e = 0; e < 10; ++e)
       add(N::corner(c, what[e]), v[e],
-          std::string("corner (") + std::to_string(int(c.x)) + "," + std::to_string(int(c.y)) + ") of " + at + ": " + meaning[e]);
+          std::string("corner (") + std::to_string(int(c.x)) + "," + std::to_string(int(c.y)) + ") of " + at + ": " +
+              meaning[e]);
   }
   const auto qe = toTexels(*corners), qr = toTexels(rounded3(*corners));
   const CentreCount ce = countCentres(qe), cr = countCentres(qr), cc = countCentresCurved(P.x, P.y);
@@ -228,8 +247,10 @@ void OctantMapping::addShownExamples(glm::ivec2 P, const Add& add) const {
     if (std::find(ce.inside.begin(), ce.inside.end(), t) == ce.inside.end()) {
       const std::string texel = "texel (" + std::to_string(t.x) + "," + std::to_string(t.y) + ")";
       add(N::centreDepth("outside", P, t), -centreDepth(qe, t),
-          at + ": " + texel + "'s centre, counted only with the corners rounded: texels outside the unrounded quadrilateral");
-      add(N::centreDepth("inside_rounded", P, t), centreDepth(qr, t), at + ": the same centre, texels inside the rounded one");
+          at + ": " + texel +
+              "'s centre, counted only with the corners rounded: texels outside the unrounded quadrilateral");
+      add(N::centreDepth("inside_rounded", P, t), centreDepth(qr, t),
+          at + ": the same centre, texels inside the rounded one");
     }
 }
 
@@ -244,20 +265,24 @@ ts::Measurements OctantMapping::measure(ts::Renderer& r) {
       for (int a = 0; a < 3; ++a)
         add(views::names::tableXyz(u, row.w, a), row.xyz[a],
             std::string(axis[a]) + " of the line u = " + views::fraction(u) + " at w = " + views::fraction(row.w) +
-                (u == 0.25 && row.w == 0.5 ? " (theta = pi/8, phi = 3pi/8: x = sqrt(2)/4, y = cos(3pi/8), z = (2 + sqrt(2))/4)"
-                                           : ""));
+                (u == 0.25 && row.w == 0.5
+                     ? " (theta = pi/8, phi = 3pi/8: x = sqrt(2)/4, y = cos(3pi/8), z = (2 + sqrt(2))/4)"
+                     : ""));
     add(views::names::tableThetaDeg(u), rows[0].theta * 180 / kPi, "theta = (pi/2) u of the line, in degrees");
     double err = 0;
     for (const TableRow& row : rows) err = std::max(err, glm::length(row.xyz - closedForm(row.u, row.w)));
-    add(views::names::tableMaxError(u), err, "largest distance of the table's points from the closed form (sin, cos of u, w)");
+    add(views::names::tableMaxError(u), err,
+        "largest distance of the table's points from the closed form (sin, cos of u, w)");
   };
   addTable(0.25);
   if (views::fraction(s_.u) != views::fraction(0.25)) addTable(s_.u);
-  add("seed_table_xyz_wrong", seed::tableXyzWrong(), "of the 15 x, y, z the seed prints (2 decimals), how many are wrong");
+  add("seed_table_xyz_wrong", seed::tableXyzWrong(),
+      "of the 15 x, y, z the seed prints (2 decimals), how many are wrong");
   // Example 2: Catmull's fragment.
   const Fragment sf = fragmentAt({0.0, 0.0}, 4);
   const Average a = fragmentAverage(sf);
-  add("catmull_fraction", a.value(), "the seed's fragment (theta in [0, pi/32], phi in [31pi/64, pi/2]): line texels / texels");
+  add("catmull_fraction", a.value(),
+      "the seed's fragment (theta in [0, pi/32], phi in [31pi/64, pi/2]): line texels / texels");
   add("catmull_line_texels", a.line, "its texels on grid lines (the seed: 7)");
   add("catmull_texels", a.total, "its texels (the seed: 16, 4x4)");
   add("catmull_levels[5,9]", levelsToOneCentre(seed::kCatmullPx, seed::kCatmullPy),
@@ -274,7 +299,8 @@ ts::Measurements OctantMapping::measure(ts::Renderer& r) {
   add("inverse_fraction[unrounded]", exact.fraction(), "the same with the corners unrounded");
   add("inverse_texels[unrounded]", exact.texels, "texel centres in the unrounded quadrilateral");
   add("inverse_line_texels[unrounded]", exact.lines, "of them on lines");
-  add("inverse_texels[curved]", curved.texels, "texel centres whose sphere point lands in the pixel (the true preimage)");
+  add("inverse_texels[curved]", curved.texels,
+      "texel centres whose sphere point lands in the pixel (the true preimage)");
   add("inverse_line_texels[curved]", curved.lines, "of them on lines");
   // The seed's misprints, each checked (octant_mapping_seed.hpp).
   const auto mp = seed::misprints();
@@ -282,14 +308,16 @@ ts::Measurements OctantMapping::measure(ts::Renderer& r) {
     add("misprint[" + m.id + "]", m.value, m.where + ": printed " + m.printed + "; it is " + m.correct);
   add("misprints_flagged", double(mp.size()), "misprints of the seed the demo flags");
   const seed::CornerCheck cc = seed::checkCorners();
-  add("seed_corner_entries_wrong", cc.wrong, "of the 40 entries of the inverse example's corner tables, off by more than a unit of their last digit");
+  add("seed_corner_entries_wrong", cc.wrong,
+      "of the 40 entries of the inverse example's corner tables, off by more than a unit of their last digit");
   // The chosen pixel.
   const glm::ivec2 P = parsePixelOption(pixelText_);
   addShownExamples(P, add);
   const size_t k = size_t(pixelIndex(P.x, P.y));
   const Raster& R = raster();
   const double none = -1;
-  add("pixel_exact", R.interior[k] ? R.exact[k] : none, "the chosen pixel's exact area integral (-1: not wholly on the octant)");
+  add("pixel_exact", R.interior[k] ? R.exact[k] : none,
+      "the chosen pixel's exact area integral (-1: not wholly on the octant)");
   add("pixel_catmull4", R.centreOnPatch[k] ? R.catmull[k] : none, "its Catmull value at 4 levels");
   add("pixel_inverse", R.interior[k] ? R.inverse[k] : none, "its inverse-mapping value (unrounded corners)");
   add("pixel_catmull_levels", levelsToOneCentre(P.x, P.y), "subdivisions until its fragment covers one pixel centre");
@@ -301,12 +329,16 @@ ts::Measurements OctantMapping::measure(ts::Renderer& r) {
   gl.trilinear = renderRaster(r, GlFilter::Trilinear);
   ts::measureProgress(0.7);
   gl.anisotropic = renderRaster(r, GlFilter::Anisotropic);
-  add("raster_pixels_compared", interiorPixels(R), "pixels whose whole preimage lies on the octant (the comparisons' pixels)");
+  add("raster_pixels_compared", interiorPixels(R),
+      "pixels whose whole preimage lies on the octant (the comparisons' pixels)");
   add("line_pixels", linePixels(R), "of them with some grid line under the preimage (exact > 0)");
-  const std::pair<const char*, const std::vector<double>*> methods[] = {
-      {"nearest", &gl.nearest}, {"catmull4", &R.catmull}, {"inverse", &R.inverse},
-      {"trilinear", &gl.trilinear}, {"anisotropic", &gl.anisotropic}};
-  const char* meaning[] = {"GL_NEAREST, one sample at the pixel centre", "Catmull: the mean of the level-4 fragment holding the centre",
+  const std::pair<const char*, const std::vector<double>*> methods[] = {{"nearest", &gl.nearest},
+                                                                        {"catmull4", &R.catmull},
+                                                                        {"inverse", &R.inverse},
+                                                                        {"trilinear", &gl.trilinear},
+                                                                        {"anisotropic", &gl.anisotropic}};
+  const char* meaning[] = {"GL_NEAREST, one sample at the pixel centre",
+                           "Catmull: the mean of the level-4 fragment holding the centre",
                            "inverse mapping: texel centres in the corners' quadrilateral", "GL_LINEAR_MIPMAP_LINEAR",
                            "GL_LINEAR_MIPMAP_LINEAR with anisotropy 16"};
   for (size_t m = 0; m < 5; ++m)
@@ -317,7 +349,8 @@ ts::Measurements OctantMapping::measure(ts::Renderer& r) {
         "pixels over a line that show none of it (value 0)");
   int mismatches = 0;
   for (size_t q = 0; q < R.point.size(); ++q) mismatches += R.interior[q] && R.point[q] != gl.nearest[q];
-  add("point_gl_vs_cpu_mismatches", mismatches, "pixels where GL_NEAREST's texel differs from the CPU's (the mesh is 64x64)");
+  add("point_gl_vs_cpu_mismatches", mismatches,
+      "pixels where GL_NEAREST's texel differs from the CPU's (the mesh is 64x64)");
   out.detail = gl;
   return out;
 }

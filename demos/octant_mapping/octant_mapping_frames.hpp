@@ -19,8 +19,8 @@ using namespace views;
 enum View { kOverview, kTable, kCatmull, kInverse, kMethods };
 enum Method { kExact, kNearest, kCatmull4, kInverseMap, kTrilinear, kAnisotropic };
 inline const char* methodLabel(int m) {
-  const char* n[] = {"exact area integral", "point sampling (GL_NEAREST)", "Catmull, 4 levels",
-                     "inverse mapping", "GL trilinear", "GL anisotropic 16x"};
+  const char* n[] = {"exact area integral", "point sampling (GL_NEAREST)", "Catmull, 4 levels", "inverse mapping",
+                     "GL trilinear",        "GL anisotropic 16x"};
   return n[m];
 }
 inline const char* methodKey(int m) {
@@ -158,11 +158,11 @@ inline ts::Frame overviewView(const State& s, int width, int height, const GlRas
                kAmber, cells[1].scale);
     std::string line = s.method == kExact ? std::to_string(interiorPixels(R)) + " px on the octant, " +
                                                 std::to_string(linePixels(R)) + " on lines"
-                       : v.empty() ? std::string("measuring ...")
-                                 : std::string(methodKey(s.method)) + " " +
-                                       (std::isfinite(v[k]) ? fmt("%.3f", v[k]) : "-") + ", rms " +
-                                       fmt("%.3f", rmsAgainstExact(v, R)) + " over " +
-                                       std::to_string(interiorPixels(R)) + " px";
+                       : v.empty()
+                           ? std::string("measuring ...")
+                           : std::string(methodKey(s.method)) + " " + (std::isfinite(v[k]) ? fmt("%.3f", v[k]) : "-") +
+                                 ", rms " + fmt("%.3f", rmsAgainstExact(v, R)) + " over " +
+                                 std::to_string(interiorPixels(R)) + " px";
     L::caption(f, b, line, kAmber, cells[1].scale);
   }
   // The pixel on the pattern.
@@ -201,7 +201,10 @@ inline std::vector<Row> tableRows(double u, const ts::Measurements& measured) {
   const auto t = forwardTable(u);
   rows.push_back({{""}, {"u"}, {"w"}, {"theta"}, {"phi"}, {"x"}, {"y"}, {"z"}});
   for (size_t k = 0; k < t.size(); ++k) {
-    Row r = {{""}, {k == 0 ? fraction(u) : ""}, {fraction(t[k].w)}, {k == 0 ? angleText(t[k].theta) : L::Text()},
+    Row r = {{""},
+             {k == 0 ? fraction(u) : ""},
+             {fraction(t[k].w)},
+             {k == 0 ? angleText(t[k].theta) : L::Text()},
              {angleText(t[k].phi)}};
     for (int a = 0; a < 3; ++a) r.push_back({num(measured, names::tableXyz(u, t[k].w, a), "%.3f")});
     rows.push_back(r);
@@ -209,7 +212,9 @@ inline std::vector<Row> tableRows(double u, const ts::Measurements& measured) {
     const seed::PrintedRow& p = seed::table()[k];
     const bool thetaWrong = k == 0, phiWrong = k >= 1 && k <= 3;
     const double pr[3] = {p.x, p.y, p.z};
-    Row q = {{"seed", kDim}, {k == 0 ? fraction(u) : "", kDim}, {p.w, kDim},
+    Row q = {{"seed", kDim},
+             {k == 0 ? fraction(u) : "", kDim},
+             {p.w, kDim},
              {std::string(p.theta) + (thetaWrong ? " !" : ""), thetaWrong ? kRed : kDim},
              {std::string(p.phi) + (phiWrong ? " !" : ""), phiWrong ? kRed : kDim}};
     for (int a = 0; a < 3; ++a)
@@ -225,14 +230,15 @@ inline std::vector<Row> tableNotes(double u, const ts::Measurements& measured) {
   if (fraction(u) == fraction(0.25)) {
     for (const seed::Misprint& m : seed::misprints())
       if (m.id.rfind("table_", 0) == 0)
-        rows.push_back({{"! " + m.where.substr(m.where.find("row")) + " printed " + m.printedAs + " = " +
-                             L::given("the seed's entry, read as printed", m.printedValue, "%.3f") + "; it is " +
-                             m.correctAs + " = " + num(measured, "misprint[" + m.id + "]", "%.3f") +
-                             (m.note.empty() ? "" : " " + m.note),
-                         kRed}});
-    rows.push_back({{"x, y, z: the seed's 15 entries agree to 2 decimals (" + num(measured, "seed_table_xyz_wrong", "%.0f") +
-                         " wrong); p stands for pi, the transliteration's",
-                     kWhite}});
+        rows.push_back(
+            {{"! " + m.where.substr(m.where.find("row")) + " printed " + m.printedAs + " = " +
+                  L::given("the seed's entry, read as printed", m.printedValue, "%.3f") + "; it is " + m.correctAs +
+                  " = " + num(measured, "misprint[" + m.id + "]", "%.3f") + (m.note.empty() ? "" : " " + m.note),
+              kRed}});
+    rows.push_back(
+        {{"x, y, z: the seed's 15 entries agree to 2 decimals (" + num(measured, "seed_table_xyz_wrong", "%.0f") +
+              " wrong); p stands for pi, the transliteration's",
+          kWhite}});
   } else {
     rows.push_back({{"the seed tabulates u = 1/4 only (] and [ step u by 1/16)", kDim}});
   }
@@ -240,8 +246,8 @@ inline std::vector<Row> tableNotes(double u, const ts::Measurements& measured) {
                        num(measured, names::tableMaxError(u), "%.1e"),
                    kAmber}});
   const Linear lm = linearMapping();
-  rows.push_back({{"from the corners: A = " + angleText(lm.A) + ", B = " + angleText(lm.B) + ", C = -" + angleText(-lm.C) +
-                       ", D = " + angleText(lm.D),
+  rows.push_back({{"from the corners: A = " + angleText(lm.A) + ", B = " + angleText(lm.B) + ", C = -" +
+                       angleText(-lm.C) + ", D = " + angleText(lm.D),
                    kWhite}});
   return rows;
 }
@@ -249,8 +255,8 @@ inline std::vector<Row> tableNotes(double u, const ts::Measurements& measured) {
 inline float notesHeight(const std::vector<Row>& notes, int scale, float width) {
   float h = 0;
   for (const Row& r : notes)
-    h += std::max(L::lineHeight(scale), float(L::captionLines(r[0].text.text, scale, width)) * L::lineHeight(scale) +
-                                            float(4 * scale));
+    h += std::max(L::lineHeight(scale),
+                  float(L::captionLines(r[0].text.text, scale, width)) * L::lineHeight(scale) + float(4 * scale));
   return h;
 }
 
@@ -271,7 +277,8 @@ inline ts::Frame tableView(const State& s, int width, int height, const ts::Meas
   for (int sc = 2; sc > 1; --sc) {
     const float tall = float(rows.size() + 1) * L::lineHeight(sc) + notesH + 8;
     const bool room = wide ? tall <= H - 2 * m : tall <= (H - 2 * m) * 0.6f;
-    if (room && float(tableChars(rows)) * ts::text::width("0", sc) <= textW && ts::text::width(title.text, sc) <= W - 2 * m) {
+    if (room && float(tableChars(rows)) * ts::text::width("0", sc) <= textW &&
+        ts::text::width(title.text, sc) <= W - 2 * m) {
       ts_ = sc;
       break;
     }
@@ -300,8 +307,11 @@ inline ts::Frame tableView(const State& s, int width, int height, const ts::Meas
   for (int k = 0; k <= 32; ++k) line.push_back({double(s.u), k / 32.0});
   addOctant(f, cells[0], tex, s, {onSurface(line, kMagenta, 3.0f, false, "table_line")});
   L::caption(f, cells[0].above, "the line u = " + fraction(s.u) + " on the octant", kWhite, cells[0].scale);
-  const std::vector<ts::LegendEntry> key = {{kMagenta, "the line u = " + fraction(s.u)}, {kAmber, "the octant's edges"},
-                                            {kAxis[0], "x axis"}, {kAxis[1], "y axis"}, {kAxis[2], "z axis"}};
+  const std::vector<ts::LegendEntry> key = {{kMagenta, "the line u = " + fraction(s.u)},
+                                            {kAmber, "the octant's edges"},
+                                            {kAxis[0], "x axis"},
+                                            {kAxis[1], "y axis"},
+                                            {kAxis[2], "z axis"}};
   L::legend(f, cells[0].below, key, keyScale(cells[0].below, key, cells[0].scale));
   return f;
 }
@@ -329,14 +339,15 @@ inline std::vector<Row> catmullRows(glm::ivec2 P, int level, const ts::Measureme
                     {"[" + piFraction(th.x) + ", " + piFraction(th.y) + "]"},
                     {"[" + piFraction(ph.x) + ", " + piFraction(ph.y) + "]"}});
   }
-  rows.push_back({{"Catmull: subdivide until a fragment covers one pixel centre; the pixel takes the mean of its texels.",
-                   kWhite}});
+  rows.push_back(
+      {{"Catmull: subdivide until a fragment covers one pixel centre; the pixel takes the mean of its texels.",
+        kWhite}});
   if (P == glm::ivec2(seed::kCatmullPx, seed::kCatmullPy)) {
     const L::Text line = L::given("the seed's line texels", seed::kCatmullLine, "%.0f"),
                   all = L::given("the seed's texels", seed::kCatmullTexels, "%.0f");
-    rows.push_back({{"the seed's example: " + L::given("the seed's levels", seed::kCatmullLevels, "%.0f") + " levels, " +
-                         line + " of " + all + " texels on lines = " + line + "/" + all + "; ! it prints phi = " +
-                         piFraction(seed::kCatmullPhiPrinted) + " for " +
+    rows.push_back({{"the seed's example: " + L::given("the seed's levels", seed::kCatmullLevels, "%.0f") +
+                         " levels, " + line + " of " + all + " texels on lines = " + line + "/" + all +
+                         "; ! it prints phi = " + piFraction(seed::kCatmullPhiPrinted) + " for " +
                          piFraction(fragmentAt({0, 0}, seed::kCatmullLevels).phiRange().x),
                      kRed}});
   }
@@ -364,7 +375,8 @@ inline ts::Frame catmullView(const State& s, int width, int height, const ts::Me
   const auto cells = L::flow({m, m, float(width) - m, float(height) - m - textH}, spec);
   const Box text{m, float(height) - m - textH + 4, float(width) - m, float(height) - m};
   const float y = table(f, text, rows, 2);
-  if (misprint) L::legend(f, {text.x0, y, text.x1, text.y1}, {{kRed, "! a misprint of the seed"}}, 1);  // as the notes above it
+  if (misprint)
+    L::legend(f, {text.x0, y, text.x1, text.y1}, {{kRed, "! a misprint of the seed"}}, 1);  // as the notes above it
   // Each pixel the mean of the level's fragment holding its centre.
   std::vector<double> v(R.exact.size(), std::nan(""));
   const auto& geo = rasterGeometry();
@@ -379,7 +391,8 @@ inline ts::Frame catmullView(const State& s, int width, int height, const ts::Me
     for (int e = 0; e <= n; ++e) {
       addPolyline(onRaster, curveOnRaster({double(e) / n, 0}, {double(e) / n, 1}, 16), kFragmentEdge, false);
       addPolyline(onRaster, curveOnRaster({0, double(e) / n}, {1, double(e) / n}, 16), kFragmentEdge, false);
-      onPattern.insert(onPattern.end(), {{float(e) / n, 0.0f}, {float(e) / n, 1.0f}, {0.0f, float(e) / n}, {1.0f, float(e) / n}});
+      onPattern.insert(onPattern.end(),
+                       {{float(e) / n, 0.0f}, {float(e) / n, 1.0f}, {0.0f, float(e) / n}, {1.0f, float(e) / n}});
     }
     rasterP.batches.insert(rasterP.batches.end() - 2, onRaster);  // under the outline and the pixel
     pat.batches.push_back(ts::lineSegments(onPattern, kFragmentEdge, 1.0f, "fragment_edges"));
@@ -396,7 +409,8 @@ inline ts::Frame catmullView(const State& s, int width, int height, const ts::Me
     rasterP.batches.push_back(img);
     ts::Batch dots = flat("centres_covered");
     for (const auto& c : centresCovered(fr))
-      quad(dots, {(c.x + 0.35f) / kRaster, (c.y + 0.35f) / kRaster}, {(c.x + 0.65f) / kRaster, (c.y + 0.65f) / kRaster}, kGreen);
+      quad(dots, {(c.x + 0.35f) / kRaster, (c.y + 0.35f) / kRaster}, {(c.x + 0.65f) / kRaster, (c.y + 0.65f) / kRaster},
+           kGreen);
     rasterP.batches.push_back(dots);
     pat.batches.push_back(ts::lineLoop({glm::vec2(a), {float(b.x), float(a.y)}, glm::vec2(b), {float(a.x), float(b.y)}},
                                        kGreen, 3.0f, "fragment"));
@@ -407,15 +421,18 @@ inline ts::Frame catmullView(const State& s, int width, int height, const ts::Me
                                          3.0f, "fragment"));
     f.panels.push_back(zoom);
     under = num(measured, names::catmull("line_texels", s.pixel, s.level), "%.0f") + " of " +
-            num(measured, names::catmull("texels", s.pixel, s.level), "%.0f") + " on lines: " +
-            num(measured, names::catmull("fraction", s.pixel, s.level), "%.4f");
+            num(measured, names::catmull("texels", s.pixel, s.level), "%.0f") +
+            " on lines: " + num(measured, names::catmull("fraction", s.pixel, s.level), "%.4f");
   }
   f.panels.insert(f.panels.begin(), {rasterP, pat});
   const L::Text fragments = L::given("fragments along a side, 2^level", n, "%.0f");
   const L::Text texels = L::given("the pattern's texels along a side", kTexels, "%.0f");
-  L::caption(f, cells[0].above, "level " + std::to_string(s.level) + ": each pixel its fragment's mean", kWhite, cells[0].scale);
+  L::caption(f, cells[0].above, "level " + std::to_string(s.level) + ": each pixel its fragment's mean", kWhite,
+             cells[0].scale);
   keyWithPixel(f, cells[0].below,
-               {{kRed, "pixel " + pixelText(s.pixel).text}, {kGreen, "its fragment"}, {kAmber, "the octant's outline"},
+               {{kRed, "pixel " + pixelText(s.pixel).text},
+                {kGreen, "its fragment"},
+                {kAmber, "the octant's outline"},
                 {kFragmentEdge, "fragments' edges"}},
                cells[0].scale, s.pixel);
   L::caption(f, cells[1].above, fragments + "x" + fragments + " fragments on the pattern", kWhite, cells[1].scale);
@@ -438,8 +455,8 @@ inline std::vector<Row> inverseRows(glm::ivec2 P, const ts::Measurements& measur
   const auto pc = pixelCorners(P.x, P.y);
   for (size_t c = 0; c < 4; ++c) {
     const Back b = *backOfPixelPoint(pc[c]);
-    const double vals[10] = {b.viewPoint.x, b.viewPoint.y, b.viewPoint.z, b.point.x, b.point.y, b.point.z,
-                             b.phi * 180 / kPi, b.theta * 180 / kPi, b.uw.x, b.uw.y};
+    const double vals[10] = {b.viewPoint.x, b.viewPoint.y,     b.viewPoint.z,       b.point.x, b.point.y,
+                             b.point.z,     b.phi * 180 / kPi, b.theta * 180 / kPi, b.uw.x,    b.uw.y};
     Row r = {{L::given("the corner's Px", pc[c].x, "%.0f")}, {L::given("the corner's Py", pc[c].y, "%.0f")}};
     for (int e = 0; e < 10; ++e) r.push_back({num(measured, names::corner(pc[c], what[e]), fmts[e])});
     rows.push_back(r);
@@ -459,32 +476,35 @@ inline std::vector<Row> inverseRows(glm::ivec2 P, const ts::Measurements& measur
   }
   const auto count = [&](const std::string& variant, const char* fraction) {
     return num(measured, names::inverse("texels", P, variant), "%.0f") + " texels, " +
-           num(measured, names::inverse("line_texels", P, variant), "%.0f") + " on lines = " +
-           num(measured, names::inverse("fraction", P, variant), fraction);
+           num(measured, names::inverse("line_texels", P, variant), "%.0f") +
+           " on lines = " + num(measured, names::inverse("fraction", P, variant), fraction);
   };
   rows.push_back({{"corners to 3 decimals as printed, centres at (i+1/2, j+1/2), lines at " + gridLinesText() +
                        ", inside or on: " + count("", "%.4f"),
                    kAmber}});
-  rows.push_back({{"unrounded corners: " + count("unrounded", "%.4f") + "; the curved preimage: " + count("curved", "%.4f"),
-                   kWhite}});
+  rows.push_back(
+      {{"unrounded corners: " + count("unrounded", "%.4f") + "; the curved preimage: " + count("curved", "%.4f"),
+        kWhite}});
   const CentreCount ce = countCentres(toTexels(*corners)), cr = countCentres(toTexels(rounded3(*corners)));
   for (const auto& t : cr.inside) {
     bool inExact = false;
     for (const auto& q : ce.inside) inExact |= q == t;
     if (!inExact)
-      rows.push_back({{"texel (" + L::given("the texel's column i", t.x, "%.0f") + "," +
-                           L::given("the texel's row j", t.y, "%.0f") + ")" + (pattern(t.x, t.y) > 0 ? ", on a line" : "") +
-                           ": its centre is " + num(measured, names::centreDepth("outside", P, t), "%.3f") +
-                           " texels outside the unrounded quadrilateral, " +
-                           num(measured, names::centreDepth("inside_rounded", P, t), "%.3f") + " inside the rounded one",
-                       kMagenta}});
+      rows.push_back(
+          {{"texel (" + L::given("the texel's column i", t.x, "%.0f") + "," +
+                L::given("the texel's row j", t.y, "%.0f") + ")" + (pattern(t.x, t.y) > 0 ? ", on a line" : "") +
+                ": its centre is " + num(measured, names::centreDepth("outside", P, t), "%.3f") +
+                " texels outside the unrounded quadrilateral, " +
+                num(measured, names::centreDepth("inside_rounded", P, t), "%.3f") + " inside the rounded one",
+            kMagenta}});
   }
   if (seeds) {
     const seed::PrintedCorner &c0 = seed::corners()[0], &c1 = seed::corners()[1];
-    rows.push_back({{"! the seed prints z = " + L::given("the seed prints z at the first corner", c0.z, "%.3f") + " at " +
-                         pixelText({c0.Px, c0.Py}) + " and phi = " +
-                         L::given("the seed prints phi at the second corner", c1.phiDeg, "%.2f") + " at " +
-                         pixelText({c1.Px, c1.Py}) + "; it omits T, and gives the sphere as y = cos theta, z = cos theta sin theta",
+    rows.push_back({{"! the seed prints z = " + L::given("the seed prints z at the first corner", c0.z, "%.3f") +
+                         " at " + pixelText({c0.Px, c0.Py}) +
+                         " and phi = " + L::given("the seed prints phi at the second corner", c1.phiDeg, "%.2f") +
+                         " at " + pixelText({c1.Px, c1.Py}) +
+                         "; it omits T, and gives the sphere as y = cos theta, z = cos theta sin theta",
                      kRed}});
   }
   return rows;
@@ -511,7 +531,8 @@ inline ts::Frame inverseView(const State& s, int width, int height, const ts::Me
   std::vector<ts::LegendEntry> rasterKey = {{kRed, "pixel " + pixelText(s.pixel).text},
                                             {kAmber, "the octant's outline"},
                                             {kNoValue, "no value: partly off the octant"}};
-  if (s.pixel == glm::ivec2(seed::kInversePx, seed::kInversePy)) rasterKey.push_back({kRed, "! a misprint of the seed"});
+  if (s.pixel == glm::ivec2(seed::kInversePx, seed::kInversePy))
+    rasterKey.push_back({kRed, "! a misprint of the seed"});
   keyWithPixel(f, cells[0].below, rasterKey, cells[0].scale, s.pixel);
   L::caption(f, cells[1].above, "pixel " + pixelText(s.pixel) + " on the pattern", kWhite, cells[1].scale);
   L::legend(f, cells[1].below, pre.key, keyScale(cells[1].below, pre.key, cells[1].scale));
@@ -552,7 +573,8 @@ inline ts::Frame methodsView(const State& s, int width, int height, const ts::Me
     }
   }
   keyWithPixel(f, {8, float(height) - 8 - keyH + 4, float(width) - 8, float(height) - 4},
-               {{kRed, "pixel " + pixelText(s.pixel).text}, {kAmber, "the octant's outline"},
+               {{kRed, "pixel " + pixelText(s.pixel).text},
+                {kAmber, "the octant's outline"},
                 {kNoValue, "no value: the pixel is partly off the octant"}},
                1, s.pixel);
   return f;

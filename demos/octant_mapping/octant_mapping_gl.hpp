@@ -50,8 +50,9 @@ inline glm::mat4 viewMatrix() { return glm::mat4(glm::mat3(view())); }
 
 enum class GlFilter { Nearest, Trilinear, Anisotropic };
 inline const char* glFilterName(GlFilter f) {
-  return f == GlFilter::Nearest ? "GL_NEAREST" : f == GlFilter::Trilinear ? "GL_LINEAR_MIPMAP_LINEAR"
-                                                                          : "GL_LINEAR_MIPMAP_LINEAR, anisotropy 16";
+  return f == GlFilter::Nearest     ? "GL_NEAREST"
+         : f == GlFilter::Trilinear ? "GL_LINEAR_MIPMAP_LINEAR"
+                                    : "GL_LINEAR_MIPMAP_LINEAR, anisotropy 16";
 }
 
 // The raster drawn by GL with one filter: intensity per pixel (pixelIndex),

@@ -46,9 +46,9 @@
 
 namespace octant {
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kTexels = 64;  // the pattern, per side
-constexpr int kCells = 4;    // grid cells per side: lines at ⌊63 k/4⌋
-constexpr int kRaster = 32;  // the raster, per side
+constexpr int kTexels = 64;    // the pattern, per side
+constexpr int kCells = 4;      // grid cells per side: lines at ⌊63 k/4⌋
+constexpr int kRaster = 32;    // the raster, per side
 constexpr int kEdgeSteps = 8;  // points per side of a pixel's curved preimage
 constexpr double kViewYDeg = -45.0, kViewXDeg = 35.0;
 
@@ -228,7 +228,7 @@ struct PixelGeometry {
   bool interior = false;       // the whole pixel's preimage is (the pixels compared)
   glm::dvec2 centreUW{0.0};
   std::array<glm::dvec2, 4> cornerUW{};  // valid when interior
-  ts::Polygon2 preimage;  // the curved preimage in texel units, kEdgeSteps points a side (interior only)
+  ts::Polygon2 preimage;                 // the curved preimage in texel units, kEdgeSteps points a side (interior only)
 };
 inline PixelGeometry pixelGeometry(int Px, int Py) {
   PixelGeometry g;
@@ -296,7 +296,8 @@ struct CentreCount {
 inline CentreCount countCentres(const std::array<glm::dvec2, 4>& q) {
   CentreCount c;
   double x0 = q[0].x, x1 = x0, y0 = q[0].y, y1 = y0;
-  for (const auto& p : q) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  for (const auto& p : q)
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
   for (int j = int(std::floor(y0 - 0.5)); j <= int(std::ceil(y1)); ++j)
     for (int i = int(std::floor(x0 - 0.5)); i <= int(std::ceil(x1)); ++i) {
       const glm::dvec2 t(i + 0.5, j + 0.5);

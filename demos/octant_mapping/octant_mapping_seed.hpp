@@ -35,10 +35,10 @@ inline const std::array<PrintedRow, 5>& table() {
 // The inverse example's tables, pixel (21, 15)'s corners in the seed's order.
 struct PrintedCorner {
   int Px, Py;
-  double xv, yv, zv;       // x', y', z' (z' to 3 decimals)
-  double x, y, z;          // after the inverse view, 3 decimals
+  double xv, yv, zv;        // x', y', z' (z' to 3 decimals)
+  double x, y, z;           // after the inverse view, 3 decimals
   double phiDeg, thetaDeg;  // 2 decimals
-  double u, w;             // 3 decimals
+  double u, w;              // 3 decimals
 };
 inline const std::array<PrintedCorner, 4>& corners() {
   static const std::array<PrintedCorner, 4> c = {{
@@ -50,10 +50,10 @@ inline const std::array<PrintedCorner, 4>& corners() {
   return c;
 }
 // The seed's worked answers.
-constexpr int kCatmullLevels = 4;                      // subdivisions
-constexpr int kCatmullLine = 7, kCatmullTexels = 16;   // 7/16
-constexpr int kInverseLine = 5, kInverseTexels = 18;   // 5/18
-constexpr int kCatmullPx = 5, kCatmullPy = 9;          // the pixel whose centre the seed's fragment covers
+constexpr int kCatmullLevels = 4;                     // subdivisions
+constexpr int kCatmullLine = 7, kCatmullTexels = 16;  // 7/16
+constexpr int kInverseLine = 5, kInverseTexels = 18;  // 5/18
+constexpr int kCatmullPx = 5, kCatmullPy = 9;         // the pixel whose centre the seed's fragment covers
 constexpr int kInversePx = 21, kInversePy = 15;
 // Catmull's fragment's corners, as printed: phi = 59pi/64 for 31pi/64.
 constexpr double kCatmullPhiPrinted = 59 * kPi / 64;
@@ -103,11 +103,16 @@ inline CornerCheck checkCorners() {
     struct E {
       const char* name;
       double printed, computed, unit;
-    } es[] = {{"x'", c.xv, b->viewPoint.x, 1e-4},     {"y'", c.yv, b->viewPoint.y, 1e-4},
-              {"z'", c.zv, b->viewPoint.z, 1e-3},     {"x", c.x, b->point.x, 1e-3},
-              {"y", c.y, b->point.y, 1e-3},           {"z", c.z, b->point.z, 1e-3},
-              {"phi", c.phiDeg, b->phi * 180 / kPi, 1e-2}, {"theta", c.thetaDeg, b->theta * 180 / kPi, 1e-2},
-              {"u", c.u, uw.x, 1e-3},                 {"w", c.w, uw.y, 1e-3}};
+    } es[] = {{"x'", c.xv, b->viewPoint.x, 1e-4},
+              {"y'", c.yv, b->viewPoint.y, 1e-4},
+              {"z'", c.zv, b->viewPoint.z, 1e-3},
+              {"x", c.x, b->point.x, 1e-3},
+              {"y", c.y, b->point.y, 1e-3},
+              {"z", c.z, b->point.z, 1e-3},
+              {"phi", c.phiDeg, b->phi * 180 / kPi, 1e-2},
+              {"theta", c.thetaDeg, b->theta * 180 / kPi, 1e-2},
+              {"u", c.u, uw.x, 1e-3},
+              {"w", c.w, uw.y, 1e-3}};
     for (const E& e : es) {
       ++cc.checked;
       if (std::fabs(e.printed - e.computed) > e.unit + 1e-9) {
@@ -137,14 +142,16 @@ inline std::vector<Misprint> misprints() {
   std::vector<Misprint> out;
   const auto rows = forwardTable(0.25);
   // Example 1: the table.
-  out.push_back({"table_theta_w0", "table u = 1/4, row w = 0: theta",
-                 "\"p/2\" = pi/2 = " + f3(kPi / 2), "pi/8 = " + f3(rows[0].theta) + " (theta = (pi/2) u)", rows[0].theta,
-                 "\"p/2\" = pi/2", kPi / 2, "pi/8", "(theta = (pi/2) u)"});
+  out.push_back({"table_theta_w0", "table u = 1/4, row w = 0: theta", "\"p/2\" = pi/2 = " + f3(kPi / 2),
+                 "pi/8 = " + f3(rows[0].theta) + " (theta = (pi/2) u)", rows[0].theta, "\"p/2\" = pi/2", kPi / 2,
+                 "pi/8", "(theta = (pi/2) u)"});
   const char* phiNames[] = {"", "7pi/16", "3pi/8", "5pi/16"};
   const double phiWrong[] = {0, 7 / (16 * kPi), 3 / (8 * kPi), 5 / (16 * kPi)};
   const char* rowNames[] = {"", "1/4", "1/2", "3/4"};
   for (int k = 1; k <= 3; ++k)
-    out.push_back({std::string("table_phi_w") + (k == 1 ? "1/4" : k == 2 ? "1/2" : "3/4"),
+    out.push_back({std::string("table_phi_w") + (k == 1   ? "1/4"
+                                                 : k == 2 ? "1/2"
+                                                          : "3/4"),
                    std::string("table u = 1/4, row w = ") + rowNames[k] + ": phi",
                    std::string("\"") + table()[size_t(k)].phi + "\" = " + f3(phiWrong[k]),
                    std::string(phiNames[k]) + " = " + f3(rows[size_t(k)].phi), rows[size_t(k)].phi,
@@ -152,15 +159,17 @@ inline std::vector<Misprint> misprints() {
   // Example 2: the fragment's corners.
   const Fragment seedFragment = fragmentAt({0, 0}, 4);
   const double phiLow = seedFragment.phiRange().x;
-  out.push_back({"catmull_phi", "Catmull fragment corners (twice): phi",
-                 "59pi/64 = " + f3(kCatmullPhiPrinted) + " (w = " + f3(uwOf(0, kCatmullPhiPrinted).y) + ", off the patch)",
-                 "31pi/64 = " + f3(phiLow) + " (w = 1/16)", phiLow});
+  out.push_back(
+      {"catmull_phi", "Catmull fragment corners (twice): phi",
+       "59pi/64 = " + f3(kCatmullPhiPrinted) + " (w = " + f3(uwOf(0, kCatmullPhiPrinted).y) + ", off the patch)",
+       "31pi/64 = " + f3(phiLow) + " (w = 1/16)", phiLow});
   // Example 3: the corners' tables.
   const auto first = backOfPixelPoint({21, 15});
   const glm::dvec3 p = first->point;
   const double printedZ = corners()[0].z;
   const double norm2Printed = corners()[0].x * corners()[0].x + corners()[0].y * corners()[0].y + printedZ * printedZ;
-  const double norm2Right = corners()[0].x * corners()[0].x + corners()[0].y * corners()[0].y + round3(p.z) * round3(p.z);
+  const double norm2Right = corners()[0].x * corners()[0].x + corners()[0].y * corners()[0].y +
+                            round3(p.z) * round3(p.z);
   out.push_back({"corner_z_21_15", "inverse example, pixel (21,15)'s first corner: z",
                  "0.341 (x^2 + y^2 + z^2 = " + f3(norm2Printed) + " with the printed x, y)",
                  f3(p.z) + " (x^2 + y^2 + z^2 = " + f3(norm2Right) + ")", p.z});
@@ -173,10 +182,9 @@ inline std::vector<Misprint> misprints() {
                  "y = cos theta, z = cos theta sin theta (y = " + f3(std::cos(first->theta)) + " at (21,15))",
                  "y = cos phi, z = cos theta sin phi (y = " + f3(p.y) + ")", p.y});
   const glm::dmat3 V = view();
-  out.push_back({"view_matrix", "inverse example: the viewing transformation T and T^-1",
-                 "announced, not printed",
-                 "(x,y,z) = V^T (x',y',z'), V = Rx(35) Ry(-45); V^T's first row: (" + f3(V[0][0]) + ", " +
-                     f3(V[0][1]) + ", " + f3(V[0][2]) + ")",
+  out.push_back({"view_matrix", "inverse example: the viewing transformation T and T^-1", "announced, not printed",
+                 "(x,y,z) = V^T (x',y',z'), V = Rx(35) Ry(-45); V^T's first row: (" + f3(V[0][0]) + ", " + f3(V[0][1]) +
+                     ", " + f3(V[0][2]) + ")",
                  glm::determinant(V)});
   return out;
 }

@@ -33,7 +33,7 @@ const glm::vec4 kQuad{0.95f, 0.1f, 0.1f, 1.0f}, kQuadRounded{1.0f, 0.55f, 0.0f, 
     kCounted{0.1f, 0.75f, 0.25f, 1.0f}, kFragmentEdge{0.25f, 0.55f, 0.75f, 1.0f};
 // The axes of the octant's view: x, y, z.
 const glm::vec4 kAxis[3] = {{1.0f, 0.35f, 0.35f, 1.0f}, {0.4f, 0.95f, 0.4f, 1.0f}, {0.45f, 0.6f, 1.0f, 1.0f}};
-const glm::vec4 kNoValue{0.3f, 0.3f, 0.36f, 1.0f};   // a pixel on the octant without a value (its edge)
+const glm::vec4 kNoValue{0.3f, 0.3f, 0.36f, 1.0f};  // a pixel on the octant without a value (its edge)
 const glm::vec4 kPixelGrid{0.42f, 0.42f, 0.5f, 1.0f};
 
 inline std::string fmt(const char* f, double v) { return L::fmt(f, v); }
@@ -104,7 +104,8 @@ inline bool has(const ts::Measurements& m, const std::string& name) {
 }
 // A pixel's coordinates as the inputs they are: "(21,15)".
 inline L::Text pixelText(glm::ivec2 P) {
-  return "(" + L::given("pixel Px", P.x, "%.0f") + "," + L::given("pixel Py (up from the bottom row)", P.y, "%.0f") + ")";
+  return "(" + L::given("pixel Px", P.x, "%.0f") + "," + L::given("pixel Py (up from the bottom row)", P.y, "%.0f") +
+         ")";
 }
 // The largest scale, at most `scale`, at which layout::legend() places
 // every entry in `band` (its swatch, gap and wrapping reckoned the same way).
@@ -275,8 +276,10 @@ inline ts::Panel rasterPanel(const std::string& id, const ts::Rect& vp, const st
   addPolyline(outline, outlineOnRaster(), kAmber, true);
   p.batches.push_back(outline);
   if (pick.x >= 0)
-    p.batches.push_back(ts::lineLoop({{pick.x / n, pick.y / n}, {(pick.x + 1) / n, pick.y / n},
-                                      {(pick.x + 1) / n, (pick.y + 1) / n}, {pick.x / n, (pick.y + 1) / n}},
+    p.batches.push_back(ts::lineLoop({{pick.x / n, pick.y / n},
+                                      {(pick.x + 1) / n, pick.y / n},
+                                      {(pick.x + 1) / n, (pick.y + 1) / n},
+                                      {pick.x / n, (pick.y + 1) / n}},
                                      kRed, 3.0f, "pixel"));
   return p;
 }
@@ -365,7 +368,8 @@ inline ts::Panel octantPanel(const ts::Rect& vp, int tex, const ts::OrbitCamera&
   p.id = "octant";
   p.viewport = vp;
   const float a = float(vp.w) / float(std::max(1, vp.h)), e = 1.05f;
-  p.projection = a >= 1 ? glm::ortho(-e * a, e * a, -e, e, -10.0f, 10.0f) : glm::ortho(-e, e, -e / a, e / a, -10.0f, 10.0f);
+  p.projection = a >= 1 ? glm::ortho(-e * a, e * a, -e, e, -10.0f, 10.0f)
+                        : glm::ortho(-e, e, -e / a, e / a, -10.0f, 10.0f);
   p.modelview = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -0.24f, 0.0f)) * viewMatrix();
   camera.apply(p, glm::vec3(surfaceUW({0.5, 0.5})));
   p.depthTest = true;

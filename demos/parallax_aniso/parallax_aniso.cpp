@@ -74,7 +74,9 @@ using namespace pax::views;  // the views, what they show (views::Shown, views::
 class ParallaxAniso final : public ts::Scene {
  public:
   std::string id() const override { return "parallax_aniso"; }
-  std::string title() const override { return "Parallax mapping with visibility-aware anisotropic filtering (seed 003)"; }
+  std::string title() const override {
+    return "Parallax mapping with visibility-aware anisotropic filtering (seed 003)";
+  }
   std::string about() const override {
     return "A relief (bricks with deep mortar, a step/ridge map, or flat) seen at a grazing angle through parallax\n"
            "occlusion mapping, its albedo filtered six ways: M0 naive (implicit derivatives of the shifted\n"
@@ -88,21 +90,20 @@ class ParallaxAniso final : public ts::Scene {
 
   std::vector<std::string> claim() const override { return {"ewa_psnr_all", "ewa_vis_psnr_all"}; }
   void addOptions(ts::Options& o) override {
-    o.addEnum("mode", &mode_, {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5],
-                               kModeKeys[6]},
+    o.addEnum("mode", &mode_,
+              {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5], kModeKeys[6]},
               "M0 naive | M1 trilinear | M2 aniso 16x | M3 EWA | M4 EWA visible texels | M5 EWA row walk | "
               "reference",
               'm');
-    o.addEnum("map", &map_, {kMaps[0], kMaps[1], kMaps[2]}, "relief: bricks with deep mortar | step/ridge | flat",
-              't');
+    o.addEnum("map", &map_, {kMaps[0], kMaps[1], kMaps[2]}, "relief: bricks with deep mortar | step/ridge | flat", 't');
     o.addFloat("height-scale", &heightScale_, 0.0f, 0.2f, "depth of the relief, world units (a tile is 2)", '+', '-',
                0.01f);
-    o.addFloat("angle", &angle_, 14.0f, 80.0f, "view angle: elevation of the central ray above the plane, degrees",
-               ']', '[', 2.0f);
+    o.addFloat("angle", &angle_, 14.0f, 80.0f, "view angle: elevation of the central ray above the plane, degrees", ']',
+               '[', 2.0f);
     o.addFloat("azimuth", &azimuth_, -45.0f, 45.0f, "turn of the view about the normal, degrees", 'z', 'Z', 3.0f);
     o.addBool("compare", &compare_, "split screen: left half the mode, right half --against", 'c');
-    o.addEnum("against", &against_, {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4],
-                                     kModeKeys[5], kModeKeys[6]},
+    o.addEnum("against", &against_,
+              {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5], kModeKeys[6]},
               "the mode of the right half in split-screen compare", 'b');
     o.addEnum("view", &view_, {"single", "modes", "error", "live"},
               "single: one mode (or the split screen); modes: all seven with their numbers; error: the occlusion "
@@ -110,7 +111,8 @@ class ParallaxAniso final : public ts::Scene {
               "size, timed (no reference, no table)",
               'v');
     o.addBool("animate", &animate_, "live view: sweep the azimuth back and forth (10 degrees a second)", 'a');
-    o.addInt("res", &res_, 80, 800, "width of the measured renders (height 3/4 of it; the figures use 320)", 'r', 'R', 80);
+    o.addInt("res", &res_, 80, 800, "width of the measured renders (height 3/4 of it; the figures use 320)", 'r', 'R',
+             80);
     o.addInt("rays", &rays_, 2, 32, "reference rays per side of the kernel square (n x n; the figures use 12)");
     o.addInt("time", &timeRuns_, 0, 50,
              "time each mode over N frames (median, into the CSV's ms_per_frame); 0 = do not time (the figures use 3)");
@@ -128,28 +130,37 @@ class ParallaxAniso final : public ts::Scene {
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
-        {"parallax_modes", "Seed 003: parallax + anisotropic filtering",
+        {"parallax_modes",
+         "Seed 003: parallax + anisotropic filtering",
          "Bricks with deep mortar seen at 20 degrees through parallax occlusion mapping, 320x240 each: M0 naive "
          "lookup (implicit derivatives of the shifted coordinate: fringes along every occluding edge), M1 trilinear, "
          "M2 hardware anisotropic 16x, M3 EWA in the shader, M4 EWA without the texels higher relief hides, M5 the "
          "seed's row walk, and the reference (12x12 traced rays per pixel, the same Gaussian kernel). Under each: "
          "PSNR against the reference over the whole frame and over the occlusion band, and lookups per pixel. The "
          "table is in parallax_modes.csv.",
-         {"--view", "modes", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"}, 1360, 660,
+         {"--view", "modes", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"},
+         1360,
+         660,
          "PSNR against the traced reference: M3 EWA {ewa_psnr_all} dB, M4 without hidden texels {ewa_vis_psnr_all} "
          "dB, at {ewa_lookups} and {ewa_vis_lookups} lookups per pixel."},
-        {"parallax_error_band", "Seed 003: error in the occlusion band",
+        {"parallax_error_band",
+         "Seed 003: error in the occlusion band",
          "The occlusion band (pixels whose footprint crosses an occluding edge, where the reference's rays hit "
          "depths more than half the relief apart) and the error against the reference inside it for M2 (hardware "
          "anisotropic), M3 (EWA) and M4 (EWA without hidden texels): |error| x4, black none, red 32, yellow 64 "
          "levels or more.",
-         {"--view", "error", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"}, 1360, 340,
+         {"--view", "error", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"},
+         1360,
+         340,
          "PSNR inside the occlusion band ({band_pixels} pixels): M2 {aniso16_psnr_band} dB, M3 {ewa_psnr_band} dB, "
          "M4 {ewa_vis_psnr_band} dB."},
-        {"parallax_step", "Seed 003: the step map",
+        {"parallax_step",
+         "Seed 003: the step map",
          "The synthetic step map (ridges of height 1 and floors of height 0, 32 texels each) at 20 degrees: every "
          "mode and the reference, as in parallax_modes.",
-         {"--view", "modes", "--map", "step", "--res", "320", "--rays", "12", "--time", "3"}, 1360, 660,
+         {"--view", "modes", "--map", "step", "--res", "320", "--rays", "12", "--time", "3"},
+         1360,
+         660,
          "On the step map leaving out hidden texels costs: M4 {ewa_vis_psnr_all} dB against M3's {ewa_psnr_all} dB "
          "over the whole frame."},
     };
@@ -193,7 +204,8 @@ class ParallaxAniso final : public ts::Scene {
       std::string k = kModeKeys[row.mode];
       for (char& ch : k)
         if (ch == '-') ch = '_';
-      m.push_back({k + "_psnr_all", row.psnrAll, std::string(kModeLabels[row.mode]) + ": PSNR (dB) vs the reference, whole frame"});
+      m.push_back({k + "_psnr_all", row.psnrAll,
+                   std::string(kModeLabels[row.mode]) + ": PSNR (dB) vs the reference, whole frame"});
       m.push_back({k + "_psnr_band", row.psnrBand, "PSNR (dB) over the occlusion band"});
       m.push_back({k + "_ssim_band", row.ssimBand, "SSIM over the occlusion band"});
       m.push_back({k + "_psnr_aniso", row.psnrAniso, "PSNR (dB) over the high-anisotropy pixels"});
@@ -242,8 +254,8 @@ class ParallaxAniso final : public ts::Scene {
   }
   std::string stateKey() const {
     char b[256];
-    std::snprintf(b, sizeof b, "%d %.4f %.3f %.3f %d %d %d %d %d %d", map_, heightScale_, angle_, azimuth_, res_,
-                  rays_, seed_, accel_ ? 1 : 0, timeRuns_, gradients_);
+    std::snprintf(b, sizeof b, "%d %.4f %.3f %.3f %d %d %d %d %d %d", map_, heightScale_, angle_, azimuth_, res_, rays_,
+                  seed_, accel_ ? 1 : 0, timeRuns_, gradients_);
     return b + picture_.path() + " " + std::to_string(camera_.yaw) + " " + std::to_string(camera_.pitch) + " " +
            std::to_string(camera_.zoom);
   }

@@ -67,19 +67,17 @@ namespace pax {
 constexpr const char* kSourceFile = "demos/parallax_aniso/parallax_aniso_gl.hpp";
 enum Mode { kNaive, kTrilinear, kAniso16, kEwa, kEwaVis, kEwaRows, kShaderModes, kReference = kShaderModes };
 inline const char* const kModeKeys[] = {"naive", "trilinear", "aniso16", "ewa", "ewa-vis", "ewa-rows", "reference"};
-inline const char* const kModeLabels[] = {"M0 naive", "M1 trilinear", "M2 aniso 16x", "M3 EWA",
+inline const char* const kModeLabels[] = {"M0 naive",       "M1 trilinear",    "M2 aniso 16x", "M3 EWA",
                                           "M4 EWA visible", "M5 EWA row walk", "R reference"};
 
-inline const char* vertexShader() {
-  return "#version 130\nvoid main() { gl_Position = gl_Vertex; }\n";
-}
+inline const char* vertexShader() { return "#version 130\nvoid main() { gl_Position = gl_Vertex; }\n"; }
 
 // One compiled program (see above).  centreLookups: a uniform branch in the
 // innermost loop cost llvmpipe a third of M3's speed.
 struct Variant {
-  int mode = 0;          // 0..5, or -1 for the probe program
-  bool count = false;    // write lookups / excluded texels instead of the colour
-  bool parallax = true;  // false: no march, the flat top (the benchmark's floor)
+  int mode = 0;                  // 0..5, or -1 for the probe program
+  bool count = false;            // write lookups / excluded texels instead of the colour
+  bool parallax = true;          // false: no march, the flat top (the benchmark's floor)
   bool unshiftedLookup = false;  // the march runs, the albedo is read at the unshifted coordinate (benchmark)
   bool centreLookups = false;
   bool plainTrace = false;  // the visibility trace reads every sample's texel (tests, benchmark)
@@ -89,8 +87,9 @@ struct Variant {
   }
 };
 inline std::string fragmentShader(const Variant& v) {
-  return "#version 130\n#define MODE " + std::to_string(v.mode) + "\n#define COUNT " + (v.count ? "1" : "0") + "\n#define PARALLAX " + (v.parallax ? "1" : "0") +
-         "\n#define UNSHIFTED_LOOKUP " + (v.unshiftedLookup ? "1" : "0") + "\n#define CENTRE_LOOKUPS " + (v.centreLookups ? "1" : "0") +
+  return "#version 130\n#define MODE " + std::to_string(v.mode) + "\n#define COUNT " + (v.count ? "1" : "0") +
+         "\n#define PARALLAX " + (v.parallax ? "1" : "0") + "\n#define UNSHIFTED_LOOKUP " +
+         (v.unshiftedLookup ? "1" : "0") + "\n#define CENTRE_LOOKUPS " + (v.centreLookups ? "1" : "0") +
          "\n#define PLAIN_TRACE " + (v.plainTrace ? "1" : "0") + R"(
 uniform sampler2D albedo;     // RGBA8, mipmapped (the 2x2 averages)
 uniform sampler2D heightTex;  // R = height, mipmapped (2x2 averages)
@@ -158,7 +157,8 @@ float pom(vec2 uv0, vec2 Vp, vec2 gx, vec2 gy, float cosView) {
   float a = hLo - lo, b = hi - hHi;
   return lo + (hi - lo) * a / (a + b);
 }
-)" + ts::ewa::glsl() /* ellipse(), radii(): common/core/ewa.hpp */ + R"(
+)" +
+         ts::ewa::glsl() /* ellipse(), radii(): common/core/ewa.hpp */ + R"(
 ivec2 wrapT(ivec2 t, int size) { return ivec2((t.x % size + size) % size, (t.y % size + size) % size); }
 // Texel t of level L (wrapped).  texelFetch, or with centreLookups a
 // filtered lookup at the texel's centre — the same value (at a texel centre
@@ -340,7 +340,8 @@ void main() {
     ivec2 t = ivec2(probeA.xy) + ivec2(gl_FragCoord.xy);
     int L = int(probeA.z);
     vec2 c = vec2(t) + 0.5;
-    float dmin = accel != 0 ? minDepthOver(floor(min(c, c - probeB.xy)) - 1.0, floor(max(c, c - probeB.xy)) + 1.0, L) : 0.0;
+    float dmin = accel != 0
+        ? minDepthOver(floor(min(c, c - probeB.xy)) - 1.0, floor(max(c, c - probeB.xy)) + 1.0, L) : 0.0;
     gl_FragColor = vec4(hiddenTexel(t, L, probeB.xy, dmin) ? 1.0 : 0.0, float(fetches) / 255.0, 0.0, 1.0);
     return;
   }
@@ -394,8 +395,8 @@ struct ReliefTextures {
 };
 
 struct PassOptions {
-  bool count = false;  // write lookups / excluded texels instead of the colour
-  bool accel = true;   // max-height pyramid skip in the visibility trace
+  bool count = false;    // write lookups / excluded texels instead of the colour
+  bool accel = true;     // max-height pyramid skip in the visibility trace
   bool parallax = true;  // false: no parallax march (what the rest of a mode costs; benchmark only)
   // The march runs but the albedo is read at the unshifted coordinate: what
   // the jumps of the shifted coordinate at occluding edges cost a filter
@@ -482,7 +483,8 @@ class ReliefGL final : public ts::Renderer::Attachment {
  private:
   // One mode over the bound target's viewport (and scissor, if enabled).
   void pass(const Camera& cam, const Relief& rel, int mode, const PassOptions& o) {
-    if (mode < 0 || mode >= kShaderModes) throw ts::Error("no shader for mode " + std::to_string(mode), ts::kExitFailure);
+    if (mode < 0 || mode >= kShaderModes)
+      throw ts::Error("no shader for mode " + std::to_string(mode), ts::kExitFailure);
     Variant v;
     v.mode = mode;
     v.count = o.count;
@@ -560,7 +562,9 @@ class ReliefGL final : public ts::Renderer::Attachment {
  private:
   GLuint program(const Variant& v) { return r_.program(v.key(), {kSourceFile, vertexShader(), fragmentShader(v)}); }
   void setCamera(GLuint prog, const Camera& cam) {
-    auto v3 = [&](const char* n, glm::dvec3 v) { glUniform3f(glGetUniformLocation(prog, n), float(v.x), float(v.y), float(v.z)); };
+    auto v3 = [&](const char* n, glm::dvec3 v) {
+      glUniform3f(glGetUniformLocation(prog, n), float(v.x), float(v.y), float(v.z));
+    };
     v3("eye", cam.eye());
     v3("fwd", cam.forward());
     v3("rightV", cam.right());
@@ -592,8 +596,8 @@ class ReliefGL final : public ts::Renderer::Attachment {
   // The passes' target: colour only, RGBA8 (pictures) or RGBA32F (probes),
   // a texture so that the live view can show it; remade when that changes.
   ts::RenderTarget& target(int w, int h, bool floatTarget) {
-    target_.make({w, h, floatTarget ? ts::TargetFormat::kRGBA32F : ts::TargetFormat::kRGBA8,
-                  ts::TargetFormat::kNoDepth, true},
+    target_.make({w, h, floatTarget ? ts::TargetFormat::kRGBA32F : ts::TargetFormat::kRGBA8, ts::TargetFormat::kNoDepth,
+                  true},
                  "a parallax pass");
     return target_;
   }

@@ -88,7 +88,8 @@ class LiveTimer {
     }
     views::Live live;
     live.texture.name = "parallax_live";
-    live.texture.params = {{"left", kModeKeys[left]}, {"right", right < 0 ? "-" : kModeKeys[right]},
+    live.texture.params = {{"left", kModeKeys[left]},
+                           {"right", right < 0 ? "-" : kModeKeys[right]},
                            {"size", std::to_string(c.width) + "x" + std::to_string(c.height)},
                            {"made_by", "ReliefGL::drawLive in the parallax_aniso demo's measure()"}};
     live.texture.glTexture = tex;
@@ -99,11 +100,12 @@ class LiveTimer {
     live.scale = shownScale;
     live.fps = 1000.0 / (ms + 1e-9);
     m.detail = live;
-    m.push_back({"live_ms_per_frame", median, "the live view's draw, median of the last " +
-                                                  std::to_string(ms_.size()) + " frames (glFinish)"});
+    m.push_back({"live_ms_per_frame", median,
+                 "the live view's draw, median of the last " + std::to_string(ms_.size()) + " frames (glFinish)"});
     m.push_back({"live_fps", 1000.0 / median, "frames per second that draw allows (20 = interactive)"});
-    m.push_back({"live_scale", shownScale, "the draw's size / the window's (below 1 while the view moves and the "
-                                           "mode is too slow for 20 fps; 1 at rest and in --png)"});
+    m.push_back({"live_scale", shownScale,
+                 "the draw's size / the window's (below 1 while the view moves and the "
+                 "mode is too slow for 20 fps; 1 at rest and in --png)"});
     return m;
   }
 

@@ -36,9 +36,9 @@
 #include "common/core/scene.hpp"
 
 namespace pax {
-using ts::relief::kTexSize;          // every relief map is 512 x 512
-constexpr double kAlpha = 2.0;       // Gaussian falloff of the EWA kernel: w = exp(-alpha q), q = Q/F in [0, 1]
-constexpr double kMaxAniso = 16.0;   // the EWA's longest axis / shortest axis before the level is raised
+using ts::relief::kTexSize;                 // every relief map is 512 x 512
+constexpr double kAlpha = 2.0;              // Gaussian falloff of the EWA kernel: w = exp(-alpha q), q = Q/F in [0, 1]
+constexpr double kMaxAniso = 16.0;          // the EWA's longest axis / shortest axis before the level is raised
 constexpr double kHiddenEps = 1.5 / 255.0;  // a texel is hidden when relief rises above its ray by more than this
 
 // ---------------------------------------------------------------- textures
@@ -76,9 +76,9 @@ struct Camera {
   double elevationDeg = 20.0;  // angle between the central view ray and the plane
   double azimuthDeg = 12.0;    // turn of the view about the plane's normal (0 = looking along +v)
   double fovyDeg = 24.0;
-  double eyeHeight = 1.0;      // world units above the top of the relief
-  double tile = 2.0;           // world units per repeat of the texture
-  double heightScale = 0.06;   // world units from the top of the relief to h = 0
+  double eyeHeight = 1.0;     // world units above the top of the relief
+  double tile = 2.0;          // world units per repeat of the texture
+  double heightScale = 0.06;  // world units from the top of the relief to h = 0
   glm::dvec3 eye() const { return {0.37, 0.21, eyeHeight}; }
   glm::dvec3 forward() const {
     double e = glm::radians(elevationDeg), a = glm::radians(azimuthDeg);
@@ -178,8 +178,8 @@ inline bool hiddenTexel(const std::vector<ts::Image>& heights, int L, int i, int
 // ---------------------------------------------------------------- reference
 struct Reference {
   int width = 0, height = 0;
-  std::vector<glm::dvec3> rgb;           // row 0 = top, 8-bit units
-  std::vector<double> depthSpread;       // max - min hit depth over the pixel's kernel rays
+  std::vector<glm::dvec3> rgb;      // row 0 = top, 8-bit units
+  std::vector<double> depthSpread;  // max - min hit depth over the pixel's kernel rays
   ts::Image image() const {
     ts::Image out(width, height);
     for (size_t p = 0; p < rgb.size(); ++p)

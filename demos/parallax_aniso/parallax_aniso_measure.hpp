@@ -17,7 +17,7 @@ namespace pax {
 struct Row {
   int mode = 0;
   double psnrAll = 0, ssimAll = 0, psnrAniso = 0, ssimAniso = 0, psnrBand = 0, ssimBand = 0;
-  double ms = 0;             // median milliseconds per frame at the measured size
+  double ms = 0;               // median milliseconds per frame at the measured size
   double lookupsPerPixel = 0;  // texture lookups (calls) per pixel, counted by the shader
   double excludedPerPixel = 0;
   ts::Image image;
@@ -45,11 +45,11 @@ struct Table {
 };
 
 struct MeasureOptions {
-  int refRays = 16;     // n x n rays per pixel for the reference
+  int refRays = 16;  // n x n rays per pixel for the reference
   uint32_t seed = 1;
-  int timingRuns = 5;   // 0 = do not time
+  int timingRuns = 5;  // 0 = do not time
   bool accel = true;
-  float gradScale = 1;  // the gradients M1 and M2 hand their lookup (PassOptions::gradScale)
+  float gradScale = 1;             // the gradients M1 and M2 hand their lookup (PassOptions::gradScale)
   ts::Renderer* record = nullptr;  // set: each mode's picture is drawn anew with its GL calls recorded (Row::calls)
 };
 
@@ -132,14 +132,13 @@ inline std::string csv(const Table& t) {
   for (const Row& r : t.rows) {
     s += std::string(kModeKeys[r.mode]) + "," + kModeLabels[r.mode] + "," + fmtNum("%.3f", r.psnrAll) + "," +
          fmtNum("%.4f", r.ssimAll) + "," + fmtNum("%.3f", r.psnrAniso) + "," + fmtNum("%.4f", r.ssimAniso) + "," +
-         fmtNum("%.3f", r.psnrBand) + "," + fmtNum("%.4f", r.ssimBand) + "," + (r.ms > 0 ? fmtNum("%.2f", r.ms) : std::string()) + "," +
-         fmtNum("%.1f", r.lookupsPerPixel) + "," + fmtNum("%.2f", r.excludedPerPixel) + "," +
-         std::to_string(t.cam.width) + "," + std::to_string(t.cam.height) + "," + t.map + "," +
-         fmtNum("%.1f", t.cam.elevationDeg) + "," + fmtNum("%.3f", t.cam.heightScale) + "," +
+         fmtNum("%.3f", r.psnrBand) + "," + fmtNum("%.4f", r.ssimBand) + "," +
+         (r.ms > 0 ? fmtNum("%.2f", r.ms) : std::string()) + "," + fmtNum("%.1f", r.lookupsPerPixel) + "," +
+         fmtNum("%.2f", r.excludedPerPixel) + "," + std::to_string(t.cam.width) + "," + std::to_string(t.cam.height) +
+         "," + t.map + "," + fmtNum("%.1f", t.cam.elevationDeg) + "," + fmtNum("%.3f", t.cam.heightScale) + "," +
          std::to_string(t.refRays) + "x" + std::to_string(t.refRays) + "," + std::to_string(t.seed) + "," +
-         std::to_string(t.anisoPixels) + "," + std::to_string(t.bandPixels) + "," +
-         fmtNum("%g", t.gradScale) + "," + optCount(t.gradChangeM1) + "," + optCount(t.gradChangeM2) + ",\"" + t.renderer +
-         "\"\n";
+         std::to_string(t.anisoPixels) + "," + std::to_string(t.bandPixels) + "," + fmtNum("%g", t.gradScale) + "," +
+         optCount(t.gradChangeM1) + "," + optCount(t.gradChangeM2) + ",\"" + t.renderer + "\"\n";
   }
   return s;
 }
@@ -162,7 +161,8 @@ inline std::string textTable(const Table& t) {
                   t.renderer + "\n";
   s += "aniso mask " + std::to_string(t.anisoPixels) + " px, occlusion band " + std::to_string(t.bandPixels) + " px" +
        (t.gradScale != 1 ? ", M1/M2 given their gradients x" + fmtNum("%g", t.gradScale) : std::string()) + "\n";
-  s += "mode               PSNR all  SSIM all  PSNR aniso SSIM aniso PSNR band SSIM band   ms/frame  lookups/px excl/px\n";
+  s += "mode               PSNR all  SSIM all  PSNR aniso SSIM "
+       "aniso PSNR band SSIM band   ms/frame  lookups/px excl/px\n";
   for (const Row& r : t.rows) {
     char line[256];
     std::snprintf(line, sizeof line, "%-18s %8.2f  %8.4f  %9.2f  %9.4f  %9.2f  %8.4f  %9.1f  %10.1f  %6.2f\n",

@@ -62,7 +62,8 @@ inline ts::Image bandPicture(const Table& t) {
   for (size_t p = 0; p < t.bandMask.size(); ++p) {
     const uint8_t* c = &t.referenceImage.pixels[p * 4];
     bool in = t.bandMask[p];
-    for (int k = 0; k < 3; ++k) band.pixels[p * 4 + size_t(k)] = in ? uint8_t(k == 0 ? 255 : k == 1 ? 200 : 40) : uint8_t(c[k] / 2);
+    for (int k = 0; k < 3; ++k)
+      band.pixels[p * 4 + size_t(k)] = in ? uint8_t(k == 0 ? 255 : k == 1 ? 200 : 40) : uint8_t(c[k] / 2);
   }
   return band;
 }
@@ -258,7 +259,8 @@ inline void Views::buildModes(ts::Frame& f, const Shown& shown) const {
   // (Milliseconds are in the CSV, not here: the figure must regenerate byte-identically.)
   c.add(brief ? "PSNR: dB vs R" : "PSNR in dB against R;", kGrey, s, ts::Align::Left);
   c.add(brief ? "lk/px: lookups" : "lk/px: texture lookups per pixel", kGrey, s, ts::Align::Left);
-  L::legend(f, {float(x), c.y(), float(x) + cellW, float(f.height - 2)}, {{kAmber, brief ? "EWA" : "the EWA modes (seed 003)"}}, s);
+  L::legend(f, {float(x), c.y(), float(x) + cellW, float(f.height - 2)},
+            {{kAmber, brief ? "EWA" : "the EWA modes (seed 003)"}}, s);
 }
 
 inline void Views::buildError(ts::Frame& f, const Shown& shown) const {
@@ -273,7 +275,8 @@ inline void Views::buildError(ts::Frame& f, const Shown& shown) const {
   const int modes[4] = {-1, kAniso16, kEwa, kEwaVis};
   for (int k = 0; k < 4; ++k) {
     int x = left + (k % cols) * (w + gap), y = 2 * line + line / 2 + (k / cols) * (h + 3 * line);
-    addImage(f, std::string("error_") + std::to_string(k), {x, y, w, h}, shown.errorTextures[size_t(k == 0 ? 3 : k - 1)]);
+    addImage(f, std::string("error_") + std::to_string(k), {x, y, w, h},
+             shown.errorTextures[size_t(k == 0 ? 3 : k - 1)]);
     L::caption(f, column(x, float(y - line), float(y - 1)), titles[k], kWhite, s);
     std::string n = k == 0 ? std::to_string(table.bandPixels) + " px"
                            : "band PSNR " + fmtNum("%.2f", table.rows[size_t(modes[k])].psnrBand) + " dB, SSIM " +
@@ -289,8 +292,8 @@ inline void Views::buildLive(ts::Frame& f, const Live* live) const {
   namespace L = ts::layout;
   const int s = L::scaleFor({0, 0, f.width, f.height}, 2), bar = int(L::lineHeight(s)) + 5 * s;
   std::string head = std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", cam_.elevationDeg) +
-                     " deg, azimuth " + fmtNum("%.0f", cam_.azimuthDeg) + " deg, height " + fmtNum("%.2f", heightScale_) +
-                     gradientsNote() + ", live";
+                     " deg, azimuth " + fmtNum("%.0f", cam_.azimuthDeg) + " deg, height " +
+                     fmtNum("%.2f", heightScale_) + gradientsNote() + ", live";
   if (!live || !live->texture.glTexture) {
     L::Column c(f, {16, 6, float(f.width - 4), float(f.height - 2)});
     c.add(head, kWhite, s, ts::Align::Left);
@@ -311,7 +314,8 @@ inline void Views::buildLive(ts::Frame& f, const Live* live) const {
   // A narrow window gets a smaller header, then a shorter one, never one cut before its gradients note.
   int hs = s;
   while (hs > 1 && ts::text::width(head, hs) > float(f.width - 21)) --hs;
-  for (const std::string& h : {std::string(kMaps[map_]) + gradientsNote() + ", live", std::string(kMaps[map_]) + gradientsNote()})
+  for (const std::string& h :
+       {std::string(kMaps[map_]) + gradientsNote() + ", live", std::string(kMaps[map_]) + gradientsNote()})
     if (ts::text::width(head, hs) > float(f.width - 21)) head = h;
   const float top = float(2 * s), bottom = float(f.height - bar + 2 * s);
   L::caption(f, {16, top, float(f.width - 4), float(bar)}, head, kWhite, hs, ts::Align::Left);
@@ -319,12 +323,13 @@ inline void Views::buildLive(ts::Frame& f, const Live* live) const {
   if (live->scale < 1.0)
     sizeText += " (scale " + fmtNum("%.2f", live->scale) + " while moving, draw " + fmtNum("%.0f", live->fps) + " fps)";
   if (live->modes.y < 0) {
-    L::caption(f, {4, bottom, float(f.width - 4), float(f.height)}, std::string(kModeLabels[live->modes.x]) + ", " + sizeText,
-               kAmber, s);
+    L::caption(f, {4, bottom, float(f.width - 4), float(f.height)},
+               std::string(kModeLabels[live->modes.x]) + ", " + sizeText, kAmber, s);
     return;
   }
   L::caption(f, {4, bottom, float(f.width / 2 - 4), float(f.height)}, kModeLabels[live->modes.x], kAmber, s);
-  L::caption(f, {float(f.width / 2 + 4), bottom, float(f.width - 4), float(f.height)}, kModeLabels[live->modes.y], kAmber, s);
+  L::caption(f, {float(f.width / 2 + 4), bottom, float(f.width - 4), float(f.height)}, kModeLabels[live->modes.y],
+             kAmber, s);
   addDivider(f, float(f.width / 2), 0.0f, float(f.height));
 }
 }  // namespace pax::views

@@ -64,7 +64,8 @@ class PerspectiveCorrection final : public ts::Scene {
   std::string title() const override { return "Figure VI.2 - hyperbolic (perspective-correct) interpolation"; }
   std::string about() const override {
     return "A checkerboard square seen at a slant, drawn as two triangles with (s,t) interpolated linearly in screen\n"
-           "space (left) and hyperbolically (right).  Tests whether the driver honours GL_PERSPECTIVE_CORRECTION_HINT,\n"
+           "space (left) and hyperbolically (right).  Tests whether the driver honours "
+           "GL_PERSPECTIVE_CORRECTION_HINT,\n"
            "measures the affine image's largest (s,t) error in texels from a texel-index render, and sweeps the tilt\n"
            "to set that error against the book's rule of thumb (d2 - d1)/d1.";
   }
@@ -86,30 +87,39 @@ class PerspectiveCorrection final : public ts::Scene {
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
-        {"vi2_perspective_correction", "Figure VI.2",
+        {"vi2_perspective_correction",
+         "Figure VI.2",
          "A checkerboard square tilted 60 degrees, its centre 1.5 half-sides from the eye ((d2 - d1)/d1 = 2.24), as "
          "two triangles: without hyperbolic interpolation (left: (s,t) linear in screen space, the far squares are "
          "not shortened) and with it (right). The note says whether the driver honours "
          "GL_PERSPECTIVE_CORRECTION_HINT and how the left image was made.",
-         {"--view", "both", "--tilt", "60", "--distance", "1.5", "--filter", "mipmap"}, 1024, 300,
+         {"--view", "both", "--tilt", "60", "--distance", "1.5", "--filter", "mipmap"},
+         1024,
+         300,
          "Interpolated linearly in screen space, (s,t) is off by up to {affine_error_texels} texels (of 256) at (d2 "
          "- d1)/d1 = {d_ratio}."},
-        {"vi2_error_vs_depth_ratio", "Figure VI.2 (measured)",
+        {"vi2_error_vs_depth_ratio",
+         "Figure VI.2 (measured)",
          "The screen-linear image's largest (s,t) error, measured from texel-index renders (crosses), against the "
          "book's (d2 - d1)/d1 over tilts 0..80 degrees at distance 1.5; the line is the analytic error. Facing the "
          "eye (tilt 0) the error is zero although (d2 - d1)/d1 = 0.37: what the interpolation feels is how much the "
          "depth w varies over the polygon, which the distances only approximate.",
-         {"--view", "plot", "--tilt", "60", "--distance", "1.5"}, 1024, 560,
+         {"--view", "plot", "--tilt", "60", "--distance", "1.5"},
+         1024,
+         560,
          "The screen-linear error grows with the tilt, from {sweep_t00_error_texels} texels facing the eye, where "
          "(d2 - d1)/d1 is already {sweep_t00_d_ratio}, to {sweep_t80_error_texels} at 80 deg."},
-        {"inspect_vi2_footprints", "Figure VI.2 (inside six pixels)",
+        {"inspect_vi2_footprints",
+         "Figure VI.2 (inside six pixels)",
          "The plane at 80 degrees, six pixels picked from near to far (--inspect X,Y --footprints), ringed in the "
          "plane's panel drawn again pixel for pixel; below: each one's footprint on level 0 of the texture: the "
          "preimage of the pixel square (white), the derivatives' parallelogram, the EWA ellipse, the 2^lambda "
          "square of its mip level and the texels trilinear reads.",
          {"--view", "perspective", "--tilt", "80", "--distance", "1.5", "--footprints", "--inspect", "515,185",
           "--inspect", "515,160", "--inspect", "515,145", "--inspect", "515,133", "--inspect", "515,126", "--inspect",
-          "515,121"}, 1024, 400,
+          "515,121"},
+         1024,
+         400,
          "lambda rises from {inspect_lambda[1]} near to {inspect_lambda[6]} far, rho from {inspect_rho[1]} to "
          "{inspect_rho[6]} texels per pixel."},
     };
@@ -196,7 +206,8 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
   // Room for the notes under the pictures (at most a third of the height).
   const float margin = 8, noteW = float(width) - 2 * margin;
   float notesH = 0;
-  for (const auto& n : notes) notesH += float(ts::layout::captionLines(n.first.text, 1, noteW)) * ts::layout::lineHeight(1) + 4;
+  for (const auto& n : notes)
+    notesH += float(ts::layout::captionLines(n.first.text, 1, noteW)) * ts::layout::lineHeight(1) + 4;
   notesH = std::min(notesH, float(height) / 3);
   const std::string how[2] = {"CPU-projected vertices, w = 1: screen-linear", "glHint(..., GL_NICEST): hyperbolic"};
   const char* titles[2] = {"without hyperbolic interpolation", "with hyperbolic interpolation"};
@@ -206,8 +217,9 @@ ts::Frame PerspectiveCorrection::build(int width, int height, const ts::Measurem
   spec.aspect = float(persp::boundsAspect(s));  // panels as tall as the projected square needs
   spec.gap = 16;
   spec.maxScale = 2;
-  std::vector<ts::layout::Cell> cells =
-      ts::layout::flow({margin, margin, float(width) - margin, float(height) - margin - notesH}, spec);
+  std::vector<ts::layout::Cell> cells = ts::layout::flow({margin, margin, float(width) - margin,
+                                                          float(height) - margin - notesH},
+                                                         spec);
   float bottom = margin;
   for (int k = 0; k < spec.n; ++k) {
     const ts::layout::Cell& c = cells[size_t(k)];
@@ -269,10 +281,13 @@ ts::Measurements PerspectiveCorrection::measure(ts::Renderer& r) {
       {"d2", d.d2, "farthest distance from the eye to the square"},
       {"d_ratio", d.ratio(), "(d2 - d1)/d1, the book's rule of thumb"},
       {"depth_ratio", d.depthRatio(), "(w2 - w1)/w1 over the corners' depths"},
-      {"affine_error_texels", m.affine.maxErrorTexels, "largest |(s,t) - correct| of the screen-linear image, texels of 256"},
-      {"affine_error_checks", m.affine.maxErrorTexels / (persp::kTexels / persp::kChecks), "the same in checks of the checkerboard"},
+      {"affine_error_texels", m.affine.maxErrorTexels,
+       "largest |(s,t) - correct| of the screen-linear image, texels of 256"},
+      {"affine_error_checks", m.affine.maxErrorTexels / (persp::kTexels / persp::kChecks),
+       "the same in checks of the checkerboard"},
       {"affine_error_predicted", m.affine.predictedTexels, "the same from the analytic maps at the same pixels"},
-      {"perspective_error_index", double(m.perspective.maxIndexError), "hyperbolic image: largest texel-index error (of 2048)"},
+      {"perspective_error_index", double(m.perspective.maxIndexError),
+       "hyperbolic image: largest texel-index error (of 2048)"},
       {"hint_pixels_differing", double(m.hintDiffering), "GL_FASTEST vs GL_NICEST render of the GL-projected square"},
       {"hint_honoured", m.hintDiffering > 0 ? 1.0 : 0.0, "1 if the driver changes anything for GL_FASTEST"},
       {"hint_fastest_error_texels", m.hintFastestError, "largest (s,t) error of the GL_FASTEST render, texels of 256"},

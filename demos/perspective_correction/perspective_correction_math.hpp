@@ -116,7 +116,8 @@ inline Window framing(const Setup& s, double aspect, double margin = 0.05) {
   Window w = bounds(s);
   double cx = (w.xmin + w.xmax) / 2, cy = (w.ymin + w.ymax) / 2;
   double hw = (w.xmax - w.xmin) / 2, hh = (w.ymax - w.ymin) / 2;
-  if (hw < hh * aspect) hw = hh * aspect; else hh = hw / aspect;
+  if (hw < hh * aspect) hw = hh * aspect;
+  else hh = hw / aspect;
   hw *= 1 + 2 * margin, hh *= 1 + 2 * margin;
   return {cx - hw, cx + hw, cy - hh, cy + hh};
 }

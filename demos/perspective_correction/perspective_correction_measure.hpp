@@ -80,26 +80,29 @@ inline const glm::vec4 kGrey{0.75f, 0.75f, 0.78f, 1.0f};
 // Every number in them is a measurement of `m` (measure()'s, for this
 // setup) or a parameter of the state, named as such.
 inline std::vector<std::pair<ts::layout::Text, glm::vec4>> notes(const persp::Setup& s, const Result* last,
-                                                                  const ts::Measurements& m) {
+                                                                 const ts::Measurements& m) {
   namespace L = ts::layout;
   const glm::vec4 &white = L::kWhite, &amber = L::kAmber;
   const persp::Distances d = persp::distances(s);
   std::vector<std::pair<L::Text, glm::vec4>> notes;
   if (last) {
-    notes.push_back({last->hintDiffering == 0
-                         ? L::Text(last->driver + " ignores GL_PERSPECTIVE_CORRECTION_HINT: its GL_FASTEST and GL_NICEST renders are identical")
-                         : last->driver + L::measuredText(m, " honours GL_PERSPECTIVE_CORRECTION_HINT: GL_FASTEST changes "
-                                                            "{hint_pixels_differing|%.0f} px (error up to "
-                                                            "{hint_fastest_error_texels|%.1f} texels)"),
-                     amber});
-    notes.push_back({L::measuredText(m, "screen-linear image: largest (s,t) error {affine_error_texels|%.1f} texels of ") +
-                         L::given("texels across the checkerboard", persp::kTexels, "%g") +
-                         L::measuredText(m, " ({affine_error_checks|%.2f} checks), measured from a texel-index render"),
-                     white});
+    notes.push_back(
+        {last->hintDiffering == 0
+             ? L::Text(last->driver +
+                       " ignores GL_PERSPECTIVE_CORRECTION_HINT: its GL_FASTEST and GL_NICEST renders are identical")
+             : last->driver + L::measuredText(m, " honours GL_PERSPECTIVE_CORRECTION_HINT: GL_FASTEST changes "
+                                                 "{hint_pixels_differing|%.0f} px (error up to "
+                                                 "{hint_fastest_error_texels|%.1f} texels)"),
+         amber});
+    notes.push_back(
+        {L::measuredText(m, "screen-linear image: largest (s,t) error {affine_error_texels|%.1f} texels of ") +
+             L::given("texels across the checkerboard", persp::kTexels, "%g") +
+             L::measuredText(m, " ({affine_error_checks|%.2f} checks), measured from a texel-index render"),
+         white});
   }
   notes.push_back({"tilt " + L::given("tilt, deg", s.tiltDeg, "%g") + " deg, distance " +
-                       L::given("distance from the eye", s.distance, "%g") + ": d1 = " +
-                       (last ? L::measured(m, "d1", "%.2f") : L::Text(L::fmt("%.2f", d.d1))) + ", d2 = " +
+                       L::given("distance from the eye", s.distance, "%g") +
+                       ": d1 = " + (last ? L::measured(m, "d1", "%.2f") : L::Text(L::fmt("%.2f", d.d1))) + ", d2 = " +
                        (last ? L::measured(m, "d2", "%.2f") : L::Text(L::fmt("%.2f", d.d2))) + ", (d2 - d1)/d1 = " +
                        (last ? L::measured(m, "d_ratio", "%.2f") : L::Text(L::fmt("%.2f", d.ratio()))) +
                        " (book: it matters from about " + L::given("the book's rule of thumb", 1, "%g") + ")",
@@ -119,16 +122,18 @@ inline ts::plot::Spec plotSpec(const persp::Setup& s, const Result* last) {
   p.title = "largest (s,t) error of the screen-linear image vs (d2 - d1)/d1: tilts 0.." + std::to_string(kSweepMaxDeg) +
             " deg at distance " + fmt("%g", s.distance);
   p.xLabel = "(d2 - d1)/d1   (d1, d2: nearest and farthest distance from the eye to the square)";
-  p.yLabel = "error, texels of " + L::given("texels across the checkerboard", persp::kTexels, "%g") + " (one check = " +
-             L::given("texels a check", persp::kTexels / persp::kChecks, "%g") + ")";
+  p.yLabel = "error, texels of " + L::given("texels across the checkerboard", persp::kTexels, "%g") +
+             " (one check = " + L::given("texels a check", persp::kTexels / persp::kChecks, "%g") + ")";
   glm::dvec3 now{persp::distances(s).ratio(), persp::maxAffineErrorTexels(s, kMeasureSize), s.tiltDeg};
   plot::Series curve{"analytic", curveC}, sweep{"measured", measuredC, plot::Mark::Crosses};
   if (last && last->setup.distance == s.distance) {  // the curve and sweep come with a measurement
     for (const glm::dvec3& q : last->curve) curve.points.push_back(glm::dvec2(q));
-    for (const glm::dvec3& q : last->sweep) sweep.points.push_back(glm::dvec2(q)), sweep.tags.push_back("t=" + L::given("tilt, deg", q.z, "%g"));
+    for (const glm::dvec3& q : last->sweep)
+      sweep.points.push_back(glm::dvec2(q)), sweep.tags.push_back("t=" + L::given("tilt, deg", q.z, "%g"));
     if (!last->curve.empty() && last->curve.front().x >= 0.05)  // the rule of thumb's blind spot, when it shows
-      p.notes.push_back({glm::dvec2(last->curve.front()), "<- tilt 0: facing the eye, all depths equal, no error although (d2 - d1)/d1 = " +
-                                                  fmt("%.2f", last->curve.front().x)});
+      p.notes.push_back({glm::dvec2(last->curve.front()),
+                         "<- tilt 0: facing the eye, all depths equal, no error although (d2 - d1)/d1 = " +
+                             fmt("%.2f", last->curve.front().x)});
     if (last->setup.tiltDeg == s.tiltDeg) now.y = last->affine.maxErrorTexels;
   }
   p.series = {curve, sweep, {"current", currentC, plot::Mark::Rings, {glm::dvec2(now)}, 2.0f, 8.0f}};

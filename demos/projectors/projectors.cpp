@@ -75,7 +75,8 @@ class Projectors final : public ts::Scene {
     o.addEnum("view", &view_, {"object", "seed002", "box", "swim", "slide", "cube"}, "what to show", 'v');
     o.addEnum("object", &object_, {"cube", "cylinder", "sphere", "torus", "bumpy"}, "the object", 'o');
     o.addEnum("axis", &axis_, {"x", "y", "z"}, "the projector's axis", 'a');
-    o.addEnum("projector", &proj_, {"planar", "cylindrical", "spherical", "box", "solid"}, "the projector function", 'p');
+    o.addEnum("projector", &proj_, {"planar", "cylindrical", "spherical", "box", "solid"}, "the projector function",
+              'p');
     o.addEnum("formula", &formula_, {"printed", "corrected"}, "seed 002 as printed, or corrected", 'f');
     o.addEnum("coords", &coords_, {"cpu", "texgen", "glsl"},
               "glTexCoord per vertex | glTexGen (linear projectors) | per fragment in GLSL", 'c');
@@ -84,30 +85,44 @@ class Projectors final : public ts::Scene {
     o.addBool("clip", &clip_, "slide projector: clip plane q >= 0 against the back projection", 'k');
   }
   std::vector<ts::FigureSpec> figures() const override {
-    return {{"projectors_seed002", "Seed 002 (lab sheet, lines 83-165)",
-             "Seed 002's wraps on a sphere, as printed (left of each pair, amber) and corrected (right), along X, Y and Z: planar "
+    return {{"projectors_seed002",
+             "Seed 002 (lab sheet, lines 83-165)",
+             "Seed 002's wraps on a sphere, as printed (left of each pair, "
+             "amber) and corrected (right), along X, Y and Z: planar "
              "along Z as printed puts every point on the texture's diagonal; the cylindrical arctg shows the texture "
              "twice around; the spherical arctg uses half the rows.",
-             {"--view", "seed002"}, 1024, 640,
+             {"--view", "seed002"},
+             1024,
+             640,
              "As printed, planar Z puts {planar_z_diagonal_share} of the pixels on the diagonal; cylindrical uses "
              "{cylindrical_z_printed_columns} of the columns; spherical tv at the pole is {spherical_pole_tv} (arcsin: "
              "{spherical_pole_tv_corrected})."},
-            {"projectors_box_vs_planar", "Seed 001 (box mapping)",
+            {"projectors_box_vs_planar",
+             "Seed 001 (box mapping)",
              "The sphere seen along (1,1,1): box mapping (left) projects each part along its normal's largest axis; "
              "one planar projection along Z (right) stretches without bound toward its rim.",
-             {"--view", "box"}, 1024, 512,
+             {"--view", "box"},
+             1024,
+             512,
              "Box mapping stretches at most {box_worst_stretch} (sqrt 3 = 1.732); one planar projection "
              "{planar_stretch_80} at 80 deg (1/cos 80 = 5.76)."},
-            {"projectors_texgen_swim", "Seed 001 (glTexGen)",
-             "A cube at pose 0 (left) and pose 7 (right) with planar texgen along Z: GL_OBJECT_LINEAR (top) keeps the texture on the "
+            {"projectors_texgen_swim",
+             "Seed 001 (glTexGen)",
+             "A cube at pose 0 (left) and pose 7 (right) with planar texgen "
+             "along Z: GL_OBJECT_LINEAR (top) keeps the texture on the "
              "cube; GL_EYE_LINEAR (bottom), planes given at pose 0, leaves it behind: the texture swims.",
-             {"--view", "swim"}, 1024, 512,
+             {"--view", "swim"},
+             1024,
+             512,
              "One surface point changes texel {swim_changes_object_linear} times over 7 moves with OBJECT_LINEAR, "
              "{swim_changes_eye_linear} times with EYE_LINEAR."},
-            {"slide_projector", "Seed 001 (q: projective texturing)",
+            {"slide_projector",
+             "Seed 001 (q: projective texturing)",
              "A slide thrown on a floor and a wall by EYE_LINEAR planes = rows of B P_L V_L. Left: the wall behind the "
              "projector shows the back projection (q < 0). Right: a clip plane q >= 0 removes it.",
-             {"--view", "slide"}, 1024, 512,
+             {"--view", "slide"},
+             1024,
+             512,
              "{slide_mismatches} mismatches against the CPU in {slide_checked} pixels; back-projection pixels "
              "{slide_back_pixels_nofix} without a fix, {slide_back_pixels_clip} with the clip plane."}};
   }
@@ -181,7 +196,8 @@ void Projectors::gridView(ts::Frame& f, int w, int h) const {
                           std::string(kProj[r]) + " " + kAxis[c / 2] + " " + kFormula[c % 2],
                           fo == Formula::Printed ? ts::layout::kAmber : kWhite, 1);
     }
-  ts::layout::caption(f, {8, 4, float(w) - 8, 30}, "seed 002 as printed (amber) and corrected, along X, Y, Z", kWhite, 2);
+  ts::layout::caption(f, {8, 4, float(w) - 8, 30}, "seed 002 as printed (amber) and corrected, along X, Y, Z", kWhite,
+                      2);
 }
 
 // box | swim | slide | cube: two or four pictures side by side.
@@ -214,19 +230,22 @@ void Projectors::pairView(ts::Frame& f, int w, int h, const ts::Measurements& me
     glm::mat4 m = glm::inverse(views::camera()) * glm::translate(glm::mat4(1.0f), {0, 0, -5.2f}) *
                   faceOn({1, 1, 1});  // (1,1,1) toward the viewer
     f.panels.push_back(views::objectPanel("box", L, glslBatch(s, Projector::Box, Axis::Z, Formula::Corrected, tex), m));
-    f.panels.push_back(views::objectPanel("planar_z", R, glslBatch(s, Projector::Planar, Axis::Z, Formula::Corrected, tex), m));
+    f.panels.push_back(
+        views::objectPanel("planar_z", R, glslBatch(s, Projector::Planar, Axis::Z, Formula::Corrected, tex), m));
     a = "box mapping: stretch <= sqrt 3", b = "planar along Z: 1/cos to the rim";
     // What the stretch measured on each comes to, against its closed form.
     const Lk::Text sqrt3 = Lk::given("sqrt 3", std::sqrt(3.0), "%.2f"),
                    at = Lk::given("angle from the projector's axis, deg", 80.0, "%g"),
                    secant = Lk::given("1/cos 80 deg", 1.0 / std::cos(glm::radians(80.0)), "%.2f");
-    const Lk::Text under[2] = {
-        "worst: " + Lk::measured(measured, "box_worst_stretch", "%.2f") + " (sqrt 3 = " + sqrt3 + ")",
-        "at " + at + " deg: " + Lk::measured(measured, "planar_stretch_80", "%.2f") + " (1/cos = " + secant + ")"};
+    const Lk::Text under[2] = {"worst: " + Lk::measured(measured, "box_worst_stretch", "%.2f") + " (sqrt 3 = " + sqrt3 +
+                                   ")",
+                               "at " + at + " deg: " + Lk::measured(measured, "planar_stretch_80", "%.2f") +
+                                   " (1/cos = " + secant + ")"};
     const ts::Rect* pics[2] = {&L, &R};
     for (int k = 0; k < 2; ++k) {  // as wide as the picture's half of the window (its row when tall)
       const ts::Rect& p = *pics[k];
-      const float y = float(p.y + p.h + 2), x0 = tall ? 8.0f : float(k * w / 2 + 8), x1 = tall ? float(w - 8) : x0 + float(w / 2 - 16);
+      const float y = float(p.y + p.h + 2), x0 = tall ? 8.0f : float(k * w / 2 + 8),
+                  x1 = tall ? float(w - 8) : x0 + float(w / 2 - 16);
       Lk::caption(f, {x0, y, x1, y + Lk::lineHeight(underScale)}, under[k], Lk::kAmber, underScale);
     }
   } else if (view_ == kSwim) {
@@ -237,9 +256,10 @@ void Projectors::pairView(ts::Frame& f, int w, int h, const ts::Measurements& me
       int ps = k % 2 ? kPoses - 1 : 0;
       const ts::Rect& cell = k % 2 ? R : L;
       ts::Rect vp{cell.x + (side - q) / 2, cell.y + (k / 2) * (q + 8), q, q};
-      f.panels.push_back(views::objectPanel(std::string(k < 2 ? "object_linear_" : "eye_linear_") + std::to_string(ps),
-                                            vp, texGenBatch(cube, planarTexGen(Axis::Z, Formula::Corrected, mode, views::camera() * pose(0)), tex),
-                                            pose(ps)));
+      f.panels.push_back(views::objectPanel(
+          std::string(k < 2 ? "object_linear_" : "eye_linear_") + std::to_string(ps), vp,
+          texGenBatch(cube, planarTexGen(Axis::Z, Formula::Corrected, mode, views::camera() * pose(0)), tex),
+          pose(ps)));
     }
     a = "pose 0: OBJECT / EYE_LINEAR", b = "pose 7: EYE_LINEAR swims";
   } else if (view_ == kSlide) {
@@ -260,17 +280,22 @@ void Projectors::pairView(ts::Frame& f, int w, int h, const ts::Measurements& me
     const ts::Rect* pics[2] = {&L, &R};
     for (int k = 0; k < 2; ++k) {
       const ts::Rect& p = *pics[k];
-      const float y = float(p.y + p.h + 2), x0 = tall ? 8.0f : float(k * w / 2 + 8), x1 = tall ? float(w - 8) : x0 + float(w / 2 - 16);
+      const float y = float(p.y + p.h + 2), x0 = tall ? 8.0f : float(k * w / 2 + 8),
+                  x1 = tall ? float(w - 8) : x0 + float(w / 2 - 16);
       Lk::caption(f, {x0, y, x1, y + Lk::lineHeight(underScale)}, back[clip_ ? 1 - k : k], Lk::kAmber, underScale);
     }
     const float y = float(R.y + R.h) + Lk::lineHeight(underScale) + 6;
     ts::layout::legend(f, {float(std::min(L.x, R.x)), y, float(w) - 8, y + ts::layout::lineHeight(1)},
                        {{views::kProjectorOutline, "the projector: its frustum's edges"}}, 1);
   } else {
-    f.panels.push_back(views::objectPanel("cube24", L, perVertexBatch(shape(Object::Cube, false), Projector::Planar,
-                                                                       Axis::Z, Formula::Corrected, tex, true), pose(pose_)));
-    f.panels.push_back(views::objectPanel("cube8", R, perVertexBatch(shape(Object::Cube, true), Projector::Planar,
-                                                                      Axis::Z, Formula::Corrected, tex, true), pose(pose_)));
+    f.panels.push_back(views::objectPanel("cube24", L,
+                                          perVertexBatch(shape(Object::Cube, false), Projector::Planar, Axis::Z,
+                                                         Formula::Corrected, tex, true),
+                                          pose(pose_)));
+    f.panels.push_back(views::objectPanel("cube8", R,
+                                          perVertexBatch(shape(Object::Cube, true), Projector::Planar, Axis::Z,
+                                                         Formula::Corrected, tex, true),
+                                          pose(pose_)));
     a = "24 vertices: each face its own (s,t)", b = "8 shared vertices: smeared and mirrored faces";
   }
   const int sc = under ? underScale : ts::layout::scaleFor(L, 2);

@@ -82,9 +82,7 @@ inline double latitudeV(Axis ax, Formula f, glm::dvec3 p) {
   double r = glm::length(p), x = across(ax, p).along / r;
   return (f == Formula::Printed ? std::atan(x) : std::asin(std::clamp(x, -1.0, 1.0))) / kPi;
 }
-inline glm::dvec2 spherical(Axis ax, Formula f, glm::dvec3 p) {
-  return {angleU(ax, f, p), latitudeV(ax, f, p) + 0.5};
-}
+inline glm::dvec2 spherical(Axis ax, Formula f, glm::dvec3 p) { return {angleU(ax, f, p), latitudeV(ax, f, p) + 0.5}; }
 
 // Box mapping (seed 001 ¶4): project along the axis of the normal's largest
 // component, the planar map of that axis (corrected).  Its stretch (surface

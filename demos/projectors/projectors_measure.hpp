@@ -107,7 +107,8 @@ inline double mismatchShare(const Texels& a, const Texels& b, long* count = null
 
 // The texel read at one model point of the unit sphere, seen face-on from its
 // own direction in a (2m+1)-pixel ortho panel: the point is the centre pixel.
-inline glm::ivec2 texelAt(ts::Renderer& r, const Shape& s, Projector pr, Axis ax, Formula f, glm::dvec3 point, int grid) {
+inline glm::ivec2 texelAt(ts::Renderer& r, const Shape& s, Projector pr, Axis ax, Formula f, glm::dvec3 point,
+                          int grid) {
   const int n = 257;
   ts::Frame fr = indexFrame(n, n);
   fr.programs.push_back({kProgramName, projectorProgram()});
@@ -373,8 +374,9 @@ inline SolidResult solidOrLatLong(ts::Renderer& r, bool solid) {
   const glm::dvec3 dirs[2] = {{0, 0, 1}, {0, 1, 0}};
   for (int k = 0; k < 2; ++k) {
     ts::Panel p = orthoPanel(k ? "pole" : "seam", {k * kView, 0, kView, kView}, faceOn(dirs[k]));
-    if (solid) p.batches.push_back(texGenBatch(sphere, planarTexGen(Axis::Z, Formula::Corrected, GL_OBJECT_LINEAR,
-                                                                    glm::mat4(1.0f), true), tex));
+    if (solid)
+      p.batches.push_back(
+          texGenBatch(sphere, planarTexGen(Axis::Z, Formula::Corrected, GL_OBJECT_LINEAR, glm::mat4(1.0f), true), tex));
     else p.batches.push_back(perVertexBatch(sphere, Projector::Planar, Axis::Z, Formula::Corrected, tex, true));
     fr.panels.push_back(p);
   }
@@ -483,13 +485,15 @@ inline ts::Measurements measureAll(ts::Renderer& r) {
       ts::measureProgress(0.05 * (3 * p + a));
       Usage up = usage(tp, kGrid), uc = usage(tc, kGrid);
       std::string k = std::string(kProj[p]) + "_" + kAxis[a];
-      out.push_back({k + "_printed_columns", up.columns, "share of texture columns used, as printed (sphere, 6 views)"});
+      out.push_back(
+          {k + "_printed_columns", up.columns, "share of texture columns used, as printed (sphere, 6 views)"});
       out.push_back({k + "_printed_rows", up.rows, "share of texture rows used, as printed"});
       out.push_back({k + "_corrected_columns", uc.columns, "the same, corrected"});
       out.push_back({k + "_corrected_rows", uc.rows, "the same, corrected"});
       out.push_back({k + "_mismatch_share", mismatchShare(tp, tc), "pixels whose texel differs, printed vs corrected"});
       if (p == 0 && a == 2) {
-        out.push_back({"planar_z_diagonal_share", up.diagonal, "pixels with s = t (same texel column and row), as printed"});
+        out.push_back(
+            {"planar_z_diagonal_share", up.diagonal, "pixels with s = t (same texel column and row), as printed"});
         out.push_back({"planar_z_diagonal_share_corrected", uc.diagonal, "the same, corrected"});
       }
     }
@@ -538,11 +542,13 @@ inline ts::Measurements measureAll(ts::Renderer& r) {
   out.push_back({"planar_stretch_80", n ? sum / double(n) : 0.0, "planar along Z, mean ratio at 79.5..80.5 deg"});
   ts::measureProgress(0.75);
   // 4. OBJECT_LINEAR against EYE_LINEAR.
-  out.push_back({"swim_changes_object_linear", double(swimChanges(r, GL_OBJECT_LINEAR)), "texel changes of one point, 7 moves"});
+  out.push_back(
+      {"swim_changes_object_linear", double(swimChanges(r, GL_OBJECT_LINEAR)), "texel changes of one point, 7 moves"});
   out.push_back({"swim_changes_eye_linear", double(swimChanges(r, GL_EYE_LINEAR)), "the same with EYE_LINEAR"});
   // 5. The slide projector.
   SlideResult s0 = slideMeasure(r, false), s1 = slideMeasure(r, true);
-  out.push_back({"slide_mismatches", double(s0.mismatches + s1.mismatches), "texels differing from the CPU's (s/q, t/q)"});
+  out.push_back(
+      {"slide_mismatches", double(s0.mismatches + s1.mismatches), "texels differing from the CPU's (s/q, t/q)"});
   out.push_back({"slide_checked", double(s0.checked), "pixels checked (q > 0)"});
   out.push_back({"slide_back_pixels_nofix", double(s0.back), "pixels with q < 0 that show the slide, no fix"});
   out.push_back({"slide_back_pixels_clip", double(s1.back), "the same with the clip plane q >= 0"});

@@ -70,8 +70,8 @@ inline Shape slideStage() {
         for (glm::dvec3 p : {a, b, c, a, c, d}) s.push_back({p, glm::cross(u, v), {0, 0}});
       }
   };
-  quad({-4, 0, 4}, {8, 0, 0}, {0, 0, -7}, 16);   // floor, z from 4 to -3
-  quad({-4, 0, -3}, {8, 0, 0}, {0, 4, 0}, 8);    // back wall, facing +z
+  quad({-4, 0, 4}, {8, 0, 0}, {0, 0, -7}, 16);  // floor, z from 4 to -3
+  quad({-4, 0, -3}, {8, 0, 0}, {0, 4, 0}, 8);   // back wall, facing +z
   return s;
 }
 inline ts::Batch slideBatch(const Slide& sl, int texture, bool clip) {
@@ -86,7 +86,8 @@ inline ts::Batch slideBatch(const Slide& sl, int texture, bool clip) {
   if (clip) {  // the fix: keep q >= 0 (the Q plane, world = object coordinates here)
     b.clip = true;
     b.clipPlane = glm::vec4(planes[3]);
-    b.clipModelview = glm::mat4(sl.camV);  // given under the camera's view, the stage panel's modelview: a world-fixed plane
+    b.clipModelview = glm::mat4(
+        sl.camV);  // given under the camera's view, the stage panel's modelview: a world-fixed plane
   }
   return b;
 }

@@ -31,8 +31,9 @@ inline ts::Batch batchFor(const Shape& s, const Way& w, int tex, const glm::mat4
   switch (effective(w)) {
     case Coords::Cpu: return perVertexBatch(s, w.pr, w.ax, w.f, tex);
     case Coords::TexGen:
-      return texGenBatch(s, planarTexGen(w.ax, w.f, w.pr == Projector::Solid ? GL_OBJECT_LINEAR : w.texGenMode,
-                                         planeModelview, w.pr == Projector::Solid),
+      return texGenBatch(s,
+                         planarTexGen(w.ax, w.f, w.pr == Projector::Solid ? GL_OBJECT_LINEAR : w.texGenMode,
+                                      planeModelview, w.pr == Projector::Solid),
                          tex);
     case Coords::Glsl: return glslBatch(s, w.pr, w.ax, w.f, tex);
   }

@@ -86,21 +86,26 @@ class QuadDistortion final : public ts::Scene {
     o.addEnum("filter", &filter_, {"nearest", "linear"}, "texture magnification filter", 'f');
     o.addInt("checks", &checks_, 2, 32, "checks along each side of the texture", '+', '-');
     picture_.addOption(o, "the checkerboard");
-    o.addText("corners", &cornersText_,
-              "(s,t) at the square's corners (0,0) (1,0) (1,1) (0,1): \"s,t s,t s,t s,t\"",
+    o.addText("corners", &cornersText_, "(s,t) at the square's corners (0,0) (1,0) (1,1) (0,1): \"s,t s,t s,t s,t\"",
               [](const std::string& v) { quad::parseCorners(v); });
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
-        {"vi1_quad_distortion", "Figure VI.1",
+        {"vi1_quad_distortion",
+         "Figure VI.1",
          "The texture with the region chosen by the (s,t) corners (left) and that region drawn on a square as two "
          "linearly mapped triangles (right): the checker lines bend along the diagonal.",
-         {"--view", "book", "--diagonal", "tl-br", "--interp", "affine"}, 1024, 560,
+         {"--view", "book", "--diagonal", "tl-br", "--interp", "affine"},
+         1024,
+         560,
          "Two linearly mapped triangles bend the checker lines by {kink_deg[affine_tl_br]} deg along the diagonal."},
-        {"vi1_quad_variants", "Figure VI.1 (variants)",
+        {"vi1_quad_variants",
+         "Figure VI.1 (variants)",
          "The same region four ways: split along either diagonal (the kink moves and changes), bilinear "
          "interpolation of (s,t) over the quad, and projective (s,t,r,q) coordinates (no kink).",
-         {"--view", "compare", "--edges"}, 1280, 376,
+         {"--view", "compare", "--edges"},
+         1280,
+         376,
          "Split along the other diagonal the kink changes ({kink_deg[affine_tl_br]} -> {kink_deg[affine_bl_tr]} "
          "deg); bilinear and projective (s,t,r,q) remove it ({kink_deg[bilinear]}, {kink_deg[projective]} deg)."},
     };
@@ -117,8 +122,10 @@ class QuadDistortion final : public ts::Scene {
   // The variants the view shows: the current one (book), or both diagonals and then the two fixes (compare).
   std::vector<Variant> shown() const {
     if (view_ == 0) return {{Diagonal(diagonal_), Interp(interp_)}};
-    return {{Diagonal::TopLeftBottomRight, kAffine}, {Diagonal::BottomLeftTopRight, kAffine},
-            {Diagonal(diagonal_), kBilinear}, {Diagonal(diagonal_), kProjective}};
+    return {{Diagonal::TopLeftBottomRight, kAffine},
+            {Diagonal::BottomLeftTopRight, kAffine},
+            {Diagonal(diagonal_), kBilinear},
+            {Diagonal(diagonal_), kProjective}};
   }
 
  private:
@@ -146,8 +153,8 @@ class QuadDistortion final : public ts::Scene {
   int diagonal_ = 0, interp_ = kAffine, view_ = 0, filter_ = 1, checks_ = 8;
   bool edges_ = false;
   std::string cornersText_ = "0,0 1,0 0.75,0.75 0,1";  // the book's labels
-  ts::UserTexture picture_;  // --texture FILE
-  using Kinks = std::map<std::string, double>;  // variant name -> measured kink: measure()'s detail
+  ts::UserTexture picture_;                            // --texture FILE
+  using Kinks = std::map<std::string, double>;         // variant name -> measured kink: measure()'s detail
 };
 
 std::string variantName(const QuadDistortion::Variant& v) {
@@ -189,7 +196,8 @@ void QuadDistortion::addSquare(ts::Frame& f, ts::Panel& p, Variant v, int textur
                   {"st11_st01", glm::vec4(glm::vec2(st[2]), glm::vec2(st[3]))}};
     bool have = false;
     for (const auto& pr : f.programs) have |= pr.first == "bilinear_quad";
-    if (!have) f.programs.push_back({"bilinear_quad", {"demos/quad_distortion/quad_distortion.cpp", kBilinearVS, kBilinearFS}});
+    if (!have)
+      f.programs.push_back({"bilinear_quad", {"demos/quad_distortion/quad_distortion.cpp", kBilinearVS, kBilinearFS}});
   }
   p.batches.push_back(b);
   if (edges) {
@@ -216,16 +224,18 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
     std::string name = variantName(current);
     const bool haveKink = kinks.count(name) > 0;
     const std::string key = variantKey(current);
-    const L::Text kink = haveKink ? "kink along the diagonal: " + L::measured(measured, "kink_deg" + key, "%.1f") +
-                                        " deg (predicted " + L::measured(measured, "kink_predicted_deg" + key, "%.1f") + ")"
-                                  : L::Text();
+    const L::Text kink = haveKink
+                             ? "kink along the diagonal: " + L::measured(measured, "kink_deg" + key, "%.1f") +
+                                   " deg (predicted " + L::measured(measured, "kink_predicted_deg" + key, "%.1f") + ")"
+                             : L::Text();
     L::FlowSpec spec;
     spec.n = 2;
-    spec.linesAbove = 2;  // title, top corners
+    spec.linesAbove = 2;                       // title, top corners
     spec.linesBelow = (haveKink ? 2 : 1) + 1;  // bottom corners (and the kink), the colours' key under the last
     spec.gap = 16;
     std::vector<L::Cell> cells = L::flow(all, spec);
-    ts::Panel left = L::unitPanel("texture_space", cells[0].picture), right = L::unitPanel("screen_space", cells[1].picture);
+    ts::Panel left = L::unitPanel("texture_space", cells[0].picture),
+              right = L::unitPanel("screen_space", cells[1].picture);
     // The texture, the corners' region and the screen diagonal's image (quad_distortion_views.hpp; the affine
     // split's along its first triangle).
     const quad::Split sp = quad::split(corners(), current.diagonal);
@@ -246,8 +256,8 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
     const float bottom = std::max(cells[0].below.y1, cells[1].below.y1), line = L::lineHeight(c.scale);
     L::caption(f, {all.x0, bottom - 2 * line, all.x1, bottom - line}, kink, amber, c.scale);
     std::vector<ts::LegendEntry> colours{{quad::views::kRegion, "the region the corners' (s,t) select"},
-                                     {quad::views::kDiagonal, edges_ ? "the diagonal (screen), its image (texture)"
-                                                                     : "the screen diagonal's image"}};
+                                         {quad::views::kDiagonal, edges_ ? "the diagonal (screen), its image (texture)"
+                                                                         : "the screen diagonal's image"}};
     L::legend(f, {cells[0].below.x0, bottom - line, all.x1, bottom}, colours, c.scale);
   } else {
     // The four variants: both diagonals, then the two fixes.
@@ -289,7 +299,8 @@ double QuadDistortion::measureKink(ts::Renderer& r, Variant v, double* texelErro
   addSquare(mf, p, v, tex, false);
   mf.panels.push_back(p);
   ts::Image img = r.renderOffscreen(mf);
-  return quad::kinkDeg(img, T, v.diagonal, [&](glm::dvec2 ab) { return analytic(v, ab); }, texelError);
+  return quad::kinkDeg(
+      img, T, v.diagonal, [&](glm::dvec2 ab) { return analytic(v, ab); }, texelError);
 }
 
 ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
@@ -303,8 +314,10 @@ ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
     kinks[name] = kink;
     const std::string key = variantKey(v);
     out.push_back({"kink_deg" + key, kink, "measured angle between checker lines across the diagonal"});
-    out.push_back({"kink_predicted_deg" + key, predicted(v), "the same angle from the analytic maps (closed form for the affine split)"});
-    out.push_back({"texel_error_max" + key, texelError, "largest distance (texels of 2048) between the texel taken and the analytic one"});
+    out.push_back({"kink_predicted_deg" + key, predicted(v),
+                   "the same angle from the analytic maps (closed form for the affine split)"});
+    out.push_back({"texel_error_max" + key, texelError,
+                   "largest distance (texels of 2048) between the texel taken and the analytic one"});
   }
   out.push_back({"split_disagreement_texels", quad::splitDisagreement(corners(), current.diagonal) * 256.0,
                  "how far apart the two triangles' maps put one point (256 texels)"});

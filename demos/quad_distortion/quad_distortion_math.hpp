@@ -37,8 +37,7 @@ struct Affine {
 };
 
 // The affine map taking three square corners p0, p1, p2 to st0, st1, st2.
-inline Affine affineThrough(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, glm::dvec2 s0, glm::dvec2 s1,
-                            glm::dvec2 s2) {
+inline Affine affineThrough(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, glm::dvec2 s0, glm::dvec2 s1, glm::dvec2 s2) {
   glm::dmat2 P(p1 - p0, p2 - p0), S(s1 - s0, s2 - s0);
   Affine A;
   A.m = S * glm::inverse(P);
@@ -71,8 +70,7 @@ inline Corners parseCorners(const std::string& text) {
     if (std::abs(turn[i]) < 1e-9) throw ts::Error("--corners: '" + text + "' has three corners in a line");
   }
   for (int i = 1; i < 4; ++i)
-    if ((turn[i] > 0) != (turn[0] > 0))
-      throw ts::Error("--corners: '" + text + "' is not a convex quadrilateral");
+    if ((turn[i] > 0) != (turn[0] > 0)) throw ts::Error("--corners: '" + text + "' is not a convex quadrilateral");
   return c;
 }
 
@@ -96,8 +94,7 @@ struct Split {
 inline Split split(const Corners& st, Diagonal d) {
   const auto& P = squareCorners();
   if (d == Diagonal::TopLeftBottomRight)  // triangles (00,10,01) and (10,11,01)
-    return {affineThrough(P[0], P[1], P[3], st[0], st[1], st[3]),
-            affineThrough(P[1], P[2], P[3], st[1], st[2], st[3])};
+    return {affineThrough(P[0], P[1], P[3], st[0], st[1], st[3]), affineThrough(P[1], P[2], P[3], st[1], st[2], st[3])};
   // triangles (00,10,11) and (00,11,01)
   return {affineThrough(P[0], P[1], P[2], st[0], st[1], st[2]), affineThrough(P[0], P[2], P[3], st[0], st[2], st[3])};
 }

@@ -50,13 +50,15 @@ inline void cornerLabels(ts::Frame& f, const ts::layout::Cell& c, const quad::Co
     glm::dvec2 q = P[size_t(i)];
     const L::Text text = withValues ? "<" + L::given("s of the corner", st[size_t(i)].x, "%g") + "," +
                                           L::given("t of the corner", st[size_t(i)].y, "%g") + ">"
-                                    : "<" + L::given("a of the corner", q.x, "%g") + "," + L::given("b of the corner", q.y, "%g") + ">";
+                                    : "<" + L::given("a of the corner", q.x, "%g") + "," +
+                                          L::given("b of the corner", q.y, "%g") + ">";
     float x = float(r.x) + float(q.x) * float(r.w);
     bool top = q.y > 0.5;
     L::Box band = top ? L::Box{c.above.x0, c.above.y1 - L::lineHeight(scale), c.above.x1, c.above.y1}
                       : L::Box{c.below.x0, c.below.y0, c.below.x1, c.below.y0 + L::lineHeight(scale)};
-    L::placeFree(f, L::textLabel(x, band.y0 + float(2 * scale), text, L::kWhite, scale,
-                                 q.x > 0.5 ? ts::Align::Right : ts::Align::Left),
+    L::placeFree(f,
+                 L::textLabel(x, band.y0 + float(2 * scale), text, L::kWhite, scale,
+                              q.x > 0.5 ? ts::Align::Right : ts::Align::Left),
                  band);
   }
 }

@@ -88,18 +88,24 @@ class SphereProjections final : public ts::Scene {
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
-        {"vi5_sphere_projections", "Figure VI.5",
+        {"vi5_sphere_projections",
+         "Figure VI.5",
          "A checkerboard on two spheres, drawn with a tilt and a small rotation. Left: t = phi/180 + 1/2 "
          "(Eq. VI.2), the checks shrink toward the poles. Right: t = (sin phi + 1)/2 (Eq. VI.3), the cylinder "
          "projection: every check has the same area. Both pinch at the poles.",
-         {"--view", "spheres", "--mapping", "both"}, 1024, 512,
+         {"--view", "spheres", "--mapping", "both"},
+         1024,
+         512,
          "Texture area per surface area varies {vi2_spread}x between latitude bands with Eq. VI.2, {vi3_spread}x "
          "with Eq. VI.3 (area-preserving)."},
-        {"vi5_area_ratio", "Figure VI.5 (measured)",
+        {"vi5_area_ratio",
+         "Figure VI.5 (measured)",
          "Texture area / surface area by 20 deg band of latitude, measured from texel-index renders (bars and "
          "dots) against the analytic ratio (lines): 2/(pi cos phi) for Eq. VI.2, 1 for Eq. VI.3 (whole-sphere "
          "mean 1).",
-         {"--view", "plot", "--mapping", "both"}, 1024, 512,
+         {"--view", "plot", "--mapping", "both"},
+         1024,
+         512,
          "Eq. VI.2 gives the bands near the poles {vi2[70:90]_render}x the mean texture area per surface area "
          "(analytic {vi2[70:90]_analytic}), the equator {vi2[-10:10]_render}x; Eq. VI.3 varies {vi3_spread}x."},
     };
@@ -135,8 +141,8 @@ class SphereProjections final : public ts::Scene {
 // ---------------------------------------------------------------------------
 // The picture.
 
-void SphereProjections::addSphere(ts::Frame& f, const ts::layout::Cell& cell, Mapping m, int texture,
-                                  const Result* res, const ts::Measurements& measured) const {
+void SphereProjections::addSphere(ts::Frame& f, const ts::layout::Cell& cell, Mapping m, int texture, const Result* res,
+                                  const ts::Measurements& measured) const {
   const ts::Rect& vp = cell.picture;
   ts::Panel p;
   p.id = std::string("sphere_") + kKey[int(m)];
@@ -200,7 +206,8 @@ void SphereProjections::addPlot(ts::Frame& f, int width, int height, const ts::M
       bars.halfWidth = sphere::kBandDeg / 2 - 1;
       dots.points = bars.points;
       p.series.insert(p.series.end(), {bars, dots});
-      legend = legend + ", measured (bars): max/min " + ts::layout::measured(measured, std::string(kKey[int(m)]) + "_spread", "%.2f");
+      legend = legend + ", measured (bars): max/min " +
+               ts::layout::measured(measured, std::string(kKey[int(m)]) + "_spread", "%.2f");
     }
     p.legend.push_back({legend, c});
   }
@@ -229,7 +236,8 @@ ts::Frame SphereProjections::build(int width, int height, const ts::Measurements
   spec.linesBelow = 2;  // the measured ratios (wrapped when narrow)
   spec.gap = 16;
   std::vector<ts::layout::Cell> cells = ts::layout::flow({8, 8, float(width) - 8, float(height) - 8}, spec);
-  for (int k = 0; k < n; ++k) addSphere(f, cells[size_t(k)], ms[size_t(k)], tex, found(measured, ms[size_t(k)]), measured);
+  for (int k = 0; k < n; ++k)
+    addSphere(f, cells[size_t(k)], ms[size_t(k)], tex, found(measured, ms[size_t(k)]), measured);
   return f;
 }
 
@@ -249,7 +257,8 @@ ts::Measurements SphereProjections::measure(ts::Renderer& r) {
       std::string band = bandName(b), deg = fmt("%.0f", sphere::bandLo(b)) + ".." + fmt("%.0f", sphere::bandHi(b));
       out.push_back({k + band + "_analytic", res.analytic[size_t(b)],
                      "texture/surface area, latitudes " + deg + ", whole sphere = 1: exact for the sphere"});
-      out.push_back({k + band + "_mesh", res.mesh[size_t(b)], "the same from the mesh's triangles ((s,t) area / 3D area)"});
+      out.push_back(
+          {k + band + "_mesh", res.mesh[size_t(b)], "the same from the mesh's triangles ((s,t) area / 3D area)"});
       out.push_back({k + band + "_render", res.render[size_t(b)], "the same measured from a texel-index render"});
     }
     out.push_back({k + "_spread", res.spread, "largest / smallest measured band ratio (1 = area-preserving)"});

@@ -73,8 +73,8 @@ inline Result measureMapping(ts::Renderer& r, Mapping m, int resolution) {
   // Which texel rows and columns make up each band's region, and its area.
   std::vector<int> rowBand(kTexels);
   for (int j = 0; j < kTexels; ++j)
-    rowBand[size_t(j)] =
-        std::clamp(int((sphere::phiFromT(m, (j + 0.5) / kTexels) + 90.0) / sphere::kBandDeg), 0, kBands - 1);
+    rowBand[size_t(j)] = std::clamp(int((sphere::phiFromT(m, (j + 0.5) / kTexels) + 90.0) / sphere::kBandDeg), 0,
+                                    kBands - 1);
   auto thetaOf = [](int i) {  // texel column centre, degrees in (-180, 180]
     double th = 360.0 * (i + 0.5) / kTexels;
     return th > 180.0 ? th - 360.0 : th;

@@ -59,7 +59,8 @@ class TextureCompression final : public ts::Scene {
            "the encoder in texture_compression_math.hpp, uploaded with glCompressedTexImage2D and decoded by GL.\n"
            "Prints the compressed size (131,072 bytes: a 256 x 256 texture's at 16 bits), 4 bits per texel, at most\n"
            "4 colours per block, GL's decode against the CPU's, PSNR, the normal map's angle error, DXT1 512 against\n"
-           "RGB565 256 at equal memory, an LRU tile cache's hit rate with and without prefetching, and a clipmap's size.";
+           "RGB565 256 at equal memory, an LRU tile cache's hit rate "
+           "with and without prefetching, and a clipmap's size.";
   }
   int defaultWidth() const override { return 1280; }
   int defaultHeight() const override { return 440; }
@@ -67,7 +68,9 @@ class TextureCompression final : public ts::Scene {
 
   void addOptions(ts::Options& o) override {
     o.addEnum("view", &view_, {"blocks", "equal-memory", "memory"},
-              "the picture and its DXT1 blocks | DXT1 against RGB565 at half the size, magnified | the tile cache and the clipmap", 'v');
+              "the picture and its DXT1 blocks | DXT1 against RGB565 at "
+              "half the size, magnified | the tile cache and the clipmap",
+              'v');
     o.addEnum("picture", &picture_, {kPictureNames[0], kPictureNames[1], kPictureNames[2]},
               "photo-like bricks | checkerboard | normal map (from the bricks' heights)", 't');
     o.addBool("three-colour", &three_, "every block in the 3-colour mode (c0 <= c1: midpoint and black)", '3');
@@ -80,31 +83,46 @@ class TextureCompression final : public ts::Scene {
 
   std::vector<ts::FigureSpec> figures() const override {
     return {
-        {"dxt1_blocks", "Seed 001 (texture compression)",
+        {"dxt1_blocks",
+         "Seed 001 (texture compression)",
          "A photograph-like texture, 512 x 512, compressed to DXT1 by the suite's encoder and decoded by GL; the error "
          "magnified 8 times; one block magnified with its two RGB565 colours and the two between them.",
-         {"--view", "blocks", "--picture", "photo", "--block-x", "40", "--block-y", "14"}, 1280, 440,
+         {"--view", "blocks", "--picture", "photo", "--block-x", "40", "--block-y", "14"},
+         1280,
+         440,
          "{dxt1_bytes[512]} bytes, the same as 256 x 256 at 16 bits: {bits_per_texel} bits per texel, "
-         "{ratio_vs_rgb888}:1 against 24-bit texels; PSNR {psnr[photo]} dB; at most {dxt1_max_colours_per_block} colours in a "
+         "{ratio_vs_rgb888}:1 against 24-bit texels; PSNR {psnr[photo]} "
+         "dB; at most {dxt1_max_colours_per_block} colours in a "
          "block; GL's decode within {gl_vs_cpu_max_diff} levels of the CPU's."},
-        {"dxt1_normal_map", "Seed 001 (texture compression)",
+        {"dxt1_normal_map",
+         "Seed 001 (texture compression)",
          "A normal map compressed to DXT1: the blocks' two-colour lines cannot follow the normals' directions, the "
          "error concentrates at the bricks' edges.",
-         {"--view", "blocks", "--picture", "normals", "--block-x", "30", "--block-y", "14"}, 1280, 440,
+         {"--view", "blocks", "--picture", "normals", "--block-x", "30", "--block-y", "14"},
+         1280,
+         440,
          "\"Bad for normal maps\": after DXT1 the normals are off by {normal_error_deg[mean]} degrees on average, "
          "{normal_error_deg[max]} at most (PSNR {psnr[normals]} dB): {normal_error_deg[edge_blocks]} in blocks on the "
          "bricks' edges against {normal_error_deg[flat_blocks]} in flat ones."},
-        {"dxt1_equal_memory", "Seed 001 (texture compression)",
-         "The same memory two ways, magnified: 64 x 64 texels of the picture at 512 x 512, of DXT1 at 512 x 512 (4 bits a "
+        {"dxt1_equal_memory",
+         "Seed 001 (texture compression)",
+         "The same memory two ways, magnified: 64 x 64 texels of "
+         "the picture at 512 x 512, of DXT1 at 512 x 512 (4 bits a "
          "texel), and of RGB565 at 256 x 256 (16 bits a texel) magnified back.",
-         {"--view", "equal-memory", "--picture", "photo", "--block-x", "40", "--block-y", "14"}, 1280, 520,
+         {"--view", "equal-memory", "--picture", "photo", "--block-x", "40", "--block-y", "14"},
+         1280,
+         520,
          "\"A 512^2 texture in a 256^2's memory\": in {dxt1_bytes[512]} bytes each, DXT1 at 512^2 is "
          "{rms_equal_memory[dxt1_512]} RMS from the picture, RGB565 at 256^2 {rms_equal_memory[rgb565_256]}."},
-        {"texture_memory", "Seed 001 (texture memory)",
+        {"texture_memory",
+         "Seed 001 (texture memory)",
          "An LRU cache of texture tiles along a camera path, with and without prefetching the tiles the view moves "
          "into next; below, a clipmap's size.",
-         {"--view", "memory"}, 1024, 520,
-         "A 65536^2 clipmap with 512^2 levels holds {clipmap_texels[65536/512]} texels, the whole mip chain {chain_texels} "
+         {"--view", "memory"},
+         1024,
+         520,
+         "A 65536^2 clipmap with 512^2 levels holds {clipmap_texels[65536/512]} "
+         "texels, the whole mip chain {chain_texels} "
          "({clipmap_saving} times more); prefetching lifts a 64-tile cache's hit rate from {cache_hit_rate[64]} to "
          "{cache_hit_rate_prefetch[64]}, but a 48-tile one, too small for the view and what it prefetches, falls "
          "from {cache_hit_rate[48]} to {cache_hit_rate_prefetch[48]}."},
@@ -119,7 +137,8 @@ class TextureCompression final : public ts::Scene {
       return f;
     }
     const ts::layout::Text numbers = summary(measured);
-    const int bx = std::min(bx_, blocksAcross(m->original.width) - 1), by = std::min(by_, blocksAcross(m->original.height) - 1);
+    const int bx = std::min(bx_, blocksAcross(m->original.width) - 1),
+              by = std::min(by_, blocksAcross(m->original.height) - 1);
     if (view_ == 0) views::buildBlocks(f, *m, measured, bx, by, numbers);
     else if (view_ == 1) views::buildEqualMemory(f, *m, measured, bx, by, numbers);
     else views::buildMemory(f, *m, memoryNotes(measured, *m));
@@ -132,15 +151,19 @@ class TextureCompression final : public ts::Scene {
   ts::layout::Text summary(const ts::Measurements& ms) const {
     const std::string size = file_.active() ? "file" : "512";
     const std::string shown = file_.active() ? std::string("file") : kPictureNames[picture_];
-    return ts::layout::measuredText(ms, "{dxt1_bytes[" + size + "]|%.0f} bytes ({bits_per_texel|%.0f} bits a texel, "
-                                        "{ratio_vs_rgb565|%.0f}:1 against RGB565, {ratio_vs_rgb888|%.0f}:1 against RGB888); "
-                                        "PSNR {psnr[" + shown + "]|%.1f} dB; at most {dxt1_max_colours_per_block|%.0f} colours "
-                                        "a block; GL's and the CPU's decodes differ by {gl_vs_cpu_max_diff|%.0f} at most" +
-                                        (picture_ == kNormals && !file_.active()
-                                             ? "; the normals turn by {normal_error_deg[mean]|%.1f} deg on average, "
-                                               "{normal_error_deg[max]|%.0f} at most: {normal_error_deg[edge_blocks]|%.1f} "
-                                               "in blocks on the bricks' edges, {normal_error_deg[flat_blocks]|%.1f} in flat ones"
-                                             : ""));
+    return ts::layout::measuredText(
+        ms, "{dxt1_bytes[" + size +
+                "]|%.0f} bytes ({bits_per_texel|%.0f} bits a texel, "
+                "{ratio_vs_rgb565|%.0f}:1 against RGB565, {ratio_vs_rgb888|%.0f}:1 against RGB888); "
+                "PSNR {psnr[" +
+                shown +
+                "]|%.1f} dB; at most {dxt1_max_colours_per_block|%.0f} colours "
+                "a block; GL's and the CPU's decodes differ by {gl_vs_cpu_max_diff|%.0f} at most" +
+                (picture_ == kNormals && !file_.active()
+                     ? "; the normals turn by {normal_error_deg[mean]|%.1f} deg on average, "
+                       "{normal_error_deg[max]|%.0f} at most: {normal_error_deg[edge_blocks]|%.1f} "
+                       "in blocks on the bricks' edges, {normal_error_deg[flat_blocks]|%.1f} in flat ones"
+                     : ""));
   }
 
   // The memory view's notes: the clipmap against the whole chain, and DXT1's bytes against RGB565's.
@@ -156,8 +179,9 @@ class TextureCompression final : public ts::Scene {
                                     "({clipmap_saving|%.0f} times).  ");
     if (m.fromFile) return t + L::measuredText(ms, "DXT1: the file's picture in {dxt1_bytes[file]|%.0f} bytes.");
     return t + "DXT1: a " + side("the picture's side, texels", m.original.width) + " texture in " +
-           L::measuredText(ms, "{dxt1_bytes[512]|%.0f} bytes, as many as a ") + side("RGB565 texture's side, texels", 256) +
-           " one's at " + L::given("RGB565: bits a texel", 16, "%.0f") + L::measuredText(ms, " bits ({rgb565_bytes[256]|%.0f}).");
+           L::measuredText(ms, "{dxt1_bytes[512]|%.0f} bytes, as many as a ") +
+           side("RGB565 texture's side, texels", 256) + " one's at " + L::given("RGB565: bits a texel", 16, "%.0f") +
+           L::measuredText(ms, " bits ({rgb565_bytes[256]|%.0f}).");
   }
   int view_ = 0, picture_ = kPhoto, bx_ = 40, by_ = 14, cpuDecode_ = 0;
   bool three_ = false;
@@ -185,10 +209,12 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
       const AnglesByBlock where = normalAnglesByBlock(img, cpu);
       ms.push_back({"normal_error_deg[edge_blocks]", where.edge,
                     "mean angle in blocks whose normals turn by more than 15 degrees (a brick's edge), degrees"});
-      ms.push_back({"normal_error_deg[flat_blocks]", where.flat, "mean angle in blocks whose normals lie within 15 degrees (the bricks' grain), degrees"});
+      ms.push_back({"normal_error_deg[flat_blocks]", where.flat,
+                    "mean angle in blocks whose normals lie within 15 degrees (the bricks' grain), degrees"});
       if (p == picture_) {
         const int bx = std::min(bx_, blocksAcross(img.width) - 1), by = std::min(by_, blocksAcross(img.height) - 1);
-        ms.push_back({"normal_error_deg[shown_block]", blockMaxAngle(img, cpu, bx, by), "largest angle in the block shown, degrees"});
+        ms.push_back({"normal_error_deg[shown_block]", blockMaxAngle(img, cpu, bx, by),
+                      "largest angle in the block shown, degrees"});
       }
     }
     if (p != picture_) continue;
@@ -199,18 +225,25 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
     out.name = file ? file_.path().substr(file_.path().find_last_of('/') + 1) : kPictureNames[p];
     out.error = errorImage(img, cpu), out.fromFile = file;
     const double texels = double(img.width) * img.height, bits = 8.0 * double(bytes(blocks).size()) / texels;
-    ms.push_back({"s3tc_supported", g.supported ? 1.0 : 0.0, "GL_EXT_texture_compression_s3tc (renderer: " + ts::gl::rendererString() + ")"});
-    ms.push_back({"gl_decode_shown", out.glDecode ? 1.0 : 0.0, "1: the picture shows GL's decode; 0: the CPU's (--decode cpu, or no S3TC)"});
+    ms.push_back({"s3tc_supported", g.supported ? 1.0 : 0.0,
+                  "GL_EXT_texture_compression_s3tc (renderer: " + ts::gl::rendererString() + ")"});
+    ms.push_back({"gl_decode_shown", out.glDecode ? 1.0 : 0.0,
+                  "1: the picture shows GL's decode; 0: the CPU's (--decode cpu, or no S3TC)"});
     ms.push_back({"dxt1_bytes[" + size + "]", g.supported ? double(g.bytes) : double(bytes(blocks).size()),
-                  g.supported ? "GL_TEXTURE_COMPRESSED_IMAGE_SIZE of the DXT1 texture" : "bytes of the blocks (no S3TC in this GL)"});
-    if (!file) ms.push_back({"rgb565_bytes[256]", 256.0 * 256.0 * 2.0, "a 256 x 256 texture at 16 bits (seed 001: the same memory)"});
+                  g.supported ? "GL_TEXTURE_COMPRESSED_IMAGE_SIZE of the DXT1 texture"
+                              : "bytes of the blocks (no S3TC in this GL)"});
+    if (!file)
+      ms.push_back(
+          {"rgb565_bytes[256]", 256.0 * 256.0 * 2.0, "a 256 x 256 texture at 16 bits (seed 001: the same memory)"});
     else
       ms.push_back({"padded_texels", double(blocksAcross(img.width) * blocksAcross(img.height) * 16) - texels,
-                    "texels the blocks cover beyond the picture (sides padded to multiples of 4, the last row and column repeated)"});
+                    "texels the blocks cover beyond the picture (sides padded "
+                    "to multiples of 4, the last row and column repeated)"});
     ms.push_back({"bits_per_texel", bits, "of the blocks, over the picture's own texels"});
     ms.push_back({"ratio_vs_rgb565", 16.0 / bits, "16-bit texels : DXT1"});
     ms.push_back({"ratio_vs_rgb888", 24.0 / bits, "24-bit texels : DXT1"});
-    ms.push_back({"dxt1_max_colours_per_block", double(maxColoursPerBlock(out.decoded)), "distinct colours in any decoded 4x4 block"});
+    ms.push_back({"dxt1_max_colours_per_block", double(maxColoursPerBlock(out.decoded)),
+                  "distinct colours in any decoded 4x4 block"});
     ms.push_back({"gl_vs_cpu_max_diff", g.supported && g.compressed ? double(maxDiff(g.decoded, cpu)) : -1.0,
                   "largest channel difference, GL's decode against dxt1.hpp's (8-bit levels; -1: no S3TC)"});
     out.rgb565 = rgb565Half(img), out.rmsDxt1 = rms(img, cpu), out.rmsRgb565 = rms(img, out.rgb565);
@@ -223,12 +256,16 @@ ts::Measurements TextureCompression::measure(ts::Renderer& r) {
   for (size_t k = 0; k < cacheSizes().size(); ++k) {
     const std::string n = "[" + std::to_string(cacheSizes()[k]) + "]";
     ms.push_back({"cache_hit_rate" + n, out.plain[k].hitRate(), "LRU tile cache of this many tiles: hits / requests"});
-    ms.push_back({"cache_hit_rate_prefetch" + n, out.prefetched[k].hitRate(), "the same, prefetching the next column and row"});
+    ms.push_back(
+        {"cache_hit_rate_prefetch" + n, out.prefetched[k].hitRate(), "the same, prefetching the next column and row"});
   }
   static_assert(kClipmapSide == 65536 && kClipmapLevel == 512, "the measurements' names say 65536/512");
-  ms.push_back({"clipmap_texels[65536/512]", double(clipmapTexels(kClipmapSide, kClipmapLevel)), "a 65536^2 texture's mip chain, each level at most 512^2"});
+  ms.push_back({"clipmap_texels[65536/512]", double(clipmapTexels(kClipmapSide, kClipmapLevel)),
+                "a 65536^2 texture's mip chain, each level at most 512^2"});
   ms.push_back({"chain_texels", double(chainTexels(kClipmapSide)), "the whole mip chain of 65536^2"});
-  ms.push_back({"clipmap_saving", double(chainTexels(kClipmapSide)) / double(clipmapTexels(kClipmapSide, kClipmapLevel)), "chain / clipmap"});
+  ms.push_back({"clipmap_saving",
+                double(chainTexels(kClipmapSide)) / double(clipmapTexels(kClipmapSide, kClipmapLevel)),
+                "chain / clipmap"});
   ms.detail = out;
   return ms;
 }

@@ -13,7 +13,7 @@
 
 namespace dxt {
 struct GlResult {
-  bool supported = false;  // GL_EXT_texture_compression_s3tc
+  bool supported = false;   // GL_EXT_texture_compression_s3tc
   bool compressed = false;  // GL_TEXTURE_COMPRESSED after the upload
   long bytes = 0;           // GL_TEXTURE_COMPRESSED_IMAGE_SIZE
   ts::Image decoded;        // what GL reads from it, row 0 = the first row uploaded
@@ -28,7 +28,8 @@ inline GlResult glRoundTrip(const std::vector<uint8_t>& blocks, int w, int h) {
   GLuint t = 0;
   glGenTextures(1, &t);
   glBindTexture(GL_TEXTURE_2D, t);
-  glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, w, h, 0, GLsizei(blocks.size()), blocks.data());
+  glCompressedTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, w, h, 0, GLsizei(blocks.size()),
+                         blocks.data());
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
   GLint compressed = 0, size = 0;
   glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED, &compressed);

@@ -36,7 +36,9 @@ inline int maxColoursPerBlock(const ts::Image& img) {
 inline int maxDiff(const ts::Image& a, const ts::Image& b) { return ts::maxChannelDiff(a, b); }
 inline double rms(const ts::Image& a, const ts::Image& b) { return ts::rmsRgb(a, b); }
 // PSNR = 20 log10(255 / RMS).
-inline double psnr(const ts::Image& a, const ts::Image& b) { return 20.0 * std::log10(255.0 / std::max(rms(a, b), 1e-9)); }
+inline double psnr(const ts::Image& a, const ts::Image& b) {
+  return 20.0 * std::log10(255.0 / std::max(rms(a, b), 1e-9));
+}
 // A normal map's texel as the unit vector it encodes (n = 2 c / 255 - 1).
 inline glm::dvec3 normalOf(ts::Rgba c) { return glm::normalize(glm::dvec3(c.r, c.g, c.b) / 127.5 - 1.0); }
 // The mean and largest angle (degrees) between two normal maps' normals.
@@ -44,7 +46,8 @@ inline glm::dvec2 normalAngles(const ts::Image& a, const ts::Image& b) {
   double sum = 0, most = 0;
   for (int y = 0; y < a.height; ++y)
     for (int x = 0; x < a.width; ++x) {
-      const double d = glm::degrees(std::acos(std::clamp(glm::dot(normalOf(a.at(x, y)), normalOf(b.at(x, y))), -1.0, 1.0)));
+      const double d = glm::degrees(
+          std::acos(std::clamp(glm::dot(normalOf(a.at(x, y)), normalOf(b.at(x, y))), -1.0, 1.0)));
       sum += d, most = std::max(most, d);
     }
   return {sum / (double(a.width) * a.height), most};
@@ -61,7 +64,8 @@ inline double blockMaxAngle(const ts::Image& a, const ts::Image& b, int bx, int 
   double most = 0;
   for (int y = by * 4; y < std::min(by * 4 + 4, a.height); ++y)
     for (int x = bx * 4; x < std::min(bx * 4 + 4, a.width); ++x)
-      most = std::max(most, glm::degrees(std::acos(std::clamp(glm::dot(normalOf(a.at(x, y)), normalOf(b.at(x, y))), -1.0, 1.0))));
+      most = std::max(most, glm::degrees(std::acos(
+                                std::clamp(glm::dot(normalOf(a.at(x, y)), normalOf(b.at(x, y))), -1.0, 1.0))));
   return most;
 }
 inline AnglesByBlock normalAnglesByBlock(const ts::Image& a, const ts::Image& b) {
@@ -74,7 +78,8 @@ inline AnglesByBlock normalAnglesByBlock(const ts::Image& a, const ts::Image& b)
       int n = 0;
       for (int y = by * 4; y < std::min(by * 4 + 4, a.height); ++y)
         for (int x = bx * 4; x < std::min(bx * 4 + 4, a.width); ++x, ++n) {
-          spread = std::max(spread, glm::degrees(std::acos(std::clamp(glm::dot(first, normalOf(a.at(x, y))), -1.0, 1.0))));
+          spread = std::max(spread,
+                            glm::degrees(std::acos(std::clamp(glm::dot(first, normalOf(a.at(x, y))), -1.0, 1.0))));
           sum += glm::degrees(std::acos(std::clamp(glm::dot(normalOf(a.at(x, y)), normalOf(b.at(x, y))), -1.0, 1.0)));
         }
       if (spread <= 15.0) flatSum += sum / n, ++r.flatBlocks;

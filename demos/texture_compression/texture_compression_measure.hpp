@@ -67,7 +67,8 @@ inline CacheRun lruRun(int capacity, bool prefetch) {
   };
   for (int f = 0; f < kFrames; ++f) {
     const double x0 = f * kCacheStepX, y0 = f * kCacheStepY;
-    const int tx0 = int(std::floor(x0)), ty0 = int(std::floor(y0)), tx1 = int(std::floor(x0 + kView)), ty1 = int(std::floor(y0 + kView));
+    const int tx0 = int(std::floor(x0)), ty0 = int(std::floor(y0)), tx1 = int(std::floor(x0 + kView)),
+              ty1 = int(std::floor(y0 + kView));
     for (int ty = ty0; ty <= ty1; ++ty)
       for (int tx = tx0; tx <= tx1; ++tx) touch(tx, ty, true);
     if (prefetch) {  // the column and the row the view moves into next

@@ -48,7 +48,7 @@
 #include "common/core/textures.hpp"
 #include "common/core/orbit_camera.hpp"
 #include "common/core/user_texture.hpp"
-#include "torus_math.hpp"  // the exercise's answer; the torus itself is common/core/torus.hpp
+#include "torus_math.hpp"     // the exercise's answer; the torus itself is common/core/torus.hpp
 #include "torus_measure.hpp"  // the centre found in a texel-index render, and the ray to the mesh
 #include "torus_views.hpp"    // the centre's marks
 #include "common/core/student_code.hpp"
@@ -85,7 +85,8 @@ class Torus final : public ts::Scene {
   void addOptions(ts::Options& o) override {
     o.addEnum("mapping", &mapping_, {kMappingNames[0], kMappingNames[1], kMappingNames[2]},
               "book: s = theta/360, t = phi/360; front: s = theta/360 + 1/2, t = phi/360 + 1/2 (Exercise VI.2); "
-              "mine: exercises/vi2_torus_front.cpp", 'c');
+              "mine: exercises/vi2_torus_front.cpp",
+              'c');
     o.addEnum("pattern", &texture_, {"checker", "grid"}, "checker (Figure VI.6) or labelled grid (shows the centre)",
               'g');
     picture_.addOption(o, "the pattern");
@@ -99,23 +100,28 @@ class Torus final : public ts::Scene {
     o.addFloat("tilt", &tilt_, 0.0f, 90.0f, "tilt towards the viewer, degrees (the hole's far wall shows above ~16)",
                '.', ',', 5.0f);
     o.addFloat("turn", &turn_, -180.0f, 180.0f, "turn about the torus's axis, degrees", ']', '[', 30.0f);
-    o.addText("radii", &radiiText_, "major and minor radius \"R,r\" with 0 < r < R <= 10", [](const std::string& v) {
-      parseRadii(v);
-    });
+    o.addText("radii", &radiiText_, "major and minor radius \"R,r\" with 0 < r < R <= 10",
+              [](const std::string& v) { parseRadii(v); });
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
-        {"vi6_torus", "Figure VI.6",
+        {"vi6_torus",
+         "Figure VI.6",
          "A checkerboard texture map (left) applied to a torus by s = theta/360, t = phi/360 (right), the torus "
          "tilted towards the viewer; the red cross marks where the texture's centre lands.",
-         {"--mapping", "book", "--pattern", "checker", "--marker=on"}, 1024, 512,
+         {"--mapping", "book", "--pattern", "checker", "--marker=on"},
+         1024,
+         512,
          "With s = theta/360, t = phi/360 the texture's centre lands at z = {centre_3d_z[book]} = -(R - r), on the "
          "far inner wall of the hole."},
-        {"vi6_torus_centre", "Exercise VI.2",
+        {"vi6_torus_centre",
+         "Exercise VI.2",
          "Where the texture's centre (1/2, 1/2) lands. Middle: s = theta/360, t = phi/360 put it at theta = phi = 180 "
          "deg, (0, 0, -(R - r)), on the far inner wall of the hole. Right: s = theta/360 + 1/2, t = phi/360 + 1/2 "
          "put it at the front, (0, 0, R + r).",
-         {"--view", "compare", "--pattern", "grid"}, 1280, 520,
+         {"--view", "compare", "--pattern", "grid"},
+         1280,
+         520,
          "Adding 1/2 to s and t moves the texture's centre from z = {centre_3d_z[book]} to z = {centre_3d_z[front]} "
          "= R + r, the front."},
     };
@@ -233,13 +239,15 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
     const Found* found = d && d->founds.count(int(m)) ? &d->founds.at(int(m)) : nullptr;
     const auto [mapping, centre] = L::halves(c.above);
     if (m == kMine && !(d && d->mine.ok())) {  // not done yet, or it failed: say so, draw nothing
-      L::caption(f, L::box(c.picture), d ? d->mine.failure : "asking the exercise checker for your (s, t) ...", kFailed, c.scale);
+      L::caption(f, L::box(c.picture), d ? d->mine.failure : "asking the exercise checker for your (s, t) ...", kFailed,
+                 c.scale);
       continue;
     }
     addTorus(f, c.picture, m, tex, c.scale, d);
     L::caption(f, mapping,
-               m == kMine ? ts::student::summary(measured)
-               : m == Mapping::Book ? "s=theta/360, t=phi/360" : "s=theta/360+1/2, t=phi/360+1/2",
+               m == kMine           ? ts::student::summary(measured)
+               : m == Mapping::Book ? "s=theta/360, t=phi/360"
+                                    : "s=theta/360+1/2, t=phi/360+1/2",
                kWhite, c.scale);
     // Where the texture's centre lands: the z measured on the render (the
     // claim's number), and what the exercise's answer says it should be.
@@ -249,11 +257,13 @@ ts::Frame Torus::build(int width, int height, const ts::Measurements& measured) 
     const bool seen = found && found->visible;
     L::caption(f, centre,
                seen ? "centre lands at z = " + L::measured(measured, "centre_3d_z" + n, "%.2f") + should
-                    : "centre at z = " + L::given("z of the exercise's answer", torus::centrePoint(tp).z, "%.2f") + should,
+                    : "centre at z = " + L::given("z of the exercise's answer", torus::centrePoint(tp).z, "%.2f") +
+                          should,
                seen ? kMeasured : kWhite, c.scale);
     if (found)
       L::caption(f, c.below,
-                 seen ? "measured: " + L::measured(measured, "centre_distance_to_answer" + n, "%.3f") + " from the answer"
+                 seen ? "measured: " + L::measured(measured, "centre_distance_to_answer" + n, "%.3f") +
+                            " from the answer"
                       : "measured: not visible from here",
                  kMeasured, c.scale);
   }

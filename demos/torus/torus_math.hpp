@@ -50,8 +50,7 @@ inline ts::Mesh mesh(const Params& p) {
       p.nu, p.nv, /*periodicU=*/true, /*periodicV=*/true,
       [&](int i, int j) { return ts::torusPoint(p.R, p.r, p.nu, p.nv, i, j); },
       [&](int i, int j) {
-        return p.stOfAngles(360.0 * (i % p.nu) / p.nu, 360.0 * (j % p.nv) / p.nv) +
-               glm::dvec2(i / p.nu, j / p.nv);
+        return p.stOfAngles(360.0 * (i % p.nu) / p.nu, 360.0 * (j % p.nv) / p.nv) + glm::dvec2(i / p.nu, j / p.nv);
       });
 }
 

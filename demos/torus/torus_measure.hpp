@@ -22,7 +22,7 @@ struct Found {
   bool visible = false;
   glm::dvec2 screen{-1.0};  // pixels of the kMeasureSize render, top-left origin
   glm::dvec2 nearestPixel{-1.0};
-  glm::dvec3 point{0.0};    // the mesh point a ray through `screen` hits
+  glm::dvec3 point{0.0};  // the mesh point a ray through `screen` hits
 };
 constexpr int kMeasureSize = 512;
 
@@ -80,7 +80,8 @@ inline Found find(ts::Renderer& r, const Params& tp, const glm::mat4& projection
       ds -= std::round(ds), dt -= std::round(dt);  // GL_REPEAT: 1.5 is 0.5
       double d = std::hypot(ds, dt);
       if (d < best) best = d, out.nearestPixel = {x + 0.5, y + 0.5};
-      if (std::abs(ds) < near && std::abs(dt) < near) px.push_back({x + 0.5, y + 0.5, ds, dt}), mean += glm::dvec2(x + 0.5, y + 0.5);
+      if (std::abs(ds) < near && std::abs(dt) < near)
+        px.push_back({x + 0.5, y + 0.5, ds, dt}), mean += glm::dvec2(x + 0.5, y + 0.5);
     }
   if (px.size() < 12) return out;  // too few pixels show it: hidden (or off screen)
   mean /= double(px.size());
@@ -117,7 +118,8 @@ inline Found find(ts::Renderer& r, const Params& tp, const glm::mat4& projection
   double tBest = std::numeric_limits<double>::infinity();
   std::vector<unsigned> tri = mesh.triangles();
   for (size_t k = 0; k + 2 < tri.size(); k += 3)
-    tBest = std::min(tBest, hit(o, dir, mesh.points[tri[k]].pos, mesh.points[tri[k + 1]].pos, mesh.points[tri[k + 2]].pos));
+    tBest = std::min(tBest,
+                     hit(o, dir, mesh.points[tri[k]].pos, mesh.points[tri[k + 1]].pos, mesh.points[tri[k + 2]].pos));
   if (!std::isfinite(tBest)) return out;
   out.point = o + tBest * dir;
   out.visible = true;

@@ -13,8 +13,9 @@ inline const glm::vec4 kMarker{0.95f, 0.1f, 0.2f, 1.0f}, kMarkerBox{0.55f, 0.0f,
 // The label at the largest scale that fits inside `vp` (left out if none does).
 inline void label(ts::Frame& f, const ts::Rect& vp, glm::vec2 at, const char* text, int scale, glm::vec2 offset) {
   for (int sc = scale; sc >= 1; --sc)
-    if (ts::layout::placeFree(f, {at.x + offset.x * float(sc), at.y + offset.y * float(sc), text, ts::layout::kWhite, sc,
-                                  ts::Align::Left, kMarkerBox},
+    if (ts::layout::placeFree(f,
+                              {at.x + offset.x * float(sc), at.y + offset.y * float(sc), text, ts::layout::kWhite, sc,
+                               ts::Align::Left, kMarkerBox},
                               ts::layout::box(vp)))
       break;
 }
@@ -22,8 +23,8 @@ inline void label(ts::Frame& f, const ts::Rect& vp, glm::vec2 at, const char* te
 // A cross at (1/2, 1/2) of the texture panel `p` (unit square), labelled.
 inline void markTextureCentre(ts::Frame& f, ts::Panel& p, int scale) {
   const float a = 0.06f;
-  p.batches.push_back(ts::lineSegments({{0.5f - a, 0.5f}, {0.5f + a, 0.5f}, {0.5f, 0.5f - a}, {0.5f, 0.5f + a}}, kMarker,
-                                       3.0f, "centre_marker"));
+  p.batches.push_back(ts::lineSegments({{0.5f - a, 0.5f}, {0.5f + a, 0.5f}, {0.5f, 0.5f - a}, {0.5f, 0.5f + a}},
+                                       kMarker, 3.0f, "centre_marker"));
   const ts::Rect& vp = p.viewport;
   label(f, vp, {float(vp.x + vp.w / 2), float(vp.y + vp.h / 2)}, "(1/2, 1/2)", scale, {8.0f, 4.0f});
 }

@@ -82,50 +82,67 @@ class WrapModes final : public ts::Scene {
   }
   std::vector<std::string> claim() const override { return {"wrap_texel_mismatches", "seed_mirror_differs"}; }
   void addOptions(ts::Options& o) override {
-    o.addEnum("view", &view_, {"modes", "single", "matrix", "env"},
-              "modes: 5 modes x 2 filters; single: one state; matrix: the texture matrix; env: the texture environments", 'v');
+    o.addEnum(
+        "view", &view_, {"modes", "single", "matrix", "env"},
+        "modes: 5 modes x 2 filters; single: one state; matrix: the texture matrix; env: the texture environments",
+        'v');
     o.addEnum("env", &env_, std::vector<std::string>(kEnvNames, kEnvNames + 5),
               "texture environment of the single view's quad (on vertex colours)", 'e');
-    o.addBool("separate-specular", &separate_, "env view, last panel: GL_SEPARATE_SPECULAR_COLOR (specular added after texturing)", 'p');
-    o.addEnum("wrap-s", &wrapS_, std::vector<std::string>(kModeNames, kModeNames + 5), "wrap mode of s (single and matrix views)", 's');
-    o.addEnum("wrap-t", &wrapT_, std::vector<std::string>(kModeNames, kModeNames + 5), "wrap mode of t (single and matrix views)", 't');
+    o.addBool("separate-specular", &separate_,
+              "env view, last panel: GL_SEPARATE_SPECULAR_COLOR (specular added after texturing)", 'p');
+    o.addEnum("wrap-s", &wrapS_, std::vector<std::string>(kModeNames, kModeNames + 5),
+              "wrap mode of s (single and matrix views)", 's');
+    o.addEnum("wrap-t", &wrapT_, std::vector<std::string>(kModeNames, kModeNames + 5),
+              "wrap mode of t (single and matrix views)", 't');
     o.addEnum("filter", &filter_, {"nearest", "linear"}, "texture filter (single and matrix views)", 'f');
     o.addFloat("range", &range_, 0.0f, 3.0f, "(s,t) run from -range to 1 + range", '+', '-', 0.5f);
     o.addBool("npot", &npot_, "a 7x5 texture instead of 8x8 (non-power-of-two)", 'n');
     o.addFloat("shift", &xf_.shift.x, -1.0f, 1.0f, "texture matrix: shift of s", ']', '[', 0.125f);
     o.addFloat("shift-t", &xf_.shift.y, -1.0f, 1.0f, "texture matrix: shift of t", '}', '{', 0.125f);
-    o.addFloat("rotate", &xf_.angleDeg, -180.0f, 180.0f, "texture matrix: rotation of (s,t) in degrees", 'r', 'R', 15.0f);
+    o.addFloat("rotate", &xf_.angleDeg, -180.0f, 180.0f, "texture matrix: rotation of (s,t) in degrees", 'r', 'R',
+               15.0f);
     o.addFloat("scale", &xf_.scale.x, 0.25f, 4.0f, "texture matrix: scale of s and t", '>', '<', 0.25f);
     o.addFloat("shear", &xf_.shear, -2.0f, 2.0f, "texture matrix: shear, s += shear t", 'k', 'K', 0.25f);
     o.addBool("animate", &animate_, "turn the texture matrix's rotation (window)", 'a');
-    o.addText("texture", &texturePath_, "a PNG or BMP file to wrap instead of the gradient", [this](const std::string& v) {
-      if (v.empty()) throw ts::Error("--texture: the file name is empty");
-      fileTexture_ = ts::fileTexture(v);
-    });
+    o.addText("texture", &texturePath_, "a PNG or BMP file to wrap instead of the gradient",
+              [this](const std::string& v) {
+                if (v.empty()) throw ts::Error("--texture: the file name is empty");
+                fileTexture_ = ts::fileTexture(v);
+              });
   }
   std::vector<ts::FigureSpec> figures() const override {
-    return {{"wrap_modes", "Buss VI.4 (seeds 001, 002)",
-             "An 8x8 texture on a quad whose (s,t) run from -1 to 2, with the five wrap modes (columns) and GL_NEAREST "
-             "/ GL_LINEAR (rows); the unit square is outlined, the border colour is magenta. GL_CLAMP with GL_LINEAR "
-             "blends half the border in along the square's edges; GL_CLAMP_TO_EDGE none.",
-             {"--view", "modes"}, 1280, 640,
-             "{wrap_texel_mismatches} pixels differ from the wrap formulas; seed 002's MIRROR is wrong at "
-             "{seed_mirror_differs} of {seed_mirror_integers} integer s; GL_CLAMP with GL_LINEAR reads "
-             "{border_pct[clamp@0]}% border at the edge."},
-            {"texture_matrix", "Buss VI.4 (seed 001)",
-             "The texture matrix: (s,t) rotated by 30 degrees, scaled by 1.5 and sheared by 0.25 about the texture's "
-             "centre (glMatrixMode(GL_TEXTURE)). Left: texture space with the image of the unit square; right: the quad.",
-             {"--view", "matrix", "--rotate", "30", "--scale", "1.5", "--shear", "0.25", "--wrap-s", "mirrored"}, 1024, 512,
-             "The texture matrix maps (s,t) as M (s,t) on the CPU does: {texture_matrix_mismatches} of "
-             "{texture_matrix_probes} probes differ."},
-            {"texture_environment", "Buss VI.4 (texture environment)",
-             "A plane lit per vertex (orange, a white highlight) under an RGBA texture, combined by each texture "
-             "environment (GL_BLEND with GL_TEXTURE_ENV_COLOR light blue; GL_DECAL's texture has an alpha ramp). "
-             "GL_MODULATE multiplies the highlight by the texel; GL_SEPARATE_SPECULAR_COLOR adds it after texturing.",
-             {"--view", "env"}, 1200, 520,
-             "Every environment matches its table ({env_table_mismatches} mismatches); GL_MODULATE dims the "
-             "highlight to {highlight_peak[modulate]}, GL_SEPARATE_SPECULAR_COLOR keeps "
-             "{highlight_peak[separate_specular]}."}};
+    return {
+        {"wrap_modes",
+         "Buss VI.4 (seeds 001, 002)",
+         "An 8x8 texture on a quad whose (s,t) run from -1 to 2, with the five wrap modes (columns) and GL_NEAREST "
+         "/ GL_LINEAR (rows); the unit square is outlined, the border colour is magenta. GL_CLAMP with GL_LINEAR "
+         "blends half the border in along the square's edges; GL_CLAMP_TO_EDGE none.",
+         {"--view", "modes"},
+         1280,
+         640,
+         "{wrap_texel_mismatches} pixels differ from the wrap formulas; seed 002's MIRROR is wrong at "
+         "{seed_mirror_differs} of {seed_mirror_integers} integer s; GL_CLAMP with GL_LINEAR reads "
+         "{border_pct[clamp@0]}% border at the edge."},
+        {"texture_matrix",
+         "Buss VI.4 (seed 001)",
+         "The texture matrix: (s,t) rotated by 30 degrees, scaled by 1.5 and sheared by 0.25 about the texture's "
+         "centre (glMatrixMode(GL_TEXTURE)). Left: texture space with the image of the unit square; right: the quad.",
+         {"--view", "matrix", "--rotate", "30", "--scale", "1.5", "--shear", "0.25", "--wrap-s", "mirrored"},
+         1024,
+         512,
+         "The texture matrix maps (s,t) as M (s,t) on the CPU does: {texture_matrix_mismatches} of "
+         "{texture_matrix_probes} probes differ."},
+        {"texture_environment",
+         "Buss VI.4 (texture environment)",
+         "A plane lit per vertex (orange, a white highlight) under an RGBA texture, combined by each texture "
+         "environment (GL_BLEND with GL_TEXTURE_ENV_COLOR light blue; GL_DECAL's texture has an alpha ramp). "
+         "GL_MODULATE multiplies the highlight by the texel; GL_SEPARATE_SPECULAR_COLOR adds it after texturing.",
+         {"--view", "env"},
+         1200,
+         520,
+         "Every environment matches its table ({env_table_mismatches} mismatches); GL_MODULATE dims the "
+         "highlight to {highlight_peak[modulate]}, GL_SEPARATE_SPECULAR_COLOR keeps "
+         "{highlight_peak[separate_specular]}."}};
   }
   // The animation turns the `rotate` option itself, 30 degrees a second, so the window keeps drawing and
   // F12 saves the state it shows; the frame the key is taken on is left still, so the state line printed
@@ -136,6 +153,7 @@ class WrapModes final : public ts::Scene {
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
+
  private:
   ts::TextureDesc texture(GLenum s, GLenum t, bool linear) const {
     ts::TextureDesc d = texturePath_.empty() ? ts::gradientTexture(npot_ ? 7 : 8, npot_ ? 5 : 8) : fileTexture_;
@@ -190,8 +208,8 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
       const int m = k % 5;
       const bool linear = k >= 5;
       int tex = f.addTexture(texture(kModes[m], kModes[m], linear));
-      wrap::views::addTextureSpace(f, cells[size_t(k)].picture, std::string(kModeNames[m]) + (linear ? "_linear" : "_nearest"), tex,
-                                range_);
+      wrap::views::addTextureSpace(f, cells[size_t(k)].picture,
+                                   std::string(kModeNames[m]) + (linear ? "_linear" : "_nearest"), tex, range_);
       L::caption(f, cells[size_t(k)].above, std::string(kModeGL[m]) + (linear ? " linear" : " nearest"), kWhite,
                  cells[size_t(k)].scale);
       std::string note;
@@ -214,7 +232,9 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
     ts::Batch& q = f.panels.back().batches.front();
     q.texEnv = kEnvs[env_];
     q.envColor = kEnvColour;
-    for (auto& v : q.vertices) v.color = glm::mix(glm::vec4(0.95f, 0.6f, 0.2f, 1), glm::vec4(0.3f, 0.5f, 0.95f, 1), v.pos.x > 0.5f ? 1.0f : 0.0f);
+    for (auto& v : q.vertices)
+      v.color = glm::mix(glm::vec4(0.95f, 0.6f, 0.2f, 1), glm::vec4(0.3f, 0.5f, 0.95f, 1),
+                         v.pos.x > 0.5f ? 1.0f : 0.0f);
     L::caption(f, c.above, state + (filter_ ? ", linear, " : ", nearest, ") + kEnvGL[env_], kWhite, c.scale);
     if (found)
       L::caption(f, c.below,
@@ -233,13 +253,15 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
   wrap::views::addTextureSpace(f, cells[0].picture, "texture_space", tex, range_, &m);
   L::caption(f, L::halves(cells[0].above).first, "texture space: M (unit square)", kWhite, cells[0].scale);
   L::legend(f, L::halves(cells[0].above).second,
-            {{wrap::views::kSquare, "the unit square under M"}, {wrap::views::kGrid, "integer s and t"}}, cells[0].scale);
+            {{wrap::views::kSquare, "the unit square under M"}, {wrap::views::kGrid, "integer s and t"}},
+            cells[0].scale);
   L::caption(f, cells[0].below, state, kWhite, cells[0].scale);
   ts::Panel q;
   q.id = "quad";
   q.viewport = cells[1].picture;
   q.projection = glm::ortho(-0.1f, 1.1f, -0.1f, 1.1f, -1.0f, 1.0f);
-  ts::Batch b = stQuad({0, 0}, {1, 1}, {0, 0}, {1, 1}, tex);  // glTexCoord4f(s, t, 0, 1) in Renderer::draw, GL then applies M
+  ts::Batch b = stQuad({0, 0}, {1, 1}, {0, 0}, {1, 1},
+                       tex);  // glTexCoord4f(s, t, 0, 1) in Renderer::draw, GL then applies M
   b.textureMatrix = matrix();
   q.batches.push_back(b);
   f.panels.push_back(q);
@@ -254,8 +276,9 @@ ts::Frame WrapModes::build(int width, int height, const ts::Measurements& measur
              kWhite, cells[1].scale);
   if (found && found->matrixMismatches >= 0)
     L::caption(f, cells[1].below,
-               L::measuredText(measured, "{texture_matrix_mismatches|%.0f} of {texture_matrix_probes|%.0f} probe texels differ "
-                                         "from M applied on the CPU"),
+               L::measuredText(measured,
+                               "{texture_matrix_mismatches|%.0f} of {texture_matrix_probes|%.0f} probe texels differ "
+                               "from M applied on the CPU"),
                kMeasured, cells[1].scale);
   return f;
 }
@@ -273,12 +296,19 @@ ts::Measurements WrapModes::measure(ts::Renderer& r) {
     int npot = wrap::texelMismatches(r, kModes[m], 37, 23, lo, hi, nullptr);
     found.mismatches[m] = bad + npot;
     total += bad + npot;
-    out.push_back({std::string("texel_mismatches[") + kModeNames[m] + "]", double(bad), "pixels whose texel differs from the formula (8x8)"});
-    out.push_back({std::string("npot_texel_mismatches[") + kModeNames[m] + "]", double(npot), "the same on a 37x23 texture"});
+    out.push_back({std::string("texel_mismatches[") + kModeNames[m] + "]", double(bad),
+                   "pixels whose texel differs from the formula (8x8)"});
+    out.push_back(
+        {std::string("npot_texel_mismatches[") + kModeNames[m] + "]", double(npot), "the same on a 37x23 texture"});
   }
   found.seedDiffers = seed.differs, found.integers = seed.integers;
-  out.insert(out.begin(), ts::Measurement{"wrap_texel_mismatches", double(total), "every mode, both passes and sizes: pixels whose texel differs from the spec's wrap formula"});
-  out.insert(out.begin() + 1, ts::Measurement{"seed_mirror_differs", double(seed.differs), "integer s where seed 002's MIRROR picks another texel than GL_MIRRORED_REPEAT"});
+  out.insert(
+      out.begin(),
+      ts::Measurement{"wrap_texel_mismatches", double(total),
+                      "every mode, both passes and sizes: pixels whose texel differs from the spec's wrap formula"});
+  out.insert(out.begin() + 1,
+             ts::Measurement{"seed_mirror_differs", double(seed.differs),
+                             "integer s where seed 002's MIRROR picks another texel than GL_MIRRORED_REPEAT"});
   out.push_back({"seed_mirror_integers", double(seed.integers), "integer s compared"});
   const char* const probeNames[] = {"-0.25", "0", "1", "1.25"};
   for (int m = 2; m < 5; ++m) {
@@ -286,19 +316,24 @@ ts::Measurements WrapModes::measure(ts::Renderer& r) {
     found.borderAt0[m] = pct[1];
     for (size_t k = 0; k < 4; ++k)
       out.push_back({std::string("border_pct[") + kModeNames[m] + "@" + probeNames[k] + "]", pct[k],
-                     fmt("%% border colour read by GL_LINEAR (formula: %.0f)", 100.0 * wrap::borderShare(kModes[m], wrap::kEdgeProbes[k], 8))});
+                     fmt("%% border colour read by GL_LINEAR (formula: %.0f)",
+                         100.0 * wrap::borderShare(kModes[m], wrap::kEdgeProbes[k], 8))});
   }
   int probes = 0;
   found.matrixMismatches = wrap::matrixMismatches(r, matrix(), &probes);
-  out.push_back({"texture_matrix_mismatches", double(found.matrixMismatches), "probe pixels whose texel differs from M (s,t) on the CPU"});
-  out.push_back({"texture_matrix_probes", double(probes), "probes compared (those a twentieth of a texel from an edge)"});
+  out.push_back({"texture_matrix_mismatches", double(found.matrixMismatches),
+                 "probe pixels whose texel differs from M (s,t) on the CPU"});
+  out.push_back(
+      {"texture_matrix_probes", double(probes), "probes compared (those a twentieth of a texel from an edge)"});
   found.envMismatches = 0;
   for (int m = 0; m < 5; ++m) {
     int bad = wrap::envMismatches(r, kEnvs[m], kEnvColour);
     found.envMismatches += bad;
-    out.push_back({std::string("env_mismatches[") + kEnvNames[m] + "]", double(bad), "of 600 fragment x texel pairs: more than 1 step of 8 bits from the table"});
+    out.push_back({std::string("env_mismatches[") + kEnvNames[m] + "]", double(bad),
+                   "of 600 fragment x texel pairs: more than 1 step of 8 bits from the table"});
   }
-  out.push_back({"env_table_mismatches", double(found.envMismatches), "every mode: pairs more than 1 step of 8 bits from the table"});
+  out.push_back({"env_table_mismatches", double(found.envMismatches),
+                 "every mode: pairs more than 1 step of 8 bits from the table"});
   // The highlight: the env view without labels, the brightest pixel of the GL_MODULATE panel (specular in
   // the primary colour) and of the same with GL_SEPARATE_SPECULAR_COLOR.
   WrapModes v = *this;
@@ -306,10 +341,13 @@ ts::Measurements WrapModes::measure(ts::Renderer& r) {
     v.separate_ = k == 1;
     ts::Frame f = v.envFrame(600, 400, nullptr);
     f.labels.clear();
-    found.peak[k] = wrap::peakBrightness(r.renderOffscreen(f), f.panel(k == 0 ? "env_modulate" : "env_separate_specular")->viewport);
+    found.peak[k] = wrap::peakBrightness(r.renderOffscreen(f),
+                                         f.panel(k == 0 ? "env_modulate" : "env_separate_specular")->viewport);
   }
-  out.push_back({"highlight_peak[modulate]", found.peak[0], "brightest pixel (mean RGB) with the specular in the primary colour, times the texel"});
-  out.push_back({"highlight_peak[separate_specular]", found.peak[1], "the same with GL_SEPARATE_SPECULAR_COLOR: specular added after texturing"});
+  out.push_back({"highlight_peak[modulate]", found.peak[0],
+                 "brightest pixel (mean RGB) with the specular in the primary colour, times the texel"});
+  out.push_back({"highlight_peak[separate_specular]", found.peak[1],
+                 "the same with GL_SEPARATE_SPECULAR_COLOR: specular added after texturing"});
   out.detail = found;
   return out;
 }

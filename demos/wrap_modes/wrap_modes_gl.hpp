@@ -37,7 +37,9 @@ inline ts::Batch stQuad(glm::vec2 p0, glm::vec2 p1, glm::dvec2 lo, glm::dvec2 hi
   b.texture = tex;
   for (int i : {0, 1, 2, 0, 2, 3}) {
     glm::vec2 c(i == 1 || i == 2, i >= 2);
-    b.vertices.push_back({{glm::mix(p0, p1, c), 0}, {glm::mix(lo.x, hi.x, double(c.x)), glm::mix(lo.y, hi.y, double(c.y)), 0, 1}, {1, 1, 1, 1}});
+    b.vertices.push_back({{glm::mix(p0, p1, c), 0},
+                          {glm::mix(lo.x, hi.x, double(c.x)), glm::mix(lo.y, hi.y, double(c.y)), 0, 1},
+                          {1, 1, 1, 1}});
   }
   return b;
 }
@@ -165,8 +167,12 @@ inline int envMismatches(ts::Renderer& r, GLenum mode, glm::vec4 envColour) {
   t.name = "env_grid";
   t.image = img;
   t.minFilter = t.magFilter = GL_NEAREST;
-  const glm::vec4 frags[6] = {{1, 1, 1, 1},           {0, 0, 0, 1},           {0.2f, 0.6f, 1.0f, 0.4f},
-                              {0.8f, 0.4f, 0.2f, 0.0f}, {0.6f, 0.6f, 0.6f, 0.8f}, {1.0f, 0.2f, 0.4f, 1.0f}};
+  const glm::vec4 frags[6] = {{1, 1, 1, 1},
+                              {0, 0, 0, 1},
+                              {0.2f, 0.6f, 1.0f, 0.4f},
+                              {0.8f, 0.4f, 0.2f, 0.0f},
+                              {0.6f, 0.6f, 0.6f, 0.8f},
+                              {1.0f, 0.2f, 0.4f, 1.0f}};
   ts::Frame f;
   f.width = 100, f.height = 6;
   int tex = f.addTexture(t);
@@ -185,7 +191,8 @@ inline int envMismatches(ts::Renderer& r, GLenum mode, glm::vec4 envColour) {
     for (int k = 0; k < 100; ++k) {
       ts::Rgba tx = img->at(k, 0), g = got.at(k, c);
       glm::dvec4 want = wrap::texEnv(mode, glm::dvec4(frags[c]), glm::dvec4(tx.r, tx.g, tx.b, tx.a) / 255.0,
-                                         glm::dvec4(envColour)) * 255.0;
+                                     glm::dvec4(envColour)) *
+                        255.0;
       bad += std::abs(g.r - want.r) > 1 || std::abs(g.g - want.g) > 1 || std::abs(g.b - want.b) > 1 ||
              std::abs(g.a - want.a) > 1;
     }

@@ -28,7 +28,8 @@ namespace wrap {
 // The five wrap modes: GL enum, the flag value, the name in the listings.
 inline const GLenum kModes[] = {GL_REPEAT, GL_MIRRORED_REPEAT, GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER};
 inline const char* const kModeNames[] = {"repeat", "mirrored", "clamp", "edge", "border"};
-inline const char* const kModeGL[] = {"GL_REPEAT", "GL_MIRRORED_REPEAT", "GL_CLAMP", "GL_CLAMP_TO_EDGE", "GL_CLAMP_TO_BORDER"};
+inline const char* const kModeGL[] = {"GL_REPEAT", "GL_MIRRORED_REPEAT", "GL_CLAMP", "GL_CLAMP_TO_EDGE",
+                                      "GL_CLAMP_TO_BORDER"};
 constexpr int kBorder = -1;  // "the border colour" as a texel index
 
 inline int floorMod(int a, int m) {

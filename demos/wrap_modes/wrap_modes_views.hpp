@@ -49,7 +49,8 @@ inline void addTextureSpace(ts::Frame& f, const ts::Rect& vp, const std::string&
   const ts::TextureDesc& t = f.textures[size_t(tex)];
   const int tw = int(std::lround(t.image ? t.image->width * (hi - lo) : 0.0)),
             th = int(std::lround(t.image ? t.image->height * (hi - lo) : 0.0));
-  if (tw > 0 && th > 0 && tw <= vp.w && th <= vp.h) p.viewport = ts::layout::centred(vp, vp.w / tw * tw, vp.h / th * th);
+  if (tw > 0 && th > 0 && tw <= vp.w && th <= vp.h)
+    p.viewport = ts::layout::centred(vp, vp.w / tw * tw, vp.h / th * th);
   p.projection = glm::ortho(lo, hi, lo, hi, -1.0f, 1.0f);
   p.batches.push_back(wrap::stQuad({lo, lo}, {hi, hi}, {lo, lo}, {hi, hi}, tex));
   std::vector<glm::vec2> grid;
@@ -68,8 +69,8 @@ inline void addTextureSpace(ts::Frame& f, const ts::Rect& vp, const std::string&
 // GL_DECAL; `opaque` for the others), and GL_MODULATE once more in the last
 // panel, where `separate` sends the specular part as the secondary colour
 // (GL_COLOR_SUM), else it is in the primary colour.
-inline ts::Frame envFrame(int width, int height, const ts::TextureDesc& opaque, const ts::TextureDesc& ramp, bool separate,
-                          const Found* found) {
+inline ts::Frame envFrame(int width, int height, const ts::TextureDesc& opaque, const ts::TextureDesc& ramp,
+                          bool separate, const Found* found) {
   namespace L = ts::layout;
   ts::Frame f = L::blankFrame(width, height);
   L::FlowSpec spec;
@@ -79,12 +80,16 @@ inline ts::Frame envFrame(int width, int height, const ts::TextureDesc& opaque, 
   for (int k = 0; k < 6; ++k) {
     const GLenum env = k < 5 ? kEnvs[k] : GL_MODULATE;
     const bool sep = k == 5 && separate;
-    ts::Panel p = L::unitPanel(k < 5 ? std::string("env_") + kEnvNames[k] : "env_separate_specular", cells[size_t(k)].picture);
+    ts::Panel p = L::unitPanel(k < 5 ? std::string("env_") + kEnvNames[k] : "env_separate_specular",
+                               cells[size_t(k)].picture);
     ts::Batch b = wrap::litPlane(env == GL_DECAL ? texRamp : texOpaque, env, kEnvColour, sep);
     p.batches.push_back(b);
     f.panels.push_back(p);
     const L::Cell& cell = cells[size_t(k)];
-    L::caption(f, cell.above, k < 5 ? kEnvGL[k] : sep ? "MODULATE + SEPARATE_SPECULAR" : "MODULATE (single colour)",
+    L::caption(f, cell.above,
+               k < 5 ? kEnvGL[k]
+               : sep ? "MODULATE + SEPARATE_SPECULAR"
+                     : "MODULATE (single colour)",
                L::kWhite, cell.scale);
     std::string note;
     if (found && found->peak[0] >= 0 && (k == 1 || k == 5))

@@ -239,9 +239,9 @@ void summary(const ts::bench::SummaryReporter& rep, const std::vector<Figure>& f
   for (const Figure& f : figs)
     if (rep.ran(f.spec.id + "/"))
       std::printf("| `%s` | %dx%d | %s | %s | %s | %s | %s | %s | %s | %s |\n", f.spec.id.c_str(), f.spec.width,
-                f.spec.height, both(f, "context").c_str(), fmt(ms(f, "measure", O)).c_str(),
-                fmt(ms(f, "build")).c_str(), both(f, "render").c_str(), both(f, "readback").c_str(),
-                fmt(ms(f, "encode")).c_str(), fmt(ms(f, "warm", O)).c_str(), both(f, "cold").c_str());
+                  f.spec.height, both(f, "context").c_str(), fmt(ms(f, "measure", O)).c_str(),
+                  fmt(ms(f, "build")).c_str(), both(f, "render").c_str(), both(f, "readback").c_str(),
+                  fmt(ms(f, "encode")).c_str(), fmt(ms(f, "warm", O)).c_str(), both(f, "cold").c_str());
   std::printf(
       "\nmeasure, build, encode and warm on OSMesa; measure and warm use a new scene each time. warm figure = "
       "measure + build +\nrender + readback + PNG encode on a live context (what make_figures pays per figure); cold "

@@ -51,10 +51,8 @@ Rig& rig() {
 
 ts::Image frame(Rig& r, Mode m, Average a) {
   switch (m) {
-    case Mode::One:
-      return r.renderer->render(jitter::groundPass(r.cam, {0.5, 0.5}), false);
-    case Mode::JitterPixel:
-      return r.renderer->render(jitter::pixelJitterPass(r.cam, kN, kSeed), false);
+    case Mode::One: return r.renderer->render(jitter::groundPass(r.cam, {0.5, 0.5}), false);
+    case Mode::JitterPixel: return r.renderer->render(jitter::pixelJitterPass(r.cam, kN, kSeed), false);
     default: {
       auto p = m == Mode::Regular ? jitter::Pattern::Regular : jitter::Pattern::JitterGlobal;
       std::vector<ts::Frame> passes;

@@ -73,8 +73,9 @@ void benchMode(benchmark::State& st, int mode, pax::PassOptions o) {  // default
 }  // namespace
 
 int main(int argc, char** argv) {
-  ts::bench::Args args(argc, argv, {"--benchmark_repetitions=5", "--benchmark_report_aggregates_only=true",
-                                    "--benchmark_min_time=0.05"});
+  ts::bench::Args args(argc, argv,
+                       {"--benchmark_repetitions=5", "--benchmark_report_aggregates_only=true",
+                        "--benchmark_min_time=0.05"});
   // Every benchmark is parallax/<mode><suffix>: a mode's pass with options o.
   struct Variant {
     const char* suffix;
@@ -83,7 +84,7 @@ int main(int argc, char** argv) {
     bool (*appliesTo)(int mode);
   };
   auto every = [](int) { return true; };
-  auto traced = [](int m) { return m >= pax::kEwaVis; };      // M4, M5
+  auto traced = [](int m) { return m >= pax::kEwaVis; };  // M4, M5
   auto hardware = [](int m) { return m == pax::kTrilinear || m == pax::kAniso16; };
   std::vector<Variant> variants(5);
   variants[0] = {"", "", {}, every};

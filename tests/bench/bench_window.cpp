@@ -112,7 +112,8 @@ void benchWindowDraw(benchmark::State& st, const Figure& f) {
       s.scene->update(seconds(now - last));
       last = now;
       g_target->sync();
-      if (s.scene->live()) measured = s.scene->measure(r);  // a live view draws itself every frame, as the window loop does
+      if (s.scene->live())
+        measured = s.scene->measure(r);  // a live view draws itself every frame, as the window loop does
       ts::Frame frame = s.scene->build(g_target->width(), g_target->height(), measured);
       r.draw(frame);
       glfwSwapBuffers(g_window);
@@ -224,7 +225,9 @@ double runProgram(const std::string& demo, int width, int height, const std::vec
   if (first) throw ts::Error(exe + " printed nothing: cannot tell its start-up from its frames");
   return t;
 }
-double runDemo(const Figure& f, int frames) { return runProgram(f.demo, kWidth, kHeight, ts::sceneFlags(f.spec.flags), frames); }
+double runDemo(const Figure& f, int frames) {
+  return runProgram(f.demo, kWidth, kHeight, ts::sceneFlags(f.spec.flags), frames);
+}
 
 constexpr int kBaseFrames = 10;
 
@@ -267,7 +270,8 @@ void benchIdleCpu(benchmark::State& st, const std::string& demo) {
   try {
     for (auto _ : st) {
       std::string exe = binDir() + "/" + demo;
-      std::vector<std::string> args = {exe, "--size", std::to_string(kWidth) + "x" + std::to_string(kHeight), "--quiet"};
+      std::vector<std::string> args = {exe, "--size", std::to_string(kWidth) + "x" + std::to_string(kHeight),
+                                       "--quiet"};
       std::vector<char*> argv;
       for (auto& a : args) argv.push_back(a.data());
       argv.push_back(nullptr);
@@ -298,9 +302,9 @@ void benchIdleCpu(benchmark::State& st, const std::string& demo) {
 
 // ---- responsiveness
 struct Responsiveness {
-  double firstPicture = 0;             // seconds from the spawn to the first frame
+  double firstPicture = 0;                       // seconds from the spawn to the first frame
   std::vector<std::pair<char, double>> keyGaps;  // per key: longest wait for a frame, seconds
-  std::vector<double> measureSeconds;  // per key whose measurement was shown: key to result
+  std::vector<double> measureSeconds;            // per key whose measurement was shown: key to result
 };
 std::map<std::string, std::vector<Responsiveness>> g_responsiveness;  // demo -> one per repetition
 
@@ -416,11 +420,12 @@ void responsivenessSummary() {
     if (!std::fgets(load, sizeof load, la)) std::snprintf(load, sizeof load, "?");
     std::fclose(la);
   }
-  std::printf("\n## Never frozen: first picture and frame intervals after each key (default window, keys 1 s apart)\n\n"
-              "Load average at the end: %s\n"
-              "| demo | first picture s (median) | key gap ms: median over keys | worst key (ms) | key to its numbers s "
-              "(median) | keys |\n|---|--:|--:|--:|--:|--:|\n",
-              load);
+  std::printf(
+      "\n## Never frozen: first picture and frame intervals after each key (default window, keys 1 s apart)\n\n"
+      "Load average at the end: %s\n"
+      "| demo | first picture s (median) | key gap ms: median over keys | worst key (ms) | key to its numbers s "
+      "(median) | keys |\n|---|--:|--:|--:|--:|--:|\n",
+      load);
   for (const auto& [demo, runs] : g_responsiveness) {
     std::vector<double> first, gaps, measure;
     std::map<char, std::vector<double>> perKey;
@@ -482,11 +487,10 @@ void benchWindowLoop(benchmark::State& st, const Figure& f) {
 std::string name(const Figure& f, const char* what) { return f.spec.id + "/" + what; }
 
 void summary(const ts::bench::SummaryReporter& rep, const std::vector<Figure>& figs, const std::string& renderer) {
-  std::printf("\n## Window frames per second at %dx%d, swap interval 0 (wall clock, %s)\n\n- `%s`\n\n", kWidth,
-              kHeight, rep.statistic().c_str(), renderer.c_str());
-  std::printf(
-      "| figure | draw + swap ms/frame | FPS | demo window loop ms/frame (overlay on) | FPS | loop ÷ draw |\n"
-      "|---|--:|--:|--:|--:|--:|\n");
+  std::printf("\n## Window frames per second at %dx%d, swap interval 0 (wall clock, %s)\n\n- `%s`\n\n", kWidth, kHeight,
+              rep.statistic().c_str(), renderer.c_str());
+  std::printf("| figure | draw + swap ms/frame | FPS | demo window loop ms/frame (overlay on) | FPS | loop ÷ draw |\n"
+              "|---|--:|--:|--:|--:|--:|\n");
   for (const Figure& f : figs) {
     if (!rep.ran(f.spec.id + "/")) continue;
     double draw = rep.ms(name(f, "window_draw")), loop = rep.ms(name(f, "window_loop"));
@@ -509,7 +513,8 @@ void summary(const ts::bench::SummaryReporter& rep, const std::vector<Figure>& f
   for (const char* m : kLiveModes) {
     double ms = rep.ms(std::string("parallax_live/") + m + "/window_loop");
     if (std::isnan(ms)) continue;
-    std::printf("| %s | %s | %s | %.2f |\n", m, ts::bench::fmt(ms).c_str(), ts::bench::fmt(1000.0 / ms).c_str(), ms / 50.0);
+    std::printf("| %s | %s | %s | %.2f |\n", m, ts::bench::fmt(ms).c_str(), ts::bench::fmt(1000.0 / ms).c_str(),
+                ms / 50.0);
   }
   std::printf("\n");
 }

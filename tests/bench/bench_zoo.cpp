@@ -124,24 +124,38 @@ void footprintSize(benchmark::State& st, double texelsPerPixel) {
 int main(int argc, char** argv) {
   for (double az : {0.0, 22.5, 45.0}) {
     const std::string k = ts::layout::fmt("%g", az);
-    benchmark::RegisterBenchmark(("zoo/exact_800x600/" + k).c_str(), exact800, az, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
-    benchmark::RegisterBenchmark(("zoo/exact_800x600_2threads/" + k).c_str(), exact800, az, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+    benchmark::RegisterBenchmark(("zoo/exact_800x600/" + k).c_str(), exact800, az, 1)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    benchmark::RegisterBenchmark(("zoo/exact_800x600_2threads/" + k).c_str(), exact800, az, 2)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
   }
-  benchmark::RegisterBenchmark("zoo/exact_far_field/outline", farFieldOnly, false)->Unit(benchmark::kMillisecond)->UseRealTime();
-  benchmark::RegisterBenchmark("zoo/exact_far_field/clip", farFieldOnly, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+  benchmark::RegisterBenchmark("zoo/exact_far_field/outline", farFieldOnly, false)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+  benchmark::RegisterBenchmark("zoo/exact_far_field/clip", farFieldOnly, true)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
   for (int side : {256, 1024, 4096})
-    benchmark::RegisterBenchmark(("zoo/exact_texture/" + std::to_string(side)).c_str(), textureSize, side)->Unit(benchmark::kMillisecond)->UseRealTime();
+    benchmark::RegisterBenchmark(("zoo/exact_texture/" + std::to_string(side)).c_str(), textureSize, side)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
   for (double k : {1.0, 4.0, 16.0, 64.0})
-    benchmark::RegisterBenchmark(("zoo/exact_footprint/" + ts::layout::fmt("%g", k)).c_str(), footprintSize, k)->Unit(benchmark::kMillisecond)->UseRealTime();
+    benchmark::RegisterBenchmark(("zoo/exact_footprint/" + ts::layout::fmt("%g", k)).c_str(), footprintSize, k)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
   return ts::bench::run(argc, argv, [](const ts::bench::SummaryReporter& rep) {
     std::printf("\n| the exact reference | ms (%s) |\n|---|---|\n", rep.statistic().c_str());
-    for (const char* n : {"zoo/exact_800x600/0", "zoo/exact_800x600/22.5", "zoo/exact_800x600/45", "zoo/exact_800x600_2threads/0",
-                          "zoo/exact_800x600_2threads/22.5", "zoo/exact_800x600_2threads/45", "zoo/exact_far_field/outline",
-                          "zoo/exact_far_field/clip", "zoo/exact_texture/256", "zoo/exact_texture/1024", "zoo/exact_texture/4096",
-                          "zoo/exact_footprint/1", "zoo/exact_footprint/4", "zoo/exact_footprint/16", "zoo/exact_footprint/64"})
+    for (const char* n :
+         {"zoo/exact_800x600/0", "zoo/exact_800x600/22.5", "zoo/exact_800x600/45", "zoo/exact_800x600_2threads/0",
+          "zoo/exact_800x600_2threads/22.5", "zoo/exact_800x600_2threads/45", "zoo/exact_far_field/outline",
+          "zoo/exact_far_field/clip", "zoo/exact_texture/256", "zoo/exact_texture/1024", "zoo/exact_texture/4096",
+          "zoo/exact_footprint/1", "zoo/exact_footprint/4", "zoo/exact_footprint/16", "zoo/exact_footprint/64"})
       std::printf("| `%s` | %s |\n", n, ts::bench::fmt(rep.ms(n)).c_str());
     const double t256 = rep.ms("zoo/exact_texture/256"), t4096 = rep.ms("zoo/exact_texture/4096");
     if (t256 > 0 && t4096 > 0)
-      std::printf("\nThe exact reference's time, texture 4096^2 / 256^2 (same view, same footprints): %.2f\n", t4096 / t256);
+      std::printf("\nThe exact reference's time, texture 4096^2 / 256^2 (same view, same footprints): %.2f\n",
+                  t4096 / t256);
   });
 }

@@ -47,8 +47,8 @@ const Inspected& quad() {
   static Inspected got = [] {
     const std::string png = tmp("quad.png"), json = tmp("quad.json");
     std::remove(png.c_str()), std::remove(json.c_str());
-    EXPECT_EQ(run("quad_distortion", {"--png", png, "--json", json, "--quiet", "--inspect", "300,200", "--inspect",
-                                      "10,10"}),
+    EXPECT_EQ(run("quad_distortion",
+                  {"--png", png, "--json", json, "--quiet", "--inspect", "300,200", "--inspect", "10,10"}),
               0);
     return Inspected{readJson(json), ts::readPng(png)};
   }();
@@ -133,7 +133,8 @@ TEST(Inspect, BadPixelsAreOneLineExit2AndNoFile) {
 // picks' lambda as measurements.
 TEST(Inspect, FootprintsDrawAnotherPicture) {
   const std::string png = tmp("fp.png"), json = tmp("fp.json");
-  ASSERT_EQ(run("quad_distortion", {"--png", png, "--json", json, "--quiet", "--inspect", "300,200", "--footprints"}), 0);
+  ASSERT_EQ(run("quad_distortion", {"--png", png, "--json", json, "--quiet", "--inspect", "300,200", "--footprints"}),
+            0);
   const ts::Image fp = ts::readPng(png);
   EXPECT_EQ(fp.width, quad().png.width);
   EXPECT_EQ(fp.height, quad().png.height);

@@ -220,7 +220,8 @@ int evaluate(const std::string& fn, Impl impl, double limit) {
     for (double v; in >> v;) row.push_back(v);
     if (row.empty()) continue;
     if (row.size() != f->arity) {
-      std::fprintf(stderr, "exercise_check: --eval %s takes %zu numbers a line, not '%s'\n", f->name, f->arity, line.c_str());
+      std::fprintf(stderr, "exercise_check: --eval %s takes %zu numbers a line, not '%s'\n", f->name, f->arity,
+                   line.c_str());
       return 2;
     }
     rows.push_back(row);

@@ -52,7 +52,8 @@ std::string fmt(const char* f, double v) {
 // by more than 1), side by side; returns the differing pixels' count.
 // `counted` (may be null): which pixels count as differing, when the
 // check decides it (ties a verifier accepts), row by row.
-int comparison(const ts::Image& mine, const ts::Image& ref, const std::string& path, const std::vector<bool>* counted = nullptr) {
+int comparison(const ts::Image& mine, const ts::Image& ref, const std::string& path,
+               const std::vector<bool>* counted = nullptr) {
   const int w = ref.width, h = ref.height;
   ts::Image out(3 * w + 16, h, {30, 30, 34, 255}), diff(w, h, {0, 0, 0, 255});
   int differing = 0;
@@ -62,7 +63,9 @@ int comparison(const ts::Image& mine, const ts::Image& ref, const std::string& p
       const bool differs = counted ? bool((*counted)[size_t(y) * size_t(w) + size_t(x)])
                                    : std::abs(a.r - b.r) > 1 || std::abs(a.g - b.g) > 1 || std::abs(a.b - b.b) > 1;
       differing += differs;
-      diff.set(x, y, differs ? ts::Rgba{255, 40, 40, 255} : ts::Rgba{uint8_t(b.r / 4), uint8_t(b.g / 4), uint8_t(b.b / 4), 255});
+      diff.set(x, y,
+               differs ? ts::Rgba{255, 40, 40, 255}
+                       : ts::Rgba{uint8_t(b.r / 4), uint8_t(b.g / 4), uint8_t(b.b / 4), 255});
     }
   out.blit(mine, 0, 0), out.blit(ref, w + 8, 0), out.blit(diff, 2 * w + 16, 0);
   ts::writePng(path, out);
@@ -71,8 +74,8 @@ int comparison(const ts::Image& mine, const ts::Image& ref, const std::string& p
 }
 
 // A mesh drawn with `texture` at 256 x 256 through `projection` and `modelview`.
-ts::Image meshPicture(ts::Renderer& r, const ts::Mesh& mesh, const ts::TextureDesc& texture, const glm::mat4& projection,
-                      const glm::mat4& modelview) {
+ts::Image meshPicture(ts::Renderer& r, const ts::Mesh& mesh, const ts::TextureDesc& texture,
+                      const glm::mat4& projection, const glm::mat4& modelview) {
   ts::Frame f = ts::layout::blankFrame(256, 256);
   ts::Panel p;
   p.id = "picture";
@@ -102,7 +105,8 @@ bool checkBackSeam(const Functions& fn, ts::Renderer& r, const std::string& pict
     for (int k = 0; k < slices; ++k) {
       const double a = cylinder::sOf(cp, k), b = a + res[size_t(k)].span;
       if (std::floor(std::min(a, b) + 1e-9) != std::floor(std::max(a, b) - 1e-9)) seams.push_back(k);
-      if (std::abs(res[size_t(k)].span - 1.0 / slices) > std::abs(worstSpan - 1.0 / slices)) worstSpan = res[size_t(k)].span;
+      if (std::abs(res[size_t(k)].span - 1.0 / slices) > std::abs(worstSpan - 1.0 / slices))
+        worstSpan = res[size_t(k)].span;
       worstErr = std::max(worstErr, res[size_t(k)].texelErr);
     }
     const std::string n = std::to_string(slices) + " slices: ";
@@ -111,7 +115,8 @@ bool checkBackSeam(const Functions& fn, ts::Renderer& r, const std::string& pict
       ok &= line(std::abs(centre - 180.0) < 1e-6,
                  n + "the texture's edges meet in the patch at theta = " + fmt("%.1f", centre) + " deg, expected 180");
     } else {
-      ok &= line(false, n + "the texture's edges meet in " + std::to_string(seams.size()) + " patches, expected 1 (at theta = 180 deg)");
+      ok &= line(false, n + "the texture's edges meet in " + std::to_string(seams.size()) +
+                            " patches, expected 1 (at theta = 180 deg)");
     }
     ok &= line(std::abs(worstSpan - 1.0 / slices) < 0.01,
                n + "every patch forwards: the worst shows ds = " + fmt("%+.4f", worstSpan) + ", expected " +
@@ -128,8 +133,8 @@ bool checkBackSeam(const Functions& fn, ts::Renderer& r, const std::string& pict
   const glm::mat4 proj = glm::perspective(glm::radians(40.0f), 1.0f, 0.5f, 20.0f);
   const glm::mat4 view = glm::lookAt(glm::vec3(0, 1.2f, -4.5f), glm::vec3(0), glm::vec3(0, 1, 0));
   const ts::TextureDesc label = ts::labelledGrid(512, 8);
-  comparison(meshPicture(r, cylinder::mesh(mine), label, proj, view), meshPicture(r, cylinder::mesh(ref), label, proj, view),
-             picture);
+  comparison(meshPicture(r, cylinder::mesh(mine), label, proj, view),
+             meshPicture(r, cylinder::mesh(ref), label, proj, view), picture);
   return ok;
 }
 
@@ -155,7 +160,8 @@ bool checkTorusFront(const Functions& fn, ts::Renderer& r, const std::string& pi
   const double d = fd.visible ? glm::distance(fd.point, want) : std::numeric_limits<double>::infinity();
   ok &= line(d <= 0.01, "it lands at (" + fmt("%.3f", fd.point.x) + ", " + fmt("%.3f", fd.point.y) + ", " +
                             fmt("%.3f", fd.point.z) + "), expected (0, 0, " + fmt("%.1f", want.z) +
-                            ") = R + r on the z axis: distance " + (fd.visible ? fmt("%.4f", d) : "-") + ", within 0.01");
+                            ") = R + r on the z axis: distance " + (fd.visible ? fmt("%.4f", d) : "-") +
+                            ", within 0.01");
   torus::Params ref;
   ref.mapping = torus::Mapping::Front;
   const ts::TextureDesc checker = ts::labelledGrid(512, 8);
@@ -175,7 +181,8 @@ ts::Image glBlit(ts::Renderer& r, const ts::TextureDesc& texture, int w, int h) 
   b.role = "quad";
   b.texture = f.addTexture(t);
   b.texEnv = GL_REPLACE;
-  for (glm::vec2 c : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)})
+  for (glm::vec2 c :
+       {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)})
     b.vertices.push_back({glm::vec3(c, 0.0f), glm::vec4(c.x, 1.0f - c.y, 0.0f, 1.0f), glm::vec4(1.0f)});
   p.batches.push_back(b);
   f.panels.push_back(p);
@@ -235,13 +242,14 @@ bool checkBlit(const Functions& fn, ts::Renderer& r, const std::string& picture)
     }
     std::map<int, int> m = pixelsPerColumn(mine, 256);
     if (w == 300) {
-      ok &= line(m[2] == want[2], "across 300 pixels " + std::to_string(m[2]) + " texel columns take 2 pixels, expected " +
-                                      std::to_string(want[2]));
-      ok &= line(m[1] == want[1], "across 300 pixels " + std::to_string(m[1]) + " take 1, expected " + std::to_string(want[1]));
+      ok &= line(m[2] == want[2], "across 300 pixels " + std::to_string(m[2]) +
+                                      " texel columns take 2 pixels, expected " + std::to_string(want[2]));
+      ok &= line(m[1] == want[1],
+                 "across 300 pixels " + std::to_string(m[1]) + " take 1, expected " + std::to_string(want[1]));
     }
     if (w == 200)
-      ok &= line(m[0] == want[0], "across 200 pixels " + std::to_string(m[0]) + " texel columns are never shown, expected " +
-                                      std::to_string(want[0]));
+      ok &= line(m[0] == want[0], "across 200 pixels " + std::to_string(m[0]) +
+                                      " texel columns are never shown, expected " + std::to_string(want[0]));
     if (w == 300) comparison(mine, gl, picture, &counted);
   }
   return ok;
@@ -273,8 +281,8 @@ bool checkMirror(const Functions& fn, ts::Renderer& r, const std::string& pictur
       b.texture = f.addTexture(t);
       b.texEnv = GL_REPLACE;
       for (int k = 0; k < w; ++k)
-        b.vertices.push_back({glm::vec3((k + 0.5f) / float(w), 0.5f, 0.0f), glm::vec4(float(ss[size_t(k)]), 0.5f / size, 0.0f, 1.0f),
-                              glm::vec4(1.0f)});
+        b.vertices.push_back({glm::vec3((k + 0.5f) / float(w), 0.5f, 0.0f),
+                              glm::vec4(float(ss[size_t(k)]), 0.5f / size, 0.0f, 1.0f), glm::vec4(1.0f)});
       p.batches.push_back(b);
       f.panels.push_back(p);
       const ts::Image gl = r.renderOffscreen(f);
@@ -283,9 +291,9 @@ bool checkMirror(const Functions& fn, ts::Renderer& r, const std::string& pictur
         int gi = 0, gj = 0;
         ts::decodeTexelIndex(gl.at(k, 0), &gi, &gj);
         const int mine = fn.mirrorTexel(ss[size_t(k)], size);
-        if (mine < 0 || mine >= size) throw std::runtime_error("mirrorTexel(" + fmt("%g", ss[size_t(k)]) + ", " +
-                                                               std::to_string(size) + ") returned " + std::to_string(mine) +
-                                                               ", outside 0.." + std::to_string(size - 1));
+        if (mine < 0 || mine >= size)
+          throw std::runtime_error("mirrorTexel(" + fmt("%g", ss[size_t(k)]) + ", " + std::to_string(size) +
+                                   ") returned " + std::to_string(mine) + ", outside 0.." + std::to_string(size - 1));
         // At a texel boundary (s size a whole number, but s not: the
         // integers are checked apart) GL's float arithmetic may take either
         // texel, and so may you.
@@ -295,23 +303,24 @@ bool checkMirror(const Functions& fn, ts::Renderer& r, const std::string& pictur
                   hi = wrap::nearestTexel(GL_MIRRORED_REPEAT, sNow + 1e-7, size);
         const bool accepted = mine == gi || (tie && (mine == lo || mine == hi));
         mismatches += !accepted;
-        if (accepted) gi = mine;  // the picture shows what counts
+        if (accepted) gi = mine;            // the picture shows what counts
         if (set == &between && k < 1000) {  // the picture: a grey level per texel, yours over GL's
           const uint8_t a = uint8_t(255 * mine / (size - 1)), g = uint8_t(255 * gi / (size - 1));
-          for (int y = 0; y < 24; ++y) strips.set(k, row * 32 + y, {a, a, a, 255}), glStrips.set(k, row * 32 + y, {g, g, g, 255});
+          for (int y = 0; y < 24; ++y)
+            strips.set(k, row * 32 + y, {a, a, a, 255}), glStrips.set(k, row * 32 + y, {g, g, g, 255});
         }
       }
-      ok &= line(mismatches == 0, std::to_string(size) + " texels, " +
-                                      (set == &between ? std::to_string(w) + " coordinates from -3 to 3 between integers"
-                                                       : std::string("the 7 integers s = -3..3")) +
-                                      ": " + std::to_string(mismatches) + " texels differ from GL_MIRRORED_REPEAT's, expected 0");
+      ok &= line(mismatches == 0,
+                 std::to_string(size) + " texels, " +
+                     (set == &between ? std::to_string(w) + " coordinates from -3 to 3 between integers"
+                                      : std::string("the 7 integers s = -3..3")) +
+                     ": " + std::to_string(mismatches) + " texels differ from GL_MIRRORED_REPEAT's, expected 0");
     }
     ++row;
   }
   comparison(strips, glStrips, picture);
   return ok;
 }
-
 
 // Seed 002's scanline texturer: the student's plots against the suite's CPU
 // rasterizer (reference/raster.hpp, OpenGL's fill rule) on four cases.
@@ -323,10 +332,12 @@ bool checkScanline(const Functions& fn, ts::Renderer&, const std::string& pictur
   using exercise::ScanVertex;
   auto st = [](double x, double y) { return ScanVertex{x, y, x / 64.0, y / 64.0}; };
   const std::vector<ScanCase> cases = {
-      {"seed 002's triangle (8,4) (56,20) (20,60)", {{ScanVertex{8, 4, 0, 0}, ScanVertex{56, 20, 1, 0}, ScanVertex{20, 60, 0, 1}}}},
+      {"seed 002's triangle (8,4) (56,20) (20,60)",
+       {{ScanVertex{8, 4, 0, 0}, ScanVertex{56, 20, 1, 0}, ScanVertex{20, 60, 0, 1}}}},
       {"a flat-top triangle (8,8) (56,8) (30,50)", {{st(8, 8), st(56, 8), st(30, 50)}}},
       {"a flat-bottom triangle (30,6) (8,50) (56,50)", {{st(30, 6), st(8, 50), st(56, 50)}}},
-      {"two triangles sharing the edge (56,8)-(8,56)", {{st(8, 8), st(56, 8), st(8, 56)}, {st(56, 8), st(56, 56), st(8, 56)}}},
+      {"two triangles sharing the edge (56,8)-(8,56)",
+       {{st(8, 8), st(56, 8), st(8, 56)}, {st(56, 8), st(56, 56), st(8, 56)}}},
   };
   constexpr int S = 64, Z = 3;
   ts::Image mineAll(4 * S * Z, S * Z, {0, 0, 0, 255}), refAll = mineAll;
@@ -344,11 +355,14 @@ bool checkScanline(const Functions& fn, ts::Renderer&, const std::string& pictur
         mineST[size_t(y * S + x)] = {finite(s, "plot's s"), finite(t, "plot's t")};
       });
       ref::ScreenVertex r[3];
-      for (int k = 0; k < 3; ++k) r[k].x = tri[size_t(k)].x, r[k].y = tri[size_t(k)].y, r[k].a[0] = tri[size_t(k)].s, r[k].a[1] = tri[size_t(k)].t;
-      ref::scanTriangle(r[0], r[1], r[2], 2, {0, 0, S, S}, ref::FillRule::GLTopLeft, [&](int x, int y, const double* a) {
-        refCount[size_t(y * S + x)]++;
-        refST[size_t(y * S + x)] = {a[0], a[1]};
-      });
+      for (int k = 0; k < 3; ++k)
+        r[k].x = tri[size_t(k)].x, r[k].y = tri[size_t(k)].y, r[k].a[0] = tri[size_t(k)].s,
+        r[k].a[1] = tri[size_t(k)].t;
+      ref::scanTriangle(r[0], r[1], r[2], 2, {0, 0, S, S}, ref::FillRule::GLTopLeft,
+                        [&](int x, int y, const double* a) {
+                          refCount[size_t(y * S + x)]++;
+                          refST[size_t(y * S + x)] = {a[0], a[1]};
+                        });
     }
     long missing = 0, extra = outside, other = 0, twice = 0;
     for (int p = 0; p < S * S; ++p) {
@@ -373,15 +387,14 @@ bool checkScanline(const Functions& fn, ts::Renderer&, const std::string& pictur
           counted[size_t(Y) * size_t(4 * S * Z) + size_t(X)] = bad;
         }
     }
-    ok &= line(missing + extra + other + twice == 0,
-               std::string(cases[c].name) + ": " + std::to_string(missing) + " pixels missing, " + std::to_string(extra) +
-                   " extra, " + std::to_string(other) + " with other (s,t), " + std::to_string(twice) +
-                   " covered twice; expected 0");
+    ok &= line(missing + extra + other + twice == 0, std::string(cases[c].name) + ": " + std::to_string(missing) +
+                                                         " pixels missing, " + std::to_string(extra) + " extra, " +
+                                                         std::to_string(other) + " with other (s,t), " +
+                                                         std::to_string(twice) + " covered twice; expected 0");
   }
   comparison(mineAll, refAll, picture, &counted);
   return ok;
 }
-
 
 // The cube's faces: outward normal, up (the texture's top), right = up x n.
 struct Face {
@@ -443,10 +456,11 @@ bool checkCube(const Functions& fn, ts::Renderer& r, const std::string& picture)
     else if (tl.y < bl.y) how = " (upside down)";
     else if (std::abs(tl.x - bl.x) > 0.3 || std::abs(br.y - bl.y) > 0.3) how = " (turned)";
     char b[240];
-    std::snprintf(b, sizeof b,
-                  "face %s: (s,t) near its corners (%.2f,%.2f) (%.2f,%.2f) (%.2f,%.2f) (%.2f,%.2f)%s, expected (0.05,0.05) "
-                  "(0.95,0.05) (0.95,0.95) (0.05,0.95) within 0.02",
-                  face.name, bl.x, bl.y, br.x, br.y, tr.x, tr.y, tl.x, tl.y, how.c_str());
+    std::snprintf(
+        b, sizeof b,
+        "face %s: (s,t) near its corners (%.2f,%.2f) (%.2f,%.2f) (%.2f,%.2f) (%.2f,%.2f)%s, expected (0.05,0.05) "
+        "(0.95,0.05) (0.95,0.95) (0.05,0.95) within 0.02",
+        face.name, bl.x, bl.y, br.x, br.y, tr.x, tr.y, tl.x, tl.y, how.c_str());
     ok &= line(err <= 0.02, b);
     mineAll.blit(draw(label, fn.cubeST), f * S, 0);
     refAll.blit(draw(label, sol.cubeST), f * S, 0);
@@ -481,8 +495,9 @@ bool checkPlanarWrap(const Functions& fn, ts::Renderer& r, const std::string& pi
       mismatches += d > 1e-9;
     }
     const std::string name = std::string("along ") + "XYZ"[axis];
-    ok &= line(mismatches == 0, name + ": " + std::to_string(mismatches) + " of 1000 points differ from the corrected formula " +
-                                    "(largest " + fmt("%.3f", worst) + "), expected 0");
+    ok &= line(mismatches == 0, name + ": " + std::to_string(mismatches) +
+                                    " of 1000 points differ from the corrected formula " + "(largest " +
+                                    fmt("%.3f", worst) + "), expected 0");
     // The sphere, per vertex (yours) and by GL_OBJECT_LINEAR texgen.
     const ts::Mesh sphere = ts::parametricGrid(
         48, 24, true, false, [](int i, int j) { return ts::spherePoint(1.0, 48, 24, i, j); },
@@ -514,14 +529,18 @@ bool checkPlanarWrap(const Functions& fn, ts::Renderer& r, const std::string& pi
     int differ = 0, shown = 0;
     for (int y = 0; y < 160; ++y)
       for (int x = 0; x < 160; ++x) {
-        if (gl.at(x, y) == gl.at(0, 0) && mine.at(x, y) == mine.at(0, 0)) continue;  // the background (the corner's colour)
+        if (gl.at(x, y) == gl.at(0, 0) && mine.at(x, y) == mine.at(0, 0))
+          continue;  // the background (the corner's colour)
         ++shown;
         int mi = 0, mj = 0, gi = 0, gj = 0;
         ts::decodeTexelIndex(mine.at(x, y), &mi, &mj);
         ts::decodeTexelIndex(gl.at(x, y), &gi, &gj);
         // The same texel, or its neighbour (per-vertex float coordinates and
         // texgen's float planes round apart at texel edges); 256 wraps.
-        auto near = [](int a, int b) { const int d = std::abs(a - b) % 256; return std::min(d, 256 - d) <= 1; };
+        auto near = [](int a, int b) {
+          const int d = std::abs(a - b) % 256;
+          return std::min(d, 256 - d) <= 1;
+        };
         const bool bad = !(near(mi, gi) && near(mj, gj));
         differ += bad;
         counted[size_t(y) * 480 + size_t(axis * 160 + x)] = bad;
@@ -592,15 +611,16 @@ bool checkSphereMap(const Functions& fn, ts::Renderer& r, const std::string& pic
     };
     mine.set(x, y, colour(m)), gl.set(x, y, colour(got));
   }
-  const bool ok = line(far == 0, std::to_string(far) + " of 1000 points more than 1.5 texels of 2048 from GL_SPHERE_MAP's (s,t) "
-                                 "(largest " + fmt("%.1f", worst) + " texels), expected 0");
+  const bool ok = line(far == 0, std::to_string(far) +
+                                     " of 1000 points more than 1.5 texels of 2048 from GL_SPHERE_MAP's (s,t) "
+                                     "(largest " +
+                                     fmt("%.1f", worst) + " texels), expected 0");
   ts::Image big(W * 8, H * 8), bigGl(W * 8, H * 8);
   for (int y = 0; y < H * 8; ++y)
     for (int x = 0; x < W * 8; ++x) big.set(x, y, mine.at(x / 8, y / 8)), bigGl.set(x, y, gl.at(x / 8, y / 8));
   comparison(big, bigGl, picture);
   return ok;
 }
-
 
 // Seed 002's differences as Blinn's normal, measured as bump_mapping
 // measures its methods: the angle to the truly displaced surface's normal
@@ -623,17 +643,20 @@ bool checkBumpGradient(const Functions& fn, ts::Renderer&, const std::string&) {
       // derivatives by a fourth-order stencil (the answer's are second-order).
       auto d4 = [&](int dx, int dy) {
         return (-H.at(x + 2 * dx, y + 2 * dy) + 8.0 * H.at(x + dx, y + dy) - 8.0 * H.at(x - dx, y - dy) +
-                H.at(x - 2 * dx, y - 2 * dy)) / 12.0;
+                H.at(x - 2 * dx, y - 2 * dy)) /
+               12.0;
       };
       const double P = scale * H.at(x, y), Ps = scale * d4(1, 0) / ds, Pt = scale * d4(0, 1) / dt;
       const glm::dvec3 truth = glm::cross(f.Qs + Ps * f.N + P * f.Ns, f.Qt + Pt * f.N + P * f.Nt);
-      const double a = glm::degrees(std::acos(std::clamp(glm::dot(glm::normalize(mine), glm::normalize(truth)), -1.0, 1.0)));
+      const double a = glm::degrees(
+          std::acos(std::clamp(glm::dot(glm::normalize(mine), glm::normalize(truth)), -1.0, 1.0)));
       sum += a, worst = std::max(worst, a), ++n;
       tiltSum += glm::degrees(std::acos(std::clamp(glm::dot(glm::normalize(truth), f.N), -1.0, 1.0)));
     }
   std::printf("  (the displaced surface's normals lean %.2f deg from the smooth torus's on average)\n", tiltSum / n);
-  return line(sum / n <= 1.0, "mean angle to the displaced surface's normal over " + std::to_string(n) + " texels: " +
-                                  fmt("%.2f", sum / n) + " deg (largest " + fmt("%.2f", worst) + "), expected at most 1");
+  return line(sum / n <= 1.0, "mean angle to the displaced surface's normal over " + std::to_string(n) +
+                                  " texels: " + fmt("%.2f", sum / n) + " deg (largest " + fmt("%.2f", worst) +
+                                  "), expected at most 1");
 }
 
 [[noreturn]] void crash() {
@@ -651,20 +674,22 @@ bool checkBumpGradient(const Functions& fn, ts::Renderer&, const std::string&) {
 Functions reference(Impl impl) {
   Functions f;
   switch (impl) {
-    case Impl::Mine:
-      break;
+    case Impl::Mine: break;
     case Impl::Solution:
       // cylinder_seam_math.hpp: Exercise VI.1 adds 1/2 (Seam::Back); GL_REPEAT does the rest.
       f.cylinderS = [](double th) { return th / 360.0 + 0.5; };
       // torus_math.hpp: the front mapping adds offset(Mapping::Front) = (1/2, 1/2).
-      f.torusST = [](double th, double ph) { return glm::dvec2(th, ph) / 360.0 + torus::offset(torus::Mapping::Front); };
+      f.torusST = [](double th, double ph) {
+        return glm::dvec2(th, ph) / 360.0 + torus::offset(torus::Mapping::Front);
+      };
       // wrap_modes_math.hpp: GL_NEAREST's texel at s = (x + 1/2) / w, t = (y + 1/2) / h.
       f.blit = [](const ts::Image& t, int w, int h) {
         ts::Image out(w, h);
         for (int y = 0; y < h; ++y)
           for (int x = 0; x < w; ++x)
-            out.set(x, y, t.at(wrap::nearestTexel(GL_CLAMP_TO_EDGE, (x + 0.5) / w, t.width),
-                               wrap::nearestTexel(GL_CLAMP_TO_EDGE, (y + 0.5) / h, t.height)));
+            out.set(x, y,
+                    t.at(wrap::nearestTexel(GL_CLAMP_TO_EDGE, (x + 0.5) / w, t.width),
+                         wrap::nearestTexel(GL_CLAMP_TO_EDGE, (y + 0.5) / h, t.height)));
         return out;
       };
       f.mirrorTexel = [](double s, int size) { return wrap::nearestTexel(GL_MIRRORED_REPEAT, s, size); };
@@ -777,7 +802,9 @@ Functions reference(Impl impl) {
       f.cubeST = [](int, glm::dvec3) { return glm::dvec2(std::nan("")); };
       f.planarWrap = [](glm::dvec3, int, double, glm::dvec3) { return glm::dvec2(std::nan("")); };
       f.sphereMap = [](glm::dvec3, glm::dvec3) { return glm::dvec2(std::nan("")); };
-      f.bumpNormal = [](glm::dvec3, glm::dvec3, double, double, double, double, double) { return glm::dvec3(std::nan("")); };
+      f.bumpNormal = [](glm::dvec3, glm::dvec3, double, double, double, double, double) {
+        return glm::dvec3(std::nan(""));
+      };
       break;
   }
   return f;
@@ -791,7 +818,8 @@ const std::vector<Exercise>& exercises() {
        "build/bin/torus --mapping mine"},
       {"lab1_blit", "seed 002, lab task 1", "build/bin/quad_distortion --filter nearest", checkBlit},
       {"mirror_wrap", "seed 002, MIRROR", "build/bin/wrap_modes", checkMirror},
-      {"scanline", "seed 002, the scanline texturer", "build/bin/perspective_correction --interp affine", checkScanline},
+      {"scanline", "seed 002, the scanline texturer", "build/bin/perspective_correction --interp affine",
+       checkScanline},
       {"lab2_cube", "seed 002, lab task 2; Buss VI.1.2", "build/bin/quad_distortion", checkCube},
       {"lab3_planar_wrap", "seed 002, lab task 3", "build/bin/sphere_projections", checkPlanarWrap},
       {"sphere_map", "seeds 001, 002; Buss VI.3", "build/bin/environment_mapping", checkSphereMap},

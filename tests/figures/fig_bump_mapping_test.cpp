@@ -115,7 +115,9 @@ TEST(BumpMapping, ClaimPicturesShowTheMeasurements) {
 TEST(BumpMapping, BlinnAndNormalMapFollowTheDisplacedSurface) {
   for (const char* heights : {"procedural", "bricks"}) {
     SCOPED_TRACE(heights);
-    const ts::Measurements m = std::string(heights) == "procedural" ? defaults() : Demo("bump_mapping", {"--heights", heights}).measure();
+    const ts::Measurements m = std::string(heights) == "procedural"
+                                   ? defaults()
+                                   : Demo("bump_mapping", {"--heights", heights}).measure();
     const double flat = value(m, "normal_err_deg[flat]");
     // The bumps tilt the normal by several degrees: the flat torus is that far off.
     EXPECT_GT(flat, 5.0);
@@ -192,9 +194,7 @@ TEST(BumpMapping, EmbossFadesWithTheLightOverhead) {
 // the tangent-space light as the colour c it is the shader's diffuse sum,
 // within the rounding of 8-bit colours (2 levels of 255) and of the light
 // vector interpolated per vertex rather than per pixel.
-TEST(BumpMapping, Dot3IsTheShadersDiffuseSum) {
-  EXPECT_LT(value(defaults(), "dot3_vs_shader_mad"), 2.0);
-}
+TEST(BumpMapping, Dot3IsTheShadersDiffuseSum) { EXPECT_LT(value(defaults(), "dot3_vs_shader_mad"), 2.0); }
 
 // Seed 001's limit: no bumps on the silhouette.  B1 draws the smooth torus,
 // so its outline is the smooth one to the pixel; R's moves by the heights

@@ -32,8 +32,8 @@
 #include "tests/support/scene_test.hpp"
 
 namespace {
-constexpr int kN = 2048;                 // texels of the texel-index texture
-constexpr double kSpanTol = 2.0 / kN;    // see the header comment
+constexpr int kN = 2048;               // texels of the texel-index texture
+constexpr double kSpanTol = 2.0 / kN;  // see the header comment
 
 using ts::test::Demo;
 using ts::test::value;
@@ -290,8 +290,11 @@ TEST(CylinderSeam, TextureSpaceShowsTheIntendedRegionWrapping) {
 
 // Claim: bad values of the demo's own flags are one clear error each.
 TEST(CylinderSeam, BadFlagsAreErrors) {
-  for (std::vector<std::string> bad : {std::vector<std::string>{"--slices", "2"}, {"--slices", "37"},
-                                       {"--coords", "fixed"}, {"--seam", "side"}, {"--turn", "400"}}) {
+  for (std::vector<std::string> bad : {std::vector<std::string>{"--slices", "2"},
+                                       {"--slices", "37"},
+                                       {"--coords", "fixed"},
+                                       {"--seam", "side"},
+                                       {"--turn", "400"}}) {
     SCOPED_TRACE(bad[0] + " " + bad[1]);
     std::unique_ptr<ts::Scene> s = ts::makeScene("cylinder_seam");
     ts::Options o;

@@ -93,7 +93,8 @@ TEST(EnvironmentMapping, TexelShapeWhereTheObjectReads) {
   EXPECT_GT(asp("sphere@rim"), 2 * asp("sphere@centre"));
   EXPECT_GT(asp("latlong@pole"), 3 * asp("latlong@body"));
   const double rowDeg = 180.0 / envmap::mapSize(envmap::kLatLong, 64).h;
-  for (const char* r : {"body", "pole", "seam"}) EXPECT_NEAR(ext(std::string("latlong@") + r), rowDeg, 0.01 * rowDeg) << r;
+  for (const char* r : {"body", "pole", "seam"})
+    EXPECT_NEAR(ext(std::string("latlong@") + r), rowDeg, 0.01 * rowDeg) << r;
   EXPECT_GT(ext("cube@face"), ext("cube@edge"));
 }
 
@@ -115,7 +116,8 @@ TEST(EnvironmentMapping, StaleSphereMapErrorFollowsTheEye) {
 // directions are as far apart as the pixel's line of sight is from the axis.
 TEST(EnvironmentMapping, SeedSphereMapDriftsOffAxis) {
   for (size_t b = 0; b + 1 < envmap::kAxisBins.size(); ++b) {
-    const std::string k = ts::layout::fmt("%g", envmap::kAxisBins[b]) + "-" + ts::layout::fmt("%g", envmap::kAxisBins[b + 1]);
+    const std::string k = ts::layout::fmt("%g", envmap::kAxisBins[b]) + "-" +
+                          ts::layout::fmt("%g", envmap::kAxisBins[b + 1]);
     SCOPED_TRACE(k);
     EXPECT_GE(v("seed_sphere_vs_gl_deg[" + k + "]"), envmap::kAxisBins[b] - 0.1);
     EXPECT_LE(v("seed_sphere_vs_gl_deg[" + k + "]"), envmap::kAxisBins[b + 1] + 0.1);
@@ -128,7 +130,8 @@ TEST(EnvironmentMapping, SeedSphereMapDriftsOffAxis) {
 TEST(EnvironmentMapping, SeedCubeFormulaDriftsOffAxis) {
   double last = -1;
   for (size_t b = 0; b + 1 < envmap::kAxisBins.size(); ++b) {
-    const std::string k = ts::layout::fmt("%g", envmap::kAxisBins[b]) + "-" + ts::layout::fmt("%g", envmap::kAxisBins[b + 1]);
+    const std::string k = ts::layout::fmt("%g", envmap::kAxisBins[b]) + "-" +
+                          ts::layout::fmt("%g", envmap::kAxisBins[b + 1]);
     const double e = v("seed_cube_r_vs_gl_deg[" + k + "]");
     EXPECT_GT(e, last) << k;
     if (b == 0) EXPECT_LT(e, 0.05);
@@ -142,7 +145,10 @@ TEST(EnvironmentMapping, SeedCubeFormulaDriftsOffAxis) {
 // sphere map's (even) last.
 TEST(EnvironmentMapping, SolidAngleUniformity) {
   for (const char* p : envmap::kParamKeys)
-    EXPECT_NEAR(v(std::string("texel_solid_angle_ratio_numeric[") + p + "]") / v(std::string("texel_solid_angle_ratio[") + p + "]"), 1.0, 0.02) << p;
+    EXPECT_NEAR(v(std::string("texel_solid_angle_ratio_numeric[") + p + "]") /
+                    v(std::string("texel_solid_angle_ratio[") + p + "]"),
+                1.0, 0.02)
+        << p;
   EXPECT_GT(v("texel_solid_angle_ratio[latlong]"), v("texel_solid_angle_ratio[cube]"));
   EXPECT_GT(v("texel_solid_angle_ratio[cube]"), v("texel_solid_angle_ratio[paraboloid]"));
   EXPECT_GT(v("texel_solid_angle_ratio[paraboloid]"), v("texel_solid_angle_ratio[sphere]"));
@@ -158,7 +164,8 @@ TEST(EnvironmentMapping, FlatMirrorCannotReflectWhatIsNear) {
   EXPECT_GT(v("mirror_ball_error_mean_deg"), 1);
   // On the flat mirror per-vertex interpolation is nearly harmless for the
   // maps without a seam across it: r is almost linear over a plane.
-  EXPECT_LT(v("error_mean_deg[" + key("cube", "mirror", "vertex") + "]"), v("error_mean_deg[" + key("cube", "sphere", "vertex") + "]") / 10);
+  EXPECT_LT(v("error_mean_deg[" + key("cube", "mirror", "vertex") + "]"),
+            v("error_mean_deg[" + key("cube", "sphere", "vertex") + "]") / 10);
 }
 
 // The fixed-function texgen computes what the shaders and environment_mapping_math.hpp say
@@ -169,7 +176,8 @@ TEST(EnvironmentMapping, FlatMirrorCannotReflectWhatIsNear) {
 // Also from an orbited eye, where the view's rotation is not the identity
 // (the texture matrix must turn eye space into the world's).
 TEST(EnvironmentMapping, TexgenIsTheFormula) {
-  const ts::Measurements orbited = Demo("environment_mapping", {"--object", "mirror", "--yaw", "30", "--pitch", "-20"}).measure();
+  const ts::Measurements orbited =
+      Demo("environment_mapping", {"--object", "mirror", "--yaw", "30", "--pitch", "-20"}).measure();
   for (const char* p : {"cube", "sphere"}) {
     EXPECT_LT(v("error_mean_deg[" + key(p, "mirror", "vertex") + "]"), 0.1) << p;
     EXPECT_LT(v("error_max_deg[" + key(p, "mirror", "vertex") + "]"), 0.2) << p;
@@ -201,19 +209,23 @@ TEST(EnvironmentMapping, FlatMirrorPrintsItsOwnPicturesCount) {
     EXPECT_EQ(l.text.find("..."), std::string::npos) << l.text;
     for (const ts::Label::Printed& p : l.printed) printed[p.name] = p.text;
   }
-  for (const char* name : {"mirror_ball_pixels[shown]", "mirror_ball_pixels_centre_map[shown]", "error_mean_deg[shown]"}) {
+  for (const char* name :
+       {"mirror_ball_pixels[shown]", "mirror_ball_pixels_centre_map[shown]", "error_mean_deg[shown]"}) {
     ASSERT_TRUE(printed.count(name)) << name;
-    EXPECT_EQ(printed[name], ts::layout::measured(m, name, name == std::string("error_mean_deg[shown]") ? "%.2f" : "%.0f").text);
+    EXPECT_EQ(printed[name],
+              ts::layout::measured(m, name, name == std::string("error_mean_deg[shown]") ? "%.2f" : "%.0f").text);
   }
   bool keyed = false;
-  for (const ts::LegendEntry& e : f.legend) keyed |= e.color.r > 0.85f && e.color.g < 0.2f && e.meaning.find("ball") != std::string::npos;
+  for (const ts::LegendEntry& e : f.legend)
+    keyed |= e.color.r > 0.85f && e.color.g < 0.2f && e.meaning.find("ball") != std::string::npos;
   EXPECT_TRUE(keyed) << "the red ball has a key";
 }
 
 // The torus fits its pictures: in the comparison every picture's outermost
 // rows and columns are background, so no side of the torus is cut.
 TEST(EnvironmentMapping, CompareTorusShowsTheWholeTorus) {
-  Demo d("environment_mapping", {"--view", "compare", "--object", "torus", "--eval", "vertex", "--tilt", "30", "--render", "96"});
+  Demo d("environment_mapping",
+         {"--view", "compare", "--object", "torus", "--eval", "vertex", "--tilt", "30", "--render", "96"});
   d.measure();
   const ts::Frame f = d.frame(1280, 360);
   const ts::Rgba bg = envmap::toRgba(envmap::kBackground);
@@ -236,7 +248,8 @@ TEST(EnvironmentMapping, CompareTorusShowsTheWholeTorus) {
 TEST(EnvironmentMapping, ShownStateAndPictures) {
   Demo d("environment_mapping", {"--param", "sphere", "--eval", "vertex", "--object", "torus", "--render", "128"});
   ts::Measurements m = d.measure();
-  EXPECT_NEAR(value(m, "error_mean_deg[shown]"), value(m, "error_mean_deg[sphere/torus/vertex]"), 0.35 * value(m, "error_mean_deg[sphere/torus/vertex]"));
+  EXPECT_NEAR(value(m, "error_mean_deg[shown]"), value(m, "error_mean_deg[sphere/torus/vertex]"),
+              0.35 * value(m, "error_mean_deg[sphere/torus/vertex]"));
   for (const char* view : {"object", "map", "compare"}) {
     Demo s("environment_mapping", {"--view", view, "--render", "96"});
     s.measure();
@@ -286,9 +299,11 @@ TEST(EnvironmentMapping, MapFiguresShareTheirLayoutAndPrintTheirClaims) {
   EXPECT_EQ(ll.picture.y, cube.picture.y);
   EXPECT_EQ(ll.picture.w, cube.picture.w);
   EXPECT_EQ(ll.rows, cube.rows);
-  for (const char* name : {"texel_aspect[latlong@pole]", "texel_aspect[latlong@body]", "texel_solid_angle_ratio[latlong]"})
+  for (const char* name :
+       {"texel_aspect[latlong@pole]", "texel_aspect[latlong@body]", "texel_solid_angle_ratio[latlong]"})
     EXPECT_TRUE(ll.printed.count(name)) << name;
-  for (const char* name : {"texel_aspect[cube@face]", "texel_solid_angle_ratio[cube]", "texel_solid_angle_ratio[latlong]"})
+  for (const char* name :
+       {"texel_aspect[cube@face]", "texel_solid_angle_ratio[cube]", "texel_solid_angle_ratio[latlong]"})
     EXPECT_TRUE(cube.printed.count(name)) << name;
 
   Demo d("environment_mapping", {"--eval", "vertex"});

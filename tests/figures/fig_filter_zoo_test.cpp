@@ -88,8 +88,9 @@ TEST(FilterZoo, TheTwoLodForms) {
   EXPECT_NEAR(value(m, "lod_form_gap_45deg"), 0.5, 1e-12);
   EXPECT_NEAR(value(m, "lod_form_gap_0deg"), 0.0, 1e-12);
   const double drop = value(m, "lod_gl_drop_45deg");
-  std::printf("[ lod form ] %s: level read at 0 deg %.3f, at 45 deg %.3f: %s form\n", ts::test::rendererString().c_str(),
-              value(m, "lod_gl[0deg]"), value(m, "lod_gl[45deg]"), std::abs(drop) < 0.25 ? "edge" : "largest-component");
+  std::printf("[ lod form ] %s: level read at 0 deg %.3f, at 45 deg %.3f: %s form\n",
+              ts::test::rendererString().c_str(), value(m, "lod_gl[0deg]"), value(m, "lod_gl[45deg]"),
+              std::abs(drop) < 0.25 ? "edge" : "largest-component");
   // Either form, within llvmpipe's LOD arithmetic (0.043 level) and 8-bit quantisation.
   EXPECT_NEAR(value(m, "lod_gl[0deg]"), 2.5, 0.07);
   EXPECT_TRUE(std::abs(drop) < 0.07 || std::abs(drop - 0.5) < 0.07) << drop;
@@ -115,7 +116,8 @@ TEST(FilterZoo, GLDrawsTheHomography) {
       if (fu < 0.05 || fu > 0.95 || fv < 0.05 || fv > 0.95) continue;
       int i = 0, j = 0;
       ts::decodeTexelIndex(img.at(col, row), &i, &j);
-      const int wi = ((int(std::floor(uv.x)) % kTexels) + kTexels) % kTexels, wj = ((int(std::floor(uv.y)) % kTexels) + kTexels) % kTexels;
+      const int wi = ((int(std::floor(uv.x)) % kTexels) + kTexels) % kTexels,
+                wj = ((int(std::floor(uv.y)) % kTexels) + kTexels) % kTexels;
       // Near the horizon (LOD 14, (u, v) ~ 30000 texels) GL's 32-bit floats
       // no longer hold a texel's position to 0.05: only the LOD <= 8 part counts.
       const double lod = std::log2(ts::lod::rhoExact(v.jacobian(col + 0.5, kImageH - 1 - row + 0.5)));
@@ -141,7 +143,8 @@ TEST(FilterZoo, MethodsAgainstTheExactIntegral) {
     EXPECT_GT(rms("linear", az), 1.5 * rms("trilinear", az));
     EXPECT_GT(rms("trilinear", az), 1.2 * rms("aniso16", az));
     EXPECT_GT(rms("trilinear", az), 1.3 * rms("ripmap", az));
-    EXPECT_GT(rms("trilinear", az), 1.1 * rms("sat", az));  // softpipe's largest-component LOD sharpens trilinear at 45: 1.17
+    EXPECT_GT(rms("trilinear", az),
+              1.1 * rms("sat", az));  // softpipe's largest-component LOD sharpens trilinear at 45: 1.17
     EXPECT_GT(rms("aniso16", az), 2.0 * rms("probes", az));
   }
 }
@@ -159,7 +162,8 @@ TEST(FilterZoo, AzimuthShape) {
   const Pyramids& p = pyramids(kSlant, kChecker);
   const View v = slantView(kImageW, kImageH, 0);
   const std::vector<char> mask = farField(v, kFarLo, kFarHi);
-  const double cpu = rmsAgainst(cpuPicture(kTrilinear, p, v, 0, mask).image, exactPicture(kSlant, kChecker, 0, p)->exact, mask);
+  const double cpu = rmsAgainst(cpuPicture(kTrilinear, p, v, 0, mask).image,
+                                exactPicture(kSlant, kChecker, 0, p)->exact, mask);
   EXPECT_NEAR(rms("trilinear", "0"), cpu, 0.2 * cpu);
 }
 
@@ -213,11 +217,13 @@ TEST(FilterZoo, MipKernels) {
   }
   for (int k = 0; k < kKernelCount; ++k) {
     SCOPED_TRACE(kernelKey(k));
-    if (k != kBox) EXPECT_GT(value(m, std::string("rms_kernel[") + kernelKey(k) + "_srgb]"), 1.2 * value(m, "rms_kernel[box_srgb]"));
+    if (k != kBox)
+      EXPECT_GT(value(m, std::string("rms_kernel[") + kernelKey(k) + "_srgb]"), 1.2 * value(m, "rms_kernel[box_srgb]"));
   }
   for (const char* sharp : {"lanczos2", "lanczos3", "kaiser"})
     for (const char* soft : {"tent", "gaussian"})
-      EXPECT_LT(1.2 * value(m, std::string("rms_kernel[") + sharp + "_srgb]"), value(m, std::string("rms_kernel[") + soft + "_srgb]"))
+      EXPECT_LT(1.2 * value(m, std::string("rms_kernel[") + sharp + "_srgb]"),
+                value(m, std::string("rms_kernel[") + soft + "_srgb]"))
           << sharp << " vs " << soft;
 }
 
@@ -232,7 +238,8 @@ TEST(FilterZoo, LodBias) {
   EXPECT_GT(value(m, "flicker[0]"), 1.2 * value(m, "flicker[1]"));
   for (const char* b : {"-1", "-0.5", "0", "0.5"}) {
     const double next = std::stod(b) + 0.5;
-    EXPECT_GT(value(m, std::string("flicker[") + b + "]"), value(m, "flicker[" + ts::layout::fmt("%g", next) + "]")) << b;
+    EXPECT_GT(value(m, std::string("flicker[") + b + "]"), value(m, "flicker[" + ts::layout::fmt("%g", next) + "]"))
+        << b;
   }
 }
 
@@ -283,7 +290,8 @@ TEST(FilterZoo, DifferentPicturesHaveDifferentErrors) {
       for (int b = a + 1; b < kMethodCount; ++b) {
         if (!differ(a, b)) continue;
         ++checked;
-        EXPECT_GT(std::abs(rms(methodKey(a), az) - rms(methodKey(b), az)), 1e-6) << methodKey(a) << " vs " << methodKey(b) << " at " << az;
+        EXPECT_GT(std::abs(rms(methodKey(a), az) - rms(methodKey(b), az)), 1e-6)
+            << methodKey(a) << " vs " << methodKey(b) << " at " << az;
       }
   }
   EXPECT_GT(checked, 0);
@@ -339,12 +347,14 @@ TEST(FilterZoo, FiguresPrintTheirMeasurements) {
       }
     }
     auto printedAll = [&](const std::vector<std::string>& names) {
-      for (const std::string& n : names) EXPECT_NE(std::find(shown.begin(), shown.end(), n), shown.end()) << n << " is not printed";
+      for (const std::string& n : names)
+        EXPECT_NE(std::find(shown.begin(), shown.end(), n), shown.end()) << n << " is not printed";
     };
     EXPECT_FALSE(f.legend.empty()) << "colours that carry meaning are named";
     if (spec.id == "filter_zoo_azimuth") {
       for (const char* az : {"0", "22.5", "45"})
-        for (int k = kNearest; k < kMethodCount; ++k) printedAll({std::string("rms_exact[") + methodKey(k) + "@" + az + "]"});
+        for (int k = kNearest; k < kMethodCount; ++k)
+          printedAll({std::string("rms_exact[") + methodKey(k) + "@" + az + "]"});
       printedAll({"last_level_like_level0", "nmn_nearest_differ_far", "nmn_nearest_differ_lod_min"});
     } else if (spec.id == "filter_zoo_supports") {
       printedAll({"sat_box_ratio[8to1_45deg]", "pick_sat_box_ratio", "pick_preimage_texels", "pick_probes"});
@@ -354,13 +364,15 @@ TEST(FilterZoo, FiguresPrintTheirMeasurements) {
       // Every plotted method is named by a tag.
       for (int k = kNearest; k < kMethodCount; ++k) {
         const std::string tag = k == kAniso16 ? "aniso 16x" : methodKey(k);
-        EXPECT_TRUE(std::any_of(f.labels.begin(), f.labels.end(), [&](const ts::Label& l) { return l.text == tag; })) << tag;
+        EXPECT_TRUE(std::any_of(f.labels.begin(), f.labels.end(), [&](const ts::Label& l) { return l.text == tag; }))
+            << tag;
       }
       EXPECT_EQ(f.legend.size(), 2u) << "0 and 45 degrees";
     } else if (spec.id == "mip_kernels") {
       for (int k = 0; k < kKernelCount; ++k)
         for (const char* domain : {"_srgb", "_linear"})
-          printedAll({std::string("mip_top[") + kernelKey(k) + domain + "]", std::string("rms_kernel[") + kernelKey(k) + domain + "]"});
+          printedAll({std::string("mip_top[") + kernelKey(k) + domain + "]",
+                      std::string("rms_kernel[") + kernelKey(k) + domain + "]"});
       printedAll({"mip_mean[srgb]", "mip_mean[linear]", "mip_top_max_error[srgb]", "mip_top_max_error[linear]"});
     }
   }

@@ -96,13 +96,15 @@ TEST(GlListing, EnvironmentMappingListsTheTexgenThatRenderedThePicture) {
   auto cube = listingFileOf("environment_mapping", {"--param", "cube", "--eval", "vertex"}, 540, 220);
   picture = section(cube, "/* the picture in panel 'picture'");
   for (const char* coord : {"GL_S", "GL_T", "GL_R"})
-    EXPECT_TRUE(has(picture, std::string("glTexGeni(") + coord + ", GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);")) << coord;
+    EXPECT_TRUE(has(picture, std::string("glTexGeni(") + coord + ", GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);"))
+        << coord;
   EXPECT_TRUE(has(picture, "glBindTexture(GL_TEXTURE_CUBE_MAP, "));
   EXPECT_TRUE(has(picture, "glTexImage2D(GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, ")) << "the map is made in the section";
   // The texture matrix turns eye space into the world's: loaded once the eye
   // turns (at yaw 0, pitch 0 it is the identity, which the frame leaves out).
   EXPECT_FALSE(has(picture, "glMatrixMode(GL_TEXTURE);"));
-  auto turned = section(listingFileOf("environment_mapping", {"--param", "cube", "--eval", "vertex", "--yaw", "30"}, 540, 220),
+  auto turned = section(listingFileOf("environment_mapping", {"--param", "cube", "--eval", "vertex", "--yaw", "30"},
+                                      540, 220),
                         "/* the picture in panel 'picture'");
   EXPECT_TRUE(has(turned, "glMatrixMode(GL_TEXTURE);"));
 
@@ -217,7 +219,9 @@ TEST(GlListing, ParallaxListsTheProgramOfEachMeasuredPicture) {
   EXPECT_TRUE(has(naive, "GL_TEXTURE_MAX_ANISOTROPY, 1);"));
   EXPECT_TRUE(has(aniso, "GL_TEXTURE_MAX_ANISOTROPY, 16);"));
   EXPECT_FALSE(has(naive, "GL_TEXTURE_MAX_ANISOTROPY, 16);"));
-  EXPECT_EQ(std::count_if(l.begin(), l.end(), [](const std::string& s) { return s.find("was rendered by:") != std::string::npos; }), 6)
+  EXPECT_EQ(std::count_if(l.begin(), l.end(),
+                          [](const std::string& s) { return s.find("was rendered by:") != std::string::npos; }),
+            6)
       << "a section per GL mode, M0-M5; the reference is traced on the CPU";
 
   auto live = listingFileOf("parallax_aniso", {"--view", "live", "--map", "bricks", "--res", "80"}, 320, 240);
@@ -281,12 +285,14 @@ std::string checkCall(const std::string& raw) {
   }
   if (depth != 0) return "unbalanced";
   for (size_t i = open; i < s.size(); ++i) {
-    if (s.compare(i, 3, "GL_") != 0 || (i > 0 && (std::isalnum(static_cast<unsigned char>(s[i - 1])) || s[i - 1] == '_')))
+    if (s.compare(i, 3, "GL_") != 0 ||
+        (i > 0 && (std::isalnum(static_cast<unsigned char>(s[i - 1])) || s[i - 1] == '_')))
       continue;
     size_t j = i;
     while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
     std::string id = s.substr(i, j - i);
-    if (id != "GLfloat" && id != "GLuint" && id != "GLchar" && !ts::gl::enumValue(id, nullptr)) return "unknown enum " + id;
+    if (id != "GLfloat" && id != "GLuint" && id != "GLchar" && !ts::gl::enumValue(id, nullptr))
+      return "unknown enum " + id;
     i = j;
   }
   // The rest: numbers, type names of compound literals, NULL, NAN/INFINITY.
@@ -299,8 +305,7 @@ std::string checkCall(const std::string& raw) {
         ++j;
       std::string id = s.substr(i, j - i);
       bool ok = id.rfind("GL_", 0) == 0 || id == "GLfloat" || id == "GLdouble" || id == "GLuint" || id == "GLchar" ||
-                id == "const" ||
-                id == "NULL" || id == "NAN" || id == "INFINITY";
+                id == "const" || id == "NULL" || id == "NAN" || id == "INFINITY";
       bool exponent = i > open + 1 && std::isdigit(static_cast<unsigned char>(s[i - 1])) && c == 'e';
       if (!ok && !exponent) return "unexpected word " + id;
       i = j - 1;

@@ -93,8 +93,8 @@ TEST_P(Footprints, ThePictureIsThePicksPanelDrawnAgainPixelForPixel) {
     // The same pixel centre through the same (narrowed) projection, in the
     // same 2 x 2 quad: the same colour, up to float rounding of the matrix
     // product.
-    std::printf("[footprints] %s pick %zu at %d,%d: GL drew (%d,%d,%d), the figure shows (%d,%d,%d)\n", GetParam().id, k + 1,
-                x, y, gl.r, gl.g, gl.b, shown.r, shown.g, shown.b);
+    std::printf("[footprints] %s pick %zu at %d,%d: GL drew (%d,%d,%d), the figure shows (%d,%d,%d)\n", GetParam().id,
+                k + 1, x, y, gl.r, gl.g, gl.b, shown.r, shown.g, shown.b);
     EXPECT_LE(maxDiff(gl, shown), 2) << "pick " << k + 1 << " at " << x << "," << y;
   }
   // Drawn from the panel's own data: every texture is one the inspected
@@ -129,7 +129,8 @@ TEST_P(Footprints, NoTextIsCutLeavesCrossesAPictureOrOverlaps) {
   ASSERT_TRUE(marks);
   int numbered = 0;
   for (const ts::Label& l : f.labels)
-    numbered += l.given.size() == 1 && l.given[0].first == "pick number" && l.text == std::to_string(int(l.given[0].second));
+    numbered += l.given.size() == 1 && l.given[0].first == "pick number" &&
+                l.text == std::to_string(int(l.given[0].second));
   EXPECT_EQ(numbered, int(d().picks.size()));
 }
 
@@ -144,7 +145,8 @@ TEST_P(Footprints, TheLegendNamesTheColoursDrawnAndOnlyThose) {
     for (const ts::Batch& b : p.batches)
       if (b.texture < 0 && !b.vertices.empty()) marks.push_back(b.vertices[0].color);
   for (const glm::vec4& c : marks)
-    EXPECT_TRUE(std::any_of(f.legend.begin(), f.legend.end(), [&](const ts::LegendEntry& e) { return sameColour(e.color, c); }))
+    EXPECT_TRUE(
+        std::any_of(f.legend.begin(), f.legend.end(), [&](const ts::LegendEntry& e) { return sameColour(e.color, c); }))
         << "a mark drawn in (" << c.r << ", " << c.g << ", " << c.b << ") is not in the legend";
   // Every colour named shows in a picture: a pixel of that colour in a
   // panel other than the legend's own swatches, outside every label's box.

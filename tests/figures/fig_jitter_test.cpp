@@ -151,7 +151,8 @@ TEST(VI7Patterns, JitteredSamplesStayInsideTheirSubpixels) {
   long same = 0, pairs = 0;
   for (int j = 0; j < 50; ++j)
     for (int i = 0; i + 1 < 50; ++i, ++pairs) {
-      same += jitter::samplePos(Pattern::JitterPixel, 3, 1, i, j, 4) == jitter::samplePos(Pattern::JitterPixel, 3, 1, i + 1, j, 4);
+      same += jitter::samplePos(Pattern::JitterPixel, 3, 1, i, j, 4) ==
+              jitter::samplePos(Pattern::JitterPixel, 3, 1, i + 1, j, 4);
       EXPECT_EQ(jitter::samplePos(Pattern::JitterGlobal, 3, 1, i, j, 4),
                 jitter::samplePos(Pattern::JitterGlobal, 3, 1, i + 1, j + 1, 4));
     }
@@ -237,8 +238,9 @@ TEST(VI7GL, EachPassSamplesWhereTheProjectionShiftSays) {
         wrong += std::abs(g.r - want.r) > 1 || std::abs(g.b - want.b) > 1;
         wrongMirrored += std::abs(g.r - mirrored.r) > 1 || std::abs(g.b - mirrored.b) > 1;
       }
-    std::printf("[ info ] pass %d at (%.3f, %.3f): %ld of %ld pixels differ from the CPU sample, %ld from the mirrored one\n",
-                k, s.x, s.y, wrong, pixels, wrongMirrored);
+    std::printf(
+        "[ info ] pass %d at (%.3f, %.3f): %ld of %ld pixels differ from the CPU sample, %ld from the mirrored one\n",
+        k, s.x, s.y, wrong, pixels, wrongMirrored);
     EXPECT_LT(wrong, pixels / 1000);
     EXPECT_GT(wrongMirrored, pixels * 3 / 100);
   }
@@ -277,10 +279,8 @@ TEST(VI7GL, AveragedImagesMatchTheCpuModel) {
     Agreement a = agreement(*c.gl, jitter::renderCpu(cam, c.p, c.n, c.seed));
     std::printf("[ info ] %-28s %5ld of %ld pixels differ by more than 1 (mean |diff| %.3f)\n", c.name, a.over1,
                 a.pixels, a.meanAbs);
-    if (c.match)
-      EXPECT_LT(a.over1, a.pixels / 500) << c.name;
-    else
-      EXPECT_GT(a.over1, a.pixels / 20) << c.name << " (negative control)";
+    if (c.match) EXPECT_LT(a.over1, a.pixels / 500) << c.name;
+    else EXPECT_GT(a.over1, a.pixels / 20) << c.name << " (negative control)";
   }
 }
 
@@ -321,8 +321,8 @@ TEST(VI7Averaging, FboAveragingMatchesTheAccumulationBuffer) {
   const jitter::Camera cam;
   if (jitter::accumStatus(renderer(), cam.width, cam.height) != jitter::AccumStatus::Usable)
     GTEST_SKIP() << "no usable accumulation buffer on " << context().describe() << ": nothing to compare with";
-  for (auto [p, n] : {std::pair{Pattern::Regular, 2}, {Pattern::Regular, 3}, {Pattern::Regular, 4},
-                      {Pattern::JitterGlobal, 3}}) {
+  for (auto [p, n] :
+       {std::pair{Pattern::Regular, 2}, {Pattern::Regular, 3}, {Pattern::Regular, 4}, {Pattern::JitterGlobal, 3}}) {
     ts::Image acc = averaged(cam, p, n, 1, true), fbo = averaged(cam, p, n, 1, false);
     int worst = 0;
     long differ = 0;
@@ -362,10 +362,13 @@ TEST(VI7Averaging, MeasurementsMatchTheCpuModelOnEveryPath) {
       jitter::FloatImage cpu = jitter::renderCpu(cam, p, n, 1);
       ts::Image img(cam.width, cam.height);
       for (size_t i = 0; i < size_t(cam.width) * size_t(cam.height); ++i)
-        for (int ch = 0; ch < 3; ++ch) img.pixels[i * 4 + size_t(ch)] = uint8_t(std::lround(cpu.rgb[i * 3 + size_t(ch)]));
+        for (int ch = 0; ch < 3; ++ch)
+          img.pixels[i * 4 + size_t(ch)] = uint8_t(std::lround(cpu.rgb[i * 3 + size_t(ch)]));
       jitter::ErrorStats want = jitter::analyse(jitter::errorImage(img.pixels.data(), ref), cam.width, cam.height);
-      std::string k = std::string(kind == 0 ? "regular" : kind == 1 ? "jitter_global" : "jitter_pixel") + "_" +
-                      std::to_string(n) + "x" + std::to_string(n) + "]";
+      std::string k = std::string(kind == 0   ? "regular"
+                                  : kind == 1 ? "jitter_global"
+                                              : "jitter_pixel") +
+                      "_" + std::to_string(n) + "x" + std::to_string(n) + "]";
       double dr = std::abs(value(m, "rms[" + k) - want.rms), da = std::abs(value(m, "aliasing[" + k) - want.aliasing);
       EXPECT_LT(dr, 1e-3) << k;
       EXPECT_LT(da, 1e-3) << k;
@@ -555,7 +558,8 @@ TEST(VI7Claims, ZonePlateAliasingSetsInAtTheSampleGridsNyquist) {
   for (size_t q = 0, r = 0; q < g.f.size(); ++q) {
     while (r < s.f.size() && s.f[r] < g.f[q] - 1e-9) ++r;
     if (r == s.f.size() || std::fabs(s.f[r] - g.f[q]) > 1e-9) continue;
-    const double x = jitter::zone::kPi * g.f[q] / 3, t = std::fabs(std::sin(jitter::zone::kPi * g.f[q]) / (jitter::zone::kPi * g.f[q])) / std::sqrt(2.0);
+    const double x = jitter::zone::kPi * g.f[q] / 3,
+                 t = std::fabs(std::sin(jitter::zone::kPi * g.f[q]) / (jitter::zone::kPi * g.f[q])) / std::sqrt(2.0);
     if (t < 0.1) continue;
     EXPECT_NEAR(g.rho[q], s.rho[r], 0.05) << "f " << g.f[q] << " (x " << x << ")";
     ++compared;
@@ -609,7 +613,8 @@ TEST(VI7Measure, SplitsKnownErrorsIntoAliasingAndNoise) {
     }
   }
   sw = std::sqrt(sw / double(white.size())), sp = std::sqrt(sp / double(white.size()));
-  jitter::ErrorStats a = jitter::analyse(white, w, h), b = jitter::analyse(pattern, w, h), c = jitter::analyse(mix, w, h);
+  jitter::ErrorStats a = jitter::analyse(white, w, h), b = jitter::analyse(pattern, w, h),
+                     c = jitter::analyse(mix, w, h);
   std::printf("[ info ] white: %.4f = %.4f aliasing + %.4f noise; pattern: %.4f = %.4f + %.4f; mix of %.4f and %.4f: "
               "%.4f = %.4f + %.4f\n",
               a.rms, a.aliasing, a.noise, b.rms, b.aliasing, b.noise, sp, sw, c.rms, c.aliasing, c.noise);
@@ -775,7 +780,8 @@ TEST(VI7Figure, ZonePlateShowsTheMeasuredRendersAndOnsets) {
   for (int k = 0; k < 3; ++k) {
     const ts::Panel& p = panelOf(f, "zone_" + std::to_string(k));
     const double onset = value(m, keys[k]);
-    const double want = p.viewport.y + p.viewport.h - (onset / jitter::zone::kStep - 1) * jitter::zone::kGlBandRows * zoom;
+    const double want = p.viewport.y + p.viewport.h -
+                        (onset / jitter::zone::kStep - 1) * jitter::zone::kGlBandRows * zoom;
     EXPECT_NEAR(lines[size_t(k)]->vertices.at(0).pos.y, want, 0.5) << keys[k];
   }
   // The plot's onset markers are labelled with the measured onsets.
@@ -813,7 +819,7 @@ TEST(VI7Figure, SeedChangesTheJitterOnly) {
 // Claim: bad flag values are one clear error each (ts::Error naming the
 // flag), and the program exits 2 with one line on stderr and no file.
 TEST(VI7Options, BadValuesAreRejected) {
-  const std::vector<std::vector<std::string>> bad = {{"--samples", "0"}, {"--samples", "5"},    {"--seed", "-1"},
+  const std::vector<std::vector<std::string>> bad = {{"--samples", "0"},    {"--samples", "5"},     {"--seed", "-1"},
                                                      {"--seed", "1000001"}, {"--mode", "sideways"}, {"--view", "3d"},
                                                      {"--average", "gpu"},  {"--samples", "three"}};
   for (const auto& flags : bad) {

@@ -108,7 +108,8 @@ TEST(MipmapPopping, GLSamplesTheBooks2x2AverageChain) {
       for (int j = 0; j < chain[size_t(k) + 1].height; j += 3)
         for (int i = 0; i < chain[size_t(k) + 1].width; i += 5) {
           const ts::Image& a = chain[size_t(k)];
-          ts::Rgba q[4] = {a.at(2 * i, 2 * j), a.at(2 * i + 1, 2 * j), a.at(2 * i, 2 * j + 1), a.at(2 * i + 1, 2 * j + 1)};
+          ts::Rgba q[4] = {a.at(2 * i, 2 * j), a.at(2 * i + 1, 2 * j), a.at(2 * i, 2 * j + 1),
+                           a.at(2 * i + 1, 2 * j + 1)};
           ts::Rgba got = chain[size_t(k) + 1].at(i, j);
           for (int c = 0; c < 3; ++c) {
             auto ch = [c](ts::Rgba p) { return c == 0 ? p.r : c == 1 ? p.g : p.b; };
@@ -476,7 +477,8 @@ double horizontalDetail(const ts::Image& img, const std::vector<char>& mask) {
   long n = 0;
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x + 1 < img.width; ++x) {
-      if (!mask[size_t(y) * size_t(img.width) + size_t(x)] || !mask[size_t(y) * size_t(img.width) + size_t(x) + 1]) continue;
+      if (!mask[size_t(y) * size_t(img.width) + size_t(x)] || !mask[size_t(y) * size_t(img.width) + size_t(x) + 1])
+        continue;
       ts::Rgba a = img.at(x, y), b = img.at(x + 1, y);
       sum += std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
       ++n;
@@ -491,7 +493,8 @@ TEST(MipmapPopping, TrilinearOverBlursTheFarField) {
   l.filter = kLinearMipLinear;
   ts::Image tri = r.renderOffscreen(mipmap::slantFrame(l, mipmap::kTextured, mipmap::kSlantW, mipmap::kSlantH));
   double dr = horizontalDetail(ref, mask), dt = horizontalDetail(tri, mask);
-  std::printf("[ info ] far-field horizontal detail: reference %.2f, trilinear %.2f (%s)\n", dr, dt, renderer().c_str());
+  std::printf("[ info ] far-field horizontal detail: reference %.2f, trilinear %.2f (%s)\n", dr, dt,
+              renderer().c_str());
   EXPECT_LT(dt, 0.7 * dr);
   // Negative control: the reference against itself has no error.
   EXPECT_EQ(rmsError(ref, ref, mask), 0.0);
@@ -509,7 +512,8 @@ TEST(MipmapPopping, GLSLReferenceAgreesWithTheDownsampledRender) {
   ts::Renderer& r = ts::test::renderer();
   mipmap::Look l;
   ts::Image down = mipmap::slantReference(r, l);
-  ts::Image glsl = r.renderOffscreen(mipmap::slantFrame(l, mipmap::kReferenceProgram, mipmap::kSlantW, mipmap::kSlantH));
+  ts::Image glsl = r.renderOffscreen(
+      mipmap::slantFrame(l, mipmap::kReferenceProgram, mipmap::kSlantW, mipmap::kSlantH));
   std::vector<char> all = mipmap::farField(mipmap::kSlantW, mipmap::kSlantH, -10, 8);
   long n = 0, differ = 0;
   double rms = rmsError(glsl, down, all, &n);
@@ -546,7 +550,8 @@ TEST(MipmapPopping, FilmstripFramesShowTheirLevels) {
       ts::Rect right{vp.x + vp.w / 2 + 2, vp.y + 2, vp.w / 2 - 4, vp.h - 4};
       Mean mean = meanOf(img, right);
       if (row == 0) {
-        ts::probe::Result pr = ts::probe::rect(img, right, ts::mipLevelColour(nearestLevel(lod)), ts::probe::tolerance(8));
+        ts::probe::Result pr = ts::probe::rect(img, right, ts::mipLevelColour(nearestLevel(lod)),
+                                               ts::probe::tolerance(8));
         EXPECT_TRUE(pr.ok()) << "frame " << c << " (LOD " << lod << "): " << pr.describe();
       } else {
         EXPECT_NEAR(levelFromColour(mean), effectiveLevel(kLinearMipLinear, lod), kBlendTolerance) << "frame " << c;
@@ -591,9 +596,9 @@ TEST(MipmapPopping, FiguresAreRegistered) {
 // Bad flag values are one clear line (ts::Error, exit status 2).
 TEST(MipmapPopping, BadFlagValuesAreOneLineErrors) {
   const std::vector<std::vector<std::string>> bad = {{"--distance-log2", "99"}, {"--distance-log2", "far"},
-                                                     {"--anisotropy", "1"},      {"--anisotropy", "32"},
-                                                     {"--lod-bias", "5"},        {"--filter", "trilinear"},
-                                                     {"--levels", "rainbow"},    {"--view", "side"}};
+                                                     {"--anisotropy", "1"},     {"--anisotropy", "32"},
+                                                     {"--lod-bias", "5"},       {"--filter", "trilinear"},
+                                                     {"--levels", "rainbow"},   {"--view", "side"}};
   for (const auto& flags : bad) {
     try {
       Demo d("mipmap_popping", flags);

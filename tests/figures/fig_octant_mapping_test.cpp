@@ -34,7 +34,8 @@ using ts::test::value;
 
 // Where the centre of raster pixel (Px, Py) is drawn in a raster panel (frame pixels).
 glm::ivec2 centreOf(const ts::Panel& p, double Px, double Py) {
-  const glm::vec2 q = ts::panelToPixels(p, p.projection * glm::vec4(float((Px + 0.5) / 32), float((Py + 0.5) / 32), 0, 1));
+  const glm::vec2 q = ts::panelToPixels(p,
+                                        p.projection * glm::vec4(float((Px + 0.5) / 32), float((Py + 0.5) / 32), 0, 1));
   return {int(std::floor(q.x)), int(std::floor(q.y))};
 }
 

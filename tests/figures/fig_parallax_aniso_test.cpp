@@ -270,11 +270,13 @@ TEST(Frames, AccelerationKeepsTheImage) {
       o.count = true;
       ts::Image c = gl().render(cam, bricks, mode, o);
       long n = 0;
-      for (size_t p = 0; p < size_t(cam.width) * size_t(cam.height); ++p) n += c.pixels[p * 4] + 256 * c.pixels[p * 4 + 1];
+      for (size_t p = 0; p < size_t(cam.width) * size_t(cam.height); ++p)
+        n += c.pixels[p * 4] + 256 * c.pixels[p * 4 + 1];
       return n;
     };
     long a = lookups(off), b = lookups(on);
-    std::printf("%s, bricks %dx%d: %ld lookups without the max-height pyramid, %ld with\n", kModeLabels[mode], cam.width, cam.height, a, b);
+    std::printf("%s, bricks %dx%d: %ld lookups without the max-height pyramid, %ld with\n", kModeLabels[mode],
+                cam.width, cam.height, a, b);
     EXPECT_LT(b, a) << kModeLabels[mode];
   }
 }
@@ -384,10 +386,8 @@ TEST(Frames, GradientTestSeesWhetherTheFilterUsesTheGradients) {
   quarter.gradScale = 0.25f;
   long m2Quarter = ts::probe::countDiffering(t.rows[1].image, gl().render(cam, bricks, kAniso16, quarter), 0);
   std::printf("M2 with the gradients x1/4: %ld px change\n", m2Quarter);
-  if (t.gradChangeM2 == 0)
-    EXPECT_EQ(m2Quarter, 0) << "the filter ignored 4x gradients but not 1/4x ones";
-  else
-    EXPECT_GT(m2Quarter, 0) << "the filter used 4x gradients but not 1/4x ones";
+  if (t.gradChangeM2 == 0) EXPECT_EQ(m2Quarter, 0) << "the filter ignored 4x gradients but not 1/4x ones";
+  else EXPECT_GT(m2Quarter, 0) << "the filter used 4x gradients but not 1/4x ones";
   EXPECT_NE(gradientFinding(t).find(std::to_string(t.gradChangeM2) + " px of M2"), std::string::npos);
 }
 
@@ -491,8 +491,8 @@ TEST(Table, AnEmptyBandLeavesItsCellsEmpty) {
         differ += a.pixels[(size_t(y) * size_t(a.width) + size_t(x)) * 4 + size_t(c)] !=
                   b.pixels[(size_t(y) * size_t(b.width) + size_t(x)) * 4 + size_t(c)];
   if (differ == 0) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << differ << " channel values differ in rows " << y0 << ".." << y1 << ", columns "
-                                       << x0 << ".." << x1;
+  return ::testing::AssertionFailure() << differ << " channel values differ in rows " << y0 << ".." << y1
+                                       << ", columns " << x0 << ".." << x1;
 }
 
 TEST(Live, DrawsTheModeAtTheTargetSize) {
@@ -554,7 +554,8 @@ TEST(Live, GradientsKeyReachesTheLivePasses) {
   c.height = H;
   PassOptions x4;
   x4.gradScale = 4;
-  ts::Image m1x4 = gl().render(c, relief("bricks"), kTrilinear, x4), m2x4 = gl().render(c, relief("bricks"), kAniso16, x4);
+  ts::Image m1x4 = gl().render(c, relief("bricks"), kTrilinear, x4),
+            m2x4 = gl().render(c, relief("bricks"), kAniso16, x4);
   // (The divider, 2 px at W/2, is left out.)
   EXPECT_TRUE(sameRows(live, m1x4, bar, H - bar, 0, W / 2 - 2));
   EXPECT_TRUE(sameRows(live, m2x4, bar, H - bar, W / 2 + 2, W));

@@ -317,7 +317,9 @@ TEST(VI2, PlotShowsTheMeasuredSweep) {
   for (int k = 0; k < 9; ++k) {
     char key[32];
     std::snprintf(key, sizeof key, "sweep_t%02d", 10 * k);
-    glm::vec2 c = (glm::vec2(crosses->vertices[size_t(4 * k)].pos) + glm::vec2(crosses->vertices[size_t(4 * k + 1)].pos)) / 2.0f;
+    glm::vec2 c = (glm::vec2(crosses->vertices[size_t(4 * k)].pos) +
+                   glm::vec2(crosses->vertices[size_t(4 * k + 1)].pos)) /
+                  2.0f;
     EXPECT_NEAR(c.x, value(m, std::string(key) + "_d_ratio"), 1e-4) << key;
     EXPECT_NEAR(c.y, value(m, std::string(key) + "_error_texels"), 1e-3) << key;
     // The cross colour is at its centre, or within a pixel of it: the

@@ -156,7 +156,8 @@ TEST(VI5, AnalyticRatioIsTheJacobian) {
     EXPECT_NEAR(mean, 1.0, 1e-12);
   }
   EXPECT_NEAR(sphere::ratioAt(Mapping::Latitude, 0), 2 / kPi, 1e-15);
-  EXPECT_NEAR(sphere::bandRatio(Mapping::Latitude, 70, 90), 2 * sphere::rad(20) / (kPi * (1 - std::sin(sphere::rad(70)))), 1e-12);
+  EXPECT_NEAR(sphere::bandRatio(Mapping::Latitude, 70, 90),
+              2 * sphere::rad(20) / (kPi * (1 - std::sin(sphere::rad(70)))), 1e-12);
   EXPECT_NEAR(sphere::bandRatio(Mapping::Latitude, 70, 90), 3.6848, 1e-4);
 }
 
@@ -171,7 +172,8 @@ TEST(VI5, MeshRatiosMatchTheAnalyticValues) {
     auto worst = [&](int res) {
       sphere::MeshRatios r = sphere::meshRatios(sphere::sphereMesh(m, res));
       double w = 0;
-      for (int b = 0; b < kBands; ++b) w = std::max(w, std::abs(r.ratio[size_t(b)] - want[size_t(b)]) / want[size_t(b)]);
+      for (int b = 0; b < kBands; ++b)
+        w = std::max(w, std::abs(r.ratio[size_t(b)] - want[size_t(b)]) / want[size_t(b)]);
       EXPECT_NEAR(r.pinchLost / r.totalTexArea, sphere::pinchLostExact(m, res), 1e-12) << res;
       EXPECT_NEAR(r.totalTexArea, 1.0, 1e-12);
       return w;
@@ -249,7 +251,8 @@ TEST(VI5, BothPinchAtThePoles) {
 // and rotation measure the same; one mapping alone measures only itself.
 TEST(VI5, MeasurementIgnoresTheViewAndNamesItsMapping) {
   ts::Measurements m = Demo("sphere_projections", {"--mapping", "vi2", "--tilt", "-50", "--rotation", "95"}).measure();
-  std::vector<double> a = column(m, Mapping::Latitude, "render"), b = column(defaultMeasurements(), Mapping::Latitude, "render");
+  std::vector<double> a = column(m, Mapping::Latitude, "render"),
+                      b = column(defaultMeasurements(), Mapping::Latitude, "render");
   for (int k = 0; k < kBands; ++k) EXPECT_EQ(a[size_t(k)], b[size_t(k)]) << bandName(k);
   for (const auto& x : m) EXPECT_EQ(x.name.find("vi3"), std::string::npos) << x.name;
 }
@@ -288,7 +291,8 @@ ProbeResult probeSphere(const ts::Image& img, const ts::Panel& p, Mapping m) {
       const double check = double(size) / checks;
       auto edge = [&](double u) { return std::abs(u - check * std::round(u / check)); };
       if (std::min(edge(st.x), edge(st.y)) < 3.0) continue;
-      bool dark = ts::checkerAt(size, checks, {32, 32, 32, 255}, {224, 224, 224, 255}, st.x / size, st.y / size).r < 128;
+      bool dark = ts::checkerAt(size, checks, {32, 32, 32, 255}, {224, 224, 224, 255}, st.x / size, st.y / size).r <
+                  128;
       int got = img.at(x, y).r;
       ++r.checked;
       if (dark ? got > 40 : got < 70) ++r.failed;
@@ -306,7 +310,11 @@ TEST(VI5, SpheresShowTheirMappings) {
   EXPECT_LT(left->viewport.x + left->viewport.w / 2, right->viewport.x) << "VI.2 on the left, as in the book";
   ASSERT_FALSE(left->batches.empty());
   const ts::TextureDesc& t = f.textures.at(size_t(left->batches[0].texture));
-  EXPECT_EQ(t.key(), [] { auto c = ts::checkerboard(512, 16); c.mipmaps = true; return c.key(); }());
+  EXPECT_EQ(t.key(), [] {
+    auto c = ts::checkerboard(512, 16);
+    c.mipmaps = true;
+    return c.key();
+  }());
   for (auto [p, m] : {std::pair{left, Mapping::Latitude}, std::pair{right, Mapping::Cylinder}}) {
     SCOPED_TRACE(key(m));
     ProbeResult r = probeSphere(img, *p, m);
@@ -357,15 +365,20 @@ TEST(VI5, PlotShowsTheMeasuredRatios) {
   only3.measure();
   ts::Frame g;
   ts::Image img3 = only3.render(1024, 512, &g);
-  glm::vec2 px = ts::panelToPixels(*g.panel("plot"), g.panel("plot")->projection *
-                                                          glm::vec4(sphere::bandMid(8), value(m, "vi2[70:90]_render"), 0, 1));
+  glm::vec2 px = ts::panelToPixels(*g.panel("plot"),
+                                   g.panel("plot")->projection *
+                                       glm::vec4(sphere::bandMid(8), value(m, "vi2[70:90]_render"), 0, 1));
   EXPECT_FALSE(ts::probe::close(img3.at(int(px.x), int(px.y)), orange, 40));
 }
 
 // Bad input to the demo's own flags is one clear error (exit 2 in the program).
 TEST(VI5, BadFlagsAreRejected) {
-  for (std::vector<std::string> bad : {std::vector<std::string>{"--resolution", "0"}, {"--resolution", "17"},
-                                       {"--tilt", "91"}, {"--mapping", "vi4"}, {"--view", "map"}, {"--rotation", "x"}}) {
+  for (std::vector<std::string> bad : {std::vector<std::string>{"--resolution", "0"},
+                                       {"--resolution", "17"},
+                                       {"--tilt", "91"},
+                                       {"--mapping", "vi4"},
+                                       {"--view", "map"},
+                                       {"--rotation", "x"}}) {
     ts::Options o;
     std::unique_ptr<ts::Scene> s = ts::makeScene("sphere_projections");
     s->addOptions(o);

@@ -151,8 +151,10 @@ TEST_F(TextureCompressionFigure, MemoryPlotHasHeadroom) {
   for (const ts::Batch& b : plot->batches)
     if (b.role == "lru_prefetch" || b.role == "lru")
       for (const ts::Vertex& v : b.vertices)
-        highest = std::min(highest, ts::panelToPixels(*plot, plot->projection * plot->modelview * glm::vec4(v.pos, 1.0f)).y);
-  EXPECT_GE(highest - float(plot->viewport.y), 0.05f * float(plot->viewport.h)) << "the plateau runs into the top border";
+        highest = std::min(highest,
+                           ts::panelToPixels(*plot, plot->projection * plot->modelview * glm::vec4(v.pos, 1.0f)).y);
+  EXPECT_GE(highest - float(plot->viewport.y), 0.05f * float(plot->viewport.h))
+      << "the plateau runs into the top border";
   size_t printed = 0;
   for (const ts::Label& l : f.labels) {
     EXPECT_EQ(l.text.find("..."), std::string::npos) << l.text;
@@ -201,7 +203,8 @@ TEST(TextureCompressionModes, CpuDecodeFallback) {
 TEST(TextureCompressionModes, YourPictureOddSize) {
   ts::Image img(301, 203);
   for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) img.set(x, y, {uint8_t(x * 255 / 300), uint8_t(y * 255 / 202), uint8_t((x ^ y) & 255), 255});
+    for (int x = 0; x < img.width; ++x)
+      img.set(x, y, {uint8_t(x * 255 / 300), uint8_t(y * 255 / 202), uint8_t((x ^ y) & 255), 255});
   const std::string path = testing::TempDir() + "odd_" + std::to_string(getpid()) + ".png";
   ts::writePng(path, img);
   ts::test::Demo d("texture_compression", {"--texture", path});

@@ -108,10 +108,12 @@ TEST(Torus, TheAnswerAndTheMeshAgree) {
     // Both seams: shared vertices are the same bits.
     for (int j = 0; j <= p.nv; ++j)
       EXPECT_EQ(std::memcmp(&mesh.points[size_t(mesh.at(0, j))].pos, &mesh.points[size_t(mesh.at(p.nu, j))].pos,
-                            sizeof(glm::dvec3)), 0);
+                            sizeof(glm::dvec3)),
+                0);
     for (int i = 0; i <= p.nu; ++i)
       EXPECT_EQ(std::memcmp(&mesh.points[size_t(mesh.at(i, 0))].pos, &mesh.points[size_t(mesh.at(i, p.nv))].pos,
-                            sizeof(glm::dvec3)), 0);
+                            sizeof(glm::dvec3)),
+                0);
   }
 }
 
@@ -205,8 +207,8 @@ TEST(Torus, DisplayedCentreIsWhereTheAnswerProjects) {
     EXPECT_LT(texels, 16.0);
     glm::vec2 want = project(p, torus::centrePoint(book(m)));
     glm::vec2 other = project(p, torus::centrePoint(book(m == Mapping::Book ? Mapping::Front : Mapping::Book)));
-    EXPECT_LT(glm::distance(got, want), 2.0f) << "found (" << got.x << ", " << got.y << "), answer at (" << want.x
-                                              << ", " << want.y << ")";
+    EXPECT_LT(glm::distance(got, want), 2.0f)
+        << "found (" << got.x << ", " << got.y << "), answer at (" << want.x << ", " << want.y << ")";
     EXPECT_GT(glm::distance(got, other), 50.0f);
   }
 }

@@ -102,9 +102,9 @@ TEST(WrapModes, ModesFigureShowsTheFormulasTexels) {
         // Skip texel edges and the lines of the integer grid and the square.
         if (std::abs(us - std::round(us)) < 0.2 || std::abs(ut - std::round(ut)) < 0.2) continue;
         int i = wrap::nearestTexel(kModes[m], s, 8), j = wrap::nearestTexel(kModes[m], t, 8);
-        ts::Rgba want = i == wrap::kBorder || j == wrap::kBorder
-                            ? ts::Rgba{217, 26, 191, 255}  // the border colour (0.85, 0.1, 0.75) in 8 bits
-                            : tex.image->at(i, j);
+        ts::Rgba want = i == wrap::kBorder || j == wrap::kBorder ? ts::Rgba{217, 26, 191, 255}
+                                                                 // the border colour (0.85, 0.1, 0.75) in 8 bits
+                                                                 : tex.image->at(i, j);
         ts::Rgba got = img.at(x, y);
         ++checked;
         bad += std::abs(got.r - want.r) > 1 || std::abs(got.g - want.g) > 1 || std::abs(got.b - want.b) > 1;
@@ -133,7 +133,8 @@ TEST(WrapModes, TextureMatrixAtProbes) {
   }
   // The figure's state: the right title (the matrix's parameters, named) is whole, the count printed is the
   // measurement, and the left picture's lines have a key.
-  Demo fig("wrap_modes", {"--view", "matrix", "--rotate", "30", "--scale", "1.5", "--shear", "0.25", "--wrap-s", "mirrored"});
+  Demo fig("wrap_modes",
+           {"--view", "matrix", "--rotate", "30", "--scale", "1.5", "--shear", "0.25", "--wrap-s", "mirrored"});
   fig.measure();
   const ts::Frame f = fig.frame(1024, 512);
   size_t given = 0, printed = 0;

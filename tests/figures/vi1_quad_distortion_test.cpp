@@ -160,8 +160,8 @@ TEST(VI1, AffineWithLinearFilterMatchesInCheckInteriors) {
 TEST(VI1, BilinearMatchesBilinearInterpolation) {
   for (const char* d : {"tl-br", "bl-tr"}) {
     SCOPED_TRACE(d);
-    ts::probe::Result r =
-        checkScreenSpace({"--diagonal", d, "--interp", "bilinear", "--filter", "nearest"}, bilinearMap(kBook));
+    ts::probe::Result r = checkScreenSpace({"--diagonal", d, "--interp", "bilinear", "--filter", "nearest"},
+                                           bilinearMap(kBook));
     EXPECT_TRUE(r.ok()) << r.describe();
   }
 }
@@ -171,8 +171,8 @@ TEST(VI1, BilinearMatchesBilinearInterpolation) {
 TEST(VI1, ProjectiveMatchesTheHomography) {
   for (const char* d : {"tl-br", "bl-tr"}) {
     SCOPED_TRACE(d);
-    ts::probe::Result r =
-        checkScreenSpace({"--diagonal", d, "--interp", "projective", "--filter", "nearest"}, projectiveMap(kBook));
+    ts::probe::Result r = checkScreenSpace({"--diagonal", d, "--interp", "projective", "--filter", "nearest"},
+                                           projectiveMap(kBook));
     EXPECT_TRUE(r.ok()) << r.describe();
   }
 }
@@ -210,8 +210,8 @@ TEST(VI1, DiagonalChoiceChangesThePictureNegativeControl) {
   ts::Image a = tlbr.render(1024, 512, &f), b = bltr.render(1024, 512);
   const ts::Rect vp = panelOf(f, "screen_space").viewport;
   Map mapA = affineMap(kBook, Diagonal::TopLeftBottomRight), mapB = affineMap(kBook, Diagonal::BottomLeftTopRight);
-  for (auto [img, wrong, name] : {std::tuple{&a, &mapB, "tl-br render vs bl-tr map"},
-                                  std::tuple{&b, &mapA, "bl-tr render vs tl-br map"}}) {
+  for (auto [img, wrong, name] :
+       {std::tuple{&a, &mapB, "tl-br render vs bl-tr map"}, std::tuple{&b, &mapA, "bl-tr render vs tl-br map"}}) {
     ts::probe::Result r = probePanel(*img, vp, *wrong);
     EXPECT_GT(r.failed, r.checked / 20) << name << ": " << r.describe();
   }
@@ -224,7 +224,8 @@ TEST(VI1, DiagonalChoiceChangesThePictureNegativeControl) {
     for (int x = vp.x; x < vp.x + vp.w; ++x) {
       differ += !ts::probe::close(a.at(x, y), b.at(x, y), tol());
       glm::dvec2 p = panelPoint(vp, x, y), sa = mapA(p), sb = mapB(p);
-      predicted += ts::checkerAt(kTexels, kChecks, kA, kB, sa.x, sa.y) != ts::checkerAt(kTexels, kChecks, kA, kB, sb.x, sb.y);
+      predicted += ts::checkerAt(kTexels, kChecks, kA, kB, sa.x, sa.y) !=
+                   ts::checkerAt(kTexels, kChecks, kA, kB, sb.x, sb.y);
     }
   EXPECT_GT(differ, pixels / 10) << "the diagonals should give visibly different pictures";
   EXPECT_NEAR(double(differ), double(predicted), 0.02 * pixels) << differ << " differ, " << predicted << " predicted";
@@ -279,7 +280,8 @@ TEST(VI1, BookViewMeasuresItsOwnVariant) {
 TEST(VI1, ParallelogramCornersHaveNoKink) {
   const std::pair<const char*, Corners> cases[] = {
       {"0,0 1,0 1,1 0,1", {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(1, 1), glm::dvec2(0, 1)}},
-      {"0,0 0.75,0.25 1,1 0.25,0.75", {glm::dvec2(0, 0), glm::dvec2(0.75, 0.25), glm::dvec2(1, 1), glm::dvec2(0.25, 0.75)}}};
+      {"0,0 0.75,0.25 1,1 0.25,0.75",
+       {glm::dvec2(0, 0), glm::dvec2(0.75, 0.25), glm::dvec2(1, 1), glm::dvec2(0.25, 0.75)}}};
   for (const auto& [text, st] : cases) {
     SCOPED_TRACE(text);
     Demo demo("quad_distortion", {"--view", "compare", "--corners", text});
@@ -344,13 +346,12 @@ TEST(VI1, TextureSpacePanelShowsTheTextureAndTheRegion) {
         }
       return false;
     };
-    ts::probe::Result r = probePanel(img, vp, [](glm::dvec2 ab) { return ab; }, nearLine);
+    ts::probe::Result r = probePanel(
+        img, vp, [](glm::dvec2 ab) { return ab; }, nearLine);
     EXPECT_TRUE(r.ok()) << r.describe();
     EXPECT_GT(r.checked, long(0.5 * vp.w * vp.h));
 
-    auto pixelAt = [&](glm::dvec2 ab) {
-      return img.at(vp.x + int(ab.x * vp.w), vp.y + int((1.0 - ab.y) * vp.h));
-    };
+    auto pixelAt = [&](glm::dvec2 ab) { return img.at(vp.x + int(ab.x * vp.w), vp.y + int((1.0 - ab.y) * vp.h)); };
     const ts::Rgba red{230, 26, 26, 255}, orange{255, 140, 0, 255};
     EXPECT_TRUE(ts::probe::close(pixelAt({0.875, 0.375}), red, tol()));
     glm::dvec2 mid = quad::split(kBook, d).first({0.5, 0.5});
@@ -377,7 +378,8 @@ TEST(VI1, TextureFileIsMappedUpright) {
   pic.set(0, 1, blue);   // bottom-left
   pic.set(1, 1, white);  // bottom-right
   const char* tmp = std::getenv("TMPDIR");
-  std::string path = std::string(tmp && *tmp ? tmp : "/tmp") + "/vi1_texture_test_" + std::to_string(::getpid()) + ".png";
+  std::string path = std::string(tmp && *tmp ? tmp : "/tmp") + "/vi1_texture_test_" + std::to_string(::getpid()) +
+                     ".png";
   ts::writePng(path, pic);
   Demo demo("quad_distortion", {"--texture", path, "--corners", "0,0 1,0 1,1 0,1", "--filter", "nearest"});
   std::remove(path.c_str());
@@ -411,7 +413,7 @@ TEST(VI1, CommittedGridShowsA1AtTheBottomLeft) {
   ts::Image img = demo.render(1024, 512, &f);
   const ts::Rect vp = panelOf(f, "screen_space").viewport;
   const ts::Image grid = *ts::labelledGrid(512, 8).image;  // row 0 = t = 0
-  const ts::Image picture = ts::readPng(file);              // row 0 = the top
+  const ts::Image picture = ts::readPng(file);             // row 0 = the top
   int wrong = 0;
   for (int row = 0; row < 8; ++row)      // row 0 = the bottom (A1's row)
     for (int col = 0; col < 8; ++col) {  // col 0 = A
@@ -500,8 +502,8 @@ TEST(VI1, CheckerLinesBendByThePredictedAngle) {
     double predicted = quad::angleDeg(sp.first.gradient(0), sp.second.gradient(0));
     EXPECT_NEAR(predicted, deg(std::atan(tlbr ? 1.0 / 3.0 : 0.25)), 1e-9);
     EXPECT_NEAR(measured, predicted, 0.5);
-    std::printf("[ info ] %s: s = 1/2 edge bends by %.3f deg in the image, %.3f predicted\n",
-                tlbr ? "tl-br" : "bl-tr", measured, predicted);
+    std::printf("[ info ] %s: s = 1/2 edge bends by %.3f deg in the image, %.3f predicted\n", tlbr ? "tl-br" : "bl-tr",
+                measured, predicted);
   }
 }
 }  // namespace

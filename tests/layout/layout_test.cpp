@@ -151,7 +151,7 @@ INSTANTIATE_TEST_SUITE_P(Demos, Layout, ::testing::ValuesIn(ids()),
 // kit, jitter's and parallax_aniso's stayed at 1 at every size.
 TEST(TextScale, GrowsWithThePicturesNotBeyond) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> views = {
-      {"jitter", {"--view", "mode"}},          {"jitter", {"--view", "plot"}},
+      {"jitter", {"--view", "mode"}},           {"jitter", {"--view", "plot"}},
       {"parallax_aniso", {"--view", "single"}}, {"parallax_aniso", {"--view", "single", "--compare"}},
       {"mipmap_popping", {"--view", "slant"}},  {"mipmap_popping", {"--view", "plot"}}};
   for (const auto& [id, flags] : views) {

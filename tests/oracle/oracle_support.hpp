@@ -44,8 +44,9 @@ inline ts::TextureDesc colourful(int size) {
   auto img = std::make_shared<ts::Image>(size, size);
   for (int j = 0; j < size; ++j)
     for (int i = 0; i < size; ++i)
-      img->set(i, j, {uint8_t(40 + (i * 53 + j * 17) % 200), uint8_t(30 + (j * 61 + i * 7) % 210),
-                      uint8_t(20 + ((i + 3) * (j + 5) * 29) % 220), 255});
+      img->set(i, j,
+               {uint8_t(40 + (i * 53 + j * 17) % 200), uint8_t(30 + (j * 61 + i * 7) % 210),
+                uint8_t(20 + ((i + 3) * (j + 5) * 29) % 220), 255});
   ts::TextureDesc t;
   t.name = "oracle_colourful";  // not a sidecar generator: GL tests only
   t.params = {{"size", std::to_string(size)}};
@@ -63,8 +64,7 @@ inline ts::Panel unitPanel(int w, int h, const std::string& id = "p") {
 }
 
 // A quad [x0,x1]x[y0,y1] as two triangles, (s,t) from st0 to st1.
-inline ts::Batch quad(glm::vec2 p0, glm::vec2 p1, glm::vec2 st0, glm::vec2 st1, int texture,
-                      GLenum env = GL_REPLACE) {
+inline ts::Batch quad(glm::vec2 p0, glm::vec2 p1, glm::vec2 st0, glm::vec2 st1, int texture, GLenum env = GL_REPLACE) {
   ts::Batch b;
   b.role = "surface";
   b.texture = texture;

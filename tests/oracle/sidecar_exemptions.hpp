@@ -77,8 +77,9 @@ inline bool showsTheRasterizersFiltering(const std::string& id) {
 // 20,169 / 7,717 / 3,240 / 907; bump_emboss_overhead 23,493 / 11,078 / 5,937
 // / 1,350 (the 2 % bound is 11,468).  The bump tests' relations still hold
 // there (fig_bump_mapping runs on softpipe too).
-inline constexpr std::array<const char*, 5> kFiguresShadedPerPixelInGlsl = {
-    "bump_two_lights", "bump_seed002", "bump_normals", "bump_methods", "bump_emboss_overhead"};
+inline constexpr std::array<const char*, 5> kFiguresShadedPerPixelInGlsl = {"bump_two_lights", "bump_seed002",
+                                                                            "bump_normals", "bump_methods",
+                                                                            "bump_emboss_overhead"};
 
 inline bool shadedPerPixelInGlsl(const std::string& id) {
   return std::any_of(kFiguresShadedPerPixelInGlsl.begin(), kFiguresShadedPerPixelInGlsl.end(),

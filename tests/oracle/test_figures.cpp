@@ -157,7 +157,8 @@ TEST_P(Figure, InspectorAgreesWithTheReferenceAtRandomPixels) {
     if (in.texture >= 0 && rendered_->frame.textures.at(size_t(in.texture)).renderedFrom) continue;
     const ts::Rgba want = reference(false).image().at(x, y), got = ref::toRgba(in.pixelRgba);
     EXPECT_LE(std::abs(int(got.r) - want.r) + std::abs(int(got.g) - want.g) + std::abs(int(got.b) - want.b), 3)
-        << c.spec.id << " pixel " << x << "," << y << "\n" << ref::formatInspection(in);
+        << c.spec.id << " pixel " << x << "," << y << "\n"
+        << ref::formatInspection(in);
     ++compared, textured += in.textured;
   }
   std::printf("[inspect] %s: %d of 50 random pixels compared (%d textured)\n", c.spec.id.c_str(), compared, textured);
@@ -244,7 +245,8 @@ TEST_P(Figure, MatchesTheCommittedPngFuzzily) {
   long pixels = long(rendered_->image.width) * rendered_->image.height;
   o.maxDifferingPixels = llvmpipe ? pixels / 2000 : pixels / 50;
   const char* backend = std::getenv("TS_TEST_BACKEND");
-  if (backend && std::string(backend) == "egl") o.maxDifferingPixels = std::max(o.maxDifferingPixels, backendBoundPixels(c.spec.id));
+  if (backend && std::string(backend) == "egl")
+    o.maxDifferingPixels = std::max(o.maxDifferingPixels, backendBoundPixels(c.spec.id));
   ref::FuzzyResult r = ref::compareWithPng(rendered_->image, png, o);
   std::printf("[oracle] %s\n", r.message.c_str());
   EXPECT_TRUE(r.ok) << r.message;

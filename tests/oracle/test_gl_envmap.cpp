@@ -43,7 +43,8 @@ ts::Frame sphereFrame(int texture, const ts::TextureDesc& t, GLenum mode, unsign
   b.texGen.mode = mode;
   b.texGen.coords = coords;
   auto noTex = [](int, int) { return glm::dvec2(0.0); };
-  const ts::Mesh m = ts::parametricGrid(24, 12, true, false, [](int i, int j) { return ts::spherePoint(1.0, 24, 12, i, j); }, noTex);
+  const ts::Mesh m = ts::parametricGrid(
+      24, 12, true, false, [](int i, int j) { return ts::spherePoint(1.0, 24, 12, i, j); }, noTex);
   for (unsigned i : m.triangles()) {
     ts::Vertex v;
     v.pos = glm::vec3(m.points[i].pos);
@@ -58,13 +59,15 @@ ts::Frame sphereFrame(int texture, const ts::TextureDesc& t, GLenum mode, unsign
 // Six faces of `n` x `n` texels, each face its own hue, each texel distinct.
 ts::TextureDesc cubeTexture(int n, GLenum filter, bool swapX = false) {
   auto img = std::make_shared<ts::Image>(n, 6 * n);
-  const uint8_t hue[6][3] = {{230, 40, 40}, {40, 200, 60}, {50, 70, 230}, {230, 210, 40}, {40, 220, 220}, {220, 50, 220}};
+  const uint8_t hue[6][3] = {{230, 40, 40},  {40, 200, 60},  {50, 70, 230},
+                             {230, 210, 40}, {40, 220, 220}, {220, 50, 220}};
   for (int face = 0; face < 6; ++face) {
     const int src = swapX && face < 2 ? 1 - face : face;
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
-        img->set(i, face * n + j, {uint8_t(hue[src][0] * (4 + (i % 4)) / 7), uint8_t(hue[src][1] * (4 + (j % 4)) / 7),
-                                   uint8_t(hue[src][2] * (3 + ((i + j) % 5)) / 7), 255});
+        img->set(i, face * n + j,
+                 {uint8_t(hue[src][0] * (4 + (i % 4)) / 7), uint8_t(hue[src][1] * (4 + (j % 4)) / 7),
+                  uint8_t(hue[src][2] * (3 + ((i + j) % 5)) / 7), 255});
   }
   ts::TextureDesc t;
   t.name = std::string("oracle_cube") + (swapX ? "_swapped" : "");  // not a sidecar generator: GL tests only
@@ -93,7 +96,8 @@ TEST(GLEnvironmentTexGen, SphereMapOnA2DTexture) {
       EXPECT_GT(r.textured, 200 * 200 / 4) << r.summary();
       // The other normal length in the description: r = u - 2 (n.u) n changes
       // (flipping n would not: r is even in n), and the check must see it.
-      const ts::Frame wrong = sphereFrame(0, t, GL_SPHERE_MAP, ts::TexGen::S | ts::TexGen::T, scale == 1.0f ? 0.8f : 1.0f);
+      const ts::Frame wrong = sphereFrame(0, t, GL_SPHERE_MAP, ts::TexGen::S | ts::TexGen::T,
+                                          scale == 1.0f ? 0.8f : 1.0f);
       ref::VerifyResult bad = ref::verifyImage(img, wrong, oracle::options(n + "_other_length", "envmap_negative"));
       EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
     }
@@ -153,8 +157,9 @@ ts::TextureDesc volumeTexture(int n, GLenum filter, GLenum wrapR) {
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
-        img->set(i, k * n + j, {uint8_t(30 + (i * 53 + k * 29) % 200), uint8_t(20 + (j * 61 + k * 17) % 220),
-                                uint8_t(25 + (k * 71 + i * 11 + j * 5) % 210), 255});
+        img->set(i, k * n + j,
+                 {uint8_t(30 + (i * 53 + k * 29) % 200), uint8_t(20 + (j * 61 + k * 17) % 220),
+                  uint8_t(25 + (k * 71 + i * 11 + j * 5) % 210), 255});
   ts::TextureDesc t;
   t.name = "oracle_volume";  // not a sidecar generator: GL tests only
   t.params = {{"size", std::to_string(n)}};
@@ -231,7 +236,8 @@ ts::Frame frontHalf(ts::Frame f) {
   const glm::mat4 mv = f.panels[0].modelview;
   for (size_t i = 0; i + 2 < b.vertices.size(); i += 3) {
     const glm::vec3 c = (b.vertices[i].pos + b.vertices[i + 1].pos + b.vertices[i + 2].pos) / 3.0f;
-    const glm::vec3 e = glm::vec3(mv * glm::vec4(c, 1.0f)), n = glm::mat3(mv) * c;  // a sphere: the normal is the position
+    const glm::vec3 e = glm::vec3(mv * glm::vec4(c, 1.0f)),
+                    n = glm::mat3(mv) * c;  // a sphere: the normal is the position
     if (glm::dot(e, n) < 0) kept.insert(kept.end(), b.vertices.begin() + long(i), b.vertices.begin() + long(i) + 3);
   }
   b.vertices = kept;
@@ -254,8 +260,8 @@ TEST(GLNestedFrame, APanelShowingATexgenRender) {
   ts::Frame wrongInner = frontHalf(sphereFrame(0, t, GL_SPHERE_MAP, ts::TexGen::S | ts::TexGen::T, 0.8f));
   wrongInner.width = wrongInner.height = 120;
   wrongInner.panels[0].viewport = {0, 0, 120, 120};
-  ref::VerifyResult bad =
-      ref::verifyImage(img, nestedFrame(innerPicture, wrongInner), oracle::options("nested_wrong_inner", "envmap_negative"));
+  ref::VerifyResult bad = ref::verifyImage(img, nestedFrame(innerPicture, wrongInner),
+                                           oracle::options("nested_wrong_inner", "envmap_negative"));
   EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
 }
 
@@ -267,8 +273,8 @@ TEST(GLNestedFrame, APanelShowingATexgenRender) {
 // picture against the frame told with another mode (GL_NORMAL_MAP for the
 // cube, the map made for an eye turned 40 degrees for the sphere) fails.
 TEST(GLNestedFrame, TheEnvironmentMappingFiguresTexgenPictures) {
-  ts::test::Demo d("environment_mapping",
-                   {"--view", "compare", "--object", "torus", "--eval", "vertex", "--tilt", "30", "--yaw", "25", "--render", "160"});
+  ts::test::Demo d("environment_mapping", {"--view", "compare", "--object", "torus", "--eval", "vertex", "--tilt", "30",
+                                           "--yaw", "25", "--render", "160"});
   d.measure();
   const ts::Frame f = d.frame(900, 300);
   int checkedPasses = 0;

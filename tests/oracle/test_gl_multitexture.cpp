@@ -28,7 +28,8 @@ ts::TextureDesc cutout(int n, GLenum filter) {
     for (int i = 0; i < n; ++i) {
       const double r = std::hypot(i + 0.5 - n / 2.0, j + 0.5 - n / 2.0) / (n / 2.0);
       const uint8_t a = r < 0.55 ? 255 : r < 0.7 ? 160 : r < 0.85 ? 100 : 0;
-      img->set(i, j, {uint8_t(30 + (i * 37) % 200), uint8_t(90 + (j * 23) % 160), uint8_t(20 + ((i + j) * 11) % 90), a});
+      img->set(i, j,
+               {uint8_t(30 + (i * 37) % 200), uint8_t(90 + (j * 23) % 160), uint8_t(20 + ((i + j) * 11) % 90), a});
     }
   ts::TextureDesc t;
   t.name = "oracle_cutout";  // not a sidecar generator: GL tests only
@@ -84,11 +85,13 @@ TEST(GLAlphaTest, CutoutInFrontOfAFartherQuad) {
                   r.checked, sky[k - 1]);
       // The same picture described with the test off, or the other way round: wrong.
       const ts::Frame wrong = cutoutFrame(filter, func == GL_GREATER ? GLenum(GL_LESS) : GLenum(GL_GREATER), 0.5f);
-      ref::VerifyResult bad = ref::verifyImage(img, wrong, oracle::options(n + "_described_wrong", "multitexture_negative"));
+      ref::VerifyResult bad = ref::verifyImage(img, wrong,
+                                               oracle::options(n + "_described_wrong", "multitexture_negative"));
       EXPECT_GT(bad.invalid, 2000) << n << ": " << bad.summary();
       if (func != 0) {
         const ts::Frame off = cutoutFrame(filter, 0, 0.0f);
-        ref::VerifyResult bad2 = ref::verifyImage(img, off, oracle::options(n + "_described_off", "multitexture_negative"));
+        ref::VerifyResult bad2 = ref::verifyImage(img, off,
+                                                  oracle::options(n + "_described_off", "multitexture_negative"));
         EXPECT_GT(bad2.invalid, 2000) << n << ": " << bad2.summary();
       }
     }
@@ -150,7 +153,9 @@ ts::TextureDesc tinted(int n, glm::vec3 hue, GLenum filter, int seed) {
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const int v = 90 + (i * 37 + j * 53 + seed * 29) % 160;
-      img->set(i, j, {uint8_t(hue.r * v), uint8_t(hue.g * v), uint8_t(hue.b * v), uint8_t(60 + (i * 11 + j * 29 + seed) % 190)});
+      img->set(i, j,
+               {uint8_t(hue.r * v), uint8_t(hue.g * v), uint8_t(hue.b * v),
+                uint8_t(60 + (i * 11 + j * 29 + seed) % 190)});
     }
   ts::TextureDesc t;
   t.name = "oracle_tinted";  // not a sidecar generator: GL tests only
@@ -197,8 +202,10 @@ TEST(GLSecondUnit, CombineModesAgainstTheReference) {
       {"ab_combine_modulate", GL_REPLACE, GL_COMBINE, combineOf(GL_MODULATE, GL_PREVIOUS, GL_TEXTURE)},
       {"light_map_modulate", GL_REPLACE, GL_MODULATE, {}},
       {"combine_add", GL_MODULATE, GL_COMBINE, combineOf(GL_ADD, GL_TEXTURE, GL_PREVIOUS)},
-      {"modulate_add_ati", GL_MODULATE, GL_COMBINE, combineOf(GL_MODULATE_ADD_ATI, GL_TEXTURE, GL_PREVIOUS, GL_PREVIOUS, GL_SRC_ALPHA)},
-      {"interpolate_primary", GL_REPLACE, GL_COMBINE, combineOf(GL_INTERPOLATE, GL_TEXTURE, GL_PREVIOUS, GL_PRIMARY_COLOR, GL_SRC_COLOR)},
+      {"modulate_add_ati", GL_MODULATE, GL_COMBINE,
+       combineOf(GL_MODULATE_ADD_ATI, GL_TEXTURE, GL_PREVIOUS, GL_PREVIOUS, GL_SRC_ALPHA)},
+      {"interpolate_primary", GL_REPLACE, GL_COMBINE,
+       combineOf(GL_INTERPOLATE, GL_TEXTURE, GL_PREVIOUS, GL_PRIMARY_COLOR, GL_SRC_COLOR)},
   };
   for (GLenum filter : {GL_NEAREST, GL_LINEAR})
     for (const Case& c : cases) {
@@ -228,7 +235,8 @@ TEST(GLSecondUnit, ABPlusCDInTwoPasses) {
   ts::Frame f;
   f.width = f.height = 128;
   int t[4];
-  for (int k = 0; k < 4; ++k) t[k] = f.addTexture(tinted(16, {0.5f + 0.1f * k, 0.9f - 0.1f * k, 0.6f}, GL_NEAREST, 3 + k));
+  for (int k = 0; k < 4; ++k)
+    t[k] = f.addTexture(tinted(16, {0.5f + 0.1f * k, 0.9f - 0.1f * k, 0.6f}, GL_NEAREST, 3 + k));
   ts::Panel p = oracle::unitPanel(128, 128);
   const ts::Combine ab = combineOf(GL_MODULATE, GL_PREVIOUS, GL_TEXTURE);
   ts::Batch first = oracle::quad({0, 0}, {1, 1}, {0, 0}, {1, 1}, t[0]);
@@ -270,7 +278,8 @@ TEST(GLSecondUnit, ABPlusCDInTwoPasses) {
 // GL_ONE, GL_ONE) are checked: every GL pixel legal.
 TEST(GLSecondUnit, BlendedPassesAndAnIntermediateBuffer) {
   auto textures = [](ts::Frame& f, int* t) {
-    for (int k = 0; k < 4; ++k) t[k] = f.addTexture(tinted(16, {0.5f + 0.1f * k, 0.9f - 0.1f * k, 0.6f}, GL_NEAREST, 3 + k));
+    for (int k = 0; k < 4; ++k)
+      t[k] = f.addTexture(tinted(16, {0.5f + 0.1f * k, 0.9f - 0.1f * k, 0.6f}, GL_NEAREST, 3 + k));
   };
   auto blended = [](ts::Batch b, GLenum s, GLenum d) { return b.blend = true, b.blendSrc = s, b.blendDst = d, b; };
   ts::Frame inner;
@@ -376,7 +385,8 @@ TEST(GLSecondUnit, OwnCoordinatesAndASecondPassThroughLequal) {
     EXPECT_TRUE(r.ok()) << r.summary();
     EXPECT_EQ(r.textured, 128L * 128L) << n << ": modelled, not exempt";
     std::printf("%s: %ld invalid of %ld checked (%ld textured)\n", n.c_str(), r.invalid, r.checked, r.textured);
-    ref::VerifyResult bad = ref::verifyImage(img, frame(false), oracle::options(n + "_unit0_coords", "multitexture_negative"));
+    ref::VerifyResult bad = ref::verifyImage(img, frame(false),
+                                             oracle::options(n + "_unit0_coords", "multitexture_negative"));
     EXPECT_GT(bad.invalid, 128L * 128L / 2) << n << ": " << bad.summary();
   }
   // Two passes over one quad, depth test on: the first writes depth, the
@@ -440,14 +450,14 @@ TEST(GLSecondUnit, ThePearInOnePassAndInTwo) {
     // The pear covers about a fifth of the square (its silhouette: 2 x the
     // integral of pearProfile's radius over its 1.6 of height, in the 2 x 2 view).
     EXPECT_GT(r.textured, long(w) * w / 6) << r.summary();
-    std::printf("%s: %ld invalid of %ld checked (%ld textured, %ld edge)\n", n.c_str(), r.invalid, r.checked, r.textured, r.edges);
+    std::printf("%s: %ld invalid of %ld checked (%ld textured, %ld edge)\n", n.c_str(), r.invalid, r.checked,
+                r.textured, r.edges);
     const ts::Frame bad = pear(m, [&](ts::Panel& p) {
-      if (m == mt::kCombine3)
-        p.batches[0].combine1.rgb = GL_MODULATE;
-      else
-        p.batches[1].blendSrc = GL_ONE, p.batches[1].blendDst = GL_ZERO;
+      if (m == mt::kCombine3) p.batches[0].combine1.rgb = GL_MODULATE;
+      else p.batches[1].blendSrc = GL_ONE, p.batches[1].blendDst = GL_ZERO;
     });
-    const ref::VerifyResult b = ref::verifyImage(img, bad, oracle::options(n + "_described_wrong", "multitexture_negative"));
+    const ref::VerifyResult b = ref::verifyImage(img, bad,
+                                                 oracle::options(n + "_described_wrong", "multitexture_negative"));
     EXPECT_GT(b.invalid, r.textured / 2) << n << ": " << b.summary();
     std::printf("%s described wrong: %ld invalid\n", n.c_str(), b.invalid);
   }

@@ -66,7 +66,8 @@ TEST(GLSampling, MinificationFiltersOnASlantedPlane) {
     for (GLenum filter : {GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
                           GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR})
       for (GLenum mag : {GL_NEAREST, GL_LINEAR}) {
-        std::string n = std::string("plane_") + name(filter) + "_mag_" + name(mag) + (linearLight ? "_linear_light" : "");
+        std::string n = std::string("plane_") + name(filter) + "_mag_" + name(mag) +
+                        (linearLight ? "_linear_light" : "");
         SCOPED_TRACE(n);
         ts::TextureDesc t = ts::checkerboard(128, 8, {200, 60, 40, 255}, {30, 90, 220, 255});
         t.mipmaps = true;
@@ -88,8 +89,8 @@ TEST(GLSampling, LodBiasAndExplicitLevels) {
     t.minFilter = GL_LINEAR_MIPMAP_NEAREST;
     t.lodBias = bias;
     ts::Frame f = oracle::slantedPlane(200, 200, t, 6.0f);
-    ref::VerifyResult r =
-        ref::verifyImage(oracle::render(f), f, oracle::options("mip_bias_" + std::to_string(bias), "sampling"));
+    ref::VerifyResult r = ref::verifyImage(oracle::render(f), f,
+                                           oracle::options("mip_bias_" + std::to_string(bias), "sampling"));
     EXPECT_EQ(r.invalid, 0) << r.summary();
   }
 }
@@ -110,7 +111,8 @@ TEST(GLSampling, ModulateWithVertexColours) {
   // REPLACE in the description must not pass for the modulated picture.
   ts::Frame g = f;
   g.panels[0].batches[0].texEnv = GL_REPLACE;
-  ref::VerifyResult bad = ref::verifyImage(oracle::render(f), g, oracle::options("modulate_as_replace", "sampling_negative"));
+  ref::VerifyResult bad = ref::verifyImage(oracle::render(f), g,
+                                           oracle::options("modulate_as_replace", "sampling_negative"));
   EXPECT_GT(bad.invalid, bad.textured / 2) << bad.summary();
 }
 
@@ -150,7 +152,7 @@ TEST(GLSampling, DepthTestedOverlapAndPanels) {
     p.clearColor = {0.0f, 0.2f, 0.3f, 1.0f};
     ts::Batch near = oracle::quad({0.1f, 0.1f}, {0.7f, 0.8f}, {0, 0}, {1, 1}, a);
     ts::Batch far = oracle::quad({0.3f, 0.25f}, {0.95f, 0.9f}, {0, 0}, {2, 2}, b);
-    for (auto& v : near.vertices) v.pos.z = 0.5f;   // glm::ortho: window z smaller = nearer
+    for (auto& v : near.vertices) v.pos.z = 0.5f;  // glm::ortho: window z smaller = nearer
     for (auto& v : far.vertices) v.pos.z = -0.5f;
     p.batches = {near, far};  // without the depth test the far one is drawn over
     f.panels.push_back(p);
@@ -196,7 +198,8 @@ ts::Frame centreEdgeFrame() {
 
 TEST(GLRasterization, FillRuleOfTheReferenceIsLlvmpipes) {
   if (ts::test::rendererString().find("llvmpipe") == std::string::npos)
-    GTEST_SKIP() << "the exact fill rule is llvmpipe's; " << ts::test::rendererString() << " differs (edges are checked both ways)";
+    GTEST_SKIP() << "the exact fill rule is llvmpipe's; " << ts::test::rendererString()
+                 << " differs (edges are checked both ways)";
   ts::Frame f = centreEdgeFrame();
   ts::Image img = oracle::render(f);
   ref::RenderOptions o;
@@ -309,7 +312,8 @@ TEST(GLSampling, TextureMatrix) {
     EXPECT_EQ(r.invalid, 0) << r.summary();
     ts::Frame g = f;
     g.panels[0].batches[0].textureMatrix = glm::mat4(1.0f);
-    ref::VerifyResult bad = ref::verifyImage(img, g, oracle::options("texture_matrix_as_identity", "sampling_negative"));
+    ref::VerifyResult bad = ref::verifyImage(img, g,
+                                             oracle::options("texture_matrix_as_identity", "sampling_negative"));
     EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
   }
 }

@@ -26,7 +26,8 @@ ts::TextureDesc noise(int size, GLenum minFilter, GLenum magFilter, unsigned see
   auto img = std::make_shared<ts::Image>(size, size);
   std::mt19937 rng(seed);
   for (int j = 0; j < size; ++j)
-    for (int i = 0; i < size; ++i) img->set(i, j, {uint8_t(rng()), uint8_t(rng()), uint8_t(rng()), uint8_t(128 + rng() % 128)});
+    for (int i = 0; i < size; ++i)
+      img->set(i, j, {uint8_t(rng()), uint8_t(rng()), uint8_t(rng()), uint8_t(128 + rng() % 128)});
   ts::TextureDesc t;
   t.name = "inspect_noise";
   t.params = {{"size", std::to_string(size)}, {"seed", std::to_string(seed)}};
@@ -146,7 +147,8 @@ ts::Frame busy() {
   ts::Batch glass;  // blended, untextured
   glass.role = "glass";
   glass.blend = true;
-  glass.vertices = {vert({-0.9f, -0.2f, 0}, {0, 0}, {0.2f, 0.4f, 1.0f, 0.5f}), vert({0.9f, -0.1f, 0}, {0, 0}, {1, 1, 1, 0.3f}),
+  glass.vertices = {vert({-0.9f, -0.2f, 0}, {0, 0}, {0.2f, 0.4f, 1.0f, 0.5f}),
+                    vert({0.9f, -0.1f, 0}, {0, 0}, {1, 1, 1, 0.3f}),
                     vert({0.0f, 0.9f, 0}, {0, 0}, {1, 0.2f, 0.2f, 0.8f})};
   left.batches.push_back(glass);
   left.batches.push_back(ts::lineLoop({{-0.5f, -0.5f}, {0.5f, -0.5f}, {0.5f, 0.5f}}, {0, 0, 0, 1}, 2.0f, "outline"));
@@ -181,7 +183,8 @@ ts::Frame busy() {
   right.batches.push_back(crossing);
   ts::Batch flat;
   flat.role = "flat";
-  flat.vertices = {vert({-0.8f, 0.5f, -3.0f}, {0, 0}, {1, 0.5f, 0, 1}), vert({-0.2f, 0.9f, -3.0f}, {0, 0}, {0, 0.5f, 1, 1}),
+  flat.vertices = {vert({-0.8f, 0.5f, -3.0f}, {0, 0}, {1, 0.5f, 0, 1}),
+                   vert({-0.2f, 0.9f, -3.0f}, {0, 0}, {0, 0.5f, 1, 1}),
                    vert({-0.9f, 1.0f, -3.0f}, {0, 0}, {0.5f, 1, 0.5f, 1})};
   right.batches.push_back(flat);
   f.panels.push_back(right);
@@ -287,9 +290,9 @@ TEST(Inspect, FortyFiveDegreesSeparatesTheTwoRhos) {
 // what the sampler returns; NEAREST reads 1 texel, LINEAR 4, trilinear 8.
 TEST(Inspect, TexelListReproducesTheSampler) {
   std::mt19937 rng(11);
-  for (GLenum filter : {GLenum(GL_NEAREST), GLenum(GL_LINEAR), GLenum(GL_NEAREST_MIPMAP_NEAREST),
-                        GLenum(GL_LINEAR_MIPMAP_NEAREST), GLenum(GL_NEAREST_MIPMAP_LINEAR),
-                        GLenum(GL_LINEAR_MIPMAP_LINEAR)}) {
+  for (GLenum filter :
+       {GLenum(GL_NEAREST), GLenum(GL_LINEAR), GLenum(GL_NEAREST_MIPMAP_NEAREST), GLenum(GL_LINEAR_MIPMAP_NEAREST),
+        GLenum(GL_NEAREST_MIPMAP_LINEAR), GLenum(GL_LINEAR_MIPMAP_LINEAR)}) {
     ts::Frame f = receding(filter, GL_MODULATE);
     ref::Inspector inspector(f);
     ref::Texture tex(f.textures[0]);
@@ -337,9 +340,9 @@ TEST(Inspect, FootprintAgreesWithTheLegalSet) {
   std::uniform_real_distribution<double> coord(-1.5, 2.5), lod(-2.0, 7.0);
   for (GLenum wrap : {GLenum(GL_REPEAT), GLenum(GL_MIRRORED_REPEAT), GLenum(GL_CLAMP_TO_EDGE),
                       GLenum(GL_CLAMP_TO_BORDER), GLenum(GL_CLAMP)})
-    for (GLenum filter : {GLenum(GL_NEAREST), GLenum(GL_LINEAR), GLenum(GL_NEAREST_MIPMAP_NEAREST),
-                          GLenum(GL_LINEAR_MIPMAP_NEAREST), GLenum(GL_NEAREST_MIPMAP_LINEAR),
-                          GLenum(GL_LINEAR_MIPMAP_LINEAR)}) {
+    for (GLenum filter :
+         {GLenum(GL_NEAREST), GLenum(GL_LINEAR), GLenum(GL_NEAREST_MIPMAP_NEAREST), GLenum(GL_LINEAR_MIPMAP_NEAREST),
+          GLenum(GL_NEAREST_MIPMAP_LINEAR), GLenum(GL_LINEAR_MIPMAP_LINEAR)}) {
       ts::TextureDesc d = noise(16, filter, filter == GL_NEAREST ? GL_NEAREST : GL_LINEAR);
       d.wrapS = d.wrapT = wrap;
       d.border = {0.25f, 0.5f, 0.75f, 1.0f};
@@ -372,8 +375,8 @@ void expectAgreesWithReference(const ts::Frame& f, int samples, unsigned seed) {
     ++covered;
     const ts::Rgba want = reference.image().at(x, y);
     const ts::Rgba got = toRgba(in.pixelRgba);
-    const int d = std::max({std::abs(got.r - want.r), std::abs(got.g - want.g), std::abs(got.b - want.b),
-                            std::abs(got.a - want.a)});
+    const int d = std::max(
+        {std::abs(got.r - want.r), std::abs(got.g - want.g), std::abs(got.b - want.b), std::abs(got.a - want.a)});
     EXPECT_LE(d, 1) << "pixel " << x << "," << y << "\n" << ref::formatInspection(in);
     // Unless blended, the pixel is the fragment's reference colour.
     const bool blended = in.what == Inspection::What::Triangle &&
@@ -404,8 +407,8 @@ TEST(Inspect, AgreesWithTheReferenceImageEverywhere) {
       Inspection in = inspector.at(x, y);
       seen.insert(in.what);
       const ts::Rgba want = reference.image().at(x, y), got = toRgba(in.pixelRgba);
-      const int d = std::max({std::abs(got.r - want.r), std::abs(got.g - want.g), std::abs(got.b - want.b),
-                              std::abs(got.a - want.a)});
+      const int d = std::max(
+          {std::abs(got.r - want.r), std::abs(got.g - want.g), std::abs(got.b - want.b), std::abs(got.a - want.a)});
       if (d > 1 && ++bad <= 5) ADD_FAILURE() << "pixel " << x << "," << y << "\n" << ref::formatInspection(in);
     }
   EXPECT_EQ(bad, 0);
@@ -484,8 +487,8 @@ TEST(Inspect, LinesPointsLabelsAndProgramsAreNamed) {
 TEST(Inspect, CardAndJson) {
   Inspection in = ref::inspect(magnified(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR), 20, 20);
   std::string card = ref::formatInspection(in);
-  for (const char* want : {"pixel (20, 20)", "(s,t,r,q)", "(s/q,t/q)", "(u,v)", "du/dx", "rho", "lambda",
-                           "magnified", "texels", "reference"})
+  for (const char* want : {"pixel (20, 20)", "(s,t,r,q)", "(s/q,t/q)", "(u,v)", "du/dx", "rho", "lambda", "magnified",
+                           "texels", "reference"})
     EXPECT_NE(card.find(want), std::string::npos) << want << " missing from\n" << card;
   nlohmann::json j = ref::inspectionJson(in);
   std::set<std::string> keys;

@@ -407,8 +407,13 @@ TEST(Sidecar, Dxt1PictureGenerator) {
   P cpu = good;
   cpu[2].second = "decoded_cpu";
   EXPECT_EQ(ref::remakeTexture("dxt1_picture", cpu, "").texelSlack, 0.0f);
-  for (const auto& [key, value] : P{{"picture", "marble"}, {"three_colour", "2"}, {"show", "decoded"}, {"crop", "500,0,32,32"},
-                                    {"crop", "0,0,0,4"}, {"crop", "1,2,3"}, {"crop", "1,2,3,4x"}}) {
+  for (const auto& [key, value] : P{{"picture", "marble"},
+                                    {"three_colour", "2"},
+                                    {"show", "decoded"},
+                                    {"crop", "500,0,32,32"},
+                                    {"crop", "0,0,0,4"},
+                                    {"crop", "1,2,3"},
+                                    {"crop", "1,2,3,4x"}}) {
     P p = good;
     for (auto& kv : p)
       if (kv.first == key) kv.second = value;

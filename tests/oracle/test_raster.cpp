@@ -28,7 +28,8 @@ ScreenVertex sv(double x, double y, double a0 = 0, double a1 = 0) {
 std::vector<int> cover(const std::vector<std::array<ScreenVertex, 3>>& tris, int w, int h, FillRule rule) {
   std::vector<int> n(size_t(w * h), 0);
   for (const auto& t : tris)
-    ref::scanTriangle(t[0], t[1], t[2], 0, {0, 0, w, h}, rule, [&](int x, int y, const double*) { ++n[size_t(y * w + x)]; });
+    ref::scanTriangle(t[0], t[1], t[2], 0, {0, 0, w, h}, rule,
+                      [&](int x, int y, const double*) { ++n[size_t(y * w + x)]; });
   return n;
 }
 
@@ -97,7 +98,7 @@ TEST(Raster, AFanAroundAPixelCentreAndARandomMeshCoverOnce) {
     // Eight triangles around the centre of pixel (16, 16).
     std::vector<std::array<ScreenVertex, 3>> fan;
     ScreenVertex centre = sv(16.5, 16.5);
-    std::vector<ScreenVertex> ring{sv(4.5, 4.5), sv(16.5, 2.5), sv(28.5, 4.5), sv(30.5, 16.5),
+    std::vector<ScreenVertex> ring{sv(4.5, 4.5),   sv(16.5, 2.5),  sv(28.5, 4.5), sv(30.5, 16.5),
                                    sv(28.5, 28.5), sv(16.5, 30.5), sv(4.5, 28.5), sv(2.5, 16.5)};
     for (size_t i = 0; i < ring.size(); ++i) fan.push_back({centre, ring[i], ring[(i + 1) % ring.size()]});
     expectExactlyOnce(fan, 34, 34, rule, {7, 7, 26, 26});
@@ -161,8 +162,10 @@ TEST(Raster, AffineAndHyperbolicInterpolationOnAKnownTriangle) {
   ScreenVertex m0 = sv(0, 0, 0, 1), m1 = sv(64, 0, 0.5 / 4, 1.0 / 4), m2 = sv(0, 64, 0, 1);
   ScreenVertex n0 = sv(0, 0, 0, 1), n1 = sv(64, 0, 0.5, 1), n2 = sv(0, 64, 0, 1);
   double hypMid = 0, affMid = 0;
-  ref::scanTriangle(m0, m1, m2, 2, {31, 0, 32, 1}, FillRule::GLTopLeft, [&](int, int, const double* a) { hypMid = a[0] / a[1]; });
-  ref::scanTriangle(n0, n1, n2, 2, {31, 0, 32, 1}, FillRule::GLTopLeft, [&](int, int, const double* a) { affMid = a[0]; });
+  ref::scanTriangle(m0, m1, m2, 2, {31, 0, 32, 1}, FillRule::GLTopLeft,
+                    [&](int, int, const double* a) { hypMid = a[0] / a[1]; });
+  ref::scanTriangle(n0, n1, n2, 2, {31, 0, 32, 1}, FillRule::GLTopLeft,
+                    [&](int, int, const double* a) { affMid = a[0]; });
   // Pixel 31's centre is x = 31.5, not exactly halfway: compare with the formulas there.
   double u = 31.5 / 64, v = 0.5 / 64;
   EXPECT_NEAR(affMid, u * 0.5, 1e-12);

@@ -165,7 +165,8 @@ TEST(Lod, MipSelection) {
   // LINEAR_MIPMAP_LINEAR at lambda 1.25: 3/4 of level 1 and 1/4 of level 2.
   d.minFilter = GL_LINEAR_MIPMAP_LINEAR;
   ref::Texture tl(d);
-  Colour c = tl.sample(0.3, 0.6, 1.25), l1 = ref::toColour(ts::mipLevelColour(1)), l2 = ref::toColour(ts::mipLevelColour(2));
+  Colour c = tl.sample(0.3, 0.6, 1.25), l1 = ref::toColour(ts::mipLevelColour(1)),
+         l2 = ref::toColour(ts::mipLevelColour(2));
   for (size_t k = 0; k < 4; ++k) EXPECT_NEAR(c[k], 0.75 * l1[k] + 0.25 * l2[k], 1e-6);
   // The texture's LOD bias is added to lambda_base.
   d.minFilter = GL_NEAREST_MIPMAP_NEAREST;
@@ -178,7 +179,7 @@ TEST(Lod, MagnificationAndMinificationFilters) {
   ts::TextureDesc d = tiny(GL_REPEAT, GL_NEAREST);
   d.minFilter = GL_LINEAR;
   ref::Texture t(d);
-  expectColour(t.sample(0.5, 0.25, -0.5), {1, 1, 1, 1});  // lambda <= 0: NEAREST (u = 1.0 -> texel 1)
+  expectColour(t.sample(0.5, 0.25, -0.5), {1, 1, 1, 1});          // lambda <= 0: NEAREST (u = 1.0 -> texel 1)
   expectColour(t.sample(0.5, 0.25, 0.5), {0.5f, 0.5f, 0.5f, 1});  // lambda > 0: LINEAR
 }
 
@@ -200,9 +201,9 @@ TEST(Legal, LinearJitterSpansARange) {
   // row 0's centre, so 1/8 of row 1 (red, blue; wrapped) may blend in.
   t.legal(0.375, 0.25, 0, 0, 0, 1.0 / 8, &b);
   ASSERT_EQ(b.size(), 1u);
-  EXPECT_NEAR(b[0].lo[0], 0.125, 1e-6);                        // u' = 1/8 on row 0
+  EXPECT_NEAR(b[0].lo[0], 0.125, 1e-6);                          // u' = 1/8 on row 0
   EXPECT_NEAR(b[0].hi[0], 0.875 * 0.375 + 0.125 * 0.625, 1e-6);  // u' = 3/8, 1/8 of row 1
-  EXPECT_NEAR(b[0].lo[1], 0.875 * 0.125, 1e-6);                // green: only white has it
+  EXPECT_NEAR(b[0].lo[1], 0.875 * 0.125, 1e-6);                  // green: only white has it
   EXPECT_NEAR(b[0].hi[1], 0.375, 1e-6);
 }
 
@@ -237,18 +238,31 @@ TEST(Wrap, NearestAtIntegerCoordinates) {
     Colour want;
   } cases[] = {
       // REPEAT: i mod 2; s = 1 starts the next copy.
-      {GL_REPEAT, 0.0, black}, {GL_REPEAT, 1.0, black}, {GL_REPEAT, -1.0, black}, {GL_REPEAT, 2.0, black},
+      {GL_REPEAT, 0.0, black},
+      {GL_REPEAT, 1.0, black},
+      {GL_REPEAT, -1.0, black},
+      {GL_REPEAT, 2.0, black},
       // MIRRORED_REPEAT: s = 1 is the start of the mirrored copy (its first
       // texel is the last one), s = 2 the start of the next forward copy,
       // s = -1 the start (from below) of the mirrored copy before 0.
-      {GL_MIRRORED_REPEAT, 0.0, black}, {GL_MIRRORED_REPEAT, 1.0, white}, {GL_MIRRORED_REPEAT, 2.0, black},
-      {GL_MIRRORED_REPEAT, -1.0, white}, {GL_MIRRORED_REPEAT, 3.0, white},
+      {GL_MIRRORED_REPEAT, 0.0, black},
+      {GL_MIRRORED_REPEAT, 1.0, white},
+      {GL_MIRRORED_REPEAT, 2.0, black},
+      {GL_MIRRORED_REPEAT, -1.0, white},
+      {GL_MIRRORED_REPEAT, 3.0, white},
       // CLAMP_TO_EDGE: s = 1 is clamped to the last texel.
-      {GL_CLAMP_TO_EDGE, 1.0, white}, {GL_CLAMP_TO_EDGE, 0.0, black}, {GL_CLAMP_TO_EDGE, -1.0, black},
+      {GL_CLAMP_TO_EDGE, 1.0, white},
+      {GL_CLAMP_TO_EDGE, 0.0, black},
+      {GL_CLAMP_TO_EDGE, -1.0, black},
       // CLAMP_TO_BORDER: u = N is index N, outside: the border (also for NEAREST).
-      {GL_CLAMP_TO_BORDER, 1.0, green}, {GL_CLAMP_TO_BORDER, 0.0, black}, {GL_CLAMP_TO_BORDER, -1.0, green},
+      {GL_CLAMP_TO_BORDER, 1.0, green},
+      {GL_CLAMP_TO_BORDER, 0.0, black},
+      {GL_CLAMP_TO_BORDER, -1.0, green},
       // CLAMP with NEAREST: s clamped to [0, 1], then clamp(i, 0, N - 1): never the border.
-      {GL_CLAMP, 1.0, white}, {GL_CLAMP, 2.0, white}, {GL_CLAMP, 0.0, black}, {GL_CLAMP, -1.0, black},
+      {GL_CLAMP, 1.0, white},
+      {GL_CLAMP, 2.0, white},
+      {GL_CLAMP, 0.0, black},
+      {GL_CLAMP, -1.0, black},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(std::to_string(c.mode) + " s=" + std::to_string(c.s));

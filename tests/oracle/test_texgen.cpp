@@ -139,7 +139,7 @@ TEST(TexGen, CubeMapFaceAndCoordinates) {
     double s, t;
   } cases[] = {{{2, 0.4, -1}, 0, (0.5 + 1) / 2, (-0.2 + 1) / 2},  {{-2, 0.4, -1}, 1, (-0.5 + 1) / 2, (-0.2 + 1) / 2},
                {{0.5, 4, 1}, 2, (0.125 + 1) / 2, (0.25 + 1) / 2}, {{0.5, -4, 1}, 3, (0.125 + 1) / 2, (-0.25 + 1) / 2},
-               {{0.5, -1, 2}, 4, (0.25 + 1) / 2, (0.5 + 1) / 2},   {{0.5, -1, -2}, 5, (-0.25 + 1) / 2, (0.5 + 1) / 2}};
+               {{0.5, -1, 2}, 4, (0.25 + 1) / 2, (0.5 + 1) / 2},  {{0.5, -1, -2}, 5, (-0.25 + 1) / 2, (0.5 + 1) / 2}};
   for (const Case& c : cases) {
     int alt = 0;
     EXPECT_EQ(ref::cubeFace(c.r, &alt), c.face);
@@ -259,7 +259,8 @@ TEST(TexGen, SidecarRoundTripsNestedFrames) {
   p.projection = glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f);
   ts::Batch q;
   q.texture = 0;
-  for (glm::vec2 c : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)}) {
+  for (glm::vec2 c :
+       {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)}) {
     ts::Vertex v;
     v.pos = {c, 0};
     v.tex = {c.x, 1 - c.y, 0, 1};
@@ -281,7 +282,8 @@ TEST(TexGen, SidecarRoundTripsNestedFrames) {
   // The inner picture is not flat: the triangle shows both checks.
   std::set<uint32_t> colours;
   for (size_t k = 0; k + 3 < fromFrame.pixels.size(); k += 4)
-    colours.insert(uint32_t(fromFrame.pixels[k]) << 16 | uint32_t(fromFrame.pixels[k + 1]) << 8 | fromFrame.pixels[k + 2]);
+    colours.insert(uint32_t(fromFrame.pixels[k]) << 16 | uint32_t(fromFrame.pixels[k + 1]) << 8 |
+                   fromFrame.pixels[k + 2]);
   EXPECT_GE(colours.size(), 3u);
   // A nested frame whose size disagrees with the texture's is refused.
   std::string bad = json;

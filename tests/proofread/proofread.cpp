@@ -90,7 +90,8 @@ std::vector<Token> tokens(const std::string& s) {
     const bool overName = start >= 2 && s[start - 1] == '/' && (alpha(start - 2) || s[start - 2] == ')');
     const bool underName = i + 1 < s.size() && s[i] == '/' && (alpha(i + 1) || s[i + 1] == '(');
     if (coefficient || overName || underName) continue;
-    const bool negative = start > 0 && s[start - 1] == '-' && (start == 1 || !std::isalnum(static_cast<unsigned char>(s[start - 2])));
+    const bool negative = start > 0 && s[start - 1] == '-' &&
+                          (start == 1 || !std::isalnum(static_cast<unsigned char>(s[start - 2])));
     if (negative) --start;
     out.push_back({std::stod(s.substr(start, i - start)), decimals, start, i - start});
   }
@@ -180,20 +181,17 @@ std::vector<std::string> numberProblems(const Json& d) {
       char s[64];
       std::snprintf(s, sizeof s, p.at("format").get<std::string>().c_str(), measurements.at(name).get<double>());
       if (shown != s)
-        out.push_back("label \"" + text + "\" printed '" + shown + "' for " + name + ", whose value in the sidecar reads '" +
-                      s + "'");
+        out.push_back("label \"" + text + "\" printed '" + shown + "' for " + name +
+                      ", whose value in the sidecar reads '" + s + "'");
       const size_t at = text.find(s);
-      if (at == std::string::npos)
-        out.push_back("label \"" + text + "\" does not show " + name + " = " + s);
-      else
-        accounted.push_back({at, at + std::string(s).size()});
+      if (at == std::string::npos) out.push_back("label \"" + text + "\" does not show " + name + " = " + s);
+      else accounted.push_back({at, at + std::string(s).size()});
     }
     std::vector<double> given;
     for (const Json& g : j.value("given", Json::array())) given.push_back(g.at("value").get<double>());
     for (const Token& t : tokens(text)) {
-      const bool covered = std::any_of(accounted.begin(), accounted.end(), [&](const auto& r) {
-        return t.at >= r.first && t.at + t.length <= r.second;
-      });
+      const bool covered = std::any_of(accounted.begin(), accounted.end(),
+                                       [&](const auto& r) { return t.at >= r.first && t.at + t.length <= r.second; });
       if (covered) continue;
       if (t.decimals == 0 && std::abs(t.value) <= 16) continue;
       const double half = t.decimals == 99 ? 0.05 * std::abs(t.value) : 0.5 * std::pow(10.0, -t.decimals) * (1 + 1e-9);
@@ -239,8 +237,7 @@ std::vector<std::string> colourProblems(const Json& d) {
       const std::string t = l.at("text").get<std::string>();
       return t.find_first_not_of(' ') != std::string::npos && meaning.find(t) != std::string::npos;
     };
-    if (std::none_of(ls.begin(), ls.end(), says))
-      out.push_back("the legend's entry \"" + meaning + "\" is not drawn");
+    if (std::none_of(ls.begin(), ls.end(), says)) out.push_back("the legend's entry \"" + meaning + "\" is not drawn");
   }
   return out;
 }

@@ -79,8 +79,7 @@ TEST(Proofread, EveryMeaningfulColourIsNamed) {
     const auto problems = ts::proofread::colourProblems(read(p));
     if (kLegendPending.count(id))
       EXPECT_FALSE(problems.empty()) << id << " names its colours now: take it off kLegendPending";
-    else
-      EXPECT_TRUE(problems.empty()) << id << ":" << lines(problems);
+    else EXPECT_TRUE(problems.empty()) << id << ":" << lines(problems);
   }
 }
 

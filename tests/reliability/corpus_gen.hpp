@@ -21,12 +21,12 @@ namespace corpus {
 using Bytes = std::vector<uint8_t>;
 
 struct Case {
-  std::string name;    // file name in the corpus
+  std::string name;  // file name in the corpus
   Bytes bytes;
-  bool good = false;   // must decode...
-  ts::Image expect;    // ...to these pixels
-  std::string error;   // bad: a phrase the error line must contain
-  int tolerance = 0;   // good: largest channel difference allowed (JPEG is lossy; 0 elsewhere)
+  bool good = false;  // must decode...
+  ts::Image expect;   // ...to these pixels
+  std::string error;  // bad: a phrase the error line must contain
+  int tolerance = 0;  // good: largest channel difference allowed (JPEG is lossy; 0 elsewhere)
 };
 
 inline void be32(Bytes& v, uint32_t x) {
@@ -80,7 +80,9 @@ inline Sample16 pattern(int x, int y) {
   return {v(x * 37 + y * 11), v(x * 5 + y * 29 + 64), v((x ^ y) * 13 + 7), v(255 - x * 7 - y * 3)};
 }
 constexpr int kPaletteSize = 13;
-inline ts::Rgba paletteColour(int i) { return {uint8_t(i * 19), uint8_t(250 - i * 17), uint8_t(i * i), uint8_t(i % 3 ? 255 : 40 + i * 9)}; }
+inline ts::Rgba paletteColour(int i) {
+  return {uint8_t(i * 19), uint8_t(250 - i * 17), uint8_t(i * i), uint8_t(i % 3 ? 255 : 40 + i * 9)};
+}
 
 // Packs row y of the picture for a colour type and depth (palette: index
 // (x + y) % kPaletteSize; grey: the G channel).
@@ -162,7 +164,7 @@ inline Bytes makePng(int w, int h, int depth, int type, int interlace = 0) {
     int x0, y0, dx, dy;
   };
   std::vector<Pass> passes = interlace ? std::vector<Pass>{{0, 0, 8, 8}, {4, 0, 8, 8}, {0, 4, 4, 8}, {2, 0, 4, 4},
-                                                            {0, 2, 2, 4}, {1, 0, 2, 2}, {0, 1, 1, 2}}
+                                                           {0, 2, 2, 4}, {1, 0, 2, 2}, {0, 1, 1, 2}}
                                        : std::vector<Pass>{{0, 0, 1, 1}};
   for (const Pass& p : passes) {
     std::vector<int> xs;
@@ -286,24 +288,38 @@ inline Bytes bmp32Masks(int32_t w, int32_t h, uint32_t r, uint32_t g, uint32_t b
 
 inline std::vector<Case> makeCases() {
   std::vector<Case> cs;
-  auto good = [&](const std::string& name, Bytes b, ts::Image img) { cs.push_back({name, std::move(b), true, std::move(img), ""}); };
-  auto bad = [&](const std::string& name, Bytes b, const std::string& why) { cs.push_back({name, std::move(b), false, {}, why}); };
+  auto good = [&](const std::string& name, Bytes b, ts::Image img) {
+    cs.push_back({name, std::move(b), true, std::move(img), ""});
+  };
+  auto bad = [&](const std::string& name, Bytes b, const std::string& why) {
+    cs.push_back({name, std::move(b), false, {}, why});
+  };
 
   // ---- well-formed: every colour type, 8 and 16 bits, odd (non-power-of-two) sizes
   struct Kind {
     const char* name;
     int depth, type, interlace;
-  } kinds[] = {{"grey1", 1, 0, 0},        {"grey4", 4, 0, 0},           {"grey8", 8, 0, 0},
-               {"grey16", 16, 0, 0},      {"grey_alpha8", 8, 4, 0},     {"grey_alpha16", 16, 4, 0},
-               {"palette4", 4, 3, 0},     {"palette8", 8, 3, 0},        {"rgb8", 8, 2, 0},
-               {"rgb16", 16, 2, 0},       {"rgba8", 8, 6, 0},           {"rgba16", 16, 6, 0},
-               {"rgba8_interlaced", 8, 6, 1}, {"grey16_interlaced", 16, 0, 1}, {"palette8_interlaced", 8, 3, 1}};
+  } kinds[] = {{"grey1", 1, 0, 0},
+               {"grey4", 4, 0, 0},
+               {"grey8", 8, 0, 0},
+               {"grey16", 16, 0, 0},
+               {"grey_alpha8", 8, 4, 0},
+               {"grey_alpha16", 16, 4, 0},
+               {"palette4", 4, 3, 0},
+               {"palette8", 8, 3, 0},
+               {"rgb8", 8, 2, 0},
+               {"rgb16", 16, 2, 0},
+               {"rgba8", 8, 6, 0},
+               {"rgba16", 16, 6, 0},
+               {"rgba8_interlaced", 8, 6, 1},
+               {"grey16_interlaced", 16, 0, 1},
+               {"palette8_interlaced", 8, 3, 1}};
   for (const Kind& k : kinds)
     good(std::string("good_") + k.name + "_37x23.png", makePng(37, 23, k.depth, k.type, k.interlace),
          expected(37, 23, k.depth, k.type));
   good("good_rgb8_1x1.png", makePng(1, 1, 8, 2), expected(1, 1, 8, 2));
   good("good_rgba8_interlaced_3x2.png", makePng(3, 2, 8, 6, 1), expected(3, 2, 8, 6));  // passes with no pixels
-  ts::Image pic = rgbPicture(5, 3);  // 15 bytes a row, padded to 16
+  ts::Image pic = rgbPicture(5, 3);                                                     // 15 bytes a row, padded to 16
   good("good_bmp24_5x3.bmp", ts::encodeBmp(pic), pic);
   {
     // 32-bit: B, G, R, A (alpha kept); the same as BI_ALPHABITFIELDS masks
@@ -331,8 +347,7 @@ inline std::vector<Case> makeCases() {
     cs.back().tolerance = 3;
     ts::Image blocks(32, 24);
     for (int y = 0; y < 24; ++y)
-      for (int x = 0; x < 32; ++x)
-        blocks.set(x, y, {uint8_t(64 + 40 * (x / 8)), uint8_t(60 + 60 * (y / 8)), 128, 255});
+      for (int x = 0; x < 32; ++x) blocks.set(x, y, {uint8_t(64 + 40 * (x / 8)), uint8_t(60 + 60 * (y / 8)), 128, 255});
     good("good_jpeg_blocks_32x24.jpg", ts::encodeJpeg(blocks, 100), blocks);
     cs.back().tolerance = 4;
   }
@@ -478,11 +493,14 @@ inline std::vector<Case> makeCases() {
   bad("bmp_huge_100000x100000.bmp", bmpHeader(100000, 100000, 24, 0, 16), "over the limit");
   bad("bmp_height_int_min.bmp", bmpHeader(4, INT32_MIN, 24, 0, 16), "over the limit");
   bad("bmp_huge_width_2pow31_minus_1.bmp", bmpHeader(0x7fffffff, 1, 24, 0, 16), "over the limit");
-  bad("bmp_header_says_1000x1000_data_for_5x3.bmp", [&] {
+  bad(
+      "bmp_header_says_1000x1000_data_for_5x3.bmp",
+      [&] {
         Bytes b = bmpHeader(1000, 1000, 24, 0, 48);
         b.insert(b.end(), 48, 0x80);
         return b;
-      }(), "truncated");
+      }(),
+      "truncated");
   bad("bmp_8bit_palette.bmp", bmpHeader(4, 4, 8, 0, 16), "8 bits per pixel");
   bad("bmp_16bit.bmp", bmpHeader(4, 4, 16, 0, 32), "16 bits per pixel");
   bad("bmp32_cut_in_pixels.bmp", bmpHeader(4, 4, 32, 0, 60), "truncated");
@@ -492,7 +510,9 @@ inline std::vector<Case> makeCases() {
   bad("bmp32_cut_in_masks.bmp", cut(bmp32Masks(2, 2, 0xff, 0xff00, 0xff0000), 60), "bitfield masks");
   bad("bmp_rle8.bmp", bmpHeader(4, 4, 24, 1, 16), "compression 1");
   bad("bmp_bitfields.bmp", bmpHeader(4, 4, 24, 3, 48), "compression 3");
-  bad("bmp_os2_core_header.bmp", [] {
+  bad(
+      "bmp_os2_core_header.bmp",
+      [] {
         Bytes b{'B', 'M'};
         le32(b, 26 + 12);
         le32(b, 0);
@@ -501,22 +521,29 @@ inline std::vector<Case> makeCases() {
         le16(b, 2), le16(b, 2), le16(b, 1), le16(b, 24);
         b.insert(b.end(), 16, 0);
         return b;
-      }(), "OS/2");
+      }(),
+      "OS/2");
   bad("bmp_info_size_7.bmp", bmpHeader(4, 4, 24, 0, 48, 40) /* patched below */, "info header size");
   cs.back().bytes[14] = 7;
   bad("bmp_info_size_huge.bmp", bmpHeader(4, 4, 24, 0, 48), "info header size");
   cs.back().bytes[14] = 0xff, cs.back().bytes[17] = 0x7f;
   bad("bmp_planes_2.bmp", bmpHeader(4, 4, 24, 0, 48, 40, 2), "planes");
-  bad("bmp_pixel_offset_past_end.bmp", [&] {
+  bad(
+      "bmp_pixel_offset_past_end.bmp",
+      [&] {
         Bytes b = bmpHeader(5, 3, 24, 0, 48, 40, 1, 0x10000000u);
         b.insert(b.end(), 48, 0);
         return b;
-      }(), "outside the file");
-  bad("bmp_pixel_offset_inside_header.bmp", [&] {
+      }(),
+      "outside the file");
+  bad(
+      "bmp_pixel_offset_inside_header.bmp",
+      [&] {
         Bytes b = bmpHeader(5, 3, 24, 0, 48, 40, 1, 20);
         b.insert(b.end(), 48, 0);
         return b;
-      }(), "outside the file");
+      }(),
+      "outside the file");
   return cs;
 }
 }  // namespace corpus

@@ -393,7 +393,8 @@ TEST(Gl, ShaderCompileErrorNamesFileAndLine) {
 void main() {
   gl_FragColor = vec4(undeclared_name);
 })";
-  f.programs.push_back({"broken", {"tests/reliability/reliability_test.cpp", "void main() { gl_Position = ftransform(); }", fs}});
+  f.programs.push_back(
+      {"broken", {"tests/reliability/reliability_test.cpp", "void main() { gl_Position = ftransform(); }", fs}});
   f.panels[0].batches[0].program = "broken";
   std::string msg;
   try {
@@ -407,8 +408,7 @@ void main() {
   std::string text(src.begin(), src.end());
   size_t at = text.find("gl_FragColor = vec4(undeclared_name)");
   int line = 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
-  EXPECT_NE(msg.find("tests/reliability/reliability_test.cpp:" + std::to_string(line) + ":"), std::string::npos)
-      << msg;
+  EXPECT_NE(msg.find("tests/reliability/reliability_test.cpp:" + std::to_string(line) + ":"), std::string::npos) << msg;
   EXPECT_NE(msg.find("undeclared_name"), std::string::npos) << msg;
   EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
   ts::test::renderer().release();

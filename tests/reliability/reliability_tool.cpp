@@ -71,7 +71,8 @@ int main(int argc, char** argv) {
     }
     if ((cmd == "diff" || cmd == "diff-rgb") && argc == 4) {
       bool rgb = cmd == "diff-rgb";
-      ts::Image a = rgb ? readAny(argv[2]) : ts::readImage(argv[2]), b = rgb ? readAny(argv[3]) : ts::readImage(argv[3]);
+      ts::Image a = rgb ? readAny(argv[2]) : ts::readImage(argv[2]),
+                b = rgb ? readAny(argv[3]) : ts::readImage(argv[3]);
       if (a.width != b.width || a.height != b.height)
         throw ts::Error(std::string(argv[2]) + " and " + argv[3] + " differ in size", 1);
       long n = 0;
@@ -98,6 +99,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "reliability_tool: %s\n", e.what());
     return e.exit_code;
   }
-  std::fprintf(stderr, "usage: reliability_tool corpus DIR | check FILE... | diff A B | diff-rgb A B | measurements JSON\n");
+  std::fprintf(stderr,
+               "usage: reliability_tool corpus DIR | check FILE... | diff A B | diff-rgb A B | measurements JSON\n");
   return 2;
 }

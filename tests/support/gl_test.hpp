@@ -35,9 +35,9 @@ inline std::string rendererString() {
 inline bool isSoftpipe() { return rendererString().find("softpipe") != std::string::npos; }
 
 // Skips the current test, visibly, when the context lacks a GL version.
-#define TS_REQUIRE_GL_VERSION(v)                                                                   \
-  do {                                                                                             \
-    if (::ts::gl::version() < (v))                                                                 \
+#define TS_REQUIRE_GL_VERSION(v)                                                                            \
+  do {                                                                                                      \
+    if (::ts::gl::version() < (v))                                                                          \
       GTEST_SKIP() << "needs GL " << (v) / 10 << "." << (v) % 10 << ", have " << ::ts::gl::versionString(); \
   } while (0)
 }  // namespace ts::test

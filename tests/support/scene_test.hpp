@@ -28,9 +28,7 @@ struct Demo {
   // The same on a test program's own renderer (and so on its context)
   // instead of the shared renderer(): for a program whose context needs what
   // gl_test.hpp's lacks, e.g. an accumulation buffer.  `r` must outlive this.
-  Demo(const std::string& id, const std::vector<std::string>& flags, Renderer& r) : Demo(id, flags) {
-    own_ = &r;
-  }
+  Demo(const std::string& id, const std::vector<std::string>& flags, Renderer& r) : Demo(id, flags) { own_ = &r; }
   // Measures, and keeps the result for frame() to draw, as the window does.
   Measurements measure() { return measured = scene->measure(drawWith()); }
   // The frame at w x h; the test context is resized to it first, as a

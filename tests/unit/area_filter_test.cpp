@@ -96,7 +96,7 @@ TEST(AreaIntegral, AgreesWithClippingEveryTexel) {
     const double a = size(rng), b = a * thin(rng), th = ang(rng), sk = thin(rng) - 0.5;
     const glm::dvec2 e1(a * std::cos(th), a * std::sin(th)), e2(b * (-std::sin(th) + sk), b * std::cos(th));
     Polygon2 quad{c, c + e1, c + e1 + e2 * 1.3, c + e2};  // a convex quadrilateral, not a parallelogram
-    if (n % 2) std::reverse(quad.begin(), quad.end());   // clockwise too
+    if (n % 2) std::reverse(quad.begin(), quad.end());    // clockwise too
     const glm::dvec4 want = ts::exactAreaAverage(tex, quad), got = fast.average(quad);
     for (int k = 0; k < 4; ++k) worst = std::max(worst, std::fabs(want[k] - got[k]));
   }
@@ -175,7 +175,7 @@ TEST(AreaIntegral, WidestRowAndTheTwoTables) {
   const Polygon2 quad{{-7.3, 3.1}, {90.2, 10.4}, {95.0, 44.9}, {-3.3, 30.0}};
   const glm::dvec4 a = bytes.average(quad), b = reals.average(quad);
   for (int k = 0; k < 4; ++k) EXPECT_NEAR(a[k], b[k], 1e-9);
-  EXPECT_EQ(bytes.tableBytes(), size_t(5 * 16) * 32 * 16);  // 65 columns of sums: 5 tiles of 16 x 16, 16 bytes each
+  EXPECT_EQ(bytes.tableBytes(), size_t(5 * 16) * 32 * 16);     // 65 columns of sums: 5 tiles of 16 x 16, 16 bytes each
   EXPECT_EQ(reals.tableBytes(), size_t(5 * 4) * 16 * 8 * 32);  // doubles: tiles of 16 x 8, 32 bytes each
 }
 }  // namespace

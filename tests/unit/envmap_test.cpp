@@ -125,7 +125,8 @@ TEST(EnvMap, SolidAngleAnalyticMatchesNumeric) {
   EXPECT_GT(para, 3.5);
   // The sum over a map's counted texels is the sphere (all of lat-long and the cube).
   double total = 0;
-  for (int j = 0; j < 32; ++j) total += 2 * kPi * (std::sin((double(j + 1) / 32 - 0.5) * kPi) - std::sin((double(j) / 32 - 0.5) * kPi));
+  for (int j = 0; j < 32; ++j)
+    total += 2 * kPi * (std::sin((double(j + 1) / 32 - 0.5) * kPi) - std::sin((double(j) / 32 - 0.5) * kPi));
   EXPECT_NEAR(total, 4 * kPi, 1e-9);
 }
 
@@ -133,12 +134,15 @@ TEST(EnvMap, SolidAngleAnalyticMatchesNumeric) {
 // away from lines and labels), lines every 15 degrees are dark, each face
 // centre carries its label box.
 TEST(EnvMap, WorldColourIsLegible) {
-  const dvec3 a = worldColour(glm::normalize(dvec3(0.45, 0.1, -0.9))), b = worldColour(glm::normalize(dvec3(0.6, 0.1, -0.8)));
+  const dvec3 a = worldColour(glm::normalize(dvec3(0.45, 0.1, -0.9))),
+              b = worldColour(glm::normalize(dvec3(0.6, 0.1, -0.8)));
   EXPECT_GT(b.r, a.r);
   for (double latDeg : {15.0, 30.0, -45.0}) {
     const double lonDeg = 37.0;  // between meridians, off the labels
-    const dvec3 onLine(-std::sin(rad(lonDeg)) * std::cos(rad(latDeg)), std::sin(rad(latDeg)), -std::cos(rad(lonDeg)) * std::cos(rad(latDeg)));
-    const dvec3 off(-std::sin(rad(lonDeg)) * std::cos(rad(latDeg + 7)), std::sin(rad(latDeg + 7)), -std::cos(rad(lonDeg)) * std::cos(rad(latDeg + 7)));
+    const dvec3 onLine(-std::sin(rad(lonDeg)) * std::cos(rad(latDeg)), std::sin(rad(latDeg)),
+                       -std::cos(rad(lonDeg)) * std::cos(rad(latDeg)));
+    const dvec3 off(-std::sin(rad(lonDeg)) * std::cos(rad(latDeg + 7)), std::sin(rad(latDeg + 7)),
+                    -std::cos(rad(lonDeg)) * std::cos(rad(latDeg + 7)));
     const dvec3 line = worldColour(onLine), base = worldColour(off);
     EXPECT_LT(line.r + line.g + line.b, 0.6 * (base.r + base.g + base.b)) << latDeg;
   }
@@ -156,7 +160,8 @@ TEST(EnvMap, WorldColourIsLegible) {
 // row 0 of a face its t = 0); the parameters written are enough to make the
 // same texels again; bad parameters are refused.
 TEST(EnvMap, TheMapTexturesAreTheWorldAndRemakeFromTheirParameters) {
-  const glm::dmat3 view(glm::dvec3(std::cos(0.3), 0, std::sin(0.3)), glm::dvec3(0, 1, 0), glm::dvec3(-std::sin(0.3), 0, std::cos(0.3)));
+  const glm::dmat3 view(glm::dvec3(std::cos(0.3), 0, std::sin(0.3)), glm::dvec3(0, 1, 0),
+                        glm::dvec3(-std::sin(0.3), 0, std::cos(0.3)));
   for (int p = 0; p < kParams; ++p)
     for (bool unwrapped : {false, true}) {
       const ts::TextureDesc t = unwrapped ? unwrappedMap(Param(p), 8, view) : environmentMap(Param(p), 8, view);
@@ -173,7 +178,8 @@ TEST(EnvMap, TheMapTexturesAreTheWorldAndRemakeFromTheirParameters) {
   for (int f = 0; f < 6; ++f)
     for (int j : {0, 5})
       for (int i : {1, 7}) {
-        const ts::Rgba got = cube.image->at(i, f * sz.h + j), want = toRgba(worldColour(cubeDir(f, (i + 0.5) / 8, (j + 0.5) / 8)));
+        const ts::Rgba got = cube.image->at(i, f * sz.h + j),
+                       want = toRgba(worldColour(cubeDir(f, (i + 0.5) / 8, (j + 0.5) / 8)));
         EXPECT_EQ(glm::ivec3(got.r, got.g, got.b), glm::ivec3(want.r, want.g, want.b));
       }
   const glm::dmat3 toWorld = glm::transpose(view);
@@ -185,6 +191,7 @@ TEST(EnvMap, TheMapTexturesAreTheWorldAndRemakeFromTheirParameters) {
   EXPECT_THROW(environmentMapFromParams({{"param", "mercator"}, {"face", "8"}}), ts::Error);
   EXPECT_THROW(environmentMapFromParams({{"param", "cube"}, {"face", "0"}}), ts::Error);
   EXPECT_THROW(environmentMapFromParams({{"param", "sphere"}, {"face", "8"}}), ts::Error);  // no sphere_view
-  EXPECT_THROW(environmentMapFromParams({{"param", "sphere"}, {"face", "8"}, {"sphere_view", "1 0 0 0 1 0 0 0"}}), ts::Error);
+  EXPECT_THROW(environmentMapFromParams({{"param", "sphere"}, {"face", "8"}, {"sphere_view", "1 0 0 0 1 0 0 0"}}),
+               ts::Error);
   EXPECT_THROW(environmentMapFromParams({{"param", "cube"}, {"face", "8"}, {"layout", "cross"}}), ts::Error);
 }

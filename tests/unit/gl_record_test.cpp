@@ -27,7 +27,7 @@ bool has(const std::vector<std::string>& v, const std::string& line) {
 // Claim: enum names come from the GL headers, the core name before a vendor's.
 TEST(GlRecord, EnumNamesFromTheHeaders) {
   EXPECT_STREQ(ts::gl::enumName(GL_LINEAR_MIPMAP_LINEAR), "GL_LINEAR_MIPMAP_LINEAR");
-  EXPECT_STREQ(ts::gl::enumName(GL_CLAMP_TO_EDGE), "GL_CLAMP_TO_EDGE");  // not ..._SGIS
+  EXPECT_STREQ(ts::gl::enumName(GL_CLAMP_TO_EDGE), "GL_CLAMP_TO_EDGE");      // not ..._SGIS
   EXPECT_STREQ(ts::gl::enumName(GL_MIRRORED_REPEAT), "GL_MIRRORED_REPEAT");  // not ..._ARB
   unsigned long long v = 0;
   ASSERT_TRUE(ts::gl::enumValue("GL_PERSPECTIVE_CORRECTION_HINT", &v));
@@ -88,13 +88,15 @@ TEST(GlRecord, CallsAsCWithTheirValues) {
   EXPECT_TRUE(has(l, "glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 3, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, "
                      "NULL /* 3x2 GL_RGBA GL_UNSIGNED_BYTE, 24 bytes */);"));
   // The pixels themselves are kept (a standalone program can write them out).
-  auto tex = std::find_if(calls.begin(), calls.end(), [](const Call& c) { return std::string(c.name) == "glTexImage2D"; });
+  auto tex = std::find_if(calls.begin(), calls.end(),
+                          [](const Call& c) { return std::string(c.name) == "glTexImage2D"; });
   ASSERT_NE(tex, calls.end());
   ASSERT_TRUE(tex->args[8].bytes);
   ASSERT_EQ(tex->args[8].bytes->size(), 24u);
   EXPECT_EQ((*tex->args[8].bytes)[23], 230);
   // A query is marked as one.
-  auto get = std::find_if(calls.begin(), calls.end(), [](const Call& c) { return std::string(c.name) == "glGetIntegerv"; });
+  auto get = std::find_if(calls.begin(), calls.end(),
+                          [](const Call& c) { return std::string(c.name) == "glGetIntegerv"; });
   ASSERT_NE(get, calls.end());
   EXPECT_TRUE(get->query);
 }

@@ -48,7 +48,8 @@ TEST(InspectPick, FootprintLandsOnItsTexelsInTheTextureSpaceView) {
   for (const ts::Vertex& v : quad->vertices) ASSERT_EQ(glm::vec2(v.pos), glm::vec2(v.tex)) << "the test's premise";
   const ref::Inspector inspector(f);
   // The screen-space panel's centre (frame rows count from the top).
-  const ref::Inspection in = inspector.at(screen->viewport.x + screen->viewport.w / 2, screen->viewport.y + screen->viewport.h / 2);
+  const ref::Inspection in = inspector.at(screen->viewport.x + screen->viewport.w / 2,
+                                          screen->viewport.y + screen->viewport.h / 2);
   ASSERT_TRUE(in.textured) << in.note;
   ts::Frame over;
   ASSERT_TRUE(ts::footprintInTextureViews(f, in, &over));
@@ -67,8 +68,10 @@ TEST(InspectPick, FootprintLandsOnItsTexelsInTheTextureSpaceView) {
   const ts::Batch* texel = batchNamed(over.panels[0], "texel_read");
   ASSERT_TRUE(texel);
   EXPECT_NEAR(texel->vertices[1].pos.x - texel->vertices[0].pos.x, std::exp2(in.texels[0].level) / 256.0, 1e-6);
-  // A pick in the texture-space view, at (s, t) = (1/4, 1/4), away from the lines drawn over it: drawn in no other view.
-  const ref::Inspection own = inspector.at(texture->viewport.x + texture->viewport.w / 4, texture->viewport.y + texture->viewport.h * 3 / 4);
+  // A pick in the texture-space view, at (s, t) = (1/4, 1/4),
+  // away from the lines drawn over it: drawn in no other view.
+  const ref::Inspection own = inspector.at(texture->viewport.x + texture->viewport.w / 4,
+                                           texture->viewport.y + texture->viewport.h * 3 / 4);
   ASSERT_TRUE(own.textured) << own.note;
   EXPECT_FALSE(ts::footprintInTextureViews(f, own, &over));
   // The side panel's cell: a frame of the cell's size, the footprint in it.
@@ -134,10 +137,11 @@ TEST(InspectPick, PaneMarksThePickedBatchsTextureCalls) {
   // Nothing of batch 2 lies before batch 1's glEnd but the making of the texture.
   for (const std::string& l : b2) {
     const size_t at = size_t(std::stoul(l));
-    if (at < begins[1]) EXPECT_TRUE(l.find("glTexImage2D") != std::string::npos || l.find("glGenTextures") != std::string::npos ||
-                                    l.find("glBindTexture") != std::string::npos || l.find("glPixelStorei") != std::string::npos ||
-                                    l.find("GL_TEXTURE_MAX_LEVEL") != std::string::npos)
-        << l;
+    if (at < begins[1])
+      EXPECT_TRUE(l.find("glTexImage2D") != std::string::npos || l.find("glGenTextures") != std::string::npos ||
+                  l.find("glBindTexture") != std::string::npos || l.find("glPixelStorei") != std::string::npos ||
+                  l.find("GL_TEXTURE_MAX_LEVEL") != std::string::npos)
+          << l;
   }
 
   const std::vector<std::string> b1 = markedCalls(calls, 1);

@@ -164,22 +164,27 @@ TEST(OctantOracle, MappingFromTheCorners) {
 // and exactly against radicals at w = 1/2 (θ = π/8, φ = 3π/8).
 TEST(OctantOracle, ForwardTableToThreeDecimals) {
   const Coeffs m = solveMapping();
-  const double want[5][3] = {{0.383, 0.000, 0.924}, {0.375, 0.195, 0.906}, {0.354, 0.383, 0.854},
-                             {0.318, 0.556, 0.768}, {0.271, 0.707, 0.653}};
+  const double want[5][3] = {{0.383, 0.000, 0.924},
+                             {0.375, 0.195, 0.906},
+                             {0.354, 0.383, 0.854},
+                             {0.318, 0.556, 0.768},
+                             {0.271, 0.707, 0.653}};
   const double wantPhi[5] = {kPi / 2, 7 * kPi / 16, 3 * kPi / 8, 5 * kPi / 16, kPi / 4};
   for (int k = 0; k < 5; ++k) {
     const double w = k / 4.0, theta = m.A * 0.25 + m.B, phi = m.C * w + m.D;
-    EXPECT_NEAR(theta, kPi / 8, 1e-15);  // the seed prints "p/2"
+    EXPECT_NEAR(theta, kPi / 8, 1e-15);   // the seed prints "p/2"
     EXPECT_NEAR(phi, wantPhi[k], 1e-15);  // the seed prints 7/(16p), ... for 7π/16, ...
     const V3 p = sphere(theta, phi);
-    for (int a = 0; a < 3; ++a) EXPECT_NEAR(p[size_t(a)], want[k][a], 5e-4 + 1e-12) << "w = " << w << ", coordinate " << a;
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(p[size_t(a)], want[k][a], 5e-4 + 1e-12) << "w = " << w << ", coordinate " << a;
   }
   const V3 mid = sphere(kPi / 8, 3 * kPi / 8);
   EXPECT_NEAR(mid[0], std::sqrt(2.0) / 4, 1e-15);
   EXPECT_NEAR(mid[1], std::sqrt(2 - std::sqrt(2.0)) / 2, 1e-15);
   EXPECT_NEAR(mid[2], (2 + std::sqrt(2.0)) / 4, 1e-15);
   // The seed's printed x, y, z (2 decimals) are right.
-  const double printed[5][3] = {{0.38, 0, 0.92}, {0.38, 0.20, 0.91}, {0.35, 0.38, 0.85}, {0.32, 0.56, 0.77}, {0.27, 0.71, 0.65}};
+  const double printed[5][3] = {
+      {0.38, 0, 0.92}, {0.38, 0.20, 0.91}, {0.35, 0.38, 0.85}, {0.32, 0.56, 0.77}, {0.27, 0.71, 0.65}};
   for (int k = 0; k < 5; ++k)
     for (int a = 0; a < 3; ++a) EXPECT_NEAR(printed[k][a], want[k][a], 5e-3 + 1e-12);
 }
@@ -285,7 +290,8 @@ TEST(OctantOracle, InversePixelCount) {
   for (int i = 0; i < 64; ++i)
     for (int j = 0; j < 64; ++j) {
       const auto r = toRaster((i + 0.5) / 64, (j + 0.5) / 64);
-      if (r[2] >= 0 && r[0] >= 21 && r[0] <= 22 && r[1] >= 15 && r[1] <= 16) ++texels, lines += pat.black[size_t(i)][size_t(j)];
+      if (r[2] >= 0 && r[0] >= 21 && r[0] <= 22 && r[1] >= 15 && r[1] <= 16)
+        ++texels, lines += pat.black[size_t(i)][size_t(j)];
     }
   EXPECT_EQ(texels, 17);
   EXPECT_EQ(lines, 4);

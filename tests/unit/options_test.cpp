@@ -243,7 +243,7 @@ TEST(Options, AdjustClampsAndFindsByName) {
   EXPECT_TRUE(o.adjust("zoom", [](double v) { return v * 1.5; }));
   EXPECT_FLOAT_EQ(s.zoom, 1.5f);
   EXPECT_TRUE(o.adjust("zoom", [](double v) { return v * 100; }));
-  EXPECT_FLOAT_EQ(s.zoom, 4.0f);  // clamped to the range
+  EXPECT_FLOAT_EQ(s.zoom, 4.0f);                                   // clamped to the range
   EXPECT_FALSE(o.adjust("zoom", [](double v) { return v + 1; }));  // already at the top
   EXPECT_TRUE(o.adjust("checks", [](double v) { return v + 2.6; }));
   EXPECT_EQ(s.checks, 11);
@@ -377,8 +377,8 @@ TEST(ParseSize, GoodAndBad) {
 // Claim: parseCommonFlags takes the shared flags (both "--f v" and "--f=v"),
 // passes everything else through in order, and refuses a directory as --png.
 TEST(CommonFlags, SplitsSharedFromDemoFlags) {
-  std::vector<std::string> args{"demo", "--diagonal", "bl-tr", "--png=out.png", "--size", "64x32",
-                                "--edges", "--quiet", "--frames", "3"};
+  std::vector<std::string> args{"demo",  "--diagonal", "bl-tr",   "--png=out.png", "--size",
+                                "64x32", "--edges",    "--quiet", "--frames",      "3"};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   ts::CommonFlags f;

@@ -54,7 +54,7 @@ TEST(Projectors, CylindricalAsPrintedSpansAQuarterAndCollidesOppositePoints) {
       if (ax == Axis::Z) p = {std::sin(th), std::cos(th), 0.0};
       double u = proj::angleU(ax, Formula::Printed, p), c = proj::angleU(ax, Formula::Corrected, p);
       lo = std::min(lo, u), hi = std::max(hi, u), clo = std::min(clo, c), chi = std::max(chi, c);
-      EXPECT_EQ(u, proj::angleU(ax, Formula::Printed, -p));  // p and -p collide
+      EXPECT_EQ(u, proj::angleU(ax, Formula::Printed, -p));                             // p and -p collide
       EXPECT_NEAR(std::abs(c - proj::angleU(ax, Formula::Corrected, -p)), 0.5, 1e-12);  // half a turn apart
     }
     EXPECT_NEAR(lo, -0.25, 1e-3);

@@ -31,7 +31,8 @@ ts::Panel squarePanel(const std::string& id, ts::Rect vp, int texture, glm::vec4
   ts::Batch b;
   b.role = "square";
   b.texture = texture;
-  for (glm::vec2 c : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)})
+  for (glm::vec2 c :
+       {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)})
     b.vertices.push_back({{c, 0}, {c, 0, 1}, color});
   p.batches.push_back(b);
   return p;

@@ -120,7 +120,9 @@ TEST(ZooFootprints, TheTwoLodForms) {
   EXPECT_NEAR(lodFormGap(footprint(3, 3, 90)), 0.0, 1e-12);
   // A square footprint at angle a: rho_edge = 1, rho_max = max(|cos a|, |sin a|).
   for (double a = 0; a <= 90; a += 7.5)
-    EXPECT_NEAR(lodFormGap(footprint(1, 1, a)), -std::log2(std::max(std::cos(a * kPi / 180), std::sin(a * kPi / 180))), 1e-12) << a;
+    EXPECT_NEAR(lodFormGap(footprint(1, 1, a)), -std::log2(std::max(std::cos(a * kPi / 180), std::sin(a * kPi / 180))),
+                1e-12)
+        << a;
 }
 
 // Claim: SAT's box over the true footprint, (|u_x| + |u_y|)(|v_x| + |v_y|) /
@@ -147,7 +149,8 @@ glm::dvec4 bruteMean(const ts::Image& img, long i0, long j0, long i1, long j1) {
   glm::dvec4 s(0.0);
   for (long j = j0; j < j1; ++j)
     for (long i = i0; i < i1; ++i) {
-      const ts::Rgba c = img.at(int(((i % img.width) + img.width) % img.width), int(((j % img.height) + img.height) % img.height));
+      const ts::Rgba c = img.at(int(((i % img.width) + img.width) % img.width),
+                                int(((j % img.height) + img.height) % img.height));
       s += glm::dvec4(c.r, c.g, c.b, c.a);
     }
   return s / double((i1 - i0) * (j1 - j0));

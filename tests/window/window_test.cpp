@@ -290,16 +290,17 @@ struct Proc {
   bool done = false;
   std::string describe() const {
     std::ostringstream o;
-    o << "$ " << commandLine(argv) << "\n  exit " << exitCode << (timedOut ? " (killed: no end after TS_WINDOW_HANG_SECONDS)" : "") << " after "
-      << seconds << " s\n  stderr: " << (err.empty() ? "(empty)" : err) << "\n";
+    o << "$ " << commandLine(argv) << "\n  exit " << exitCode
+      << (timedOut ? " (killed: no end after TS_WINDOW_HANG_SECONDS)" : "") << " after " << seconds
+      << " s\n  stderr: " << (err.empty() ? "(empty)" : err) << "\n";
     return o.str();
   }
 };
 
 struct Diff {
   long pixels = 0;
-  long anyDiff = 0;    // pixels whose largest RGB channel difference is > 0
-  long overSmall = 0;  // ... is > kSmallDiff, at the same position
+  long anyDiff = 0;      // pixels whose largest RGB channel difference is > 0
+  long overSmall = 0;    // ... is > kSmallDiff, at the same position
   long unexplained = 0;  // ... > kSmallDiff from every pixel of the other image's 3x3 neighbourhood
   int maxDiff = 0, maxAlphaDiff = 0;
   int worstX = -1, worstY = -1, unexplainedX = -1, unexplainedY = -1;
@@ -445,7 +446,9 @@ std::vector<std::string> flagsFor(const std::string& id, const ts::Options& o) {
 // One window run and one --png run of the same state, compared.
 // Measurements that are clock readings (a live view's ms per frame and fps).
 bool isTiming(const std::string& name) {
-  auto ends = [&](const std::string& s) { return name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0; };
+  auto ends = [&](const std::string& s) {
+    return name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0;
+  };
   return ends("_ms_per_frame") || ends("_fps");
 }
 
@@ -496,8 +499,7 @@ void windowVsPng(const std::string& id, const std::string& testName, const std::
   std::vector<std::string> lines = stateLines(win.out, expected);
   if (!expected.items().empty()) {
     ASSERT_FALSE(lines.empty()) << "the window printed no state line\n" << win.describe() << "stdout:\n" << win.out;
-    EXPECT_EQ(lines.back(), expected.stateText()) << "the last state line the window printed (--keys '" << keys
-                                                  << "')";
+    EXPECT_EQ(lines.back(), expected.stateText()) << "the last state line the window printed (--keys '" << keys << "')";
     for (const auto& l : lines)
       EXPECT_TRUE(l == initial.opts.stateText() || l == expected.stateText()) << "unexpected state line: " << l;
     EXPECT_LE(lines.size(), keys.size() + 1) << "more state lines than changes";
@@ -540,10 +542,9 @@ void windowVsPng(const std::string& id, const std::string& testName, const std::
   where += std::string("\n  bounds for --png backend ") + (egl ? "egl" : "osmesa");
   EXPECT_LE(frac, bounds.maxFraction) << d.overSmall << " of " << d.pixels << " pixels differ by more than "
                                       << kSmallDiff << where;
-  EXPECT_LE(d.unexplained, bounds.maxUnexplained)
-      << d.unexplained << " pixels differ by more than " << kSmallDiff
-      << " from every pixel within one pixel of them, first at (" << d.unexplainedX << "," << d.unexplainedY << ")"
-      << where;
+  EXPECT_LE(d.unexplained, bounds.maxUnexplained) << d.unexplained << " pixels differ by more than " << kSmallDiff
+                                                  << " from every pixel within one pixel of them, first at ("
+                                                  << d.unexplainedX << "," << d.unexplainedY << ")" << where;
 
   // The numbers the figure exists to show: the same in the window (printed
   // after its last state line) as in the --png render (after its title).
@@ -573,8 +574,19 @@ void paneBesideFigure(const std::string& id, const std::string& keys, const ts::
   std::remove(P.c_str());
   int figureW = ts::splitWindow(gWidth, true, true).figureW;  // side panel and GL pane open
   Proc win, png;
-  win.argv = {"xvfb-run", "-a", "-s", kXvfbScreen, prog, "--size", std::to_string(gWidth) + "x" + std::to_string(gHeight),
-              "--frames", std::to_string(kFrames), "--keys", keys, "--screenshot", W};
+  win.argv = {"xvfb-run",
+              "-a",
+              "-s",
+              kXvfbScreen,
+              prog,
+              "--size",
+              std::to_string(gWidth) + "x" + std::to_string(gHeight),
+              "--frames",
+              std::to_string(kFrames),
+              "--keys",
+              keys,
+              "--screenshot",
+              W};
   if (!env.empty()) {
     win.argv.insert(win.argv.begin(), env.begin(), env.end());
     win.argv.insert(win.argv.begin(), "env");
@@ -626,10 +638,22 @@ Proc windowRun(const std::string& id, const std::string& dir, const std::string&
                const std::string& mouse = "") {
   mkdirs(dir);
   Proc win;
-  win.argv = {"env", std::string("TS_SCREENSHOT_OVERLAY=") + (overlayShot ? "1" : "0"), "TS_TEST_MOUSE=" + mouse,
-              "xvfb-run", "-a", "-s",
-              kXvfbScreen, binDir() + "/" + id, "--size", std::to_string(gWidth) + "x" + std::to_string(gHeight),
-              "--frames", std::to_string(kFrames), "--keys", keys, "--screenshot", dir + "/window.png"};
+  win.argv = {"env",
+              std::string("TS_SCREENSHOT_OVERLAY=") + (overlayShot ? "1" : "0"),
+              "TS_TEST_MOUSE=" + mouse,
+              "xvfb-run",
+              "-a",
+              "-s",
+              kXvfbScreen,
+              binDir() + "/" + id,
+              "--size",
+              std::to_string(gWidth) + "x" + std::to_string(gHeight),
+              "--frames",
+              std::to_string(kFrames),
+              "--keys",
+              keys,
+              "--screenshot",
+              dir + "/window.png"};
   // Relative to the run's folder: F12 writes there.
   if (win.argv[7][0] != '/') {
     char cwd[4096];
@@ -652,8 +676,10 @@ Proc windowRun(const std::string& id, const std::string& dir, const std::string&
 // exited 0 (a test failure naming the run otherwise).
 bool runPrintedCommand(const std::string& id, const std::string& command, const std::string& dir) {
   Proc remake;
-  remake.argv = {"bash", "-c", "cd \"$0\" && exec \"$1\"/" + id + command.substr(10 + id.size()) +
-                                   " --png remade.png --json remade.json --quiet", dir, binDir()};
+  remake.argv = {"bash", "-c",
+                 "cd \"$0\" && exec \"$1\"/" + id + command.substr(10 + id.size()) +
+                     " --png remade.png --json remade.json --quiet",
+                 dir, binDir()};
   remake.outPath = dir + "/remake.stdout";
   remake.errPath = dir + "/remake.stderr";
   remake.spawn();
@@ -858,11 +884,22 @@ void resizeSequence(const std::string& id) {
   mkdirs(dir);
   std::string prog = binDir() + "/" + id, W = dir + "/window.png";
   std::string seq;
-  for (size_t i = 1; i < sizes.size(); ++i) seq += std::to_string(sizes[i].first) + "x" + std::to_string(sizes[i].second) + " ";
+  for (size_t i = 1; i < sizes.size(); ++i)
+    seq += std::to_string(sizes[i].first) + "x" + std::to_string(sizes[i].second) + " ";
   Proc win;
-  win.argv = {"env", "TS_TEST_RESIZE=" + seq, "xvfb-run", "-a", "-s", kXvfbScreen, prog,
-              "--size", std::to_string(gWidth) + "x" + std::to_string(gHeight), "--frames", std::to_string(kFrames),
-              "--screenshot", W};
+  win.argv = {"env",
+              "TS_TEST_RESIZE=" + seq,
+              "xvfb-run",
+              "-a",
+              "-s",
+              kXvfbScreen,
+              prog,
+              "--size",
+              std::to_string(gWidth) + "x" + std::to_string(gHeight),
+              "--frames",
+              std::to_string(kFrames),
+              "--screenshot",
+              W};
   win.outPath = dir + "/window.stdout";
   win.errPath = dir + "/window.stderr";
   win.spawn();
@@ -903,9 +940,10 @@ void resizeSequence(const std::string& id) {
     if (d.anyDiff) ts::writePng(dir + "/diff." + tag + ".png", picture);
     bool egl = pngs[i].out.find(" | egl | ") != std::string::npos;
     Bounds bounds = egl ? kEglBounds : kOsmesaBounds;
-    std::printf("[ measured ] %s/resize %s: %ld px (%.4f%%) differ by more than %d, %ld with no match within one pixel\n",
-                id.c_str(), tag.c_str(), d.overSmall, 100.0 * double(d.overSmall) / double(d.pixels), kSmallDiff,
-                d.unexplained);
+    std::printf(
+        "[ measured ] %s/resize %s: %ld px (%.4f%%) differ by more than %d, %ld with no match within one pixel\n",
+        id.c_str(), tag.c_str(), d.overSmall, 100.0 * double(d.overSmall) / double(d.pixels), kSmallDiff,
+        d.unexplained);
     EXPECT_LE(double(d.overSmall) / double(d.pixels), bounds.maxFraction)
         << "after resizing to " << tag << " the figure is not the --png render at " << figureW << "x" << wh << " ("
         << dir << ")";
@@ -939,7 +977,6 @@ void roundTrip(const std::string& id, const ts::Options& state, const std::strin
   }
   EXPECT_EQ(f.opts.stateText(), state.stateText()) << what << ": stateFlags() " << commandLine(flags);
 }
-
 
 // --- never frozen -----------------------------------------------------------
 // The window's test hooks (common/core/test_hooks.hpp): TS_TEST_SLOW_MEASURE_MS
@@ -984,9 +1021,9 @@ Proc hookedRun(const std::string& id, const std::string& dir, const std::vector<
   Proc win;
   win.argv = {"env", "TS_TEST_FRAME_LOG=" + dir + "/frames.log"};
   for (const auto& e : env) win.argv.push_back(e);
-  for (const std::string& a : {std::string("xvfb-run"), std::string("-a"), std::string("-s"), std::string(kXvfbScreen),
-                               binDir() + "/" + id, std::string("--size"),
-                               std::to_string(gWidth) + "x" + std::to_string(gHeight)})
+  for (const std::string& a :
+       {std::string("xvfb-run"), std::string("-a"), std::string("-s"), std::string(kXvfbScreen), binDir() + "/" + id,
+        std::string("--size"), std::to_string(gWidth) + "x" + std::to_string(gHeight)})
     win.argv.push_back(a);
   for (const auto& a : args) win.argv.push_back(a);
   win.outPath = dir + "/window.stdout";
@@ -1078,7 +1115,8 @@ void closeDuringMeasurement(const std::string& id) {
     EXPECT_NE(e.what, "result") << "a 10-minute measurement ended in a run that should have lasted seconds";
   }
   ASSERT_GE(quitAt, 0) << win.describe();
-  std::printf("[ measured ] %s/close_while_measuring: run %.2f s (measurement slowed to 10 min)\n", id.c_str(), win.seconds);
+  std::printf("[ measured ] %s/close_while_measuring: run %.2f s (measurement slowed to 10 min)\n", id.c_str(),
+              win.seconds);
   EXPECT_GE(measuringBeforeQuit, 1) << "q was not typed while the measurement ran";
   // The frame in which q is taken is finished; none follows it.
   EXPECT_LE(framesAfterQuit, 1) << "frames after q";
@@ -1110,7 +1148,7 @@ constexpr int kMarkTries = 3;
 // that (measured: 1512 px of #FFD933 and nothing near it for two marked
 // lines of quad_distortion's filter key).  One marked line gives hundreds.
 bool markYellow(ts::Rgba p) { return p.r >= 230 && p.g >= 190 && p.g <= 240 && p.b <= 90; }
-constexpr long kMarkedMin = 100;  // a capture with the marks shows more than this in the pane
+constexpr long kMarkedMin = 100;   // a capture with the marks shows more than this in the pane
 constexpr long kMarkedSlack = 10;  // before the key and after the marks: the baseline (0), give or take this
 
 double steadyNow() {
@@ -1177,8 +1215,8 @@ PaneReport paneReport(const std::string& printed, const ts::Options& o) {
 // One key pressed in the window, and what the pane showed after it.
 struct MarkLook {
   char key = 0;
-  int changed = -1;                // K of the recording after the key's measurement
-  std::vector<std::string> lines;  // its changed lines (the first 24)
+  int changed = -1;                          // K of the recording after the key's measurement
+  std::vector<std::string> lines;            // its changed lines (the first 24)
   long before = -1, marked = -1, gone = -1;  // marked pixels in the pane: just before the key, at 2 s, after 6 s
   double lookDone = 0, goneDone = 0;         // when those two captures finished, seconds after the key
   bool voided = false;                       // the capture at 2 s finished after kMarksVoidAfter
@@ -1212,10 +1250,23 @@ class XDemo {
     std::remove(logPath_.c_str());
     // The shell xvfb-run starts writes the server's DISPLAY and XAUTHORITY
     // (for xdotool and import) and its pid, then becomes the demo.
-    demo_.argv = {"bash", "-c", "cd \"$0\" && exec \"$@\"", dir_, "xvfb-run", "-a", "-s", screen_, "sh", "-c",
-                  "printf '%s\\n%s\\n%s\\n' \"$DISPLAY\" \"$XAUTHORITY\" \"$$\" > \"$0.part\" && mv \"$0.part\" \"$0\" && "
-                  "exec \"$@\"",
-                  envFile, "env", "TS_TEST_FRAME_LOG=" + logPath_, absolute(binDir()) + "/" + id_};
+    demo_.argv = {
+        "bash",
+        "-c",
+        "cd \"$0\" && exec \"$@\"",
+        dir_,
+        "xvfb-run",
+        "-a",
+        "-s",
+        screen_,
+        "sh",
+        "-c",
+        "printf '%s\\n%s\\n%s\\n' \"$DISPLAY\" \"$XAUTHORITY\" \"$$\" > \"$0.part\" && mv \"$0.part\" \"$0\" && "
+        "exec \"$@\"",
+        envFile,
+        "env",
+        "TS_TEST_FRAME_LOG=" + logPath_,
+        absolute(binDir()) + "/" + id_};
     demo_.argv.insert(demo_.argv.end(), args_.begin(), args_.end());
     demo_.outPath = dir_ + "/window.stdout";
     demo_.errPath = dir_ + "/window.stderr";
@@ -1246,7 +1297,8 @@ class XDemo {
   // l: the pane opens and records the picture's calls.
   bool openPane() {
     return typeKey('l') &&
-           waitFor([&] { return paneReport(out(), state_.opts).recorded; }, "the pane's first recording (\"gl pane:\")") &&
+           waitFor([&] { return paneReport(out(), state_.opts).recorded; },
+                   "the pane's first recording (\"gl pane:\")") &&
            poke();
   }
 
@@ -1443,18 +1495,20 @@ class XDemo {
 // the key is pressed again, up to kMarkTries times.
 void glPaneMarksHold(const std::string& id, const std::vector<std::pair<char, std::string>>& extra) {
   for (const char* tool : {"xdotool", "import"})
-    ASSERT_FALSE(findOnPath(tool).empty()) << tool << " is not on PATH: scripts/setup.sh installs it (xdotool, imagemagick)";
+    ASSERT_FALSE(findOnPath(tool).empty())
+        << tool << " is not on PATH: scripts/setup.sh installs it (xdotool, imagemagick)";
   std::string dir = outDir() + "/" + id + "/gl_pane_marks";
   XDemo demo(id, dir);
   ASSERT_TRUE(demo.start()) << demo.why();
   ASSERT_TRUE(demo.openPane()) << demo.why();
-  std::printf("[ window   ] %s/gl_pane_marks: window %s, %s\n", id.c_str(), demo.window().c_str(), demo.geometry().c_str());
+  std::printf("[ window   ] %s/gl_pane_marks: window %s, %s\n", id.c_str(), demo.window().c_str(),
+              demo.geometry().c_str());
   int presses = 0;
   auto report = [&](const MarkLook& r) {
     std::printf("[ measured ] %s/gl_pane_marks key '%c': %d lines changed; marked px in the pane: %ld before the key, "
                 "%ld at %.2f s%s, %ld at %.2f s\n",
-                id.c_str(), r.key, r.changed, r.before, r.marked, r.lookDone, r.voided ? " (void: too late)" : "", r.gone,
-                r.goneDone);
+                id.c_str(), r.key, r.changed, r.before, r.marked, r.lookDone, r.voided ? " (void: too late)" : "",
+                r.gone, r.goneDone);
     std::fflush(stdout);
   };
   auto tag = [&](char k) { return "press" + std::to_string(++presses) + "_" + keyLabel(k); };
@@ -1471,7 +1525,8 @@ void glPaneMarksHold(const std::string& id, const std::vector<std::pair<char, st
     r = MarkLook{};
     ASSERT_TRUE(demo.look(k, tag(k), &r)) << demo.why();
     if (r.changed > 0) break;
-    std::printf("[ note     ] %s/gl_pane_marks: key '%c' changes no GL call (0 changed); the next key\n", id.c_str(), k);
+    std::printf("[ note     ] %s/gl_pane_marks: key '%c' changes no GL call (0 changed); the next key\n", id.c_str(),
+                k);
   }
   ASSERT_GT(r.changed, 0) << "no key of the demo changed a GL call";
   std::vector<std::pair<char, std::string>> keys = {{r.key, ""}};
@@ -1499,12 +1554,14 @@ void glPaneMarksHold(const std::string& id, const std::vector<std::pair<char, st
           << "key '" << k << "': marks still shown " << r.goneDone << " s after the key, "
           << ts::GlPane::kHighlightSeconds << " s after they appeared: " << shots;
       if (!r.voided) {
-        EXPECT_GT(r.marked, kMarkedMin) << "key '" << k << "' (" << r.changed << " lines changed): no marked line in the pane "
-                                        << r.lookDone << " s after the key, across its re-record: " << shots;
+        EXPECT_GT(r.marked, kMarkedMin) << "key '" << k << "' (" << r.changed
+                                        << " lines changed): no marked line in the pane " << r.lookDone
+                                        << " s after the key, across its re-record: " << shots;
         break;
       }
       std::printf("[ void     ] %s/gl_pane_marks key '%c': the capture finished %.2f s after the key (a busy machine); "
-                  "%s\n", id.c_str(), k, r.lookDone, attempt < kMarkTries ? "pressing it again" : "no try left");
+                  "%s\n",
+                  id.c_str(), k, r.lookDone, attempt < kMarkTries ? "pressing it again" : "no try left");
       if (attempt == kMarkTries) {
         inconclusive = true;
         break;
@@ -1516,8 +1573,10 @@ void glPaneMarksHold(const std::string& id, const std::vector<std::pair<char, st
   ASSERT_TRUE(demo.quit()) << demo.why();
   if (inconclusive) {
     char why[160];
-    std::snprintf(why, sizeof why, "a key's every capture at %.1f s finished after %.1f s (a busy machine): its marks "
-                  "were neither seen nor missed", kMarksLookAfter, kMarksVoidAfter);
+    std::snprintf(why, sizeof why,
+                  "a key's every capture at %.1f s finished after %.1f s (a busy machine): its marks "
+                  "were neither seen nor missed",
+                  kMarksLookAfter, kMarksVoidAfter);
     GTEST_SKIP() << why;
   }
 }
@@ -1624,7 +1683,8 @@ std::pair<int, int> drawnPixel(const ts::Image& shot, int x0, int y0, int w, int
 
 void inspectModeClicks(const std::string& id) {
   for (const char* tool : {"xdotool", "import"})
-    ASSERT_FALSE(findOnPath(tool).empty()) << tool << " is not on PATH: scripts/setup.sh installs it (xdotool, imagemagick)";
+    ASSERT_FALSE(findOnPath(tool).empty())
+        << tool << " is not on PATH: scripts/setup.sh installs it (xdotool, imagemagick)";
   Fresh probe(id);
   const char key = inspectKey(probe.opts);
   for (const auto& [w, h] : std::vector<std::pair<int, int>>{{640, 480}, {1280, 720}}) {
@@ -1674,8 +1734,8 @@ void inspectModeClicks(const std::string& id) {
     double lambdaBase = 0, bias = 0, lambda = 0;
     const std::string lambdaLine = card.line("lambda ");
     if (!lambdaLine.empty()) {
-      ASSERT_EQ(
-          std::sscanf(lambdaLine.c_str(), "lambda = log2(rho) %lf + bias %lf = %lf", &lambdaBase, &bias, &lambda), 3)
+      ASSERT_EQ(std::sscanf(lambdaLine.c_str(), "lambda = log2(rho) %lf + bias %lf = %lf", &lambdaBase, &bias, &lambda),
+                3)
           << lambdaLine;
       EXPECT_TRUE(std::isfinite(lambda) && std::isfinite(lambdaBase)) << lambdaLine;
     }
@@ -1728,7 +1788,8 @@ void inspectModeClicks(const std::string& id) {
     // its texture's binding.
     {
       ASSERT_TRUE(demo.press("l")) << demo.why();
-      ASSERT_TRUE(demo.await([&] { return demo.printed().find("gl pane: ") != std::string::npos; }, "the pane's listing"))
+      ASSERT_TRUE(
+          demo.await([&] { return demo.printed().find("gl pane: ") != std::string::npos; }, "the pane's listing"))
           << demo.why();
       ASSERT_TRUE(demo.newFrame() && demo.shoot("pane.png")) << demo.why();
       const int paneFigureW = ts::splitWindow(w, true, true).figureW;
@@ -1746,8 +1807,9 @@ void inspectModeClicks(const std::string& id) {
       // A card of a batch names it ("panel 1 'canvas'  batch 0 ..."); the
       // background's names only its panel, and has no calls to mark.
       if (second.where.find(" batch ") == std::string::npos) {
-        std::printf("[ note ] %s/inspect_mode %s: the pixel found drawn with the pane open, %d,%d, is %s: no batch to mark\n",
-                    id.c_str(), size.c_str(), qx, qy, second.lines.front().c_str());
+        std::printf(
+            "[ note ] %s/inspect_mode %s: the pixel found drawn with the pane open, %d,%d, is %s: no batch to mark\n",
+            id.c_str(), size.c_str(), qx, qy, second.lines.front().c_str());
       } else {
         int marked = -1;
         std::string out;
@@ -1923,21 +1985,23 @@ void registerAll() {
     fullCase(id, "reset_equals_arrow", [id] { resetEqualsArrow(id); });
     if (smoke) registerCase(id, "help_and_save", [id] { helpAndSave(id); });
     fullCase(id, "mouse_orbit", [id] { mouseOrbit(id); });
-    if (probe.opts.has("light1-az") && probe.opts.has("light1-el")) fullCase(id, "mouse_light", [id] { mouseLight(id); });
+    if (probe.opts.has("light1-az") && probe.opts.has("light1-el"))
+      fullCase(id, "mouse_light", [id] { mouseLight(id); });
     if (probe.opts.has("texture")) fullCase(id, "drop_file", [id] { dropFile(id); });
     if (id == "quad_distortion" || id == "parallax_aniso") {
       fullCase(id, "never_frozen", [id] { framesKeepComing(id); });
       fullCase(id, "close_while_measuring", [id] { closeDuringMeasurement(id); });
     }
-    if (smoke) registerCase(id, "state_flags_round_trip", [id, keys] {
-      Fresh f(id);
-      roundTrip(id, f.opts, "initial state");
-      for (const auto& kv : keys) {
-        Fresh g(id);
-        g.opts.handleKey(kv.first);
-        roundTrip(id, g.opts, std::string("after key '") + kv.first + "'");
-      }
-    });
+    if (smoke)
+      registerCase(id, "state_flags_round_trip", [id, keys] {
+        Fresh f(id);
+        roundTrip(id, f.opts, "initial state");
+        for (const auto& kv : keys) {
+          Fresh g(id);
+          g.opts.handleKey(kv.first);
+          roundTrip(id, g.opts, std::string("after key '") + kv.first + "'");
+        }
+      });
   }
 }
 }  // namespace
@@ -1956,8 +2020,8 @@ int main(int argc, char** argv) {
       Diff d = compare(a, b, &picture);
       std::printf("max channel diff %d at (%d,%d); %ld px differ; %ld px (%.4f%%) by more than %d, %ld of them with "
                   "no match within one pixel\n",
-                  d.maxDiff, d.worstX, d.worstY, d.anyDiff, d.overSmall,
-                  100.0 * double(d.overSmall) / double(d.pixels), kSmallDiff, d.unexplained);
+                  d.maxDiff, d.worstX, d.worstY, d.anyDiff, d.overSmall, 100.0 * double(d.overSmall) / double(d.pixels),
+                  kSmallDiff, d.unexplained);
       if (argc >= 5) ts::writePng(argv[4], picture);
       return 0;
     } catch (const std::exception& e) {
