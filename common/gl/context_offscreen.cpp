@@ -166,13 +166,16 @@ class EglContext final : public Context {
       *why = "libEGL lacks eglGetProcAddress";
       return nullptr;
     }
-#define TS_EGL(field, name) e.field = reinterpret_cast<decltype(e.field)>(dlsym(lib, name));
-    TS_EGL(initialize, "eglInitialize")
-    TS_EGL(terminate, "eglTerminate") TS_EGL(bindAPI, "eglBindAPI") TS_EGL(createContext, "eglCreateContext")
-        TS_EGL(destroyContext, "eglDestroyContext") TS_EGL(makeCurrent, "eglMakeCurrent")
-            TS_EGL(queryString, "eglQueryString")
+#define TS_EGL(field, name) e.field = reinterpret_cast<decltype(e.field)>(dlsym(lib, name))
+    TS_EGL(initialize, "eglInitialize");
+    TS_EGL(terminate, "eglTerminate");
+    TS_EGL(bindAPI, "eglBindAPI");
+    TS_EGL(createContext, "eglCreateContext");
+    TS_EGL(destroyContext, "eglDestroyContext");
+    TS_EGL(makeCurrent, "eglMakeCurrent");
+    TS_EGL(queryString, "eglQueryString");
 #undef TS_EGL
-                e.getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+    e.getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
         e.getProcAddress("eglGetPlatformDisplayEXT"));
     e.queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(e.getProcAddress("eglQueryDevicesEXT"));
     if (!e.initialize || !e.createContext || !e.makeCurrent || !e.getPlatformDisplay) {

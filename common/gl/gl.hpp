@@ -36,34 +36,48 @@
 #include <string>
 
 // Every GL function the suite calls.  Keep alphabetical within a group.
-#define TS_GL_FUNCTIONS(X)                                                                                             \
-  /* GL 1.x fixed function */                                                                                          \
-  X(glAccum)                                                                                                           \
-  X(glBegin) X(glBindTexture) X(glBlendFunc) X(glClear) X(glClearColor) X(glClearDepth) X(glColor4f) X(glColorPointer) \
-      X(glDeleteTextures) X(glDepthFunc) X(glDisable) X(glDisableClientState) X(glDrawElements) X(glEnable)            \
-          X(glEnableClientState) X(glEnd) X(glFinish) X(glFlush) X(glFrustum) X(glGenTextures) X(glGetError)           \
-              X(glGetFloatv) X(glGetIntegerv) X(glGetString) X(glGetTexImage) X(glHint) X(glIsEnabled) X(glLineWidth)  \
-                  X(glLoadIdentity) X(glLoadMatrixf) X(glMatrixMode) X(glOrtho) X(glPixelStorei) X(glPointSize)        \
-                      X(glPopAttrib) X(glPopMatrix) X(glPushAttrib) X(glPushMatrix) X(glReadBuffer) X(glReadPixels)    \
-                          X(glScissor) X(glShadeModel) X(glTexCoord2f) X(glTexCoord4f) X(glTexCoordPointer)            \
-                              X(glTexEnvfv) X(glTexEnvi) X(glTexImage2D) X(glTexParameterf) X(glTexParameterfv)        \
-                                  X(glTexParameteri) X(glVertex2f) X(glVertex3f) X(glVertexPointer) X(glViewport)      \
-                                      X(glDrawBuffer) X(glNormal3f) X(glTexCoord3f) X(glTexGeni) X(glTexGenfv)         \
-                                          X(glClipPlane) X(glAlphaFunc) X(glRotatef) X(glScalef)                       \
-                                              X(glTranslatef) /* GL 1.2 */                                             \
-      X(glTexImage3D)                                         /* GL 1.3+ multitexture, compressed textures */          \
-      X(glActiveTexture) X(glCompressedTexImage2D) X(glGetTexLevelParameteriv) X(glMultiTexCoord2f)                    \
-          X(glCopyTexImage2D) X(glMultiTexCoord4f) /* GL 1.4 */                                                        \
-      X(glBlendFuncSeparate) X(glSecondaryColor3f) /* GL 2.0+ shaders */                                               \
-      X(glAttachShader) X(glCompileShader) X(glCreateProgram) X(glCreateShader) X(glDeleteProgram) X(glDeleteShader)   \
-          X(glGetProgramInfoLog) X(glGetProgramiv) X(glGetShaderInfoLog) X(glGetShaderiv) X(glGetUniformLocation)      \
-              X(glLinkProgram) X(glShaderSource) X(glUniform1f) X(glUniform1i) X(glUniform2f) X(glUniform3f)           \
-                  X(glUniform4f) X(glUseProgram) X(glBindAttribLocation) X(glGetAttribLocation)                        \
-                      X(glUniformMatrix3fv) /* GL 3.0+ framebuffer objects */                                          \
-      X(glBindFramebuffer) X(glBindRenderbuffer) X(glCheckFramebufferStatus) X(glDeleteFramebuffers)                   \
-          X(glDeleteRenderbuffers) X(glFramebufferRenderbuffer) X(glFramebufferTexture2D) X(glGenFramebuffers)         \
-              X(glGenRenderbuffers) X(glRenderbufferStorage) X(glGetStringi) /* GL 4.3 / KHR_debug */                  \
-      X(glDebugMessageCallback)
+// One line per GL version, as the comments group them: not reflowed.
+// clang-format off
+#define TS_GL_FUNCTIONS(X)                                                     \
+  /* GL 1.x fixed function */                                                  \
+  X(glAccum) X(glBegin) X(glBindTexture) X(glBlendFunc) X(glClear)             \
+  X(glClearColor) X(glClearDepth) X(glColor4f) X(glColorPointer)               \
+  X(glDeleteTextures) X(glDepthFunc) X(glDisable) X(glDisableClientState)      \
+  X(glDrawElements) X(glEnable) X(glEnableClientState) X(glEnd) X(glFinish)    \
+  X(glFlush) X(glFrustum) X(glGenTextures) X(glGetError) X(glGetFloatv)        \
+  X(glGetIntegerv) X(glGetString) X(glGetTexImage) X(glHint) X(glIsEnabled)    \
+  X(glLineWidth) X(glLoadIdentity) X(glLoadMatrixf) X(glMatrixMode)            \
+  X(glOrtho) X(glPixelStorei) X(glPointSize) X(glPopAttrib) X(glPopMatrix)     \
+  X(glPushAttrib) X(glPushMatrix) X(glReadBuffer) X(glReadPixels)              \
+  X(glScissor) X(glShadeModel) X(glTexCoord2f) X(glTexCoord4f)                 \
+  X(glTexCoordPointer) X(glTexEnvfv) X(glTexEnvi) X(glTexImage2D) X(glTexParameterf)         \
+  X(glTexParameterfv) X(glTexParameteri) X(glVertex2f) X(glVertex3f)           \
+  X(glVertexPointer) X(glViewport) X(glDrawBuffer)                             \
+  X(glNormal3f) X(glTexCoord3f) X(glTexGeni) X(glTexGenfv) X(glClipPlane)      \
+  X(glAlphaFunc) X(glRotatef) X(glScalef) X(glTranslatef)                     \
+  /* GL 1.2 */                                                                 \
+  X(glTexImage3D)                                                              \
+  /* GL 1.3+ multitexture, compressed textures */                             \
+  X(glActiveTexture) X(glCompressedTexImage2D) X(glGetTexLevelParameteriv)     \
+  X(glMultiTexCoord2f) X(glCopyTexImage2D) X(glMultiTexCoord4f)              \
+  /* GL 1.4 */                                                                 \
+  X(glBlendFuncSeparate) X(glSecondaryColor3f)                                 \
+  /* GL 2.0+ shaders */                                                        \
+  X(glAttachShader) X(glCompileShader) X(glCreateProgram) X(glCreateShader)    \
+  X(glDeleteProgram) X(glDeleteShader) X(glGetProgramInfoLog)                  \
+  X(glGetProgramiv) X(glGetShaderInfoLog) X(glGetShaderiv)                     \
+  X(glGetUniformLocation) X(glLinkProgram) X(glShaderSource) X(glUniform1f)    \
+  X(glUniform1i) X(glUniform2f) X(glUniform3f) X(glUniform4f) X(glUseProgram)  \
+  X(glBindAttribLocation) X(glGetAttribLocation)                               \
+  X(glUniformMatrix3fv)                                                        \
+  /* GL 3.0+ framebuffer objects */                                            \
+  X(glBindFramebuffer) X(glBindRenderbuffer) X(glCheckFramebufferStatus)       \
+  X(glDeleteFramebuffers) X(glDeleteRenderbuffers)                             \
+  X(glFramebufferRenderbuffer) X(glFramebufferTexture2D) X(glGenFramebuffers)  \
+  X(glGenRenderbuffers) X(glRenderbufferStorage) X(glGetStringi)               \
+  /* GL 4.3 / KHR_debug */                                                     \
+  X(glDebugMessageCallback)
+// clang-format on
 
 namespace ts::gl {
 // One table per thread: a thread's GL calls go to the context that thread
