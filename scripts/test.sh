@@ -13,9 +13,11 @@
 #                                 on Mesa's second rasterizer (softpipe) and on
 #                                 the EGL surfaceless backend, the benchmark
 #                                 programs compiled (not run: scripts/bench.sh
-#                                 runs them), then each libFuzzer target (the
+#                                 runs them), the Windows build tested under
+#                                 Wine (scripts/windows.sh --test),
+#                                 then each libFuzzer target (the
 #                                 decoders and the sidecar reader under ASan +
-#                                 UBSan) for TS_FUZZ_SECONDS (default 90), two
+#                                 UBSan) for TS_FUZZ_SECONDS (default 60), two
 #                                 at a time.
 #   bash scripts/test.sh --asan   the sanitizer level, by hand: the suite
 #                                 built with AddressSanitizer +
@@ -99,8 +101,13 @@ elif [ "$level" = full ]; then
   # so they cannot rot.
   stage "compile the benchmarks (build/, not run)" bash -c 'cmake --preset default -DTS_BUILD_BENCHMARKS=ON >/dev/null &&
     cmake --build --preset default --target bench_figures bench_window bench_jitter bench_parallax'
+  # The Windows build (MinGW-w64, its libraries cross-built from Debian's
+  # sources) under Wine on Xvfb against this build: every figure and every
+  # measurement in it, the command line's errors, one window per demo and the
+  # exercise checker as a child process (tests/windows/wine_test.sh).
+  stage "Windows build, tested under Wine" bash scripts/windows.sh --test
   targets=$(ls fuzz/fuzz_*.cpp | wc -l)
-  each=${TS_FUZZ_SECONDS:-90}
+  each=${TS_FUZZ_SECONDS:-60}
   stage "fuzzing: $targets targets, $each s each" bash fuzz/run.sh "$each"
 fi
 printf '\nstage durations (%s level%s, %d s in all):\n%s' "$level" "$([ "$load" = 1 ] && echo ', under two busy loops')" \
