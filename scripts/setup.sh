@@ -16,6 +16,7 @@ packages=(
   xdotool imagemagick                    # window tests: real X key events, and the screen read back (import)
   clang libclang-rt-14-dev               # libFuzzer and its sanitizer runtimes (fuzz preset)
   valgrind zlib1g-dev                    # memcheck over a figure run; zlib for the corpus generator
+  clang-format                           # the style check (tests/format_check.sh)
 )
 
 missing=()
