@@ -31,6 +31,8 @@
 //   AB stored: a texture rendered from a frame of its own (a nested frame, multitexture_frames.hpp)
 //   glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE_ADD_ATI);  // t_r t_g + t_d i_diff
 //   glActiveTexture(GL_TEXTURE1); glMatrixMode(GL_TEXTURE); glLoadMatrixf(M1);  // the moving spot
+// Listings: book_figures/alpha_cutout_tree.gl.txt, light_map_resolution.gl.txt, gloss_map.gl.txt,
+// multitexture_ab_cd.gl.txt.
 #include <string>
 
 #include "common/core/error.hpp"

@@ -37,6 +37,8 @@
 // the sidecar has every value), the pattern ts::lineGrid(64, 4) on a unit
 // square.  measure() renders the 32 x 32 raster with GL_NEAREST, trilinear and
 // anisotropic 16x and reads the intensities back.
+// Listings: book_figures/octant_tables.gl.txt, octant_catmull.gl.txt,
+// octant_inverse_pixel.gl.txt, octant_methods.gl.txt.
 //
 // Measured: the worked answers from octant_mapping_math.hpp (catmull_fraction,
 // inverse_fraction, table_xyz[u=1/4,w=1/2].x/.y/.z), and over the raster's

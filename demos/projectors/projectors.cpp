@@ -28,6 +28,8 @@
 //   the batch's planeModelview (GL keeps plane·M⁻¹).  The slide adds
 //   glClipPlane(GL_CLIP_PLANE0, Q row).  The solid texture is glTexImage3D, 64³.
 //   Non-linear projectors run per fragment in projectors_gl.hpp's GLSL.
+//   Listings: book_figures/projectors_seed002.gl.txt, projectors_box_vs_planar.gl.txt,
+//   projectors_texgen_swim.gl.txt, slide_projector.gl.txt.
 //
 // Measured from texel-index renders (projectors_measure.hpp): columns/rows used and
 // mismatches against the corrected formula per axis, the spherical tv at the
