@@ -1,4 +1,4 @@
-// tests/figures/fig_texture_compression_test.cpp — seed 001's texture-memory
+// demos/texture_compression/texture_compression_test.cpp — seed 001's texture-memory
 // claims (demos/texture_compression): DXT1's size and ratios, its blocks'
 // colours, GL's decode against the suite's, and the memory numbers, each
 // against a value computed here; and the codec (texture_compression_math.hpp) on blocks

@@ -1,4 +1,4 @@
-// tests/figures/fig_octant_mapping_test.cpp — Rogers' worked examples (seed
+// demos/octant_mapping/octant_mapping_test.cpp — Rogers' worked examples (seed
 // 004, demos/octant_mapping): the demo's measurements against the answers
 // tests/unit/octant_test.cpp recomputes from first principles without the
 // demo's code (7/16; the table to 3 decimals; 18 texel centres, 5 on lines,

@@ -1,4 +1,4 @@
-// tests/figures/fig_torus_test.cpp — Figure VI.6 and Exercise VI.2
+// demos/torus/torus_test.cpp — Figure VI.6 and Exercise VI.2
 // (demos/torus): where the texture's centre (1/2, 1/2) lands on the torus,
 // checked in rendered images against the answer in demos/torus/torus_math.hpp:
 // (0, 0, -(R - r)) with s = θ/360, t = φ/360 and (0, 0, R + r) with

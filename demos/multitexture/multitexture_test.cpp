@@ -1,4 +1,4 @@
-// tests/figures/fig_multitexture_test.cpp — seed 001's multitexturing claims
+// demos/multitexture/multitexture_test.cpp — seed 001's multitexturing claims
 // (demos/multitexture), each against a value computed here: the alpha test
 // hides no sky and blending's fringe is gone with it; a cross tree's least
 // width is cos 45°; light maps converge on per-pixel lighting; the gloss map's

@@ -1,4 +1,4 @@
-// tests/figures/fig_cylinder_seam_test.cpp — Figures VI.3, VI.4 and Exercise
+// demos/cylinder_seam/cylinder_seam_test.cpp — Figures VI.3, VI.4 and Exercise
 // VI.1 (demos/cylinder_seam): the label on the cylinder and the patch across
 // the seam, checked from renders against the mathematics in
 // demos/cylinder_seam/cylinder_seam_math.hpp, never against a stored image.

@@ -1,4 +1,4 @@
-// tests/figures/fig_mipmap_popping_test.cpp — Section VI.1.3 (mipmapping and
+// demos/mipmap_popping/mipmap_popping_test.cpp — Section VI.1.3 (mipmapping and
 // popping), rendered offscreen and checked against the mathematics of
 // demos/mipmap_popping/mipmap_popping_math.hpp, never against a stored image:
 //   * the mip chain GL samples is the book's 2x2 average and costs ~1/3;

@@ -1,4 +1,4 @@
-// tests/figures/fig_environment_mapping_test.cpp — demos/environment_mapping:
+// demos/environment_mapping/environment_mapping_test.cpp — demos/environment_mapping:
 // each claim checked from GL read-backs, as relations between variants or
 // against bounds the geometry gives, never against stored numbers.
 //

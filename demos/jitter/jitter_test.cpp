@@ -1,4 +1,4 @@
-// tests/figures/fig_jitter_test.cpp — Figure VI.7 (jittered supersampling).
+// demos/jitter/jitter_test.cpp — Figure VI.7 (jittered supersampling).
 //
 // The claims of Buss VI.1.4, each checked against numbers the demo measures
 // or against the CPU model of demos/jitter/jitter_math.hpp, never against a

@@ -1,4 +1,4 @@
-// tests/figures/fig_sphere_projections_test.cpp — Figure VI.5 (two sphere
+// demos/sphere_projections/sphere_projections_test.cpp — Figure VI.5 (two sphere
 // projections): the formulas, the area ratio by latitude band (analytic,
 // from the mesh, measured from a render), the pinch at the poles, and the
 // pictures, checked against the mathematics of

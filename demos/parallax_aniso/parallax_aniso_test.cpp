@@ -1,4 +1,4 @@
-// tests/figures/fig_parallax_aniso_test.cpp — seed 003: parallax mapping with
+// demos/parallax_aniso/parallax_aniso_test.cpp — seed 003: parallax mapping with
 // anisotropic filtering that knows what the relief hides.
 //
 // What is asserted, never against a stored image or a stored number:

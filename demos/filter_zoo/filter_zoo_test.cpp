@@ -1,4 +1,4 @@
-// tests/figures/fig_filter_zoo_test.cpp — the filter zoo, rendered
+// demos/filter_zoo/filter_zoo_test.cpp — the filter zoo, rendered
 // offscreen: the numbers measure() prints against their closed
 // forms (computed here again), GL's filters against the exact area integral
 // with margins, and the GL pictures against the homography they must show.

@@ -1,4 +1,4 @@
-// tests/figures/fig_bump_mapping_test.cpp — demos/bump_mapping: each bump
+// demos/bump_mapping/bump_mapping_test.cpp — demos/bump_mapping: each bump
 // method's normal against the truly displaced surface, from renders, never
 // against stored numbers.  What is asserted are relations the mathematics
 // fixes: Blinn's form (seed 004) and a normal map are near the displaced

@@ -1,4 +1,4 @@
-// tests/figures/fig_wrap_modes_test.cpp — demos/wrap_modes: the wrap modes,
+// demos/wrap_modes/wrap_modes_test.cpp — demos/wrap_modes: the wrap modes,
 // the texture matrix and the texture environment, checked from renders
 // against the formulas of demos/wrap_modes/wrap_modes_math.hpp, never against a
 // stored image.

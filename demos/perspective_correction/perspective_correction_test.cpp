@@ -1,4 +1,4 @@
-// tests/figures/fig_perspective_correction_test.cpp — Figure VI.2 (hyperbolic
+// demos/perspective_correction/perspective_correction_test.cpp — Figure VI.2 (hyperbolic
 // interpolation), rendered offscreen and probed against the mathematics of
 // demos/perspective_correction/perspective_correction_math.hpp, never against a stored
 // image:

@@ -1,4 +1,4 @@
-// tests/figures/vi1_quad_distortion_test.cpp — Figure VI.1 (quad distortion),
+// demos/quad_distortion/vi1_quad_distortion_test.cpp — Figure VI.1 (quad distortion),
 // rendered offscreen and checked the way conformance suites check pictures:
 // probe pixels whose correct colour is known from the mathematics
 // (demos/quad_distortion/quad_distortion_math.hpp) with a tolerance from the channel

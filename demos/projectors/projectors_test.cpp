@@ -1,4 +1,4 @@
-// tests/figures/fig_projectors_test.cpp — demos/projectors: seed 002's wraps
+// demos/projectors/projectors_test.cpp — demos/projectors: seed 002's wraps
 // as printed against corrected, box mapping's stretch, glTexGen OBJECT_LINEAR
 // against EYE_LINEAR, the slide projector, the solid texture, the cube.
 // Every number the demo prints comes from texel-index renders; here each is
