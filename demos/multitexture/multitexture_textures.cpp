@@ -1,4 +1,4 @@
-#include "common/core/multitexture_textures.hpp"
+#include "demos/multitexture/multitexture_textures.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "common/core/error.hpp"
+#include "common/core/texture_generators.hpp"
 
 namespace ts::multitex {
 namespace {
@@ -230,3 +231,6 @@ bool remake(const std::string& name, const std::vector<std::pair<std::string, st
   return false;
 }
 }  // namespace ts::multitex
+
+// The sidecar reader finds these through the registry (common/core/texture_generators.hpp).
+TS_REGISTER_TEXTURE_GENERATOR("multitexture_*", ts::multitex::remake);

@@ -1,6 +1,7 @@
-// common/core/multitexture_textures.hpp — the multitexture demo's textures
+// demos/multitexture/multitexture_textures.hpp — the multitexture demo's textures
 // as named generators, so that a figure's sidecar alone remakes
-// them (reference/sidecar_reader.cpp's remakeTexture): the name and params
+// them (reference/sidecar_reader.cpp's remakeTexture, through the generator
+// registry: multitexture_textures.cpp registers them): the name and params
 // of each TextureDesc say how it was made.  Images are indexed as GL uploads
 // them: texel (i, j), row j = 0 at t = 0 (the bottom).
 #pragma once
