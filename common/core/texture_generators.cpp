@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "common/core/dxt1_pictures.hpp"
 #include "common/core/env_maps.hpp"
 #include "common/core/error.hpp"
 #include "common/core/textures.hpp"
@@ -40,7 +39,6 @@ const std::vector<TextureGenerator>& coreGenerators() {
   static const std::vector<TextureGenerator> core = {
       {"checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, environment_map",
        coreTexture},
-      {"dxt1_picture", dxt1::remake},  // the DXT1 pictures (common/core/dxt1_pictures.hpp)
   };
   return core;
 }

@@ -1,5 +1,5 @@
-// common/core/dxt1_pictures.cpp — see dxt1_pictures.hpp.
-#include "common/core/dxt1_pictures.hpp"
+// demos/texture_compression/texture_compression_textures.cpp — see texture_compression_textures.hpp.
+#include "demos/texture_compression/texture_compression_textures.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,6 +7,7 @@
 
 #include "common/core/error.hpp"
 #include "common/core/relief_maps.hpp"
+#include "common/core/texture_generators.hpp"
 #include "common/core/textures.hpp"
 
 namespace ts::dxt1 {
@@ -130,7 +131,10 @@ bool remake(const std::string& name, const std::vector<std::pair<std::string, st
   const Image whole = made(which, three == "1", show);
   if (c.w > whole.width - c.x || c.h > whole.height - c.y) throw Error(name + ": the crop leaves the picture");
   *out = pictureTexture(which, three == "1", show, c, cropOf(whole, c));
-  if (show == Show::DecodedGl) out->texelSlack = 1.0f;  // the extension's fractions: dxt1_pictures.hpp
+  if (show == Show::DecodedGl) out->texelSlack = 1.0f;  // the extension's fractions: texture_compression_textures.hpp
   return true;
 }
 }  // namespace ts::dxt1
+
+// The sidecar reader finds it through the registry (common/core/texture_generators.hpp).
+TS_REGISTER_TEXTURE_GENERATOR("dxt1_picture", ts::dxt1::remake);

@@ -1,8 +1,9 @@
-// common/core/dxt1_pictures.hpp — the texture-compression demo's pictures
+// demos/texture_compression/texture_compression_textures.hpp — the texture-compression demo's pictures
 // (seed 001 ¶19–24) as a named generator, so that a figure's sidecar alone
-// remakes them (reference/sidecar_reader.cpp's remakeTexture): the 512 x 512
+// remakes them (reference/sidecar_reader.cpp's remakeTexture, through the generator
+// registry: texture_compression_textures.cpp registers it): the 512 x 512
 // picture, its DXT1 decode, the error, and the same memory at RGB565, whole
-// or a crop of them.  The codec itself is dxt1.hpp.
+// or a crop of them.  The codec itself is common/core/dxt1.hpp.
 //
 // GL's decode and the CPU's: the S3TC extension gives the palette as
 // fractions (c2 = 2/3 c0 + 1/3 c1, the RGB565 ends as c/31, c/63), not as an
