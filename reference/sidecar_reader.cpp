@@ -8,10 +8,8 @@
 #include <sstream>
 
 #include "common/core/error.hpp"
-#include "common/core/dxt1_pictures.hpp"
-#include "common/core/env_maps.hpp"
-#include "common/core/multitexture_textures.hpp"
 #include "common/core/sidecar.hpp"
+#include "common/core/texture_generators.hpp"
 #include "common/core/textures.hpp"
 
 namespace ref {
@@ -84,34 +82,7 @@ glm::mat4 mat(const Json& v, const std::string& where) {
   return m;
 }
 
-int intParam(const std::vector<std::pair<std::string, std::string>>& p, const std::string& key,
-             const std::string& name) {
-  for (const auto& [k, v] : p)
-    if (k == key) {
-      char* end = nullptr;
-      long x = std::strtol(v.c_str(), &end, 10);
-      if (v.empty() || *end) fail("texture '" + name + "'", "param " + key + " = '" + v + "' is not an integer");
-      return int(x);
-    }
-  fail("texture '" + name + "'", "missing param '" + key + "'");
-}
-std::string strParam(const std::vector<std::pair<std::string, std::string>>& p, const std::string& key,
-                     const std::string& name) {
-  for (const auto& [k, v] : p)
-    if (k == key) return v;
-  fail("texture '" + name + "'", "missing param '" + key + "'");
-}
-ts::Rgba rgbaParam(const std::vector<std::pair<std::string, std::string>>& p, const std::string& key,
-                   const std::string& name) {
-  std::string v = strParam(p, key, name);
-  int c[4];
-  char tail = 0;
-  if (std::sscanf(v.c_str(), "%d,%d,%d,%d%c", &c[0], &c[1], &c[2], &c[3], &tail) != 4)
-    fail("texture '" + name + "'", "param " + key + " = '" + v + "' is not r,g,b,a");
-  for (int x : c)
-    if (x < 0 || x > 255) fail("texture '" + name + "'", "param " + key + " = '" + v + "' is out of 0..255");
-  return {uint8_t(c[0]), uint8_t(c[1]), uint8_t(c[2]), uint8_t(c[3])};
-}
+using ts::strParam;
 
 // glTexGen's environment-mapping modes: the mode, no planes.
 // False if `mode` is not one of them.  Sphere mapping makes s and t only.
@@ -195,22 +166,10 @@ GLenum glEnumFromName(const std::string& name) {
 
 ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pair<std::string, std::string>>& p,
                               const std::string& baseDir) {
-  if (name == "checkerboard")
-    return ts::checkerboard(intParam(p, "size", name), intParam(p, "checks", name), rgbaParam(p, "color_a", name),
-                            rgbaParam(p, "color_b", name));
-  if (name == "line_grid")
-    return ts::lineGrid(intParam(p, "size", name), intParam(p, "cells", name), rgbaParam(p, "color_line", name),
-                        rgbaParam(p, "color_background", name));
-  if (name == "texel_index") return ts::texelIndexTexture(intParam(p, "size", name));
-  if (name == "labelled_grid") return ts::labelledGrid(intParam(p, "size", name), intParam(p, "cells", name));
-  if (name == "mip_level_colours") return ts::mipLevelColours(intParam(p, "size", name));
-  if (name == "gradient")
-    return ts::gradientTexture(intParam(p, "width", name), intParam(p, "height", name),
-                               strParam(p, "alpha", name) == "ramp");
-  if (name == "environment_map") return ts::envmaps::environmentMapFromParams(p);  // common/core/env_maps.hpp
+  // Every generator is asked in turn (common/core/texture_generators.hpp): the
+  // core's own and those the demos register from their folders.
   ts::TextureDesc made;
-  if (ts::multitex::remake(name, p, &made)) return made;  // the multitexture demo's textures
-  if (ts::dxt1::remake(name, p, &made)) return made;      // the DXT1 pictures (common/core/dxt1_pictures.hpp)
+  if (ts::remakeRegisteredTexture(name, p, &made)) return made;
   if (name == "file") {
     std::string path = strParam(p, "path", name);
     if (!baseDir.empty() && !path.empty() && path[0] != '/') path = baseDir + "/" + path;
@@ -218,10 +177,8 @@ ts::TextureDesc remakeTexture(const std::string& name, const std::vector<std::pa
     t.params = p;  // keep the recorded key
     return t;
   }
-  throw UnknownGenerator(
-      "sidecar: unknown texture generator '" + name +
-      "' (known: checkerboard, line_grid, texel_index, labelled_grid, mip_level_colours, gradient, environment_map, "
-      "file, multitexture_*, dxt1_picture)");
+  throw UnknownGenerator("sidecar: unknown texture generator '" + name + "' (known: " + ts::textureGeneratorLabels() +
+                         ", file)");
 }
 
 constexpr int kMaxNesting = 4;  // frames inside frames: a texture's rendered_from, at most this deep

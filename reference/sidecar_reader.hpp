@@ -53,8 +53,8 @@ struct SidecarScene {
 // grey placeholder of its recorded size, listed in
 // SidecarScene::unknownPictures, so that a verifier exempts exactly the
 // pixels that read it (RenderOptions::exemptTextures) and checks the rest of
-// the figure from the JSON alone.  The figures allowed this are listed in
-// tests/oracle/sidecar_exemptions.hpp.
+// the figure from the JSON alone.  The figures allowed this are marked
+// drawn_from_gl in their demo's facts file (demos/<name>/facts.tsv).
 struct SidecarReadOptions {
   bool unknownPictures = false;
 };

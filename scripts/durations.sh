@@ -6,6 +6,9 @@
 # (nothing else building or testing: `uptime` near 0 before it starts) after
 # adding a test or a demo, and commit the table (it multiplies each time by 1.8):
 #   bash scripts/durations.sh > tests/durations.tsv.new && mv tests/durations.tsv.new tests/durations.tsv
+# A demo's own tests (fig_<stem> of demos/<name>/<stem>_test.cpp, window_full_<name>)
+# are not in that table: their rows are printed on stderr, as the `duration`
+# rows to put in each demo's demos/<name>/facts.tsv.
 # It reads the builds as they are: build them first (scripts/test.sh does).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -42,4 +45,17 @@ cat "$T"/default.txt "$T"/full.txt "$T"/softpipe.txt "$T"/egl.txt | sort -k1,1 -
 if [ "$asan" = 1 ]; then cat "$T"/asan.txt "$T"/asan-window.txt | sort -k1,1 -k2,2gr | awk '!seen[$1]++' >"$T/asan"
 else : >"$T/asan"; fi
 join -a1 -e - -o 0,1.2,2.2 "$T/release" "$T/asan" |
-  awk '{ r = $2 * 1.8; printf "%s\t%.2f\t%.2f\n", $1, r, ($3 == "-" ? r * 5 : $3 * 1.8) }'
+  awk '{ r = $2 * 1.8; printf "%s\t%.2f\t%.2f\n", $1, r, ($3 == "-" ? r * 5 : $3 * 1.8) }' >"$T/rows"
+# The demo a test belongs to, if any: its figure test's folder, or its window test's demo.
+demo_of() {
+  local t=$1 f
+  case "$t" in
+    window_full_*) [ -f "demos/${t#window_full_}/${t#window_full_}.cpp" ] && echo "${t#window_full_}" ;;
+    fig_*) for f in demos/*/"${t#fig_}"_test.cpp; do [ -f "$f" ] && basename "$(dirname "$f")"; done ;;
+  esac
+}
+while IFS=$'\t' read -r test release asan_s; do
+  demo=$(demo_of "$test")
+  if [ -n "$demo" ]; then echo "demos/$demo/facts.tsv: duration  $test  $release  $asan_s" >&2
+  else printf '%s\t%s\t%s\n' "$test" "$release" "$asan_s"; fi
+done <"$T/rows"

@@ -34,9 +34,9 @@
 #                                 the run, however it ends.
 #
 # No test's verdict depends on how long anything takes; test timeouts are
-# hang guards, 4x each test's quiet duration (tests/durations.tsv).  Each
-# stage prints its duration and the load average it ran under; a summary
-# follows.  Extra arguments go to ctest.
+# hang guards, 4x each test's quiet duration (tests/durations.tsv; a demo's own
+# tests: its demos/<name>/facts.tsv).  Each stage prints its duration and the
+# load average it ran under; a summary follows.  Extra arguments go to ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 level=quick load=0

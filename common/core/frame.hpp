@@ -73,8 +73,8 @@ struct TextureDesc {
   // 8-bit levels by which each texel of `image` may differ from GL's: 0 for
   // a picture the Frame holds as GL holds it; set by a sidecar generator
   // that remakes a picture the specification lets GL round its own way (a
-  // DXT1 decode, dxt1_pictures.hpp).  The CPU reference widens the texels'
-  // legal range by it.  Not part of the texels: never in key() or the sidecar.
+  // DXT1 decode, demos/texture_compression/texture_compression_textures.hpp).
+  // The CPU reference widens the texels' legal range by it.  Not part of the texels: never in key() or the sidecar.
   float texelSlack = 0.0f;
   // A texture the scene drew itself for this frame (a live view, see
   // Scene::live): bound as it is, never uploaded, cached or hashed; `image`

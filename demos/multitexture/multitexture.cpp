@@ -37,7 +37,7 @@
 
 #include "common/core/error.hpp"
 #include "common/core/layout.hpp"
-#include "common/core/multitexture_textures.hpp"
+#include "demos/multitexture/multitexture_textures.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
 #include "common/core/user_texture.hpp"

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "common/core/frame.hpp"
-#include "common/core/multitexture_textures.hpp"
+#include "demos/multitexture/multitexture_textures.hpp"
 #include "common/core/textures.hpp"
 #include "multitexture_gl.hpp"
 

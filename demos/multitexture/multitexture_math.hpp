@@ -12,13 +12,13 @@
 #include <vector>
 
 #include "common/core/image.hpp"
-#include "common/core/multitexture_textures.hpp"
+#include "demos/multitexture/multitexture_textures.hpp"
 
 namespace mt {
 inline uint8_t u8(double v) { return uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); }
 
 // The tree, the bricks, the light and spot maps, the gloss map and A, B, C,
-// D are named generators in common/core/multitexture_textures.hpp (the
+// D are named generators in demos/multitexture/multitexture_textures.hpp (the
 // sidecar remakes them); here under the demo's names.
 using ts::multitex::kSky;
 using ts::multitex::inTree;

@@ -11,13 +11,13 @@
 #include <unordered_map>
 #include <vector>
 
-#include "common/core/dxt1_pictures.hpp"
+#include "demos/texture_compression/texture_compression_textures.hpp"
 #include "common/core/textures.hpp"
 #include "texture_compression_math.hpp"
 
 namespace dxt {
 // The pictures (photo-like bricks, a checkerboard, a normal map), the
-// 3-colour mode and RGB565 at half the size: common/core/dxt1_pictures.hpp,
+// 3-colour mode and RGB565 at half the size: demos/texture_compression/texture_compression_textures.hpp,
 // where the sidecar's generator "dxt1_picture" remakes them too.
 
 // ---- texture memory (seed 001 ¶21–24) -----------------------------------

@@ -32,7 +32,7 @@ namespace L = ts::layout;
 
 // Shown minified (512 texels in ~300 pixels) with GL_LINEAR: GL_NEAREST would
 // pick between neighbouring texels at ties, where rasterizers round apart.
-// A texture "dxt1_picture" the sidecar remakes (dxt1_pictures.hpp); a
+// A texture "dxt1_picture" the sidecar remakes (texture_compression_textures.hpp); a
 // student's file, a picture of the demo's own.
 inline int imageTexture(ts::Frame& f, const Result& m, Show show, Crop crop, const ts::Image& img,
                         const std::string& what, ts::gl::CallList calls = nullptr, GLenum filter = GL_LINEAR) {

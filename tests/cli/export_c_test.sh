@@ -6,7 +6,8 @@
 #        cc -std=c99 -Wall -Werror -DOFFSCREEN FILE.c -o fig -lOSMesa -lm (no GLFW, no libGL)
 #   2. the offscreen build's picture (./fig out.ppm) is the demo's own render
 #      of the same state (make_figures' PNG, OSMesa), within the bounds of
-#      export_bounds.tsv (measured; a figure not listed must match exactly);
+#      its export_bound row in demos/*/facts.tsv (measured; a figure without
+#      one must match exactly);
 #   3. a state that cannot be exported (the parallax live view draws a texture
 #      it rendered itself) says so in one line, exits 2 and writes nothing.
 # Two compilations run at a time (2 cores).
@@ -51,7 +52,8 @@ declare -A maxpx maxdiff
 while read -r name px diff _; do
   case "$name" in ''|\#*) continue ;; esac
   maxpx[$name]=$px maxdiff[$name]=$diff
-done <"$HERE/export_bounds.tsv"
+done < <(bash "$HERE/../../scripts/facts.sh" export_bound || echo "FAILED 0 0")
+[ -z "${maxpx[FAILED]:-}" ] || fail "scripts/facts.sh export_bound: the demos' facts files do not read"
 n=0
 while read -r id status a b; do
   n=$((n + 1))

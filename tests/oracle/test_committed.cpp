@@ -33,7 +33,7 @@ TEST(CommittedFigures, EachPngIsLegalForItsSidecar) {
       if (!fs::exists(png)) continue;
       SCOPED_TRACE(e.path().string());
       // A figure whose panels include pictures its measure() made (GL renders,
-      // CPU images from them: sidecar_exemptions.hpp) is read with those
+      // CPU images from them: drawn_from_gl in its demo's facts.tsv) is read with those
       // pictures as placeholders and their pixels exempt; the rest is checked.
       const bool listed = oracle::drawnFromGlRenders(e.path().stem().string());
       ref::SidecarReadOptions ro;
@@ -48,7 +48,8 @@ TEST(CommittedFigures, EachPngIsLegalForItsSidecar) {
       std::printf("[oracle] %s\n", r.summary().c_str());
       EXPECT_EQ(r.invalid, 0) << r.summary();
       if (listed) {
-        EXPECT_FALSE(sc.unknownPictures.empty()) << "listed in sidecar_exemptions.hpp, but every texture is remade";
+        EXPECT_FALSE(sc.unknownPictures.empty())
+            << "marked drawn_from_gl in its demo's facts.tsv, but every texture is remade";
         ++exempt;
       } else {
         // Plots are mostly lines and labels (exempt); a quarter of the pixels is
@@ -57,7 +58,7 @@ TEST(CommittedFigures, EachPngIsLegalForItsSidecar) {
       }
       ++checked;
     }
-  EXPECT_LE(exempt, int(oracle::kFiguresDrawnFromGlRenders.size()));
+  EXPECT_LE(exempt, int(oracle::figuresDrawnFromGlRenders().size()));
   if (checked == 0) GTEST_SKIP() << "no PNG with a sidecar in " << dir.string() << " (scripts/figures.sh makes them)";
 }
 }  // namespace

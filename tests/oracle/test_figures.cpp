@@ -35,18 +35,9 @@
 namespace {
 // The committed PNGs are OSMesa renders.  Through EGL (an RGBA8 FBO) a figure
 // may differ from OSMesa by as many pixels as the reliability tests' measured
-// backend bound allows (tests/reliability/backend_bounds.tsv: pixels that
-// differ at all); 0 for a figure not listed there (byte-identical).
-long backendBoundPixels(const std::string& id) {
-  std::ifstream in(std::string(TS_SOURCE_DIR) + "/tests/reliability/backend_bounds.tsv");
-  for (std::string line; std::getline(in, line);) {
-    std::istringstream row(line);
-    std::string figure;
-    long pixels = 0;
-    if (row >> figure >> pixels && figure == id) return pixels;
-  }
-  return 0;
-}
+// backend bound allows (its backend_bound row in its demo's facts.tsv:
+// pixels that differ at all); 0 for a figure without one (byte-identical).
+long backendBoundPixels(const std::string& id) { return ts::test::factValue(TS_SOURCE_DIR, "backend_bound", id, 0); }
 
 struct FigureCase {
   std::string scene;
@@ -96,7 +87,8 @@ class Figure : public ::testing::TestWithParam<FigureCase> {
   void SetUp() override {
     if (oracle::tooSlowForSoftpipe(GetParam().spec.id) &&
         ts::test::rendererString().find("softpipe") != std::string::npos)
-      GTEST_SKIP() << GetParam().spec.id << ": its measure() takes minutes on softpipe (sidecar_exemptions.hpp)";
+      GTEST_SKIP() << GetParam().spec.id
+                   << ": its measure() takes minutes on softpipe (too_slow_softpipe in its demo's facts.tsv)";
     renders_ = &rendersOf(GetParam());
     rendered_ = &renders_->withLabels;
     plain_ = &renders_->plain;
@@ -181,7 +173,7 @@ TEST_P(Figure, SidecarAloneReproducesTheFrame) {
   ts::SidecarInfo info;
   info.figureId = c.spec.id;
   info.demo = c.scene;
-  // A figure listed in sidecar_exemptions.hpp shows pictures its measure()
+  // A figure marked drawn_from_gl in its demo's facts.tsv shows pictures its measure()
   // made (GL renders read back, CPU images computed from them, named in the
   // sidecar by digest and command; maps of the demo's own code) that no
   // generator remakes: those pixels are exempt, and the rest of the figure is
@@ -208,8 +200,9 @@ TEST_P(Figure, SidecarAloneReproducesTheFrame) {
   ro.unknownPictures = listed;
   ref::SidecarScene sc = ref::readSidecar(ts::sidecarJson(rendered_->frame, info), ro);
   if (listed)
-    EXPECT_FALSE(sc.unknownPictures.empty()) << c.spec.id << " is listed in sidecar_exemptions.hpp, but its sidecar "
-                                             << "remakes every texture: take it off the list";
+    EXPECT_FALSE(sc.unknownPictures.empty())
+        << c.spec.id << " is marked drawn_from_gl in its demo's facts.tsv, but its "
+        << "sidecar remakes every texture: take the row out";
   // The sidecar alone holds what the picture needs: nothing is copied from
   // the Frame, so a field the writer drops makes this check fail.
   EXPECT_TRUE(sc.missing.empty()) << "the sidecar lacks " << (sc.missing.empty() ? "" : sc.missing.front());
@@ -241,7 +234,7 @@ TEST_P(Figure, MatchesTheCommittedPngFuzzily) {
   o.maxChannelDiff = !llvmpipe && oracle::shadedPerPixelInGlsl(c.spec.id) ? 4 : 2;
   if (!llvmpipe && oracle::showsTheRasterizersFiltering(c.spec.id))
     GTEST_SKIP() << c.spec.id << " prints this rasterizer's own LOD/anisotropy measurements; the committed PNG is "
-                 << "llvmpipe's (sidecar_exemptions.hpp)";
+                 << "llvmpipe's (rasterizer_specific in its demo's facts.tsv)";
   long pixels = long(rendered_->image.width) * rendered_->image.height;
   o.maxDifferingPixels = llvmpipe ? pixels / 2000 : pixels / 50;
   const char* backend = std::getenv("TS_TEST_BACKEND");

@@ -11,11 +11,12 @@
 #      PNG and no temporary file: every *.png present decodes completely.
 # With --backends (the full level), instead:
 #   2. OSMesa and EGL give byte-identical PNGs except the figures listed in
-#      backend_bounds.tsv, whose differences stay within the stated bounds
-#      (pixels that differ, largest channel difference).
+#      a backend_bound row in their demo's facts file (demos/*/facts.tsv),
+#      whose differences stay within the stated bounds (pixels that differ,
+#      largest channel difference).
 # With --hidden (the quick level), the same for the hidden-window backend (a
 # hidden GLFW window and a framebuffer object: Windows' offscreen backend)
-# against OSMesa, within hidden_bounds.tsv, on the first figure each demo
+# against OSMesa, within the hidden_bound rows, on the first figure each demo
 # lists (every demo's drawing code through the backend at a quarter of the
 # cost of all figures; TS_HIDDEN_FIGURES=all renders every one); it needs a
 # display, so without one it runs under xvfb-run (77: skipped, without
@@ -58,13 +59,13 @@ fi
 if [ "$part" = --backends ] || [ "$part" = --hidden ]; then
 # ---------------------------------------------------- 2. OSMesa vs EGL, or vs a hidden window
 if [ "$part" = --hidden ]; then
-  other=hidden bounds=$HERE/hidden_bounds.tsv label="the hidden window"
+  other=hidden kind=hidden_bound label="the hidden window"
   if [ -z "${DISPLAY:-}" ]; then
     command -v xvfb-run >/dev/null || { echo "SKIPPED: no display and no xvfb-run"; exit 77; }
     figs() { xvfb-run -a -s "-screen 0 640x480x24" "$FIGS" --out "$@" >"$T/log" 2>&1 || fail "make_figures --out $*: $(tail -3 "$T/log")"; }
   fi
 else
-  other=egl bounds=$HERE/backend_bounds.tsv label=EGL
+  other=egl kind=backend_bound label=EGL
 fi
 only=() compared=("$A"/*.png)
 if [ "$part" = --hidden ] && [ "${TS_HIDDEN_FIGURES:-}" != all ]; then
@@ -78,13 +79,14 @@ declare -A maxpx maxdiff
 while read -r name px diff _; do
   case "$name" in ''|\#*) continue ;; esac
   maxpx[$name]=$px maxdiff[$name]=$diff
-done <"$bounds"
+done < <(bash "$HERE/../../scripts/facts.sh" "$kind" || echo "FAILED 0 0")
+[ -z "${maxpx[FAILED]:-}" ] || fail "scripts/facts.sh $kind: the demos' facts files do not read"
 same=0 bounded=0
 for f in "${compared[@]}"; do
   name=$(basename "$f" .png)
   if cmp -s "$f" "$T/e/$name.png"; then same=$((same + 1)); pass; continue; fi
   read -r px diff < <("$TOOL" diff "$f" "$T/e/$name.png") || { fail "$name: cannot compare"; continue; }
-  if [ -z "${maxpx[$name]:-}" ]; then fail "$name: OSMesa and $label differ ($px pixels, up to $diff) and it is not in $(basename "$bounds")"
+  if [ -z "${maxpx[$name]:-}" ]; then fail "$name: OSMesa and $label differ ($px pixels, up to $diff) and it has no $kind row in its demo's facts.tsv"
   elif [ "$px" -gt "${maxpx[$name]}" ] || [ "$diff" -gt "${maxdiff[$name]}" ]; then
     fail "$name: OSMesa and $label differ in $px pixels by up to $diff, over the stated ${maxpx[$name]} pixels / ${maxdiff[$name]}"
   else bounded=$((bounded + 1)); pass; echo "  $name: $px pixels differ, by up to $diff (bound ${maxpx[$name]} / ${maxdiff[$name]})"; fi

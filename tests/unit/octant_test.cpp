@@ -5,7 +5,7 @@
 // ([x y z] [T]), the inverse uses the seed's own formulas (φ = acos y,
 // θ = asin(x / sin φ)), the pattern is a 64 x 64 array of booleans, and the
 // texel count uses a crossing-number point-in-polygon test (the demo uses
-// edge cross products).  tests/figures/fig_octant_mapping_test.cpp asserts
+// edge cross products).  demos/octant_mapping/octant_mapping_test.cpp asserts
 // that the demo measures the same answers.
 //
 // Conventions of the inverse count (the ones under which the seed's 5/18

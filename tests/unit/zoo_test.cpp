@@ -2,7 +2,7 @@
 // (demos/filter_zoo/filter_zoo_math.hpp) without GL: every closed form the zoo draws
 // against a computation of this test's own, exactly, and the orderings of
 // the CPU methods against the exact area integral with their margins.
-// The GL methods' numbers are the figure test's (tests/figures/fig_filter_zoo_test.cpp).
+// The GL methods' numbers are the figure test's (demos/filter_zoo/filter_zoo_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>

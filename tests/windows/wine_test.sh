@@ -5,10 +5,11 @@
 #   1. every book figure, rendered by its demo's .exe with --png and --json
 #      (the hidden-window backend: Wine's OpenGL on Xvfb), against the same
 #      figure from the Linux build (make_figures --backend osmesa): PNGs
-#      byte-identical except the figures in wine_bounds.tsv, within their
+#      byte-identical except the figures with a wine_bound row in their demo's
+#      facts file (demos/*/facts.tsv), within their
 #      bounds (pixels that differ, largest channel difference);
 #   2. every measurement in those sidecars equal to Linux's within its
-#      tolerance in claim_bounds.tsv (default: the digits the demos print);
+#      tolerance of a claim_bound row (default: the digits the demos print);
 #   3. --help, an unknown flag, a missing file, a folder, and every malformed
 #      file of tests/reliability/corpus: the same exit status and the same
 #      output, line for line, as on Linux;
@@ -98,14 +99,15 @@ declare -A maxpx maxdiff tol
 while read -r name px diff _; do
   case "$name" in ''|\#*) continue ;; esac
   maxpx[$name]=$px maxdiff[$name]=$diff
-done <"$HERE/wine_bounds.tsv"
-tolerance() {  # the tolerance of measurement $1: the first pattern of claim_bounds.tsv it matches
+done < <(bash "$HERE/../../scripts/facts.sh" wine_bound || echo "FAILED 0 0")
+[ -z "${maxpx[FAILED]:-}" ] || fail "scripts/facts.sh wine_bound: the demos' facts files do not read"
+tolerance() {  # the tolerance of measurement $1: the first claim_bound pattern it matches
   local name=$1 pat t
   while read -r pat t _; do
     case "$pat" in ''|\#*) continue ;; esac
     # shellcheck disable=SC2053
     if [[ "$name" == $pat ]]; then echo "$t"; return; fi
-  done <"$HERE/claim_bounds.tsv"
+  done < <(bash "$HERE/../../scripts/facts.sh" claim_bound)
   echo 0.00005
 }
 echo "== figures: Windows (the demos' .exe under Wine, --backend auto) =="
@@ -146,7 +148,7 @@ for json in "$T/linux"/*.json; do
   if cmp -s "$T/linux/$id.png" "$T/win/$id.png"; then same=$((same + 1)); pass
   else
     read -r px diff < <("$TOOL" diff "$T/linux/$id.png" "$T/win/$id.png") || { fail "$id: cannot compare"; continue; }
-    if [ -z "${maxpx[$id]:-}" ]; then fail "$id: Linux and Windows differ ($px pixels, up to $diff) and it is not in wine_bounds.tsv"
+    if [ -z "${maxpx[$id]:-}" ]; then fail "$id: Linux and Windows differ ($px pixels, up to $diff) and it has no wine_bound row in its demo's facts.tsv"
     elif [ "$px" -gt "${maxpx[$id]}" ] || [ "$diff" -gt "${maxdiff[$id]}" ]; then
       fail "$id: Linux and Windows differ in $px pixels by up to $diff, over the stated ${maxpx[$id]} pixels / ${maxdiff[$id]}"
     else bounded=$((bounded + 1)); pass; echo "  $id: $px pixels differ, by up to $diff (bound ${maxpx[$id]} / ${maxdiff[$id]})"; fi
@@ -165,7 +167,7 @@ for json in "$T/linux"/*.json; do
   done < <(join -t $'\t' "$T/m_linux" "$T/m_win")
 done
 t_figs=$(now)
-echo "figures: $figures rendered on Windows: $same byte-identical to Linux, $bounded within wine_bounds.tsv; $numbers measurements compared; $faults runs rerun after a Wine fault"
+echo "figures: $figures rendered on Windows: $same byte-identical to Linux, $bounded within their wine_bound rows; $numbers measurements compared; $faults runs rerun after a Wine fault"
 fi
 t_figs=${t_figs:-$(now)} t_linux=${t_linux:-$t_figs}
 
