@@ -162,14 +162,36 @@ std::string programFolder() {
 #include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#ifdef __APPLE__
+#include <mach-o/dyld.h>
+#include <pthread.h>
+#include <pthread/qos.h>
+
+#include <cstdlib>
+#endif
 
 namespace ts {
+namespace {
+// A pipe whose ends close on exec.  macOS has no pipe2: there the flag is set
+// right after (nothing else forks while the suite starts a child).
+int pipeCloseOnExec(int fds[2]) {
+#ifdef __APPLE__
+  if (pipe(fds) != 0) return -1;
+  fcntl(fds[0], F_SETFD, FD_CLOEXEC);
+  fcntl(fds[1], F_SETFD, FD_CLOEXEC);
+  return 0;
+#else
+  return pipe2(fds, O_CLOEXEC);
+#endif
+}
+}  // namespace
+
 ProcessResult runProcess(const std::vector<std::string>& argv, const std::string& input, double timeoutSeconds) {
   ProcessResult r;
   if (argv.empty()) return r.out = "no program to run", r;
   int in[2], out[2];
-  if (pipe2(in, O_CLOEXEC) != 0) return r.out = std::string("pipe: ") + std::strerror(errno), r;
-  if (pipe2(out, O_CLOEXEC) != 0) {
+  if (pipeCloseOnExec(in) != 0) return r.out = std::string("pipe: ") + std::strerror(errno), r;
+  if (pipeCloseOnExec(out) != 0) {
     close(in[0]), close(in[1]);
     return r.out = std::string("pipe: ") + std::strerror(errno), r;
   }
@@ -227,10 +249,18 @@ ProcessResult runProcess(const std::vector<std::string>& argv, const std::string
 }
 
 std::string programFolder() {
+#ifdef __APPLE__
+  // macOS has no /proc: dyld knows the path the program was started by.
+  char raw[4096], buf[PATH_MAX];
+  uint32_t size = sizeof raw;
+  if (_NSGetExecutablePath(raw, &size) != 0 || !realpath(raw, buf)) return ".";
+  std::string p(buf);
+#else
   char buf[4096];
   const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
   if (n <= 0) return ".";
   std::string p(buf, size_t(n));
+#endif
   const size_t slash = p.rfind('/');
   return slash == std::string::npos ? "." : p.substr(0, slash);
 }
@@ -247,6 +277,10 @@ void useUtf8Console() {
 void lowerThreadPriority() {
 #ifdef _WIN32
   SetThreadPriority(GetCurrentThread(), THREAD_PRIORITY_BELOW_NORMAL);
+#elif defined(__APPLE__)
+  // macOS has no per-thread nice value (PRIO_PROCESS would lower the whole
+  // program): the thread's quality-of-service class is its priority.
+  pthread_set_qos_class_self_np(QOS_CLASS_UTILITY, 0);
 #else
   setpriority(PRIO_PROCESS, id_t(::syscall(SYS_gettid)), 5);
 #endif

@@ -65,7 +65,7 @@ inline double lod(const Ellipse& plain, double maxAniso) {
   return std::max(0.0, std::log2(std::max({r.y, r.x / maxAniso, 1e-30})));
 }
 
-// The same coefficients and semi-axes in GLSL (1.30 and later), for shaders
+// The same coefficients and semi-axes in GLSL (1.20 and later), for shaders
 // to paste in: vec4 ellipse(vec2 gx, vec2 gy, bool recon) with
 // gx = (Ux, Vx), gy = (Uy, Vy), returning (A, B, C, F); vec2 radii(vec4 e).
 inline const char* glsl() {

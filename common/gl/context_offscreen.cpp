@@ -1,10 +1,10 @@
 // OSMesa and EGL-surfaceless contexts.  Both libraries are opened with
 // dlopen(), not linked, so that (a) a machine without OSMesa (Mesa >= 25.1)
 // still runs every program through EGL, and (b) no GL entry point binds at
-// link time (see gl.hpp for why).  Windows has neither library: there the
-// hidden-window backend (context_hidden.cpp) is the only offscreen one, and
-// the dlopen code below is compiled out (TS_HAVE_DLOPEN_BACKENDS).
-#if !defined(_WIN32)
+// link time (see gl.hpp for why).  Windows and macOS have neither library:
+// there the hidden-window backend (context_hidden.cpp) is the only offscreen
+// one, and the dlopen code below is compiled out (TS_HAVE_DLOPEN_BACKENDS).
+#if !defined(_WIN32) && !defined(__APPLE__)
 #define TS_HAVE_DLOPEN_BACKENDS 1
 #include <EGL/egl.h>
 #include <EGL/eglext.h>

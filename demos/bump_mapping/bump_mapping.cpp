@@ -36,7 +36,7 @@
 //   + / -  height scale   s / S  object scale (seed 004's claim)
 //     w  the normal map's edge slopes wrap (the seam's fix)
 //   a / A, e / E  light 1 azimuth, elevation (or a right drag)   b / B, d / D  light 2   . / ,  tilt
-// What the GL does: one GLSL 1.30 program (bump_mapping_gl.hpp: kFS) for B1-B3, the
+// What the GL does: one GLSL 1.20 program (bump_mapping_gl.hpp: kFS) for B1-B3, the
 // method a uniform (its number from bump_mapping_methods.hpp: kMethods, the one table
 // of the methods): common/gl/render.cpp: Renderer::draw sends the torus as
 // glTexCoord4f(s, t, 0, 1) + glVertex3f after glUseProgram and glUniform4f,

@@ -98,7 +98,7 @@ inline std::string glsl(const std::string& text) {
 // frameAt's body is common/core/torus_frame.inl, the same lines
 // common/core/torus.cpp compiles as C++ (ts::torusFrame, used by the
 // fixed-function passes): the torus's formulas are written once.
-inline const std::string kCommonGLSL = std::string(R"(#version 130
+inline const std::string kCommonGLSL = std::string(R"(
 uniform sampler2D tex;
 uniform vec4 torus, rep, l0, l1, opts;
 const float TAU = 6.28318530718;
@@ -111,9 +111,11 @@ void frameAt(vec2 st, out vec3 Q, out vec3 N, out vec3 Qs, out vec3 Qt, out vec3
 vec3 heightAt(vec2 st, float lod) {
   float k = exp2(lod);
   vec2 uv = st * rep.xy, du = vec2(k / rep.z, 0.0), dv = vec2(0.0, k / rep.w);
-  float P = torus.z * textureLod(tex, uv, lod).r;
-  float Ps = torus.z * (textureLod(tex, uv + du, lod).r - textureLod(tex, uv - du, lod).r) * rep.z * rep.x / (2.0 * k);
-  float Pt = torus.z * (textureLod(tex, uv + dv, lod).r - textureLod(tex, uv - dv, lod).r) * rep.w * rep.y / (2.0 * k);
+  float P = torus.z * texture2DLod(tex, uv, lod).r;
+  float Ps = torus.z * (texture2DLod(tex, uv + du, lod).r - texture2DLod(tex, uv - du, lod).r) *
+             rep.z * rep.x / (2.0 * k);
+  float Pt = torus.z * (texture2DLod(tex, uv + dv, lod).r - texture2DLod(tex, uv - dv, lod).r) *
+             rep.w * rep.y / (2.0 * k);
   return vec3(P, Ps, Pt);
 }
 )";
@@ -121,8 +123,8 @@ vec3 heightAt(vec2 st, float lod) {
 // The tangent frame per vertex, in eye space: T = Qs/|Qs|, B = Qt/|Qt|
 // (the unit tangents along θ and φ) and N, interpolated for B2 and B3.
 inline const char* const kMeshVS = R"(
-out vec2 st;
-out vec3 peye, tT, tB, tN;
+varying vec2 st;
+varying vec3 peye, tT, tB, tN;
 void main() {
   vec3 Q, N, Qs, Qt, Ns, Nt;
   st = gl_MultiTexCoord0.xy;
@@ -136,8 +138,8 @@ void main() {
 
 // The reference's grid: gl_Vertex.xy is (s, t); the vertex is displaced.
 inline const char* const kReferenceVS = R"(
-out vec2 st;
-out vec3 peye, tT, tB, tN;
+varying vec2 st;
+varying vec3 peye, tT, tB, tN;
 void main() {
   vec3 Q, N, Qs, Qt, Ns, Nt;
   st = gl_Vertex.xy;
@@ -152,8 +154,8 @@ void main() {
 // (The comments after the METHOD_ names stand where they stand in the text
 // GL gets, once the names are numbers.)
 inline const char* const kFS = R"(
-in vec2 st;
-in vec3 peye, tT, tB, tN;
+varying vec2 st;
+varying vec3 peye, tT, tB, tN;
 // The mip level a pixel's footprint asks for (opts.z = 1: mipmapped
 // heights or normal map), else level 0.
 float lodHere() {
@@ -178,13 +180,13 @@ void main() {
     n = m * (nv + P.y * cross(nv, Qt) / len + P.z * cross(Qs, nv) / len);
   } else if (method == METHOD_SEED002) {              // B2: seed 002, literally
     ivec2 size = ivec2(rep.zw), x = ivec2(floor(st * rep.xy * rep.zw));
-    #define J(dx, dy) texelFetch(tex, ivec2((x.x + dx + 4 * size.x) % size.x, (x.y + dy + 4 * size.y) % size.y), 0).r
+    #define J(dx, dy) texelFetch2D(tex, ivec2((x.x + dx + 4 * size.x) % size.x, (x.y + dy + 4 * size.y) % size.y), 0).r
     float gx = J(1, 0) - J(-1, 0);       // j(x+1, y) - j(x-1, y), / 255
     float gy = J(0, -1) - J(0, 1);       // j(x, y+1) - j(x, y-1): raster row y+1 is texel row y-1
     n = normalize(tN);
     n.x += gx, n.y += gy;
   } else if (method == METHOD_NORMALMAP) {              // B3: the normal map in the per-vertex tangent frame
-    vec3 t = textureLod(tex, st * rep.xy, lodHere()).rgb * 2.0 - 1.0;
+    vec3 t = texture2DLod(tex, st * rep.xy, lodHere()).rgb * 2.0 - 1.0;
     n = normalize(tT) * t.x + normalize(tB) * t.y + normalize(tN) * t.z;
   } else if (method == METHOD_REFERENCE) {              // R: the displaced surface's own normal
     vec3 P = heightAt(st, 0.0);
@@ -202,9 +204,18 @@ void main() {
 }
 )";
 
-inline ts::Program meshProgram() { return {kSourceFile, glsl(kCommonGLSL + kMeshVS), glsl(kCommonGLSL + kFS)}; }
+// GLSL 1.20, what macOS's legacy OpenGL 2.1 context compiles.  A vertex
+// shader has texture2DLod without an extension; the fragment shader takes it
+// from GL_ARB_shader_texture_lod, and texelFetch2D and the integer % of B2
+// from GL_EXT_gpu_shader4 (both offered by Mesa and by Apple's 2.1 context).
+inline const char* const kVertexHeader = "#version 120";
+inline const char* const kFragmentHeader =
+    "#version 120\n#extension GL_ARB_shader_texture_lod : require\n#extension GL_EXT_gpu_shader4 : require";
+inline ts::Program meshProgram() {
+  return {kSourceFile, glsl(kVertexHeader + kCommonGLSL + kMeshVS), glsl(kFragmentHeader + kCommonGLSL + kFS)};
+}
 inline ts::Program referenceProgram() {
-  return {kSourceFile, glsl(kCommonGLSL + kReferenceVS), glsl(kCommonGLSL + kFS)};
+  return {kSourceFile, glsl(kVertexHeader + kCommonGLSL + kReferenceVS), glsl(kFragmentHeader + kCommonGLSL + kFS)};
 }
 
 // The reference R: a (nu + 1) x (nv + 1) grid of (s, t), drawn from client

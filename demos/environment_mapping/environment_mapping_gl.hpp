@@ -129,14 +129,14 @@ vec2 paraboloid(vec2 front, vec2 back, float z) {
 )";
 }
 inline std::string header(int param, bool perVertex, bool frame) {
-  return "#version 130\n#define PARAM " + std::to_string(param) + "\n#define PER_VERTEX " + (perVertex ? "1" : "0") +
+  return "#version 120\n#define PARAM " + std::to_string(param) + "\n#define PER_VERTEX " + (perVertex ? "1" : "0") +
          "\n#define FRAME " + (frame ? "1" : "0");
 }
 inline std::string vertexShader(int param, bool perVertex, bool frame = false) {
   return header(param, perVertex, frame) + mapFunctions() + R"(
-out vec3 posEye, nEye;
-out vec4 coord;    // per vertex: the map coordinates (paraboloid: front xy, back zw)
-out float side;    // per vertex: r_z, which paraboloid half
+varying vec3 posEye, nEye;
+varying vec4 coord;    // per vertex: the map coordinates (paraboloid: front xy, back zw)
+varying float side;    // per vertex: r_z, which paraboloid half
 void main() {
   vec4 pe = gl_ModelViewMatrix * gl_Vertex;
   posEye = pe.xyz;
@@ -168,19 +168,19 @@ uniform sampler2D tex;
 uniform sampler2D map2d;
 uniform samplerCube mapCube;
 #endif
-in vec3 posEye, nEye;
-in vec4 coord;
-in float side;
+varying vec3 posEye, nEye;
+varying vec4 coord;
+varying float side;
 void main() {
   vec3 r = reflectWorld(posEye, nEye);
 #if PARAM < 0
   gl_FragColor = vec4(normalize(r) * 0.5 + 0.5, 1.0);
 #elif PARAM == 1
-  gl_FragColor = texture(mapCube, r);
+  gl_FragColor = textureCube(mapCube, r);
 #elif PARAM == 5
   // seed 002: R = 2 N_z N - I, I the unit vector to the eye (eye space)
   vec3 n = normalize(nEye);
-  gl_FragColor = texture(mapCube, toWorld * (2.0 * n.z * n + normalize(posEye)));
+  gl_FragColor = textureCube(mapCube, toWorld * (2.0 * n.z * n + normalize(posEye)));
 #else
 #if PER_VERTEX && PARAM == 3
   vec2 st = paraboloid(coord.xy, coord.zw, side);
@@ -195,7 +195,7 @@ void main() {
 #else
   vec2 st = paraboloid(disc(r, 1.0), disc(r, -1.0), r.z);
 #endif
-  gl_FragColor = texture(map2d, st);
+  gl_FragColor = texture2D(map2d, st);
 #endif
 }
 )";

@@ -44,14 +44,18 @@ constexpr const char* kSourceFile = "demos/jitter/jitter_gl.hpp";
 
 // GLSL shared by both programs: the hash of jitter_math.hpp and the colour
 // at a window point, through the homography window (px, py, 1) -> plane
-// (X, Z, S) of jitter::pixelToPlane.  GLSL 1.30 (softpipe's GL 3.3
-// compatibility context has it).
+// (X, Z, S) of jitter::pixelToPlane.  GLSL 1.20, what macOS's legacy
+// OpenGL 2.1 context compiles: the 32-bit unsigned integers of the hash
+// (spelt "unsigned int", the extension's own spelling), their ^ >> and
+// wrapping *, and the integer % from GL_EXT_gpu_shader4, which Mesa and
+// Apple's 2.1 context offer.
 inline std::string glslCommon() {
-  return R"(#version 130
+  return R"(#version 120
+#extension GL_EXT_gpu_shader4 : require
 uniform vec4 h0, h1, h2;  // rows of the homography
 uniform vec4 checker;     // (side of a check, dark, light, far z), colours in 8-bit units
 uniform vec4 sky;         // rgb, 8-bit units
-uint hash32(uint x) {     // lowbias32, as jitter::hash32
+unsigned int hash32(unsigned int x) {  // lowbias32, as jitter::hash32
   x ^= x >> 16u;
   x *= 0x7feb352du;
   x ^= x >> 15u;
@@ -59,7 +63,7 @@ uint hash32(uint x) {     // lowbias32, as jitter::hash32
   x ^= x >> 16u;
   return x;
 }
-float unitFloat(uint h) { return float(h >> 8u) * (1.0 / 16777216.0); }
+float unitFloat(unsigned int h) { return float(h >> 8u) * (1.0 / 16777216.0); }
 vec3 colourAt(vec2 p) {
   vec3 q = vec3(p, 1.0);
   vec3 xzs = vec3(dot(h0.xyz, q), dot(h1.xyz, q), dot(h2.xyz, q));
@@ -84,7 +88,7 @@ vec3 colourAt(vec2 p) {
 // framebuffer is stored (window-system buffers are y-inverted in Mesa, FBOs
 // are not, and interpolation rounds differently in the two).
 inline const char* groundVS() {
-  return R"(#version 130
+  return R"(#version 120
 void main() { gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; })";
 }
 inline std::string groundFS() {
@@ -94,7 +98,7 @@ void main() { gl_FragColor = vec4(colourAt(gl_FragCoord.xy) / 255.0, 1.0); })";
 
 // A full-viewport quad; every fragment samples its own pixel n x n times.
 inline const char* pixelJitterVS() {
-  return R"(#version 130
+  return R"(#version 120
 void main() { gl_Position = gl_Vertex; })";
 }
 inline std::string pixelJitterFS() {
@@ -103,12 +107,13 @@ uniform vec4 params;  // (n, seed, sample to show as its position or -1, 0)
 void main() {
   vec2 pix = floor(gl_FragCoord.xy);  // the viewport starts at (0, 0)
   int n = int(params.x);
-  uint key = hash32(uint(params.y) ^ hash32(uint(pix.x) ^ hash32(uint(pix.y) + 0x632be5abu)));
+  unsigned int px = unsigned int(pix.x), py = unsigned int(pix.y);
+  unsigned int key = hash32(unsigned int(params.y) ^ hash32(px ^ hash32(py + 0x632be5abu)));
   int show = int(params.z);
   vec3 sum = vec3(0.0);
   for (int k = 0; k < n * n; ++k) {
     int a = k % n, b = k / n;
-    uint kk = 2u * uint(k);
+    unsigned int kk = 2u * unsigned int(k);
     vec2 s = vec2((float(a) + unitFloat(hash32(key + kk))) / float(n),
                   (float(b) + unitFloat(hash32(key + kk + 1u))) / float(n));
     if (k == show) {
@@ -130,11 +135,12 @@ uniform vec4 params;  // (n, seed, sample to show as its position or -1, 0)
 void main() {
   vec2 pix = floor(gl_FragCoord.xy);
   int n = int(params.x);
-  uint key = hash32((uint(params.y) ^ 0x27d4eb2fu) ^ hash32(uint(pix.x) ^ hash32(uint(pix.y) + 0x632be5abu)));
+  unsigned int px = unsigned int(pix.x), py = unsigned int(pix.y);
+  unsigned int key = hash32((unsigned int(params.y) ^ 0x27d4eb2fu) ^ hash32(px ^ hash32(py + 0x632be5abu)));
   int show = int(params.z);
   vec3 sum = vec3(0.0);
   for (int k = 0; k < n * n; ++k) {
-    uint kk = 2u * uint(k);
+    unsigned int kk = 2u * unsigned int(k);
     vec2 s = vec2(unitFloat(hash32(key + kk)), unitFloat(hash32(key + kk + 1u)));
     if (k == show) {
       gl_FragColor = vec4(s, 0.0, 1.0);

@@ -70,7 +70,7 @@ inline const char* const kModeKeys[] = {"naive", "trilinear", "aniso16", "ewa", 
 inline const char* const kModeLabels[] = {"M0 naive",       "M1 trilinear",    "M2 aniso 16x", "M3 EWA",
                                           "M4 EWA visible", "M5 EWA row walk", "R reference"};
 
-inline const char* vertexShader() { return "#version 130\nvoid main() { gl_Position = gl_Vertex; }\n"; }
+inline const char* vertexShader() { return "#version 120\nvoid main() { gl_Position = gl_Vertex; }\n"; }
 
 // One compiled program (see above).  centreLookups: a uniform branch in the
 // innermost loop cost llvmpipe a third of M3's speed.
@@ -86,9 +86,14 @@ struct Variant {
            (unshiftedLookup ? "_unshifted" : "") + (centreLookups ? "_centre" : "") + (plainTrace ? "_plain" : "");
   }
 };
+// GLSL 1.20, what macOS's legacy OpenGL 2.1 context compiles: texture2DLod
+// and texture2DGradARB from GL_ARB_shader_texture_lod; texelFetch2D, the
+// integer % and >> from GL_EXT_gpu_shader4 (Mesa and Apple's 2.1 context
+// offer both).
 inline std::string fragmentShader(const Variant& v) {
-  return "#version 130\n#define MODE " + std::to_string(v.mode) + "\n#define COUNT " + (v.count ? "1" : "0") +
-         "\n#define PARALLAX " + (v.parallax ? "1" : "0") + "\n#define UNSHIFTED_LOOKUP " +
+  return std::string("#version 120\n#extension GL_ARB_shader_texture_lod : require\n") +
+         "#extension GL_EXT_gpu_shader4 : require\n#define MODE " + std::to_string(v.mode) + "\n#define COUNT " +
+         (v.count ? "1" : "0") + "\n#define PARALLAX " + (v.parallax ? "1" : "0") + "\n#define UNSHIFTED_LOOKUP " +
          (v.unshiftedLookup ? "1" : "0") + "\n#define CENTRE_LOOKUPS " + (v.centreLookups ? "1" : "0") +
          "\n#define PLAIN_TRACE " + (v.plainTrace ? "1" : "0") + R"(
 uniform sampler2D albedo;     // RGBA8, mipmapped (the 2x2 averages)
@@ -126,7 +131,7 @@ vec2 topUV(vec3 d) { return (eye.xy + (eye.z / -d.z) * d.xy) * relief.x; }
 
 float depthGrad(vec2 uv, vec2 gx, vec2 gy) {
   FETCH;
-  return 1.0 - textureGrad(heightTex, uv, gx, gy).r;
+  return 1.0 - texture2DGradARB(heightTex, uv, gx, gy).r;
 }
 // Parallax occlusion mapping: returns the depth where the ray meets the relief.
 // The march stops at the first step k whose ray depth d_k is at or below the
@@ -168,9 +173,9 @@ ivec2 wrapT(ivec2 t, int size) { return ivec2((t.x % size + size) % size, (t.y %
 // with the step-map probe: plainly hidden texels came out visible).
 vec4 texelAt(sampler2D s, ivec2 t, int L, int size) {
 #if CENTRE_LOOKUPS
-  return textureLod(s, (vec2(wrapT(t, size)) + 0.5) / float(size), float(L));
+  return texture2DLod(s, (vec2(wrapT(t, size)) + 0.5) / float(size), float(L));
 #else
-  return texelFetch(s, wrapT(t, size), L);
+  return texelFetch2D(s, wrapT(t, size), L);
 #endif
 }
 float depthTexel(ivec2 t, int L, int size) {
@@ -314,7 +319,7 @@ vec3 ewaLevel(vec2 uvS, vec2 gx, vec2 gy, vec2 Vp, int L, int vis) {
   }
   if (wsum <= 0.0) {  // everything hidden at this level: the texel under uvS
     FETCH;
-    return textureLod(albedo, uvS, float(L)).rgb;
+    return texture2DLod(albedo, uvS, float(L)).rgb;
   }
   return sum / wsum;
 }
@@ -366,10 +371,10 @@ void main() {
   vec3 col;
   if (mode == 0) {
     FETCH;
-    col = texture(albedo, uvS).rgb;
+    col = texture2D(albedo, uvS).rgb;
   } else if (mode == 1 || mode == 2) {
     FETCH;
-    col = textureGrad(albedo, uvS, gx * gradScale, gy * gradScale).rgb;
+    col = texture2DGradARB(albedo, uvS, gx * gradScale, gy * gradScale).rgb;
   } else {
     col = ewa(uvS, gx, gy, Vp, mode - 3);
   }

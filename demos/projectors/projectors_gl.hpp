@@ -122,25 +122,26 @@ inline ts::TexGen planarTexGen(Axis ax, Formula f, GLenum mode, const glm::mat4&
 // Per fragment: the vertex sends its object position (gl_Vertex) and normal
 // (as its texture coordinate); the fragment evaluates seed 002's formula.
 // uniform `mode` = (projector 0..3, axis 0..2, formula 0 printed | 1 corrected,
-// 0 texture() with implicit derivatives | 1 textureGrad with the derivatives
+// 0 texture2D with implicit derivatives | 1 texture2DGradARB with the derivatives
 // of whichever of tu, fract(tu) has no cut between the pixels).
 inline const char* kProgramName = "projector";
 inline ts::Program projectorProgram() {
   ts::Program p;
   p.file = "demos/projectors/projectors_gl.hpp";
-  p.vertex = R"(#version 130
-out vec3 obj, nrm;
+  p.vertex = R"(#version 120
+varying vec3 obj, nrm;
 void main() {
   obj = gl_Vertex.xyz;
   nrm = gl_MultiTexCoord0.xyz;
   gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
 }
 )";
-  p.fragment = R"(#version 130
+  p.fragment = R"(#version 120
+#extension GL_ARB_shader_texture_lod : require
 const float PI = 3.14159265358979;
 uniform sampler2D tex;
 uniform vec4 mode;
-in vec3 obj, nrm;
+varying vec3 obj, nrm;
 // (a, b, along) for axis X, Y, Z: seed 002's order (projectors_math.hpp: across).
 vec3 across(int ax, vec3 p) { return ax == 0 ? vec3(p.z, p.y, p.x) : ax == 1 ? vec3(p.x, p.z, p.y) : p; }
 void main() {
@@ -173,9 +174,9 @@ void main() {
     float dx2 = dFdx(u2), dy2 = dFdy(u2);
     if (abs(dx2) < abs(dx.x)) dx.x = dx2;
     if (abs(dy2) < abs(dy.x)) dy.x = dy2;
-    gl_FragColor = textureGrad(tex, st, dx, dy);
+    gl_FragColor = texture2DGradARB(tex, st, dx, dy);
   } else {
-    gl_FragColor = texture(tex, st);
+    gl_FragColor = texture2D(tex, st);
   }
 }
 )";

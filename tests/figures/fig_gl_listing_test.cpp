@@ -112,7 +112,7 @@ TEST(GlListing, EnvironmentMappingListsTheTexgenThatRenderedThePicture) {
   picture = section(perPixel, "/* the picture in panel 'picture'");
   EXPECT_FALSE(has(picture, "glTexGeni"));
   EXPECT_TRUE(has(picture, "glShaderSource("));
-  EXPECT_TRUE(has(picture, "texture(mapCube, r)")) << "the fragment shader's lookup is in the listing";
+  EXPECT_TRUE(has(picture, "textureCube(mapCube, r)")) << "the fragment shader's lookup is in the listing";
 }
 
 // Claim: the pane's highlight covers the render's lines: from r per pixel to
