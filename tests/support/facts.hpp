@@ -60,20 +60,25 @@ inline std::vector<Fact> readDemoFacts(const std::string& sourceDir) {
   return out;
 }
 
-// The keys (figure ids) of one kind's rows, read once per process.
-inline std::vector<std::string> factKeys(const std::string& sourceDir, const std::string& kind) {
+// Every demo's facts, read once per process and source folder.
+inline const std::vector<Fact>& demoFacts(const std::string& sourceDir) {
   static std::map<std::string, std::vector<Fact>> cache;
   auto it = cache.find(sourceDir);
   if (it == cache.end()) it = cache.emplace(sourceDir, readDemoFacts(sourceDir)).first;
+  return it->second;
+}
+
+// The keys (figure ids) of one kind's rows.
+inline std::vector<std::string> factKeys(const std::string& sourceDir, const std::string& kind) {
   std::vector<std::string> keys;
-  for (const auto& f : it->second)
+  for (const auto& f : demoFacts(sourceDir))
     if (f.kind == kind) keys.push_back(f.key);
   return keys;
 }
 
 // The first value of the row of `kind` for `key`, or `fallback` without one.
 inline long factValue(const std::string& sourceDir, const std::string& kind, const std::string& key, long fallback) {
-  for (const auto& f : readDemoFacts(sourceDir))
+  for (const auto& f : demoFacts(sourceDir))
     if (f.kind == kind && f.key == key && !f.values.empty()) return std::stol(f.values[0]);
   return fallback;
 }
