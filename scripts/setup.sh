@@ -17,6 +17,7 @@ packages=(
   clang libclang-rt-14-dev               # libFuzzer and its sanitizer runtimes (fuzz preset)
   valgrind zlib1g-dev                    # memcheck over a figure run; zlib for the corpus generator
   clang-format                           # the style check (tests/format_check.sh)
+  fonts-dejavu-extra                     # the labels' font, compiled in (DejaVu Sans Condensed)
 )
 
 missing=()

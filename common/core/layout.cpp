@@ -228,6 +228,17 @@ void attachNumbers(Frame& f, size_t first, const Text& t) {
   for (const Text::Given& g : t.given) place(g.text, [&](Label& l) { l.given.push_back({g.name, g.value}); });
 }
 
+void addSwatch(Frame& f, float x, float y, int scale, glm::vec4 colour) {
+  const int side = int(text::height(scale));
+  Panel key = unitPanel("legend_swatch", {int(x), int(y), side, side});
+  Batch fill;
+  fill.role = "swatch";
+  for (glm::vec2 q : {glm::vec2(0, 0), {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}})
+    fill.vertices.push_back({{q, 0.0f}, {0, 0, 0, 1}, colour});
+  key.batches.push_back(fill);
+  f.panels.push_back(key);
+}
+
 float legend(Frame& f, Box band, const std::vector<LegendEntry>& entries, int scale) {
   // A swatch is a square panel of the colour, as tall as the text beside it.
   const float swatch = text::height(scale), gap = 8.0f * float(scale), row = lineHeight(scale);
@@ -236,13 +247,7 @@ float legend(Frame& f, Box band, const std::vector<LegendEntry>& entries, int sc
     const float w = swatch + 4.0f * float(scale) + text::width(e.meaning, scale);
     if (x > band.x0 && x + w > band.x1) x = band.x0, y += row;
     if (w > band.w() || y + swatch > band.y1 + 0.5f) break;  // no room: left out, never cut
-    Panel key = unitPanel("legend_swatch", {int(x), int(y), int(swatch), int(swatch)});
-    Batch fill;
-    fill.role = "swatch";
-    for (glm::vec2 q : {glm::vec2(0, 0), {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}})
-      fill.vertices.push_back({{q, 0.0f}, {0, 0, 0, 1}, e.color});
-    key.batches.push_back(fill);
-    f.panels.push_back(key);
+    addSwatch(f, x, y, scale, e.color);
     // The meaning in its colour, unless that colour is too dark to read on the figure's background.
     const float luma = 0.3f * e.color.r + 0.59f * e.color.g + 0.11f * e.color.b;
     f.labels.push_back({float(int(x)) + swatch + 4.0f * float(scale), y, e.meaning, luma < 0.35f ? kWhite : e.color,

@@ -17,6 +17,7 @@
 
 #include "common/core/frame.hpp"
 #include "common/core/scene.hpp"
+#include "common/core/text.hpp"
 
 namespace ts::layout {
 // A box in frame pixels, top-left origin, as floats (labels sit on halves).
@@ -74,7 +75,7 @@ std::string fmt(const char* format, double v);
 // picture, never with the window (1 below ~220 x 140 pixels).
 int scaleFor(const Rect& picture, int maxScale = 3);
 // One line of text's height at a scale, with its leading.
-inline float lineHeight(int scale) { return float(13 * scale + 4 * scale); }
+inline float lineHeight(int scale) { return text::height(scale) + float(4 * scale); }
 // The text scale of a layout whose picture depends on the room its text
 // takes: the largest s (maxScale down to 1) for which the picture laid out
 // with text at s, pictureAt(s), asks for at least s (scaleFor).  For views
@@ -147,6 +148,9 @@ void attachNumbers(Frame& f, size_t first, const Text& t);
 // entry, left to right, wrapping to the next line; each entry also goes
 // into f.legend.  Returns the y below the last line.
 float legend(Frame& f, Box band, const std::vector<LegendEntry>& entries, int scale);
+// A legend's swatch: a square panel of the colour, as tall as a line of text
+// at `scale`, its top-left at (x, y).  The caller records the legend entry.
+void addSwatch(Frame& f, float x, float y, int scale, glm::vec4 colour);
 
 // Text fitted to a box: at `scale` if it fits, else smaller, else wrapped at
 // spaces onto the lines the box has room for, else cut with "...".  Adds

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "common/core/text.hpp"
+
 namespace ts {
 namespace {
 // Written with nlohmann-json (ordered: keys stay in the order below).
@@ -298,6 +300,9 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
               {"y", num(l.y)},
               {"text", l.text},
               {"scale", l.scale},
+              // The height its capitals are drawn at: what a proofreader
+              // checks against print size (tests/proofread).
+              {"capital_px", text::capitalHeight(l.scale)},
               {"align", l.align == Align::Left     ? "left"
                         : l.align == Align::Center ? "center"
                                                    : "right"},

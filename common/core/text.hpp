@@ -1,14 +1,17 @@
-// common/core/text.hpp — the suite's one font: Dear ImGui's built-in ProggyClean,
-// rasterised at integer multiples of 13 px so every glyph stays pixel-exact
-// and figures are byte-identical everywhere.  Used for figure labels (GL
-// quads), for text baked into textures (CPU), and by the window overlay.
+// common/core/text.hpp — the suite's one font: DejaVu Sans Condensed, compiled
+// into the program and rasterised by Dear ImGui's font atlas at integer
+// multiples of 18 px.  At scale 1 its capitals are 11 px tall: readable when a
+// 1280-1500 px figure is printed at a page's width.  Glyphs sit on whole
+// pixels and are drawn texel for pixel, so figures are byte-identical
+// everywhere.  Used for figure labels (GL quads), for text baked into
+// textures (CPU), and by the window overlay.
 #pragma once
 #include <string>
 
 #include "common/core/image.hpp"
 
 namespace ts::text {
-constexpr int kBasePixels = 13;
+constexpr int kBasePixels = 18;  // the font's size at scale 1 (ImGui's: ascent to descent)
 constexpr int kMaxScale = 4;
 struct Glyph {
   float x0, y0, x1, y1;  // quad relative to the pen, pixels, y down
@@ -19,7 +22,12 @@ struct Glyph {
 const Image& atlas();  // RGBA with the coverage in alpha, white RGB
 bool glyph(char c, int scale, Glyph* out);
 float width(const std::string& s, int scale);
-inline float height(int scale) { return float(kBasePixels * scale); }
+// A line's height at a scale: every glyph lies within it, descenders included.
+float height(int scale);
+// The height in pixels of a glyph's ink (rows with half coverage or more):
+// capitalHeight(scale) is the 'H's, what "text N px tall" means in print.
+int inkHeight(char c, int scale);
+inline int capitalHeight(int scale) { return inkHeight('H', scale); }
 // Draws text into an image on the CPU (alpha-blended), top-left at (x, y).
 void draw(Image& img, float x, float y, const std::string& s, Rgba color, int scale);
 }  // namespace ts::text

@@ -117,12 +117,9 @@ inline float keyLines(ts::Frame& f, L::Box band, const std::vector<std::pair<glm
     }
     // Too wide for its line (a small window): layout::legend's swatch, the
     // meaning wrapped beside it, and the entry in the frame's legend.
-    ts::Label swatch;
-    swatch.x = band.x0 + keyPad(scale), swatch.y = y, swatch.text = " ", swatch.scale = scale,
-    swatch.background = colour;
-    f.labels.push_back(swatch);
+    L::addSwatch(f, band.x0 + keyPad(scale), y, scale, colour);
     f.legend.push_back({colour, meaning.text});
-    const float x0 = swatch.x + ts::text::height(scale) + 4.0f * float(scale);
+    const float x0 = band.x0 + keyPad(scale) + ts::text::height(scale) + 4.0f * float(scale);
     const float below = L::caption(f, {x0, y, band.x1, band.y1}, meaning, colour, scale, ts::Align::Left);
     y = std::max(y + keyStep(scale), below + keyPad(scale) + float(scale));
   }
@@ -246,7 +243,9 @@ inline void Views::buildAzimuths(ts::Frame& f, const Result* m, const ts::Measur
   while (fs > 1 && std::any_of(footNotes.begin(), footNotes.end(),
                                [&](const L::Text& t) { return ts::text::width(t.text, fs) > w - 8; }))
     --fs;
-  const float footH = keyHeight(1, fs) + 2 * L::lineHeight(fs) + 4;
+  int noteLines = 0;  // a note too long for one line wraps: its lines are reserved
+  for (const L::Text& t : footNotes) noteLines += L::captionLines(t.text, fs, float(w - 8));
+  const float footH = keyHeight(1, fs) + float(noteLines) * L::lineHeight(fs) + 4;
   const float bandH = (float(h) - footH - 4) / 3;
   for (int b = 0; b < 3; ++b) {
     const double az = kAzimuths[size_t(b)];

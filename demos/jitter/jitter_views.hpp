@@ -246,7 +246,7 @@ inline void Views::addPattern(ts::Frame& f, ts::Panel& canvas, ts::Rect box, int
                                              : "jittered (the reference)";
     // Under the box, in a band as wide as the box and its margins, two lines at `scale`.
     const float half = (labelW > 0 ? labelW : std::max(float(box.w), 120.0f * float(scale))) / 2,
-                cx = float(box.x + box.w / 2), y = float(box.y + box.h + 5), line = float(16 * scale);
+                cx = float(box.x + box.w / 2), y = float(box.y + box.h + 5), line = ts::layout::lineHeight(scale);
     const ts::layout::Box band{std::max(0.0f, cx - half), y, std::min(float(f.width), cx + half), y + line};
     ts::layout::caption(f, band, l1, kWhite, scale);
     ts::layout::caption(f, {band.x0, y + line, band.x1, y + 2 * line}, l2, kGrey, scale);
@@ -272,10 +272,12 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
     bool column;
     ts::Rect rect;
   };
+  // The pattern's two lines of labels under its box (addPattern), with a margin.
+  auto labelsUnder = [](int sc) { return 5 + int(2 * L::lineHeight(sc)) + 4 * sc; };
   auto placeAt = [&](int sc) {
     Place p;
     p.line = int(L::lineHeight(sc)) + 2 * sc, p.top = 2 * p.line;
-    p.sideW = std::min(220 * sc, std::max(130 * sc, f.width / 4)), p.under = 156 + 44 * sc;
+    p.sideW = std::min(220 * sc, std::max(130 * sc, f.width / 4)), p.under = 156 + labelsUnder(sc);
     auto fit = [&](int availW, int availH) {
       double k = std::max(0.05, std::min(double(std::max(1, availW)) / W, double(std::max(1, availH)) / H));
       if (k >= 1 && std::floor(k) >= 0.92 * k) k = std::floor(k);
@@ -303,8 +305,8 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   if (res) addImage(f, "image", rect, showError_ ? res->errorTexture : res->texture);
   int sideX = rect.x + rect.w + 24;  // where the numbers start
   int x = p.column ? 16 : sideX, y0 = p.column ? rect.y + rect.h + 12 : p.top + 4;
-  int room = p.column ? p.under - 12 : f.height - y0 - 3 * p.line - 44 * sc;
-  int box = std::max(16, std::min({p.sideW - 20, room - 44 * sc, f.height / 3}));
+  int room = p.column ? p.under - 12 : f.height - y0 - 3 * p.line - labelsUnder(sc);
+  int box = std::max(16, std::min({p.sideW - 20, room - labelsUnder(sc), f.height / 3}));
   int labelW = 160 * sc;
   const int numbersW = 150 * sc;
   if (p.column) {
@@ -320,7 +322,7 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   addPattern(f, canvas, {x, y0, box, box}, mode_, side_, true, float(labelW), sc);
   if (res && mode_ != kReference) {
     // The numbers: right of the pattern in a column layout, under it beside the image.
-    float nx = float(sideX), ny = p.column ? float(y0) : float(y0 + box + 44 * sc);
+    float nx = float(sideX), ny = p.column ? float(y0) : float(y0 + box + labelsUnder(sc));
     L::Column numbers(f, {nx, ny, float(f.width) - 4, float(f.height) - 2});
     const std::string k = std::string("[") + modeKey(mode_) + "]";
     numbers.add("RMS error " + num("rms" + k), kAmber, sc, ts::Align::Left);
@@ -331,7 +333,7 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
 
 inline void Views::buildCompare(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
   namespace L = ts::layout;
-  const int W = jitter::kImageW, H = jitter::kImageH, line = 17, gap = 24;
+  const int W = jitter::kImageW, H = jitter::kImageH, line = int(L::lineHeight(1)), gap = 24;
   // At 1:1 the figure needs four images and three gaps across, three images
   // and ten lines of text down; a smaller frame (a window) scales the images.
   // A tall window puts two columns across, each row of four in two rows.
@@ -454,6 +456,8 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
     bool twoLines;
     int plotsH;
   };
+  // The pattern's two lines of labels under its box (addPattern), with a margin.
+  auto labelsUnder = [](int sc) { return 5 + int(2 * L::lineHeight(sc)) + 4 * sc; };
   auto placeAt = [&](int sc) {
     Place p;
     p.line = int(L::lineHeight(sc));
@@ -543,7 +547,7 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
 inline void Views::buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) const {
   namespace L = ts::layout;
   namespace plot = ts::plot;
-  const int line = 17;
+  const int line = int(L::lineHeight(1));
   L::caption(f, {4, 4, float(f.width) - 4, float(line + 4)},
              "Figure VI.7  where aliasing sets in: a zone plate, " +
                  L::given("lowest frequency (the sweep's step)", zone::kStep, "%g") + " to " +
@@ -569,8 +573,9 @@ inline void Views::buildZone(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
                                              {{"samples", titles[k]}});
     if (zoom < 1) t.minFilter = GL_LINEAR;
     f.panels.push_back(ts::layout::texturePanel("zone_" + std::to_string(k), {x, top, w, h}, f.addTexture(t)));
-    L::caption(f, {float(x - gap / 2), float(top - line - 2), float(x + w + gap / 2), float(top - 2)}, titles[k],
-               colours[k], 1);
+    // (not over the frequency scale left of the first image)
+    L::caption(f, {float(std::max(left, x - gap / 2)), float(top - line - 2), float(x + w + gap / 2), float(top - 2)},
+               titles[k], colours[k], 1);
     const double onset = z.sweeps[size_t(k)].onset;
     if (onset > 0) {  // the bottom edge of the onset's band
       const float y = float(top + h) - float((onset / zone::kStep - 1) * zone::kGlBandRows * (double(h) / imgH));

@@ -269,9 +269,12 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
     // The key of the triangles' edges under the pictures (when they are drawn).
     const float keyH = edges_ ? L::lineHeight(1) : 0.0f;
     std::vector<L::Cell> cells = L::flow({all.x0, all.y0, all.x1, all.y1 - keyH}, spec);
-    if (edges_)
-      L::legend(f, {cells[0].below.x0, cells[0].below.y1, all.x1, cells[0].below.y1 + keyH},
+    if (edges_) {  // under the last row of pictures
+      float under = cells[0].below.y1;
+      for (const L::Cell& c : cells) under = std::max(under, c.below.y1);
+      L::legend(f, {cells[0].below.x0, under, all.x1, under + keyH},
                 {{quad::views::kDiagonal, "the affine variants' triangles: edges and shared diagonal"}}, 1);
+    }
     for (int k = 0; k < 4; ++k) {
       const L::Cell& c = cells[size_t(k)];
       ts::Panel p = L::unitPanel("variant_" + std::to_string(k), c.picture);

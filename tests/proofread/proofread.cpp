@@ -247,9 +247,26 @@ double smallestCapitals(const Json& d) {
   for (const Json& j : d.at("labels")) {
     const std::string text = j.at("text").get<std::string>();
     if (text.find_first_not_of(' ') == std::string::npos) continue;
-    text::Glyph g;
-    if (text::glyph('H', j.at("scale").get<int>(), &g)) smallest = std::min(smallest, double(g.y1 - g.y0));
+    smallest = std::min(smallest, j.value("capital_px", 0.0));
   }
   return smallest;
+}
+
+std::vector<std::string> sizeProblems(const Json& d, double minCapitals) {
+  std::vector<std::string> out;
+  for (const Json& j : d.at("labels")) {
+    const std::string text = j.at("text").get<std::string>();
+    if (text.find_first_not_of(' ') == std::string::npos) continue;
+    const int scale = j.at("scale").get<int>(), recorded = j.value("capital_px", 0);
+    char s[200];
+    if (recorded != text::capitalHeight(scale))
+      std::snprintf(s, sizeof s, "\"%.40s\": capitals recorded as %d px, but the font draws %d px at scale %d",
+                    text.c_str(), recorded, text::capitalHeight(scale), scale);
+    else if (recorded < minCapitals)
+      std::snprintf(s, sizeof s, "\"%.40s\": capitals %d px tall, below %g px", text.c_str(), recorded, minCapitals);
+    else continue;
+    out.push_back(s);
+  }
+  return out;
 }
 }  // namespace ts::proofread

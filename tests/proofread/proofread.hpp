@@ -16,7 +16,10 @@
 //             untextured line or point that is not grey) or of text that is
 //             neither the caption white, the measurement amber nor grey, is
 //             named in the figure's legend, and every legend entry is drawn.
-//   size      (textSize) the smallest text's capital height in pixels.
+//   size      every label's capitals, as recorded in the sidecar (capital_px)
+//             and as the font draws them at its scale, are at least a size:
+//             11 px, readable once a 1280-1500 px figure is printed at a
+//             page's width.
 #pragma once
 #include <nlohmann/json.hpp>
 
@@ -30,4 +33,5 @@ std::vector<std::string> numberProblems(const Json& sidecar);
 std::vector<std::string> colourProblems(const Json& sidecar);
 // The capital height, in pixels, of the smallest text the figure prints.
 double smallestCapitals(const Json& sidecar);
+std::vector<std::string> sizeProblems(const Json& sidecar, double minCapitals = 11.0);
 }  // namespace ts::proofread

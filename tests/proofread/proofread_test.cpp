@@ -18,6 +18,7 @@
 
 #include "common/core/layout.hpp"
 #include "common/core/sidecar.hpp"
+#include "common/core/text.hpp"
 #include "tests/proofread/proofread.hpp"
 
 namespace {
@@ -70,6 +71,15 @@ TEST(Proofread, EveryNumberHasItsSource) {
   for (const fs::path& p : sidecars()) {
     const auto problems = ts::proofread::numberProblems(read(p));
     EXPECT_TRUE(problems.empty()) << p.stem().string() << ":" << lines(problems);
+  }
+}
+
+TEST(Proofread, TextIsReadableInPrint) {
+  for (const fs::path& p : sidecars()) {
+    const Json d = read(p);
+    const auto problems = ts::proofread::sizeProblems(d);
+    EXPECT_TRUE(problems.empty()) << p.stem().string() << ":" << lines(problems, 5);
+    EXPECT_GE(ts::proofread::smallestCapitals(d), 11.0) << p.stem().string();
   }
 }
 
@@ -171,9 +181,14 @@ TEST(ProofreadFails, OnAMeaningfulColourWithoutALegend) {
 
 TEST(ProofreadFails, OnTextBelowTheSize) {
   Json d = madeFigure();
-  for (Json& l : d["labels"]) l["scale"] = 2;
-  EXPECT_GE(ts::proofread::smallestCapitals(d), 11.0) << "capitals at scale 2";
-  d["labels"][0]["scale"] = 1;
-  EXPECT_LT(ts::proofread::smallestCapitals(d), 11.0) << "capitals at scale 1";
+  EXPECT_TRUE(ts::proofread::sizeProblems(d).empty()) << lines(ts::proofread::sizeProblems(d));
+  EXPECT_GE(ts::proofread::smallestCapitals(d), 11.0);
+  // A sidecar written with ProggyClean at 13 px, the suite's font before: 8 px capitals.
+  d["labels"][0]["capital_px"] = 8;
+  EXPECT_LT(ts::proofread::smallestCapitals(d), 11.0);
+  EXPECT_FALSE(ts::proofread::sizeProblems(d).empty()) << "8 px capitals, and not what the font draws";
+  // The font's own capitals at scale 1, held to a larger size.
+  Json e = madeFigure();
+  EXPECT_FALSE(ts::proofread::sizeProblems(e, ts::text::capitalHeight(1) + 1).empty());
 }
 }  // namespace
