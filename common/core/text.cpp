@@ -26,7 +26,7 @@ struct FontAtlas {
       cfg.PixelSnapH = true;                  // whole-pixel advances
       cfg.FontDataOwnedByAtlas = false;       // the bytes are static
       fonts[s - 1] = atlas.AddFontFromMemoryTTF(const_cast<unsigned char*>(kFontFile), int(sizeof kFontFile),
-                                                float(kBasePixels * s), &cfg);
+                                                float(kPixels[s - 1]), &cfg);
     }
     unsigned char* px = nullptr;
     int w = 0, h = 0;

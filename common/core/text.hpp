@@ -1,7 +1,8 @@
 // common/core/text.hpp — the suite's one font: DejaVu Sans Condensed, compiled
-// into the program and rasterised by Dear ImGui's font atlas at integer
-// multiples of 18 px.  At scale 1 its capitals are 11 px tall: readable when a
-// 1280-1500 px figure is printed at a page's width.  Glyphs sit on whole
+// into the program and rasterised by Dear ImGui's font atlas at four sizes,
+// its scales 1 to 4.  At scale 1 (18 px) its capitals are 11 px tall: readable
+// when a 1280-1500 px figure is printed at a page's width.  The larger scales
+// grow by less than whole multiples, as titles need.  Glyphs sit on whole
 // pixels and are drawn texel for pixel, so figures are byte-identical
 // everywhere.  Used for figure labels (GL quads), for text baked into
 // textures (CPU), and by the window overlay.
@@ -11,8 +12,9 @@
 #include "common/core/image.hpp"
 
 namespace ts::text {
-constexpr int kBasePixels = 18;  // the font's size at scale 1 (ImGui's: ascent to descent)
 constexpr int kMaxScale = 4;
+// The font's size at each scale, in ImGui's terms (ascent to descent).
+constexpr int kPixels[kMaxScale] = {18, 26, 36, 46};
 struct Glyph {
   float x0, y0, x1, y1;  // quad relative to the pen, pixels, y down
   float u0, v0, u1, v1;  // atlas coordinates
