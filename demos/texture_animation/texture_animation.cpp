@@ -7,7 +7,7 @@
 // speed x frame time x pixels-a-texel above it showed, and nothing else.
 //
 // Keys (each is also a flag, see --help):
-//   a      animate: the window's clock runs the water (the figures and the measurement use --time)
+//   a      animate: the window's clock runs the water, after 30 frames (figures and measurement: --time)
 //   + / -  speed, texels a second           . / ,  the clock a frame on / back (--time, seconds)
 //
 // The equation, for a texture of h texels a side and a quad with t from 0 to 1:
@@ -42,6 +42,7 @@ namespace {
 constexpr int kTexels = 32;          // the texture is kTexels x kTexels, and the quad shows it once
 constexpr int kPixelsPerTexel = 4;   // in the measurement: each texel a 4 x 4 block of pixels
 constexpr int kFramesPerSecond = 4;  // the measured frames are 1/4 s apart: d = speed pixels a frame
+constexpr int kHoldFrames = 30;      // the window's animation waits this many frames before the clock runs
 constexpr int kFramesShown = 2;      // the figure's frames: k and k+1, the two measured
 
 // The texture matrix at `seconds`: t moves on speed x seconds texels.  Taken round the texture first
@@ -111,9 +112,11 @@ class TextureAnimation final : public ts::Scene {
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
+  // The window's clock runs after kHoldFrames frames still at --time, so the first pictures after the key
+  // are the --png render's (the window tests compare them), as mipmap_popping's animation does.
   void update(double seconds) override {
-    if (animate_) clock_ += seconds;
-    else clock_ = 0;
+    if (!animate_) heldFrames_ = 0, clock_ = 0;
+    else if (++heldFrames_ > kHoldFrames) clock_ += seconds;
   }
   bool animating() const override { return animate_; }
 
@@ -124,6 +127,7 @@ class TextureAnimation final : public ts::Scene {
   float time_ = 0;
   bool animate_ = false;
   double clock_ = 0;  // the window's running clock, seconds (animate)
+  int heldFrames_ = 0;
 };
 
 ts::Frame TextureAnimation::build(int width, int height, const ts::Measurements& measured) const {
