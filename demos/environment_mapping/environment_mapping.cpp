@@ -21,7 +21,9 @@
 // shown, and where it is largest (environment_mapping_measure.hpp); texels per steradian, largest /
 // smallest, at equal memory; a sphere map reused as the eye turns; seed 001's cube example
 // read back; seed 002's u = N_x/2 + 1/2 against GL_SPHERE_MAP and its R = 2 N_z N - I
-// against r off the view axis; the flat mirror that cannot show a nearby ball.
+// against r off the view axis; the flat mirror that cannot show a nearby ball; lat-long's seam
+// per vertex as computed and with the sources' +1 rule (a triangle whose s differ by more than 1/2
+// adds 1 to the smaller: 0.97, 0.02 -> 0.97, 1.02, GL_REPEAT), within 30° of the seam and at the poles.
 //
 // What the GL does (environment_mapping_gl.hpp: EnvGL::draw, into a float FBO read back for the measurements; the
 // figures' pictures are the same passes as ts::Frames nested in the figure, environment_mapping_views.hpp): the mesh as
@@ -38,6 +40,8 @@
 //   ] / [  turn the object     . / ,  tilt it (also the arrows)
 //   left drag, wheel: the eye orbits, zooms   s  sphere map made for: this eye | the first eye
 //   + / -  memory (texels a cube face side; the others as many texels)
+//   u  lat-long per vertex: s as computed | the +1 rule across the seam (then (s, t) are computed per
+//      triangle corner and sent by glTexCoord2f: a vertex shader sees one vertex, the rule needs three)
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -58,8 +62,9 @@
 
 namespace {
 using ts::layout::fmt, ts::layout::kAmber, ts::layout::kWhite;
-enum View { kObjectView, kMapView, kCompareView };
+enum View { kObjectView, kMapView, kCompareView, kSeamView };
 const char* const kEval[] = {"pixel", "vertex"};
+const char* const kSeamRules[] = {"none", "plus_one"};
 using envmap::Found;  // what measure() found (environment_mapping_studies.hpp)
 class EnvironmentMapping final : public ts::Scene {
  public:
@@ -83,10 +88,15 @@ class EnvironmentMapping final : public ts::Scene {
     o.addEnum("object", &object_, {"sphere", "torus", "mirror"}, "the mirror object", 'o');
     o.addEnum("eval", &eval_, {"pixel", "vertex"},
               "r per pixel (GLSL) or per vertex (texgen / vertex shader), interpolated", 'e');
-    o.addEnum("view", &view_, {"object", "map", "compare"},
+    o.addEnum("view", &view_, {"object", "map", "compare", "seam"},
               "object: picture | reference | error; map: the unwrapped map, "
-              "the texels the object reads lit; compare: the four maps",
+              "the texels the object reads lit; compare: the four maps; seam: lat-long per vertex "
+              "without and with the +1 rule",
               'v');
+    o.addEnum("seam", &seam_, {"none", "plus_one"},
+              "lat-long per vertex: s as computed, or the +1 rule (a triangle whose s differ by more than 1/2 "
+              "adds 1 to the smaller, GL_REPEAT)",
+              'u');
     o.addFloat("turn", &turn_, -180.0f, 180.0f, "turn the object about the vertical, degrees", ']', '[', 15.0f);
     o.addFloat("tilt", &tilt_, -90.0f, 90.0f, "tilt the object about the horizontal, degrees", '.', ',', 15.0f);
     o.addEnum("sphere-eye", &sphereEye_, {"this", "first"},
@@ -147,7 +157,18 @@ class EnvironmentMapping final : public ts::Scene {
              440,
              "Lat-long, r per vertex, across the seam: {error_mean_deg[shown]} deg mean, {error_max_deg[shown]} deg "
              "largest error; a map made at the centre shows the near ball at {mirror_ball_pixels_centre_map[shown]} "
-             "pixels of the picture, not {mirror_ball_pixels[shown]}."}};
+             "pixels of the picture, not {mirror_ball_pixels[shown]}."},
+            {"env_latlong_seam_fix",
+             "Buss VI.3 (seed 001)",
+             "The torus in lat-long with r per vertex, before and after the +1 rule: a triangle whose corners' s "
+             "differ by more than 1/2 adds 1 to the smaller (0.97 and 0.02 become 0.97 and 1.02; GL_REPEAT wraps "
+             "it). The tear along the seam is gone; at the poles, where longitude means nothing, the error stays.",
+             {"--view", "seam", "--object", "torus", "--param", "latlong", "--eval", "vertex", "--tilt", "30"},
+             1280,
+             440,
+             "Within 30 deg of the seam, r per vertex: {latlong_seam_error_deg[none]} deg mean error as computed, "
+             "{latlong_seam_error_deg[plus_one]} with the +1 rule; at the poles {latlong_pole_error_deg[none]} and "
+             "{latlong_pole_error_deg[plus_one]}: the rule does not mend them."}};
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
@@ -163,6 +184,7 @@ class EnvironmentMapping final : public ts::Scene {
               glm::rotate(glm::mat4(1.0f), glm::radians(turn_), glm::vec3(0, 1, 0));
     p.sphereView = glm::dmat3(glm::mat3(sphereEye_ ? envmap::viewMatrix(0, 0) : p.view));
     p.faceTexels = face_, p.w = p.h = size;
+    p.seamRule = seam_ == 1 && param == envmap::kLatLong && perVertex ? 1 : -1;
     return p;
   }
   // The mirror's is the exact world; the others read a fine cube map (environment_mapping_views.hpp).
@@ -182,7 +204,7 @@ class EnvironmentMapping final : public ts::Scene {
                                                      : "");
   }
   int param_ = envmap::kCube, object_ = envmap::kSphereObject, eval_ = 0, view_ = kObjectView, sphereEye_ = 0;
-  int face_ = 64, render_ = 320;
+  int face_ = 64, render_ = 320, seam_ = 0;
   float turn_ = 0, tilt_ = 0;
   ts::OrbitCamera orbit_;
 };
@@ -267,6 +289,42 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
                  : std::vector<L::Text>{});
     show(cells[4], "reference", found ? &found->reference : nullptr, refCaption(),
          {std::string("the maps: r per ") + kEval[eval_]});
+    return f;
+  }
+  if (view_ == kSeamView) {
+    // Lat-long per vertex without and with the +1 rule: the two pictures, then their errors on one scale.
+    L::FlowSpec spec;
+    spec.n = 4, spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 8;
+    std::vector<L::Cell> cells = L::flow(area, spec);
+    const double scale = found ? found->seamScale : envmap::errorScale(true, 0);
+    const L::Text seamDeg = L::given("the seam's region: degrees of longitude from the seam", 30, "%g"),
+                  poleDeg = L::given("the poles' region: degrees of latitude from the equator", 75, "%g");
+    const char* const titles[] = {"lat-long per vertex, s as computed", "the +1 rule: s + 1 where s differ > 1/2"};
+    for (int rule = 0; rule < 2; ++rule) {
+      const std::string k = kSeamRules[rule];
+      const std::vector<L::Text> numbers =
+          found ? std::vector<L::Text>{"within " + seamDeg + " deg of the seam " +
+                                           L::measured(measured, "latlong_seam_error_deg[" + k + "]", "%.2f") + " deg,",
+                                       "|latitude| > " + poleDeg + " deg " +
+                                           L::measured(measured, "latlong_pole_error_deg[" + k + "]", "%.2f") + " deg"}
+                : std::vector<L::Text>{};
+      show(cells[size_t(rule)], "seam_" + k, found ? &found->seamPictures[size_t(rule)] : nullptr, titles[rule], {}, {},
+           true);
+      const ts::TextureDesc errorTex = found ? image(found->seamErrors[size_t(rule)], "seam error " + k)
+                                             : ts::TextureDesc{};
+      show(cells[size_t(2 + rule)], "seam_error_" + k, found ? &errorTex : nullptr,
+           std::string(rule ? "+1 rule" : "as computed") + ": error, white " +
+               L::given("error shown white, degrees (the heat scale's top)", scale, "%g") + " deg or more",
+           numbers, {}, true);
+    }
+    // One key across the two pictures (the world's colours), one across the two errors (the heat scale).
+    auto acrossTwo = [&](size_t first) {
+      const L::Cell &a = cells[first], &b = cells[first + 1];
+      const float x1 = b.above.y0 == a.above.y0 ? b.above.x1 : a.above.x1;  // side by side, or a's band alone
+      return L::Box{a.above.x0, L::halves(a.above).second.y0, x1, a.above.y1};
+    };
+    cellKey(f, acrossTwo(0), worldKey(), cells[0].scale);
+    cellKey(f, acrossTwo(2), heatKey(scale), cells[2].scale);
     return f;
   }
   if (view_ == kMapView) {
@@ -393,6 +451,21 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
         out.push_back({"texel_aspect[" + k + "]", t.aspect, "mean longer / shorter side of the texel read here"});
       }
     }
+    // Lat-long per vertex as computed and with the +1 rule, in the table's regions and against its reference:
+    // measured when the rule or its view is asked for (each state measures what it shows).
+    if (seam_ == 1 || view_ == kSeamView)
+      for (int rule = 0; rule < 2; ++rule) {
+        envmap::Pass ps = pass(envmap::kLatLong, o, true, true, kMeasureSize);
+        ps.seamRule = rule;
+        const envmap::ErrorStats s = envmap::errorStats(envmap::kLatLong, g.draw(ps), ref, ps.eyeRotation());
+        for (const char* region : {"seam", "pole"})
+          if (s.regionMean.count(region))
+            out.push_back({std::string("latlong_") + region + "_error_deg[" + kSeamRules[rule] + "]",
+                           s.regionMean.at(region),
+                           std::string("lat-long, r per vertex, (s, t) per triangle corner ") +
+                               (rule ? "with the +1 rule" : "as computed") + ": mean direction error in the " + region +
+                               " region (seam: within 30 deg of it; pole: |latitude| > 75 deg), degrees"});
+      }
     ts::measureProgress(0.4);
   }
   // The shown state's pictures: nested frames drawn by GL (their calls recorded for the listings), which the
@@ -421,6 +494,18 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
   found.lit = envmap::litTexels(param_, face_, shown.sphereView, looked);
   if (view_ == kCompareView)
     for (int p = 0; p < 4; ++p) found.pictures[size_t(p)] = picture(p);
+  if (view_ == kSeamView)
+    for (int rule = 0; rule < 2; ++rule) {
+      envmap::Pass ps = pass(envmap::kLatLong, object_, true, true, n);
+      ps.seamRule = rule;
+      std::vector<float> e;
+      const envmap::ErrorStats s = envmap::errorStats(envmap::kLatLong, g.draw(ps), ref, ps.eyeRotation(), &e);
+      if (rule == 0) found.seamScale = envmap::errorScale(true, s.p95);
+      found.seamErrors[size_t(rule)] = envmap::errorImage(e, n, n, found.seamScale);
+      ps.directions = false;
+      found.seamPictures[size_t(rule)] = envmap::nestedTexture(r, envmap::passFrame(ps),
+                                                               std::string("lat-long per vertex, ") + kSeamRules[rule]);
+    }
   if (object_ == envmap::kMirror) {  // the flat mirror: where a nearby ball should appear (red in the reference)
     const envmap::Pass ps = pass(-1, object_, false, true, n);
     found.mirror = envmap::mirrorNear(ref, ps.projection, ps.view, ps.model);

@@ -85,7 +85,30 @@ struct Pass {
   glm::dmat3 eyeRotation() const { return glm::dmat3(glm::mat3(view)); }
   int faceTexels = 64;
   int w = 256, h = 256;
+  // Lat-long per vertex with (s, t) computed here, per triangle corner, and sent as glTexCoord2f to fixed
+  // function: 0 as they come, 1 with the +1 rule across the seam (plusOneRule); -1: the vertex shader's.
+  int seamRule = -1;
 };
+
+// Lat-long's (s, t) at each corner of each triangle, in the order of objectMesh(p.object).triangles(): r per
+// vertex as the vertex shader computes it, but here, because the +1 rule needs a triangle's three s at once and
+// a vertex shader sees one vertex.  So a triangle across the seam gets its own copies of its corners' (s, t).
+inline std::vector<glm::vec2> latlongCornerST(const Pass& p, bool plusOne) {
+  const ts::Mesh m = objectMesh(p.object);
+  const glm::dmat4 modelview(p.view * p.model);
+  const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(modelview)));
+  const glm::dmat3 toWorld = glm::transpose(glm::dmat3(glm::mat3(p.view)));
+  std::vector<glm::vec2> st;
+  for (unsigned i : m.triangles()) {
+    const ts::SurfacePoint& v = m.points[i];
+    const glm::dvec3 eye(modelview * glm::dvec4(v.pos, 1.0));
+    const glm::dvec3 r = toWorld * glm::reflect(glm::normalize(eye), glm::normalize(normalMatrix * v.normal));
+    st.push_back(glm::vec2(envmap::latlongST(r)));
+  }
+  if (plusOne)
+    for (size_t k = 0; k + 2 < st.size(); k += 3) envmap::plusOneRule(&st[k]);
+  return st;
+}
 // A read-back: RGBA floats, row 0 at the bottom (GL's order); alpha 0 where
 // the object is not.
 struct Pixels {
@@ -237,18 +260,22 @@ class EnvGL : public ts::Renderer::Attachment {
       glPushMatrix();
       glLoadIdentity();
       const glm::mat3 toWorld = glm::transpose(glm::mat3(p.view));
-      const bool fixedFunction = p.perVertex && (p.param == envmap::kCube || p.param == envmap::kSphere);
+      const bool texgen = p.perVertex && (p.param == envmap::kCube || p.param == envmap::kSphere);
+      const bool cornerST = p.seamRule >= 0;  // (s, t) sent by glTexCoord2f, computed per triangle
+      const bool fixedFunction = texgen || cornerST;
       GLuint tex = p.param >= 0 ? texture(p) : 0;
       const GLenum target = mapOf(p.param) == envmap::kCube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
       glActiveTexture(GL_TEXTURE0);
       if (tex) glBindTexture(target, tex);
       if (fixedFunction) {
         glUseProgram(0);
-        const GLint mode = p.param == envmap::kCube ? GL_REFLECTION_MAP : GL_SPHERE_MAP;
-        glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, mode), glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, mode);
-        if (p.param == envmap::kCube) glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, mode);  // GL_SPHERE_MAP is for s and t only
-        glEnable(GL_TEXTURE_GEN_S), glEnable(GL_TEXTURE_GEN_T);
-        if (p.param == envmap::kCube) glEnable(GL_TEXTURE_GEN_R);
+        if (texgen) {
+          const GLint mode = p.param == envmap::kCube ? GL_REFLECTION_MAP : GL_SPHERE_MAP;
+          glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, mode), glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, mode);
+          if (p.param == envmap::kCube) glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, mode);  // GL_SPHERE_MAP: s and t only
+          glEnable(GL_TEXTURE_GEN_S), glEnable(GL_TEXTURE_GEN_T);
+          if (p.param == envmap::kCube) glEnable(GL_TEXTURE_GEN_R);
+        }
         glEnable(target);
         glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
         if (p.param == envmap::kCube) glLoadMatrixf(glm::value_ptr(glm::mat4(toWorld)));  // eye-space r -> the world's
@@ -265,9 +292,13 @@ class EnvGL : public ts::Renderer::Attachment {
         glUniform1i(glGetUniformLocation(prog, target == GL_TEXTURE_CUBE_MAP ? "mapCube" : "map2d"), 0);
       }
       const ts::Mesh m = objectMesh(p.object);
+      const std::vector<glm::vec2> st = cornerST ? latlongCornerST(p, p.seamRule == 1) : std::vector<glm::vec2>{};
+      size_t corner = 0;
       glBegin(GL_TRIANGLES);
       for (unsigned i : m.triangles()) {
         const ts::SurfacePoint& v = m.points[i];
+        if (cornerST) glTexCoord2f(st[corner].x, st[corner].y);
+        ++corner;
         glNormal3f(float(v.normal.x), float(v.normal.y), float(v.normal.z));
         glVertex3f(float(v.pos.x), float(v.pos.y), float(v.pos.z));
       }

@@ -108,4 +108,15 @@ inline Uniformity uniformity(Param p, int faceTexels, int k = 6) {
     }
   return u;
 }
+
+// Lat-long's seam across a triangle (seed 001): s jumps from 1 back to 0 where the longitude wraps, so a
+// triangle with corners on both sides, its s interpolated per vertex, runs the long way round the map.  The
+// sources' fix, per triangle: when two corners' s differ by more than 1/2, add 1 to the smaller one (0.97 and
+// 0.02 become 0.97 and 1.02), and draw with GL_REPEAT, which wraps s in [1, 1.5] back onto the map.  Near a
+// pole the longitude itself means nothing (every s meets there), so no shift of s mends it.
+inline void plusOneRule(glm::vec2 corner[3]) {
+  const float largest = std::max({corner[0].x, corner[1].x, corner[2].x});
+  for (int k = 0; k < 3; ++k)
+    if (largest - corner[k].x > 0.5f) corner[k].x += 1.0f;
+}
 }  // namespace envmap

@@ -244,5 +244,10 @@ struct Found {
   LitTexels lit;
   Mirror mirror;
   double errorScale = 1;  // degrees shown yellow in the error picture
+  // seam view: lat-long per vertex without and with the +1 rule, and their errors, both on the scale of the
+  // first's (the seam's tear white, the rest of the torus dark: what the rule mends stands out)
+  std::array<ts::TextureDesc, 2> seamPictures;
+  std::array<ts::Image, 2> seamErrors;
+  double seamScale = 1;
 };
 }  // namespace envmap

@@ -60,11 +60,13 @@ inline ts::Frame passFrame(const Pass& p) {
   b.texture = 0;
   b.texEnv = GL_REPLACE;
   const glm::mat3 toWorld = glm::transpose(glm::mat3(p.view));
+  // A pass with seamRule >= 0 has lat-long's (s, t) computed per triangle corner (latlongCornerST): plain texture
+  // coordinates, fixed function, which the reference recomputes exactly; the map's GL_REPEAT wraps s past 1.
   if (texgenPass(p)) {
     b.texGen.mode = p.param == kCube ? GL_REFLECTION_MAP : GL_SPHERE_MAP;
     b.texGen.coords = ts::TexGen::S | ts::TexGen::T | (p.param == kCube ? ts::TexGen::R : 0u);  // sphere: s, t only
     if (p.param == kCube) b.textureMatrix = glm::mat4(toWorld);  // eye-space r -> the world's
-  } else {
+  } else if (p.seamRule < 0) {
     b.program = "envmap_frame_p" + std::to_string(p.param) + (p.perVertex ? "_v" : "_f");
     f.programs.push_back(
         {b.program, {kFile, vertexShader(p.param, p.perVertex, true), fragmentShader(p.param, p.perVertex, true)}});
@@ -75,11 +77,13 @@ inline ts::Frame passFrame(const Pass& p) {
     }
   }
   const ts::Mesh m = objectMesh(p.object);
+  const std::vector<glm::vec2> st = p.seamRule >= 0 ? latlongCornerST(p, p.seamRule == 1) : std::vector<glm::vec2>{};
   for (unsigned i : m.triangles()) {
     ts::Vertex v;
     v.pos = glm::vec3(m.points[i].pos);
     v.normal = glm::vec3(m.points[i].normal);
     if (!b.program.empty()) v.tex = glm::vec4(v.normal, 1.0f);  // the program's normal
+    if (!st.empty()) v.tex = glm::vec4(st[b.vertices.size()], 0.0f, 1.0f);
     b.vertices.push_back(v);
   }
   panel.batches.push_back(b);

@@ -1,0 +1,206 @@
+// Textures that move: a waterfall scrolled by the texture matrix (seed 001, "texture animation").
+//
+// The claim: a texture can move on a surface whose vertices and texture coordinates never change.  The
+// texture matrix, which GL applies to every (s, t, r, q) before the lookup, translates t by
+// speed x time; with GL_REPEAT the texture wraps, so the water falls without end.  The picture then moves
+// by exactly the matrix's speed: from one frame to the next, every pixel shows what the pixel
+// speed x frame time x pixels-a-texel above it showed, and nothing else.
+//
+// Keys (each is also a flag, see --help):
+//   a      animate: the window's clock runs the water, after 30 frames (figures and measurement: --time)
+//   + / -  speed, texels a second           . / ,  the clock a frame on / back (--time, seconds)
+//
+// The equation, for a texture of h texels a side and a quad with t from 0 to 1:
+//   (s', t') = T (s, t),  T = translate(0, speed time / h)     the texture matrix
+//   pixel (x, y) at frame k+1 = pixel (x, y - d) at frame k,  d = speed x (1 / fps) x pixels a texel
+// with y down the picture (the texel read at a pixel moves up the texture, so the water moves down) and
+// y - d taken round the quad (it shows the whole texture, which repeats).
+//
+// What the GL does, all in common/gl/render.cpp (Renderer::draw of the frame's batches):
+//   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT); GL_TEXTURE_MAG_FILTER GL_NEAREST;
+//   glMatrixMode(GL_TEXTURE); glLoadMatrixf(T);   T is what glLoadIdentity(); glTranslatef(0, speed time / h, 0)
+//   glMatrixMode(GL_MODELVIEW);                   makes: the translation, loaded whole
+//   glBegin(GL_TRIANGLES); glTexCoord4f(s, t, 0, 1); glVertex3f(...) ... glEnd();
+// Listing: book_figures/texture_animation_waterfall.gl.txt.
+//
+// Measured (measure()): the quad alone rendered offscreen at kPixelsPerTexel pixels a texel, at frames k
+// and k+1 (k the whole frames in --time, kFramesPerSecond a second: time is an option, not the wall
+// clock, so the numbers and the figures are the same every run), read back; frame k moved down by d
+// pixels against frame k+1, pixel for pixel: the pixels that differ (0), the same with the speed one
+// texel a second too fast (d + 1 pixels: a control that must find some), and the shift that matches.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "common/core/layout.hpp"
+#include "common/core/scene.hpp"
+#include "common/gl/render.hpp"
+#include "demos/texture_animation/texture_animation_textures.hpp"
+
+namespace {
+constexpr int kTexels = 32;          // the texture is kTexels x kTexels, and the quad shows it once
+constexpr int kPixelsPerTexel = 4;   // in the measurement: each texel a 4 x 4 block of pixels
+constexpr int kFramesPerSecond = 4;  // the measured frames are 1/4 s apart: d = speed pixels a frame
+constexpr int kHoldFrames = 30;      // the window's animation waits this many frames before the clock runs
+constexpr int kFramesShown = 2;      // the figure's frames: k and k+1, the two measured
+
+// The texture matrix at `seconds`: t moves on speed x seconds texels.  Taken round the texture first
+// (GL_REPEAT shows the same picture), so a float keeps every digit of the translation however long it runs.
+glm::mat4 textureMatrix(int speed, double seconds) {
+  const double texels = std::fmod(speed * seconds, double(kTexels));
+  return glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, float(texels / kTexels), 0.0f));
+}
+
+// The quad over the whole panel, (s, t) from 0 to 1, its texture scrolled by `tm`.
+ts::Panel quadPanel(const std::string& id, const ts::Rect& viewport, int texture, const glm::mat4& tm) {
+  ts::Panel p = ts::layout::unitPanel(id, viewport);
+  ts::Batch b;
+  b.role = "waterfall";
+  b.texture = texture;
+  b.textureMatrix = tm;
+  for (int k : {0, 1, 2, 0, 2, 3}) {
+    const glm::vec2 c(k == 1 || k == 2, k >= 2);
+    b.vertices.push_back({{c, 0.0f}, {c, 0.0f, 1.0f}, {1, 1, 1, 1}});
+  }
+  p.batches.push_back(b);
+  return p;
+}
+
+// Pixels where `next` differs from `prev` moved down by `d` rows (round the picture).
+int mismatches(const ts::Image& prev, const ts::Image& next, int d) {
+  int n = 0;
+  const int h = prev.height;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < prev.width; ++x) {
+      const ts::Rgba a = prev.at(x, ((y - d) % h + h) % h), b = next.at(x, y);
+      n += a.r != b.r || a.g != b.g || a.b != b.b;
+    }
+  return n;
+}
+
+class TextureAnimation final : public ts::Scene {
+ public:
+  std::string id() const override { return "texture_animation"; }
+  std::string title() const override { return "Textures that move: a waterfall by the texture matrix"; }
+  std::string about() const override {
+    return "A quad of water whose texture the texture matrix scrolls: glMatrixMode(GL_TEXTURE), a translation of t by\n"
+           "speed x time, GL_REPEAT.  Measured from frames k and k+1 read back: the picture moved by exactly the\n"
+           "matrix's speed (no pixel differs from the previous frame moved by it), and a wrong speed does not match.";
+  }
+  std::vector<std::string> claim() const override {
+    return {"scroll_texel_mismatches", "scroll_texel_mismatches[wrong_speed]"};
+  }
+  void addOptions(ts::Options& o) override {
+    o.addInt("speed", &speed_, 0, 16, "texels a second the texture matrix moves t by", '+', '-', 1);
+    o.addFloat("time", &time_, 0.0f, 3600.0f, "the clock, seconds: the frames shown and measured", '.', ',',
+               1.0f / kFramesPerSecond);
+    o.addBool("animate", &animate_, "window: run the clock (the water falls)", 'a');
+  }
+  std::vector<ts::FigureSpec> figures() const override {
+    return {{"texture_animation_waterfall",
+             "Texture animation (seed 001)",
+             "A waterfall: one quad, its texture coordinates fixed, the texture matrix translating t by speed x "
+             "time (GL_REPEAT, GL_NEAREST). Two frames a quarter second apart: the water moves down by exactly "
+             "the speed, and nothing else changes.",
+             {"--speed", "2", "--time", "1.25"},
+             960,
+             440,
+             "From one frame to the next the picture moves {scroll_shift_px[found]} pixels, as the matrix's speed "
+             "gives ({scroll_shift_px[expected]}): {scroll_texel_mismatches} pixels differ; moved as a speed one "
+             "texel a second faster would, {scroll_texel_mismatches[wrong_speed]} differ."}};
+  }
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
+  ts::Measurements measure(ts::Renderer& r) override;
+  // The window's clock runs after kHoldFrames frames still at --time, so the first pictures after the key
+  // are the --png render's (the window tests compare them), as mipmap_popping's animation does.
+  void update(double seconds) override {
+    if (!animate_) heldFrames_ = 0, clock_ = 0;
+    else if (++heldFrames_ > kHoldFrames) clock_ += seconds;
+  }
+  bool animating() const override { return animate_; }
+
+ private:
+  // The first measured frame: the whole frames in --time.
+  int firstFrame() const { return int(std::floor(double(time_) * kFramesPerSecond + 1e-6)); }
+  int speed_ = 2;
+  float time_ = 0;
+  bool animate_ = false;
+  double clock_ = 0;  // the window's running clock, seconds (animate)
+  int heldFrames_ = 0;
+};
+
+ts::Frame TextureAnimation::build(int width, int height, const ts::Measurements& measured) const {
+  namespace L = ts::layout;
+  ts::Frame f = L::blankFrame(width, height);
+  L::FlowSpec spec;
+  spec.n = kFramesShown, spec.linesAbove = 2, spec.linesBelow = 3, spec.gap = 8;
+  const std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
+  const int tex = f.addTexture(ts::texanim::waterTexture(kTexels));
+  const int k = firstFrame();
+  const L::Text d = L::measured(measured, "scroll_shift_px[expected]", "%.0f");
+  for (int i = 0; i < kFramesShown; ++i) {
+    const L::Cell& c = cells[size_t(i)];
+    // The window's clock runs on from the frame; the figures' is still (clock_ = 0).
+    const double seconds = double(k + i) / kFramesPerSecond + clock_;
+    const glm::mat4 tm = textureMatrix(speed_, seconds);
+    f.panels.push_back(quadPanel("frame_" + std::to_string(i), c.picture, tex, tm));
+    const auto [title, matrix] = L::halves(c.above);
+    L::caption(f, title,
+               "frame " + L::given("frame number", k + i, "%.0f") + ", time " +
+                   L::given("time, seconds", seconds, "%.2f") + " s",
+               L::kWhite, c.scale);
+    L::caption(f, matrix,
+               "glTranslatef(0, " + L::given("the texture matrix's translation of t", tm[3][1], "%.4f") + ", 0)",
+               L::kWhite, c.scale);
+  }
+  L::phrases(f, cells[0].below,
+             {"speed " + L::given("speed, texels a second", speed_, "%.0f") + " texels/s x " +
+                  L::given("seconds a frame", 1.0 / kFramesPerSecond, "%.2f") + " s x " +
+                  L::given("pixels a texel in the measurement", kPixelsPerTexel, "%.0f") + " px a texel",
+              "= " + d + " px a frame, down"},
+             L::kAmber, cells[0].scale);
+  L::phrases(f, cells[1].below,
+             {L::measuredText(measured, "frame k moved {scroll_shift_px[expected]|%.0f} px: "
+                                        "{scroll_texel_mismatches|%.0f} pixels differ;"),
+              L::measuredText(measured, "moved {scroll_shift_px[wrong_speed]|%.0f} px (1 texel/s too fast): "
+                                        "{scroll_texel_mismatches[wrong_speed]|%.0f} differ;"),
+              L::measuredText(measured, "first match at {scroll_shift_px[found]|%.0f} px")},
+             L::kAmber, cells[1].scale);
+  return f;
+}
+
+ts::Measurements TextureAnimation::measure(ts::Renderer& r) {
+  const int n = kTexels * kPixelsPerTexel;
+  auto frame = [&](int k) {
+    ts::Frame f;
+    f.width = f.height = n;
+    const int tex = f.addTexture(ts::texanim::waterTexture(kTexels));
+    f.panels.push_back(quadPanel("quad", {0, 0, n, n}, tex, textureMatrix(speed_, double(k) / kFramesPerSecond)));
+    return r.renderOffscreen(f);  // row 0 at the top
+  };
+  const int k = firstFrame();
+  const ts::Image prev = frame(k), next = frame(k + 1);
+  // d = speed texels a second x 1/fps seconds x pixels a texel: whole pixels for any whole speed.
+  const int expected = speed_ * kPixelsPerTexel / kFramesPerSecond;
+  const int wrong = (speed_ + 1) * kPixelsPerTexel / kFramesPerSecond;
+  int found = -1;  // the first shift down the picture at which every pixel matches
+  for (int d = 0; d < n && found < 0; ++d)
+    if (mismatches(prev, next, d) == 0) found = d;
+  ts::Measurements out;
+  out.push_back({"scroll_texel_mismatches", double(mismatches(prev, next, expected)),
+                 "pixels of frame k+1 that differ from frame k moved down by the matrix's speed"});
+  out.push_back({"scroll_texel_mismatches[wrong_speed]", double(mismatches(prev, next, wrong)),
+                 "the same, frame k moved as a speed one texel a second faster would move it (a control)"});
+  out.push_back({"scroll_shift_px[expected]", double(expected),
+                 "pixels the picture moves a frame: speed x frame time x pixels a texel"});
+  out.push_back({"scroll_shift_px[wrong_speed]", double(wrong), "pixels a speed one texel a second faster moves"});
+  out.push_back({"scroll_shift_px[found]", double(found),
+                 "the smallest shift down the picture at which frame k matches frame k+1 everywhere (-1: none)"});
+  out.push_back({"scroll_frame_changed_pixels", double(mismatches(prev, next, 0)),
+                 "pixels that differ between frames k and k+1 unmoved: the texture did move"});
+  return out;
+}
+}  // namespace
+
+TS_REGISTER_SCENE(TextureAnimation);
