@@ -31,7 +31,7 @@ t_start=$(date +%s)
 # wine: the launchers (wine, wineserver) in /usr/bin, which wine64 alone,
 # installed without its recommends, does not put there.
 packages=(mingw-w64 wine64 wine libz-mingw-w64-dev dpkg-dev cmake make pkg-config zip unzip
-          libglm-dev nlohmann-json3-dev libstb-dev xvfb xauth)
+          libglm-dev nlohmann-json3-dev libstb-dev xvfb xauth fonts-dejavu-extra)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -192,6 +192,10 @@ done
 cp "$root"/textures/*.png "$stage/textures/"
 # Windows' Notepad reads CRLF files best.
 sed 's/$/\r/' "$root/scripts/windows_readme.txt" > "$stage/README.txt"
+# The suite's licence, and the labels' font's: every program embeds DejaVu
+# Sans Condensed, whose licence asks for its notice in every copy.
+sed 's/$/\r/' "$root/LICENSE" > "$stage/LICENSE.txt"
+sed 's/$/\r/' /usr/share/doc/fonts-dejavu-extra/copyright > "$stage/FONT-LICENCE.txt"
 mkdir -p "$root/dist"
 rm -f "$root/dist/texture-demos-windows-x64.zip"
 (cd "$bw/package" && zip -qr -X "$root/dist/texture-demos-windows-x64.zip" texture-demos)

@@ -151,7 +151,7 @@ ts::Frame TextureAnimation::build(int width, int height, const ts::Measurements&
                    L::given("time, seconds", seconds, "%.2f") + " s",
                L::kWhite, c.scale);
     L::caption(f, matrix,
-               "glTranslatef(0, " + L::given("the texture matrix's translation of t", tm[3][1], "%.4f") + ", 0)",
+               "texture matrix: translate t by " + L::given("the texture matrix's translation of t", tm[3][1], "%.4f"),
                L::kWhite, c.scale);
   }
   L::phrases(f, cells[0].below,
