@@ -382,8 +382,8 @@ std::vector<glm::vec2> numberPicks(Frame& f, const std::vector<L::Box>& rings, c
     };
     std::vector<Candidate> candidates;
     for (int side = 0; side < 2; ++side)
-      for (int i = 0; i <= 40; ++i)
-        for (int j = -40; j <= 40; ++j) {
+      for (int i = 0; i <= 80; ++i)
+        for (int j = -80; j <= 80; ++j) {
           const float x0 = side == 0 ? ring.x1 + ringGap + float(i) * step : ring.x0 - ringGap - bw - float(i) * step;
           const float y0 = std::round(c.y - bh / 2 + float(j) * step);
           // Near first, to the right before the left.
@@ -456,6 +456,8 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
   Frame f = L::blankFrame(w, h);
   f.perspectiveHint = picture.perspectiveHint;
   const int scale = std::max(1, std::min(w, h) / 500), line = int(L::lineHeight(scale)), margin = 4;
+  // Room above and below the picture for a pick's number (text on its dark box).
+  const int tagRoom = int(std::ceil(text::height(scale))) + 6 * scale + 2;
   std::vector<const Picked*> cells;
   for (const Picked& p : picks)
     if (usable(p.in)) cells.push_back(&p);
@@ -503,8 +505,8 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
                     partOf = one ? "the pixel's part of its panel, drawn again pixel for pixel"
                                  : "the pixels' part of their panel, drawn again pixel for pixel";
   auto captionH = [&](int width) { return L::captionLines(partOf, scale, float(width)) * line; };
-  const int leftRoomW = w * 45 / 100 - 2 * margin, leftRoomH = h - captionH(leftRoomW) - line - 2 * margin;
-  const int topRoomW = w - 2 * margin, topRoomH = h * 2 / 5 - captionH(topRoomW) - line - margin;
+  const int leftRoomW = w * 45 / 100 - 2 * margin, leftRoomH = h - captionH(leftRoomW) - 2 * tagRoom - 2 * margin;
+  const int topRoomW = w - 2 * margin, topRoomH = h * 2 / 5 - captionH(topRoomW) - 2 * tagRoom - margin;
   auto shown = [&](int rw, int rh) { return double(std::min(panel.w, rw)) * double(std::min(panel.h, rh)); };
   const bool above = pi >= 0 && shown(topRoomW, topRoomH) > shown(leftRoomW, leftRoomH);
   const int cropW = std::min(panel.w, above ? topRoomW : leftRoomW),
@@ -514,7 +516,7 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
   Rect zone, cellArea;
   L::Box key, title;
   if (above) {
-    zone = {margin, captionH(topRoomW) + margin / 2, w - 2 * margin, cropH + line};
+    zone = {margin, captionH(topRoomW) + margin / 2, w - 2 * margin, cropH + 2 * tagRoom};
     const float y = float(zone.y + zone.h + margin);
     title = {float(margin), y, float(w - margin),
              y + float(L::captionLines(cellsTitle.text, scale, float(w - 2 * margin)) * line)};
@@ -522,7 +524,7 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
     cellArea = {margin, int(key.y1) + margin, w - 2 * margin, h - int(key.y1) - 2 * margin};
   } else {
     const int leftW = pi >= 0 ? std::min(leftRoomW, std::max(cropW + 2 * line, w / 5)) : w / 5;
-    zone = {margin, captionH(leftW) + margin / 2, leftW, cropH + line};
+    zone = {margin, captionH(leftW) + margin / 2, leftW, cropH + 2 * tagRoom};
     const int x0 = zone.x + zone.w + 2 * margin, rightW = w - x0 - margin;
     title = {float(x0), float(margin) / 2, float(w - margin),
              float(margin) / 2 + float(L::captionLines(cellsTitle.text, scale, float(rightW)) * line)};
@@ -549,7 +551,7 @@ Frame footprintFrame(const Frame& picture, const std::vector<Picked>& picks, con
     // Moved by whole 2 x 2 blocks of window pixels: a rasterizer takes the
     // derivatives (and so lambda) per 2 x 2 quad, so the same pixels must
     // fall in the same quads (window rows count from the bottom).
-    Rect at{zone.x + (zone.w - cropW) / 2, zone.y + line / 2, cropW, cropH};
+    Rect at{zone.x + (zone.w - cropW) / 2, zone.y + tagRoom, cropW, cropH};
     if ((at.x - part.x) % 2) ++at.x;
     if ((at.y - part.y + picture.height - h) % 2) ++at.y;
     f.panels.push_back(reframed(f, picture, picture.panels[size_t(pi)], part, at));

@@ -674,7 +674,7 @@ TEST(VI7Figure, CompareViewShowsTheMeasuredImagesPixelExact) {
   Demo demo = jitterDemo({"--view", "compare", "--samples", "3", "--seed", "1"});
   ts::Frame f;
   demo.measure();  // measured first, then the frame at that size without labels
-  ts::Image img = demo.render(1320, 760, &f);
+  ts::Image img = demo.render(1320, 830, &f);
   ts::Measurements m = demo.measure();
   for (const char* id : {"image_one", "image_regular", "image_jitter-global", "image_jitter-pixel", "image_reference",
                          "error_one", "error_jitter-pixel"}) {
@@ -744,7 +744,7 @@ TEST(VI7Figure, ZonePlateShowsTheMeasuredRendersAndOnsets) {
   Demo demo = jitterDemo({"--view", "zone", "--samples", "3", "--seed", "1"});
   ts::Frame f;
   demo.measure();
-  ts::Image img = demo.render(1100, 700, &f);
+  ts::Image img = demo.render(1100, 740, &f);
   const ts::Measurements m = demo.measure();
   const int zoom = 2;
   for (int k = 0; k < 3; ++k) {
@@ -802,7 +802,7 @@ TEST(VI7Figure, SeedChangesTheJitterOnly) {
     Demo d = jitterDemo(flags);
     ts::Frame f;
     d.measure();
-    d.render(1320, 760, &f);
+    d.render(1320, 830, &f);
     std::map<std::string, std::vector<uint8_t>> out;
     for (const char* id : {"image_regular", "image_jitter-global", "image_jitter-pixel"})
       out[id] = f.textures.at(size_t(panelOf(f, id).batches[0].texture)).image->pixels;

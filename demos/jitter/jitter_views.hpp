@@ -57,7 +57,7 @@ inline std::vector<ts::FigureSpec> figureSpecs() {
        "every pixel; jittered anew in each pixel (2x2 pixels shown).",
        {"--view", "compare", "--samples", "3", "--seed", "1"},
        1320,
-       760,
+       830,
        "Aliasing (the error the neighbours' errors predict) at 3x3 samples: regular {aliasing[regular]}, one "
        "jitter pattern {aliasing[jitter_global]}, jittered per pixel {aliasing[jitter_pixel]}."},
       {"vi7_error_vs_samples",
@@ -80,7 +80,7 @@ inline std::vector<ts::FigureSpec> figureSpecs() {
        "at the sample grid's Nyquist, 0.5 and 1.5 cycles per pixel. Jitter's error starts lower and stays noise.",
        {"--view", "zone", "--samples", "3", "--seed", "1"},
        1100,
-       700,
+       740,
        "Aliasing sets in at {alias_onset_gl[1x1]} cycles per pixel with 1 sample and at {alias_onset_gl[3x3]} with "
        "3x3 regular samples (GL; the CPU model: {alias_onset_cpp[1x1]}, {alias_onset_cpp[3x3]})."},
   };

@@ -38,6 +38,7 @@
 #include "demos/parallax_aniso/parallax_aniso_measure.hpp"
 #include "demos/parallax_aniso/parallax_aniso_gl.hpp"
 #include "demos/parallax_aniso/parallax_aniso_math.hpp"
+#include "demos/parallax_aniso/parallax_aniso_views.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 
@@ -498,7 +499,7 @@ TEST(Table, AnEmptyBandLeavesItsCellsEmpty) {
 TEST(Live, DrawsTheModeAtTheTargetSize) {
   ts::test::context();
   TS_REQUIRE_GL_VERSION(30);
-  const int W = ts::test::isSoftpipe() ? 96 : 240, H = W * 3 / 4, bar = 22;
+  const int W = ts::test::isSoftpipe() ? 96 : 240, H = W * 3 / 4, bar = views::liveBarHeight(W, H);
   ts::test::Demo d("parallax_aniso", {"--view", "live", "--mode", "aniso16"});
   ASSERT_TRUE(d.scene->live());
   ts::test::context().resize(W, H);  // the live view draws at the target's size
@@ -521,7 +522,7 @@ TEST(Live, DrawsTheModeAtTheTargetSize) {
 TEST(Live, SplitScreenIsTheTwoModesHalves) {
   ts::test::context();
   TS_REQUIRE_GL_VERSION(30);
-  const int W = ts::test::isSoftpipe() ? 96 : 240, H = W * 3 / 4, bar = 22;
+  const int W = ts::test::isSoftpipe() ? 96 : 240, H = W * 3 / 4, bar = views::liveBarHeight(W, H);
   ts::test::Demo d("parallax_aniso", {"--view", "live", "--mode", "trilinear", "--compare", "--against", "ewa"});
   ts::test::context().resize(W, H);
   d.measure();
@@ -542,7 +543,7 @@ TEST(Live, SplitScreenIsTheTwoModesHalves) {
 TEST(Live, GradientsKeyReachesTheLivePasses) {
   ts::test::context();
   TS_REQUIRE_GL_VERSION(30);
-  const int W = ts::test::isSoftpipe() ? 96 : 240, H = W * 3 / 4, bar = 22;
+  const int W = ts::test::isSoftpipe() ? 96 : 240, H = W * 3 / 4, bar = views::liveBarHeight(W, H);
   ts::test::Demo d("parallax_aniso",
                    {"--view", "live", "--mode", "trilinear", "--compare", "--against", "aniso16", "--gradients", "x4"});
   ts::test::context().resize(W, H);

@@ -286,11 +286,16 @@ inline void Views::buildError(ts::Frame& f, const Shown& shown) const {
 }
 
 // The live view: the picture fills the window; its two lines of text sit on
-// dark bars across the top and bottom (22 px at scale 1), their scale the
-// window's (at most 2).
+// dark bars across the top and bottom, a line of text tall and a margin,
+// their scale the window's (at most 2).
+inline int liveTextScale(int width, int height) { return ts::layout::scaleFor({0, 0, width, height}, 2); }
+inline int liveBarHeight(int width, int height) {
+  const int s = liveTextScale(width, height);
+  return int(ts::layout::lineHeight(s)) + 5 * s;
+}
 inline void Views::buildLive(ts::Frame& f, const Live* live) const {
   namespace L = ts::layout;
-  const int s = L::scaleFor({0, 0, f.width, f.height}, 2), bar = int(L::lineHeight(s)) + 5 * s;
+  const int s = liveTextScale(f.width, f.height), bar = liveBarHeight(f.width, f.height);
   std::string head = std::string("Seed 003  ") + kMaps[map_] + ", view angle " + fmtNum("%.0f", cam_.elevationDeg) +
                      " deg, azimuth " + fmtNum("%.0f", cam_.azimuthDeg) + " deg, height " +
                      fmtNum("%.2f", heightScale_) + gradientsNote() + ", live";

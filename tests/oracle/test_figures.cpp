@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -147,6 +148,12 @@ TEST_P(Figure, InspectorAgreesWithTheReferenceAtRandomPixels) {
     // the picture GL drew, the reference its own recomputation of that frame
     // (unknown where the frame's pixels are a program's): not comparable here.
     if (in.texture >= 0 && rendered_->frame.textures.at(size_t(in.texture)).renderedFrom) continue;
+    // A GL_NEAREST lookup exactly on a texel edge (a panel 300 px wide showing
+    // 320 texels puts some pixel centres there): either texel is legal, the
+    // oracle checks both sides, and the inspector and the reference image
+    // may round the tie apart.
+    auto onEdge = [](double c) { return std::isfinite(c) && std::abs(c - std::round(c)) < 1e-4; };
+    if (in.textured && in.filter == GL_NEAREST && (onEdge(in.u) || onEdge(in.v))) continue;
     const ts::Rgba want = reference(false).image().at(x, y), got = ref::toRgba(in.pixelRgba);
     EXPECT_LE(std::abs(int(got.r) - want.r) + std::abs(int(got.g) - want.g) + std::abs(int(got.b) - want.b), 3)
         << c.spec.id << " pixel " << x << "," << y << "\n"
