@@ -385,7 +385,7 @@ std::vector<ts::FigureSpec> BumpMapping::figures() const {
        "Normals as colours (0.5 + 0.5 n, eye space): the normal map baked from the same heights (B3) beside R's.",
        {"--view", "normals", "--method", "normalmap", "--heights", "bricks"},
        1024,
-       560,
+       632,
        "The normal map baked from the heights is {normal_err_deg[normalmap]} deg from the displaced surface's "
        "normal on average (Blinn's per pixel: {normal_err_deg[blinn]})."},
       {"bump_methods",

@@ -140,7 +140,7 @@ class ParallaxAniso final : public ts::Scene {
          "table is in parallax_modes.csv.",
          {"--view", "modes", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"},
          1360,
-         660,
+         700,
          "PSNR against the traced reference: M3 EWA {ewa_psnr_all} dB, M4 without hidden texels {ewa_vis_psnr_all} "
          "dB, at {ewa_lookups} and {ewa_vis_lookups} lookups per pixel."},
         {"parallax_error_band",
@@ -151,7 +151,7 @@ class ParallaxAniso final : public ts::Scene {
          "levels or more.",
          {"--view", "error", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"},
          1360,
-         340,
+         370,
          "PSNR inside the occlusion band ({band_pixels} pixels): M2 {aniso16_psnr_band} dB, M3 {ewa_psnr_band} dB, "
          "M4 {ewa_vis_psnr_band} dB."},
         {"parallax_step",
@@ -160,7 +160,7 @@ class ParallaxAniso final : public ts::Scene {
          "mode and the reference, as in parallax_modes.",
          {"--view", "modes", "--map", "step", "--res", "320", "--rays", "12", "--time", "3"},
          1360,
-         660,
+         700,
          "On the step map leaving out hidden texels costs: M4 {ewa_vis_psnr_all} dB against M3's {ewa_psnr_all} dB "
          "over the whole frame."},
     };

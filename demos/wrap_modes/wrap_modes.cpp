@@ -139,7 +139,7 @@ class WrapModes final : public ts::Scene {
          "GL_MODULATE multiplies the highlight by the texel; GL_SEPARATE_SPECULAR_COLOR adds it after texturing.",
          {"--view", "env"},
          1200,
-         520,
+         560,
          "Every environment matches its table ({env_table_mismatches} mismatches); GL_MODULATE dims the "
          "highlight to {highlight_peak[modulate]}, GL_SEPARATE_SPECULAR_COLOR keeps "
          "{highlight_peak[separate_specular]}."}};
