@@ -1,0 +1,176 @@
+// Lighting from an environment map: the highlights of any number of lights
+// from one texture lookup (seed 001 ¶44-45).
+//
+// The claim (seed 001 ¶44): Gouraud shading loses highlights between
+// vertices; an environment map that holds the lighting gives "the highlights
+// of any number of light sources at a fixed cost, per pixel".  Phong's
+// specular term of directional lights depends on the mirror direction r
+// alone,
+//   S(r) = sum_k C_k max(0, r.L_k)^n          (n = 32, L_k towards light k)
+// so it can be baked into a cube map by direction, texel by texel, and read
+// back per pixel by one textureCube(map, r), r = v - 2 (v.n) n (Buss VI.3).
+// Against per-pixel Phong with the same lights (a GLSL loop over them) the
+// map differs only by its resolution and GL_LINEAR filtering (and 8-bit
+// texels); the error falls with the map's size, and the cost stays one
+// lookup a pixel whether there are 1, 4 or 16 lights, while Phong makes one
+// evaluation a light.  The map is fixed to the world: lights that move mean
+// a new map (seed 001 ¶45's "lighting environment map of the whole scene").
+//
+// Keys (each is also a flag, see --help):
+//   n  lights: 1 | 4 | 16
+//   m  method: map (one lookup) | phong (a loop over the lights) | diff (|map - phong| x 8)
+//   s  the map's size: 16 | 32 | 64 | 128 texels a face's side
+//   v  view: single (the method chosen) | grid (every method for 1, 4 and 16 lights)
+//
+// The equations (env_lighting_math.hpp):
+//   the map's texel (face f, i, j):  S(cubeDir(f, (i + 1/2)/N, (j + 1/2)/N)), clamped, 8 bits
+//   a pixel, map:    BASE + textureCube(map, r)            1 lookup, 0 light evaluations
+//   a pixel, Phong:  BASE + clamp(sum_k C_k pow(max(0, r.L_k), n))   0 lookups, one evaluation a light
+//   the error bound: bilinear interpolation over texels h = 2/N radians apart errs by at most
+//                    h^2/8 (|f_uu| + |f_vv|) <= 255 C n h^2 / 4 levels (+1 for 8-bit rounding)
+//
+// What the GL does (common/gl/render.cpp draws the Frame of env_lighting_views.hpp):
+//   glGenTextures; glBindTexture(GL_TEXTURE_CUBE_MAP, tex);
+//   glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_RGBA8, N, N, 0, GL_RGBA, GL_UNSIGNED_BYTE, face f);
+//   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER / _MAG_FILTER, GL_LINEAR);
+//   glCreateShader / glShaderSource / glLinkProgram (GLSL 1.20, METHOD and LIGHTS by #define);
+//   glUseProgram; glUniform4f(glGetUniformLocation(p, "lightDir[k]"), ...) for Phong's lights;
+//   glBegin(GL_TRIANGLES) of glTexCoord4f(normal) + glVertex3f, the sphere.
+// Listings: book_figures/env_lighting_lights.gl.txt (the grid), env_lighting_map16.gl.txt.
+//
+// Measured (env_lighting_measure.hpp): the sphere at 256^2 with the map and
+// with Phong, read back, the RMS and largest difference in 8-bit levels over
+// the pixels inside its outline, for 1, 4 and 16 lights, at this map size and
+// at 32 and 128; and each program built with COUNT 1, which writes the
+// lookups and light evaluations its pixels made: read back, not typed.
+#include <string>
+#include <vector>
+
+#include "common/core/layout.hpp"
+#include "common/core/scene.hpp"
+#include "common/gl/render.hpp"
+#include "demos/env_lighting/env_lighting_math.hpp"
+#include "demos/env_lighting/env_lighting_measure.hpp"
+#include "demos/env_lighting/env_lighting_views.hpp"
+
+namespace {
+using namespace envlight;
+const char* const kMethodTitles[] = {"one map lookup", "per-pixel Phong", "|map - Phong| x 8"};
+
+class EnvLighting final : public ts::Scene {
+ public:
+  std::string id() const override { return "env_lighting"; }
+  std::string title() const override { return "Lighting from an environment map (seed 001 ¶44-45)"; }
+  std::string about() const override {
+    return "The specular highlights of 1, 4 or 16 directional lights baked into one cube map by direction, read\n"
+           "per pixel by one textureCube at the mirror direction, against per-pixel Phong with the same lights (a\n"
+           "GLSL loop).  Measured: the RMS difference in 8-bit levels at two map sizes, and the lookups and light\n"
+           "evaluations each pixel makes, counted by the shaders themselves.";
+  }
+  int defaultWidth() const override { return 640; }
+  int defaultHeight() const override { return 600; }
+  std::vector<std::string> claim() const override { return {"envlight_rms_levels[16]", "envlight_lookups_per_pixel"}; }
+  void addOptions(ts::Options& o) override {
+    o.addEnum("lights", &lights_, {"1", "4", "16"}, "the number of directional lights", 'n');
+    o.addEnum("method", &method_, {"map", "phong", "diff"},
+              "map: one cube-map lookup | phong: a loop over the lights | diff: |map - phong| x 8", 'm');
+    o.addEnum("face", &face_, {"16", "32", "64", "128"}, "the lighting map's size: texels along a face's side", 's');
+    o.addEnum("view", &view_, {"single", "grid"}, "single: the method chosen | grid: every method, 1, 4, 16 lights",
+              'v');
+  }
+  std::vector<ts::FigureSpec> figures() const override {
+    return {{"env_lighting_lights",
+             "seed 001 ¶44-45",
+             "The highlights of 1, 4 and 16 directional lights on a sphere (rows), from one lookup in a cube map "
+             "of 64 texels a face that holds their specular sum by direction (left), from per-pixel Phong's loop "
+             "over the lights (middle), and their difference magnified 8 times (right).",
+             {"--view", "grid", "--face", "64"},
+             1200,
+             1280,
+             "one lookup a pixel ({envlight_lookups_per_pixel}) against {phong_light_evaluations_per_pixel[16]} "
+             "light evaluations for 16 lights; RMS {envlight_rms_levels[16/32]} levels with a 32-texel map, "
+             "{envlight_rms_levels[16/128]} with 128"},
+            {"env_lighting_map16",
+             "seed 001 ¶44",
+             "Sixteen lights' highlights from one lookup in a cube map of 32 texels a face: the map's texels "
+             "show as steps in the difference, 8 times magnified, which a 128-texel map makes 16 times smaller.",
+             {"--view", "single", "--method", "diff", "--lights", "16", "--face", "32"},
+             640,
+             600,
+             "RMS {envlight_rms_levels[16]} levels at 32 texels a face, {envlight_rms_levels[16/128]} at 128"}};
+  }
+  ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
+  ts::Measurements measure(ts::Renderer& r) override { return measureAll(r, faceTexels()); }
+
+ private:
+  int faceTexels() const { return 16 << face_; }
+  int lightCount() const { return kLightCounts[lights_]; }
+  // The caption under a picture: what it cost or how far it is from Phong, measured.
+  ts::layout::Text costText(const ts::Measurements& m, Method method, int n) const;
+  int lights_ = 1, method_ = kMap, face_ = 2, view_ = 0;
+};
+
+ts::layout::Text EnvLighting::costText(const ts::Measurements& m, Method method, int n) const {
+  namespace L = ts::layout;
+  const std::string k = "[" + std::to_string(n) + "]";
+  if (method == kMap)
+    return L::measuredText(m, "{envlight_lookups_per_pixel" + k +
+                                  "|%.0f} lookup a pixel, {envlight_evaluations_per_pixel" + k +
+                                  "|%.0f} lights evaluated");
+  if (method == kPhong)
+    return L::measuredText(m, "{phong_light_evaluations_per_pixel" + k + "|%.0f} light evaluations a pixel");
+  return L::measuredText(m, "RMS {envlight_rms_levels" + k + "|%.2f} levels, max {envlight_max_levels" + k + "|%.0f}");
+}
+
+ts::Frame EnvLighting::build(int width, int height, const ts::Measurements& measured) const {
+  namespace L = ts::layout;
+  ts::Frame f = L::blankFrame(width, height);
+  const int face = faceTexels();
+  const float w = float(width), h = float(height);
+  // The bottom band: what the sizes do to the error, and the key of the difference's colours.
+  const int footScale = L::scaleFor({0, 0, width, height / 3}, 2);
+  const float foot = 3 * L::lineHeight(footScale) + 8;
+  const L::Box area{6, 6, w - 6, h - 6 - foot};
+  auto cell = [&](const L::Cell& c, Method method, int n) {
+    f.panels.push_back(
+        spherePanel(f, std::string(kMethodKeys[method]) + "_" + std::to_string(n), c.picture, method, n, face));
+    L::caption(f, c.above,
+               std::string(kMethodTitles[method]) + ", " + std::to_string(n) + (n == 1 ? " light" : " lights"),
+               L::kWhite, c.scale);
+    L::caption(f, c.below, costText(measured, method, n), L::kAmber, c.scale);
+  };
+  if (view_ == 1) {
+    // A row per number of lights, the three methods across it.
+    const float rowH = (area.y1 - area.y0) / 3;
+    for (int row = 0; row < 3; ++row) {
+      L::FlowSpec spec;
+      spec.n = 3, spec.linesAbove = 1, spec.linesBelow = 1, spec.maxScale = 2;
+      const std::vector<L::Cell> cells = L::flow({area.x0, area.y0 + row * rowH, area.x1, area.y0 + (row + 1) * rowH},
+                                                 spec);
+      for (int m = 0; m < kMethods; ++m) cell(cells[size_t(m)], Method(m), kLightCounts[row]);
+    }
+  } else {
+    L::FlowSpec spec;
+    spec.n = 1, spec.linesAbove = 1, spec.linesBelow = 1;
+    cell(L::flow(area, spec)[0], Method(method_), lightCount());
+  }
+  const L::Box band{6, h - 6 - foot, w - 6, h - 6};
+  const std::string n = std::to_string(lightCount()), k16 = "[" + n + "/";
+  const float y = L::caption(
+      f, {band.x0, band.y0, band.x1, band.y0 + 2 * L::lineHeight(footScale)},
+      L::measuredText(measured, "map " + std::to_string(face) + " texels a face (this picture); with " + n +
+                                    " lights, RMS {envlight_rms_levels" + k16 +
+                                    "32]|%.2f} levels at 32 texels, "
+                                    "{envlight_rms_levels" +
+                                    k16 + "128]|%.2f} at 128; bound at 32: ") +
+          L::given("error bound at 32 texels a face (levels)", errorBoundLevels(32), "%.1f") + " (texel " +
+          L::given("texel angle at a face's centre, 32 texels (degrees)", texelAngleDeg(32), "%.2f") + " deg)",
+      L::kAmber, footScale);
+  L::legend(f, {band.x0, y + 2, band.x1, band.y1},
+            {{{1.0f, 1.0f, 1.0f, 1.0f}, "difference panels: each channel's |map - Phong| x 8, white at 32 levels"}},
+            footScale);
+  return f;
+}
+}  // namespace
+
+TS_REGISTER_SCENE(EnvLighting);
