@@ -82,9 +82,9 @@ class EnvLighting final : public ts::Scene {
     return {{"env_lighting_lights",
              "seed 001 ¶44-45",
              "The highlights of 1, 4 and 16 directional lights on a sphere (rows), from one lookup in a cube map "
-             "of 64 texels a face that holds their specular sum by direction (left), from per-pixel Phong's loop "
+             "of 32 texels a face that holds their specular sum by direction (left), from per-pixel Phong's loop "
              "over the lights (middle), and their difference magnified 8 times (right).",
-             {"--view", "grid", "--face", "64"},
+             {"--view", "grid", "--face", "32"},
              1200,
              1280,
              "one lookup a pixel ({envlight_lookups_per_pixel}) against {phong_light_evaluations_per_pixel[16]} "
@@ -107,18 +107,18 @@ class EnvLighting final : public ts::Scene {
   int lightCount() const { return kLightCounts[lights_]; }
   // The caption under a picture: what it cost or how far it is from Phong, measured.
   ts::layout::Text costText(const ts::Measurements& m, Method method, int n) const;
-  int lights_ = 1, method_ = kMap, face_ = 2, view_ = 0;
+  int lights_ = 1, method_ = kMap, face_ = 1, view_ = 0;
 };
 
 ts::layout::Text EnvLighting::costText(const ts::Measurements& m, Method method, int n) const {
   namespace L = ts::layout;
   const std::string k = "[" + std::to_string(n) + "]";
   if (method == kMap)
-    return L::measuredText(m, "{envlight_lookups_per_pixel" + k +
-                                  "|%.0f} lookup a pixel, {envlight_evaluations_per_pixel" + k +
-                                  "|%.0f} lights evaluated");
+    return L::measuredText(m, "lookups a pixel: {envlight_lookups_per_pixel" + k +
+                                  "|%.0f}; lights evaluated: {envlight_evaluations_per_pixel" + k + "|%.0f}");
   if (method == kPhong)
-    return L::measuredText(m, "{phong_light_evaluations_per_pixel" + k + "|%.0f} light evaluations a pixel");
+    return L::measuredText(m, "lights evaluated a pixel: {phong_light_evaluations_per_pixel" + k +
+                                  "|%.0f}; lookups: {phong_lookups_per_pixel" + k + "|%.0f}");
   return L::measuredText(m, "RMS {envlight_rms_levels" + k + "|%.2f} levels, max {envlight_max_levels" + k + "|%.0f}");
 }
 
@@ -154,20 +154,26 @@ ts::Frame EnvLighting::build(int width, int height, const ts::Measurements& meas
     spec.n = 1, spec.linesAbove = 1, spec.linesBelow = 1;
     cell(L::flow(area, spec)[0], Method(method_), lightCount());
   }
+  // The sizes' story for the lights shown (16 in the grid): the RMS at 32 and 128 texels a face, the floor
+  // the 8-bit rounding leaves (the finest map), and where the largest error sits.
   const L::Box band{6, h - 6 - foot, w - 6, h - 6};
-  const std::string n = std::to_string(lightCount()), k16 = "[" + n + "/";
-  const float y = L::caption(
-      f, {band.x0, band.y0, band.x1, band.y0 + 2 * L::lineHeight(footScale)},
-      L::measuredText(measured, "map " + std::to_string(face) + " texels a face (this picture); with " + n +
-                                    " lights, RMS {envlight_rms_levels" + k16 +
-                                    "32]|%.2f} levels at 32 texels, "
-                                    "{envlight_rms_levels" +
-                                    k16 + "128]|%.2f} at 128; bound at 32: ") +
-          L::given("error bound at 32 texels a face (levels)", errorBoundLevels(32), "%.1f") + " (texel " +
-          L::given("texel angle at a face's centre, 32 texels (degrees)", texelAngleDeg(32), "%.2f") + " deg)",
-      L::kAmber, footScale);
+  const std::string n = std::to_string(view_ == 1 ? 16 : lightCount()), k = "[" + n + "/";
+  auto size = [](int texels) { return L::given("a map's texels along a face's side", texels, "%.0f"); };
+  auto rms = [&](int texels) {
+    return L::measuredText(measured, "{envlight_rms_levels" + k + std::to_string(texels) + "]|%.2f}");
+  };
+  const L::Text story =
+      L::Text(n + " lights: RMS ") + rms(32) + " levels with " + size(32) + " texels a face, " + rms(128) + " with " +
+      size(128) + ", " + rms(256) + " with " + size(256) + " (the 8-bit floor); bound at " + size(32) + ": " +
+      L::given("derived error bound at 32 texels a face (levels)", errorBoundLevels(32), "%.1f") + " (a texel " +
+      L::given("texel angle at a face's centre, 32 texels (degrees)", texelAngleDeg(32), "%.2f") + " deg); " +
+      L::measuredText(measured, "largest {envlight_max_interior_levels" + k + "32]|%.0f} inside the faces, " +
+                                    "{envlight_max_edge_levels" + k + "32]|%.0f} at their edges (no seamless filter)");
+  const float y = L::caption(f, {band.x0, band.y0, band.x1, band.y0 + 2 * L::lineHeight(footScale)}, story, L::kAmber,
+                             footScale);
   L::legend(f, {band.x0, y + 2, band.x1, band.y1},
-            {{{1.0f, 1.0f, 1.0f, 1.0f}, "difference panels: each channel's |map - Phong| x 8, white at 32 levels"}},
+            {{{1.0f, 1.0f, 1.0f, 1.0f},
+              "difference: each channel's |map - Phong| x 8 (white: 1/8 of full scale apart or more)"}},
             footScale);
   return f;
 }

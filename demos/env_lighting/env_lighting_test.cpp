@@ -19,6 +19,7 @@
 #include <glm/glm.hpp>
 
 #include "demos/env_lighting/env_lighting_math.hpp"
+#include "demos/env_lighting/env_lighting_views.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
