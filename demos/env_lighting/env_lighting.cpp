@@ -80,7 +80,7 @@ class EnvLighting final : public ts::Scene {
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {{"env_lighting_lights",
-             "seed 001 ¶44-45",
+             "Seed 001 ¶44-45 (lighting from an environment map)",
              "The highlights of 1, 4 and 16 directional lights on a sphere (rows), from one lookup in a cube map "
              "of 32 texels a face that holds their specular sum by direction (left), from per-pixel Phong's loop "
              "over the lights (middle), and their difference magnified 8 times (right).",
@@ -91,13 +91,16 @@ class EnvLighting final : public ts::Scene {
              "light evaluations for 16 lights; RMS {envlight_rms_levels[16/32]} levels with a 32-texel map, "
              "{envlight_rms_levels[16/128]} with 128"},
             {"env_lighting_map16",
-             "seed 001 ¶44",
-             "Sixteen lights' highlights from one lookup in a cube map of 32 texels a face: the map's texels "
-             "show as steps in the difference, 8 times magnified, which a 128-texel map makes 16 times smaller.",
+             "Seed 001 ¶44 (lighting from an environment map)",
+             "Sixteen lights' highlights from one lookup in a cube map of 32 texels a face, against per-pixel Phong, "
+             "their difference 8 times magnified: the map's texels show as a lattice over each highlight and its "
+             "faces' edges as lines, where GL_LINEAR without seamless filtering clamps to one face.",
              {"--view", "single", "--method", "diff", "--lights", "16", "--face", "32"},
              640,
              600,
-             "RMS {envlight_rms_levels[16]} levels at 32 texels a face, {envlight_rms_levels[16/128]} at 128"}};
+             "RMS {envlight_rms_levels[16]} levels at 32 texels a face, {envlight_rms_levels[16/128]} at 128, "
+             "{envlight_rms_levels[16/256]} at 256 (the 8-bit floor); largest {envlight_max_interior_levels[16/32]} "
+             "inside the faces, {envlight_max_edge_levels[16/32]} at their edges"}};
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override { return measureAll(r, faceTexels()); }
@@ -129,7 +132,23 @@ ts::Frame EnvLighting::build(int width, int height, const ts::Measurements& meas
   const float w = float(width), h = float(height);
   // The bottom band: what the sizes do to the error, and the key of the difference's colours.
   const int footScale = L::scaleFor({0, 0, width, height / 3}, 2);
-  const float foot = 3 * L::lineHeight(footScale) + 8;
+  // The sizes' story for the lights shown (16 in the grid): the RMS at 32 and 128 texels a face, the floor
+  // the 8-bit rounding leaves (the finest map), and where the largest error sits.
+  const std::string n = std::to_string(view_ == 1 ? 16 : lightCount()), k = "[" + n + "/";
+  auto size = [](int texels) { return L::given("a map's texels along a face's side", texels, "%.0f"); };
+  auto rms = [&](int texels) {
+    return L::measuredText(measured, "{envlight_rms_levels" + k + std::to_string(texels) + "]|%.2f}");
+  };
+  const L::Text story =
+      L::Text(n + " lights: RMS ") + rms(32) + " levels with " + size(32) + " texels a face, " + rms(128) + " with " +
+      size(128) + ", " + rms(256) + " with " + size(256) + " (the 8-bit floor); bound at " + size(32) + ": " +
+      L::given("derived error bound at 32 texels a face (levels)", errorBoundLevels(32), "%.1f") + " (a texel " +
+      L::given("texel angle at a face's centre, 32 texels (degrees)", texelAngleDeg(32), "%.2f") + " deg); " +
+      L::measuredText(measured, "largest {envlight_max_interior_levels" + k + "32]|%.0f} inside the faces, " +
+                                    "{envlight_max_edge_levels" + k + "32]|%.0f} at their edges (no seamless filter)");
+  // Room for the story's lines at the scale it will be drawn, and one line for the legend.
+  const int storyLines = L::captionLines(story.text, footScale, w - 12);
+  const float foot = float(storyLines + 1) * L::lineHeight(footScale) + 8;
   const L::Box area{6, 6, w - 6, h - 6 - foot};
   auto cell = [&](const L::Cell& c, Method method, int n) {
     f.panels.push_back(
@@ -154,23 +173,9 @@ ts::Frame EnvLighting::build(int width, int height, const ts::Measurements& meas
     spec.n = 1, spec.linesAbove = 1, spec.linesBelow = 1;
     cell(L::flow(area, spec)[0], Method(method_), lightCount());
   }
-  // The sizes' story for the lights shown (16 in the grid): the RMS at 32 and 128 texels a face, the floor
-  // the 8-bit rounding leaves (the finest map), and where the largest error sits.
   const L::Box band{6, h - 6 - foot, w - 6, h - 6};
-  const std::string n = std::to_string(view_ == 1 ? 16 : lightCount()), k = "[" + n + "/";
-  auto size = [](int texels) { return L::given("a map's texels along a face's side", texels, "%.0f"); };
-  auto rms = [&](int texels) {
-    return L::measuredText(measured, "{envlight_rms_levels" + k + std::to_string(texels) + "]|%.2f}");
-  };
-  const L::Text story =
-      L::Text(n + " lights: RMS ") + rms(32) + " levels with " + size(32) + " texels a face, " + rms(128) + " with " +
-      size(128) + ", " + rms(256) + " with " + size(256) + " (the 8-bit floor); bound at " + size(32) + ": " +
-      L::given("derived error bound at 32 texels a face (levels)", errorBoundLevels(32), "%.1f") + " (a texel " +
-      L::given("texel angle at a face's centre, 32 texels (degrees)", texelAngleDeg(32), "%.2f") + " deg); " +
-      L::measuredText(measured, "largest {envlight_max_interior_levels" + k + "32]|%.0f} inside the faces, " +
-                                    "{envlight_max_edge_levels" + k + "32]|%.0f} at their edges (no seamless filter)");
-  const float y = L::caption(f, {band.x0, band.y0, band.x1, band.y0 + 2 * L::lineHeight(footScale)}, story, L::kAmber,
-                             footScale);
+  const float y = L::caption(f, {band.x0, band.y0, band.x1, band.y0 + storyLines * L::lineHeight(footScale)}, story,
+                             L::kAmber, footScale);
   L::legend(f, {band.x0, y + 2, band.x1, band.y1},
             {{{1.0f, 1.0f, 1.0f, 1.0f},
               "difference: each channel's |map - Phong| x 8 (white: 1/8 of full scale apart or more)"}},

@@ -96,7 +96,8 @@ inline ts::Measurements measureAll(ts::Renderer& r, int face) {
     out.push_back({"envlight_rms_levels" + k, d.rms,
                    "RMS difference (8-bit levels, R G B, inside the sphere's outline) between one cube-map lookup "
                    "and per-pixel Phong with " +
-                       std::to_string(n) + " lights, map " + std::to_string(face) + " texels a face's side"});
+                       std::to_string(n) + (n == 1 ? " light" : " lights") + ", map " + std::to_string(face) +
+                       " texels a face's side"});
     out.push_back({"envlight_max_levels" + k, double(d.max), "largest difference of the same pixels, 8-bit levels"});
     ts::measureProgress(++step / steps);
     for (int f : kMeasuredFaces) {
