@@ -4,7 +4,8 @@
 # (context, measure, build, render, readback, PNG encode; OSMesa and EGL), then
 # its frames per second in a 1024x768 window under Xvfb; each Figure VI.7
 # sampling mode at 1024x768; each parallax filtering mode at 800x600; the filter
-# zoo's exact reference at 800x600.  Speed is measured,
+# zoo's exact reference at 800x600; lighting from an environment map against
+# per-pixel Phong at 1, 4 and 16 lights, 768x768.  Speed is measured,
 # not asserted: nothing here is a CTest test.
 #
 # Extra arguments go to both programs, e.g.
