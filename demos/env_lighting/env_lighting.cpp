@@ -176,10 +176,10 @@ ts::Frame EnvLighting::build(int width, int height, const ts::Measurements& meas
   const L::Box band{6, h - 6 - foot, w - 6, h - 6};
   const float y = L::caption(f, {band.x0, band.y0, band.x1, band.y0 + storyLines * L::lineHeight(footScale)}, story,
                              L::kAmber, footScale);
-  L::legend(f, {band.x0, y + 2, band.x1, band.y1},
-            {{{1.0f, 1.0f, 1.0f, 1.0f},
-              "difference: each channel's |map - Phong| x 8 (white: 1/8 of full scale apart or more)"}},
-            footScale);
+  // The difference panels' colours mean something: each channel is |map - Phong| x 8 (full at 32 levels).
+  if (view_ == 1 || method_ == kDiff)
+    L::legend(f, {band.x0, y + 2, band.x1, band.y1}, {{{1.0f, 1.0f, 1.0f, 1.0f}, "|map - Phong| x 8, per channel"}},
+              footScale);
   return f;
 }
 }  // namespace
