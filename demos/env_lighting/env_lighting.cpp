@@ -79,28 +79,30 @@ class EnvLighting final : public ts::Scene {
               'v');
   }
   std::vector<ts::FigureSpec> figures() const override {
-    return {{"env_lighting_lights",
-             "Seed 001 ¶44-45 (lighting from an environment map)",
-             "The highlights of 1, 4 and 16 directional lights on a sphere (rows), from one lookup in a cube map "
-             "of 32 texels a face that holds their specular sum by direction (left), from per-pixel Phong's loop "
-             "over the lights (middle), and their difference magnified 8 times (right).",
-             {"--view", "grid", "--face", "32"},
-             1200,
-             1280,
-             "one lookup a pixel ({envlight_lookups_per_pixel}) against {phong_light_evaluations_per_pixel[16]} "
-             "light evaluations for 16 lights; RMS {envlight_rms_levels[16/32]} levels with a 32-texel map, "
-             "{envlight_rms_levels[16/128]} with 128"},
-            {"env_lighting_map16",
-             "Seed 001 ¶44 (lighting from an environment map)",
-             "Sixteen lights' highlights from one lookup in a cube map of 32 texels a face, against per-pixel Phong, "
-             "their difference 8 times magnified: the map's texels show as a lattice over each highlight and its "
-             "faces' edges as lines, where GL_LINEAR without seamless filtering clamps to one face.",
-             {"--view", "single", "--method", "diff", "--lights", "16", "--face", "32"},
-             640,
-             600,
-             "RMS {envlight_rms_levels[16]} levels at 32 texels a face, {envlight_rms_levels[16/128]} at 128, "
-             "{envlight_rms_levels[16/256]} at 256 (the 8-bit floor); largest {envlight_max_interior_levels[16/32]} "
-             "inside the faces, {envlight_max_edge_levels[16/32]} at their edges"}};
+    return {
+        {"env_lighting_lights",
+         "Seed 001 ¶44-45 (lighting from an environment map)",
+         "The highlights of 1, 4 and 16 directional lights on a sphere (rows), from one lookup in a cube map "
+         "of 32 texels a face that holds their specular sum by direction (left), from per-pixel Phong's loop "
+         "over the lights (middle), and their difference magnified 8 times (right).",
+         {"--view", "grid", "--face", "32"},
+         1200,
+         1280,
+         "one lookup a pixel ({envlight_lookups_per_pixel}) against {phong_light_evaluations_per_pixel[16]} "
+         "light evaluations for 16 lights; RMS {envlight_rms_levels[16/32]} levels with a 32-texel map, "
+         "{envlight_rms_levels[16/128]} with 128; above the 8-bit floor {envlight_rms_above_floor_levels[16/32]} and "
+         "{envlight_rms_above_floor_levels[16/128]}"},
+        {"env_lighting_map16",
+         "Seed 001 ¶44 (lighting from an environment map)",
+         "Sixteen lights' highlights from one lookup in a cube map of 32 texels a face, against per-pixel Phong, "
+         "their difference 8 times magnified: the map's texels show as a lattice over each highlight and its "
+         "faces' edges as lines, where GL_LINEAR without seamless filtering clamps to one face.",
+         {"--view", "single", "--method", "diff", "--lights", "16", "--face", "32"},
+         640,
+         600,
+         "RMS {envlight_rms_levels[16]} levels at 32 texels a face, {envlight_rms_levels[16/128]} at 128, "
+         "{envlight_rms_levels[16/256]} at 256 (the 8-bit floor); largest {envlight_max_interior_levels[16/32]} "
+         "inside the faces, {envlight_max_edge_levels[16/32]} at their edges"}};
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override { return measureAll(r, faceTexels()); }
@@ -143,7 +145,10 @@ ts::Frame EnvLighting::build(int width, int height, const ts::Measurements& meas
       L::Text(n + " lights: RMS ") + rms(32) + " levels with " + size(32) + " texels a face, " + rms(128) + " with " +
       size(128) + ", " + rms(256) + " with " + size(256) + " (the 8-bit floor); bound at " + size(32) + ": " +
       L::given("derived error bound at 32 texels a face (levels)", errorBoundLevels(32), "%.1f") + " (a texel " +
-      L::given("texel angle at a face's centre, 32 texels (degrees)", texelAngleDeg(32), "%.2f") + " deg); " +
+      L::given("texel angle at a face's centre, 32 texels (degrees)", texelAngleDeg(32), "%.2f") +
+      " deg); above the floor " +
+      L::measuredText(measured, "{envlight_rms_above_floor_levels" + k +
+                                    "32]|%.2f} and {envlight_rms_above_floor_levels" + k + "128]|%.2f}; ") +
       L::measuredText(measured, "largest {envlight_max_interior_levels" + k + "32]|%.0f} inside the faces, " +
                                     "{envlight_max_edge_levels" + k + "32]|%.0f} at their edges (no seamless filter)");
   // Room for the story's lines at the scale it will be drawn, and one line for the legend.

@@ -126,6 +126,23 @@ inline ts::Measurements measureAll(ts::Renderer& r, int face) {
     out.push_back({"phong_light_evaluations_min" + k, double(ph.evaluationsMin), "the smallest count over the disc"});
     out.push_back({"phong_lookups_per_pixel" + k, double(ph.lookupsMax), "cube-map lookups a pixel of Phong makes"});
   }
+  // The part of the RMS the map's size decides: above the 8-bit floor (the finest map's RMS), in quadrature.
+  auto find = [&](const std::string& name) {
+    for (const ts::Measurement& m : out)
+      if (m.name == name) return m.value;
+    return 0.0;
+  };
+  for (int n : kLightCounts) {
+    const std::string k = std::to_string(n) + "/";
+    const double floor = find("envlight_rms_levels[" + k + "256]");
+    for (int f : {32, 128}) {
+      const double rms = find("envlight_rms_levels[" + k + std::to_string(f) + "]");
+      out.push_back(
+          {"envlight_rms_above_floor_levels[" + k + std::to_string(f) + "]",
+           std::sqrt(std::max(0.0, rms * rms - floor * floor)),
+           "the RMS above the 8-bit floor (the 256-texel map's RMS), in quadrature: the interpolation error"});
+    }
+  }
   double lookups = 0;
   for (const ts::Measurement& m : out)
     if (m.name.rfind("envlight_lookups_per_pixel[", 0) == 0) lookups = std::max(lookups, m.value);

@@ -66,8 +66,10 @@ TEST(EnvLighting, TheErrorFallsWithTheMapsSize) {
     SCOPED_TRACE("lights " + std::to_string(n));
     const double floor = value(m, "envlight_rms_levels" + key(n, 256));
     auto above = [&](int face) {
-      const double r = value(m, "envlight_rms_levels" + key(n, face));
-      return std::sqrt(std::max(0.0, r * r - floor * floor));
+      const double r = value(m, "envlight_rms_levels" + key(n, face)),
+                   a = std::sqrt(std::max(0.0, r * r - floor * floor));
+      EXPECT_NEAR(value(m, "envlight_rms_above_floor_levels" + key(n, face)), a, 1e-12) << "the printed one";
+      return a;
     };
     EXPECT_LT(value(m, "envlight_rms_levels" + key(n, 128)), value(m, "envlight_rms_levels" + key(n, 32)));
     EXPECT_GT(above(32), 4.0 * above(128));
