@@ -37,6 +37,7 @@
 #include "common/core/scene.hpp"
 #include "common/gl/render.hpp"
 #include "demos/texture_animation/texture_animation_textures.hpp"
+#include "texture_animation_views.hpp"
 
 namespace {
 constexpr int kTexels = 32;          // the texture is kTexels x kTexels, and the quad shows it once
@@ -89,13 +90,20 @@ class TextureAnimation final : public ts::Scene {
            "matrix's speed (no pixel differs from the previous frame moved by it), and a wrong speed does not match.";
   }
   std::vector<std::string> claim() const override {
+    if (view_ == 1) return {"flipbook_bytes_per_frame*", "flipbook_mismatches*"};
+    if (view_ == 2) return {"torch_order_error_px*"};
+    if (view_ == 3) return {"dynamic_lightmap_rms_levels*"};
     return {"scroll_texel_mismatches", "scroll_texel_mismatches[wrong_speed]"};
   }
   void addOptions(ts::Options& o) override {
     o.addInt("speed", &speed_, 0, 16, "texels a second the texture matrix moves t by", '+', '-', 1);
     o.addFloat("time", &time_, 0.0f, 3600.0f, "the clock, seconds: the frames shown and measured", '.', ',',
                1.0f / kFramesPerSecond);
-    o.addBool("animate", &animate_, "window: run the clock (the water falls)", 'a');
+    o.addBool("animate", &animate_, "window: run the clock (the water falls; the other views step with . and ,)", 'a');
+    o.addEnum("view", &view_, {"waterfall", "flipbook", "torch", "lightmap"},
+              "the texture matrix's waterfall | a flipbook by glTexSubImage2D | a torch (alpha flipbook, blending "
+              "order) | a light map recomputed for a moving light",
+              'v');
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {{"texture_animation_waterfall",
@@ -108,10 +116,40 @@ class TextureAnimation final : public ts::Scene {
              440,
              "From one frame to the next the picture moves {scroll_shift_px[found]} pixels, as the matrix's speed "
              "gives ({scroll_shift_px[expected]}): {scroll_texel_mismatches} pixels differ; moved as a speed one "
-             "texel a second faster would, {scroll_texel_mismatches[wrong_speed]} differ."}};
+             "texel a second faster would, {scroll_texel_mismatches[wrong_speed]} differ."},
+            {"texture_animation_flipbook",
+             "Texture animation: a flipbook (seed 001)",
+             "A flame's eight frames played in one texture made once and refilled by glTexSubImage2D: the whole frame, "
+             "or only the rectangle where it differs from the frame before.  Read back at 2 pixels a texel "
+             "(GL_NEAREST), every pixel is its frame's texel.",
+             {"--view", "flipbook", "--time", "1.25"},
+             960,
+             440,
+             "A whole frame is {flipbook_bytes_per_frame[whole]} bytes, the changed rectangle "
+             "{flipbook_bytes_per_frame[partial]} on average; {flipbook_mismatches} pixels differ from their frame's "
+             "texels, {flipbook_mismatches[next_frame]} against the next frame's."},
+            {"texture_animation_torch",
+             "Texture animation: a torch (seed 001)",
+             "Two alpha flames, flipbook frames, over an opaque wall and handle: drawn after the opaque layers, back "
+             "to front with depth writes off, against the scene's order with depth writes on, and the CPU's composite.",
+             {"--view", "torch", "--time", "1.25"},
+             960,
+             400,
+             "In the right order {torch_order_error_px[right]} pixels differ from the CPU's composite, in the scene's "
+             "order {torch_order_error_px[wrong]}."},
+            {"texture_animation_lightmap",
+             "Texture animation: a light map for a moving light (seed 001)",
+             "A wall lit by a point light circling over it: per-pixel lighting on the CPU; the 32 x 32 light map "
+             "recomputed for the light and re-uploaded by glTexSubImage2D each frame; the map left as it was at time 0.",
+             {"--view", "lightmap", "--time", "1.25"},
+             960,
+             400,
+             "Against per-pixel lighting: {dynamic_lightmap_rms_levels} levels RMS with the map recomputed each frame, "
+             "{dynamic_lightmap_rms_levels[stale]} with the stale one."}};
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
+  ts::Frame buildAnimation(ts::Frame& f, const ts::Measurements& measured) const;
   // The window's clock runs after kHoldFrames frames still at --time, so the first pictures after the key
   // are the --png render's (the window tests compare them), as mipmap_popping's animation does.
   void update(double seconds) override {
@@ -123,7 +161,7 @@ class TextureAnimation final : public ts::Scene {
  private:
   // The first measured frame: the whole frames in --time.
   int firstFrame() const { return int(std::floor(double(time_) * kFramesPerSecond + 1e-6)); }
-  int speed_ = 2;
+  int speed_ = 2, view_ = 0;
   float time_ = 0;
   bool animate_ = false;
   double clock_ = 0;  // the window's running clock, seconds (animate)
@@ -133,6 +171,7 @@ class TextureAnimation final : public ts::Scene {
 ts::Frame TextureAnimation::build(int width, int height, const ts::Measurements& measured) const {
   namespace L = ts::layout;
   ts::Frame f = L::blankFrame(width, height);
+  if (view_ > 0) return buildAnimation(f, measured);
   L::FlowSpec spec;
   spec.n = kFramesShown, spec.linesAbove = 2, spec.linesBelow = 3, spec.gap = 8;
   const std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
@@ -171,6 +210,11 @@ ts::Frame TextureAnimation::build(int width, int height, const ts::Measurements&
 }
 
 ts::Measurements TextureAnimation::measure(ts::Renderer& r) {
+  if (view_ > 0) {
+    ts::Measurements out;
+    out.detail = ts::texanim::measureAnimations(r, firstFrame(), time_, 1.0 / kFramesPerSecond, out);
+    return out;
+  }
   const int n = kTexels * kPixelsPerTexel;
   auto frame = [&](int k) {
     ts::Frame f;
@@ -200,6 +244,71 @@ ts::Measurements TextureAnimation::measure(ts::Renderer& r) {
   out.push_back({"scroll_frame_changed_pixels", double(mismatches(prev, next, 0)),
                  "pixels that differ between frames k and k+1 unmoved: the texture did move"});
   return out;
+}
+
+// The flipbook, the torch and the moving light: pictures measure() rendered (texture_animation_views.hpp).
+ts::Frame TextureAnimation::buildAnimation(ts::Frame& f, const ts::Measurements& measured) const {
+  namespace L = ts::layout;
+  namespace ta = ts::texanim;
+  const ta::Pictures* p = measured.detailAs<ta::Pictures>();
+  if (!p) {
+    L::caption(f, {8, 8, float(f.width - 8), float(f.height - 8)}, "rendering ...", L::kWhite, 2);
+    return f;
+  }
+  auto M = [&](const std::string& templ) { return L::measuredText(measured, templ); };
+  const int k = firstFrame() % ta::kFlipFrames;
+  const L::Text frameK = L::given("the flipbook frame shown", k, "%.0f");
+  const L::Text frameNext = L::given("the next flipbook frame", (k + 1) % ta::kFlipFrames, "%.0f");
+  if (view_ == 1) {
+    ta::pictureRow(
+        f,
+        {{&p->flipWhole, "frame " + frameK + ": whole upload",
+          M("{flipbook_bytes_per_frame[whole]|%.0f} bytes a frame"), p->flipWholeCalls},
+         {&p->flipPartial, "frame " + frameNext + ": partial upload",
+          M("{flipbook_bytes_shown[partial]|%.0f} bytes: {flipbook_rect_w|%.0f} x {flipbook_rect_h|%.0f} texels"),
+          p->flipPartialCalls},
+         {&p->flipChanges, "what changed, " + frameK + " to " + frameNext,
+          M("{flipbook_changed_texels|%.0f} texels changed"), nullptr}},
+        {{ta::kChanged, "a texel that differs from the frame before"},
+         {ta::kUploaded, "the rectangle the partial glTexSubImage2D sends"}},
+        M("Bytes a frame: whole {flipbook_bytes_per_frame[whole]|%.0f}, partial {flipbook_bytes_per_frame[partial]|%.0f} "
+          "(mean of {flipbook_uploads|%.0f} uploads after the first, counted from the calls).  ") +
+            M("Pixels not their frame's texel: {flipbook_mismatches|%.0f}; against the next frame's: "
+              "{flipbook_mismatches[next_frame]|%.0f}."));
+  } else if (view_ == 2) {
+    ta::pictureRow(
+        f,
+        {{&p->torchRight, "opaque, then back to front", M("{torch_order_error_px[right]|%.0f} pixels off the CPU"),
+          p->torchRightCalls},
+         {&p->torchWrong, "the scene's order, depth written", M("{torch_order_error_px[wrong]|%.0f} pixels off"),
+          p->torchWrongCalls},
+         {&p->torchCpu, "the CPU's composite", "wall, handle, back flame, front flame", nullptr},
+         {&p->torchWrongMask, "the scene's order: pixels off", M("{torch_order_error_px[wrong]|%.0f} red"), nullptr}},
+        {{ta::kWrong, "a pixel over " + std::to_string(2 * ta::kTorchLevelsPerLayer) + " levels off the CPU's composite"}},
+        "Right: wall and handle with depth writes on; then glDepthMask(GL_FALSE), blending (GL_SRC_ALPHA, "
+        "GL_ONE_MINUS_SRC_ALPHA), flames back to front.  Wrong: front flame, back flame, handle, wall, depth "
+        "written: the flames' clear texels hide what lies behind them.  Flame frames " +
+            L::given("the back flame's frame", ta::backFlameFrame(firstFrame()), "%.0f") + " and " +
+            L::given("the front flame's frame", ta::frontFlameFrame(firstFrame()), "%.0f") + ".");
+  } else {
+    ta::pictureRow(
+        f,
+        {{&p->litCpu, "per-pixel lighting (CPU)",
+          "time " + L::given("time, seconds", double(time_), "%.2f") + " s", nullptr},
+         {&p->litDynamic, "map recomputed each frame", M("RMS {dynamic_lightmap_rms_levels|%.2f} levels"),
+          p->litDynamicCalls},
+         {&p->litStale, "map of time 0 (stale)", M("RMS {dynamic_lightmap_rms_levels[stale]|%.2f} levels"),
+          p->litStaleCalls},
+         {&p->lightMap, "the light map, 32 x 32", M("{lightmap_bytes_per_frame|%.0f} bytes a frame"), nullptr}},
+        {{ta::kLightNow, "the light now"}, {ta::kLightThen, "the light at time 0 (the stale map's)"}},
+        "c = base x L: unit 0 the wall (GL_REPLACE), unit 1 the light map (GL_MODULATE, GL_LINEAR), refilled by "
+        "glTexSubImage2D each frame; L = " +
+            L::given("ambient", ta::kAmbient, "%.2f") + " + " + L::given("1 - ambient", 1 - ta::kAmbient, "%.2f") +
+            " (h/d)^3, the light at height " + L::given("the light's height", ta::kLightHeight, "%.2f") +
+            M(", moved {light_moved|%.3f} since time 0; the map's bilinear error alone: "
+              "{dynamic_lightmap_rms_levels[predicted]|%.2f} levels."));
+  }
+  return f;
 }
 }  // namespace
 
