@@ -31,7 +31,8 @@ inline TexRect changedRect(const Image& a, const Image& b) {
   int x0 = a.width, y0 = a.height, x1 = -1, y1 = -1;
   for (int j = 0; j < a.height; ++j)
     for (int i = 0; i < a.width; ++i)
-      if (a.at(i, j) != b.at(i, j)) x0 = std::min(x0, i), y0 = std::min(y0, j), x1 = std::max(x1, i), y1 = std::max(y1, j);
+      if (a.at(i, j) != b.at(i, j))
+        x0 = std::min(x0, i), y0 = std::min(y0, j), x1 = std::max(x1, i), y1 = std::max(y1, j);
   if (x1 < 0) return {};
   return {x0, y0, x1 - x0 + 1, y1 - y0 + 1};
 }
@@ -67,8 +68,8 @@ struct PixRect {
   bool contains(int px, int py) const { return px >= x && px < x + w && py >= y && py < y + h; }
 };
 constexpr PixRect kHandle{84, 0, 24, 72};
-constexpr PixRect kBackFlame{24, 56, kFlipTexels * kFlipZoom, kFlipTexels * kFlipZoom};
-constexpr PixRect kFrontFlame{48, 40, kFlipTexels * kFlipZoom, kFlipTexels * kFlipZoom};
+constexpr PixRect kBackFlame{24, 56, kFlipTexels* kFlipZoom, kFlipTexels* kFlipZoom};
+constexpr PixRect kFrontFlame{48, 40, kFlipTexels* kFlipZoom, kFlipTexels* kFlipZoom};
 constexpr float kWallZ = -0.9f, kHandleZ = -0.5f, kBackZ = -0.3f, kFrontZ = 0.0f;  // larger z is nearer
 inline const Rgba kHandleColour{110, 70, 40, 255};
 // The flipbook frames the flames show at frame k: two tongues out of step.
@@ -165,7 +166,8 @@ inline double bilinear(const Image& map, double x, double y) {
   auto at = [&](int i, int j) {
     return map.at(std::clamp(i, 0, map.width - 1), std::clamp(j, 0, map.height - 1)).r / 255.0;
   };
-  return (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) + fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
+  return (1 - fv) * ((1 - fu) * at(i0, j0) + fu * at(i0 + 1, j0)) +
+         fv * ((1 - fu) * at(i0, j0 + 1) + fu * at(i0 + 1, j0 + 1));
 }
 inline Image lightMapped(const Image& base, int w, const Image& map) {
   return litPicture(base, w, [&](double x, double y) { return bilinear(map, x, y); });

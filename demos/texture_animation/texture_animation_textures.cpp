@@ -60,7 +60,8 @@ Image flameFrame(int size, int k, int n) {
       const double grain = 0.12 * (hash(uint32_t(i), uint32_t(j) + 4096u * uint32_t(k % n)) - 0.5);
       const double heat = std::clamp(q * (1 - 0.5 * t) + grain, 0.0, 1.0);
       img.set(i, j,
-              {255, u8(70 + 185 * heat), u8(20 + 200 * heat * heat * heat), u8(std::clamp(1.6 * q + grain, 0.0, 1.0) * 255)});
+              {255, u8(70 + 185 * heat), u8(20 + 200 * heat * heat * heat),
+               u8(std::clamp(1.6 * q + grain, 0.0, 1.0) * 255)});
     }
   return img;
 }

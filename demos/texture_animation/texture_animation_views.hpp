@@ -22,10 +22,10 @@ struct Pictures {
   gl::CallList litDynamicCalls, litStaleCalls;
 };
 
-inline const glm::vec4 kChanged{1.0f, 0.0f, 1.0f, 1.0f};   // magenta: a texel that changed
-inline const glm::vec4 kUploaded{1.0f, 0.9f, 0.0f, 1.0f};  // yellow: the rectangle a partial upload sends
-inline const glm::vec4 kWrong{1.0f, 0.15f, 0.1f, 1.0f};    // red: a pixel off the CPU's composite
-inline const glm::vec4 kLightNow{1.0f, 0.9f, 0.0f, 1.0f};  // yellow: the light at --time
+inline const glm::vec4 kChanged{1.0f, 0.0f, 1.0f, 1.0f};    // magenta: a texel that changed
+inline const glm::vec4 kUploaded{1.0f, 0.9f, 0.0f, 1.0f};   // yellow: the rectangle a partial upload sends
+inline const glm::vec4 kWrong{1.0f, 0.15f, 0.1f, 1.0f};     // red: a pixel off the CPU's composite
+inline const glm::vec4 kLightNow{1.0f, 0.9f, 0.0f, 1.0f};   // yellow: the light at --time
 inline const glm::vec4 kLightThen{0.0f, 0.9f, 1.0f, 1.0f};  // cyan: the light at time 0 (the stale map's)
 inline Rgba rgba(const glm::vec4& c) { return {uint8_t(c.r * 255), uint8_t(c.g * 255), uint8_t(c.b * 255), 255}; }
 
@@ -183,13 +183,15 @@ inline void pictureRow(Frame& f, const std::vector<Picture>& ps, const std::vect
   const std::vector<L::Cell> cells = L::flow(area, {int(ps.size()), 1.0f, 1, 1, 10, 2, 150});
   for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
     TextureDesc t = renderedImageTexture(*ps[k].image, "texture_animation", ps[k].title.text, "texture_animation");
-    t.minFilter = t.magFilter = GL_LINEAR;  // a panel's pixel centre may fall on a texel edge, where NEAREST's tie goes either way
+    t.minFilter = t.magFilter =
+        GL_LINEAR;  // a panel's pixel centre may fall on a texel edge, where NEAREST's tie goes either way
     t.renderedBy = ps[k].calls;
     f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), cells[k].picture, t));
     L::caption(f, cells[k].above, ps[k].title, L::kWhite, cells[k].scale);
     L::caption(f, cells[k].below, ps[k].note, L::kAmber, cells[k].scale);
   }
-  if (!legend.empty()) L::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band}, legend, 1);
+  if (!legend.empty())
+    L::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band}, legend, 1);
   L::caption(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)}, numbers, L::kAmber, 1);
 }
 }  // namespace ts::texanim
