@@ -2,9 +2,9 @@
 // refilled by glTexSubImage2D, a torch of alpha flipbook frames drawn in the right order, and a light map
 // recomputed each frame for a moving light.
 //
-// The waterfall's claim (view waterfall): a texture can move on a surface whose vertices and texture coordinates never change.  The
-// texture matrix, which GL applies to every (s, t, r, q) before the lookup, translates t by
-// speed x time; with GL_REPEAT the texture wraps, so the water falls without end.  The picture then moves
+// The waterfall's claim (view waterfall): a texture can move on a surface whose vertices and texture
+// coordinates never change.  The texture matrix, which GL applies to every (s, t, r, q) before the lookup,
+// translates t by speed x time; with GL_REPEAT the texture wraps, so the water falls without end.  The picture then moves
 // by exactly the matrix's speed: from one frame to the next, every pixel shows what the pixel
 // speed x frame time x pixels-a-texel above it showed, and nothing else.
 //
@@ -43,7 +43,8 @@
 // Listing: book_figures/texture_animation_waterfall.gl.txt.
 //
 // The flipbook, torch and light equations (texture_animation_math.hpp), frame k = the whole quarter seconds in --time:
-//   bytes(whole) = 64 x 64 x 4;  bytes(partial, k) = 4 |R_k|,  R_k = the bounding box of {(i, j): F_k(i, j) != F_k-1(i, j)}
+//   bytes(whole) = 64 x 64 x 4;  bytes(partial, k) = 4 |R_k|,
+//   R_k = the bounding box of {(i, j): F_k(i, j) != F_k-1(i, j)}  (F_k: frame k's texels)
 //   c = s a + d (1 - a)  per flame over what lies behind it, back to front (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)
 //   L(x, y) = a0 + (1 - a0) (h / d)^3, d = |light(t) - (x, y, 0)|, light(t) = (0.5 + r cos wt, 0.5 + r sin wt, h)
 //   c = base x bilinear(L at the 32 x 32 texel centres)  (GL_MODULATE on unit 1)  against base x L per pixel
@@ -307,8 +308,8 @@ ts::Frame TextureAnimation::buildAnimation(ts::Frame& f, const ts::Measurements&
           M("{flipbook_changed_texels|%.0f} texels changed"), nullptr}},
         {{ta::kChanged, "a texel that differs from the frame before"},
          {ta::kUploaded, "the rectangle the partial glTexSubImage2D sends"}},
-        M("Bytes a frame: whole {flipbook_bytes_per_frame[whole]|%.0f}, partial {flipbook_bytes_per_frame[partial]|%.0f} "
-          "(mean of {flipbook_uploads|%.0f} uploads after the first, counted from the calls).  ") +
+        M("Bytes a frame, counted from the calls: whole {flipbook_bytes_per_frame[whole]|%.0f}, partial "
+          "{flipbook_bytes_per_frame[partial]|%.0f} (mean of the {flipbook_uploads|%.0f} uploads but the first).  ") +
             M("Pixels not their frame's texel: {flipbook_mismatches|%.0f}; against the next frame's: "
               "{flipbook_mismatches[next_frame]|%.0f}."));
   } else if (view_ == 2) {
