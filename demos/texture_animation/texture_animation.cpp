@@ -4,8 +4,8 @@
 //
 // The waterfall's claim (view waterfall): a texture can move on a surface whose vertices and texture
 // coordinates never change.  The texture matrix, which GL applies to every (s, t, r, q) before the lookup,
-// translates t by speed x time; with GL_REPEAT the texture wraps, so the water falls without end.  The picture then moves
-// by exactly the matrix's speed: from one frame to the next, every pixel shows what the pixel
+// translates t by speed x time; with GL_REPEAT the texture wraps, so the water falls without end.  The
+// picture then moves by exactly the matrix's speed: from one frame to the next, every pixel shows what the pixel
 // speed x frame time x pixels-a-texel above it showed, and nothing else.
 //
 // The flipbook's claim (view flipbook): a "video" texture is one texture made once (glTexImage2D with no data)
