@@ -16,9 +16,10 @@
 #include "texture_animation_math.hpp"
 
 namespace ts::texanim {
-// A w x h pass in window pixels (x right, y up, z in [-1, 1], larger z nearer), depth cleared to the far plane.
+// A w x h pass in window pixels (x right, y up, z in [-1, 1], larger z nearer), depth cleared to the far plane;
+// read back opaque (the flames' clear texels leave alpha 0 where GL_REPLACE wrote them: the colour is what counts).
 inline Image pixelPass(Renderer& r, int w, int h, const char* what, const std::function<void()>& draw) {
-  return r.offscreen(w, h, what, [&](GLuint) {
+  Image img = r.offscreen(w, h, what, [&](GLuint) {
     glPushAttrib(GL_ALL_ATTRIB_BITS);
     glMatrixMode(GL_PROJECTION), glPushMatrix(), glLoadIdentity(), glOrtho(0, w, 0, h, -1, 1);
     glMatrixMode(GL_MODELVIEW), glPushMatrix(), glLoadIdentity();
@@ -31,6 +32,8 @@ inline Image pixelPass(Renderer& r, int w, int h, const char* what, const std::f
     glMatrixMode(GL_MODELVIEW), glPopMatrix();
     glPopAttrib();
   });
+  for (size_t k = 3; k < img.pixels.size(); k += 4) img.pixels[k] = 255;
+  return img;
 }
 
 // A texture of w x h RGBA8: `img`'s texels (row 0 at t = 0), or none yet (NULL: to be filled by glTexSubImage2D).
