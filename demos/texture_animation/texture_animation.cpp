@@ -319,7 +319,7 @@ ts::Frame TextureAnimation::buildAnimation(ts::Frame& f, const ts::Measurements&
           p->torchRightCalls},
          {&p->torchWrong, "the scene's order, depth written", M("{torch_order_error_px[wrong]|%.0f} pixels off"),
           p->torchWrongCalls},
-         {&p->torchCpu, "the CPU's composite", "wall, handle, back flame, front flame", nullptr},
+         {&p->torchCpu, "the CPU's composite", "wall, handle, then each flame", nullptr},
          {&p->torchWrongMask, "the scene's order: pixels off", M("{torch_order_error_px[wrong]|%.0f} red"), nullptr}},
         {{ta::kWrong,
           "a pixel over " + std::to_string(2 * ta::kTorchLevelsPerLayer) + " levels off the CPU's composite"}},

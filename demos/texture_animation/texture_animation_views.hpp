@@ -177,7 +177,7 @@ struct Picture {
 };
 // The pictures side by side (or in a grid) above a legend and a band of `lines` lines for the numbers.
 inline void pictureRow(Frame& f, const std::vector<Picture>& ps, const std::vector<LegendEntry>& legend,
-                       const L::Text& numbers, int lines = 2) {
+                       const L::Text& numbers, int lines = 3) {
   const float band = L::lineHeight(1) * float(lines) + 8, key = legend.empty() ? 0 : L::lineHeight(1) + 4;
   const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band - key};
   const std::vector<L::Cell> cells = L::flow(area, {int(ps.size()), 1.0f, 1, 1, 10, 2, 150});
