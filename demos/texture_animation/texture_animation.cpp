@@ -325,8 +325,9 @@ ts::Frame TextureAnimation::buildAnimation(ts::Frame& f, const ts::Measurements&
           "a pixel over " + std::to_string(2 * ta::kTorchLevelsPerLayer) + " levels off the CPU's composite"}},
         "Right: wall and handle with depth writes on; then glDepthMask(GL_FALSE), blending (GL_SRC_ALPHA, "
         "GL_ONE_MINUS_SRC_ALPHA), flames back to front.  Wrong: front flame, back flame, handle, wall, depth "
-        "written: the flames' clear texels hide what lies behind them.  Flame frames " +
-            L::given("the back flame's frame", ta::backFlameFrame(firstFrame()), "%.0f") + " and " +
+        "written: the flames' clear texels hide what lies behind them.  " +
+            M("Flames front to back, depth writes off: {torch_order_error_px[front_to_back]|%.0f} pixels off.  ") +
+            "Flame frames " + L::given("the back flame's frame", ta::backFlameFrame(firstFrame()), "%.0f") + " and " +
             L::given("the front flame's frame", ta::frontFlameFrame(firstFrame()), "%.0f") + ".");
   } else {
     ta::pictureRow(

@@ -111,10 +111,12 @@ inline FlipbookRun flipbookPass(Renderer& r, const std::vector<Image>& frames, b
 }
 
 // ---- the torch ------------------------------------------------------------------------------------------------
-// right: the opaque wall and handle first (depth writes on), then the flames back to front with blending and the
-// depth writes off.  wrong: every layer in the order a scene lists it (front flame, back flame, handle, wall),
-// blending on and depth writes on throughout.
-inline Image torchPass(Renderer& r, const Image& wall, const Image& back, const Image& front, bool right,
+// kRightOrder: the opaque wall and handle first (depth writes on), then the flames back to front with blending and
+// the depth writes off.  kSceneOrder: every layer in the order a scene lists it (front flame, back flame, handle,
+// wall), blending on and depth writes on throughout.  kFrontToBack: opaque first and depth writes off as in the
+// right order, but the flames front to back: the back flame is blended over the front one.
+enum TorchOrder { kRightOrder, kSceneOrder, kFrontToBack };
+inline Image torchPass(Renderer& r, const Image& wall, const Image& back, const Image& front, TorchOrder order,
                        gl::CallList* calls) {
   r.release();
   gl::Recording rec;
@@ -139,11 +141,12 @@ inline Image torchPass(Renderer& r, const Image& wall, const Image& back, const 
       glEnable(GL_TEXTURE_2D), glBindTexture(GL_TEXTURE_2D, t);
       quad(p, z);
     };
-    if (right) {
+    if (order != kSceneOrder) {
       glDisable(GL_BLEND), glDepthMask(GL_TRUE);
       wallQuad(), handle();
       glEnable(GL_BLEND), glDepthMask(GL_FALSE);  // transparent: tested against the opaque depth, never written
-      flame(tb, kBackFlame, kBackZ), flame(tf, kFrontFlame, kFrontZ);
+      if (order == kRightOrder) flame(tb, kBackFlame, kBackZ), flame(tf, kFrontFlame, kFrontZ);
+      else flame(tf, kFrontFlame, kFrontZ), flame(tb, kBackFlame, kBackZ);
       glDepthMask(GL_TRUE);
     } else {
       glEnable(GL_BLEND), glDepthMask(GL_TRUE);

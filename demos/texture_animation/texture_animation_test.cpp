@@ -157,6 +157,19 @@ TEST(TextureAnimation, TorchNeedsOpaqueFirstThenBackToFront) {
     EXPECT_GT(hidden, 0);
     EXPECT_EQ(value(m, "torch_order_error_px[right]"), 0);
     EXPECT_GE(value(m, "torch_order_error_px[wrong]"), hidden);
+    // Front to back, the back flame is blended last: only where both flames cover a pixel with some opacity can the
+    // order show (elsewhere one of the blends leaves the colour as it was).
+    int overlap = 0;
+    for (int y = 0; y < ta::kTorchPixels; ++y)
+      for (int x = 0; x < ta::kTorchPixels; ++x) {
+        const int py = ta::kTorchPixels - 1 - y;
+        if (!ta::kFrontFlame.contains(x, py) || !ta::kBackFlame.contains(x, py)) continue;
+        const ts::Rgba f = front.at((x - ta::kFrontFlame.x) / ta::kFlipZoom, (py - ta::kFrontFlame.y) / ta::kFlipZoom);
+        const ts::Rgba b = back.at((x - ta::kBackFlame.x) / ta::kFlipZoom, (py - ta::kBackFlame.y) / ta::kFlipZoom);
+        overlap += f.a > 0 && b.a > 0;
+      }
+    EXPECT_GT(value(m, "torch_order_error_px[front_to_back]"), 0);
+    EXPECT_LE(value(m, "torch_order_error_px[front_to_back]"), overlap);
   }
 }
 

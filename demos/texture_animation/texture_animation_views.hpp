@@ -131,14 +131,17 @@ inline Pictures measureAnimations(Renderer& r, int k, double seconds, double fra
   const Image& back = frames[size_t(backFlameFrame(k))];
   const Image& front = frames[size_t(frontFlameFrame(k))];
   pic.torchCpu = torchComposite(wall, back, front);
-  pic.torchRight = torchPass(r, wall, back, front, true, &pic.torchRightCalls);
-  pic.torchWrong = torchPass(r, wall, back, front, false, &pic.torchWrongCalls);
+  pic.torchRight = torchPass(r, wall, back, front, kRightOrder, &pic.torchRightCalls);
+  pic.torchWrong = torchPass(r, wall, back, front, kSceneOrder, &pic.torchWrongCalls);
+  const Image frontToBack = torchPass(r, wall, back, front, kFrontToBack, nullptr);
   const int levels = 2 * kTorchLevelsPerLayer;  // two flames blended over the opaque layers
   pic.torchWrongMask = wrongMask(pic.torchWrong, pic.torchCpu, levels);
   put("torch_order_error_px[right]", wrongPixels(pic.torchRight, pic.torchCpu, levels),
       "pixels more than 2 levels off the CPU's composite: opaque first, flames back to front, depth writes off");
   put("torch_order_error_px[wrong]", wrongPixels(pic.torchWrong, pic.torchCpu, levels),
       "the same, every layer in the scene's order (front flame first) with depth writes on");
+  put("torch_order_error_px[front_to_back]", wrongPixels(frontToBack, pic.torchCpu, levels),
+      "the same, opaque first and depth writes off but the flames front to back (the back one blended last)");
   put("torch_tolerance_levels", levels, "levels a pixel may differ: one rounding a blended layer");
   measureProgress(0.6);
 
