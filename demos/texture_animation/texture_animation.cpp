@@ -119,11 +119,17 @@ int mismatches(const ts::Image& prev, const ts::Image& next, int d) {
 class TextureAnimation final : public ts::Scene {
  public:
   std::string id() const override { return "texture_animation"; }
-  std::string title() const override { return "Textures that move: a waterfall by the texture matrix"; }
+  std::string title() const override {
+    return "Textures that move: a waterfall, a flipbook, a torch, a light map for a moving light";
+  }
   std::string about() const override {
     return "A quad of water whose texture the texture matrix scrolls: glMatrixMode(GL_TEXTURE), a translation of t by\n"
            "speed x time, GL_REPEAT.  Measured from frames k and k+1 read back: the picture moved by exactly the\n"
-           "matrix's speed (no pixel differs from the previous frame moved by it), and a wrong speed does not match.";
+           "matrix's speed (no pixel differs from the previous frame moved by it), and a wrong speed does not match.\n"
+           "Views: a flipbook refilled by glTexSubImage2D (bytes a frame whole and partial, counted from the\n"
+           "calls; every frame shown is its texels), a torch of alpha flipbook frames (pixels off the CPU's\n"
+           "composite in the right and wrong orders), a 32x32 light map recomputed each frame for a moving light\n"
+           "(RMS against per-pixel lighting, and with the map of time 0).";
   }
   std::vector<std::string> claim() const override {
     if (view_ == 1) return {"flipbook_bytes_per_frame*", "flipbook_mismatches*"};
