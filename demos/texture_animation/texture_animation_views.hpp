@@ -2,12 +2,14 @@
 // pictures and their measurement (texture_animation_gl.hpp's passes against texture_animation_math.hpp's CPU
 // answers), and the row of pictures the figures show them in.
 #pragma once
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "common/core/layout.hpp"
 #include "common/core/scene.hpp"
+#include "common/core/text.hpp"
 #include "common/core/textures.hpp"
 #include "texture_animation_gl.hpp"
 
@@ -178,16 +180,23 @@ struct Picture {
   L::Text title, note;
   gl::CallList calls;
 };
-// The pictures side by side (or in a grid) above a legend and a band of `lines` lines for the numbers.
+// The pictures side by side (or in a grid) above a legend and a band for the numbers, as many lines as they take
+// at the frame's width (a small window wraps them rather than cutting them).
 inline void pictureRow(Frame& f, const std::vector<Picture>& ps, const std::vector<LegendEntry>& legend,
-                       const L::Text& numbers, int lines = 3) {
-  const float band = L::lineHeight(1) * float(lines) + 8, key = legend.empty() ? 0 : L::lineHeight(1) + 4;
+                       const L::Text& numbers) {
+  const int lines = std::max(2, L::captionLines(numbers.text, 1, float(f.width - 16)));
+  // The key on one line when its entries fit the width, else a line an entry (L::legend wraps them).
+  float keyWidth = 0;
+  for (const LegendEntry& e : legend) keyWidth += text::width(e.meaning, 1) + L::lineHeight(1) + 16;
+  const int keyLines = keyWidth <= float(f.width - 16) ? 1 : int(legend.size());
+  const float band = L::lineHeight(1) * float(lines) + 8;
+  const float key = legend.empty() ? 0 : L::lineHeight(1) * float(keyLines) + 4;
   const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band - key};
   const std::vector<L::Cell> cells = L::flow(area, {int(ps.size()), 1.0f, 1, 1, 10, 2, 150});
   for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
     TextureDesc t = renderedImageTexture(*ps[k].image, "texture_animation", ps[k].title.text, "texture_animation");
-    t.minFilter = t.magFilter =
-        GL_LINEAR;  // a panel's pixel centre may fall on a texel edge, where NEAREST's tie goes either way
+    // A panel's pixel centre may fall on a texel edge, where GL_NEAREST's tie goes either way.
+    t.minFilter = t.magFilter = GL_LINEAR;
     t.renderedBy = ps[k].calls;
     f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), cells[k].picture, t));
     L::caption(f, cells[k].above, ps[k].title, L::kWhite, cells[k].scale);
