@@ -82,7 +82,7 @@ inline std::vector<double> uploadedBytes(const std::vector<gl::Call>& calls) {
 struct FlipbookRun {
   std::vector<Image> shown;     // each upload's picture, read back
   std::vector<int> frameShown;  // the frame each shows
-  std::vector<double> bytes;    // each glTexSubImage2D's bytes, from the recorded calls
+  std::vector<double> bytes;    // each step's glTexSubImage2D bytes, from the recorded calls (0: nothing changed)
   std::vector<TexRect> rects;   // what each uploaded
   gl::CallList calls;
 };
@@ -96,6 +96,7 @@ inline FlipbookRun flipbookPass(Renderer& r, const std::vector<Image>& frames, b
     const int k = step % n;
     const TexRect whole{0, 0, kFlipTexels, kFlipTexels};
     const TexRect rect = step == 0 || !partial ? whole : changedRect(frames[size_t((step - 1) % n)], frames[size_t(k)]);
+    const size_t before = rec.calls().size();
     run.shown.push_back(pixelPass(r, w, w, "the flipbook", [&] {
       glEnable(GL_TEXTURE_2D), glBindTexture(GL_TEXTURE_2D, tex);
       if (rect.texels() > 0) upload(frames[size_t(k)], rect);
@@ -103,10 +104,13 @@ inline FlipbookRun flipbookPass(Renderer& r, const std::vector<Image>& frames, b
       quad({0, 0, w, w}, 0);
     }));
     run.frameShown.push_back(k), run.rects.push_back(rect);
+    // This step's uploads, from the calls it made.
+    double bytes = 0;
+    for (double b : uploadedBytes({rec.calls().begin() + long(before), rec.calls().end()})) bytes += b;
+    run.bytes.push_back(bytes);
   }
   glDeleteTextures(1, &tex);
   run.calls = std::make_shared<const std::vector<gl::Call>>(rec.take());
-  run.bytes = uploadedBytes(*run.calls);
   return run;
 }
 

@@ -109,7 +109,8 @@ inline Pictures measureAnimations(Renderer& r, int k, double seconds, double fra
       "bytes glTexSubImage2D sent a frame after the first, only the rectangle that changed (counted from the calls)");
   put("flipbook_bytes_first_frame", partial.bytes.empty() ? 0.0 : partial.bytes[0],
       "bytes of the first upload, whole in both ways");
-  put("flipbook_uploads", double(partial.bytes.size()), "glTexSubImage2D calls a playing of the loop made (and back)");
+  put("flipbook_uploads", double(uploadedBytes(*partial.calls).size()),
+      "glTexSubImage2D calls the partial playing of the loop made (and back to its first frame)");
   put("flipbook_bytes_shown[partial]", partial.bytes[size_t(shown + 1)],
       "bytes the partial upload of frame k + 1 (the figure's) sent");
   put("flipbook_rect_w", partial.rects[size_t(shown + 1)].w, "texels: the width of frame k + 1's upload");
