@@ -17,12 +17,14 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 build=build-bench
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DTS_BUILD_TESTS=ON -DTS_BUILD_BENCHMARKS=ON >/dev/null
-cmake --build "$build" -j2 --target bench_figures bench_window bench_jitter bench_parallax bench_zoo bench_envlight
+cmake --build "$build" -j2 --target bench_figures bench_window bench_jitter bench_parallax bench_zoo bench_envlight \
+  bench_upload
 mkdir -p "$build/bench"
 "$build/bin/bench_figures" --benchmark_out="$build/bench/figures.json" --benchmark_out_format=json "$@"
 "$build/bin/bench_jitter" --benchmark_out="$build/bench/jitter.json" --benchmark_out_format=json "$@"
 "$build/bin/bench_parallax" --benchmark_out="$build/bench/parallax.json" --benchmark_out_format=json "$@"
 "$build/bin/bench_zoo" --benchmark_out="$build/bench/zoo.json" --benchmark_out_format=json "$@"
 "$build/bin/bench_envlight" --benchmark_out="$build/bench/envlight.json" --benchmark_out_format=json "$@"
+"$build/bin/bench_upload" --benchmark_out="$build/bench/upload.json" --benchmark_out_format=json "$@"
 xvfb-run -a -s "-screen 0 1280x1024x24" \
   "$build/bin/bench_window" --benchmark_out="$build/bench/window.json" --benchmark_out_format=json "$@"

@@ -42,7 +42,8 @@
   /* GL 1.x fixed function */                                                  \
   X(glAccum) X(glBegin) X(glBindTexture) X(glBlendFunc) X(glClear)             \
   X(glClearColor) X(glClearDepth) X(glColor4f) X(glColorPointer)               \
-  X(glDeleteTextures) X(glDepthFunc) X(glDisable) X(glDisableClientState)      \
+  X(glDeleteTextures) X(glDepthFunc) X(glDepthMask) X(glDisable)               \
+  X(glDisableClientState) X(glTexSubImage2D)                                   \
   X(glDrawElements) X(glEnable) X(glEnableClientState) X(glEnd) X(glFinish)    \
   X(glFlush) X(glFrustum) X(glGenTextures) X(glGetError) X(glGetFloatv)        \
   X(glGetIntegerv) X(glGetString) X(glGetTexImage) X(glHint) X(glIsEnabled)    \
@@ -144,6 +145,8 @@ bool enableDebugOutput();
 #define glColorPointer ts::gl::p_glColorPointer
 #define glDeleteTextures ts::gl::p_glDeleteTextures
 #define glDepthFunc ts::gl::p_glDepthFunc
+#define glDepthMask ts::gl::p_glDepthMask
+#define glTexSubImage2D ts::gl::p_glTexSubImage2D
 #define glDisable ts::gl::p_glDisable
 #define glDisableClientState ts::gl::p_glDisableClientState
 #define glDrawElements ts::gl::p_glDrawElements

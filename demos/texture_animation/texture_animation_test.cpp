@@ -11,9 +11,12 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <utility>
+#include <vector>
 #include <string>
 
 #include "common/core/image.hpp"
+#include "demos/texture_animation/texture_animation_math.hpp"
 #include "demos/texture_animation/texture_animation_textures.hpp"
 #include "tests/support/scene_test.hpp"
 
@@ -71,16 +74,123 @@ TEST(TextureAnimation, PictureMovesByExactlyTheMatrixSpeed) {
   }
 }
 
-// The figure prints the measurement's numbers (Label::printed), never its own.
+// The figures print the measurement's numbers (Label::printed), never their own.
 TEST(TextureAnimation, FigurePrintsTheMeasurement) {
-  Demo d("texture_animation", {"--speed", "2", "--time", "1.25"});
-  d.measure();
-  const ts::Frame f = d.frame(960, 440);
-  std::set<std::string> printed;
-  for (const ts::Label& l : f.labels)
-    for (const ts::Label::Printed& p : l.printed) printed.insert(p.name);
-  for (const char* name : {"scroll_texel_mismatches", "scroll_texel_mismatches[wrong_speed]", "scroll_shift_px[found]",
-                           "scroll_shift_px[expected]"})
-    EXPECT_TRUE(printed.count(name)) << name;
+  const std::vector<std::pair<std::vector<std::string>, std::vector<const char*>>> views = {
+      {{"--speed", "2", "--time", "1.25"},
+       {"scroll_texel_mismatches", "scroll_texel_mismatches[wrong_speed]", "scroll_shift_px[found]",
+        "scroll_shift_px[expected]"}},
+      {{"--view", "flipbook", "--time", "1.25"},
+       {"flipbook_bytes_per_frame[whole]", "flipbook_bytes_per_frame[partial]", "flipbook_mismatches",
+        "flipbook_mismatches[next_frame]", "flipbook_bytes_shown[partial]"}},
+      {{"--view", "torch", "--time", "1.25"}, {"torch_order_error_px[right]", "torch_order_error_px[wrong]"}},
+      {{"--view", "lightmap", "--time", "1.25"},
+       {"dynamic_lightmap_rms_levels", "dynamic_lightmap_rms_levels[stale]", "lightmap_bytes_per_frame"}}};
+  for (const auto& [flags, names] : views) {
+    SCOPED_TRACE(flags[1]);
+    Demo d("texture_animation", flags);
+    d.measure();
+    const ts::Frame f = d.frame(960, 440);
+    std::set<std::string> printed;
+    for (const ts::Label& l : f.labels)
+      for (const ts::Label::Printed& p : l.printed) printed.insert(p.name);
+    for (const char* name : names) EXPECT_TRUE(printed.count(name)) << name;
+  }
+}
+
+namespace ta = ts::texanim;
+
+// The flipbook: every picture shown is its frame's texels, and the bytes counted from the glTexSubImage2D calls are
+// what the frames make them: 4 bytes a texel of the whole frame, or of the rectangle bounding the texels that
+// changed since the frame before (recomputed here from the generator's frames).
+TEST(TextureAnimation, FlipbookUploadsWholeOrTheChangedRectangle) {
+  std::vector<ts::Image> frames;
+  for (int k = 0; k < ta::kFlipFrames; ++k) frames.push_back(ta::flameFrame(ta::kFlipTexels, k, ta::kFlipFrames));
+  double partialSum = 0;
+  for (int k = 1; k <= ta::kFlipFrames; ++k)
+    partialSum += 4.0 * ta::changedRect(frames[size_t(k - 1)], frames[size_t(k % ta::kFlipFrames)]).texels();
+  const double whole = 4.0 * ta::kFlipTexels * ta::kFlipTexels;
+  for (const char* time : {"1.25", "0", "1.75"}) {
+    SCOPED_TRACE(std::string("time ") + time);
+    const ts::Measurements m = Demo("texture_animation", {"--view", "flipbook", "--time", time}).measure();
+    const int k = int(std::floor(std::stod(time) * kFramesPerSecond + 1e-6)) % ta::kFlipFrames;
+    const ta::TexRect shown = ta::changedRect(frames[size_t(k)], frames[size_t((k + 1) % ta::kFlipFrames)]);
+    EXPECT_EQ(value(m, "flipbook_uploads"), ta::kFlipFrames + 1);
+    EXPECT_EQ(value(m, "flipbook_bytes_first_frame"), whole);
+    EXPECT_EQ(value(m, "flipbook_bytes_per_frame[whole]"), whole);
+    EXPECT_DOUBLE_EQ(value(m, "flipbook_bytes_per_frame[partial]"), partialSum / ta::kFlipFrames);
+    EXPECT_LT(value(m, "flipbook_bytes_per_frame[partial]"), whole) << "a partial upload sends less";
+    EXPECT_EQ(value(m, "flipbook_bytes_shown[partial]"), 4.0 * shown.texels());
+    EXPECT_EQ(value(m, "flipbook_rect_w"), shown.w);
+    EXPECT_EQ(value(m, "flipbook_rect_h"), shown.h);
+    EXPECT_EQ(value(m, "flipbook_mismatches"), 0);
+    EXPECT_EQ(value(m, "flipbook_mismatches[whole]"), 0);
+    EXPECT_EQ(value(m, "flipbook_mismatches[partial]"), 0);
+    EXPECT_GT(value(m, "flipbook_mismatches[next_frame]"), 0) << "the control finds the other frame";
+  }
+}
+
+// The torch: drawn opaque first, then the flames back to front with depth writes off, GL's picture is the CPU's
+// composite within a level a blended layer; in the scene's order with depth written it is not, at least wherever
+// the front flame's clear texels hid a wall or handle the composite shows brighter than the tolerance.
+TEST(TextureAnimation, TorchNeedsOpaqueFirstThenBackToFront) {
+  for (const char* time : {"1.25", "0.5"}) {
+    SCOPED_TRACE(std::string("time ") + time);
+    const ts::Measurements m = Demo("texture_animation", {"--view", "torch", "--time", time}).measure();
+    const int k = int(std::floor(std::stod(time) * kFramesPerSecond + 1e-6));
+    const ts::Image wall = *ts::texanim::waterTexture(ta::kFlipTexels).image;
+    const ts::Image back = ta::flameFrame(ta::kFlipTexels, ta::backFlameFrame(k), ta::kFlipFrames);
+    const ts::Image front = ta::flameFrame(ta::kFlipTexels, ta::frontFlameFrame(k), ta::kFlipFrames);
+    const ts::Image cpu = ta::torchComposite(wall, back, front);
+    const int tol = int(value(m, "torch_tolerance_levels"));
+    EXPECT_EQ(tol, 2 * ta::kTorchLevelsPerLayer);
+    // Where the front quad's texel is clear, the wrong order leaves the clear colour (black) blended by alpha 0.
+    int hidden = 0;
+    for (int y = 0; y < ta::kTorchPixels; ++y)
+      for (int x = 0; x < ta::kTorchPixels; ++x) {
+        const int py = ta::kTorchPixels - 1 - y;
+        if (!ta::kFrontFlame.contains(x, py)) continue;
+        const ts::Rgba s = front.at((x - ta::kFrontFlame.x) / ta::kFlipZoom, (py - ta::kFrontFlame.y) / ta::kFlipZoom);
+        const ts::Rgba c = cpu.at(x, y);
+        hidden += s.a == 0 && std::max({c.r, c.g, c.b}) > tol;
+      }
+    EXPECT_GT(hidden, 0);
+    EXPECT_EQ(value(m, "torch_order_error_px[right]"), 0);
+    EXPECT_GE(value(m, "torch_order_error_px[wrong]"), hidden);
+    // Front to back, the back flame is blended last: only where both flames cover a pixel with some opacity can the
+    // order show (elsewhere one of the blends leaves the colour as it was).
+    int overlap = 0;
+    for (int y = 0; y < ta::kTorchPixels; ++y)
+      for (int x = 0; x < ta::kTorchPixels; ++x) {
+        const int py = ta::kTorchPixels - 1 - y;
+        if (!ta::kFrontFlame.contains(x, py) || !ta::kBackFlame.contains(x, py)) continue;
+        const ts::Rgba f = front.at((x - ta::kFrontFlame.x) / ta::kFlipZoom, (py - ta::kFrontFlame.y) / ta::kFlipZoom);
+        const ts::Rgba b = back.at((x - ta::kBackFlame.x) / ta::kFlipZoom, (py - ta::kBackFlame.y) / ta::kFlipZoom);
+        overlap += f.a > 0 && b.a > 0;
+      }
+    EXPECT_GT(value(m, "torch_order_error_px[front_to_back]"), 0);
+    EXPECT_LE(value(m, "torch_order_error_px[front_to_back]"), overlap);
+  }
+}
+
+// The moving light: the map recomputed for the frame's light is as close to per-pixel lighting as its bilinear
+// interpolation allows (the CPU's prediction, within GL's rounding), and closer than the map of time 0 once the
+// light has moved; at time 0 the two maps are the same map and the same picture.
+TEST(TextureAnimation, RecomputedLightMapFollowsTheLight) {
+  for (const char* time : {"1.25", "3", "0"}) {
+    SCOPED_TRACE(std::string("time ") + time);
+    const ts::Measurements m = Demo("texture_animation", {"--view", "lightmap", "--time", time}).measure();
+    EXPECT_EQ(value(m, "lightmap_bytes_per_frame"), 4.0 * ta::kLightTexels * ta::kLightTexels);
+    EXPECT_LT(value(m, "dynamic_lightmap_gl_vs_cpu_rms"), 1.0) << "GL's picture is the CPU's prediction, rounded";
+    EXPECT_NEAR(value(m, "dynamic_lightmap_rms_levels"), value(m, "dynamic_lightmap_rms_levels[predicted]"), 1.0);
+    const glm::dvec3 now = ta::lightPosition(std::stod(time)), then = ta::lightPosition(0);
+    EXPECT_NEAR(value(m, "light_moved"), glm::length(glm::dvec2(now - then)), 1e-9);
+    if (std::stod(time) == 0) {
+      EXPECT_EQ(value(m, "dynamic_lightmap_rms_levels[stale]"), value(m, "dynamic_lightmap_rms_levels"));
+    } else {
+      EXPECT_GT(value(m, "dynamic_lightmap_rms_levels[stale]"), value(m, "dynamic_lightmap_rms_levels"))
+          << "the stale map lights where the light was";
+    }
+  }
 }
 }  // namespace

@@ -2,6 +2,8 @@
 // (texture_animation_textures.hpp), and its generator for the sidecar reader.
 #include "demos/texture_animation/texture_animation_textures.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -36,6 +38,32 @@ TextureDesc waterTexture(int size) {
   t.minFilter = t.magFilter = GL_NEAREST;
   t.wrapS = t.wrapT = GL_REPEAT;
   return t;
+}
+
+Image flameFrame(int size, int k, int n) {
+  Image img(size, size);
+  const double kPi = 3.14159265358979323846;
+  const double phase = 2 * kPi * double(((k % n) + n) % n) / n;
+  const double tall = 0.78 + 0.12 * std::sin(2 * phase + 1.0);  // the flame's height flickers
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) {
+      const double u = (i + 0.5) / size, v = (j + 0.5) / size;
+      const double t = (v - 0.08) / tall;  // 0 at the flame's foot, 1 at its tip
+      // The tongue: centred on a line that sways more towards the tip, narrowing to the tip.
+      const double c = 0.5 + 0.08 * t * std::sin(2 * kPi * 1.3 * t - phase);
+      const double w = 0.24 * (1 - t) * std::sqrt(std::min(1.0, 5 * std::max(t, 0.0)));
+      const double q = t <= 0 || t >= 1 || w <= 0 ? 0.0 : 1 - std::abs(u - c) / w;
+      if (q <= 0) {
+        img.set(i, j, {60, 20, 0, 0});  // transparent: the same texel in every frame
+        continue;
+      }
+      const double grain = 0.12 * (hash(uint32_t(i), uint32_t(j) + 4096u * uint32_t(k % n)) - 0.5);
+      const double heat = std::clamp(q * (1 - 0.5 * t) + grain, 0.0, 1.0);
+      img.set(i, j,
+              {255, u8(70 + 185 * heat), u8(20 + 200 * heat * heat * heat),
+               u8(std::clamp(1.6 * q + grain, 0.0, 1.0) * 255)});
+    }
+  return img;
 }
 
 namespace {

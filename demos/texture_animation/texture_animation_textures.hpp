@@ -7,4 +7,8 @@
 namespace ts::texanim {
 // A size x size texture of water (GL_NEAREST, GL_REPEAT: the texture matrix scrolls it without end).
 TextureDesc waterTexture(int size);
+// Frame k of n of a flame flipbook, size x size RGBA, row 0 the bottom (t = 0): a tongue of fire that sways
+// and flickers with k, alpha its opacity, every texel outside it transparent and the same in every frame
+// (so a frame differs from the next only inside a rectangle: what a partial upload sends).
+Image flameFrame(int size, int k, int n);
 }  // namespace ts::texanim
