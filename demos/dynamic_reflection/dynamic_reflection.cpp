@@ -313,6 +313,11 @@ ts::Frame DynamicReflection::build(int width, int height, const ts::Measurements
     L::caption(f, c.below, note, L::kAmber, c.scale);
   };
   const std::vector<ts::LegendEntry> ballKey = {{kBallColour, "the ball"}};
+  // The world's colours encode the direction (common/core/env_maps.hpp): its base colour toward each axis.
+  auto toward = [](glm::dvec3 d) { return glm::vec4(glm::vec3(ts::envmaps::directionColour(d)), 1.0f); };
+  const std::vector<ts::LegendEntry> worldKey = {{toward({1, 0, 0}), "to +X"},
+                                                 {toward({0, 1, 0}), "to +Y"},
+                                                 {toward({0, 0, 1}), "to +Z"}};
   auto err = [&](const std::string& k) {
     return L::measuredText(measured, "{moving_ball_error_px[" + k + "]|%.0f} px wrong");
   };
@@ -320,8 +325,9 @@ ts::Frame DynamicReflection::build(int width, int height, const ts::Measurements
     const char* titles[] = {"sphere", "flat mirror", "torus"};
     for (int k = 0; k < kReflectors; ++k) {
       std::vector<ts::LegendEntry> key;
-      for (int face = 3 * (k % 2); face < 3 * (k % 2) + 3 && k < 2; ++face)
+      for (int face = 3 * k; face < 3 * k + 3 && k < 2; ++face)
         key.push_back({faceIdColour(face), std::string("face ") + ts::envmaps::kFaceNames[face]});
+      if (k == 2) key.push_back({{0, 0, 0, 1}, "no reflector"});
       show(cells[size_t(k)], std::string("faces_") + kReflectorKeys[k], found ? &found->reflectorPics[k] : nullptr,
            std::string(titles[k]) + ": each face one flat colour",
            L::measuredText(measured, std::string("faces read: {faces_read[") + kReflectorKeys[k] + "]|%.0f} of ") +
@@ -347,7 +353,7 @@ ts::Frame DynamicReflection::build(int width, int height, const ts::Measurements
            (variant_ == kRight ? "" : std::string(", ") + kVariantKeys[variant_]),
        err(shownKey), ballKey);
   show(cells[1], "static", found ? &found->staticPic : nullptr,
-       "cube map made at time " + L::given("time the static map was made", 0, "%.0f"), err("static"));
+       "cube map made at time " + L::given("time the static map was made", 0, "%.0f"), err("static"), worldKey);
   show(cells[2], "reference", found ? &found->reference : nullptr, "ray traced from the surface",
        L::measuredText(measured, "the ball: {ball_reflection_px|%.0f} px"));
   show(cells[3], "faces", found ? &found->faces : nullptr, "the six faces, this frame (t down)",
