@@ -11,13 +11,18 @@
 // renders a frame, one a face, and each face needs its own camera: a face
 // turned upside down or a 60 degree field of view puts the ball elsewhere.
 // Which faces a reflector reads depends on its shape: a sphere all six, a
-// flat mirror few.
+// flat mirror few.  And for a flat mirror the cube map is the wrong tool: its
+// reflected directions barely change across it, so a few texels are spread
+// over the whole mirror, and a near object is seen from the wrong place;
+// rendering the scene mirrored in the mirror's plane is exact
+// (dynamic_reflection_planar.hpp).
 //
 // Keys (each is also a flag, see --help):
-//   a  animate the ball (window)        ] / [  time forward / back (--time)
 //   w  the cube map's cameras: right | face_flipped (+Z upside down) | fov_60 (60 instead of 90 degrees)
+//   ] / [  time forward / back (--time)     a  animate the ball (window)     + / -  texels a face's side
 //   v  view: scene (dynamic | static | traced | the faces) | variants (right | flipped | fov 60 | traced)
 //      | faces (sphere, flat mirror, torus reading a cube map of six flat colours)
+//      | planar (the flat mirror rendered mirrored | its cube map | traced | the cube texels it reads)
 //
 // The equations.  Face f of the cube map holds the world in direction
 // cubeDir(f, s, t) (GL spec's face table, dynamic_reflection_math.hpp): its
@@ -35,14 +40,20 @@
 //   glMatrixMode(GL_MODELVIEW); glLoadMatrixf(the face's gluLookAt); draw the environment and the ball
 // then the six faces read back and uploaded by glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, ...),
 // and the mirror drawn with glTexGeni(GL_S/T/R, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP),
-// glEnable(GL_TEXTURE_CUBE_MAP).  Listings: book_figures/dynamic_reflection.gl.txt,
-// dynamic_reflection_variants.gl.txt, dynamic_reflection_faces.gl.txt (each picture's passes, then the frame).
+// glEnable(GL_TEXTURE_CUBE_MAP).  The planar mirror: the scene drawn with glLoadMatrixf(V R),
+// R = I - 2 n n^T, and glClipPlane(GL_CLIP_PLANE0, -n); then the mirror textured with that picture by
+// glTexCoord4f(clip-space (x + w)/2, (y + w)/2, 0, w).  Listings: book_figures/dynamic_reflection.gl.txt,
+// dynamic_reflection_variants.gl.txt, dynamic_reflection_faces.gl.txt, dynamic_reflection_planar.gl.txt (each
+// picture's passes, then the frame).
 //
 // Measured (measure()): the mirror sphere drawn at 256 x 256 reading cube maps whose passes draw the ball
 // in pure red on black, the pixels that show the ball (red > 1/2) against the traced reference's, counted
 // where they disagree: moving_ball_error_px[static | dynamic | face_flipped | fov_60];
 // cube_map_renders_per_frame counted from the recorded calls (the face-sized glViewport calls of one
-// cube pass); faces_read[reflector], the distinct face colours in a render reading the face-ID cube map.
+// cube pass); faces_read[reflector], the distinct face colours in a render reading the face-ID cube map;
+// for the flat mirror with a near ball, flat_mirror_error_px[planar | cube_map] the same way against its trace,
+// and flat_mirror_texels_read (distinct texels in a render reading a texel-ID cube map, GL_NEAREST) against
+// flat_mirror_pixels, their ratio flat_mirror_magnification.
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -58,12 +69,13 @@
 #include "common/gl/gl_listing.hpp"
 #include "common/gl/render.hpp"
 #include "dynamic_reflection_math.hpp"
+#include "dynamic_reflection_planar.hpp"
 #include "dynamic_reflection_textures.hpp"
 #include "dynamic_reflection_views.hpp"
 
 namespace {
 using namespace dynref;
-enum View { kSceneView, kVariantsView, kFacesView };
+enum View { kSceneView, kVariantsView, kFacesView, kPlanarView };
 constexpr int kMeasureSize = 256;  // the measurement's pictures, pixels a side
 
 // The pictures measure() made, for build().
@@ -71,6 +83,7 @@ struct Found {
   ts::TextureDesc dynamicPic, staticPic, reference, faces;
   ts::TextureDesc variantPics[kVariants];
   ts::TextureDesc reflectorPics[kReflectors];
+  ts::TextureDesc planarPic, flatCubePic, flatReference, texelIds;  // the planar view's
 };
 
 // A picture GL drew in measure() (or the CPU traced), shown as a texture; its calls go to the listing.
@@ -118,12 +131,13 @@ class DynamicReflection final : public ts::Scene {
     return {"moving_ball_error_px[static]", "moving_ball_error_px[dynamic]"};
   }
   void addOptions(ts::Options& o) override {
-    o.addFloat("time", &time_, 0.0f, 4.0f, "the ball's time: it goes round the sphere 30 degrees a unit", ']', '[',
-               0.25f);
     o.addEnum("variant", &variant_, {"right", "face_flipped", "fov_60"},
               "the cube map's cameras: right, the +Z face upside down, or a 60-degree field of view", 'w');
-    o.addEnum("view", &view_, {"scene", "variants", "faces"},
-              "scene: dynamic | static | traced | faces; variants: the cameras; faces: the faces each reflector reads",
+    o.addFloat("time", &time_, 0.0f, 4.0f, "the ball's time: it goes round the sphere 30 degrees a unit", ']', '[',
+               0.25f);
+    o.addEnum("view", &view_, {"scene", "variants", "faces", "planar"},
+              "scene: dynamic | static | traced | faces; variants: the cameras; faces: the faces each reflector reads; "
+              "planar: a flat mirror rendered mirrored against the cube map's",
               'v');
     o.addBool("animate", &animate_, "move the ball (window)", 'a');
     o.addInt("face", &face_, 16, 512, "texels along a cube face's side", '+', '-', 16);
@@ -158,7 +172,18 @@ class DynamicReflection final : public ts::Scene {
              1200,
              420,
              "Faces read: sphere {faces_read[sphere]}, flat mirror {faces_read[flat_mirror]}, torus "
-             "{faces_read[torus]}."}};
+             "{faces_read[torus]}."},
+            {"dynamic_reflection_planar",
+             "Planar reflection by rendering (seed 001, lab sheet)",
+             "A flat mirror with a small ball in front of it: the scene rendered mirrored in the mirror's plane "
+             "(reflection matrix, clip plane) and mapped back onto the mirror, against the cube map rendered at the "
+             "mirror's centre; the cube map's texels read, each texel its own colour, show how few there are.",
+             {"--view", "planar"},
+             1200,
+             420,
+             "Ball pixels wrong: rendered mirrored {flat_mirror_error_px[planar]}, cube map "
+             "{flat_mirror_error_px[cube_map]}; the cube map's {flat_mirror_texels_read} texels cover "
+             "{flat_mirror_pixels} pixels ({flat_mirror_magnification|%.1f} pixels a texel)."}};
   }
   void update(double seconds) override {
     if (!animate_) animFrames_ = 0;
@@ -169,6 +194,7 @@ class DynamicReflection final : public ts::Scene {
   ts::Measurements measure(ts::Renderer& r) override;
 
  private:
+  void measurePlanar(ts::Renderer& r, ts::Measurements& out, Found& found) const;
   float time_ = 1.5f;
   int variant_ = kRight, view_ = kSceneView, face_ = 128, animFrames_ = 0;
   bool animate_ = false;
@@ -192,9 +218,10 @@ ts::Measurements DynamicReflection::measure(ts::Renderer& r) {
   const double t = time_;
   // "Ball or not": the cube passes draw the ball red on black; the sphere reads each map.
   auto maskError = [&](double mapTime, int variant, bool fromCentre = false) {
-    const ts::Image cube = r.renderOffscreen(cubeFrame(face_, mapTime, variant, kMask));
-    return ballError(r.renderOffscreen(eyeFrame(kMeasureSize, cubeTexture(cube, "mask"), kSphere, false, t)), t,
-                     fromCentre);
+    const ts::Image cube = r.renderOffscreen(cubeFrame(face_, ballCentre(mapTime), variant, kMask));
+    return ballError(r.renderOffscreen(
+                         eyeFrame(kMeasureSize, cubeTexture(cube, "mask"), kSphere, false, ballCentre(t))),
+                     t, fromCentre);
   };
   out.push_back({"moving_ball_error_px[static]", double(maskError(0.0, kRight)),
                  "pixels of the mirror sphere (256 x 256 picture) where the ball's reflection through a cube map "
@@ -219,7 +246,7 @@ ts::Measurements DynamicReflection::measure(ts::Renderer& r) {
   auto colourCube = [&](double mapTime, int variant, ts::gl::CallList* gl) {
     ts::Image img;
     const ts::gl::CallList calls = ts::recordRender(r, [&] {
-      img = r.renderOffscreen(cubeFrame(face_, mapTime, variant, kColours));
+      img = r.renderOffscreen(cubeFrame(face_, ballCentre(mapTime), variant, kColours));
     });
     if (gl) *gl = calls;
     return img;
@@ -227,7 +254,7 @@ ts::Measurements DynamicReflection::measure(ts::Renderer& r) {
   auto eyePicture = [&](const ts::Image& cube, const std::string& what, ts::gl::CallList cubeGL) {
     ts::Image img;
     const ts::gl::CallList eyeGL = ts::recordRender(r, [&] {
-      img = r.renderOffscreen(eyeFrame(kMeasureSize, cubeTexture(cube, what), kSphere, true, t));
+      img = r.renderOffscreen(eyeFrame(kMeasureSize, cubeTexture(cube, what), kSphere, true, ballCentre(t)));
     });
     std::vector<ts::gl::Call> calls = cubeGL ? *cubeGL : std::vector<ts::gl::Call>{};
     calls.insert(calls.end(), eyeGL->begin(), eyeGL->end());
@@ -270,7 +297,7 @@ ts::Measurements DynamicReflection::measure(ts::Renderer& r) {
   for (int k = 0; k < kReflectors; ++k) {
     ts::Image img;
     const ts::gl::CallList gl = ts::recordRender(r, [&] {
-      img = r.renderOffscreen(eyeFrame(kMeasureSize, faceIdCube(), k, false, t));
+      img = r.renderOffscreen(eyeFrame(kMeasureSize, faceIdCube(), k, false, ballCentre(t)));
     });
     std::set<int> faces;
     for (int y = 0; y < img.height; ++y)
@@ -283,8 +310,111 @@ ts::Measurements DynamicReflection::measure(ts::Renderer& r) {
                    "distinct face colours in a 256 x 256 render of this reflector reading the face-ID cube map"});
     found.reflectorPics[k] = picture(img, std::string("face ids ") + kReflectorKeys[k], gl);
   }
+  ts::measureProgress(0.85);
+  measurePlanar(r, out, found);
   out.detail = found;
   return out;
+}
+
+// The flat mirror: rendered mirrored against the cube map made at its centre, both against the trace; the
+// cube map's texels it reads, counted from a render reading the texel-ID cube map.
+void DynamicReflection::measurePlanar(ts::Renderer& r, ts::Measurements& out, Found& found) const {
+  const int n = kMeasureSize;
+  const glm::dvec3 ball = nearBall();
+  auto flatError = [&](const ts::Image& img) {
+    int wrong = 0;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const Seen s = traceFlat(x, y, n);
+        if (s != kOff) wrong += (img.at(x, y).r > 127) != (s == kBall);
+      }
+    return wrong;
+  };
+  auto planar = [&](int content, ts::gl::CallList* gl) {
+    ts::Image img;
+    *gl = ts::recordRender(r, [&] {
+      const ts::Image mirrored = r.renderOffscreen(mirroredFrame(n, content));
+      img = r.renderOffscreen(planarMirrorFrame(n, picture(mirrored, "mirrored pass"), content == kColours));
+    });
+    return img;
+  };
+  auto cubeMirror = [&](int content, ts::gl::CallList* gl) {
+    ts::Image img;
+    *gl = ts::recordRender(r, [&] {
+      const ts::Image cube = r.renderOffscreen(cubeFrame(face_, ball, kRight, content, kNearBallRadius));
+      img = r.renderOffscreen(
+          eyeFrame(n, cubeTexture(cube, "flat mirror cube"), kFlatMirror, content == kColours, ball, kNearBallRadius));
+    });
+    return img;
+  };
+  ts::gl::CallList gl;
+  out.push_back({"flat_mirror_error_px[planar]", double(flatError(planar(kMask, &gl))),
+                 "pixels of the flat mirror (256 x 256 picture) where the near ball's reflection, rendered mirrored "
+                 "(reflection matrix, clip plane), disagrees with the traced reference"});
+  out.push_back({"flat_mirror_error_px[cube_map]", double(flatError(cubeMirror(kMask, &gl))),
+                 "the same with a cube map rendered at the mirror's centre this frame"});
+  int ballPx = 0;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) ballPx += traceFlat(x, y, n) == kBall;
+  out.push_back({"flat_mirror_ball_px", double(ballPx), "pixels of the traced flat mirror showing the near ball"});
+  // The texels read: the mirror drawn with the texel-ID cube map, cleared to a colour no texel has.
+  ts::Frame ids = eyeFrame(n, texelIdCube(face_), kFlatMirror, false, ball, kNearBallRadius);
+  ids.clearColor = {0, 0, 1, 1};
+  ts::Image idImg;
+  const ts::gl::CallList idGL = ts::recordRender(r, [&] { idImg = r.renderOffscreen(ids); });
+  std::set<std::tuple<int, int, int>> texels;
+  int pixels = 0;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const ts::Rgba p = idImg.at(x, y);
+      if (p.b == 255) continue;
+      ++pixels;
+      texels.insert({p.r, p.g, p.b});
+    }
+  out.push_back({"flat_mirror_pixels", double(pixels), "pixels the flat mirror covers (256 x 256 picture)"});
+  out.push_back({"flat_mirror_texels_read", double(texels.size()),
+                 "distinct cube-map texels the flat mirror reads (texel-ID cube map, GL_NEAREST)"});
+  out.push_back({"flat_mirror_magnification", double(pixels) / double(std::max<size_t>(1, texels.size())),
+                 "flat_mirror_pixels / flat_mirror_texels_read: pixels a texel read"});
+  if (view_ != kPlanarView) return;
+  ts::gl::CallList planarGL, cubeGL;
+  found.planarPic = picture(planar(kColours, &planarGL), "planar", planarGL);
+  found.flatCubePic = picture(cubeMirror(kColours, &cubeGL), "flat mirror cube map", cubeGL);
+  // Shown with a colour of its own per texel (a hash of its ID), so neighbours differ and each texel's
+  // patch of pixels shows; off the mirror the page's background.
+  ts::Image shownIds(n, n);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const ts::Rgba p = idImg.at(x, y);
+      uint32_t h = (uint32_t(p.r) * 73856093u) ^ (uint32_t(p.g) * 19349663u) ^ (uint32_t(p.b) * 83492791u);
+      h = (h ^ (h >> 13)) * 0x5bd1e995u;
+      shownIds.set(x, y,
+                   p.b == 255
+                       ? ts::envmaps::toRgba(ts::envmaps::kBackground)
+                       : ts::Rgba{uint8_t(60 + (h & 0xff) * 195 / 255), uint8_t(60 + ((h >> 8) & 0xff) * 195 / 255),
+                                  uint8_t(60 + ((h >> 16) & 0xff) * 195 / 255), 255});
+    }
+  found.texelIds = picture(shownIds, "texel ids", idGL);
+  ts::Image ref(n, n);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      glm::dvec3 rr;
+      const Seen s = traceFlat(x, y, n, &rr);
+      ref.set(x, y,
+              s == kOff    ? ts::envmaps::toRgba(ts::envmaps::kBackground)
+              : s == kBall ? ts::envmaps::toRgba(glm::dvec3(kBallColour))
+                           : ts::envmaps::toRgba(ts::envmaps::worldColour(rr)));
+    }
+  found.flatReference = picture(ref, "flat mirror traced");
+}
+
+// A variant's title, its field of view a given number.
+ts::layout::Text variantTitle(int v) {
+  namespace L = ts::layout;
+  const L::Text fov = L::given("field of view of a cube map face, degrees", faceFovDeg(v), "%.0f");
+  if (v == kFaceFlipped) return "+Z face upside down";
+  if (v == kFov60) return fov + " deg field of view per face";
+  return "right cameras (" + fov + " deg, the spec's table)";
 }
 
 ts::Frame DynamicReflection::build(int width, int height, const ts::Measurements& measured) const {
@@ -336,21 +466,31 @@ ts::Frame DynamicReflection::build(int width, int height, const ts::Measurements
     }
     return f;
   }
+  if (view_ == kPlanarView) {
+    show(cells[0], "planar", found ? &found->planarPic : nullptr, "rendered mirrored (clip plane)",
+         L::measuredText(measured, "{flat_mirror_error_px[planar]|%.0f} px wrong"), ballKey);
+    show(cells[1], "cube_map", found ? &found->flatCubePic : nullptr, "cube map at the mirror's centre",
+         L::measuredText(measured, "{flat_mirror_error_px[cube_map]|%.0f} px wrong"), worldKey);
+    show(cells[2], "reference", found ? &found->flatReference : nullptr, "ray traced from the surface",
+         L::measuredText(measured, "the ball: {flat_mirror_ball_px|%.0f} px"));
+    show(cells[3], "texels", found ? &found->texelIds : nullptr, "cube texels read, a colour each",
+         L::measuredText(measured, "{flat_mirror_texels_read|%.0f} texels over {flat_mirror_pixels|%.0f} px: "
+                                   "{flat_mirror_magnification|%.1f} px a texel"),
+         {});
+    return f;
+  }
   if (view_ == kVariantsView) {
-    const char* titles[] = {"right cameras (90 deg, the spec's table)", "+Z face upside down",
-                            "60 deg field of view per face"};
     const char* keys[] = {"dynamic", "face_flipped", "fov_60"};
     for (int v = 0; v < kVariants; ++v)
       show(cells[size_t(v)], std::string("variant_") + kVariantKeys[v], found ? &found->variantPics[v] : nullptr,
-           titles[v], err(keys[v]), v == 0 ? ballKey : std::vector<ts::LegendEntry>{});
+           variantTitle(v), err(keys[v]), v == 0 ? ballKey : std::vector<ts::LegendEntry>{});
     show(cells[3], "reference", found ? &found->reference : nullptr, "ray traced from the surface",
          L::measuredText(measured, "the ball: {ball_reflection_px|%.0f} px"));
     return f;
   }
   const std::string shownKey = variant_ == kRight ? "dynamic" : kVariantKeys[variant_];
   show(cells[0], "dynamic", found ? &found->dynamicPic : nullptr,
-       std::string("cube map rendered this frame") +
-           (variant_ == kRight ? "" : std::string(", ") + kVariantKeys[variant_]),
+       variant_ == kRight ? L::Text("cube map rendered this frame") : "this frame's, " + variantTitle(variant_),
        err(shownKey), ballKey);
   show(cells[1], "static", found ? &found->staticPic : nullptr,
        "cube map made at time " + L::given("time the static map was made", 0, "%.0f"), err("static"), worldKey);

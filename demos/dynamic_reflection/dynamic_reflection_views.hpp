@@ -34,7 +34,7 @@
 namespace dynref {
 inline const glm::vec4 kBallColour{1.0f, 0.55f, 0.1f, 1.0f};  // the ball in the pictures
 inline const glm::vec4 kMaskColour{1.0f, 0.0f, 0.0f, 1.0f};   // the ball in the measurement's passes
-constexpr int kEnvFace = 64;                                  // the environment cube map's face side
+constexpr int kEnvFace = 256;                                 // the environment cube map's face side
 
 enum Reflector { kSphere, kFlatMirror, kTorus, kReflectors };
 inline const char* const kReflectorKeys[] = {"sphere", "flat_mirror", "torus"};
@@ -76,9 +76,9 @@ inline ts::Mesh reflectorMesh(int reflector) {
       },
       noTex);
 }
-inline ts::Batch ballBatch(double time, glm::vec4 colour) {
-  ts::Mesh m = sphereMesh(kBallRadius, 24, 12);
-  const glm::dvec3 c = ballCentre(time);
+// The ball centred at `c` (ballCentre(time) for the sphere's, kNearBall for the flat mirror's).
+inline ts::Batch ballBatch(glm::dvec3 c, glm::vec4 colour, double radius = kBallRadius) {
+  ts::Mesh m = sphereMesh(radius, 24, 12);
   for (ts::SurfacePoint& p : m.points) p.pos += c;
   return ts::meshBatch(m, -1, colour, "ball");
 }
@@ -107,7 +107,7 @@ inline ts::TextureDesc environmentCube() { return ts::envmaps::environmentMap(ts
 // What a cube pass holds: the world's colours and the ball (the pictures), or black and the ball in
 // kMaskColour (the measurement's "ball or not").
 enum Content { kColours, kMask };
-inline ts::Frame cubeFrame(int faceTexels, double time, int variant, int content) {
+inline ts::Frame cubeFrame(int faceTexels, glm::dvec3 ball, int variant, int content, double radius = kBallRadius) {
   ts::Frame f;
   f.width = faceTexels, f.height = 6 * faceTexels;
   f.clearColor = {0, 0, 0, 1};
@@ -121,16 +121,17 @@ inline ts::Frame cubeFrame(int faceTexels, double time, int variant, int content
     p.modelview = faceView(face, variant);
     p.depthTest = true;
     if (env >= 0) p.batches.push_back(skyBatch(env, glm::vec3(0.0f)));
-    p.batches.push_back(ballBatch(time, content == kColours ? kBallColour : kMaskColour));
+    p.batches.push_back(ballBatch(ball, content == kColours ? kBallColour : kMaskColour, radius));
     f.panels.push_back(p);
   }
   return f;
 }
 
 // The eye's picture, n x n: `reflector` reading cube map `cube` (a texture of the frame) by r, and with
-// `scene` the ball at `time` drawn directly beside it (the environment is only in the mirror: drawn
+// `scene` the ball at `ball` drawn directly beside it (the environment is only in the mirror: drawn
 // behind it, its few texels magnified to the eye's narrow view would hide the sphere's outline).
-inline ts::Frame eyeFrame(int n, const ts::TextureDesc& cube, int reflector, bool scene, double time) {
+inline ts::Frame eyeFrame(int n, const ts::TextureDesc& cube, int reflector, bool scene, glm::dvec3 ball,
+                          double radius = kBallRadius) {
   ts::Frame f;
   f.width = f.height = n;
   f.clearColor = scene ? glm::vec4(glm::vec3(ts::envmaps::kBackground), 1.0f) : glm::vec4(0, 0, 0, 1);
@@ -141,7 +142,7 @@ inline ts::Frame eyeFrame(int n, const ts::TextureDesc& cube, int reflector, boo
   p.projection = eyeProjection();
   p.modelview = eyeView();
   p.depthTest = true;
-  if (scene) p.batches.push_back(ballBatch(time, kBallColour));
+  if (scene) p.batches.push_back(ballBatch(ball, kBallColour, radius));
   const ts::Mesh m = reflectorMesh(reflector);
   ts::Batch b;
   b.role = std::string("mirror ") + kReflectorKeys[reflector];
