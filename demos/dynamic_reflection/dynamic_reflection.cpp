@@ -183,7 +183,7 @@ class DynamicReflection final : public ts::Scene {
              420,
              "Ball pixels wrong: rendered mirrored {flat_mirror_error_px[planar]}, cube map "
              "{flat_mirror_error_px[cube_map]}; the cube map's {flat_mirror_texels_read} texels cover "
-             "{flat_mirror_pixels} pixels ({flat_mirror_magnification|%.1f} pixels a texel)."}};
+             "{flat_mirror_pixels} pixels ({flat_mirror_magnification} pixels a texel)."}};
   }
   void update(double seconds) override {
     if (!animate_) animFrames_ = 0;
