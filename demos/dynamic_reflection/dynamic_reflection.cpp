@@ -185,9 +185,19 @@ class DynamicReflection final : public ts::Scene {
              "{flat_mirror_error_px[cube_map]}; the cube map's {flat_mirror_texels_read} texels cover "
              "{flat_mirror_pixels} pixels ({flat_mirror_magnification} pixels a texel)."}};
   }
+  // The animation steps the `time` option itself, a quarter unit every 1.5 s: the pictures are measure()'s
+  // renders, and each step supersedes a running measurement, so the steps leave it time to finish (about half a
+  // second).  The frame the key is taken on is left still, so the state printed for the key is the key's.
   void update(double seconds) override {
-    if (!animate_) animFrames_ = 0;
-    else if (++animFrames_ > 1) time_ = float(std::fmod(time_ + 0.5 * seconds, 4.0));
+    if (!animate_) {
+      animFrames_ = 0, animClock_ = 0;
+      return;
+    }
+    if (++animFrames_ < 2) return;
+    animClock_ += seconds;
+    if (animClock_ < kAnimStepSeconds) return;
+    animClock_ = 0;
+    time_ = float(std::fmod(time_ + 0.25, 4.0));
   }
   bool animating() const override { return animate_; }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
@@ -196,7 +206,9 @@ class DynamicReflection final : public ts::Scene {
  private:
   void measurePlanar(ts::Renderer& r, ts::Measurements& out, Found& found) const;
   float time_ = 1.5f;
+  static constexpr double kAnimStepSeconds = 1.5;
   int variant_ = kRight, view_ = kSceneView, face_ = 128, animFrames_ = 0;
+  double animClock_ = 0;
   bool animate_ = false;
 };
 
@@ -414,7 +426,7 @@ ts::layout::Text variantTitle(int v) {
   const L::Text fov = L::given("field of view of a cube map face, degrees", faceFovDeg(v), "%.0f");
   if (v == kFaceFlipped) return "+Z face upside down";
   if (v == kFov60) return fov + " deg field of view per face";
-  return "right cameras (" + fov + " deg, the spec's table)";
+  return "right: " + fov + " deg, the spec's table";
 }
 
 ts::Frame DynamicReflection::build(int width, int height, const ts::Measurements& measured) const {
@@ -424,6 +436,9 @@ ts::Frame DynamicReflection::build(int width, int height, const ts::Measurements
   const int n = view_ == kFacesView ? 3 : 4;
   L::FlowSpec spec;
   spec.n = n, spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 10;
+  // As wide as the widest title needs at the smallest scale: a small window stacks the pictures in two rows
+  // rather than cut their titles and keys.
+  spec.minCellWidth = ts::text::width("sphere: each face one flat colour", 1) + 8;
   const L::Box area{6, 6, float(width) - 6, float(height) - 6};
   const std::vector<L::Cell> cells = L::flow(area, spec);
   auto show = [&](const L::Cell& c, const std::string& id, const ts::TextureDesc* tex, const L::Text& title,
