@@ -425,37 +425,25 @@ ts::layout::Text variantTitle(int v) {
   namespace L = ts::layout;
   const L::Text fov = L::given("field of view of a cube map face, degrees", faceFovDeg(v), "%.0f");
   if (v == kFaceFlipped) return "+Z face upside down";
-  if (v == kFov60) return fov + " deg field of view per face";
-  return "right: " + fov + " deg, the spec's table";
+  if (v == kFov60) return fov + " deg per face";
+  return "right: " + fov + " deg, spec's table";
 }
 
 ts::Frame DynamicReflection::build(int width, int height, const ts::Measurements& measured) const {
   namespace L = ts::layout;
   ts::Frame f = L::blankFrame(width, height);
   const Found* found = measured.detailAs<Found>();
-  const int n = view_ == kFacesView ? 3 : 4;
-  L::FlowSpec spec;
-  spec.n = n, spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 10;
-  // As wide as the widest title needs at the smallest scale: a small window stacks the pictures in two rows
-  // rather than cut their titles and keys.
-  spec.minCellWidth = ts::text::width("sphere: each face one flat colour", 1) + 8;
-  const L::Box area{6, 6, float(width) - 6, float(height) - 6};
-  const std::vector<L::Cell> cells = L::flow(area, spec);
-  auto show = [&](const L::Cell& c, const std::string& id, const ts::TextureDesc* tex, const L::Text& title,
-                  const L::Text& note, const std::vector<ts::LegendEntry>& key = {}) {
-    if (found && tex && tex->image) {
-      ts::Rect pic = c.picture;
-      if (tex->image->width != tex->image->height)  // the unwrapped faces: 3:2 inside the square cell
-        pic = L::centred(c.picture, c.picture.w, c.picture.w * tex->image->height / tex->image->width);
-      f.panels.push_back(L::picturePanel(f, id, pic, *tex));
-    }
-    if (key.empty()) {
-      L::caption(f, c.above, title, L::kWhite, c.scale);
-    } else {
-      L::caption(f, L::halves(c.above).first, title, L::kWhite, c.scale);
-      L::legend(f, L::halves(c.above).second, key, c.scale);
-    }
-    L::caption(f, c.below, note, L::kAmber, c.scale);
+  // One cell a picture: its panel, title, key (under the title) and the measured note below it.
+  struct CellSpec {
+    std::string id;
+    const ts::TextureDesc* tex;
+    L::Text title, note;
+    std::vector<ts::LegendEntry> key;
+  };
+  std::vector<CellSpec> cells;
+  auto add = [&](const std::string& id, const ts::TextureDesc* tex, const L::Text& title, const L::Text& note,
+                 const std::vector<ts::LegendEntry>& key = {}) {
+    cells.push_back({id, found ? tex : nullptr, title, note, key});
   };
   const std::vector<ts::LegendEntry> ballKey = {{kBallColour, "the ball"}};
   // The world's colours encode the direction (common/core/env_maps.hpp): its base colour toward each axis.
@@ -466,6 +454,8 @@ ts::Frame DynamicReflection::build(int width, int height, const ts::Measurements
   auto err = [&](const std::string& k) {
     return L::measuredText(measured, "{moving_ball_error_px[" + k + "]|%.0f} px wrong");
   };
+  const Found none;
+  const Found& pics = found ? *found : none;
   if (view_ == kFacesView) {
     const char* titles[] = {"sphere", "flat mirror", "torus"};
     for (int k = 0; k < kReflectors; ++k) {
@@ -473,46 +463,68 @@ ts::Frame DynamicReflection::build(int width, int height, const ts::Measurements
       for (int face = 3 * k; face < 3 * k + 3 && k < 2; ++face)
         key.push_back({faceIdColour(face), std::string("face ") + ts::envmaps::kFaceNames[face]});
       if (k == 2) key.push_back({{0, 0, 0, 1}, "no reflector"});
-      show(cells[size_t(k)], std::string("faces_") + kReflectorKeys[k], found ? &found->reflectorPics[k] : nullptr,
-           std::string(titles[k]) + ": each face one flat colour",
-           L::measuredText(measured, std::string("faces read: {faces_read[") + kReflectorKeys[k] + "]|%.0f} of ") +
-               L::given("faces of a cube map", 6, "%.0f"),
-           key);
+      add(std::string("faces_") + kReflectorKeys[k], &pics.reflectorPics[k],
+          std::string(titles[k]) + ": a flat colour a face",
+          L::measuredText(measured, std::string("faces read: {faces_read[") + kReflectorKeys[k] + "]|%.0f} of ") +
+              L::given("faces of a cube map", 6, "%.0f"),
+          key);
     }
-    return f;
-  }
-  if (view_ == kPlanarView) {
-    show(cells[0], "planar", found ? &found->planarPic : nullptr, "rendered mirrored (clip plane)",
-         L::measuredText(measured, "{flat_mirror_error_px[planar]|%.0f} px wrong"), ballKey);
-    show(cells[1], "cube_map", found ? &found->flatCubePic : nullptr, "cube map at the mirror's centre",
-         L::measuredText(measured, "{flat_mirror_error_px[cube_map]|%.0f} px wrong"), worldKey);
-    show(cells[2], "reference", found ? &found->flatReference : nullptr, "ray traced from the surface",
-         L::measuredText(measured, "the ball: {flat_mirror_ball_px|%.0f} px"));
-    show(cells[3], "texels", found ? &found->texelIds : nullptr, "cube texels read, a colour each",
-         L::measuredText(measured, "{flat_mirror_texels_read|%.0f} texels over {flat_mirror_pixels|%.0f} px: "
-                                   "{flat_mirror_magnification|%.1f} px a texel"),
-         {});
-    return f;
-  }
-  if (view_ == kVariantsView) {
+  } else if (view_ == kPlanarView) {
+    add("planar", &pics.planarPic, "rendered mirrored",
+        L::measuredText(measured, "{flat_mirror_error_px[planar]|%.0f} px wrong"), ballKey);
+    add("cube_map", &pics.flatCubePic, "cube map at its centre",
+        L::measuredText(measured, "{flat_mirror_error_px[cube_map]|%.0f} px wrong"), worldKey);
+    add("reference", &pics.flatReference, "traced from the surface",
+        L::measuredText(measured, "the ball: {flat_mirror_ball_px|%.0f} px"));
+    add("texels", &pics.texelIds, "cube texels read",
+        L::measuredText(measured, "{flat_mirror_texels_read|%.0f} texels over {flat_mirror_pixels|%.0f} px: "
+                                  "{flat_mirror_magnification|%.1f} px a texel"));
+  } else if (view_ == kVariantsView) {
     const char* keys[] = {"dynamic", "face_flipped", "fov_60"};
     for (int v = 0; v < kVariants; ++v)
-      show(cells[size_t(v)], std::string("variant_") + kVariantKeys[v], found ? &found->variantPics[v] : nullptr,
-           variantTitle(v), err(keys[v]), v == 0 ? ballKey : std::vector<ts::LegendEntry>{});
-    show(cells[3], "reference", found ? &found->reference : nullptr, "ray traced from the surface",
-         L::measuredText(measured, "the ball: {ball_reflection_px|%.0f} px"));
-    return f;
+      add(std::string("variant_") + kVariantKeys[v], &pics.variantPics[v], variantTitle(v), err(keys[v]),
+          v == 0 ? ballKey : std::vector<ts::LegendEntry>{});
+    add("reference", &pics.reference, "traced from the surface",
+        L::measuredText(measured, "the ball: {ball_reflection_px|%.0f} px"));
+  } else {
+    const std::string shownKey = variant_ == kRight ? "dynamic" : kVariantKeys[variant_];
+    add("dynamic", &pics.dynamicPic, variant_ == kRight ? L::Text("this frame's cube map") : variantTitle(variant_),
+        err(shownKey), ballKey);
+    add("static", &pics.staticPic, "cube map of time " + L::given("time the static map was made", 0, "%.0f"),
+        err("static"), worldKey);
+    add("reference", &pics.reference, "traced from the surface",
+        L::measuredText(measured, "the ball: {ball_reflection_px|%.0f} px"));
+    add("faces", &pics.faces, "its six faces (t down)",
+        L::measuredText(measured, "{cube_map_renders_per_frame|%.0f} renders a frame"));
   }
-  const std::string shownKey = variant_ == kRight ? "dynamic" : kVariantKeys[variant_];
-  show(cells[0], "dynamic", found ? &found->dynamicPic : nullptr,
-       variant_ == kRight ? L::Text("cube map rendered this frame") : "this frame's, " + variantTitle(variant_),
-       err(shownKey), ballKey);
-  show(cells[1], "static", found ? &found->staticPic : nullptr,
-       "cube map made at time " + L::given("time the static map was made", 0, "%.0f"), err("static"), worldKey);
-  show(cells[2], "reference", found ? &found->reference : nullptr, "ray traced from the surface",
-       L::measuredText(measured, "the ball: {ball_reflection_px|%.0f} px"));
-  show(cells[3], "faces", found ? &found->faces : nullptr, "the six faces, this frame (t down)",
-       L::measuredText(measured, "{cube_map_renders_per_frame|%.0f} renders a frame"));
+  L::FlowSpec spec;
+  spec.n = int(cells.size()), spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 10;
+  // As wide as the widest title or key needs at the smallest scale: a small window stacks the pictures in
+  // rows rather than cut their titles and keys.
+  for (const CellSpec& c : cells) {
+    float keyWidth = 0;  // layout::legend's: a swatch, 4 px, the meaning, 8 px to the next
+    for (const ts::LegendEntry& e : c.key)
+      keyWidth += (keyWidth > 0 ? 8 : 0) + ts::text::height(1) + 4 + ts::text::width(e.meaning, 1);
+    spec.minCellWidth = std::max({spec.minCellWidth, ts::text::width(c.title.text, 1) + 8, keyWidth});
+  }
+  const std::vector<L::Cell> flow = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
+  for (size_t k = 0; k < cells.size(); ++k) {
+    const L::Cell& c = flow[k];
+    const CellSpec& s = cells[k];
+    if (s.tex && s.tex->image) {
+      ts::Rect pic = c.picture;
+      if (s.tex->image->width != s.tex->image->height)  // the unwrapped faces: 3:2 inside the square cell
+        pic = L::centred(c.picture, c.picture.w, c.picture.w * s.tex->image->height / s.tex->image->width);
+      f.panels.push_back(L::picturePanel(f, s.id, pic, *s.tex));
+    }
+    if (s.key.empty()) {
+      L::caption(f, c.above, s.title, L::kWhite, c.scale);
+    } else {
+      L::caption(f, L::halves(c.above).first, s.title, L::kWhite, c.scale);
+      L::legend(f, L::halves(c.above).second, s.key, c.scale);
+    }
+    L::caption(f, c.below, s.note, L::kAmber, c.scale);
+  }
   return f;
 }
 }  // namespace
