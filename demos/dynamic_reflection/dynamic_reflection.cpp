@@ -48,7 +48,9 @@
 //
 // Measured (measure()): the mirror sphere drawn at 256 x 256 reading cube maps whose passes draw the ball
 // in pure red on black, the pixels that show the ball (red > 1/2) against the traced reference's, counted
-// where they disagree: moving_ball_error_px[static | dynamic | face_flipped | fov_60];
+// where they disagree: moving_ball_error_px[static | dynamic | face_flipped | fov_60], and [parallax_free]: the
+// dynamic map against a trace whose reflected rays leave from the centre, as the map's do (what is left is
+// resolution and per-vertex r; what it removes is the parallax);
 // cube_map_renders_per_frame counted from the recorded calls (the face-sized glViewport calls of one
 // cube pass); faces_read[reflector], the distinct face colours in a render reading the face-ID cube map;
 // for the flat mirror with a near ball, flat_mirror_error_px[planar | cube_map] the same way against its trace,
