@@ -187,9 +187,8 @@ class DynamicReflection final : public ts::Scene {
              "{flat_mirror_error_px[cube_map]}; the cube map's {flat_mirror_texels_read} texels cover "
              "{flat_mirror_pixels} pixels ({flat_mirror_magnification} pixels a texel)."}};
   }
-  // The animation steps the `time` option itself, a quarter unit every 1.5 s: the pictures are measure()'s
-  // renders, and each step supersedes a running measurement, so the steps leave it time to finish (about half a
-  // second).  The frame the key is taken on is left still, so the state printed for the key is the key's.
+  // The animation steps the `time` option itself, a quarter unit every 1.5 s, a few of measure()'s frames
+  // (below).  The frame the key is taken on is left still, so the state printed for the key is the key's.
   void update(double seconds) override {
     if (!animate_) {
       animFrames_ = 0, animClock_ = 0;
@@ -202,6 +201,9 @@ class DynamicReflection final : public ts::Scene {
     time_ = float(std::fmod(time_ + 0.25, 4.0));
   }
   bool animating() const override { return animate_; }
+  // The pictures are measure()'s renders, and the window measures again only after a key: while the ball
+  // moves, measure() runs every frame (about half a second each), as a live view's does.
+  bool live() const override { return animate_; }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override;
 
