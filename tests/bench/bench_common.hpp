@@ -207,4 +207,9 @@ inline int run(int argc, char** argv, const std::function<void(const SummaryRepo
   printErrors(rep);
   return rep.errors().empty() ? 0 : 1;
 }
+// The same for a benchmark whose console table is its summary: the load
+// average before and after still printed, and unknown flags refused.
+inline int run(int argc, char** argv) {
+  return run(argc, argv, [](const SummaryReporter&) {});
+}
 }  // namespace ts::bench
