@@ -43,11 +43,11 @@
 // and each face copied on the GPU, no CPU round trip, by
 //   glCopyTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, 0, 0, x, y, w, w)
 // (read back by glGetTexImage only for the faces picture), and the mirror drawn with
-// glTexGeni(GL_S/T/R, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP), glEnable(GL_TEXTURE_CUBE_MAP).  The planar mirror: the scene drawn with glLoadMatrixf(V R),
-// R = I - 2 n n^T, and glClipPlane(GL_CLIP_PLANE0, -n); then the mirror textured with that picture by
-// glTexCoord4f(clip-space (x + w)/2, (y + w)/2, 0, w).  Listings: book_figures/dynamic_reflection.gl.txt,
-// dynamic_reflection_variants.gl.txt, dynamic_reflection_faces.gl.txt, dynamic_reflection_planar.gl.txt (each
-// picture's passes, then the frame).
+// glTexGeni(GL_S/T/R, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP), glEnable(GL_TEXTURE_CUBE_MAP).  The planar
+// mirror: the scene drawn with glLoadMatrixf(V R), R = I - 2 n n^T, and glClipPlane(GL_CLIP_PLANE0, -n); then
+// the mirror textured with that picture by glTexCoord4f(clip-space (x + w)/2, (y + w)/2, 0, w).  Listings:
+// book_figures/dynamic_reflection.gl.txt, dynamic_reflection_variants.gl.txt, dynamic_reflection_faces.gl.txt,
+// dynamic_reflection_planar.gl.txt (each picture's passes, then the frame).
 //
 // Measured (measure()): the mirror sphere drawn at 256 x 256 reading cube maps whose passes draw the ball
 // in pure red on black, the pixels that show the ball (red > 1/2) against the traced reference's, counted
