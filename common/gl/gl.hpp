@@ -61,6 +61,7 @@
   /* GL 1.3+ multitexture, compressed textures */                             \
   X(glActiveTexture) X(glCompressedTexImage2D) X(glGetTexLevelParameteriv)     \
   X(glMultiTexCoord2f) X(glCopyTexImage2D) X(glMultiTexCoord4f)              \
+  X(glCopyTexSubImage2D)                                                       \
   /* GL 1.4 */                                                                 \
   X(glBlendFuncSeparate) X(glSecondaryColor3f)                                 \
   /* GL 2.0+ shaders */                                                        \
@@ -128,6 +129,7 @@ bool enableDebugOutput();
 #define glAccum ts::gl::p_glAccum
 #define glAlphaFunc ts::gl::p_glAlphaFunc
 #define glCopyTexImage2D ts::gl::p_glCopyTexImage2D
+#define glCopyTexSubImage2D ts::gl::p_glCopyTexSubImage2D
 #define glMultiTexCoord2f ts::gl::p_glMultiTexCoord2f
 #define glMultiTexCoord4f ts::gl::p_glMultiTexCoord4f
 #define glRotatef ts::gl::p_glRotatef

@@ -107,6 +107,7 @@ const std::map<std::string, std::string>& hints() {
       {"glClear", "b"},
       {"glPushAttrib", "b"},
       {"glCopyTexImage2D", "eie"},
+      {"glCopyTexSubImage2D", "ei"},
       {"glCullFace", "e"},
       {"glDeleteTextures", "in"},
       {"glDepthFunc", "e"},

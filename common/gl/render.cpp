@@ -136,7 +136,10 @@ GLuint Renderer::texture3D(const TextureDesc& t) {
 GLuint Renderer::textureCube(const TextureDesc& t) {
   auto it = textures_.find(t.key());
   GLuint id = 0;
-  if (it != textures_.end()) {
+  if (t.glTexture) {  // drawn by the scene itself (glCopyTexSubImage2D into its faces): bound as it is
+    id = t.glTexture;
+    glBindTexture(GL_TEXTURE_CUBE_MAP, id);
+  } else if (it != textures_.end()) {
     id = it->second;
     glBindTexture(GL_TEXTURE_CUBE_MAP, id);
   } else {
@@ -679,6 +682,26 @@ Image Renderer::offscreen(int w, int h, const char* what, const std::function<vo
   if (!failure.empty()) throw Error(failure, kExitFailure);
   gl::check(what);
   return img;
+}
+
+void Renderer::drawOffscreen(const Frame& f, const std::function<void()>& then) {
+  RenderTarget target;
+  target.make({f.width, f.height}, "a pass drawn into a texture");
+  std::string failure;
+  {
+    RenderTarget::Bind bound(target);
+    overrideTarget_ = target.framebuffer();  // draw() binds it instead of the context's target
+    try {
+      draw(f, false);
+      then();
+    } catch (const Error& e) {
+      failure = e.what();
+    }
+    overrideTarget_ = 0;
+  }
+  target.free();
+  if (!failure.empty()) throw Error(failure, kExitFailure);
+  gl::check("a pass drawn into a texture");
 }
 
 Image Renderer::renderOffscreen(const Frame& f) {

@@ -43,6 +43,10 @@ class Renderer {
   // frame's size and reads it back: measurement passes get the same pixels whatever the window's size,
   // and leave the window's own target untouched.
   Image renderOffscreen(const Frame& frame);
+  // The same without the readback: `then()` runs while the private framebuffer still holds the picture and
+  // is bound for reading (a pass that copies what it drew into a texture, glCopyTexSubImage2D), then the
+  // framebuffer is deleted.
+  void drawOffscreen(const Frame& frame, const std::function<void()>& then);
   // The GL name of a 3D texture (TextureDesc::depth > 1), bound to GL_TEXTURE_3D.
   GLuint texture3D(const TextureDesc& t);
   // The GL name of a cube map (TextureDesc::cube), bound to GL_TEXTURE_CUBE_MAP.

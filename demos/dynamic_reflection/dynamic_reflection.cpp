@@ -35,16 +35,19 @@
 // sphere at P, leaves along r from P (not from the centre), and shows the
 // ball if that ray meets it.
 //
-// What the GL does (dynamic_reflection_views.hpp): per face
-//   glViewport(0, f w, w, w); glMatrixMode(GL_PROJECTION); glLoadMatrixf(gluPerspective(90, 1, ...) with y negated);
+// What the GL does (dynamic_reflection_views.hpp, dynamic_reflection_gl.hpp): the cube map made once with
+//   glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_RGBA8, w, w, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL)
+// then each frame, into a framebuffer object, per face
+//   glViewport(0, f w, w, w); glMatrixMode(GL_PROJECTION); glLoadMatrixf(gluPerspective(90, 1, ...));
 //   glMatrixMode(GL_MODELVIEW); glLoadMatrixf(the face's gluLookAt); draw the environment and the ball
-// then the six faces read back and uploaded by glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, ...),
-// and the mirror drawn with glTexGeni(GL_S/T/R, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP),
-// glEnable(GL_TEXTURE_CUBE_MAP).  The planar mirror: the scene drawn with glLoadMatrixf(V R),
-// R = I - 2 n n^T, and glClipPlane(GL_CLIP_PLANE0, -n); then the mirror textured with that picture by
-// glTexCoord4f(clip-space (x + w)/2, (y + w)/2, 0, w).  Listings: book_figures/dynamic_reflection.gl.txt,
-// dynamic_reflection_variants.gl.txt, dynamic_reflection_faces.gl.txt, dynamic_reflection_planar.gl.txt (each
-// picture's passes, then the frame).
+// and each face copied on the GPU, no CPU round trip, by
+//   glCopyTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, 0, 0, x, y, w, w)
+// (read back by glGetTexImage only for the faces picture), and the mirror drawn with
+// glTexGeni(GL_S/T/R, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP), glEnable(GL_TEXTURE_CUBE_MAP).  The planar
+// mirror: the scene drawn with glLoadMatrixf(V R), R = I - 2 n n^T, and glClipPlane(GL_CLIP_PLANE0, -n); then
+// the mirror textured with that picture by glTexCoord4f(clip-space (x + w)/2, (y + w)/2, 0, w).  Listings:
+// book_figures/dynamic_reflection.gl.txt, dynamic_reflection_variants.gl.txt, dynamic_reflection_faces.gl.txt,
+// dynamic_reflection_planar.gl.txt (each picture's passes, then the frame).
 //
 // Measured (measure()): the mirror sphere drawn at 256 x 256 reading cube maps whose passes draw the ball
 // in pure red on black, the pixels that show the ball (red > 1/2) against the traced reference's, counted
@@ -70,6 +73,7 @@
 #include "common/core/textures.hpp"
 #include "common/gl/gl_listing.hpp"
 #include "common/gl/render.hpp"
+#include "dynamic_reflection_gl.hpp"
 #include "dynamic_reflection_math.hpp"
 #include "dynamic_reflection_planar.hpp"
 #include "dynamic_reflection_textures.hpp"
@@ -92,19 +96,6 @@ struct Found {
 ts::TextureDesc picture(const ts::Image& img, const std::string& what, ts::gl::CallList gl = nullptr) {
   ts::TextureDesc t = ts::renderedImageTexture(img, "dynamic_reflection_render", what, "dynamic_reflection");
   t.renderedBy = std::move(gl);
-  return t;
-}
-// A cube pass's picture as the cube map it is (six faces stacked, t = 0 first: cubeFrame's layout).
-ts::TextureDesc cubeTexture(const ts::Image& stacked, const std::string& what) {
-  ts::TextureDesc t;
-  uint64_t h = 1469598103934665603ull;  // FNV-1a 64: the upload cache tells the maps apart
-  for (uint8_t c : stacked.pixels) h = (h ^ c) * 1099511628211ull;
-  t.name = "dynamic_reflection_cube";
-  t.params = {{"pass", what}, {"digest", std::to_string(h)}};
-  t.image = std::make_shared<const ts::Image>(stacked);
-  t.cube = true;
-  t.minFilter = t.magFilter = GL_LINEAR;
-  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
   return t;
 }
 // The six faces laid out to be looked at: +X -X +Y over -Y +Z -Z, each with t down as GL stores it.
@@ -234,10 +225,12 @@ ts::Measurements DynamicReflection::measure(ts::Renderer& r) {
   const double t = time_;
   // "Ball or not": the cube passes draw the ball red on black; the sphere reads each map.
   auto maskError = [&](double mapTime, int variant, bool fromCentre = false) {
-    const ts::Image cube = r.renderOffscreen(cubeFrame(face_, ballCentre(mapTime), variant, kMask));
-    return ballError(r.renderOffscreen(
-                         eyeFrame(kMeasureSize, cubeTexture(cube, "mask"), kSphere, false, ballCentre(t))),
-                     t, fromCentre);
+    const GLuint cube = makeCubeMap(face_);
+    renderIntoCube(r, cubeFrame(face_, ballCentre(mapTime), variant, kMask, kBallRadius, true), cube);
+    const ts::Image eye = r.renderOffscreen(
+        eyeFrame(kMeasureSize, cubeMapTexture(cube, "mask"), kSphere, false, ballCentre(t)));
+    glDeleteTextures(1, &cube);
+    return ballError(eye, t, fromCentre);
   };
   out.push_back({"moving_ball_error_px[static]", double(maskError(0.0, kRight)),
                  "pixels of the mirror sphere (256 x 256 picture) where the ball's reflection through a cube map "
@@ -259,32 +252,36 @@ ts::Measurements DynamicReflection::measure(ts::Renderer& r) {
   ts::measureProgress(0.5);
 
   // The pictures: the cube pass in colour, its calls recorded (the renders a frame are counted from them).
+  // The cube map it draws into is the caller's to delete (eyePicture does).
   auto colourCube = [&](double mapTime, int variant, ts::gl::CallList* gl) {
-    ts::Image img;
+    GLuint cube = 0;
     const ts::gl::CallList calls = ts::recordRender(r, [&] {
-      img = r.renderOffscreen(cubeFrame(face_, ballCentre(mapTime), variant, kColours));
+      cube = makeCubeMap(face_);
+      renderIntoCube(r, cubeFrame(face_, ballCentre(mapTime), variant, kColours, kBallRadius, true), cube);
     });
     if (gl) *gl = calls;
-    return img;
+    return cube;
   };
-  auto eyePicture = [&](const ts::Image& cube, const std::string& what, ts::gl::CallList cubeGL) {
+  auto eyePicture = [&](GLuint cube, const std::string& what, ts::gl::CallList cubeGL) {
     ts::Image img;
     const ts::gl::CallList eyeGL = ts::recordRender(r, [&] {
-      img = r.renderOffscreen(eyeFrame(kMeasureSize, cubeTexture(cube, what), kSphere, true, ballCentre(t)));
+      img = r.renderOffscreen(eyeFrame(kMeasureSize, cubeMapTexture(cube, what), kSphere, true, ballCentre(t)));
     });
+    glDeleteTextures(1, &cube);
     std::vector<ts::gl::Call> calls = cubeGL ? *cubeGL : std::vector<ts::gl::Call>{};
     calls.insert(calls.end(), eyeGL->begin(), eyeGL->end());
     return picture(img, what, std::make_shared<const std::vector<ts::gl::Call>>(std::move(calls)));
   };
   ts::gl::CallList dynGL;
-  const ts::Image dynCube = colourCube(t, variant_, &dynGL);
+  const GLuint dynCubeMap = colourCube(t, variant_, &dynGL);
+  const ts::Image dynCube = readCubeMap(dynCubeMap, face_);  // the faces picture needs its texels
   int renders = 0;
   for (const ts::gl::Call& c : *dynGL)
     if (std::string(c.name) == "glViewport" && c.args.size() == 4 && c.args[2].i == face_ && c.args[3].i == face_)
       ++renders;
   out.push_back({"cube_map_renders_per_frame", double(renders),
                  "face-sized glViewport calls recorded in one dynamic cube-map pass: one render a face"});
-  found.dynamicPic = eyePicture(dynCube, "dynamic", dynGL);
+  found.dynamicPic = eyePicture(dynCubeMap, "dynamic", dynGL);
   found.faces = picture(unwrapped(dynCube), "faces");
   if (view_ == kSceneView) {
     ts::gl::CallList staticGL;
@@ -356,11 +353,14 @@ void DynamicReflection::measurePlanar(ts::Renderer& r, ts::Measurements& out, Fo
   };
   auto cubeMirror = [&](int content, ts::gl::CallList* gl) {
     ts::Image img;
+    GLuint cube = 0;
     *gl = ts::recordRender(r, [&] {
-      const ts::Image cube = r.renderOffscreen(cubeFrame(face_, ball, kRight, content, kNearBallRadius));
-      img = r.renderOffscreen(
-          eyeFrame(n, cubeTexture(cube, "flat mirror cube"), kFlatMirror, content == kColours, ball, kNearBallRadius));
+      cube = makeCubeMap(face_);
+      renderIntoCube(r, cubeFrame(face_, ball, kRight, content, kNearBallRadius, true), cube);
+      img = r.renderOffscreen(eyeFrame(n, cubeMapTexture(cube, "flat mirror cube"), kFlatMirror, content == kColours,
+                                       ball, kNearBallRadius));
     });
+    glDeleteTextures(1, &cube);
     return img;
   };
   ts::gl::CallList gl;

@@ -9,9 +9,11 @@
 // with y negated, its modelview the face's camera at the sphere's centre
 // (dynamic_reflection_math.hpp's table).  The y negation puts the face's
 // t = 0 in its panel's top row: the picture, read back top row first, is then
-// the six faces stacked as TextureDesc::cube wants them, t = 0 first, and
-// its texture is uploaded with glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X +
-// f, ...).  Each panel draws the environment (a cube of side 40 round the
+// the six faces stacked as TextureDesc::cube wants them, t = 0 first (the
+// test probes it so).  The demo instead draws the pass with `intoTexture`, no
+// y negation, and copies each panel into its face on the GPU with
+// glCopyTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, ...), whose t = 0
+// is the panel's bottom row (dynamic_reflection_gl.hpp).  Each panel draws the environment (a cube of side 40 round the
 // camera, (s, t, r) = its corner's direction into the environment cube map)
 // and the ball.
 //
@@ -107,13 +109,18 @@ inline ts::TextureDesc environmentCube() { return ts::envmaps::environmentMap(ts
 // What a cube pass holds: the world's colours and the ball (the pictures), or black and the ball in
 // kMaskColour (the measurement's "ball or not").
 enum Content { kColours, kMask };
-inline ts::Frame cubeFrame(int faceTexels, glm::dvec3 ball, int variant, int content, double radius = kBallRadius) {
+// `intoTexture`: for glCopyTexSubImage2D into the cube map's faces (dynamic_reflection_gl.hpp), whose t = 0
+// is the bottom row of what it copies: the projection is not y-negated.  `faces`: a bit a face, the faces
+// drawn (the others' panels left out: rendering only the faces a reflector reads).
+inline ts::Frame cubeFrame(int faceTexels, glm::dvec3 ball, int variant, int content, double radius = kBallRadius,
+                           bool intoTexture = false, unsigned faces = 0x3f) {
   ts::Frame f;
   f.width = faceTexels, f.height = 6 * faceTexels;
   f.clearColor = {0, 0, 0, 1};
   const int env = content == kColours ? f.addTexture(environmentCube()) : -1;
-  const glm::mat4 flipY = glm::scale(glm::mat4(1.0f), glm::vec3(1, -1, 1));
+  const glm::mat4 flipY = glm::scale(glm::mat4(1.0f), glm::vec3(1, intoTexture ? 1 : -1, 1));
   for (int face = 0; face < 6; ++face) {
+    if (!(faces >> face & 1u)) continue;
     ts::Panel p;
     p.id = std::string("face_") + ts::envmaps::kFaceNames[face];
     p.viewport = {0, face * faceTexels, faceTexels, faceTexels};
