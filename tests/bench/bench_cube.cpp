@@ -85,9 +85,5 @@ int main(int argc, char** argv) {
                                  benchCube, k)
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
-  ts::bench::Args args(argc, argv, {TS_BENCH_DEFAULT_FLAGS});
-  benchmark::Initialize(args.argc(), args.argv());
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return ts::bench::run(argc, argv);
 }
