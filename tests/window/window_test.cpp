@@ -834,7 +834,9 @@ void mouseOrbit(const std::string& id) {
   want.opts.set("pitch", "12");
   want.opts.set("zoom", "1.21");
   EXPECT_EQ(lines.back(), want.opts.stateText()) << "the drag and the wheel did not turn the orbit";
-  EXPECT_GT(d.overSmall, long(gWidth) * gHeight / 50) << "the drag did not change the picture";
+  // More than 1% of the window: the orbit turns a 3D panel, which in a
+  // figure of tables and captions (octant_mapping) is a fifth of it or less.
+  EXPECT_GT(d.overSmall, long(gWidth) * gHeight / 100) << "the drag did not change the picture";
   // F12's command remakes the dragged picture.
   size_t at = moved.out.find("remake them with:\n  ");
   ASSERT_NE(at, std::string::npos) << moved.out;
