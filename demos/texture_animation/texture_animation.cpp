@@ -25,7 +25,8 @@
 //
 // Keys (each is also a flag, see --help):
 //   v      view: waterfall | flipbook | torch | lightmap
-//   a      animate: the window's clock runs the water, after 30 frames (figures and measurement: --time)
+//   a      animate: the window's clock runs the water, or steps --time a frame each quarter second in the
+//          other views (after 30 frames still; figures and measurement: --time)
 //   + / -  speed, texels a second           . / ,  the clock a frame on / back (--time, seconds: in every
 //                                                  view the flipbook frame k, the torch's frames, the light)
 //
@@ -68,6 +69,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "common/core/layout.hpp"
 #include "common/core/scene.hpp"
@@ -141,7 +143,8 @@ class TextureAnimation final : public ts::Scene {
     o.addInt("speed", &speed_, 0, 16, "texels a second the texture matrix moves t by", '+', '-', 1);
     o.addFloat("time", &time_, 0.0f, 3600.0f, "the clock, seconds: the frames shown and measured", '.', ',',
                1.0f / kFramesPerSecond);
-    o.addBool("animate", &animate_, "window: run the clock (the water falls; the other views step with . and ,)", 'a');
+    o.addBool("animate", &animate_,
+              "window: run the clock (the water falls; the other views step --time a frame each 1/4 s)", 'a');
     o.addEnum("view", &view_, {"waterfall", "flipbook", "torch", "lightmap"},
               "the texture matrix's waterfall | a flipbook by glTexSubImage2D | a torch (alpha flipbook, blending "
               "order) | a light map recomputed for a moving light",
@@ -195,11 +198,26 @@ class TextureAnimation final : public ts::Scene {
   ts::Frame buildAnimation(ts::Frame& f, const ts::Measurements& measured) const;
   // The window's clock runs after kHoldFrames frames still at --time, so the first pictures after the key
   // are the --png render's (the window tests compare them), as mipmap_popping's animation does.
+  // The other views' pictures are GL passes of measure(): animated, the clock steps --time a frame on
+  // every 1/kFramesPerSecond seconds, and the view turns live (measure() each frame, the window's thread),
+  // which renders only when the frame changed.
   void update(double seconds) override {
-    if (!animate_) heldFrames_ = 0, clock_ = 0;
-    else if (++heldFrames_ > kHoldFrames) clock_ += seconds;
+    if (!animate_) {
+      heldFrames_ = 0, clock_ = 0, stepClock_ = 0;
+      return;
+    }
+    if (++heldFrames_ <= kHoldFrames) return;
+    if (view_ == 0) {
+      clock_ += seconds;
+      return;
+    }
+    stepClock_ += seconds;
+    if (stepClock_ < 1.0 / kFramesPerSecond) return;
+    stepClock_ = 0;
+    time_ = float(std::fmod(double(time_) + 1.0 / kFramesPerSecond, 3600.0));
   }
   bool animating() const override { return animate_; }
+  bool live() const override { return animate_ && view_ > 0; }
 
  private:
   // The first measured frame: the whole frames in --time.
@@ -207,8 +225,12 @@ class TextureAnimation final : public ts::Scene {
   int speed_ = 2, view_ = 0;
   float time_ = 0;
   bool animate_ = false;
-  double clock_ = 0;  // the window's running clock, seconds (animate)
+  double clock_ = 0;      // the window's running clock, seconds (animate)
+  double stepClock_ = 0;  // seconds since the last step of --time (animate, the other views)
   int heldFrames_ = 0;
+  // The live views' last measurement and the (view, time) it is of: measured again only when they change.
+  ts::Measurements lastAnimation_;
+  std::pair<int, float> lastAnimationOf_{-1, -1.0f};
 };
 
 ts::Frame TextureAnimation::build(int width, int height, const ts::Measurements& measured) const {
@@ -254,8 +276,10 @@ ts::Frame TextureAnimation::build(int width, int height, const ts::Measurements&
 
 ts::Measurements TextureAnimation::measure(ts::Renderer& r) {
   if (view_ > 0) {
+    if (lastAnimationOf_ == std::make_pair(view_, time_)) return lastAnimation_;
     ts::Measurements out;
     out.detail = ts::texanim::measureAnimations(r, firstFrame(), time_, 1.0 / kFramesPerSecond, out);
+    lastAnimationOf_ = {view_, time_}, lastAnimation_ = out;
     return out;
   }
   const int n = kTexels * kPixelsPerTexel;
