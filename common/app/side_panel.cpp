@@ -65,7 +65,10 @@ void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& 
   if (status.measuring) ImGui::TextColored(gold, "measuring... %.0f%%", 100.0 * std::clamp(status.progress, 0.0, 1.0));
   if (m.empty() && !status.measuring) ImGui::TextColored(dim, "not measured yet");
   for (const Measurement* c : claimed(scene, m)) {
-    ImGui::TextColored(status.stale ? stale : gold, "%s", c->name.c_str());
+    // Wrapped: a long name ("moving_ball_error_px[static]") runs past a narrow window's panel otherwise.
+    ImGui::PushStyleColor(ImGuiCol_Text, status.stale ? stale : gold);
+    ImGui::TextWrapped("%s", c->name.c_str());
+    ImGui::PopStyleColor();
     ImGui::SetWindowFontScale(2.0f);
     ImGui::TextColored(status.stale ? stale : gold, "%s%s", number(c->value).c_str(), status.stale ? " (stale)" : "");
     ImGui::SetWindowFontScale(1.0f);

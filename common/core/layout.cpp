@@ -360,7 +360,10 @@ bool Column::add(const Text& text, glm::vec4 color, int scale, Align align, glm:
   return true;
 }
 
-std::vector<Cell> flow(Box area, const FlowSpec& spec) {
+namespace {
+// flow() with each arrangement's caption lines from `lines(cell width, scale)` (above, below).
+std::vector<Cell> flowWith(Box area, const FlowSpec& spec,
+                           const std::function<std::pair<int, int>(float width, int scale)>& lines) {
   std::vector<Cell> best;
   double bestArea = -1;
   bool bestFits = false;
@@ -371,8 +374,9 @@ std::vector<Cell> flow(Box area, const FlowSpec& spec) {
     // The scale is found with the picture: try large first, keep the first
     // whose picture asks for at least that scale.
     for (int s = std::max(1, spec.maxScale); s >= 1; --s) {
-      float bandA = float(spec.linesAbove) * lineHeight(s), bandB = float(spec.linesBelow) * lineHeight(s);
       float cw = (area.w() - float(cols - 1) * spec.gap) / float(cols);
+      const auto [linesAbove, linesBelow] = lines(cw, s);
+      float bandA = float(linesAbove) * lineHeight(s), bandB = float(linesBelow) * lineHeight(s);
       float ch = (area.h() - float(rows - 1) * spec.gap) / float(rows);
       float ph = ch - bandA - bandB, pw = cw;
       if (pw < 1 || ph < 1) continue;
@@ -411,5 +415,37 @@ std::vector<Cell> flow(Box area, const FlowSpec& spec) {
   if (best.empty())
     for (int k = 0; k < n; ++k) best.push_back({{int(area.x0), int(area.y0), 1, 1}, {}, {}, 1});
   return best;
+}
+}  // namespace
+
+std::vector<Cell> flow(Box area, const FlowSpec& spec) {
+  return flowWith(area, spec, [&](float, int) { return std::pair{spec.linesAbove, spec.linesBelow}; });
+}
+
+std::vector<Cell> flowFitting(Box area, FlowSpec spec, const std::vector<Stack>& above, const std::vector<Stack>& below,
+                              int keyLines, int maxLines) {
+  // Each arrangement with the lines its cells' width needs: a grid of wider cells may then give larger
+  // pictures than a row of narrow ones whose captions wrap.  Cells too narrow for a caption's longest
+  // word, or a formula's glued words (cut however many lines they had), are not an arrangement.
+  constexpr int kNoRoom = 100000;
+  auto unbreakable = [](const std::string& t, float width) {  // a word, or a formula's glued words, too wide
+    for (const std::string& line : wrap(t, 1, width))
+      if (text::width(line, 1) > width) return true;
+    return false;
+  };
+  std::vector<Cell> cells = flowWith(area, spec, [&](float width, int scale) {
+    auto need = [&](const std::vector<Stack>& stacks, int have, int extra) {
+      for (const Stack& stack : stacks) {
+        int n = extra;
+        for (const std::string& t : stack) n = unbreakable(t, width) ? kNoRoom : n + captionLines(t, scale, width);
+        have = std::max(have, n >= kNoRoom ? kNoRoom : std::min(maxLines, n));
+      }
+      return have;
+    };
+    return std::pair{need(above, spec.linesAbove, keyLines), need(below, spec.linesBelow, 0)};
+  });
+  // No arrangement has room for the words: flow()'s, its captions cut with "...".
+  if (cells.empty() || (cells.front().picture.w <= 1 && cells.front().picture.h <= 1)) return flow(area, spec);
+  return cells;
 }
 }  // namespace ts::layout

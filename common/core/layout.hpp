@@ -10,6 +10,8 @@
 // The layout tests (tests/layout) read back the same boxes (labelBox) and
 // check that no label leaves its panel or the window and no two overlap.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <utility>
@@ -104,6 +106,22 @@ struct FlowSpec {
   float minCellWidth = 0;
 };
 std::vector<Cell> flow(Box area, const FlowSpec& spec);
+// flow() whose caption bands take as many lines as the cells' captions need
+// at the cells' width (up to maxLines), so that in a narrow window a caption
+// wraps rather than being cut with "...".  above[k] and below[k] are cell
+// k's texts stacked in its band (a title over a formula; phrases), their
+// lines summed; `keyLines` more lines above hold a key.  Where every text
+// fits spec's lines, it is flow(area, spec) itself.
+using Stack = std::vector<std::string>;
+std::vector<Cell> flowFitting(Box area, FlowSpec spec, const std::vector<Stack>& above, const std::vector<Stack>& below,
+                              int keyLines = 0, int maxLines = 8);
+// The band's lines but its last (a title over a key's line), and its last
+// line, at `scale`.  For a two-line band, halves().
+inline std::pair<Box, Box> lastLineApart(const Box& b, int scale) {
+  const float lines = std::max(1.0f, std::round(b.h() / lineHeight(scale)));
+  const float mid = b.y0 + b.h() * (lines - 1) / lines;
+  return {{b.x0, b.y0, b.x1, mid}, {b.x0, mid, b.x1, b.y1}};
+}
 
 // Text whose numbers say where they come from (Label::printed, Label::given):
 // a caption made of it hands each line the numbers that line shows, so the

@@ -160,28 +160,36 @@ ts::Frame EnvLighting::build(int width, int height, const ts::Measurements& meas
   const int storyLines = L::captionLines(story.text, footScale, w - 12);
   const float foot = float(storyLines + 1) * L::lineHeight(footScale) + 8;
   const L::Box area{6, 6, w - 6, h - 6 - foot};
+  auto title = [](Method method, int n) {
+    return std::string(kMethodTitles[method]) + ", " + std::to_string(n) + (n == 1 ? " light" : " lights");
+  };
   auto cell = [&](const L::Cell& c, Method method, int n) {
     f.panels.push_back(
         spherePanel(f, std::string(kMethodKeys[method]) + "_" + std::to_string(n), c.picture, method, n, face));
-    L::caption(f, c.above,
-               std::string(kMethodTitles[method]) + ", " + std::to_string(n) + (n == 1 ? " light" : " lights"),
-               L::kWhite, c.scale);
+    L::caption(f, c.above, title(method, n), L::kWhite, c.scale);
     L::caption(f, c.below, costText(measured, method, n), L::kAmber, c.scale);
   };
   if (view_ == 1) {
-    // A row per number of lights, the three methods across it.
+    // A row per number of lights, the three methods across it; a narrow window wraps the captions.
     const float rowH = (area.y1 - area.y0) / 3;
     for (int row = 0; row < 3; ++row) {
       L::FlowSpec spec;
       spec.n = 3, spec.linesAbove = 1, spec.linesBelow = 1, spec.maxScale = 2;
-      const std::vector<L::Cell> cells = L::flow({area.x0, area.y0 + row * rowH, area.x1, area.y0 + (row + 1) * rowH},
-                                                 spec);
+      std::vector<L::Stack> above, below;
+      for (int m = 0; m < kMethods; ++m)
+        above.push_back({title(Method(m), kLightCounts[row])}),
+            below.push_back({costText(measured, Method(m), kLightCounts[row]).text});
+      // At most two lines each: more would leave a row's pictures a few pixels tall.
+      const L::Box rowBox{area.x0, area.y0 + row * rowH, area.x1, area.y0 + (row + 1) * rowH};
+      const std::vector<L::Cell> cells = L::flowFitting(rowBox, spec, above, below, 0, 2);
       for (int m = 0; m < kMethods; ++m) cell(cells[size_t(m)], Method(m), kLightCounts[row]);
     }
   } else {
     L::FlowSpec spec;
     spec.n = 1, spec.linesAbove = 1, spec.linesBelow = 1;
-    cell(L::flow(area, spec)[0], Method(method_), lightCount());
+    cell(L::flowFitting(area, spec, {{title(Method(method_), lightCount())}},
+                        {{costText(measured, Method(method_), lightCount()).text}})[0],
+         Method(method_), lightCount());
   }
   const L::Box band{6, h - 6 - foot, w - 6, h - 6};
   const float y = L::caption(f, {band.x0, band.y0, band.x1, band.y0 + storyLines * L::lineHeight(footScale)}, story,

@@ -271,9 +271,9 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
                   bool keyLine = false) {
     if (t && t->image) f.panels.push_back(L::picturePanel(f, id, c.picture, *t));  // a nested frame's picture upright
     // keyLine: the lower line holds a key drawn across cells (the caller's).
-    const L::Box title = key.empty() && !keyLine ? c.above : L::halves(c.above).first;
+    const L::Box title = key.empty() && !keyLine ? c.above : L::lastLineApart(c.above, c.scale).first;
     L::caption(f, title, above, kWhite, c.scale);
-    if (!key.empty()) cellKey(f, L::halves(c.above).second, key, c.scale);
+    if (!key.empty()) cellKey(f, L::lastLineApart(c.above, c.scale).second, key, c.scale);
     if (!below.empty()) L::phrases(f, c.below, below, kAmber, c.scale);
   };
   if (view_ == kCompareView) {
@@ -295,33 +295,43 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     // Lat-long per vertex without and with the +1 rule: the two pictures, then their errors on one scale.
     L::FlowSpec spec;
     spec.n = 4, spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 8;
-    std::vector<L::Cell> cells = L::flow(area, spec);
     const double scale = found ? found->seamScale : envmap::errorScale(true, 0);
     const L::Text seamDeg = L::given("the seam's region: degrees of longitude from the seam", 30, "%g"),
                   poleDeg = L::given("the poles' region: degrees of latitude from the equator", 75, "%g");
     const char* const titles[] = {"lat-long per vertex, s as computed", "the +1 rule: s + 1 where s differ > 1/2"};
+    std::vector<L::Text> errorTitles;
+    std::vector<std::vector<L::Text>> numbers;
     for (int rule = 0; rule < 2; ++rule) {
       const std::string k = kSeamRules[rule];
-      const std::vector<L::Text> numbers =
+      errorTitles.push_back(std::string(rule ? "+1 rule" : "as computed") + ": error, white " +
+                            L::given("error shown white, degrees (the heat scale's top)", scale, "%g") +
+                            " deg or more");
+      numbers.push_back(
           found ? std::vector<L::Text>{"within " + seamDeg + " deg of the seam " +
                                            L::measured(measured, "latlong_seam_error_deg[" + k + "]", "%.2f") + " deg,",
                                        "|latitude| > " + poleDeg + " deg " +
                                            L::measured(measured, "latlong_pole_error_deg[" + k + "]", "%.2f") + " deg"}
-                : std::vector<L::Text>{};
+                : std::vector<L::Text>{});
+    }
+    // Each title over a key's line; a narrow window wraps the titles and the numbers rather than cut them.
+    std::vector<L::Stack> above = {{titles[0]}, {titles[1]}, {errorTitles[0].text}, {errorTitles[1].text}}, below(4);
+    for (int rule = 0; rule < 2; ++rule)
+      for (const L::Text& t : numbers[size_t(rule)]) below[size_t(2 + rule)].push_back(t.text);
+    std::vector<L::Cell> cells = L::flowFitting(area, spec, above, below, 1);
+    for (int rule = 0; rule < 2; ++rule) {
+      const std::string k = kSeamRules[rule];
       show(cells[size_t(rule)], "seam_" + k, found ? &found->seamPictures[size_t(rule)] : nullptr, titles[rule], {}, {},
            true);
       const ts::TextureDesc errorTex = found ? image(found->seamErrors[size_t(rule)], "seam error " + k)
                                              : ts::TextureDesc{};
-      show(cells[size_t(2 + rule)], "seam_error_" + k, found ? &errorTex : nullptr,
-           std::string(rule ? "+1 rule" : "as computed") + ": error, white " +
-               L::given("error shown white, degrees (the heat scale's top)", scale, "%g") + " deg or more",
-           numbers, {}, true);
+      show(cells[size_t(2 + rule)], "seam_error_" + k, found ? &errorTex : nullptr, errorTitles[size_t(rule)],
+           numbers[size_t(rule)], {}, true);
     }
     // One key across the two pictures (the world's colours), one across the two errors (the heat scale).
     auto acrossTwo = [&](size_t first) {
       const L::Cell &a = cells[first], &b = cells[first + 1];
       const float x1 = b.above.y0 == a.above.y0 ? b.above.x1 : a.above.x1;  // side by side, or a's band alone
-      return L::Box{a.above.x0, L::halves(a.above).second.y0, x1, a.above.y1};
+      return L::Box{a.above.x0, L::lastLineApart(a.above, a.scale).second.y0, x1, a.above.y1};
     };
     cellKey(f, acrossTwo(0), worldKey(), cells[0].scale);
     cellKey(f, acrossTwo(2), heatKey(scale), cells[2].scale);

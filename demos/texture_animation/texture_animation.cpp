@@ -67,9 +67,11 @@
 // texel a second too fast (d + 1 pixels: a control that must find some), and the shift that matches.
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "common/core/layout.hpp"
 #include "common/core/scene.hpp"
@@ -237,40 +239,50 @@ ts::Frame TextureAnimation::build(int width, int height, const ts::Measurements&
   namespace L = ts::layout;
   ts::Frame f = L::blankFrame(width, height);
   if (view_ > 0) return buildAnimation(f, measured);
-  L::FlowSpec spec;
-  spec.n = kFramesShown, spec.linesAbove = 2, spec.linesBelow = 3, spec.gap = 8;
-  const std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
-  const int tex = f.addTexture(ts::texanim::waterTexture(kTexels));
   const int k = firstFrame();
   const L::Text d = L::measured(measured, "scroll_shift_px[expected]", "%.0f");
+  // The captions first: the cells take the lines they need (a narrow window wraps them).
+  std::vector<L::Text> titles, matrices;
+  std::vector<glm::mat4> tms;
   for (int i = 0; i < kFramesShown; ++i) {
-    const L::Cell& c = cells[size_t(i)];
     // The window's clock runs on from the frame; the figures' is still (clock_ = 0).
     const double seconds = double(k + i) / kFramesPerSecond + clock_;
-    const glm::mat4 tm = textureMatrix(speed_, seconds);
-    f.panels.push_back(quadPanel("frame_" + std::to_string(i), c.picture, tex, tm));
-    const auto [title, matrix] = L::halves(c.above);
-    L::caption(f, title,
-               "frame " + L::given("frame number", k + i, "%.0f") + ", time " +
-                   L::given("time, seconds", seconds, "%.2f") + " s",
-               L::kWhite, c.scale);
-    L::caption(f, matrix,
-               "texture matrix: translate t by " + L::given("the texture matrix's translation of t", tm[3][1], "%.4f"),
-               L::kWhite, c.scale);
+    tms.push_back(textureMatrix(speed_, seconds));
+    titles.push_back("frame " + L::given("frame number", k + i, "%.0f") + ", time " +
+                     L::given("time, seconds", seconds, "%.2f") + " s");
+    matrices.push_back("texture matrix: translate t by " +
+                       L::given("the texture matrix's translation of t", tms.back()[3][1], "%.4f"));
   }
-  L::phrases(f, cells[0].below,
-             {"speed " + L::given("speed, texels a second", speed_, "%.0f") + " texels/s x " +
-                  L::given("seconds a frame", 1.0 / kFramesPerSecond, "%.2f") + " s x " +
-                  L::given("pixels a texel in the measurement", kPixelsPerTexel, "%.0f") + " px a texel",
-              "= " + d + " px a frame, down"},
-             L::kAmber, cells[0].scale);
-  L::phrases(f, cells[1].below,
-             {L::measuredText(measured, "frame k moved {scroll_shift_px[expected]|%.0f} px: "
-                                        "{scroll_texel_mismatches|%.0f} pixels differ;"),
-              L::measuredText(measured, "moved {scroll_shift_px[wrong_speed]|%.0f} px (1 texel/s too fast): "
-                                        "{scroll_texel_mismatches[wrong_speed]|%.0f} differ;"),
-              L::measuredText(measured, "first match at {scroll_shift_px[found]|%.0f} px")},
-             L::kAmber, cells[1].scale);
+  const std::vector<std::vector<L::Text>> below = {
+      {"speed " + L::given("speed, texels a second", speed_, "%.0f") + " texels/s x " +
+           L::given("seconds a frame", 1.0 / kFramesPerSecond, "%.2f") + " s x " +
+           L::given("pixels a texel in the measurement", kPixelsPerTexel, "%.0f") + " px a texel",
+       "= " + d + " px a frame, down"},
+      {L::measuredText(measured, "frame k moved {scroll_shift_px[expected]|%.0f} px: "
+                                 "{scroll_texel_mismatches|%.0f} pixels differ;"),
+       L::measuredText(measured, "moved {scroll_shift_px[wrong_speed]|%.0f} px (1 texel/s too fast): "
+                                 "{scroll_texel_mismatches[wrong_speed]|%.0f} differ;"),
+       L::measuredText(measured, "first match at {scroll_shift_px[found]|%.0f} px")}};
+  L::FlowSpec spec;
+  spec.n = kFramesShown, spec.linesAbove = 2, spec.linesBelow = 3, spec.gap = 8;
+  std::vector<L::Stack> above, under;
+  for (int i = 0; i < kFramesShown; ++i) {
+    above.push_back({titles[size_t(i)].text, matrices[size_t(i)].text});
+    under.emplace_back();
+    for (const L::Text& t : below[size_t(i)]) under.back().push_back(t.text);
+  }
+  const std::vector<L::Cell> cells = L::flowFitting({6, 6, float(width) - 6, float(height) - 6}, spec, above, under);
+  auto lines = [&](const L::Text& t) { return L::captionLines(t.text, cells[0].scale, cells[0].above.w()); };
+  const int tex = f.addTexture(ts::texanim::waterTexture(kTexels));
+  for (int i = 0; i < kFramesShown; ++i) {
+    const L::Cell& c = cells[size_t(i)];
+    f.panels.push_back(quadPanel("frame_" + std::to_string(i), c.picture, tex, tms[size_t(i)]));
+    // The title's lines, then the matrix's (at the figure's size, the two halves of a two-line band).
+    const float split = c.above.y1 - float(lines(matrices[size_t(i)])) * L::lineHeight(c.scale);
+    L::caption(f, {c.above.x0, c.above.y0, c.above.x1, split}, titles[size_t(i)], L::kWhite, c.scale);
+    L::caption(f, {c.above.x0, split, c.above.x1, c.above.y1}, matrices[size_t(i)], L::kWhite, c.scale);
+    L::phrases(f, c.below, below[size_t(i)], L::kAmber, c.scale);
+  }
   return f;
 }
 
