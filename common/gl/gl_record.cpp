@@ -365,8 +365,8 @@ Arg describe(char hint, const Raw& r, const std::vector<Raw>& all, size_t index,
         size_t rowRead = size_t(rowLength > 0 ? rowLength : w) * pixel;
         size_t stride = (rowRead + size_t(align) - 1) / size_t(align) * size_t(align);
         auto copy = std::make_shared<std::vector<unsigned char>>();
-        const unsigned char* src =
-            static_cast<const unsigned char*>(r.p) + size_t(skipRows) * stride + size_t(skipPixels) * pixel;
+        const unsigned char* src = static_cast<const unsigned char*>(r.p) + size_t(skipRows) * stride +
+                                   size_t(skipPixels) * pixel;
         copy->reserve(row * size_t(h));
         for (long long y = 0; y < h; ++y)
           copy->insert(copy->end(), src + size_t(y) * stride, src + size_t(y) * stride + row);
