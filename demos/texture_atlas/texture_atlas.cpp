@@ -4,8 +4,9 @@
 //
 // The claim (view atlas): a floor that repeats ONE tile of a 4 x 4 atlas, trilinear (GL_LINEAR_MIPMAP_LINEAR),
 // shows its neighbours' colours at the tile's edges ("mip bleeding") unless the tile's gutter (its own edge texels
-// replicated around it) is at least 2^k texels wide, k the deepest level the floor reads.  With that gutter the
-// floor is, pixel for pixel, the floor drawn with the tile alone; with none it is not.
+// replicated around it) is wide enough for the deepest level k the floor reads: half a level-k texel, 2^(k-1)
+// texels, for tiles packed right after their gutters as here (2^k for tiles aligned to level k's boxes).  With that
+// gutter the floor is, pixel for pixel, the floor drawn with the tile alone; with none, or one level's less, it is not.
 //
 // The fair reference.  Not the lone tile with GL_REPEAT (the floor's squares do not wrap round the tile: each
 // square's corners carry the tile's (s, t) range) nor with GL_CLAMP_TO_EDGE (a gutter replicates level 0's edge,
@@ -15,19 +16,25 @@
 //
 // Keys (each is also a flag, see --help):
 //   v  view: atlas | fixes | subimage
-//   g  the gutter of the atlas's second row of pictures: enough (2^deepest level) | 1 | 2 | 4 | 8 | 16
+//   g  the gutter of the atlas's second row of pictures: enough (what the deepest level needs) | 1 | 2 | ... | 32
 //
 // The equations.  Level k+1 texel (i, j) = the mean of level k's (2i..2i+1, 2j..2j+1) (the book's 2x2 box, built
-// on the CPU), so a level-k texel is the mean of a 2^k x 2^k box of level 0.  A tile at texel x0 (a multiple of
-// 2^k) keeps its own texels at level k, and at its edge the bilinear filter reads the level-k texel just outside,
-// the box x0 - 2^k .. x0 - 1: all gutter only if
-//      gutter >= 2^k,   k = the deepest level read = ceil(lambda_max)   (GL_LINEAR_MIPMAP_LINEAR reads floor(lambda)
-// and floor(lambda) + 1).  lambda is read off a level picture: the same floor with a texture whose level k is flat,
-// red = 32 k, so that GL's blend of two levels leaves red = 32 lambda.
+// on the CPU), so a level-k texel is the mean of a 2^k x 2^k box of level 0, the boxes starting at multiples of 2^k.
+// At the tile's edge x0 the bilinear filter at level k reaches back half a level-k texel, to x0 - 2^(k-1), and
+// reads the box that holds it.  That box is the cell's own (gutter, not neighbour) when the cells start on box
+// boundaries (the pitch 32 + 2 gutter a multiple of 2^k) and 2^k floor((x0 - 2^(k-1)) / 2^k) >= x0 - gutter; with
+// x0 = c pitch + gutter (each tile right after its gutter):
+//      gutter(k) = 1 (k = 0: half a texel past the edge),  2^(k-1) (k >= 1),
+//      k = the deepest level read = ceil(lambda_max)   (GL_LINEAR_MIPMAP_LINEAR reads floor(lambda), floor(lambda) + 1)
+// (A tile aligned to level k, x0 a multiple of 2^k, has its edge on a box boundary and the filter reads the whole box
+// left of it: 2^k, the rule usually quoted.)  lambda is read off a level picture: the same floor with a texture
+// whose level k is flat, red = 32 k, so that GL's blend of two levels leaves red = 32 lambda; the gutter each level
+// needs is measured where lambda <= k, and the test recomputes it from the mip chains alone.  The atlas's levels
+// stop at the tile's last, 5 (1 x 1 texel): past it no gutter keeps the tiles apart.
 //
 // What the GL does, all in common/gl/render.cpp (Renderer::draw of each floor's Frame, texture_atlas_math.hpp):
-//   glTexImage2D(GL_TEXTURE_2D, k, GL_RGBA8, 256 >> k, 256 >> k, 0, GL_RGBA, GL_UNSIGNED_BYTE, level_k);  each level
-//   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 8);   (0 for the limited-levels fix)
+//   glTexImage2D(GL_TEXTURE_2D, k, GL_RGBA8, 256 >> k, 256 >> k, 0, GL_RGBA, GL_UNSIGNED_BYTE, level_k);  k = 0..5
+//   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 5);   (fewer for the limited-levels fix)
 //   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);  GL_CLAMP_TO_EDGE
 //   glBegin(GL_TRIANGLES); glTexCoord4f(s0 + u (s1 - s0), t0 + v (t1 - t0), 0, 1); glVertex3f(...) ... glEnd();
 // with (s0, t0, s1, t1) = the tile's texels in the atlas / the atlas's side.  The N objects (texture_atlas_gl.hpp):
@@ -44,10 +51,11 @@
 //
 // Measured (measure(), texture_atlas_views.hpp): every floor rendered offscreen at 256 x 160 and read back; the
 // pixels more than 3 levels (kTolerance: three 8-bit interpolation weights) off the reference, for gutters 0, 1,
-// 2, 4, 8, 16; the deepest level from the level picture; the three fixes (gutters; (s, t) clamped half a
-// level-k texel in from the tile's edge; GL_TEXTURE_MAX_LEVEL 0 with a 1-texel gutter), each with its bleed and its
-// cost; the binds and glBegin calls of the N objects, counted from the recorded calls; the in-place upload's
-// texels (glGetTexImage) against the tile copied out first, and with a wrong row length.
+// 2, 4, 8, 16, 32; the deepest level from the level picture, and the gutter each level needs; the three fixes
+// (gutters; (s, t) clamped half a level-k texel in from the tile's edge; a 1-texel gutter with GL_TEXTURE_MAX_LEVEL
+// the deepest level it covers), each with its bleed and its cost; the binds and glBegin calls of the N objects,
+// counted from the recorded calls; the in-place upload's texels (glGetTexImage) against the tile copied out first,
+// and with a wrong row length.
 #include <string>
 #include <vector>
 
@@ -68,10 +76,11 @@ class TextureAtlas final : public ts::Scene {
   std::string id() const override { return "texture_atlas"; }
   std::string title() const override { return "Texture atlases: mip bleeding, its fixes, sub-images through the API"; }
   std::string about() const override {
-    return "Sixteen tiles packed in one atlas; a receding floor repeats one of them, trilinear.  Measured: the floor's\n"
-           "pixels off the same floor drawn with the tile's cell alone, for gutters 0 to 16 (mip bleeding stops at a\n"
-           "gutter of 2^k, k the deepest level read, from a level picture); the fixes (gutters, clamped coordinates,\n"
-           "GL_TEXTURE_MAX_LEVEL) with their costs; binds and draw calls of N objects, N textures against one atlas.\n"
+    return "Sixteen tiles packed in one atlas; a receding floor repeats one of them, trilinear.  Measured: the\n"
+           "floor's pixels off the same floor drawn with the tile's cell alone, for gutters 0 to 32 (bleeding stops\n"
+           "at half a level-k texel of gutter, k the deepest level read, from a level picture); the fixes (gutters,\n"
+           "clamped coordinates, GL_TEXTURE_MAX_LEVEL) with their costs; binds and draw calls of N objects, N\n"
+           "textures against one atlas.\n"
            "View subimage: one tile uploaded in place with GL_UNPACK_ROW_LENGTH / SKIP_PIXELS / SKIP_ROWS, read back.";
   }
   std::vector<std::string> claim() const override {
@@ -84,44 +93,47 @@ class TextureAtlas final : public ts::Scene {
               "mip bleeding and the gutter it needs | the three fixes side by side | a tile uploaded in place "
               "(GL_UNPACK_ROW_LENGTH)",
               'v');
-    o.addEnum("gutter", &gutter_, {kGutterChoices[0], kGutterChoices[1], kGutterChoices[2], kGutterChoices[3],
-                                   kGutterChoices[4], kGutterChoices[5], kGutterChoices[6]},
-              "view atlas: the gutter, texels, of the second row's atlas (enough: what the deepest level read needs)", 'g');
+    o.addEnum("gutter", &gutter_,
+              {kGutterChoices[0], kGutterChoices[1], kGutterChoices[2], kGutterChoices[3], kGutterChoices[4],
+               kGutterChoices[5], kGutterChoices[6]},
+              "view atlas: the gutter, texels, of the second row's atlas (enough: what the deepest level read needs)",
+              'g');
   }
   std::vector<ts::FigureSpec> figures() const override {
-    return {{"texture_atlas",
-             "Texture atlas: mip bleeding (seed 001; Buss VI.1.3)",
-             "A floor repeating one tile of a 4 x 4 atlas, trilinear, against the same floor drawn with the tile's cell "
-             "alone: with no gutter the neighbours' texels bleed into the tile's edges; with a gutter of 2^k texels, k "
-             "the deepest level the floor reads (the level picture), nothing does.",
-             {"--view", "atlas"},
-             1100,
-             720,
-             "With no gutter {atlas_bleed_px[gutter=0]} floor pixels show the neighbours; with a gutter of "
-             "{atlas_gutter_needed} texels (level {atlas_deepest_level}) {atlas_bleed_px[gutter=enough]}, with half "
-             "that {atlas_bleed_px[gutter=short]}.  N = {atlas_objects} objects: {atlas_binds[separate]} binds and "
-             "{atlas_draws[separate]} draws, or {atlas_binds[atlas]} and {atlas_draws[atlas]} from the atlas."},
-            {"texture_atlas_fixes",
-             "Texture atlas: three fixes for mip bleeding (seed 001)",
-             "The same floor with three fixes, each against the tile alone drawn the same way, and what each costs: a "
-             "gutter (texels of the atlas), coordinates clamped in from the tile's edge (its border never shown), "
-             "GL_TEXTURE_MAX_LEVEL 0 (no minification filter: aliasing).",
-             {"--view", "fixes"},
-             1100,
-             640,
-             "Bleed: gutter {atlas_bleed_px[gutter=enough]}, clamped {fix_bleed_px[clamp]}, levels limited "
-             "{fix_bleed_px[max_level]} pixels; costs: the tiles fill {atlas_tile_share[gutter=enough]} of the atlas, "
-             "{fix_cost_px[clamp]} and {fix_cost_px[max_level]} pixels changed."},
-            {"texture_atlas_subimage",
-             "Texture atlas: a sub-image through the API (seed 001)",
-             "One tile of a larger picture uploaded with glTexSubImage2D straight from the picture's memory "
-             "(GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SKIP_ROWS), read back with glGetTexImage: the "
-             "tile copied out first gives the same texels; a row length one pixel short shears it.",
-             {"--view", "subimage"},
-             1000,
-             440,
-             "{subimage_mismatches} texels differ from the tile copied out on the CPU; with a row length of "
-             "{subimage_row_length} - 1, {subimage_mismatches[wrong_row_length]} do."}};
+    return {
+        {"texture_atlas",
+         "Texture atlas: mip bleeding (seed 001; Buss VI.1.3)",
+         "A floor repeating one tile of a 4 x 4 atlas, trilinear, against the same floor drawn with the tile's cell "
+         "alone: with no gutter the neighbours' texels bleed into the tile's edges; with a gutter of half a level-k "
+         "texel, k the deepest level the floor reads (the level picture), nothing does; the table: each level's need.",
+         {"--view", "atlas"},
+         1100,
+         720,
+         "With no gutter {atlas_bleed_px[gutter=0]} floor pixels show the neighbours; with a gutter of "
+         "{atlas_gutter_needed} texels (level {atlas_deepest_level}) {atlas_bleed_px[gutter=enough]}, with half "
+         "that {atlas_bleed_px[gutter=short]}.  N = {atlas_objects} objects: {atlas_binds[separate]} binds and "
+         "{atlas_draws[separate]} draws, or {atlas_binds[atlas]} and {atlas_draws[atlas]} from the atlas."},
+        {"texture_atlas_fixes",
+         "Texture atlas: three fixes for mip bleeding (seed 001)",
+         "The same floor with three fixes, each against the tile alone drawn the same way, and what each costs: a "
+         "gutter (texels of the atlas), coordinates clamped in from the tile's edge (its border never shown), "
+         "GL_TEXTURE_MAX_LEVEL at the last level a 1-texel gutter covers (the far floor under-filtered: aliasing).",
+         {"--view", "fixes"},
+         1100,
+         640,
+         "Bleed: gutter {atlas_bleed_px[gutter=enough]}, clamped {fix_bleed_px[clamp]}, levels limited "
+         "{fix_bleed_px[max_level]} pixels; costs: the tiles fill {atlas_tile_share[gutter=enough]} of the atlas, "
+         "{fix_cost_px[clamp]} and {fix_cost_px[max_level]} pixels changed."},
+        {"texture_atlas_subimage",
+         "Texture atlas: a sub-image through the API (seed 001)",
+         "One tile of a larger picture uploaded with glTexSubImage2D straight from the picture's memory "
+         "(GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SKIP_ROWS), read back with glGetTexImage: the "
+         "tile copied out first gives the same texels; a row length one pixel short shears it.",
+         {"--view", "subimage"},
+         1000,
+         440,
+         "{subimage_mismatches} texels differ from the tile copied out on the CPU; with a row length of "
+         "{subimage_row_length} - 1, {subimage_mismatches[wrong_row_length]} do."}};
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override {
@@ -161,18 +173,30 @@ void TextureAtlas::buildAtlas(ts::Frame& f, const ts::Measurements& measured, co
   const std::string g = std::to_string(p.gutters[i]);
   const L::Text gText = L::given("the second row's gutter, texels", p.gutters[i], "%.0f");
   std::vector<A::Picture> ps = {
-      {A::floorPicture(p.atlasFloors[0], A::atlasFloor(0), "the atlas floor, gutter 0"), "atlas, no gutter",
-       M("{atlas_bleed_px[gutter=0]|%.0f} px bleed"), {}},
-      {A::floorPicture(p.cellFloors[0], A::cellFloor(0), "the tile alone"), "the tile alone (reference)",
-       "GL_CLAMP_TO_EDGE, same filter", {}},
+      {A::floorPicture(p.atlasFloors[0], A::atlasFloor(0), "the atlas floor, gutter 0"),
+       "atlas, no gutter",
+       M("{atlas_bleed_px[gutter=0]|%.0f} px bleed"),
+       {}},
+      {A::floorPicture(p.cellFloors[0], A::cellFloor(0), "the tile alone"),
+       "the tile alone (reference)",
+       "GL_CLAMP_TO_EDGE, same filter",
+       {}},
       {A::drawnPicture(A::bleedMap(p.atlasFloors[0], p.cellFloors[0]), "bleed, gutter 0", nullptr),
-       "atlas - tile alone, no gutter", M("{atlas_bleed_px[gutter=0]|%.0f} px red"), {}},
+       "atlas - tile alone, no gutter",
+       M("{atlas_bleed_px[gutter=0]|%.0f} px red"),
+       {}},
       {A::floorPicture(p.atlasFloors[i], A::atlasFloor(p.gutters[i]), "the atlas floor, gutter " + g),
-       "atlas, gutter " + gText, M("{atlas_bleed_px[gutter=" + g + "]|%.0f} px bleed"), {}},
+       "atlas, gutter " + gText,
+       M("{atlas_bleed_px[gutter=" + g + "]|%.0f} px bleed"),
+       {}},
       {A::drawnPicture(A::bleedMap(p.atlasFloors[i], p.cellFloors[i]), "bleed, gutter " + g, nullptr),
-       "atlas - its cell alone, gutter " + gText, M("{atlas_bleed_px[gutter=" + g + "]|%.0f} px red"), {}},
-      {A::floorPicture(p.levels, A::levelFloor(), "the level picture"), "the level read (LOD)",
-       M("LOD up to {atlas_lod_max|%.2f}: level {atlas_deepest_level|%.0f}"), {}}};
+       "atlas - its cell alone, gutter " + gText,
+       M("{atlas_bleed_px[gutter=" + g + "]|%.0f} px red"),
+       {}},
+      {A::floorPicture(p.levels, A::levelFloor(), "the level picture"),
+       "the level read (LOD)",
+       M("LOD up to {atlas_lod_max|%.2f}: level {atlas_deepest_level|%.0f}"),
+       {}}};
   std::vector<ts::LegendEntry> legend = {
       {A::kBleed, "more than " + std::to_string(A::kTolerance) + " levels off the reference"}};
   const std::vector<ts::Image> levels = A::levelImages(A::kTile);
@@ -185,9 +209,10 @@ void TextureAtlas::buildAtlas(ts::Frame& f, const ts::Measurements& measured, co
                     L::given("the equation's gutter for the level, texels", A::gutterForLevel(k), "%.0f") +
                     M(" (the equation), measured {atlas_gutter_needed[level=" + kk + "]|%.0f}"));
   }
-  lines.push_back(M("N = {atlas_objects|%.0f} objects, each its own texture: {atlas_binds[separate]|%.0f} glBindTexture and "
-                    "{atlas_draws[separate]|%.0f} glBegin; from the atlas: {atlas_binds[atlas]|%.0f} and "
-                    "{atlas_draws[atlas]|%.0f}; the two pictures differ in {atlas_objects_mismatches|%.0f} pixels."));
+  lines.push_back(
+      M("N = {atlas_objects|%.0f} objects, each its own texture: {atlas_binds[separate]|%.0f} glBindTexture and "
+        "{atlas_draws[separate]|%.0f} glBegin; from the atlas: {atlas_binds[atlas]|%.0f} and "
+        "{atlas_draws[atlas]|%.0f}; the two pictures differ in {atlas_objects_mismatches|%.0f} pixels."));
   A::pictureGrid(f, ps, float(A::kFloorW) / float(A::kFloorH), legend, lines);
 }
 
@@ -200,28 +225,42 @@ void TextureAtlas::buildFixes(ts::Frame& f, const ts::Measurements& measured, co
   const L::Text gText = L::measured(measured, "atlas_gutter_needed", "%.0f");
   std::vector<A::Picture> ps = {
       {A::floorPicture(p.atlasFloors[e], A::atlasFloor(enough), "the atlas floor, gutter enough"),
-       "1. a gutter of " + gText + " texels", M("{atlas_bleed_px[gutter=enough]|%.0f} px bleed"), {}},
+       "1. a gutter of " + gText + " texels",
+       M("{atlas_bleed_px[gutter=enough]|%.0f} px bleed"),
+       {}},
       {A::drawnPicture(A::bleedMap(p.atlasFloors[e], p.cellFloors[e]), "bleed, gutter enough", nullptr),
-       "its bleed", M("cost: tiles fill {atlas_tile_share[gutter=enough]|%.2f} of the atlas"), {}},
+       "its bleed",
+       M("cost: tiles fill {atlas_tile_share[gutter=enough]|%.2f} of the atlas"),
+       {}},
       {A::floorPicture(p.clampAtlas, A::atlasFloor(0, p.inset), "the atlas floor, clamped"),
-       "2. no gutter, (s, t) clamped in", M("{fix_bleed_px[clamp]|%.0f} px bleed"), {}},
+       "2. no gutter, (s, t) clamped in",
+       M("{fix_bleed_px[clamp]|%.0f} px bleed"),
+       {}},
       {A::drawnPicture(A::bleedMap(p.clampCell, p.cellFloors[0]), "clamped against whole", nullptr),
-       "its cost: the tile's border lost", M("{fix_cost_px[clamp]|%.0f} px changed"), {}},
-      {A::floorPicture(p.limitAtlas, A::atlasFloor(p.limitGutter, 0, p.limitLevel), "the atlas floor, level 0 only"),
-       "3. GL_TEXTURE_MAX_LEVEL 0, gutter 1", M("{fix_bleed_px[max_level]|%.0f} px bleed"), {}},
-      {A::drawnPicture(A::bleedMap(p.limitCell, p.cellFloors[1]), "level 0 against mipmapped", nullptr),
-       "its cost: aliasing", M("{fix_cost_px[max_level]|%.0f} px changed"), {}}};
-  const std::vector<ts::LegendEntry> legend = {
-      {A::kBleed, "more than " + std::to_string(A::kTolerance) + " levels off the reference (bleed) or the whole, "
-                  "mipmapped tile (cost)"}};
+       "its cost: the tile's border lost",
+       M("{fix_cost_px[clamp]|%.0f} px changed"),
+       {}},
+      {A::floorPicture(p.limitAtlas, A::atlasFloor(p.limitGutter, 0, p.limitLevel), "the atlas floor, levels limited"),
+       M("3. GL_TEXTURE_MAX_LEVEL {fix_max_level|%.0f}, gutter {fix_gutter[max_level]|%.0f}"),
+       M("{fix_bleed_px[max_level]|%.0f} px bleed"),
+       {}},
+      {A::drawnPicture(A::bleedMap(p.limitCell, p.cellFloors[1]), "levels limited against all levels", nullptr),
+       "its cost: aliasing",
+       M("{fix_cost_px[max_level]|%.0f} px changed"),
+       {}}};
+  const std::vector<ts::LegendEntry> legend = {{A::kBleed, "more than " + std::to_string(A::kTolerance) +
+                                                               " levels off the reference (bleed) or the whole, "
+                                                               "mipmapped tile (cost)"}};
   const std::vector<L::Text> lines = {
       M("1. Gutter: the tiles fill {atlas_tile_share[gutter=enough]|%.2f} of the atlas's texels against "
         "{atlas_tile_share[gutter=0]|%.2f} with none (the texture grows to the next power of two)."),
       M("2. Clamped: (s, t) stop {fix_inset_texels[clamp]|%.0f} texels of level 0 in from each edge, half a texel of "
-        "level {atlas_deepest_level|%.0f}: the filter never leaves the tile, but the tile's border is never shown."),
-      M("3. Levels limited: a 1-texel gutter covers level 0 only; with every level it bleeds "
-        "{fix_bleed_px[max_level_full_chain]|%.0f} px, with level 0 alone {fix_bleed_px[max_level]|%.0f}, but the "
-        "far floor is minified with no filter: {fix_cost_px[max_level]|%.0f} px change.")};
+        "level {atlas_deepest_level|%.0f}: the filter never leaves the tile, but only the tile's middle is shown "
+        "(when that level's texel is the whole tile, nothing of its pattern is left)."),
+      M("3. Levels limited: a gutter of {fix_gutter[max_level]|%.0f} covers levels 0 to {fix_max_level|%.0f} (the "
+        "table); with every level it bleeds {fix_bleed_px[max_level_full_chain]|%.0f} px, with those alone "
+        "{fix_bleed_px[max_level]|%.0f}, but the far floor is under-filtered: {fix_cost_px[max_level]|%.0f} px "
+        "change.")};
   A::pictureGrid(f, ps, float(A::kFloorW) / float(A::kFloorH), legend, lines);
 }
 
@@ -236,17 +275,23 @@ void TextureAtlas::buildSubimage(ts::Frame& f, const ts::Measurements& measured,
     img.flipVertical();
     return img;
   };
-  std::vector<A::Picture> ps = {
-      {A::texelPicture(A::sourceTexture()), "the picture, " + L::given("picture side, pixels", p.rowLength, "%.0f") +
-                                                " x " + L::given("picture side, pixels", p.rowLength, "%.0f"),
-       "yellow: the tile read", {ts::lineLoop({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, A::kOutline, 2.0f, "tile")}},
-      {A::drawnPicture(upright(p.subTexels), "uploaded in place", p.subCalls), "glTexSubImage2D in place",
-       M("{subimage_mismatches|%.0f} texels off the copy"), {}},
-      {A::drawnPicture(upright(p.copiedTexels), "copied out, uploaded whole", p.copiedCalls),
-       "copied out on the CPU", M("{subimage_bytes|%.0f} bytes either way"), {}},
-      {A::drawnPicture(upright(p.wrongTexels), "row length one short", p.wrongCalls),
-       "GL_UNPACK_ROW_LENGTH " + L::given("the wrong row length", p.wrongRowLength, "%.0f"),
-       M("{subimage_mismatches[wrong_row_length]|%.0f} texels off"), {}}};
+  std::vector<A::Picture> ps = {{A::texelPicture(A::sourceTexture()),
+                                 "the picture, " + L::given("picture side, pixels", p.rowLength, "%.0f") + " x " +
+                                     L::given("picture side, pixels", p.rowLength, "%.0f"),
+                                 "yellow: the tile read",
+                                 {ts::lineLoop({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, A::kOutline, 2.0f, "tile")}},
+                                {A::drawnPicture(upright(p.subTexels), "uploaded in place", p.subCalls),
+                                 "glTexSubImage2D in place",
+                                 M("{subimage_mismatches|%.0f} texels off the copy"),
+                                 {}},
+                                {A::drawnPicture(upright(p.copiedTexels), "copied out, uploaded whole", p.copiedCalls),
+                                 "copied out on the CPU",
+                                 M("{subimage_bytes|%.0f} bytes either way"),
+                                 {}},
+                                {A::drawnPicture(upright(p.wrongTexels), "row length one short", p.wrongCalls),
+                                 "GL_UNPACK_ROW_LENGTH " + L::given("the wrong row length", p.wrongRowLength, "%.0f"),
+                                 M("{subimage_mismatches[wrong_row_length]|%.0f} texels off"),
+                                 {}}};
   const std::vector<ts::LegendEntry> legend = {{A::kOutline, "the tile the upload reads"}};
   const std::vector<L::Text> lines = {
       M("glPixelStorei(GL_UNPACK_ROW_LENGTH, {subimage_row_length|%.0f}); GL_UNPACK_SKIP_PIXELS "

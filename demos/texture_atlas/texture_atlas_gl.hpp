@@ -62,9 +62,9 @@ inline int countCalls(const std::vector<gl::Call>& calls, size_t from, const cha
 
 // ---- N objects, N textures or one atlas --------------------------------------------------------------------
 struct ObjectsRun {
-  Image picture;          // the kGrid x kGrid objects, one pixel a texel (GL_NEAREST)
-  int binds = 0;          // glBindTexture calls while drawing (the textures' creation not counted)
-  int draws = 0;          // glBegin calls while drawing
+  Image picture;  // the kGrid x kGrid objects, one pixel a texel (GL_NEAREST)
+  int binds = 0;  // glBindTexture calls while drawing (the textures' creation not counted)
+  int draws = 0;  // glBegin calls while drawing
   gl::CallList calls;
 };
 // kTiles squares, each showing its own tile: with `atlas` all from the atlas of gutter 0 in one glBegin, else each

@@ -15,7 +15,7 @@
 #include "demos/texture_atlas/texture_atlas_textures.hpp"
 
 namespace ts::atlas {
-constexpr int kFloorW = 256, kFloorH = 160;  // the floor's picture, pixels (measured and shown at this size)
+constexpr int kFloorW = 256, kFloorH = 160;     // the floor's picture, pixels (measured and shown at this size)
 constexpr int kFloorCols = 8, kFloorRows = 16;  // the floor: kFloorCols x kFloorRows squares, one tile each
 // Levels by which two renders of the same texels may differ: llvmpipe's three interpolation weights (s, t and
 // the level blend) are 8-bit fixed point, and the two renders reach the same texels through coordinates that
@@ -96,7 +96,9 @@ inline Frame cellFloor(int gutter, float inset = 0, int maxLevel = kMaxLevel) {
 inline Frame levelFloor() { return floorFrame(levelTexture(kTile), {0, 0, 1, 1}); }
 
 // The largest channel difference of two pixels (colour only).
-inline int channelDiff(Rgba a, Rgba b) { return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)}); }
+inline int channelDiff(Rgba a, Rgba b) {
+  return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+}
 // Pixels where `a` and `b` differ by more than `tol` in some channel.
 inline int differing(const Image& a, const Image& b, int tol = kTolerance) {
   int n = 0;

@@ -31,8 +31,8 @@ namespace A = ts::atlas;
 
 // The bilinear filter at level k reads, for samples from the tile's first texel x0 to its far edge x0 + kTile, the
 // level-k texels floor(x0 / 2^k - 1/2) .. ceil((x0 + kTile) / 2^k - 1/2) (a texel whose weight is 0 at the edge is
-// not read), or `reach` texels of level 0 more on each side, for the control.  True when every one of them, in both axes, is the texel the cell alone gives
-// there (GL_CLAMP_TO_EDGE), the cell's origin falling on a texel of level k.
+// not read), or `reach` texels of level 0 more on each side, for the control.  True when every one of them, in both
+// axes, is the texel the cell alone gives there (GL_CLAMP_TO_EDGE), the cell's origin falling on a texel of level k.
 bool cleanAt(int gutter, int k, double reach) {
   const std::vector<ts::Image> atlas = ts::buildMipChain(A::atlasImage(gutter));
   const std::vector<ts::Image> cell = ts::buildMipChain(A::cellImage(A::kShownTile, gutter));
@@ -117,6 +117,11 @@ TEST(TextureAtlas, FixesStopTheBleedAndCostSomething) {
   EXPECT_GT(value(m, "fix_bleed_px[max_level_full_chain]"), 0) << "a 1-texel gutter with every level bleeds";
   EXPECT_GT(value(m, "fix_cost_px[clamp]"), 0);
   EXPECT_GT(value(m, "fix_cost_px[max_level]"), 0);
+  // The limit is the deepest level a 1-texel gutter keeps clean, by the equation.
+  int limit = 0;
+  while (limit + 1 <= A::kMaxLevel && A::gutterForLevel(limit + 1) <= 1) ++limit;
+  EXPECT_EQ(value(m, "fix_max_level"), limit);
+  EXPECT_EQ(value(m, "fix_gutter[max_level]"), 1);
   EXPECT_EQ(value(m, "fix_inset_texels[clamp]"), 0.5 * (1 << int(value(m, "atlas_deepest_level"))));
   // The gutter's cost: the tiles' share of the atlas, N tiles of kTile^2 in a power-of-two square.
   const int g = int(value(m, "atlas_gutter_needed"));
@@ -175,8 +180,8 @@ TEST(TextureAtlas, FiguresPrintTheMeasurement) {
       {{"--view", "atlas"},
        {"atlas_bleed_px[gutter=0]", "atlas_lod_max", "atlas_gutter_needed[level=3]", "atlas_binds[separate]",
         "atlas_draws[atlas]"}},
-      {{"--view", "fixes"}, {"fix_bleed_px[clamp]", "fix_bleed_px[max_level]", "fix_cost_px[max_level]",
-                             "atlas_tile_share[gutter=enough]"}},
+      {{"--view", "fixes"},
+       {"fix_bleed_px[clamp]", "fix_bleed_px[max_level]", "fix_cost_px[max_level]", "atlas_tile_share[gutter=enough]"}},
       {{"--view", "subimage"},
        {"subimage_mismatches", "subimage_mismatches[wrong_row_length]", "subimage_row_length", "subimage_skip_rows"}}};
   for (const auto& [flags, names] : views) {

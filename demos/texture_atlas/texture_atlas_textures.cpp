@@ -83,7 +83,8 @@ Image cellImage(int k, int gutter) {
   Image img(p, p);
   // The gutter: each texel the tile's nearest edge texel (the edge replicated, corners included).
   for (int j = 0; j < p; ++j)
-    for (int i = 0; i < p; ++i) img.set(i, j, tile.at(std::clamp(i - gutter, 0, kTile - 1), std::clamp(j - gutter, 0, kTile - 1)));
+    for (int i = 0; i < p; ++i)
+      img.set(i, j, tile.at(std::clamp(i - gutter, 0, kTile - 1), std::clamp(j - gutter, 0, kTile - 1)));
   return img;
 }
 

@@ -12,8 +12,8 @@
 #include "common/core/frame.hpp"
 
 namespace ts::atlas {
-constexpr int kTile = 32;             // a tile is kTile x kTile texels (levels 0..5)
-constexpr int kGrid = 4;              // the atlas holds kGrid x kGrid tiles
+constexpr int kTile = 32;              // a tile is kTile x kTile texels (levels 0..5)
+constexpr int kGrid = 4;               // the atlas holds kGrid x kGrid tiles
 constexpr int kTiles = kGrid * kGrid;  // N = 16 textures
 constexpr int kShownTile = 5;          // the floor repeats tile 5 (column 1, row 1: it has four neighbours)
 constexpr int kLevelRed = 32;          // the level picture's red per level
@@ -22,8 +22,8 @@ constexpr int kLevelRed = 32;          // the level picture's red per level
 constexpr int kMaxLevel = 5;
 static_assert(1 << kMaxLevel == kTile, "the tile's last level");
 
-int pitch(int gutter);        // kTile + 2 gutter: one cell of the atlas
-int atlasSize(int gutter);    // the atlas texture's side: kGrid pitch, up to a power of two
+int pitch(int gutter);      // kTile + 2 gutter: one cell of the atlas
+int atlasSize(int gutter);  // the atlas texture's side: kGrid pitch, up to a power of two
 // Where tile k's first texel (its lower-left, t = 0 at row 0) lies in the atlas of gutter g.
 int tileX(int k, int gutter);
 int tileY(int k, int gutter);

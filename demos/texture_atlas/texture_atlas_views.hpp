@@ -16,8 +16,8 @@
 #include "demos/texture_atlas/texture_atlas_math.hpp"
 
 namespace ts::atlas {
-inline const glm::vec4 kBleed{1.0f, 0.15f, 0.1f, 1.0f};     // red: a pixel more than kTolerance off the reference
-inline const glm::vec4 kOutline{1.0f, 0.9f, 0.0f, 1.0f};    // yellow: the tile the sub-image upload reads
+inline const glm::vec4 kBleed{1.0f, 0.15f, 0.1f, 1.0f};   // red: a pixel more than kTolerance off the reference
+inline const glm::vec4 kOutline{1.0f, 0.9f, 0.0f, 1.0f};  // yellow: the tile the sub-image upload reads
 inline Rgba rgba(const glm::vec4& c) { return {uint8_t(c.r * 255), uint8_t(c.g * 255), uint8_t(c.b * 255), 255}; }
 inline glm::vec4 colour(Rgba c) { return {c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f}; }
 
@@ -31,7 +31,7 @@ struct Pictures {
   Image levels;                    // the level picture
   // The fixes (view fixes): clamped coordinates and limited levels, each with its reference.
   float inset = 0;
-  int limitGutter = 1, limitLevel = 0;
+  int limitGutter = 1, limitLevel = 0;  // the limited-levels fix: its gutter and GL_TEXTURE_MAX_LEVEL
   Image clampAtlas, clampCell, limitAtlas, limitCell;
   // N objects, N textures or one atlas.
   Image objectsSeparate, objectsAtlas;
@@ -48,8 +48,10 @@ inline Image bleedMap(const Image& got, const Image& want) {
   for (int y = 0; y < got.height; ++y)
     for (int x = 0; x < got.width; ++x) {
       const Rgba w = want.at(x, y);
-      out.set(x, y, channelDiff(got.at(x, y), w) > kTolerance ? rgba(kBleed)
-                                                             : Rgba{uint8_t(w.r / 3), uint8_t(w.g / 3), uint8_t(w.b / 3), 255});
+      out.set(x, y,
+              channelDiff(got.at(x, y), w) > kTolerance
+                  ? rgba(kBleed)
+                  : Rgba{uint8_t(w.r / 3), uint8_t(w.g / 3), uint8_t(w.b / 3), 255});
     }
   return out;
 }
@@ -84,8 +86,8 @@ inline Pictures measureAtlas(Renderer& r, Measurements& ms) {
   const double lod = maxLod(pic.levels);
   pic.deepest = deepestLevel(lod);
   const int enough = gutterForLevel(pic.deepest);  // the equation's; the measured one follows
-  put("atlas_lod_max", lod, "the largest LOD (lambda) on the floor, from the level picture's red / " +
-                                std::to_string(kLevelRed));
+  put("atlas_lod_max", lod,
+      "the largest LOD (lambda) on the floor, from the level picture's red / " + std::to_string(kLevelRed));
   put("atlas_deepest_level", pic.deepest, "the deepest mip level GL_LINEAR_MIPMAP_LINEAR reads on the floor");
   int floorPx = 0;
   for (int y = 0; y < pic.levels.height; ++y)
@@ -106,8 +108,8 @@ inline Pictures measureAtlas(Renderer& r, Measurements& ms) {
     within.emplace_back();
     // LOD <= k - 1/kLevelRed: level k + 1's weight is under one red step of the level picture (LOD 0: red 0).
     for (int k = 0; k <= pic.deepest; ++k)
-      within.back().push_back(
-          differingWhereLod(pic.atlasFloors.back(), pic.cellFloors.back(), pic.levels, std::max(0.0, k - 1.0 / kLevelRed)));
+      within.back().push_back(differingWhereLod(pic.atlasFloors.back(), pic.cellFloors.back(), pic.levels,
+                                                std::max(0.0, k - 1.0 / kLevelRed)));
     measureProgress(0.1 + 0.5 * double(pic.atlasFloors.size()) / double(pic.gutters.size() + 1));
   }
   // The gutter each level needs, measured: the smallest whose floor (and every wider one's) shows no bleeding
@@ -126,7 +128,8 @@ inline Pictures measureAtlas(Renderer& r, Measurements& ms) {
   pic.enoughIndex = e;
   put("atlas_bleed_px[gutter=enough]", valueOf("atlas_bleed_px[gutter=" + std::to_string(pic.gutters[e]) + "]"),
       "the same with the gutter the deepest level needs");
-  put("atlas_bleed_px[gutter=short]", e > 0 ? valueOf("atlas_bleed_px[gutter=" + std::to_string(pic.gutters[e - 1]) + "]") : -1,
+  put("atlas_bleed_px[gutter=short]",
+      e > 0 ? valueOf("atlas_bleed_px[gutter=" + std::to_string(pic.gutters[e - 1]) + "]") : -1,
       "the same with the next narrower gutter measured (the control; -1: none)");
   put("atlas_gutter_short", e > 0 ? pic.gutters[e - 1] : -1, "that narrower gutter, texels");
   put("atlas_tile_share[gutter=0]", tileShare(0), "share of the atlas's texels the tiles fill, no gutter");
@@ -143,16 +146,23 @@ inline Pictures measureAtlas(Renderer& r, Measurements& ms) {
   put("fix_cost_px[clamp]", differing(pic.clampCell, pic.cellFloors[0]),
       "its cost: floor pixels that differ from the whole tile drawn (the tile's border texels never shown)");
   put("fix_inset_texels[clamp]", pic.inset, "texels of level 0 the coordinates stop short of the edge, each side");
-  // Limited levels: a gutter of 1 texel, which covers level 0 only, and GL_TEXTURE_MAX_LEVEL 0.
+  // Limited levels: a gutter of 1 texel, and GL_TEXTURE_MAX_LEVEL the deepest level that gutter was measured to keep
+  // clean (atlas_gutter_needed[level=k] <= 1).
+  pic.limitLevel = 0;
+  for (int k = 0; k <= pic.deepest; ++k)
+    if (valueOf("atlas_gutter_needed[level=" + std::to_string(k) + "]") <= pic.limitGutter) pic.limitLevel = k;
+  put("fix_max_level", pic.limitLevel,
+      "GL_TEXTURE_MAX_LEVEL of the limited-levels fix: the deepest level its gutter covers");
+  put("fix_gutter[max_level]", pic.limitGutter, "the limited-levels fix's gutter, texels");
   pic.limitAtlas = r.renderOffscreen(atlasFloor(pic.limitGutter, 0, pic.limitLevel));
   pic.limitCell = r.renderOffscreen(cellFloor(pic.limitGutter, 0, pic.limitLevel));
   const size_t g1 = 1;  // pic.gutters[1] is 1
   put("fix_bleed_px[max_level]", differing(pic.limitAtlas, pic.limitCell),
-      "floor pixels off the tile alone (drawn the same way): gutter 1, GL_TEXTURE_MAX_LEVEL 0");
+      "floor pixels off the tile alone (drawn the same way): gutter 1, levels 0..fix_max_level only");
   put("fix_bleed_px[max_level_full_chain]", differing(pic.atlasFloors[g1], pic.cellFloors[g1]),
       "the same gutter with every level: the bleed the limit removes");
   put("fix_cost_px[max_level]", differing(pic.limitCell, pic.cellFloors[g1]),
-      "its cost: floor pixels that differ from the mipmapped tile (level 0 minified: aliasing)");
+      "its cost: floor pixels that differ from the fully mipmapped tile (the far floor under-filtered: aliasing)");
   measureProgress(0.75);
 
   // N objects: N textures (N binds, N glBegin) against one atlas (1, 1); the pictures must be the same.
