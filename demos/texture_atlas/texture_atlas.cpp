@@ -108,7 +108,7 @@ class TextureAtlas final : public ts::Scene {
          "texel, k the deepest level the floor reads (the level picture), nothing does; the table: each level's need.",
          {"--view", "atlas"},
          1100,
-         720,
+         660,
          "With no gutter {atlas_bleed_px[gutter=0]} floor pixels show the neighbours; with a gutter of "
          "{atlas_gutter_needed} texels (level {atlas_deepest_level}) {atlas_bleed_px[gutter=enough]}, with half "
          "that {atlas_bleed_px[gutter=short]}.  N = {atlas_objects} objects: {atlas_binds[separate]} binds and "
@@ -202,13 +202,17 @@ void TextureAtlas::buildAtlas(ts::Frame& f, const ts::Measurements& measured, co
   const std::vector<ts::Image> levels = A::levelImages(A::kTile);
   for (int k = 0; k <= p.deepest && k < int(levels.size()); ++k)
     legend.push_back({A::colour(levels[size_t(k)].at(0, 0)), "level " + std::to_string(k)});
-  std::vector<L::Text> lines;
-  for (int k = 0; k <= p.deepest; ++k) {
-    const std::string kk = std::to_string(k);
-    lines.push_back("level " + L::given("mip level", k, "%.0f") + ": needs a gutter of " +
-                    L::given("the equation's gutter for the level, texels", A::gutterForLevel(k), "%.0f") +
-                    M(" (the equation), measured {atlas_gutter_needed[level=" + kk + "]|%.0f}"));
-  }
+  // The table: each level's gutter, the equation's and the one measured (the narrowest with no bleeding where the
+  // LOD is at most that level).
+  L::Text table = "Gutter each level needs, texels (equation / measured):";
+  for (int k = 0; k <= p.deepest; ++k)
+    table = table + "  level " + L::given("mip level", k, "%.0f") + ": " +
+            L::given("the equation's gutter for the level, texels", A::gutterForLevel(k), "%.0f") + " / " +
+            M("{atlas_gutter_needed[level=" + std::to_string(k) + "]|%.0f}") + (k < p.deepest ? ";" : ".");
+  std::vector<L::Text> lines = {table};
+  lines.push_back(M("With the gutter the deepest level needs, {atlas_gutter_needed|%.0f} texels: "
+                    "{atlas_bleed_px[gutter=enough]|%.0f} px bleed; one level short, {atlas_gutter_short|%.0f} texels: "
+                    "{atlas_bleed_px[gutter=short]|%.0f} px; none: {atlas_bleed_px[gutter=0]|%.0f} px."));
   lines.push_back(
       M("N = {atlas_objects|%.0f} objects, each its own texture: {atlas_binds[separate]|%.0f} glBindTexture and "
         "{atlas_draws[separate]|%.0f} glBegin; from the atlas: {atlas_binds[atlas]|%.0f} and "

@@ -237,9 +237,15 @@ inline void pictureGrid(Frame& f, const std::vector<Picture>& ps, float aspect, 
                         const std::vector<L::Text>& lines) {
   int bandLines = 0;
   for (const L::Text& t : lines) bandLines += L::captionLines(t.text, 1, float(f.width - 16));
-  float keyWidth = 0;
-  for (const LegendEntry& e : legend) keyWidth += text::width(e.meaning, 1) + L::lineHeight(1) + 16;
-  const int keyLines = keyWidth <= float(f.width - 16) ? 1 : int(legend.size());
+  // The key's lines as L::legend wraps them: entries left to right, a new line when the next would not fit.
+  int keyLines = legend.empty() ? 0 : 1;
+  const float keyRoom = float(f.width - 16);
+  float x = 0;
+  for (const LegendEntry& e : legend) {
+    const float w = text::height(1) + 4 + text::width(e.meaning, 1);
+    if (x > 0 && x + w > keyRoom) x = 0, ++keyLines;
+    x += w + 8;
+  }
   const float band = L::lineHeight(1) * float(bandLines) + 8;
   const float key = legend.empty() ? 0 : L::lineHeight(1) * float(keyLines) + 4;
   const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band - key};
