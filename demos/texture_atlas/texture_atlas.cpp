@@ -279,7 +279,7 @@ void TextureAtlas::buildSubimage(ts::Frame& f, const ts::Measurements& measured,
     img.flipVertical();
     return img;
   };
-  std::vector<A::Picture> ps = {{A::texelPicture(A::sourceTexture()),
+  std::vector<A::Picture> ps = {{A::sourceTexture(),
                                  "the picture, " + L::given("picture side, pixels", p.rowLength, "%.0f") + " x " +
                                      L::given("picture side, pixels", p.rowLength, "%.0f"),
                                  "yellow: the tile read",

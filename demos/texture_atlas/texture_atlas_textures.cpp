@@ -123,7 +123,9 @@ TextureDesc sourceTexture() {
   TextureDesc t;
   t.name = "texture_atlas_source";
   t.image = std::make_shared<const Image>(atlasImage(0));
-  t.minFilter = t.magFilter = GL_NEAREST;
+  // Shown magnified by a ratio that is not whole: a pixel centre on a texel edge would make GL_NEAREST's tie go
+  // either way (OSMesa and an FBO differ there), GL_LINEAR's blend is the same everywhere.
+  t.minFilter = t.magFilter = GL_LINEAR;
   t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
   return t;
 }

@@ -38,7 +38,7 @@ std::vector<Image> levelImages(int size);
 TextureDesc atlasTexture(int gutter, int maxLevel = -1);
 TextureDesc cellTexture(int k, int gutter, int maxLevel = -1);
 TextureDesc levelTexture(int size);
-// The atlas of gutter 0 as a picture: GL_NEAREST, no mipmaps (the sub-image view's source).
+// The atlas of gutter 0 as a picture: GL_LINEAR, no mipmaps (the sub-image view's source).
 TextureDesc sourceTexture();
 // Tile k alone, GL_NEAREST, no mipmaps: one of the N separate textures of the draw-call count.
 TextureDesc tileTexture(int k);

@@ -226,12 +226,6 @@ inline TextureDesc floorPicture(const Image& img, const Frame& frame, const std:
   t.renderedFrom = std::make_shared<const Frame>(frame);
   return t;
 }
-// A texture's texels (row 0 = t = 0) shown upright, a texel a block of pixels.
-inline TextureDesc texelPicture(TextureDesc t) {
-  t.mipmaps = false, t.mipLevels = nullptr;
-  t.minFilter = t.magFilter = GL_NEAREST;
-  return t;
-}
 // The pictures in a grid above a legend and a band of `lines` numbers.
 inline void pictureGrid(Frame& f, const std::vector<Picture>& ps, float aspect, const std::vector<LegendEntry>& legend,
                         const std::vector<L::Text>& lines) {
