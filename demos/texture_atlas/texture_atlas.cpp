@@ -33,7 +33,8 @@
 // stop at the tile's last, 5 (1 x 1 texel): past it no gutter keeps the tiles apart.
 //
 // What the GL does, all in common/gl/render.cpp (Renderer::draw of each floor's Frame, texture_atlas_math.hpp):
-//   glTexImage2D(GL_TEXTURE_2D, k, GL_RGBA8, 256 >> k, 256 >> k, 0, GL_RGBA, GL_UNSIGNED_BYTE, level_k);  k = 0..5
+//   glTexImage2D(GL_TEXTURE_2D, k, GL_RGBA8, W >> k, W >> k, 0, GL_RGBA, GL_UNSIGNED_BYTE, level_k);  k = 0..5,
+//                W = the atlas's side: 4 (32 + 2 gutter) up to a power of two, 128 (no gutter) to 512 (gutter 32)
 //   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 5);   (fewer for the limited-levels fix)
 //   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);  GL_CLAMP_TO_EDGE
 //   glBegin(GL_TRIANGLES); glTexCoord4f(s0 + u (s1 - s0), t0 + v (t1 - t0), 0, 1); glVertex3f(...) ... glEnd();
