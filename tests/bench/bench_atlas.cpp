@@ -88,8 +88,9 @@ void benchObjects(benchmark::State& st, int n, bool atlas) {
 int main(int argc, char** argv) {
   for (int n : {16, 256})
     for (bool atlas : {false, true})
-      benchmark::RegisterBenchmark(("objects/" + std::string(atlas ? "atlas/" : "separate/") + std::to_string(n)).c_str(),
-                                   benchObjects, n, atlas)
+      benchmark::RegisterBenchmark(
+          ("objects/" + std::string(atlas ? "atlas/" : "separate/") + std::to_string(n)).c_str(), benchObjects, n,
+          atlas)
           ->Unit(benchmark::kMicrosecond)
           ->UseRealTime();
   return ts::bench::run(argc, argv);
