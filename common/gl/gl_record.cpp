@@ -219,6 +219,10 @@ bool numericPname(long long pname) {
     case GL_PACK_ALIGNMENT:
     case GL_UNPACK_ROW_LENGTH:
     case GL_PACK_ROW_LENGTH:
+    case GL_UNPACK_SKIP_PIXELS:
+    case GL_UNPACK_SKIP_ROWS:
+    case GL_PACK_SKIP_PIXELS:
+    case GL_PACK_SKIP_ROWS:
     case GL_RGB_SCALE:
     case GL_ALPHA_SCALE:
     case GL_LIGHT_MODEL_TWO_SIDE:
@@ -349,12 +353,20 @@ Arg describe(char hint, const Raw& r, const std::vector<Raw>& all, size_t index,
       a.kind = Arg::Kind::Pixels;
       a.ints = {w, h, format, type};
       if (r.p && w > 0 && h > 0) {
-        GLint align = 4;
+        // The texels GL reads: rows of GL_UNPACK_ROW_LENGTH pixels (w when 0), from pixel GL_UNPACK_SKIP_PIXELS
+        // of row GL_UNPACK_SKIP_ROWS on (a sub-image of a larger picture, uploaded without a copy).
+        GLint align = 4, rowLength = 0, skipPixels = 0, skipRows = 0;
         p_glGetIntegerv(GL_UNPACK_ALIGNMENT, &align);  // through the real pointer: not recorded
-        size_t row = size_t(w) * size_t(components(format) * typeBytes(type));
-        size_t stride = (row + size_t(align) - 1) / size_t(align) * size_t(align);
+        p_glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
+        p_glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skipPixels);
+        p_glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skipRows);
+        const size_t pixel = size_t(components(format) * typeBytes(type));
+        size_t row = size_t(w) * pixel;
+        size_t rowRead = size_t(rowLength > 0 ? rowLength : w) * pixel;
+        size_t stride = (rowRead + size_t(align) - 1) / size_t(align) * size_t(align);
         auto copy = std::make_shared<std::vector<unsigned char>>();
-        const unsigned char* src = static_cast<const unsigned char*>(r.p);
+        const unsigned char* src = static_cast<const unsigned char*>(r.p) + size_t(skipRows) * stride +
+                                   size_t(skipPixels) * pixel;
         copy->reserve(row * size_t(h));
         for (long long y = 0; y < h; ++y)
           copy->insert(copy->end(), src + size_t(y) * stride, src + size_t(y) * stride + row);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <thread>
+#include <vector>
 
 #include "common/gl/context.hpp"
 
@@ -99,6 +100,49 @@ TEST(GlRecord, CallsAsCWithTheirValues) {
                           [](const Call& c) { return std::string(c.name) == "glGetIntegerv"; });
   ASSERT_NE(get, calls.end());
   EXPECT_TRUE(get->query);
+}
+
+// Claim: a sub-image uploaded in place (GL_UNPACK_ROW_LENGTH, _SKIP_PIXELS, _SKIP_ROWS: the tile of a larger
+// picture, demos/texture_atlas) is recorded as the texels GL reads, and the unpack values are listed as numbers.
+TEST(GlRecord, KeepsTheTexelsTheUnpackStateReads) {
+  ts::test::context();
+  // A 4 x 3 picture, texel (i, j) = (10 i + j, ...); its 2 x 2 tile at (1, 1).
+  unsigned char picture[4 * 3 * 4];
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 4; ++i)
+      for (int c = 0; c < 4; ++c) picture[(j * 4 + i) * 4 + c] = (unsigned char)(10 * i + j + 100 * (c == 3));
+  std::vector<Call> calls;
+  GLuint id = 0;
+  {
+    ts::gl::Recording rec;
+    glGenTextures(1, &id);
+    glBindTexture(GL_TEXTURE_2D, id);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 4);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 1);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, picture);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    calls = rec.take();
+  }
+  glDeleteTextures(1, &id);
+  std::vector<std::string> l = lines(calls);
+  EXPECT_TRUE(has(l, "glPixelStorei(GL_UNPACK_ROW_LENGTH, 4);"));
+  EXPECT_TRUE(has(l, "glPixelStorei(GL_UNPACK_SKIP_PIXELS, 1);"));
+  EXPECT_TRUE(has(l, "glPixelStorei(GL_UNPACK_SKIP_ROWS, 1);"));
+  auto sub = std::find_if(calls.begin(), calls.end(),
+                          [](const Call& c) { return std::string(c.name) == "glTexSubImage2D"; });
+  ASSERT_NE(sub, calls.end());
+  ASSERT_TRUE(sub->args[8].bytes);
+  std::vector<unsigned char> tile;
+  for (int j = 1; j <= 2; ++j)
+    for (int i = 1; i <= 2; ++i) tile.insert(tile.end(), picture + (j * 4 + i) * 4, picture + (j * 4 + i) * 4 + 4);
+  EXPECT_EQ(*sub->args[8].bytes, tile);
+  // Not the picture's first 2 x 2 x 4 bytes, which a recorder blind to the unpack state would keep.
+  EXPECT_NE(*sub->args[8].bytes, std::vector<unsigned char>(picture, picture + 16));
 }
 
 // Claim: calls on another thread (a measurement on its own context, as the
