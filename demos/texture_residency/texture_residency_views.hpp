@@ -23,7 +23,8 @@ namespace L = ts::layout;
 // the clipmap's pictures (GL readbacks, row 0 the top) with the calls that made them.
 struct Detail {
   gl::CallList sizeCalls;
-  Image clipView, clipLevels[kClipLevels];
+  Image clipView, clipLevels[kClipLevels];  // the figure's: windows outlined, the last move's strips whitened
+  Image clipViewRaw, clipStorage[kClipLevels];  // as GL drew and holds them (the tests probe these)
   gl::CallList clipCalls;
 };
 
@@ -206,7 +207,10 @@ inline void measureClipmap(Renderer& r, Measurements& ms, Detail& d) {
       for (long long t : uploadedTexels({rec.calls().begin() + long(before), rec.calls().end()})) moved += t;
     }
     view = stack.draw(r, end);
-    for (int l = 0; l < kClipLevels; ++l) d.clipLevels[l] = stackPicture(stack.storage(l), lastPieces[l], windowOrigin(end, l));
+    for (int l = 0; l < kClipLevels; ++l) {
+      d.clipStorage[l] = stack.storage(l);
+      d.clipLevels[l] = stackPicture(d.clipStorage[l], lastPieces[l], windowOrigin(end, l));
+    }
     d.clipCalls = std::make_shared<const std::vector<gl::Call>>(rec.take());
   }
   measureProgress(0.6);
@@ -220,7 +224,7 @@ inline void measureClipmap(Renderer& r, Measurements& ms, Detail& d) {
   }
   std::vector<int> levels;
   const Image want = referenceView(end, &levels);
-  d.clipView = outlinedView(view, end);
+  d.clipView = outlinedView(view, end), d.clipViewRaw = view;
   long long predicted = 0;
   for (int m = 1; m <= kMoves; ++m) predicted += exposedTexels(eyeAfter(m - 1), eyeAfter(m));
   put("clipmap_mismatch_px", double(differingPixels(view, want)),
