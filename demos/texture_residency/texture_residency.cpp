@@ -154,7 +154,10 @@ ts::Frame TextureResidency::buildSizes(ts::Frame& f, const ts::Measurements& m) 
   for (size_t k = 0; k < cells.size(); ++k) {
     const int size = R::kSizes[k];
     const std::string key = "[" + std::to_string(size) + "]";
-    f.panels.push_back(R::sizePanel(f, "size_" + std::to_string(size), cells[k].picture, size));
+    // A whole multiple of 64 pixels a side: every edge between colours (the checks, the marker: 64ths) then falls
+    // between pixels, never through a pixel's centre where GL_NEAREST's tie could go either way.
+    const int side = std::max(64, std::min(cells[k].picture.w, cells[k].picture.h) / 64 * 64);
+    f.panels.push_back(R::sizePanel(f, "size_" + std::to_string(size), L::centred(cells[k].picture, side, side), size));
     // The size queries' calls go into the listing with the first panel's texture.
     if (k == 0 && d) f.textures[size_t(f.panels.back().batches[0].texture)].renderedBy = d->sizeCalls;
     L::caption(f, cells[k].above, L::given("texture side, texels", size, "%.0f") + " x " +
@@ -221,7 +224,8 @@ ts::Frame TextureResidency::buildResidency(ts::Frame& f, const ts::Measurements&
             L::kWhite, 1);
   notes.add(std::string("Buss VI.1.3: a distant texture needs only its lower-resolution levels in fast memory.  ") +
                 (far && far->value < 0.01 ? "Measured: it holds, " : "Measured: ") +
-                L::measuredText(m, "at d = 24 only {resident_fraction[24]|%.4f} of the chain need be resident."),
+                "at d = " + L::given("distance", R::kDistances.back(), "%.0f") +
+                L::measuredText(m, " only {resident_fraction[24]|%.4f} of the chain need be resident."),
             L::kAmber, 1);
   return f;
 }
@@ -246,7 +250,7 @@ ts::Frame TextureResidency::buildClipmap(ts::Frame& f, const ts::Measurements& m
   };
   const std::vector<L::Cell> view = L::flow({8, 8, split, bottom}, {1, 1.0f, 1, 1, 8, 1, 0});
   picture(d->clipView, "view", "the clipmap's view", view[0].picture, d->clipCalls);
-  L::caption(f, view[0].above, "the view: 16384^2 at " + L::given("texels a pixel", R::kTexelsPerPixel, "%.0f") +
+  L::caption(f, view[0].above, "the view: " + L::given("the virtual texture's side, texels", R::kVirtual, "%.0f") + "^2 at " + L::given("texels a pixel", R::kTexelsPerPixel, "%.0f") +
                                    " texels a pixel",
              L::kWhite, view[0].scale);
   L::caption(f, view[0].below, "each level's window outlined in its colour", L::kWhite, view[0].scale);
@@ -276,9 +280,12 @@ ts::Frame TextureResidency::buildClipmap(ts::Frame& f, const ts::Measurements& m
                                "{clipmap_texels_uploaded[predicted]|%.0f}); a reload of every window: "
                                "{clipmap_texels_uploaded[reload]|%.0f}."),
             L::kAmber, 1);
-  notes.add(L::measuredText(m, "Memory: the stack {clipmap_stack_texels|%.0f} texels, the whole 16384^2 chain "
-                               "{clipmap_chain_texels|%.0f}: {clipmap_saving|%.1f} times less (65536^2 with 512^2 "
-                               "levels: {clipmap_saving[65536/512]|%.0f} times)."),
+  notes.add(L::measuredText(m, "Memory: the stack {clipmap_stack_texels|%.0f} texels, the whole ") +
+                L::given("the virtual texture's side, texels", R::kVirtual, "%.0f") +
+                L::measuredText(m, "^2 chain {clipmap_chain_texels|%.0f}: {clipmap_saving|%.1f} times less (") +
+                L::given("texture_compression's clipmap side, texels", 65536, "%.0f") + "^2 with " +
+                L::given("clip side, texels", R::kClip, "%.0f") +
+                L::measuredText(m, "^2 levels: {clipmap_saving[65536/512]|%.0f} times)."),
             L::kAmber, 1);
   return f;
 }
