@@ -7,7 +7,9 @@
 //              the same place of the surface at 64^2, 256^2 and 1024^2 (measured: the marker's position, in
 //              pixels, within a 64^2 texel), while (u, v) grows with the size.  How big may w be?  The card
 //              says GL_MAX_TEXTURE_SIZE, and a proxy texture answers for one size: a size that does not fit
-//              gets GL_TEXTURE_WIDTH 0, and the program halves it until it fits.
+//              gets GL_TEXTURE_WIDTH 0, and the program halves it until it fits.  Where it settles is the
+//              backend's: llvmpipe takes GL_MAX_TEXTURE_SIZE^2 (16384^2 here), softpipe refuses that (1 GiB of
+//              RGBA8) and takes half; so the figure prints neither, the sidecar both.
 //   residency  Buss VI.1.3: "the textures further away are seen at lower resolution, so only the
 //              lower-resolution mipmap versions of them need be kept in the more accessible memory (the cache,
 //              the graphics chip): memory is used better by keeping only the mipmap versions needed".  A unit
@@ -95,7 +97,7 @@ class TextureResidency final : public ts::Scene {
          1024,
          520,
          "The marker lies {marker_offset_px[1024]} px from its 64^2 place at 1024^2; a proxy twice "
-         "GL_MAX_TEXTURE_SIZE wide reads width {proxy_width[2max]} and fits after {proxy_halvings} halving."},
+         "GL_MAX_TEXTURE_SIZE wide reads width {proxy_width[2max]}, and the program halves it until it fits."},
         {"texture_residency",
          "Texture residency: the mip levels a distance needs (Buss VI.1.3)",
          "A level-colour texture (each mip level one flat colour) on a unit quad at five distances, "
@@ -154,10 +156,13 @@ ts::Frame TextureResidency::build(int width, int height, const ts::Measurements&
 ts::Frame TextureResidency::buildSizes(ts::Frame& f, const ts::Measurements& m) const {
   namespace L = ts::layout;
   const R::Detail* d = m.detailAs<R::Detail>();
-  const float band = L::lineHeight(1) * 4 + 8;
+  const float band = L::lineHeight(1) * 4 + 8, key = L::lineHeight(1) + 4;
   L::FlowSpec spec;
   spec.n = int(R::kSizes.size()), spec.linesAbove = 1, spec.linesBelow = 2, spec.gap = 16, spec.maxScale = 2;
-  const std::vector<L::Cell> cells = L::flow({8, 8, float(f.width - 8), float(f.height) - 8 - band}, spec);
+  const std::vector<L::Cell> cells = L::flow({8, 8, float(f.width - 8), float(f.height) - 8 - band - key}, spec);
+  const ts::Rgba mc = R::kMarkerColour;
+  L::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band},
+            {{{mc.r / 255.0f, mc.g / 255.0f, mc.b / 255.0f, 1.0f}, "the marker: the same (s, t) square at every size"}}, 1);
   for (size_t k = 0; k < cells.size(); ++k) {
     const int size = R::kSizes[k];
     const std::string key = "[" + std::to_string(size) + "]";
@@ -186,11 +191,12 @@ ts::Frame TextureResidency::buildSizes(ts::Frame& f, const ts::Measurements& m) 
                 " px); (u, v) = (s w, t h) grows with the size.",
             L::kAmber, 1);
   notes.add(L::measuredText(m, "glTexImage2D(GL_PROXY_TEXTURE_2D, ...) of 1024^2: GL_TEXTURE_WIDTH {proxy_width[1024]|%.0f}; "
-                               "of twice GL_MAX_TEXTURE_SIZE: {proxy_width[2max]|%.0f}, so the program halved it "
-                               "{proxy_halvings|%.0f} time and it fit."),
+                               "of twice GL_MAX_TEXTURE_SIZE: {proxy_width[2max]|%.0f}, so the program halves it until "
+                               "it fits."),
             L::kAmber, 1);
-  notes.add("GL_MAX_TEXTURE_SIZE is the backend's own: the GL pane and the sidecar's max_texture_size give it.", L::kWhite,
-            1);
+  notes.add("GL_MAX_TEXTURE_SIZE and the size that fits are the backend's own (sidecar: max_texture_size, "
+            "proxy_settled_size).",
+            L::kWhite, 1);
   return f;
 }
 

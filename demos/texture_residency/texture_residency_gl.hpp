@@ -29,6 +29,7 @@ struct SizeRules {
   int tooBigWidth = -1;     // the proxy's width for (2 max)^2 (does not fit: 0)
   int halvings = 0;         // how often the program halved (2 max) until the proxy said it fits
   int settled = 0;          // the size it settled on
+  int settledWidth = 0;     // the proxy's width for it (= settled)
   gl::CallList calls;
 };
 inline SizeRules querySizes() {
@@ -43,6 +44,7 @@ inline SizeRules querySizes() {
   s.tooBigWidth = proxyWidth(size);
   for (int w = s.tooBigWidth; w == 0 && size > 1; w = proxyWidth(size)) size /= 2, ++s.halvings;
   s.settled = size;
+  s.settledWidth = proxyWidth(size);
   s.calls = std::make_shared<const std::vector<gl::Call>>(rec.take());
   return s;
 }

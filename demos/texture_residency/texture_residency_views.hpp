@@ -60,7 +60,8 @@ inline void measureSizes(Renderer& r, Measurements& ms, Detail& d) {
   put("proxy_width[1024]", q.fitsWidth, "GL_TEXTURE_WIDTH of a 1024^2 GL_RGBA8 proxy: it fits");
   put("proxy_width[2max]", q.tooBigWidth, "GL_TEXTURE_WIDTH of a proxy twice GL_MAX_TEXTURE_SIZE a side: 0, it does not fit");
   put("proxy_halvings", q.halvings, "times the program halved that size until the proxy gave a width");
-  put("proxy_settled_is_max", q.settled == q.maxSize ? 1 : 0, "1 when the halved size it settled on is GL_MAX_TEXTURE_SIZE");
+  put("proxy_settled_size", q.settled, "the size the halving settled on: the backend's own (never printed on the figure)");
+  put("proxy_width[settled]", q.settledWidth, "GL_TEXTURE_WIDTH of the proxy of that size: it, as it fits");
   const int n = kSizePanelPx;
   double x64 = 0, y64 = 0;
   for (int size : kSizes) {
