@@ -142,7 +142,7 @@ ts::Frame TextureResidency::build(int width, int height, const ts::Measurements&
   ts::Frame f = ts::layout::blankFrame(width, height);
   // Right after the key v the window still holds the previous view's measurements: draw this view as not yet
   // measured ("(measuring)") rather than print numbers it does not have.
-  static const char* const kMeasuredBy[] = {"marker_px_x[64]", "level_read[1.5]", "clipmap_mismatch_px"};
+  static const char* const kMeasuredBy[] = {"marker_px_x[64]", "levels_read[1.5]", "clipmap_mismatch_px"};
   bool mine = measured.empty();
   for (const ts::Measurement& x : measured) mine = mine || x.name == kMeasuredBy[view_];
   const ts::Measurements none;

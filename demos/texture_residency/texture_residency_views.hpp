@@ -118,7 +118,7 @@ inline void measureResidency(Renderer& r, Measurements& ms) {
     const double level = lod::levelOfColour(m, kLevels, &residual);
     const int finest = int(std::floor(level + 1e-9));
     const std::string k = "[" + distanceKey(d) + "]";
-    put("level_read" + k, level, "k + f decoded from the colour: levels k and k + 1 blended, f of k + 1");
+    put("levels_read" + k, level, "k + f decoded from the colour: levels k and k + 1 blended, f of k + 1");
     put("finest_level_read" + k, finest, "the finest level GL read at this distance");
     put("second_level_read" + k, std::min(finest + 1, kLevels - 1), "the other level GL_LINEAR_MIPMAP_LINEAR blends in");
     put("blend_weight" + k, level - finest, "the weight of that second level, decoded from the colour");
