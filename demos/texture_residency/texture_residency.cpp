@@ -24,7 +24,8 @@
 //              uploaded (glTexSubImage2D into their places mod 512), and GL_REPEAT reads the window from there.
 //
 // Keys (each is also a flag, see --help):
-//   v  view: sizes | residency | clipmap
+//   v      view: sizes | residency | clipmap
+//   . / ,  clipmap: the eye one move on / back (--moves; each move is (37, 21) level-0 texels)
 //
 // The equations:
 //   u = s w, v = t h                                            (the corresponder; marker at s, t = 41/64, 21/64)
@@ -85,6 +86,8 @@ class TextureResidency final : public ts::Scene {
   void addOptions(ts::Options& o) override {
     o.addEnum("view", &view_, {"sizes", "residency", "clipmap"},
               "the size rules | the mip levels read at five distances | a working clipmap", 'v');
+    o.addInt("moves", &moves_, 1, 400, "clipmap: moves of the eye from its start (each (37, 21) level-0 texels)", '.',
+             ',', 1);
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
@@ -126,7 +129,7 @@ class TextureResidency final : public ts::Scene {
     R::Detail d;
     if (view_ == 0) R::measureSizes(r, out, d);
     else if (view_ == 1) R::measureResidency(r, out);
-    else R::measureClipmap(r, out, d);
+    else R::measureClipmap(r, out, d, moves_);
     out.detail = d;
     return out;
   }
@@ -136,6 +139,7 @@ class TextureResidency final : public ts::Scene {
   ts::Frame buildResidency(ts::Frame& f, const ts::Measurements& m) const;
   ts::Frame buildClipmap(ts::Frame& f, const ts::Measurements& m) const;
   int view_ = 0;
+  int moves_ = R::kMoves;
 };
 
 ts::Frame TextureResidency::build(int width, int height, const ts::Measurements& measured) const {

@@ -52,7 +52,7 @@ constexpr int kTexelsPerPixel = kVirtual / kViewPx;  // 32
 struct Eye {
   int x = 0, y = 0;  // level-0 texels
 };
-// The eye's path: a start and kMoves equal steps (level-0 texels a step).
+// The eye's path: a start and equal steps (level-0 texels a step); the figure shows it after kMoves of them.
 constexpr Eye kEyeStart{5000, 9000};
 constexpr int kMoves = 8, kStepX = 37, kStepY = 21;
 inline Eye eyeAfter(int moves) { return {kEyeStart.x + moves * kStepX, kEyeStart.y + moves * kStepY}; }

@@ -178,9 +178,9 @@ inline Image stackPicture(const Image& storage, const std::vector<Piece>& pieces
   return out;
 }
 
-inline void measureClipmap(Renderer& r, Measurements& ms, Detail& d) {
+inline void measureClipmap(Renderer& r, Measurements& ms, Detail& d, int moves = kMoves) {
   auto put = [&](const std::string& n, double v, const std::string& meaning) { ms.push_back({n, v, meaning}); };
-  const Eye end = eyeAfter(kMoves);
+  const Eye end = eyeAfter(moves);
   r.release();  // the record shows every object made
   long long reload = 0, moved = 0, lastPerLevel[kClipLevels] = {};
   std::vector<Piece> lastPieces[kClipLevels];
@@ -190,9 +190,9 @@ inline void measureClipmap(Renderer& r, Measurements& ms, Detail& d) {
     ClipStack stack;
     stack.load(kEyeStart);
     for (long long t : uploadedTexels(rec.calls())) reload += t;
-    for (int m = 1; m <= kMoves; ++m) {
+    for (int m = 1; m <= moves; ++m) {
       const size_t before = rec.calls().size();
-      if (m < kMoves) {
+      if (m < moves) {
         stack.move(eyeAfter(m - 1), eyeAfter(m));
       } else {
         // The last move level by level, so that the figure shows each level's share.
@@ -220,22 +220,22 @@ inline void measureClipmap(Renderer& r, Measurements& ms, Detail& d) {
   {
     ClipStack stack;
     stack.load(kEyeStart);
-    for (int m = 1; m < kMoves; ++m) stack.move(eyeAfter(m - 1), eyeAfter(m));
+    for (int m = 1; m < moves; ++m) stack.move(eyeAfter(m - 1), eyeAfter(m));
     stale = stack.draw(r, end);
   }
   std::vector<int> levels;
   const Image want = referenceView(end, &levels);
   d.clipView = outlinedView(view, end), d.clipViewRaw = view;
   long long predicted = 0;
-  for (int m = 1; m <= kMoves; ++m) predicted += exposedTexels(eyeAfter(m - 1), eyeAfter(m));
+  for (int m = 1; m <= moves; ++m) predicted += exposedTexels(eyeAfter(m - 1), eyeAfter(m));
   put("clipmap_mismatch_px", double(differingPixels(view, want)),
       "pixels of the stack's view (GL, after the moves) that differ at all from the procedural texture sampled on the "
       "CPU at the level and texel the stack selects there");
   put("clipmap_mismatch_px[stale]", double(differingPixels(stale, want)),
       "the same with the last move's glTexSubImage2D calls left out (a control that must find some)");
-  put("clipmap_texels_uploaded[move]", double(moved) / kMoves,
+  put("clipmap_texels_uploaded[move]", double(moved) / moves,
       "texels glTexSubImage2D sent a move, all levels, mean of the moves (counted from the recorded calls)");
-  put("clipmap_texels_uploaded[predicted]", double(predicted) / kMoves,
+  put("clipmap_texels_uploaded[predicted]", double(predicted) / moves,
       "the same from the equation: the strips that entered each level's window");
   put("clipmap_texels_uploaded[reload]", double(reload), "texels the first load (a reload of every window) sent");
   for (int l = 0; l < kClipLevels; ++l)
@@ -247,7 +247,7 @@ inline void measureClipmap(Renderer& r, Measurements& ms, Detail& d) {
   put("clipmap_saving", double(chainTexels(kVirtual)) / double(clipmapTexels(kVirtual, kClip)), "chain / stack");
   put("clipmap_saving[65536/512]", double(chainTexels(65536)) / double(clipmapTexels(65536, 512)),
       "the same closed form for texture_compression's 65536^2 texture");
-  put("clipmap_moves", kMoves, "moves of the eye");
+  put("clipmap_moves", moves, "moves of the eye");
   put("clipmap_step_x", kStepX, "level-0 texels a move, right");
   put("clipmap_step_y", kStepY, "level-0 texels a move, up");
 }
