@@ -50,10 +50,13 @@
 //
 // What is exact in the clipmap's check: the virtual texture is defined at every level directly (no box filter
 // of 4^l texels), so the reference is that same function sampled on the CPU at the level whose window holds the
-// pixel's centre.  The view's pixel centres fall on texel centres plus halves, never on a texel's or a window's
-// edge, and the stack is GL_NEAREST RGBA8: every pixel must equal its reference texel exactly (tolerance 0).
-// The view is a top-down map of the whole texture at 32 texels a pixel in which each point shows the finest
-// level the stack holds there; a perspective flight would choose among the same levels by distance.
+// point.  From above (a map of the whole texture at 32 texels a pixel, each point showing the finest level the
+// stack holds there) the pixel centres fall on texel centres plus halves, never on a texel's or a window's edge,
+// and the stack is GL_NEAREST RGBA8: every pixel must equal its reference texel exactly (tolerance 0).  In
+// perspective (the eye 200 texels above the ground) the windows, drawn coarsest first, choose the level by
+// distance as Tanner's clipmap does; the CPU casts each pixel's ray to the ground, and every pixel farther than
+// 1/64 pixel from a texel's or window's edge must be exact (GL snaps vertices to 1/256 pixel; the rest, about
+// one pixel in eight, lie on edges where either side is right).
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -114,14 +117,14 @@ class TextureResidency final : public ts::Scene {
         {"texture_clipmap",
          "Texture residency: a working clipmap (seed 001, Tanner)",
          "A 16384^2 procedural texture seen through a stack of six 512^2 levels, each a window centred on the eye, "
-         "updated toroidally by glTexSubImage2D as the eye moves: the view, and each level's storage with the strips "
-         "the last move uploaded.",
+         "updated toroidally by glTexSubImage2D as the eye moves: the view from above and in perspective, and each "
+         "level's storage with the strips the last move uploaded.",
          {"--view", "clipmap"},
          1100,
-         720,
+         840,
          "{clipmap_mismatch_px} pixels differ from the CPU's answer ({clipmap_mismatch_px[stale]} without the last "
-         "update); a move uploads {clipmap_texels_uploaded[move]} texels against {clipmap_texels_uploaded[reload]} "
-         "for a reload."}};
+         "update; {clipmap_flight_mismatch_px} in perspective); a move uploads {clipmap_texels_uploaded[move]} texels "
+         "against {clipmap_texels_uploaded[reload]} for a reload."}};
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override {
@@ -256,8 +259,8 @@ ts::Frame TextureResidency::buildClipmap(ts::Frame& f, const ts::Measurements& m
     return f;
   }
   const float band = L::lineHeight(1) * 4 + 8, key = L::lineHeight(1) * 2 + 8;
-  const float bottom = float(f.height) - 8 - band - key;
-  const float split = std::min(float(f.width) * 0.45f, bottom);
+  const float bottom = float(f.height) - 8 - band - key, middle = 8 + (bottom - 8) * 0.6f;
+  const float split = float(f.width) * 0.36f;
   auto picture = [&](const ts::Image& img, const std::string& id, const std::string& what, const ts::Rect& r,
                      const ts::gl::CallList& calls) {
     ts::TextureDesc t = ts::renderedImageTexture(img, "texture_residency_render", what, "texture_residency");
@@ -265,13 +268,25 @@ ts::Frame TextureResidency::buildClipmap(ts::Frame& f, const ts::Measurements& m
     t.renderedBy = calls;
     f.panels.push_back(L::picturePanel(f, id, r, t));
   };
-  const std::vector<L::Cell> view = L::flow({8, 8, split, bottom}, {1, 1.0f, 1, 1, 8, 1, 0});
+  // Above: the map (left) and the flight (right); below: the six levels' storage.
+  const std::vector<L::Cell> view = L::flow({8, 8, split, middle}, {1, 1.0f, 1, 1, 8, 1, 0});
   picture(d->clipView, "view", "the clipmap's view", view[0].picture, d->clipCalls);
-  L::caption(f, view[0].above, "the view: " + L::given("the virtual texture's side, texels", R::kVirtual, "%.0f") + "^2 at " + L::given("texels a pixel", R::kTexelsPerPixel, "%.0f") +
-                                   " texels a pixel",
+  L::caption(f, view[0].above, "from above: " + L::given("the virtual texture's side, texels", R::kVirtual, "%.0f") +
+                                   "^2 at " + L::given("texels a pixel", R::kTexelsPerPixel, "%.0f") + " texels a pixel",
              L::kWhite, view[0].scale);
   L::caption(f, view[0].below, "each level's window outlined in its colour", L::kWhite, view[0].scale);
-  const std::vector<L::Cell> levels = L::flow({split + 12, 8, float(f.width - 8), bottom}, {R::kClipLevels, 1.0f, 1, 1, 8, 1, 0});
+  const std::vector<L::Cell> flight =
+      L::flow({split + 12, 8, float(f.width - 8), middle}, {1, float(R::kFlightW) / R::kFlightH, 1, 1, 8, 1, 0});
+  picture(d->flight, "flight", "the clipmap in perspective", flight[0].picture, nullptr);
+  L::caption(f, flight[0].above, "the same stack in perspective, the eye " +
+                                     L::given("the eye's height, level-0 texels", R::kFlightHeight, "%.0f") +
+                                     " texels above the ground",
+             L::kWhite, flight[0].scale);
+  L::caption(f, flight[0].below,
+             L::measuredText(m, "{clipmap_flight_mismatch_px|%.0f} pixels off the CPU's rays to the ground; the edges "
+                                "between levels in the finer one's colour"),
+             L::kAmber, flight[0].scale);
+  const std::vector<L::Cell> levels = L::flow({8, middle + 4, float(f.width - 8), bottom}, {R::kClipLevels, 1.0f, 1, 1, 8, 1, 0});
   for (int l = 0; l < R::kClipLevels && l < int(levels.size()); ++l) {
     const L::Cell& c = levels[size_t(l)];
     picture(d->clipLevels[l], "level_" + std::to_string(l), "clip level " + std::to_string(l), c.picture, nullptr);

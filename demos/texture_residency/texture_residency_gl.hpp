@@ -136,6 +136,40 @@ class ClipStack {
       glPopAttrib();
     });
   }
+  // The flight view at eye e, read back (row 0 the top): the windows as ground quads in perspective, coarsest first.
+  Image drawFlight(Renderer& r, const Eye& e) {
+    const Camera c = flightCamera(e);
+    const glm::mat4 p(c.projection), v(c.view);
+    return r.offscreen(kFlightW, kFlightH, "the clipmap's flight", [&](GLuint) {
+      glPushAttrib(GL_ALL_ATTRIB_BITS);
+      glMatrixMode(GL_PROJECTION), glPushMatrix(), glLoadMatrixf(&p[0][0]);
+      glMatrixMode(GL_MODELVIEW), glPushMatrix(), glLoadMatrixf(&v[0][0]);
+      glMatrixMode(GL_TEXTURE), glPushMatrix(), glLoadIdentity();
+      glDisable(GL_DEPTH_TEST), glDisable(GL_BLEND), glDisable(GL_CULL_FACE), glDisable(GL_LIGHTING);
+      glUseProgram(0);
+      glClearColor(0, 0, 0, 1);
+      glClear(GL_COLOR_BUFFER_BIT);
+      glEnable(GL_TEXTURE_2D);
+      glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+      for (int l = kClipLevels - 1; l >= 0; --l) {
+        const Eye w = windowOrigin(e, l);
+        const float s0 = float(mod(w.x, kClip)) / kClip, t0 = float(mod(w.y, kClip)) / kClip;
+        const float x0 = float(w.x) * float(1 << l), y0 = float(w.y) * float(1 << l), side = float(kClip << l);
+        glBindTexture(GL_TEXTURE_2D, tex_[size_t(l)]);
+        glBegin(GL_QUADS);
+        for (int k = 0; k < 4; ++k) {
+          const float a = float(k == 1 || k == 2), b = float(k >= 2);
+          glTexCoord2f(s0 + a, t0 + b);
+          glVertex3f(x0 + a * side, y0 + b * side, 0);
+        }
+        glEnd();
+      }
+      glMatrixMode(GL_TEXTURE), glPopMatrix();
+      glMatrixMode(GL_PROJECTION), glPopMatrix();
+      glMatrixMode(GL_MODELVIEW), glPopMatrix();
+      glPopAttrib();
+    });
+  }
   // Level l's storage as GL holds it (glGetTexImage), row 0 = storage row 0 (t = 0).
   Image storage(int l) {
     Image img(kClip, kClip);

@@ -9,6 +9,9 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "common/core/image.hpp"
 #include "common/core/texture_memory.hpp"
 
@@ -53,7 +56,7 @@ struct Eye {
   int x = 0, y = 0;  // level-0 texels
 };
 // The eye's path: a start and equal steps (level-0 texels a step); the figure shows it after kMoves of them.
-constexpr Eye kEyeStart{5000, 9000};
+constexpr Eye kEyeStart{4100, 8700};  // on a coast: land and water ahead
 constexpr int kMoves = 8, kStepX = 37, kStepY = 21;
 inline Eye eyeAfter(int moves) { return {kEyeStart.x + moves * kStepX, kEyeStart.y + moves * kStepY}; }
 
@@ -169,6 +172,77 @@ inline long long differingPixels(const Image& a, const Image& b) {
   long long n = 0;
   for (int y = 0; y < a.height; ++y)
     for (int x = 0; x < a.width; ++x) n += a.at(x, y) != b.at(x, y);
+  return n;
+}
+
+// ---- the flight: the same stack seen in perspective ---------------------------------------------------------------
+// An eye kFlightHeight level-0 texels above the ground at the clipmap's eye, looking ahead (+y) and down.  The
+// windows drawn coarsest first as ground quads: the ground at distance r from the eye is shown by the finest
+// window that reaches r, whose texels, 2^l level-0 texels wide, cover about as much of the screen there as level 0
+// does near the eye: Tanner's choice of level by distance, made by the windows' sizes.
+constexpr int kFlightW = 640, kFlightH = 320;
+constexpr double kFlightHeight = 200, kFlightAhead = 500, kFlightFovYDeg = 60, kFlightFar = 40000;
+struct Camera {
+  glm::dmat4 projection, view;
+};
+inline Camera flightCamera(const Eye& e) {
+  const glm::dvec3 eye(e.x + 0.5, e.y + 0.5, kFlightHeight), at(e.x + 0.5, e.y + 0.5 + kFlightAhead, 0);
+  return {glm::perspective(glm::radians(kFlightFovYDeg), double(kFlightW) / kFlightH, 1.0, kFlightFar),
+          glm::lookAt(eye, at, glm::dvec3(0, 0, 1))};
+}
+// What the stack shows at the point (px + dx, py + dy) of the flight view (py up from the bottom): the level and
+// texel of the ground point there, or level -1 where the ray misses the windows (the sky, black).
+struct Sample {
+  int level = -1, i = 0, j = 0;
+  bool operator==(const Sample& o) const { return level == o.level && i == o.i && j == o.j; }
+};
+inline Sample flightSample(const Eye& e, const Camera& c, double x, double y) {
+  const glm::dmat4 inv = glm::inverse(c.projection * c.view);
+  const double nx = 2 * x / kFlightW - 1, ny = 2 * y / kFlightH - 1;
+  glm::dvec4 a = inv * glm::dvec4(nx, ny, -1, 1), b = inv * glm::dvec4(nx, ny, 1, 1);
+  a /= a.w, b /= b.w;
+  if (b.z >= a.z) return {};
+  const double t = a.z / (a.z - b.z);
+  if (t > 1) return {};
+  const double gx = a.x + t * (b.x - a.x), gy = a.y + t * (b.y - a.y);
+  for (int l = 0; l < kClipLevels; ++l) {
+    const Eye w = windowOrigin(e, l);
+    const double s = double(1 << l);
+    if (gx >= w.x * s && gx < (w.x + kClip) * s && gy >= w.y * s && gy < (w.y + kClip) * s)
+      return {l, int(std::floor(gx / s)), int(std::floor(gy / s))};
+  }
+  return {};
+}
+// The flight view the stack must give (row 0 the top); `ambiguous` marks the pixels whose centre lies within
+// 1/64 pixel of a texel's or a window's edge (a corner of the square of half-side 1/64 around the centre samples
+// otherwise: any edge through the square's inscribed circle separates a corner from the centre).  GL snaps the
+// projected vertices to 1/256 pixel (llvmpipe, softpipe) and interpolates in float, so it may take either side
+// there; those pixels are not held to one texel, every other must be exact.
+inline Image referenceFlight(const Eye& e, std::vector<char>* ambiguous, std::vector<int>* levels = nullptr) {
+  const Camera c = flightCamera(e);
+  Image img(kFlightW, kFlightH, Rgba{0, 0, 0, 255});
+  ambiguous->assign(size_t(kFlightW) * kFlightH, 0);
+  if (levels) levels->assign(size_t(kFlightW) * kFlightH, -1);
+  constexpr double d = 1.0 / 64;
+  for (int py = 0; py < kFlightH; ++py)
+    for (int px = 0; px < kFlightW; ++px) {
+      const double x = px + 0.5, y = py + 0.5;
+      const Sample s = flightSample(e, c, x, y);
+      bool same = true;
+      for (const auto& o : {glm::dvec2(-d, -d), glm::dvec2(d, -d), glm::dvec2(-d, d), glm::dvec2(d, d)})
+        same = same && flightSample(e, c, x + o.x, y + o.y) == s;
+      const size_t at = size_t(kFlightH - 1 - py) * kFlightW + size_t(px);
+      (*ambiguous)[at] = !same;
+      if (levels) (*levels)[at] = s.level;
+      if (s.level >= 0) img.set(px, kFlightH - 1 - py, virtualTexel(s.level, s.i, s.j));
+    }
+  return img;
+}
+// Pixels that differ, outside the ambiguous ones.
+inline long long differingPixels(const Image& a, const Image& b, const std::vector<char>& skip) {
+  long long n = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) n += !skip[size_t(y) * size_t(a.width) + size_t(x)] && a.at(x, y) != b.at(x, y);
   return n;
 }
 }  // namespace ts::residency

@@ -6,7 +6,8 @@
 // the pixel grid; the claim allows a 64^2 texel (the panel's width / 64).  residency: the level is decoded from an
 // 8-bit blend of two level colours at least 100 levels apart in some channel (1/100 of a level each rounding),
 // and llvmpipe computes lambda with an approximate log2 (measured 0.02 level below log2 d here): 1/16 of a level.
-// clipmap: GL_NEAREST from RGBA8 textures with no pixel centre on a texel edge: 0.
+// clipmap: GL_NEAREST from RGBA8 textures with no pixel centre on a texel edge: 0; in perspective, 0 outside
+// the pixels within 1/64 pixel of a texel's or window's edge (texture_residency_math.hpp, referenceFlight).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -134,6 +135,24 @@ TEST(TextureResidency, TheClipmapShowsTheVirtualTextureExactly) {
       EXPECT_GT(wrongShifted, 0);
     }
   }
+}
+
+// The same stack in perspective: every pixel not within 1/64 pixel of an edge is the texel the CPU's ray to the
+// ground finds at the level whose window holds the ground point; against the eye one move back, many are not.
+TEST(TextureResidency, TheClipmapInPerspectiveShowsTheVirtualTexture) {
+  Demo d("texture_residency", {"--view", "clipmap"});
+  const ts::Measurements m = d.measure();
+  const R::Detail* detail = m.detailAs<R::Detail>();
+  ASSERT_NE(detail, nullptr);
+  std::vector<char> ambiguous, ambiguousBefore;
+  const ts::Image want = R::referenceFlight(R::eyeAfter(R::kMoves), &ambiguous);
+  const ts::Image before = R::referenceFlight(R::eyeAfter(R::kMoves - 1), &ambiguousBefore);
+  long long held = 0;
+  for (char a : ambiguous) held += !a;
+  EXPECT_GT(held, (long long)R::kFlightW * R::kFlightH / 2) << "most pixels are held to one texel";
+  EXPECT_EQ(R::differingPixels(detail->flightRaw, want, ambiguous), 0);
+  EXPECT_GT(R::differingPixels(detail->flightRaw, before, ambiguous), held / 10);
+  EXPECT_EQ(value(m, "clipmap_flight_mismatch_px"), 0);
 }
 
 // The texels uploaded a move are the strips that entered the windows (the equation), far fewer than a reload.

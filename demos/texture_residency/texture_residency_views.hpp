@@ -25,6 +25,7 @@ struct Detail {
   gl::CallList sizeCalls;
   Image clipView, clipLevels[kClipLevels];  // the figure's: windows outlined, the last move's strips whitened
   Image clipViewRaw, clipStorage[kClipLevels];  // as GL drew and holds them (the tests probe these)
+  Image flight, flightRaw;  // the same stack in perspective (row 0 the top): outlined for the figure, and as GL drew it
   gl::CallList clipCalls;
 };
 
@@ -157,6 +158,20 @@ inline Image outlinedView(Image img, const Eye& e) {
   }
   return img;
 }
+// The flight view with the edges between levels drawn in the finer level's colour (row 0 the top).
+inline Image outlinedFlight(Image img, const std::vector<int>& levels) {
+  const int w = img.width, h = img.height;
+  for (int y = 0; y + 1 < h; ++y)
+    for (int x = 0; x + 1 < w; ++x) {
+      const int a = levels[size_t(y) * w + x], b = levels[size_t(y) * w + x + 1], c = levels[size_t(y + 1) * w + x];
+      if (a < 0 || (a == b && a == c)) continue;
+      int finer = a;
+      for (int o : {b, c})
+        if (o >= 0) finer = std::min(finer, o);
+      img.set(x, y, mipLevelColour(finer));
+    }
+  return img;
+}
 // Level l's storage halved (row 0 the top, t up), the last move's pieces whitened (at least 2 pixels wide, so
 // a strip of one texel shows) and the seam (where the window's first texel is stored) black.
 inline Image stackPicture(const Image& storage, const std::vector<Piece>& pieces, const Eye& origin) {
@@ -208,6 +223,7 @@ inline void measureClipmap(Renderer& r, Measurements& ms, Detail& d, int moves =
       for (long long t : uploadedTexels({rec.calls().begin() + long(before), rec.calls().end()})) moved += t;
     }
     view = stack.draw(r, end);
+    d.flight = stack.drawFlight(r, end);
     for (int l = 0; l < kClipLevels; ++l) {
       d.clipStorage[l] = stack.storage(l);
       d.clipLevels[l] = stackPicture(d.clipStorage[l], lastPieces[l], windowOrigin(end, l));
@@ -233,6 +249,17 @@ inline void measureClipmap(Renderer& r, Measurements& ms, Detail& d, int moves =
       "CPU at the level and texel the stack selects there");
   put("clipmap_mismatch_px[stale]", double(differingPixels(stale, want)),
       "the same with the last move's glTexSubImage2D calls left out (a control that must find some)");
+  std::vector<char> ambiguous;
+  std::vector<int> flightLevels;
+  const Image flightWant = referenceFlight(end, &ambiguous, &flightLevels);
+  long long nAmbiguous = 0;
+  for (char a : ambiguous) nAmbiguous += a;
+  put("clipmap_flight_mismatch_px", double(differingPixels(d.flight, flightWant, ambiguous)),
+      "pixels of the perspective view (GL) that differ from the CPU's ray to the ground, sampled at the level whose "
+      "window holds the ground point, leaving out the ambiguous ones");
+  d.flightRaw = d.flight, d.flight = outlinedFlight(d.flight, flightLevels);
+  put("clipmap_flight_ambiguous_px", double(nAmbiguous),
+      "pixels of the perspective view within 1/64 pixel of a texel's or window's edge (not held to one texel)");
   put("clipmap_texels_uploaded[move]", double(moved) / moves,
       "texels glTexSubImage2D sent a move, all levels, mean of the moves (counted from the recorded calls)");
   put("clipmap_texels_uploaded[predicted]", double(predicted) / moves,
