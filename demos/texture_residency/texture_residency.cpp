@@ -301,11 +301,18 @@ ts::Frame TextureResidency::buildClipmap(ts::Frame& f, const ts::Measurements& m
   for (int l = 0; l < R::kClipLevels; ++l) legend.push_back({R::levelColour(l), "level " + std::to_string(l) + "'s window"});
   legend.push_back({R::kExposedColour, "uploaded by the last move (whitened)"});
   legend.push_back({R::kSeamColour, "the toroidal seam: the window's first row and column"});
+  legend.push_back({{R::kSky.r / 255.0f, R::kSky.g / 255.0f, R::kSky.b / 255.0f, 1.0f}, "beyond every window"});
   L::legend(f, {8, bottom + 8, float(f.width - 8), bottom + 8 + key}, legend, 1);
   L::Column notes(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)});
   notes.add(L::measuredText(m, "Pixels off the procedural texture sampled on the CPU at the stack's level: "
                                "{clipmap_mismatch_px|%.0f} (tolerance 0, GL_NEAREST); with the last move's uploads left "
                                "out: {clipmap_mismatch_px[stale]|%.0f}."),
+            L::kAmber, 1);
+  notes.add(L::measuredText(m, "In perspective: {clipmap_flight_mismatch_px|%.0f} pixels off the CPU's rays, of those "
+                               "farther than 1/") +
+                L::given("the edge margin, 1/n pixel", R::kEdgeMarginInv, "%.0f") +
+                L::measuredText(m, " pixel from a texel's or window's edge; {clipmap_flight_ambiguous_px|%.0f} nearer, "
+                                   "where either side is right."),
             L::kAmber, 1);
   notes.add(L::measuredText(m, "glTexSubImage2D texels a move ({clipmap_step_x|%.0f}, {clipmap_step_y|%.0f} level-0 "
                                "texels): {clipmap_texels_uploaded[move]|%.0f} (the equation: "

@@ -147,7 +147,7 @@ class ClipStack {
       glMatrixMode(GL_TEXTURE), glPushMatrix(), glLoadIdentity();
       glDisable(GL_DEPTH_TEST), glDisable(GL_BLEND), glDisable(GL_CULL_FACE), glDisable(GL_LIGHTING);
       glUseProgram(0);
-      glClearColor(0, 0, 0, 1);
+      glClearColor(kSky.r / 255.0f, kSky.g / 255.0f, kSky.b / 255.0f, 1);
       glClear(GL_COLOR_BUFFER_BIT);
       glEnable(GL_TEXTURE_2D);
       glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);

@@ -182,6 +182,8 @@ inline long long differingPixels(const Image& a, const Image& b) {
 // does near the eye: Tanner's choice of level by distance, made by the windows' sizes.
 constexpr int kFlightW = 640, kFlightH = 320;
 constexpr double kFlightHeight = 200, kFlightAhead = 500, kFlightFovYDeg = 60, kFlightFar = 40000;
+inline const Rgba kSky{24, 24, 48, 255};
+constexpr int kEdgeMarginInv = 64;  // pixels within 1/64 pixel of an edge are not held to one texel (referenceFlight)  // the flight's clear colour: beyond every window
 struct Camera {
   glm::dmat4 projection, view;
 };
@@ -191,7 +193,7 @@ inline Camera flightCamera(const Eye& e) {
           glm::lookAt(eye, at, glm::dvec3(0, 0, 1))};
 }
 // What the stack shows at the point (px + dx, py + dy) of the flight view (py up from the bottom): the level and
-// texel of the ground point there, or level -1 where the ray misses the windows (the sky, black).
+// texel of the ground point there, or level -1 where the ray misses the windows (the sky, kSky).
 struct Sample {
   int level = -1, i = 0, j = 0;
   bool operator==(const Sample& o) const { return level == o.level && i == o.i && j == o.j; }
@@ -220,10 +222,10 @@ inline Sample flightSample(const Eye& e, const Camera& c, double x, double y) {
 // there; those pixels are not held to one texel, every other must be exact.
 inline Image referenceFlight(const Eye& e, std::vector<char>* ambiguous, std::vector<int>* levels = nullptr) {
   const Camera c = flightCamera(e);
-  Image img(kFlightW, kFlightH, Rgba{0, 0, 0, 255});
+  Image img(kFlightW, kFlightH, kSky);
   ambiguous->assign(size_t(kFlightW) * kFlightH, 0);
   if (levels) levels->assign(size_t(kFlightW) * kFlightH, -1);
-  constexpr double d = 1.0 / 64;
+  constexpr double d = 1.0 / kEdgeMarginInv;
   for (int py = 0; py < kFlightH; ++py)
     for (int px = 0; px < kFlightW; ++px) {
       const double x = px + 0.5, y = py + 0.5;
