@@ -1,18 +1,19 @@
-// Texture residency (seed 001 ¶7 and ¶19-21, Buss VI.1.3): how big a texture may be, which of its mip levels a
+// Texture residency (seed 001 ¶7-8 and ¶19-21, Buss VI.1.3): how big a texture may be, which of its mip levels a
 // surface actually needs at a distance, and a clipmap that holds only the part of a huge texture the eye sees.
 //
 // The claims, one view each (key v, flag --view):
 //   sizes      The implicit corresponder (seed 001 ¶7): a vertex's (s, t) in [0, 1] does not depend on the
 //              texture's resolution; the texel coordinates (u, v) = (s w, t h) do.  The same (s, t) lands on
 //              the same place of the surface at 64^2, 256^2 and 1024^2 (measured: the marker's position, in
-//              pixels, within a 64^2 texel), while (u, v) grows with the size.  How big may w be?  The card
-//              says GL_MAX_TEXTURE_SIZE, and a proxy texture answers for one size: a size that does not fit
+//              pixels, within a 64^2 texel), while (u, v) grows with the size.  How big may w be?  Seed 001
+//              ¶8: 2^m x 2^n texels, under a limit each card sets; GL says GL_MAX_TEXTURE_SIZE, and a proxy texture answers for one size: a size that does not fit
 //              gets GL_TEXTURE_WIDTH 0, and the program halves it until it fits.  Where it settles is the
 //              backend's: llvmpipe takes GL_MAX_TEXTURE_SIZE^2 (16384^2 here), softpipe refuses that (1 GiB of
 //              RGBA8) and takes half; so the figure prints neither, the sidecar both.
-//   residency  Buss VI.1.3: "the textures further away are seen at lower resolution, so only the
+//   residency  Buss VI.1.3 (in translation): "the textures further away are seen at lower resolution, so only the
 //              lower-resolution mipmap versions of them need be kept in the more accessible memory (the cache,
-//              the graphics chip): memory is used better by keeping only the mipmap versions needed".  A unit
+//              the graphics chip): memory is used better by keeping only the mipmap versions needed"; seed
+//              001 ¶19: a polygon far from the eye needs only part of its texture loaded.  A unit
 //              quad facing the eye at distance d, with a level-colour texture (each level one flat colour) and
 //              GL_LINEAR_MIPMAP_LINEAR: the colour read back says which two levels GL blended, and the memory of
 //              the levels from the finest read to the 1x1 against the whole chain is what must be resident.
