@@ -6,8 +6,9 @@
 //              texture's resolution; the texel coordinates (u, v) = (s w, t h) do.  The same (s, t) lands on
 //              the same place of the surface at 64^2, 256^2 and 1024^2 (measured: the marker's position, in
 //              pixels, within a 64^2 texel), while (u, v) grows with the size.  How big may w be?  Seed 001
-//              ¶8: 2^m x 2^n texels, under a limit each card sets; GL says GL_MAX_TEXTURE_SIZE, and a proxy texture answers for one size: a size that does not fit
-//              gets GL_TEXTURE_WIDTH 0, and the program halves it until it fits.  Where it settles is the
+//              ¶8: 2^m x 2^n texels, under a limit each card sets; GL says GL_MAX_TEXTURE_SIZE, and a proxy
+//              texture answers for one size: a size that does not fit gets GL_TEXTURE_WIDTH 0, and the
+//              program halves it until it fits.  Where it settles is the
 //              backend's: llvmpipe takes GL_MAX_TEXTURE_SIZE^2 (16384^2 here), softpipe refuses that (1 GiB of
 //              RGBA8) and takes half; so the figure prints neither, the sidecar both.
 //   residency  Buss VI.1.3 (in translation): "the textures further away are seen at lower resolution, so only the
