@@ -33,7 +33,7 @@
 //   u = s w, v = t h                                            (the corresponder; marker at s, t = 41/64, 21/64)
 //   rho = d texels a pixel, lambda = log2 d                     (the unit quad at d: 256 / d pixels of a 256^2 texture)
 //   GL_LINEAR_MIPMAP_LINEAR reads levels floor(lambda), floor(lambda) + 1, weight frac(lambda) of the second
-//   resident(k) = sum_{j >= k} (256 / 2^j)^2 / sum_{j >= 0} (256 / 2^j)^2       (about 4^-k; the chain is 4/3 of level 0)
+//   resident(k) = sum_{j >= k} (256 / 2^j)^2 / sum_{j >= 0} (256 / 2^j)^2  (about 4^-k; the chain: 4/3 of level 0)
 //   window_l(eye) = floor(eye / 2^l) - 256 .. + 512 level-l texels;  texel i of level l stored at i mod 512
 //   texels a move = sum_l 512 |dx_l| + (512 - |dx_l|) |dy_l|,  dx_l = the window's move at level l
 //   stack = sum_l min(16384 / 2^l, 512)^2 texels  (common/core/texture_memory.hpp's clipmapTexels)
@@ -171,7 +171,8 @@ ts::Frame TextureResidency::buildSizes(ts::Frame& f, const ts::Measurements& m) 
   const std::vector<L::Cell> cells = L::flow({8, 8, float(f.width - 8), float(f.height) - 8 - band - key}, spec);
   const ts::Rgba mc = R::kMarkerColour;
   L::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band},
-            {{{mc.r / 255.0f, mc.g / 255.0f, mc.b / 255.0f, 1.0f}, "the marker: the same (s, t) square at every size"}}, 1);
+            {{{mc.r / 255.0f, mc.g / 255.0f, mc.b / 255.0f, 1.0f}, "the marker: the same (s, t) square at every size"}},
+            1);
   for (size_t k = 0; k < cells.size(); ++k) {
     const int size = R::kSizes[k];
     const std::string key = "[" + std::to_string(size) + "]";
@@ -181,8 +182,9 @@ ts::Frame TextureResidency::buildSizes(ts::Frame& f, const ts::Measurements& m) 
     f.panels.push_back(R::sizePanel(f, "size_" + std::to_string(size), L::centred(cells[k].picture, side, side), size));
     // The size queries' calls go into the listing with the first panel's texture.
     if (k == 0 && d) f.textures[size_t(f.panels.back().batches[0].texture)].renderedBy = d->sizeCalls;
-    L::caption(f, cells[k].above, L::given("texture side, texels", size, "%.0f") + " x " +
-                                      L::given("texture side, texels", size, "%.0f") + " texels",
+    L::caption(f, cells[k].above,
+               L::given("texture side, texels", size, "%.0f") + " x " + L::given("texture side, texels", size, "%.0f") +
+                   " texels",
                L::kWhite, cells[k].scale);
     L::phrases(f, cells[k].below,
                {"(s, t) = (" + L::given("the marker's s", R::kMarkerS, "%.4f") + ", " +
@@ -194,15 +196,17 @@ ts::Frame TextureResidency::buildSizes(ts::Frame& f, const ts::Measurements& m) 
                L::kAmber, cells[k].scale);
   }
   L::Column notes(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)});
-  notes.add(L::measuredText(m, "The same (s, t) at every size: the marker lies at most {marker_offset_px[1024]|%.1f} px "
-                               "from its 64^2 place (a 64^2 texel is ") +
+  notes.add(L::measuredText(m,
+                            "The same (s, t) at every size: the marker lies at most {marker_offset_px[1024]|%.1f} px "
+                            "from its 64^2 place (a 64^2 texel is ") +
                 L::given("pixels a 64^2 texel covers in the 256 px render", R::kSizePanelPx / 64.0, "%.0f") +
                 " px); (u, v) = (s w, t h) grows with the size.",
             L::kAmber, 1);
-  notes.add(L::measuredText(m, "glTexImage2D(GL_PROXY_TEXTURE_2D, ...) of 1024^2: GL_TEXTURE_WIDTH {proxy_width[1024]|%.0f}; "
-                               "of twice GL_MAX_TEXTURE_SIZE: {proxy_width[2max]|%.0f}, so the program halves it until "
-                               "it fits."),
-            L::kAmber, 1);
+  notes.add(
+      L::measuredText(m, "glTexImage2D(GL_PROXY_TEXTURE_2D, ...) of 1024^2: GL_TEXTURE_WIDTH {proxy_width[1024]|%.0f}; "
+                         "of twice GL_MAX_TEXTURE_SIZE: {proxy_width[2max]|%.0f}, so the program halves it until "
+                         "it fits."),
+      L::kAmber, 1);
   notes.add("GL_MAX_TEXTURE_SIZE and the size that fits are the backend's own (sidecar: max_texture_size, "
             "proxy_settled_size).",
             L::kWhite, 1);
@@ -222,7 +226,8 @@ ts::Frame TextureResidency::buildResidency(ts::Frame& f, const ts::Measurements&
     const std::string n = "[" + R::distanceKey(d) + "]";
     // The measured panel's size (192 px) when the cell has room: then the picture is the measurement's.
     const int side = std::min({R::kDistancePanelPx, cells[k].picture.w, cells[k].picture.h});
-    f.panels.push_back(R::distancePanel("distance_" + std::to_string(k), L::centred(cells[k].picture, side, side), tex, d));
+    f.panels.push_back(
+        R::distancePanel("distance_" + std::to_string(k), L::centred(cells[k].picture, side, side), tex, d));
     const auto [top, second] = L::halves(cells[k].above);
     L::caption(f, top, "d = " + L::given("distance", d, "%.1f"), L::kWhite, cells[k].scale);
     L::caption(f, second, "lambda = log2 d = " + L::given("lambda = log2 d", R::lambdaAt(d), "%.2f"), L::kWhite,
@@ -240,10 +245,11 @@ ts::Frame TextureResidency::buildResidency(ts::Frame& f, const ts::Measurements&
   for (const ts::Measurement& x : m)
     if (x.name == "resident_fraction[24]") far = &x;
   L::Column notes(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)});
-  notes.add("Levels k + (k + 1), f: GL_LINEAR_MIPMAP_LINEAR's two levels and the second's weight, decoded from the colour; "
-            "resident = the levels from the finest read down to the 1x1, over the whole chain (" +
-                L::measuredText(m, "{chain_over_level0|%.3f}") + " of level 0).",
-            L::kWhite, 1);
+  notes.add(
+      "Levels k + (k + 1), f: GL_LINEAR_MIPMAP_LINEAR's two levels and the second's weight, decoded from the colour; "
+      "resident = the levels from the finest read down to the 1x1, over the whole chain (" +
+          L::measuredText(m, "{chain_over_level0|%.3f}") + " of level 0).",
+      L::kWhite, 1);
   notes.add(std::string("Buss VI.1.3: a distant texture needs only its lower-resolution levels in fast memory.  ") +
                 (far && far->value < 0.01 ? "Measured: it holds, " : "Measured: ") +
                 "at d = " + L::given("distance", R::kDistances.back(), "%.0f") +
@@ -273,42 +279,47 @@ ts::Frame TextureResidency::buildClipmap(ts::Frame& f, const ts::Measurements& m
   // Above: the map (left) and the flight (right); below: the six levels' storage.
   const std::vector<L::Cell> view = L::flow({8, 8, split, middle}, {1, 1.0f, 1, 1, 8, 1, 0});
   picture(d->clipView, "view", "the clipmap's view", view[0].picture, d->clipCalls);
-  L::caption(f, view[0].above, "from above: " + L::given("the virtual texture's side, texels", R::kVirtual, "%.0f") +
-                                   "^2 at " + L::given("texels a pixel", R::kTexelsPerPixel, "%.0f") + " texels a pixel",
+  L::caption(f, view[0].above,
+             "from above: " + L::given("the virtual texture's side, texels", R::kVirtual, "%.0f") + "^2 at " +
+                 L::given("texels a pixel", R::kTexelsPerPixel, "%.0f") + " texels a pixel",
              L::kWhite, view[0].scale);
   L::caption(f, view[0].below, "each level's window outlined in its colour", L::kWhite, view[0].scale);
-  const std::vector<L::Cell> flight =
-      L::flow({split + 12, 8, float(f.width - 8), middle}, {1, float(R::kFlightW) / R::kFlightH, 1, 1, 8, 1, 0});
+  const std::vector<L::Cell> flight = L::flow({split + 12, 8, float(f.width - 8), middle},
+                                              {1, float(R::kFlightW) / R::kFlightH, 1, 1, 8, 1, 0});
   picture(d->flight, "flight", "the clipmap in perspective", flight[0].picture, nullptr);
-  L::caption(f, flight[0].above, "the same stack in perspective, the eye " +
-                                     L::given("the eye's height, level-0 texels", R::kFlightHeight, "%.0f") +
-                                     " texels above the ground",
+  L::caption(f, flight[0].above,
+             "the same stack in perspective, the eye " +
+                 L::given("the eye's height, level-0 texels", R::kFlightHeight, "%.0f") + " texels above the ground",
              L::kWhite, flight[0].scale);
   L::caption(f, flight[0].below,
              L::measuredText(m, "{clipmap_flight_mismatch_px|%.0f} pixels off the CPU's rays to the ground; the edges "
                                 "between levels in the finer one's colour"),
              L::kAmber, flight[0].scale);
-  const std::vector<L::Cell> levels = L::flow({8, middle + 4, float(f.width - 8), bottom}, {R::kClipLevels, 1.0f, 1, 1, 8, 1, 0});
+  const std::vector<L::Cell> levels = L::flow({8, middle + 4, float(f.width - 8), bottom},
+                                              {R::kClipLevels, 1.0f, 1, 1, 8, 1, 0});
   for (int l = 0; l < R::kClipLevels && l < int(levels.size()); ++l) {
     const L::Cell& c = levels[size_t(l)];
     picture(d->clipLevels[l], "level_" + std::to_string(l), "clip level " + std::to_string(l), c.picture, nullptr);
-    L::caption(f, c.above, "level " + L::given("level", l, "%.0f") + ", of " +
-                               L::given("level side", R::kVirtual >> l, "%.0f") + "^2",
+    L::caption(f, c.above,
+               "level " + L::given("level", l, "%.0f") + ", of " + L::given("level side", R::kVirtual >> l, "%.0f") +
+                   "^2",
                L::kWhite, c.scale);
     L::caption(f, c.below,
                L::measuredText(m, "last move: {clipmap_level_texels_uploaded[" + std::to_string(l) + "]|%.0f} texels"),
                L::kAmber, c.scale);
   }
   std::vector<ts::LegendEntry> legend;
-  for (int l = 0; l < R::kClipLevels; ++l) legend.push_back({R::levelColour(l), "level " + std::to_string(l) + "'s window"});
+  for (int l = 0; l < R::kClipLevels; ++l)
+    legend.push_back({R::levelColour(l), "level " + std::to_string(l) + "'s window"});
   legend.push_back({R::kExposedColour, "uploaded by the last move (whitened)"});
   legend.push_back({R::kSeamColour, "the toroidal seam: the window's first row and column"});
   legend.push_back({{R::kSky.r / 255.0f, R::kSky.g / 255.0f, R::kSky.b / 255.0f, 1.0f}, "beyond every window"});
   L::legend(f, {8, bottom + 8, float(f.width - 8), bottom + 8 + key}, legend, 1);
   L::Column notes(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)});
-  notes.add(L::measuredText(m, "Pixels off the procedural texture sampled on the CPU at the stack's level: "
-                               "{clipmap_mismatch_px|%.0f} (tolerance 0, GL_NEAREST); with the last move's uploads left "
-                               "out: {clipmap_mismatch_px[stale]|%.0f}."),
+  notes.add(L::measuredText(m,
+                            "Pixels off the procedural texture sampled on the CPU at the stack's level: "
+                            "{clipmap_mismatch_px|%.0f} (tolerance 0, GL_NEAREST); with the last move's uploads left "
+                            "out: {clipmap_mismatch_px[stale]|%.0f}."),
             L::kAmber, 1);
   notes.add(L::measuredText(m, "In perspective: {clipmap_flight_mismatch_px|%.0f} pixels off the CPU's rays, of those "
                                "farther than 1/") +

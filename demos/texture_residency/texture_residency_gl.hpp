@@ -24,12 +24,12 @@ inline int proxyWidth(int size) {
   return int(w);
 }
 struct SizeRules {
-  int maxSize = 0;          // GL_MAX_TEXTURE_SIZE: this backend's
-  int fitsWidth = 0;        // the proxy's width for 1024^2 (fits: 1024)
-  int tooBigWidth = -1;     // the proxy's width for (2 max)^2 (does not fit: 0)
-  int halvings = 0;         // how often the program halved (2 max) until the proxy said it fits
-  int settled = 0;          // the size it settled on
-  int settledWidth = 0;     // the proxy's width for it (= settled)
+  int maxSize = 0;       // GL_MAX_TEXTURE_SIZE: this backend's
+  int fitsWidth = 0;     // the proxy's width for 1024^2 (fits: 1024)
+  int tooBigWidth = -1;  // the proxy's width for (2 max)^2 (does not fit: 0)
+  int halvings = 0;      // how often the program halved (2 max) until the proxy said it fits
+  int settled = 0;       // the size it settled on
+  int settledWidth = 0;  // the proxy's width for it (= settled)
   gl::CallList calls;
 };
 inline SizeRules querySizes() {

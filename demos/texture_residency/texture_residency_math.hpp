@@ -29,10 +29,10 @@ inline bool inMarker(int size, int i, int j) {
 inline const Rgba kMarkerColour{250, 40, 40, 255};
 
 // ---- residency by distance (view residency) --------------------------------------------------------------------
-constexpr int kLevelTexels = 256, kLevels = 9;                // the level-colour texture: 256^2, levels 0..8
+constexpr int kLevelTexels = 256, kLevels = 9;  // the level-colour texture: 256^2, levels 0..8
 constexpr std::array<double, 5> kDistances = {1.5, 3, 6, 12, 24};
-constexpr int kDistancePanelPx = 192;                          // each distance's panel, square
-constexpr double kTanHalfFov = 0.375;                          // so the unit quad at d = 1 is 256 px: 1 texel a pixel
+constexpr int kDistancePanelPx = 192;  // each distance's panel, square
+constexpr double kTanHalfFov = 0.375;  // so the unit quad at d = 1 is 256 px: 1 texel a pixel
 // The quad (side 1 at distance d, facing) spans 192 / (2 d 0.375) = 256 / d pixels: rho = d texels a pixel.
 inline double quadPixels(double d) { return kDistancePanelPx / (2 * d * kTanHalfFov); }
 inline double lambdaAt(double d) { return std::log2(kLevelTexels / quadPixels(d)); }
@@ -47,10 +47,10 @@ inline double residentFraction(int finest, int size = kLevelTexels) {
 }
 
 // ---- the clipmap (view clipmap) ---------------------------------------------------------------------------------
-constexpr int kVirtual = 16384;   // the virtual texture: 16384^2 texels at level 0, periodic
-constexpr int kClip = 512;        // each clipped level's texture: 512^2, toroidal
-constexpr int kClipLevels = 6;    // levels 0..5 are clipped (16384 >> 5 = 512: level 5 is whole)
-constexpr int kViewPx = 512;      // the view: 512^2 pixels over the whole 16384^2, centred on the eye
+constexpr int kVirtual = 16384;  // the virtual texture: 16384^2 texels at level 0, periodic
+constexpr int kClip = 512;       // each clipped level's texture: 512^2, toroidal
+constexpr int kClipLevels = 6;   // levels 0..5 are clipped (16384 >> 5 = 512: level 5 is whole)
+constexpr int kViewPx = 512;     // the view: 512^2 pixels over the whole 16384^2, centred on the eye
 constexpr int kTexelsPerPixel = kVirtual / kViewPx;  // 32
 struct Eye {
   int x = 0, y = 0;  // level-0 texels
@@ -63,7 +63,9 @@ inline Eye eyeAfter(int moves) { return {kEyeStart.x + moves * kStepX, kEyeStart
 inline int floorDiv(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 inline int mod(int a, int b) { return ((a % b) + b) % b; }
 // Level l's window: level-l texels [origin, origin + 512) in x and y, centred on the eye.
-inline Eye windowOrigin(const Eye& e, int l) { return {floorDiv(e.x, 1 << l) - kClip / 2, floorDiv(e.y, 1 << l) - kClip / 2}; }
+inline Eye windowOrigin(const Eye& e, int l) {
+  return {floorDiv(e.x, 1 << l) - kClip / 2, floorDiv(e.y, 1 << l) - kClip / 2};
+}
 
 namespace detail {
 inline uint32_t hash3(uint32_t a, uint32_t b, uint32_t c) {
@@ -80,7 +82,7 @@ inline Rgba virtualTexel(int l, int i, int j) {
   const int period = kVirtual >> l;
   i = mod(i, period), j = mod(j, period);
   const int64_t x2 = int64_t(2 * i + 1) << l, y2 = int64_t(2 * j + 1) << l;  // doubled level-0 coordinates
-  constexpr int64_t kCell = 2048, kLattice = 16;                          // 1024 texels, doubled
+  constexpr int64_t kCell = 2048, kLattice = 16;                             // 1024 texels, doubled
   const int64_t cx = x2 / kCell, cy = y2 / kCell, fx = x2 % kCell, fy = y2 % kCell;
   auto h = [](int64_t a, int64_t b) {
     return int64_t(detail::hash3(uint32_t(a % kLattice), uint32_t(b % kLattice), 7u) & 255u);
@@ -109,7 +111,8 @@ inline std::vector<TexelRect> exposed(const Eye& from, const Eye& to, int l) {
   if (std::abs(dx) >= kClip || std::abs(dy) >= kClip) return {{b.x, b.y, kClip, kClip}};
   std::vector<TexelRect> out;
   if (dx != 0) out.push_back({dx > 0 ? a.x + kClip : b.x, b.y, std::abs(dx), kClip});
-  if (dy != 0) out.push_back({dx > 0 ? b.x : b.x + std::abs(dx), dy > 0 ? a.y + kClip : b.y, kClip - std::abs(dx), std::abs(dy)});
+  if (dy != 0)
+    out.push_back({dx > 0 ? b.x : b.x + std::abs(dx), dy > 0 ? a.y + kClip : b.y, kClip - std::abs(dx), std::abs(dy)});
   return out;
 }
 // The texels a move uploads over the whole stack (the equation the recorded calls are held to).
@@ -182,8 +185,8 @@ inline long long differingPixels(const Image& a, const Image& b) {
 // does near the eye: Tanner's choice of level by distance, made by the windows' sizes.
 constexpr int kFlightW = 640, kFlightH = 320;
 constexpr double kFlightHeight = 200, kFlightAhead = 500, kFlightFovYDeg = 60, kFlightFar = 40000;
-inline const Rgba kSky{24, 24, 48, 255};
-constexpr int kEdgeMarginInv = 64;  // pixels within 1/64 pixel of an edge are not held to one texel (referenceFlight)  // the flight's clear colour: beyond every window
+inline const Rgba kSky{24, 24, 48, 255};  // the flight's clear colour: beyond every window
+constexpr int kEdgeMarginInv = 64;        // pixels within 1/64 pixel of an edge are not held to one texel
 struct Camera {
   glm::dmat4 projection, view;
 };

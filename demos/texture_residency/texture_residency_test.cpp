@@ -82,7 +82,8 @@ TEST(TextureResidency, DistantQuadsReadOnlyCoarseLevels) {
     const double quad = p.h / (2 * dist * R::kTanHalfFov), lambda = std::log2(R::kLevelTexels / quad);
     const int q = std::max(1, int(quad / 2)), cx = p.x + p.w / 2, cy = p.y + p.h / 2;
     double residual = 0;
-    const double level = ts::lod::levelOfColour(ts::lod::meanOf(img, {cx - q / 2, cy - q / 2, q, q}), R::kLevels, &residual);
+    const double level = ts::lod::levelOfColour(ts::lod::meanOf(img, {cx - q / 2, cy - q / 2, q, q}), R::kLevels,
+                                                &residual);
     EXPECT_NEAR(level, lambda, tolerance);
     EXPECT_LE(residual, 3.0) << "the colour is a blend of two neighbouring levels";
     // The control: the equation at twice the distance is a whole level off.

@@ -23,7 +23,7 @@ namespace L = ts::layout;
 // the clipmap's pictures (GL readbacks, row 0 the top) with the calls that made them.
 struct Detail {
   gl::CallList sizeCalls;
-  Image clipView, clipLevels[kClipLevels];  // the figure's: windows outlined, the last move's strips whitened
+  Image clipView, clipLevels[kClipLevels];      // the figure's: windows outlined, the last move's strips whitened
   Image clipViewRaw, clipStorage[kClipLevels];  // as GL drew and holds them (the tests probe these)
   Image flight, flightRaw;  // the same stack in perspective (row 0 the top): outlined for the figure, and as GL drew it
   gl::CallList clipCalls;
@@ -59,9 +59,11 @@ inline void measureSizes(Renderer& r, Measurements& ms, Detail& d) {
   d.sizeCalls = q.calls;
   put("max_texture_size", q.maxSize, "GL_MAX_TEXTURE_SIZE: this backend's own (never printed on the figure)");
   put("proxy_width[1024]", q.fitsWidth, "GL_TEXTURE_WIDTH of a 1024^2 GL_RGBA8 proxy: it fits");
-  put("proxy_width[2max]", q.tooBigWidth, "GL_TEXTURE_WIDTH of a proxy twice GL_MAX_TEXTURE_SIZE a side: 0, it does not fit");
+  put("proxy_width[2max]", q.tooBigWidth,
+      "GL_TEXTURE_WIDTH of a proxy twice GL_MAX_TEXTURE_SIZE a side: 0, it does not fit");
   put("proxy_halvings", q.halvings, "times the program halved that size until the proxy gave a width");
-  put("proxy_settled_size", q.settled, "the size the halving settled on: the backend's own (never printed on the figure)");
+  put("proxy_settled_size", q.settled,
+      "the size the halving settled on: the backend's own (never printed on the figure)");
   put("proxy_width[settled]", q.settledWidth, "GL_TEXTURE_WIDTH of the proxy of that size: it, as it fits");
   const int n = kSizePanelPx;
   double x64 = 0, y64 = 0;
@@ -121,9 +123,11 @@ inline void measureResidency(Renderer& r, Measurements& ms) {
     const std::string k = "[" + distanceKey(d) + "]";
     put("levels_read" + k, level, "k + f decoded from the colour: levels k and k + 1 blended, f of k + 1");
     put("finest_level_read" + k, finest, "the finest level GL read at this distance");
-    put("second_level_read" + k, std::min(finest + 1, kLevels - 1), "the other level GL_LINEAR_MIPMAP_LINEAR blends in");
+    put("second_level_read" + k, std::min(finest + 1, kLevels - 1),
+        "the other level GL_LINEAR_MIPMAP_LINEAR blends in");
     put("blend_weight" + k, level - finest, "the weight of that second level, decoded from the colour");
-    put("level_colour_residual" + k, residual, "8-bit distance of the colour from the nearest blend of two level colours");
+    put("level_colour_residual" + k, residual,
+        "8-bit distance of the colour from the nearest blend of two level colours");
     put("resident_fraction" + k, residentFraction(finest),
         "texels of the levels from the finest read down to the 1x1, over the whole chain's");
   }
@@ -181,11 +185,13 @@ inline Image stackPicture(const Image& storage, const std::vector<Piece>& pieces
     for (int x = 0; x < n; ++x) out.set(x, n - 1 - y, storage.at(x * kZoom, y * kZoom));
   for (const Piece& p : pieces) {
     const int x0 = p.sx / kZoom, y0 = p.sy / kZoom;
-    const int x1 = std::max(x0 + 2, (p.sx + p.w + kZoom - 1) / kZoom), y1 = std::max(y0 + 2, (p.sy + p.h + kZoom - 1) / kZoom);
+    const int x1 = std::max(x0 + 2, (p.sx + p.w + kZoom - 1) / kZoom),
+              y1 = std::max(y0 + 2, (p.sy + p.h + kZoom - 1) / kZoom);
     for (int y = y0; y < std::min(y1, n); ++y)
       for (int x = x0; x < std::min(x1, n); ++x) {
         const Rgba c = out.at(x, n - 1 - y);
-        out.set(x, n - 1 - y, {uint8_t((c.r + 3 * 255) / 4), uint8_t((c.g + 3 * 255) / 4), uint8_t((c.b + 3 * 255) / 4), 255});
+        out.set(x, n - 1 - y,
+                {uint8_t((c.r + 3 * 255) / 4), uint8_t((c.g + 3 * 255) / 4), uint8_t((c.b + 3 * 255) / 4), 255});
       }
   }
   const int sx = mod(origin.x, kClip) / kZoom, sy = mod(origin.y, kClip) / kZoom;
