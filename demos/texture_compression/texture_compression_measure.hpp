@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "demos/texture_compression/texture_compression_textures.hpp"
+#include "common/core/texture_memory.hpp"
 #include "common/core/textures.hpp"
 #include "texture_compression_math.hpp"
 
@@ -21,15 +22,9 @@ namespace dxt {
 // where the sidecar's generator "dxt1_picture" remakes them too.
 
 // ---- texture memory (seed 001 ¶21–24) -----------------------------------
-// A clipmap keeps each mip level of a size x size texture at most clip x clip.
-inline uint64_t clipmapTexels(uint64_t size, uint64_t clip) {
-  uint64_t n = 0;
-  for (uint64_t s = size;; s /= 2) {
-    n += std::min(s, clip) * std::min(s, clip);
-    if (s == 1) return n;
-  }
-}
-inline uint64_t chainTexels(uint64_t size) { return clipmapTexels(size, size); }
+// A clipmap keeps each mip level of a size x size texture at most clip x clip (common/core/texture_memory.hpp).
+using ts::chainTexels;
+using ts::clipmapTexels;
 // The clipmap the demo measures: a 65536 x 65536 texture, levels of at most 512 x 512.
 constexpr uint64_t kClipmapSide = 65536, kClipmapLevel = 512;
 
