@@ -139,7 +139,8 @@ TEST(GlRecord, KeepsTheTexelsTheUnpackStateReads) {
   ASSERT_TRUE(sub->args[8].bytes);
   std::vector<unsigned char> tile;
   for (int j = 1; j <= 2; ++j)
-    for (int i = 1; i <= 2; ++i) tile.insert(tile.end(), picture + (j * 4 + i) * 4, picture + (j * 4 + i) * 4 + 4);
+    for (int i = 1; i <= 2; ++i)
+      for (int k = 0; k < 4; ++k) tile.push_back(picture[(j * 4 + i) * 4 + k]);
   EXPECT_EQ(*sub->args[8].bytes, tile);
   // Not the picture's first 2 x 2 x 4 bytes, which a recorder blind to the unpack state would keep.
   EXPECT_NE(*sub->args[8].bytes, std::vector<unsigned char>(picture, picture + 16));
