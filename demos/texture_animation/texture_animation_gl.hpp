@@ -12,42 +12,17 @@
 
 #include "common/gl/gl.hpp"
 #include "common/gl/gl_record.hpp"
+#include "common/gl/pixel_pass.hpp"
 #include "common/gl/render.hpp"
 #include "texture_animation_math.hpp"
 
 namespace ts::texanim {
-// A w x h pass in window pixels (x right, y up, z in [-1, 1], larger z nearer), depth cleared to the far plane;
-// read back opaque (the flames' clear texels leave alpha 0 where GL_REPLACE wrote them: the colour is what counts).
-inline Image pixelPass(Renderer& r, int w, int h, const char* what, const std::function<void()>& draw) {
-  Image img = r.offscreen(w, h, what, [&](GLuint) {
-    glPushAttrib(GL_ALL_ATTRIB_BITS);
-    glMatrixMode(GL_PROJECTION), glPushMatrix(), glLoadIdentity(), glOrtho(0, w, 0, h, -1, 1);
-    glMatrixMode(GL_MODELVIEW), glPushMatrix(), glLoadIdentity();
-    glDisable(GL_DEPTH_TEST), glDisable(GL_BLEND), glDisable(GL_CULL_FACE), glDisable(GL_LIGHTING);
-    glUseProgram(0);
-    glClearColor(0, 0, 0, 1), glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    draw();
-    glMatrixMode(GL_PROJECTION), glPopMatrix();
-    glMatrixMode(GL_MODELVIEW), glPopMatrix();
-    glPopAttrib();
-  });
+// A pass in window pixels (common/gl/pixel_pass.hpp), read back opaque: the flames' clear texels leave alpha 0
+// where GL_REPLACE wrote them, and the colour is what counts.
+inline Image opaquePass(Renderer& r, int w, int h, const char* what, const std::function<void()>& draw) {
+  Image img = pixelPass(r, w, h, what, draw);
   for (size_t k = 3; k < img.pixels.size(); k += 4) img.pixels[k] = 255;
   return img;
-}
-
-// A texture of w x h RGBA8: `img`'s texels (row 0 at t = 0), or none yet (NULL: to be filled by glTexSubImage2D).
-inline GLuint makeTexture(int w, int h, const Image* img, GLenum filter, GLenum wrap) {
-  GLuint t = 0;
-  glGenTextures(1, &t);
-  glBindTexture(GL_TEXTURE_2D, t);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, img ? img->pixels.data() : nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(filter));
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GLint(filter));
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(wrap));
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(wrap));
-  return t;
 }
 // Refills the rectangle `rect` of the bound texture from the same rectangle of `frame` (packed first: with
 // GL_UNPACK_ALIGNMENT 1 the rows follow each other).
@@ -91,13 +66,13 @@ inline FlipbookRun flipbookPass(Renderer& r, const std::vector<Image>& frames, b
   const int n = int(frames.size()), w = kFlipTexels * kFlipZoom;
   r.release();  // the record shows every object made
   gl::Recording rec;
-  const GLuint tex = makeTexture(kFlipTexels, kFlipTexels, nullptr, GL_NEAREST, GL_CLAMP_TO_EDGE);
+  const GLuint tex = texture2D(kFlipTexels, kFlipTexels, nullptr, GL_NEAREST, GL_CLAMP_TO_EDGE);
   for (int step = 0; step <= n; ++step) {
     const int k = step % n;
     const TexRect whole{0, 0, kFlipTexels, kFlipTexels};
     const TexRect rect = step == 0 || !partial ? whole : changedRect(frames[size_t((step - 1) % n)], frames[size_t(k)]);
     const size_t before = rec.calls().size();
-    run.shown.push_back(pixelPass(r, w, w, "the flipbook", [&] {
+    run.shown.push_back(opaquePass(r, w, w, "the flipbook", [&] {
       glEnable(GL_TEXTURE_2D), glBindTexture(GL_TEXTURE_2D, tex);
       if (rect.texels() > 0) upload(frames[size_t(k)], rect);
       glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
@@ -124,10 +99,10 @@ inline Image torchPass(Renderer& r, const Image& wall, const Image& back, const 
                        gl::CallList* calls) {
   r.release();
   gl::Recording rec;
-  const Image img = pixelPass(r, kTorchPixels, kTorchPixels, "the torch", [&] {
-    const GLuint tw = makeTexture(wall.width, wall.height, &wall, GL_NEAREST, GL_REPEAT);
-    const GLuint tb = makeTexture(kFlipTexels, kFlipTexels, &back, GL_NEAREST, GL_CLAMP_TO_EDGE);
-    const GLuint tf = makeTexture(kFlipTexels, kFlipTexels, &front, GL_NEAREST, GL_CLAMP_TO_EDGE);
+  const Image img = opaquePass(r, kTorchPixels, kTorchPixels, "the torch", [&] {
+    const GLuint tw = texture2D(wall.width, wall.height, &wall, GL_NEAREST, GL_REPEAT);
+    const GLuint tb = texture2D(kFlipTexels, kFlipTexels, &back, GL_NEAREST, GL_CLAMP_TO_EDGE);
+    const GLuint tf = texture2D(kFlipTexels, kFlipTexels, &front, GL_NEAREST, GL_CLAMP_TO_EDGE);
     glEnable(GL_DEPTH_TEST), glDepthFunc(GL_LESS);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -176,10 +151,10 @@ inline LightRun lightMapPass(Renderer& r, const Image& base, const std::vector<I
   LightRun run;
   r.release();
   gl::Recording rec;
-  const GLuint tb = makeTexture(base.width, base.height, &base, GL_NEAREST, GL_REPEAT);
-  const GLuint tl = makeTexture(kLightTexels, kLightTexels, nullptr, GL_LINEAR, GL_CLAMP_TO_EDGE);
+  const GLuint tb = texture2D(base.width, base.height, &base, GL_NEAREST, GL_REPEAT);
+  const GLuint tl = texture2D(kLightTexels, kLightTexels, nullptr, GL_LINEAR, GL_CLAMP_TO_EDGE);
   for (const Image& map : maps)
-    run.shown = pixelPass(r, kLitPixels, kLitPixels, "the light-mapped wall", [&] {
+    run.shown = opaquePass(r, kLitPixels, kLitPixels, "the light-mapped wall", [&] {
       glActiveTexture(GL_TEXTURE1);
       glEnable(GL_TEXTURE_2D), glBindTexture(GL_TEXTURE_2D, tl);
       upload(map, {0, 0, kLightTexels, kLightTexels});  // the map recomputed for this frame's light

@@ -15,37 +15,11 @@
 
 #include "common/gl/gl.hpp"
 #include "common/gl/gl_record.hpp"
+#include "common/gl/pixel_pass.hpp"
 #include "common/gl/render.hpp"
 #include "demos/texture_atlas/texture_atlas_textures.hpp"
 
 namespace ts::atlas {
-// A w x h pass in window pixels (x right, y up), cleared black, read back (row 0 the top).
-inline Image pixelPass(Renderer& r, int w, int h, const char* what, const std::function<void()>& draw) {
-  return r.offscreen(w, h, what, [&](GLuint) {
-    glPushAttrib(GL_ALL_ATTRIB_BITS);
-    glMatrixMode(GL_PROJECTION), glPushMatrix(), glLoadIdentity(), glOrtho(0, w, 0, h, -1, 1);
-    glMatrixMode(GL_MODELVIEW), glPushMatrix(), glLoadIdentity();
-    glDisable(GL_DEPTH_TEST), glDisable(GL_BLEND), glDisable(GL_CULL_FACE), glDisable(GL_LIGHTING);
-    glUseProgram(0);
-    glClearColor(0, 0, 0, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    draw();
-    glMatrixMode(GL_PROJECTION), glPopMatrix();
-    glMatrixMode(GL_MODELVIEW), glPopMatrix();
-    glPopAttrib();
-  });
-}
-inline GLuint nearestTexture(const Image& img) {
-  GLuint t = 0;
-  glGenTextures(1, &t);
-  glBindTexture(GL_TEXTURE_2D, t);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.pixels.data());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-  return t;
-}
 // Object k's square: kTile x kTile pixels at its place in a kGrid x kGrid grid, (s, t) from (s0, t0) to (s1, t1).
 inline void objectQuad(int k, float s0, float t0, float s1, float t1) {
   const float x = float((k % kGrid) * kTile), y = float((k / kGrid) * kTile);
@@ -74,9 +48,10 @@ inline ObjectsRun objectsPass(Renderer& r, bool atlas) {
   r.release();
   gl::Recording rec;
   std::vector<GLuint> textures;
-  if (atlas) textures.push_back(nearestTexture(atlasImage(0)));
+  auto nearest = [](const Image& img) { return texture2D(img.width, img.height, &img, GL_NEAREST, GL_REPEAT); };
+  if (atlas) textures.push_back(nearest(atlasImage(0)));
   else
-    for (int k = 0; k < kTiles; ++k) textures.push_back(nearestTexture(tileImage(k)));
+    for (int k = 0; k < kTiles; ++k) textures.push_back(nearest(tileImage(k)));
   const size_t drawing = rec.calls().size();
   const int side = kGrid * kTile;
   run.picture = pixelPass(r, side, side, "the objects", [&] {
