@@ -10,6 +10,7 @@
 
 #include "common/gl/gl.hpp"
 #include "common/gl/gl_record.hpp"
+#include "common/gl/pixel_pass.hpp"
 #include "common/gl/render.hpp"
 #include "texture_residency_math.hpp"
 
@@ -95,15 +96,8 @@ class ClipStack {
   // The view at eye e, read back (row 0 the top): the levels drawn coarsest first, each a quad over its window,
   // its texture coordinates the window's level-l texels over 512 (GL_REPEAT wraps them onto the storage).
   Image draw(Renderer& r, const Eye& e) {
-    return r.offscreen(kViewPx, kViewPx, "the clipmap's view", [&](GLuint) {
-      glPushAttrib(GL_ALL_ATTRIB_BITS);
-      glMatrixMode(GL_PROJECTION), glPushMatrix(), glLoadIdentity(), glOrtho(0, kViewPx, 0, kViewPx, -1, 1);
-      glMatrixMode(GL_MODELVIEW), glPushMatrix(), glLoadIdentity();
+    return pixelPass(r, kViewPx, kViewPx, "the clipmap's view", [&] {
       glMatrixMode(GL_TEXTURE), glPushMatrix(), glLoadIdentity();
-      glDisable(GL_DEPTH_TEST), glDisable(GL_BLEND), glDisable(GL_CULL_FACE), glDisable(GL_LIGHTING);
-      glUseProgram(0);
-      glClearColor(0, 0, 0, 1);
-      glClear(GL_COLOR_BUFFER_BIT);
       glEnable(GL_TEXTURE_2D);
       glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
       for (int l = kClipLevels - 1; l >= 0; --l) {
@@ -131,9 +125,7 @@ class ClipStack {
         glEnd();
       }
       glMatrixMode(GL_TEXTURE), glPopMatrix();
-      glMatrixMode(GL_PROJECTION), glPopMatrix();
-      glMatrixMode(GL_MODELVIEW), glPopMatrix();
-      glPopAttrib();
+      glMatrixMode(GL_MODELVIEW);
     });
   }
   // The flight view at eye e, read back (row 0 the top): the windows as ground quads in perspective, coarsest first.
