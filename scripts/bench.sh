@@ -6,7 +6,9 @@
 # sampling mode at 1024x768; each parallax filtering mode at 800x600; the filter
 # zoo's exact reference at 800x600; lighting from an environment map against
 # per-pixel Phong at 1, 4 and 16 lights, 768x768; the dynamic cube map's pass, all
-# six faces against only the faces each reflector reads.  Speed is measured,
+# six faces against only the faces each reflector reads; the sources' cost
+# claims (hyperbolic interpolation, relief as texture or geometry, texture
+# switches, minification with and without mipmaps).  Speed is measured,
 # not asserted: nothing here is a CTest test.
 #
 # Extra arguments go to both programs, e.g.
@@ -19,7 +21,7 @@ bash scripts/setup.sh
 build=build-bench
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DTS_BUILD_TESTS=ON -DTS_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build "$build" -j2 --target bench_figures bench_window bench_jitter bench_parallax bench_zoo bench_envlight \
-  bench_upload bench_cube
+  bench_upload bench_cube bench_costs
 mkdir -p "$build/bench"
 "$build/bin/bench_figures" --benchmark_out="$build/bench/figures.json" --benchmark_out_format=json "$@"
 "$build/bin/bench_jitter" --benchmark_out="$build/bench/jitter.json" --benchmark_out_format=json "$@"
@@ -28,5 +30,6 @@ mkdir -p "$build/bench"
 "$build/bin/bench_envlight" --benchmark_out="$build/bench/envlight.json" --benchmark_out_format=json "$@"
 "$build/bin/bench_upload" --benchmark_out="$build/bench/upload.json" --benchmark_out_format=json "$@"
 "$build/bin/bench_cube" --benchmark_out="$build/bench/cube.json" --benchmark_out_format=json "$@"
+"$build/bin/bench_costs" --benchmark_out="$build/bench/costs.json" --benchmark_out_format=json "$@"
 xvfb-run -a -s "-screen 0 1280x1024x24" \
   "$build/bin/bench_window" --benchmark_out="$build/bench/window.json" --benchmark_out_format=json "$@"

@@ -460,6 +460,48 @@ void minify(benchmark::State& st, MinFilter f, int size, int scale) {
                   {"texture_texels", double(size) * size}});
   });
 }
+// The medians as markdown tables, each variant beside the one its claim compares it with.
+void summary(const ts::bench::SummaryReporter& rep) {
+  using ts::bench::fmt;
+  using ts::bench::ratio;
+  auto ms = [&](const std::string& n) { return rep.ms("costs/" + n); };
+  auto count = [&](const std::string& n, const char* key) {
+    const double v = rep.counter("costs/" + n, key);
+    return std::isfinite(v) ? std::to_string(std::llround(v)) : std::string("–");
+  };
+  std::printf("\n%s, ms per frame (OSMesa, llvmpipe).\n\n", rep.statistic().c_str());
+  std::printf("| frame | smooth (hyperbolic) | noperspective (screen-linear) | smooth / noperspective |\n|---|---|---|---|\n");
+  for (int n : {256, 512, 1024}) {
+    const double a = ms("interpolation/smooth/" + std::to_string(n)),
+                 b = ms("interpolation/noperspective/" + std::to_string(n));
+    std::printf("| %d^2 | %s | %s | %s |\n", n, fmt(a).c_str(), fmt(b).c_str(), ratio(a, b).c_str());
+  }
+  std::printf("\n| relief, %d^2 frame | triangles | ms | / bump_quad |\n|---|---|---|---|\n", kDetailFrame);
+  for (const char* k : kDetailKeys) {
+    const std::string n = std::string("detail/") + k;
+    std::printf("| %s | %s | %s | %s |\n", k, count(n, "triangles").c_str(),
+                fmt(ms(n)).c_str(), ratio(ms(n), ms("detail/bump_quad")).c_str());
+  }
+  std::printf("\n| %d quads, %d textures | binds | draw calls | ms | / sorted |\n|---|---|---|---|---|\n", kQuads,
+              kTextures);
+  for (const char* k : kOrderKeys) {
+    const std::string n = std::string("switches/") + k;
+    std::printf("| %s | %s | %s | %s | %s |\n", k, count(n, "binds").c_str(),
+                count(n, "draws").c_str(), fmt(ms(n)).c_str(),
+                ratio(ms(n), ms("switches/sorted")).c_str());
+  }
+  std::printf("\n| texture, 16x minified onto %d^2 | mipmapped (trilinear) | bilinear_mip | unmipmapped (GL_LINEAR) | "
+              "mipmapped / unmipmapped |\n|---|---|---|---|---|\n",
+              kMinifyFrame);
+  for (int size : {2048, 4096}) {
+    const std::string z = "/" + std::to_string(size);
+    std::printf("| %d^2 | %s | %s | %s | %s |\n", size, fmt(ms("minify/mipmapped" + z)).c_str(),
+                fmt(ms("minify/bilinear_mip" + z)).c_str(), fmt(ms("minify/unmipmapped" + z)).c_str(),
+                ratio(ms("minify/mipmapped" + z), ms("minify/unmipmapped" + z)).c_str());
+  }
+  std::printf("\nControl: GL_LINEAR at 1 texel a pixel on the 4096^2 texture, %s ms.\n\n",
+              fmt(ms("minify/one_to_one/4096")).c_str());
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -480,5 +522,5 @@ int main(int argc, char** argv) {
       add(std::string("costs/minify/") + f.key + "/" + std::to_string(size), minify, f, size, 16);
   // The control: level 0 read at one texel a pixel, where neighbouring pixels share cache lines.
   add("costs/minify/one_to_one/4096", minify, kMinFilters[2], 4096, 1);
-  return ts::bench::run(argc, argv);
+  return ts::bench::run(argc, argv, summary);
 }
