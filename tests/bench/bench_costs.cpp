@@ -22,9 +22,10 @@
 //   4. Buss VI.1.3: only the low-resolution mipmaps of distant textures need to be kept "in more accessible
 //      memory locations (e.g. in cache or on the graphics chip)" — mipmapping is widely said to be faster when
 //      minifying, besides removing aliasing.  -> costs/minify/{mipmapped,bilinear_mip,unmipmapped}/{2048,4096}:
-//      a texture minified 16x onto a 512^2 frame with GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_NEAREST
+//      a texture minified 16x onto a 1024^2 frame with GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_NEAREST
 //      (the same 4 taps as GL_LINEAR, on the right level) and GL_LINEAR (4 taps 16 texels apart on level 0);
-//      costs/minify/one_to_one/4096, GL_LINEAR at 1 texel a pixel, is the control for the memory access.
+//      costs/minify/one_to_one/4096, GL_LINEAR at 1 texel a pixel, is the control for the memory access, and
+//      costs/minify/clear_only the frame's fixed part (clear and glFinish, nothing drawn).
 //
 // The GL calls that carry each claim: glTexCoord arrays with a `smooth`/`noperspective` varying (1),
 // glDrawElements of 2 triangles against 130,050 (2), glBindTexture per group or per quad (3),
@@ -419,7 +420,7 @@ void switches(benchmark::State& st, Order order) {
 // 2048^2 (16 MiB, level 0) fits this machine's 32 MiB L3 cache; 4096^2 (64 MiB) does not.  Repeated so that
 // 16 texels of level 0 fall across each pixel either way (`scale`); one_to_one reads level 0 at 1 texel a
 // pixel, the coherent access mipmapping is said to restore.
-constexpr int kMinifyFrame = 512;
+constexpr int kMinifyFrame = 1024;
 struct MinFilter {
   const char* key;
   GLint filter;
@@ -460,6 +461,15 @@ void minify(benchmark::State& st, MinFilter f, int size, int scale) {
                   {"texture_texels", double(size) * size}});
   });
 }
+// The part of every minify frame that is not texturing.
+void clearOnly(benchmark::State& st) {
+  guarded(st, [&] {
+    rig().frame(kMinifyFrame);
+    timeFrames(st, [] { glClear(GL_COLOR_BUFFER_BIT); });
+    counters(st, {{"pixels", double(kMinifyFrame) * kMinifyFrame}});
+  });
+}
+
 // The medians as markdown tables, each variant beside the one its claim compares it with.
 void summary(const ts::bench::SummaryReporter& rep) {
   using ts::bench::fmt;
@@ -499,8 +509,8 @@ void summary(const ts::bench::SummaryReporter& rep) {
                 fmt(ms("minify/bilinear_mip" + z)).c_str(), fmt(ms("minify/unmipmapped" + z)).c_str(),
                 ratio(ms("minify/mipmapped" + z), ms("minify/unmipmapped" + z)).c_str());
   }
-  std::printf("\nControl: GL_LINEAR at 1 texel a pixel on the 4096^2 texture, %s ms.\n\n",
-              fmt(ms("minify/one_to_one/4096")).c_str());
+  std::printf("\nControls: GL_LINEAR at 1 texel a pixel on the 4096^2 texture, %s ms; the clear alone, %s ms.\n\n",
+              fmt(ms("minify/one_to_one/4096")).c_str(), fmt(ms("minify/clear_only")).c_str());
 }
 }  // namespace
 
@@ -522,5 +532,6 @@ int main(int argc, char** argv) {
       add(std::string("costs/minify/") + f.key + "/" + std::to_string(size), minify, f, size, 16);
   // The control: level 0 read at one texel a pixel, where neighbouring pixels share cache lines.
   add("costs/minify/one_to_one/4096", minify, kMinFilters[2], 4096, 1);
+  add("costs/minify/clear_only", clearOnly);
   return ts::bench::run(argc, argv, summary);
 }
