@@ -5,7 +5,8 @@
 //   1. Buss VI.1.1: "the drawback of hyperbolic interpolation is that it requires extra computation and
 //      therefore may be slower".  -> costs/interpolation/{smooth,noperspective}/{256,512,1024}: one receding
 //      quad filling a square frame, its texture coordinate a `smooth` (hyperbolic) or `noperspective`
-//      (screen-linear) varying; nothing else differs.
+//      (screen-linear) varying; nothing else differs.  {smooth,noperspective}_8vec4/1024 add 8 vec4 varyings
+//      of the same kind, to magnify the per-attribute part.
 //   2. Buss VI.1: without texture maps surfaces "would need to be rendered with very small polygons"; texture
 //      maps give "good results with a minimal computational load".  Seed 001 ¶1: a brick image on a polygon
 //      instead of exact geometry "saves modelling work and memory, and speeds up drawing".  Seed 003's
@@ -180,17 +181,30 @@ void guarded(benchmark::State& st, F&& f) {
 // only the varying's qualifier differs.
 constexpr float kFar = 8;  // w of the top edge
 
-void interpolation(benchmark::State& st, bool perspective, int n) {
+// `extra` more vec4 varyings with the same qualifier, folded into the coordinate so that none is optimised
+// away: the per-attribute part of the cost, magnified (the claim's case is extra = 0).
+void interpolation(benchmark::State& st, bool perspective, int n, int extra) {
   guarded(st, [&] {
     Rig& r = rig();
     r.frame(n);
     const std::string q = perspective ? "smooth" : "noperspective";
-    const GLuint prog = r.program("costs_interp_" + q,
-                                  "#version 130\n" + q + " out vec2 uv;\n"
-                                  "void main() { uv = gl_MultiTexCoord0.xy;\n"
-                                  "  gl_Position = vec4(gl_Vertex.xy * gl_Vertex.z, 0.0, gl_Vertex.z); }\n",
-                                  "#version 130\n" + q + " in vec2 uv;\nuniform sampler2D tex;\n"
-                                  "void main() { gl_FragColor = texture(tex, uv); }\n");
+    const std::string decl = extra ? q + " %s vec4 more[" + std::to_string(extra) + "];\n" : "";
+    auto declare = [&](const char* dir) {
+      std::string d = decl;
+      if (!d.empty()) d.replace(d.find("%s"), 2, dir);
+      return d;
+    };
+    const std::string loop = "for (int i = 0; i < " + std::to_string(extra) + "; ++i) ";
+    const GLuint prog = r.program("costs_interp_" + q + std::to_string(extra),
+                                  "#version 130\n" + q + " out vec2 uv;\n" + declare("out") +
+                                      "void main() { uv = gl_MultiTexCoord0.xy;\n" +
+                                      (extra ? "  " + loop + "more[i] = gl_Vertex * float(i + 1);\n" : "") +
+                                      "  gl_Position = vec4(gl_Vertex.xy * gl_Vertex.z, 0.0, gl_Vertex.z); }\n",
+                                  "#version 130\n" + q + " in vec2 uv;\n" + declare("in") +
+                                      "uniform sampler2D tex;\n"
+                                      "void main() { vec2 c = uv;\n" +
+                                      (extra ? "  " + loop + "c += 1e-6 * more[i].xy * more[i].zw;\n" : "") +
+                                      "  gl_FragColor = texture(tex, c); }\n");
     const GLuint tex = makeTexture(256, 256, checker(256, 16, {230, 230, 230}, {40, 40, 160}), GL_LINEAR, false);
     // The texture coordinates are affine in the quad's own plane (s from x w, t from w): a floor receding
     // from the viewer, drawn right only by hyperbolic interpolation.
@@ -486,6 +500,11 @@ void summary(const ts::bench::SummaryReporter& rep) {
                  b = ms("interpolation/noperspective/" + std::to_string(n));
     std::printf("| %d^2 | %s | %s | %s |\n", n, fmt(a).c_str(), fmt(b).c_str(), ratio(a, b).c_str());
   }
+  {
+    const double a = ms("interpolation/smooth_8vec4/1024"), b = ms("interpolation/noperspective_8vec4/1024");
+    std::printf("| 1024^2, 8 more vec4 varyings | %s | %s | %s |\n", fmt(a).c_str(), fmt(b).c_str(),
+                ratio(a, b).c_str());
+  }
   std::printf("\n| relief, %d^2 frame | triangles | ms | / bump_quad |\n|---|---|---|---|\n", kDetailFrame);
   for (const char* k : kDetailKeys) {
     const std::string n = std::string("detail/") + k;
@@ -527,7 +546,10 @@ int main(int argc, char** argv) {
   for (int n : {256, 512, 1024})
     for (bool persp : {true, false})
       add("costs/interpolation/" + std::string(persp ? "smooth/" : "noperspective/") + std::to_string(n),
-          interpolation, persp, n);
+          interpolation, persp, n, 0);
+  for (bool persp : {true, false})
+    add("costs/interpolation/" + std::string(persp ? "smooth" : "noperspective") + "_8vec4/1024", interpolation, persp,
+        1024, 8);
   for (Detail d : {kParallax, kBump, kGrid}) add(std::string("costs/detail/") + kDetailKeys[d], detail, d);
   for (Order o : {kSorted, kUnsorted, kSortedBatched}) add(std::string("costs/switches/") + kOrderKeys[o], switches, o);
   for (int size : {2048, 4096})
