@@ -188,11 +188,8 @@ void interpolation(benchmark::State& st, bool perspective, int n, int extra) {
     Rig& r = rig();
     r.frame(n);
     const std::string q = perspective ? "smooth" : "noperspective";
-    const std::string decl = extra ? q + " %s vec4 more[" + std::to_string(extra) + "];\n" : "";
     auto declare = [&](const char* dir) {
-      std::string d = decl;
-      if (!d.empty()) d.replace(d.find("%s"), 2, dir);
-      return d;
+      return extra ? q + " " + dir + " vec4 more[" + std::to_string(extra) + "];\n" : std::string();
     };
     const std::string loop = "for (int i = 0; i < " + std::to_string(extra) + "; ++i) ";
     const GLuint prog = r.program("costs_interp_" + q + std::to_string(extra),
