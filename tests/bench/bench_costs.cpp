@@ -35,6 +35,7 @@
 // Vertices come from client arrays (the suite's loader has no buffer objects), so the displaced grid's
 // 65,536 vertices and 390,150 indices are handed to GL each frame, as a GL 1.1 program's would be.
 // Speed is measured, never asserted; compare variants as ratios within one run, and record the load.
+// To see what is timed: TS_BENCH_COSTS_PNG=dir writes the first frame of each benchmark to dir/<name>.png.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
