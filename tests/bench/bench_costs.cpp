@@ -491,43 +491,49 @@ void summary(const ts::bench::SummaryReporter& rep) {
     const double v = rep.counter("costs/" + n, key);
     return std::isfinite(v) ? std::to_string(std::llround(v)) : std::string("–");
   };
-  std::printf("\n%s, ms per frame (OSMesa, llvmpipe).\n\n", rep.statistic().c_str());
-  std::printf("| frame | smooth (hyperbolic) | noperspective (screen-linear) | smooth / noperspective |\n|---|---|---|---|\n");
-  for (int n : {256, 512, 1024}) {
-    const double a = ms("interpolation/smooth/" + std::to_string(n)),
-                 b = ms("interpolation/noperspective/" + std::to_string(n));
-    std::printf("| %d^2 | %s | %s | %s |\n", n, fmt(a).c_str(), fmt(b).c_str(), ratio(a, b).c_str());
+  std::printf("\n%s, ms per frame (OSMesa, llvmpipe).\n", rep.statistic().c_str());
+  if (rep.ran("costs/interpolation/")) {
+    std::printf("\n| frame | smooth (hyperbolic) | noperspective (screen-linear) | smooth / noperspective |\n"
+                "|---|---|---|---|\n");
+    for (const char* n : {"256", "512", "1024", "8vec4/1024"}) {
+      const std::string k = n[0] == '8' ? "_" + std::string(n) : "/" + std::string(n);
+      const double a = ms("interpolation/smooth" + k), b = ms("interpolation/noperspective" + k);
+      const std::string label = n[0] == '8' ? "1024^2, 8 more vec4 varyings" : std::string(n) + "^2";
+      std::printf("| %s | %s | %s | %s |\n", label.c_str(), fmt(a).c_str(), fmt(b).c_str(), ratio(a, b).c_str());
+    }
   }
-  {
-    const double a = ms("interpolation/smooth_8vec4/1024"), b = ms("interpolation/noperspective_8vec4/1024");
-    std::printf("| 1024^2, 8 more vec4 varyings | %s | %s | %s |\n", fmt(a).c_str(), fmt(b).c_str(),
-                ratio(a, b).c_str());
+  if (rep.ran("costs/detail/")) {
+    std::printf("\n| relief, %d^2 frame | triangles | ms | / bump_quad |\n|---|---|---|---|\n", kDetailFrame);
+    for (const char* k : kDetailKeys) {
+      const std::string n = std::string("detail/") + k;
+      std::printf("| %s | %s | %s | %s |\n", k, count(n, "triangles").c_str(), fmt(ms(n)).c_str(),
+                  ratio(ms(n), ms("detail/bump_quad")).c_str());
+    }
   }
-  std::printf("\n| relief, %d^2 frame | triangles | ms | / bump_quad |\n|---|---|---|---|\n", kDetailFrame);
-  for (const char* k : kDetailKeys) {
-    const std::string n = std::string("detail/") + k;
-    std::printf("| %s | %s | %s | %s |\n", k, count(n, "triangles").c_str(),
-                fmt(ms(n)).c_str(), ratio(ms(n), ms("detail/bump_quad")).c_str());
+  if (rep.ran("costs/switches/")) {
+    std::printf("\n| %d quads, %d textures | binds | draw calls | ms | / sorted |\n|---|---|---|---|---|\n", kQuads,
+                kTextures);
+    for (const char* k : kOrderKeys) {
+      const std::string n = std::string("switches/") + k;
+      std::printf("| %s | %s | %s | %s | %s |\n", k, count(n, "binds").c_str(), count(n, "draws").c_str(),
+                  fmt(ms(n)).c_str(), ratio(ms(n), ms("switches/sorted")).c_str());
+    }
   }
-  std::printf("\n| %d quads, %d textures | binds | draw calls | ms | / sorted |\n|---|---|---|---|---|\n", kQuads,
-              kTextures);
-  for (const char* k : kOrderKeys) {
-    const std::string n = std::string("switches/") + k;
-    std::printf("| %s | %s | %s | %s | %s |\n", k, count(n, "binds").c_str(),
-                count(n, "draws").c_str(), fmt(ms(n)).c_str(),
-                ratio(ms(n), ms("switches/sorted")).c_str());
+  if (rep.ran("costs/minify/")) {
+    std::printf("\n| texture, 16x minified onto %d^2 | mipmapped (trilinear) | bilinear_mip | unmipmapped (GL_LINEAR) | "
+                "mipmapped / unmipmapped | bilinear_mip / unmipmapped |\n|---|---|---|---|---|---|\n",
+                kMinifyFrame);
+    for (int size : {2048, 4096}) {
+      const std::string z = "/" + std::to_string(size);
+      const double tri = ms("minify/mipmapped" + z), bi = ms("minify/bilinear_mip" + z),
+                   lin = ms("minify/unmipmapped" + z);
+      std::printf("| %d^2 | %s | %s | %s | %s | %s |\n", size, fmt(tri).c_str(), fmt(bi).c_str(), fmt(lin).c_str(),
+                  ratio(tri, lin).c_str(), ratio(bi, lin).c_str());
+    }
+    std::printf("\nControls: GL_LINEAR at 1 texel a pixel on the 4096^2 texture, %s ms; the clear alone, %s ms.\n",
+                fmt(ms("minify/one_to_one/4096")).c_str(), fmt(ms("minify/clear_only")).c_str());
   }
-  std::printf("\n| texture, 16x minified onto %d^2 | mipmapped (trilinear) | bilinear_mip | unmipmapped (GL_LINEAR) | "
-              "mipmapped / unmipmapped |\n|---|---|---|---|---|\n",
-              kMinifyFrame);
-  for (int size : {2048, 4096}) {
-    const std::string z = "/" + std::to_string(size);
-    std::printf("| %d^2 | %s | %s | %s | %s |\n", size, fmt(ms("minify/mipmapped" + z)).c_str(),
-                fmt(ms("minify/bilinear_mip" + z)).c_str(), fmt(ms("minify/unmipmapped" + z)).c_str(),
-                ratio(ms("minify/mipmapped" + z), ms("minify/unmipmapped" + z)).c_str());
-  }
-  std::printf("\nControls: GL_LINEAR at 1 texel a pixel on the 4096^2 texture, %s ms; the clear alone, %s ms.\n\n",
-              fmt(ms("minify/one_to_one/4096")).c_str(), fmt(ms("minify/clear_only")).c_str());
+  std::printf("\n");
 }
 }  // namespace
 
