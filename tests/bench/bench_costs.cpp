@@ -225,8 +225,8 @@ void interpolation(benchmark::State& st, bool perspective, int n, int extra) {
 }
 
 // ---- 2. detail as texture against detail as geometry --------------------------------------------------------
-constexpr int kRelief = 256;      // height map texels a side; the grid has one vertex per texel
-constexpr float kDepth = 0.08f;   // mortar depth below the brick faces, object units (the wall is 2 wide)
+constexpr int kRelief = 256;     // height map texels a side; the grid has one vertex per texel
+constexpr float kDepth = 0.08f;  // mortar depth below the brick faces, object units (the wall is 2 wide)
 constexpr int kDetailFrame = 768;
 constexpr int kParallaxSteps = 16;
 enum Detail { kParallax, kBump, kGrid };
@@ -370,9 +370,10 @@ void switches(benchmark::State& st, Order order) {
     r.frame(512);
     std::vector<GLuint> tex;
     for (int t = 0; t < kTextures; ++t)
-      tex.push_back(makeTexture(
-          16, 16, checker(16, 4, {uint8_t(40 + 6 * t), uint8_t(230 - 6 * t), 90}, {uint8_t(8 * t), 30, 200}),
-          GL_NEAREST, false));
+      tex.push_back(
+          makeTexture(16, 16,
+                      checker(16, 4, {uint8_t(40 + 6 * t), uint8_t(230 - 6 * t), 90}, {uint8_t(8 * t), 30, 200}),
+                      GL_NEAREST, false));
     // Quad q sits at column q % 64, row q / 64 and uses texture q % 32: left and right neighbours never share one.
     // `byTexture` holds the same quads' indices grouped by texture, for the one-call-per-texture order.
     Mesh m;
@@ -410,8 +411,7 @@ void switches(benchmark::State& st, Order order) {
       for (int t = 0; t < kTextures; ++t, ++binds) {
         glBindTexture(GL_TEXTURE_2D, tex[size_t(t)]);
         if (order == kSortedBatched) {
-          glDrawElements(GL_TRIANGLES, GLsizei(perTexture), GL_UNSIGNED_INT,
-                         byTexture.data() + size_t(t) * perTexture);
+          glDrawElements(GL_TRIANGLES, GLsizei(perTexture), GL_UNSIGNED_INT, byTexture.data() + size_t(t) * perTexture);
           ++draws;
         } else {
           for (int q = t; q < kQuads; q += kTextures, ++draws) m.draw(size_t(q) * 6, 6);
@@ -423,7 +423,9 @@ void switches(benchmark::State& st, Order order) {
     glLoadIdentity();
     glMatrixMode(GL_MODELVIEW);
     glDeleteTextures(GLsizei(tex.size()), tex.data());
-    counters(st, {{"binds", double(binds)}, {"draws", double(draws)}, {"quads", double(kQuads)},
+    counters(st, {{"binds", double(binds)},
+                  {"draws", double(draws)},
+                  {"quads", double(kQuads)},
                   {"triangles", double(kQuads) * 2}});
   });
 }
@@ -437,8 +439,9 @@ struct MinFilter {
   const char* key;
   GLint filter;
 };
-const MinFilter kMinFilters[] = {
-    {"mipmapped", GL_LINEAR_MIPMAP_LINEAR}, {"bilinear_mip", GL_LINEAR_MIPMAP_NEAREST}, {"unmipmapped", GL_LINEAR}};
+const MinFilter kMinFilters[] = {{"mipmapped", GL_LINEAR_MIPMAP_LINEAR},
+                                 {"bilinear_mip", GL_LINEAR_MIPMAP_NEAREST},
+                                 {"unmipmapped", GL_LINEAR}};
 
 void minify(benchmark::State& st, MinFilter f, int size, int scale) {
   guarded(st, [&] {
@@ -520,9 +523,10 @@ void summary(const ts::bench::SummaryReporter& rep) {
     }
   }
   if (rep.ran("costs/minify/")) {
-    std::printf("\n| texture, 16x minified onto %d^2 | mipmapped (trilinear) | bilinear_mip | unmipmapped (GL_LINEAR) | "
-                "mipmapped / unmipmapped | bilinear_mip / unmipmapped |\n|---|---|---|---|---|---|\n",
-                kMinifyFrame);
+    std::printf(
+        "\n| texture, 16x minified onto %d^2 | mipmapped (trilinear) | bilinear_mip | unmipmapped (GL_LINEAR) | "
+        "mipmapped / unmipmapped | bilinear_mip / unmipmapped |\n|---|---|---|---|---|---|\n",
+        kMinifyFrame);
     for (int size : {2048, 4096}) {
       const std::string z = "/" + std::to_string(size);
       const double tri = ms("minify/mipmapped" + z), bi = ms("minify/bilinear_mip" + z),
@@ -539,18 +543,19 @@ void summary(const ts::bench::SummaryReporter& rep) {
 
 int main(int argc, char** argv) {
   auto add = [](const std::string& name, auto fn, auto... a) {
-    benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& st) {
-      g_running = name;
-      fn(st, a...);
-    })
+    benchmark::RegisterBenchmark(name.c_str(),
+                                 [=](benchmark::State& st) {
+                                   g_running = name;
+                                   fn(st, a...);
+                                 })
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime()
         ->ComputeStatistics("min", ts::bench::minimum);  // on a shared machine, the least disturbed repetition
   };
   for (int n : {256, 512, 1024})
     for (bool persp : {true, false})
-      add("costs/interpolation/" + std::string(persp ? "smooth/" : "noperspective/") + std::to_string(n),
-          interpolation, persp, n, 0);
+      add("costs/interpolation/" + std::string(persp ? "smooth/" : "noperspective/") + std::to_string(n), interpolation,
+          persp, n, 0);
   for (bool persp : {true, false})
     add("costs/interpolation/" + std::string(persp ? "smooth" : "noperspective") + "_8vec4/1024", interpolation, persp,
         1024, 8);
