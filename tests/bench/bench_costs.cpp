@@ -15,7 +15,8 @@
 //      256^2 height map) at the same view and the same diffuse lighting, as a 2-triangle quad whose fragment
 //      shader reads the height map (bump: normal from 4 neighbours; parallax: a 16-step search along the view
 //      ray, then the bump normal) against a grid with one vertex per texel displaced on the CPU, per-vertex
-//      normals from the same differences.
+//      normals from the same differences; displaced_grid_vertices_only draws the grid with
+//      GL_RASTERIZER_DISCARD, its vertex work alone.
 //   3. Seed 001 ¶18-19 (texture caching): "group polygons that use the same texture ... avoid texture
 //      switches".  -> costs/switches/{sorted,unsorted,sorted_batched}: 2,048 small quads, 32 textures;
 //      sorted binds 32 times, unsorted once per quad (a neighbour never shares its texture), both with one
@@ -229,8 +230,10 @@ constexpr int kRelief = 256;     // height map texels a side; the grid has one v
 constexpr float kDepth = 0.08f;  // mortar depth below the brick faces, object units (the wall is 2 wide)
 constexpr int kDetailFrame = 768;
 constexpr int kParallaxSteps = 16;
-enum Detail { kParallax, kBump, kGrid };
-const char* const kDetailKeys[] = {"parallax_quad", "bump_quad", "displaced_grid"};
+// kGridVertices: the grid with GL_RASTERIZER_DISCARD, the control that splits its cost: vertices fetched,
+// shaded and clipped (llvmpipe does this on the calling thread), nothing rasterised.
+enum Detail { kParallax, kBump, kGrid, kGridVertices };
+const char* const kDetailKeys[] = {"parallax_quad", "bump_quad", "displaced_grid", "displaced_grid_vertices_only"};
 
 // Bricks 64 x 32 texels, rows offset by half a brick, 2-texel mortar and a 6-texel bevel: height 0 in the mortar,
 // 1 on a brick's face.
@@ -281,7 +284,7 @@ Mesh detailMesh(Detail d, const std::vector<float>& hm) {
   Mesh m;
   const int n = kRelief;
   auto u = [&](int i) { return (float(i) + 0.5f) / float(n); };  // texel centres: the grid samples them exactly
-  if (d != kGrid) {
+  if (d != kGrid && d != kGridVertices) {
     m.vertex(2 * u(0) - 1, 2 * u(0) - 1, 0, u(0), u(0));
     m.vertex(2 * u(n - 1) - 1, 2 * u(0) - 1, 0, u(n - 1), u(0));
     m.vertex(2 * u(n - 1) - 1, 2 * u(n - 1) - 1, 0, u(n - 1), u(n - 1));
@@ -322,8 +325,8 @@ void detail(benchmark::State& st, Detail d) {
                                   "#version 120\nvarying vec3 p;\nvarying vec4 st;\n"
                                   "void main() { p = gl_Vertex.xyz; st = gl_MultiTexCoord0;\n"
                                   "  gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }\n",
-                                  "#version 120\n#define METHOD " + std::to_string(int(d)) + "\n#define STEPS " +
-                                      std::to_string(kParallaxSteps) + "\n" + kDetailFS);
+                                  "#version 120\n#define METHOD " + std::to_string(int(std::min(d, kGrid))) +
+                                      "\n#define STEPS " + std::to_string(kParallaxSteps) + "\n" + kDetailFS);
     // The wall tilted 60 degrees away, seen from 2.4 units: grazing enough that parallax matters.
     const glm::mat4 proj = glm::perspective(glm::radians(45.f), 1.f, 0.1f, 10.f);
     const glm::mat4 view = glm::rotate(glm::translate(glm::mat4(1), {0, 0, -2.4f}), glm::radians(-60.f), {1, 0, 0});
@@ -344,7 +347,9 @@ void detail(benchmark::State& st, Detail d) {
     glEnable(GL_DEPTH_TEST);
     timeFrames(st, [&] {
       glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      if (d == kGridVertices) glEnable(GL_RASTERIZER_DISCARD);  // after the clear, which it would discard too
       m.draw();
+      glDisable(GL_RASTERIZER_DISCARD);
     });
     glDisable(GL_DEPTH_TEST);
     glUseProgram(0);
@@ -559,7 +564,8 @@ int main(int argc, char** argv) {
   for (bool persp : {true, false})
     add("costs/interpolation/" + std::string(persp ? "smooth" : "noperspective") + "_8vec4/1024", interpolation, persp,
         1024, 8);
-  for (Detail d : {kParallax, kBump, kGrid}) add(std::string("costs/detail/") + kDetailKeys[d], detail, d);
+  for (Detail d : {kParallax, kBump, kGrid, kGridVertices})
+    add(std::string("costs/detail/") + kDetailKeys[d], detail, d);
   for (Order o : {kSorted, kUnsorted, kSortedBatched}) add(std::string("costs/switches/") + kOrderKeys[o], switches, o);
   for (int size : {2048, 4096})
     for (const MinFilter& f : kMinFilters)
