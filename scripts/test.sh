@@ -100,7 +100,7 @@ elif [ "$level" = full ]; then
   # The benchmark programs are compiled (into build/, reusing its objects),
   # so they cannot rot.
   stage "compile the benchmarks (build/, not run)" bash -c 'cmake --preset default -DTS_BUILD_BENCHMARKS=ON >/dev/null &&
-    cmake --build --preset default --target bench_figures bench_window bench_jitter bench_parallax'
+    cmake --build --preset default --target benchmarks'
   # The Windows build (MinGW-w64, its libraries cross-built from Debian's
   # sources) under Wine on Xvfb against this build: every figure and every
   # measurement in it, the command line's errors, one window per demo and the
