@@ -90,13 +90,32 @@ TextureDesc gradientTexture(int width, int height, bool alphaRamp) {
   return t;
 }
 
-TextureDesc renderedImageTexture(const Image& img, const std::string& generator, const std::string& what,
-                                 const std::string& demo,
-                                 std::vector<std::pair<std::string, std::string>> extraParams) {
+namespace {
+std::string digestOf(const Image& img) {
   uint64_t h = 1469598103934665603ull;  // FNV-1a 64
   for (uint8_t b : img.pixels) h = (h ^ b) * 1099511628211ull;
   char digest[20];
   std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(h));
+  return digest;
+}
+}  // namespace
+
+TextureDesc nestedPictureTexture(const Image& img, const Frame& frame, const std::string& generator,
+                                 const std::string& what) {
+  TextureDesc t;
+  t.name = generator;
+  t.params = {{"pass", what}, {"digest", digestOf(img)}};
+  t.image = std::make_shared<const Image>(img);
+  t.renderedFrom = std::make_shared<const Frame>(frame);
+  t.minFilter = t.magFilter = GL_LINEAR;
+  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
+  return t;
+}
+
+TextureDesc renderedImageTexture(const Image& img, const std::string& generator, const std::string& what,
+                                 const std::string& demo,
+                                 std::vector<std::pair<std::string, std::string>> extraParams) {
+  const std::string digest = digestOf(img);
   TextureDesc t;
   t.name = generator;
   t.params = {{"image", what}};

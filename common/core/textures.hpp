@@ -49,6 +49,14 @@ TextureDesc renderedImageTexture(const Image& img, const std::string& generator,
                                  const std::string& demo,
                                  std::vector<std::pair<std::string, std::string>> extraParams = {});
 
+// A picture GL drew in a demo's measure() (`img`, row 0 at the top) together with
+// the Frame that describes it (TextureDesc::renderedFrom): the sidecar writes
+// that frame, and the CPU reference recomputes it and holds GL's picture to
+// it.  Its params name the pass and an FNV-1a digest of the pixels (the upload
+// cache's key); GL_LINEAR, clamped.
+TextureDesc nestedPictureTexture(const Image& img, const Frame& frame, const std::string& generator,
+                                 const std::string& what);
+
 // A PNG, JPEG or 24/32-bit BMP file as a texture (row 0 of the picture = the top =
 // t = 1).  Throws ts::Error "<path>: <what is wrong>" for a missing,
 // unreadable or malformed file, and refuses sizes over the limits in

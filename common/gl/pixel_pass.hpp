@@ -28,14 +28,15 @@ inline Image pixelPass(Renderer& r, int w, int h, const char* what, const std::f
   });
 }
 
-// A w x h RGBA8 texture, one level (GL_TEXTURE_MAX_LEVEL 0): `img`'s texels (row 0 at t = 0), or none yet
-// (NULL: to be filled by glTexSubImage2D).  Bound to GL_TEXTURE_2D on return.
-inline GLuint texture2D(int w, int h, const Image* img, GLenum filter, GLenum wrap) {
+// A w x h texture (GL_RGBA8, or `internal`), one level (GL_TEXTURE_MAX_LEVEL 0): `img`'s texels (row 0 at
+// t = 0), or none yet (NULL: to be filled by glTexSubImage2D).  Bound to GL_TEXTURE_2D on return.
+inline GLuint texture2D(int w, int h, const Image* img, GLenum filter, GLenum wrap, GLenum internal = GL_RGBA8) {
   GLuint t = 0;
   glGenTextures(1, &t);
   glBindTexture(GL_TEXTURE_2D, t);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, img ? img->pixels.data() : nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               img ? img->pixels.data() : nullptr);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(filter));
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GLint(filter));
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(wrap));

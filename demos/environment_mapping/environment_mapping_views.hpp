@@ -103,18 +103,9 @@ inline ts::Frame referenceFrame(Pass p) {
 // keeps the renderer's upload cache apart for different pictures.
 inline ts::TextureDesc nestedTexture(ts::Renderer& r, const ts::Frame& inner, const std::string& what) {
   ts::Image img;
-  ts::TextureDesc t;
-  t.renderedBy = ts::recordRender(r, [&] { img = r.renderOffscreen(inner); });
-  uint64_t h = 1469598103934665603ull;  // FNV-1a 64
-  for (uint8_t c : img.pixels) h = (h ^ c) * 1099511628211ull;
-  char digest[20];
-  std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(h));
-  t.name = "environment_mapping_pass";
-  t.params = {{"pass", what}, {"digest", digest}};
-  t.image = std::make_shared<const ts::Image>(std::move(img));
-  t.renderedFrom = std::make_shared<const ts::Frame>(inner);
-  t.minFilter = t.magFilter = GL_LINEAR;
-  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
+  const ts::gl::CallList calls = ts::recordRender(r, [&] { img = r.renderOffscreen(inner); });
+  ts::TextureDesc t = ts::nestedPictureTexture(img, inner, "environment_mapping_pass", what);
+  t.renderedBy = calls;
   return t;
 }
 // The map view's panel (ts::layout::texturePanel of ts::envmaps::unwrappedMap:

@@ -342,12 +342,11 @@ ts::Frame TextureAnimation::buildAnimation(ts::Frame& f, const ts::Measurements&
     ta::pictureRow(
         f,
         {{&p->flipWhole, "frame " + frameK + ": whole upload",
-          M("{flipbook_bytes_per_frame[whole]|%.0f} bytes a frame"), p->flipWholeCalls},
+          M("{flipbook_bytes_per_frame[whole]|%.0f} bytes a frame")},
          {&p->flipPartial, "frame " + frameNext + ": partial upload",
-          M("{flipbook_bytes_shown[partial]|%.0f} bytes: {flipbook_rect_w|%.0f} x {flipbook_rect_h|%.0f} texels"),
-          p->flipPartialCalls},
+          M("{flipbook_bytes_shown[partial]|%.0f} bytes: {flipbook_rect_w|%.0f} x {flipbook_rect_h|%.0f} texels")},
          {&p->flipChanges, "what changed, " + frameK + " to " + frameNext,
-          M("{flipbook_changed_texels|%.0f} texels changed"), nullptr}},
+          M("{flipbook_changed_texels|%.0f} texels changed")}},
         {{ta::kChanged, "a texel that differs from the frame before"},
          {ta::kUploaded, "the rectangle the partial glTexSubImage2D sends"}},
         M("Bytes a frame, counted from the calls: whole {flipbook_bytes_per_frame[whole]|%.0f}, partial "
@@ -357,12 +356,10 @@ ts::Frame TextureAnimation::buildAnimation(ts::Frame& f, const ts::Measurements&
   } else if (view_ == 2) {
     ta::pictureRow(
         f,
-        {{&p->torchRight, "opaque, then back to front", M("{torch_order_error_px[right]|%.0f} pixels off the CPU"),
-          p->torchRightCalls},
-         {&p->torchWrong, "scene's order, depth on", M("{torch_order_error_px[wrong]|%.0f} pixels off"),
-          p->torchWrongCalls},
-         {&p->torchCpu, "the CPU's composite", "wall, handle, flames", nullptr},
-         {&p->torchWrongMask, "the scene's order: pixels off", M("{torch_order_error_px[wrong]|%.0f} red"), nullptr}},
+        {{&p->torchRight, "opaque, then back to front", M("{torch_order_error_px[right]|%.0f} pixels off the CPU")},
+         {&p->torchWrong, "scene's order, depth on", M("{torch_order_error_px[wrong]|%.0f} pixels off")},
+         {&p->torchCpu, "the CPU's composite", "wall, handle, flames"},
+         {&p->torchWrongMask, "the scene's order: pixels off", M("{torch_order_error_px[wrong]|%.0f} red")}},
         {{ta::kWrong,
           "a pixel over " + std::to_string(2 * ta::kTorchLevelsPerLayer) + " levels off the CPU's composite"}},
         "Right: wall and handle with depth writes on; then glDepthMask(GL_FALSE), blending (GL_SRC_ALPHA, "
@@ -374,13 +371,10 @@ ts::Frame TextureAnimation::buildAnimation(ts::Frame& f, const ts::Measurements&
   } else {
     ta::pictureRow(
         f,
-        {{&p->litCpu, "per-pixel lighting (CPU)", "time " + L::given("time, seconds", double(time_), "%.2f") + " s",
-          nullptr},
-         {&p->litDynamic, "recomputed each frame", M("RMS {dynamic_lightmap_rms_levels|%.2f} levels"),
-          p->litDynamicCalls},
-         {&p->litStale, "map of time 0 (stale)", M("RMS {dynamic_lightmap_rms_levels[stale]|%.2f} levels"),
-          p->litStaleCalls},
-         {&p->lightMap, "the light map, 32 x 32", M("{lightmap_bytes_per_frame|%.0f} bytes a frame"), nullptr}},
+        {{&p->litCpu, "per-pixel lighting (CPU)", "time " + L::given("time, seconds", double(time_), "%.2f") + " s"},
+         {&p->litDynamic, "recomputed each frame", M("RMS {dynamic_lightmap_rms_levels|%.2f} levels")},
+         {&p->litStale, "map of time 0 (stale)", M("RMS {dynamic_lightmap_rms_levels[stale]|%.2f} levels")},
+         {&p->lightMap, "the light map, 32 x 32", M("{lightmap_bytes_per_frame|%.0f} bytes a frame")}},
         {{ta::kLightNow, "the light now"}, {ta::kLightThen, "the light at time 0 (the stale map's)"}},
         "c = base x L: unit 0 the wall (GL_REPLACE), unit 1 the light map (GL_MODULATE, GL_LINEAR), refilled by "
         "glTexSubImage2D each frame; L = " +

@@ -66,7 +66,8 @@ inline FlipbookRun flipbookPass(Renderer& r, const std::vector<Image>& frames, b
   const int n = int(frames.size()), w = kFlipTexels * kFlipZoom;
   r.release();  // the record shows every object made
   gl::Recording rec;
-  const GLuint tex = texture2D(kFlipTexels, kFlipTexels, nullptr, GL_NEAREST, GL_CLAMP_TO_EDGE);
+  // Colour only: the flipbook shows the frames' colours (the torch's flames keep their alpha).
+  const GLuint tex = texture2D(kFlipTexels, kFlipTexels, nullptr, GL_NEAREST, GL_CLAMP_TO_EDGE, GL_RGB8);
   for (int step = 0; step <= n; ++step) {
     const int k = step % n;
     const TexRect whole{0, 0, kFlipTexels, kFlipTexels};

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <utility>
 
 #include "common/core/image.hpp"
 #include "demos/texture_animation/texture_animation_textures.hpp"
@@ -172,4 +173,51 @@ inline double bilinear(const Image& map, double x, double y) {
 inline Image lightMapped(const Image& base, int w, const Image& map) {
   return litPicture(base, w, [&](double x, double y) { return bilinear(map, x, y); });
 }
+
+// ---- the pictures the figures show beside GL's (texture_animation_textures.cpp remakes them from the sidecar) ----
+inline const glm::vec4 kChanged{1.0f, 0.0f, 1.0f, 1.0f};    // magenta: a texel that changed
+inline const glm::vec4 kUploaded{1.0f, 0.9f, 0.0f, 1.0f};   // yellow: the rectangle a partial upload sends
+inline const glm::vec4 kWrong{1.0f, 0.15f, 0.1f, 1.0f};     // red: a pixel off the CPU's composite
+inline const glm::vec4 kLightNow{1.0f, 0.9f, 0.0f, 1.0f};   // yellow: the light at --time
+inline const glm::vec4 kLightThen{0.0f, 0.9f, 1.0f, 1.0f};  // cyan: the light at time 0 (the stale map's)
+inline Rgba rgba(const glm::vec4& c) { return {uint8_t(c.r * 255), uint8_t(c.g * 255), uint8_t(c.b * 255), 255}; }
+
+// An image made `zoom` times larger, texel for texel (row order kept).
+inline Image magnified(const Image& img, int zoom) {
+  Image out(img.width * zoom, img.height * zoom);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) out.set(x, y, img.at(x / zoom, y / zoom));
+  return out;
+}
+inline Rgba dimmed(Rgba c) { return {uint8_t(c.r / 3), uint8_t(c.g / 3), uint8_t(c.b / 3), 255}; }
+
+// What changed from frame a to frame b: b's texels dimmed, the changed ones magenta, the rectangle's border yellow;
+// row 0 the top, kFlipZoom pixels a texel (as the readbacks beside it).
+inline Image changesPicture(const Image& a, const Image& b, const TexRect& r) {
+  Image out(a.width, a.height);
+  for (int j = 0; j < a.height; ++j)
+    for (int i = 0; i < a.width; ++i) {
+      const bool border = r.contains(i, j) && (i == r.x || i == r.x + r.w - 1 || j == r.y || j == r.y + r.h - 1);
+      const Rgba c = border ? rgba(kUploaded) : a.at(i, j) != b.at(i, j) ? rgba(kChanged) : dimmed(b.at(i, j));
+      out.set(i, a.height - 1 - j, c);
+    }
+  return magnified(out, kFlipZoom);
+}
+// The light map (row 0 the bottom) magnified to w x w, row 0 the top, with the light's place over the wall now
+// (yellow) and at time 0 (cyan) marked by a cross.
+inline Image lightMapPicture(const Image& map, int w, const glm::dvec3& now, const glm::dvec3& then) {
+  Image out(w, w);
+  for (int y = 0; y < w; ++y)
+    for (int x = 0; x < w; ++x) out.set(x, y, map.at(x * map.width / w, (w - 1 - y) * map.height / w));
+  for (const auto& [p, c] : {std::pair{then, kLightThen}, std::pair{now, kLightNow}}) {
+    const int cx = int(p.x * w), cy = w - 1 - int(p.y * w);
+    for (int d = -6; d <= 6; ++d)
+      for (int t = -1; t <= 1; ++t) {
+        if (cx + d >= 0 && cx + d < w && cy + t >= 0 && cy + t < w) out.set(cx + d, cy + t, rgba(c));
+        if (cx + t >= 0 && cx + t < w && cy + d >= 0 && cy + d < w) out.set(cx + t, cy + d, rgba(c));
+      }
+  }
+  return out;
+}
+
 }  // namespace ts::texanim

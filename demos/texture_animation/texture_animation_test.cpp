@@ -193,4 +193,23 @@ TEST(TextureAnimation, RecomputedLightMapFollowsTheLight) {
     }
   }
 }
+
+// The flipbook's and the light map's pictures are GL's readbacks of passes the Frame API cannot express
+// (glTexSubImage2D into a texture made once); each comes with a Frame describing what the pass drew, which the
+// sidecar nests in the figure so that the CPU reference recomputes it.  That Frame, rendered, is the pass's
+// picture (within a level), and the next flipbook frame's is not (the control).
+TEST(TextureAnimation, EachPassIsTheFrameTheSidecarNests) {
+  for (const char* view : {"flipbook", "lightmap"}) {
+    SCOPED_TRACE(view);
+    const ts::Measurements m = Demo("texture_animation", {"--view", view, "--time", "1.25"}).measure();
+    int passes = 0;
+    for (const ts::Measurement& x : m)
+      if (x.name.rfind("pass_frame_mismatch_px[", 0) == 0) {
+        EXPECT_EQ(x.value, 0) << x.name;
+        ++passes;
+      }
+    EXPECT_EQ(passes, 4) << "the flipbook's two pictures and the light map's two";
+    EXPECT_GT(value(m, "pass_frame_control_px[next_frame]"), 0) << "the next frame's Frame draws another picture";
+  }
+}
 }  // namespace

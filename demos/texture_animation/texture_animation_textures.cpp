@@ -1,16 +1,21 @@
-// demos/texture_animation/texture_animation_textures.cpp — the waterfall's texture
-// (texture_animation_textures.hpp), and its generator for the sidecar reader.
+// demos/texture_animation/texture_animation_textures.cpp — the demo's textures (texture_animation_textures.hpp),
+// and their generator for the sidecar reader.
 #include "demos/texture_animation/texture_animation_textures.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "common/core/error.hpp"
 #include "common/core/gl_enums.hpp"
 #include "common/core/texture_generators.hpp"
+#include "demos/texture_animation/texture_animation_math.hpp"
 
 namespace ts::texanim {
 namespace {
@@ -67,11 +72,99 @@ Image flameFrame(int size, int k, int n) {
 }
 
 namespace {
+// Seconds as the sidecar writes them: every digit a float holds, read back the same.
+std::string secondsText(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.9g", s);
+  return b;
+}
+TextureDesc picture(const std::string& name, std::vector<std::pair<std::string, std::string>> params, Image img,
+                    GLenum filter) {
+  TextureDesc t;
+  t.name = name;
+  t.params = std::move(params);
+  t.image = std::make_shared<const Image>(std::move(img));
+  t.minFilter = t.magFilter = filter;
+  t.wrapS = t.wrapT = GL_CLAMP_TO_EDGE;
+  return t;
+}
+// A picture made row 0 at the top (as a readback beside it), as a texture (row 0 at t = 0).
+Image upsideDown(Image img) {
+  img.flipVertical();
+  return img;
+}
+}  // namespace
+
+TextureDesc flameTexture(int size, int k, int n, bool opaque) {
+  Image img = flameFrame(size, k, n);
+  if (opaque)
+    for (size_t i = 3; i < img.pixels.size(); i += 4) img.pixels[i] = 255;
+  return picture("texture_animation_flame",
+                 {{"size", std::to_string(size)},
+                  {"frame", std::to_string(k)},
+                  {"frames", std::to_string(n)},
+                  {"opaque", opaque ? "1" : "0"}},
+                 std::move(img), GL_NEAREST);
+}
+
+TextureDesc lightMapTexture(int texels, double seconds) {
+  return picture("texture_animation_light_map", {{"texels", std::to_string(texels)}, {"seconds", secondsText(seconds)}},
+                 lightMapImage(texels, lightPosition(seconds)), GL_LINEAR);
+}
+
+TextureDesc litTexture(double seconds) {
+  return picture("texture_animation_lit", {{"seconds", secondsText(seconds)}},
+                 upsideDown(perPixelLit(*waterTexture(kFlipTexels).image, kLitPixels, lightPosition(seconds))),
+                 GL_LINEAR);
+}
+
+TextureDesc lightMapPictureTexture(double seconds) {
+  const glm::dvec3 now = lightPosition(seconds);
+  return picture("texture_animation_light_map_picture", {{"seconds", secondsText(seconds)}},
+                 upsideDown(lightMapPicture(lightMapImage(kLightTexels, now), kLitPixels, now, lightPosition(0))),
+                 GL_LINEAR);
+}
+
+TextureDesc changesTexture(int k) {
+  const Image a = flameFrame(kFlipTexels, k, kFlipFrames), b = flameFrame(kFlipTexels, k + 1, kFlipFrames);
+  return picture("texture_animation_changes", {{"frame", std::to_string(k)}},
+                 upsideDown(changesPicture(a, b, changedRect(a, b))), GL_LINEAR);
+}
+
+TextureDesc torchTexture(int k) {
+  const Image wall = *waterTexture(kFlipTexels).image;
+  const Image back = flameFrame(kFlipTexels, backFlameFrame(k), kFlipFrames);
+  const Image front = flameFrame(kFlipTexels, frontFlameFrame(k), kFlipFrames);
+  return picture("texture_animation_torch", {{"frame", std::to_string(k)}},
+                 upsideDown(torchComposite(wall, back, front)), GL_LINEAR);
+}
+
+namespace {
+double secondsParam(const TextureParams& params, const std::string& name) {
+  const std::string s = strParam(params, "seconds", name);
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || *end || !(v >= -1e6 && v <= 1e6))
+    throw Error("sidecar: texture '" + name + "': bad seconds '" + s + "'");
+  return v;
+}
+int rangedParam(const TextureParams& params, const std::string& key, const std::string& name, int lo, int hi) {
+  const int v = intParam(params, key, name);
+  if (v < lo || v > hi) throw Error("sidecar: texture '" + name + "': " + key + " out of range");
+  return v;
+}
 bool remake(const std::string& name, const TextureParams& params, TextureDesc* out) {
-  if (name != "texture_animation_water") return false;
-  const int size = intParam(params, "size", name);
-  if (size < 1 || size > 4096) throw Error("sidecar: texture '" + name + "': size out of range");
-  *out = waterTexture(size);
+  if (name == "texture_animation_water") *out = waterTexture(rangedParam(params, "size", name, 1, 4096));
+  else if (name == "texture_animation_flame")
+    *out = flameTexture(rangedParam(params, "size", name, 1, 4096), rangedParam(params, "frame", name, 0, 1 << 20),
+                        rangedParam(params, "frames", name, 1, 1024), rangedParam(params, "opaque", name, 0, 1) == 1);
+  else if (name == "texture_animation_light_map")
+    *out = lightMapTexture(rangedParam(params, "texels", name, 1, 4096), secondsParam(params, name));
+  else if (name == "texture_animation_lit") *out = litTexture(secondsParam(params, name));
+  else if (name == "texture_animation_light_map_picture") *out = lightMapPictureTexture(secondsParam(params, name));
+  else if (name == "texture_animation_changes") *out = changesTexture(rangedParam(params, "frame", name, 0, 1 << 20));
+  else if (name == "texture_animation_torch") *out = torchTexture(rangedParam(params, "frame", name, 0, 1 << 20));
+  else return false;
   return true;
 }
 }  // namespace

@@ -14,44 +14,69 @@
 #include "texture_animation_gl.hpp"
 
 namespace ts::texanim {
-// The pictures measure() made, for build(): GL's readbacks (row 0 the top) with the calls that drew them.
+// The pictures measure() made, for build(), as the figures' textures: GL's readbacks with the calls that drew
+// them and, where a Frame describes the pass, that Frame (a nested frame the CPU reference recomputes); the CPU's
+// pictures as generator textures (texture_animation_textures.hpp).
 struct Pictures {
-  Image flipWhole, flipPartial, flipChanges;  // frame k (whole), frame k + 1 (partial), what changed k -> k+1
-  gl::CallList flipWholeCalls, flipPartialCalls;
-  Image torchRight, torchWrong, torchCpu, torchWrongMask;
-  gl::CallList torchRightCalls, torchWrongCalls;
-  Image litCpu, litDynamic, litStale, lightMap;
-  gl::CallList litDynamicCalls, litStaleCalls;
+  TextureDesc flipWhole, flipPartial, flipChanges;  // frame k (whole), frame k + 1 (partial), what changed k -> k+1
+  TextureDesc torchRight, torchWrong, torchCpu, torchWrongMask;
+  TextureDesc litCpu, litDynamic, litStale, lightMap;
 };
 
-inline const glm::vec4 kChanged{1.0f, 0.0f, 1.0f, 1.0f};    // magenta: a texel that changed
-inline const glm::vec4 kUploaded{1.0f, 0.9f, 0.0f, 1.0f};   // yellow: the rectangle a partial upload sends
-inline const glm::vec4 kWrong{1.0f, 0.15f, 0.1f, 1.0f};     // red: a pixel off the CPU's composite
-inline const glm::vec4 kLightNow{1.0f, 0.9f, 0.0f, 1.0f};   // yellow: the light at --time
-inline const glm::vec4 kLightThen{0.0f, 0.9f, 1.0f, 1.0f};  // cyan: the light at time 0 (the stale map's)
-inline Rgba rgba(const glm::vec4& c) { return {uint8_t(c.r * 255), uint8_t(c.g * 255), uint8_t(c.b * 255), 255}; }
-
-// An image made `zoom` times larger, texel for texel (row order kept).
-inline Image magnified(const Image& img, int zoom) {
-  Image out(img.width * zoom, img.height * zoom);
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x) out.set(x, y, img.at(x / zoom, y / zoom));
-  return out;
+// ---- the passes as Frames -------------------------------------------------------------------------------------
+// What a pass of texture_animation_gl.hpp drew, as plain data: a w x w frame of one panel showing the unit square,
+// texture coordinates (0, 0) to (1, 1) as the pass's quad, unit 0 `tex` (GL_REPLACE) and, when given, `light` on
+// unit 1 (GL_MODULATE, reading unit 0's coordinates as the pass's glMultiTexCoord2f does).  The figure holds GL's
+// readback of the pass to it, and measure() checks that it draws the same picture (pass_frame_mismatch_px).
+inline Frame quadFrame(int w, const TextureDesc& tex, const TextureDesc* light = nullptr) {
+  Frame f;
+  f.width = f.height = w;
+  f.clearColor = {0, 0, 0, 1};
+  Panel p = layout::unitPanel("pass", {0, 0, w, w});
+  Batch b;
+  b.role = "quad";
+  b.texture = f.addTexture(tex);
+  b.texEnv = GL_REPLACE;
+  if (light) b.texture1 = f.addTexture(*light), b.texEnv1 = GL_MODULATE;
+  for (int c : {0, 1, 2, 0, 2, 3}) {
+    const glm::vec2 q(c == 1 || c == 2, c >= 2);
+    b.vertices.push_back({{q, 0.0f}, {q, 0.0f, 1.0f}, {1, 1, 1, 1}});
+  }
+  p.batches.push_back(b);
+  f.panels.push_back(p);
+  return f;
 }
-inline Rgba dimmed(Rgba c) { return {uint8_t(c.r / 3), uint8_t(c.g / 3), uint8_t(c.b / 3), 255}; }
-
-// What changed from frame a to frame b: b's texels dimmed, the changed ones magenta, the rectangle's border yellow;
-// row 0 the top, kFlipZoom pixels a texel (as the readbacks beside it).
-inline Image changesPicture(const Image& a, const Image& b, const TexRect& r) {
-  Image out(a.width, a.height);
-  for (int j = 0; j < a.height; ++j)
-    for (int i = 0; i < a.width; ++i) {
-      const bool border = r.contains(i, j) && (i == r.x || i == r.x + r.w - 1 || j == r.y || j == r.y + r.h - 1);
-      const Rgba c = border ? rgba(kUploaded) : a.at(i, j) != b.at(i, j) ? rgba(kChanged) : dimmed(b.at(i, j));
-      out.set(i, a.height - 1 - j, c);
-    }
-  return magnified(out, kFlipZoom);
+// The flipbook's picture of frame k: its texels, colour only (the flipbook's texture is GL_RGB8), kFlipZoom pixels
+// a texel.  The wall lit through the light map computed for the light at `mapSeconds`.
+inline Frame flipFrame(int k) {
+  return quadFrame(kFlipTexels * kFlipZoom, flameTexture(kFlipTexels, k, kFlipFrames, true));
 }
+inline Frame litFrame(double mapSeconds) {
+  const TextureDesc map = lightMapTexture(kLightTexels, mapSeconds);
+  return quadFrame(kLitPixels, waterTexture(kFlipTexels), &map);
+}
+// GL's readback of a pass as a figure's texture, with the Frame that describes it and the calls that drew it.
+inline TextureDesc passTexture(Renderer& r, const Image& shown, const Frame& described, const std::string& what,
+                               const gl::CallList& calls, Measurements& ms) {
+  // The description is checked here: its own render against the pass's picture, pixel for pixel.
+  const Image own = r.renderOffscreen(described);
+  ms.push_back({"pass_frame_mismatch_px[" + what + "]", double(wrongPixels(own, shown, 1)),
+                "pixels where the Frame describing the " + what +
+                    " pass (the sidecar's nested frame) renders more "
+                    "than a level off the pass's own picture"});
+  TextureDesc t = nestedPictureTexture(shown, described, "texture_animation_pass", what);
+  t.renderedBy = calls;
+  return t;
+}
+// A picture no Frame describes (the torch's, drawn with the depth writes off), shown as GL drew it.
+inline TextureDesc glPicture(const Image& img, const std::string& what, const gl::CallList& calls) {
+  TextureDesc t = renderedImageTexture(img, "texture_animation", what, "texture_animation");
+  // A panel's pixel centre may fall on a texel edge, where GL_NEAREST's tie goes either way.
+  t.minFilter = t.magFilter = GL_LINEAR;
+  t.renderedBy = calls;
+  return t;
+}
+
 // The reference dimmed, the pixels `wrongPixels` counts red.
 inline Image wrongMask(const Image& got, const Image& want, int levels) {
   Image out = want;
@@ -63,23 +88,6 @@ inline Image wrongMask(const Image& got, const Image& want, int levels) {
     }
   return out;
 }
-// The light map (row 0 the bottom) magnified to w x w, row 0 the top, with the light's place over the wall now
-// (yellow) and at time 0 (cyan) marked by a cross.
-inline Image lightMapPicture(const Image& map, int w, const glm::dvec3& now, const glm::dvec3& then) {
-  Image out(w, w);
-  for (int y = 0; y < w; ++y)
-    for (int x = 0; x < w; ++x) out.set(x, y, map.at(x * map.width / w, (w - 1 - y) * map.height / w));
-  for (const auto& [p, c] : {std::pair{then, kLightThen}, std::pair{now, kLightNow}}) {
-    const int cx = int(p.x * w), cy = w - 1 - int(p.y * w);
-    for (int d = -6; d <= 6; ++d)
-      for (int t = -1; t <= 1; ++t) {
-        if (cx + d >= 0 && cx + d < w && cy + t >= 0 && cy + t < w) out.set(cx + d, cy + t, rgba(c));
-        if (cx + t >= 0 && cx + t < w && cy + d >= 0 && cy + d < w) out.set(cx + t, cy + d, rgba(c));
-      }
-  }
-  return out;
-}
-
 // ---- measuring --------------------------------------------------------------------------------------------------
 // Frame k of the flipbook (k = the whole frames in --time), the torch at frame k, the light at `seconds`.
 inline Pictures measureAnimations(Renderer& r, int k, double seconds, double frameSeconds, Measurements& ms) {
@@ -125,25 +133,34 @@ inline Pictures measureAnimations(Renderer& r, int k, double seconds, double fra
   put("flipbook_mismatches[partial]", wrongPartial, "the same, partial uploads only");
   put("flipbook_mismatches[next_frame]", control,
       "the partial uploads' pictures against the next frame's texels instead (a control that must find some)");
-  pic.flipWhole = whole.shown[size_t(shown)], pic.flipWholeCalls = whole.calls;
-  pic.flipPartial = partial.shown[size_t(shown + 1)], pic.flipPartialCalls = partial.calls;
-  pic.flipChanges = changesPicture(frames[size_t(shown)], frames[size_t(next)], partial.rects[size_t(shown + 1)]);
+  pic.flipWhole = passTexture(r, whole.shown[size_t(shown)], flipFrame(shown), "flipbook_whole", whole.calls, ms);
+  pic.flipPartial = passTexture(r, partial.shown[size_t(shown + 1)], flipFrame(next), "flipbook_partial", partial.calls,
+                                ms);
+  pic.flipChanges = changesTexture(shown);
+  put("pass_frame_control_px[next_frame]",
+      wrongPixels(r.renderOffscreen(flipFrame(next)), whole.shown[size_t(shown)], 1),
+      "pixels where the Frame of the next flipbook frame renders more than a level off frame k's pass (a control "
+      "that must find some)");
 
   // The torch at frame k.
   const Image wall = *waterTexture(kFlipTexels).image;
   const Image& back = frames[size_t(backFlameFrame(k))];
   const Image& front = frames[size_t(frontFlameFrame(k))];
-  pic.torchCpu = torchComposite(wall, back, front);
-  pic.torchRight = torchPass(r, wall, back, front, kRightOrder, &pic.torchRightCalls);
-  pic.torchWrong = torchPass(r, wall, back, front, kSceneOrder, &pic.torchWrongCalls);
+  const Image torchCpu = torchComposite(wall, back, front);
+  gl::CallList rightCalls, wrongCalls;
+  const Image torchRight = torchPass(r, wall, back, front, kRightOrder, &rightCalls);
+  const Image torchWrong = torchPass(r, wall, back, front, kSceneOrder, &wrongCalls);
   const Image frontToBack = torchPass(r, wall, back, front, kFrontToBack, nullptr);
   const int levels = 2 * kTorchLevelsPerLayer;  // two flames blended over the opaque layers
-  pic.torchWrongMask = wrongMask(pic.torchWrong, pic.torchCpu, levels);
-  put("torch_order_error_px[right]", wrongPixels(pic.torchRight, pic.torchCpu, levels),
+  pic.torchCpu = torchTexture(k);
+  pic.torchRight = glPicture(torchRight, "the torch in the right order", rightCalls);
+  pic.torchWrong = glPicture(torchWrong, "the torch in the scene's order", wrongCalls);
+  pic.torchWrongMask = glPicture(wrongMask(torchWrong, torchCpu, levels), "the scene's order: pixels off", nullptr);
+  put("torch_order_error_px[right]", wrongPixels(torchRight, torchCpu, levels),
       "pixels more than 2 levels off the CPU's composite: opaque first, flames back to front, depth writes off");
-  put("torch_order_error_px[wrong]", wrongPixels(pic.torchWrong, pic.torchCpu, levels),
+  put("torch_order_error_px[wrong]", wrongPixels(torchWrong, torchCpu, levels),
       "the same, every layer in the scene's order (front flame first) with depth writes on");
-  put("torch_order_error_px[front_to_back]", wrongPixels(frontToBack, pic.torchCpu, levels),
+  put("torch_order_error_px[front_to_back]", wrongPixels(frontToBack, torchCpu, levels),
       "the same, opaque first and depth writes off but the flames front to back (the back one blended last)");
   put("torch_tolerance_levels", levels, "levels a pixel may differ: one rounding a blended layer");
   measureProgress(0.6);
@@ -152,19 +169,20 @@ inline Pictures measureAnimations(Renderer& r, int k, double seconds, double fra
   const glm::dvec3 now = lightPosition(seconds), then = lightPosition(0);
   const Image base = wall;
   const Image mapNow = lightMapImage(kLightTexels, now), mapThen = lightMapImage(kLightTexels, then);
-  pic.litCpu = perPixelLit(base, kLitPixels, now);
+  const Image litCpu = perPixelLit(base, kLitPixels, now);
   const Image mapBefore = lightMapImage(kLightTexels, lightPosition(seconds - frameSeconds));
   const LightRun dynamic = lightMapPass(r, base, {mapBefore, mapNow}), stale = lightMapPass(r, base, {mapThen});
-  pic.litDynamic = dynamic.shown, pic.litDynamicCalls = dynamic.calls;
-  pic.litStale = stale.shown, pic.litStaleCalls = stale.calls;
-  pic.lightMap = lightMapPicture(mapNow, kLitPixels, now, then);
-  put("dynamic_lightmap_rms_levels", rmsRgb(pic.litDynamic, pic.litCpu),
+  pic.litCpu = litTexture(seconds);
+  pic.litDynamic = passTexture(r, dynamic.shown, litFrame(seconds), "light_map_now", dynamic.calls, ms);
+  pic.litStale = passTexture(r, stale.shown, litFrame(0), "light_map_stale", stale.calls, ms);
+  pic.lightMap = lightMapPictureTexture(seconds);
+  put("dynamic_lightmap_rms_levels", rmsRgb(dynamic.shown, litCpu),
       "8-bit levels RMS: base x the light map recomputed for this frame's light (GL) against per-pixel lighting");
-  put("dynamic_lightmap_rms_levels[stale]", rmsRgb(pic.litStale, pic.litCpu),
+  put("dynamic_lightmap_rms_levels[stale]", rmsRgb(stale.shown, litCpu),
       "the same with the light map computed for time 0 and never re-uploaded");
-  put("dynamic_lightmap_rms_levels[predicted]", rmsRgb(lightMapped(base, kLitPixels, mapNow), pic.litCpu),
+  put("dynamic_lightmap_rms_levels[predicted]", rmsRgb(lightMapped(base, kLitPixels, mapNow), litCpu),
       "the same computed on the CPU: the map's bilinear interpolation against per-pixel lighting");
-  put("dynamic_lightmap_gl_vs_cpu_rms", rmsRgb(pic.litDynamic, lightMapped(base, kLitPixels, mapNow)),
+  put("dynamic_lightmap_gl_vs_cpu_rms", rmsRgb(dynamic.shown, lightMapped(base, kLitPixels, mapNow)),
       "GL's light-mapped picture against the CPU's bilinear prediction of it (rounding only)");
   put("lightmap_bytes_per_frame", dynamic.bytes.empty() ? 0.0 : dynamic.bytes.back(),
       "bytes glTexSubImage2D sent a frame: the whole light map (counted from the calls)");
@@ -177,9 +195,8 @@ inline Pictures measureAnimations(Renderer& r, int k, double seconds, double fra
 // ---- the figures' row of pictures -----------------------------------------------------------------------------
 namespace L = ts::layout;
 struct Picture {
-  const Image* image;
+  const TextureDesc* texture;
   L::Text title, note;
-  gl::CallList calls;
 };
 // The pictures side by side (or in a grid) above a legend and a band for the numbers, as many lines as they take
 // at the frame's width (a small window wraps them rather than cutting them).
@@ -195,11 +212,7 @@ inline void pictureRow(Frame& f, const std::vector<Picture>& ps, const std::vect
   const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band - key};
   const std::vector<L::Cell> cells = L::flow(area, {int(ps.size()), 1.0f, 1, 1, 10, 2, 150});
   for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
-    TextureDesc t = renderedImageTexture(*ps[k].image, "texture_animation", ps[k].title.text, "texture_animation");
-    // A panel's pixel centre may fall on a texel edge, where GL_NEAREST's tie goes either way.
-    t.minFilter = t.magFilter = GL_LINEAR;
-    t.renderedBy = ps[k].calls;
-    f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), cells[k].picture, t));
+    f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), cells[k].picture, *ps[k].texture));
     L::caption(f, cells[k].above, ps[k].title, L::kWhite, cells[k].scale);
     L::caption(f, cells[k].below, ps[k].note, L::kAmber, cells[k].scale);
   }

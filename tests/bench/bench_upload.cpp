@@ -51,7 +51,7 @@ void benchUpload(benchmark::State& st, int size, bool partial) {
     const Loop l = loop(size, partial);
     std::vector<ts::Image> parts;  // packed before the clock runs: the benchmark times the upload alone
     for (int k = 0; k < ta::kFlipFrames; ++k) parts.push_back(ta::subImage(l.frames[size_t(k)], l.rects[size_t(k)]));
-    const GLuint tex = ta::makeTexture(size, size, &l.frames[0], GL_NEAREST, GL_CLAMP_TO_EDGE);
+    const GLuint tex = ts::texture2D(size, size, &l.frames[0], GL_NEAREST, GL_CLAMP_TO_EDGE);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     size_t k = 0;
     int64_t bytes = 0;
