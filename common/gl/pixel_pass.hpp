@@ -44,4 +44,8 @@ inline GLuint texture2D(int w, int h, const Image* img, GLenum filter, GLenum wr
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
   return t;
 }
+// `img` as a texture of its size (GL_NEAREST and GL_REPEAT unless told).
+inline GLuint imageTexture(const Image& img, GLenum filter = GL_NEAREST, GLenum wrap = GL_REPEAT) {
+  return texture2D(img.width, img.height, &img, filter, wrap);
+}
 }  // namespace ts

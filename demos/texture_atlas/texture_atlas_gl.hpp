@@ -48,10 +48,9 @@ inline ObjectsRun objectsPass(Renderer& r, bool atlas) {
   r.release();
   gl::Recording rec;
   std::vector<GLuint> textures;
-  auto nearest = [](const Image& img) { return texture2D(img.width, img.height, &img, GL_NEAREST, GL_REPEAT); };
-  if (atlas) textures.push_back(nearest(atlasImage(0)));
+  if (atlas) textures.push_back(imageTexture(atlasImage(0)));
   else
-    for (int k = 0; k < kTiles; ++k) textures.push_back(nearest(tileImage(k)));
+    for (int k = 0; k < kTiles; ++k) textures.push_back(imageTexture(tileImage(k)));
   const size_t drawing = rec.calls().size();
   const int side = kGrid * kTile;
   run.picture = pixelPass(r, side, side, "the objects", [&] {

@@ -51,9 +51,9 @@ void benchObjects(benchmark::State& st, int n, bool atlas) {
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
     // Object k shows tile k mod N: N separate textures (one per object, as a scene of N materials has), or the atlas.
     std::vector<GLuint> textures;
-    if (atlas) textures.push_back(A::nearestTexture(A::atlasImage(0)));
+    if (atlas) textures.push_back(ts::imageTexture(A::atlasImage(0)));
     else
-      for (int k = 0; k < n; ++k) textures.push_back(A::nearestTexture(A::tileImage(k % A::kTiles)));
+      for (int k = 0; k < n; ++k) textures.push_back(ts::imageTexture(A::tileImage(k % A::kTiles)));
     const float side = float(A::atlasSize(0));
     for (auto _ : st) {
       glClear(GL_COLOR_BUFFER_BIT);
