@@ -129,6 +129,13 @@ int captionLines(const std::string& text, int scale, float width) {
   return int(wrap(text, 1, width).size());
 }
 
+std::pair<Box, Box> stackApart(const Box& b, int scale, const std::string& lower) {
+  const float lines = std::max(1.0f, std::round(b.h() / lineHeight(scale)));
+  const float need = std::clamp(float(captionLines(lower, scale, b.w())), 1.0f, std::max(1.0f, lines - 1));
+  const float mid = b.y0 + b.h() * (lines - need) / lines;
+  return {{b.x0, b.y0, b.x1, mid}, {b.x0, mid, b.x1, b.y1}};
+}
+
 Text operator+(const Text& a, const Text& b) {
   Text out = a;
   out.text += b.text;
@@ -349,6 +356,27 @@ float phrases(Frame& f, Box band, const std::vector<Text>& parts, glm::vec4 colo
     return y - float(4 * s);
   }
   return caption(f, band, all, color, scale, align);  // a phrase wider than the band: wrapped at its words
+}
+
+int legendLines(const std::vector<LegendEntry>& entries, int scale, float width) {
+  if (entries.empty()) return 0;
+  // As legend() places them: left to right, a new line when the next would not fit.
+  const float swatch = text::height(scale), gap = 8.0f * float(scale);
+  int lines = 1;
+  float x = 0;
+  for (const LegendEntry& e : entries) {
+    const float w = swatch + 4.0f * float(scale) + text::width(e.meaning, scale);
+    if (x > 0 && x + w > width) x = 0, ++lines;
+    x += w + gap;
+  }
+  return lines;
+}
+
+float columnHeight(const std::vector<Text>& texts, int scale, float width) {
+  float h = 0;
+  // Each caption's lines, and the leading Column::add() puts after it: a line height a line.
+  for (const Text& t : texts) h += float(captionLines(t.text, scale, width)) * lineHeight(scale);
+  return h;
 }
 
 bool Column::add(const Text& text, glm::vec4 color, int scale, Align align, glm::vec4 background) {

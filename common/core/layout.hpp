@@ -186,6 +186,16 @@ float phrases(Frame& f, Box band, const std::vector<Text>& parts, glm::vec4 colo
 // The lines caption() would use at most: wrapped text at the scale that
 // fits `width` (for reserving a band's height before placing it).
 int captionLines(const std::string& text, int scale, float width);
+// A band cut for two captions stacked: the lower gets the lines `lower`
+// needs at the band's width (all but one at most), the upper the rest.  For
+// a two-line band whose texts take a line each, halves().
+std::pair<Box, Box> stackApart(const Box& b, int scale, const std::string& lower);
+
+// The lines legend() takes for `entries` at `scale` across `width` (0: none),
+// and the height a Column takes for `texts` at `scale` across `width`: for
+// reserving a figure's bands before laying out its pictures in the rest.
+int legendLines(const std::vector<LegendEntry>& entries, int scale, float width);
+float columnHeight(const std::vector<Text>& texts, int scale, float width);
 
 // Lines of text stacked downwards in a box (a figure's notes): each add()
 // takes the room its caption needs; what no longer fits is left out.

@@ -272,15 +272,14 @@ ts::Frame TextureAnimation::build(int width, int height, const ts::Measurements&
     for (const L::Text& t : below[size_t(i)]) under.back().push_back(t.text);
   }
   const std::vector<L::Cell> cells = L::flowFitting({6, 6, float(width) - 6, float(height) - 6}, spec, above, under);
-  auto lines = [&](const L::Text& t) { return L::captionLines(t.text, cells[0].scale, cells[0].above.w()); };
   const int tex = f.addTexture(ts::texanim::waterTexture(kTexels));
   for (int i = 0; i < kFramesShown; ++i) {
     const L::Cell& c = cells[size_t(i)];
     f.panels.push_back(quadPanel("frame_" + std::to_string(i), c.picture, tex, tms[size_t(i)]));
     // The title's lines, then the matrix's (at the figure's size, the two halves of a two-line band).
-    const float split = c.above.y1 - float(lines(matrices[size_t(i)])) * L::lineHeight(c.scale);
-    L::caption(f, {c.above.x0, c.above.y0, c.above.x1, split}, titles[size_t(i)], L::kWhite, c.scale);
-    L::caption(f, {c.above.x0, split, c.above.x1, c.above.y1}, matrices[size_t(i)], L::kWhite, c.scale);
+    const auto [upper, lower] = L::stackApart(c.above, c.scale, matrices[size_t(i)].text);
+    L::caption(f, upper, titles[size_t(i)], L::kWhite, c.scale);
+    L::caption(f, lower, matrices[size_t(i)], L::kWhite, c.scale);
     L::phrases(f, c.below, below[size_t(i)], L::kAmber, c.scale);
   }
   return f;

@@ -203,14 +203,13 @@ struct Picture {
 inline void pictureRow(Frame& f, const std::vector<Picture>& ps, const std::vector<LegendEntry>& legend,
                        const L::Text& numbers) {
   const int lines = std::max(2, L::captionLines(numbers.text, 1, float(f.width - 16)));
-  // The key on one line when its entries fit the width, else a line an entry (L::legend wraps them).
-  float keyWidth = 0;
-  for (const LegendEntry& e : legend) keyWidth += text::width(e.meaning, 1) + L::lineHeight(1) + 16;
-  const int keyLines = keyWidth <= float(f.width - 16) ? 1 : int(legend.size());
   const float band = L::lineHeight(1) * float(lines) + 8;
-  const float key = legend.empty() ? 0 : L::lineHeight(1) * float(keyLines) + 4;
+  const float key = legend.empty() ? 0 : L::lineHeight(1) * float(L::legendLines(legend, 1, float(f.width - 16))) + 4;
   const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band - key};
-  const std::vector<L::Cell> cells = L::flow(area, {int(ps.size()), 1.0f, 1, 1, 10, 2, 150});
+  // A narrow window wraps the titles and notes rather than cutting them.
+  std::vector<L::Stack> above, below;
+  for (const Picture& p : ps) above.push_back({p.title.text}), below.push_back({p.note.text});
+  const std::vector<L::Cell> cells = L::flowFitting(area, {int(ps.size()), 1.0f, 1, 1, 10, 2, 150}, above, below);
   for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
     f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), cells[k].picture, *ps[k].texture));
     L::caption(f, cells[k].above, ps[k].title, L::kWhite, cells[k].scale);

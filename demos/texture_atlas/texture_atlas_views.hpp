@@ -229,21 +229,14 @@ inline TextureDesc floorPicture(const Image& img, const Frame& frame, const std:
 // The pictures in a grid above a legend and a band of `lines` numbers.
 inline void pictureGrid(Frame& f, const std::vector<Picture>& ps, float aspect, const std::vector<LegendEntry>& legend,
                         const std::vector<L::Text>& lines) {
-  int bandLines = 0;
-  for (const L::Text& t : lines) bandLines += L::captionLines(t.text, 1, float(f.width - 16));
-  // The key's lines as L::legend wraps them: entries left to right, a new line when the next would not fit.
-  int keyLines = legend.empty() ? 0 : 1;
-  const float keyRoom = float(f.width - 16);
-  float x = 0;
-  for (const LegendEntry& e : legend) {
-    const float w = text::height(1) + 4 + text::width(e.meaning, 1);
-    if (x > 0 && x + w > keyRoom) x = 0, ++keyLines;
-    x += w + 8;
-  }
-  const float band = L::lineHeight(1) * float(bandLines) + 8;
-  const float key = legend.empty() ? 0 : L::lineHeight(1) * float(keyLines) + 4;
+  const float width = float(f.width - 16);
+  const float band = L::columnHeight(lines, 1, width) + 8;
+  const float key = legend.empty() ? 0 : L::lineHeight(1) * float(L::legendLines(legend, 1, width)) + 4;
   const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band - key};
-  const std::vector<L::Cell> cells = L::flow(area, {int(ps.size()), aspect, 1, 1, 10, 2, 150});
+  // A narrow window wraps the titles and notes rather than cutting them.
+  std::vector<L::Stack> above, below;
+  for (const Picture& p : ps) above.push_back({p.title.text}), below.push_back({p.note.text});
+  const std::vector<L::Cell> cells = L::flowFitting(area, {int(ps.size()), aspect, 1, 1, 10, 2, 150}, above, below);
   for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
     f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), cells[k].picture, ps[k].texture));
     for (const Batch& b : ps[k].over) f.panels.back().batches.push_back(b);

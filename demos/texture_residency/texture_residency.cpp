@@ -165,96 +165,126 @@ ts::Frame TextureResidency::build(int width, int height, const ts::Measurements&
 ts::Frame TextureResidency::buildSizes(ts::Frame& f, const ts::Measurements& m) const {
   namespace L = ts::layout;
   const R::Detail* d = m.detailAs<R::Detail>();
-  const float band = L::lineHeight(1) * 4 + 8, key = L::lineHeight(1) + 4;
+  const ts::Rgba mc = R::kMarkerColour;
+  const std::vector<ts::LegendEntry> legend = {
+      {{mc.r / 255.0f, mc.g / 255.0f, mc.b / 255.0f, 1.0f}, "the marker: the same (s, t) square at every size"}};
+  const std::vector<std::pair<L::Text, glm::vec4>> notes = {
+      {L::measuredText(m, "The same (s, t) at every size: the marker lies at most {marker_offset_px[1024]|%.1f} px "
+                          "from its 64^2 place (a 64^2 texel is ") +
+           L::given("pixels a 64^2 texel covers in the 256 px render", R::kSizePanelPx / 64.0, "%.0f") +
+           " px); (u, v) = (s w, t h) grows with the size.",
+       L::kAmber},
+      {L::measuredText(m,
+                       "glTexImage2D(GL_PROXY_TEXTURE_2D, ...) of 1024^2: GL_TEXTURE_WIDTH {proxy_width[1024]|%.0f}; "
+                       "of twice GL_MAX_TEXTURE_SIZE: {proxy_width[2max]|%.0f}, so the program halves it until "
+                       "it fits."),
+       L::kAmber},
+      {"GL_MAX_TEXTURE_SIZE and the size that fits are the backend's own (sidecar: max_texture_size, "
+       "proxy_settled_size).",
+       L::kWhite}};
+  // The captions first: the bands take the lines they need at this width (a narrow window wraps them).
+  std::vector<L::Text> titles;
+  std::vector<std::vector<L::Text>> unders;
+  std::vector<L::Stack> above, below;
+  for (const int size : R::kSizes) {
+    const std::string key = "[" + std::to_string(size) + "]";
+    titles.push_back(L::given("texture side, texels", size, "%.0f") + " x " +
+                     L::given("texture side, texels", size, "%.0f") + " texels");
+    unders.push_back({"(s, t) = (" + L::given("the marker's s", R::kMarkerS, "%.4f") + ", " +
+                          L::given("the marker's t", R::kMarkerT, "%.4f") + ") -> (u, v) = (" +
+                          L::given("u = s w, texels", R::kMarkerS * size, "%.0f") + ", " +
+                          L::given("v = t h, texels", R::kMarkerT * size, "%.0f") + ") texels;",
+                      L::measuredText(m, "marker at (" + std::string("{marker_px_x" + key + "|%.1f}, {marker_px_y" +
+                                                                     key + "|%.1f}) px of 256"))});
+    above.push_back({titles.back().text});
+    below.emplace_back();
+    for (const L::Text& t : unders.back()) below.back().push_back(t.text);
+  }
+  const float width = float(f.width - 16);
+  std::vector<L::Text> noteTexts;
+  for (const auto& n : notes) noteTexts.push_back(n.first);
+  const float band = L::columnHeight(noteTexts, 1, width) + 8;
+  const float key = L::lineHeight(1) * float(L::legendLines(legend, 1, width)) + 4;
   L::FlowSpec spec;
   spec.n = int(R::kSizes.size()), spec.linesAbove = 1, spec.linesBelow = 2, spec.gap = 16, spec.maxScale = 2;
-  const std::vector<L::Cell> cells = L::flow({8, 8, float(f.width - 8), float(f.height) - 8 - band - key}, spec);
-  const ts::Rgba mc = R::kMarkerColour;
-  L::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band},
-            {{{mc.r / 255.0f, mc.g / 255.0f, mc.b / 255.0f, 1.0f}, "the marker: the same (s, t) square at every size"}},
-            1);
+  const std::vector<L::Cell> cells = L::flowFitting({8, 8, float(f.width - 8), float(f.height) - 8 - band - key}, spec,
+                                                    above, below);
+  L::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band}, legend, 1);
   for (size_t k = 0; k < cells.size(); ++k) {
     const int size = R::kSizes[k];
-    const std::string key = "[" + std::to_string(size) + "]";
     // A whole multiple of 64 pixels a side: every edge between colours (the checks, the marker: 64ths) then falls
     // between pixels, never through a pixel's centre where GL_NEAREST's tie could go either way.
-    const int side = std::max(64, std::min(cells[k].picture.w, cells[k].picture.h) / 64 * 64);
+    // (A window too small for 64 pixels takes the cell as it is: a tie or two rather than text overlapped.)
+    const int fit = std::min(cells[k].picture.w, cells[k].picture.h), side = fit >= 64 ? fit / 64 * 64 : fit;
     f.panels.push_back(R::sizePanel(f, "size_" + std::to_string(size), L::centred(cells[k].picture, side, side), size));
     // The size queries' calls go into the listing with the first panel's texture.
     if (k == 0 && d) f.textures[size_t(f.panels.back().batches[0].texture)].renderedBy = d->sizeCalls;
-    L::caption(f, cells[k].above,
-               L::given("texture side, texels", size, "%.0f") + " x " + L::given("texture side, texels", size, "%.0f") +
-                   " texels",
-               L::kWhite, cells[k].scale);
-    L::phrases(f, cells[k].below,
-               {"(s, t) = (" + L::given("the marker's s", R::kMarkerS, "%.4f") + ", " +
-                    L::given("the marker's t", R::kMarkerT, "%.4f") + ") -> (u, v) = (" +
-                    L::given("u = s w, texels", R::kMarkerS * size, "%.0f") + ", " +
-                    L::given("v = t h, texels", R::kMarkerT * size, "%.0f") + ") texels;",
-                L::measuredText(m, "marker at (" + std::string("{marker_px_x" + key + "|%.1f}, {marker_px_y" + key +
-                                                               "|%.1f}) px of 256"))},
-               L::kAmber, cells[k].scale);
+    L::caption(f, cells[k].above, titles[k], L::kWhite, cells[k].scale);
+    L::phrases(f, cells[k].below, unders[k], L::kAmber, cells[k].scale);
   }
-  L::Column notes(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)});
-  notes.add(L::measuredText(m,
-                            "The same (s, t) at every size: the marker lies at most {marker_offset_px[1024]|%.1f} px "
-                            "from its 64^2 place (a 64^2 texel is ") +
-                L::given("pixels a 64^2 texel covers in the 256 px render", R::kSizePanelPx / 64.0, "%.0f") +
-                " px); (u, v) = (s w, t h) grows with the size.",
-            L::kAmber, 1);
-  notes.add(
-      L::measuredText(m, "glTexImage2D(GL_PROXY_TEXTURE_2D, ...) of 1024^2: GL_TEXTURE_WIDTH {proxy_width[1024]|%.0f}; "
-                         "of twice GL_MAX_TEXTURE_SIZE: {proxy_width[2max]|%.0f}, so the program halves it until "
-                         "it fits."),
-      L::kAmber, 1);
-  notes.add("GL_MAX_TEXTURE_SIZE and the size that fits are the backend's own (sidecar: max_texture_size, "
-            "proxy_settled_size).",
-            L::kWhite, 1);
+  L::Column column(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)});
+  for (const auto& [text, colour] : notes) column.add(text, colour, 1);
   return f;
 }
 
 // ---- residency: the quad at each distance, the levels its colour says GL read, the memory they need ---------------
 ts::Frame TextureResidency::buildResidency(ts::Frame& f, const ts::Measurements& m) const {
   namespace L = ts::layout;
-  const float band = L::lineHeight(1) * 4 + 8, key = L::lineHeight(1) + 4;
+  std::vector<ts::LegendEntry> legend;
+  for (int l = 0; l < 6; ++l) legend.push_back({R::levelColour(l), "level " + std::to_string(l)});
+  const ts::Measurement* far = nullptr;
+  for (const ts::Measurement& x : m)
+    if (x.name == "resident_fraction[24]") far = &x;
+  const std::vector<std::pair<L::Text, glm::vec4>> notes = {
+      {"Levels k + (k + 1), f: GL_LINEAR_MIPMAP_LINEAR's two levels and the second's weight, decoded from the "
+       "colour; resident = the levels from the finest read down to the 1x1, over the whole chain (" +
+           L::measuredText(m, "{chain_over_level0|%.3f}") + " of level 0).",
+       L::kWhite},
+      {std::string("Buss VI.1.3: a distant texture needs only its lower-resolution levels in fast memory.  ") +
+           (far && far->value < 0.01 ? "Measured: it holds, " : "Measured: ") +
+           "at d = " + L::given("distance", R::kDistances.back(), "%.0f") +
+           L::measuredText(m, " only {resident_fraction[24]|%.4f} of the chain need be resident."),
+       L::kAmber}};
+  // The captions first: the bands take the lines they need at this width (a narrow window wraps them).
+  std::vector<std::pair<L::Text, L::Text>> titles;
+  std::vector<std::vector<L::Text>> unders;
+  std::vector<L::Stack> above, below;
+  for (const double d : R::kDistances) {
+    const std::string n = "[" + R::distanceKey(d) + "]";
+    titles.push_back({"d = " + L::given("distance", d, "%.1f"),
+                      "lambda = log2 d = " + L::given("lambda = log2 d", R::lambdaAt(d), "%.2f")});
+    unders.push_back({L::measuredText(m, "reads levels {finest_level_read" + n + "|%.0f} + {second_level_read" + n +
+                                             "|%.0f}, f {blend_weight" + n + "|%.2f}:"),
+                      L::measuredText(m, "{resident_fraction" + n + "|%.4f} of the chain resident")});
+    above.push_back({titles.back().first.text, titles.back().second.text});
+    below.push_back({unders.back()[0].text, unders.back()[1].text});
+  }
+  const float width = float(f.width - 16);
+  std::vector<L::Text> noteTexts;
+  for (const auto& n : notes) noteTexts.push_back(n.first);
+  const float band = L::columnHeight(noteTexts, 1, width) + 8;
+  const float key = L::lineHeight(1) * float(L::legendLines(legend, 1, width)) + 4;
   L::FlowSpec spec;
   spec.n = int(R::kDistances.size()), spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 12, spec.maxScale = 1;
-  const std::vector<L::Cell> cells = L::flow({8, 8, float(f.width - 8), float(f.height) - 8 - band - key}, spec);
+  const std::vector<L::Cell> cells = L::flowFitting({8, 8, float(f.width - 8), float(f.height) - 8 - band - key}, spec,
+                                                    above, below);
   const int tex = f.addTexture(R::levelTexture());
   for (size_t k = 0; k < cells.size(); ++k) {
     const double d = R::kDistances[k];
-    const std::string n = "[" + R::distanceKey(d) + "]";
     // The measured panel's size (192 px) when the cell has room: then the picture is the measurement's.
     const int side = std::min({R::kDistancePanelPx, cells[k].picture.w, cells[k].picture.h});
     f.panels.push_back(
         R::distancePanel("distance_" + std::to_string(k), L::centred(cells[k].picture, side, side), tex, d));
-    const auto [top, second] = L::halves(cells[k].above);
-    L::caption(f, top, "d = " + L::given("distance", d, "%.1f"), L::kWhite, cells[k].scale);
-    L::caption(f, second, "lambda = log2 d = " + L::given("lambda = log2 d", R::lambdaAt(d), "%.2f"), L::kWhite,
-               cells[k].scale);
-    L::phrases(f, cells[k].below,
-               {L::measuredText(m, "reads levels {finest_level_read" + n + "|%.0f} + {second_level_read" + n +
-                                       "|%.0f}, f {blend_weight" + n + "|%.2f}:"),
-                L::measuredText(m, "{resident_fraction" + n + "|%.4f} of the chain resident")},
-               L::kAmber, cells[k].scale);
+    // The distance's lines over lambda's (at the figure's size, the two halves of a two-line band).
+    const L::Box& b = cells[k].above;
+    const auto [upper, lower] = L::stackApart(b, cells[k].scale, titles[k].second.text);
+    L::caption(f, upper, titles[k].first, L::kWhite, cells[k].scale);
+    L::caption(f, lower, titles[k].second, L::kWhite, cells[k].scale);
+    L::phrases(f, cells[k].below, unders[k], L::kAmber, cells[k].scale);
   }
-  std::vector<ts::LegendEntry> legend;
-  for (int l = 0; l < 6; ++l) legend.push_back({R::levelColour(l), "level " + std::to_string(l)});
   L::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band}, legend, 1);
-  const ts::Measurement* far = nullptr;
-  for (const ts::Measurement& x : m)
-    if (x.name == "resident_fraction[24]") far = &x;
-  L::Column notes(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)});
-  notes.add(
-      "Levels k + (k + 1), f: GL_LINEAR_MIPMAP_LINEAR's two levels and the second's weight, decoded from the colour; "
-      "resident = the levels from the finest read down to the 1x1, over the whole chain (" +
-          L::measuredText(m, "{chain_over_level0|%.3f}") + " of level 0).",
-      L::kWhite, 1);
-  notes.add(std::string("Buss VI.1.3: a distant texture needs only its lower-resolution levels in fast memory.  ") +
-                (far && far->value < 0.01 ? "Measured: it holds, " : "Measured: ") +
-                "at d = " + L::given("distance", R::kDistances.back(), "%.0f") +
-                L::measuredText(m, " only {resident_fraction[24]|%.4f} of the chain need be resident."),
-            L::kAmber, 1);
+  L::Column column(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)});
+  for (const auto& [text, colour] : notes) column.add(text, colour, 1);
   return f;
 }
 
@@ -266,7 +296,37 @@ ts::Frame TextureResidency::buildClipmap(ts::Frame& f, const ts::Measurements& m
     L::caption(f, {8, 8, float(f.width - 8), float(f.height - 8)}, "rendering ...", L::kWhite, 2);
     return f;
   }
-  const float band = L::lineHeight(1) * 4 + 8, key = L::lineHeight(1) * 2 + 8;
+  std::vector<ts::LegendEntry> legend;
+  for (int l = 0; l < R::kClipLevels; ++l)
+    legend.push_back({R::levelColour(l), "level " + std::to_string(l) + "'s window"});
+  legend.push_back({R::kExposedColour, "uploaded by the last move (whitened)"});
+  legend.push_back({R::kSeamColour, "the toroidal seam: the window's first row and column"});
+  legend.push_back({{R::kSky.r / 255.0f, R::kSky.g / 255.0f, R::kSky.b / 255.0f, 1.0f}, "beyond every window"});
+  const std::vector<L::Text> notes = {
+      L::measuredText(m, "Pixels off the procedural texture sampled on the CPU at the stack's level: "
+                         "{clipmap_mismatch_px|%.0f} (tolerance 0, GL_NEAREST); with the last move's uploads left "
+                         "out: {clipmap_mismatch_px[stale]|%.0f}."),
+      L::measuredText(m, "In perspective: {clipmap_flight_mismatch_px|%.0f} pixels off the CPU's rays, of those "
+                         "farther than 1/") +
+          L::given("the edge margin, 1/n pixel", R::kEdgeMarginInv, "%.0f") +
+          L::measuredText(m, " pixel from a texel's or window's edge; {clipmap_flight_ambiguous_px|%.0f} nearer, "
+                             "where either side is right."),
+      L::measuredText(m, "glTexSubImage2D texels a move ({clipmap_step_x|%.0f}, {clipmap_step_y|%.0f} level-0 "
+                         "texels): {clipmap_texels_uploaded[move]|%.0f} (the equation: "
+                         "{clipmap_texels_uploaded[predicted]|%.0f}); a reload of every window: "
+                         "{clipmap_texels_uploaded[reload]|%.0f}."),
+      L::measuredText(m, "Memory: the stack {clipmap_stack_texels|%.0f} texels, the whole ") +
+          L::given("the virtual texture's side, texels", R::kVirtual, "%.0f") +
+          L::measuredText(m, "^2 chain {clipmap_chain_texels|%.0f}: {clipmap_saving|%.1f} times less (") +
+          L::given("texture_compression's clipmap side, texels", 65536, "%.0f") + "^2 with " +
+          L::given("clip side, texels", R::kClip, "%.0f") +
+          L::measuredText(m, "^2 levels: {clipmap_saving[65536/512]|%.0f} times).")};
+  // The bands take the lines their text needs at this width (a narrow window wraps them), at most half the height
+  // between them: a narrow window keeps its pictures, and the notes that no longer fit are left out (the side
+  // panel lists every number).
+  const float key = std::min(float(f.height) * 0.25f,
+                             L::lineHeight(1) * float(L::legendLines(legend, 1, float(f.width - 16))) + 8);
+  const float band = std::min(float(f.height) * 0.5f - key, L::columnHeight(notes, 1, float(f.width - 16)) + 8);
   const float bottom = float(f.height) - 8 - band - key, middle = 8 + (bottom - 8) * 0.6f;
   const float split = float(f.width) * 0.36f;
   auto picture = [&](const ts::Image& img, const std::string& id, const std::string& what, const ts::Rect& r,
@@ -277,68 +337,47 @@ ts::Frame TextureResidency::buildClipmap(ts::Frame& f, const ts::Measurements& m
     f.panels.push_back(L::picturePanel(f, id, r, t));
   };
   // Above: the map (left) and the flight (right); below: the six levels' storage.
-  const std::vector<L::Cell> view = L::flow({8, 8, split, middle}, {1, 1.0f, 1, 1, 8, 1, 0});
+  // Each group's captions wrap in a narrow window (flowFitting) rather than being cut.
+  const L::Text viewTitle = "from above: " + L::given("the virtual texture's side, texels", R::kVirtual, "%.0f") +
+                            "^2 at " + L::given("texels a pixel", R::kTexelsPerPixel, "%.0f") + " texels a pixel";
+  const std::string viewNote = "each level's window outlined in its colour";
+  const std::vector<L::Cell> view = L::flowFitting({8, 8, split, middle}, {1, 1.0f, 1, 1, 8, 1, 0}, {{viewTitle.text}},
+                                                   {{viewNote}});
   picture(d->clipView, "view", "the clipmap's view", view[0].picture, d->clipCalls);
-  L::caption(f, view[0].above,
-             "from above: " + L::given("the virtual texture's side, texels", R::kVirtual, "%.0f") + "^2 at " +
-                 L::given("texels a pixel", R::kTexelsPerPixel, "%.0f") + " texels a pixel",
-             L::kWhite, view[0].scale);
-  L::caption(f, view[0].below, "each level's window outlined in its colour", L::kWhite, view[0].scale);
-  const std::vector<L::Cell> flight = L::flow({split + 12, 8, float(f.width - 8), middle},
-                                              {1, float(R::kFlightW) / R::kFlightH, 1, 1, 8, 1, 0});
+  L::caption(f, view[0].above, viewTitle, L::kWhite, view[0].scale);
+  L::caption(f, view[0].below, viewNote, L::kWhite, view[0].scale);
+  const L::Text flightTitle = "the same stack in perspective, the eye " +
+                              L::given("the eye's height, level-0 texels", R::kFlightHeight, "%.0f") +
+                              " texels above the ground";
+  const L::Text flightNote =
+      L::measuredText(m, "{clipmap_flight_mismatch_px|%.0f} pixels off the CPU's rays to the ground; the edges "
+                         "between levels in the finer one's colour");
+  const std::vector<L::Cell> flight = L::flowFitting({split + 12, 8, float(f.width - 8), middle},
+                                                     {1, float(R::kFlightW) / R::kFlightH, 1, 1, 8, 1, 0},
+                                                     {{flightTitle.text}}, {{flightNote.text}});
   picture(d->flight, "flight", "the clipmap in perspective", flight[0].picture, nullptr);
-  L::caption(f, flight[0].above,
-             "the same stack in perspective, the eye " +
-                 L::given("the eye's height, level-0 texels", R::kFlightHeight, "%.0f") + " texels above the ground",
-             L::kWhite, flight[0].scale);
-  L::caption(f, flight[0].below,
-             L::measuredText(m, "{clipmap_flight_mismatch_px|%.0f} pixels off the CPU's rays to the ground; the edges "
-                                "between levels in the finer one's colour"),
-             L::kAmber, flight[0].scale);
-  const std::vector<L::Cell> levels = L::flow({8, middle + 4, float(f.width - 8), bottom},
-                                              {R::kClipLevels, 1.0f, 1, 1, 8, 1, 0});
+  L::caption(f, flight[0].above, flightTitle, L::kWhite, flight[0].scale);
+  L::caption(f, flight[0].below, flightNote, L::kAmber, flight[0].scale);
+  std::vector<L::Text> levelTitles, levelNotes;
+  std::vector<L::Stack> levelAbove, levelBelow;
+  for (int l = 0; l < R::kClipLevels; ++l) {
+    levelTitles.push_back("level " + L::given("level", l, "%.0f") + ", of " +
+                          L::given("level side", R::kVirtual >> l, "%.0f") + "^2");
+    levelNotes.push_back(
+        L::measuredText(m, "last move: {clipmap_level_texels_uploaded[" + std::to_string(l) + "]|%.0f} texels"));
+    levelAbove.push_back({levelTitles.back().text}), levelBelow.push_back({levelNotes.back().text});
+  }
+  const std::vector<L::Cell> levels = L::flowFitting({8, middle + 4, float(f.width - 8), bottom},
+                                                     {R::kClipLevels, 1.0f, 1, 1, 8, 1, 0}, levelAbove, levelBelow);
   for (int l = 0; l < R::kClipLevels && l < int(levels.size()); ++l) {
     const L::Cell& c = levels[size_t(l)];
     picture(d->clipLevels[l], "level_" + std::to_string(l), "clip level " + std::to_string(l), c.picture, nullptr);
-    L::caption(f, c.above,
-               "level " + L::given("level", l, "%.0f") + ", of " + L::given("level side", R::kVirtual >> l, "%.0f") +
-                   "^2",
-               L::kWhite, c.scale);
-    L::caption(f, c.below,
-               L::measuredText(m, "last move: {clipmap_level_texels_uploaded[" + std::to_string(l) + "]|%.0f} texels"),
-               L::kAmber, c.scale);
+    L::caption(f, c.above, levelTitles[size_t(l)], L::kWhite, c.scale);
+    L::caption(f, c.below, levelNotes[size_t(l)], L::kAmber, c.scale);
   }
-  std::vector<ts::LegendEntry> legend;
-  for (int l = 0; l < R::kClipLevels; ++l)
-    legend.push_back({R::levelColour(l), "level " + std::to_string(l) + "'s window"});
-  legend.push_back({R::kExposedColour, "uploaded by the last move (whitened)"});
-  legend.push_back({R::kSeamColour, "the toroidal seam: the window's first row and column"});
-  legend.push_back({{R::kSky.r / 255.0f, R::kSky.g / 255.0f, R::kSky.b / 255.0f, 1.0f}, "beyond every window"});
   L::legend(f, {8, bottom + 8, float(f.width - 8), bottom + 8 + key}, legend, 1);
-  L::Column notes(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)});
-  notes.add(L::measuredText(m,
-                            "Pixels off the procedural texture sampled on the CPU at the stack's level: "
-                            "{clipmap_mismatch_px|%.0f} (tolerance 0, GL_NEAREST); with the last move's uploads left "
-                            "out: {clipmap_mismatch_px[stale]|%.0f}."),
-            L::kAmber, 1);
-  notes.add(L::measuredText(m, "In perspective: {clipmap_flight_mismatch_px|%.0f} pixels off the CPU's rays, of those "
-                               "farther than 1/") +
-                L::given("the edge margin, 1/n pixel", R::kEdgeMarginInv, "%.0f") +
-                L::measuredText(m, " pixel from a texel's or window's edge; {clipmap_flight_ambiguous_px|%.0f} nearer, "
-                                   "where either side is right."),
-            L::kAmber, 1);
-  notes.add(L::measuredText(m, "glTexSubImage2D texels a move ({clipmap_step_x|%.0f}, {clipmap_step_y|%.0f} level-0 "
-                               "texels): {clipmap_texels_uploaded[move]|%.0f} (the equation: "
-                               "{clipmap_texels_uploaded[predicted]|%.0f}); a reload of every window: "
-                               "{clipmap_texels_uploaded[reload]|%.0f}."),
-            L::kAmber, 1);
-  notes.add(L::measuredText(m, "Memory: the stack {clipmap_stack_texels|%.0f} texels, the whole ") +
-                L::given("the virtual texture's side, texels", R::kVirtual, "%.0f") +
-                L::measuredText(m, "^2 chain {clipmap_chain_texels|%.0f}: {clipmap_saving|%.1f} times less (") +
-                L::given("texture_compression's clipmap side, texels", 65536, "%.0f") + "^2 with " +
-                L::given("clip side, texels", R::kClip, "%.0f") +
-                L::measuredText(m, "^2 levels: {clipmap_saving[65536/512]|%.0f} times)."),
-            L::kAmber, 1);
+  L::Column column(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)});
+  for (const L::Text& t : notes) column.add(t, L::kAmber, 1);
   return f;
 }
 }  // namespace
