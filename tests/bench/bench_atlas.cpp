@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bench_common.hpp"
+#include "bench_gl.hpp"
 #include "common/gl/context.hpp"
 #include "common/gl/gl.hpp"
 #include "demos/texture_atlas/texture_atlas_gl.hpp"
@@ -17,16 +18,8 @@ namespace {
 namespace A = ts::atlas;
 constexpr int kSide = 512;  // the frame; objects are A::kTile pixels a side, kSide / A::kTile to a row
 
-struct Rig {
-  Rig() {
-    ts::ContextOptions o;
-    o.width = o.height = kSide;
-    ctx = ts::createOffscreenContext(ts::Backend::OSMesa, o);
-  }
-  std::unique_ptr<ts::Context> ctx;
-};
-Rig& rig() {
-  static Rig r;
+ts::bench::GLRig& rig() {
+  static ts::bench::GLRig r(kSide, kSide);
   return r;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "bench_common.hpp"
+#include "bench_gl.hpp"
 #include "common/gl/context.hpp"
 #include "common/gl/gl.hpp"
 #include "common/gl/render.hpp"
@@ -17,16 +18,8 @@
 namespace {
 namespace R = ts::residency;
 
-struct Rig {
-  Rig() {
-    ts::ContextOptions o;
-    o.width = o.height = 64;
-    ctx = ts::createOffscreenContext(ts::Backend::OSMesa, o);
-  }
-  std::unique_ptr<ts::Context> ctx;
-};
-Rig& rig() {
-  static Rig r;
+ts::bench::GLRig& rig() {
+  static ts::bench::GLRig r(64, 64);
   return r;
 }
 

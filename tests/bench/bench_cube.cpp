@@ -11,6 +11,7 @@
 #include <string>
 
 #include "bench_common.hpp"
+#include "bench_gl.hpp"
 #include "common/gl/context.hpp"
 #include "common/gl/gl.hpp"
 #include "common/gl/render.hpp"
@@ -23,18 +24,8 @@ constexpr int kFace = 128;     // texels a face's side
 constexpr double kTime = 1.5;  // the ball's time, the demo's default
 constexpr int kEyeSize = 256;  // the face-ID render that finds the faces read
 
-struct Rig {
-  Rig() {
-    ts::ContextOptions o;
-    o.width = o.height = 64;
-    ctx = ts::createOffscreenContext(ts::Backend::OSMesa, o);
-    renderer = std::make_unique<ts::Renderer>(*ctx);
-  }
-  std::unique_ptr<ts::Context> ctx;
-  std::unique_ptr<ts::Renderer> renderer;
-};
-Rig& rig() {
-  static Rig r;
+ts::bench::GLRig& rig() {
+  static ts::bench::GLRig r(64, 64);
   return r;
 }
 

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "bench_common.hpp"
+#include "bench_gl.hpp"
 #include "common/gl/context.hpp"
 #include "common/gl/render.hpp"
 #include "demos/env_lighting/env_lighting_views.hpp"
@@ -20,27 +21,14 @@
 namespace {
 constexpr int kSize = 768, kFace = 64;
 
-struct Rig {
-  Rig() {
-    ts::ContextOptions o;
-    o.width = kSize;
-    o.height = kSize;
-    ctx = ts::createOffscreenContext(ts::Backend::OSMesa, o);
-    renderer = std::make_unique<ts::Renderer>(*ctx);
-  }
-  ~Rig() { renderer->release(); }
-  std::unique_ptr<ts::Context> ctx;
-  std::unique_ptr<ts::Renderer> renderer;
-};
-
-Rig& rig() {
-  static Rig r;
+ts::bench::GLRig& rig() {
+  static ts::bench::GLRig r(kSize, kSize);
   return r;
 }
 
 void benchMethod(benchmark::State& st, envlight::Method m, int lights) {
   try {
-    Rig& r = rig();
+    ts::bench::GLRig& r = rig();
     const ts::Frame f = envlight::sphereFrame(m, lights, kFace, kSize, kSize);
     r.renderer->render(f, false);  // warm: the program compiled, the map uploaded
     for (auto _ : st) benchmark::DoNotOptimize(r.renderer->render(f, false).pixels.data());
