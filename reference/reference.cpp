@@ -272,25 +272,35 @@ void Reference::place(int x, int y, const Candidate& c, bool sure, bool depthTes
   }
   if (depthTest && c.kind != Candidate::Kind::Exempt) {
     bool canPass = false, mustPass = true;
-    for (int i = h; i >= 0; i = pool_[size_t(i)].next) {
-      const Candidate& e = pool_[size_t(i)];
-      if (e.kind == Candidate::Kind::Exempt) {
-        canPass = true, mustPass = false;
-      } else if (depthFunc == GL_LEQUAL && c.z == e.z) {  // the same geometry again: GL's depth is the same too
-        canPass = true;
-      } else if (c.z < e.z - float(opts_.depthEpsilon)) {
-        canPass = true;
-      } else if (c.z >= e.z + float(opts_.depthEpsilon)) {
-        mustPass = false;
-      } else {
-        canPass = true, mustPass = false;
+    // The candidates whose z the depth buffer may hold: the pixel's, and beneath one that wrote no depth,
+    // what it was drawn over (the depth that stayed).
+    std::vector<int> chains = {h};
+    for (size_t k = 0; k < chains.size(); ++k)
+      for (int i = chains[k]; i >= 0; i = pool_[size_t(i)].next) {
+        const Candidate& e = pool_[size_t(i)];
+        if (!e.writesDepth && e.kind != Candidate::Kind::Exempt) {
+          if (e.below >= 0) chains.push_back(e.below);
+          else canPass = true;  // over the clear depth: nothing nearer held
+          continue;
+        }
+        if (e.kind == Candidate::Kind::Exempt) {
+          canPass = true, mustPass = false;
+        } else if (depthFunc == GL_LEQUAL && c.z == e.z) {  // the same geometry again: GL's depth is the same too
+          canPass = true;
+        } else if (c.z < e.z - float(opts_.depthEpsilon)) {
+          canPass = true;
+        } else if (c.z >= e.z + float(opts_.depthEpsilon)) {
+          mustPass = false;
+        } else {
+          canPass = true, mustPass = false;
+        }
       }
-    }
     if (!canPass) return;
     if (!mustPass) sure = false;
   }
   Candidate n = c;
-  if (n.blended && n.kind != Candidate::Kind::Exempt) n.below = h;  // blended over what is there
+  // Blended over what is there, or drawn without depth writes over the depth it leaves.
+  if ((n.blended || !n.writesDepth) && n.kind != Candidate::Kind::Exempt) n.below = h;
   n.next = sure ? -1 : h;
   pool_.push_back(n);
   h = int(pool_.size()) - 1;
@@ -377,6 +387,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     }
   }
   proto.colorSum = b.colorSum;
+  proto.writesDepth = b.depthWrite;
   // A batch's own blend factors are modelled (Candidate::blended);
   // FixedState's blend is exempt as before.
   if (b.blend && b.blendFactors() && proto.kind != Candidate::Kind::Exempt) {
@@ -553,7 +564,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
         for (size_t k = 0; k < 4; ++k) out[k] = out[k] * al + dst[k] * (1 - al);
       }
       image_.set(x, y, toRgba(out));
-      if (p.depthTest) depth_[idx] = z;
+      if (p.depthTest && b.depthWrite) depth_[idx] = z;
     };
     for (size_t k = 1; k + 1 < P.v.size(); ++k)
       scanTriangle(P.v[0], P.v[k], P.v[k + 1], kAttributes, sc, opts_.fill, emit);

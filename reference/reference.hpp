@@ -103,6 +103,9 @@ struct Candidate {
   bool blended = false;
   GLenum blendSrc = GL_ONE, blendDst = GL_ZERO;
   int below = -1;
+  // Batch::depthWrite: false, its z hides nothing drawn later (glDepthMask(GL_FALSE)); what it was
+  // drawn over (`below`, for a blended one) still does.
+  bool writesDepth = true;
 };
 
 class Reference {

@@ -473,6 +473,7 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
         }
         b.alphaRef = float(number(member(*at, "ref", bw + ".alpha_test"), bw + ".alpha_test.ref"));
       }
+      if (const Json* dw = find(bv, "depth_write")) b.depthWrite = boolean(*dw, bw + ".depth_write");
       if (const Json* df = find(bv, "depth_func")) {  // a second pass's GL_LEQUAL
         try {
           b.depthFunc = glEnumFromName(text(*df, bw + ".depth_func"));

@@ -206,6 +206,10 @@ struct Batch {
   // glDepthFunc for this batch (with the panel's depth test): GL_LEQUAL lets
   // a second pass over the same geometry through (multipass); 0 = FixedState's GL_LESS.
   GLenum depthFunc = 0;
+  // glDepthMask: false leaves the depth buffer as it was, so a transparent
+  // layer drawn after the opaque ones (back to front) hides nothing drawn
+  // after it.  The depth test still applies (the panel's).
+  bool depthWrite = true;
   bool alphaTest() const { return alphaFunc != 0; }
   bool blendFactors() const { return blendSrc != 0 || blendDst != 0; }
 };

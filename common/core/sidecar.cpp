@@ -267,6 +267,7 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
       if (b.alphaTest()) bj["alpha_test"] = {{"func", glEnumName(b.alphaFunc)}, {"ref", num(b.alphaRef)}};
       if (b.blendFactors()) bj["blend_func"] = {glEnumName(b.blendSrc), glEnumName(b.blendDst)};
       if (b.depthFunc) bj["depth_func"] = glEnumName(b.depthFunc);
+      if (!b.depthWrite) bj["depth_write"] = false;
       if (b.texture1 >= 0) {  // unit 1: its texture, environment and (GL_COMBINE) function
         Json u = {{"texture", b.texture1}, {"tex_env", glEnumName(b.texEnv1)}};
         if (b.texEnv1 == GL_COMBINE) {

@@ -515,6 +515,7 @@ static void bindUnit1(Renderer& r, const Frame& f, const Batch& b) {
 // surface), the line width and the point size.
 static void setRasterState(const Batch& b) {
   if (b.depthFunc) glDepthFunc(b.depthFunc);
+  if (!b.depthWrite) glDepthMask(GL_FALSE);
   glLineWidth(b.lineWidth);
   glPointSize(b.pointSize);
 }
@@ -548,6 +549,7 @@ static void undoBatchState(const Frame& f, const Batch& b, GLuint prog) {
   if (b.clip) glDisable(GL_CLIP_PLANE0);
   if (b.alphaTest()) glDisable(GL_ALPHA_TEST);
   if (b.depthFunc) glDepthFunc(FixedState::depthFunc);
+  if (!b.depthWrite) glDepthMask(GL_TRUE);
   if (b.texture1 >= 0) {
     glActiveTexture(GL_TEXTURE1);
     glDisable(GL_TEXTURE_2D);

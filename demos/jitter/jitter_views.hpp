@@ -456,8 +456,6 @@ inline void Views::buildPlot(ts::Frame& f, const Found& fd) const {
     bool twoLines;
     int plotsH;
   };
-  // The pattern's two lines of labels under its box (addPattern), with a margin.
-  auto labelsUnder = [](int sc) { return 5 + int(2 * L::lineHeight(sc)) + 4 * sc; };
   auto placeAt = [&](int sc) {
     Place p;
     p.line = int(L::lineHeight(sc));

@@ -194,12 +194,12 @@ TEST(TextureAnimation, RecomputedLightMapFollowsTheLight) {
   }
 }
 
-// The flipbook's and the light map's pictures are GL's readbacks of passes the Frame API cannot express
-// (glTexSubImage2D into a texture made once); each comes with a Frame describing what the pass drew, which the
+// The flipbook's, the torch's and the light map's pictures are GL's readbacks of passes a Frame does not draw
+// (glTexSubImage2D into a texture made once, glBlendFunc); each comes with a Frame describing what the pass drew, which the
 // sidecar nests in the figure so that the CPU reference recomputes it.  That Frame, rendered, is the pass's
 // picture (within a level), and the next flipbook frame's is not (the control).
 TEST(TextureAnimation, EachPassIsTheFrameTheSidecarNests) {
-  for (const char* view : {"flipbook", "lightmap"}) {
+  for (const char* view : {"flipbook", "torch", "lightmap"}) {
     SCOPED_TRACE(view);
     const ts::Measurements m = Demo("texture_animation", {"--view", view, "--time", "1.25"}).measure();
     int passes = 0;
@@ -208,7 +208,7 @@ TEST(TextureAnimation, EachPassIsTheFrameTheSidecarNests) {
         EXPECT_EQ(x.value, 0) << x.name;
         ++passes;
       }
-    EXPECT_EQ(passes, 4) << "the flipbook's two pictures and the light map's two";
+    EXPECT_EQ(passes, 6) << "the flipbook's two pictures, the torch's two and the light map's two";
     EXPECT_GT(value(m, "pass_frame_control_px[next_frame]"), 0) << "the next frame's Frame draws another picture";
   }
 }

@@ -2,6 +2,8 @@
 // pictures and their measurement (texture_animation_gl.hpp's passes against texture_animation_math.hpp's CPU
 // answers), and the row of pictures the figures show them in.
 #pragma once
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <string>
 #include <utility>
@@ -55,6 +57,54 @@ inline Frame litFrame(double mapSeconds) {
   const TextureDesc map = lightMapTexture(kLightTexels, mapSeconds);
   return quadFrame(kLitPixels, waterTexture(kFlipTexels), &map);
 }
+// The torch at flipbook frame k as a Frame, in window pixels as its pass (glOrtho(0, w, 0, h, -1, 1), larger z
+// nearer), depth tested: the wall (the water, kWallZoom pixels a texel), the handle, the two flames (their frames'
+// texels with alpha, kFlipZoom pixels a texel) blended (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).  The right order
+// draws the wall and handle opaque, then the flames back to front with the depth writes off (Batch::depthWrite);
+// the scene's order draws front flame, back flame, handle, wall, every layer blended with depth writes on.
+inline Frame torchFrame(int k, TorchOrder order) {
+  Frame f;
+  f.width = f.height = kTorchPixels;
+  f.clearColor = {0, 0, 0, 1};
+  Panel p;
+  p.id = "torch";
+  p.viewport = {0, 0, kTorchPixels, kTorchPixels};
+  p.projection = glm::ortho(0.0f, float(kTorchPixels), 0.0f, float(kTorchPixels), -1.0f, 1.0f);
+  p.depthTest = true;
+  const bool scene = order == kSceneOrder;
+  auto quad = [&](const std::string& role, int texture, const PixRect& r, float z, glm::vec4 colour, bool flame) {
+    Batch b;
+    b.role = role;
+    b.texture = texture;
+    b.texEnv = GL_REPLACE;
+    b.blend = scene || flame;
+    if (b.blend) b.blendSrc = GL_SRC_ALPHA, b.blendDst = GL_ONE_MINUS_SRC_ALPHA;
+    b.depthWrite = scene || !flame;
+    for (int c : {0, 1, 2, 0, 2, 3}) {
+      const float s = float(c == 1 || c == 2), t = float(c >= 2);
+      b.vertices.push_back({{float(r.x) + s * float(r.w), float(r.y) + t * float(r.h), z}, {s, t, 0.0f, 1.0f}, colour});
+    }
+    p.batches.push_back(b);
+  };
+  const int wall = f.addTexture(waterTexture(kFlipTexels));
+  const int back = f.addTexture(flameTexture(kFlipTexels, backFlameFrame(k), kFlipFrames, false));
+  const int front = f.addTexture(flameTexture(kFlipTexels, frontFlameFrame(k), kFlipFrames, false));
+  const glm::vec4 white(1.0f), handle(kHandleColour.r / 255.0f, kHandleColour.g / 255.0f, kHandleColour.b / 255.0f, 1);
+  auto wallQuad = [&] { quad("wall", wall, {0, 0, kTorchPixels, kTorchPixels}, kWallZ, white, false); };
+  auto handleQuad = [&] { quad("handle", -1, kHandle, kHandleZ, handle, false); };
+  if (order == kRightOrder) {
+    wallQuad(), handleQuad();
+    quad("back flame", back, kBackFlame, kBackZ, white, true),
+        quad("front flame", front, kFrontFlame, kFrontZ, white, true);
+  } else {
+    quad("front flame", front, kFrontFlame, kFrontZ, white, true),
+        quad("back flame", back, kBackFlame, kBackZ, white, true);
+    handleQuad(), wallQuad();
+  }
+  f.panels.push_back(p);
+  return f;
+}
+
 // GL's readback of a pass as a figure's texture, with the Frame that describes it and the calls that drew it.
 inline TextureDesc passTexture(Renderer& r, const Image& shown, const Frame& described, const std::string& what,
                                const gl::CallList& calls, Measurements& ms) {
@@ -68,7 +118,7 @@ inline TextureDesc passTexture(Renderer& r, const Image& shown, const Frame& des
   t.renderedBy = calls;
   return t;
 }
-// A picture no Frame describes (the torch's, drawn with the depth writes off), shown as GL drew it.
+// A picture computed from GL's (the torch's mask of wrong pixels), shown as it was made: no generator remakes it.
 inline TextureDesc glPicture(const Image& img, const std::string& what, const gl::CallList& calls) {
   TextureDesc t = renderedImageTexture(img, "texture_animation", what, "texture_animation");
   // A panel's pixel centre may fall on a texel edge, where GL_NEAREST's tie goes either way.
@@ -153,8 +203,8 @@ inline Pictures measureAnimations(Renderer& r, int k, double seconds, double fra
   const Image frontToBack = torchPass(r, wall, back, front, kFrontToBack, nullptr);
   const int levels = 2 * kTorchLevelsPerLayer;  // two flames blended over the opaque layers
   pic.torchCpu = torchTexture(k);
-  pic.torchRight = glPicture(torchRight, "the torch in the right order", rightCalls);
-  pic.torchWrong = glPicture(torchWrong, "the torch in the scene's order", wrongCalls);
+  pic.torchRight = passTexture(r, torchRight, torchFrame(k, kRightOrder), "torch_right", rightCalls, ms);
+  pic.torchWrong = passTexture(r, torchWrong, torchFrame(k, kSceneOrder), "torch_scene_order", wrongCalls, ms);
   pic.torchWrongMask = glPicture(wrongMask(torchWrong, torchCpu, levels), "the scene's order: pixels off", nullptr);
   put("torch_order_error_px[right]", wrongPixels(torchRight, torchCpu, levels),
       "pixels more than 2 levels off the CPU's composite: opaque first, flames back to front, depth writes off");

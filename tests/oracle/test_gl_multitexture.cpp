@@ -424,6 +424,47 @@ TEST(GLSecondUnit, OwnCoordinatesAndASecondPassThroughLequal) {
   EXPECT_GT(bad.differing, 128L * 128L / 2) << "described with GL_LESS";
 }
 
+// A transparent layer drawn with the depth writes off (Batch::depthWrite,
+// glDepthMask(GL_FALSE)): a red half-transparent quad near the eye, then an
+// opaque green one behind it.  Without depth writes the green quad is drawn
+// (it is tested against the clear depth only), with them it is hidden.  GL's
+// picture is legal for the frame as described, and most of the overlap is
+// invalid for the same frame described with depth writes on.
+TEST(GLDepthWrite, ALayerWithoutDepthWritesHidesNothingDrawnAfter) {
+  auto frame = [](bool writes) {
+    ts::Frame f;
+    f.width = f.height = 64;
+    f.clearColor = {0, 0, 0, 1};
+    ts::Panel p;
+    p.id = "layers";
+    p.viewport = {0, 0, 64, 64};
+    p.depthTest = true;
+    auto quad = [](float x0, float x1, float z, glm::vec4 colour) {
+      ts::Batch b;
+      b.role = "layer";
+      for (int c : {0, 1, 2, 0, 2, 3})
+        b.vertices.push_back({{c == 1 || c == 2 ? x1 : x0, c >= 2 ? 0.8f : -0.8f, z}, {0, 0, 0, 1}, colour});
+      return b;
+    };
+    ts::Batch red = quad(-0.8f, 0.4f, -0.5f, {1, 0, 0, 0.5f});
+    red.blend = true, red.blendSrc = GL_SRC_ALPHA, red.blendDst = GL_ONE_MINUS_SRC_ALPHA;
+    red.depthWrite = writes;
+    p.batches = {red, quad(-0.4f, 0.8f, 0.5f, {0, 1, 0, 1})};
+    f.panels.push_back(p);
+    return f;
+  };
+  const ts::Frame f = frame(false);
+  const ts::Image img = oracle::render(f);
+  const ts::Rgba overlap = img.at(32, 32);  // in both quads: the green one, drawn over the red
+  EXPECT_EQ(overlap.g, 255);
+  EXPECT_EQ(overlap.r, 0);
+  ref::VerifyResult r = ref::verifyImage(img, f, oracle::options("depth_write_off", "multitexture"));
+  EXPECT_TRUE(r.ok()) << r.summary();
+  ref::VerifyResult bad = ref::verifyImage(img, frame(true),
+                                           oracle::options("depth_write_on", "multitexture_negative"));
+  EXPECT_GT(bad.invalid, 20L * 40L) << "described with the depth writes on: " << bad.summary();
+}
+
 // The pear of the gloss_map figure (demos/multitexture multitexture_frames.hpp
 // pearPanel): a lathe mesh, front and back faces, the depth test on with
 // GL_LEQUAL, unit 1 on its own coordinates; in one pass (GL_MODULATE_ADD_ATI:

@@ -351,7 +351,7 @@ TEST(Sidecar, RoundTripOfTheMultitextureState) {
   b.combine1.source[0] = GL_TEXTURE, b.combine1.source[1] = GL_PREVIOUS, b.combine1.source[2] = GL_PREVIOUS;
   b.combine1.operand[2] = GL_SRC_ALPHA;
   b.textureMatrix1 = glm::mat4(1.6f, 0.1f, 0, 0, -0.2f, 1.6f, 0, 0, 0, 0, 1, 0, 0.25f, -0.5f, 0, 1);
-  b.coords1 = true, b.depthFunc = GL_LEQUAL;
+  b.coords1 = true, b.depthFunc = GL_LEQUAL, b.depthWrite = false;
   for (size_t k = 0; k < b.vertices.size(); ++k) b.vertices[k].tex1 = {0.25f * float(k), 0.5f, 0.0f, 1.0f + float(k)};
   p.batches = {b, plain};
   f.panels.push_back(p);
@@ -372,11 +372,13 @@ TEST(Sidecar, RoundTripOfTheMultitextureState) {
   EXPECT_EQ(g.textureMatrix1, b.textureMatrix1);
   EXPECT_TRUE(g.coords1);
   EXPECT_EQ(g.depthFunc, GLenum(GL_LEQUAL));
+  EXPECT_FALSE(g.depthWrite);
   for (size_t k = 0; k < b.vertices.size(); ++k) EXPECT_EQ(g.vertices.at(k).tex1, b.vertices[k].tex1) << k;
   const ts::Batch& h = back.frame.panels.at(0).batches.at(1);
   EXPECT_EQ(h.textureMatrix1, glm::mat4(1.0f));
   EXPECT_FALSE(h.coords1);
   EXPECT_EQ(h.depthFunc, GLenum(0));
+  EXPECT_TRUE(h.depthWrite);
   EXPECT_FALSE(h.alphaTest());
   EXPECT_FALSE(h.blendFactors());
   EXPECT_EQ(h.texture1, -1);
