@@ -1,5 +1,5 @@
 // common/gl/pixel_pass.hpp — a demo's own fixed-function pass, drawn in window pixels and read back: for
-// the GL a Frame does not describe (glTexSubImage2D into a texture made once, glDepthMask, the unpack
+// the GL a Frame does not describe (glTexSubImage2D into a texture made once, glCopyTexSubImage2D, the unpack
 // state), so a student reads the calls themselves.  Renderer::offscreen draws into a private target.
 #pragma once
 #include <functional>
