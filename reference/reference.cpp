@@ -164,10 +164,22 @@ void addStacked(const ts::TextureDesc& d, int w, int h, int count, const char* w
 void Reference::addCubeFaces(const ts::Frame& f) {
   cubeFirstFace_.assign(f.textures.size(), -1);
   for (size_t i = 0; i < f.textures.size(); ++i) {
-    const ts::TextureDesc& d = f.textures[i];
+    // A nested frame's faces are the reference's own render of that frame (textures_[i]), not GL's picture.
+    const ts::TextureDesc d = f.textures[i].renderedFrom ? textures_[i].desc() : f.textures[i];
     if (!d.cube || !d.image || d.image->height != 6 * d.image->width) continue;
+    const int w = d.image->width;
     cubeFirstFace_[i] = int(textures_.size());
-    addStacked(d, d.image->width, d.image->width, 6, "face", &textures_);
+    addStacked(d, w, w, 6, "face", &textures_);
+    // And the nested frame's known texels, face by face: face k is rows k w .. k w + w - 1 of its picture.
+    if (i < nested_.size() && !nested_[i].width.empty()) {
+      nested_.resize(textures_.size());
+      for (int k = 0; k < 6; ++k) {
+        NestedTexels& n = nested_[size_t(cubeFirstFace_[i] + k)];
+        n.w = n.h = w, n.tolerance = nested_[i].tolerance;
+        const auto first = nested_[i].width.begin() + std::ptrdiff_t(size_t(k) * size_t(w) * size_t(w));
+        n.width.assign(first, first + std::ptrdiff_t(size_t(w) * size_t(w)));
+      }
+    }
   }
 }
 
@@ -478,6 +490,12 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
     float constLo = 0, constHi = 0, constRho = 0;
     if (tex && cubeFirst < 0 && P.constantDeriv) lodAt(P.v[0].x, P.v[0].y, &constLo, &constHi, &constRho);
 
+    // A cube map rendered from a nested frame (its faces the reference's render): a face texel's legal range,
+    // or exempt where it lies on an edge of that frame's picture, as for a 2D nested frame below.
+    auto cubeSlack = [&](Candidate* c) {
+      c->slack = nestedSlack(c->texture, c->s, c->t, c->rho);
+      if (c->slack < 0) c->kind = Candidate::Kind::Exempt, c->why = Exempt::Edge, c->slack = 0;
+    };
     auto candidateAt = [&](double x, double y) {
       Candidate c = proto;
       c.z = float(P.P[kZ].at(x, y));
@@ -485,6 +503,7 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
       if (c.colorSum) c.secondary = P.secondary(x, y);
       if (c.kind == Candidate::Kind::Textured && cubeFirst >= 0) {
         cubeCandidate(P, x, y, cubeFirst, false, &c);
+        cubeSlack(&c);
       } else if (c.kind == Candidate::Kind::Textured) {
         P.coord(x, y, &c.s, &c.t);
         if (volumeIndex >= 0) {
@@ -600,8 +619,11 @@ void Reference::drawTriangles(const ts::Panel& p, const ts::Batch& b, PixelRect 
         place(x, y, c, sure, p.depthTest, b.depthFunc ? b.depthFunc : GLenum(GL_LESS));
         // Near a cube's face boundary either face is legal.
         Candidate other = c;
-        if (cubeFirst >= 0 && c.kind == Candidate::Kind::Textured && cubeCandidate(P, cx, cy, cubeFirst, true, &other))
+        if (cubeFirst >= 0 && c.kind == Candidate::Kind::Textured &&
+            cubeCandidate(P, cx, cy, cubeFirst, true, &other)) {
+          cubeSlack(&other);
           place(x, y, other, false, p.depthTest, b.depthFunc ? b.depthFunc : GLenum(GL_LESS));
+        }
       }
   }
 }

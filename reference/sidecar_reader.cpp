@@ -306,8 +306,11 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
         if (const Json* w = find(t, "width"))
           if (integer(*w, where + ".width", 0, ts::kMaxImageDimension) != nf.width)
             fail(where, "width differs from its frame's");
+        // A cube map's "height" is a face's: its frame holds the six faces stacked.
+        const Json* c = find(t, "cube");
+        const int faces = c && boolean(*c, where + ".cube") ? 6 : 1;
         if (const Json* h = find(t, "height"))
-          if (integer(*h, where + ".height", 0, ts::kMaxImageDimension) != nf.height)
+          if (integer(*h, where + ".height", 0, ts::kMaxImageDimension) * faces != nf.height)
             fail(where, "height differs from its frame's");
         d.renderedFrom = std::make_shared<const ts::Frame>(nf);
       }
@@ -326,7 +329,9 @@ static void readFrame(const Json& doc, const std::string& baseDir, int nesting, 
     // A cube map: the generator's image holds the six faces
     // stacked, and "height" is a face's.
     if (const Json* c = find(t, "cube")) d.cube = boolean(*c, where + ".cube");
-    if (d.cube && (!d.image || d.image->height != 6 * d.image->width))
+    if (d.cube && d.renderedFrom && d.renderedFrom->height != 6 * d.renderedFrom->width)
+      fail(where, "a cube map rendered from a frame needs a frame of six stacked square faces");
+    if (d.cube && !d.renderedFrom && (!d.image || d.image->height != 6 * d.image->width))
       fail(where, "a cube map needs an image of six stacked square faces");
     // A 3D texture: the generator's image holds the `depth` slices stacked,
     // and "height" is a slice's.

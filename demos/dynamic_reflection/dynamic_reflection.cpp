@@ -63,6 +63,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 #include <string>
 #include <tuple>
@@ -262,15 +263,49 @@ ts::Measurements DynamicReflection::measure(ts::Renderer& r) {
     if (gl) *gl = calls;
     return cube;
   };
-  auto eyePicture = [&](GLuint cube, const std::string& what, ts::gl::CallList cubeGL) {
+  // The mirror's picture, GL's, with the Frames that describe it (nested frames the CPU reference recomputes):
+  // the eye pass reading the cube map, and the cube pass whose render is that map's six faces stacked.  Each is
+  // checked here against what GL drew (pass_frame_mismatch_px).
+  auto mismatch = [](const ts::Image& a, const ts::Image& b) {  // pixels more than a level apart
+    int n = 0;
+    for (int y = 0; y < a.height; ++y)
+      for (int x = 0; x < a.width; ++x) {
+        const ts::Rgba p = a.at(x, y), q = b.at(x, y);
+        n += std::abs(p.r - q.r) > 1 || std::abs(p.g - q.g) > 1 || std::abs(p.b - q.b) > 1;
+      }
+    return n;
+  };
+  auto eyePicture = [&](GLuint cube, const std::string& what, ts::gl::CallList cubeGL, double mapTime, int variant) {
     ts::Image img;
     const ts::gl::CallList eyeGL = ts::recordRender(r, [&] {
       img = r.renderOffscreen(eyeFrame(kMeasureSize, cubeMapTexture(cube, what), kSphere, true, ballCentre(t)));
     });
+    ts::TextureDesc faces;
+    faces.name = "dynamic_reflection_cube_pass";
+    faces.params = {{"pass", what}};
+    faces.cube = true;
+    faces.image = std::make_shared<const ts::Image>(readCubeMap(cube, face_));
+    faces.renderedFrom = std::make_shared<const ts::Frame>(
+        cubeFrame(face_, ballCentre(mapTime), variant, kColours, kBallRadius, false));
+    faces.minFilter = faces.magFilter = GL_LINEAR;
+    faces.wrapS = faces.wrapT = GL_CLAMP_TO_EDGE;
     glDeleteTextures(1, &cube);
+    const ts::Frame eye = eyeFrame(kMeasureSize, faces, kSphere, true, ballCentre(t));
+    out.push_back({"pass_frame_mismatch_px[" + what + "_eye]", double(mismatch(r.renderOffscreen(eye), img)),
+                   "pixels where the Frame describing the " + what +
+                       " mirror's eye pass (the sidecar's nested "
+                       "frame, the faces uploaded from GL's) renders more than a level off the pass's own picture"});
+    out.push_back({"pass_frame_mismatch_px[" + what + "_faces]",
+                   double(mismatch(r.renderOffscreen(*faces.renderedFrom), *faces.image)),
+                   "texels where the Frame describing the " + what +
+                       " cube pass (y negated: its picture is the six "
+                       "faces stacked) renders more than a level off the faces GL copied on the GPU"});
     std::vector<ts::gl::Call> calls = cubeGL ? *cubeGL : std::vector<ts::gl::Call>{};
     calls.insert(calls.end(), eyeGL->begin(), eyeGL->end());
-    return picture(img, what, std::make_shared<const std::vector<ts::gl::Call>>(std::move(calls)));
+    ts::TextureDesc shown = ts::nestedPictureTexture(img, eye, "dynamic_reflection_pass", what);
+    shown.minFilter = shown.magFilter = GL_NEAREST;  // as the traced picture beside it
+    shown.renderedBy = std::make_shared<const std::vector<ts::gl::Call>>(std::move(calls));
+    return shown;
   };
   ts::gl::CallList dynGL;
   const GLuint dynCubeMap = colourCube(t, variant_, &dynGL);
@@ -281,16 +316,22 @@ ts::Measurements DynamicReflection::measure(ts::Renderer& r) {
       ++renders;
   out.push_back({"cube_map_renders_per_frame", double(renders),
                  "face-sized glViewport calls recorded in one dynamic cube-map pass: one render a face"});
-  found.dynamicPic = eyePicture(dynCubeMap, "dynamic", dynGL);
+  found.dynamicPic = eyePicture(dynCubeMap, "dynamic", dynGL, t, variant_);
   found.faces = picture(unwrapped(dynCube), "faces");
+  out.push_back(
+      {"pass_frame_control_px[faces_a_second_later]",
+       double(mismatch(r.renderOffscreen(cubeFrame(face_, ballCentre(t + 1), variant_, kColours, kBallRadius, false)),
+                       dynCube)),
+       "texels where the cube pass's Frame a second later (the ball moved on) renders more than a level off "
+       "this frame's faces (a control that must find some)"});
   if (view_ == kSceneView) {
     ts::gl::CallList staticGL;
-    found.staticPic = eyePicture(colourCube(0.0, kRight, &staticGL), "static", staticGL);
+    found.staticPic = eyePicture(colourCube(0.0, kRight, &staticGL), "static", staticGL, 0.0, kRight);
   }
   if (view_ == kVariantsView)
     for (int v = 0; v < kVariants; ++v) {
       ts::gl::CallList gl;
-      found.variantPics[v] = eyePicture(colourCube(t, v, &gl), kVariantKeys[v], gl);
+      found.variantPics[v] = eyePicture(colourCube(t, v, &gl), kVariantKeys[v], gl, t, v);
     }
   // The traced reference in colour: the world in r, or the ball; off the sphere the background.
   ts::Image ref(kMeasureSize, kMeasureSize);

@@ -155,4 +155,24 @@ TEST(DynamicReflection, TheFacesCopiedOnTheGpuAreTheFacesReadBack) {
             << "face " << f;
   }
 }
+
+// The mirror's pictures are GL's, and each comes with the Frames the sidecar nests so that the CPU reference
+// recomputes it: the eye pass, and the cube pass whose render (y negated) is the six faces stacked.  Rendered, each
+// Frame is what GL drew (within a level): the faces the GPU copied, texel for texel, and the mirror's picture.
+// A cube pass one step of time later is not (the control).
+TEST(DynamicReflection, TheMirrorsPicturesAreTheFramesTheSidecarNests) {
+  for (const char* view : {"scene", "variants"}) {
+    SCOPED_TRACE(view);
+    const ts::Measurements m = Demo("dynamic_reflection", {"--view", view}).measure();
+    int checked = 0;
+    for (const ts::Measurement& x : m)
+      if (x.name.rfind("pass_frame_mismatch_px[", 0) == 0) {
+        EXPECT_EQ(x.value, 0) << x.name;
+        ++checked;
+      }
+    EXPECT_EQ(checked, std::string(view) == "scene" ? 4 : 8) << "an eye pass and a cube pass a mirror picture";
+  }
+  // The control: the cube pass's Frame a second later does not pass for this frame's faces.
+  EXPECT_GT(value(Demo("dynamic_reflection", {}).measure(), "pass_frame_control_px[faces_a_second_later]"), 0);
+}
 }  // namespace

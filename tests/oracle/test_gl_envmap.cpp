@@ -265,6 +265,37 @@ TEST(GLNestedFrame, APanelShowingATexgenRender) {
   EXPECT_GT(bad.invalid, bad.textured / 4) << bad.summary();
 }
 
+// A cube map rendered from a frame (dynamic_reflection's mirror): the
+// mirror's picture is a nested frame whose cube map is itself the render of
+// a nested frame, the cube pass, its six faces stacked.  The reference
+// recomputes the faces, carries their legal ranges through the cube-map
+// lookup (texels on the faces' edges unknown), and GL's mirror is legal for
+// it; the cube pass told with its +X and -X faces' cameras swapped fails.
+TEST(GLNestedFrame, ACubeMapRenderedFromAFrame) {
+  ts::test::Demo d("dynamic_reflection", {});
+  d.measure();
+  const ts::Frame f = d.frame(1200, 420);
+  int checked = 0;
+  for (const ts::TextureDesc& t : f.textures) {
+    if (!t.renderedFrom || t.renderedFrom->textures.empty() || !t.renderedFrom->textures[0].cube) continue;
+    ASSERT_TRUE(t.renderedFrom->textures[0].renderedFrom) << "the cube map is the render of the cube pass";
+    const std::string n = "nested_cube_" + std::to_string(checked);
+    ref::VerifyResult r = ref::verifyImage(*t.image, *t.renderedFrom, oracle::options(n, "envmap"));
+    std::printf("%s\n", r.summary().c_str());
+    EXPECT_EQ(r.invalid, 0) << r.summary();
+    EXPECT_GT(r.textured, r.checked / 4) << r.summary();
+    ts::Frame wrong = *t.renderedFrom;
+    ts::Frame pass = *wrong.textures[0].renderedFrom;
+    std::swap(pass.panels[0].modelview, pass.panels[1].modelview);
+    wrong.textures[0].renderedFrom = std::make_shared<const ts::Frame>(pass);
+    ref::VerifyResult bad = ref::verifyImage(*t.image, wrong, oracle::options(n + "_swapped", "envmap_negative"));
+    std::printf("%s\n", bad.summary().c_str());
+    EXPECT_GT(bad.invalid, 500) << bad.summary();
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2) << "the dynamic and the static mirror";
+}
+
 // The environment-mapping figures' texgen pictures: the compare
 // view's cube-map and sphere-map panels are nested frames (GL_REFLECTION_MAP
 // with the texture matrix on an "environment_map" cube, GL_SPHERE_MAP on the
