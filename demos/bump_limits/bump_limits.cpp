@@ -101,7 +101,7 @@ class BumpLimits final : public ts::Scene {
          "against the displaced surface's; shading baked for one light and that light moved.",
          {"--view", "methods", "--shear", "60"},
          1100,
-         460,
+         420,
          "Normal error: Blinn {bump_normal_error_deg[blinn]}, normal map {bump_normal_error_deg[normalmap]}, offset "
          "map {bump_normal_error_deg[offset]} degrees; orthogonal axes at 45 degrees shear: "
          "{bump_shear_error_deg[45]} degrees."},
@@ -152,7 +152,8 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
                  M("{bump_self_shadow_px[horizon]|%.0f} red, {bump_self_shadow_px[horizon_extra]|%.0f} blue")}},
                {{kMissed, "in the ray march's shadow, lit by horizon mapping"},
                 {kExtra, "darkened by horizon mapping, lit in the ray march"},
-                {{0.35f, 0.35f, 0.35f, 1}, "shadowed in both (or facing away)"}},
+                {kLitBoth, "lit in both"},
+                {kDarkBoth, "dark in both (shadowed, or facing away)"}},
                {light + M(": of {bump_shadowed_px|%.0f} pixels the displaced surface shadows, plain bump mapping lights "
                           "{bump_self_shadow_px[none]|%.0f}, horizon mapping {bump_self_shadow_px[horizon]|%.0f} "
                           "(and darkens {bump_self_shadow_px[horizon_extra]|%.0f} more)."),
@@ -197,11 +198,11 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
       return M(k);
     };
     pictureRow(f,
-               {{&s[0], "unfiltered, one sample a pixel", K("RMS {bump_distance_rms_levels[unfiltered][%dx]|%.1f}")},
+               {{&s[0], "unfiltered, one sample a pixel", K("RMS {bump_distance_rms_levels[unfiltered][%dx]|%%.1f}")},
                 {&s[1], "mipmapped heights",
-                 K("RMS {bump_distance_rms_levels[mipmapped][%dx]|%.1f}, tilt lost {bump_tilt_lost_deg[mipmapped][%dx]|%.1f} deg")},
-                {&s[2], "4 x 4 supersampled, box filter", K("RMS {bump_distance_rms_levels[super4x4][%dx]|%.1f}")},
-                {&s[3], "8 x 8 supersampled reference", K("mean tilt {bump_tilt_deg[reference][%dx]|%.1f} deg")}},
+                 K("RMS {bump_distance_rms_levels[mipmapped][%dx]|%%.1f}, tilt lost {bump_tilt_lost_deg[mipmapped][%dx]|%%.1f} deg")},
+                {&s[2], "4 x 4 supersampled, box filter", K("RMS {bump_distance_rms_levels[super4x4][%dx]|%%.1f}")},
+                {&s[3], "8 x 8 supersampled reference", K("mean tilt {bump_tilt_deg[reference][%dx]|%%.1f} deg")}},
                {},
                {"At " + G("the distance shown", d) + "x (" + L::given("texels a pixel", d / 2.0, "%.1f") +
                     " texels a pixel).  RMS levels against the reference, by distance:",

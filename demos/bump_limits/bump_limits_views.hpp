@@ -21,6 +21,7 @@ constexpr int kDistances[] = {1, 2, 4, 8};           // the distance view's dist
 
 // Colours that mean something in the pictures (each has its legend entry).
 const glm::vec4 kMissed{0.95f, 0.2f, 0.2f, 1}, kExtra{0.3f, 0.6f, 1.0f, 1};
+const glm::vec4 kLitBoth{0.78f, 0.78f, 0.78f, 1}, kDarkBoth{0.3f, 0.3f, 0.3f, 1};
 inline ts::Rgba rgba(glm::vec4 c) { return {u8(c.r), u8(c.g), u8(c.b), 255}; }
 
 struct Pictures {
@@ -69,8 +70,10 @@ inline void measureShadows(ts::Renderer& r, double az, double elev, ts::Measurem
       missed += s && facing && horizonLit;
       extra += !s && facing && !horizonLit;
       wrongMissed += s && facing && w.g > 127;
-      const uint8_t g = facing ? 200 : 60;
-      diff.set(x, y, s && facing && horizonLit ? rgba(kMissed) : !s && facing && !horizonLit ? rgba(kExtra) : s ? ts::Rgba{90, 90, 90, 255} : ts::Rgba{g, g, g, 255});
+      diff.set(x, y, s && facing && horizonLit    ? rgba(kMissed)
+                     : !s && facing && !horizonLit ? rgba(kExtra)
+                     : !s && facing                ? rgba(kLitBoth)
+                                                   : rgba(kDarkBoth));
     }
   put("bump_self_shadow_px[none]", double(none),
       "pixels the displaced surface's ray-marched shadow covers that plain bump mapping lights (n . L > 0)");
