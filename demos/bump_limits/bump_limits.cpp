@@ -120,6 +120,7 @@ class BumpLimits final : public ts::Scene {
   ts::Measurements measure(ts::Renderer& r) override {
     ts::Measurements out;
     Pictures pic;
+    pic.view = view_;
     if (view_ == 0) measureShadows(r, azimuth_, elevation_, out, pic);
     if (view_ == 1) measureMethods(r, shear_, out, pic);
     if (view_ == 2) measureDistance(r, kDistances[distance_], out, pic);
@@ -134,7 +135,7 @@ class BumpLimits final : public ts::Scene {
 ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measured) const {
   ts::Frame f = L::blankFrame(width, height);
   const Pictures* p = measured.detailAs<Pictures>();
-  if (!p || p->shown.empty()) {
+  if (!p || p->view != view_ || p->shown.empty()) {  // the view's measurement is still to come
     L::caption(f, {8, 8, float(width - 8), float(height - 8)}, "rendering ...", L::kWhite, 2);
     return f;
   }

@@ -25,6 +25,7 @@ const glm::vec4 kLitBoth{0.78f, 0.78f, 0.78f, 1}, kDarkBoth{0.3f, 0.3f, 0.3f, 1}
 inline ts::Rgba rgba(glm::vec4 c) { return {u8(c.r), u8(c.g), u8(c.b), 255}; }
 
 struct Pictures {
+  int view = -1;                       // the view they are of (a window's key may have changed it since)
   std::vector<ts::TextureDesc> shown;  // the view's pictures, in order
 };
 
