@@ -98,10 +98,11 @@ class BumpLimits final : public ts::Scene {
         {"bump_limits_methods",
          "Bump mapping's limits: representations, shear, baking (seed 001)",
          "Blinn's formula, a normal map and an offset-vector map shaded by the same light, each normal measured "
-         "against the displaced surface's; shading baked for one light and that light moved.",
+         "against the displaced surface's; shading baked for one light and that light moved; the normal error of a method that assumes "
+         "dp/ds and dp/dt orthogonal when they are not.",
          {"--view", "methods", "--shear", "60"},
-         1100,
-         420,
+         1000,
+         640,
          "Normal error: Blinn {bump_normal_error_deg[blinn]}, normal map {bump_normal_error_deg[normalmap]}, offset "
          "map {bump_normal_error_deg[offset]} degrees; orthogonal axes at 45 degrees shear: "
          "{bump_shear_error_deg[45]} degrees."},
@@ -167,6 +168,7 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
       std::snprintf(k, sizeof k, "{bump_shear_error_deg[%.0f]|%%.2f}", th);
       table = table + G("a shear angle of the table, degrees", th) + " deg " + M(k) + (th > 45 ? ", " : " degrees.");
     }
+    const ts::plot::Spec plot = shearPlot(measured, shear_);
     pictureRow(
         f,
         {{&s[0], "Blinn (heights)", M("{bump_normal_error_deg[blinn]|%.2f} deg off")},
@@ -181,7 +183,8 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
          table,
          "At the keys' shear " + G("the shear angle, degrees", shear_) +
              M(" deg: orthogonal axes {bump_shear_error_deg[shown]|%.2f} deg, Blinn's formula "
-               "{bump_shear_error_deg[blinn_shown]|%.2f} deg.")});
+               "{bump_shear_error_deg[blinn_shown]|%.2f} deg.")},
+        &plot);
   } else {
     auto row = [&](const char* what, const char* key) {
       L::Text t = std::string(what) + ": ";

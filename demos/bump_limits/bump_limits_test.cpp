@@ -173,7 +173,7 @@ TEST(BumpLimits, MethodsPicturesAreTheirEquationsAndShearAndBakingBehave) {
   Probe p({"--view", "methods", "--shear", "60"});
   ASSERT_NE(p.pictures, nullptr);
   ASSERT_EQ(p.pictures->shown.size(), 5u);
-  expectFigureShowsPictures(p.demo, *p.pictures, 1100, 420);
+  expectFigureShowsPictures(p.demo, *p.pictures, 1000, 640);
   for (int k = 0; k < 3; ++k) {
     SCOPED_TRACE(kMethodKeys[k]);
     const Fit fit = fitShading(p.picture(size_t(k)), kMethodZoom, Method(k), 30, 45, false, {});

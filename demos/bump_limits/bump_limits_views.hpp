@@ -8,6 +8,7 @@
 
 #include "bump_limits_gl.hpp"
 #include "common/core/layout.hpp"
+#include "common/core/plot.hpp"
 #include "common/core/scene.hpp"
 
 namespace bumplim {
@@ -238,6 +239,43 @@ inline void measureDistance(ts::Renderer& r, int shownDistance, ts::Measurements
   }
 }
 
+// ---- the shear plot --------------------------------------------------------------------------------------------
+// The measured mean normal error against the angle between dp/ds and dp/dt: the orthogonal-axes method at the
+// table's angles, Blinn's formula at the keys' angle, and a marker there.
+inline double valueOf(const ts::Measurements& m, const std::string& name) {
+  for (const ts::Measurement& x : m)
+    if (x.name == name) return x.value;
+  return 0;
+}
+inline ts::plot::Spec shearPlot(const ts::Measurements& m, int shownDeg) {
+  namespace P = ts::plot;
+  P::Spec s;
+  s.id = "shear_plot";
+  s.title = "normal error, sheared";
+  s.xLabel = "dp/ds to dp/dt, deg";
+  s.yLabel = "mean error, deg";
+  double ymax = 1;
+  P::Series ortho("orthogonal_axes", kMissed, P::Mark::Squares), line("orthogonal_axes_line", kMissed);
+  char key[64];
+  for (double th : kThetas) {
+    std::snprintf(key, sizeof key, "bump_shear_error_deg[%.0f]", th);
+    const double v = valueOf(m, key);
+    ortho.points.push_back({th, v}), line.points.push_back({th, v});
+    ymax = std::max(ymax, v);
+  }
+  P::Series blinn("blinn", kExtra, P::Mark::Rings);
+  blinn.points.push_back({double(shownDeg), valueOf(m, "bump_shear_error_deg[blinn_shown]")});
+  s.x0 = std::min(40.0, shownDeg - 5.0), s.x1 = 95, s.y0 = 0, s.y1 = std::ceil(ymax / 5 + 0.2) * 5;
+  s.xTicks = P::ticks(45, 90, 15, "%g");
+  s.yTicks = P::ticks(0, s.y1, P::niceStep(s.y1));
+  s.series = {line, ortho, blinn};
+  P::Marker mk;
+  mk.x = shownDeg;
+  s.markers = {mk};
+  s.legend = {{"orthogonal axes", kMissed}, {"Blinn's formula", kExtra}};
+  return s;
+}
+
 // ---- the figures' row of pictures ----------------------------------------------------------------------------------
 namespace L = ts::layout;
 struct Picture {
@@ -245,8 +283,10 @@ struct Picture {
   L::Text title, note;
 };
 // The pictures side by side above a legend and a band of notes, as many lines as they take at the frame's width.
+// `plot`, when given, takes one more cell after the pictures (its title band, picture and note band together),
+// drawn when that cell is at least 200 x 200 pixels.
 inline void pictureRow(ts::Frame& f, const std::vector<Picture>& ps, const std::vector<ts::LegendEntry>& legend,
-                       const std::vector<L::Text>& notes) {
+                       const std::vector<L::Text>& notes, const ts::plot::Spec* plot = nullptr) {
   int lines = 0;
   for (const L::Text& n : notes) lines += L::captionLines(n.text, 1, float(f.width - 16));
   const float band = L::lineHeight(1) * float(std::max(1, lines)) + 8;
@@ -254,11 +294,19 @@ inline void pictureRow(ts::Frame& f, const std::vector<Picture>& ps, const std::
   const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band - key};
   std::vector<L::Stack> above, below;
   for (const Picture& p : ps) above.push_back({p.title.text}), below.push_back({p.note.text});
-  const std::vector<L::Cell> cells = L::flowFitting(area, {int(ps.size()), 1.0f, 1, 1, 10, 2, 120}, above, below);
+  if (plot) above.push_back({""}), below.push_back({""});
+  const std::vector<L::Cell> cells =
+      L::flowFitting(area, {int(above.size()), 1.0f, 1, 1, 10, 2, 120}, above, below);
   for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
     f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), cells[k].picture, *ps[k].texture));
     L::caption(f, cells[k].above, ps[k].title, L::kWhite, cells[k].scale);
     L::caption(f, cells[k].below, ps[k].note, L::kAmber, cells[k].scale);
+  }
+  // A plot needs room for its legend, axes and ticks; in a small window its numbers stay in the notes alone.
+  if (plot && cells.size() > ps.size() && cells[ps.size()].above.w() >= 200 &&
+      cells[ps.size()].below.y1 - cells[ps.size()].above.y0 >= 200) {
+    const L::Cell& c = cells[ps.size()];
+    ts::plot::draw(f, *plot, {int(c.above.x0), int(c.above.y0), int(c.above.w()), int(c.below.y1 - c.above.y0)});
   }
   if (!legend.empty())
     L::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band}, legend, 1);
