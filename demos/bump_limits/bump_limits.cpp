@@ -148,7 +148,7 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
                           G("the light's azimuth, degrees", azimuth_) + " deg";
     pictureRow(f,
                {{&s[0], "plain bump mapping", M("{bump_self_shadow_px[none]|%.0f} shadowed px lit")},
-                {&s[1], "horizon mapping, 8 directions", M("{bump_self_shadow_px[horizon]|%.0f} shadowed px lit")},
+                {&s[1], "horizon mapping, " + G("directions of the horizon map", kDirections) + " directions", M("{bump_self_shadow_px[horizon]|%.0f} shadowed px lit")},
                 {&s[2], "ray-marched shadows (CPU)", M("{bump_shadowed_px|%.0f} px in shadow")},
                 {&s[3], "horizon map against the ray march",
                  M("{bump_self_shadow_px[horizon]|%.0f} red, {bump_self_shadow_px[horizon_extra]|%.0f} blue")}},
@@ -186,8 +186,9 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
                "{bump_shear_error_deg[blinn_shown]|%.2f} deg.")},
         &plot);
   } else {
-    auto row = [&](const char* what, const char* key) {
-      L::Text t = std::string(what) + ": ";
+    auto sq = [&](const std::string& what, int n) { return G(what, n) + " x " + G(what, n); };
+    auto row = [&](const L::Text& what, const char* key) {
+      L::Text t = what + ": ";
       for (int d : kDistances) {
         char k[96];
         std::snprintf(k, sizeof k, "{%s[%dx]|%%.1f}", key, d);
@@ -205,14 +206,14 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
                {{&s[0], "unfiltered, one sample a pixel", K("RMS {bump_distance_rms_levels[unfiltered][%dx]|%%.1f}")},
                 {&s[1], "mipmapped heights",
                  K("RMS {bump_distance_rms_levels[mipmapped][%dx]|%%.1f}, tilt lost {bump_tilt_lost_deg[mipmapped][%dx]|%%.1f} deg")},
-                {&s[2], "4 x 4 supersampled, box filter", K("RMS {bump_distance_rms_levels[super4x4][%dx]|%%.1f}")},
-                {&s[3], "8 x 8 supersampled reference", K("mean tilt {bump_tilt_deg[reference][%dx]|%%.1f} deg")}},
+                {&s[2], sq("samples a pixel, a side, of Blinn's answer", kSuper) + " supersampled, box filter", K("RMS {bump_distance_rms_levels[super4x4][%dx]|%%.1f}")},
+                {&s[3], sq("samples a pixel, a side, of the reference", kReferenceSuper) + " supersampled reference", K("mean tilt {bump_tilt_deg[reference][%dx]|%%.1f} deg")}},
                {},
                {"At " + G("the distance shown", d) + "x (" + L::given("texels a pixel", d / 2.0, "%.1f") +
                     " texels a pixel).  RMS levels against the reference, by distance:",
                 row("unfiltered", "bump_distance_rms_levels[unfiltered]"),
                 row("mipmapped", "bump_distance_rms_levels[mipmapped]"),
-                row("4x4 supersampled", "bump_distance_rms_levels[super4x4]"),
+                row(sq("samples a pixel, a side, of Blinn's answer", kSuper) + " supersampled", "bump_distance_rms_levels[super4x4]"),
                 row("tilt lost by mipmapped heights, deg", "bump_tilt_lost_deg[mipmapped]")});
   }
   return f;
