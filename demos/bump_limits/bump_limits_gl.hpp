@@ -159,10 +159,17 @@ inline ts::Image bakedPass(ts::Renderer& r, const ts::Image& baked, int size, do
   });
 }
 
-// A picture measure() drew, with the calls that drew it, as a figure's texture.  No Frame describes it: the
-// shader is the demo's own pass (per-pixel horizon lookups, central differences), not a Frame batch.
-inline ts::TextureDesc glPicture(const ts::Image& img, const std::string& what, const ts::gl::CallList& calls) {
+// A picture measure() made, as a figure's texture.  GL_LINEAR: a panel's pixel centre may fall on a texel edge,
+// where GL_NEAREST's tie goes either way (OSMesa's buffer and a framebuffer object break it differently).
+inline ts::TextureDesc shownPicture(const ts::Image& img, const std::string& what) {
   ts::TextureDesc t = ts::renderedImageTexture(img, "bump_limits", what, "bump_limits");
+  t.minFilter = t.magFilter = GL_LINEAR;
+  return t;
+}
+// The same with the calls that drew it.  No Frame describes it: the shader is the demo's own pass (per-pixel
+// horizon lookups, central differences), not a Frame batch.
+inline ts::TextureDesc glPicture(const ts::Image& img, const std::string& what, const ts::gl::CallList& calls) {
+  ts::TextureDesc t = shownPicture(img, what);
   t.renderedBy = calls;
   return t;
 }

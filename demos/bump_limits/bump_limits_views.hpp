@@ -104,9 +104,8 @@ inline void measureShadows(ts::Renderer& r, double az, double elev, ts::Measurem
       }
   pic.shown = {glPicture(shadeNone, "plain bump mapping", noneCalls),
                glPicture(shadeHorizon, "horizon mapping", horizonCalls),
-               ts::renderedImageTexture(rayPic, "bump_limits", "bump shading darkened where the ray march shadows",
-                                        "bump_limits"),
-               ts::renderedImageTexture(diff, "bump_limits", "horizon mapping against the ray march", "bump_limits")};
+               shownPicture(rayPic, "bump shading darkened where the ray march shadows"),
+               shownPicture(diff, "horizon mapping against the ray march")};
 }
 
 // ---- view methods --------------------------------------------------------------------------------------------------
@@ -234,7 +233,7 @@ inline void measureDistance(ts::Renderer& r, int shownDistance, ts::Measurements
       show("unfiltered", 1, false);
       show("mipmapped heights", 1, true);
       show("4 x 4 supersampled, box filter", kSuper, false);
-      pic.shown.push_back(ts::renderedImageTexture(ref, "bump_limits", "the 8 x 8 supersampled reference", "bump_limits"));
+      pic.shown.push_back(shownPicture(ref, "the 8 x 8 supersampled reference"));
     }
     ts::measureProgress(double(++done) / 4.0);
   }
