@@ -217,7 +217,8 @@ inline void measureDistance(ts::Renderer& r, int shownDistance, ts::Measurements
         "the same rendered at 4 x 4 the resolution and box-filtered down (Blinn's answer)");
     put(name("bump_tilt_lost_deg[mipmapped]"), refTilt - mipTilt,
         "the reference's mean normal tilt (degrees from the plane's normal, over its 8 x 8 samples) minus the "
-        "mipmapped heights' mean tilt");
+        "mipmapped heights' mean tilt (below 0 where the pixel centres fall on texel centres, where central "
+        "differences of bilinear heights are steepest)");
     put(name("bump_tilt_lost_deg[super4x4]"), refTilt - superTilt,
         "the same for the 4 x 4 samples of Blinn's answer");
     put(name("bump_tilt_deg[reference]"), refTilt, "the reference's mean normal tilt, degrees");
