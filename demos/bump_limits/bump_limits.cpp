@@ -35,7 +35,7 @@
 //   shadowed(p) = exists s: z(p + s L_xy) > z(p) + s tan(elevation(L))       the CPU's ray march, the reference
 //   n' = n + bu e1 + bv e2,  e1, e2 perpendicular to n                       the offset-vector map
 //   true normal, sheared: (Ps + z_s n) x (Pt + z_t n),  Ps . Pt = cos theta; orthogonal method: (-z_s, -z_t, 1)
-//   c = a + (1 - a) max(n . L, 0) lit                                        the shading, grey, a = 0.1
+//   c = A + (1 - A) max(n . L, 0) lit                                        the shading, grey, A = 0.1 ambient
 //
 // What the GL does (bump_limits_gl.hpp, passes of measure() read back and shown as pictures):
 //   glUseProgram(p);  the fragment shader: central differences of texture2D(heights, st +- step), the normal and

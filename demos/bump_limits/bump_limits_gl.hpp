@@ -8,7 +8,7 @@
 //                     texels apart (seed 004, Blinn, on a plane); the heights mipmapped or not
 //   method normalmap  n = normalize(2 N(s, t) - 1)                     the normal map, GL_LINEAR
 //   method offset     n = normalize((0, 0, 1) + bu e1 + bv e2)         the offset-vector map, GL_LINEAR
-//   shading           c = a + (1 - a) max(n . L, 0) [lit]              a = kAmbient, grey
+//   shading           c = A + (1 - A) max(n . L, 0) [lit]              A = kAmbient, grey
 //   horizon           lit = elevation(L) > mix(H_k0, H_k0+1, frac)     H the horizon map (GL_LINEAR) at the
 //                     light's azimuth between the two nearest of the 8 directions
 //   output normals    0.5 + 0.5 n; masks: red = (n . L > 0), green = horizon-lit
