@@ -15,7 +15,8 @@
 // map (bu, bv along two vectors perpendicular to n, seed 001) each give a normal within a measured angle of the
 // displaced surface's (bump_normal_error_deg[*]).  With the parameterisation sheared (dp/ds and dp/dt at theta, keys
 // + / -) a method that assumes them orthogonal is off by an angle that grows as theta falls from 90 degrees
-// (bump_shear_error_deg[90|75|60|45]); Blinn's formula carries the shear.  Shading baked into a texture for a static
+// (bump_shear_error_deg[90|75|60|45]), and so is it when the texture is not square on the surface
+// (bump_stretch_error_deg[orthogonal]); Blinn's formula carries both.  Shading baked into a texture for a static
 // light is exact for that light (0 levels) and off by a measured RMS once the light moves.
 //
 // The distance claim (view distance): at 1x, 2x, 4x, 8x distance the bumped plane shaded once a pixel aliases (RMS
@@ -183,7 +184,9 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
          table,
          "At the keys' shear " + G("the shear angle, degrees", shear_) +
              M(" deg: orthogonal axes {bump_shear_error_deg[shown]|%.2f} deg, Blinn's formula "
-               "{bump_shear_error_deg[blinn_shown]|%.2f} deg.")},
+               "{bump_shear_error_deg[blinn_shown]|%.2f} deg.  Not square (|dp/dt| = {bump_stretch_aspect|%.0f} "
+               "|dp/ds|): orthogonal unit axes {bump_stretch_error_deg[orthogonal]|%.2f} deg, Blinn's "
+               "{bump_stretch_error_deg[blinn]|%.2f} deg.")},
         &plot);
   } else {
     auto sq = [&](const std::string& what, int n) { return G(what, n) + " x " + G(what, n); };

@@ -146,20 +146,21 @@ inline ts::Image offsetMapImage() {
 //   (Ps + z_s n) x (Pt + z_t n) = N + z_s (n x Pt) + z_t (Ps x n),   N = Ps x Pt, n = N / |N|,
 // which is Blinn's n' = N + z_s (N x Pt)/|N| + z_t (Ps x N)/|N| term for term on a plane: his formula carries the
 // shear.  A method that takes the texture's axes for orthogonal unit vectors (a normal map or offset map baked for
-// a square, unsheared texture) uses normalize(-z_s, -z_t, 1) in the frame (Ps, n x Ps, n).
-inline glm::dvec3 shearedTrueNormal(double s, double t, double thetaRad) {
+// a square, unsheared texture) uses normalize(-z_s, -z_t, 1) in the frame (Ps, n x Ps, n).  `aspect` stretches
+// Pt to that length (a texture that is not square on the surface): the same equations hold.
+inline glm::dvec3 shearedTrueNormal(double s, double t, double thetaRad, double aspect = 1) {
   const glm::dvec2 g = slopeAt(s, t);
-  const glm::dvec3 Ps(1, 0, 0), Pt(std::cos(thetaRad), std::sin(thetaRad), 0), n(0, 0, 1);
+  const glm::dvec3 Ps(1, 0, 0), Pt(aspect * std::cos(thetaRad), aspect * std::sin(thetaRad), 0), n(0, 0, 1);
   return glm::normalize(glm::cross(Ps + g.x * n, Pt + g.y * n));
 }
-inline glm::dvec3 shearedBlinnNormal(double s, double t, double thetaRad) {
+inline glm::dvec3 shearedBlinnNormal(double s, double t, double thetaRad, double aspect = 1) {
   const glm::dvec2 g = slopeAt(s, t);
-  const glm::dvec3 Ps(1, 0, 0), Pt(std::cos(thetaRad), std::sin(thetaRad), 0);
-  const glm::dvec3 N = glm::cross(Ps, Pt);  // |N| = sin theta
+  const glm::dvec3 Ps(1, 0, 0), Pt(aspect * std::cos(thetaRad), aspect * std::sin(thetaRad), 0);
+  const glm::dvec3 N = glm::cross(Ps, Pt);  // |N| = aspect sin theta
   const double len = glm::length(N);
   return glm::normalize(N + g.x * glm::cross(N, Pt) / len + g.y * glm::cross(Ps, N) / len);
 }
-inline glm::dvec3 shearedOrthogonalNormal(double s, double t, double /*thetaRad*/) {
+inline glm::dvec3 shearedOrthogonalNormal(double s, double t, double /*thetaRad*/, double /*aspect*/ = 1) {
   const glm::dvec2 g = slopeAt(s, t);
   return glm::normalize(glm::dvec3(-g.x, -g.y, 1.0));  // frame (Ps, n x Ps, n) = (x, y, z)
 }
@@ -168,13 +169,14 @@ inline double angleDeg(glm::dvec3 a, glm::dvec3 b) {
 }
 // The mean angle (degrees) between a method's normal and the true one over the tile, at 4 x 4 points a texel.
 template <class Method>
-double shearError(double thetaDeg, Method method) {
+double shearError(double thetaDeg, Method method, double aspect = 1) {
   const double th = thetaDeg * kPi / 180;
   double sum = 0;
   int n = 0;
   for (int j = 0; j < kTexels * 4; ++j)
     for (int i = 0; i < kTexels * 4; ++i, ++n)
-      sum += angleDeg(method((i + 0.5) / 4, (j + 0.5) / 4, th), shearedTrueNormal((i + 0.5) / 4, (j + 0.5) / 4, th));
+      sum += angleDeg(method((i + 0.5) / 4, (j + 0.5) / 4, th, aspect),
+                      shearedTrueNormal((i + 0.5) / 4, (j + 0.5) / 4, th, aspect));
   return sum / n;
 }
 

@@ -207,6 +207,9 @@ TEST(BumpLimits, MethodsPicturesAreTheirEquationsAndShearAndBakingBehave) {
   EXPECT_GT(value(m, "bump_shear_error_deg[45]"), value(m, "bump_shear_error_deg[60]"));
   EXPECT_LT(value(m, "bump_shear_error_deg[blinn_shown]"), 1e-6);
   EXPECT_DOUBLE_EQ(value(m, "bump_shear_error_deg[shown]"), value(m, "bump_shear_error_deg[60]"));
+  // Not square: the orthogonal unit axes are off, Blinn's formula is not.
+  EXPECT_GT(value(m, "bump_stretch_error_deg[orthogonal]"), 1.0);
+  EXPECT_LT(value(m, "bump_stretch_error_deg[blinn]"), 1e-6);
   // The true sheared normal is the cross product of the displaced surface's partials (checked at one point by a
   // finite difference of p(s, t) = s Ps + t Pt + z n).
   const double th = 50 * kPi / 180, e = 1e-5, s0 = 11.3, t0 = 27.8;

@@ -19,7 +19,8 @@ constexpr int kDistancePixels = 128;                 // the distance view's pict
 constexpr int kSuper = 4, kReferenceSuper = 8;       // Blinn's 4 x 4 samples a pixel; the reference's 8 x 8
 constexpr double kBakeMoveDeg = 30;                  // the light moves this much in azimuth after baking
 constexpr double kThetas[] = {90, 75, 60, 45};       // the sheared parameterisation's table, degrees
-constexpr int kDistances[] = {1, 2, 4, 8};           // the distance view's distances (1x: 2 pixels a texel)
+constexpr int kDistances[] = {1, 2, 4, 8};
+constexpr double kStretch = 2;                      // the texture stretched: |dp/dt| = 2 |dp/ds|           // the distance view's distances (1x: 2 pixels a texel)
 
 // Colours that mean something in the pictures (each has its legend entry).
 const glm::vec4 kMissed{0.95f, 0.2f, 0.2f, 1}, kExtra{0.3f, 0.6f, 1.0f, 1};
@@ -155,6 +156,13 @@ inline void measureMethods(ts::Renderer& r, double thetaDeg, ts::Measurements& m
       "the same at --shear, the angle the keys set");
   put("bump_shear_error_deg[blinn_shown]", shearError(thetaDeg, shearedBlinnNormal),
       "Blinn's n' = N + z_s (N x Pt)/|N| + z_t (Ps x N)/|N| at --shear (it carries the shear)");
+  // Not square: dp/dt twice dp/ds's length, at right angles.
+  put("bump_stretch_error_deg[orthogonal]", shearError(90, shearedOrthogonalNormal, kStretch),
+      "mean angle (degrees) between the orthogonal-unit-axes method's normal and the true one, dp/dt twice as "
+      "long as dp/ds (at right angles)");
+  put("bump_stretch_error_deg[blinn]", shearError(90, shearedBlinnNormal, kStretch),
+      "the same for Blinn's formula");
+  put("bump_stretch_aspect", kStretch, "|dp/dt| / |dp/ds| of the stretched parameterisation");
   ts::measureProgress(0.7);
   // Baking: the shading for the light at azimuth 30, elevation 45, one pixel a texel, read back as the texture.
   Pass bake;
