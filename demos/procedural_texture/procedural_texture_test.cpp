@@ -11,9 +11,11 @@
 //
 // Tolerances.  The seam: the solid sphere's step across a meridian is the noise's own change over three pixels, as
 // beside it, up to the sampling of the mean over ~140 rows; the wrapped image's jump is the difference of two
-// unrelated noise values, tens of levels.  The period: the render is the texture a texel a pixel (GL_NEAREST, no
-// rounding), and the autocorrelation's peak is refined to a fraction of a pixel; turbulence moves each stripe by
-// a T(p) periods, which averages over the picture to a bend of the peak below a pixel.  H: diamond-square is not
+// unrelated noise values, tens of levels.  The period: the plain stripes are the texture magnified (GL_NEAREST, no
+// rounding) and the autocorrelation's peak is refined to a fraction of a pixel: within a pixel.  With turbulence
+// each stripe is moved by a T(p) periods, and T changes between one stripe and the next, which moves the
+// autocorrelation's peak by a part of a T's change: held within 5% of the period (one stripe more or less is 10%
+// or more at these stripes, so the control still tells them apart).  H: diamond-square is not
 // exactly self-affine (each new point is the mean of its neighbours plus a displacement, which smooths the finest
 // lags; Fournier, Fussell and Carpenter's method as Rogers gives it), so the fit is held within 0.15.
 #include <gtest/gtest.h>
@@ -80,11 +82,13 @@ TEST(ProceduralTexture, MarblesPeriodIsTheFormulas) {
     for (const char* id : {"marble_bent", "marble_plain"}) {
       const ts::Rect r = ts::test::panelOf(f, id).viewport;
       const double period = pr::stripePeriod(img, r), formula = double(r.w) / n;
-      EXPECT_NEAR(period, formula, 1.0) << id;
+      const double tolerance = std::string(id) == "marble_plain" ? 1.0 : 0.05 * formula;
+      EXPECT_NEAR(period, formula, tolerance) << id;
       // Control: one stripe more would be a period the render does not have.
-      EXPECT_GT(std::abs(period - double(r.w) / (n + 1)), 1.0) << id;
+      EXPECT_GT(std::abs(period - double(r.w) / (n + 1)), tolerance) << id;
     }
-    EXPECT_NEAR(value(m, "marble_period_px[measured]"), value(m, "marble_period_px[formula]"), 1.0);
+    EXPECT_NEAR(value(m, "marble_period_px[measured]"), value(m, "marble_period_px[formula]"),
+                0.05 * value(m, "marble_period_px[formula]"));
     EXPECT_NEAR(value(m, "marble_period_px[plain]"), value(m, "marble_period_px[formula]"), 1.0);
   }
 }

@@ -98,7 +98,7 @@ inline Batch terrainBatch(const HeightField& f, double H) {
   const int n = f.n;
   const double top = std::pow(double(1 << kTerrainMaxDepth), H);  // the corners' displacement's scale
   auto P = [&](int x, int y) {
-    return glm::dvec3(2.0 * x / n - 1, 0.9 * f.at(x, y) / top, 2.0 * y / n - 1);
+    return glm::dvec3(2.0 * x / n - 1, 0.5 * f.at(x, y) / top, 2.0 * y / n - 1);
   };
   const glm::dvec3 light = glm::normalize(glm::dvec3(-0.5, 0.8, 0.4));
   auto colour = [&](const glm::dvec3& a, const glm::dvec3& c, const glm::dvec3& d) {
@@ -120,13 +120,13 @@ inline Batch terrainBatch(const HeightField& f, double H) {
     }
   return b;
 }
-// The terrain seen from `distance` terrain half-widths (times a constant) away, 30 degrees from above.
+// The terrain seen from 2.8 x `distance` terrain half-widths away, 30 degrees from above.
 inline Panel terrainPanel(const std::string& id, const Rect& viewport, double distance) {
   Panel p;
   p.id = id;
   p.viewport = viewport;
   p.projection = glm::perspective(glm::radians(30.0f), float(viewport.w) / float(std::max(1, viewport.h)), 0.1f, 400.0f);
-  const float d = float(3.6 * distance);
+  const float d = float(2.8 * distance);
   p.modelview = glm::lookAt(glm::vec3(0, d * 0.5f, d * 0.866f), glm::vec3(0, -0.1f, 0), glm::vec3(0, 1, 0));
   p.depthTest = true;
   p.clear = true;
