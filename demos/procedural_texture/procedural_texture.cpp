@@ -22,7 +22,7 @@
 //   v      view: solid | marble | terrain
 //   o / O  octaves summed, 1..6                   s / S  marble's stripes across the block
 //   t / T  marble's turbulence weight (percent)  d / D  the terrain's distance (depth follows it)
-//   h / H  the terrain's roughness exponent H
+//   r / R  the terrain's roughness exponent H     (h, q and l are the window's: overlay, quit, GL calls)
 //
 // The equations (procedural_texture_math.hpp):
 //   n(p) = trilinear interpolation of the lattice values L[i mod 16, j mod 16, k mod 16] round p (in cells)
@@ -92,7 +92,7 @@ class ProceduralTexture final : public ts::Scene {
     o.addInt("stripes", &stripes_, 1, 32, "marble's stripes across the block", 's', 'S');
     o.addInt("turbulence", &turbulence_, 0, 300, "marble's turbulence weight, percent of a period", 't', 'T', 10);
     o.addFloat("distance", &distance_, 1.0f, 32.0f, "the terrain's distance; its depth follows", 'd', 'D', 1.0f);
-    o.addFloat("roughness", &roughness_, 0.1f, 0.9f, "the terrain's exponent H (displacement s^H)", 'h', 'H', 0.1f);
+    o.addFloat("roughness", &roughness_, 0.1f, 0.9f, "the terrain's exponent H (displacement s^H)", 'r', 'R', 0.1f);
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {{"procedural_texture_solid",
@@ -135,9 +135,15 @@ class ProceduralTexture final : public ts::Scene {
   float distance_ = 2.0f, roughness_ = 0.5f;
 };
 
-ts::Frame ProceduralTexture::build(int width, int height, const ts::Measurements& measured) const {
+ts::Frame ProceduralTexture::build(int width, int height, const ts::Measurements& last) const {
   namespace L = ts::layout;
   ts::Frame f = L::blankFrame(width, height);
+  // The window draws with the last measurement until the next one ends: after the view key it is another view's,
+  // whose numbers this view does not print ("(measuring)" until its own arrive).
+  static const char* const kViewsOwn[] = {"solid_texture_bytes", "marble_plane_px", "terrain_H"};
+  const bool ours = std::any_of(last.begin(), last.end(), [&](const ts::Measurement& m) { return m.name == kViewsOwn[view_]; });
+  const ts::Measurements none;
+  const ts::Measurements& measured = ours ? last : none;
   auto M = [&](const std::string& templ) { return L::measuredText(measured, templ); };
   const L::Text oct = L::given("octaves", octaves_, "%.0f");
   if (view_ == 0) {
@@ -160,13 +166,14 @@ ts::Frame ProceduralTexture::build(int width, int height, const ts::Measurements
         f,
         {{sphere("solid_sphere", solid, true), "solid: (s,t,r) = the point",
           M("seam {solid_seam_levels[solid]|%.1f} levels")},
-         {cube, "the cube, the same block", oct + " octaves, 64^3 texels"},
+         {cube, "the cube, the same block",
+          oct + " octaves, " + L::given("3D texture's texels a side", pr::kSolidTexels, "%.0f") + "^3 texels"},
          {sphere("wrapped_sphere", flat, false), "2D image: (u,v) = longitude, latitude",
           M("seam {solid_seam_levels[wrapped_2d]|%.1f} levels")}},
         {{pr::kSeamMark, "the meridian u = 0 = 1, where the 2D image meets itself"}},
         M("Step across the meridian less the step beside it: solid {solid_seam_levels[solid]|%.1f}, wrapped 2D "
           "{solid_seam_levels[wrapped_2d]|%.1f} levels (8-bit).  ") +
-            M("Lattice for " + std::to_string(octaves_) + " octaves: {lattice_bytes[octaves=" +
+            "Lattice for " + oct + M(" octaves: {lattice_bytes[octaves=" +
               std::to_string(octaves_) + "]|%.0f} bytes reused, {lattice_bytes_per_level[octaves=" +
               std::to_string(octaves_) + "]|%.0f} with one an octave; the 3D texture {solid_texture_bytes|%.0f} bytes."));
   } else if (view_ == 1) {
@@ -187,8 +194,8 @@ ts::Frame ProceduralTexture::build(int width, int height, const ts::Measurements
                     {plane("marble_plain", plain), "no turbulence", M("period {marble_period_px[plain]|%.1f} px")},
                     {sphere, "the same marble, solid", "carved by a sphere"}},
                    {},
-                   M("M = 1/2 + 1/2 sin(2 pi (" + std::to_string(stripes_) +
-                     " x + a T(p))): the formula's period {marble_period_px[formula]|%.1f} pixels of the "
+                   "M = 1/2 + 1/2 sin(2 pi (" + L::given("stripes", stripes_, "%.0f") +
+                       M(" x + a T(p))): the formula's period {marble_period_px[formula]|%.1f} pixels of the "
                      "{marble_plane_px|%.0f}-pixel plane; by autocorrelation of the render {marble_period_px[measured]|%.1f} "
                      "with turbulence, {marble_period_px[plain]|%.1f} without."));
   } else {
