@@ -3,8 +3,11 @@
 #include "demos/procedural_texture/procedural_texture_textures.hpp"
 
 #include <algorithm>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -34,6 +37,17 @@ Rgba stoneColour(double v) {
 Rgba marbleColour(double v) { return {u8(70 + 180 * v), u8(60 + 180 * v), u8(80 + 170 * v), 255}; }
 
 TextureDesc solidTexture(int kind, int oct, int stripes, int turbulencePercent) {
+  // 64^3 texels take tens of milliseconds, and the window builds its frame each time it draws: made once for
+  // each state (the measurement's thread asks too, hence the lock).
+  if (kind == 0) stripes = turbulencePercent = 0;  // the noise has neither: its parameters say so
+  static std::mutex lock;
+  static std::map<std::tuple<int, int, int, int>, TextureDesc> made;
+  const auto key = std::make_tuple(kind, oct, stripes, turbulencePercent);
+  {
+    std::lock_guard<std::mutex> hold(lock);
+    auto it = made.find(key);
+    if (it != made.end()) return it->second;
+  }
   const int n = kSolidTexels;
   Image img(n, n * n);  // slice k in rows k n .. k n + n - 1 (TextureDesc::depth)
   const Lattice& l = lattice();
@@ -52,6 +66,9 @@ TextureDesc solidTexture(int kind, int oct, int stripes, int turbulencePercent) 
                              {"turbulence_percent", std::to_string(turbulencePercent)}},
                             std::move(img), GL_LINEAR);
   t.depth = n;
+  std::lock_guard<std::mutex> hold(lock);
+  if (made.size() >= 16) made.clear();  // a few states' worth (1 MiB each)
+  made.emplace(key, t);
   return t;
 }
 
@@ -90,7 +107,7 @@ int ranged(const TextureParams& params, const std::string& key, const std::strin
 bool remake(const std::string& name, const TextureParams& p, TextureDesc* out) {
   if (name == "procedural_texture_solid")
     *out = solidTexture(ranged(p, "kind", name, 0, 1), ranged(p, "octaves", name, 1, kMaxOctaves),
-                        ranged(p, "stripes", name, 1, 64), ranged(p, "turbulence_percent", name, 0, 1000));
+                        ranged(p, "stripes", name, 0, 64), ranged(p, "turbulence_percent", name, 0, 1000));
   else if (name == "procedural_texture_noise2d") *out = noise2DTexture(ranged(p, "octaves", name, 1, kMaxOctaves));
   else if (name == "procedural_texture_marble")
     *out = marblePlaneTexture(ranged(p, "stripes", name, 1, 64), ranged(p, "turbulence_percent", name, 0, 1000),
