@@ -214,7 +214,10 @@ ts::Frame ProceduralTexture::build(int width, int height, const ts::Measurements
                     M("{terrain_triangles[depth=" + std::to_string(depth) + "]|%.0f} triangles")});
     }
     pr::pictureRow(
-        f, ps, {},
+        f, ps,
+        {{pr::kLow, "the lowest ground"},
+         {pr::kMid, "the middle heights"},
+         {pr::kHigh, "the highest (each triangle shaded by the light's cosine)"}},
         M("Triangles counted 2 x 4^d: depth 1 {terrain_triangles[depth=1]|%.0f}, 2 {terrain_triangles[depth=2]|%.0f}, "
           "3 {terrain_triangles[depth=3]|%.0f}, 4 {terrain_triangles[depth=4]|%.0f}, 5 "
           "{terrain_triangles[depth=5]|%.0f}, 6 {terrain_triangles[depth=6]|%.0f}.  ") +

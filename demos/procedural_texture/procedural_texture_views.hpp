@@ -22,6 +22,8 @@
 
 namespace ts::proc {
 inline const glm::vec4 kSeamMark{0.2f, 0.9f, 1.0f, 1.0f};  // ticks at the u = 0 = 1 meridian
+// The terrain's height ramp: the lowest, the middle (60% of the way up), the highest, times Lambert's cosine.
+inline const glm::vec4 kLow{0.3f, 0.62f, 0.26f, 1.0f}, kMid{0.55f, 0.42f, 0.28f, 1.0f}, kHigh{0.95f, 0.95f, 0.95f, 1.0f};
 
 // ---- geometry ---------------------------------------------------------------------------------------------------
 // The unit sphere, `slices` x `stacks`, longitude lambda from the +z axis (which faces the camera) towards +x:
@@ -100,12 +102,15 @@ inline Batch terrainBatch(const HeightField& f, double H) {
   auto P = [&](int x, int y) {
     return glm::dvec3(2.0 * x / n - 1, 0.5 * f.at(x, y) / top, 2.0 * y / n - 1);
   };
+  double lo = 1e30, hi = -1e30;
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x) lo = std::min(lo, P(x, y).y), hi = std::max(hi, P(x, y).y);
   const glm::dvec3 light = glm::normalize(glm::dvec3(-0.5, 0.8, 0.4));
   auto colour = [&](const glm::dvec3& a, const glm::dvec3& c, const glm::dvec3& d) {
     glm::dvec3 nrm = glm::normalize(glm::cross(d - a, c - a));
     if (nrm.y < 0) nrm = -nrm;
-    const double hgt = std::clamp((a.y + c.y + d.y) / 3 / 0.45 * 0.5 + 0.5, 0.0, 1.0);
-    const glm::dvec3 low(0.22, 0.45, 0.2), mid(0.55, 0.42, 0.28), high(0.95, 0.95, 0.95);
+    const double hgt = hi > lo ? std::clamp(((a.y + c.y + d.y) / 3 - lo) / (hi - lo), 0.0, 1.0) : 0.5;
+    const glm::dvec3 low{glm::vec3(kLow)}, mid{glm::vec3(kMid)}, high{glm::vec3(kHigh)};
     const glm::dvec3 ramp = hgt < 0.6 ? glm::mix(low, mid, hgt / 0.6) : glm::mix(mid, high, (hgt - 0.6) / 0.4);
     const double lit = 0.3 + 0.7 * std::max(0.0, glm::dot(nrm, light));
     return glm::vec4(glm::vec3(ramp * lit), 1.0f);
