@@ -112,12 +112,15 @@ TEST(ProceduralTexture, TerrainTrianglesAre2x4ToTheDepthTheDistanceGives) {
 }
 
 TEST(ProceduralTexture, RoughnessScalesAsDistanceToTheH) {
+  double previous = 0;
   for (double H : {0.3, 0.5, 0.7}) {
     SCOPED_TRACE(H);
     const pr::HeightField field = pr::diamondSquare(pr::kTerrainMaxDepth, H, 7);
     const double fit = pr::fittedH(field, 16);
     EXPECT_NEAR(fit, H, 0.15);
     EXPECT_GT(std::abs(fit - (H + 0.3)), 0.15);  // control: a wrong exponent is told apart
+    EXPECT_GT(fit, previous);                    // a rougher exponent, a steeper variogram
+    previous = fit;
   }
   char h[8];
   std::snprintf(h, sizeof h, "%.1f", 0.4);
