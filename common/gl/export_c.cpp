@@ -279,7 +279,8 @@ ExportedProgram exportC(const std::vector<gl::Call>& recorded, const Frame& fram
        info.sourceName + " -o fig -lOSMesa -lm && ./fig out.ppm\n";
   if (!g.texels.empty())
     s += " * The texture images are read from " + info.texelsName +
-         " (every glTexImage2D's and glTexImage3D's bytes, in call order):\n * run the program in the folder that holds it.\n";
+         " (every glTexImage2D's and glTexImage3D's bytes, in call order):\n"
+         " * run the program in the folder that holds it.\n";
   // Panels that show a GL render the demo made in its measurement passes
   // (VI.7's sampling modes, the parallax modes) are such images here.
   std::vector<std::string> rendered;
