@@ -74,11 +74,11 @@ class ProceduralTexture final : public ts::Scene {
   std::string id() const override { return "procedural_texture"; }
   std::string title() const override { return "Procedural textures: solid noise, marble, fractal terrain"; }
   std::string about() const override {
-    return "A 3D texture of lattice noise (an integer hash, trilinear interpolation, octaves summed) carved by a sphere\n"
-           "and a cube: no seam, where the same noise as a 2D image wrapped round a sphere jumps at u = 0 = 1 (measured\n"
-           "across the meridian).  Views: marble (sin of x plus turbulence; the stripes' period by autocorrelation),\n"
-           "a fractal terrain by diamond-square, its depth chosen by the distance (triangles counted; roughness\n"
-           "exponent H fitted from the field's variogram).";
+    return "A 3D texture of lattice noise (an integer hash, trilinear interpolation, octaves summed) carved by a\n"
+           "sphere and a cube: no seam, where the same noise as a 2D image wrapped round a sphere jumps at u = 0 = 1\n"
+           "(measured across the meridian).  Views: marble (sin of x plus turbulence; the stripes' period by\n"
+           "autocorrelation), a fractal terrain by diamond-square, its depth chosen by the distance (triangles\n"
+           "counted; roughness exponent H fitted from the field's variogram).";
   }
   std::vector<std::string> claim() const override {
     if (view_ == 1) return {"marble_period_px*"};
@@ -141,7 +141,8 @@ ts::Frame ProceduralTexture::build(int width, int height, const ts::Measurements
   // The window draws with the last measurement until the next one ends: after the view key it is another view's,
   // whose numbers this view does not print ("(measuring)" until its own arrive).
   static const char* const kViewsOwn[] = {"solid_texture_bytes", "marble_plane_px", "terrain_H"};
-  const bool ours = std::any_of(last.begin(), last.end(), [&](const ts::Measurement& m) { return m.name == kViewsOwn[view_]; });
+  const bool ours = std::any_of(last.begin(), last.end(),
+                                [&](const ts::Measurement& m) { return m.name == kViewsOwn[view_]; });
   const ts::Measurements none;
   const ts::Measurements& measured = ours ? last : none;
   auto M = [&](const std::string& templ) { return L::measuredText(measured, templ); };
@@ -173,9 +174,10 @@ ts::Frame ProceduralTexture::build(int width, int height, const ts::Measurements
         {{pr::kSeamMark, "the meridian u = 0 = 1, where the 2D image meets itself"}},
         M("Step across the meridian less the step beside it: solid {solid_seam_levels[solid]|%.1f}, wrapped 2D "
           "{solid_seam_levels[wrapped_2d]|%.1f} levels (8-bit).  ") +
-            "Lattice for " + oct + M(" octaves: {lattice_bytes[octaves=" +
-              std::to_string(octaves_) + "]|%.0f} bytes reused, {lattice_bytes_per_level[octaves=" +
-              std::to_string(octaves_) + "]|%.0f} with one an octave; the 3D texture {solid_texture_bytes|%.0f} bytes."));
+            "Lattice for " + oct +
+            M(" octaves: {lattice_bytes[octaves=" + std::to_string(octaves_) +
+              "]|%.0f} bytes reused, {lattice_bytes_per_level[octaves=" + std::to_string(octaves_) +
+              "]|%.0f} with one an octave; the 3D texture {solid_texture_bytes|%.0f} bytes."));
   } else if (view_ == 1) {
     const int bent = f.addTexture(pr::marblePlaneTexture(stripes_, turbulence_, octaves_));
     const int plain = f.addTexture(pr::marblePlaneTexture(stripes_, 0, octaves_));
@@ -188,16 +190,17 @@ ts::Frame ProceduralTexture::build(int width, int height, const ts::Measurements
       p.batches.push_back(pr::sphereBatch(solid, true));
       fr.panels.push_back(p);
     };
-    pr::pictureRow(f,
-                   {{plane("marble_bent", bent), "turbulence " + L::given("turbulence, percent", turbulence_, "%.0f") + "%",
-                     M("period {marble_period_px[measured]|%.1f} px")},
-                    {plane("marble_plain", plain), "no turbulence", M("period {marble_period_px[plain]|%.1f} px")},
-                    {sphere, "the same marble, solid", "carved by a sphere"}},
-                   {},
-                   "M = 1/2 + 1/2 sin(2 pi (" + L::given("stripes", stripes_, "%.0f") +
-                       M(" x + a T(p))): the formula's period {marble_period_px[formula]|%.1f} pixels of the "
-                     "{marble_plane_px|%.0f}-pixel plane; by autocorrelation of the render {marble_period_px[measured]|%.1f} "
-                     "with turbulence, {marble_period_px[plain]|%.1f} without."));
+    pr::pictureRow(
+        f,
+        {{plane("marble_bent", bent), "turbulence " + L::given("turbulence, percent", turbulence_, "%.0f") + "%",
+          M("period {marble_period_px[measured]|%.1f} px")},
+         {plane("marble_plain", plain), "no turbulence", M("period {marble_period_px[plain]|%.1f} px")},
+         {sphere, "the same marble, solid", "carved by a sphere"}},
+        {},
+        "M = 1/2 + 1/2 sin(2 pi (" + L::given("stripes", stripes_, "%.0f") +
+            M(" x + a T(p))): the formula's period {marble_period_px[formula]|%.1f} pixels of the "
+              "{marble_plane_px|%.0f}-pixel plane; by autocorrelation of the render {marble_period_px[measured]|%.1f} "
+              "with turbulence, {marble_period_px[plain]|%.1f} without."));
   } else {
     std::vector<pr::Picture> ps;
     for (int k = 0; k < 3; ++k) {
@@ -241,7 +244,8 @@ void ProceduralTexture::measureSolid(ts::Renderer& r, ts::Measurements& out) con
   for (bool solid : {true, false}) {
     ts::Frame f;
     f.width = f.height = n;
-    const int tex = f.addTexture(solid ? pr::solidTexture(0, octaves_, stripes_, turbulence_) : pr::noise2DTexture(octaves_));
+    const int tex = f.addTexture(solid ? pr::solidTexture(0, octaves_, stripes_, turbulence_)
+                                       : pr::noise2DTexture(octaves_));
     ts::Panel p = pr::objectPanel("sphere", {0, 0, n, n}, glm::mat4(1.0f), pr::kObjectRadius);
     p.batches.push_back(pr::sphereBatch(tex, solid));
     f.panels.push_back(p);

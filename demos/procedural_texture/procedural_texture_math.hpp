@@ -22,7 +22,7 @@ inline double hash3(uint32_t i, uint32_t j, uint32_t k) {
 // The precomputed lattice: period^3 random values, lattice point (i, j, k) at values[i + p (j + p k)], read
 // modulo the period (the noise tiles every `period` cells).  One lattice serves every octave.
 constexpr int kLatticePeriod = 16;
-constexpr int kBaseCells = 2;   // octave 0: 2 lattice cells across the unit cube; octave i: 2 x 2^i
+constexpr int kBaseCells = 2;  // octave 0: 2 lattice cells across the unit cube; octave i: 2 x 2^i
 constexpr int kMaxOctaves = 6;
 struct Lattice {
   int period = kLatticePeriod;
@@ -131,7 +131,8 @@ inline HeightField diamondSquare(int depth, double H, uint32_t seed) {
     const double amp = std::pow(double(s * scale) / std::sqrt(2.0), H), amp2 = std::pow(double(half * scale), H);
     for (int y = half; y < n; y += s)
       for (int x = half; x < n; x += s)
-        H_(x, y) = (H_(x - half, y - half) + H_(x + half, y - half) + H_(x - half, y + half) + H_(x + half, y + half)) / 4 +
+        H_(x, y) = (H_(x - half, y - half) + H_(x + half, y - half) + H_(x - half, y + half) + H_(x + half, y + half)) /
+                       4 +
                    amp * r(x, y);
     for (int y = 0; y <= n; y += half)
       for (int x = (y / half) % 2 == 0 ? half : 0; x <= n; x += s) {

@@ -33,7 +33,8 @@ TextureDesc described(const std::string& name, std::vector<std::pair<std::string
 
 Rgba stoneColour(double v) {
   v = std::clamp(0.5 + 2.2 * (v - 0.5), 0.0, 1.0);  // the sum's values gather round 1/2: spread them
-  return {u8(30 + 210 * v), u8(40 + 180 * v), u8(60 + 130 * v), 255}; }
+  return {u8(30 + 210 * v), u8(40 + 180 * v), u8(60 + 130 * v), 255};
+}
 Rgba marbleColour(double v) { return {u8(70 + 180 * v), u8(60 + 180 * v), u8(80 + 170 * v), 255}; }
 
 TextureDesc solidTexture(int kind, int oct, int stripes, int turbulencePercent) {
@@ -77,7 +78,8 @@ TextureDesc noise2DTexture(int oct) {
   for (int j = 0; j < kNoise2DHeight; ++j)
     for (int i = 0; i < kNoise2DWidth; ++i)
       img.set(i, j,
-              stoneColour(octaves(lattice(), 3 * (i + 0.5) / kNoise2DWidth, 1.5 * (j + 0.5) / kNoise2DHeight, 0.5, oct)));
+              stoneColour(
+                  octaves(lattice(), 3 * (i + 0.5) / kNoise2DWidth, 1.5 * (j + 0.5) / kNoise2DHeight, 0.5, oct)));
   TextureDesc t = described("procedural_texture_noise2d", {{"octaves", std::to_string(oct)}}, std::move(img),
                             GL_LINEAR);
   t.wrapS = GL_REPEAT;  // round the sphere: u wraps, and the last column meets the first at the seam
@@ -89,8 +91,9 @@ TextureDesc marblePlaneTexture(int stripes, int turbulencePercent, int oct) {
   Image img(n, n);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
-      img.set(i, j, marbleColour(marble(lattice(), (i + 0.5) / n, (j + 0.5) / n, 0.5, stripes, turbulencePercent / 100.0,
-                                        oct)));
+      img.set(i, j,
+              marbleColour(
+                  marble(lattice(), (i + 0.5) / n, (j + 0.5) / n, 0.5, stripes, turbulencePercent / 100.0, oct)));
   return described("procedural_texture_marble",
                    {{"stripes", std::to_string(stripes)},
                     {"turbulence_percent", std::to_string(turbulencePercent)},

@@ -23,7 +23,8 @@
 namespace ts::proc {
 inline const glm::vec4 kSeamMark{0.2f, 0.9f, 1.0f, 1.0f};  // ticks at the u = 0 = 1 meridian
 // The terrain's height ramp: the lowest, the middle (60% of the way up), the highest, times Lambert's cosine.
-inline const glm::vec4 kLow{0.3f, 0.62f, 0.26f, 1.0f}, kMid{0.55f, 0.42f, 0.28f, 1.0f}, kHigh{0.95f, 0.95f, 0.95f, 1.0f};
+inline const glm::vec4 kLow{0.3f, 0.62f, 0.26f, 1.0f}, kMid{0.55f, 0.42f, 0.28f, 1.0f},
+    kHigh{0.95f, 0.95f, 0.95f, 1.0f};
 
 // ---- geometry ---------------------------------------------------------------------------------------------------
 // The unit sphere, `slices` x `stacks`, longitude lambda from the +z axis (which faces the camera) towards +x:
@@ -99,9 +100,7 @@ inline Batch terrainBatch(const HeightField& f, double H) {
   b.role = "terrain";
   const int n = f.n;
   const double top = std::pow(double(1 << kTerrainMaxDepth), H);  // the corners' displacement's scale
-  auto P = [&](int x, int y) {
-    return glm::dvec3(2.0 * x / n - 1, 0.5 * f.at(x, y) / top, 2.0 * y / n - 1);
-  };
+  auto P = [&](int x, int y) { return glm::dvec3(2.0 * x / n - 1, 0.5 * f.at(x, y) / top, 2.0 * y / n - 1); };
   double lo = 1e30, hi = -1e30;
   for (int y = 0; y <= n; ++y)
     for (int x = 0; x <= n; ++x) lo = std::min(lo, P(x, y).y), hi = std::max(hi, P(x, y).y);
@@ -130,7 +129,8 @@ inline Panel terrainPanel(const std::string& id, const Rect& viewport, double di
   Panel p;
   p.id = id;
   p.viewport = viewport;
-  p.projection = glm::perspective(glm::radians(30.0f), float(viewport.w) / float(std::max(1, viewport.h)), 0.1f, 400.0f);
+  p.projection = glm::perspective(glm::radians(30.0f), float(viewport.w) / float(std::max(1, viewport.h)), 0.1f,
+                                  400.0f);
   const float d = float(2.8 * distance);
   p.modelview = glm::lookAt(glm::vec3(0, d * 0.5f, d * 0.866f), glm::vec3(0, -0.1f, 0), glm::vec3(0, 1, 0));
   p.depthTest = true;
@@ -191,7 +191,8 @@ inline double stripePeriod(const Image& img, const Rect& r) {
   }
   int l = 1;
   while (l <= maxLag && A[size_t(l)] >= 0) ++l;
-  while (l <= maxLag && !(A[size_t(l)] >= A[size_t(l - 1)] && A[size_t(l)] >= A[size_t(l + 1)] && A[size_t(l)] > 0)) ++l;
+  while (l <= maxLag && !(A[size_t(l)] >= A[size_t(l - 1)] && A[size_t(l)] >= A[size_t(l + 1)] && A[size_t(l)] > 0))
+    ++l;
   if (l > maxLag) return -1;
   const double a = A[size_t(l - 1)], b = A[size_t(l)], c = A[size_t(l + 1)];
   const double den = a - 2 * b + c;
