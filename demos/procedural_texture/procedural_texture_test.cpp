@@ -20,7 +20,9 @@
 // lags; Fournier, Fussell and Carpenter's method as Rogers gives it), so the fit is held within 0.15.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "common/core/image.hpp"
