@@ -67,6 +67,30 @@ const Texture* Inspector::texture(int index, std::string* why) const {
   return slot.get();
 }
 
+const Volume* Inspector::volume(int index) const {
+  if (index < 0 || size_t(index) >= frame_.textures.size()) return nullptr;
+  const ts::TextureDesc& d = frame_.textures[size_t(index)];
+  if (d.depth <= 1 || !d.image || d.image->height % d.depth != 0) return nullptr;
+  std::unique_ptr<Slices>& v = volumes_[index];
+  if (!v) {
+    // The slices stacked in the image (slice k in rows k h ..), each a plain 2D texture, as Reference makes them.
+    v = std::make_unique<Slices>();
+    const int w = d.image->width, h = d.image->height / d.depth;
+    for (int k = 0; k < d.depth; ++k) {
+      ts::TextureDesc sd = d;
+      sd.depth = 1, sd.mipmaps = false, sd.mipLevels = nullptr;
+      auto img = std::make_shared<ts::Image>(w, h);
+      std::copy_n(d.image->pixels.begin() + std::ptrdiff_t(size_t(k) * size_t(w) * size_t(h) * 4),
+                  size_t(w) * size_t(h) * 4, img->pixels.begin());
+      sd.image = img;
+      sd.name += "[slice " + std::to_string(k) + "]";
+      v->slices.emplace_back(sd);
+    }
+    v->volume.textures = &v->slices, v->volume.first = 0, v->volume.depth = d.depth, v->volume.wrapR = d.wrapR;
+  }
+  return &v->volume;
+}
+
 Inspection Inspector::fragment(int x, int y, int pi, int bi, const ScreenPoly& P) const {
   const ts::Panel& p = frame_.panels[size_t(pi)];
   const ts::Batch& b = p.batches[size_t(bi)];
@@ -152,6 +176,14 @@ Inspection Inspector::fragment(int x, int y, int pi, int bi, const ScreenPoly& P
     in.level0 = fp.level0, in.level1 = fp.level1, in.levelWeight = fp.levelWeight;
     in.texels.assign(fp.texels.begin(), fp.texels.begin() + fp.count);
     in.filtered = texel = fp.value();
+    if (const Volume* v = volume(b.texture)) {
+      // A 3D texture (GL_TEXTURE_3D): read at (s, t, r) through its slices, as Reference does (volume.hpp), its
+      // level of detail from a slice's size; the footprint above takes the stacked slices for one 2D image.
+      in.filtered = texel = v->sample(in.sq, in.tq, in.r / in.q, v->slice(0).lod(g));
+      notes.push_back("3D texture of " + std::to_string(d.depth) +
+                      " slices: the colour is read at (s, t, r) through them; the texels listed are of the slices "
+                      "stacked as one 2D image");
+    }
     if (d.maxAnisotropy > 1.0f)
       notes.push_back("anisotropic filtering (up to " + std::to_string(int(d.maxAnisotropy)) +
                       "x): GL may read more texels along the footprint's long axis; shown is the isotropic filter "

@@ -28,6 +28,7 @@
 #pragma once
 #include <array>
 #include <limits>
+#include <map>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
@@ -36,6 +37,7 @@
 #include "common/core/frame.hpp"
 #include "reference.hpp"
 #include "sampler.hpp"
+#include "volume.hpp"
 
 namespace ref {
 // A texel the filter reads: level, i, j (after wrapping; -1 or the level's
@@ -116,11 +118,18 @@ class Inspector {
 
  private:
   const Texture* texture(int index, std::string* why) const;
+  // A 3D texture's slices as a Volume (volume.hpp), made once; null when the texture is no 3D texture.
+  const Volume* volume(int index) const;
   Inspection fragment(int x, int y, int panel, int batch, const ScreenPoly& poly) const;
   ts::Frame frame_;
   RenderOptions opts_;
   mutable std::vector<std::unique_ptr<Texture>> textures_;
   mutable std::vector<std::string> textureErrors_;
+  struct Slices {
+    std::vector<Texture> slices;
+    Volume volume;
+  };
+  mutable std::map<int, std::unique_ptr<Slices>> volumes_;
 };
 
 // One pixel of a frame (makes the textures it needs each call).

@@ -185,9 +185,9 @@ struct Generator {
         display.push_back(text(c));
         continue;
       }
-      if (is(c, "glTexImage2D")) {
+      if (is(c, "glTexImage2D") || is(c, "glTexImage3D")) {
         if (!bindInInit) init.push_back(lastBind), bindInInit = true;
-        gl::Arg& px = c.args[8];
+        gl::Arg& px = c.args[is(c, "glTexImage3D") ? 9 : 8];
         if (px.bytes && !px.bytes->empty()) {
           std::string at = "texels(" + std::to_string(texels.size()) + ", " + std::to_string(px.bytes->size()) + ")";
           texels.insert(texels.end(), px.bytes->begin(), px.bytes->end());
@@ -279,7 +279,8 @@ ExportedProgram exportC(const std::vector<gl::Call>& recorded, const Frame& fram
        info.sourceName + " -o fig -lOSMesa -lm && ./fig out.ppm\n";
   if (!g.texels.empty())
     s += " * The texture images are read from " + info.texelsName +
-         " (every glTexImage2D's bytes, in call order):\n * run the program in the folder that holds it.\n";
+         " (every glTexImage2D's and glTexImage3D's bytes, in call order):\n"
+         " * run the program in the folder that holds it.\n";
   // Panels that show a GL render the demo made in its measurement passes
   // (VI.7's sampling modes, the parallax modes) are such images here.
   std::vector<std::string> rendered;

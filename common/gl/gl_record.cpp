@@ -134,7 +134,7 @@ const std::map<std::string, std::string>& hints() {
       {"glTexGeni", "eex"},
       {"glTexImage2D", "eieiiieeT"},
       {"glCompressedTexImage2D", "eieiiii-"},
-      {"glTexImage3D", "eieiiiiee-"},
+      {"glTexImage3D", "eieiiiieeT"},
       {"glClipPlane", "eD"},
       {"glTexSubImage2D", "eiiiiieeT"},
       {"glTexParameterf", "eex"},
@@ -346,10 +346,13 @@ Arg describe(char hint, const Raw& r, const std::vector<Raw>& all, size_t index,
       return a;
     }
     case 'T': {
-      // Pixels: glTexImage2D (w, h at 3, 4; format, type at 6, 7) and
-      // glTexSubImage2D (w, h at 4, 5; format, type at 6, 7).
-      bool sub = std::strcmp(fn, "glTexSubImage2D") == 0;
+      // Pixels: glTexImage2D (w, h at 3, 4; format, type at 6, 7),
+      // glTexSubImage2D (w, h at 4, 5; format, type at 6, 7) and glTexImage3D
+      // (w, h, depth at 3, 4, 5; format, type at 7, 8), its slices read as
+      // h x depth rows one after the other (GL_UNPACK_IMAGE_HEIGHT 0).
+      bool sub = std::strcmp(fn, "glTexSubImage2D") == 0, volume = std::strcmp(fn, "glTexImage3D") == 0;
       long long w = all[sub ? 4 : 3].i, h = all[sub ? 5 : 4].i, format = all[6].i, type = all[7].i;
+      if (volume) h *= all[5].i, format = all[7].i, type = all[8].i;
       a.kind = Arg::Kind::Pixels;
       a.ints = {w, h, format, type};
       if (r.p && w > 0 && h > 0) {

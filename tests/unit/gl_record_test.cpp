@@ -146,6 +146,30 @@ TEST(GlRecord, KeepsTheTexelsTheUnpackStateReads) {
   EXPECT_NE(*sub->args[8].bytes, std::vector<unsigned char>(picture, picture + 16));
 }
 
+// Claim: a 3D texture's texels (glTexImage3D, the slices one after the other) are kept whole, as a 2D texture's
+// are, so that an exported program uploads them (it uploaded NULL: a black volume).
+TEST(GlRecord, KeepsA3DTexturesSlices) {
+  ts::test::context();
+  unsigned char volume[2 * 3 * 4 * 4];  // 2 x 3 texels a slice, 4 slices
+  for (int k = 0; k < int(sizeof volume); ++k) volume[k] = (unsigned char)(k * 2 + 1);
+  std::vector<Call> calls;
+  GLuint id = 0;
+  {
+    ts::gl::Recording rec;
+    glGenTextures(1, &id);
+    glBindTexture(GL_TEXTURE_3D, id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, 2, 3, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, volume);
+    calls = rec.take();
+  }
+  glDeleteTextures(1, &id);
+  auto tex = std::find_if(calls.begin(), calls.end(),
+                          [](const Call& c) { return std::string(c.name) == "glTexImage3D"; });
+  ASSERT_NE(tex, calls.end());
+  ASSERT_TRUE(tex->args[9].bytes);
+  EXPECT_EQ(*tex->args[9].bytes, std::vector<unsigned char>(volume, volume + sizeof volume));
+}
+
 // Claim: calls on another thread (a measurement on its own context, as the
 // window's measurement worker makes) are not the picture's, and nothing is
 // kept once the Recording ends.  Each thread has its own table of GL
