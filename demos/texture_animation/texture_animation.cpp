@@ -373,7 +373,10 @@ ts::Frame TextureAnimation::buildAnimation(ts::Frame& f, const ts::Measurements&
         {{&p->litCpu, "per-pixel lighting (CPU)", "time " + L::given("time, seconds", double(time_), "%.2f") + " s"},
          {&p->litDynamic, "recomputed each frame", M("RMS {dynamic_lightmap_rms_levels|%.2f} levels")},
          {&p->litStale, "map of time 0 (stale)", M("RMS {dynamic_lightmap_rms_levels[stale]|%.2f} levels")},
-         {&p->lightMap, "the light map, 32 x 32", M("{lightmap_bytes_per_frame|%.0f} bytes a frame")}},
+         {&p->lightMap,
+          "the light map, " + L::given("the light map's side, texels", ta::kLightTexels, "%.0f") + " x " +
+              L::given("the light map's side, texels", ta::kLightTexels, "%.0f"),
+          M("{lightmap_bytes_per_frame|%.0f} bytes a frame")}},
         {{ta::kLightNow, "the light now"}, {ta::kLightThen, "the light at time 0 (the stale map's)"}},
         "c = base x L: unit 0 the wall (GL_REPLACE), unit 1 the light map (GL_MODULATE, GL_LINEAR), refilled by "
         "glTexSubImage2D each frame; L = " +
