@@ -379,6 +379,37 @@ float columnHeight(const std::vector<Text>& texts, int scale, float width) {
   return h;
 }
 
+std::vector<Cell> pictureFigure(Frame& f, const std::vector<Captioned>& pictures,
+                                const std::function<void(size_t, const Rect&)>& draw,
+                                const std::vector<LegendEntry>& legend, const std::vector<Text>& notes, FlowSpec spec,
+                                int minNoteLines, Align notesAlign, int extraCells) {
+  const float width = float(f.width - 16);
+  int lines = 0;
+  for (const Text& n : notes) lines += captionLines(n.text, 1, width);
+  const float band = lineHeight(1) * float(std::max(minNoteLines, lines)) + 8;
+  const float key = legend.empty() ? 0 : lineHeight(1) * float(legendLines(legend, 1, width)) + 4;
+  std::vector<Stack> above, below;
+  for (const Captioned& p : pictures) above.push_back({p.title.text}), below.push_back({p.note.text});
+  for (int k = 0; k < extraCells; ++k) above.push_back({""}), below.push_back({""});
+  spec.n = int(above.size());
+  const std::vector<Cell> cells = flowFitting({8, 8, float(f.width - 8), float(f.height) - 8 - band - key}, spec, above,
+                                              below);
+  for (size_t k = 0; k < pictures.size() && k < cells.size(); ++k) {
+    draw(k, cells[k].picture);
+    caption(f, cells[k].above, pictures[k].title, kWhite, cells[k].scale);
+    caption(f, cells[k].below, pictures[k].note, kAmber, cells[k].scale);
+  }
+  if (!legend.empty())
+    layout::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band}, legend, 1);
+  float y = float(f.height) - band;
+  for (const Text& n : notes) {
+    const float h = lineHeight(1) * float(captionLines(n.text, 1, width));
+    caption(f, {8, y, float(f.width - 8), y + h}, n, kAmber, 1, notesAlign);
+    y += h;
+  }
+  return cells;
+}
+
 bool Column::add(const Text& text, glm::vec4 color, int scale, Align align, glm::vec4 background) {
   if (y_ >= area_.y1) return false;
   Box band{area_.x0, y_, area_.x1, area_.y1};

@@ -191,6 +191,21 @@ int captionLines(const std::string& text, int scale, float width);
 // a two-line band whose texts take a line each, halves().
 std::pair<Box, Box> stackApart(const Box& b, int scale, const std::string& lower);
 
+// A figure of pictures: cells flowed over the frame (flowFitting, `spec` but
+// its n) above a legend and lines of notes at scale 1, each band as many lines
+// as its text takes at the frame's width (the notes at least `minNoteLines`):
+// a narrow window wraps the text rather than cutting it.  `draw(k, rect)` adds
+// picture k's panel(s) in its cell's picture rectangle; its title and note are
+// captioned above and below it.  `extraCells` more cells after the pictures
+// are the caller's (a plot).  Returns the cells.
+struct Captioned {
+  Text title, note;
+};
+std::vector<Cell> pictureFigure(Frame& f, const std::vector<Captioned>& pictures,
+                                const std::function<void(size_t, const Rect&)>& draw,
+                                const std::vector<LegendEntry>& legend, const std::vector<Text>& notes, FlowSpec spec,
+                                int minNoteLines = 1, Align notesAlign = Align::Center, int extraCells = 0);
+
 // The lines legend() takes for `entries` at `scale` across `width` (0: none),
 // and the height a Column takes for `texts` at `scale` across `width`: for
 // reserving a figure's bands before laying out its pictures in the rest.

@@ -15,12 +15,13 @@
 namespace bumplim {
 constexpr int kShadowPixels = 256, kShadowZoom = 4;  // the shadows view: the tile at 4 pixels a texel
 constexpr int kMethodPixels = 256, kMethodZoom = 4;
-constexpr int kDistancePixels = 128;                 // the distance view's picture, pixels a side
-constexpr int kSuper = 4, kReferenceSuper = 8;       // Blinn's 4 x 4 samples a pixel; the reference's 8 x 8
-constexpr double kBakeMoveDeg = 30;                  // the light moves this much in azimuth after baking
-constexpr double kThetas[] = {90, 75, 60, 45};       // the sheared parameterisation's table, degrees
+constexpr int kDistancePixels = 128;            // the distance view's picture, pixels a side
+constexpr int kSuper = 4, kReferenceSuper = 8;  // Blinn's 4 x 4 samples a pixel; the reference's 8 x 8
+constexpr double kBakeMoveDeg = 30;             // the light moves this much in azimuth after baking
+constexpr double kThetas[] = {90, 75, 60, 45};  // the sheared parameterisation's table, degrees
 constexpr int kDistances[] = {1, 2, 4, 8};
-constexpr double kStretch = 2;                      // the texture stretched: |dp/dt| = 2 |dp/ds|           // the distance view's distances (1x: 2 pixels a texel)
+constexpr double kStretch =
+    2;  // the texture stretched: |dp/dt| = 2 |dp/ds|           // the distance view's distances (1x: 2 pixels a texel)
 
 // Colours that mean something in the pictures (each has its legend entry).
 const glm::vec4 kMissed{0.95f, 0.2f, 0.2f, 1}, kExtra{0.3f, 0.6f, 1.0f, 1};
@@ -74,10 +75,11 @@ inline void measureShadows(ts::Renderer& r, double az, double elev, ts::Measurem
       missed += s && facing && horizonLit;
       extra += !s && facing && !horizonLit;
       wrongMissed += s && facing && w.g > 127;
-      diff.set(x, y, s && facing && horizonLit    ? rgba(kMissed)
-                     : !s && facing && !horizonLit ? rgba(kExtra)
-                     : !s && facing                ? rgba(kLitBoth)
-                                                   : rgba(kDarkBoth));
+      diff.set(x, y,
+               s && facing && horizonLit     ? rgba(kMissed)
+               : !s && facing && !horizonLit ? rgba(kExtra)
+               : !s && facing                ? rgba(kLitBoth)
+                                             : rgba(kDarkBoth));
     }
   put("bump_self_shadow_px[none]", double(none),
       "pixels the displaced surface's ray-marched shadow covers that plain bump mapping lights (n . L > 0)");
@@ -87,8 +89,8 @@ inline void measureShadows(ts::Renderer& r, double az, double elev, ts::Measurem
       "pixels horizon mapping darkens that the ray march lights (and n . L > 0)");
   put("bump_self_shadow_px[horizon_wrong_azimuth]", double(wrongMissed),
       "shadowed pixels lit when the horizon is looked up a quarter turn from the light (a control that must miss many)");
-  put("bump_shadowed_px", double(shadowed), "pixels the ray march shadows, of " +
-                                                std::to_string(kShadowPixels * kShadowPixels));
+  put("bump_shadowed_px", double(shadowed),
+      "pixels the ray march shadows, of " + std::to_string(kShadowPixels * kShadowPixels));
   ts::gl::CallList noneCalls, horizonCalls;
   ts::Image shadeNone, shadeHorizon;
   Pass shade = p;
@@ -160,8 +162,7 @@ inline void measureMethods(ts::Renderer& r, double thetaDeg, ts::Measurements& m
   put("bump_stretch_error_deg[orthogonal]", shearError(90, shearedOrthogonalNormal, kStretch),
       "mean angle (degrees) between the orthogonal-unit-axes method's normal and the true one, dp/dt twice as "
       "long as dp/ds (at right angles)");
-  put("bump_stretch_error_deg[blinn]", shearError(90, shearedBlinnNormal, kStretch),
-      "the same for Blinn's formula");
+  put("bump_stretch_error_deg[blinn]", shearError(90, shearedBlinnNormal, kStretch), "the same for Blinn's formula");
   put("bump_stretch_aspect", kStretch, "|dp/dt| / |dp/ds| of the stretched parameterisation");
   ts::measureProgress(0.7);
   // Baking: the shading for the light at azimuth 30, elevation 45, one pixel a texel, read back as the texture.
@@ -227,8 +228,7 @@ inline void measureDistance(ts::Renderer& r, int shownDistance, ts::Measurements
         "the reference's mean normal tilt (degrees from the plane's normal, over its 8 x 8 samples) minus the "
         "mipmapped heights' mean tilt (below 0 where the pixel centres fall on texel centres, where central "
         "differences of bilinear heights are steepest)");
-    put(name("bump_tilt_lost_deg[super4x4]"), refTilt - superTilt,
-        "the same for the 4 x 4 samples of Blinn's answer");
+    put(name("bump_tilt_lost_deg[super4x4]"), refTilt - superTilt, "the same for the 4 x 4 samples of Blinn's answer");
     put(name("bump_tilt_deg[reference]"), refTilt, "the reference's mean normal tilt, degrees");
     if (d == shownDistance) {
       auto show = [&](const char* what, int super, bool mip) {
@@ -291,39 +291,24 @@ struct Picture {
   const ts::TextureDesc* texture;
   L::Text title, note;
 };
-// The pictures side by side above a legend and a band of notes, as many lines as they take at the frame's width.
-// `plot`, when given, takes one more cell after the pictures (its title band, picture and note band together),
-// drawn when that cell is at least 200 x 200 pixels.
+// The pictures side by side above a legend and the notes (layout::pictureFigure).  `plot`, when given, takes one
+// more cell after the pictures (its title band, picture and note band together), drawn when that cell is at least
+// 200 x 200 pixels.
 inline void pictureRow(ts::Frame& f, const std::vector<Picture>& ps, const std::vector<ts::LegendEntry>& legend,
                        const std::vector<L::Text>& notes, const ts::plot::Spec* plot = nullptr) {
-  int lines = 0;
-  for (const L::Text& n : notes) lines += L::captionLines(n.text, 1, float(f.width - 16));
-  const float band = L::lineHeight(1) * float(std::max(1, lines)) + 8;
-  const float key = legend.empty() ? 0 : L::lineHeight(1) * float(L::legendLines(legend, 1, float(f.width - 16))) + 4;
-  const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band - key};
-  std::vector<L::Stack> above, below;
-  for (const Picture& p : ps) above.push_back({p.title.text}), below.push_back({p.note.text});
-  if (plot) above.push_back({""}), below.push_back({""});
-  const std::vector<L::Cell> cells =
-      L::flowFitting(area, {int(above.size()), 1.0f, 1, 1, 10, 2, 120}, above, below);
-  for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
-    f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), cells[k].picture, *ps[k].texture));
-    L::caption(f, cells[k].above, ps[k].title, L::kWhite, cells[k].scale);
-    L::caption(f, cells[k].below, ps[k].note, L::kAmber, cells[k].scale);
-  }
+  std::vector<L::Captioned> captions;
+  for (const Picture& p : ps) captions.push_back({p.title, p.note});
+  const std::vector<L::Cell> cells = L::pictureFigure(
+      f, captions,
+      [&](size_t k, const ts::Rect& r) {
+        f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), r, *ps[k].texture));
+      },
+      legend, notes, {0, 1.0f, 1, 1, 10, 2, 120}, 1, ts::Align::Center, plot ? 1 : 0);
   // A plot needs room for its legend, axes and ticks; in a small window its numbers stay in the notes alone.
   if (plot && cells.size() > ps.size() && cells[ps.size()].above.w() >= 200 &&
       cells[ps.size()].below.y1 - cells[ps.size()].above.y0 >= 200) {
     const L::Cell& c = cells[ps.size()];
     ts::plot::draw(f, *plot, {int(c.above.x0), int(c.above.y0), int(c.above.w()), int(c.below.y1 - c.above.y0)});
-  }
-  if (!legend.empty())
-    L::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band}, legend, 1);
-  float y = float(f.height) - band;
-  for (const L::Text& n : notes) {
-    const float h = L::lineHeight(1) * float(L::captionLines(n.text, 1, float(f.width - 16)));
-    L::caption(f, {8, y, float(f.width - 8), y + h}, n, L::kAmber, 1);
-    y += h;
   }
 }
 }  // namespace bumplim

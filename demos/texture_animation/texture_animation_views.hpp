@@ -248,25 +248,16 @@ struct Picture {
   const TextureDesc* texture;
   L::Text title, note;
 };
-// The pictures side by side (or in a grid) above a legend and a band for the numbers, as many lines as they take
-// at the frame's width (a small window wraps them rather than cutting them).
+// The pictures side by side (or in a grid) above a legend and the numbers (layout::pictureFigure).
 inline void pictureRow(Frame& f, const std::vector<Picture>& ps, const std::vector<LegendEntry>& legend,
                        const L::Text& numbers) {
-  const int lines = std::max(2, L::captionLines(numbers.text, 1, float(f.width - 16)));
-  const float band = L::lineHeight(1) * float(lines) + 8;
-  const float key = legend.empty() ? 0 : L::lineHeight(1) * float(L::legendLines(legend, 1, float(f.width - 16))) + 4;
-  const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band - key};
-  // A narrow window wraps the titles and notes rather than cutting them.
-  std::vector<L::Stack> above, below;
-  for (const Picture& p : ps) above.push_back({p.title.text}), below.push_back({p.note.text});
-  const std::vector<L::Cell> cells = L::flowFitting(area, {int(ps.size()), 1.0f, 1, 1, 10, 2, 150}, above, below);
-  for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
-    f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), cells[k].picture, *ps[k].texture));
-    L::caption(f, cells[k].above, ps[k].title, L::kWhite, cells[k].scale);
-    L::caption(f, cells[k].below, ps[k].note, L::kAmber, cells[k].scale);
-  }
-  if (!legend.empty())
-    L::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band}, legend, 1);
-  L::caption(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)}, numbers, L::kAmber, 1);
+  std::vector<L::Captioned> captions;
+  for (const Picture& p : ps) captions.push_back({p.title, p.note});
+  L::pictureFigure(
+      f, captions,
+      [&](size_t k, const Rect& r) {
+        f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), r, *ps[k].texture));
+      },
+      legend, {numbers}, {0, 1.0f, 1, 1, 10, 2, 150}, 2);
 }
 }  // namespace ts::texanim

@@ -226,26 +226,17 @@ inline TextureDesc floorPicture(const Image& img, const Frame& frame, const std:
   t.renderedFrom = std::make_shared<const Frame>(frame);
   return t;
 }
-// The pictures in a grid above a legend and a band of `lines` numbers.
+// The pictures in a grid above a legend and the lines of numbers (layout::pictureFigure).
 inline void pictureGrid(Frame& f, const std::vector<Picture>& ps, float aspect, const std::vector<LegendEntry>& legend,
                         const std::vector<L::Text>& lines) {
-  const float width = float(f.width - 16);
-  const float band = L::columnHeight(lines, 1, width) + 8;
-  const float key = legend.empty() ? 0 : L::lineHeight(1) * float(L::legendLines(legend, 1, width)) + 4;
-  const L::Box area{8, 8, float(f.width - 8), float(f.height) - 8 - band - key};
-  // A narrow window wraps the titles and notes rather than cutting them.
-  std::vector<L::Stack> above, below;
-  for (const Picture& p : ps) above.push_back({p.title.text}), below.push_back({p.note.text});
-  const std::vector<L::Cell> cells = L::flowFitting(area, {int(ps.size()), aspect, 1, 1, 10, 2, 150}, above, below);
-  for (size_t k = 0; k < ps.size() && k < cells.size(); ++k) {
-    f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), cells[k].picture, ps[k].texture));
-    for (const Batch& b : ps[k].over) f.panels.back().batches.push_back(b);
-    L::caption(f, cells[k].above, ps[k].title, L::kWhite, cells[k].scale);
-    L::caption(f, cells[k].below, ps[k].note, L::kAmber, cells[k].scale);
-  }
-  if (!legend.empty())
-    L::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band}, legend, 1);
-  L::Column col(f, {8, float(f.height) - band, float(f.width - 8), float(f.height - 4)});
-  for (const L::Text& t : lines) col.add(t, L::kAmber, 1, Align::Left);
+  std::vector<L::Captioned> captions;
+  for (const Picture& p : ps) captions.push_back({p.title, p.note});
+  L::pictureFigure(
+      f, captions,
+      [&](size_t k, const Rect& r) {
+        f.panels.push_back(L::picturePanel(f, "picture_" + std::to_string(k), r, ps[k].texture));
+        for (const Batch& b : ps[k].over) f.panels.back().batches.push_back(b);
+      },
+      legend, lines, {0, aspect, 1, 1, 10, 2, 150}, 1, Align::Left);
 }
 }  // namespace ts::atlas
