@@ -77,8 +77,7 @@ class BumpLimits final : public ts::Scene {
   void addOptions(ts::Options& o) override {
     o.addEnum("view", &view_, {"shadows", "methods", "distance"},
               "self-shadowing and horizon maps | normal maps, offset maps, shear, baking | bumps at a distance", 'v');
-    o.addInt("elevation", &elevation_, 5, 60, "the light's elevation above the plane, degrees (shadows)", 'E', 'e',
-             5);
+    o.addInt("elevation", &elevation_, 5, 60, "the light's elevation above the plane, degrees (shadows)", 'E', 'e', 5);
     o.addInt("azimuth", &azimuth_, 0, 345, "the light's azimuth, degrees from +x (shadows)", '.', ',', 15);
     o.addInt("shear", &shear_, 15, 90, "degrees between dp/ds and dp/dt (methods)", '+', '-', 15);
     o.addEnum("distance", &distance_, {"1", "2", "4", "8"}, "the plane's distance, 1x = 2 pixels a texel (distance)",
@@ -99,7 +98,8 @@ class BumpLimits final : public ts::Scene {
         {"bump_limits_methods",
          "Bump mapping's limits: representations, shear, baking (seed 001)",
          "Blinn's formula, a normal map and an offset-vector map shaded by the same light, each normal measured "
-         "against the displaced surface's; shading baked for one light and that light moved; the normal error of a method that assumes "
+         "against the displaced surface's; shading baked for one light and that light moved; the normal error of a "
+         "method that assumes "
          "dp/ds and dp/dt orthogonal when they are not.",
          {"--view", "methods", "--shear", "60"},
          1000,
@@ -149,7 +149,8 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
                           G("the light's azimuth, degrees", azimuth_) + " deg";
     pictureRow(f,
                {{&s[0], "plain bump mapping", M("{bump_self_shadow_px[none]|%.0f} shadowed px lit")},
-                {&s[1], "horizon mapping, " + G("directions of the horizon map", kDirections) + " directions", M("{bump_self_shadow_px[horizon]|%.0f} shadowed px lit")},
+                {&s[1], "horizon mapping, " + G("directions of the horizon map", kDirections) + " directions",
+                 M("{bump_self_shadow_px[horizon]|%.0f} shadowed px lit")},
                 {&s[2], "ray-marched shadows (CPU)", M("{bump_shadowed_px|%.0f} px in shadow")},
                 {&s[3], "horizon map against the ray march",
                  M("{bump_self_shadow_px[horizon]|%.0f} red, {bump_self_shadow_px[horizon_extra]|%.0f} blue")}},
@@ -157,9 +158,10 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
                 {kExtra, "darkened by horizon mapping, lit in the ray march"},
                 {kLitBoth, "lit in both"},
                 {kDarkBoth, "dark in both (shadowed, or facing away)"}},
-               {light + M(": of {bump_shadowed_px|%.0f} pixels the displaced surface shadows, plain bump mapping lights "
-                          "{bump_self_shadow_px[none]|%.0f}, horizon mapping {bump_self_shadow_px[horizon]|%.0f} "
-                          "(and darkens {bump_self_shadow_px[horizon_extra]|%.0f} more)."),
+               {light +
+                    M(": of {bump_shadowed_px|%.0f} pixels the displaced surface shadows, plain bump mapping lights "
+                      "{bump_self_shadow_px[none]|%.0f}, horizon mapping {bump_self_shadow_px[horizon]|%.0f} "
+                      "(and darkens {bump_self_shadow_px[horizon_extra]|%.0f} more)."),
                 M("Control: the horizon looked up a quarter turn from the light lights "
                   "{bump_self_shadow_px[horizon_wrong_azimuth]|%.0f} of the shadowed pixels.")});
   } else if (view_ == 1) {
@@ -170,24 +172,23 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
       table = table + G("a shear angle of the table, degrees", th) + " deg " + M(k) + (th > 45 ? ", " : " degrees.");
     }
     const ts::plot::Spec plot = shearPlot(measured, shear_);
-    pictureRow(
-        f,
-        {{&s[0], "Blinn (heights)", M("{bump_normal_error_deg[blinn]|%.2f} deg off")},
-         {&s[1], "normal map", M("{bump_normal_error_deg[normalmap]|%.2f} deg off")},
-         {&s[2], "offset-vector map (bu, bv)", M("{bump_normal_error_deg[offset]|%.2f} deg off")},
-         {&s[3], "baked for the light", M("{bump_baked_error_levels[same_light]|%.0f} levels off for it")},
-         {&s[4], M("the light moved {bump_baked_light_moved_deg|%.0f} deg"),
-          M("baked is {bump_baked_rms_levels[moved]|%.1f} levels RMS off")}},
-        {},
-        {M("Mean normal error against the displaced surface (8-bit read-back floor "
-           "{bump_normal_error_deg[readback]|%.2f} deg).  "),
-         table,
-         "At the keys' shear " + G("the shear angle, degrees", shear_) +
-             M(" deg: orthogonal axes {bump_shear_error_deg[shown]|%.2f} deg, Blinn's formula "
-               "{bump_shear_error_deg[blinn_shown]|%.2f} deg.  Not square (|dp/dt| = {bump_stretch_aspect|%.0f} "
-               "|dp/ds|): orthogonal unit axes {bump_stretch_error_deg[orthogonal]|%.2f} deg, Blinn's "
-               "{bump_stretch_error_deg[blinn]|%.2f} deg.")},
-        &plot);
+    pictureRow(f,
+               {{&s[0], "Blinn (heights)", M("{bump_normal_error_deg[blinn]|%.2f} deg off")},
+                {&s[1], "normal map", M("{bump_normal_error_deg[normalmap]|%.2f} deg off")},
+                {&s[2], "offset-vector map (bu, bv)", M("{bump_normal_error_deg[offset]|%.2f} deg off")},
+                {&s[3], "baked for the light", M("{bump_baked_error_levels[same_light]|%.0f} levels off for it")},
+                {&s[4], M("the light moved {bump_baked_light_moved_deg|%.0f} deg"),
+                 M("baked is {bump_baked_rms_levels[moved]|%.1f} levels RMS off")}},
+               {},
+               {M("Mean normal error against the displaced surface (8-bit read-back floor "
+                  "{bump_normal_error_deg[readback]|%.2f} deg).  "),
+                table,
+                "At the keys' shear " + G("the shear angle, degrees", shear_) +
+                    M(" deg: orthogonal axes {bump_shear_error_deg[shown]|%.2f} deg, Blinn's formula "
+                      "{bump_shear_error_deg[blinn_shown]|%.2f} deg.  Not square (|dp/dt| = {bump_stretch_aspect|%.0f} "
+                      "|dp/ds|): orthogonal unit axes {bump_stretch_error_deg[orthogonal]|%.2f} deg, Blinn's "
+                      "{bump_stretch_error_deg[blinn]|%.2f} deg.")},
+               &plot);
   } else {
     auto sq = [&](const std::string& what, int n) { return G(what, n) + " x " + G(what, n); };
     auto row = [&](const L::Text& what, const char* key) {
@@ -208,15 +209,19 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
     pictureRow(f,
                {{&s[0], "unfiltered, one sample a pixel", K("RMS {bump_distance_rms_levels[unfiltered][%dx]|%%.1f}")},
                 {&s[1], "mipmapped heights",
-                 K("RMS {bump_distance_rms_levels[mipmapped][%dx]|%%.1f}, tilt lost {bump_tilt_lost_deg[mipmapped][%dx]|%%.1f} deg")},
-                {&s[2], sq("samples a pixel, a side, of Blinn's answer", kSuper) + " supersampled, box filter", K("RMS {bump_distance_rms_levels[super4x4][%dx]|%%.1f}")},
-                {&s[3], sq("samples a pixel, a side, of the reference", kReferenceSuper) + " supersampled reference", K("mean tilt {bump_tilt_deg[reference][%dx]|%%.1f} deg")}},
+                 K("RMS {bump_distance_rms_levels[mipmapped][%dx]|%%.1f}, "
+                   "tilt lost {bump_tilt_lost_deg[mipmapped][%dx]|%%.1f} deg")},
+                {&s[2], sq("samples a pixel, a side, of Blinn's answer", kSuper) + " supersampled, box filter",
+                 K("RMS {bump_distance_rms_levels[super4x4][%dx]|%%.1f}")},
+                {&s[3], sq("samples a pixel, a side, of the reference", kReferenceSuper) + " supersampled reference",
+                 K("mean tilt {bump_tilt_deg[reference][%dx]|%%.1f} deg")}},
                {},
                {"At " + G("the distance shown", d) + "x (" + L::given("texels a pixel", d / 2.0, "%.1f") +
                     " texels a pixel).  RMS levels against the reference, by distance:",
                 row("unfiltered", "bump_distance_rms_levels[unfiltered]"),
                 row("mipmapped", "bump_distance_rms_levels[mipmapped]"),
-                row(sq("samples a pixel, a side, of Blinn's answer", kSuper) + " supersampled", "bump_distance_rms_levels[super4x4]"),
+                row(sq("samples a pixel, a side, of Blinn's answer", kSuper) + " supersampled",
+                    "bump_distance_rms_levels[super4x4]"),
                 row("tilt lost by mipmapped heights, deg", "bump_tilt_lost_deg[mipmapped]")});
   }
   return f;

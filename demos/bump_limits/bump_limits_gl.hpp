@@ -115,7 +115,8 @@ inline void planeQuad(int size, double zoom) {
 }
 
 inline ts::Image shaderPass(ts::Renderer& r, const Inputs& in, const Pass& p) {
-  const GLuint prog = r.program("bump_limits", {"demos/bump_limits/bump_limits_gl.hpp", kVertexShader, kFragmentShader});
+  const GLuint prog = r.program("bump_limits",
+                                {"demos/bump_limits/bump_limits_gl.hpp", kVertexShader, kFragmentShader});
   return ts::pixelPass(r, p.size, p.size, "bump limits", [&] {
     GLuint tex[4] = {0, 0, 0, 0};
     glActiveTexture(GL_TEXTURE0);

@@ -35,8 +35,10 @@ inline double heightAt(double x, double y) {
 // (dz/dx, dz/dy) of the displaced surface z = kHeightMax h.
 inline glm::dvec2 slopeAt(double x, double y) {
   const double w = 2 * kPi / kTexels;
-  const double hx = 0.3 * w * 4 * std::cos(w * 4 * x) * std::cos(w * 4 * y) + 0.15 * w * 8 * std::cos(w * (8 * x + 3 * y));
-  const double hy = -0.3 * w * 4 * std::sin(w * 4 * x) * std::sin(w * 4 * y) + 0.15 * w * 3 * std::cos(w * (8 * x + 3 * y));
+  const double hx = 0.3 * w * 4 * std::cos(w * 4 * x) * std::cos(w * 4 * y) +
+                    0.15 * w * 8 * std::cos(w * (8 * x + 3 * y));
+  const double hy = -0.3 * w * 4 * std::sin(w * 4 * x) * std::sin(w * 4 * y) +
+                    0.15 * w * 3 * std::cos(w * (8 * x + 3 * y));
   return kHeightMax * glm::dvec2(hx, hy);
 }
 inline glm::dvec3 exactNormal(double x, double y) {

@@ -262,8 +262,7 @@ TEST(BumpLimits, DistanceAliasesUnfilteredAndSupersamplingAnswersIt) {
       double sum = 0, tol = 0;
       for (int b = 0; b < kSuper; ++b)
         for (int a = 0; a < kSuper; ++a) {
-          const glm::dvec2 q =
-              texelPoint(x * kSuper + a, y * kSuper + b, sup.height * kSuper, zoomAt(4) * kSuper);
+          const glm::dvec2 q = texelPoint(x * kSuper + a, y * kSuper + b, sup.height * kSuper, zoomAt(4) * kSuper);
           const Shade sh = shadeBound(field, Method::kBlinn, q.x, q.y, L, 1);
           sum += sh.want, tol += sh.tolerance;
         }

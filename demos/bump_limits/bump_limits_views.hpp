@@ -88,7 +88,8 @@ inline void measureShadows(ts::Renderer& r, double az, double elev, ts::Measurem
   put("bump_self_shadow_px[horizon_extra]", double(extra),
       "pixels horizon mapping darkens that the ray march lights (and n . L > 0)");
   put("bump_self_shadow_px[horizon_wrong_azimuth]", double(wrongMissed),
-      "shadowed pixels lit when the horizon is looked up a quarter turn from the light (a control that must miss many)");
+      "shadowed pixels lit when the horizon is looked up a quarter turn from the light (a control that must miss "
+      "many)");
   put("bump_shadowed_px", double(shadowed),
       "pixels the ray march shadows, of " + std::to_string(kShadowPixels * kShadowPixels));
   ts::gl::CallList noneCalls, horizonCalls;

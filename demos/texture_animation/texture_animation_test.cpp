@@ -195,8 +195,8 @@ TEST(TextureAnimation, RecomputedLightMapFollowsTheLight) {
 }
 
 // The flipbook's, the torch's and the light map's pictures are GL's readbacks of passes a Frame does not draw
-// (glTexSubImage2D into a texture made once, glBlendFunc); each comes with a Frame describing what the pass drew, which the
-// sidecar nests in the figure so that the CPU reference recomputes it.  That Frame, rendered, is the pass's
+// (glTexSubImage2D into a texture made once, glBlendFunc); each comes with a Frame describing what the pass drew,
+// which the sidecar nests in the figure so that the CPU reference recomputes it.  That Frame, rendered, is the pass's
 // picture (within a level), and the next flipbook frame's is not (the control).
 TEST(TextureAnimation, EachPassIsTheFrameTheSidecarNests) {
   for (const char* view : {"flipbook", "torch", "lightmap"}) {
