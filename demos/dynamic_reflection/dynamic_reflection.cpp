@@ -384,15 +384,23 @@ void DynamicReflection::measurePlanar(ts::Renderer& r, ts::Measurements& out, Fo
       }
     return wrong;
   };
-  auto planar = [&](int content, ts::gl::CallList* gl) {
-    ts::Image img;
+  // The planar mirror's passes, and (with `described`) the Frame of the mirror's pass with the mirrored pass nested
+  // in it, as the sidecar holds them.
+  auto planar = [&](int content, ts::gl::CallList* gl, ts::Frame* described = nullptr) {
+    ts::Image img, mirrored;
     *gl = ts::recordRender(r, [&] {
-      const ts::Image mirrored = r.renderOffscreen(mirroredFrame(n, content));
+      mirrored = r.renderOffscreen(mirroredFrame(n, content));
       img = r.renderOffscreen(planarMirrorFrame(n, picture(mirrored, "mirrored pass"), content == kColours));
     });
+    if (described) {
+      ts::TextureDesc nested = ts::nestedPictureTexture(mirrored, mirroredFrame(n, content), "dynamic_reflection_pass",
+                                                        "mirrored pass");
+      nested.minFilter = nested.magFilter = GL_NEAREST;  // as the pass read it
+      *described = planarMirrorFrame(n, nested, content == kColours);
+    }
     return img;
   };
-  auto cubeMirror = [&](int content, ts::gl::CallList* gl) {
+  auto cubeMirror = [&](int content, ts::gl::CallList* gl, ts::Frame* described = nullptr) {
     ts::Image img;
     GLuint cube = 0;
     *gl = ts::recordRender(r, [&] {
@@ -401,6 +409,18 @@ void DynamicReflection::measurePlanar(ts::Renderer& r, ts::Measurements& out, Fo
       img = r.renderOffscreen(eyeFrame(n, cubeMapTexture(cube, "flat mirror cube"), kFlatMirror, content == kColours,
                                        ball, kNearBallRadius));
     });
+    if (described) {  // the eye pass with the cube pass nested in it (its render the six faces), as for the sphere
+      ts::TextureDesc faces;
+      faces.name = "dynamic_reflection_cube_pass";
+      faces.params = {{"pass", "flat mirror cube"}};
+      faces.cube = true;
+      faces.image = std::make_shared<const ts::Image>(readCubeMap(cube, face_));
+      faces.renderedFrom = std::make_shared<const ts::Frame>(
+          cubeFrame(face_, ball, kRight, content, kNearBallRadius, false));
+      faces.minFilter = faces.magFilter = GL_LINEAR;
+      faces.wrapS = faces.wrapT = GL_CLAMP_TO_EDGE;
+      *described = eyeFrame(n, faces, kFlatMirror, content == kColours, ball, kNearBallRadius);
+    }
     glDeleteTextures(1, &cube);
     return img;
   };
@@ -434,9 +454,31 @@ void DynamicReflection::measurePlanar(ts::Renderer& r, ts::Measurements& out, Fo
   out.push_back({"flat_mirror_magnification", double(pixels) / double(std::max<size_t>(1, texels.size())),
                  "flat_mirror_pixels / flat_mirror_texels_read: pixels a texel read"});
   if (view_ != kPlanarView) return;
+  // The two mirrors' pictures with the Frames the sidecar nests, each checked against what GL drew.
   ts::gl::CallList planarGL, cubeGL;
-  found.planarPic = picture(planar(kColours, &planarGL), "planar", planarGL);
-  found.flatCubePic = picture(cubeMirror(kColours, &cubeGL), "flat mirror cube map", cubeGL);
+  ts::Frame planarFrame, cubeFrameDescribed;
+  const ts::Image planarImg = planar(kColours, &planarGL, &planarFrame);
+  const ts::Image cubeImg = cubeMirror(kColours, &cubeGL, &cubeFrameDescribed);
+  auto nestedPicture = [&](const ts::Image& img, const ts::Frame& described, const std::string& what,
+                           const ts::gl::CallList& gl) {
+    int off = 0;
+    const ts::Image own = r.renderOffscreen(described);
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const ts::Rgba p = own.at(x, y), q = img.at(x, y);
+        off += std::abs(p.r - q.r) > 1 || std::abs(p.g - q.g) > 1 || std::abs(p.b - q.b) > 1;
+      }
+    out.push_back({"pass_frame_mismatch_px[" + what + "]", double(off),
+                   "pixels where the Frame describing the " + what +
+                       " pass (the sidecar's nested frame) renders more "
+                       "than a level off the pass's own picture"});
+    ts::TextureDesc t = ts::nestedPictureTexture(img, described, "dynamic_reflection_pass", what);
+    t.minFilter = t.magFilter = GL_NEAREST;  // as the traced picture beside it
+    t.renderedBy = gl;
+    return t;
+  };
+  found.planarPic = nestedPicture(planarImg, planarFrame, "planar", planarGL);
+  found.flatCubePic = nestedPicture(cubeImg, cubeFrameDescribed, "flat_mirror_cube", cubeGL);
   // Shown with a colour of its own per texel (a hash of its ID), so neighbours differ and each texel's
   // patch of pixels shows; off the mirror the page's background.
   ts::Image shownIds(n, n);

@@ -98,7 +98,8 @@ inline ts::Frame mirroredFrame(int n, int content) {
   f.panels.push_back(p);
   return f;
 }
-// Pass 2: the mirror reading pass 1's picture (`mirrored`, a texture of it) at each pixel's own place.
+// Pass 2: the mirror reading pass 1's picture (`mirrored`, a texture of it) at each pixel's own place.  A nested
+// frame's picture has its top row first (TextureDesc::renderedFrom), so t runs down it: t = 1 - (y + 1) / 2.
 inline ts::Frame planarMirrorFrame(int n, const ts::TextureDesc& mirrored, bool scene) {
   ts::Frame f;
   f.width = f.height = n;
@@ -121,7 +122,7 @@ inline ts::Frame planarMirrorFrame(int n, const ts::TextureDesc& mirrored, bool 
     ts::Vertex v;
     v.pos = glm::vec3(m.points[i].pos);
     const glm::vec4 c = pv * glm::vec4(v.pos, 1.0f);
-    v.tex = {(c.x + c.w) / 2, (c.y + c.w) / 2, 0.0f, c.w};
+    v.tex = {(c.x + c.w) / 2, mirrored.renderedFrom ? (c.w - c.y) / 2 : (c.y + c.w) / 2, 0.0f, c.w};
     b.vertices.push_back(v);
   }
   p.batches.push_back(b);

@@ -156,12 +156,13 @@ TEST(DynamicReflection, TheFacesCopiedOnTheGpuAreTheFacesReadBack) {
   }
 }
 
-// The mirror's pictures are GL's, and each comes with the Frames the sidecar nests so that the CPU reference
-// recomputes it: the eye pass, and the cube pass whose render (y negated) is the six faces stacked.  Rendered, each
+// The mirrors' pictures are GL's, and each comes with the Frames the sidecar nests so that the CPU reference
+// recomputes it: the eye pass, and the cube pass whose render (y negated) is the six faces stacked; the flat
+// mirror's pass with the mirrored pass nested in it.  Rendered, each
 // Frame is what GL drew (within a level): the faces the GPU copied, texel for texel, and the mirror's picture.
 // A cube pass one step of time later is not (the control).
 TEST(DynamicReflection, TheMirrorsPicturesAreTheFramesTheSidecarNests) {
-  for (const char* view : {"scene", "variants"}) {
+  for (const char* view : {"scene", "variants", "planar"}) {
     SCOPED_TRACE(view);
     const ts::Measurements m = Demo("dynamic_reflection", {"--view", view}).measure();
     int checked = 0;
@@ -170,7 +171,10 @@ TEST(DynamicReflection, TheMirrorsPicturesAreTheFramesTheSidecarNests) {
         EXPECT_EQ(x.value, 0) << x.name;
         ++checked;
       }
-    EXPECT_EQ(checked, std::string(view) == "scene" ? 4 : 8) << "an eye pass and a cube pass a mirror picture";
+    // The sphere's mirrors: an eye pass and a cube pass each (scene 2, variants 4, planar 1); the planar view's
+    // flat mirror rendered mirrored and through a cube map, one each.
+    const int expected = std::string(view) == "scene" ? 4 : std::string(view) == "variants" ? 8 : 4;
+    EXPECT_EQ(checked, expected);
   }
   // The control: the cube pass's Frame a second later does not pass for this frame's faces.
   EXPECT_GT(value(Demo("dynamic_reflection", {}).measure(), "pass_frame_control_px[faces_a_second_later]"), 0);
