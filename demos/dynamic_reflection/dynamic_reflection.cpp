@@ -180,13 +180,14 @@ class DynamicReflection final : public ts::Scene {
              "{flat_mirror_pixels} pixels ({flat_mirror_magnification} pixels a texel)."}};
   }
   // The animation steps the `time` option itself, a quarter unit every 1.5 s, a few of measure()'s frames
-  // (below).  The frame the key is taken on is left still, so the state printed for the key is the key's.
+  // (below).  The first kHoldFrames frames after the key are left still, so the state printed for the key is the
+  // picture's however long a frame takes (a busy machine's frames can each take longer than a step).
   void update(double seconds) override {
     if (!animate_) {
       animFrames_ = 0, animClock_ = 0;
       return;
     }
-    if (++animFrames_ < 2) return;
+    if (++animFrames_ < kHoldFrames) return;
     animClock_ += seconds;
     if (animClock_ < kAnimStepSeconds) return;
     animClock_ = 0;
@@ -203,6 +204,7 @@ class DynamicReflection final : public ts::Scene {
   void measurePlanar(ts::Renderer& r, ts::Measurements& out, Found& found) const;
   float time_ = 1.5f;
   static constexpr double kAnimStepSeconds = 1.5;
+  static constexpr int kHoldFrames = 8;  // more than the frames a window test takes after a key (3)
   int variant_ = kRight, view_ = kSceneView, face_ = 128, animFrames_ = 0;
   double animClock_ = 0;
   bool animate_ = false;
