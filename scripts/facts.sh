@@ -8,7 +8,7 @@ set -euo pipefail
 kind=${1:?usage: facts.sh KIND}
 root=$(cd "$(dirname "$0")/.." && pwd)
 known=" duration backend_bound hidden_bound export_bound wine_bound claim_bound "
-known+="drawn_from_gl too_slow_softpipe rasterizer_specific glsl_specular "
+known+="drawn_from_gl too_slow_softpipe rasterizer_specific glsl_specular softpipe_wrong "
 case "$known" in *" $kind "*) ;; *) echo "facts.sh: unknown kind '$kind'" >&2; exit 2 ;; esac
 status=0
 for f in "$root"/demos/*/facts.tsv; do

@@ -28,6 +28,7 @@
 #include "common/core/image.hpp"
 #include "demos/procedural_texture/procedural_texture_math.hpp"
 #include "demos/procedural_texture/procedural_texture_views.hpp"
+#include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
@@ -38,6 +39,9 @@ namespace pr = ts::proc;
 constexpr int kW = 960, kH = 440;  // the figures' size
 
 TEST(ProceduralTexture, TheSolidSphereHasNoSeamWhereTheWrappedImageHasOne) {
+  // softpipe draws a line of wrong texels along the edges two triangles share in a 3D texture, here down the
+  // meridian the seam is measured on (docs/platform.md): the claim is about the texture, not that bug.
+  if (ts::test::isSoftpipe()) GTEST_SKIP() << "softpipe samples GL_TEXTURE_3D wrongly along shared edges";
   Demo d("procedural_texture", {"--view", "solid", "--octaves", "4"});
   const ts::Measurements m = d.measure();
   ts::Frame f;

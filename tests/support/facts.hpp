@@ -25,7 +25,7 @@ inline bool knownFactKind(const std::string& kind) {
   static const char* const kKinds[] = {"duration",      "backend_bound",     "hidden_bound",
                                        "export_bound",  "wine_bound",        "claim_bound",
                                        "drawn_from_gl", "too_slow_softpipe", "rasterizer_specific",
-                                       "glsl_specular"};
+                                       "glsl_specular", "softpipe_wrong"};
   return std::any_of(std::begin(kKinds), std::end(kKinds), [&](const char* k) { return kind == k; });
 }
 
