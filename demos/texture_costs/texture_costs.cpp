@@ -12,8 +12,8 @@
 // between them, measured (the screen-linear floor against both equations, the grid's triangles against the
 // quad's, the binds and draws recorded, the aliasing of a texture minified without mipmaps).  What each frame
 // costs depends on the machine, so it is never in the picture: a window times every frame on its own GL, one
-// frame a window frame in turn, and the side panel lists cost_ms_per_frame[...] and each claim's cost_timed_ratio[...] with its
-// verdict on this machine (supported above 1.1, contradicted below 0.9).
+// frame a window frame in turn, and the side panel lists cost_ms_per_frame[...] and each claim's
+// cost_timed_ratio[...] with its verdict on this machine (supported above 1.1, contradicted below 0.9).
 //
 // The equations (claim 1): the quad has w = 1 at the bottom, 8 at the top; at a pixel (x, y) in device coordinates
 //   smooth (hyperbolic):          1/w = 1 - 7/16 (y + 1),  s = x w / 16,  t = w / 16     (one division a pixel)
@@ -152,8 +152,8 @@ ts::Frame TextureCosts::build(int width, int height, const ts::Measurements& mea
         "{costs_switch_off_px[batched_vs_sorted]} px differ.  The mipmapped mean is "
         "{costs_minify_mean_error[mipmapped]|%.1f} levels off the texture's average."),
       "Off: a channel more than 16 levels from the equation's colour.  What each frame costs is not in this picture "
-      "(it differs between machines): a window times every frame on its own GL and lists cost_ms_per_frame and cost_timed_ratio "
-      "in its panel; the README gives the benchmark's."};
+      "(it differs between machines): a window times every frame on its own GL and lists cost_ms_per_frame and "
+      "cost_timed_ratio in its panel; the README gives the benchmark's."};
   L::pictureFigure(
       f, captions,
       [&](size_t k, const ts::Rect& r) {
