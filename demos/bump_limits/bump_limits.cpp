@@ -72,11 +72,14 @@ class BumpLimits final : public ts::Scene {
   std::vector<std::string> claim() const override {
     if (view_ == 1) return {"bump_normal_error_deg*", "bump_shear_error_deg*", "bump_baked*"};
     if (view_ == 2) return {"bump_distance_rms_levels*", "bump_tilt_lost_deg*"};
+    if (view_ == 3) return {"bump_self_shadow_torus_px*"};
     return {"bump_self_shadow_px*"};
   }
   void addOptions(ts::Options& o) override {
-    o.addEnum("view", &view_, {"shadows", "methods", "distance"},
-              "self-shadowing and horizon maps | normal maps, offset maps, shear, baking | bumps at a distance", 'v');
+    o.addEnum("view", &view_, {"shadows", "methods", "distance", "torus"},
+              "self-shadowing and horizon maps | normal maps, offset maps, shear, baking | bumps at a distance | "
+              "self-shadowing on the two-light torus",
+              'v');
     o.addInt("elevation", &elevation_, 5, 60, "the light's elevation above the plane, degrees (shadows)", 'E', 'e', 5);
     o.addInt("azimuth", &azimuth_, 0, 345, "the light's azimuth, degrees from +x (shadows)", '.', ',', 15);
     o.addInt("shear", &shear_, 15, 90, "degrees between dp/ds and dp/dt (methods)", '+', '-', 15);
@@ -116,7 +119,17 @@ class BumpLimits final : public ts::Scene {
          1000,
          480,
          "RMS at 8x: unfiltered {bump_distance_rms_levels[unfiltered][8x]}, mipmapped "
-         "{bump_distance_rms_levels[mipmapped][8x]}, 4x4 {bump_distance_rms_levels[super4x4][8x]} levels."}};
+         "{bump_distance_rms_levels[mipmapped][8x]}, 4x4 {bump_distance_rms_levels[super4x4][8x]} levels."},
+        {"bump_self_shadow_torus",
+         "Bump mapping's limits: self-shadowing on the two-light torus (seed 001)",
+         "The bumped torus of bump_mapping under its two lights: plain bump mapping lights pixels the displaced "
+         "torus shadows; horizon mapping (8 azimuths a texel, looked up for both lights) darkens them; the displaced "
+         "torus's shadows traced on the CPU from each pixel's (s, t); where horizon mapping differs.",
+         {"--view", "torus"},
+         1000,
+         480,
+         "Shadowed pixels plain bump mapping lights: {bump_self_shadow_torus_px[none]}; horizon mapping: "
+         "{bump_self_shadow_torus_px[horizon]}."}};
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override {
@@ -126,6 +139,7 @@ class BumpLimits final : public ts::Scene {
     if (view_ == 0) measureShadows(r, azimuth_, elevation_, out, pic);
     if (view_ == 1) measureMethods(r, shear_, out, pic);
     if (view_ == 2) measureDistance(r, kDistances[distance_], out, pic);
+    if (view_ == 3) measureTorus(r, out, pic);
     out.detail = pic;
     return out;
   }
@@ -164,6 +178,26 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
                       "(and darkens {bump_self_shadow_px[horizon_extra]|%.0f} more)."),
                 M("Control: the horizon looked up a quarter turn from the light lights "
                   "{bump_self_shadow_px[horizon_wrong_azimuth]|%.0f} of the shadowed pixels.")});
+  } else if (view_ == 3) {
+    pictureRow(f,
+               {{&s[0], "plain bump mapping", M("{bump_self_shadow_torus_px[none]|%.0f} shadowed px lit")},
+                {&s[1], "horizon mapping, " + G("directions of the horizon map", kDirections) + " azimuths",
+                 M("{bump_self_shadow_torus_px[horizon]|%.0f} shadowed px lit")},
+                {&s[2], "displaced torus, traced (CPU)", M("{bump_torus_shadowed_px|%.0f} px shadowed")},
+                {&s[3], "horizon map against the trace",
+                 M("{bump_self_shadow_torus_px[horizon]|%.0f} red, {bump_self_shadow_torus_px[horizon_extra]|%.0f} "
+                   "blue")}},
+               {{kMissed, "traced shadow, lit by horizon mapping (either light)"},
+                {kExtra, "darkened by horizon mapping, lit in the trace"},
+                {kLitBoth, "lit in both"},
+                {kDarkBoth, "dark in both (shadowed, or facing away)"}},
+               {M("Of {bump_torus_shadowed_px|%.0f} torus pixels the displaced surface shadows from a light their "
+                  "bumped normal faces, plain bump mapping lights {bump_self_shadow_torus_px[none]|%.0f}, horizon "
+                  "mapping {bump_self_shadow_torus_px[horizon]|%.0f} (and darkens "
+                  "{bump_self_shadow_torus_px[horizon_extra]|%.0f} more)."),
+                M("Controls: the horizon looked up a quarter turn from the light lights "
+                  "{bump_self_shadow_torus_px[horizon_wrong_azimuth]|%.0f}; a horizon map of the smooth torus (no "
+                  "bumps) {bump_self_shadow_torus_px[horizon_smooth]|%.0f}.")});
   } else if (view_ == 1) {
     L::Text table = "orthogonal-axes method's normal error against shear: ";
     for (double th : kThetas) {

@@ -283,4 +283,93 @@ TEST(BumpLimits, DistanceAliasesUnfilteredAndSupersamplingAnswersIt) {
   EXPECT_GT(v("bump_tilt_lost_deg[mipmapped]", 8), 0.25 * v("bump_tilt_deg[reference]", 8));
   EXPECT_LT(std::fabs(v("bump_tilt_lost_deg[super4x4]", 8)), 0.25 * v("bump_tilt_lost_deg[mipmapped]", 8));
 }
+
+// View torus.  The plain picture is Blinn's perturbed normal on the torus lit by the two lights, recomputed on the
+// CPU at each pixel's (s, t) as GL read it back (the same 8-bit heights, bilinear); the reference's trace and the
+// horizon map are checked against closed forms on the smooth torus; the claim's numbers against their controls.
+double torusGrey(const TorusField& f, double s, double t, const glm::dvec3 L[2], glm::dvec2 e = glm::dvec2(0)) {
+  const ts::TorusFrame fr = ts::torusFrameAt(kTorusR, kTorusr, {s, t});
+  const double x = s * kRepS * kTexels, y = t * kRepT * kTexels, k = kHeightWorld / kHeightMax;
+  // dP/ds, dP/dt: central differences a texel apart (the shader's), e moving each difference
+  const double ps = (k * (f.tile.at(x + 1, y) - f.tile.at(x - 1, y)) + e.x) * kRepS * kTexels / 2;
+  const double pt = (k * (f.tile.at(x, y + 1) - f.tile.at(x, y - 1)) + e.y) * kRepT * kTexels / 2;
+  const glm::dvec3 n = glm::normalize(fr.N - ps / glm::length(fr.Qs) * fr.T - pt / glm::length(fr.Qt) * fr.B);
+  double g = kAmbient;
+  for (int i = 0; i < 2; ++i) g += kTorusIntensity[i] * std::max(glm::dot(n, L[i]), 0.0);
+  return 255 * g;
+}
+Fit fitTorus(const Pictures& p, const ts::Image& img, const glm::dvec3 L[2]) {
+  const TorusField f;
+  Fit fit;
+  const int n = kTorusPixels;
+  for (int y = 1; y < n - 1; y += 2)
+    for (int x = 1; x < n - 1; x += 2) {
+      auto st = [&](int xx, int yy) { return p.st[size_t(yy) * n + size_t(xx)]; };
+      if (st(x, y).x < 0 || st(x - 1, y).x < 0 || st(x + 1, y).x < 0 || st(x, y - 1).x < 0 || st(x, y + 1).x < 0)
+        continue;  // the silhouette's pixels: a neighbour off the torus
+      const glm::dvec2 q = st(x, y);
+      const double want = torusGrey(f, q.x, q.y, L);
+      // The filtered heights' 8 bits: each difference may be 2 steps of kHeightWorld / 255 off; plus 2 levels.
+      const double e = 2 * kHeightWorld / 255;
+      double worst = 0;
+      for (int c = 0; c < 4; ++c)
+        worst = std::max(worst, std::fabs(torusGrey(f, q.x, q.y, L, {c & 1 ? e : -e, c & 2 ? e : -e}) - want));
+      ++fit.probed;
+      fit.off += std::fabs(img.at(x, y).r - want) > worst + 2;
+    }
+  return fit;
+}
+
+TEST(BumpLimits, TorusPicturesAreTheEquationAndHorizonMappingLeavesFewShadowsLit) {
+  Probe p({"--view", "torus"});
+  ASSERT_NE(p.pictures, nullptr);
+  ASSERT_EQ(p.pictures->shown.size(), 4u);
+  expectFigureShowsPictures(p.demo, *p.pictures, 1000, 480);
+  const ts::Image plain = *p.pictures->shown[0].image, hor = *p.pictures->shown[1].image;  // row 0 at the top
+  const glm::dvec3 L[2] = {torusLight(0), torusLight(1)};
+  const Fit fit = fitTorus(*p.pictures, plain, L);
+  EXPECT_GT(fit.probed, 3000);
+  EXPECT_EQ(fit.off, 0);
+  // Control: light 1 moved 30 degrees round (in the eye's frame) does not fit.
+  const double az = (kTorusLights[0][0] + 30) * kPi / 180, el = kTorusLights[0][1] * kPi / 180;
+  const glm::dvec3 moved[2] = {eyeToWorld({std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)}),
+                               L[1]};
+  EXPECT_GT(fitTorus(*p.pictures, plain, moved).off, fit.probed / 10);
+  // Horizon mapping only darkens: each of its pixels is plain bump mapping's or darker (a level of rounding).
+  long brighter = 0, darker = 0;
+  for (int y = 0; y < kTorusPixels; ++y)
+    for (int x = 0; x < kTorusPixels; ++x) {
+      brighter += hor.at(x, y).r > plain.at(x, y).r + 1;
+      darker += hor.at(x, y).r + 1 < plain.at(x, y).r;
+    }
+  EXPECT_EQ(brighter, 0);
+  EXPECT_GT(darker, 0);
+
+  // The claim, with its controls: plain bump mapping lights shadowed pixels; horizon mapping leaves under a
+  // quarter of them; looked up a quarter turn off, or made of the smooth torus, it leaves more than twice its own.
+  const ts::Measurements& m = p.demo.measured;
+  EXPECT_GT(value(m, "bump_self_shadow_torus_px[none]"), 0);
+  EXPECT_LT(value(m, "bump_self_shadow_torus_px[horizon]"), 0.25 * value(m, "bump_self_shadow_torus_px[none]"));
+  EXPECT_GT(value(m, "bump_self_shadow_torus_px[horizon_wrong_azimuth]"),
+            2 * value(m, "bump_self_shadow_torus_px[horizon]"));
+  EXPECT_GT(value(m, "bump_self_shadow_torus_px[horizon_smooth]"), 2 * value(m, "bump_self_shadow_torus_px[horizon]"));
+
+  // The trace: the outer equator lit along its normal is not shadowed; the inner equator lit along its normal,
+  // across the hole, is (the far side of the ring is in the way); the far side's outer equator, lit by that same
+  // light along its own normal, is not (a control).
+  const TorusField f;
+  EXPECT_FALSE(torusShadowed(f, 0, 0, {0, 0, 1}));
+  EXPECT_TRUE(torusShadowed(f, 0, 0.5, {0, 0, -1}));
+  EXPECT_FALSE(torusShadowed(f, 0.5, 0, {0, 0, -1}));
+  // The horizon of the smooth torus: along the ring at the inner equator the surface is the circle of radius
+  // R - r curving towards the normal, so a point an arc sigma away is sigma / (2 (R - r)) above the tangent
+  // plane; around the tube it curves away (below 0).
+  double last = 0;
+  for (double sg = kHorizonFirst; sg <= kHorizonReachWorld; sg += std::max(kHorizonFirst, kHorizonGrowth * sg))
+    last = sg;
+  EXPECT_NEAR(torusHorizonAngle(f, 0, 0.5, 0, 0), last / (2 * (kTorusR - kTorusr)), 1e-9);
+  EXPECT_LT(torusHorizonAngle(f, 0, 0, kPi / 2, 0), 0);
+  EXPECT_GT(torusHorizonAngle(f, 0, 0.5, 0, 0), 0.1);  // control: the same direction seen from the inner side
+}
 }  // namespace
+
