@@ -325,7 +325,7 @@ TEST(BumpLimits, TorusPicturesAreTheEquationAndHorizonMappingLeavesFewShadowsLit
   ASSERT_NE(p.pictures, nullptr);
   ASSERT_EQ(p.pictures->shown.size(), 4u);
   expectFigureShowsPictures(p.demo, *p.pictures, 1000, 480);
-  const ts::Image plain = *p.pictures->shown[0].image, hor = *p.pictures->shown[1].image;  // row 0 at the top
+  const ts::Image plain = p.picture(0), hor = p.picture(1);  // row 0 at the top, as pictures->st
   const glm::dvec3 L[2] = {torusLight(0), torusLight(1)};
   const Fit fit = fitTorus(*p.pictures, plain, L);
   EXPECT_GT(fit.probed, 3000);
