@@ -11,6 +11,13 @@
 // stores, per texel, the horizon's elevation in 8 directions; a pixel is dark when the light's elevation is below
 // the horizon interpolated at its azimuth: it leaves far fewer such pixels (bump_self_shadow_px[horizon]).
 //
+// The same on bump_mapping's two-light torus (view torus): the bumps displace the torus along its normal; plain
+// bump mapping lights pixels the displaced torus shadows from a light their bumped normal faces
+// (bump_self_shadow_torus_px[none], against shadow rays traced on the CPU from the displaced point at each pixel's
+// (s, t), read back from GL); a horizon map per texel (8 azimuths in the tangent frame, the near bumps along the
+// surface and the ring across the hole), looked up for both lights, leaves far fewer
+// (bump_self_shadow_torus_px[horizon]); looked up a quarter turn off, or made of the smooth torus, it leaves many.
+//
 // The representations' claim (view methods): Blinn's formula from the heights, a normal map and an offset-vector
 // map (bu, bv along two vectors perpendicular to n, seed 001) each give a normal within a measured angle of the
 // displaced surface's (bump_normal_error_deg[*]).  With the parameterisation sheared (dp/ds and dp/dt at theta, keys
@@ -25,7 +32,7 @@
 // close to the reference at every distance (bump_distance_rms_levels[super4x4]).
 //
 // Keys (each is also a flag, see --help):
-//   v      view: shadows | methods | distance
+//   v      view: shadows | methods | distance | torus
 //   e / E  the light's elevation, degrees (shadows)        . / ,  its azimuth, degrees (shadows)
 //   + / -  the shear angle theta between dp/ds and dp/dt   d      distance: 1 | 2 | 4 | 8 (distance)
 //
@@ -37,6 +44,9 @@
 //   n' = n + bu e1 + bv e2,  e1, e2 perpendicular to n                       the offset-vector map
 //   true normal, sheared: (Ps + z_s n) x (Pt + z_t n),  Ps . Pt = cos theta; orthogonal method: (-z_s, -z_t, 1)
 //   c = A + (1 - A) max(n . L, 0) lit                                        the shading, grey, A = 0.1 ambient
+//   torus (bump_limits_torus.hpp): n' = normalize(N - P_s/|Q_s| T - P_t/|Q_t| B),  c = A + sum_i I_i max(n'.L_i, 0)
+//   lit_i, the light's azimuth and elevation taken in (T, B, N); the reference: X = Q + P N, shadowed by light i
+//   when X + sigma L_i is inside the displaced torus (rho < r + P(theta, phi)) for some sigma > 0
 //
 // What the GL does (bump_limits_gl.hpp, passes of measure() read back and shown as pictures):
 //   glUseProgram(p);  the fragment shader: central differences of texture2D(heights, st +- step), the normal and
@@ -44,7 +54,8 @@
 //   glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA8, ...) each level, GL_LINEAR_MIPMAP_LINEAR   the mipmapped heights
 //   the baked shading: the shader's picture read back and drawn with glTexEnvi(GL_TEXTURE_ENV,
 //   GL_TEXTURE_ENV_MODE, GL_REPLACE), GL_NEAREST, one pixel a texel, no shader
-// Listings: book_figures/bump_limits_shadows.gl.txt, bump_limits_methods.gl.txt, bump_limits_distance.gl.txt.
+// Listings: book_figures/bump_limits_shadows.gl.txt, bump_limits_methods.gl.txt, bump_limits_distance.gl.txt,
+// bump_self_shadow_torus.gl.txt.
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -67,7 +78,8 @@ class BumpLimits final : public ts::Scene {
            "directions) against the displaced surface's shadows ray-marched on the CPU.  Methods: Blinn's formula,\n"
            "a normal map and an offset-vector map against the exact normal; a sheared parameterisation; shading\n"
            "baked for one light.  Distance: the bumps at 1x-8x unfiltered, mipmapped and 4x4 supersampled against\n"
-           "an 8x8 supersampled reference.";
+           "an 8x8 supersampled reference.  Torus: the same self-shadowing on bump_mapping's two-light torus, the\n"
+           "displaced torus's shadows traced on the CPU, a horizon map looked up for both lights.";
   }
   std::vector<std::string> claim() const override {
     if (view_ == 1) return {"bump_normal_error_deg*", "bump_shear_error_deg*", "bump_baked*"};
@@ -191,9 +203,9 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
                 {kExtra, "darkened by horizon mapping, lit in the trace"},
                 {kLitBoth, "lit in both"},
                 {kDarkBoth, "dark in both (shadowed, or facing away)"}},
-               {M("Of {bump_torus_shadowed_px|%.0f} torus pixels the displaced surface shadows from a light their "
-                  "bumped normal faces, plain bump mapping lights {bump_self_shadow_torus_px[none]|%.0f}, horizon "
-                  "mapping {bump_self_shadow_torus_px[horizon]|%.0f} (and darkens "
+               {M("Of {bump_torus_shadowed_px|%.0f} torus pixels the displaced surface shadows from a light, plain "
+                  "bump mapping lights {bump_self_shadow_torus_px[none]|%.0f} from it (their bumped normal faces "
+                  "it), horizon mapping {bump_self_shadow_torus_px[horizon]|%.0f} (and darkens "
                   "{bump_self_shadow_torus_px[horizon_extra]|%.0f} more)."),
                 M("Controls: the horizon looked up a quarter turn from the light lights "
                   "{bump_self_shadow_torus_px[horizon_wrong_azimuth]|%.0f}; a horizon map of the smooth torus (no "

@@ -287,7 +287,8 @@ TEST(BumpLimits, DistanceAliasesUnfilteredAndSupersamplingAnswersIt) {
 // View torus.  The plain picture is Blinn's perturbed normal on the torus lit by the two lights, recomputed on the
 // CPU at each pixel's (s, t) as GL read it back (the same 8-bit heights, bilinear); the reference's trace and the
 // horizon map are checked against closed forms on the smooth torus; the claim's numbers against their controls.
-double torusGrey(const TorusField& f, double s, double t, const glm::dvec3 L[2], glm::dvec2 e = glm::dvec2(0)) {
+double torusGrey(const TorusField& f, double s, double t, const glm::dvec3 L[2], glm::dvec2 e = glm::dvec2(0),
+                 const double lit[2] = nullptr) {
   const ts::TorusFrame fr = ts::torusFrameAt(kTorusR, kTorusr, {s, t});
   const double x = s * kRepS * kTexels, y = t * kRepT * kTexels, k = kHeightWorld / kHeightMax;
   // dP/ds, dP/dt: central differences a texel apart (the shader's), e moving each difference
@@ -295,8 +296,52 @@ double torusGrey(const TorusField& f, double s, double t, const glm::dvec3 L[2],
   const double pt = (k * (f.tile.at(x, y + 1) - f.tile.at(x, y - 1)) + e.y) * kRepT * kTexels / 2;
   const glm::dvec3 n = glm::normalize(fr.N - ps / glm::length(fr.Qs) * fr.T - pt / glm::length(fr.Qt) * fr.B);
   double g = kAmbient;
-  for (int i = 0; i < 2; ++i) g += kTorusIntensity[i] * std::max(glm::dot(n, L[i]), 0.0);
+  for (int i = 0; i < 2; ++i) g += kTorusIntensity[i] * std::max(glm::dot(n, L[i]), 0.0) * (lit ? lit[i] : 1.0);
   return 255 * g;
+}
+// The horizon map's lookup as the shader makes it: the light's azimuth and elevation in the smooth frame (T, B, N),
+// the two nearest azimuths' angles interpolated; returns elevation - horizon, radians (lit when > 0).
+double torusAboveHorizon(const std::vector<ts::Image>& maps, double s, double t, const glm::dvec3& L,
+                         double shiftDeg = 0) {
+  const ts::TorusFrame fr = ts::torusFrameAt(kTorusR, kTorusr, {s, t});
+  const double az = std::fmod(std::atan2(glm::dot(L, fr.B), glm::dot(L, fr.T)) + shiftDeg * kPi / 180 + 4 * kPi,
+                              2 * kPi);
+  const double el = std::asin(std::clamp(glm::dot(L, fr.N), -1.0, 1.0));
+  const double k = az / (kPi / 4), x = s * kRepS * kTexels, y = t * kRepT * kTexels;
+  const int k0 = int(std::floor(k)) % 8, k1 = (k0 + 1) % 8;
+  auto pick = [&](int d) { return (bilinear(maps[size_t(d / 4)], x, y, d % 4) - 0.5) * kPi; };
+  return el - ((1 - (k - std::floor(k))) * pick(k0) + (k - std::floor(k)) * pick(k1));
+}
+// The horizon picture against the equation with the horizon map's lookup, pixels within half a degree of their
+// horizon left out (an 8-bit angle step is 0.7 degrees; GL_LINEAR's weights move it a little more).
+Fit fitTorusHorizon(const Pictures& p, const ts::Image& img, const glm::dvec3 L[2],
+                    const std::vector<ts::Image>& maps, double shiftDeg) {
+  const TorusField f;
+  Fit fit;
+  const int n = kTorusPixels;
+  for (int y = 1; y < n - 1; y += 2)
+    for (int x = 1; x < n - 1; x += 2) {
+      auto st = [&](int xx, int yy) { return p.st[size_t(yy) * n + size_t(xx)]; };
+      if (st(x, y).x < 0 || st(x - 1, y).x < 0 || st(x + 1, y).x < 0 || st(x, y - 1).x < 0 || st(x, y + 1).x < 0)
+        continue;
+      const glm::dvec2 q = st(x, y);
+      double lit[2];
+      bool near = false;
+      for (int k = 0; k < 2; ++k) {
+        const double a = torusAboveHorizon(maps, q.x, q.y, L[k], shiftDeg);
+        near |= std::fabs(a) < 0.5 * kPi / 180;
+        lit[k] = a > 0;
+      }
+      if (near) continue;
+      const double want = torusGrey(f, q.x, q.y, L, glm::dvec2(0), lit);
+      const double e = 2 * kHeightWorld / 255;
+      double worst = 0;
+      for (int c = 0; c < 4; ++c)
+        worst = std::max(worst, std::fabs(torusGrey(f, q.x, q.y, L, {c & 1 ? e : -e, c & 2 ? e : -e}, lit) - want));
+      ++fit.probed;
+      fit.off += std::fabs(img.at(x, y).r - want) > worst + 2;
+    }
+  return fit;
 }
 Fit fitTorus(const Pictures& p, const ts::Image& img, const glm::dvec3 L[2]) {
   const TorusField f;
@@ -335,6 +380,13 @@ TEST(BumpLimits, TorusPicturesAreTheEquationAndHorizonMappingLeavesFewShadowsLit
   const glm::dvec3 moved[2] = {eyeToWorld({std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)}),
                                L[1]};
   EXPECT_GT(fitTorus(*p.pictures, plain, moved).off, fit.probed / 10);
+  // The horizon picture is the same shading with each light's horizon test (the map recomputed here from the
+  // CPU's equations); control: the lookup a quarter turn off does not fit it.
+  const std::vector<ts::Image> maps = torusHorizonMaps(TorusField());
+  const Fit hfit = fitTorusHorizon(*p.pictures, hor, L, maps, 0);
+  EXPECT_GT(hfit.probed, 3000);
+  EXPECT_EQ(hfit.off, 0);
+  EXPECT_GT(fitTorusHorizon(*p.pictures, hor, L, maps, 90).off, hfit.probed / 50);
   // Horizon mapping only darkens: each of its pixels is plain bump mapping's or darker (a level of rounding).
   long brighter = 0, darker = 0;
   for (int y = 0; y < kTorusPixels; ++y)

@@ -161,9 +161,9 @@ inline void measureTorus(ts::Renderer& r, ts::Measurements& ms, Pictures& pic) {
       for (int k = 0; k < 2; ++k) {
         const uint8_t dk = k == 0 ? d.r : d.g;
         const bool facing = dk > 0, hLit = litBit(d.b, k);
-        const bool s = facing && torusShadowed(field, st.x, st.y, L[k]);
-        pic.rayShadow[at] |= uint8_t(s << k);
-        anyShadow |= s;
+        const bool traced = torusShadowed(field, st.x, st.y, L[k]), s = facing && traced;
+        pic.rayShadow[at] |= uint8_t(traced << k);
+        anyShadow |= traced;
         anyNone |= s;
         anyMissed |= s && hLit;
         anyExtra |= facing && !s && !hLit;
@@ -193,7 +193,7 @@ inline void measureTorus(ts::Renderer& r, ts::Measurements& ms, Pictures& pic) {
   put("bump_self_shadow_torus_px[horizon_smooth]", double(smoothMissed),
       "shadowed pixels lit by a horizon map of the smooth torus, the bumps left out (a control)");
   put("bump_torus_shadowed_px", double(shadowed),
-      "pixels the trace shadows from a light their bumped normal faces (either light)");
+      "torus pixels the trace shadows from either light (whichever way their bumped normal faces)");
   put("bump_torus_covered_px", double(covered), "pixels the torus covers, of " + std::to_string(n * n));
   ts::gl::CallList noneCalls, horizonCalls;
   ts::Image shadeNone, shadeHorizon;
