@@ -17,6 +17,8 @@
 // (s, t), read back from GL); a horizon map per texel (8 azimuths in the tangent frame, the near bumps along the
 // surface and the ring across the hole), looked up for both lights, leaves far fewer
 // (bump_self_shadow_torus_px[horizon]); looked up a quarter turn off, or made of the smooth torus, it leaves many.
+// Beside it a polynomial texture map (6 coefficients a texel, fitted to the horizon-shadowed diffuse term over
+// light directions): its fit's error (bump_ptm_fit_rms_levels) and each picture's RMS against the traced one.
 //
 // The representations' claim (view methods): Blinn's formula from the heights, a normal map and an offset-vector
 // map (bu, bv along two vectors perpendicular to n, seed 001) each give a normal within a measured angle of the
@@ -198,7 +200,8 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
                 {&s[2], "displaced torus, traced (CPU)", M("{bump_torus_shadowed_px|%.0f} px shadowed")},
                 {&s[3], "horizon map against the trace",
                  M("{bump_self_shadow_torus_px[horizon]|%.0f} red, {bump_self_shadow_torus_px[horizon_extra]|%.0f} "
-                   "blue")}},
+                   "blue")},
+                {&s[4], "polynomial texture map", M("RMS {bump_shadow_torus_rms_levels[ptm]|%.1f} levels")}},
                {{kMissed, "traced shadow, lit by horizon mapping (either light)"},
                 {kExtra, "darkened by horizon mapping, lit in the trace"},
                 {kLitBoth, "lit in both"},
@@ -209,7 +212,11 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
                   "{bump_self_shadow_torus_px[horizon_extra]|%.0f} more)."),
                 M("Controls: the horizon looked up a quarter turn from the light lights "
                   "{bump_self_shadow_torus_px[horizon_wrong_azimuth]|%.0f}; a horizon map of the smooth torus (no "
-                  "bumps) {bump_self_shadow_torus_px[horizon_smooth]|%.0f}.")});
+                  "bumps) {bump_self_shadow_torus_px[horizon_smooth]|%.0f}."),
+                M("RMS against the traced picture: plain {bump_shadow_torus_rms_levels[none]|%.1f}, horizon "
+                  "{bump_shadow_torus_rms_levels[horizon]|%.1f}, PTM {bump_shadow_torus_rms_levels[ptm]|%.1f} levels; "
+                  "the PTM's biquadratic is {bump_ptm_fit_rms_levels|%.1f} levels RMS off the shading it was fitted "
+                  "to ({bump_ptm_fit_rms_levels[unshadowed]|%.1f} without the shadows).")});
   } else if (view_ == 1) {
     L::Text table = "orthogonal-axes method's normal error against shear: ";
     for (double th : kThetas) {

@@ -368,7 +368,7 @@ Fit fitTorus(const Pictures& p, const ts::Image& img, const glm::dvec3 L[2]) {
 TEST(BumpLimits, TorusPicturesAreTheEquationAndHorizonMappingLeavesFewShadowsLit) {
   Probe p({"--view", "torus"});
   ASSERT_NE(p.pictures, nullptr);
-  ASSERT_EQ(p.pictures->shown.size(), 4u);
+  ASSERT_EQ(p.pictures->shown.size(), 5u);
   expectFigureShowsPictures(p.demo, *p.pictures, 1000, 480);
   const ts::Image plain = p.picture(0), hor = p.picture(1);  // row 0 at the top, as pictures->st
   const glm::dvec3 L[2] = {torusLight(0), torusLight(1)};
@@ -405,6 +405,11 @@ TEST(BumpLimits, TorusPicturesAreTheEquationAndHorizonMappingLeavesFewShadowsLit
   EXPECT_GT(value(m, "bump_self_shadow_torus_px[horizon_wrong_azimuth]"),
             2 * value(m, "bump_self_shadow_torus_px[horizon]"));
   EXPECT_GT(value(m, "bump_self_shadow_torus_px[horizon_smooth]"), 2 * value(m, "bump_self_shadow_torus_px[horizon]"));
+  // Against the traced picture horizon mapping is closer than plain bump mapping, and so is the PTM; the PTM's
+  // biquadratic fits its shadowed samples worse than the same fit without the shadows (they are not smooth).
+  EXPECT_LT(value(m, "bump_shadow_torus_rms_levels[horizon]"), value(m, "bump_shadow_torus_rms_levels[none]"));
+  EXPECT_LT(value(m, "bump_shadow_torus_rms_levels[ptm]"), value(m, "bump_shadow_torus_rms_levels[none]"));
+  EXPECT_GT(value(m, "bump_ptm_fit_rms_levels"), value(m, "bump_ptm_fit_rms_levels[unshadowed]"));
 
   // The trace: the outer equator lit along its normal is not shadowed; the inner equator lit along its normal,
   // across the hole, is (the far side of the ring is in the way); the far side's outer equator, lit by that same

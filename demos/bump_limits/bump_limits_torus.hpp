@@ -18,6 +18,7 @@
 // with the light's azimuth and elevation taken in (T, B, N) per pixel, for both lights.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -141,32 +142,147 @@ inline double farHorizonAngle(double t, double azRad, double radius) {
   }
   return hi;
 }
-inline std::vector<ts::Image> torusHorizonMaps(const TorusField& f, double scale = 1) {
+// The horizon angles (radians) of every texel of the map, kDirections a texel, row by row.
+struct HorizonAngles {
+  std::vector<double> a;  // (j kTexels + i) kDirections + k
+  double at(int i, int j, int k) const { return a[(size_t(j) * kTexels + size_t(i)) * kDirections + size_t(k)]; }
+};
+inline HorizonAngles torusHorizonAngles(const TorusField& f, double scale = 1) {
   const int w = kTexels, h = kRepT * kTexels;
   const double radius = kTorusr + scale * kHeightWorld * meanBump(f);
-  std::vector<ts::Image> maps(2, ts::Image(w, h));
+  HorizonAngles out;
+  out.a.resize(size_t(w) * h * kDirections);
   for (int j = 0; j < h; ++j) {
     const double t = (j + 0.5) / h;
     double far[kDirections];
     for (int k = 0; k < kDirections; ++k) far[k] = farHorizonAngle(t, k * 2 * kPi / kDirections, radius);
     for (int i = 0; i < w; ++i) {
       const double s = (i + 0.5) / (kRepS * kTexels);
-      uint8_t a[kDirections];
       for (int k = 0; k < kDirections; ++k)
-        a[k] = u8(std::max(far[k], torusHorizonAngle(f, s, t, k * 2 * kPi / kDirections, scale)) / kPi + 0.5);
+        out.a[(size_t(j) * w + size_t(i)) * kDirections + size_t(k)] =
+            std::max(far[k], torusHorizonAngle(f, s, t, k * 2 * kPi / kDirections, scale));
+    }
+  }
+  return out;
+}
+inline std::vector<ts::Image> torusHorizonMaps(const HorizonAngles& h) {
+  const int w = kTexels, rows = kRepT * kTexels;
+  std::vector<ts::Image> maps(2, ts::Image(w, rows));
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < w; ++i) {
+      uint8_t a[kDirections];
+      for (int k = 0; k < kDirections; ++k) a[k] = u8(h.at(i, j, k) / kPi + 0.5);
       maps[0].set(i, j, {a[0], a[1], a[2], a[3]});
       maps[1].set(i, j, {a[4], a[5], a[6], a[7]});
     }
-  }
   return maps;
+}
+inline std::vector<ts::Image> torusHorizonMaps(const TorusField& f, double scale = 1) {
+  return torusHorizonMaps(torusHorizonAngles(f, scale));
+}
+
+// ---- the polynomial texture map (Malzbender's PTM) --------------------------------------------------------------
+// Per texel six coefficients of the luminance as a biquadratic in the light's projection (lu, lv) = (L . T, L . B):
+//   lum(lu, lv) = a0 lu^2 + a1 lv^2 + a2 lu lv + a3 lu + a4 lv + a5,
+// fitted by least squares to the self-shadowed diffuse term max(n' . L, 0) [elevation(L) > horizon(azimuth(L))]
+// (the horizon angles unrounded) at kPtmAzimuths x kPtmElevations light directions over the hemisphere.  Stored
+// as two RGBA textures, each coefficient (a - lo) / (hi - lo) in 8 bits, lo and hi the coefficient's range over
+// the map (uniforms).
+constexpr int kPtmAzimuths = 16;
+constexpr double kPtmElevationsDeg[] = {3, 10, 20, 30, 45, 60, 75, 90};
+struct Ptm {
+  std::vector<double> a;  // 6 a texel, row by row as the horizon map
+  double lo[6], hi[6];
+  std::vector<ts::Image> maps;
+  double fitRms = 0;  // RMS of the fit against its samples, 0..1
+};
+// The bumped normal at texel (i, j) of the map, in the smooth frame (T, B, N).
+inline glm::dvec3 localBumpNormal(const TorusField& f, double s, double t) {
+  const ts::TorusFrame fr = ts::torusFrameAt(kTorusR, kTorusr, {s, t});
+  const double x = s * kRepS * kTexels, y = t * kRepT * kTexels, k = kHeightWorld / kHeightMax;
+  const double ps = k * (f.tile.at(x + 1, y) - f.tile.at(x - 1, y)) * kRepS * kTexels / 2;
+  const double pt = k * (f.tile.at(x, y + 1) - f.tile.at(x, y - 1)) * kRepT * kTexels / 2;
+  return glm::normalize(glm::dvec3(-ps / glm::length(fr.Qs), -pt / glm::length(fr.Qt), 1));
+}
+// The horizon model's self-shadowed diffuse term for a light at (azimuth, elevation) in the frame, at texel (i, j).
+inline double horizonShading(const HorizonAngles& h, int i, int j, const glm::dvec3& n, double az, double el,
+                             bool shadows = true) {
+  const double k = az / (2 * kPi / kDirections);
+  const int k0 = int(std::floor(k)) % kDirections, k1 = (k0 + 1) % kDirections;
+  const double a = k - std::floor(k), hor = (1 - a) * h.at(i, j, k0) + a * h.at(i, j, k1);
+  const glm::dvec3 L(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
+  return el > hor || !shadows ? std::max(glm::dot(n, L), 0.0) : 0.0;
+}
+// `shadows` false: fitted to the diffuse term alone (a control: how much of the fit's error the shadows make).
+inline Ptm fitPtm(const TorusField& f, const HorizonAngles& h, bool shadows = true) {
+  const int w = kTexels, rows = kRepT * kTexels;
+  Ptm p;
+  p.a.resize(size_t(w) * rows * 6);
+  double se = 0;
+  long samples = 0;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < w; ++i) {
+      const glm::dvec3 n = localBumpNormal(f, (i + 0.5) / (kRepS * kTexels), (j + 0.5) / rows);
+      double M[6][7] = {};
+      std::vector<std::pair<std::array<double, 6>, double>> rowsFit;
+      for (double elDeg : kPtmElevationsDeg)
+        for (int q = 0; q < (elDeg < 90 ? kPtmAzimuths : 1); ++q) {
+          const double az = (q + 0.5) * 2 * kPi / kPtmAzimuths, el = elDeg * kPi / 180;
+          const double lu = std::cos(el) * std::cos(az), lv = std::cos(el) * std::sin(az);
+          const std::array<double, 6> b{lu * lu, lv * lv, lu * lv, lu, lv, 1};
+          const double y = horizonShading(h, i, j, n, az, el, shadows);
+          rowsFit.push_back({b, y});
+          for (int r = 0; r < 6; ++r) {
+            for (int c = 0; c < 6; ++c) M[r][c] += b[size_t(r)] * b[size_t(c)];
+            M[r][6] += b[size_t(r)] * y;
+          }
+        }
+      for (int c = 0; c < 6; ++c) {  // Gauss-Jordan with partial pivoting on the normal equations
+        int piv = c;
+        for (int r = c + 1; r < 6; ++r)
+          if (std::fabs(M[r][c]) > std::fabs(M[piv][c])) piv = r;
+        for (int k = 0; k < 7; ++k) std::swap(M[c][k], M[piv][k]);
+        for (int r = 0; r < 6; ++r)
+          if (r != c) {
+            const double m = M[r][c] / M[c][c];
+            for (int k = c; k < 7; ++k) M[r][k] -= m * M[c][k];
+          }
+      }
+      double* a = &p.a[(size_t(j) * w + size_t(i)) * 6];
+      for (int c = 0; c < 6; ++c) a[c] = M[c][6] / M[c][c];
+      for (const auto& [b, y] : rowsFit) {
+        double v = 0;
+        for (int c = 0; c < 6; ++c) v += a[c] * b[size_t(c)];
+        se += (v - y) * (v - y), ++samples;
+      }
+    }
+  p.fitRms = std::sqrt(se / double(samples));
+  for (int c = 0; c < 6; ++c) {
+    p.lo[c] = 1e9, p.hi[c] = -1e9;
+    for (size_t t = 0; t < p.a.size() / 6; ++t) p.lo[c] = std::min(p.lo[c], p.a[t * 6 + size_t(c)]),
+                                                 p.hi[c] = std::max(p.hi[c], p.a[t * 6 + size_t(c)]);
+    if (p.hi[c] <= p.lo[c]) p.hi[c] = p.lo[c] + 1;
+  }
+  p.maps.assign(2, ts::Image(w, rows));
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < w; ++i) {
+      uint8_t b[8] = {0, 0, 0, 0, 0, 0, 0, 255};
+      for (int c = 0; c < 6; ++c) b[c] = u8((p.a[(size_t(j) * w + size_t(i)) * 6 + size_t(c)] - p.lo[c]) /
+                                            (p.hi[c] - p.lo[c]));
+      p.maps[0].set(i, j, {b[0], b[1], b[2], b[3]});
+      p.maps[1].set(i, j, {b[4], b[5], 0, 255});
+    }
+  return p;
 }
 
 // ---- the GL pass -------------------------------------------------------------------------------------------------
 enum class TorusOutput { kShade = 0, kDiffuse = 1, kS = 2, kT = 3 };
 inline std::string torusFragmentShader() {
   return std::string(R"(#version 110
-uniform sampler2D heights, horizon0, horizon1;
+uniform sampler2D heights, horizon0, horizon1, ptm0, ptm1;
 uniform vec3 light1, light2;  // world, unit, towards the light
+uniform vec4 ptmLo0, ptmHi0;  // the PTM's coefficients a0-a3: their range
+uniform vec2 ptmLo1, ptmHi1;  // a4, a5
 uniform float R, r, TAU, repS, repT, texels, heightWorld, azShift, ambient, i1, i2;
 uniform int outputKind, horizon;
 float pick(vec2 hst, int k) {  // the horizon map's angle in direction k (0..7), radians
@@ -184,6 +300,13 @@ float horizonLit(vec2 hst, vec3 L, vec3 T, vec3 B, vec3 N) {  // the light above
   k0 = k0 - 8 * (k0 / 8);
   int k1 = k0 + 1 - 8 * ((k0 + 1) / 8);
   return el > mix(pick(hst, k0), pick(hst, k1), a) ? 1.0 : 0.0;
+}
+float ptm(vec2 hst, vec3 L, vec3 T, vec3 B, vec3 N) {  // the PTM's luminance for light L
+  vec4 a = ptmLo0 + (ptmHi0 - ptmLo0) * texture2D(ptm0, hst);
+  vec2 b = ptmLo1 + (ptmHi1 - ptmLo1) * texture2D(ptm1, hst).rg;
+  float lu = dot(L, T), lv = dot(L, B);
+  float lum = a.x * lu * lu + a.y * lv * lv + a.z * lu * lv + a.w * lu + b.x * lv + b.y;
+  return dot(L, N) > 0.0 ? max(lum, 0.0) : 0.0;
 }
 vec2 split16(float v) {  // v in [0, 1] as two bytes, high and low
   float x = floor(clamp(v, 0.0, 1.0) * 65535.0 + 0.5);
@@ -209,6 +332,8 @@ void main() {
   if (outputKind == 1) gl_FragColor = vec4(d1, d2, 0.5 * lit1 + 0.25 * lit2, 1.0);
   else if (outputKind == 2) gl_FragColor = vec4(split16(s), 1.0, 1.0);
   else if (outputKind == 3) gl_FragColor = vec4(split16(t), 1.0, 1.0);
+  else if (horizon == 2)
+    gl_FragColor = vec4(vec3(ambient + i1 * ptm(hst, light1, T, B, N) + i2 * ptm(hst, light2, T, B, N)), 1.0);
   else if (horizon == 1) gl_FragColor = vec4(vec3(ambient + i1 * d1 * lit1 + i2 * d2 * lit2), 1.0);
   else gl_FragColor = vec4(vec3(ambient + i1 * d1 + i2 * d2), 1.0);
 }
@@ -217,7 +342,8 @@ void main() {
 
 struct TorusPass {
   TorusOutput output = TorusOutput::kShade;
-  bool horizon = false;
+  int horizon = 0;        // 0 plain bump mapping, 1 the horizon map, 2 the PTM
+  const Ptm* ptm = nullptr;
   double azShiftDeg = 0;  // a control: the horizon looked up this far round from the light
   const std::vector<ts::Image>* maps = nullptr;
 };
@@ -240,19 +366,31 @@ inline ts::Image torusPass(ts::Renderer& r, const TorusPass& p) {
   const std::vector<ts::Image>& maps = p.maps ? *p.maps : none;
   const ts::Image heights = heightImage();
   return ts::pixelPass(r, kTorusPixels, kTorusPixels, "bump limits torus", [&] {
-    GLuint tex[3];
+    GLuint tex[5] = {0, 0, 0, 0, 0};
     glActiveTexture(GL_TEXTURE0);
     tex[0] = ts::imageTexture(heights, GL_LINEAR);
     glActiveTexture(GL_TEXTURE1);
     tex[1] = ts::imageTexture(maps[0], GL_LINEAR);
     glActiveTexture(GL_TEXTURE2);
     tex[2] = ts::imageTexture(maps[1], GL_LINEAR);
+    for (int k = 0; k < 2 && p.ptm; ++k) {
+      glActiveTexture(GL_TEXTURE3 + GLenum(k));
+      tex[3 + k] = ts::imageTexture(p.ptm->maps[size_t(k)], GL_LINEAR);
+    }
     glActiveTexture(GL_TEXTURE0);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);  // pixelPass's glOrtho puts larger z nearer (smaller depth)
     glUseProgram(prog);
     auto loc = [&](const char* n) { return glGetUniformLocation(prog, n); };
     glUniform1i(loc("heights"), 0), glUniform1i(loc("horizon0"), 1), glUniform1i(loc("horizon1"), 2);
+    glUniform1i(loc("ptm0"), 3), glUniform1i(loc("ptm1"), 4);
+    if (p.ptm) {
+      const double *lo = p.ptm->lo, *hi = p.ptm->hi;
+      glUniform4f(loc("ptmLo0"), float(lo[0]), float(lo[1]), float(lo[2]), float(lo[3]));
+      glUniform4f(loc("ptmHi0"), float(hi[0]), float(hi[1]), float(hi[2]), float(hi[3]));
+      glUniform2f(loc("ptmLo1"), float(lo[4]), float(lo[5]));
+      glUniform2f(loc("ptmHi1"), float(hi[4]), float(hi[5]));
+    }
     const glm::dvec3 L1 = torusLight(0), L2 = torusLight(1);
     glUniform3f(loc("light1"), float(L1.x), float(L1.y), float(L1.z));
     glUniform3f(loc("light2"), float(L2.x), float(L2.y), float(L2.z));
@@ -263,7 +401,7 @@ inline ts::Image torusPass(ts::Renderer& r, const TorusPass& p) {
     glUniform1f(loc("azShift"), float(p.azShiftDeg * kPi / 180));
     glUniform1f(loc("ambient"), kAmbient);
     glUniform1f(loc("i1"), kTorusIntensity[0]), glUniform1f(loc("i2"), kTorusIntensity[1]);
-    glUniform1i(loc("outputKind"), int(p.output)), glUniform1i(loc("horizon"), p.horizon ? 1 : 0);
+    glUniform1i(loc("outputKind"), int(p.output)), glUniform1i(loc("horizon"), p.horizon);
     glBegin(GL_QUADS);
     for (int j = 0; j < kTorusNv; ++j)
       for (int i = 0; i < kTorusNu; ++i) {
@@ -277,7 +415,7 @@ inline ts::Image torusPass(ts::Renderer& r, const TorusPass& p) {
       }
     glEnd();
     glUseProgram(0);
-    glDeleteTextures(3, tex);
+    glDeleteTextures(5, tex);
   });
 }
 }  // namespace bumplim

@@ -121,7 +121,9 @@ inline void measureShadows(ts::Renderer& r, double az, double elev, ts::Measurem
 inline void measureTorus(ts::Renderer& r, ts::Measurements& ms, Pictures& pic) {
   auto put = [&](const std::string& n, double v, const std::string& m) { ms.push_back({n, v, m}); };
   const TorusField field;
-  const std::vector<ts::Image> maps = torusHorizonMaps(field), smoothMaps = torusHorizonMaps(field, 0);
+  const HorizonAngles angles = torusHorizonAngles(field);
+  const std::vector<ts::Image> maps = torusHorizonMaps(angles), smoothMaps = torusHorizonMaps(field, 0);
+  const Ptm ptm = fitPtm(field, angles);
   ts::measureProgress(0.3);
   TorusPass p;
   p.maps = &maps;
@@ -200,12 +202,37 @@ inline void measureTorus(ts::Renderer& r, ts::Measurements& ms, Pictures& pic) {
   TorusPass shade;
   shade.maps = &maps;
   noneCalls = recorded(r, [&] { shadeNone = torusPass(r, shade); });
-  shade.horizon = true;
+  shade.horizon = 1;
   horizonCalls = recorded(r, [&] { shadeHorizon = torusPass(r, shade); });
+  ts::Image shadePtm;
+  shade.horizon = 2, shade.ptm = &ptm;
+  const ts::gl::CallList ptmCalls = recorded(r, [&] { shadePtm = torusPass(r, shade); });
+  // Each picture against the traced one, over the torus's pixels.
+  auto rms = [&](const ts::Image& img) {
+    double se = 0;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        if (pic.st[size_t(y) * n + size_t(x)].x >= 0) {
+          const double d = double(img.at(x, y).r) - double(refPic.at(x, y).r);
+          se += d * d;
+        }
+    return std::sqrt(se / double(std::max(covered, 1L)));
+  };
+  put("bump_shadow_torus_rms_levels[none]", rms(shadeNone),
+      "RMS (8-bit levels) of plain bump mapping's picture against the traced shadows' over the torus's pixels");
+  put("bump_shadow_torus_rms_levels[horizon]", rms(shadeHorizon), "the same for horizon mapping");
+  put("bump_shadow_torus_rms_levels[ptm]", rms(shadePtm),
+      "the same for the polynomial texture map (6 coefficients a texel, fitted to the horizon-shadowed shading)");
+  put("bump_ptm_fit_rms_levels", 255 * ptm.fitRms,
+      "RMS (8-bit levels) of the PTM's biquadratic against the self-shadowed diffuse term it was fitted to, over "
+      "every texel's light directions");
+  put("bump_ptm_fit_rms_levels[unshadowed]", 255 * fitPtm(field, angles, false).fitRms,
+      "the same for a PTM fitted to the diffuse term without its shadows: the biquadratic's own error");
   pic.shown = {glPicture(shadeNone, "plain bump mapping on the torus", noneCalls),
                glPicture(shadeHorizon, "horizon mapping on the torus", horizonCalls),
                shownPicture(refPic, "the displaced torus's traced shadows"),
-               shownPicture(diff, "horizon mapping against the traced shadows")};
+               shownPicture(diff, "horizon mapping against the traced shadows"),
+               glPicture(shadePtm, "a polynomial texture map on the torus", ptmCalls)};
 }
 
 // ---- view methods --------------------------------------------------------------------------------------------------
