@@ -195,28 +195,27 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
   } else if (view_ == 3) {
     pictureRow(f,
                {{&s[0], "plain bump mapping", M("{bump_self_shadow_torus_px[none]|%.0f} shadowed px lit")},
-                {&s[1], "horizon mapping, " + G("directions of the horizon map", kDirections) + " azimuths",
+                {&s[1], "horizon map, " + G("directions of the horizon map", kDirections) + " azimuths",
                  M("{bump_self_shadow_torus_px[horizon]|%.0f} shadowed px lit")},
-                {&s[2], "displaced torus, traced (CPU)", M("{bump_torus_shadowed_px|%.0f} px shadowed")},
-                {&s[3], "horizon map against the trace",
+                {&s[2], "traced (CPU)", M("{bump_torus_shadowed_px|%.0f} px shadowed")},
+                {&s[3], "horizon map vs trace",
                  M("{bump_self_shadow_torus_px[horizon]|%.0f} red, {bump_self_shadow_torus_px[horizon_extra]|%.0f} "
                    "blue")},
                 {&s[4], "polynomial texture map", M("RMS {bump_shadow_torus_rms_levels[ptm]|%.1f} levels")}},
-               {{kMissed, "traced shadow, lit by horizon mapping (either light)"},
-                {kExtra, "darkened by horizon mapping, lit in the trace"},
+               {{kMissed, "shadowed in the trace, lit by the horizon map"},
+                {kExtra, "darkened by the horizon map, lit in the trace"},
                 {kLitBoth, "lit in both"},
-                {kDarkBoth, "dark in both (shadowed, or facing away)"}},
-               {M("Of {bump_torus_shadowed_px|%.0f} torus pixels the displaced surface shadows from a light, plain "
-                  "bump mapping lights {bump_self_shadow_torus_px[none]|%.0f} from it (their bumped normal faces "
-                  "it), horizon mapping {bump_self_shadow_torus_px[horizon]|%.0f} (and darkens "
-                  "{bump_self_shadow_torus_px[horizon_extra]|%.0f} more)."),
-                M("Controls: the horizon looked up a quarter turn from the light lights "
-                  "{bump_self_shadow_torus_px[horizon_wrong_azimuth]|%.0f}; a horizon map of the smooth torus (no "
-                  "bumps) {bump_self_shadow_torus_px[horizon_smooth]|%.0f}."),
-                M("RMS against the traced picture: plain {bump_shadow_torus_rms_levels[none]|%.1f}, horizon "
+                {kDarkBoth, "dark in both"}},
+               {M("Of {bump_torus_shadowed_px|%.0f} torus pixels the displaced torus shadows, plain bump mapping "
+                  "lights {bump_self_shadow_torus_px[none]|%.0f} from the shadowing light, the horizon map "
+                  "{bump_self_shadow_torus_px[horizon]|%.0f} (and darkens {bump_self_shadow_torus_px[horizon_extra]|%.0f} "
+                  "more)."),
+                M("Controls: the horizon a quarter turn off the light {bump_self_shadow_torus_px[horizon_wrong_azimuth]|"
+                  "%.0f}; the smooth torus's horizon {bump_self_shadow_torus_px[horizon_smooth]|%.0f}."),
+                M("RMS against the trace: plain {bump_shadow_torus_rms_levels[none]|%.1f}, horizon "
                   "{bump_shadow_torus_rms_levels[horizon]|%.1f}, PTM {bump_shadow_torus_rms_levels[ptm]|%.1f} levels; "
-                  "the PTM's biquadratic is {bump_ptm_fit_rms_levels|%.1f} levels RMS off the shading it was fitted "
-                  "to ({bump_ptm_fit_rms_levels[unshadowed]|%.1f} without the shadows).")});
+                  "the PTM's fit {bump_ptm_fit_rms_levels|%.1f} ({bump_ptm_fit_rms_levels[unshadowed]|%.1f} "
+                  "unshadowed).")});
   } else if (view_ == 1) {
     L::Text table = "orthogonal-axes method's normal error against shear: ";
     for (double th : kThetas) {
