@@ -208,10 +208,11 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
                 {kDarkBoth, "dark in both"}},
                {M("Of {bump_torus_shadowed_px|%.0f} torus pixels the displaced torus shadows, plain bump mapping "
                   "lights {bump_self_shadow_torus_px[none]|%.0f} from the shadowing light, the horizon map "
-                  "{bump_self_shadow_torus_px[horizon]|%.0f} (and darkens {bump_self_shadow_torus_px[horizon_extra]|%.0f} "
-                  "more)."),
-                M("Controls: the horizon a quarter turn off the light {bump_self_shadow_torus_px[horizon_wrong_azimuth]|"
-                  "%.0f}; the smooth torus's horizon {bump_self_shadow_torus_px[horizon_smooth]|%.0f}."),
+                  "{bump_self_shadow_torus_px[horizon]|%.0f} (and darkens "
+                  "{bump_self_shadow_torus_px[horizon_extra]|%.0f} more)."),
+                M("Controls: the horizon a quarter turn off the light "
+                  "{bump_self_shadow_torus_px[horizon_wrong_azimuth]|%.0f}; the smooth torus's horizon "
+                  "{bump_self_shadow_torus_px[horizon_smooth]|%.0f}."),
                 M("RMS against the trace: plain {bump_shadow_torus_rms_levels[none]|%.1f}, horizon "
                   "{bump_shadow_torus_rms_levels[horizon]|%.1f}, PTM {bump_shadow_torus_rms_levels[ptm]|%.1f} levels; "
                   "the PTM's fit {bump_ptm_fit_rms_levels|%.1f} ({bump_ptm_fit_rms_levels[unshadowed]|%.1f} "

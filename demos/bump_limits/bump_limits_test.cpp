@@ -314,8 +314,8 @@ double torusAboveHorizon(const std::vector<ts::Image>& maps, double s, double t,
 }
 // The horizon picture against the equation with the horizon map's lookup, pixels within half a degree of their
 // horizon left out (an 8-bit angle step is 0.7 degrees; GL_LINEAR's weights move it a little more).
-Fit fitTorusHorizon(const Pictures& p, const ts::Image& img, const glm::dvec3 L[2],
-                    const std::vector<ts::Image>& maps, double shiftDeg) {
+Fit fitTorusHorizon(const Pictures& p, const ts::Image& img, const glm::dvec3 L[2], const std::vector<ts::Image>& maps,
+                    double shiftDeg) {
   const TorusField f;
   Fit fit;
   const int n = kTorusPixels;
@@ -429,4 +429,3 @@ TEST(BumpLimits, TorusPicturesAreTheEquationAndHorizonMappingLeavesFewShadowsLit
   EXPECT_GT(torusHorizonAngle(f, 0, 0.5, 0, 0), 0.1);  // control: the same direction seen from the inner side
 }
 }  // namespace
-

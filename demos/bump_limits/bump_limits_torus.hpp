@@ -12,7 +12,8 @@
 // and inner equators differ) and for kDirections azimuths a_k in the smooth frame (T, B), the larger of the
 // near horizon, the largest elevation above the tangent plane of the displaced surface seen along the path
 // (s, t) + sigma (cos a_k / |Q_s|, sin a_k / |Q_t|), and the far one, the lowest elevation at which a ray leaves
-// the smooth torus the bumps ride on (the ring across the hole), in [-90, 90] degrees, 8 bits.  The shader (GL): Blinn's perturbed normal
+// the smooth torus the bumps ride on (the ring across the hole), in [-90, 90] degrees, 8 bits.
+// The shader (GL): Blinn's perturbed normal
 //   n' = normalize(N - (P_s / |Q_s|) T - (P_t / |Q_t|) B)        (P_s, P_t central differences of the heights)
 //   c  = A + sum_i I_i max(n' . L_i, 0) lit_i,  lit_i = [elevation(L_i) > mix(H_k0, H_k0+1, frac)]  (horizon)
 // with the light's azimuth and elevation taken in (T, B, N) per pixel, for both lights.
@@ -28,14 +29,14 @@
 
 namespace bumplim {
 constexpr double kTorusR = 1.0, kTorusr = 0.4;
-constexpr int kRepS = 8, kRepT = 2;        // the height tile's repeats around the ring and around the tube
-constexpr double kHeightWorld = 0.08;      // world units of the tallest bump (h = 1)
-constexpr double kRayStep = 0.004;         // world units a step of the ray march inside the shell
-constexpr double kHorizonFirst = 0.004;    // the horizon path's first step, world units
-constexpr double kHorizonGrowth = 0.08;    // each next step kHorizonGrowth x the distance so far (at least the first)
-constexpr double kHorizonReachWorld = 0.8; // how far along the surface the horizon path looks
-constexpr int kTorusPixels = 256;          // the pictures, pixels a side
-constexpr double kTorusTiltDeg = 30;       // the eye above the torus's plane, as bump_mapping's default
+constexpr int kRepS = 8, kRepT = 2;         // the height tile's repeats around the ring and around the tube
+constexpr double kHeightWorld = 0.08;       // world units of the tallest bump (h = 1)
+constexpr double kRayStep = 0.004;          // world units a step of the ray march inside the shell
+constexpr double kHorizonFirst = 0.004;     // the horizon path's first step, world units
+constexpr double kHorizonGrowth = 0.08;     // each next step kHorizonGrowth x the distance so far (at least the first)
+constexpr double kHorizonReachWorld = 0.8;  // how far along the surface the horizon path looks
+constexpr int kTorusPixels = 256;           // the pictures, pixels a side
+constexpr double kTorusTiltDeg = 30;        // the eye above the torus's plane, as bump_mapping's default
 constexpr float kTorusIntensity[2] = {0.55f, 0.35f};
 // The lights of bump_mapping (azimuth, elevation in the eye's frame, degrees): light 1 up left, light 2 right.
 constexpr double kTorusLights[2][2] = {{-45, 40}, {60, -10}};
@@ -259,16 +260,16 @@ inline Ptm fitPtm(const TorusField& f, const HorizonAngles& h, bool shadows = tr
   p.fitRms = std::sqrt(se / double(samples));
   for (int c = 0; c < 6; ++c) {
     p.lo[c] = 1e9, p.hi[c] = -1e9;
-    for (size_t t = 0; t < p.a.size() / 6; ++t) p.lo[c] = std::min(p.lo[c], p.a[t * 6 + size_t(c)]),
-                                                 p.hi[c] = std::max(p.hi[c], p.a[t * 6 + size_t(c)]);
+    for (size_t t = 0; t < p.a.size() / 6; ++t)
+      p.lo[c] = std::min(p.lo[c], p.a[t * 6 + size_t(c)]), p.hi[c] = std::max(p.hi[c], p.a[t * 6 + size_t(c)]);
     if (p.hi[c] <= p.lo[c]) p.hi[c] = p.lo[c] + 1;
   }
   p.maps.assign(2, ts::Image(w, rows));
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < w; ++i) {
       uint8_t b[8] = {0, 0, 0, 0, 0, 0, 0, 255};
-      for (int c = 0; c < 6; ++c) b[c] = u8((p.a[(size_t(j) * w + size_t(i)) * 6 + size_t(c)] - p.lo[c]) /
-                                            (p.hi[c] - p.lo[c]));
+      for (int c = 0; c < 6; ++c)
+        b[c] = u8((p.a[(size_t(j) * w + size_t(i)) * 6 + size_t(c)] - p.lo[c]) / (p.hi[c] - p.lo[c]));
       p.maps[0].set(i, j, {b[0], b[1], b[2], b[3]});
       p.maps[1].set(i, j, {b[4], b[5], 0, 255});
     }
@@ -342,7 +343,7 @@ void main() {
 
 struct TorusPass {
   TorusOutput output = TorusOutput::kShade;
-  int horizon = 0;        // 0 plain bump mapping, 1 the horizon map, 2 the PTM
+  int horizon = 0;  // 0 plain bump mapping, 1 the horizon map, 2 the PTM
   const Ptm* ptm = nullptr;
   double azShiftDeg = 0;  // a control: the horizon looked up this far round from the light
   const std::vector<ts::Image>* maps = nullptr;
@@ -360,8 +361,8 @@ inline glm::dvec3 torusVertexPixel(double s, double t) {
 
 inline ts::Image torusPass(ts::Renderer& r, const TorusPass& p) {
   static const std::string fs = torusFragmentShader();
-  const GLuint prog = r.program("bump_limits_torus", {"demos/bump_limits/bump_limits_torus.hpp", kVertexShader,
-                                                      fs.c_str()});
+  const GLuint prog = r.program("bump_limits_torus",
+                                {"demos/bump_limits/bump_limits_torus.hpp", kVertexShader, fs.c_str()});
   static const std::vector<ts::Image> none(2, ts::Image(1, 1));
   const std::vector<ts::Image>& maps = p.maps ? *p.maps : none;
   const ts::Image heights = heightImage();

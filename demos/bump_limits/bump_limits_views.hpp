@@ -176,8 +176,11 @@ inline void measureTorus(ts::Renderer& r, ts::Measurements& ms, Pictures& pic) {
       }
       shadowed += anyShadow, none += anyNone, missed += anyMissed, extra += anyExtra;
       wrongMissed += anyWrong, smoothMissed += anySmooth;
-      diff.set(x, y, anyMissed ? rgba(kMissed) : anyExtra ? rgba(kExtra) : anyLitBoth ? rgba(kLitBoth)
-                                                                                       : rgba(kDarkBoth));
+      diff.set(x, y,
+               anyMissed    ? rgba(kMissed)
+               : anyExtra   ? rgba(kExtra)
+               : anyLitBoth ? rgba(kLitBoth)
+                            : rgba(kDarkBoth));
       const uint8_t g = u8(std::min(grey, 1.0));
       refPic.set(x, y, {g, g, g, 255});
     }

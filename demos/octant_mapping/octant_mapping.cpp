@@ -197,8 +197,9 @@ class OctantMapping final : public ts::Scene {
     ts::Frame f = frames::build(s, width, std::max(1, int(float(height) - band)), measured);
     f.height = height;
     L::caption(f, {8, float(height) - band, float(width) - 8, float(height) - 4},
-               "Pattern: " + picture_.path() + " (the octant and the pattern panels).  The fractions, counts and "
-               "rasters are of Rogers' grid, which measure() keeps: they count its line texels.",
+               "Pattern: " + picture_.path() +
+                   " (the octant and the pattern panels).  The fractions, counts and "
+                   "rasters are of Rogers' grid, which measure() keeps: they count its line texels.",
                L::kAmber, 1);
     return f;
   }
