@@ -125,22 +125,15 @@ ts::Frame TextureCosts::build(int width, int height, const ts::Measurements& mea
     bool listed;  // its calls in the listing (the switches' 2,048 draws are not)
   };
   const std::vector<Shown> shown = {
-      {K::kSmooth, "1. smooth (hyperbolic)", M("{costs_interp_off_share[smooth_vs_hyperbolic]|%.3f} off its equation"),
-       true},
-      {K::kNoPerspective, "1. noperspective (screen-linear)",
-       M("{costs_interp_off_share[noperspective_vs_linear]|%.3f} off its own, "
-         "{costs_interp_off_share[noperspective_vs_hyperbolic]|%.2f} off the floor"),
-       true},
-      {K::kBumpQuad, "2. bump-mapped quad", M("{costs_detail_triangles[bump_quad]} triangles"), true},
-      {K::kGrid, "2. displaced grid",
-       M("{costs_detail_triangles[displaced_grid]} triangles; {costs_detail_off_share[bump_vs_grid]|%.3f} differ"),
-       true},
-      {K::kSorted, "3. sorted by texture", M("{costs_binds[sorted]} binds, {costs_draws[sorted]} draws"), false},
-      {K::kUnsorted, "3. unsorted",
-       M("{costs_binds[unsorted]} binds; {costs_switch_off_px[unsorted_vs_sorted]} px differ"), false},
-      {K::kMipmapped, "4. mipmapped, 16x minified", M("RMS {costs_minify_rms[mipmapped]|%.1f} levels"), true},
-      {K::kUnmipmapped, "4. GL_LINEAR, 16x minified", M("RMS {costs_minify_rms[unmipmapped]|%.1f} levels (aliasing)"),
-       true}};
+      {K::kSmooth, "1 smooth", M("{costs_interp_off_share[smooth_vs_hyperbolic]|%.3f} off its equation"), true},
+      {K::kNoPerspective, "1 noperspective",
+       M("{costs_interp_off_share[noperspective_vs_hyperbolic]|%.2f} off the floor"), true},
+      {K::kBumpQuad, "2 bump quad", M("{costs_detail_triangles[bump_quad]} triangles"), true},
+      {K::kGrid, "2 displaced grid", M("{costs_detail_triangles[displaced_grid]} triangles"), true},
+      {K::kSorted, "3 sorted", M("{costs_binds[sorted]} binds"), false},
+      {K::kUnsorted, "3 unsorted", M("{costs_binds[unsorted]} binds"), false},
+      {K::kMipmapped, "4 mipmapped", M("RMS {costs_minify_rms[mipmapped]|%.1f} levels"), true},
+      {K::kUnmipmapped, "4 GL_LINEAR", M("RMS {costs_minify_rms[unmipmapped]|%.1f} (aliasing)"), true}};
   // One claim: its two pictures (the claims' pictures come in pairs, in order).
   std::vector<Shown> picked;
   for (size_t k = 0; k < shown.size(); ++k)
@@ -148,12 +141,13 @@ ts::Frame TextureCosts::build(int width, int height, const ts::Measurements& mea
   std::vector<L::Captioned> captions;
   for (const Shown& s : picked) captions.push_back({s.title, s.note});
   const std::vector<L::Text> notes = {
-      M("Batched, one draw a texture: {costs_binds[sorted_batched]} binds, {costs_draws[sorted_batched]} draws, "
-        "{costs_switch_off_px[batched_vs_sorted]} px differ.  The mipmapped mean is "
+      M("1: the screen-linear floor is {costs_interp_off_share[noperspective_vs_linear]|%.3f} off its own equation.  "
+        "2: {costs_detail_off_share[bump_vs_grid]|%.3f} of the pixels differ.  3: {costs_draws[sorted]} draws either "
+        "way, {costs_switch_off_px[unsorted_vs_sorted]} px differ; one draw a texture: {costs_draws[sorted_batched]} "
+        "draws, {costs_switch_off_px[batched_vs_sorted]} px differ.  4: the mipmapped mean is "
         "{costs_minify_mean_error[mipmapped]|%.1f} levels off the texture's average."),
-      "Off: a channel more than 16 levels from the equation's colour.  What each frame costs is not in this picture "
-      "(it differs between machines): a window times every frame on its own GL and lists cost_ms_per_frame and "
-      "cost_timed_ratio in its panel; the README gives the benchmark's."};
+      "Off: a channel over 16 levels from the equation.  Times differ by machine: the window's panel and the README "
+      "give them, never this picture."};
   L::pictureFigure(
       f, captions,
       [&](size_t k, const ts::Rect& r) {
@@ -164,7 +158,7 @@ ts::Frame TextureCosts::build(int width, int height, const ts::Measurements& mea
         if (picked[k].listed) t.renderedBy = run.calls;
         f.panels.push_back(L::picturePanel(f, std::string("picture_") + K::kPictureKeys[picked[k].pic], r, t));
       },
-      {}, notes, {0, 1.0f, 1, 1, 10, 2, 150}, 2, ts::Align::Left);
+      {}, notes, {0, 1.0f, 1, 1, 10, 2, 150}, 1, ts::Align::Left);
   return f;
 }
 }  // namespace
