@@ -24,6 +24,7 @@
 #include "common/core/layout.hpp"
 #include "common/core/scene.hpp"
 #include "common/core/textures.hpp"
+#include "common/gl/gl_listing.hpp"
 #include "parallax_aniso_math.hpp"
 #include "parallax_aniso_ranking_gl.hpp"
 
@@ -101,6 +102,7 @@ struct Ranking {
   Setup setup;
   ts::Image reference, referenceDepth;
   ts::Image images[kMethods], errors[kMethods];
+  ts::gl::CallList calls[kMethods];  // the GL calls that drew each picture (measureRanking's `record`)
   double psnr[kMethods] = {}, ssim[kMethods] = {};
   int rank[kMethods] = {};  // 1 = closest (highest PSNR)
   size_t gridCells = 0;
@@ -121,8 +123,9 @@ inline void rankByPsnr(Ranking& k) {
   }
 }
 
-// Every method drawn by GL and held against the traced reference.
-inline Ranking measureRanking(ts::Renderer& r, const Relief& rel, const Setup& s) {
+// Every method drawn by GL and held against the traced reference.  `record`: each picture drawn with its GL
+// calls recorded, textures and programs made anew so that the listing shows how (the figure's listing).
+inline Ranking measureRanking(ts::Renderer& r, const Relief& rel, const Setup& s, bool record = false) {
   Ranking k;
   k.setup = s;
   RankGL& gl = r.attachment<RankGL>();
@@ -130,7 +133,15 @@ inline Ranking measureRanking(ts::Renderer& r, const Relief& rel, const Setup& s
   k.gridCells = grid.cells();
   k.gridColumns = grid.columns;
   k.gridRows = grid.rows;
-  for (int m = 0; m < kMethods; ++m) k.images[m] = gl.render(s.cam, rel, s.light, m, &grid);
+  for (int m = 0; m < kMethods; ++m) {
+    if (!record) {
+      k.images[m] = gl.render(s.cam, rel, s.light, m, &grid);
+      continue;
+    }
+    r.attachment<ReliefGL>().release();
+    gl.release();
+    k.calls[m] = ts::recordRender(r, [&] { k.images[m] = gl.render(s.cam, rel, s.light, m, &grid); });
+  }
   k.reference = traceShaded(s, rel, &k.referenceDepth);
   for (int m = 0; m < kMethods; ++m) {
     k.psnr[m] = psnr(k.images[m], k.reference, nullptr);
@@ -171,6 +182,7 @@ inline RankShown rankShownOf(std::shared_ptr<const Ranking> k) {
   s.referenceDepth = tex(k->referenceDepth, "rank_reference_depth");
   for (int m = 0; m < kMethods; ++m) {
     s.images[m] = tex(k->images[m], std::string("rank_") + kMethodKeys[m]);
+    s.images[m].renderedBy = k->calls[m];
     s.errors[m] = tex(k->errors[m], std::string("rank_error_") + kMethodKeys[m]);
   }
   s.ranking = std::move(k);

@@ -208,7 +208,9 @@ void main() {
 class RankGL final : public ts::Renderer::Attachment {
  public:
   explicit RankGL(ts::Renderer& r) : r_(r) {}
-  ~RankGL() override {
+  ~RankGL() override { release(); }
+  // Drops the normal map's GL texture: the next pass uploads it again (so that a recorded pass shows how).
+  void release() {
     if (!normal_.name.empty()) r_.forgetTexture(normal_);
   }
   RankGL(const RankGL&) = delete;
