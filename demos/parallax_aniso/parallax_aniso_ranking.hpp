@@ -83,12 +83,13 @@ inline ts::Image traceShaded(const Setup& s, const Relief& r, ts::Image* depth =
 // or more (the demo's band-error colours, here over the whole frame).
 inline const glm::vec4 kErrNone{30 / 255.0f, 20 / 255.0f, 60 / 255.0f, 1}, kErr32{220 / 255.0f, 40 / 255.0f, 40 / 255.0f, 1},
     kErr64{1.0f, 240 / 255.0f, 80 / 255.0f, 1};
+constexpr double kErrorScaleTop = 64.0;  // levels of 255: yellow
 inline ts::Image errorMap(const ts::Image& img, const ts::Image& ref) {
   ts::Image out(img.width, img.height);
   for (size_t p = 0; p < size_t(img.width) * size_t(img.height); ++p) {
     double e = 0;
     for (int c = 0; c < 3; ++c) e += std::abs(double(img.pixels[p * 4 + size_t(c)]) - ref.pixels[p * 4 + size_t(c)]);
-    double v = std::clamp(e / 3.0 / 64.0, 0.0, 1.0);
+    double v = std::clamp(e / 3.0 / kErrorScaleTop, 0.0, 1.0);
     glm::dvec3 col = v < 0.5 ? glm::mix(glm::dvec3(kErrNone) * 255.0, glm::dvec3(kErr32) * 255.0, v * 2)
                              : glm::mix(glm::dvec3(kErr32) * 255.0, glm::dvec3(kErr64) * 255.0, v * 2 - 1);
     for (int c = 0; c < 3; ++c) out.pixels[p * 4 + size_t(c)] = u8(col[c]);
@@ -248,10 +249,12 @@ inline void buildRanking(ts::Frame& f, const ts::Measurements& mm, const RankSho
   L::Text perPixel = L::Text(std::string("Among the per-pixel methods (no new geometry) the closest is ") +
                              kMethodLabels[texBest] + " (") +
                      L::measured(mm, psnrName(texBest), "%.1f") + L::Text(" dB).");
-  std::vector<L::Text> notes = {L::Text(header), ranking, verdict, perPixel};
-  const std::vector<ts::LegendEntry> legend = {{kErrNone, "|error| against the reference 0"},
-                                               {kErr32, "32 levels"},
-                                               {kErr64, "64 levels or more (channels' mean)"},
+  L::Text scale = L::Text("|error|: the channels' mean against the reference; the scale's top is ") +
+                  L::given("error_scale_top_levels", kErrorScaleTop, "%.0f") + L::Text(" levels.");
+  std::vector<L::Text> notes = {L::Text(header) + L::Text(".  ") + scale, ranking, verdict, perPixel};
+  const std::vector<ts::LegendEntry> legend = {{kErrNone, "no error against the reference"},
+                                               {kErr32, "|error| half the scale"},
+                                               {kErr64, "|error| the scale's top or more"},
                                                {{1, 1, 1, 1}, "hit on the top of the relief"},
                                                {{0, 0, 0, 1}, "on its floor (depth, grey between)"}};
   L::pictureFigure(
