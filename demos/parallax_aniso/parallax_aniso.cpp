@@ -131,8 +131,7 @@ class ParallaxAniso final : public ts::Scene {
     o.addInt("rays", &rays_, 2, 32, "reference rays per side of the kernel square (n x n; the figures use 12)");
     o.addInt("time", &timeRuns_, 0, 50,
              "time each mode over N frames (median, into the CSV's ms_per_frame); 0 = do not time (the figures use 3)");
-    o.addInt("grid", &gridTexels_, 1, 64, "ranking view: texels between the displacement grid's vertices", 'e', 'E',
-             1);
+    o.addInt("grid", &gridTexels_, 1, 64, "ranking view: texels between the displacement grid's vertices", 'e', 'E', 1);
     o.addInt("seed", &seed_, 0, 1000000, "seed of the reference's jitter");
     o.addBool("accel", &accel_, "max-height pyramid skip in the visibility trace (same result, fewer lookups)", 'x');
     o.addEnum("gradients", &gradients_, {"x1", "x4"},
@@ -261,8 +260,7 @@ class ParallaxAniso final : public ts::Scene {
     if (view_ == kRanking) {
       if (const rank::RankShown* shown = measured.detailAs<rank::RankShown>())
         rank::buildRanking(f, measured, *shown, views().header() + ", one directional light (Lambert)");
-      else
-        views().buildWaiting(f);
+      else views().buildWaiting(f);
       return f;
     }
     const Shown* shown = measured.detailAs<Shown>();

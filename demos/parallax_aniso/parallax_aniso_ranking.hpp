@@ -81,8 +81,8 @@ inline ts::Image traceShaded(const Setup& s, const Relief& r, ts::Image* depth =
 
 // |error| against the reference, the channels' mean x4 on a heat scale: black 0, red 32, yellow 64 levels
 // or more (the demo's band-error colours, here over the whole frame).
-inline const glm::vec4 kErrNone{30 / 255.0f, 20 / 255.0f, 60 / 255.0f, 1}, kErr32{220 / 255.0f, 40 / 255.0f, 40 / 255.0f, 1},
-    kErr64{1.0f, 240 / 255.0f, 80 / 255.0f, 1};
+inline const glm::vec4 kErrNone{30 / 255.0f, 20 / 255.0f, 60 / 255.0f, 1},
+    kErr32{220 / 255.0f, 40 / 255.0f, 40 / 255.0f, 1}, kErr64{1.0f, 240 / 255.0f, 80 / 255.0f, 1};
 constexpr double kErrorScaleTop = 64.0;  // levels of 255: yellow
 inline ts::Image errorMap(const ts::Image& img, const ts::Image& ref) {
   ts::Image out(img.width, img.height);
@@ -201,8 +201,7 @@ inline void buildRanking(ts::Frame& f, const ts::Measurements& mm, const RankSho
   };
   std::vector<Pic> pics;
   pics.push_back({&shown.reference,
-                  {L::Text("reference, traced"),
-                   L::measuredText(mm, "{relief_rank_rays|%.0f} rays per pixel, CPU")}});
+                  {L::Text("reference, traced"), L::measuredText(mm, "{relief_rank_rays|%.0f} rays per pixel, CPU")}});
   for (int m = 0; m < kMethods; ++m) {
     L::Text title = L::Text(std::string(kMethodLabels[m]) + "  #") + L::measured(mm, rankName(m), "%.0f");
     L::Text note = L::measured(mm, psnrName(m), "%.1f") + L::Text(" dB, SSIM ") + L::measured(mm, ssimName(m), "%.3f");
@@ -212,12 +211,11 @@ inline void buildRanking(ts::Frame& f, const ts::Measurements& mm, const RankSho
   for (int m = 0; m < kMethods; ++m)
     pics.push_back({&shown.errors[m],
                     {L::Text(std::string("|error| ") + kMethodKeys[m]),
-                     m == kDisplacement
-                         ? L::measuredText(mm, "grid every {relief_rank_grid_texels|%.0f} texels, "
-                                               "{relief_rank_grid_triangles|%.0f} triangles")
-                         : L::Text(std::string(m == kBump || m == kNormalMap ? "unshifted coordinate"
-                                                                             : m == kParallax ? "one offset step"
-                                                                                              : "the demo's march"))}});
+                     m == kDisplacement ? L::measuredText(mm, "grid every {relief_rank_grid_texels|%.0f} texels, "
+                                                              "{relief_rank_grid_triangles|%.0f} triangles")
+                                        : L::Text(std::string(m == kBump || m == kNormalMap ? "unshifted coordinate"
+                                                              : m == kParallax              ? "one offset step"
+                                                                                            : "the demo's march"))}});
   std::vector<L::Captioned> captions;
   for (const Pic& p : pics) captions.push_back(p.caption);
 
@@ -229,23 +227,23 @@ inline void buildRanking(ts::Frame& f, const ts::Measurements& mm, const RankSho
   L::Text ranking("Ranked by PSNR: ");
   for (int i = 0; i < kMethods; ++i) {
     int m = order[size_t(i)];
-    ranking = ranking + L::Text(std::string(i ? ",  " : "") + kMethodKeys[m] + " ") + L::measured(mm, psnrName(m), "%.1f");
+    ranking = ranking + L::Text(std::string(i ? ",  " : "") + kMethodKeys[m] + " ") +
+              L::measured(mm, psnrName(m), "%.1f");
   }
   ranking = ranking + L::Text(" dB.");
-  L::Text verdict = k.claimHolds()
-                        ? L::Text(std::string("Seed 003's claim holds as measured: ") + kMethodLabels[bp] + " is closest (") +
-                              L::measured(mm, psnrName(bp), "%.1f") + L::Text(" dB).")
-                        : L::Text(std::string("Seed 003's claim does not hold as measured: ") + kMethodLabels[best] +
-                                  " (") +
-                              L::measured(mm, psnrName(best), "%.1f") +
-                              L::Text(std::string(" dB) is closer than the best parallax method, ") +
-                                      kMethodLabels[bp] + " (") +
-                              L::measured(mm, psnrName(bp), "%.1f") + L::Text(" dB, rank ") +
-                              L::measured(mm, rankName(bp), "%.0f") + L::Text(").");
+  L::Text verdict =
+      k.claimHolds()
+          ? L::Text(std::string("Seed 003's claim holds as measured: ") + kMethodLabels[bp] + " is closest (") +
+                L::measured(mm, psnrName(bp), "%.1f") + L::Text(" dB).")
+          : L::Text(std::string("Seed 003's claim does not hold as measured: ") + kMethodLabels[best] + " (") +
+                L::measured(mm, psnrName(best), "%.1f") +
+                L::Text(std::string(" dB) is closer than the best parallax method, ") + kMethodLabels[bp] + " (") +
+                L::measured(mm, psnrName(bp), "%.1f") + L::Text(" dB, rank ") + L::measured(mm, rankName(bp), "%.0f") +
+                L::Text(").");
   // Among the texture-space methods (no new geometry), is a parallax method closer than bump and normal?
   const int texBest = k.psnr[bp] >= std::max(k.psnr[kBump], k.psnr[kNormalMap]) ? bp
                       : k.psnr[kBump] >= k.psnr[kNormalMap]                     ? kBump
-                                                                               : kNormalMap;
+                                                                                : kNormalMap;
   L::Text perPixel = L::Text(std::string("Among the per-pixel methods (no new geometry) the closest is ") +
                              kMethodLabels[texBest] + " (") +
                      L::measured(mm, psnrName(texBest), "%.1f") + L::Text(" dB).");
@@ -262,6 +260,7 @@ inline void buildRanking(ts::Frame& f, const ts::Measurements& mm, const RankSho
       [&](size_t i, const ts::Rect& r) {
         f.panels.push_back(L::picturePanel(f, "rank_picture_" + std::to_string(i), r, *pics[i].tex));
       },
-      legend, notes, {0, float(k.reference.width) / float(k.reference.height), 1, 1, 10, 2, 150}, 4);
+      // Captions at scale 1 (twelve cells share the frame), six to a row where the width allows.
+      legend, notes, {0, float(k.reference.width) / float(k.reference.height), 1, 1, 10, 1, 110}, 4);
 }
 }  // namespace pax::rank

@@ -34,8 +34,8 @@ namespace pax::rank {
 constexpr const char* kRankSourceFile = "demos/parallax_aniso/parallax_aniso_ranking_gl.hpp";
 enum Method { kBump, kNormalMap, kParallax, kPom, kDisplacement, kMethods };
 inline const char* const kMethodKeys[] = {"bump", "normal", "parallax", "pom", "displacement"};
-inline const char* const kMethodLabels[] = {"bump (Blinn)", "normal mapping", "parallax (1 step)",
-                                            "parallax occlusion", "displacement"};
+inline const char* const kMethodLabels[] = {"bump (Blinn)", "normal mapping", "parallax (1 step)", "parallax occlusion",
+                                            "displacement"};
 constexpr double kAmbient = 0.2;  // the light's ambient share: walls turned from the light stay readable
 
 // The light: a direction toward it (world, unit), and its ambient share.
@@ -70,8 +70,8 @@ inline std::vector<ts::Image> normalMap(const Relief& r, double heightScale, dou
 // four corner rays at both depths, a texel's margin.  (u0, v0, u1, v1).
 inline glm::dvec4 visibleBox(const Camera& cam) {
   glm::dvec4 b(1e30, 1e30, -1e30, -1e30);
-  for (glm::dvec2 p : {glm::dvec2(0, 0), glm::dvec2(cam.width, 0), glm::dvec2(0, cam.height),
-                       glm::dvec2(cam.width, cam.height)})
+  for (glm::dvec2 p :
+       {glm::dvec2(0, 0), glm::dvec2(cam.width, 0), glm::dvec2(0, cam.height), glm::dvec2(cam.width, cam.height)})
     for (double d : {0.0, 1.0}) {
       glm::dvec3 ray = cam.ray(p);
       glm::dvec2 uv = cam.topUV(ray) + cam.parallax(ray) * d;

@@ -601,9 +601,9 @@ rank::Setup rankSetup(int grid = 2) {
   s.gridTexels = grid;
   return s;
 }
-#define SKIP_RANKING_ON_SOFTPIPE()                                                                              \
-  if (ts::test::isSoftpipe())                                                                                   \
-  GTEST_SKIP() << "softpipe interprets the shaders and rasterises the displaced grid's 870000 triangles in "  \
+#define SKIP_RANKING_ON_SOFTPIPE()                                                                           \
+  if (ts::test::isSoftpipe())                                                                                \
+  GTEST_SKIP() << "softpipe interprets the shaders and rasterises the displaced grid's 870000 triangles in " \
                   "software: minutes a ranking; llvmpipe and EGL run it"
 void printRanking(const char* what, const rank::Ranking& k) {
   std::printf("%s:", what);
