@@ -199,23 +199,31 @@ inline void buildRanking(ts::Frame& f, const ts::Measurements& mm, const RankSho
     const ts::TextureDesc* tex;
     L::Captioned caption;
   };
+  // A narrow window (under 900 pixels) keeps six pictures: the reference and each method's error map, the
+  // method's rank and numbers over and under it; the figure and wide windows show the renders too.
+  const bool compact = f.width < 900;
   std::vector<Pic> pics;
   pics.push_back({&shown.reference,
                   {L::Text("reference, traced"), L::measuredText(mm, "{relief_rank_rays|%.0f} rays per pixel, CPU")}});
   for (int m = 0; m < kMethods; ++m) {
-    L::Text title = L::Text(std::string(kMethodLabels[m]) + "  #") + L::measured(mm, rankName(m), "%.0f");
+    L::Text title = L::Text(compact ? std::string("|error| ") + kMethodKeys[m] + " #"
+                                    : std::string(kMethodLabels[m]) + "  #") +
+                    L::measured(mm, rankName(m), "%.0f");
     L::Text note = L::measured(mm, psnrName(m), "%.1f") + L::Text(" dB, SSIM ") + L::measured(mm, ssimName(m), "%.3f");
-    pics.push_back({&shown.images[m], {title, note}});
+    pics.push_back({compact ? &shown.errors[m] : &shown.images[m], {title, note}});
   }
-  pics.push_back({&shown.referenceDepth, {L::Text("reference: depth of the hit"), L::Text("white top, black floor")}});
-  for (int m = 0; m < kMethods; ++m)
-    pics.push_back({&shown.errors[m],
-                    {L::Text(std::string("|error| ") + kMethodKeys[m]),
-                     m == kDisplacement ? L::measuredText(mm, "grid every {relief_rank_grid_texels|%.0f} texels, "
-                                                              "{relief_rank_grid_triangles|%.0f} triangles")
-                                        : L::Text(std::string(m == kBump || m == kNormalMap ? "unshifted coordinate"
-                                                              : m == kParallax              ? "one offset step"
-                                                                                            : "the demo's march"))}});
+  if (!compact) {
+    pics.push_back(
+        {&shown.referenceDepth, {L::Text("reference: depth of the hit"), L::Text("white top, black floor")}});
+    for (int m = 0; m < kMethods; ++m)
+      pics.push_back({&shown.errors[m],
+                      {L::Text(std::string("|error| ") + kMethodKeys[m]),
+                       m == kDisplacement ? L::measuredText(mm, "grid every {relief_rank_grid_texels|%.0f} texels, "
+                                                                "{relief_rank_grid_triangles|%.0f} triangles")
+                                          : L::Text(std::string(m == kBump || m == kNormalMap ? "unshifted coordinate"
+                                                                : m == kParallax              ? "one offset step"
+                                                                                              : "the demo's march"))}});
+  }
   std::vector<L::Captioned> captions;
   for (const Pic& p : pics) captions.push_back(p.caption);
 
@@ -250,11 +258,15 @@ inline void buildRanking(ts::Frame& f, const ts::Measurements& mm, const RankSho
   L::Text scale = L::Text("|error|: the channels' mean against the reference; the scale's top is ") +
                   L::given("error_scale_top_levels", kErrorScaleTop, "%.0f") + L::Text(" levels.");
   std::vector<L::Text> notes = {L::Text(header) + L::Text(".  ") + scale, ranking, verdict, perPixel};
-  const std::vector<ts::LegendEntry> legend = {{kErrNone, "no error against the reference"},
-                                               {kErr32, "|error| half the scale"},
-                                               {kErr64, "|error| the scale's top or more"},
-                                               {{1, 1, 1, 1}, "hit on the top of the relief"},
-                                               {{0, 0, 0, 1}, "on its floor (depth, grey between)"}};
+  std::vector<ts::LegendEntry> legend = {{kErrNone, "no error against the reference"},
+                                         {kErr32, "|error| half the scale"},
+                                         {kErr64, "|error| the scale's top or more"},
+                                         {{1, 1, 1, 1}, "hit on the top of the relief"},
+                                         {{0, 0, 0, 1}, "on its floor (depth, grey between)"}};
+  if (compact) {  // the state is in the side panel; no depth picture
+    notes = {scale, ranking, verdict};
+    legend.resize(3);
+  }
   L::pictureFigure(
       f, captions,
       [&](size_t i, const ts::Rect& r) {
