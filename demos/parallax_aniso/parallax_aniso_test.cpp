@@ -659,6 +659,32 @@ TEST(Ranking, AFlattenedReferenceTurnsTheOrder) {
   EXPECT_GT(k.rank[rank::kDisplacement], 1);
 }
 
+// On the flat map (the bricks' albedo, every height 1) there is no relief: the four per-pixel methods read
+// the same coordinate with the normal (0, 0, 1), so they draw one image, c = albedo (ka + (1 - ka) L.z) --
+// up to the normal map's quantisation (n.xy within 1/255: (1 - ka) |L.xy| / 255 of the albedo, under a
+// level) and a level of rounding.  Each is closer to the reference lit by L than to one lit from below
+// (-L: the ambient term alone), the control that shows the Lambert factor is what is compared.
+TEST(Ranking, OnAFlatMapEveryMethodIsLambertOfTheAlbedo) {
+  ts::test::context();
+  TS_REQUIRE_GL_VERSION(30);
+  SKIP_RANKING_ON_SOFTPIPE();
+  const rank::Setup s = rankSetup(8);
+  const rank::Ranking k = rank::measureRanking(ts::test::renderer(), relief("flat"), s);
+  printRanking("flat map", k);
+  const ts::Image& a = k.images[rank::kNormalMap];
+  for (int m : {rank::kBump, rank::kParallax, rank::kPom}) {
+    int worst = 0;
+    for (size_t p = 0; p < a.pixels.size(); ++p)
+      worst = std::max(worst, std::abs(int(a.pixels[p]) - int(k.images[m].pixels[p])));
+    EXPECT_LE(worst, 2) << rank::kMethodKeys[m] << " differs from normal mapping on a flat map";
+  }
+  rank::Setup below = s;
+  below.light.dir = -s.light.dir;
+  const ts::Image wrong = rank::traceShaded(below, relief("flat"));
+  for (int m = 0; m < rank::kMethods; ++m)
+    EXPECT_GT(k.psnr[m], psnr(k.images[m], wrong, nullptr) + 6.0) << rank::kMethodKeys[m];
+}
+
 TEST(Ranking, TheFigureSaysWhatTheRanksSay) {
   ts::test::context();
   TS_REQUIRE_GL_VERSION(30);
