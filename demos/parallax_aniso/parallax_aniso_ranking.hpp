@@ -48,7 +48,9 @@ inline ts::Image traceShaded(const Setup& s, const Relief& r, ts::Image* depth =
   const int n = std::max(1, s.rays);
   ts::Image out(cam.width, cam.height), hitDepth(cam.width, cam.height);
   auto rows = [&](int y0, int step) {
-    for (int y = y0; y < cam.height; y += step)
+    for (int y = y0; y < cam.height; y += step) {
+      // A window shows the rows done; a superseded measurement stops early (measureRanking then throws).
+      if (ts::measureCancelled(y0 == 0 ? 0.2 + 0.75 * double(y) / cam.height : -1.0)) return;
       for (int x = 0; x < cam.width; ++x) {
         const int gy = cam.height - 1 - y;  // GL row
         uint32_t key = hash32(s.seed * 0x85ebca6bu ^ hash32(uint32_t(x) ^ hash32(uint32_t(gy) + 0x27d4eb2fu)));
@@ -71,6 +73,7 @@ inline ts::Image traceShaded(const Setup& s, const Relief& r, ts::Image* depth =
         const uint8_t g = u8(255.0 * (1.0 - dsum / double(n * n)));
         hitDepth.set(x, y, {g, g, g, 255});
       }
+    }
   };
   std::thread t(rows, 1, 2);
   rows(0, 2);
@@ -143,7 +146,9 @@ inline Ranking measureRanking(ts::Renderer& r, const Relief& rel, const Setup& s
     gl.release();
     k.calls[m] = ts::recordRender(r, [&] { k.images[m] = gl.render(s.cam, rel, s.light, m, &grid); });
   }
+  ts::measureProgress(0.2);  // the five passes drawn; in a window, throws if superseded
   k.reference = traceShaded(s, rel, &k.referenceDepth);
+  ts::measureProgress(0.95);  // throws if the trace above was stopped early
   for (int m = 0; m < kMethods; ++m) {
     k.psnr[m] = psnr(k.images[m], k.reference, nullptr);
     k.ssim[m] = ssim(k.images[m], k.reference, nullptr);
