@@ -29,6 +29,29 @@ GLuint makeTexture(int w, int h, const std::vector<uint8_t>& rgba, GLint minFilt
   return tex;
 }
 
+// The matrices a frame draws with, whatever the program drew before it (a demo's window, make_figures' other
+// figures): texture unit 0, `proj` and `view`, an identity texture matrix; popMatrices() puts them back.
+void pushMatrices(const glm::mat4& proj, const glm::mat4& view) {
+  glActiveTexture(GL_TEXTURE0);
+  glMatrixMode(GL_TEXTURE);
+  glPushMatrix();
+  glLoadIdentity();
+  glMatrixMode(GL_PROJECTION);
+  glPushMatrix();
+  glLoadMatrixf(glm::value_ptr(proj));
+  glMatrixMode(GL_MODELVIEW);
+  glPushMatrix();
+  glLoadMatrixf(glm::value_ptr(view));
+}
+void popMatrices() {
+  glMatrixMode(GL_TEXTURE);
+  glPopMatrix();
+  glMatrixMode(GL_PROJECTION);
+  glPopMatrix();
+  glMatrixMode(GL_MODELVIEW);
+  glPopMatrix();
+}
+
 // ---- 1. hyperbolic against screen-linear interpolation ---------------------------------------------------------
 // The quad's vertices carry (x, y, w) and the vertex shader writes clip position (x w, y w, 0, w): the frame is
 // covered exactly, the top edge 8 times farther than the bottom, so every pixel is shaded in both modes and only
@@ -63,6 +86,7 @@ class Interpolation final : public Workload {
   }
   ~Interpolation() override { glDeleteTextures(1, &tex_); }
   void begin() override {
+    pushMatrices(glm::mat4(1), glm::mat4(1));
     const GLuint prog = r_.program(key_, src_);  // made again after a Renderer::release (a recorded frame)
     glUseProgram(prog);
     glUniform1i(glGetUniformLocation(prog, "tex"), 0);
@@ -77,6 +101,7 @@ class Interpolation final : public Workload {
   void end() override {
     mesh_.unbind();
     glUseProgram(0);
+    popMatrices();
   }
 
  private:
@@ -196,12 +221,7 @@ class DetailWorkload final : public Workload {
     const glm::mat4 view = glm::rotate(glm::translate(glm::mat4(1), {0, 0, -2.4f}), glm::radians(-60.f), {1, 0, 0});
     const glm::vec3 eye = glm::vec3(glm::inverse(view) * glm::vec4(0, 0, 0, 1));
     const glm::vec3 light = glm::normalize(glm::vec3(0.4f, 0.5f, 0.75f));
-    glMatrixMode(GL_PROJECTION);
-    glPushMatrix();
-    glLoadMatrixf(glm::value_ptr(proj));
-    glMatrixMode(GL_MODELVIEW);
-    glPushMatrix();
-    glLoadMatrixf(glm::value_ptr(view));
+    pushMatrices(proj, view);
     const GLuint prog = r_.program(key_, src_);
     glUseProgram(prog);
     glUniform1i(glGetUniformLocation(prog, "height"), 0);
@@ -223,10 +243,7 @@ class DetailWorkload final : public Workload {
     glDisable(GL_DEPTH_TEST);
     mesh_.unbind();
     glUseProgram(0);
-    glMatrixMode(GL_PROJECTION);
-    glPopMatrix();
-    glMatrixMode(GL_MODELVIEW);
-    glPopMatrix();
+    popMatrices();
   }
 
  private:
@@ -268,13 +285,8 @@ class Switches final : public Workload {
   }
   ~Switches() override { glDeleteTextures(GLsizei(tex_.size()), tex_.data()); }
   void begin() override {
-    glMatrixMode(GL_PROJECTION);
-    glPushMatrix();
-    glLoadIdentity();
-    glOrtho(0, kCols, 0, kRows, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glPushMatrix();
-    glLoadIdentity();
+    pushMatrices(glm::ortho(0.f, float(kCols), 0.f, float(kRows), -1.f, 1.f), glm::mat4(1));
+    glUseProgram(0);
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);  // fixed function: the Red Book's own path
     mesh_.bind();
@@ -306,10 +318,7 @@ class Switches final : public Workload {
   void end() override {
     mesh_.unbind();
     glDisable(GL_TEXTURE_2D);
-    glMatrixMode(GL_PROJECTION);
-    glPopMatrix();
-    glMatrixMode(GL_MODELVIEW);
-    glPopMatrix();
+    popMatrices();
   }
 
  private:
@@ -350,6 +359,8 @@ class Minify final : public Workload {
     counters["texture_texels"] = double(size) * size;
   }
   void begin() override {
+    pushMatrices(glm::mat4(1), glm::mat4(1));
+    glUseProgram(0);
     glBindTexture(GL_TEXTURE_2D, tex_);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter_);
     glEnable(GL_TEXTURE_2D);
@@ -363,6 +374,7 @@ class Minify final : public Workload {
   void end() override {
     mesh_.unbind();
     glDisable(GL_TEXTURE_2D);
+    popMatrices();
   }
 
  private:
