@@ -65,6 +65,7 @@
 #include "parallax_aniso_gl.hpp"
 #include "parallax_aniso_live.hpp"
 #include "parallax_aniso_views.hpp"
+#include "parallax_aniso_causes_gl.hpp"
 #include "parallax_aniso_math.hpp"
 
 namespace {
@@ -105,10 +106,11 @@ class ParallaxAniso final : public ts::Scene {
     o.addEnum("against", &against_,
               {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5], kModeKeys[6]},
               "the mode of the right half in split-screen compare", 'b');
-    o.addEnum("view", &view_, {"single", "modes", "error", "live"},
+    o.addEnum("view", &view_, {"single", "modes", "error", "live", "causes"},
               "single: one mode (or the split screen); modes: all seven with their numbers; error: the occlusion "
               "band's error for M2, M3, M4; live: the mode (or the split screen) drawn every frame at the window's "
-              "size, timed (no reference, no table)",
+              "size, timed (no reference, no table); causes: seed 003's equations measured one by one (Eq. 2, Eq. 3, Fig. 4, "
+              "Fig. 6, the seed's F rendered)",
               'v');
     o.addBool("animate", &animate_, "live view: sweep the azimuth back and forth (10 degrees a second)", 'a');
     o.addInt("res", &res_, 80, 800, "width of the measured renders (height 3/4 of it; the figures use 320)", 'r', 'R',
@@ -163,6 +165,20 @@ class ParallaxAniso final : public ts::Scene {
          700,
          "On the step map leaving out hidden texels costs: M4 {ewa_vis_psnr_all} dB against M3's {ewa_psnr_all} dB "
          "over the whole frame."},
+        // The same state as parallax_modes but the view: the table (and its reference) is reused.
+        {"parallax_causes",
+         "Seed 003: its equations, measured",
+         "Seed 003's causes on the bricks at 20 degrees, 320x240: Eq. 2's forward differences of the parallax-shifted "
+         "coordinate against the analytic derivatives (small on the relief, tens of texels at its steps: the footprint "
+         "M0's lookup takes), the seed's printed Eq. 2 (v minus u), the footprint area from the shifted differences "
+         "over the plain one (Eq. 3, Fig. 3), the share of hidden texels in the footprint by its size (Fig. 4), "
+         "texels the row walk counts twice with and without its buffer (Fig. 6), and M3 EWA with the seed's F "
+         "(Ux Vy + Uy Vx)^2 beside the corrected one.",
+         {"--view", "causes", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"},
+         1360,
+         860,
+         "Eq. 2 on the shifted coordinate errs by {eq2_derivative_error_texels[frame]} texels (median) over the "
+         "frame, {eq2_derivative_error_texels[steps]} at steps; the seed's F changes {seed_F_error_px} px of M3."},
     };
   }
   std::vector<std::pair<std::string, std::string>> figureFiles() const override {
@@ -219,6 +235,11 @@ class ParallaxAniso final : public ts::Scene {
                    "pixels of M2 that change when textureGrad's gradients are x4 (0: the driver ignores them)"});
     }
     m.detail = shown_;
+    if (view_ == kCauses) {  // seed 003's equations measured (parallax_aniso_causes_gl.hpp), once per state
+      if (!causes_ || causesKey_ != key) causes_ = causes::measure(gl, *table_, relief(), accel_), causesKey_ = key;
+      causes::addMeasurements(m, *causes_);
+      m.detail = causes_;
+    }
     return m;
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override {
@@ -227,10 +248,17 @@ class ParallaxAniso final : public ts::Scene {
       views().buildLive(f, measured.detailAs<Live>());
       return f;
     }
+    if (view_ == kCauses) {  // its detail is the causes' result (measure())
+      auto c = measured.detailAs<std::shared_ptr<const causes::Result>>();
+      if (c) causes::build(f, **c, measured, views().header());
+      else views().buildWaiting(f);
+      return f;
+    }
     const Shown* shown = measured.detailAs<Shown>();
     if (!shown) views().buildWaiting(f);  // a window before the first measurement: what is coming
     else if (view_ == kModes) views().buildModes(f, *shown);
     else if (view_ == kError) views().buildError(f, *shown);
+
     else views().buildSingle(f, *shown);
     return f;
   }
@@ -305,6 +333,8 @@ class ParallaxAniso final : public ts::Scene {
   ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   std::shared_ptr<Table> table_;
   std::string tableKey_;
+  std::shared_ptr<const causes::Result> causes_;  // the causes view's measurement (its state: tableKey_)
+  std::string causesKey_;
   Shown shown_;
 };
 }  // namespace

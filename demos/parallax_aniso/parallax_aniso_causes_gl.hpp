@@ -1,0 +1,144 @@
+// demos/parallax_aniso/parallax_aniso_causes_gl.hpp — the causes view's measurement
+// and figure: the CPU measurements of seed 003's equations
+// (parallax_aniso_causes.hpp) and one GL pass, M3 EWA with the seed's F =
+// (Ux Vy + Uy Vx)^2 (ts::ewa::glsl(true): the only change to the shader is
+// that line and the ellipse's row span), set beside the corrected M3 of the
+// measured table and held to the same reference.
+//
+// The slip only matters where the footprint is sheared: with the view
+// looking straight along +v (azimuth 0) Vx = 0 exactly, so Ux Vy + Uy Vx =
+// Ux Vy - Uy Vx and the two renders are the same, byte for byte (the test's
+// control); at the figures' azimuth, 12 degrees, they are not.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/core/layout.hpp"
+#include "common/core/probe.hpp"
+#include "common/core/textures.hpp"
+#include "parallax_aniso_causes.hpp"
+#include "parallax_aniso_gl.hpp"
+#include "parallax_aniso_measure.hpp"
+
+namespace pax::causes {
+struct Result {
+  Cpu cpu;
+  ts::Image seedF;          // M3 with the seed's F (the corrected one is the table's M3 row)
+  long seedFChanged = 0;    // pixels where it differs from the corrected M3
+  int seedFMaxDiff = 0;     // the largest difference of a channel there, levels
+  double seedFPsnr = 0;     // against the reference (dB)
+  double correctedPsnr = 0; // the corrected M3's, the same measure
+  std::vector<ts::TextureDesc> textures;  // the figure's seven pictures, in order
+};
+
+inline ts::TextureDesc picture(const ts::Image& img, const std::string& what) {
+  return ts::renderedImageTexture(img, "parallax_render", what, "parallax_aniso");
+}
+
+// The seed-F pass at the table's camera and options; `accel` as the table's.
+inline ts::Image renderSeedF(ReliefGL& gl, const Camera& cam, const Relief& rel, bool accel) {
+  PassOptions po;
+  po.accel = accel;
+  po.seedF = true;
+  return gl.render(cam, rel, kEwa, po);
+}
+
+inline std::shared_ptr<const Result> measure(ReliefGL& gl, const Table& t, const Relief& rel, bool accel) {
+  auto r = std::make_shared<Result>();
+  r->cpu = measureCpu(t.cam, rel);
+  const ts::Image& corrected = t.rows[size_t(kEwa)].image;
+  r->seedF = renderSeedF(gl, t.cam, rel, accel);
+  r->seedFChanged = ts::probe::countDiffering(r->seedF, corrected, 0);
+  r->seedFMaxDiff = maxDiff(r->seedF, corrected);
+  r->seedFPsnr = psnr(r->seedF, t.referenceImage, nullptr);
+  r->correctedPsnr = psnr(corrected, t.referenceImage, nullptr);
+  r->textures = {picture(eq2Picture(r->cpu, r->cpu.eq2Error), "causes_eq2"),
+                 picture(eq2Picture(r->cpu, r->cpu.eq2Typo), "causes_eq2_typo"),
+                 picture(areaPicture(r->cpu), "causes_area_ratio"),
+                 picture(hiddenPicture(r->cpu), "causes_hidden_share"),
+                 picture(corrected, "ewa"),
+                 picture(r->seedF, "causes_ewa_seed_f"),
+                 picture(diffPicture(r->seedF, corrected), "causes_seed_f_diff")};
+  return r;
+}
+
+inline void addMeasurements(ts::Measurements& m, const Result& r) {
+  const Cpu& c = r.cpu;
+  m.push_back({"eq2_derivative_error_texels[frame]", c.eq2Frame,
+               "Eq. 2 forward differences of the shifted (u,v) vs the analytic derivatives: median |error|, level-0 "
+               "texels, whole frame"});
+  m.push_back({"eq2_derivative_error_texels[steps]", c.eq2Steps,
+               "the same median at the relief's steps (forward neighbours' ray depths > half the relief apart)"});
+  m.push_back({"eq2_derivative_error_texels[typo]", c.eq2TypoFrame,
+               "the seed's printed Eq. 2 (dv = v(x+1,y) - u(x,y)): median |error|, whole frame"});
+  m.push_back({"eq2_step_pixels", double(c.stepPixels), "pixels at steps"});
+  m.push_back({"footprint_area_ratio[parallax/plain]", c.areaRatioMedian,
+               "Eq. 3, Fig. 3: footprint area from the shifted differences / from the plain ones, median"});
+  m.push_back({"footprint_area_ratio[steps]", c.areaRatioStepsMedian, "the same ratio, median at the steps"});
+  m.push_back({"footprint_area_ratio[steps_p90]", c.areaRatioStepsP90, "the same ratio, 90th percentile at steps"});
+  for (const Bin& b : c.bins) {
+    m.push_back({b.name, b.share, "Fig. 4: mean share of hidden texels in the footprint, this size bin"});
+    m.push_back({b.name + "_error", b.sampleError, "its standard error (over the sampled pixels)"});
+    m.push_back({b.name + "_pixels", double(b.pixels), "sampled pixels in the bin"});
+  }
+  m.push_back({"double_counted_texels[buffer]", double(c.doubleBuffer),
+               "Fig. 6: texels the row walk (M5, with its stop index) counts twice, every 4th pixel each way"});
+  m.push_back({"double_counted_texels[no_buffer]", double(c.doubleNoBuffer),
+               "the same walk without the stop index (the walk from the right always runs)"});
+  m.push_back({"double_counted_texels[seed_walk_no_bound]", double(c.doubleSeedNoBound),
+               "the seed's walk (from the right only after a hidden texel), not bounded by the stop index"});
+  m.push_back({"row_walk_texels", double(c.walkedTexels), "texels the row walk counts over those pixels"});
+  m.push_back({"seed_F_error_px", double(r.seedFChanged), "pixels M3 with the seed's F changes"});
+  m.push_back({"seed_F_max_diff_levels", double(r.seedFMaxDiff), "the largest channel difference there, levels"});
+  m.push_back({"seed_F_psnr_db", r.seedFPsnr, "M3 with the seed's F: PSNR (dB) vs the reference"});
+  m.push_back({"corrected_F_psnr_db", r.correctedPsnr, "M3 with the corrected F: PSNR (dB) vs the reference"});
+}
+
+// The figure: seven captioned pictures above a legend and the notes.
+inline void build(ts::Frame& f, const Result& r, const ts::Measurements& m, const std::string& header) {
+  namespace L = ts::layout;
+  auto M = [&](const std::string& templ) { return L::measuredText(m, templ); };
+  const std::vector<L::Captioned> pics = {
+      {"Eq. 2 on the shifted (u,v)",
+       M("median {eq2_derivative_error_texels[frame]|%.2f} texels, {eq2_derivative_error_texels[steps]|%.1f} at steps")},
+      {"Eq. 2 as printed (dv = v - u)", M("median {eq2_derivative_error_texels[typo]|%.0f} texels")},
+      {"Fig. 3: footprint area, shifted / plain",
+       M("median {footprint_area_ratio[parallax/plain]|%.2f}, at steps {footprint_area_ratio[steps]|%.1f}")},
+      {"Fig. 4: hidden share of the footprint",
+       M("{hidden_texel_share[footprint<=8]|%.3f} (<=8 texels) .. {hidden_texel_share[footprint>128]|%.3f} (>128)")},
+      {"M3 EWA, corrected F", M("{corrected_F_psnr_db|%.2f} dB vs R")},
+      {"M3 EWA, the seed's F", M("{seed_F_psnr_db|%.2f} dB vs R")},
+      {"|seed's F - corrected|", M("{seed_F_error_px|%.0f} px differ, by {seed_F_max_diff_levels|%.0f} levels at most")},
+  };
+  const std::vector<ts::LegendEntry> legend = {
+      {{0, 0, 0, 1}, "0: error < 1/16 texel, nothing hidden, equal"},
+      {{30 / 255.f, 20 / 255.f, 60 / 255.f, 1}, "error 1/16 texel"},
+      {{220 / 255.f, 40 / 255.f, 40 / 255.f, 1}, "error 1 texel, share 1/2, 4 levels"},
+      {{1, 240 / 255.f, 80 / 255.f, 1}, "error 16+ texels, share 1, 8+ levels"},
+      {{110 / 255.f, 110 / 255.f, 115 / 255.f, 1}, "area ratio 1"},
+      {{40 / 255.f, 80 / 255.f, 1, 1}, "1/4 or less"},
+      {{230 / 255.f, 60 / 255.f, 200 / 255.f, 1}, "16 or more"},
+  };
+  const std::vector<L::Text> notes = {
+      L::Text(header + ". Eq. 2: forward differences of the parallax-shifted coordinate against the top plane's "
+                       "analytic derivatives (what M1..M5 use); steps: forward neighbours whose rays end more than "
+                       "half the relief apart (") +
+          M("{eq2_step_pixels|%.0f} px)."),
+      M("Fig. 4, hidden share by footprint (level-0 texels): <=8 {hidden_texel_share[footprint<=8]|%.3f} +- "
+        "{hidden_texel_share[footprint<=8]_error|%.3f}, 8..32 {hidden_texel_share[footprint8..32]|%.3f}, 32..128 "
+        "{hidden_texel_share[footprint32..128]|%.3f}, >128 {hidden_texel_share[footprint>128]|%.3f} +- "
+        "{hidden_texel_share[footprint>128]_error|%.3f} (every 4th pixel each way)."),
+      M("Fig. 6, row walk of M5 on its levels: texels counted twice with M5's buffer (the index where the walk from "
+        "the left stopped) {double_counted_texels[buffer]|%.0f}; without it {double_counted_texels[no_buffer]|%.0f} "
+        "of {row_walk_texels|%.0f} (rows with no hidden texel walked twice); the seed's walk without the bound "
+        "{double_counted_texels[seed_walk_no_bound]|%.0f} (the same trace stops it at the same texel)."),
+  };
+  L::pictureFigure(
+      f, pics, [&](size_t k, const ts::Rect& rect) {
+        f.panels.push_back(ts::layout::texturePanel("causes_" + std::to_string(k), rect,
+                                                    f.addTexture(r.textures[k]), "image"));
+      },
+      legend, notes, {0, float(r.cpu.width) / float(r.cpu.height), 1, 1, 10, 2, 150}, 3, ts::Align::Left);
+}
+}  // namespace pax::causes
