@@ -26,7 +26,7 @@
 //   m  mode            t  map: bricks | step | flat      a  live view: sweep the azimuth
 //   + / -  height scale          ] / [  view angle (elevation)
 //   z / Z  azimuth               c  split-screen compare (mode | --against)
-//   b  the mode compared against  v  view: single | modes | error | live
+//   b  the mode compared against  v  view: single | modes | error | live | causes
 //   r / R  render width          x  max-height pyramid acceleration
 //   g  gradients M1/M2 give textureGrad: x1 | x4 (does the filter use them?
 //      trilinear blurs; llvmpipe's anisotropic filter does not change)
@@ -42,6 +42,19 @@
 // glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 16).
 // Listings: book_figures/parallax_modes.gl.txt, parallax_step.gl.txt (each
 // mode's pass, then the frame), parallax_error_band.gl.txt (the frame only).
+//
+// The causes view (parallax_aniso_causes.hpp, _causes_gl.hpp; figure
+// parallax_causes, listing book_figures/parallax_causes.gl.txt) measures the
+// seed's own equations one by one:
+//   Eq. (2), corrected:  dU/dx = u(x+1, y) - u(x, y),  dV/dx = v(x+1, y) - v(x, y)
+//   of the SHIFTED coordinate, against the Camera's analytic derivatives:
+//   a fraction of a texel on the relief, tens of texels at its steps (M0's
+//   fringes); the seed's printed dV/dx = v(x+1, y) - u(x, y) is wrong everywhere;
+//   Eq. (3), Fig. 3: the footprint area pi F / sqrt(A C - B^2/4) from those
+//   differences over the plain one's; Fig. 4: the share of hidden texels in
+//   the footprint by its size; Fig. 6: texels the row walk counts twice with
+//   and without M5's stop index; and M3 with the seed's F = (Ux Vy + Uy Vx)^2
+//   (ts::ewa::glsl(true)) beside the corrected F = (Ux Vy - Uy Vx)^2.
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -109,8 +122,8 @@ class ParallaxAniso final : public ts::Scene {
     o.addEnum("view", &view_, {"single", "modes", "error", "live", "causes"},
               "single: one mode (or the split screen); modes: all seven with their numbers; error: the occlusion "
               "band's error for M2, M3, M4; live: the mode (or the split screen) drawn every frame at the window's "
-              "size, timed (no reference, no table); causes: seed 003's equations measured one by one (Eq. 2, Eq. 3, Fig. 4, "
-              "Fig. 6, the seed's F rendered)",
+              "size, timed (no reference, no table); causes: seed 003's equations measured one by one (Eq. 2, "
+              "Eq. 3, Fig. 4, Fig. 6, the seed's F rendered)",
               'v');
     o.addBool("animate", &animate_, "live view: sweep the azimuth back and forth (10 degrees a second)", 'a');
     o.addInt("res", &res_, 80, 800, "width of the measured renders (height 3/4 of it; the figures use 320)", 'r', 'R',
@@ -156,16 +169,7 @@ class ParallaxAniso final : public ts::Scene {
          370,
          "PSNR inside the occlusion band ({band_pixels} pixels): M2 {aniso16_psnr_band} dB, M3 {ewa_psnr_band} dB, "
          "M4 {ewa_vis_psnr_band} dB."},
-        {"parallax_step",
-         "Seed 003: the step map",
-         "The synthetic step map (ridges of height 1 and floors of height 0, 32 texels each) at 20 degrees: every "
-         "mode and the reference, as in parallax_modes.",
-         {"--view", "modes", "--map", "step", "--res", "320", "--rays", "12", "--time", "3"},
-         1360,
-         700,
-         "On the step map leaving out hidden texels costs: M4 {ewa_vis_psnr_all} dB against M3's {ewa_psnr_all} dB "
-         "over the whole frame."},
-        // The same state as parallax_modes but the view: the table (and its reference) is reused.
+        // The state of parallax_modes but the view: its table and reference are reused (before the step map's).
         {"parallax_causes",
          "Seed 003: its equations, measured",
          "Seed 003's causes on the bricks at 20 degrees, 320x240: Eq. 2's forward differences of the parallax-shifted "
@@ -179,6 +183,16 @@ class ParallaxAniso final : public ts::Scene {
          860,
          "Eq. 2 on the shifted coordinate errs by {eq2_derivative_error_texels[frame]} texels (median) over the "
          "frame, {eq2_derivative_error_texels[steps]} at steps; the seed's F changes {seed_F_error_px} px of M3."},
+        {"parallax_step",
+         "Seed 003: the step map",
+         "The synthetic step map (ridges of height 1 and floors of height 0, 32 texels each) at 20 degrees: every "
+         "mode and the reference, as in parallax_modes.",
+         {"--view", "modes", "--map", "step", "--res", "320", "--rays", "12", "--time", "3"},
+         1360,
+         700,
+         "On the step map leaving out hidden texels costs: M4 {ewa_vis_psnr_all} dB against M3's {ewa_psnr_all} dB "
+         "over the whole frame."},
+
     };
   }
   std::vector<std::pair<std::string, std::string>> figureFiles() const override {

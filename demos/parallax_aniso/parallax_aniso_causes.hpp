@@ -53,13 +53,13 @@ struct Bin {
 struct Cpu {
   int width = 0, height = 0, stride = 4;  // Fig. 4 and 6 sample every stride-th pixel each way
   // Per pixel, row 0 = top.
-  std::vector<glm::dvec2> uvS;     // the shifted coordinate at the pixel centre
-  std::vector<double> depth;       // the depth its ray reached (0 top .. 1 floor)
-  std::vector<double> eq2Error;    // |forward difference - analytic|, texels of level 0 (max over the four)
-  std::vector<double> eq2Typo;     // the same with the seed's printed dv/dx, dv/dy
-  std::vector<uint8_t> steps;      // the ray depths of a forward neighbour more than half the relief apart
-  std::vector<double> areaRatio;   // footprint area from the shifted differences / from the plain ones
-  std::vector<double> hiddenShare; // sampled pixels' hidden share (NaN between samples)
+  std::vector<glm::dvec2> uvS;      // the shifted coordinate at the pixel centre
+  std::vector<double> depth;        // the depth its ray reached (0 top .. 1 floor)
+  std::vector<double> eq2Error;     // |forward difference - analytic|, texels of level 0 (max over the four)
+  std::vector<double> eq2Typo;      // the same with the seed's printed dv/dx, dv/dy
+  std::vector<uint8_t> steps;       // the ray depths of a forward neighbour more than half the relief apart
+  std::vector<double> areaRatio;    // footprint area from the shifted differences / from the plain ones
+  std::vector<double> hiddenShare;  // sampled pixels' hidden share (NaN between samples)
   double eq2Frame = 0, eq2Steps = 0, eq2TypoFrame = 0;
   long stepPixels = 0;
   double areaRatioMedian = 0, areaRatioStepsMedian = 0, areaRatioStepsP90 = 0;

@@ -24,11 +24,11 @@
 namespace pax::causes {
 struct Result {
   Cpu cpu;
-  ts::Image seedF;          // M3 with the seed's F (the corrected one is the table's M3 row)
-  long seedFChanged = 0;    // pixels where it differs from the corrected M3
-  int seedFMaxDiff = 0;     // the largest difference of a channel there, levels
-  double seedFPsnr = 0;     // against the reference (dB)
-  double correctedPsnr = 0; // the corrected M3's, the same measure
+  ts::Image seedF;                        // M3 with the seed's F (the corrected one is the table's M3 row)
+  long seedFChanged = 0;                  // pixels where it differs from the corrected M3
+  int seedFMaxDiff = 0;                   // the largest difference of a channel there, levels
+  double seedFPsnr = 0;                   // against the reference (dB)
+  double correctedPsnr = 0;               // the corrected M3's, the same measure
   std::vector<ts::TextureDesc> textures;  // the figure's seven pictures, in order
 };
 
@@ -101,7 +101,8 @@ inline void build(ts::Frame& f, const Result& r, const ts::Measurements& m, cons
   auto M = [&](const std::string& templ) { return L::measuredText(m, templ); };
   const std::vector<L::Captioned> pics = {
       {"Eq. 2 on the shifted (u,v)",
-       M("median {eq2_derivative_error_texels[frame]|%.2f} texels, {eq2_derivative_error_texels[steps]|%.1f} at steps")},
+       M("median {eq2_derivative_error_texels[frame]|%.2f} texels, "
+         "{eq2_derivative_error_texels[steps]|%.1f} at steps")},
       {"Eq. 2 as printed (dv = v - u)", M("median {eq2_derivative_error_texels[typo]|%.0f} texels")},
       {"Fig. 3: footprint area, shifted / plain",
        M("median {footprint_area_ratio[parallax/plain]|%.2f}, at steps {footprint_area_ratio[steps]|%.1f}")},
@@ -109,7 +110,8 @@ inline void build(ts::Frame& f, const Result& r, const ts::Measurements& m, cons
        M("{hidden_texel_share[footprint<=8]|%.3f} (<=8 texels) .. {hidden_texel_share[footprint>128]|%.3f} (>128)")},
       {"M3 EWA, corrected F", M("{corrected_F_psnr_db|%.2f} dB vs R")},
       {"M3 EWA, the seed's F", M("{seed_F_psnr_db|%.2f} dB vs R")},
-      {"|seed's F - corrected|", M("{seed_F_error_px|%.0f} px differ, by {seed_F_max_diff_levels|%.0f} levels at most")},
+      {"|seed's F - corrected|",
+       M("{seed_F_error_px|%.0f} px differ, by {seed_F_max_diff_levels|%.0f} levels at most")},
   };
   const std::vector<ts::LegendEntry> legend = {
       {{0, 0, 0, 1}, "0: error < 1/16 texel, nothing hidden, equal"},
@@ -135,9 +137,10 @@ inline void build(ts::Frame& f, const Result& r, const ts::Measurements& m, cons
         "{double_counted_texels[seed_walk_no_bound]|%.0f} (the same trace stops it at the same texel)."),
   };
   L::pictureFigure(
-      f, pics, [&](size_t k, const ts::Rect& rect) {
-        f.panels.push_back(ts::layout::texturePanel("causes_" + std::to_string(k), rect,
-                                                    f.addTexture(r.textures[k]), "image"));
+      f, pics,
+      [&](size_t k, const ts::Rect& rect) {
+        f.panels.push_back(
+            ts::layout::texturePanel("causes_" + std::to_string(k), rect, f.addTexture(r.textures[k]), "image"));
       },
       legend, notes, {0, float(r.cpu.width) / float(r.cpu.height), 1, 1, 10, 2, 150}, 3, ts::Align::Left);
 }
