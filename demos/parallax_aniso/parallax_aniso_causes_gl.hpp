@@ -100,9 +100,8 @@ inline void build(ts::Frame& f, const Result& r, const ts::Measurements& m, cons
   namespace L = ts::layout;
   auto M = [&](const std::string& templ) { return L::measuredText(m, templ); };
   const std::vector<L::Captioned> pics = {
-      {"Eq. 2 on the shifted (u,v)",
-       M("median {eq2_derivative_error_texels[frame]|%.2f} texels, "
-         "{eq2_derivative_error_texels[steps]|%.1f} at steps")},
+      {"Eq. 2 on the shifted (u,v)", M("median {eq2_derivative_error_texels[frame]|%.2f} texels, "
+                                       "{eq2_derivative_error_texels[steps]|%.1f} at steps")},
       {"Eq. 2 as printed (dv = v - u)", M("median {eq2_derivative_error_texels[typo]|%.0f} texels")},
       {"Fig. 3: footprint area, shifted / plain",
        M("median {footprint_area_ratio[parallax/plain]|%.2f}, at steps {footprint_area_ratio[steps]|%.1f}")},
