@@ -44,7 +44,8 @@
 // mode's pass, then the frame), parallax_error_band.gl.txt (the frame only).
 //
 // The causes view (parallax_aniso_causes.hpp, _causes_gl.hpp; figure
-// parallax_causes, listing book_figures/parallax_causes.gl.txt) measures the
+// parallax_causes and parallax_seed_F, listings book_figures/parallax_causes.gl.txt
+// and parallax_seed_F.gl.txt; views causes and seed-f) measures the
 // seed's own equations one by one:
 //   Eq. (2), corrected:  dU/dx = u(x+1, y) - u(x, y),  dV/dx = v(x+1, y) - v(x, y)
 //   of the SHIFTED coordinate, against the Camera's analytic derivatives:
@@ -119,11 +120,11 @@ class ParallaxAniso final : public ts::Scene {
     o.addEnum("against", &against_,
               {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5], kModeKeys[6]},
               "the mode of the right half in split-screen compare", 'b');
-    o.addEnum("view", &view_, {"single", "modes", "error", "live", "causes"},
+    o.addEnum("view", &view_, {"single", "modes", "error", "live", "causes", "seed-f"},
               "single: one mode (or the split screen); modes: all seven with their numbers; error: the occlusion "
               "band's error for M2, M3, M4; live: the mode (or the split screen) drawn every frame at the window's "
               "size, timed (no reference, no table); causes: seed 003's equations measured one by one (Eq. 2, "
-              "Eq. 3, Fig. 4, Fig. 6, the seed's F rendered)",
+              "Eq. 3, Fig. 4, Fig. 6); seed-f: M3 with the seed's F beside the corrected one",
               'v');
     o.addBool("animate", &animate_, "live view: sweep the azimuth back and forth (10 degrees a second)", 'a');
     o.addInt("res", &res_, 80, 800, "width of the measured renders (height 3/4 of it; the figures use 320)", 'r', 'R',
@@ -175,14 +176,24 @@ class ParallaxAniso final : public ts::Scene {
          "Seed 003's causes on the bricks at 20 degrees, 320x240: Eq. 2's forward differences of the parallax-shifted "
          "coordinate against the analytic derivatives (small on the relief, tens of texels at its steps: the footprint "
          "M0's lookup takes), the seed's printed Eq. 2 (v minus u), the footprint area from the shifted differences "
-         "over the plain one (Eq. 3, Fig. 3), the share of hidden texels in the footprint by its size (Fig. 4), "
-         "texels the row walk counts twice with and without its buffer (Fig. 6), and M3 EWA with the seed's F "
-         "(Ux Vy + Uy Vx)^2 beside the corrected one.",
+         "over the plain one (Eq. 3, Fig. 3), the share of hidden texels in the footprint by its size (Fig. 4), and "
+         "in the notes the texels the row walk counts twice with and without its buffer (Fig. 6).",
          {"--view", "causes", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"},
          1360,
-         860,
+         520,
          "Eq. 2 on the shifted coordinate errs by {eq2_derivative_error_texels[frame]} texels (median) over the "
-         "frame, {eq2_derivative_error_texels[steps]} at steps; the seed's F changes {seed_F_error_px} px of M3."},
+         "frame, {eq2_derivative_error_texels[steps]} at steps; the footprint's hidden share rises from "
+         "{hidden_texel_share[footprint<=8]} to {hidden_texel_share[footprint>128]}."},
+        {"parallax_seed_F",
+         "Seed 003: its F, rendered",
+         "M3 (EWA in the shader) on the bricks at 20 degrees with Heckbert's F = (Ux Vy - Uy Vx)^2 and with the "
+         "seed's printed F = (Ux Vy + Uy Vx)^2, and their difference: the slip changes the ellipse wherever the "
+         "footprint is sheared (both Uy and Vx non-zero).",
+         {"--view", "seed-f", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"},
+         1100,
+         400,
+         "The seed's F changes {seed_F_error_px} px of M3: {seed_F_psnr_db} dB against the reference, the corrected "
+         "F {corrected_F_psnr_db} dB."},
         {"parallax_step",
          "Seed 003: the step map",
          "The synthetic step map (ridges of height 1 and floors of height 0, 32 texels each) at 20 degrees: every "
@@ -249,7 +260,8 @@ class ParallaxAniso final : public ts::Scene {
                    "pixels of M2 that change when textureGrad's gradients are x4 (0: the driver ignores them)"});
     }
     m.detail = shown_;
-    if (view_ == kCauses) {  // seed 003's equations measured (parallax_aniso_causes_gl.hpp), once per state
+    // Seed 003's equations measured (parallax_aniso_causes_gl.hpp), once per state.
+    if (view_ == kCauses || view_ == kSeedF) {
       if (!causes_ || causesKey_ != key) causes_ = causes::measure(gl, *table_, relief(), accel_), causesKey_ = key;
       causes::addMeasurements(m, *causes_);
       m.detail = causes_;
@@ -262,9 +274,9 @@ class ParallaxAniso final : public ts::Scene {
       views().buildLive(f, measured.detailAs<Live>());
       return f;
     }
-    if (view_ == kCauses) {  // its detail is the causes' result (measure())
+    if (view_ == kCauses || view_ == kSeedF) {  // its detail is the causes' result (measure())
       auto c = measured.detailAs<std::shared_ptr<const causes::Result>>();
-      if (c) causes::build(f, **c, measured, views().header());
+      if (c) causes::build(f, **c, measured, views().header(), view_ == kSeedF);
       else views().buildWaiting(f);
       return f;
     }

@@ -95,52 +95,73 @@ inline void addMeasurements(ts::Measurements& m, const Result& r) {
   m.push_back({"corrected_F_psnr_db", r.correctedPsnr, "M3 with the corrected F: PSNR (dB) vs the reference"});
 }
 
-// The figure: seven captioned pictures above a legend and the notes.
-inline void build(ts::Frame& f, const Result& r, const ts::Measurements& m, const std::string& header) {
+// The figures: the causes (Eq. 2 twice, Fig. 3, Fig. 4 pictured; Fig. 6 in
+// the notes) or, with seedF, M3 with either F and their difference; each
+// captioned pictures above a legend and the notes.
+inline void build(ts::Frame& f, const Result& r, const ts::Measurements& m, const std::string& header, bool seedF) {
   namespace L = ts::layout;
   auto M = [&](const std::string& templ) { return L::measuredText(m, templ); };
-  const std::vector<L::Captioned> pics = {
-      {"Eq. 2 on the shifted (u,v)", M("median {eq2_derivative_error_texels[frame]|%.2f} texels, "
-                                       "{eq2_derivative_error_texels[steps]|%.1f} at steps")},
-      {"Eq. 2 as printed (dv = v - u)", M("median {eq2_derivative_error_texels[typo]|%.0f} texels")},
-      {"Fig. 3: footprint area, shifted / plain",
-       M("median {footprint_area_ratio[parallax/plain]|%.2f}, at steps {footprint_area_ratio[steps]|%.1f}")},
-      {"Fig. 4: hidden share of the footprint",
-       M("{hidden_texel_share[footprint<=8]|%.3f} (<=8 texels) .. {hidden_texel_share[footprint>128]|%.3f} (>128)")},
-      {"M3 EWA, corrected F", M("{corrected_F_psnr_db|%.2f} dB vs R")},
-      {"M3 EWA, the seed's F", M("{seed_F_psnr_db|%.2f} dB vs R")},
-      {"|seed's F - corrected|",
-       M("{seed_F_error_px|%.0f} px differ, by {seed_F_max_diff_levels|%.0f} levels at most")},
-  };
-  const std::vector<ts::LegendEntry> legend = {
-      {{0, 0, 0, 1}, "0: error < 1/16 texel, nothing hidden, equal"},
-      {{30 / 255.f, 20 / 255.f, 60 / 255.f, 1}, "error 1/16 texel"},
-      {{220 / 255.f, 40 / 255.f, 40 / 255.f, 1}, "error 1 texel, share 1/2, 4 levels"},
-      {{1, 240 / 255.f, 80 / 255.f, 1}, "error 16+ texels, share 1, 8+ levels"},
-      {{110 / 255.f, 110 / 255.f, 115 / 255.f, 1}, "area ratio 1"},
-      {{40 / 255.f, 80 / 255.f, 1, 1}, "1/4 or less"},
-      {{230 / 255.f, 60 / 255.f, 200 / 255.f, 1}, "16 or more"},
-  };
-  const std::vector<L::Text> notes = {
-      L::Text(header + ". Eq. 2: forward differences of the parallax-shifted coordinate against the top plane's "
-                       "analytic derivatives (what M1..M5 use); steps: forward neighbours whose rays end more than "
-                       "half the relief apart (") +
-          M("{eq2_step_pixels|%.0f} px)."),
-      M("Fig. 4, hidden share by footprint (level-0 texels): <=8 {hidden_texel_share[footprint<=8]|%.3f} +- "
-        "{hidden_texel_share[footprint<=8]_error|%.3f}, 8..32 {hidden_texel_share[footprint8..32]|%.3f}, 32..128 "
-        "{hidden_texel_share[footprint32..128]|%.3f}, >128 {hidden_texel_share[footprint>128]|%.3f} +- "
-        "{hidden_texel_share[footprint>128]_error|%.3f} (every 4th pixel each way)."),
-      M("Fig. 6, row walk of M5 on its levels: texels counted twice with M5's buffer (the index where the walk from "
-        "the left stopped) {double_counted_texels[buffer]|%.0f}; without it {double_counted_texels[no_buffer]|%.0f} "
-        "of {row_walk_texels|%.0f} (rows with no hidden texel walked twice); the seed's walk without the bound "
-        "{double_counted_texels[seed_walk_no_bound]|%.0f} (the same trace stops it at the same texel)."),
-  };
+  const glm::vec4 black{0, 0, 0, 1}, dark{30 / 255.f, 20 / 255.f, 60 / 255.f, 1},
+      red{220 / 255.f, 40 / 255.f, 40 / 255.f, 1}, yellow{1, 240 / 255.f, 80 / 255.f, 1};
+  std::vector<L::Captioned> pics;
+  std::vector<ts::LegendEntry> legend;
+  std::vector<L::Text> notes;
+  size_t firstPicture = 0;
+  if (seedF) {
+    firstPicture = 4;
+    pics = {
+        {"M3, corrected F", M("{corrected_F_psnr_db|%.3f} dB vs R")},
+        {"M3, the seed's F", M("{seed_F_psnr_db|%.3f} dB vs R")},
+        {"|seed's F - corrected|",
+         M("{seed_F_error_px|%.0f} px differ, by {seed_F_max_diff_levels|%.0f} levels at most")},
+    };
+    legend = {{black, "equal"}, {dark, "under 1 level"}, {red, "4 levels"}, {yellow, "8 levels or more"}};
+    notes = {L::Text(header + "; M3 EWA with Heckbert's F = (Ux Vy - Uy Vx)^2 and with the seed's (Ux Vy + Uy Vx)^2 "
+                              "(plus A + C + 1, the unit reconstruction term, in both); R: the traced reference.")};
+  } else {
+    std::string first, last;  // the smallest and largest footprint bins with sampled pixels
+    for (const Bin& b : r.cpu.bins)
+      if (b.pixels > 0) last = b.name, first = first.empty() ? b.name : first;
+    pics = {
+        {"Eq. 2, shifted (u,v)", M("median {eq2_derivative_error_texels[frame]|%.2f} texels, "
+                                   "{eq2_derivative_error_texels[steps]|%.1f} at steps")},
+        {"Eq. 2 as printed (v - u)", M("median {eq2_derivative_error_texels[typo]|%.0f} texels")},
+        {"Fig. 3: area shifted/plain",
+         M("median {footprint_area_ratio[parallax/plain]|%.2f}, at steps {footprint_area_ratio[steps]|%.1f}")},
+        {"Fig. 4: hidden share", M("{" + first + "|%.3f} (smallest) .. {" + last + "|%.3f} (largest)")},
+    };
+    legend = {
+        {black, "0, none"},
+        {dark, "1/16 texel"},
+        {red, "1 texel, share 1/2"},
+        {yellow, "16+ texels, share 1"},
+        {{110 / 255.f, 110 / 255.f, 115 / 255.f, 1}, "area ratio 1"},
+        {{40 / 255.f, 80 / 255.f, 1, 1}, "<= 1/4"},
+        {{230 / 255.f, 60 / 255.f, 200 / 255.f, 1}, ">= 16"},
+    };
+    // Fig. 4's bins that hold sampled pixels (a small render has no smallest footprints).
+    std::string bins;
+    for (const Bin& b : r.cpu.bins)
+      if (b.pixels > 0)
+        bins += (bins.empty() ? "" : ", ") +
+                b.name.substr(b.name.find("footprint") + 9, b.name.size() - b.name.find("footprint") - 10) + " {" +
+                b.name + "|%.3f} +- {" + b.name + "_error|%.3f}";
+    notes = {
+        L::Text(header + "; Eq. 2 against the analytic derivatives; steps: neighbours' rays end > half the relief "
+                         "apart (") +
+            M("{eq2_step_pixels|%.0f} px)."),
+        M("Fig. 4, hidden share by footprint (level-0 texels): " + bins + "."),
+        M("Fig. 6, texels M5's row walk counts twice: with its buffer (where the left walk stopped) "
+          "{double_counted_texels[buffer]|%.0f}, without it {double_counted_texels[no_buffer]|%.0f} of "
+          "{row_walk_texels|%.0f}, the seed's walk unbounded {double_counted_texels[seed_walk_no_bound]|%.0f}."),
+    };
+  }
   L::pictureFigure(
       f, pics,
       [&](size_t k, const ts::Rect& rect) {
-        f.panels.push_back(
-            ts::layout::texturePanel("causes_" + std::to_string(k), rect, f.addTexture(r.textures[k]), "image"));
+        f.panels.push_back(ts::layout::texturePanel("causes_" + std::to_string(firstPicture + k), rect,
+                                                    f.addTexture(r.textures[firstPicture + k]), "image"));
       },
-      legend, notes, {0, float(r.cpu.width) / float(r.cpu.height), 1, 1, 10, 2, 150}, 3, ts::Align::Left);
+      legend, notes, {0, float(r.cpu.width) / float(r.cpu.height), 1, 1, 10, 2, 110}, 1, ts::Align::Left);
 }
 }  // namespace pax::causes
