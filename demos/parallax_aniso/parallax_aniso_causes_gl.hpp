@@ -140,7 +140,9 @@ inline void build(ts::Frame& f, const Result& r, const ts::Measurements& m, cons
         {{230 / 255.f, 60 / 255.f, 200 / 255.f, 1}, ">= 16"},
     };
     // Fig. 4's bins that hold sampled pixels (a small render has no smallest footprints); their bounds given.
-    L::Text bins("Fig. 4, hidden share by footprint (level-0 texels):");
+    // A narrow frame (a small window beside its panel) gets the short notes, so that its pictures keep some room.
+    const bool narrow = f.width < 900;
+    L::Text bins(narrow ? "Fig. 4 share by footprint:" : "Fig. 4, hidden share by footprint (level-0 texels):");
     for (const Bin& b : r.cpu.bins) {
       if (b.pixels == 0) continue;
       const L::Text lo = L::given("footprint_bin_from", b.lo, "%.0f"), hi = L::given("footprint_bin_to", b.hi, "%.0f");
@@ -148,17 +150,23 @@ inline void build(ts::Frame& f, const Result& r, const ts::Measurements& m, cons
              (b.lo <= 0     ? L::Text("<=") + hi
               : b.hi > 1e29 ? L::Text(">") + lo
                             : lo + L::Text("..") + hi) +
-             M(" {" + b.name + "|%.3f} +- {" + b.name + "_error|%.3f}");
+             M(" {" + b.name + "|%.3f}" + (narrow ? "" : " +- {" + b.name + "_error|%.3f}"));
     }
-    notes = {
-        L::Text(header + "; Eq. 2 against the analytic derivatives; steps: neighbours' rays end > half the relief "
-                         "apart (") +
-            M("{eq2_step_pixels|%.0f} px)."),
-        bins + L::Text("."),
-        M("Fig. 6, texels M5's row walk counts twice: with its buffer (where the left walk stopped) "
-          "{double_counted_texels[buffer]|%.0f}, without it {double_counted_texels[no_buffer]|%.0f} of "
-          "{row_walk_texels|%.0f}, the seed's walk unbounded {double_counted_texels[seed_walk_no_bound]|%.0f}."),
-    };
+    if (narrow)
+      notes = {L::Text(header + "; steps ") + M("{eq2_step_pixels|%.0f} px."), bins + L::Text("."),
+               M("Fig. 6 counted twice: buffer {double_counted_texels[buffer]|%.0f}, none "
+                 "{double_counted_texels[no_buffer]|%.0f} of {row_walk_texels|%.0f}, seed's walk "
+                 "{double_counted_texels[seed_walk_no_bound]|%.0f}.")};
+    else
+      notes = {
+          L::Text(header + "; Eq. 2 against the analytic derivatives; steps: neighbours' rays end > half the relief "
+                           "apart (") +
+              M("{eq2_step_pixels|%.0f} px)."),
+          bins + L::Text("."),
+          M("Fig. 6, texels M5's row walk counts twice: with its buffer (where the left walk stopped) "
+            "{double_counted_texels[buffer]|%.0f}, without it {double_counted_texels[no_buffer]|%.0f} of "
+            "{row_walk_texels|%.0f}, the seed's walk unbounded {double_counted_texels[seed_walk_no_bound]|%.0f}."),
+      };
   }
   L::pictureFigure(
       f, pics,
