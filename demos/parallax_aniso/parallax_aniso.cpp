@@ -262,7 +262,7 @@ class ParallaxAniso final : public ts::Scene {
     m.detail = shown_;
     // Seed 003's equations measured (parallax_aniso_causes_gl.hpp), once per state.
     if (view_ == kCauses || view_ == kSeedF) {
-      if (!causes_ || causesKey_ != key) causes_ = causes::measure(gl, *table_, relief(), accel_), causesKey_ = key;
+      if (!causes_ || causesKey_ != key) causes_ = causes::measure(gl, *table_, relief(), accel_, &r), causesKey_ = key;
       causes::addMeasurements(m, *causes_);
       m.detail = causes_;
     }

@@ -44,11 +44,20 @@ inline ts::Image renderSeedF(ReliefGL& gl, const Camera& cam, const Relief& rel,
   return gl.render(cam, rel, kEwa, po);
 }
 
-inline std::shared_ptr<const Result> measure(ReliefGL& gl, const Table& t, const Relief& rel, bool accel) {
+// `record` (may be null): the seed-F pass is drawn anew with its GL calls
+// recorded, for the figure's listing (as the table's passes are).
+inline std::shared_ptr<const Result> measure(ReliefGL& gl, const Table& t, const Relief& rel, bool accel,
+                                             ts::Renderer* record = nullptr) {
   auto r = std::make_shared<Result>();
   r->cpu = measureCpu(t.cam, rel);
   const ts::Image& corrected = t.rows[size_t(kEwa)].image;
-  r->seedF = renderSeedF(gl, t.cam, rel, accel);
+  ts::gl::CallList calls;
+  if (record) {
+    gl.release();
+    calls = ts::recordRender(*record, [&] { r->seedF = renderSeedF(gl, t.cam, rel, accel); });
+  } else {
+    r->seedF = renderSeedF(gl, t.cam, rel, accel);
+  }
   r->seedFChanged = ts::probe::countDiffering(r->seedF, corrected, 0);
   r->seedFMaxDiff = maxDiff(r->seedF, corrected);
   r->seedFPsnr = psnr(r->seedF, t.referenceImage, nullptr);
@@ -60,6 +69,8 @@ inline std::shared_ptr<const Result> measure(ReliefGL& gl, const Table& t, const
                  picture(corrected, "ewa"),
                  picture(r->seedF, "causes_ewa_seed_f"),
                  picture(diffPicture(r->seedF, corrected), "causes_seed_f_diff")};
+  r->textures[4].renderedBy = t.rows[size_t(kEwa)].calls;
+  r->textures[5].renderedBy = calls;
   return r;
 }
 
