@@ -50,6 +50,7 @@ inline std::shared_ptr<const Result> measure(ReliefGL& gl, const Table& t, const
                                              ts::Renderer* record = nullptr) {
   auto r = std::make_shared<Result>();
   r->cpu = measureCpu(t.cam, rel);
+  ts::measureProgress(0.95);  // a superseded measurement (measureCpu stopped early) throws here, never cached
   const ts::Image& corrected = t.rows[size_t(kEwa)].image;
   ts::gl::CallList calls;
   if (record) {
