@@ -29,6 +29,7 @@
 //     (from the right only after a hidden texel) without the bound.
 #pragma once
 #include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -87,7 +88,7 @@ inline double quantile(std::vector<double> v, double q) {
 inline double footprintArea(glm::dvec2 gx, glm::dvec2 gy) {
   const ts::ewa::Ellipse e = ts::ewa::ellipse(gx.x, gx.y, gy.x, gy.y, false);
   const double g = e.A * e.C - 0.25 * e.B * e.B;
-  return g > 0 ? M_PI * e.F / std::sqrt(g) : 0.0;
+  return g > 0 ? glm::pi<double>() * e.F / std::sqrt(g) : 0.0;
 }
 
 // The level-0 texels inside the reconstructed ellipse of (gx, gy) (texels)
