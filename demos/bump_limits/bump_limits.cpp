@@ -11,6 +11,15 @@
 // stores, per texel, the horizon's elevation in 8 directions; a pixel is dark when the light's elevation is below
 // the horizon interpolated at its azimuth: it leaves far fewer such pixels (bump_self_shadow_px[horizon]).
 //
+// The same on bump_mapping's two-light torus (view torus): the bumps displace the torus along its normal; plain
+// bump mapping lights pixels the displaced torus shadows from a light their bumped normal faces
+// (bump_self_shadow_torus_px[none], against shadow rays traced on the CPU from the displaced point at each pixel's
+// (s, t), read back from GL); a horizon map per texel (8 azimuths in the tangent frame, the near bumps along the
+// surface and the ring across the hole), looked up for both lights, leaves far fewer
+// (bump_self_shadow_torus_px[horizon]); looked up a quarter turn off, or made of the smooth torus, it leaves many.
+// Beside it a polynomial texture map (6 coefficients a texel, fitted to the horizon-shadowed diffuse term over
+// light directions): its fit's error (bump_ptm_fit_rms_levels) and each picture's RMS against the traced one.
+//
 // The representations' claim (view methods): Blinn's formula from the heights, a normal map and an offset-vector
 // map (bu, bv along two vectors perpendicular to n, seed 001) each give a normal within a measured angle of the
 // displaced surface's (bump_normal_error_deg[*]).  With the parameterisation sheared (dp/ds and dp/dt at theta, keys
@@ -25,7 +34,7 @@
 // close to the reference at every distance (bump_distance_rms_levels[super4x4]).
 //
 // Keys (each is also a flag, see --help):
-//   v      view: shadows | methods | distance
+//   v      view: shadows | methods | distance | torus
 //   e / E  the light's elevation, degrees (shadows)        . / ,  its azimuth, degrees (shadows)
 //   + / -  the shear angle theta between dp/ds and dp/dt   d      distance: 1 | 2 | 4 | 8 (distance)
 //
@@ -37,6 +46,9 @@
 //   n' = n + bu e1 + bv e2,  e1, e2 perpendicular to n                       the offset-vector map
 //   true normal, sheared: (Ps + z_s n) x (Pt + z_t n),  Ps . Pt = cos theta; orthogonal method: (-z_s, -z_t, 1)
 //   c = A + (1 - A) max(n . L, 0) lit                                        the shading, grey, A = 0.1 ambient
+//   torus (bump_limits_torus.hpp): n' = normalize(N - P_s/|Q_s| T - P_t/|Q_t| B),  c = A + sum_i I_i max(n'.L_i, 0)
+//   lit_i, the light's azimuth and elevation taken in (T, B, N); the reference: X = Q + P N, shadowed by light i
+//   when X + sigma L_i is inside the displaced torus (rho < r + P(theta, phi)) for some sigma > 0
 //
 // What the GL does (bump_limits_gl.hpp, passes of measure() read back and shown as pictures):
 //   glUseProgram(p);  the fragment shader: central differences of texture2D(heights, st +- step), the normal and
@@ -44,7 +56,8 @@
 //   glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA8, ...) each level, GL_LINEAR_MIPMAP_LINEAR   the mipmapped heights
 //   the baked shading: the shader's picture read back and drawn with glTexEnvi(GL_TEXTURE_ENV,
 //   GL_TEXTURE_ENV_MODE, GL_REPLACE), GL_NEAREST, one pixel a texel, no shader
-// Listings: book_figures/bump_limits_shadows.gl.txt, bump_limits_methods.gl.txt, bump_limits_distance.gl.txt.
+// Listings: book_figures/bump_limits_shadows.gl.txt, bump_limits_methods.gl.txt, bump_limits_distance.gl.txt,
+// bump_self_shadow_torus.gl.txt.
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -67,16 +80,20 @@ class BumpLimits final : public ts::Scene {
            "directions) against the displaced surface's shadows ray-marched on the CPU.  Methods: Blinn's formula,\n"
            "a normal map and an offset-vector map against the exact normal; a sheared parameterisation; shading\n"
            "baked for one light.  Distance: the bumps at 1x-8x unfiltered, mipmapped and 4x4 supersampled against\n"
-           "an 8x8 supersampled reference.";
+           "an 8x8 supersampled reference.  Torus: the same self-shadowing on bump_mapping's two-light torus, the\n"
+           "displaced torus's shadows traced on the CPU, a horizon map looked up for both lights.";
   }
   std::vector<std::string> claim() const override {
     if (view_ == 1) return {"bump_normal_error_deg*", "bump_shear_error_deg*", "bump_baked*"};
     if (view_ == 2) return {"bump_distance_rms_levels*", "bump_tilt_lost_deg*"};
+    if (view_ == 3) return {"bump_self_shadow_torus_px*"};
     return {"bump_self_shadow_px*"};
   }
   void addOptions(ts::Options& o) override {
-    o.addEnum("view", &view_, {"shadows", "methods", "distance"},
-              "self-shadowing and horizon maps | normal maps, offset maps, shear, baking | bumps at a distance", 'v');
+    o.addEnum("view", &view_, {"shadows", "methods", "distance", "torus"},
+              "self-shadowing and horizon maps | normal maps, offset maps, shear, baking | bumps at a distance | "
+              "self-shadowing on the two-light torus",
+              'v');
     o.addInt("elevation", &elevation_, 5, 60, "the light's elevation above the plane, degrees (shadows)", 'E', 'e', 5);
     o.addInt("azimuth", &azimuth_, 0, 345, "the light's azimuth, degrees from +x (shadows)", '.', ',', 15);
     o.addInt("shear", &shear_, 15, 90, "degrees between dp/ds and dp/dt (methods)", '+', '-', 15);
@@ -116,7 +133,17 @@ class BumpLimits final : public ts::Scene {
          1000,
          480,
          "RMS at 8x: unfiltered {bump_distance_rms_levels[unfiltered][8x]}, mipmapped "
-         "{bump_distance_rms_levels[mipmapped][8x]}, 4x4 {bump_distance_rms_levels[super4x4][8x]} levels."}};
+         "{bump_distance_rms_levels[mipmapped][8x]}, 4x4 {bump_distance_rms_levels[super4x4][8x]} levels."},
+        {"bump_self_shadow_torus",
+         "Bump mapping's limits: self-shadowing on the two-light torus (seed 001)",
+         "The bumped torus of bump_mapping under its two lights: plain bump mapping lights pixels the displaced "
+         "torus shadows; horizon mapping (8 azimuths a texel, looked up for both lights) darkens them; the displaced "
+         "torus's shadows traced on the CPU from each pixel's (s, t); where horizon mapping differs.",
+         {"--view", "torus"},
+         1000,
+         480,
+         "Shadowed pixels plain bump mapping lights: {bump_self_shadow_torus_px[none]}; horizon mapping: "
+         "{bump_self_shadow_torus_px[horizon]}."}};
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override;
   ts::Measurements measure(ts::Renderer& r) override {
@@ -126,6 +153,7 @@ class BumpLimits final : public ts::Scene {
     if (view_ == 0) measureShadows(r, azimuth_, elevation_, out, pic);
     if (view_ == 1) measureMethods(r, shear_, out, pic);
     if (view_ == 2) measureDistance(r, kDistances[distance_], out, pic);
+    if (view_ == 3) measureTorus(r, out, pic);
     out.detail = pic;
     return out;
   }
@@ -164,6 +192,31 @@ ts::Frame BumpLimits::build(int width, int height, const ts::Measurements& measu
                       "(and darkens {bump_self_shadow_px[horizon_extra]|%.0f} more)."),
                 M("Control: the horizon looked up a quarter turn from the light lights "
                   "{bump_self_shadow_px[horizon_wrong_azimuth]|%.0f} of the shadowed pixels.")});
+  } else if (view_ == 3) {
+    pictureRow(f,
+               {{&s[0], "plain bump mapping", M("{bump_self_shadow_torus_px[none]|%.0f} shadowed px lit")},
+                {&s[1], "horizon map, " + G("directions of the horizon map", kDirections) + " azimuths",
+                 M("{bump_self_shadow_torus_px[horizon]|%.0f} shadowed px lit")},
+                {&s[2], "traced (CPU)", M("{bump_torus_shadowed_px|%.0f} px shadowed")},
+                {&s[3], "horizon map vs trace",
+                 M("{bump_self_shadow_torus_px[horizon]|%.0f} red, {bump_self_shadow_torus_px[horizon_extra]|%.0f} "
+                   "blue")},
+                {&s[4], "polynomial texture map", M("RMS {bump_shadow_torus_rms_levels[ptm]|%.1f} levels")}},
+               {{kMissed, "shadowed in the trace, lit by the horizon map"},
+                {kExtra, "darkened by the horizon map, lit in the trace"},
+                {kLitBoth, "lit in both"},
+                {kDarkBoth, "dark in both"}},
+               {M("Of {bump_torus_shadowed_px|%.0f} torus pixels the displaced torus shadows, plain bump mapping "
+                  "lights {bump_self_shadow_torus_px[none]|%.0f} from the shadowing light, the horizon map "
+                  "{bump_self_shadow_torus_px[horizon]|%.0f} (and darkens "
+                  "{bump_self_shadow_torus_px[horizon_extra]|%.0f} more)."),
+                M("Controls: the horizon a quarter turn off the light "
+                  "{bump_self_shadow_torus_px[horizon_wrong_azimuth]|%.0f}; the smooth torus's horizon "
+                  "{bump_self_shadow_torus_px[horizon_smooth]|%.0f}."),
+                M("RMS against the trace: plain {bump_shadow_torus_rms_levels[none]|%.1f}, horizon "
+                  "{bump_shadow_torus_rms_levels[horizon]|%.1f}, PTM {bump_shadow_torus_rms_levels[ptm]|%.1f} levels; "
+                  "the PTM's fit {bump_ptm_fit_rms_levels|%.1f} ({bump_ptm_fit_rms_levels[unshadowed]|%.1f} "
+                  "unshadowed).")});
   } else if (view_ == 1) {
     L::Text table = "orthogonal-axes method's normal error against shear: ";
     for (double th : kThetas) {

@@ -283,4 +283,149 @@ TEST(BumpLimits, DistanceAliasesUnfilteredAndSupersamplingAnswersIt) {
   EXPECT_GT(v("bump_tilt_lost_deg[mipmapped]", 8), 0.25 * v("bump_tilt_deg[reference]", 8));
   EXPECT_LT(std::fabs(v("bump_tilt_lost_deg[super4x4]", 8)), 0.25 * v("bump_tilt_lost_deg[mipmapped]", 8));
 }
+
+// View torus.  The plain picture is Blinn's perturbed normal on the torus lit by the two lights, recomputed on the
+// CPU at each pixel's (s, t) as GL read it back (the same 8-bit heights, bilinear); the reference's trace and the
+// horizon map are checked against closed forms on the smooth torus; the claim's numbers against their controls.
+double torusGrey(const TorusField& f, double s, double t, const glm::dvec3 L[2], glm::dvec2 e = glm::dvec2(0),
+                 const double lit[2] = nullptr) {
+  const ts::TorusFrame fr = ts::torusFrameAt(kTorusR, kTorusr, {s, t});
+  const double x = s * kRepS * kTexels, y = t * kRepT * kTexels, k = kHeightWorld / kHeightMax;
+  // dP/ds, dP/dt: central differences a texel apart (the shader's), e moving each difference
+  const double ps = (k * (f.tile.at(x + 1, y) - f.tile.at(x - 1, y)) + e.x) * kRepS * kTexels / 2;
+  const double pt = (k * (f.tile.at(x, y + 1) - f.tile.at(x, y - 1)) + e.y) * kRepT * kTexels / 2;
+  const glm::dvec3 n = glm::normalize(fr.N - ps / glm::length(fr.Qs) * fr.T - pt / glm::length(fr.Qt) * fr.B);
+  double g = kAmbient;
+  for (int i = 0; i < 2; ++i) g += kTorusIntensity[i] * std::max(glm::dot(n, L[i]), 0.0) * (lit ? lit[i] : 1.0);
+  return 255 * g;
+}
+// The horizon map's lookup as the shader makes it: the light's azimuth and elevation in the smooth frame (T, B, N),
+// the two nearest azimuths' angles interpolated; returns elevation - horizon, radians (lit when > 0).
+double torusAboveHorizon(const std::vector<ts::Image>& maps, double s, double t, const glm::dvec3& L,
+                         double shiftDeg = 0) {
+  const ts::TorusFrame fr = ts::torusFrameAt(kTorusR, kTorusr, {s, t});
+  const double az = std::fmod(std::atan2(glm::dot(L, fr.B), glm::dot(L, fr.T)) + shiftDeg * kPi / 180 + 4 * kPi,
+                              2 * kPi);
+  const double el = std::asin(std::clamp(glm::dot(L, fr.N), -1.0, 1.0));
+  const double k = az / (kPi / 4), x = s * kRepS * kTexels, y = t * kRepT * kTexels;
+  const int k0 = int(std::floor(k)) % 8, k1 = (k0 + 1) % 8;
+  auto pick = [&](int d) { return (bilinear(maps[size_t(d / 4)], x, y, d % 4) - 0.5) * kPi; };
+  return el - ((1 - (k - std::floor(k))) * pick(k0) + (k - std::floor(k)) * pick(k1));
+}
+// The horizon picture against the equation with the horizon map's lookup, pixels within half a degree of their
+// horizon left out (an 8-bit angle step is 0.7 degrees; GL_LINEAR's weights move it a little more).
+Fit fitTorusHorizon(const Pictures& p, const ts::Image& img, const glm::dvec3 L[2], const std::vector<ts::Image>& maps,
+                    double shiftDeg) {
+  const TorusField f;
+  Fit fit;
+  const int n = kTorusPixels;
+  for (int y = 1; y < n - 1; y += 2)
+    for (int x = 1; x < n - 1; x += 2) {
+      auto st = [&](int xx, int yy) { return p.st[size_t(yy) * n + size_t(xx)]; };
+      if (st(x, y).x < 0 || st(x - 1, y).x < 0 || st(x + 1, y).x < 0 || st(x, y - 1).x < 0 || st(x, y + 1).x < 0)
+        continue;
+      const glm::dvec2 q = st(x, y);
+      double lit[2];
+      bool near = false;
+      for (int k = 0; k < 2; ++k) {
+        const double a = torusAboveHorizon(maps, q.x, q.y, L[k], shiftDeg);
+        near |= std::fabs(a) < 0.5 * kPi / 180;
+        lit[k] = a > 0;
+      }
+      if (near) continue;
+      const double want = torusGrey(f, q.x, q.y, L, glm::dvec2(0), lit);
+      const double e = 2 * kHeightWorld / 255;
+      double worst = 0;
+      for (int c = 0; c < 4; ++c)
+        worst = std::max(worst, std::fabs(torusGrey(f, q.x, q.y, L, {c & 1 ? e : -e, c & 2 ? e : -e}, lit) - want));
+      ++fit.probed;
+      fit.off += std::fabs(img.at(x, y).r - want) > worst + 2;
+    }
+  return fit;
+}
+Fit fitTorus(const Pictures& p, const ts::Image& img, const glm::dvec3 L[2]) {
+  const TorusField f;
+  Fit fit;
+  const int n = kTorusPixels;
+  for (int y = 1; y < n - 1; y += 2)
+    for (int x = 1; x < n - 1; x += 2) {
+      auto st = [&](int xx, int yy) { return p.st[size_t(yy) * n + size_t(xx)]; };
+      if (st(x, y).x < 0 || st(x - 1, y).x < 0 || st(x + 1, y).x < 0 || st(x, y - 1).x < 0 || st(x, y + 1).x < 0)
+        continue;  // the silhouette's pixels: a neighbour off the torus
+      const glm::dvec2 q = st(x, y);
+      const double want = torusGrey(f, q.x, q.y, L);
+      // The filtered heights' 8 bits: each difference may be 2 steps of kHeightWorld / 255 off; plus 2 levels.
+      const double e = 2 * kHeightWorld / 255;
+      double worst = 0;
+      for (int c = 0; c < 4; ++c)
+        worst = std::max(worst, std::fabs(torusGrey(f, q.x, q.y, L, {c & 1 ? e : -e, c & 2 ? e : -e}) - want));
+      ++fit.probed;
+      fit.off += std::fabs(img.at(x, y).r - want) > worst + 2;
+    }
+  return fit;
+}
+
+TEST(BumpLimits, TorusPicturesAreTheEquationAndHorizonMappingLeavesFewShadowsLit) {
+  Probe p({"--view", "torus"});
+  ASSERT_NE(p.pictures, nullptr);
+  ASSERT_EQ(p.pictures->shown.size(), 5u);
+  expectFigureShowsPictures(p.demo, *p.pictures, 1000, 480);
+  const ts::Image plain = p.picture(0), hor = p.picture(1);  // row 0 at the top, as pictures->st
+  const glm::dvec3 L[2] = {torusLight(0), torusLight(1)};
+  const Fit fit = fitTorus(*p.pictures, plain, L);
+  EXPECT_GT(fit.probed, 3000);
+  EXPECT_EQ(fit.off, 0);
+  // Control: light 1 moved 30 degrees round (in the eye's frame) does not fit.
+  const double az = (kTorusLights[0][0] + 30) * kPi / 180, el = kTorusLights[0][1] * kPi / 180;
+  const glm::dvec3 moved[2] = {eyeToWorld({std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)}),
+                               L[1]};
+  EXPECT_GT(fitTorus(*p.pictures, plain, moved).off, fit.probed / 10);
+  // The horizon picture is the same shading with each light's horizon test (the map recomputed here from the
+  // CPU's equations); control: the lookup a quarter turn off does not fit it.
+  const std::vector<ts::Image> maps = torusHorizonMaps(TorusField());
+  const Fit hfit = fitTorusHorizon(*p.pictures, hor, L, maps, 0);
+  EXPECT_GT(hfit.probed, 3000);
+  EXPECT_EQ(hfit.off, 0);
+  EXPECT_GT(fitTorusHorizon(*p.pictures, hor, L, maps, 90).off, hfit.probed / 50);
+  // Horizon mapping only darkens: each of its pixels is plain bump mapping's or darker (a level of rounding).
+  long brighter = 0, darker = 0;
+  for (int y = 0; y < kTorusPixels; ++y)
+    for (int x = 0; x < kTorusPixels; ++x) {
+      brighter += hor.at(x, y).r > plain.at(x, y).r + 1;
+      darker += hor.at(x, y).r + 1 < plain.at(x, y).r;
+    }
+  EXPECT_EQ(brighter, 0);
+  EXPECT_GT(darker, 0);
+
+  // The claim, with its controls: plain bump mapping lights shadowed pixels; horizon mapping leaves under a
+  // quarter of them; looked up a quarter turn off, or made of the smooth torus, it leaves more than twice its own.
+  const ts::Measurements& m = p.demo.measured;
+  EXPECT_GT(value(m, "bump_self_shadow_torus_px[none]"), 0);
+  EXPECT_LT(value(m, "bump_self_shadow_torus_px[horizon]"), 0.25 * value(m, "bump_self_shadow_torus_px[none]"));
+  EXPECT_GT(value(m, "bump_self_shadow_torus_px[horizon_wrong_azimuth]"),
+            2 * value(m, "bump_self_shadow_torus_px[horizon]"));
+  EXPECT_GT(value(m, "bump_self_shadow_torus_px[horizon_smooth]"), 2 * value(m, "bump_self_shadow_torus_px[horizon]"));
+  // Against the traced picture horizon mapping is closer than plain bump mapping, and so is the PTM; the PTM's
+  // biquadratic fits its shadowed samples worse than the same fit without the shadows (they are not smooth).
+  EXPECT_LT(value(m, "bump_shadow_torus_rms_levels[horizon]"), value(m, "bump_shadow_torus_rms_levels[none]"));
+  EXPECT_LT(value(m, "bump_shadow_torus_rms_levels[ptm]"), value(m, "bump_shadow_torus_rms_levels[none]"));
+  EXPECT_GT(value(m, "bump_ptm_fit_rms_levels"), value(m, "bump_ptm_fit_rms_levels[unshadowed]"));
+
+  // The trace: the outer equator lit along its normal is not shadowed; the inner equator lit along its normal,
+  // across the hole, is (the far side of the ring is in the way); the far side's outer equator, lit by that same
+  // light along its own normal, is not (a control).
+  const TorusField f;
+  EXPECT_FALSE(torusShadowed(f, 0, 0, {0, 0, 1}));
+  EXPECT_TRUE(torusShadowed(f, 0, 0.5, {0, 0, -1}));
+  EXPECT_FALSE(torusShadowed(f, 0.5, 0, {0, 0, -1}));
+  // The horizon of the smooth torus: along the ring at the inner equator the surface is the circle of radius
+  // R - r curving towards the normal, so a point an arc sigma away is sigma / (2 (R - r)) above the tangent
+  // plane; around the tube it curves away (below 0).
+  double last = 0;
+  for (double sg = kHorizonFirst; sg <= kHorizonReachWorld; sg += std::max(kHorizonFirst, kHorizonGrowth * sg))
+    last = sg;
+  EXPECT_NEAR(torusHorizonAngle(f, 0, 0.5, 0, 0), last / (2 * (kTorusR - kTorusr)), 1e-9);
+  EXPECT_LT(torusHorizonAngle(f, 0, 0, kPi / 2, 0), 0);
+  EXPECT_GT(torusHorizonAngle(f, 0, 0.5, 0, 0), 0.1);  // control: the same direction seen from the inner side
+}
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bump_limits_gl.hpp"
+#include "bump_limits_torus.hpp"
 #include "common/core/layout.hpp"
 #include "common/core/plot.hpp"
 #include "common/core/scene.hpp"
@@ -31,6 +32,10 @@ inline ts::Rgba rgba(glm::vec4 c) { return {u8(c.r), u8(c.g), u8(c.b), 255}; }
 struct Pictures {
   int view = -1;                       // the view they are of (a window's key may have changed it since)
   std::vector<ts::TextureDesc> shown;  // the view's pictures, in order
+  // View torus: each pixel's (s, t) as GL read it back (s < 0 off the torus), row 0 at the top, and what the
+  // reference found there (bit k: light k+1 shadows it), for the test.
+  std::vector<glm::dvec2> st;
+  std::vector<uint8_t> rayShadow;
 };
 
 // The texel point at pixel (x, y) of a picture read back (row 0 at the top), `zoom` pixels a texel.
@@ -110,6 +115,127 @@ inline void measureShadows(ts::Renderer& r, double az, double elev, ts::Measurem
                glPicture(shadeHorizon, "horizon mapping", horizonCalls),
                shownPicture(rayPic, "bump shading darkened where the ray march shadows"),
                shownPicture(diff, "horizon mapping against the ray march")};
+}
+
+// ---- view torus ---------------------------------------------------------------------------------------------------
+inline void measureTorus(ts::Renderer& r, ts::Measurements& ms, Pictures& pic) {
+  auto put = [&](const std::string& n, double v, const std::string& m) { ms.push_back({n, v, m}); };
+  const TorusField field;
+  const HorizonAngles angles = torusHorizonAngles(field);
+  const std::vector<ts::Image> maps = torusHorizonMaps(angles), smoothMaps = torusHorizonMaps(field, 0);
+  const Ptm ptm = fitPtm(field, angles);
+  ts::measureProgress(0.3);
+  TorusPass p;
+  p.maps = &maps;
+  p.output = TorusOutput::kS;
+  const ts::Image sImg = torusPass(r, p);
+  p.output = TorusOutput::kT;
+  const ts::Image tImg = torusPass(r, p);
+  p.output = TorusOutput::kDiffuse;
+  const ts::Image diffuse = torusPass(r, p);
+  TorusPass wrong = p;  // controls: the horizon looked up a quarter turn from the light; the smooth torus's horizon
+  wrong.azShiftDeg = 90;
+  const ts::Image wrongImg = torusPass(r, wrong);
+  TorusPass smooth = p;
+  smooth.maps = &smoothMaps;
+  const ts::Image smoothImg = torusPass(r, smooth);
+  const int n = kTorusPixels;
+  pic.st.assign(size_t(n) * n, glm::dvec2(-1));
+  pic.rayShadow.assign(size_t(n) * n, 0);
+  const glm::dvec3 L[2] = {torusLight(0), torusLight(1)};
+  long none = 0, missed = 0, extra = 0, shadowed = 0, wrongMissed = 0, smoothMissed = 0, covered = 0;
+  ts::Image diff(n, n), refPic(n, n);
+  auto litBit = [](uint8_t b, int k) { return k == 0 ? b >= 96 : (b % 128) >= 32; };  // b = 128 lit1 + 64 lit2
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) {
+      const ts::Rgba cs = sImg.at(x, y), ct = tImg.at(x, y), d = diffuse.at(x, y);
+      if (cs.b < 128) {
+        diff.set(x, y, {0, 0, 0, 255}), refPic.set(x, y, {0, 0, 0, 255});
+        continue;
+      }
+      ++covered;
+      const glm::dvec2 st((cs.r * 256 + cs.g) / 65535.0, (ct.r * 256 + ct.g) / 65535.0);
+      const size_t at = size_t(y) * n + size_t(x);
+      pic.st[at] = st;
+      bool anyNone = false, anyMissed = false, anyExtra = false, anyLitBoth = false, anyWrong = false,
+           anySmooth = false, anyShadow = false;
+      double grey = kAmbient;
+      for (int k = 0; k < 2; ++k) {
+        const uint8_t dk = k == 0 ? d.r : d.g;
+        const bool facing = dk > 0, hLit = litBit(d.b, k);
+        const bool traced = torusShadowed(field, st.x, st.y, L[k]), s = facing && traced;
+        pic.rayShadow[at] |= uint8_t(traced << k);
+        anyShadow |= traced;
+        anyNone |= s;
+        anyMissed |= s && hLit;
+        anyExtra |= facing && !s && !hLit;
+        anyLitBoth |= facing && !s && hLit;
+        anyWrong |= s && litBit(wrongImg.at(x, y).b, k);
+        anySmooth |= s && litBit(smoothImg.at(x, y).b, k);
+        if (!s) grey += kTorusIntensity[k] * dk / 255.0;
+      }
+      shadowed += anyShadow, none += anyNone, missed += anyMissed, extra += anyExtra;
+      wrongMissed += anyWrong, smoothMissed += anySmooth;
+      diff.set(x, y,
+               anyMissed    ? rgba(kMissed)
+               : anyExtra   ? rgba(kExtra)
+               : anyLitBoth ? rgba(kLitBoth)
+                            : rgba(kDarkBoth));
+      const uint8_t g = u8(std::min(grey, 1.0));
+      refPic.set(x, y, {g, g, g, 255});
+    }
+    if (y % 32 == 31) ts::measureProgress(0.3 + 0.6 * (y + 1) / n);
+  }
+  put("bump_self_shadow_torus_px[none]", double(none),
+      "pixels of the bumped torus that plain bump mapping lights (n' . L > 0) from a light whose ray from the "
+      "displaced surface's point at the same (s, t) hits the displaced torus (traced on the CPU)");
+  put("bump_self_shadow_torus_px[horizon]", double(missed),
+      "the same with horizon mapping (8 azimuths a texel, both lights): shadowed pixels it still lights");
+  put("bump_self_shadow_torus_px[horizon_extra]", double(extra),
+      "pixels horizon mapping darkens for a light that the trace finds unshadowed (and n' . L > 0)");
+  put("bump_self_shadow_torus_px[horizon_wrong_azimuth]", double(wrongMissed),
+      "shadowed pixels lit when the horizon is looked up a quarter turn from the light (a control)");
+  put("bump_self_shadow_torus_px[horizon_smooth]", double(smoothMissed),
+      "shadowed pixels lit by a horizon map of the smooth torus, the bumps left out (a control)");
+  put("bump_torus_shadowed_px", double(shadowed),
+      "torus pixels the trace shadows from either light (whichever way their bumped normal faces)");
+  put("bump_torus_covered_px", double(covered), "pixels the torus covers, of " + std::to_string(n * n));
+  ts::gl::CallList noneCalls, horizonCalls;
+  ts::Image shadeNone, shadeHorizon;
+  TorusPass shade;
+  shade.maps = &maps;
+  noneCalls = recorded(r, [&] { shadeNone = torusPass(r, shade); });
+  shade.horizon = 1;
+  horizonCalls = recorded(r, [&] { shadeHorizon = torusPass(r, shade); });
+  ts::Image shadePtm;
+  shade.horizon = 2, shade.ptm = &ptm;
+  const ts::gl::CallList ptmCalls = recorded(r, [&] { shadePtm = torusPass(r, shade); });
+  // Each picture against the traced one, over the torus's pixels.
+  auto rms = [&](const ts::Image& img) {
+    double se = 0;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        if (pic.st[size_t(y) * n + size_t(x)].x >= 0) {
+          const double d = double(img.at(x, y).r) - double(refPic.at(x, y).r);
+          se += d * d;
+        }
+    return std::sqrt(se / double(std::max(covered, 1L)));
+  };
+  put("bump_shadow_torus_rms_levels[none]", rms(shadeNone),
+      "RMS (8-bit levels) of plain bump mapping's picture against the traced shadows' over the torus's pixels");
+  put("bump_shadow_torus_rms_levels[horizon]", rms(shadeHorizon), "the same for horizon mapping");
+  put("bump_shadow_torus_rms_levels[ptm]", rms(shadePtm),
+      "the same for the polynomial texture map (6 coefficients a texel, fitted to the horizon-shadowed shading)");
+  put("bump_ptm_fit_rms_levels", 255 * ptm.fitRms,
+      "RMS (8-bit levels) of the PTM's biquadratic against the self-shadowed diffuse term it was fitted to, over "
+      "every texel's light directions");
+  put("bump_ptm_fit_rms_levels[unshadowed]", 255 * fitPtm(field, angles, false).fitRms,
+      "the same for a PTM fitted to the diffuse term without its shadows: the biquadratic's own error");
+  pic.shown = {glPicture(shadeNone, "plain bump mapping on the torus", noneCalls),
+               glPicture(shadeHorizon, "horizon mapping on the torus", horizonCalls),
+               shownPicture(refPic, "the displaced torus's traced shadows"),
+               shownPicture(diff, "horizon mapping against the traced shadows"),
+               glPicture(shadePtm, "a polynomial texture map on the torus", ptmCalls)};
 }
 
 // ---- view methods --------------------------------------------------------------------------------------------------

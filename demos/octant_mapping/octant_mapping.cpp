@@ -30,6 +30,9 @@
 //   ] / [  the table's u, by 1/16  left drag, wheel: orbit and zoom the octant
 //   click a raster pixel, or --pixel X,Y (Rogers' Px, Py: Py counts up from
 //   the bottom row, 0..31)
+//   --texture FILE  a picture (hand-drawn or scanned: PNG, JPEG, BMP) shown on
+//   the octant and as the pattern instead of the grid; the numbers stay the
+//   grid's (they count its line texels), and the figure says so under it
 //
 // What the GL does: the octant is one glBegin(GL_TRIANGLES) of
 // glTexCoord4f(u, w, 0, 1) + glVertex3f per vertex (octant_mapping_gl.hpp), the
@@ -56,6 +59,7 @@
 #include "common/core/orbit_camera.hpp"
 #include "common/core/scene.hpp"
 #include "common/gl/render.hpp"
+#include "common/core/user_texture.hpp"
 #include "octant_mapping_frames.hpp"  // the five views
 #include "octant_mapping_gl.hpp"      // the mesh and the GL renders of the raster
 #include "octant_mapping_math.hpp"
@@ -108,6 +112,7 @@ class OctantMapping final : public ts::Scene {
     o.addBool("animate", &animate_, "window: step the Catmull level once a second", 'a');
     o.addFloat("u", &s_.u, 0.0f, 1.0f, "the forward table's line u (the seed's: 0.25)", ']', '[', 1.0f / 16);
     s_.camera.addOptions(o);
+    picture_.addOption(o, "Rogers' 64 x 64 grid (the numbers stay the grid's)");
   }
   std::vector<ts::FigureSpec> figures() const override {
     return {
@@ -182,7 +187,21 @@ class OctantMapping final : public ts::Scene {
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override {
     frames::State s = s_;
     s.pixel = parsePixelOption(pixelText_);
-    return frames::build(s, width, height, measured);
+    if (!picture_.active()) return frames::build(s, width, height, measured);
+    // A picture instead of the grid (Rogers: a pattern may be mathematical, hand-drawn or scanned).  Every number
+    // counts the grid's line texels or is the mapping's geometry, so measure() keeps the grid; a line under the
+    // figure says so.
+    namespace L = ts::layout;
+    s.pattern = picture_.orDefault(patternTexture());
+    const float band = 2 * L::lineHeight(1) + 8;
+    ts::Frame f = frames::build(s, width, std::max(1, int(float(height) - band)), measured);
+    f.height = height;
+    L::caption(f, {8, float(height) - band, float(width) - 8, float(height) - 4},
+               "Pattern: " + picture_.path() +
+                   " (the octant and the pattern panels).  The fractions, counts and "
+                   "rasters are of Rogers' grid, which measure() keeps: they count its line texels.",
+               L::kAmber, 1);
+    return f;
   }
   ts::Measurements measure(ts::Renderer& r) override;
 
@@ -191,6 +210,7 @@ class OctantMapping final : public ts::Scene {
   void addShownExamples(glm::ivec2 P, const Add& add) const;
   frames::State s_;
   std::string pixelText_ = "21,15";
+  ts::UserTexture picture_;  // --texture FILE: the picture shown instead of the grid
   bool animate_ = false;
   long animFrames_ = 0;
   double animClock_ = 0;

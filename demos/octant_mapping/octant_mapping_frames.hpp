@@ -38,6 +38,7 @@ struct State {
   float u = 0.25f;
   glm::ivec2 pixel{21, 15};
   ts::OrbitCamera camera;
+  ts::TextureDesc pattern = patternTexture();  // the pattern shown: the grid, or --texture FILE's picture
 };
 
 // A method's values (empty: GL's, not measured yet).
@@ -129,7 +130,7 @@ inline Preimage addPreimage(ts::Frame& f, const ts::Rect& vp, int tex, glm::ivec
 // --- overview: octant | raster | the pixel on the pattern ---------------------------
 inline ts::Frame overviewView(const State& s, int width, int height, const GlRasters* gl) {
   ts::Frame f = L::blankFrame(width, height);
-  const int tex = f.addTexture(patternTexture());
+  const int tex = f.addTexture(s.pattern);
   L::FlowSpec spec;
   spec.n = 3;
   spec.linesAbove = 1;
@@ -262,7 +263,7 @@ inline float notesHeight(const std::vector<Row>& notes, int scale, float width) 
 
 inline ts::Frame tableView(const State& s, int width, int height, const ts::Measurements& measured) {
   ts::Frame f = L::blankFrame(width, height);
-  const int tex = f.addTexture(patternTexture());
+  const int tex = f.addTexture(s.pattern);
   const float m = 8, W = float(width), H = float(height);
   const bool wide = width >= height;
   const L::Text title = tableTitle(s.u, measured);
@@ -356,7 +357,7 @@ inline std::vector<Row> catmullRows(glm::ivec2 P, int level, const ts::Measureme
 
 inline ts::Frame catmullView(const State& s, int width, int height, const ts::Measurements& measured) {
   ts::Frame f = L::blankFrame(width, height);
-  const int tex = f.addTexture(patternTexture());
+  const int tex = f.addTexture(s.pattern);
   const Raster& R = raster();
   const size_t k = size_t(pixelIndex(s.pixel.x, s.pixel.y));
   const std::vector<Row> rows = catmullRows(s.pixel, s.level, measured);
@@ -512,7 +513,7 @@ inline std::vector<Row> inverseRows(glm::ivec2 P, const ts::Measurements& measur
 
 inline ts::Frame inverseView(const State& s, int width, int height, const ts::Measurements& measured) {
   ts::Frame f = L::blankFrame(width, height);
-  const int tex = f.addTexture(patternTexture());
+  const int tex = f.addTexture(s.pattern);
   const std::vector<Row> rows = inverseRows(s.pixel, measured);
   const float m = 8;
   const int ts_ = tableScale(rows, float(width) - 2 * m, float(height) * 0.5f, 2);

@@ -178,3 +178,33 @@ TEST(OctantMapping, BadPixelIsOneLineExit2AndNoFile) {
   }
 }
 }  // namespace
+
+// Claim: --texture FILE shows a picture (hand-drawn or scanned, Rogers' other kinds of pattern) on the pattern
+// panel instead of the grid, and every number stays what it was: measure() counts the grid's line texels and the
+// mapping's geometry, none of which reads the shown picture.  Control: without the file the panel holds the grid.
+TEST(OctantMapping, TextureFileIsShownAndTheNumbersStayTheGrids) {
+  const std::string file = "textures/labelled_grid_512_8.png";  // tests run in the source tree
+  Demo withFile("octant_mapping", {"--view", "overview", "--texture", file});
+  const ts::Measurements& m = withFile.measure();
+  const ts::Measurements& base = measured();
+  ASSERT_EQ(m.size(), base.size());
+  for (size_t k = 0; k < m.size(); ++k) {
+    EXPECT_EQ(m[k].name, base[k].name);
+    EXPECT_EQ(m[k].value, base[k].value) << m[k].name;
+  }
+  ts::Image picture = ts::readPng(file);  // row 0 = the top; a texture's row 0 = t = 0
+  picture.flipVertical();
+  auto shownPattern = [](Demo& d) {
+    const ts::Frame f = d.frame(1024, 540);
+    const ts::Panel& p = panelOf(f, "pattern");
+    return *f.textures.at(size_t(p.batches.at(0).texture)).image;
+  };
+  const ts::Image shown = shownPattern(withFile);
+  ASSERT_EQ(shown.width, picture.width);
+  ASSERT_EQ(shown.height, picture.height);
+  EXPECT_TRUE(shown.pixels == picture.pixels);
+  Demo plain("octant_mapping", {"--view", "overview"});
+  plain.measure();
+  const ts::Image grid = shownPattern(plain);
+  EXPECT_FALSE(grid.width == picture.width && grid.pixels == picture.pixels);
+}

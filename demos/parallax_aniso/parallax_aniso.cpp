@@ -22,11 +22,23 @@
 // frame, the high-anisotropy pixels and the occlusion band (footprints that
 // cross an occluding edge), ms per frame, lookups per pixel, the renderer.
 //
+// The ranking view (v ranking; parallax_aniso_ranking.hpp, its GLSL in
+// parallax_aniso_ranking_gl.hpp) measures the seed's other claim, that parallax
+// mapping is the most realistic of bump, normal, parallax and displacement
+// mapping: the five (parallax both as one offset step and as the march) light
+// the same bricks at the same angle, c = albedo (ka + (1 - ka) max(0, N . L)),
+// and each is ranked by PSNR against a reference traced through the height
+// field and shaded at the true hit with the true normal.  Displacement is real
+// geometry: glDrawElements(GL_TRIANGLE_STRIP) of a grid --grid texels fine,
+// raised to the heights, with the depth test.  Listing:
+// book_figures/parallax_ranking.gl.txt.
+//
 // Keys (each is also a flag, see --help):
 //   m  mode            t  map: bricks | step | flat      a  live view: sweep the azimuth
 //   + / -  height scale          ] / [  view angle (elevation)
 //   z / Z  azimuth               c  split-screen compare (mode | --against)
-//   b  the mode compared against  v  view: single | modes | error | live | causes
+//   b  the mode compared against  v  view: single | modes | error | live | ranking | causes | seed-f
+//   e / E  ranking view: texels between the displacement grid's vertices
 //   r / R  render width          x  max-height pyramid acceleration
 //   g  gradients M1/M2 give textureGrad: x1 | x4 (does the filter use them?
 //      trilinear blurs; llvmpipe's anisotropic filter does not change)
@@ -81,6 +93,7 @@
 #include "parallax_aniso_views.hpp"
 #include "parallax_aniso_causes_gl.hpp"
 #include "parallax_aniso_math.hpp"
+#include "parallax_aniso_ranking.hpp"
 
 namespace {
 using namespace pax;
@@ -120,11 +133,13 @@ class ParallaxAniso final : public ts::Scene {
     o.addEnum("against", &against_,
               {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5], kModeKeys[6]},
               "the mode of the right half in split-screen compare", 'b');
-    o.addEnum("view", &view_, {"single", "modes", "error", "live", "causes", "seed-f"},
+    o.addEnum("view", &view_, {"single", "modes", "error", "live", "ranking", "causes", "seed-f"},
               "single: one mode (or the split screen); modes: all seven with their numbers; error: the occlusion "
               "band's error for M2, M3, M4; live: the mode (or the split screen) drawn every frame at the window's "
-              "size, timed (no reference, no table); causes: seed 003's equations measured one by one (Eq. 2, "
-              "Eq. 3, Fig. 4, Fig. 6); seed-f: M3 with the seed's F beside the corrected one",
+              "size, timed (no reference, no table); ranking: bump, normal, parallax, parallax occlusion and "
+              "displacement mapping lit by one light, ranked against a traced reference "
+              "(parallax_aniso_ranking.hpp); causes: seed 003's equations measured one by one (Eq. 2, Eq. 3, "
+              "Fig. 4, Fig. 6); seed-f: M3 with the seed's F beside the corrected one",
               'v');
     o.addBool("animate", &animate_, "live view: sweep the azimuth back and forth (10 degrees a second)", 'a');
     o.addInt("res", &res_, 80, 800, "width of the measured renders (height 3/4 of it; the figures use 320)", 'r', 'R',
@@ -132,6 +147,7 @@ class ParallaxAniso final : public ts::Scene {
     o.addInt("rays", &rays_, 2, 32, "reference rays per side of the kernel square (n x n; the figures use 12)");
     o.addInt("time", &timeRuns_, 0, 50,
              "time each mode over N frames (median, into the CSV's ms_per_frame); 0 = do not time (the figures use 3)");
+    o.addInt("grid", &gridTexels_, 1, 64, "ranking view: texels between the displacement grid's vertices", 'e', 'E', 1);
     o.addInt("seed", &seed_, 0, 1000000, "seed of the reference's jitter");
     o.addBool("accel", &accel_, "max-height pyramid skip in the visibility trace (same result, fewer lookups)", 'x');
     o.addEnum("gradients", &gradients_, {"x1", "x4"},
@@ -203,7 +219,19 @@ class ParallaxAniso final : public ts::Scene {
          700,
          "On the step map leaving out hidden texels costs: M4 {ewa_vis_psnr_all} dB against M3's {ewa_psnr_all} dB "
          "over the whole frame."},
-
+        {"parallax_ranking",
+         "Seed 003: relief methods ranked",
+         "The bricks at 20 degrees lit by one directional light (Lambert), 240x180: bump mapping (Blinn), normal "
+         "mapping, parallax mapping (one offset step), parallax occlusion mapping (the demo's march) and "
+         "displacement mapping (a grid displaced by the heights, drawn as geometry), each held against a "
+         "reference traced through the height field and shaded at the true hit with the true normal; under "
+         "them the |error| of each, and the ranking by PSNR.",
+         {"--view", "ranking", "--map", "bricks", "--res", "240", "--rays", "3", "--grid", "2"},
+         1360,
+         640,
+         "PSNR against the traced reference: bump {relief_rank_psnr_db[bump]} dB, parallax "
+         "{relief_rank_psnr_db[parallax]} dB, parallax occlusion {relief_rank_psnr_db[pom]} dB, "
+         "displacement {relief_rank_psnr_db[displacement]} dB."},
     };
   }
   std::vector<std::pair<std::string, std::string>> figureFiles() const override {
@@ -221,6 +249,7 @@ class ParallaxAniso final : public ts::Scene {
   ts::Measurements measure(ts::Renderer& r) override {
     ReliefGL& gl = r.attachment<ReliefGL>();  // the passes' GL objects live as long as r
     if (view_ == kLive) return measureLive(r, gl);
+    if (view_ == kRanking) return measureRanking(r);
     std::string key = stateKey();
     if (!table_ || key != tableKey_) {
       Relief& rel = relief();
@@ -280,11 +309,16 @@ class ParallaxAniso final : public ts::Scene {
       else views().buildWaiting(f);
       return f;
     }
+    if (view_ == kRanking) {
+      if (const rank::RankShown* shown = measured.detailAs<rank::RankShown>())
+        rank::buildRanking(f, measured, *shown, views().header() + ", one directional light (Lambert)");
+      else views().buildWaiting(f);
+      return f;
+    }
     const Shown* shown = measured.detailAs<Shown>();
     if (!shown) views().buildWaiting(f);  // a window before the first measurement: what is coming
     else if (view_ == kModes) views().buildModes(f, *shown);
     else if (view_ == kError) views().buildError(f, *shown);
-
     else views().buildSingle(f, *shown);
     return f;
   }
@@ -345,6 +379,27 @@ class ParallaxAniso final : public ts::Scene {
     return live_.draw(r, gl, relief(), a);
   }
 
+  // The ranking view (parallax_aniso_ranking.hpp): the five methods against the lit, traced reference.
+  ts::Measurements measureRanking(ts::Renderer& r) {
+    std::string key = stateKey() + " grid " + std::to_string(gridTexels_);
+    if (!ranking_.ranking || key != rankingKey_) {
+      rank::Setup s;
+      s.cam = camera();
+      s.rays = rays_;
+      s.gridTexels = gridTexels_;
+      s.seed = uint32_t(seed_);
+      ranking_ = rank::rankShownOf(std::make_shared<rank::Ranking>(rank::measureRanking(r, relief(), s, true)));
+      rankingKey_ = key;
+    }
+    ts::Measurements m;
+    rank::addMeasurements(m, *ranking_.ranking);
+    m.detail = ranking_;
+    return m;
+  }
+
+  int gridTexels_ = 2;
+  rank::RankShown ranking_;
+  std::string rankingKey_;
   int mode_ = kEwa, map_ = 0, against_ = kEwaVis, view_ = kSingle, res_ = 160, rays_ = 6, seed_ = 1, timeRuns_ = 0;
   float heightScale_ = 0.06f, angle_ = 20.0f, azimuth_ = 12.0f;
   bool compare_ = false, accel_ = true, animate_ = false;

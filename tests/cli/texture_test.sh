@@ -29,13 +29,14 @@ declare -A FLAGS=(
   [mipmap_popping]=""
   [parallax_aniso]="--view single --res 80 --rays 2"
   [multitexture]="--view lightmap"
+  [octant_mapping]="--view overview"
 )
 GOOD=(good_rgba8_37x23.png good_jpeg_blocks_32x24.jpg good_bmp32_alpha_5x3.bmp)
 BAD=("text.jpg:not a PNG, JPEG or BMP" "jpeg_cut_in_half.jpg:Premature end" "jpeg_huge_65000x65000.jpg:over the limit"
      "bmp32_masks_overlap.bmp:overlap")
 printf 'not a picture\n' >"$T/text.jpg"
 
-for demo in quad_distortion perspective_correction cylinder_seam sphere_projections torus mipmap_popping parallax_aniso multitexture; do
+for demo in quad_distortion perspective_correction cylinder_seam sphere_projections torus mipmap_popping parallax_aniso multitexture octant_mapping; do
   exe="$BIN/$demo"
   [ -x "$exe" ] || { fail "$demo: no program $exe"; continue; }
   read -r -a extra <<<"${FLAGS[$demo]}"
@@ -74,5 +75,19 @@ for demo in quad_distortion perspective_correction cylinder_seam sphere_projecti
     else pass; fi
   done
 done
+# octant_mapping with a bundled image (textures/, Rogers' "scanned" pattern) and a path that is not there.
+exe="$BIN/octant_mapping"
+if [ -x "$exe" ]; then
+  bundled="$PWD/textures/labelled_grid_512_8.png"
+  (cd "$T/work" && timeout 120 "$exe" --backend "$BACKEND" --size 256x160 --quiet --png "$T/bundled.png" \
+     --texture "$bundled" >"$T/out" 2>"$T/err"); rc=$?
+  if [ "$rc" -ne 0 ] || [ ! -s "$T/bundled.png" ]; then fail "octant_mapping --texture $bundled: exit $rc: $(cat "$T/err")"
+  else pass; fi
+  (cd "$T/work" && timeout 120 "$exe" --backend "$BACKEND" --size 256x160 --quiet --png "$T/missing.png" \
+     --texture "$T/no_such_file.png" >"$T/out" 2>"$T/err"); rc=$?
+  if [ "$rc" -ne 2 ] || [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -qF "no_such_file.png" "$T/err" || [ -e "$T/missing.png" ]
+  then fail "octant_mapping --texture (missing file): exit $rc, stderr: $(cat "$T/err")"
+  else pass; fi
+fi
 echo "texture_test: $checks checks passed, $failures failed"
 [ "$failures" -eq 0 ]

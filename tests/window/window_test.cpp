@@ -395,9 +395,12 @@ std::vector<Number> measurements(const std::string& out, const ts::Options& o, b
   }
   return r;
 }
+bool isTiming(const std::string& name);
+// The names of the computed measurements (timings left out: see isTiming).
 std::string names(const std::vector<Number>& v) {
   std::string s;
-  for (const auto& n : v) s += n.name + " ";
+  for (const auto& n : v)
+    if (!isTiming(n.name)) s += n.name + " ";
   return s;
 }
 
@@ -445,11 +448,16 @@ std::vector<std::string> flagsFor(const std::string& id, const ts::Options& o) {
 
 // One window run and one --png run of the same state, compared.
 // Measurements that are clock readings (a live view's ms per frame and fps).
+// A measurement timed, not computed (two runs never agree), by its name without the "[...]" of its variant:
+// parallax_aniso's live_ms_per_frame and live_fps, texture_costs's cost_ms_per_frame[...] and cost_timed_ratio[...].
+// A window may time what --png does not (texture_costs times its frames in a window only): the names compared
+// between the two leave them out.
 bool isTiming(const std::string& name) {
+  const std::string base = name.substr(0, name.find('['));
   auto ends = [&](const std::string& s) {
-    return name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0;
+    return base.size() >= s.size() && base.compare(base.size() - s.size(), s.size(), s) == 0;
   };
-  return ends("_ms_per_frame") || ends("_fps");
+  return ends("_ms_per_frame") || ends("_fps") || ends("_timed_ratio");
 }
 
 // windowFlags: given to the window program too (the state it starts in).
