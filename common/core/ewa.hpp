@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace ts::ewa {
 // `reconstruction` adds the unit reconstruction filter: A += 1, C += 1, and
@@ -68,16 +69,26 @@ inline double lod(const Ellipse& plain, double maxAniso) {
 // The same coefficients and semi-axes in GLSL (1.20 and later), for shaders
 // to paste in: vec4 ellipse(vec2 gx, vec2 gy, bool recon) with
 // gx = (Ux, Vx), gy = (Uy, Vy), returning (A, B, C, F); vec2 radii(vec4 e).
-inline const char* glsl() {
-  return R"(
+// seedF: F as seed 003 prints it, (Ux Vy + Uy Vx)^2, to show what the slip
+// does (demos/parallax_aniso's causes view); with the reconstruction term
+// its F is that plus A + C + 1 (the corrected one is det^2 + A + C + 1, the
+// Lagrange identity).  The default text is the corrected function alone.
+inline std::string glsl(bool seedF = false) {
+  const char* head = R"(
 vec4 ellipse(vec2 gx, vec2 gy, bool recon) {  // gx = (Ux, Vx), gy = (Uy, Vy)
   float A = gx.y * gx.y + gy.y * gy.y;
   float B = -2.0 * (gx.x * gx.y + gy.x * gy.y);
   float C = gx.x * gx.x + gy.x * gy.x;
-  float det = gx.x * gy.y - gy.x * gx.y;
+)";
+  const char* corrected = R"(  float det = gx.x * gy.y - gy.x * gx.y;
   float F = det * det;
   if (recon) { A += 1.0; C += 1.0; F = A * C - 0.25 * B * B; }
-  return vec4(A, B, C, F);
+)";
+  const char* seed = R"(  float slip = gx.x * gy.y + gy.x * gx.y;  // seed 003's F: + where Heckbert has -
+  float F = slip * slip;
+  if (recon) { A += 1.0; C += 1.0; F += A + C - 1.0; }
+)";
+  return std::string(head) + (seedF ? seed : corrected) + R"(  return vec4(A, B, C, F);
 }
 vec2 radii(vec4 e) {  // semi-axes, longest first
   float m = 0.5 * (e.x + e.z), d = 0.5 * sqrt((e.x - e.z) * (e.x - e.z) + e.y * e.y);

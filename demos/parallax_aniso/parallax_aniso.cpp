@@ -37,7 +37,7 @@
 //   m  mode            t  map: bricks | step | flat      a  live view: sweep the azimuth
 //   + / -  height scale          ] / [  view angle (elevation)
 //   z / Z  azimuth               c  split-screen compare (mode | --against)
-//   b  the mode compared against  v  view: single | modes | error | live | ranking
+//   b  the mode compared against  v  view: single | modes | error | live | ranking | causes | seed-f
 //   e / E  ranking view: texels between the displacement grid's vertices
 //   r / R  render width          x  max-height pyramid acceleration
 //   g  gradients M1/M2 give textureGrad: x1 | x4 (does the filter use them?
@@ -54,6 +54,20 @@
 // glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 16).
 // Listings: book_figures/parallax_modes.gl.txt, parallax_step.gl.txt (each
 // mode's pass, then the frame), parallax_error_band.gl.txt (the frame only).
+//
+// The causes view (parallax_aniso_causes.hpp, _causes_gl.hpp; figure
+// parallax_causes and parallax_seed_F, listings book_figures/parallax_causes.gl.txt
+// and parallax_seed_F.gl.txt; views causes and seed-f) measures the
+// seed's own equations one by one:
+//   Eq. (2), corrected:  dU/dx = u(x+1, y) - u(x, y),  dV/dx = v(x+1, y) - v(x, y)
+//   of the SHIFTED coordinate, against the Camera's analytic derivatives:
+//   a fraction of a texel on the relief, tens of texels at its steps (M0's
+//   fringes); the seed's printed dV/dx = v(x+1, y) - u(x, y) is wrong everywhere;
+//   Eq. (3), Fig. 3: the footprint area pi F / sqrt(A C - B^2/4) from those
+//   differences over the plain one's; Fig. 4: the share of hidden texels in
+//   the footprint by its size; Fig. 6: texels the row walk counts twice with
+//   and without M5's stop index; and M3 with the seed's F = (Ux Vy + Uy Vx)^2
+//   (ts::ewa::glsl(true)) beside the corrected F = (Ux Vy - Uy Vx)^2.
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -77,6 +91,7 @@
 #include "parallax_aniso_gl.hpp"
 #include "parallax_aniso_live.hpp"
 #include "parallax_aniso_views.hpp"
+#include "parallax_aniso_causes_gl.hpp"
 #include "parallax_aniso_math.hpp"
 #include "parallax_aniso_ranking.hpp"
 
@@ -118,12 +133,13 @@ class ParallaxAniso final : public ts::Scene {
     o.addEnum("against", &against_,
               {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5], kModeKeys[6]},
               "the mode of the right half in split-screen compare", 'b');
-    o.addEnum("view", &view_, {"single", "modes", "error", "live", "ranking"},
+    o.addEnum("view", &view_, {"single", "modes", "error", "live", "ranking", "causes", "seed-f"},
               "single: one mode (or the split screen); modes: all seven with their numbers; error: the occlusion "
               "band's error for M2, M3, M4; live: the mode (or the split screen) drawn every frame at the window's "
               "size, timed (no reference, no table); ranking: bump, normal, parallax, parallax occlusion and "
               "displacement mapping lit by one light, ranked against a traced reference "
-              "(parallax_aniso_ranking.hpp)",
+              "(parallax_aniso_ranking.hpp); causes: seed 003's equations measured one by one (Eq. 2, Eq. 3, "
+              "Fig. 4, Fig. 6); seed-f: M3 with the seed's F beside the corrected one",
               'v');
     o.addBool("animate", &animate_, "live view: sweep the azimuth back and forth (10 degrees a second)", 'a');
     o.addInt("res", &res_, 80, 800, "width of the measured renders (height 3/4 of it; the figures use 320)", 'r', 'R',
@@ -170,6 +186,30 @@ class ParallaxAniso final : public ts::Scene {
          370,
          "PSNR inside the occlusion band ({band_pixels} pixels): M2 {aniso16_psnr_band} dB, M3 {ewa_psnr_band} dB, "
          "M4 {ewa_vis_psnr_band} dB."},
+        // The state of parallax_modes but the view: its table and reference are reused (before the step map's).
+        {"parallax_causes",
+         "Seed 003: its equations, measured",
+         "Seed 003's causes on the bricks at 20 degrees, 320x240: Eq. 2's forward differences of the parallax-shifted "
+         "coordinate against the analytic derivatives (small on the relief, tens of texels at its steps: the footprint "
+         "M0's lookup takes), the seed's printed Eq. 2 (v minus u), the footprint area from the shifted differences "
+         "over the plain one (Eq. 3, Fig. 3), the share of hidden texels in the footprint by its size (Fig. 4), and "
+         "in the notes the texels the row walk counts twice with and without its buffer (Fig. 6).",
+         {"--view", "causes", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"},
+         1360,
+         520,
+         "Eq. 2 on the shifted coordinate errs by {eq2_derivative_error_texels[frame]} texels (median) over the "
+         "frame, {eq2_derivative_error_texels[steps]} at steps; the footprint's hidden share rises from "
+         "{hidden_texel_share[footprint<=8]} to {hidden_texel_share[footprint>128]}."},
+        {"parallax_seed_F",
+         "Seed 003: its F, rendered",
+         "M3 (EWA in the shader) on the bricks at 20 degrees with Heckbert's F = (Ux Vy - Uy Vx)^2 and with the "
+         "seed's printed F = (Ux Vy + Uy Vx)^2, and their difference: the slip changes the ellipse wherever the "
+         "footprint is sheared (both Uy and Vx non-zero).",
+         {"--view", "seed-f", "--map", "bricks", "--res", "320", "--rays", "12", "--time", "3"},
+         1100,
+         400,
+         "The seed's F changes {seed_F_error_px} px of M3: {seed_F_psnr_db} dB against the reference, the corrected "
+         "F {corrected_F_psnr_db} dB."},
         {"parallax_step",
          "Seed 003: the step map",
          "The synthetic step map (ridges of height 1 and floors of height 0, 32 texels each) at 20 degrees: every "
@@ -249,12 +289,24 @@ class ParallaxAniso final : public ts::Scene {
                    "pixels of M2 that change when textureGrad's gradients are x4 (0: the driver ignores them)"});
     }
     m.detail = shown_;
+    // Seed 003's equations measured (parallax_aniso_causes_gl.hpp), once per state.
+    if (view_ == kCauses || view_ == kSeedF) {
+      if (!causes_ || causesKey_ != key) causes_ = causes::measure(gl, *table_, relief(), accel_, &r), causesKey_ = key;
+      causes::addMeasurements(m, *causes_);
+      m.detail = causes_;
+    }
     return m;
   }
   ts::Frame build(int width, int height, const ts::Measurements& measured) const override {
     ts::Frame f = ts::layout::blankFrame(width, height);
     if (view_ == kLive) {
       views().buildLive(f, measured.detailAs<Live>());
+      return f;
+    }
+    if (view_ == kCauses || view_ == kSeedF) {  // its detail is the causes' result (measure())
+      auto c = measured.detailAs<std::shared_ptr<const causes::Result>>();
+      if (c) causes::build(f, **c, measured, views().header(), view_ == kSeedF);
+      else views().buildWaiting(f);
       return f;
     }
     if (view_ == kRanking) {
@@ -362,6 +414,8 @@ class ParallaxAniso final : public ts::Scene {
   ts::OrbitCamera camera_;   // --yaw --pitch --zoom: the mouse
   std::shared_ptr<Table> table_;
   std::string tableKey_;
+  std::shared_ptr<const causes::Result> causes_;  // the causes view's measurement (its state: tableKey_)
+  std::string causesKey_;
   Shown shown_;
 };
 }  // namespace

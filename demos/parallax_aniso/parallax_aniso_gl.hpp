@@ -81,9 +81,11 @@ struct Variant {
   bool unshiftedLookup = false;  // the march runs, the albedo is read at the unshifted coordinate (benchmark)
   bool centreLookups = false;
   bool plainTrace = false;  // the visibility trace reads every sample's texel (tests, benchmark)
+  bool seedF = false;       // EWA with seed 003's F, sign slip and all (the causes view)
   std::string key() const {
     return "parallax_aniso_m" + std::to_string(mode) + (count ? "_count" : "") + (parallax ? "" : "_flat") +
-           (unshiftedLookup ? "_unshifted" : "") + (centreLookups ? "_centre" : "") + (plainTrace ? "_plain" : "");
+           (unshiftedLookup ? "_unshifted" : "") + (centreLookups ? "_centre" : "") + (plainTrace ? "_plain" : "") +
+           (seedF ? "_seedF" : "");
   }
 };
 // GLSL 1.20, what macOS's legacy OpenGL 2.1 context compiles: texture2DLod
@@ -163,7 +165,7 @@ float pom(vec2 uv0, vec2 Vp, vec2 gx, vec2 gy, float cosView) {
   return lo + (hi - lo) * a / (a + b);
 }
 )" +
-         ts::ewa::glsl() /* ellipse(), radii(): common/core/ewa.hpp */ + R"(
+         ts::ewa::glsl(v.seedF) /* ellipse(), radii(): common/core/ewa.hpp */ + R"(
 ivec2 wrapT(ivec2 t, int size) { return ivec2((t.x % size + size) % size, (t.y % size + size) % size); }
 // Texel t of level L (wrapped).  texelFetch, or with centreLookups a
 // filtered lookup at the texel's centre — the same value (at a texel centre
@@ -274,7 +276,9 @@ vec3 ewaLevel(vec2 uvS, vec2 gx, vec2 gy, vec2 Vp, int L, int vis) {
   vec2 Vt = Vp * s;
   vec3 sum = vec3(0.0);
   float wsum = 0.0;
-  float vr = sqrt(A);
+  float vr = )" +
+         // The rows of A U^2 + B U V + C V^2 = F span V^2 <= 4 A F / (4 A C - B^2): sqrt(A) for the corrected F.
+         (v.seedF ? "sqrt(4.0 * A * F / max(4.0 * A * C - B * B, 1e-30))" : "sqrt(A)") + R"(;
   int j0 = int(ceil(c.y - vr)), j1 = int(floor(c.y + vr));
   float dmin = 0.0;
   if (accel != 0 && vis != 0) {
@@ -419,6 +423,7 @@ struct PassOptions {
   // by this.  A filter that uses them must change its answer at x4 (the
   // trilinear one does); one that does not, does not (Table::gradientTest).
   float gradScale = 1;
+  bool seedF = false;  // EWA modes: seed 003's F = (Ux Vy + Uy Vx)^2 (common/core/ewa.hpp, glsl(true))
 };
 
 inline bool isSoftpipe() { return ts::gl::rendererString().find("softpipe") != std::string::npos; }
@@ -496,6 +501,7 @@ class ReliefGL final : public ts::Renderer::Attachment {
     v.parallax = o.parallax;
     v.unshiftedLookup = o.unshiftedLookup;
     v.plainTrace = o.plainTrace;
+    v.seedF = o.seedF;
     v.centreLookups = o.centreLookups < 0 ? isSoftpipe() : o.centreLookups != 0;
     GLuint prog = program(v);
     glUseProgram(prog);

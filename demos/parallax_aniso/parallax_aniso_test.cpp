@@ -26,6 +26,16 @@
 //   * the live view (the window's interactive view) draws the chosen mode at
 //     the target's size, pixel for pixel what the measured passes draw, and
 //     its split screen is the two modes' halves.
+//   * the causes view's measurements of the seed's equations: Eq. 2's
+//     forward differences of the shifted coordinate err by under a texel in
+//     the median and at the steps by at least half the parallax of the full
+//     depth (the flat map: no step); the footprint area ratio is about 1 over
+//     the relief and above 2 at the steps (flat: 1); the hidden share rises
+//     from the smallest footprint bin to the largest beyond the sampling
+//     errors (flat: nothing hidden); M5's row walk counts no texel twice, the
+//     walk without its stop index does (and a row by hand shows both); M3
+//     with the seed's F changes pixels at 12 degrees of azimuth and none at
+//     0, where Vx = 0 makes the two F equal.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -35,6 +45,7 @@
 #include <string>
 #include <vector>
 
+#include "demos/parallax_aniso/parallax_aniso_causes_gl.hpp"
 #include "demos/parallax_aniso/parallax_aniso_measure.hpp"
 #include "demos/parallax_aniso/parallax_aniso_gl.hpp"
 #include "demos/parallax_aniso/parallax_aniso_math.hpp"
@@ -576,6 +587,111 @@ TEST(Live, TheReferenceIsNotDrawnLive) {
   ts::test::context().resize(64, 48);
   EXPECT_TRUE(d.measure().empty());  // no pass, no timing
   EXPECT_EQ(d.frame(64, 48).panel("live"), nullptr);
+}
+
+// ------------------------------------------------------------- the causes view
+// Seed 003's equations measured one by one (parallax_aniso_causes.hpp), each
+// against what the geometry implies, each with a control that fails.
+const causes::Cpu& causesOf(const std::string& map) {
+  static std::vector<std::pair<std::string, std::unique_ptr<causes::Cpu>>> cache;
+  for (auto& c : cache)
+    if (c.first == map) return *c.second;
+  cache.emplace_back(map, std::make_unique<causes::Cpu>(causes::measureCpu(smallCamera(), relief(map))));
+  return *cache.back().second;
+}
+// The smallest parallax of the full depth over the frame, level-0 texels: a
+// step (neighbours' depths more than half the relief apart) moves the shifted
+// coordinate by at least half of it.
+double smallestParallaxTexels(const Camera& cam) {
+  double m = 1e30;
+  for (int y = 0; y < cam.height; ++y)
+    for (int x = 0; x < cam.width; ++x)
+      m = std::min(m, glm::length(cam.parallax(cam.ray({x + 0.5, y + 0.5}))) * kTexSize);
+  return m;
+}
+
+TEST(Causes, Eq2ForwardDifferencesJumpAtSteps) {
+  const causes::Cpu& c = causesOf("bricks");
+  ASSERT_GT(c.stepPixels, 0);
+  // Where the shifted coordinate is smooth, a forward difference is off the
+  // analytic derivative by its second-order term and the relief's slope:
+  // under a texel in the median.
+  EXPECT_LT(c.eq2Frame, 1.0);
+  // At a step it jumps by the parallax of at least half the relief.
+  const double jump = 0.5 * smallestParallaxTexels(smallCamera());
+  EXPECT_GT(jump, 4.0);
+  EXPECT_GT(c.eq2Steps, jump - 1.0);
+  // The seed's printed dv = v - u: wrong by about the distance between u and v, everywhere.
+  EXPECT_GT(c.eq2TypoFrame, 100.0);
+  // Control: the flat map has no step, and its shifted coordinate is the plain one shifted smoothly.
+  const causes::Cpu& flat = causesOf("flat");
+  EXPECT_EQ(flat.stepPixels, 0);
+  EXPECT_LT(flat.eq2Frame, 0.1);
+}
+
+TEST(Causes, FootprintAreaGrowsAtSteps) {
+  const causes::Cpu& c = causesOf("bricks");
+  // Over the relief the footprint from the shifted differences is the plain
+  // one, give or take the slopes; at the steps it is stretched by the jump.
+  EXPECT_GT(c.areaRatioMedian, 0.8);
+  EXPECT_LT(c.areaRatioMedian, 1.25);
+  EXPECT_GT(c.areaRatioStepsMedian, 2.0);
+  // Control: on the flat map the parallax is a smooth shift: the ratio is 1.
+  EXPECT_NEAR(causesOf("flat").areaRatioMedian, 1.0, 0.02);
+}
+
+TEST(Causes, HiddenShareRisesWithTheFootprint) {
+  for (const char* map : {"bricks", "step"}) {
+    SCOPED_TRACE(map);
+    const causes::Cpu& c = causesOf(map);
+    std::vector<const causes::Bin*> populated;
+    for (const causes::Bin& b : c.bins)
+      if (b.pixels >= 20) populated.push_back(&b);
+    ASSERT_GE(populated.size(), 2u);
+    const causes::Bin *lo = populated.front(), *hi = populated.back();
+    // The smallest populated bin below the largest by more than both sampling errors.
+    EXPECT_LT(lo->share + 2 * lo->sampleError, hi->share - 2 * hi->sampleError) << lo->name << " vs " << hi->name;
+  }
+  // Control: nothing is hidden on the flat map, in any bin.
+  for (const causes::Bin& b : causesOf("flat").bins)
+    if (b.pixels > 0) EXPECT_EQ(b.hidden, 0) << b.name;
+}
+
+TEST(Causes, RowWalkBufferKeepsTexelsFromBeingCountedTwice) {
+  // A row by hand: no hidden texel -- without the stop index the walk from
+  // the right counts all four again; M5's walk does not start it.
+  auto none = [](long) { return false; };
+  long counted = 0;
+  EXPECT_EQ(causes::rowWalkDoubles(0, 3, none, causes::Walk::kBuffer, &counted), 0);
+  EXPECT_EQ(counted, 4);
+  EXPECT_EQ(causes::rowWalkDoubles(0, 3, none, causes::Walk::kNoBuffer, nullptr), 4);
+  EXPECT_EQ(causes::rowWalkDoubles(0, 3, none, causes::Walk::kSeedNoBound, nullptr), 0);
+  // A hidden texel at 2: the walks meet it from both sides, nothing twice.
+  auto at2 = [](long i) { return i == 2; };
+  EXPECT_EQ(causes::rowWalkDoubles(0, 4, at2, causes::Walk::kNoBuffer, nullptr), 0);
+  // Over a frame: M5 never counts a texel twice, the walk without its index does.
+  const causes::Cpu& c = causesOf("bricks");
+  EXPECT_GT(c.walkedTexels, 0);
+  EXPECT_EQ(c.doubleBuffer, 0);
+  EXPECT_EQ(c.doubleSeedNoBound, 0);
+  EXPECT_GT(c.doubleNoBuffer, 0);
+  EXPECT_LE(c.doubleNoBuffer, c.walkedTexels);
+}
+
+TEST(Causes, SeedFChangesTheEwaOnlyWhereTheFootprintIsSheared) {
+  // At 12 degrees of azimuth Uy and Vx are both non-zero: the seed's F
+  // (Ux Vy + Uy Vx)^2 differs from det^2 and M3 changes.
+  Camera cam = glCamera();
+  const Relief& rel = relief("bricks");
+  PassOptions po;
+  const ts::Image corrected = gl().render(cam, rel, kEwa, po);
+  const ts::Image seed = causes::renderSeedF(gl(), cam, rel, po.accel);
+  EXPECT_GT(ts::probe::countDiffering(seed, corrected, 0), cam.width * cam.height / 20);
+  // Control: looking along +v (azimuth 0) Vx = 0 exactly, the two F are
+  // equal and so are the renders, byte for byte.
+  cam.azimuthDeg = 0;
+  const ts::Image straight = gl().render(cam, rel, kEwa, po);
+  EXPECT_EQ(ts::probe::countDiffering(causes::renderSeedF(gl(), cam, rel, po.accel), straight, 0), 0);
 }
 }  // namespace
 

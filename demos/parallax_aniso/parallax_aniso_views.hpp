@@ -23,7 +23,7 @@
 #include "parallax_aniso_gl.hpp"
 
 namespace pax::views {
-enum View { kSingle, kModes, kError, kLive, kRanking };
+enum View { kSingle, kModes, kError, kLive, kRanking, kCauses, kSeedF };
 inline const char* const kMaps[] = {"bricks", "step", "flat"};
 using ts::layout::kWhite, ts::layout::kAmber;
 inline const glm::vec4 kGrey{0.62f, 0.62f, 0.66f, 1.0f};
