@@ -312,23 +312,9 @@ inline Row measureRow(ts::Renderer& r, int scene, int pattern, double az, double
 }
 
 // The window's first stage of a row (ts::measureStage): GL's pictures as
-// measured, the CPU methods' at a quarter of the resolution: each 4 x 4
-// block of pixels takes the method's value at its pixel (2, 2), a sixteenth
-// of the work, shown with GL_NEAREST and tagged "refining"; no RMS or reads
-// yet (NaN).  Never in a figure.
-inline ts::Image coarsePicture(int method, const Pyramids& p, const View& v, double bias, int k) {
-  ts::Image img(v.w / k, v.h / k, kBackground);
-  for (int row = 0; row < img.height; ++row)
-    for (int col = 0; col < img.width; ++col) {
-      const int x = col * k + k / 2, y = row * k + k / 2;  // the block's pixel, as cpuPicture takes it
-      if (!v.coversPixel(x, y)) continue;
-      long reads = 0;
-      img.set(col, row,
-              toRgba(method == kExact ? p.exact.average(v.preimage(x, y))
-                                      : lookup(method, p, v, x + 0.5, v.h - 1 - y + 0.5, bias, &reads)));
-    }
-  return img;
-}
+// measured, the CPU methods' at a quarter of the resolution (coarsePicture,
+// a sixteenth of the work), shown with GL_NEAREST and tagged "refining"; no
+// RMS or reads yet (NaN).  Never in a figure.
 inline Row coarseRow(ts::Renderer& r, int scene, int pattern, double az, double bias) {
   Row row;
   row.azimuth = az;
@@ -342,7 +328,7 @@ inline Row coarseRow(ts::Renderer& r, int scene, int pattern, double az, double 
     }
     ts::measureProgress(0.02 + 0.08 * m / kMethodCount);
     ts::TextureDesc& t = row.pictures[size_t(m)];
-    t = pictureTexture(coarsePicture(m, pyramids(scene, pattern), v, bias, 4), methodKey(m), scene, az);
+    t = pictureTexture(coarsePicture(m, pyramids(scene, pattern), v, bias, 4, kBackground), methodKey(m), scene, az);
     t.minFilter = t.magFilter = GL_NEAREST;
     t.params.push_back({"stage", "coarse"});
   }
