@@ -134,10 +134,23 @@ void MeasureWorker::run() {
       w = width_;
       h = height_;
     }
-    MeasureRun running{&latest_, &quitFlag_, id, &progress_};
+    MeasureRun running{&latest_, &quitFlag_, id, &progress_, {}};
     setMeasureRun(&running);  // measureProgress reports here (common/core/scene.cpp)
     Result r;
     r.id = id;
+    // A stage of this request (ts::measureStage) goes to the window at once,
+    // unless a newer request came meanwhile.
+    running.stage = [this, id, &r](Measurements&& partial) {
+      std::lock_guard<std::mutex> lock(mu_);
+      if (id != requested_ || quit_) return;
+      result_ = Result();
+      result_.id = id;
+      result_.stage = true;
+      result_.stateText = r.stateText;
+      result_.measured = std::move(partial);
+      haveResult_ = true;
+      if (wake_) wake_();  // under the lock: never after stop()
+    };
     bool cancelled = false;
     try {
       const long frame0 = test_hooks::framesDrawn();

@@ -48,10 +48,12 @@ class MeasureWorker {
     uint64_t id = 0;        // the request's number
     std::string stateText;  // Options::stateText() of the measured state
     Measurements measured;
-    std::string error;  // a measurement failed: its message (measured is empty)
-    int errorCode = 0;  // and its ts::Error exit status
+    std::string error;   // a measurement failed: its message (measured is empty)
+    int errorCode = 0;   // and its ts::Error exit status
+    bool stage = false;  // a first stage (ts::measureStage): the request still runs
   };
-  // The newest finished result not taken yet; false if none.
+  // The newest finished result (or stage of the running request) not taken
+  // yet; false if none.
   bool take(Result* out);
   // Still working on request `id` or a newer one (not yet taken or failed).
   bool busy() const;

@@ -1,6 +1,7 @@
 // common/app/window_frame.cpp — the frame loop's steps: wait, measure, draw the figure, present.
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <utility>
 
@@ -95,11 +96,18 @@ void FrameLoop::startMeasuring() {
   }
 }
 
-// Takes the worker's numbers once they are in, and prints them.
+// Takes the worker's numbers once they are in, and prints them; a stage of
+// a measurement still running (coarse CPU pictures) is shown, not printed.
 void FrameLoop::collectMeasurement() {
   MeasureWorker::Result res;
   if (scene.live() || !worker->take(&res)) return;
   if (!res.error.empty()) throw Error(res.error, res.errorCode);  // as if measured here
+  if (res.stage) {  // a first, coarse stage (ts::measureStage): shown, the request still runs
+    m = std::move(res.measured);
+    testLog.line("stage");
+    redraw = true;
+    return;
+  }
   m = std::move(res.measured);
   measuredOnce = true;
   testLog.line("result");
@@ -162,8 +170,9 @@ bool FrameLoop::isLastFrame() {
 void FrameLoop::present() {
   gl::check("drawing the window");
   glfwSwapBuffers(win);
-  char progress[32];
+  char progress[64];
   std::snprintf(progress, sizeof progress, "%d %.3f", measuring ? 1 : 0, measuring ? worker->progress() : 1.0);
+  if (framePixels) std::snprintf(progress + std::strlen(progress), 24, " %016llx", (unsigned long long)pixelHash);
   testLog.line("frame", progress);
   test_hooks::frameDrawn();
 }

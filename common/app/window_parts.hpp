@@ -128,7 +128,9 @@ class FrameLoop {
   int measuredW = 0, measuredH = 0;  // the figure size the numbers shown were (or are being) measured at
   bool savePending = false;          // F12 pressed
   // The test hooks (common/core/test_hooks.hpp).
-  test_hooks::KeyLog testLog;  // TS_TEST_FRAME_LOG, TS_TEST_KEY_WHEN
+  test_hooks::KeyLog testLog;                          // TS_TEST_FRAME_LOG, TS_TEST_KEY_WHEN
+  const bool framePixels = test_hooks::framePixels();  // TS_TEST_FRAME_PIXELS
+  uint64_t pixelHash = 0;                              // the figure's, this frame
   std::vector<std::pair<int, int>> resizes = test_hooks::resizes();
   const bool resizing = !resizes.empty();
   // The inspect mode (key i): a clicked pixel's loupe and card.

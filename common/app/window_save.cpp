@@ -1,6 +1,7 @@
 // common/app/window_save.cpp — --screenshot of the last frame, and F12's picture, sidecar and command.
 #include <sys/stat.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -54,6 +55,14 @@ void FrameLoop::saveIfAsked(const Frame& f) {
 // drawn: the figure alone (it must match --png), unless
 // TS_SCREENSHOT_OVERLAY=1 asks for the window as the student sees it.
 void FrameLoop::takeScreenshot(bool lastFrame, bool overlayDrawn) {
+  if (!overlayDrawn && framePixels) {  // TS_TEST_FRAME_PIXELS: a hash of the figure for the frame log
+    std::vector<uint8_t> px(size_t(split.figureW) * size_t(ctx.height()) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, split.figureW, ctx.height(), GL_RGBA, GL_UNSIGNED_BYTE, px.data());
+    uint64_t h = 1469598103934665603ull;  // FNV-1a
+    for (uint8_t b : px) h = (h ^ b) * 1099511628211ull;
+    pixelHash = h;
+  }
   if (!lastFrame || flags.screenshot.empty()) return;
   if (test_hooks::screenshotWithOverlay() == overlayDrawn) writePng(flags.screenshot, ctx.readPixels());
 }

@@ -214,6 +214,13 @@ Label textLabel(float x, float y, const Text& t, glm::vec4 color, int scale, Ali
   return l;
 }
 
+void refiningTag(Frame& f, const Rect& picture) {
+  const std::string tag = "refining";
+  if (text::width(tag, 1) + 6 > float(picture.w) || text::height(1) + 6 > float(picture.h)) return;
+  f.labels.push_back(textLabel(float(picture.x + 3), float(picture.y + 3), tag, kAmber, 1, Align::Left,
+                               glm::vec4(0.0f, 0.0f, 0.0f, 0.7f)));
+}
+
 void attachNumbers(Frame& f, size_t first, const Text& t) {
   // In order: a number goes to the first line at or after the previous
   // one's that shows it (wrapping breaks at spaces, never inside a number).

@@ -159,6 +159,10 @@ Text given(const std::string& name, double value, const char* format);
 // One label of `t`, whole (no fitting): a tag, a note, a key placed by hand.
 Label textLabel(float x, float y, const Text& t, glm::vec4 color, int scale, Align align = Align::Left,
                 glm::vec4 background = glm::vec4(0.0f));
+// A small "refining" tag in the top-left corner of `picture`: the picture
+// is a coarse stage of a CPU computation still running (Measurements::
+// refining, ts::measureStage), to be replaced in place.  Only in a window.
+void refiningTag(Frame& f, const Rect& picture);
 // Hands `t`'s numbers to the labels f.labels[first..] that show them.
 void attachNumbers(Frame& f, size_t first, const Text& t);
 

@@ -5,6 +5,9 @@
 #pragma once
 #include <atomic>
 #include <cstdint>
+#include <functional>
+
+#include "common/core/scene.hpp"
 
 namespace ts {
 struct MeasureRun {
@@ -12,6 +15,8 @@ struct MeasureRun {
   const std::atomic<bool>* quit;
   uint64_t id;
   std::atomic<double>* progress;
+  // Where measureStage hands a stage (empty: stages are not shown).
+  std::function<void(Measurements&&)> stage;
   bool cancelled() const { return quit->load() || latest->load() != id; }
 };
 // This thread's run, and the process's (threads a measurement starts itself,

@@ -58,6 +58,16 @@ void measureProgress(double fraction) {
   if (r->cancelled()) throw MeasureCancelled();
 }
 
+bool measureStaged() { return tl_run && tl_run->stage; }
+
+void measureStage(Measurements partial) {
+  MeasureRun* r = tl_run;
+  if (!r || !r->stage) return;
+  if (r->cancelled()) throw MeasureCancelled();
+  partial.refining = true;
+  r->stage(std::move(partial));
+}
+
 bool measureCancelled(double fraction) {
   if (tl_run && fraction >= 0) tl_run->progress->store(std::clamp(fraction, 0.0, 1.0));
   MeasureRun* r = g_run.load();

@@ -32,6 +32,10 @@ struct Measurement {
 struct Measurements : std::vector<Measurement> {
   using std::vector<Measurement>::vector;
   std::any detail;
+  // A stage of a measurement still running (measureStage below): its CPU
+  // pictures are coarse and its numbers may be missing.  build() marks what
+  // is coarse (layout::refiningTag); figures never see a stage.
+  bool refining = false;
   template <class T>
   const T* detailAs() const {
     return std::any_cast<T>(&detail);
@@ -51,6 +55,19 @@ void measureProgress(double fraction);
 // itself, which then stop early): reports `fraction` if >= 0 (from the
 // measuring thread) and returns true when the measurement is superseded.
 bool measureCancelled(double fraction = -1);
+// A picture delivered in stages.  In a window the figure should be complete
+// at once: what GL draws is drawn at once, and a picture only the CPU can
+// compute (an exact integral, a traced reference) first comes coarse (a
+// quarter of the resolution, a few rays), then refined in place.  A long
+// measure() asks measureStaged() (true only on the window's worker) and,
+// if so, hands the window a first stage (`partial.refining` is set for it)
+// before it computes the full pictures; the window shows that stage, marked
+// as refining, until the full result replaces it.  Elsewhere (--png,
+// make_figures, the tests) measureStaged() is false, so figures are made
+// exactly as before, and measureStage does nothing.  Throws
+// MeasureCancelled as measureProgress does.
+bool measureStaged();
+void measureStage(Measurements partial);
 
 // A registered book figure: a state of a demo (its flags) at a size.
 struct FigureSpec {

@@ -100,6 +100,11 @@ long slowMeasureFrames() {
 void frameDrawn() { g_frames.fetch_add(1); }
 long framesDrawn() { return g_frames.load(); }
 
+bool framePixels() {
+  const char* v = env("TS_TEST_FRAME_PIXELS");
+  return v && std::strcmp(v, "0") != 0;
+}
+
 bool screenshotWithOverlay() {
   const char* v = env("TS_SCREENSHOT_OVERLAY");
   return v && *v == '1';

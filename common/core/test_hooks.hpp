@@ -20,6 +20,12 @@
 //       after each swap (M 1 while a measurement is out, P its progress),
 //       "key T C" when a key is taken, "result T" when a measurement is
 //       handed over.
+//   TS_TEST_FRAME_PIXELS=1
+//       (benchmarks: bench_window) with TS_TEST_FRAME_LOG, each "frame"
+//       line ends with a hash of the figure's pixels (read back before the
+//       overlay), "frame T M P H", and a first stage of a measurement
+//       (ts::measureStage) logs "stage T": when the picture is complete is
+//       when H stops changing.
 //   TS_TEST_KEY_WHEN=measured|measuring
 //       when --keys takes its next key: "measured" once the numbers of the
 //       state so far are in (no measurement out); "measuring" (after the
@@ -108,6 +114,8 @@ long slowMeasureFrames();
 void frameDrawn();
 long framesDrawn();
 
+// TS_TEST_FRAME_PIXELS=1: the frame log hashes each frame's figure.
+bool framePixels();
 // TS_SCREENSHOT_OVERLAY=1: the screenshot with the overlay.
 bool screenshotWithOverlay();
 

@@ -432,9 +432,81 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
 
 ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
   envmap::EnvGL& g = r.attachment<envmap::EnvGL>();
+  const int kMeasureSize = 256;  // the table: every parameterization x evaluation for this object at 256 x 256
+  // The shown state's pictures and their own numbers ([shown]); in a window also first, alone, as a
+  // first stage (ts::measureStage): the pictures at once, the table's numbers after them.
+  auto shownPictures = [&](Found& found, ts::Measurements& out) {
+    // The shown state's pictures: nested frames drawn by GL (their calls recorded for the listings), which the
+    // reference recomputes (environment_mapping_views.hpp); the measurements read the float passes.
+    const int n = render_;
+    envmap::Pixels ref;  // its calls recorded for the mirror's reference picture (the target made again: they show how)
+    g.forget(pass(-1, object_, false, true, n));
+    const ts::gl::CallList refGL = ts::recordRender(r, [&] { ref = g.draw(pass(-1, object_, false, true, n)); });
+    const envmap::Pass shown = pass(param_, object_, eval_ == 1, true, n);
+    const envmap::Pixels looked = g.draw(shown);
+    std::vector<float> perPixel;
+    found.current = envmap::errorStats(param_, looked, ref, shown.eyeRotation(), &perPixel);
+    out.insert(out.begin(), {"error_p95_deg[shown]", found.current.p95,
+                             "the picture shown: 95th percentile of the direction error, degrees"});
+    out.insert(out.begin(),
+               {"error_max_deg[shown]", found.current.max, "the picture shown: largest direction error, degrees"});
+    out.insert(out.begin(),
+               {"error_mean_deg[shown]", found.current.mean, "the picture shown: mean direction error, degrees"});
+    auto picture = [&](int p) {
+      return envmap::nestedTexture(r, envmap::passFrame(pass(p, object_, eval_ == 1, false, n)), stateName(p));
+    };
+    found.picture = picture(param_);
+    found.errorScale = envmap::errorScale(eval_ == 1, found.current.p95);
+    found.error = envmap::errorImage(perPixel, n, n, found.errorScale);
+    found.map = ts::envmaps::unwrappedMap(envmap::Param(param_), face_, shown.sphereView);
+    found.lit = envmap::litTexels(param_, face_, shown.sphereView, looked);
+    if (view_ == kCompareView)
+      for (int p = 0; p < 4; ++p) found.pictures[size_t(p)] = picture(p);
+    if (view_ == kSeamView)
+      for (int rule = 0; rule < 2; ++rule) {
+        envmap::Pass ps = pass(envmap::kLatLong, object_, true, true, n);
+        ps.seamRule = rule;
+        std::vector<float> e;
+        const envmap::ErrorStats s = envmap::errorStats(envmap::kLatLong, g.draw(ps), ref, ps.eyeRotation(), &e);
+        if (rule == 0) found.seamScale = envmap::errorScale(true, s.p95);
+        found.seamErrors[size_t(rule)] = envmap::errorImage(e, n, n, found.seamScale);
+        ps.directions = false;
+        found.seamPictures[size_t(rule)] = envmap::nestedTexture(r, envmap::passFrame(ps),
+                                                                 std::string("lat-long per vertex, ") +
+                                                                     kSeamRules[rule]);
+      }
+    if (object_ == envmap::kMirror) {  // the flat mirror: where a nearby ball should appear (red in the reference)
+      const envmap::Pass ps = pass(-1, object_, false, true, n);
+      found.mirror = envmap::mirrorNear(ref, ps.projection, ps.view, ps.model);
+      ts::Image painted = envmap::referenceImage(ref);
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+          if (found.mirror.trueMask[size_t(y) * size_t(n) + size_t(x)])
+            painted.set(x, n - 1 - y, envmap::toRgba(glm::dvec3(kNearBall)));
+      found.reference = image(painted, "reference", refGL);
+      // The picture's own counts (render_ x render_ pixels), which its caption prints: the table's
+      // mirror_ball_pixels* come from addStudies' pass at the measuring size.
+      out.push_back({"mirror_ball_pixels[shown]", double(found.mirror.truePixels),
+                     "pixels of the shown reference picture painted red: the near ball in a true mirror"});
+      out.push_back({"mirror_ball_pixels_centre_map[shown]", double(found.mirror.mapPixels),
+                     "pixels of the shown picture where a map made at the mirror's centre, ball included, shows it"});
+      out.push_back({"mirror_ball_pixels_both[shown]", double(found.mirror.both),
+                     "pixels of the shown picture where both show it"});
+    } else {
+      found.reference = envmap::nestedTexture(r, envmap::referenceFrame(pass(-1, object_, false, false, n)),
+                                              "reference");
+    }
+  };
+  if (ts::measureStaged()) {
+    Found first;
+    ts::Measurements numbers;  // not shown before the table's: the stage's labels say "(measuring)"
+    shownPictures(first, numbers);
+    ts::Measurements stage;
+    stage.detail = first;
+    ts::measureStage(std::move(stage));
+  }
   ts::Measurements out;
   Found found;
-  const int kMeasureSize = 256;  // the table: every parameterization x evaluation for this object at 256 x 256
   for (int o = object_; o == object_; ++o) {
     const envmap::Pixels ref = g.draw(pass(-1, o, false, true, kMeasureSize));
     for (int p = 0; p < envmap::kParams; ++p)
@@ -478,64 +550,7 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
       }
     ts::measureProgress(0.4);
   }
-  // The shown state's pictures: nested frames drawn by GL (their calls recorded for the listings), which the
-  // reference recomputes (environment_mapping_views.hpp); the measurements read the float passes.
-  const int n = render_;
-  envmap::Pixels ref;  // its calls recorded for the mirror's reference picture (the target made again: they show how)
-  g.forget(pass(-1, object_, false, true, n));
-  const ts::gl::CallList refGL = ts::recordRender(r, [&] { ref = g.draw(pass(-1, object_, false, true, n)); });
-  const envmap::Pass shown = pass(param_, object_, eval_ == 1, true, n);
-  const envmap::Pixels looked = g.draw(shown);
-  std::vector<float> perPixel;
-  found.current = envmap::errorStats(param_, looked, ref, shown.eyeRotation(), &perPixel);
-  out.insert(out.begin(), {"error_p95_deg[shown]", found.current.p95,
-                           "the picture shown: 95th percentile of the direction error, degrees"});
-  out.insert(out.begin(),
-             {"error_max_deg[shown]", found.current.max, "the picture shown: largest direction error, degrees"});
-  out.insert(out.begin(),
-             {"error_mean_deg[shown]", found.current.mean, "the picture shown: mean direction error, degrees"});
-  auto picture = [&](int p) {
-    return envmap::nestedTexture(r, envmap::passFrame(pass(p, object_, eval_ == 1, false, n)), stateName(p));
-  };
-  found.picture = picture(param_);
-  found.errorScale = envmap::errorScale(eval_ == 1, found.current.p95);
-  found.error = envmap::errorImage(perPixel, n, n, found.errorScale);
-  found.map = ts::envmaps::unwrappedMap(envmap::Param(param_), face_, shown.sphereView);
-  found.lit = envmap::litTexels(param_, face_, shown.sphereView, looked);
-  if (view_ == kCompareView)
-    for (int p = 0; p < 4; ++p) found.pictures[size_t(p)] = picture(p);
-  if (view_ == kSeamView)
-    for (int rule = 0; rule < 2; ++rule) {
-      envmap::Pass ps = pass(envmap::kLatLong, object_, true, true, n);
-      ps.seamRule = rule;
-      std::vector<float> e;
-      const envmap::ErrorStats s = envmap::errorStats(envmap::kLatLong, g.draw(ps), ref, ps.eyeRotation(), &e);
-      if (rule == 0) found.seamScale = envmap::errorScale(true, s.p95);
-      found.seamErrors[size_t(rule)] = envmap::errorImage(e, n, n, found.seamScale);
-      ps.directions = false;
-      found.seamPictures[size_t(rule)] = envmap::nestedTexture(r, envmap::passFrame(ps),
-                                                               std::string("lat-long per vertex, ") + kSeamRules[rule]);
-    }
-  if (object_ == envmap::kMirror) {  // the flat mirror: where a nearby ball should appear (red in the reference)
-    const envmap::Pass ps = pass(-1, object_, false, true, n);
-    found.mirror = envmap::mirrorNear(ref, ps.projection, ps.view, ps.model);
-    ts::Image painted = envmap::referenceImage(ref);
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x)
-        if (found.mirror.trueMask[size_t(y) * size_t(n) + size_t(x)])
-          painted.set(x, n - 1 - y, envmap::toRgba(glm::dvec3(kNearBall)));
-    found.reference = image(painted, "reference", refGL);
-    // The picture's own counts (render_ x render_ pixels), which its caption prints: the table's
-    // mirror_ball_pixels* come from addStudies' pass at the measuring size.
-    out.push_back({"mirror_ball_pixels[shown]", double(found.mirror.truePixels),
-                   "pixels of the shown reference picture painted red: the near ball in a true mirror"});
-    out.push_back({"mirror_ball_pixels_centre_map[shown]", double(found.mirror.mapPixels),
-                   "pixels of the shown picture where a map made at the mirror's centre, ball included, shows it"});
-    out.push_back({"mirror_ball_pixels_both[shown]", double(found.mirror.both),
-                   "pixels of the shown picture where both show it"});
-  } else {
-    found.reference = envmap::nestedTexture(r, envmap::referenceFrame(pass(-1, object_, false, false, n)), "reference");
-  }
+  shownPictures(found, out);
   ts::measureProgress(0.6);
   envmap::addStudies(g, face_, out);  // the seeds' examples, solid angle, the stale sphere map, the near ball
   out.push_back({"texels", double(envmap::mapTexels(envmap::Param(param_), face_)), "texels of the shown map"});

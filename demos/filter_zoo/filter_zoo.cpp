@@ -153,6 +153,8 @@ class FilterZoo final : public ts::Scene {
 
 ts::Frame FilterZoo::build(int width, int height, const ts::Measurements& measured) const {
   const Result* m = measured.detailAs<Result>();
+  // A first stage (coarseRow) has pictures, not the numbers these views plot.
+  if (measured.refining && (view_ == kKernels || view_ == kBias || view_ == kMemory)) m = nullptr;
   ts::Frame f = ts::layout::blankFrame(width, height);
   const Views v = views();
   switch (view_) {
@@ -216,6 +218,23 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
   res.renderer = ts::gl::rendererString();
   res.scene = scene_;
   ts::Measurements ms;
+  std::vector<double> azs;
+  if (scene_ == kSlant) azs.assign(kAzimuths.begin(), kAzimuths.end());
+  if (std::find(azs.begin(), azs.end(), double(azimuth_)) == azs.end()) azs.push_back(azimuth_);
+
+  // 0. In a window, a first stage at once: the GL methods' pictures, the
+  // CPU methods' coarse (coarseRow), refined in place by what follows.
+  if (ts::measureStaged() && view_ != kKernels && view_ != kBias && view_ != kMemory) {
+    Result first = res;
+    for (size_t k = 0; k < azs.size(); ++k) {
+      if (view_ != kAzimuthGrid && azs[k] != double(azimuth_)) continue;  // the other views show one azimuth
+      if (azs[k] == double(azimuth_)) first.current = int(first.rows.size());
+      first.rows.push_back(coarseRow(r, scene_, pattern_, azs[k], bias_));
+    }
+    ts::Measurements stage;
+    stage.detail = first;
+    ts::measureStage(std::move(stage));
+  }
 
   // 1. Magnification counts, read from texel-index renders.
   auto counts = [&](int pixels) { return countTexels(texelsShown(r, pixels)); };
@@ -266,9 +285,6 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
 
   // 6, 7. Every method against the exact integral.
   ts::measureProgress(0.1);
-  std::vector<double> azs;
-  if (scene_ == kSlant) azs.assign(kAzimuths.begin(), kAzimuths.end());
-  if (std::find(azs.begin(), azs.end(), double(azimuth_)) == azs.end()) azs.push_back(azimuth_);
   for (size_t k = 0; k < azs.size(); ++k) {
     ts::measureProgress(0.1 + 0.5 * double(k) / double(azs.size()));
     const bool current = azs[k] == double(azimuth_);

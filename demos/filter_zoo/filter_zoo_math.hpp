@@ -662,6 +662,24 @@ inline Picture cpuPicture(int method, const Pyramids& p, const View& v, double b
   out.meanReads = counted ? double(reads) / double(counted) : 0;
   return out;
 }
+// A CPU method's picture at 1/k of the resolution, for a window's first
+// stage: each k x k block of pixels takes the method's value at its pixel
+// (k/2, k/2) exactly as cpuPicture computes that pixel (its own footprint),
+// in 1/k^2 of the work; a block whose pixel is off the surface is background.
+inline ts::Image coarsePicture(int method, const Pyramids& p, const View& v, double bias, int k,
+                               ts::Rgba background = {77, 92, 115, 255}) {
+  ts::Image img(v.w / k, v.h / k, background);
+  for (int row = 0; row < img.height; ++row)
+    for (int col = 0; col < img.width; ++col) {
+      const int x = col * k + k / 2, y = row * k + k / 2;
+      if (!v.coversPixel(x, y)) continue;
+      long reads = 0;
+      img.set(col, row,
+              toRgba(method == kExact ? p.exact.average(v.preimage(x, y))
+                                      : lookup(method, p, v, x + 0.5, v.h - 1 - y + 0.5, bias, &reads)));
+    }
+  return img;
+}
 // Mean number of texels the exact integral weighs over the mask: per texel
 // row, the texels between the ends of the preimage's strip in that row
 // (every one of them overlaps it with a positive area, but for a corner

@@ -311,6 +311,30 @@ inline Row measureRow(ts::Renderer& r, int scene, int pattern, double az, double
   return row;
 }
 
+// The window's first stage of a row (ts::measureStage): GL's pictures as
+// measured, the CPU methods' at a quarter of the resolution (coarsePicture,
+// a sixteenth of the work), shown with GL_NEAREST and tagged "refining"; no
+// RMS or reads yet (NaN).  Never in a figure.
+inline Row coarseRow(ts::Renderer& r, int scene, int pattern, double az, double bias) {
+  Row row;
+  row.azimuth = az;
+  const View v = sceneView(scene, az);
+  const ts::TextureDesc tex = sceneTexture(scene, pattern);
+  for (int m = 0; m < kMethodCount; ++m) {
+    row.rms[size_t(m)] = row.reads[size_t(m)] = std::nan("");
+    if (byGL(m)) {
+      row.pictures[size_t(m)] = pictureTexture(glPicture(r, v, tex, m, bias), methodKey(m), scene, az);
+      continue;
+    }
+    ts::measureProgress(0.02 + 0.08 * m / kMethodCount);
+    ts::TextureDesc& t = row.pictures[size_t(m)];
+    t = pictureTexture(coarsePicture(m, pyramids(scene, pattern), v, bias, 4, kBackground), methodKey(m), scene, az);
+    t.minFilter = t.magFilter = GL_NEAREST;
+    t.params.push_back({"stage", "coarse"});
+  }
+  return row;
+}
+
 // Item 8: each kernel's chain (sRGB values, linear light) under GL's trilinear
 // filter on the slanted plane at `az`: far-field RMS against the exact
 // integral made the same way (of the sRGB values, or of the linear-light

@@ -179,8 +179,11 @@ inline int notesHeight(int lines, int scale) { return int(std::ceil(lines * L::l
 
 // A picture measure() made, in a cell (or "measuring..." before it).
 inline void picturePanel(ts::Frame& f, const std::string& id, const ts::Rect& r, const ts::TextureDesc* t, int scale) {
-  if (t && t->image) f.panels.push_back(L::texturePanel(id, r, f.addTexture(*t)));
-  else L::caption(f, L::box(r), "measuring...", kWhite, scale);
+  if (t && t->image) {
+    f.panels.push_back(L::texturePanel(id, r, f.addTexture(*t)));
+    for (const auto& p : t->params)  // a coarse first stage (coarseRow): marked as such
+      if (p.first == "stage" && p.second == "coarse") L::refiningTag(f, r);
+  } else L::caption(f, L::box(r), "measuring...", kWhite, scale);
 }
 inline const Row* rowAt(const Result* m, double az) {
   if (!m) return nullptr;
@@ -207,8 +210,9 @@ inline void Views::buildMethods(ts::Frame& f, const Result* m) const {
                  c.scale);
     if (row)
       L::caption(f, c.below,
-                 k == kExact ? "the reference (" + readsText(row->reads[size_t(k)]) + ")"
-                             : "RMS " + fmt("%.2f", row->rms[size_t(k)]) + ", " + readsText(row->reads[size_t(k)]),
+                 std::isnan(row->rms[size_t(k)]) ? std::string("RMS, reads: measuring...")
+                 : k == kExact                   ? "the reference (" + readsText(row->reads[size_t(k)]) + ")"
+                               : "RMS " + fmt("%.2f", row->rms[size_t(k)]) + ", " + readsText(row->reads[size_t(k)]),
                  colour, c.scale, ts::Align::Left);
   }
   notes(f, {4, float(h - 2 * line - 2), float(w - 4), float(h)},

@@ -186,6 +186,9 @@ inline void Views::addImage(ts::Frame& f, const std::string& id, ts::Rect rect, 
     if (f.textures[i].key() == t.key() && f.textures[i].minFilter == t.minFilter) index = int(i);
   if (index < 0) index = f.addTexture(t);
   f.panels.push_back(ts::layout::texturePanel(id, rect, index));
+  // A first stage (Jitter::measure): the reference and the errors are coarse.
+  if (measured && measured->refining && (id.rfind("error", 0) == 0 || id == "image_reference"))
+    ts::layout::refiningTag(f, rect);
 }
 
 // A pixel square of `box` (canvas pixels, y down) with its subpixel grid and
@@ -303,6 +306,8 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   L::caption(f, {12, 8, float(f.width) - 12, float(p.top - 2)}, title, kWhite, sc, ts::Align::Left);
   const Result* res = current(fd);
   if (res) addImage(f, "image", rect, showError_ ? res->errorTexture : res->texture);
+  if (res && measured && measured->refining && (showError_ || mode_ == kReference))  // coarse, as in addImage
+    L::refiningTag(f, rect);
   int sideX = rect.x + rect.w + 24;  // where the numbers start
   int x = p.column ? 16 : sideX, y0 = p.column ? rect.y + rect.h + 12 : p.top + 4;
   int room = p.column ? p.under - 12 : f.height - y0 - 3 * p.line - labelsUnder(sc);

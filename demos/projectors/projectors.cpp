@@ -320,13 +320,23 @@ ts::Frame Projectors::build(int width, int height, const ts::Measurements& measu
 }
 
 ts::Measurements Projectors::measure(ts::Renderer& r) {
-  if (fixed_.empty()) fixed_ = measureAll(r);  // state-independent: once
-  ts::Measurements out = fixed_;
-  if (!detail_.usage.count(key())) {
+  auto stateUsage = [&] {  // the texels the current state reads: the usage panel's picture
+    if (detail_.usage.count(key())) return;
     views::Way w = way();
     detail_.usage[key()] = usage(sixViews(r, shape(Object(object_)), w.pr, w.ax, w.f, views::effective(w), kUsageGrid),
                                  kUsageGrid);
+  };
+  // A window's first measurement: the usage panel at once (ts::measureStage),
+  // the state-independent numbers after it.
+  if (fixed_.empty() && ts::measureStaged()) {
+    stateUsage();
+    ts::Measurements first;
+    first.detail = detail_;
+    ts::measureStage(std::move(first));
   }
+  if (fixed_.empty()) fixed_ = measureAll(r);  // state-independent: once
+  ts::Measurements out = fixed_;
+  stateUsage();
   const Usage& u = detail_.usage[key()];
   out.push_back({"state_columns", u.columns, "share of columns the current object uses"});
   out.push_back({"state_rows", u.rows, "share of rows the current object uses"});

@@ -314,6 +314,32 @@ TEST(ZooViews, ExactReferencePerPixel) {
   }
 }
 
+// The window's first stage (demos/filter_zoo/filter_zoo_measure.hpp,
+// coarseRow): a CPU method's coarse picture is that method's own picture
+// subsampled, each 4 x 4 block its pixel (2, 2), not an approximation of
+// another kind; at k = 1 it is the whole picture.  Control: the block's
+// pixel (0, 0) is not what it shows.
+TEST(ZooCoarseStage, CoarsePictureSubsamplesTheMethodsPicture) {
+  const Pyramids p(checker());
+  const View v = slantView(96, 48, 30);
+  for (int m : {int(kExact), int(kRipmap), int(kSat), int(kProbes), int(kEwa)}) {
+    SCOPED_TRACE(methodKey(m));
+    const ts::Image full = cpuPicture(m, p, v, 0, {}).image;
+    EXPECT_EQ(coarsePicture(m, p, v, 0, 1).pixels, full.pixels);
+    const ts::Image coarse = coarsePicture(m, p, v, 0, 4);
+    ASSERT_EQ(coarse.width, 24);
+    ASSERT_EQ(coarse.height, 12);
+    long same = 0, corner = 0;
+    for (int r = 0; r < coarse.height; ++r)
+      for (int c = 0; c < coarse.width; ++c) {
+        same += coarse.at(c, r) == full.at(4 * c + 2, 4 * r + 2);
+        corner += coarse.at(c, r) == full.at(4 * c, 4 * r);
+      }
+    EXPECT_EQ(same, long(coarse.width) * coarse.height);
+    EXPECT_LT(corner, same);  // the control: another pixel of the block differs somewhere
+  }
+}
+
 // The far-field RMS of every CPU method at the three azimuths (computed once).
 struct Table {
   std::map<std::string, double> rms, reads;
