@@ -138,8 +138,13 @@ class BumpMapping final : public ts::Scene {
     ts::Measurements m = bump::measureAll(draw, toLight(0),
                                           bump::normalMap(H, 1.0, 0.4, heightScale_, true),
                                           bump::normalMap(H, 1.0, 0.4, heightScale_, false));
+    // Kept without its GL calls (a hit records them again): they hold copies of every texture uploaded.
+    ts::Measurements kept = m;
+    bump::Found bare = *m.detailAs<bump::Found>();
+    bare.picturesGL.clear(), bare.refNormalsGL = nullptr, bare.embossTermGL = nullptr;
+    kept.detail = bare;
     if (measuredCache_.size() >= 4) measuredCache_.erase(measuredCache_.begin());
-    measuredCache_.push_back({key, m});
+    measuredCache_.push_back({key, std::move(kept)});
     return m;
   }
 
