@@ -39,12 +39,15 @@ long residentKb(const std::string& marker) {
   for (const auto& entry : fs::directory_iterator("/proc", ec)) {
     const std::string pid = entry.path().filename().string();
     if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::ifstream cmd(entry.path() / "cmdline", std::ios::binary);
-    std::string line((std::istreambuf_iterator<char>(cmd)), std::istreambuf_iterator<char>());
-    if (line.find(marker) == std::string::npos || line.find("make_figures") == std::string::npos) continue;
-    std::ifstream status(entry.path() / "status");
-    for (std::string l; std::getline(status, l);)
-      if (l.rfind("VmRSS:", 0) == 0) sum += std::atol(l.c_str() + 6);
+    try {  // a process may end while it is read ("No such process")
+      std::ifstream cmd(entry.path() / "cmdline", std::ios::binary);
+      std::string line((std::istreambuf_iterator<char>(cmd)), std::istreambuf_iterator<char>());
+      if (line.find(marker) == std::string::npos || line.find("make_figures") == std::string::npos) continue;
+      std::ifstream status(entry.path() / "status");
+      for (std::string l; std::getline(status, l);)
+        if (l.rfind("VmRSS:", 0) == 0) sum += std::atol(l.c_str() + 6);
+    } catch (const std::exception&) {
+    }
   }
 #else
   (void)marker;
