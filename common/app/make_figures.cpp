@@ -1,13 +1,22 @@
-// make_figures — renders every registered book figure into one folder, in
-// one process with one offscreen context (textures and shaders are shared
-// between figures), and writes the gallery README.md beside them.
+// make_figures — renders every registered book figure into one folder and
+// writes the gallery README.md beside them.  The demos are independent: with
+// more than one, it runs itself once per demo (--only DEMO), --jobs at a time
+// (default: two, or one on a single core), each child with one offscreen
+// context for all its demo's figures (one scene: what it measured for one
+// figure serves the next of the same state).  A child's output is kept and
+// printed in the demos' order when it ends, so what is printed and written
+// does not depend on which child finished first; a child that fails fails
+// the run with its message (each file is written whole or not at all).
 //
-//   make_figures [--out DIR] [--backend auto|osmesa|egl|hidden] [--scale F] [--only ID] [--list]
+//   make_figures [--out DIR] [--backend auto|osmesa|egl|hidden] [--scale F] [--only ID] [--list] [--jobs N]
 #include <sys/stat.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -15,6 +24,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "common/app/side_panel.hpp"
@@ -225,10 +235,118 @@ bool selected(const std::string& only, const std::string& figure, const std::str
   return false;
 }
 
+// A child (--report FILE) writes each measurement of its figures as a line
+// of FILE, which the parent reads back for the gallery: a control character
+// first, then figure, name, value (exact: %.17g) and meaning, tab-separated
+// (none of them holds a tab or a line break).  A file of its own, not the
+// child's output, where a line could be cut by what it writes on stderr.
+constexpr char kReportMark = '\x1e';
+
+std::string reportLine(const std::string& figure, const ts::Measurement& m) {
+  char v[40];
+  std::snprintf(v, sizeof v, "%.17g", m.value);
+  std::string line = std::string(1, kReportMark) + figure + "\t" + m.name + "\t" + v + "\t" + m.meaning;
+  for (char& c : line)
+    if (c == '\n' || c == '\r') c = ' ';
+  return line + "\n";
+}
+
+// A child's output: what it printed and each figure's measurements.
+struct ChildOutput {
+  std::string text;
+  std::map<std::string, ts::Measurements> measured;
+};
+void parseReport(const std::string& report, ChildOutput& c) {
+  size_t at = 0;
+  while (at < report.size()) {
+    size_t end = report.find('\n', at);
+    if (end == std::string::npos) throw ts::Error("a child's report ends inside a line");
+    std::string line = report.substr(at, end - at);
+    at = end + 1;
+    if (line.empty() || line[0] != kReportMark) throw ts::Error("a child's report holds a stray line: " + line);
+    std::vector<std::string> f;
+    for (size_t from = 1;;) {
+      size_t tab = line.find('\t', from);
+      f.push_back(line.substr(from, tab == std::string::npos ? std::string::npos : tab - from));
+      if (tab == std::string::npos || f.size() == 4) break;
+      from = tab + 1;
+    }
+    if (f.size() != 4) throw ts::Error("a child's report line is cut: " + line.substr(1));
+    c.measured[f[0]].push_back({f[1], std::strtod(f[2].c_str(), nullptr), f[3]});
+  }
+}
+
+// Each demo in a child of its own (this program with --only DEMO --report),
+// `jobs` at a time, taken in the demos' order as the children end.  Returns
+// each demo's output in that order; throws (with the child's message) if
+// one failed: the children still running finish, none is started after.
+std::vector<ChildOutput> runChildren(const std::vector<std::string>& demos, const std::vector<std::string>& common,
+                                     int jobs) {
+  const std::string reports = ts::makeTempFolder("make_figures-");
+  if (reports.empty()) throw ts::Error("cannot make a temporary folder for the children's reports");
+  struct Remove {  // the reports' folder goes whatever happens
+    std::string path;
+    ~Remove() {
+      std::error_code ec;
+      std::filesystem::remove_all(path, ec);
+    }
+  } removeReports{reports};
+  auto reportOf = [&](size_t i) { return reports + "/" + demos[i] + ".txt"; };
+  struct Job {
+    ts::ProcessResult result;
+    bool ran = false;
+  };
+  std::vector<Job> done(demos.size());
+  std::atomic<size_t> next{0};
+  std::atomic<bool> failed{false};
+  const std::string self = ts::programPath("make_figures");
+  auto worker = [&] {
+    while (!failed) {
+      const size_t i = next++;
+      if (i >= demos.size()) break;
+      std::vector<std::string> argv = {self, "--only", demos[i], "--report", reportOf(i)};
+      argv.insert(argv.end(), common.begin(), common.end());
+      // No time limit that matters: a figure takes what it takes (a day stops a hung child).
+      done[i].result = ts::runProcess(argv, "", 86400.0);
+      done[i].ran = true;
+      if (!done[i].result.started || done[i].result.timedOut || done[i].result.exitCode != 0) failed = true;
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int k = 1; k < std::min<int>(jobs, int(demos.size())); ++k) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  std::vector<ChildOutput> out;
+  for (size_t i = 0; i < demos.size(); ++i) {
+    const ts::ProcessResult& r = done[i].result;
+    if (!done[i].ran) continue;
+    if (!r.started || r.timedOut || r.exitCode != 0) {
+      std::string text = r.out;
+      if (!text.empty() && text.back() != '\n') text += '\n';
+      std::fputs(text.c_str(), stderr);
+      throw ts::Error(demos[i] + "'s figures failed (" +
+                      (!r.started ? std::string("the program could not be run")
+                       : r.timedOut ? std::string("no answer in a day")
+                                    : "exit code " + std::to_string(r.exitCode)) +
+                      "): nothing more is rendered and the gallery is not written");
+    }
+    ChildOutput c;
+    c.text = r.out;
+    std::ifstream in(reportOf(i), std::ios::binary);
+    if (!in) throw ts::Error(demos[i] + "'s child wrote no report");
+    parseReport(std::string(std::istreambuf_iterator<char>(in), {}), c);
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
 int run(int argc, char** argv) {
-  std::string out = "book_figures", backend = "auto", only;
+  std::string out = "book_figures", backend = "auto", only, scaleText, report;
   double scale = 1.0;
   bool list = false, exportPrograms = false;
+  // Two children at a time: the figures are CPU-bound (llvmpipe, the CPU
+  // references), and each child's peak memory adds up.
+  int jobs = std::thread::hardware_concurrency() > 1 ? 2 : 1;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     auto need = [&]() -> std::string {
@@ -240,18 +358,27 @@ int run(int argc, char** argv) {
     else if (a == "--only") only = need();
     else if (a == "--list") list = true;
     else if (a == "--export-c") exportPrograms = true;
-    else if (a == "--scale") {
+    else if (a == "--report") report = need();  // a child's: its measurements, for the parent
+    else if (a == "--jobs") {
       std::string v = need();
+      char* end = nullptr;
+      long n = std::strtol(v.c_str(), &end, 10);
+      if (v.empty() || *end || n < 1 || n > 64) throw ts::Error("--jobs: '" + v + "' is not a number from 1 to 64");
+      jobs = int(n);
+    } else if (a == "--scale") {
+      std::string v = need();
+      scaleText = v;
       char* end = nullptr;
       scale = std::strtod(v.c_str(), &end);
       if (v.empty() || *end || !(scale > 0) || scale > 16) throw ts::Error("--scale: '" + v + "' is not in (0, 16]");
     } else if (a == "--help" || a == "-h") {
       std::printf("usage: make_figures [--out DIR] [--backend auto|osmesa|egl|hidden] "
-                  "[--scale F] [--only ID] [--list] [--export-c]\n"
+                  "[--scale F] [--only ID] [--list] [--export-c] [--jobs N]\n"
                   "Renders every registered book figure (PNG + sidecar JSON + GL listing) and the gallery README.md\n"
                   "into DIR (default book_figures). --scale multiplies every figure's size. --only ID[,ID...]: just\n"
                   "these figures or every figure of these demos (no gallery). --export-c: also each figure as a\n"
-                  "standalone C program, DIR/<id>.c and DIR/<id>.texels (see --export-c of the demos).\n");
+                  "standalone C program, DIR/<id>.c and DIR/<id>.texels (see --export-c of the demos). --jobs N:\n"
+                  "N demos at a time, each in a process of its own (default 2; 1: all in this process).\n");
       return 0;
     } else throw ts::Error("unknown argument '" + a + "' (see --help)");
   }
@@ -282,12 +409,47 @@ int run(int argc, char** argv) {
     throw ts::Error("cannot create " + out + ": " + made.message());
   ts::checkWritable(out + "/README.md");
 
+  std::vector<std::string> demoOrder;
+  for (const Entry& e : todo)
+    if (demoOrder.empty() || demoOrder.back() != e.demo) demoOrder.push_back(e.demo);
+  if (jobs > 1 && demoOrder.size() > 1 && report.empty()) {
+    std::vector<std::string> common = {"--out", out, "--backend", backend};
+    if (!scaleText.empty()) common.insert(common.end(), {"--scale", scaleText});
+    if (exportPrograms) common.push_back("--export-c");
+    std::printf("rendering %zu figures of %zu demos into %s/, %d processes at a time\n", todo.size(),
+                demoOrder.size(), out.c_str(), jobs);
+    std::fflush(stdout);
+    std::map<std::string, ts::Measurements> measured;
+    for (ChildOutput& c : runChildren(demoOrder, common, jobs)) {
+      std::fputs(c.text.c_str(), stdout);
+      for (auto& [id, m] : c.measured) measured[id] = std::move(m);
+    }
+    std::map<std::string, std::unique_ptr<ts::Scene>> scenes;  // claimLine asks a scene which numbers it claims
+    for (Entry& e : todo) {
+      auto it = measured.find(e.spec.id);
+      if (it == measured.end()) throw ts::Error(e.spec.id + ": its child printed no measurements");
+      std::unique_ptr<ts::Scene>& scene = scenes[e.demo];
+      if (!scene) scene = ts::makeScene(e.demo);
+      std::vector<std::string> flags = {"--json", out + "/" + e.spec.id + ".json"};
+      flags.insert(flags.end(), e.spec.flags.begin(), e.spec.flags.end());
+      e.command = ts::figureCommand(e.demo, out + "/" + e.spec.id + ".png", e.spec.width, e.spec.height, flags);
+      e.measurements = it->second;
+      e.claim = claimLine(e.spec, *scene, e.measurements);
+    }
+    if (only.empty()) {
+      std::string regen = "scripts/figures.sh" + std::string(scale != 1.0 ? " --scale " + std::to_string(scale) : "");
+      ts::writeFileAtomic(out + "/README.md", gallery(todo, regen));
+    }
+    return 0;
+  }
+
   ts::ContextOptions co;
   co.verbose = true;
   for (const auto& reg : ts::sceneRegistry()) co.accumBuffer |= reg.make()->wantsAccumBuffer();
   auto ctx = ts::createOffscreenContext(b, co);
   ts::Renderer r(*ctx);
-  std::printf("rendering %zu figures into %s/ with %s\n", todo.size(), out.c_str(), ctx->describe().c_str());
+  if (report.empty())  // a child's parent has said it
+    std::printf("rendering %zu figures into %s/ with %s\n", todo.size(), out.c_str(), ctx->describe().c_str());
   // One scene per demo for all its figures, each from the defaults and its
   // own flags: what a scene keeps between measurements (the parallax table,
   // the jitter images) serves every figure of the same state.
@@ -296,6 +458,7 @@ int run(int argc, char** argv) {
     ts::Options opts;
   };
   std::map<std::string, Demo> demos;
+  std::string reportText;  // --report FILE: what goes into it
   for (Entry& e : todo) {
     Demo& d = demos[e.demo];
     if (!d.scene) {
@@ -343,7 +506,10 @@ int run(int argc, char** argv) {
     }
     for (const auto& [suffix, text] : scene->figureFiles()) ts::writeFileAtomic(out + "/" + e.spec.id + suffix, text);
     std::printf("%s  %s\n%s", png.c_str(), e.spec.bookNumber.c_str(), ts::formatMeasurements(got.measurements).c_str());
+    for (const ts::Measurement& m : got.measurements) reportText += reportLine(e.spec.id, m);
+    std::fflush(stdout);  // a child's lines reach its parent in the order printed, stderr's among them
   }
+  if (!report.empty()) ts::writeFileAtomic(report, reportText);
   if (only.empty()) {
     std::string regen = "scripts/figures.sh" + std::string(scale != 1.0 ? " --scale " + std::to_string(scale) : "");
     ts::writeFileAtomic(out + "/README.md", gallery(todo, regen));

@@ -65,6 +65,35 @@ struct Found {
   ts::gl::CallList embossTermGL;
 };
 
+// The pictures measureAll shows and records: R's normals on the figure's
+// background, and emboss's term alone.
+inline RenderSpec shownNormalsSpec() {
+  RenderSpec s{kReference, true};
+  s.onBackdrop = true;
+  return s;
+}
+inline RenderSpec embossTermSpec() {
+  RenderSpec s{kEmboss};
+  s.embossTermOnly = true;
+  return s;
+}
+
+// The GL calls of every picture measureAll records, recorded again (the
+// pictures themselves are the same): a measurement reused for another
+// figure of the same state takes them anew, since a recording holds the
+// viewport it found (that figure's size).
+inline void recordPicturesAgain(const RenderFn& render, Found& found) {
+  auto recorded = [&](RenderSpec s, ts::gl::CallList* calls) {
+    s.recordTo = calls;
+    render(s);
+  };
+  recorded({kReference}, &found.picturesGL[kReference]);
+  recorded(shownNormalsSpec(), &found.refNormalsGL);
+  for (int m = 0; m < kMethodCount; ++m)
+    if (kMethods[m].fixedFunction) recorded({m}, &found.picturesGL[m]);
+  recorded(embossTermSpec(), &found.embossTermGL);
+}
+
 // `seam`: the normal map baked with and without wrapping differences.
 inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye, const ts::Image& wrapped,
                                    const ts::Image& unwrapped) {
@@ -78,9 +107,7 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   };
   auto refShaded = std::make_shared<const ts::Image>(recorded({kReference}, &found.picturesGL[kReference]));
   auto refNormals = std::make_shared<const ts::Image>(render({kReference, true}));
-  RenderSpec shownNormals{kReference, true};
-  shownNormals.onBackdrop = true;
-  found.refNormals = std::make_shared<const ts::Image>(recorded(shownNormals, &found.refNormalsGL));
+  found.refNormals = std::make_shared<const ts::Image>(recorded(shownNormalsSpec(), &found.refNormalsGL));
   const ts::Image exact = render({kReference, true, true}), smooth = render({kFlat, true});
   found.pictures[kReference] = refShaded;
   ts::measureProgress(0.15);
@@ -171,9 +198,7 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   // per band of the angle between the smooth normal and light 1.  The shift
   // is the light's part along the surface: 0 with the light along the normal.
   {
-    RenderSpec s{kEmboss};
-    s.embossTermOnly = true;
-    const ts::Image term = recorded(s, &found.embossTermGL);
+    const ts::Image term = recorded(embossTermSpec(), &found.embossTermGL);
     double sum[4] = {0, 0, 0, 0}, cnt[4] = {0, 0, 0, 0};
     const glm::dvec3 L = glm::normalize(light1Eye);
     found.embossBand.assign(size_t(term.width) * size_t(term.height), -1);
@@ -234,6 +259,7 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   // Mipmapped heights (B1: slopes from the averaged heights) and a
   // mipmapped normal map (B3: averaged normals) both flatten the bumps; the
   // mean tilt relative to the nearest view, per distance.
+  std::map<int, double> nearTilt;  // the nearest view's tilt, the same for every distance: rendered once
   for (float dist : {2.0f, 4.0f, 8.0f}) {
     RenderSpec s{kFlat, true};
     s.distanceFactor = dist, s.mipmaps = true;
@@ -242,7 +268,8 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
       RenderSpec near = s;
       near.method = m, near.distanceFactor = 1.0f;
       s.method = m;
-      double t1 = meanTiltDeg(render(near), smooth), t2 = meanTiltDeg(render(s), far);
+      if (!nearTilt.count(m)) nearTilt[m] = meanTiltDeg(render(near), smooth);
+      double t1 = nearTilt[m], t2 = meanTiltDeg(render(s), far);
       out.push_back({std::string("mip_tilt_ratio[") + kMethods[m].key + "@" + std::to_string(int(dist)) + "x]",
                      t1 > 0 ? t2 / t1 : 0,
                      std::string("mean tilt at this distance / at the nearest, mipmapped ") +

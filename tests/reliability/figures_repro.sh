@@ -100,11 +100,13 @@ fi
 # ---------------------------------------------------- 3. killed mid-write
 # TS_TEST_WRITE_PAUSE_MS makes every write pause half-way, while the data is
 # in the unnamed (O_TMPFILE) file; we wait until the process holds such a
-# file open in the output folder, then SIGKILL it.
+# file open in the output folder, then SIGKILL it.  --jobs 1: the figures in
+# that one process (by default the demos are rendered in children of it,
+# each writing the same way), so the process watched is the one writing.
 for round in 1 2 3; do
   out="$T/k$round"
   mkdir -p "$out"
-  TS_TEST_WRITE_PAUSE_MS=400 "$FIGS" --backend osmesa --out "$out" >/dev/null 2>&1 &
+  TS_TEST_WRITE_PAUSE_MS=400 "$FIGS" --jobs 1 --backend osmesa --out "$out" >/dev/null 2>&1 &
   pid=$!
   caught=0
   # Skip $round writes first, so the kill lands on different files.  Waits
