@@ -170,7 +170,9 @@ struct Skip {
     const ts::Image& h = r.height[0];
     size = h.width;
     least.resize(size_t(size) * size_t(size));
-    auto at = [&](int i, int j) { return int(h.pixels[(size_t(j & (size - 1)) * size_t(size) + size_t(i & (size - 1))) * 4]); };
+    auto at = [&](int i, int j) {
+      return int(h.pixels[(size_t(j & (size - 1)) * size_t(size) + size_t(i & (size - 1))) * 4]);
+    };
     for (int j = 0; j < size; ++j)
       for (int i = 0; i < size; ++i) {
         const int top = std::max({at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)});

@@ -728,7 +728,8 @@ TEST(Causes, SeedFChangesTheEwaOnlyWhereTheFootprintIsSheared) {
 // with deep mortar, asserted from the measured PSNRs: the parallax occlusion march finds the brick faces where
 // the unshifted methods (bump, normal) show the mortar behind them, so it is closer than both; a displaced
 // grid 2 texels fine is the geometry itself, so it is closest.  The controls: a grid 32 texels coarse loses
-// the mortar and drops below the march, and a reference traced with the relief flattened (height scale 0) turns the order of bump and the march around: the checks can fail.
+// the mortar and drops below the march, and a reference traced with the relief flattened (height scale 0) turns
+// the order of bump and the march around: the checks can fail.
 #include "demos/parallax_aniso/parallax_aniso_ranking.hpp"
 namespace {
 using namespace pax;
