@@ -325,7 +325,7 @@ std::vector<ChildOutput> runChildren(const std::vector<std::string>& demos, cons
       if (!text.empty() && text.back() != '\n') text += '\n';
       std::fputs(text.c_str(), stderr);
       throw ts::Error(demos[i] + "'s figures failed (" +
-                      (!r.started ? std::string("the program could not be run")
+                      (!r.started   ? std::string("the program could not be run")
                        : r.timedOut ? std::string("no answer in a day")
                                     : "exit code " + std::to_string(r.exitCode)) +
                       "): nothing more is rendered and the gallery is not written");
@@ -416,8 +416,8 @@ int run(int argc, char** argv) {
     std::vector<std::string> common = {"--out", out, "--backend", backend};
     if (!scaleText.empty()) common.insert(common.end(), {"--scale", scaleText});
     if (exportPrograms) common.push_back("--export-c");
-    std::printf("rendering %zu figures of %zu demos into %s/, %d processes at a time\n", todo.size(),
-                demoOrder.size(), out.c_str(), jobs);
+    std::printf("rendering %zu figures of %zu demos into %s/, %d processes at a time\n", todo.size(), demoOrder.size(),
+                out.c_str(), jobs);
     std::fflush(stdout);
     std::map<std::string, ts::Measurements> measured;
     for (ChildOutput& c : runChildren(demoOrder, common, jobs)) {

@@ -135,8 +135,7 @@ class BumpMapping final : public ts::Scene {
         return again;
       }
     const bump::Heights& H = heights();
-    ts::Measurements m = bump::measureAll(draw, toLight(0),
-                                          bump::normalMap(H, 1.0, 0.4, heightScale_, true),
+    ts::Measurements m = bump::measureAll(draw, toLight(0), bump::normalMap(H, 1.0, 0.4, heightScale_, true),
                                           bump::normalMap(H, 1.0, 0.4, heightScale_, false));
     // Kept without its GL calls (a hit records them again): they hold copies of every texture uploaded.
     ts::Measurements kept = m;
@@ -162,9 +161,9 @@ class BumpMapping final : public ts::Scene {
   // Every option measure() reads (all but --method and --view), floats in hex: exact.
   std::string measuredState() const {
     char b[512];
-    std::snprintf(b, sizeof b, "%a %a %a %a %a %a %a %a %d %a %a %a|", heightScale_, objectScale_, tilt_,
-                  light_[0].x, light_[0].y, light_[1].x, light_[1].y, distance_, wrapSlopes_ ? 1 : 0,
-                  camera_.yaw, camera_.pitch, camera_.zoom);
+    std::snprintf(b, sizeof b, "%a %a %a %a %a %a %a %a %d %a %a %a|", heightScale_, objectScale_, tilt_, light_[0].x,
+                  light_[0].y, light_[1].x, light_[1].y, distance_, wrapSlopes_ ? 1 : 0, camera_.yaw, camera_.pitch,
+                  camera_.zoom);
     return b + std::string(file_.active() ? file_.path() : heights_ ? "bricks" : "procedural");
   }
   glm::vec3 toLight(int k) const {
