@@ -116,7 +116,13 @@ class ParallaxAniso final : public ts::Scene {
   int defaultWidth() const override { return 1024; }  // fits a laptop's 1280x720 (the figures are larger)
   int defaultHeight() const override { return 560; }
 
-  std::vector<std::string> claim() const override { return {"ewa_psnr_all", "ewa_vis_psnr_all"}; }
+  std::vector<std::string> claim() const override {
+    if (view_ == kRanking) return {"relief_rank_psnr_db*", "relief_rank[*"};
+    if (view_ == kCauses)
+      return {"eq2_derivative_error_texels*", "footprint_area_ratio*", "hidden_texel_share*", "double_counted_texels*"};
+    if (view_ == kSeedF) return {"seed_F_error_px", "seed_F_psnr_db"};
+    return {"ewa_psnr_all", "ewa_vis_psnr_all"};
+  }
   void addOptions(ts::Options& o) override {
     o.addEnum("mode", &mode_,
               {kModeKeys[0], kModeKeys[1], kModeKeys[2], kModeKeys[3], kModeKeys[4], kModeKeys[5], kModeKeys[6]},
