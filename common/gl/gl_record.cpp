@@ -430,6 +430,10 @@ Call begin(int index, const std::vector<Raw>& raws) {
     c.query = true;
     hint.erase(0, 1);
   }
+  // Exactly as many as the call has: a recording of a fixed-function mesh
+  // holds a million calls, and the vector's growth (1, 2, 4) would leave a
+  // 3-argument glVertex3f with room for 4 (an Arg is over 100 bytes).
+  c.args.reserve(raws.size());
   for (size_t k = 0; k < raws.size(); ++k)
     c.args.push_back(describe(k < hint.size() ? hint[k] : ' ', raws[k], raws, k, c.name));
   // glShaderSource's lengths were read with its strings.
