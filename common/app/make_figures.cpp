@@ -9,6 +9,7 @@
 // the run with its message (each file is written whole or not at all).
 //
 //   make_figures [--out DIR] [--backend auto|osmesa|egl|hidden] [--scale F] [--only ID] [--list] [--jobs N]
+//                [--memory MB]
 #include <sys/stat.h>
 
 #include <filesystem>
@@ -16,13 +17,14 @@
 #include <iterator>
 
 #include <algorithm>
-#include <atomic>
+#include <condition_variable>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <cstdio>
 #include <map>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -276,12 +278,34 @@ void parseReport(const std::string& report, ChildOutput& c) {
   }
 }
 
+// What a demo's figures cost, measured once on a 2-core machine with
+// llvmpipe (`/usr/bin/time -v make_figures --only DEMO --jobs 1`: user + sys
+// seconds, peak resident MB).  Only the order and the pairing use them: the
+// longest start first, so the run does not end on one long demo alone, and
+// two children run side by side only while their peaks add up to at most
+// the --memory budget.  A demo not listed (a new one) counts as short and
+// small; a wrong figure here costs time or memory, never a different output.
+struct Cost {
+  double seconds;
+  int peakMb;
+};
+Cost costOf(const std::string& demo) {
+  static const std::map<std::string, Cost> measured = {
+#include "common/app/make_figures_costs.inc"
+  };
+  auto it = measured.find(demo);
+  return it == measured.end() ? Cost{1.0, 250} : it->second;
+}
+
 // Each demo in a child of its own (this program with --only DEMO --report),
-// `jobs` at a time, taken in the demos' order as the children end.  Returns
-// each demo's output in that order; throws (with the child's message) if
-// one failed: the children still running finish, none is started after.
+// `jobs` at a time: the longest first (costOf), a child started only when
+// its peak with those of the children running stays within `memoryMb` (or
+// when none runs: a demo over the budget runs alone).  Returns each demo's
+// output in the demos' order, whichever ended first; throws (with the
+// child's message) if one failed: the children still running finish, none
+// is started after.
 std::vector<ChildOutput> runChildren(const std::vector<std::string>& demos, const std::vector<std::string>& common,
-                                     int jobs) {
+                                     int jobs, int memoryMb) {
   const std::string reports = ts::makeTempFolder("make_figures-");
   if (reports.empty()) throw ts::Error("cannot make a temporary folder for the children's reports");
   struct Remove {  // the reports' folder goes whatever happens
@@ -297,19 +321,51 @@ std::vector<ChildOutput> runChildren(const std::vector<std::string>& demos, cons
     bool ran = false;
   };
   std::vector<Job> done(demos.size());
-  std::atomic<size_t> next{0};
-  std::atomic<bool> failed{false};
+  // The longest first; equal costs in the demos' order.
+  std::vector<size_t> order(demos.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return costOf(demos[a]).seconds > costOf(demos[b]).seconds; });
+  std::mutex lock;
+  std::condition_variable ended;
+  std::vector<bool> started(demos.size(), false);
+  int running = 0, runningMb = 0;
+  bool failed = false;
   const std::string self = ts::programPath("make_figures");
   auto worker = [&] {
-    while (!failed) {
-      const size_t i = next++;
-      if (i >= demos.size()) break;
-      std::vector<std::string> argv = {self, "--only", demos[i], "--report", reportOf(i)};
+    std::unique_lock<std::mutex> hold(lock);
+    for (;;) {
+      // The first demo not started, in cost order, that fits beside those running.
+      size_t pick = demos.size();
+      bool left = false;
+      for (size_t i : order) {
+        if (started[i]) continue;
+        left = true;
+        if (running == 0 || runningMb + costOf(demos[i]).peakMb <= memoryMb) {
+          pick = i;
+          break;
+        }
+      }
+      if (failed || !left) break;
+      if (pick == demos.size()) {  // none fits: wait for a child to end
+        ended.wait(hold);
+        continue;
+      }
+      started[pick] = true;
+      const int mb = costOf(demos[pick]).peakMb;
+      ++running, runningMb += mb;
+      hold.unlock();
+      std::vector<std::string> argv = {self, "--only", demos[pick], "--report", reportOf(pick)};
       argv.insert(argv.end(), common.begin(), common.end());
       // No time limit that matters: a figure takes what it takes (a day stops a hung child).
-      done[i].result = ts::runProcess(argv, "", 86400.0);
-      done[i].ran = true;
-      if (!done[i].result.started || done[i].result.timedOut || done[i].result.exitCode != 0) failed = true;
+      ts::ProcessResult result = ts::runProcess(argv, "", 86400.0);
+      hold.lock();
+      done[pick].result = std::move(result);
+      done[pick].ran = true;
+      const ts::ProcessResult& r = done[pick].result;
+      if (!r.started || r.timedOut || r.exitCode != 0) failed = true;
+      --running, runningMb -= mb;
+      ended.notify_all();
     }
   };
   std::vector<std::thread> threads;
@@ -342,6 +398,8 @@ std::vector<ChildOutput> runChildren(const std::vector<std::string>& demos, cons
 
 int run(int argc, char** argv) {
   std::string out = "book_figures", backend = "auto", only, scaleText, report;
+  // The children's peaks side by side at most this (MB): see costOf.
+  int memoryMb = 1000;
   double scale = 1.0;
   bool list = false, exportPrograms = false;
   // Two children at a time: the figures are CPU-bound (llvmpipe, the CPU
@@ -365,6 +423,13 @@ int run(int argc, char** argv) {
       long n = std::strtol(v.c_str(), &end, 10);
       if (v.empty() || *end || n < 1 || n > 64) throw ts::Error("--jobs: '" + v + "' is not a number from 1 to 64");
       jobs = int(n);
+    } else if (a == "--memory") {
+      std::string v = need();
+      char* end = nullptr;
+      long n = std::strtol(v.c_str(), &end, 10);
+      if (v.empty() || *end || n < 1 || n > 1000000)
+        throw ts::Error("--memory: '" + v + "' is not a number of megabytes from 1 to 1000000");
+      memoryMb = int(n);
     } else if (a == "--scale") {
       std::string v = need();
       scaleText = v;
@@ -373,12 +438,14 @@ int run(int argc, char** argv) {
       if (v.empty() || *end || !(scale > 0) || scale > 16) throw ts::Error("--scale: '" + v + "' is not in (0, 16]");
     } else if (a == "--help" || a == "-h") {
       std::printf("usage: make_figures [--out DIR] [--backend auto|osmesa|egl|hidden] "
-                  "[--scale F] [--only ID] [--list] [--export-c] [--jobs N]\n"
+                  "[--scale F] [--only ID] [--list] [--export-c] [--jobs N] [--memory MB]\n"
                   "Renders every registered book figure (PNG + sidecar JSON + GL listing) and the gallery README.md\n"
                   "into DIR (default book_figures). --scale multiplies every figure's size. --only ID[,ID...]: just\n"
                   "these figures or every figure of these demos (no gallery). --export-c: also each figure as a\n"
                   "standalone C program, DIR/<id>.c and DIR/<id>.texels (see --export-c of the demos). --jobs N:\n"
-                  "N demos at a time, each in a process of its own (default 2; 1: all in this process).\n");
+                  "N demos at a time, each in a process of its own (default 2; 1: all in this process), the longest\n"
+                  "first. --memory MB: children side by side only while their measured peaks add up to at most MB\n"
+                  "(default 1000; a demo over it runs alone).\n");
       return 0;
     } else throw ts::Error("unknown argument '" + a + "' (see --help)");
   }
@@ -420,7 +487,7 @@ int run(int argc, char** argv) {
                 out.c_str(), jobs);
     std::fflush(stdout);
     std::map<std::string, ts::Measurements> measured;
-    for (ChildOutput& c : runChildren(demoOrder, common, jobs)) {
+    for (ChildOutput& c : runChildren(demoOrder, common, jobs, memoryMb)) {
       std::fputs(c.text.c_str(), stdout);
       for (auto& [id, m] : c.measured) measured[id] = std::move(m);
     }

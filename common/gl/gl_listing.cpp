@@ -81,19 +81,20 @@ const char* nameRoles(const gl::Call& c) {
 }
 }  // namespace
 
-std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls) {
-  std::map<char, std::unordered_map<long long, long long>> names;  // per role letter: GL name -> number
-  auto number = [&names](char role, long long name) {
-    if (name == 0) return 0LL;
-    auto& m = names[role];
-    auto it = m.find(name);
-    if (it != m.end()) return it->second;
-    long long n = (long long)(m.size()) + 1;
-    m.emplace(name, n);
-    return n;
-  };
-  std::vector<gl::Call> out = calls;
-  for (gl::Call& c : out) {
+namespace {
+// Numbers GL object names call by call, in the order they were made.
+class ObjectNumbers {
+ public:
+  // True when `c` names an object (a copy of it is numbered); most calls of
+  // a recording (vertices, colours) do not, and are read as they are.
+  static bool names(const gl::Call& c) {
+    if (c.hasResult && (is(c, "glCreateProgram") || is(c, "glCreateShader"))) return true;
+    const char* roles = nameRoles(c);
+    for (size_t k = 0; roles[k] && k < c.args.size(); ++k)
+      if (roles[k] != ' ') return true;
+    return false;
+  }
+  void apply(gl::Call& c) {
     // Creation first, so names are numbered in the order they were made.
     if (c.hasResult && (is(c, "glCreateProgram") || is(c, "glCreateShader"))) c.result = number('p', c.result);
     const char* roles = nameRoles(c);
@@ -105,6 +106,25 @@ std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls) {
       else a.i = number(roles[k], a.i);
     }
   }
+
+ private:
+  long long number(char role, long long name) {
+    if (name == 0) return 0LL;
+    auto& m = names_[role];
+    auto it = m.find(name);
+    if (it != m.end()) return it->second;
+    long long n = (long long)(m.size()) + 1;
+    m.emplace(name, n);
+    return n;
+  }
+  std::map<char, std::unordered_map<long long, long long>> names_;  // per role letter: GL name -> number
+};
+}  // namespace
+
+std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls) {
+  ObjectNumbers numbers;
+  std::vector<gl::Call> out = calls;
+  for (gl::Call& c : out) numbers.apply(c);
   return out;
 }
 
@@ -118,9 +138,20 @@ struct Entry {
   bool picked = false;  // sets the picked pixel's texture state
 };
 
-void addEntries(const std::vector<gl::Call>& numbered, std::vector<Entry>* out, const std::vector<bool>* picked) {
-  for (size_t k = 0; k < numbered.size(); ++k) {
-    const gl::Call& c = numbered[k];
+// The calls as numberObjects would give them, numbered one at a time: a
+// recording of a mesh drawn call by call is a million calls, and a copy of
+// all of them would double what the listing holds.
+void addEntries(const std::vector<gl::Call>& calls, std::vector<Entry>* out, const std::vector<bool>* picked) {
+  ObjectNumbers numbers;
+  gl::Call numbered;
+  for (size_t k = 0; k < calls.size(); ++k) {
+    const gl::Call* call = &calls[k];
+    if (ObjectNumbers::names(*call)) {
+      numbered = *call;
+      numbers.apply(numbered);
+      call = &numbered;
+    }
+    const gl::Call& c = *call;
     if (c.query) continue;
     Entry e;
     e.picked = picked && k < picked->size() && (*picked)[k];
@@ -135,7 +166,7 @@ std::vector<Entry> entries(const std::vector<CallSection>& sections, const std::
   for (size_t k = 0; k < sections.size(); ++k) {
     const CallSection& s = sections[k];
     if (!s.heading.empty()) out.push_back({"/* " + s.heading + " */"});
-    if (s.calls) addEntries(numberObjects(*s.calls), &out, k + 1 == sections.size() ? pickedLast : nullptr);
+    if (s.calls) addEntries(*s.calls, &out, k + 1 == sections.size() ? pickedLast : nullptr);
   }
   return out;
 }
