@@ -30,7 +30,12 @@ Rendered renderScene(Scene& scene, Renderer& r, int width, int height, bool reco
 }
 
 std::string glListingFile(const Rendered& got, const std::string& state) {
-  return listingText(listing(pictureSections(got.frame, got.calls), nullptr, 3),
+  // The frame's calls read where they are, not copied into the last section:
+  // a mesh drawn call by call is hundreds of thousands of them.  (A pointer
+  // that owns nothing: got outlives the listing.)
+  std::vector<CallSection> sections = pictureSections(got.frame, {});
+  sections.back().calls = gl::CallList(gl::CallList(), &got.calls);
+  return listingText(listing(sections, nullptr, 3),
                      "The OpenGL calls that draw this picture, recorded as they were made by\n"
                      "       " +
                          state +

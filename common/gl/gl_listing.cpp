@@ -21,7 +21,11 @@ gl::CallList recordRender(Renderer& r, const std::function<void()>& draw) {
   r.release();
   gl::Recording rec;
   draw();
-  return std::make_shared<const std::vector<gl::Call>>(rec.take());
+  // Kept as long as the figure (a picture's listing): without the vector's
+  // spare room, up to half its calls' size again.
+  std::vector<gl::Call> calls = rec.take();
+  calls.shrink_to_fit();
+  return std::make_shared<const std::vector<gl::Call>>(std::move(calls));
 }
 
 std::vector<CallSection> pictureSections(const Frame& frame, std::vector<gl::Call> frameCalls) {
