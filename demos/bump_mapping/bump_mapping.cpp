@@ -406,8 +406,10 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
               "mean |diff| " + num("mad", m, "%.1f") + (!kMethods[m].fixedFunction ? L::Text(",") : L::Text())};
     if (!normals && !kMethods[m].fixedFunction && m != bump::kReference)
       note.push_back("normal off by " + num("normal_err_deg", m, "%.1f") + " deg" +
-                     (m == bump::kSeed002 && shown.size() == 3 ? ";" : ""));
-    if (m == bump::kSeed002 && shown.size() == 3)  // the second half of seed 002's claim: its tilt has no scale in it
+                     (m == bump::kSeed002 && shown.size() == 3 && !measured.empty() ? ";" : ""));
+    // The second half of seed 002's claim: its tilt has no scale in it (a first stage leaves it out: four
+    // "(measuring)" would not fit the note's three lines).
+    if (m == bump::kSeed002 && shown.size() == 3 && !measured.empty())
       note.push_back("twice the heights: tilt ratio " + L::measured(measured, "tilt_ratio_height_x2[seed002]", "%.2f"));
     if (m == bump::kEmboss && !normals && shown.size() != 3 && found->embossContrast[3] >= 0) {
       note.back() = note.back() + ";";
