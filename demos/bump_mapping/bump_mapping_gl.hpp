@@ -220,9 +220,12 @@ inline ts::Program referenceProgram() {
 
 // The reference R: a (nu + 1) x (nv + 1) grid of (s, t), drawn from client
 // arrays with glDrawElements into a framebuffer of its own and read back.
-struct ReferencePass : ts::Renderer::Attachment {
-  static constexpr int kNu = 1024, kNv = 512;
-  explicit ReferencePass(ts::Renderer&) {
+// A window's first stage draws a grid of a sixteenth of the vertices
+// (CoarseReferencePass): R at once, coarse, refined in place.
+template <int Nu, int Nv>
+struct ReferenceGrid : ts::Renderer::Attachment {
+  static constexpr int kNu = Nu, kNv = Nv;
+  explicit ReferenceGrid(ts::Renderer&) {
     for (int j = 0; j <= kNv; ++j)
       for (int i = 0; i <= kNu; ++i) st.push_back(float(i) / kNu), st.push_back(float(j) / kNv);
     for (int j = 0; j < kNv; ++j)
@@ -234,6 +237,8 @@ struct ReferencePass : ts::Renderer::Attachment {
   std::vector<float> st;
   std::vector<unsigned> idx;
 };
+using ReferencePass = ReferenceGrid<1024, 512>;
+using CoarseReferencePass = ReferenceGrid<256, 128>;
 
 // A pass of the demo's own into the renderer's render target
 // (Renderer::offscreen) of the frame's size, cleared to its colour, with the
@@ -263,8 +268,9 @@ ts::Image offscreen(ts::Renderer& r, const ts::Frame& f, const char* what, Draw 
 // R as an image: the frame `f` (its first panel holds the torus batch whose
 // uniforms and height texture R takes) drawn with that panel's matrices,
 // the displaced grid in place of the torus.
+template <class Grid = ReferencePass>
 inline ts::Image renderReference(ts::Renderer& r, const ts::Frame& f) {
-  ReferencePass& pass = r.attachment<ReferencePass>();
+  Grid& pass = r.attachment<Grid>();
   const ts::Batch& b = f.panels.front().batches.front();
   return offscreen(r, f, "drawing the displaced reference torus", [&] {
     GLuint prog = r.program("bump_reference", referenceProgram());

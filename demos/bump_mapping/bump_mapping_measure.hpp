@@ -30,6 +30,7 @@ struct RenderSpec {
   // measurements' normal renders stay on black, which is how covered() tells
   // the surface from the rest.
   bool onBackdrop = false;
+  bool coarseGrid = false;  // R from CoarseReferencePass (a window's first stage)
 };
 using RenderFn = std::function<ts::Image(const RenderSpec&)>;
 

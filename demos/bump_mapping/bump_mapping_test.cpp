@@ -16,15 +16,19 @@
 // differs from 2 by 3 %, and the 8-bit normals add their own).
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "common/core/image.hpp"
 #include "demos/bump_mapping/bump_mapping_gl.hpp"
 #include "demos/bump_mapping/bump_mapping_math.hpp"
 #include "demos/bump_mapping/bump_mapping_measure.hpp"
 #include "common/core/layout.hpp"
+#include "common/core/measure_run.hpp"
+#include "common/core/probe.hpp"
 #include "tests/support/scene_test.hpp"
 
 namespace {
@@ -69,6 +73,62 @@ TEST(BumpMapping, FiguresShowTheirNumbersWhole) {
     }
     EXPECT_EQ(printed, numbers) << view << " " << method;
   }
+}
+
+// A window's first stage (ts::measureStage, only on the window's worker):
+// the pictures at once, the numbers to come.  Its R is the displaced grid
+// drawn coarse, tagged refining and replaced (it is not the result's R), and
+// the frame built from it prints no number: every note says "(measuring)".
+// The control: the result's frame of the same view prints its numbers.
+TEST(BumpMapping, AWindowsFirstStageShowsThePicturesNotTheNumbers) {
+  std::atomic<uint64_t> latest{1};
+  std::atomic<bool> quit{false};
+  std::atomic<double> progress{0};
+  std::vector<ts::Measurements> stages;
+  // Superseded as soon as the stage is handed over: the rest (some 40 renders) is not needed here.
+  ts::MeasureRun run{&latest, &quit, 1, &progress, [&](ts::Measurements&& m) {
+                       stages.push_back(std::move(m));
+                       latest.store(2);
+                     }};
+  Demo d("bump_mapping", {});
+  ts::setMeasureRun(&run);
+  EXPECT_THROW(d.measure(), ts::MeasureCancelled);
+  ts::setMeasureRun(nullptr);
+  ASSERT_EQ(stages.size(), 1u);
+  const ts::Measurements& stage = stages[0];
+  EXPECT_TRUE(stage.refining);
+  EXPECT_TRUE(stage.empty());  // no number measured yet
+  const bump::Found* first = stage.detailAs<bump::Found>();
+  const bump::Found* result = defaults().detailAs<bump::Found>();
+  ASSERT_NE(first, nullptr);
+  ASSERT_NE(result, nullptr);
+  ASSERT_TRUE(first->pictures.count(bump::kReference));
+  const ts::Image &coarse = *first->pictures.at(bump::kReference), &fine = *result->pictures.at(bump::kReference);
+  ASSERT_EQ(coarse.width, fine.width);
+  ASSERT_EQ(coarse.height, fine.height);
+  EXPECT_GT(ts::probe::countDiffering(coarse, fine, 0), 0) << "the stage's R is the coarse grid's, not R";
+  d.measured = stage;
+  const ts::Frame f = d.frame(1024, 512);
+  bool tagged = false;
+  size_t measuring = 0;
+  for (const ts::Label& l : f.labels) {
+    EXPECT_TRUE(l.printed.empty()) << l.text;
+    tagged = tagged || l.text == "refining";
+    for (size_t at = l.text.find("(measuring)"); at != std::string::npos; at = l.text.find("(measuring)", at + 1))
+      ++measuring;
+  }
+  EXPECT_TRUE(tagged);
+  EXPECT_GT(measuring, 0u);
+  EXPECT_NE(f.panel("picture_reference"), nullptr);
+  // The control: the result's frame of the same view prints its numbers, says "(measuring)" nowhere, tags nothing.
+  d.measured = defaults();
+  size_t printed = 0;
+  for (const ts::Label& l : d.frame(1024, 512).labels) {
+    printed += l.printed.size();
+    EXPECT_EQ(l.text.find("(measuring)"), std::string::npos) << l.text;
+    EXPECT_NE(l.text, "refining");
+  }
+  EXPECT_GT(printed, 0u);
 }
 
 // The pictures that show seed 002's and emboss's claims show what was

@@ -259,6 +259,23 @@ class ParallaxAniso final : public ts::Scene {
     std::string key = stateKey();
     if (!table_ || key != tableKey_) {
       Relief& rel = relief();
+      // A window's first stage (ts::measureStage): what GL draws at once, the
+      // modes' pictures, with the reference traced with kStageRays^2 rays a
+      // pixel (a quarter of the work at the default 6 x 6) and the pictures
+      // made from it tagged as refining; no numbers until the table's.
+      // Elsewhere (--png, make_figures, the tests) this does not run.
+      if (ts::measureStaged() && (view_ == kSingle || view_ == kModes || view_ == kError)) {
+        MeasureOptions first;
+        first.refRays = std::min(rays_, kStageRays);
+        first.seed = uint32_t(seed_);
+        first.accel = accel_;
+        first.gradScale = gradScale();
+        first.firstStage = true;
+        ts::Measurements stage;
+        stage.detail = view_ == kSingle ? singleStage(gl, rel, first)
+                                        : shownOf(std::make_shared<Table>(measureAll(gl, camera(), rel, first)));
+        ts::measureStage(std::move(stage));
+      }
       MeasureOptions mo;
       mo.refRays = rays_;
       mo.seed = uint32_t(seed_);
@@ -403,6 +420,28 @@ class ParallaxAniso final : public ts::Scene {
     return m;
   }
 
+  // The single view's first stage: only the one or two pictures it shows
+  // (Views::buildSingle reads nothing else of a stage), the reference traced
+  // only when it is one of them.
+  Shown singleStage(ReliefGL& gl, const Relief& rel, const MeasureOptions& o) const {
+    auto t = std::make_shared<Table>();
+    t->cam = camera(), t->map = rel.name, t->refRays = o.refRays, t->seed = o.seed, t->stage = true;
+    Shown s;
+    s.textures.resize(size_t(kShaderModes) + 1);  // Shown::of: the modes, then the reference
+    for (int m : {mode_, compare_ ? against_ : mode_}) {
+      if (m == kReference) {
+        t->referenceImage = renderReference(t->cam, rel, o.refRays, o.seed).image();
+        s.textures.back() = imageTexture(t->referenceImage, "reference");
+      } else {
+        PassOptions po;
+        po.accel = o.accel, po.gradScale = o.gradScale;
+        s.textures[size_t(m)] = imageTexture(gl.render(t->cam, rel, m, po), kModeKeys[m]);
+      }
+    }
+    s.table = std::move(t);
+    return s;
+  }
+  static constexpr int kStageRays = 3;  // the first stage's reference: 3 x 3 rays a pixel (fewer leave pixels black)
   int gridTexels_ = 2;
   rank::RankShown ranking_;
   std::string rankingKey_;

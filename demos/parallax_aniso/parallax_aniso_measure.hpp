@@ -42,6 +42,10 @@ struct Table {
   // derivatives of the shifted coordinate, M0's artifact).
   long gradChangeM1 = -1, gradChangeM2 = -1;
   float gradScale = 1;  // the gradients M1/M2 were given (MeasureOptions::gradScale)
+  // A window's first stage (MeasureOptions::firstStage): the modes' pictures
+  // as GL draws them, the reference traced with few rays; its numbers are not
+  // the table's and are not shown.
+  bool stage = false;
 };
 
 struct MeasureOptions {
@@ -51,6 +55,9 @@ struct MeasureOptions {
   bool accel = true;
   float gradScale = 1;             // the gradients M1 and M2 hand their lookup (PassOptions::gradScale)
   ts::Renderer* record = nullptr;  // set: each mode's picture is drawn anew with its GL calls recorded (Row::calls)
+  // Only the pictures (Table::stage): no PSNR, SSIM or lookup counts, no
+  // gradient test, no progress reported (the full measurement that follows reports it).
+  bool firstStage = false;
 };
 
 inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, const MeasureOptions& o,
@@ -65,8 +72,14 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
   auto t0 = std::chrono::steady_clock::now();
   // Progress (a window shows it): the reference about 40 %, the modes the rest.
   const double refShare = 0.4;
-  t.reference = renderReference(cam, rel, o.refRays, o.seed, [&](double f) { ts::measureCancelled(refShare * f); });
-  ts::measureProgress(refShare);
+  t.stage = o.firstStage;
+  auto progress = [&](double f) {
+    if (!o.firstStage) ts::measureProgress(f);
+  };
+  t.reference = renderReference(cam, rel, o.refRays, o.seed, [&](double f) {
+    if (!o.firstStage) ts::measureCancelled(refShare * f);
+  });
+  progress(refShare);
   t.refSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   t.referenceImage = t.reference.image();
   t.anisoMask = anisotropyMask(cam);
@@ -75,7 +88,7 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
   for (uint8_t m : t.bandMask) t.bandPixels += m;
   const ts::Image& ref = t.referenceImage;
   for (int mode : modes) {
-    ts::measureProgress(refShare + (1 - refShare) * 0.9 * double(t.rows.size()) / double(modes.size()));
+    progress(refShare + (1 - refShare) * 0.9 * double(t.rows.size()) / double(modes.size()));
     Row r;
     r.mode = mode;
     PassOptions po;
@@ -86,6 +99,10 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
       r.calls = ts::recordRender(*o.record, [&] { r.image = gl.render(cam, rel, mode, po); });
     } else {
       r.image = gl.render(cam, rel, mode, po);
+    }
+    if (o.firstStage) {  // no numbers: they would be against the stage's coarse reference
+      t.rows.push_back(std::move(r));
+      continue;
     }
     r.psnrAll = psnr(r.image, ref, nullptr);
     r.ssimAll = ssim(r.image, ref, nullptr);
@@ -106,7 +123,8 @@ inline Table measureAll(ReliefGL& gl, const Camera& cam, const Relief& rel, cons
     r.ms = o.timingRuns > 0 ? gl.timeMs(cam, rel, mode, o.timingRuns, po) : 0.0;
     t.rows.push_back(std::move(r));
   }
-  ts::measureProgress(refShare + (1 - refShare) * 0.9);
+  progress(refShare + (1 - refShare) * 0.9);
+  if (o.firstStage) return t;
   for (const Row& r : t.rows)
     if (r.mode == kTrilinear || (r.mode == kAniso16 && ts::gl::hasAnisotropicFiltering())) {
       PassOptions po;

@@ -39,6 +39,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -50,6 +51,8 @@
 #include "demos/parallax_aniso/parallax_aniso_gl.hpp"
 #include "demos/parallax_aniso/parallax_aniso_math.hpp"
 #include "demos/parallax_aniso/parallax_aniso_views.hpp"
+#include "common/core/measure_run.hpp"
+#include "common/core/probe.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
 
@@ -532,6 +535,53 @@ TEST(Table, AnEmptyBandLeavesItsCellsEmpty) {
   if (differ == 0) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << differ << " channel values differ in rows " << y0 << ".." << y1
                                        << ", columns " << x0 << ".." << x1;
+}
+
+// A window's first stage (ts::measureStage, only on the window's worker):
+// the single view's picture at once, as GL draws it, before the reference is
+// traced; no PSNR (it would be against a reference not yet traced): the
+// caption says "(measuring)".  The control: the result's frame of the same
+// view prints its dB and says "(measuring)" nowhere.
+TEST(Stage, TheSingleViewShowsItsPictureAtOnceNotItsNumbers) {
+  const std::vector<std::string> flags = {"--res", "80", "--rays", "2"};
+  std::atomic<uint64_t> latest{1};
+  std::atomic<bool> quit{false};
+  std::atomic<double> progress{0};
+  std::vector<ts::Measurements> stages;
+  ts::MeasureRun run{&latest, &quit, 1, &progress, [&](ts::Measurements&& m) {
+                       stages.push_back(std::move(m));
+                       latest.store(2);  // superseded: the table is not needed here
+                     }};
+  ts::test::Demo plain("parallax_aniso", flags);
+  plain.measure();
+  ts::test::Demo staged("parallax_aniso", flags);
+  ts::setMeasureRun(&run);
+  EXPECT_THROW(staged.measure(), ts::MeasureCancelled);
+  ts::setMeasureRun(nullptr);
+  ASSERT_EQ(stages.size(), 1u);
+  EXPECT_TRUE(stages[0].refining);
+  EXPECT_TRUE(stages[0].empty());
+  const pax::views::Shown* first = stages[0].detailAs<pax::views::Shown>();
+  ASSERT_NE(first, nullptr);
+  EXPECT_TRUE(first->table->stage);
+  const pax::views::Shown* result = plain.measured.detailAs<pax::views::Shown>();
+  ASSERT_NE(result, nullptr);
+  ASSERT_NE(first->of(pax::kEwa).image, nullptr);
+  // The stage's picture is the result's: GL's own pass, drawn at once.
+  ASSERT_NE(result->of(pax::kEwa).image, nullptr);
+  EXPECT_EQ(ts::probe::countDiffering(*first->of(pax::kEwa).image, *result->of(pax::kEwa).image, 0), 0);
+  ts::writePng("/tmp/dbg-stage.png", *first->of(pax::kEwa).image);
+  ts::writePng("/tmp/dbg-result.png", result->table->rows[pax::kEwa].image);
+  auto says = [](ts::test::Demo& d, const std::string& what) {
+    for (const ts::Label& l : d.frame(1024, 560).labels)
+      if (l.text.find(what) != std::string::npos) return true;
+    return false;
+  };
+  staged.measured = stages[0];
+  EXPECT_TRUE(says(staged, "(measuring)"));
+  EXPECT_FALSE(says(staged, " dB"));
+  EXPECT_TRUE(says(plain, " dB"));
+  EXPECT_FALSE(says(plain, "(measuring)"));
 }
 
 TEST(Live, DrawsTheModeAtTheTargetSize) {

@@ -114,6 +114,8 @@ struct Views {
   }
   static std::string numbers(const Table& table, int mode) {
     if (mode == kReference) return std::to_string(table.refRays) + "x" + std::to_string(table.refRays) + " rays, CPU";
+    // A window's first stage: the reference is coarse, so its PSNRs would mislead; they come with the table.
+    if (table.stage) return "(measuring)";
     const Row& r = table.rows[size_t(mode)];
     // A map with no occluding edge (flat) has an empty band: no number to show.
     std::string band = table.bandPixels ? "band " + fmtNum("%.1f", r.psnrBand) + " dB" : std::string("no band");
@@ -122,6 +124,11 @@ struct Views {
   static void addImage(ts::Frame& f, const std::string& id, ts::Rect rect, const ts::TextureDesc& tex, float s0 = 0,
                        float s1 = 1) {
     f.panels.push_back(ts::layout::texturePanel(id, rect, f.addTexture(tex), "image", s0, s1));
+  }
+  // A picture made from the reference in a window's first stage (Table::stage):
+  // the reference itself, the band and the errors, coarse until the table replaces them.
+  static void tagCoarse(ts::Frame& f, const Table& table, ts::Rect rect) {
+    if (table.stage) ts::layout::refiningTag(f, rect);
   }
   static void addDivider(ts::Frame& f, float x, float y0, float y1) {
     ts::Panel canvas;
@@ -209,12 +216,15 @@ inline void Views::buildSingle(ts::Frame& f, const Shown& shown) const {
   const L::Box under{4, float(rect.y + rect.h + 6), float(f.width - 4), float(f.height - 2)};
   if (!compare_) {
     addImage(f, "image", rect, shown.of(mode_));
+    if (mode_ == kReference) tagCoarse(f, table, rect);
     L::caption(f, under, std::string(kModeLabels[mode_]) + ":  " + numbers(table, mode_), kAmber, s);
     return;
   }
   ts::Rect left{rect.x, rect.y, rect.w / 2, rect.h}, right{rect.x + rect.w / 2, rect.y, rect.w - rect.w / 2, rect.h};
   addImage(f, "left", left, shown.of(mode_), 0.0f, 0.5f);
   addImage(f, "right", right, shown.of(against_), 0.5f, 1.0f);
+  if (mode_ == kReference) tagCoarse(f, table, left);
+  if (against_ == kReference) tagCoarse(f, table, right);
   addDivider(f, float(right.x), float(rect.y), float(rect.y + rect.h));
   const float mid = float(right.x);
   L::caption(f, {under.x0, under.y0, mid - 4, under.y1}, std::string(kModeLabels[mode_]) + ": " + numbers(table, mode_),
@@ -237,6 +247,7 @@ inline void Views::buildModes(ts::Frame& f, const Shown& shown) const {
     int col = k % cols, row = k / cols;
     int x = left + col * (w + gap), y = 2 * line + row * (h + 3 * line + 6) + line;
     addImage(f, std::string("image_") + kModeKeys[order[k]], {x, y, w, h}, shown.of(order[k]));
+    if (order[k] == kReference) tagCoarse(f, table, {x, y, w, h});
     L::caption(f, column(x, float(y - line), float(y - 1)), kModeLabels[order[k]], kWhite, s);
     L::caption(f, column(x, float(y + h + 3), float(y + h + 2 * line + 3)), numbers(table, order[k]), kAmber, s);
   }
@@ -246,12 +257,15 @@ inline void Views::buildModes(ts::Frame& f, const Shown& shown) const {
   // A narrow cell gets the short form of each line (never a row wrapped in two).
   const bool brief = ts::text::width("M0     17.17  0.6129", s) > cellW - 1;
   L::Column c(f, {float(x), float(y), float(x) + cellW, float(f.height - 2)});
-  c.add((brief ? "band: " : "occlusion band: ") + std::to_string(table.bandPixels) + " px", kGrey, s, ts::Align::Left);
+  c.add((brief ? "band: " : "occlusion band: ") +
+            (table.stage ? std::string("(measuring)") : std::to_string(table.bandPixels) + " px"),
+        kGrey, s, ts::Align::Left);
   c.add(brief ? "   PSNR  SSIM" : "mode     PSNR    SSIM", kGrey, s, ts::Align::Left);
   for (int m = 0; m < kShaderModes; ++m) {
     const Row& r = table.rows[size_t(m)];
     std::string values = brief ? fmtNum("%.2f", r.psnrBand) + " " + fmtNum("%.3f", r.ssimBand)
                                : fmtNum("%6.2f", r.psnrBand) + "  " + fmtNum("%6.4f", r.ssimBand);
+    if (table.stage) values = "(measuring)";
     c.add(std::string("M") + std::to_string(m) + (brief ? " " : "    ") +
               (table.bandPixels ? values : std::string(brief ? "  -     -" : "     -       -")),
           m >= kEwa ? kAmber : kWhite, s, ts::Align::Left);
@@ -277,10 +291,12 @@ inline void Views::buildError(ts::Frame& f, const Shown& shown) const {
     int x = left + (k % cols) * (w + gap), y = 2 * line + line / 2 + (k / cols) * (h + 3 * line);
     addImage(f, std::string("error_") + std::to_string(k), {x, y, w, h},
              shown.errorTextures[size_t(k == 0 ? 3 : k - 1)]);
+    tagCoarse(f, table, {x, y, w, h});
     L::caption(f, column(x, float(y - line), float(y - 1)), titles[k], kWhite, s);
     std::string n = k == 0 ? std::to_string(table.bandPixels) + " px"
                            : "band PSNR " + fmtNum("%.2f", table.rows[size_t(modes[k])].psnrBand) + " dB, SSIM " +
                                  fmtNum("%.3f", table.rows[size_t(modes[k])].ssimBand);
+    if (table.stage) n = "(measuring)";
     L::caption(f, column(x, float(y + h + 4), float(y + h + 2 * line)), n, kAmber, s);
   }
 }
