@@ -97,6 +97,25 @@ vec2 radii(vec4 e) {  // semi-axes, longest first
 )";
 }
 
+// The texel rows inside the reconstructed ellipse `e` (F = A C - B^2/4) around c (texel units, texel (i, j)
+// centred at (i + 1/2, j + 1/2)): row(j, i0, i1) for each row j that holds texel centres i0..i1.  The rows span
+// V in [-sqrt(A), sqrt(A)].
+template <class Row>
+void forEachRow(const Ellipse& e, glm::dvec2 c, const Row& row) {
+  c -= 0.5;
+  const double vr = std::sqrt(e.A);
+  const long j0 = long(std::ceil(c.y - vr)), j1 = long(std::floor(c.y + vr));
+  for (long j = j0; j <= j1; ++j) {
+    const double V = double(j) - c.y;
+    const double disc = e.B * e.B * V * V - 4.0 * e.A * (e.C * V * V - e.F);
+    if (disc < 0) continue;
+    const double sq = std::sqrt(disc);
+    const long i0 = long(std::ceil(c.x + (-e.B * V - sq) / (2.0 * e.A)));
+    const long i1 = long(std::floor(c.x + (-e.B * V + sq) / (2.0 * e.A)));
+    row(j, i0, i1);
+  }
+}
+
 // EWA on level L of size (w, h): the texels inside the reconstructed
 // ellipse of derivatives (Ux, Vx), (Uy, Vy) given in level-L texels around
 // (u, v) (level-L texel units, texel (i, j) centred at (i + 1/2, j + 1/2)),
@@ -107,19 +126,10 @@ glm::dvec4 ewaLevel(const Texel& texel, double u, double v, double Ux, double Vx
                     long* reads) {
   const Ellipse e = ellipse(Ux, Vx, Uy, Vy, true);
   const glm::dvec2 c(u - 0.5, v - 0.5);
-  // With the reconstruction term F = A C - B^2/4, the ellipse's rows span
-  // V in [-sqrt(A), sqrt(A)].
-  const double vr = std::sqrt(e.A);
-  const long j0 = long(std::ceil(c.y - vr)), j1 = long(std::floor(c.y + vr));
   glm::dvec4 sum(0.0);
   double wsum = 0;
-  for (long j = j0; j <= j1; ++j) {
+  forEachRow(e, {u, v}, [&](long j, long i0, long i1) {
     const double V = double(j) - c.y;
-    const double disc = e.B * e.B * V * V - 4.0 * e.A * (e.C * V * V - e.F);
-    if (disc < 0) continue;
-    const double sq = std::sqrt(disc);
-    const long i0 = long(std::ceil(c.x + (-e.B * V - sq) / (2.0 * e.A)));
-    const long i1 = long(std::floor(c.x + (-e.B * V + sq) / (2.0 * e.A)));
     for (long i = i0; i <= i1; ++i) {
       const double U = double(i) - c.x;
       const double w = std::exp(-alpha * std::min(1.0, e.Q(U, V) / e.F));
@@ -127,7 +137,7 @@ glm::dvec4 ewaLevel(const Texel& texel, double u, double v, double Ux, double Vx
       wsum += w;
       if (reads) ++*reads;
     }
-  }
+  });
   if (wsum <= 0) {  // no texel centre inside (cannot happen with the reconstruction term): the nearest texel
     if (reads) ++*reads;
     return texel(long(std::floor(u)), long(std::floor(v)));

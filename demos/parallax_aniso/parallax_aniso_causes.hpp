@@ -93,22 +93,10 @@ inline double footprintArea(glm::dvec2 gx, glm::dvec2 gy) {
 
 // The level-0 texels inside the reconstructed ellipse of (gx, gy) (texels)
 // around c (texel units, centres at i + 1/2), row by row as ts::ewa::ewaLevel
-// walks them: f(i, j, rowStart, rowEnd).
+// walks them: f(j, rowStart, rowEnd).
 template <class F>
 void ellipseTexels(glm::dvec2 c, glm::dvec2 gx, glm::dvec2 gy, const F& f) {
-  const ts::ewa::Ellipse e = ts::ewa::ellipse(gx.x, gx.y, gy.x, gy.y, true);
-  c -= 0.5;
-  const double vr = std::sqrt(e.A);
-  const long j0 = long(std::ceil(c.y - vr)), j1 = long(std::floor(c.y + vr));
-  for (long j = j0; j <= j1; ++j) {
-    const double V = double(j) - c.y;
-    const double disc = e.B * e.B * V * V - 4.0 * e.A * (e.C * V * V - e.F);
-    if (disc < 0) continue;
-    const double sq = std::sqrt(disc);
-    const long i0 = long(std::ceil(c.x + (-e.B * V - sq) / (2.0 * e.A)));
-    const long i1 = long(std::floor(c.x + (-e.B * V + sq) / (2.0 * e.A)));
-    f(j, i0, i1);
-  }
+  ts::ewa::forEachRow(ts::ewa::ellipse(gx.x, gx.y, gy.x, gy.y, true), c, f);
 }
 
 // Fig. 6: the row walk of M5 on one row [i0, i1] of level L, `hidden(i)` the

@@ -92,40 +92,10 @@ struct Variant {
 // and texture2DGradARB from GL_ARB_shader_texture_lod; texelFetch2D, the
 // integer % and >> from GL_EXT_gpu_shader4 (Mesa and Apple's 2.1 context
 // offer both).
-inline std::string fragmentShader(const Variant& v) {
-  return std::string("#version 120\n#extension GL_ARB_shader_texture_lod : require\n") +
-         "#extension GL_EXT_gpu_shader4 : require\n#define MODE " + std::to_string(v.mode) + "\n#define COUNT " +
-         (v.count ? "1" : "0") + "\n#define PARALLAX " + (v.parallax ? "1" : "0") + "\n#define UNSHIFTED_LOOKUP " +
-         (v.unshiftedLookup ? "1" : "0") + "\n#define CENTRE_LOOKUPS " + (v.centreLookups ? "1" : "0") +
-         "\n#define PLAIN_TRACE " + (v.plainTrace ? "1" : "0") + R"(
-uniform sampler2D albedo;     // RGBA8, mipmapped (the 2x2 averages)
-uniform sampler2D heightTex;  // R = height, mipmapped (2x2 averages)
-uniform sampler2D heightMax;  // R = the max-height pyramid
-uniform vec3 eye, fwd, rightV, upV;
-uniform vec2 viewport;        // the pass's size in pixels
-uniform vec4 relief;          // (1 / tile, heightScale / tile, texture size, number of levels - 1)
-uniform vec2 pomSteps;        // (fewest, most) linear steps
-uniform float gradScale;      // M1/M2: scale of the gradients given to the albedo lookup (1; see PassOptions)
-// accel stays a uniform: compiled in, it let LLVM round the ellipse's row
-// ends differently in the two programs, and the images with and without the
-// bound must match byte for byte.
-uniform int accel;
-const int mode = MODE, countMode = COUNT;
-#if MODE < 0
-uniform int probe;
-#else
-const int probe = 0;
-#endif
-uniform vec4 probeA, probeB;  // probe inputs
-const float ALPHA = 2.0, MAXANISO = 16.0, EPS = 1.5 / 255.0;
-int fetches = 0, excluded = 0;
-#if COUNT
-#define FETCH fetches++
-#else
-#define FETCH
-#endif
-
-vec3 rayDir(vec2 p) {
+// The view ray, its entry on the relief's top and the parallax occlusion march, in GLSL: the modes' shader and
+// the ranking's (parallax_aniso_ranking_gl.hpp) both paste it, after defining FETCH (a lookup counter, or nothing)
+// and declaring the uniforms it reads (heightTex, eye, fwd, rightV, upV, viewport, relief, pomSteps).
+inline const char* const kMarchGLSL = R"(vec3 rayDir(vec2 p) {
   vec2 n = p / viewport * 2.0 - 1.0;
   return fwd + n.x * rightV + n.y * upV;
 }
@@ -164,7 +134,42 @@ float pom(vec2 uv0, vec2 Vp, vec2 gx, vec2 gy, float cosView) {
   float a = hLo - lo, b = hi - hHi;
   return lo + (hi - lo) * a / (a + b);
 }
-)" +
+)";
+
+inline std::string fragmentShader(const Variant& v) {
+  return std::string("#version 120\n#extension GL_ARB_shader_texture_lod : require\n") +
+         "#extension GL_EXT_gpu_shader4 : require\n#define MODE " + std::to_string(v.mode) + "\n#define COUNT " +
+         (v.count ? "1" : "0") + "\n#define PARALLAX " + (v.parallax ? "1" : "0") + "\n#define UNSHIFTED_LOOKUP " +
+         (v.unshiftedLookup ? "1" : "0") + "\n#define CENTRE_LOOKUPS " + (v.centreLookups ? "1" : "0") +
+         "\n#define PLAIN_TRACE " + (v.plainTrace ? "1" : "0") + R"(
+uniform sampler2D albedo;     // RGBA8, mipmapped (the 2x2 averages)
+uniform sampler2D heightTex;  // R = height, mipmapped (2x2 averages)
+uniform sampler2D heightMax;  // R = the max-height pyramid
+uniform vec3 eye, fwd, rightV, upV;
+uniform vec2 viewport;        // the pass's size in pixels
+uniform vec4 relief;          // (1 / tile, heightScale / tile, texture size, number of levels - 1)
+uniform vec2 pomSteps;        // (fewest, most) linear steps
+uniform float gradScale;      // M1/M2: scale of the gradients given to the albedo lookup (1; see PassOptions)
+// accel stays a uniform: compiled in, it let LLVM round the ellipse's row
+// ends differently in the two programs, and the images with and without the
+// bound must match byte for byte.
+uniform int accel;
+const int mode = MODE, countMode = COUNT;
+#if MODE < 0
+uniform int probe;
+#else
+const int probe = 0;
+#endif
+uniform vec4 probeA, probeB;  // probe inputs
+const float ALPHA = 2.0, MAXANISO = 16.0, EPS = 1.5 / 255.0;
+int fetches = 0, excluded = 0;
+#if COUNT
+#define FETCH fetches++
+#else
+#define FETCH
+#endif
+
+)" + kMarchGLSL +
          ts::ewa::glsl(v.seedF) /* ellipse(), radii(): common/core/ewa.hpp */ + R"(
 ivec2 wrapT(ivec2 t, int size) { return ivec2((t.x % size + size) % size, (t.y % size + size) % size); }
 // Texel t of level L (wrapped).  texelFetch, or with centreLookups a

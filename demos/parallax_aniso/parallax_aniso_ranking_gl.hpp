@@ -143,31 +143,9 @@ uniform vec4 relief;  // (1 / tile, heightScale / tile, texture size, levels - 1
 uniform vec2 pomSteps;
 uniform float ambient;
 
-vec3 rayDir(vec2 p) {
-  vec2 n = p / viewport * 2.0 - 1.0;
-  return fwd + n.x * rightV + n.y * upV;
-}
-vec2 topUV(vec3 d) { return (eye.xy + (eye.z / -d.z) * d.xy) * relief.x; }
-float depthGrad(vec2 uv, vec2 gx, vec2 gy) { return 1.0 - texture2DGradARB(heightTex, uv, gx, gy).r; }
-// parallax_aniso_gl.hpp's pom(), unchanged: the linear march, then the secant between the last two steps.
-float pom(vec2 uv0, vec2 Vp, vec2 gx, vec2 gy, float cosView) {
-  int n = int(mix(pomSteps.y, pomSteps.x, cosView) + 0.5);
-  float stepD = 1.0 / float(n), lo = 0.0, hi = 1.0, hLo = 0.0, hHi = 1.0;
-  for (int k = 1; k <= n; ++k) {
-    float d = float(k) * stepD;
-    float h = depthGrad(uv0 + Vp * d, gx, gy);
-    if (d >= h) {
-      hi = d;
-      hHi = h;
-      break;
-    }
-    lo = d;
-    hLo = h;
-  }
-  if (lo == 0.0) return hHi;
-  float a = hLo - lo, b = hi - hHi;
-  return lo + (hi - lo) * a / (a + b);
-}
+#define FETCH
+)" +
+         kMarchGLSL /* rayDir, topUV, depthGrad, pom: parallax_aniso_gl.hpp */ + R"(
 void main() {
   vec2 p = gl_FragCoord.xy;
   vec3 d = rayDir(p);
