@@ -436,6 +436,18 @@ inline bool isSoftpipe() { return ts::gl::rendererString().find("softpipe") != s
 // Everything the demo, the tests and the benchmark need on the GL side.
 // Made per renderer (Renderer::attachment<ReliefGL>()), so its GL objects
 // go with the renderer, while their context is current.
+// The camera as kMarchGLSL reads it: eye, fwd, rightV, upV (rayDir's frame) and the pass's viewport.
+inline void setCameraUniforms(GLuint prog, const Camera& cam) {
+  auto v3 = [&](const char* n, glm::dvec3 v) {
+    glUniform3f(glGetUniformLocation(prog, n), float(v.x), float(v.y), float(v.z));
+  };
+  v3("eye", cam.eye());
+  v3("fwd", cam.forward());
+  v3("rightV", cam.right());
+  v3("upV", cam.up());
+  glUniform2f(glGetUniformLocation(prog, "viewport"), float(cam.width), float(cam.height));
+}
+
 class ReliefGL final : public ts::Renderer::Attachment {
  public:
   explicit ReliefGL(ts::Renderer& r) : r_(r) {}
@@ -577,16 +589,7 @@ class ReliefGL final : public ts::Renderer::Attachment {
 
  private:
   GLuint program(const Variant& v) { return r_.program(v.key(), {kSourceFile, vertexShader(), fragmentShader(v)}); }
-  void setCamera(GLuint prog, const Camera& cam) {
-    auto v3 = [&](const char* n, glm::dvec3 v) {
-      glUniform3f(glGetUniformLocation(prog, n), float(v.x), float(v.y), float(v.z));
-    };
-    v3("eye", cam.eye());
-    v3("fwd", cam.forward());
-    v3("rightV", cam.right());
-    v3("upV", cam.up());
-    glUniform2f(glGetUniformLocation(prog, "viewport"), float(cam.width), float(cam.height));
-  }
+  void setCamera(GLuint prog, const Camera& cam) { setCameraUniforms(prog, cam); }
   void bind(GLuint prog, const ReliefTextures& t, float aniso) {
     const ts::TextureDesc* maps[3] = {&t.albedo, &t.height, &t.heightMax};
     const char* names[3] = {"albedo", "heightTex", "heightMax"};

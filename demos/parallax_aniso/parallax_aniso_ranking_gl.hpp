@@ -214,15 +214,8 @@ class RankGL final : public ts::Renderer::Attachment {
         glUniform1i(glGetUniformLocation(prog, names[k]), k);
       }
       glActiveTexture(GL_TEXTURE0);
-      auto v3 = [&](const char* n, glm::dvec3 v) {
-        glUniform3f(glGetUniformLocation(prog, n), float(v.x), float(v.y), float(v.z));
-      };
-      v3("eye", cam.eye());
-      v3("fwd", cam.forward());
-      v3("rightV", cam.right());
-      v3("upV", cam.up());
-      v3("lightDir", light.dir);
-      glUniform2f(glGetUniformLocation(prog, "viewport"), float(cam.width), float(cam.height));
+      setCameraUniforms(prog, cam);
+      glUniform3f(glGetUniformLocation(prog, "lightDir"), float(light.dir.x), float(light.dir.y), float(light.dir.z));
       glUniform4f(glGetUniformLocation(prog, "relief"), float(1.0 / cam.tile), float(cam.heightScale / cam.tile),
                   float(kTexSize), float(t.levels - 1));
       glUniform2f(glGetUniformLocation(prog, "pomSteps"), 12.0f, 40.0f);
