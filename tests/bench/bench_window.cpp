@@ -333,15 +333,25 @@ std::string demoKeys(const std::string& demo) {
   return keys;
 }
 
-Responsiveness runResponsiveness(const std::string& demo, const std::string& keys, double keyInterval) {
+// `demo` run to its end with `flags`, its output dropped, its window's frame log (TS_TEST_FRAME_LOG) written to a
+// temporary file, `env` added to the environment: the log's path (the caller reads and removes it) and the spawn's
+// time.
+struct LoggedRun {
+  std::string exe, logPath;
+  Clock::time_point spawned;
+  int status = 0;  // waitpid's
+};
+LoggedRun runWithFrameLog(const std::string& demo, const std::vector<std::string>& flags,
+                          const std::vector<std::string>& extraEnv) {
   std::string exe = binDir() + "/" + demo;
   char logPath[] = "/tmp/bench_window_frames_XXXXXX";
   int fd = mkstemp(logPath);
   if (fd < 0) throw ts::Error(std::string("mkstemp: ") + std::strerror(errno));
   close(fd);
-  std::vector<std::string> args = {exe, "--keys", keys + "q", "--quiet"};
-  std::vector<std::string> env = {std::string("TS_TEST_FRAME_LOG=") + logPath,
-                                  "TS_TEST_KEY_INTERVAL_MS=" + std::to_string(int(keyInterval * 1000))};
+  std::vector<std::string> args = {exe};
+  args.insert(args.end(), flags.begin(), flags.end());
+  std::vector<std::string> env = {std::string("TS_TEST_FRAME_LOG=") + logPath};
+  env.insert(env.end(), extraEnv.begin(), extraEnv.end());
   for (char** e = environ; *e; ++e) env.push_back(*e);
   std::vector<char*> argv, envp;
   for (auto& a : args) argv.push_back(a.data());
@@ -360,6 +370,16 @@ Responsiveness runResponsiveness(const std::string& demo, const std::string& key
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
+  return {exe, logPath, spawned, status};
+}
+
+Responsiveness runResponsiveness(const std::string& demo, const std::string& keys, double keyInterval) {
+  const LoggedRun run = runWithFrameLog(demo, {"--keys", keys + "q", "--quiet"},
+                                        {"TS_TEST_KEY_INTERVAL_MS=" + std::to_string(int(keyInterval * 1000))});
+  const std::string& exe = run.exe;
+  const char* logPath = run.logPath.c_str();
+  const Clock::time_point spawned = run.spawned;
+  const int status = run.status;
   std::FILE* f = std::fopen(logPath, "r");
   std::vector<std::tuple<std::string, double, std::string>> log;
   char what[16], rest[64];
@@ -434,32 +454,14 @@ struct CompletionKey {
 std::map<CompletionKey, std::vector<Completion>> g_completion;
 
 Completion runCompletion(const std::string& demo, int width, int height) {
-  std::string exe = binDir() + "/" + demo;
-  char logPath[] = "/tmp/bench_window_complete_XXXXXX";
-  int fd = mkstemp(logPath);
-  if (fd < 0) throw ts::Error(std::string("mkstemp: ") + std::strerror(errno));
-  close(fd);
-  std::vector<std::string> args = {exe,        "--size", std::to_string(width) + "x" + std::to_string(height),
-                                   "--frames", "30",     "--quiet"};
-  std::vector<std::string> env = {std::string("TS_TEST_FRAME_LOG=") + logPath, "TS_TEST_FRAME_PIXELS=1"};
-  for (char** e = environ; *e; ++e) env.push_back(*e);
-  std::vector<char*> argv, envp;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  for (auto& e : env) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  Clock::time_point spawned = Clock::now();
-  int err = posix_spawn(&pid, exe.c_str(), &fa, nullptr, argv.data(), envp.data());
-  posix_spawn_file_actions_destroy(&fa);
-  if (err != 0) throw ts::Error("cannot run " + exe + ": " + std::strerror(err));
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  const LoggedRun run = runWithFrameLog(demo,
+                                        {"--size", std::to_string(width) + "x" + std::to_string(height), "--frames",
+                                         "30", "--quiet"},
+                                        {"TS_TEST_FRAME_PIXELS=1"});
+  const std::string& exe = run.exe;
+  const char* logPath = run.logPath.c_str();
+  const Clock::time_point spawned = run.spawned;
+  const int status = run.status;
   // "frame T M P H" (H: the figure's hash), "stage T", "result T".
   std::vector<std::pair<double, std::string>> frames;  // time, hash
   std::vector<double> measured;                        // times of stages and results
