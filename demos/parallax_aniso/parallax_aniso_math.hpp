@@ -54,9 +54,18 @@ using ts::relief::u8;
 using ts::relief::unit;
 
 // Bilinear lookup at level 0 with GL_REPEAT, as GL_LINEAR does (8-bit units).
+// std::floor's value without the library call a baseline x86-64 build makes
+// for it (no SSE4.1 rounding instruction): the reference calls it some 500
+// million times a table.  Exact for |x| < 2^62; -0 comes back as +0, which
+// changes no sum below (x - floor(x) and the texel index are the same).
+inline double floorFast(double x) {
+  const double t = double((long long)x);
+  return t > x ? t - 1.0 : t;
+}
+
 inline glm::dvec4 bilinear(const ts::Image& img, glm::dvec2 uv) {
   const double x = uv.x * img.width - 0.5, y = uv.y * img.height - 0.5;
-  const double fx = std::floor(x), fy = std::floor(y);
+  const double fx = floorFast(x), fy = floorFast(y);
   const double ax = x - fx, ay = y - fy;
   // GL_REPEAT: a mask when the size is a power of two (the relief maps'; the
   // same texel as the modulo, without its divisions), else the modulo.
@@ -98,9 +107,16 @@ struct Camera {
   }
   // The view ray through window point p (GL convention: origin at the
   // bottom-left corner, pixel centres at i + 0.5).
-  glm::dvec3 ray(glm::dvec2 p) const {
+  glm::dvec3 ray(glm::dvec2 p) const { return ray(basis(), p); }
+  // forward(), right() and up() once, for a loop over many rays (each costs
+  // sines and tangents); ray(basis(), p) is ray(p), bit for bit.
+  struct Basis {
+    glm::dvec3 f, r, u;
+  };
+  Basis basis() const { return {forward(), right(), up()}; }
+  glm::dvec3 ray(const Basis& b, glm::dvec2 p) const {
     glm::dvec2 n = p / glm::dvec2(width, height) * 2.0 - 1.0;
-    return forward() + n.x * right() + n.y * up();
+    return b.f + n.x * b.r + n.y * b.u;
   }
   glm::dvec2 topUV(glm::dvec3 d) const {
     glm::dvec3 e = eye();
@@ -155,38 +171,44 @@ inline double traceFine(const Relief& r, glm::dvec2 uv0, glm::dvec2 Vp) {
 }
 
 // traceFine, faster and bit for bit the same (renderReference traces some
-// ten million rays per table with it).  Two things change, neither the
+// ten million rays per table with it).  Three things change, none the
 // result: (1) a step is only looked up when it may hit: `Skip` holds, per
-// cell between four texels of level 0 (the texels a bilinear lookup in it
-// reads), the least depth any lookup there can return (1 - the largest of
-// the four heights / 255, less a margin far above rounding), so a step
-// above that depth cannot meet the relief; (2) the lookups that remain read
-// only the red channel, with the same arithmetic as bilinear().  The
-// steps, the test and the bisection are traceFine's.
+// cell between four texels of level 0 (the four a bilinear lookup in it
+// reads), the largest of their heights, and so the least depth any lookup
+// there can return (1 - that height / 255, less a margin far above
+// rounding): a step above that depth cannot meet the relief; (2) the lookups
+// that remain read a copy of the red channel alone, with the same arithmetic
+// as bilinear(); (3) traceBatch halves the hit intervals of several rays
+// side by side.  One ray's 14 halvings are a chain, each waiting on the
+// last one's lookup and division; the chains of different rays overlap.
+// The steps, the test and the halvings are traceFine's.
 struct Skip {
-  int size = 0;               // cells per side (= the map's, 512)
-  std::vector<double> least;  // row-major, cell (i, j) = texels i..i+1, j..j+1 (wrapping)
+  int size = 0;              // cells per side (= the map's, 512)
+  std::vector<uint8_t> top;  // row-major, cell (i, j) = texels i..i+1, j..j+1 (wrapping): their largest height
+  std::vector<uint8_t> red;  // the heights (level 0's red channel), row-major
+  double leastOf[256];       // the least depth a lookup can return in a cell whose top is t
   explicit Skip(const Relief& r) {
     const ts::Image& h = r.height[0];
     size = h.width;
-    least.resize(size_t(size) * size_t(size));
-    auto at = [&](int i, int j) {
-      return int(h.pixels[(size_t(j & (size - 1)) * size_t(size) + size_t(i & (size - 1))) * 4]);
-    };
+    red.resize(size_t(size) * size_t(size));
+    top.resize(red.size());
+    for (size_t p = 0; p < red.size(); ++p) red[p] = h.pixels[p * 4];
+    auto at = [&](int i, int j) { return red[size_t(j & (size - 1)) * size_t(size) + size_t(i & (size - 1))]; };
     for (int j = 0; j < size; ++j)
-      for (int i = 0; i < size; ++i) {
-        const int top = std::max({at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)});
-        least[size_t(j) * size_t(size) + size_t(i)] = 1.0 - top / 255.0 - 1e-9;
-      }
+      for (int i = 0; i < size; ++i)
+        top[size_t(j) * size_t(size) + size_t(i)] = std::max({at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)});
+    for (int t = 0; t < 256; ++t) leastOf[t] = 1.0 - t / 255.0 - 1e-9;
   }
+  double least(long i, long j) const { return leastOf[top[size_t(j) * size_t(size) + size_t(i)]]; }
 };
-// depthAt's value, red channel only: each term as glm::mix forms it.
-inline double depthFast(const ts::Image& h, glm::dvec2 uv) {
-  const double x = uv.x * h.width - 0.5, y = uv.y * h.height - 0.5;
-  const double fx = std::floor(x), fy = std::floor(y);
+// depthAt's value, from the red channel alone (a square power-of-two map of
+// `size` texels a side): each term as glm::mix forms it.
+inline double depthFast(const uint8_t* red, long size, glm::dvec2 uv) {
+  const double x = uv.x * size - 0.5, y = uv.y * size - 0.5;
+  const double fx = floorFast(x), fy = floorFast(y);
   const double ax = x - fx, ay = y - fy;
-  const long i = long(fx), j = long(fy), mw = long(h.width) - 1, mh = long(h.height) - 1;
-  auto at = [&](long a, long b) { return double(h.pixels[(size_t(b & mh) * size_t(h.width) + size_t(a & mw)) * 4]); };
+  const long i = long(fx), j = long(fy), m = size - 1;
+  auto at = [&](long a, long b) { return double(red[size_t(b & m) * size_t(size) + size_t(a & m)]); };
   auto mix = [](double p, double q, double t) {
     const double u = p * (1.0 - t);  // two statements: no contraction the vector form does not have
     const double v = q * t;
@@ -194,9 +216,9 @@ inline double depthFast(const ts::Image& h, glm::dvec2 uv) {
   };
   return 1.0 - mix(mix(at(i, j), at(i + 1, j), ax), mix(at(i, j + 1), at(i + 1, j + 1), ax), ay) / 255.0;
 }
-inline double traceFast(const Relief& r, const Skip& skip, glm::dvec2 uv0, glm::dvec2 Vp) {
-  const ts::Image& h = r.height[0];
-  if (h.width != kTexSize || h.height != kTexSize || skip.size != kTexSize) return traceFine(r, uv0, Vp);
+// traceFine's walk down to the first step that meets the relief: whether it
+// found one, and the interval [*lo, *hi] it leaves to halve.
+inline bool stepToHit(const Skip& skip, glm::dvec2 uv0, glm::dvec2 Vp, double* lo, double* hi) {
   const double len = glm::length(Vp) * kTexSize;
   const int n = std::max(2, int(std::ceil(len / 0.5)));
   const long m = kTexSize - 1;
@@ -204,22 +226,46 @@ inline double traceFast(const Relief& r, const Skip& skip, glm::dvec2 uv0, glm::
   for (int k = 1; k <= n; ++k) {
     double d = double(k) / n;
     const glm::dvec2 p = uv0 + Vp * d;
-    const long i = long(std::floor(p.x * kTexSize - 0.5)), j = long(std::floor(p.y * kTexSize - 0.5));
-    if (d < skip.least[size_t(j & m) * size_t(kTexSize) + size_t(i & m)]) {
-      prev = d;
-      continue;
-    }
-    if (d >= depthFast(h, p)) {
-      double lo = prev, hi = d;
-      for (int it = 0; it < 14; ++it) {
-        double mid = 0.5 * (lo + hi);
-        (mid >= depthFast(h, uv0 + Vp * mid) ? hi : lo) = mid;
-      }
-      return hi;
+    const long i = long(floorFast(p.x * kTexSize - 0.5)), j = long(floorFast(p.y * kTexSize - 0.5));
+    if (d >= skip.least(i & m, j & m) && d >= depthFast(skip.red.data(), kTexSize, p)) {
+      *lo = prev, *hi = d;
+      return true;
     }
     prev = d;
   }
-  return 1.0;
+  return false;
+}
+// The depths where `count` rays (uv0[q], Vp[q]) meet the relief, as traceFine
+// gives them, into depth[q].
+inline void traceBatch(const Relief& r, const Skip& skip, const glm::dvec2* uv0, const glm::dvec2* Vp, int count,
+                       double* depth) {
+  const ts::Image& h = r.height[0];
+  if (h.width != kTexSize || h.height != kTexSize || skip.size != kTexSize) {
+    for (int q = 0; q < count; ++q) depth[q] = traceFine(r, uv0[q], Vp[q]);
+    return;
+  }
+  constexpr int kBatch = 16;
+  for (int q0 = 0; q0 < count; q0 += kBatch) {
+    double iv[kBatch][2];  // [lo, hi] of each ray that found a step
+    int which[kBatch], hits = 0;
+    for (int q = q0; q < std::min(count, q0 + kBatch); ++q)
+      if (stepToHit(skip, uv0[q], Vp[q], &iv[hits][0], &iv[hits][1]))
+        which[hits++] = q;
+      else
+        depth[q] = 1.0;
+    for (int it = 0; it < 14; ++it)
+      for (int b = 0; b < hits; ++b) {
+        const int q = which[b];
+        const double mid = 0.5 * (iv[b][0] + iv[b][1]);
+        iv[b][mid >= depthFast(skip.red.data(), kTexSize, uv0[q] + Vp[q] * mid)] = mid;  // hit: hi, else lo
+      }
+    for (int b = 0; b < hits; ++b) depth[which[b]] = iv[b][1];
+  }
+}
+inline double traceFast(const Relief& r, const Skip& skip, glm::dvec2 uv0, glm::dvec2 Vp) {
+  double depth = 1.0;
+  traceBatch(r, skip, &uv0, &Vp, 1, &depth);
+  return depth;
 }
 
 // Visibility of texel (i, j) of level `L` (texel-exact, nearest heights of
@@ -275,30 +321,39 @@ inline Reference renderReference(const Camera& cam, const Relief& r, int n, uint
   out.rgb.assign(size_t(cam.width) * size_t(cam.height), glm::dvec3(0));
   out.depthSpread.assign(out.rgb.size(), 0.0);
   const Skip skip(r);
+  const Camera::Basis basis = cam.basis();
   auto rows = [&](int y0, int step) {
+    std::vector<glm::dvec2> uv0(size_t(n) * size_t(n)), Vp(uv0.size());  // a pixel's rays
+    std::vector<double> r2s(uv0.size()), depths(uv0.size());
     for (int y = y0; y < cam.height; y += step) {
       if (ts::measureCancelled()) return;
       if (progress && y0 == 0) progress(double(y) / cam.height);
       for (int x = 0; x < cam.width; ++x) {
         const int gy = cam.height - 1 - y;  // GL row
-        glm::dvec3 sum(0);
-        double wsum = 0, dmin = 2, dmax = -1;
-        uint32_t key = hash32(seed * 0x9e3779b9u ^ hash32(uint32_t(x) ^ hash32(uint32_t(gy) + 0x632be5abu)));
+        // The pixel's rays first, then their depths together (traceBatch), then
+        // the sum in the rays' order.
+        const uint32_t key = hash32(seed * 0x9e3779b9u ^ hash32(uint32_t(x) ^ hash32(uint32_t(gy) + 0x632be5abu)));
+        int count = 0;
         for (int b = 0; b < n; ++b)
           for (int a = 0; a < n; ++a) {
             uint32_t k = key + 2u * uint32_t(b * n + a);
             double ox = -1.0 + 2.0 * (a + unit(hash32(k))) / n, oy = -1.0 + 2.0 * (b + unit(hash32(k + 1))) / n;
             double r2 = ox * ox + oy * oy;
             if (r2 >= 1.0) continue;
-            glm::dvec3 d = cam.ray(glm::dvec2(x + 0.5 + ox, gy + 0.5 + oy));
-            glm::dvec2 uv0 = cam.topUV(d), Vp = cam.parallax(d);
-            double depth = traceFast(r, skip, uv0, Vp);  // = traceFine(r, uv0, Vp), bit for bit
-            double w = std::exp(-kAlpha * r2);
-            sum += w * glm::dvec3(bilinear(r.albedo[0], uv0 + Vp * depth));
-            wsum += w;
-            dmin = std::min(dmin, depth);
-            dmax = std::max(dmax, depth);
+            glm::dvec3 d = cam.ray(basis, glm::dvec2(x + 0.5 + ox, gy + 0.5 + oy));
+            uv0[size_t(count)] = cam.topUV(d), Vp[size_t(count)] = cam.parallax(d), r2s[size_t(count)] = r2;
+            ++count;
           }
+        traceBatch(r, skip, uv0.data(), Vp.data(), count, depths.data());  // = traceFine's, bit for bit
+        glm::dvec3 sum(0);
+        double wsum = 0, dmin = 2, dmax = -1;
+        for (size_t q = 0; q < size_t(count); ++q) {
+          const double depth = depths[q], w = std::exp(-kAlpha * r2s[q]);
+          sum += w * glm::dvec3(bilinear(r.albedo[0], uv0[q] + Vp[q] * depth));
+          wsum += w;
+          dmin = std::min(dmin, depth);
+          dmax = std::max(dmax, depth);
+        }
         size_t p = size_t(y) * size_t(cam.width) + size_t(x);
         out.rgb[p] = wsum > 0 ? sum / wsum : glm::dvec3(0);
         out.depthSpread[p] = dmax - dmin;

@@ -353,29 +353,39 @@ TEST(Frames, CentreLookupsEqualTexelFetch) {
         << kModeLabels[mode];
 }
 
-// The reference traces with traceFast: the steps Skip proves are above the
-// relief are not looked up, the rest is traceFine's.  Every hit depth must be
-// the same double, over the rays of a whole figure's camera on both maps
-// (the control: a Skip that claims one cell is deeper than it is must change
-// some hit, so the comparison can fail).
+// The reference traces with traceBatch: the steps Skip proves are above the
+// relief are not looked up, and the rays' halvings run side by side; the
+// rest is traceFine's.  Every hit depth must be the same double, over the
+// rays of a whole figure's camera on both maps, one ray at a time
+// (traceFast) and a row's rays at once (traceBatch); the control: a Skip
+// that claims every cell is deeper than it is must change some hit, so the
+// comparison can fail.
 TEST(Reference, FastTraceIsTraceFineBitForBit) {
   for (const char* map : {"bricks", "step"}) {
     const Relief& rel = relief(map);
     const Skip skip(rel);
     Camera cam;  // the figures' camera, 320 x 240
-    size_t rays = 0, differing = 0, controlDiffering = 0;
+    size_t rays = 0, differing = 0, batchDiffering = 0, controlDiffering = 0;
     Skip wrong = skip;
-    for (double& v : wrong.least) v += 0.05;  // claims every cell is deeper than it is
-    for (int y = 0; y < cam.height; y += 3)
+    for (double& v : wrong.leastOf) v += 0.05;  // claims every cell is deeper than it is
+    for (int y = 0; y < cam.height; y += 3) {
+      std::vector<glm::dvec2> uv0s, Vps;
+      std::vector<double> fines;
       for (int x = 0; x < cam.width; x += 3) {
         glm::dvec3 d = cam.ray(glm::dvec2(x + 0.25, y + 0.75));
         glm::dvec2 uv0 = cam.topUV(d), Vp = cam.parallax(d);
         double fine = traceFine(rel, uv0, Vp);
         differing += traceFast(rel, skip, uv0, Vp) != fine;
         controlDiffering += traceFast(rel, wrong, uv0, Vp) != fine;
+        uv0s.push_back(uv0), Vps.push_back(Vp), fines.push_back(fine);
         ++rays;
       }
+      std::vector<double> batch(fines.size(), -1.0);
+      traceBatch(rel, skip, uv0s.data(), Vps.data(), int(fines.size()), batch.data());
+      for (size_t q = 0; q < fines.size(); ++q) batchDiffering += batch[q] != fines[q];
+    }
     EXPECT_EQ(differing, 0u) << map << ": " << differing << " of " << rays << " rays";
+    EXPECT_EQ(batchDiffering, 0u) << map << ": " << batchDiffering << " of " << rays << " rays traced in rows";
     EXPECT_GT(controlDiffering, 0u) << map << ": a wrong skip changed nothing";
   }
 }
