@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -19,9 +20,15 @@ using Json = nlohmann::ordered_json;
 Json num(double v) {
   if (!std::isfinite(v)) return nullptr;
   if (v == std::floor(v) && std::abs(v) < 1e15) return Json(static_cast<long long>(v));  // no "-0", no "1.0"
+  // "%.9g" read back with strtod, as std::to_chars and std::from_chars make
+  // them (the same digits, the same correctly rounded double; several times
+  // faster than printf's arbitrary-precision path, and a sidecar holds
+  // hundreds of thousands of them).
   char buf[40];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return Json(std::strtod(buf, nullptr));
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 9);
+  double read = 0;
+  std::from_chars(buf, r.ptr, read);
+  return Json(read);
 }
 template <int N>
 Json vec(const glm::vec<N, float>& v) {

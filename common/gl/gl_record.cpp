@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -490,6 +491,19 @@ void swapOut() {
 }
 
 // ---- formatting -------------------------------------------------------------
+// The fewest significant digits of any decimal that reads back as v (as a
+// float unless isDouble): std::to_chars's shortest form.  No "%.*g" with
+// fewer digits can read back as v, so number() starts there instead of at 1
+// (its loop was most of the time a listing took).
+int shortestDigits(double v, bool isDouble) {
+  char s[64];
+  const std::to_chars_result r = isDouble ? std::to_chars(s, s + sizeof s, v, std::chars_format::scientific)
+                                          : std::to_chars(s, s + sizeof s, float(v), std::chars_format::scientific);
+  int n = 0;
+  for (const char* p = s; p < r.ptr && *p != 'e'; ++p) n += *p >= '0' && *p <= '9';
+  return std::max(1, n);
+}
+
 // The shortest decimal that reads back as the same float (or double).
 std::string number(double v, bool isDouble) {
   if (std::isnan(v)) return "NAN";
@@ -498,7 +512,7 @@ std::string number(double v, bool isDouble) {
     return isDouble ? std::strtod(text, nullptr) == v : std::strtof(text, nullptr) == float(v);
   };
   char buf[64];
-  for (int digits = 1; digits <= 17; ++digits) {
+  for (int digits = shortestDigits(v, isDouble); digits <= 17; ++digits) {
     std::snprintf(buf, sizeof buf, "%.*g", digits, v);
     if (same(buf)) break;
   }
