@@ -249,10 +249,8 @@ inline void traceBatch(const Relief& r, const Skip& skip, const glm::dvec2* uv0,
     double iv[kBatch][2];  // [lo, hi] of each ray that found a step
     int which[kBatch], hits = 0;
     for (int q = q0; q < std::min(count, q0 + kBatch); ++q)
-      if (stepToHit(skip, uv0[q], Vp[q], &iv[hits][0], &iv[hits][1]))
-        which[hits++] = q;
-      else
-        depth[q] = 1.0;
+      if (stepToHit(skip, uv0[q], Vp[q], &iv[hits][0], &iv[hits][1])) which[hits++] = q;
+      else depth[q] = 1.0;
     for (int it = 0; it < 14; ++it)
       for (int b = 0; b < hits; ++b) {
         const int q = which[b];
