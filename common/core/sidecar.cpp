@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 
 #include "common/core/text.hpp"
 
@@ -218,7 +219,7 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
       textures.back()["height"] = t.image ? t.image->height / 6 : 0;
     }
   }
-  d["textures"] = textures;
+  d["textures"] = std::move(textures);
   Json programs = Json::array();
   for (const auto& [name, prog] : f.programs) programs.push_back({{"name", name}, {"source", prog.file}});
   d["programs"] = programs;
@@ -230,11 +231,14 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
       for (const Uniform& u : b.uniforms) uniforms[u.name] = vec(u.value);
       Json vertices = Json::array();
       for (const Vertex& x : b.vertices) {
-        Json v = {{"pos", vec(x.pos)}, {"tex", vec(x.tex)}, {"color", vec(x.color)}};
+        // Built in place and moved, never copied: a sidecar holds up to a
+        // million vertices, and each copy of the tree costs as much as its making.
+        Json v = Json::object();
+        v["pos"] = vec(x.pos), v["tex"] = vec(x.tex), v["color"] = vec(x.color);
         if (b.colorSum) v["secondary"] = vec(x.secondary);
         if (b.texGen.needsNormal()) v["normal"] = vec(x.normal);    // only where texgen reads it
         if (b.texture1 >= 0 && b.coords1) v["tex1"] = vec(x.tex1);  // unit 1's own coordinates
-        vertices.push_back(v);
+        vertices.push_back(std::move(v));
       }
       Json bj = {{"role", b.role},
                  {"primitive", primName(b.prim)},
@@ -289,8 +293,8 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
         if (b.coords1) u["coords"] = "own";  // each vertex's "tex1"
         bj["unit1"] = u;
       }
-      bj["vertices"] = vertices;
-      batches.push_back(bj);
+      bj["vertices"] = std::move(vertices);
+      batches.push_back(std::move(bj));
     }
     panels.push_back({{"id", p.id},
                       {"viewport", {p.viewport.x, p.viewport.y, p.viewport.w, p.viewport.h}},
@@ -298,10 +302,10 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
                       {"clear", p.clear},
                       {"clear_color", vec(p.clearColor)},
                       {"projection", mat(p.projection)},
-                      {"modelview", mat(p.modelview)},
-                      {"batches", batches}});
+                      {"modelview", mat(p.modelview)}});
+    panels.back()["batches"] = std::move(batches);
   }
-  d["panels"] = panels;
+  d["panels"] = std::move(panels);
   Json labels = Json::array();
   for (const Label& l : f.labels) {
     Json j = {{"x", num(l.x)},
@@ -320,9 +324,9 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
     for (const Label::Printed& p : l.printed)
       j["printed"].push_back({{"measurement", p.name}, {"format", p.format}, {"text", p.text}});
     for (const auto& [name, value] : l.given) j["given"].push_back({{"name", name}, {"value", num(value)}});
-    labels.push_back(j);
+    labels.push_back(std::move(j));
   }
-  d["labels"] = labels;
+  d["labels"] = std::move(labels);
   if (!f.legend.empty()) {
     Json legend = Json::array();
     for (const LegendEntry& e : f.legend) legend.push_back({{"color", vec(e.color)}, {"meaning", e.meaning}});
