@@ -263,11 +263,13 @@ class ParallaxAniso final : public ts::Scene {
     std::string key = stateKey();
     if (!table_ || key != tableKey_) {
       Relief& rel = relief();
-      // A window's first stage (ts::measureStage): what GL draws at once, the
-      // modes' pictures, with the reference traced with kStageRays^2 rays a
-      // pixel (a quarter of the work at the default 6 x 6) and the pictures
-      // made from it tagged as refining; no numbers until the table's.
-      // Elsewhere (--png, make_figures, the tests) this does not run.
+      // A window's first stage (ts::measureStage).  The single view: its
+      // pictures and numbers, complete (singleStage).  The modes and error
+      // views: what GL draws at once, the modes' pictures, with the reference
+      // traced with kStageRays^2 rays a pixel (a quarter of the work at the
+      // default 6 x 6) and the pictures made from it tagged as refining; no
+      // numbers until the table's.  Elsewhere (--png, make_figures, the
+      // tests) this does not run.
       if (ts::measureStaged() && (view_ == kSingle || view_ == kModes || view_ == kError)) {
         MeasureOptions first;
         first.refRays = std::min(rays_, kStageRays);
@@ -424,24 +426,26 @@ class ParallaxAniso final : public ts::Scene {
     return m;
   }
 
-  // The single view's first stage: only the one or two pictures it shows
-  // (Views::buildSingle reads nothing else of a stage), the reference traced
-  // only when it is one of them.
-  Shown singleStage(ReliefGL& gl, const Relief& rel, const MeasureOptions& o) const {
-    auto t = std::make_shared<Table>();
-    t->cam = camera(), t->map = rel.name, t->refRays = o.refRays, t->seed = o.seed, t->stage = true;
+  // The single view's first stage: the one or two pictures it shows and
+  // their numbers, complete (the reference traced with all its rays: it is
+  // what the numbers are against); the table's other modes, the listing and
+  // the gradient test follow.  The same passes as the table's, so the final
+  // table changes nothing this view draws.
+  Shown singleStage(ReliefGL& gl, const Relief& rel, MeasureOptions o) const {
+    std::vector<int> modes;
+    for (int m : {mode_, compare_ ? against_ : mode_})
+      if (m != kReference && std::find(modes.begin(), modes.end(), m) == modes.end()) modes.push_back(m);
+    o.refRays = rays_, o.firstStage = false, o.record = nullptr, o.timingRuns = 0;
+    Table measured = measureAll(gl, camera(), rel, o, modes);
+    auto t = std::make_shared<Table>(std::move(measured));
+    std::vector<Row> rows(static_cast<size_t>(kShaderModes));  // Table::rows is indexed by mode
+    for (int m = 0; m < kShaderModes; ++m) rows[size_t(m)].mode = m;
+    for (Row& r : t->rows) rows[size_t(r.mode)] = std::move(r);
+    t->rows = std::move(rows);
     Shown s;
     s.textures.resize(size_t(kShaderModes) + 1);  // Shown::of: the modes, then the reference
-    for (int m : {mode_, compare_ ? against_ : mode_}) {
-      if (m == kReference) {
-        t->referenceImage = renderReference(t->cam, rel, o.refRays, o.seed).image();
-        s.textures.back() = imageTexture(t->referenceImage, "reference");
-      } else {
-        PassOptions po;
-        po.accel = o.accel, po.gradScale = o.gradScale;
-        s.textures[size_t(m)] = imageTexture(gl.render(t->cam, rel, m, po), kModeKeys[m]);
-      }
-    }
+    for (int m : modes) s.textures[size_t(m)] = imageTexture(t->rows[size_t(m)].image, kModeKeys[m]);
+    s.textures.back() = imageTexture(t->referenceImage, "reference");
     s.table = std::move(t);
     return s;
   }
