@@ -4,12 +4,33 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <mutex>
 #include <sstream>
+#include <vector>
 
 #include "common/core/error.hpp"
 
 namespace ts::envmaps {
-TextureDesc environmentMap(Param p, int face, const glm::dmat3& sphereView) {
+namespace {
+// The maps made so far, by what makes them: a figure's passes ask for the
+// same map many times (the dynamic cube map's background, in every face of
+// every pass it measures), and each costs a world colour per texel.  A few
+// are kept, the most recent last; the pictures are shared and never changed.
+struct Made {
+  Param p;
+  int face;
+  glm::dmat3 view;
+  std::shared_ptr<const Image> image;
+};
+std::mutex g_madeMutex;
+std::vector<Made> g_made;
+
+std::shared_ptr<const Image> mapPicture(Param p, int face, const glm::dmat3& sphereView) {
+  {
+    std::lock_guard<std::mutex> lock(g_madeMutex);
+    for (const Made& m : g_made)
+      if (m.p == p && m.face == face && m.view == sphereView) return m.image;
+  }
   const Size sz = mapSize(p, face);
   const int faces = p == kCube ? 6 : 1;
   const glm::dmat3 toWorld = glm::transpose(sphereView);
@@ -18,6 +39,15 @@ TextureDesc environmentMap(Param p, int face, const glm::dmat3& sphereView) {
     for (int j = 0; j < sz.h; ++j)  // row j is t = (j + 1/2) / h (a cube face's rows f h + j)
       for (int i = 0; i < sz.w; ++i)
         img->set(i, f * sz.h + j, toRgba(worldColour(texelDir(p, f, (i + 0.5) / sz.w, (j + 0.5) / sz.h, toWorld))));
+  std::lock_guard<std::mutex> lock(g_madeMutex);
+  if (g_made.size() >= 8) g_made.erase(g_made.begin());
+  g_made.push_back({p, face, sphereView, img});
+  return img;
+}
+}  // namespace
+
+TextureDesc environmentMap(Param p, int face, const glm::dmat3& sphereView) {
+  std::shared_ptr<const Image> img = mapPicture(p, face, sphereView);
   TextureDesc t;
   t.name = "environment_map";
   t.params = {{"param", kParamKeys[p]}, {"face", std::to_string(face)}};
