@@ -205,6 +205,8 @@ class EnvironmentMapping final : public ts::Scene {
   }
   int param_ = envmap::kCube, object_ = envmap::kSphereObject, eval_ = 0, view_ = kObjectView, sphereEye_ = 0;
   int face_ = 64, render_ = 320, seam_ = 0;
+  ts::Measurements studies_;  // addStudies' numbers for the map size studiesFace_ (0: none yet)
+  int studiesFace_ = 0;
   float turn_ = 0, tilt_ = 0;
   ts::OrbitCamera orbit_;
 };
@@ -552,7 +554,15 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
   }
   shownPictures(found, out);
   ts::measureProgress(0.6);
-  envmap::addStudies(g, face_, out);  // the seeds' examples, solid angle, the stale sphere map, the near ball
+  // The seeds' examples, solid angle, the stale sphere map, the near ball:
+  // they depend on the map's size alone, so they are measured once per size
+  // (a third of the work of each figure, and of each key in a window).
+  if (studiesFace_ != face_) {
+    ts::Measurements studies;
+    envmap::addStudies(g, face_, studies);
+    studies_ = std::move(studies), studiesFace_ = face_;
+  }
+  out.insert(out.end(), studies_.begin(), studies_.end());
   out.push_back({"texels", double(envmap::mapTexels(envmap::Param(param_), face_)), "texels of the shown map"});
   out.detail = found;
   return out;
