@@ -13,6 +13,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
+#include <system_error>
 #include <map>
 #include <type_traits>
 #include <unordered_map>
@@ -504,27 +506,40 @@ int shortestDigits(double v, bool isDouble) {
   return std::max(1, n);
 }
 
-// The shortest decimal that reads back as the same float (or double).
+// The shortest decimal that reads back as the same float (or double): the
+// fewest digits of "%.*g" that do, or of "%.*f" where that is plain and as
+// exact.  Written and read with std::to_chars and std::from_chars (the same
+// text as printf, the same value as strtod/strtof, without printf's
+// arbitrary-precision path: a listing holds tens of thousands of numbers).
 std::string number(double v, bool isDouble) {
   if (std::isnan(v)) return "NAN";
   if (std::isinf(v)) return v > 0 ? "INFINITY" : "-INFINITY";
-  auto same = [&](const char* text) {
-    return isDouble ? std::strtod(text, nullptr) == v : std::strtof(text, nullptr) == float(v);
-  };
   char buf[64];
+  auto same = [&](const char* end) {
+    if (isDouble) {
+      double r = 0;
+      if (std::from_chars(buf, end, r).ec != std::errc())
+        r = std::strtod(std::string(buf, size_t(end - buf)).c_str(), nullptr);
+      return r == v;
+    }
+    float r = 0;  // out of float's range: strtof's infinity or denormal, as before
+    if (std::from_chars(buf, end, r).ec != std::errc())
+      r = std::strtof(std::string(buf, size_t(end - buf)).c_str(), nullptr);
+    return r == float(v);
+  };
+  const char* end = buf;
   for (int digits = shortestDigits(v, isDouble); digits <= 17; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    if (same(buf)) break;
+    end = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, digits).ptr;
+    if (same(end)) break;
   }
   // 20 rather than 2e+01: plain decimals where they are as exact.
-  if (std::strchr(buf, 'e') && std::fabs(v) >= 1e-5 && std::fabs(v) < 1e9) {
-    char fixed[64];
+  if (std::memchr(buf, 'e', size_t(end - buf)) && std::fabs(v) >= 1e-5 && std::fabs(v) < 1e9) {
     for (int places = 0; places <= 24; ++places) {
-      std::snprintf(fixed, sizeof fixed, "%.*f", places, v);
-      if (same(fixed)) return fixed;
+      const char* fixedEnd = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, places).ptr;
+      if (same(fixedEnd)) return std::string(buf, size_t(fixedEnd - buf));
     }
   }
-  return buf;
+  return std::string(buf, size_t(end - buf));
 }
 
 }  // namespace
