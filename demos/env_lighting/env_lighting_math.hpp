@@ -17,7 +17,9 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/core/env_maps.hpp"
@@ -64,7 +66,17 @@ inline glm::dvec3 specular(glm::dvec3 r, const std::vector<Light>& ls) {
 // The map: 6 faces of face x face texels, each S at its centre's direction
 // (ts::envmaps::cubeDir: GL's face table), GL_LINEAR, no mipmaps.  Named
 // "env_lighting_map" with its parameters, which the generator remakes.
-inline ts::TextureDesc lightingMap(int nLights, int face) {
+// The map's texels for (nLights, face), made once per process: a figure
+// draws the same map in several passes and views, and each texel costs a
+// pow() per light.  A few are kept; the pictures are shared, never changed.
+inline std::shared_ptr<const ts::Image> lightingMapTexels(int nLights, int face) {
+  static std::mutex mutex;
+  static std::vector<std::pair<std::pair<int, int>, std::shared_ptr<const ts::Image>>> made;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const auto& [key, image] : made)
+      if (key == std::make_pair(nLights, face)) return image;
+  }
   const std::vector<Light> ls = lights(nLights);
   auto img = std::make_shared<ts::Image>(face, 6 * face);
   for (int f = 0; f < 6; ++f)
@@ -73,6 +85,13 @@ inline ts::TextureDesc lightingMap(int nLights, int face) {
         const glm::dvec3 d = ts::envmaps::cubeDir(f, (i + 0.5) / face, (j + 0.5) / face);
         img->set(i, f * face + j, ts::envmaps::toRgba(specular(d, ls)));
       }
+  std::lock_guard<std::mutex> lock(mutex);
+  if (made.size() >= 8) made.erase(made.begin());
+  made.push_back({{nLights, face}, img});
+  return img;
+}
+inline ts::TextureDesc lightingMap(int nLights, int face) {
+  std::shared_ptr<const ts::Image> img = lightingMapTexels(nLights, face);
   ts::TextureDesc t;
   t.name = "env_lighting_map";
   t.params = {{"lights", std::to_string(nLights)}, {"face", std::to_string(face)}};
