@@ -684,20 +684,53 @@ inline ts::Image coarsePicture(int method, const Pyramids& p, const View& v, dou
 // row, the texels between the ends of the preimage's strip in that row
 // (every one of them overlaps it with a positive area, but for a corner
 // exactly on a grid line).
+//
+// The strip is ts::clipToBox(preimage, u0, j, u1, j + 1) with [u0, u1] the
+// preimage's own u extent, computed here as clipToBox computes it (the same
+// Sutherland-Hodgman steps, the same arithmetic in the same order, so the
+// same vertices and the same count) without its four vectors a row: the two
+// u clips keep every vertex (none lies outside the polygon's own extent), and
+// the two v clips work in arrays on the stack.  A quadrilateral clipped twice
+// has at most 16 vertices (each step at most doubles them; convex: 6).
+struct StripPoly {
+  glm::dvec2 p[16];
+  int n = 0;
+};
+// One clipToBox step against v >= c (below = false) or v <= c (below = true).
+inline void clipStripV(const StripPoly& in, StripPoly& out, double c, bool below) {
+  out.n = 0;
+  for (int k = 0; k < in.n; ++k) {
+    const glm::dvec2& a = in.p[k];
+    const glm::dvec2& b = in.p[(k + 1) % in.n];
+    const bool ia = below ? a.y <= c : a.y >= c, ib = below ? b.y <= c : b.y >= c;
+    if (ia) out.p[out.n++] = a;
+    if (ia != ib) out.p[out.n++] = {a.x + (b.x - a.x) * (c - a.y) / (b.y - a.y), c};  // area_filter.cpp's atY
+  }
+}
 inline double exactTexels(const View& v, const std::vector<char>& mask) {
   long n = 0, px = 0;
   for (int row = 0; row < v.h; ++row)
     for (int col = 0; col < v.w; ++col) {
       if (!mask[size_t(row) * size_t(v.w) + size_t(col)]) continue;
       const ts::Polygon2 poly = v.preimage(col, row);
-      double u0 = poly[0].x, u1 = u0, v0 = poly[0].y, v1 = v0;
-      for (const glm::dvec2& q : poly)
-        u0 = std::min(u0, q.x), u1 = std::max(u1, q.x), v0 = std::min(v0, q.y), v1 = std::max(v1, q.y);
+      double v0 = poly[0].y, v1 = v0;
+      for (const glm::dvec2& q : poly) v0 = std::min(v0, q.y), v1 = std::max(v1, q.y);
+      StripPoly quad, half, strip;
+      quad.n = int(poly.size());
+      for (int k = 0; k < quad.n; ++k) quad.p[k] = poly[size_t(k)];
       for (long j = long(std::floor(v0)); j < long(std::ceil(v1)); ++j) {
-        const ts::Polygon2 strip = ts::clipToBox(poly, u0, double(j), u1, double(j + 1));
-        if (strip.size() < 3 || std::fabs(ts::signedArea(strip)) <= 0) continue;
-        double a = strip[0].x, b = a;
-        for (const glm::dvec2& q : strip) a = std::min(a, q.x), b = std::max(b, q.x);
+        clipStripV(quad, half, double(j), false);
+        clipStripV(half, strip, double(j + 1), true);
+        if (strip.n < 3) continue;
+        double twice = 0;  // ts::signedArea, term by term
+        for (int k = 0; k < strip.n; ++k) {
+          const glm::dvec2& a = strip.p[k];
+          const glm::dvec2& b = strip.p[(k + 1) % strip.n];
+          twice += a.x * b.y - b.x * a.y;
+        }
+        if (std::fabs(0.5 * twice) <= 0) continue;
+        double a = strip.p[0].x, b = a;
+        for (int k = 0; k < strip.n; ++k) a = std::min(a, strip.p[k].x), b = std::max(b, strip.p[k].x);
         n += long(std::ceil(b)) - long(std::floor(a));
       }
       ++px;
@@ -811,10 +844,14 @@ inline std::vector<double> kernelTaps(int k) {
 inline ts::Image decimate(const ts::Image& src, int kernel, bool linearLight) {
   const std::vector<double> taps = kernelTaps(kernel);
   const int w = std::max(1, src.width / 2), h = std::max(1, src.height / 2);
+  // srgbToLinear of each of the 256 byte values, once: the taps read every
+  // texel several times, and pow was most of a linear-light chain's time.
+  std::array<double, 256> toLinear{};
+  for (int b = 0; b < 256; ++b) toLinear[size_t(b)] = srgbToLinear(double(b));
   auto val = [&](int i, int j, int c) {
     const ts::Rgba p = src.at(((i % src.width) + src.width) % src.width, ((j % src.height) + src.height) % src.height);
-    const double v = c == 0 ? p.r : c == 1 ? p.g : c == 2 ? p.b : p.a;
-    return linearLight && c < 3 ? srgbToLinear(v) : v;
+    const uint8_t v = c == 0 ? p.r : c == 1 ? p.g : c == 2 ? p.b : p.a;
+    return linearLight && c < 3 ? toLinear[v] : double(v);
   };
   // Along u first (src.height rows of w), then v.
   std::vector<double> mid(size_t(w) * size_t(src.height) * 4);
