@@ -104,8 +104,8 @@ inline ts::Image sceneGlPicture(ts::Renderer& r, int scene, int pattern, double 
 }
 
 // The exact reference of (scene, pattern, azimuth), made once per process.
-// Two threads share the rows (the horizon's footprints are thousands of
-// texels long: their outlines are what cost).  `linearLight`: the area
+// Two threads share the rows (parallelRows: the horizon's footprints are
+// thousands of texels long, and their outlines are what cost).  `linearLight`: the area
 // average of the texels' linear-light values, encoded back to sRGB (the
 // reference for chains averaged in linear light).
 inline std::shared_ptr<const Picture> exactPicture(int scene, int pattern, double azimuthDeg, const Pyramids& p,
@@ -123,19 +123,13 @@ inline std::shared_ptr<const Picture> exactPicture(int scene, int pattern, doubl
   auto out = std::make_shared<Picture>();
   out->image = ts::Image(v.w, v.h, kBackground);
   out->exact.assign(size_t(v.w) * size_t(v.h), glm::dvec4(kBackground.r, kBackground.g, kBackground.b, 255));
-  auto rows = [&](int first) {
-    for (int row = first; row < v.h; row += 2)
-      for (int col = 0; col < v.w; ++col) {
-        if (!v.coversPixel(col, row)) continue;
-        glm::dvec4 c = (linearLight ? p.exactLinear : p.exact).average(v.preimage(col, row));
+  exactAverages(
+      linearLight ? p.exactLinear : p.exact, v, [&](int col, int row) { return v.coversPixel(col, row); },
+      [&](int col, int row, glm::dvec4 c) {
         if (linearLight) c = glm::dvec4(linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b), 255.0 * c.a);
         out->exact[size_t(row) * size_t(v.w) + size_t(col)] = c;
         out->image.set(col, row, toRgba(c));
-      }
-  };
-  std::thread other(rows, 1);
-  rows(0);
-  other.join();
+      });
   std::lock_guard<std::mutex> g(lock);
   return cache.emplace(key, out).first->second;
 }
@@ -299,6 +293,14 @@ inline std::shared_ptr<const CpuResult> cpuResult(int method, int scene, int pat
   }
   std::lock_guard<std::mutex> g(lock);
   return cache.emplace(key, out).first->second;
+}
+
+// Every CPU result measureRow(..., counts = true) reads, made ahead (cached
+// by cpuResult): the exact picture first, then the methods by their cost.
+inline void cpuResultsOfRow(int scene, int pattern, double az, double bias) {
+  for (int m : {int(kExact), int(kEwa), int(kProbes), int(kSat), int(kRipmap), int(kNearest), int(kLinear),
+                int(kNearestMipNearest), int(kTrilinear)})
+    cpuResult(m, scene, pattern, az, bias);
 }
 
 // One scene at one azimuth: every method's picture, its RMS against the exact
