@@ -64,7 +64,6 @@
 #include <memory>
 #include <utility>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "common/core/error.hpp"
@@ -224,19 +223,7 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
   if (std::find(azs.begin(), azs.end(), double(azimuth_)) == azs.end()) azs.push_back(azimuth_);
 
   std::unique_ptr<Row> currentRow;  // measured first in a window (its second stage)
-  // In a window the current row's CPU pictures (the exact integral first)
-  // start at once on other threads while this one has GL draw the first
-  // stage: they are most of the wait for the complete picture.  Joined
-  // before the row is put together, or when a newer request cancels this one.
-  std::thread ahead;
-  struct Join {
-    std::thread& t;
-    ~Join() {
-      if (t.joinable()) t.join();
-    }
-  } joinAhead{ahead};
   if (ts::measureStaged() && view_ != kKernels && view_ != kBias && view_ != kMemory) {
-    ahead = std::thread(cpuResultsOfRow, scene_, pattern_, double(azimuth_), double(bias_));
     // 0. In a window, a first stage at once: the GL methods' pictures, the
     // CPU methods' coarse (coarseRow), refined in place by what follows.
     Result first = res;
@@ -251,7 +238,6 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
     // A second stage: the current azimuth's row in full, before anything
     // else.  It is all the methods view shows (pictures, RMS, reads), so that
     // view is complete here; the other azimuths' rows and the numbers follow.
-    ahead.join();
     currentRow = std::make_unique<Row>(measureRow(r, scene_, pattern_, azimuth_, bias_, true));
     for (Row& row : first.rows)
       if (row.azimuth == double(azimuth_)) row = *currentRow;

@@ -295,14 +295,6 @@ inline std::shared_ptr<const CpuResult> cpuResult(int method, int scene, int pat
   return cache.emplace(key, out).first->second;
 }
 
-// Every CPU result measureRow(..., counts = true) reads, made ahead (cached
-// by cpuResult): the exact picture first, then the methods by their cost.
-inline void cpuResultsOfRow(int scene, int pattern, double az, double bias) {
-  for (int m : {int(kExact), int(kEwa), int(kProbes), int(kSat), int(kRipmap), int(kNearest), int(kLinear),
-                int(kNearestMipNearest), int(kTrilinear)})
-    cpuResult(m, scene, pattern, az, bias);
-}
-
 // One scene at one azimuth: every method's picture, its RMS against the exact
 // integral over the mask and its texels read.
 inline Row measureRow(ts::Renderer& r, int scene, int pattern, double az, double bias, bool counts) {
