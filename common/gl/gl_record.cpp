@@ -8,11 +8,13 @@
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <system_error>
 #include <type_traits>
 #include <unordered_map>
 
@@ -497,8 +499,18 @@ std::string number(double v, bool isDouble) {
   auto same = [&](const char* text) {
     return isDouble ? std::strtod(text, nullptr) == v : std::strtof(text, nullptr) == float(v);
   };
+  // No decimal with fewer significant digits than the shortest one that
+  // reads back (std::to_chars) can read back, so the search starts there:
+  // the same text as from 1 digit up, in one or two tries instead of ~8.
+  char shortest[64];
+  const std::to_chars_result r = isDouble ? std::to_chars(shortest, shortest + sizeof shortest, v,
+                                                          std::chars_format::scientific)
+                                          : std::to_chars(shortest, shortest + sizeof shortest, float(v),
+                                                          std::chars_format::scientific);
+  int fewest = 0;
+  for (const char* c = shortest; r.ec == std::errc() && c < r.ptr && *c != 'e'; ++c) fewest += *c >= '0' && *c <= '9';
   char buf[64];
-  for (int digits = 1; digits <= 17; ++digits) {
+  for (int digits = std::clamp(fewest, 1, 17); digits <= 17; ++digits) {
     std::snprintf(buf, sizeof buf, "%.*g", digits, v);
     if (same(buf)) break;
   }
