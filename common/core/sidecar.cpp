@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 
 #include "common/core/text.hpp"
 
@@ -204,14 +205,14 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
     if (t.renderedFrom) {  // a nested frame: the frame this texture is the render of
       Json nested;
       frameInto(nested, *t.renderedFrom, false);
-      textures.back()["rendered_from"] = nested;
+      textures.back()["rendered_from"] = std::move(nested);
     }
     if (t.cube) {  // a cube map: only then; height is a face's
       textures.back()["cube"] = true;
       textures.back()["height"] = t.image ? t.image->height / 6 : 0;
     }
   }
-  d["textures"] = textures;
+  d["textures"] = std::move(textures);
   Json programs = Json::array();
   for (const auto& [name, prog] : f.programs) programs.push_back({{"name", name}, {"source", prog.file}});
   d["programs"] = programs;
@@ -227,7 +228,7 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
         if (b.colorSum) v["secondary"] = vec(x.secondary);
         if (b.texGen.needsNormal()) v["normal"] = vec(x.normal);    // only where texgen reads it
         if (b.texture1 >= 0 && b.coords1) v["tex1"] = vec(x.tex1);  // unit 1's own coordinates
-        vertices.push_back(v);
+        vertices.push_back(std::move(v));
       }
       Json bj = {{"role", b.role},
                  {"primitive", primName(b.prim)},
@@ -282,8 +283,8 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
         if (b.coords1) u["coords"] = "own";  // each vertex's "tex1"
         bj["unit1"] = u;
       }
-      bj["vertices"] = vertices;
-      batches.push_back(bj);
+      bj["vertices"] = std::move(vertices);
+      batches.push_back(std::move(bj));
     }
     panels.push_back({{"id", p.id},
                       {"viewport", {p.viewport.x, p.viewport.y, p.viewport.w, p.viewport.h}},
@@ -292,9 +293,9 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
                       {"clear_color", vec(p.clearColor)},
                       {"projection", mat(p.projection)},
                       {"modelview", mat(p.modelview)},
-                      {"batches", batches}});
+                      {"batches", std::move(batches)}});
   }
-  d["panels"] = panels;
+  d["panels"] = std::move(panels);
   Json labels = Json::array();
   for (const Label& l : f.labels) {
     Json j = {{"x", num(l.x)},
@@ -313,13 +314,13 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
     for (const Label::Printed& p : l.printed)
       j["printed"].push_back({{"measurement", p.name}, {"format", p.format}, {"text", p.text}});
     for (const auto& [name, value] : l.given) j["given"].push_back({{"name", name}, {"value", num(value)}});
-    labels.push_back(j);
+    labels.push_back(std::move(j));
   }
-  d["labels"] = labels;
+  d["labels"] = std::move(labels);
   if (!f.legend.empty()) {
     Json legend = Json::array();
     for (const LegendEntry& e : f.legend) legend.push_back({{"color", vec(e.color)}, {"meaning", e.meaning}});
-    d["legend"] = legend;
+    d["legend"] = std::move(legend);
   }
 }
 
