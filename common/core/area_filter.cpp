@@ -211,6 +211,93 @@ inline glm::dvec4 Piece<IntegerSum>::g() const {
 // Tables larger than this (bytes) are walked with prefetching.
 constexpr size_t kPrefetchBytes = size_t(8) << 20;
 
+// One edge a -> b (already shifted near the origin) of the outline: adds
+// dv * G at each piece's midpoint to `sum`, in the order of the walk, and
+// counts the pieces.  With `rows`, also adds dv * (the piece's row total)
+// there: the integral of T(v) dv, which moves the edge's integral from one
+// shift of whole periods to another (G(u - w, v) = G(u, v) - T(v)).
+template <class Sum>
+void walkEdge(const SumTable<Sum>& table, int w_, int h_, glm::dvec2 a, glm::dvec2 b, glm::dvec4& sum, glm::dvec4* rows,
+              long& count) {
+  using Table = SumTable<Sum>;
+  if (a.y == b.y) return;                            // dv = 0: nothing to add
+  thread_local std::vector<Piece<Sum>> pieceBuffer;  // one edge's pieces
+  const bool prefetch = table.bytes() > kPrefetchBytes;
+  const size_t totalColumn = Table::column(w_);
+  static const Sum zero{};
+  const glm::dvec2 d = b - a;
+  const int si = d.x > 0 ? 1 : -1, sj = d.y > 0 ? 1 : -1;
+  // t (0..1 along the edge) of the next crossing of a vertical (tu) and a
+  // horizontal (tv) grid line, and the step to the one after.
+  double tu = 2, dtu = 0;
+  if (d.x != 0) {
+    const double c = d.x > 0 ? std::floor(a.x) + 1 : std::ceil(a.x) - 1;
+    tu = (c - a.x) / d.x, dtu = si / d.x;
+  }
+  const double cv = d.y > 0 ? std::floor(a.y) + 1 : std::ceil(a.y) - 1;
+  double tv = (cv - a.y) / d.y;
+  const double dtv = sj / d.y;
+  // The first texel: under the first piece's midpoint; then one step per crossing.
+  double t0 = 0, t1 = std::min(std::min(tu, tv), 1.0);
+  const glm::dvec2 m0 = a + 0.5 * t1 * d;
+  const long i = long(std::floor(m0.x)), j = long(std::floor(m0.y));
+  long q = i >= 0 ? i / w_ : -((-i + w_ - 1) / w_);  // whole periods left of texel i
+  long mi = i - q * w_;                              // its column in the texture
+  long row = ((j % h_) + h_) % h_;
+  const Sum* sums = &table.sums[table.rowBase(row)];  // row's sums: sums[Table::column(i)]
+  // A table larger than the caches is walked in two passes over the edge:
+  // the first finds its pieces and asks for their sums (prefetch: a long
+  // edge crosses texels far apart in memory, and waiting for each in turn
+  // is what made large textures slow), the second adds them — the same
+  // numbers in the same order as the one pass a small table takes.
+  pieceBuffer.clear();
+  for (;;) {
+    if (t1 > t0) {
+      const double um = a.x + 0.5 * (t0 + t1) * d.x;  // G is linear in u within the texel: its midpoint value
+      // No whole periods to add (q = 0): the row total is not read, a zero
+      // stands in (a select, not a branch: q changes often on a tiled plane).
+      const Piece<Sum> pc{&sums[Table::column(mi)],
+                          &sums[Table::column(mi + 1)],
+                          q != 0 ? &sums[totalColumn] : &zero,
+                          d.y * (t1 - t0),
+                          double(q),
+                          um - double(q * w_ + mi)};
+      if (rows) *rows += pc.dv * valueOf(sums[totalColumn]);
+      if (prefetch) {
+        __builtin_prefetch(pc.left);
+        if (!Sum::kHoldsTexel) __builtin_prefetch(pc.right);
+        if (q != 0) __builtin_prefetch(pc.total);  // the branch only steers the hint
+        pieceBuffer.push_back(pc);
+      } else {
+        sum += pc.dv * pc.g();
+        ++count;
+      }
+    }
+    if (t1 >= 1) break;
+    if (t1 == tu) {
+      tu += dtu, mi += si;
+      if (mi == w_) mi = 0, ++q;
+      else if (mi < 0) mi = w_ - 1, --q;
+    }
+    if (t1 == tv) {
+      tv += dtv, row += sj;
+      if (row == h_) row = 0;
+      else if (row < 0) row = h_ - 1;
+      sums = &table.sums[table.rowBase(row)];
+    }
+    t0 = t1;
+    t1 = std::min(std::min(tu, tv), 1.0);
+  }
+  for (const Piece<Sum>& pc : pieceBuffer) sum += pc.dv * pc.g();
+  count += long(pieceBuffer.size());
+}
+
+// Whole periods near a polygon's lowest u and v: subtracting them leaves the
+// texture the same and keeps G's sums and the area's products small.
+glm::dvec2 periodShift(int w_, int h_, double u0, double v0) {
+  return {w_ * std::floor(u0 / w_), h_ * std::floor(v0 / h_)};
+}
+
 template <class Sum>
 glm::dvec4 outlineAverage(const SumTable<Sum>& table, int w_, int h_, const Polygon2& in, long* pieces) {
   using Table = SumTable<Sum>;
@@ -221,7 +308,7 @@ glm::dvec4 outlineAverage(const SumTable<Sum>& table, int w_, int h_, const Poly
   // rounding with them.
   double u0 = in[0].x, v0 = in[0].y;
   for (const glm::dvec2& p : in) u0 = std::min(u0, p.x), v0 = std::min(v0, p.y);
-  const glm::dvec2 shift(w_ * std::floor(u0 / w_), h_ * std::floor(v0 / h_));
+  const glm::dvec2 shift = periodShift(w_, h_, u0, v0);
   double twice = 0;
   for (size_t k = 0; k < in.size(); ++k) {
     const glm::dvec2 a = in[k] - shift, b = in[(k + 1) % in.size()] - shift;
@@ -235,81 +322,50 @@ glm::dvec4 outlineAverage(const SumTable<Sum>& table, int w_, int h_, const Poly
   }
   glm::dvec4 sum(0.0);
   long count = 0;
-  thread_local std::vector<Piece<Sum>> pieceBuffer;  // one edge's pieces
-  const bool prefetch = table.bytes() > kPrefetchBytes;
-  const size_t totalColumn = Table::column(w_);
-  static const Sum zero{};
   const size_t n = in.size();
-  for (size_t k = 0; k < n; ++k) {
-    const glm::dvec2 a = in[k] - shift, b = in[(k + 1) % n] - shift;
-    if (a.y == b.y) continue;  // dv = 0: nothing to add
-    const glm::dvec2 d = b - a;
-    const int si = d.x > 0 ? 1 : -1, sj = d.y > 0 ? 1 : -1;
-    // t (0..1 along the edge) of the next crossing of a vertical (tu) and a
-    // horizontal (tv) grid line, and the step to the one after.
-    double tu = 2, dtu = 0;
-    if (d.x != 0) {
-      const double c = d.x > 0 ? std::floor(a.x) + 1 : std::ceil(a.x) - 1;
-      tu = (c - a.x) / d.x, dtu = si / d.x;
-    }
-    const double cv = d.y > 0 ? std::floor(a.y) + 1 : std::ceil(a.y) - 1;
-    double tv = (cv - a.y) / d.y;
-    const double dtv = sj / d.y;
-    // The first texel: under the first piece's midpoint; then one step per crossing.
-    double t0 = 0, t1 = std::min(std::min(tu, tv), 1.0);
-    const glm::dvec2 m0 = a + 0.5 * t1 * d;
-    const long i = long(std::floor(m0.x)), j = long(std::floor(m0.y));
-    long q = i >= 0 ? i / w_ : -((-i + w_ - 1) / w_);  // whole periods left of texel i
-    long mi = i - q * w_;                              // its column in the texture
-    long row = ((j % h_) + h_) % h_;
-    const Sum* sums = &table.sums[table.rowBase(row)];  // row's sums: sums[Table::column(i)]
-    // A table larger than the caches is walked in two passes over the edge:
-    // the first finds its pieces and asks for their sums (prefetch: a long
-    // edge crosses texels far apart in memory, and waiting for each in turn
-    // is what made large textures slow), the second adds them — the same
-    // numbers in the same order as the one pass a small table takes.
-    pieceBuffer.clear();
-    for (;;) {
-      if (t1 > t0) {
-        const double um = a.x + 0.5 * (t0 + t1) * d.x;  // G is linear in u within the texel: its midpoint value
-        // No whole periods to add (q = 0): the row total is not read, a zero
-        // stands in (a select, not a branch: q changes often on a tiled plane).
-        const Piece<Sum> pc{&sums[Table::column(mi)],
-                            &sums[Table::column(mi + 1)],
-                            q != 0 ? &sums[totalColumn] : &zero,
-                            d.y * (t1 - t0),
-                            double(q),
-                            um - double(q * w_ + mi)};
-        if (prefetch) {
-          __builtin_prefetch(pc.left);
-          if (!Sum::kHoldsTexel) __builtin_prefetch(pc.right);
-          if (q != 0) __builtin_prefetch(pc.total);  // the branch only steers the hint
-          pieceBuffer.push_back(pc);
-        } else {
-          sum += pc.dv * pc.g();
-          ++count;
-        }
-      }
-      if (t1 >= 1) break;
-      if (t1 == tu) {
-        tu += dtu, mi += si;
-        if (mi == w_) mi = 0, ++q;
-        else if (mi < 0) mi = w_ - 1, --q;
-      }
-      if (t1 == tv) {
-        tv += dtv, row += sj;
-        if (row == h_) row = 0;
-        else if (row < 0) row = h_ - 1;
-        sums = &table.sums[table.rowBase(row)];
-      }
-      t0 = t1;
-      t1 = std::min(std::min(tu, tv), 1.0);
-    }
-    for (const Piece<Sum>& pc : pieceBuffer) sum += pc.dv * pc.g();
-    count += long(pieceBuffer.size());
-  }
+  for (size_t k = 0; k < n; ++k) walkEdge(table, w_, h_, in[k] - shift, in[(k + 1) % n] - shift, sum, nullptr, count);
   if (pieces) *pieces = count;
   return sum / total;  // a clockwise polygon gives both signs negative
+}
+
+template <class Sum>
+AreaIntegral::Edge outlineEdge(const SumTable<Sum>& table, int w_, int h_, glm::dvec2 a, glm::dvec2 b) {
+  AreaIntegral::Edge e;
+  if (w_ <= 0 || h_ <= 0) return e;
+  e.shift = periodShift(w_, h_, std::min(a.x, b.x), std::min(a.y, b.y));
+  walkEdge(table, w_, h_, a - e.shift, b - e.shift, e.g, &e.rows, e.pieces);
+  return e;
+}
+
+template <class Sum>
+glm::dvec4 averageFromEdges(const SumTable<Sum>& table, int w_, int h_, const Polygon2& in,
+                            const AreaIntegral::Edge* const* edges, const int* signs) {
+  using Table = SumTable<Sum>;
+  if (in.empty() || w_ <= 0 || h_ <= 0) return glm::dvec4(0.0);
+  // The polygon's shift, area and degenerate case exactly as average()'s.
+  double u0 = in[0].x, v0 = in[0].y;
+  for (const glm::dvec2& p : in) u0 = std::min(u0, p.x), v0 = std::min(v0, p.y);
+  const glm::dvec2 shift = periodShift(w_, h_, u0, v0);
+  double twice = 0;
+  for (size_t k = 0; k < in.size(); ++k) {
+    const glm::dvec2 a = in[k] - shift, b = in[(k + 1) % in.size()] - shift;
+    twice += a.x * b.y - b.x * a.y;
+  }
+  const double total = 0.5 * twice;
+  if (!(std::fabs(total) >= 1e-12)) {
+    const long i = ((long(std::floor(in[0].x)) % w_) + w_) % w_, j = ((long(std::floor(in[0].y)) % h_) + h_) % h_;
+    const Sum* row = &table.sums[table.rowBase(j)];
+    return texelOf(row[Table::column(i)], row[Table::column(i + 1)]);
+  }
+  // Each edge's integral moved from its own shift to the polygon's: G at
+  // u - s_e is G at u - s minus (s_e - s) / W row totals (the v shift does
+  // not change G: the rows repeat).
+  glm::dvec4 sum(0.0);
+  for (size_t k = 0; k < in.size(); ++k) {
+    const AreaIntegral::Edge& e = *edges[k];
+    sum += double(signs[k]) * (e.g + ((e.shift.x - shift.x) / w_) * e.rows);
+  }
+  return sum / total;
 }
 }  // namespace
 
@@ -355,6 +411,18 @@ glm::dvec4 AreaIntegral::average(const Polygon2& in, long* pieces) const {
   if (tables_ && tables_->integer) return outlineAverage(*tables_->integer, w_, h_, in, pieces);
   if (tables_ && tables_->real) return outlineAverage(*tables_->real, w_, h_, in, pieces);
   if (pieces) *pieces = 0;
+  return glm::dvec4(0.0);
+}
+
+AreaIntegral::Edge AreaIntegral::edge(glm::dvec2 a, glm::dvec2 b) const {
+  if (tables_ && tables_->integer) return outlineEdge(*tables_->integer, w_, h_, a, b);
+  if (tables_ && tables_->real) return outlineEdge(*tables_->real, w_, h_, a, b);
+  return Edge();
+}
+
+glm::dvec4 AreaIntegral::averageOfEdges(const Polygon2& in, const Edge* const* edges, const int* signs) const {
+  if (tables_ && tables_->integer) return averageFromEdges(*tables_->integer, w_, h_, in, edges, signs);
+  if (tables_ && tables_->real) return averageFromEdges(*tables_->real, w_, h_, in, edges, signs);
   return glm::dvec4(0.0);
 }
 

@@ -212,7 +212,7 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
     if (t.renderedFrom) {  // a nested frame: the frame this texture is the render of
       Json nested;
       frameInto(nested, *t.renderedFrom, false);
-      textures.back()["rendered_from"] = nested;
+      textures.back()["rendered_from"] = std::move(nested);
     }
     if (t.cube) {  // a cube map: only then; height is a face's
       textures.back()["cube"] = true;
@@ -330,7 +330,7 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
   if (!f.legend.empty()) {
     Json legend = Json::array();
     for (const LegendEntry& e : f.legend) legend.push_back({{"color", vec(e.color)}, {"meaning", e.meaning}});
-    d["legend"] = legend;
+    d["legend"] = std::move(legend);
   }
 }
 

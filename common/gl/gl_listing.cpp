@@ -138,8 +138,16 @@ namespace {
 struct Entry {
   std::string text;
   bool changed = false;
-  bool vertex = false;  // a glVertex*: ends one vertex's group of calls
-  bool picked = false;  // sets the picked pixel's texture state
+  bool vertex = false;              // a glVertex*: ends one vertex's group of calls
+  bool picked = false;              // sets the picked pixel's texture state
+  bool begin = false, end = false;  // glBegin, glEnd
+  // A call whose text is made when first asked for (formatted()): most of a
+  // long mesh's vertices fold into "... N more vertices" and are never shown.
+  const gl::Call* call = nullptr;
+  const std::string& formatted() {
+    if (call) text = gl::formatCall(*call), call = nullptr;
+    return text;
+  }
 };
 
 // The calls as numberObjects would give them, numbered one at a time: a
@@ -159,7 +167,9 @@ void addEntries(const std::vector<gl::Call>& calls, std::vector<Entry>* out, con
     if (c.query) continue;
     Entry e;
     e.picked = picked && k < picked->size() && (*picked)[k];
-    e.text = gl::formatCall(c);
+    if (call == &numbered) e.text = gl::formatCall(c);  // `numbered` is reused: its text now
+    else e.call = call;                                 // calls[k] outlives the entries
+    e.begin = std::strcmp(c.name, "glBegin") == 0, e.end = std::strcmp(c.name, "glEnd") == 0;
     e.vertex = std::strncmp(c.name, "glVertex", 8) == 0 && std::strcmp(c.name, "glVertexPointer") != 0 &&
                std::strncmp(c.name, "glVertexAttrib", 14) != 0;
     out->push_back(std::move(e));
@@ -179,7 +189,9 @@ std::vector<Entry> entries(const std::vector<CallSection>& sections, const std::
 // changed values, not structure), the longest common subsequence when that
 // is small enough, else as multisets of texts (many vertices added or
 // removed: nearly everything changed anyway).
-void markChanged(const std::vector<Entry>& before, std::vector<Entry>* now) {
+void markChanged(std::vector<Entry>& before, std::vector<Entry>* now) {
+  for (Entry& e : before) e.formatted();  // compared by text: every call's
+  for (Entry& e : *now) e.formatted();
   size_t n = before.size(), m = now->size();
   if (n == m) {
     for (size_t k = 0; k < m; ++k) (*now)[k].changed = (*now)[k].text != before[k].text;
@@ -229,9 +241,13 @@ std::vector<ListingLine> listing(const std::vector<gl::Call>& calls, const std::
 std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const std::vector<CallSection>* previous,
                                  int keepVertices, const std::vector<bool>* picked) {
   std::vector<Entry> now = entries(sections, picked);
-  if (previous) markChanged(entries(*previous), &now);
+  if (previous) {
+    std::vector<Entry> before = entries(*previous);
+    markChanged(before, &now);
+  }
   std::vector<ListingLine> out;
-  auto emit = [&](const Entry& e) {
+  auto emit = [&](Entry& e) {
+    e.formatted();
     // One listing line per source line (a shader's source spans many).
     size_t pos = 0;
     while (true) {
@@ -243,15 +259,15 @@ std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const
   };
   size_t i = 0;
   while (i < now.size()) {
-    const Entry& e = now[i];
+    Entry& e = now[i];
     emit(e);
     ++i;
-    if (e.text.rfind("glBegin(", 0) != 0) continue;
+    if (!e.begin) continue;
     // The vertices up to glEnd, in groups: the attribute calls of a vertex
     // and its glVertex.  Kept: the first `keepVertices` groups and every
     // group with a changed call; the rest become "... N more vertices".
     size_t end = i;
-    while (end < now.size() && now[end].text.rfind("glEnd(", 0) != 0) ++end;
+    while (end < now.size() && !now[end].end) ++end;
     int vertex = 0, skipped = 0, keptChanged = 0;
     constexpr int kMaxChanged = 64;
     size_t groupStart = i;

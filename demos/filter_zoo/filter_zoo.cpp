@@ -222,9 +222,10 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
   if (scene_ == kSlant) azs.assign(kAzimuths.begin(), kAzimuths.end());
   if (std::find(azs.begin(), azs.end(), double(azimuth_)) == azs.end()) azs.push_back(azimuth_);
 
-  // 0. In a window, a first stage at once: the GL methods' pictures, the
-  // CPU methods' coarse (coarseRow), refined in place by what follows.
+  std::unique_ptr<Row> currentRow;  // measured first in a window (its second stage)
   if (ts::measureStaged() && view_ != kKernels && view_ != kBias && view_ != kMemory) {
+    // 0. In a window, a first stage at once: the GL methods' pictures, the
+    // CPU methods' coarse (coarseRow), refined in place by what follows.
     Result first = res;
     for (size_t k = 0; k < azs.size(); ++k) {
       if (view_ != kAzimuthGrid && azs[k] != double(azimuth_)) continue;  // the other views show one azimuth
@@ -234,6 +235,15 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
     ts::Measurements stage;
     stage.detail = first;
     ts::measureStage(std::move(stage));
+    // A second stage: the current azimuth's row in full, before anything
+    // else.  It is all the methods view shows (pictures, RMS, reads), so that
+    // view is complete here; the other azimuths' rows and the numbers follow.
+    currentRow = std::make_unique<Row>(measureRow(r, scene_, pattern_, azimuth_, bias_, true));
+    for (Row& row : first.rows)
+      if (row.azimuth == double(azimuth_)) row = *currentRow;
+    ts::Measurements second;
+    second.detail = first;
+    ts::measureStage(std::move(second));
   }
 
   // 1. Magnification counts, read from texel-index renders.
@@ -288,7 +298,7 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
   for (size_t k = 0; k < azs.size(); ++k) {
     ts::measureProgress(0.1 + 0.5 * double(k) / double(azs.size()));
     const bool current = azs[k] == double(azimuth_);
-    res.rows.push_back(measureRow(r, scene_, pattern_, azs[k], bias_, current));
+    res.rows.push_back(current && currentRow ? *currentRow : measureRow(r, scene_, pattern_, azs[k], bias_, current));
     if (current) res.current = int(k);
   }
   const std::string where = scene_ == kSlant ? "" : std::string(kSceneKeys[scene_]) + "_";

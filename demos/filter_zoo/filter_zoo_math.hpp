@@ -53,9 +53,11 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "common/core/area_filter.hpp"
@@ -636,29 +638,112 @@ struct Picture {
   std::vector<glm::dvec4> exact;  // kExact only: the unrounded averages
   double meanReads = 0;
 };
+// Rows 0 .. h-1 shared by two threads (the machine's two cores), each taking
+// the next row not yet taken: a picture's rows differ in cost (the horizon's
+// footprints are the long ones).  Every pixel is computed as one thread would
+// compute it, so the picture is the same; `row(r)` must write only row r's
+// pixels and its own counters.
+template <class RowFn>
+inline void parallelRows(int h, RowFn row) {
+  std::atomic<int> next{0};
+  auto work = [&] {
+    for (int r; (r = next.fetch_add(1)) < h;) row(r);
+  };
+  std::thread other(work);
+  work();
+  other.join();
+}
+
+// The exact average over every wanted pixel's preimage (wanted(col, row):
+// the pixel square lies on the surface), each preimage edge walked once
+// (ts::AreaIntegral::edge): a pixel's edges are its neighbours' too, so a
+// picture costs half the walks of one average() a pixel.  The horizontal
+// edges first (two rows of pixels share each), then each row's vertical
+// edges and its pixels; rows in parallel.  store(col, row, average).
+template <class Wanted, class Store>
+inline void exactAverages(const ts::AreaIntegral& ai, const View& v, Wanted wanted, Store store) {
+  using Edge = ts::AreaIntegral::Edge;
+  const int w = v.w, h = v.h;
+  // Corner (i, y) (window coordinates, y up) in texels: as View::preimage computes it.
+  auto corner = [&](int i, int y) { return v.uv(double(i), double(y)); };
+  std::vector<char> want(size_t(w) * size_t(h));
+  for (int row = 0; row < h; ++row)
+    for (int col = 0; col < w; ++col) want[size_t(row) * size_t(w) + size_t(col)] = wanted(col, row) ? 1 : 0;
+  auto wants = [&](int col, int y) {  // the pixel whose bottom edge is at window y
+    return y >= 0 && y < h && want[size_t(h - 1 - y) * size_t(w) + size_t(col)];
+  };
+  // horizontal[y * w + i]: corner (i, y) -> (i + 1, y), for y = 0 .. h.
+  std::vector<Edge> horizontal(size_t(h + 1) * size_t(w));
+  parallelRows(h + 1, [&](int y) {
+    glm::dvec2 a = corner(0, y);
+    for (int i = 0; i < w; ++i) {
+      const glm::dvec2 b = corner(i + 1, y);
+      if (wants(i, y) || wants(i, y - 1)) horizontal[size_t(y) * size_t(w) + size_t(i)] = ai.edge(a, b);
+      a = b;
+    }
+  });
+  parallelRows(h, [&](int row) {
+    const int y = h - 1 - row;
+    std::vector<Edge> vertical(size_t(w) + 1);  // corner (i, y) -> (i, y + 1)
+    for (int i = 0; i <= w; ++i)
+      if ((i < w && wants(i, y)) || (i > 0 && wants(i - 1, y)))
+        vertical[size_t(i)] = ai.edge(corner(i, y), corner(i, y + 1));
+    for (int col = 0; col < w; ++col) {
+      if (!wants(col, y)) continue;
+      const ts::Polygon2 poly = v.preimage(col, row);
+      const Edge* edges[4] = {&horizontal[size_t(y) * size_t(w) + size_t(col)], &vertical[size_t(col) + 1],
+                              &horizontal[size_t(y + 1) * size_t(w) + size_t(col)], &vertical[size_t(col)]};
+      const int signs[4] = {1, 1, -1, -1};  // the top and left edges walked the other way
+      store(col, row, ai.averageOfEdges(poly, edges, signs));
+    }
+  });
+}
+
+// One pixel's exact average exactly as exactAverages computes it (its four
+// edges walked in the same directions, added the same way): for a picture
+// of single pixels (a window's coarse first stage).
+inline glm::dvec4 exactPixel(const ts::AreaIntegral& ai, const View& v, int col, int row) {
+  const int y = v.h - 1 - row;
+  auto corner = [&](int i, int yy) { return v.uv(double(i), double(yy)); };
+  const ts::AreaIntegral::Edge bottom = ai.edge(corner(col, y), corner(col + 1, y)),
+                               right = ai.edge(corner(col + 1, y), corner(col + 1, y + 1)),
+                               top = ai.edge(corner(col, y + 1), corner(col + 1, y + 1)),
+                               left = ai.edge(corner(col, y), corner(col, y + 1));
+  const ts::AreaIntegral::Edge* edges[4] = {&bottom, &right, &top, &left};
+  const int signs[4] = {1, 1, -1, -1};
+  return ai.averageOfEdges(v.preimage(col, row), edges, signs);
+}
+
 // With onlyMask, the pixels outside the mask are left as background.
 inline Picture cpuPicture(int method, const Pyramids& p, const View& v, double bias, const std::vector<char>& mask,
                           ts::Rgba background = {77, 92, 115, 255}, bool onlyMask = false) {
   Picture out;
   out.image = ts::Image(v.w, v.h, background);
-  if (method == kExact)
+  if (method == kExact) {
     out.exact.assign(size_t(v.w) * size_t(v.h), glm::dvec4(background.r, background.g, background.b, 255));
-  long reads = 0, counted = 0;
-  for (int row = 0; row < v.h; ++row)
+    exactAverages(
+        p.exact, v,
+        [&](int col, int row) {
+          return v.coversPixel(col, row) && (!onlyMask || mask[size_t(row) * size_t(v.w) + size_t(col)]);
+        },
+        [&](int col, int row, const glm::dvec4& c) {
+          out.exact[size_t(row) * size_t(v.w) + size_t(col)] = c;
+          out.image.set(col, row, toRgba(c));
+        });
+    return out;  // no reads: its cost is the outline's (exactTexels counts the texels it weighs)
+  }
+  std::atomic<long> reads{0}, counted{0};  // integers: the same totals in any order
+  parallelRows(v.h, [&](int row) {
+    long rowReads = 0, rowCounted = 0;
     for (int col = 0; col < v.w; ++col) {
       const size_t k = size_t(row) * size_t(v.w) + size_t(col);
       if (!v.coversPixel(col, row) || (onlyMask && !mask[k])) continue;
-      glm::dvec4 c;
       long r = 0;
-      if (method == kExact) {
-        c = p.exact.average(v.preimage(col, row));
-        out.exact[k] = c;
-      } else {
-        c = lookup(method, p, v, col + 0.5, v.h - 1 - row + 0.5, bias, &r);
-      }
-      out.image.set(col, row, toRgba(c));
-      if (mask.empty() || mask[k]) reads += r, ++counted;
+      out.image.set(col, row, toRgba(lookup(method, p, v, col + 0.5, v.h - 1 - row + 0.5, bias, &r)));
+      if (mask.empty() || mask[k]) rowReads += r, ++rowCounted;
     }
+    reads += rowReads, counted += rowCounted;
+  });
   out.meanReads = counted ? double(reads) / double(counted) : 0;
   return out;
 }
@@ -675,7 +760,7 @@ inline ts::Image coarsePicture(int method, const Pyramids& p, const View& v, dou
       if (!v.coversPixel(x, y)) continue;
       long reads = 0;
       img.set(col, row,
-              toRgba(method == kExact ? p.exact.average(v.preimage(x, y))
+              toRgba(method == kExact ? exactPixel(p.exact, v, x, y)
                                       : lookup(method, p, v, x + 0.5, v.h - 1 - y + 0.5, bias, &reads)));
     }
   return img;
@@ -684,20 +769,53 @@ inline ts::Image coarsePicture(int method, const Pyramids& p, const View& v, dou
 // row, the texels between the ends of the preimage's strip in that row
 // (every one of them overlaps it with a positive area, but for a corner
 // exactly on a grid line).
+//
+// The strip is ts::clipToBox(preimage, u0, j, u1, j + 1) with [u0, u1] the
+// preimage's own u extent, computed here as clipToBox computes it (the same
+// Sutherland-Hodgman steps, the same arithmetic in the same order, so the
+// same vertices and the same count) without its four vectors a row: the two
+// u clips keep every vertex (none lies outside the polygon's own extent), and
+// the two v clips work in arrays on the stack.  A quadrilateral clipped twice
+// has at most 16 vertices (each step at most doubles them; convex: 6).
+struct StripPoly {
+  glm::dvec2 p[16];
+  int n = 0;
+};
+// One clipToBox step against v >= c (below = false) or v <= c (below = true).
+inline void clipStripV(const StripPoly& in, StripPoly& out, double c, bool below) {
+  out.n = 0;
+  for (int k = 0; k < in.n; ++k) {
+    const glm::dvec2& a = in.p[k];
+    const glm::dvec2& b = in.p[(k + 1) % in.n];
+    const bool ia = below ? a.y <= c : a.y >= c, ib = below ? b.y <= c : b.y >= c;
+    if (ia) out.p[out.n++] = a;
+    if (ia != ib) out.p[out.n++] = {a.x + (b.x - a.x) * (c - a.y) / (b.y - a.y), c};  // area_filter.cpp's atY
+  }
+}
 inline double exactTexels(const View& v, const std::vector<char>& mask) {
   long n = 0, px = 0;
   for (int row = 0; row < v.h; ++row)
     for (int col = 0; col < v.w; ++col) {
       if (!mask[size_t(row) * size_t(v.w) + size_t(col)]) continue;
       const ts::Polygon2 poly = v.preimage(col, row);
-      double u0 = poly[0].x, u1 = u0, v0 = poly[0].y, v1 = v0;
-      for (const glm::dvec2& q : poly)
-        u0 = std::min(u0, q.x), u1 = std::max(u1, q.x), v0 = std::min(v0, q.y), v1 = std::max(v1, q.y);
+      double v0 = poly[0].y, v1 = v0;
+      for (const glm::dvec2& q : poly) v0 = std::min(v0, q.y), v1 = std::max(v1, q.y);
+      StripPoly quad, half, strip;
+      quad.n = int(poly.size());
+      for (int k = 0; k < quad.n; ++k) quad.p[k] = poly[size_t(k)];
       for (long j = long(std::floor(v0)); j < long(std::ceil(v1)); ++j) {
-        const ts::Polygon2 strip = ts::clipToBox(poly, u0, double(j), u1, double(j + 1));
-        if (strip.size() < 3 || std::fabs(ts::signedArea(strip)) <= 0) continue;
-        double a = strip[0].x, b = a;
-        for (const glm::dvec2& q : strip) a = std::min(a, q.x), b = std::max(b, q.x);
+        clipStripV(quad, half, double(j), false);
+        clipStripV(half, strip, double(j + 1), true);
+        if (strip.n < 3) continue;
+        double twice = 0;  // ts::signedArea, term by term
+        for (int k = 0; k < strip.n; ++k) {
+          const glm::dvec2& a = strip.p[k];
+          const glm::dvec2& b = strip.p[(k + 1) % strip.n];
+          twice += a.x * b.y - b.x * a.y;
+        }
+        if (std::fabs(0.5 * twice) <= 0) continue;
+        double a = strip.p[0].x, b = a;
+        for (int k = 0; k < strip.n; ++k) a = std::min(a, strip.p[k].x), b = std::max(b, strip.p[k].x);
         n += long(std::ceil(b)) - long(std::floor(a));
       }
       ++px;
@@ -811,10 +929,14 @@ inline std::vector<double> kernelTaps(int k) {
 inline ts::Image decimate(const ts::Image& src, int kernel, bool linearLight) {
   const std::vector<double> taps = kernelTaps(kernel);
   const int w = std::max(1, src.width / 2), h = std::max(1, src.height / 2);
+  // srgbToLinear of each of the 256 byte values, once: the taps read every
+  // texel several times, and pow was most of a linear-light chain's time.
+  std::array<double, 256> toLinear{};
+  for (int b = 0; b < 256; ++b) toLinear[size_t(b)] = srgbToLinear(double(b));
   auto val = [&](int i, int j, int c) {
     const ts::Rgba p = src.at(((i % src.width) + src.width) % src.width, ((j % src.height) + src.height) % src.height);
-    const double v = c == 0 ? p.r : c == 1 ? p.g : c == 2 ? p.b : p.a;
-    return linearLight && c < 3 ? srgbToLinear(v) : v;
+    const uint8_t v = c == 0 ? p.r : c == 1 ? p.g : c == 2 ? p.b : p.a;
+    return linearLight && c < 3 ? toLinear[v] : double(v);
   };
   // Along u first (src.height rows of w), then v.
   std::vector<double> mid(size_t(w) * size_t(src.height) * 4);

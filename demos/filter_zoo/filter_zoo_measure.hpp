@@ -80,10 +80,32 @@ inline ts::Image glPicture(ts::Renderer& r, const View& v, ts::TextureDesc tex, 
   glFilter(tex, method, float(bias));
   return r.renderOffscreen(viewFrame(v, tex, backgroundColour()));
 }
+// A GL method's picture of a scene (its texture, the measured 384 x 192
+// view), made once per process: every figure but the kernels' measures the
+// same three azimuths, and a window's first stage draws what its full
+// measurement draws again.  The picture is a function of these inputs (the
+// same frame to the same rasterizer), so a kept one is the one GL would draw.
+// A window that visits many states clears the cache past 64 pictures (19 MB).
+inline ts::Image sceneGlPicture(ts::Renderer& r, int scene, int pattern, double az, int method, double bias) {
+  static std::mutex lock;
+  static std::map<std::string, ts::Image> cache;
+  const std::string key = std::string(methodKey(method)) + "/" + kSceneKeys[scene] + "/" + std::to_string(pattern) +
+                          "/" + ts::layout::fmt("%.17g", az) + "/" + ts::layout::fmt("%.17g", bias);
+  {
+    std::lock_guard<std::mutex> g(lock);
+    auto it = cache.find(key);
+    if (it != cache.end()) return it->second;
+  }
+  ts::Image img = glPicture(r, sceneView(scene, az), sceneTexture(scene, pattern), method, bias);
+  std::lock_guard<std::mutex> g(lock);
+  if (cache.size() >= 64) cache.clear();
+  cache.emplace(key, img);
+  return img;
+}
 
 // The exact reference of (scene, pattern, azimuth), made once per process.
-// Two threads share the rows (the horizon's footprints are thousands of
-// texels long: their outlines are what cost).  `linearLight`: the area
+// Two threads share the rows (parallelRows: the horizon's footprints are
+// thousands of texels long, and their outlines are what cost).  `linearLight`: the area
 // average of the texels' linear-light values, encoded back to sRGB (the
 // reference for chains averaged in linear light).
 inline std::shared_ptr<const Picture> exactPicture(int scene, int pattern, double azimuthDeg, const Pyramids& p,
@@ -101,19 +123,13 @@ inline std::shared_ptr<const Picture> exactPicture(int scene, int pattern, doubl
   auto out = std::make_shared<Picture>();
   out->image = ts::Image(v.w, v.h, kBackground);
   out->exact.assign(size_t(v.w) * size_t(v.h), glm::dvec4(kBackground.r, kBackground.g, kBackground.b, 255));
-  auto rows = [&](int first) {
-    for (int row = first; row < v.h; row += 2)
-      for (int col = 0; col < v.w; ++col) {
-        if (!v.coversPixel(col, row)) continue;
-        glm::dvec4 c = (linearLight ? p.exactLinear : p.exact).average(v.preimage(col, row));
+  exactAverages(
+      linearLight ? p.exactLinear : p.exact, v, [&](int col, int row) { return v.coversPixel(col, row); },
+      [&](int col, int row, glm::dvec4 c) {
         if (linearLight) c = glm::dvec4(linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b), 255.0 * c.a);
         out->exact[size_t(row) * size_t(v.w) + size_t(col)] = c;
         out->image.set(col, row, toRgba(c));
-      }
-  };
-  std::thread other(rows, 1);
-  rows(0);
-  other.join();
+      });
   std::lock_guard<std::mutex> g(lock);
   return cache.emplace(key, out).first->second;
 }
@@ -288,13 +304,12 @@ inline Row measureRow(ts::Renderer& r, int scene, int pattern, double az, double
   const View v = sceneView(scene, az);
   const std::vector<char> mask = sceneMask(scene, v);
   const std::shared_ptr<const Picture> exact = exactPicture(scene, pattern, az, p);
-  const ts::TextureDesc tex = sceneTexture(scene, pattern);
   std::array<ts::Image, kMethodCount> imgs;
   for (int m = 0; m < kMethodCount; ++m) {
     ts::Image& img = imgs[size_t(m)];
     std::shared_ptr<const CpuResult> cpu;
     if (!byGL(m) || counts) cpu = cpuResult(m, scene, pattern, az, bias);
-    if (byGL(m)) img = glPicture(r, v, tex, m, bias);
+    if (byGL(m)) img = sceneGlPicture(r, scene, pattern, az, m, bias);
     else img = cpu->image;
     row.rms[size_t(m)] = m == kExact ? 0.0 : rmsAgainst(img, exact->exact, mask);
     row.reads[size_t(m)] = counts ? cpu->reads : 0;
@@ -319,11 +334,10 @@ inline Row coarseRow(ts::Renderer& r, int scene, int pattern, double az, double 
   Row row;
   row.azimuth = az;
   const View v = sceneView(scene, az);
-  const ts::TextureDesc tex = sceneTexture(scene, pattern);
   for (int m = 0; m < kMethodCount; ++m) {
     row.rms[size_t(m)] = row.reads[size_t(m)] = std::nan("");
     if (byGL(m)) {
-      row.pictures[size_t(m)] = pictureTexture(glPicture(r, v, tex, m, bias), methodKey(m), scene, az);
+      row.pictures[size_t(m)] = pictureTexture(sceneGlPicture(r, scene, pattern, az, m, bias), methodKey(m), scene, az);
       continue;
     }
     ts::measureProgress(0.02 + 0.08 * m / kMethodCount);

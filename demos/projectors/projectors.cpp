@@ -40,6 +40,7 @@
 
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <tuple>
 
 #include "common/core/layout.hpp"
@@ -334,7 +335,13 @@ ts::Measurements Projectors::measure(ts::Renderer& r) {
     first.detail = detail_;
     ts::measureStage(std::move(first));
   }
-  if (fixed_.empty()) fixed_ = measureAll(r);  // state-independent: once
+  if (fixed_.empty()) {  // state-independent: once per process (make_figures' figures each have a scene)
+    static std::mutex lock;
+    static ts::Measurements kept;
+    std::lock_guard<std::mutex> g(lock);
+    if (kept.empty()) kept = measureAll(r);
+    fixed_ = kept;
+  }
   ts::Measurements out = fixed_;
   stateUsage();
   const Usage& u = detail_.usage[key()];
