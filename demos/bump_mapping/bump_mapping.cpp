@@ -121,16 +121,22 @@ class BumpMapping final : public ts::Scene {
   // tilt and the orbit, not on the method or the view shown: three of the
   // five figures (bricks, the default lights) measure the same state, some 40
   // renders each.  The last few states' results are kept and reused: the
-  // same numbers and pictures, only the pictures' GL calls recorded again
-  // (a recording holds the viewport of the figure it was made for).
+  // same numbers and pictures.  The pictures' GL calls (the listings) are
+  // kept for the newest two states and fitted to the viewport that is current
+  // now (retargetViewport: the one call that depends on it); older states
+  // record them again.
   ts::Measurements measure(ts::Renderer& r) override {
     const std::string key = measuredState();
     const bump::RenderFn draw = [&](const bump::RenderSpec& s) { return render(r, s); };
-    for (const auto& [k, m] : measuredCache_)
-      if (k == key) {
-        ts::Measurements again = m;
-        bump::Found found = *m.detailAs<bump::Found>();
-        bump::recordPicturesAgain(draw, found);
+    glm::ivec4 viewport(0);
+    glGetIntegerv(GL_VIEWPORT, &viewport.x);
+    const glm::ivec4 own(0, 0, kMeasureSize, kMeasureSize);
+    for (const Kept& k : measuredCache_)
+      if (k.key == key) {
+        ts::Measurements again = k.m;
+        bump::Found found = *k.m.detailAs<bump::Found>();
+        if (!k.withGL || !bump::retargetViewports(found, k.viewport, viewport, own))
+          bump::recordPicturesAgain(draw, found);
         again.detail = found;
         return again;
       }
@@ -138,13 +144,15 @@ class BumpMapping final : public ts::Scene {
     const bump::Heights& H = heights();
     ts::Measurements m = bump::measureAll(draw, toLight(0), bump::normalMap(H, 1.0, 0.4, heightScale_, true),
                                           bump::normalMap(H, 1.0, 0.4, heightScale_, false));
-    // Kept without its GL calls (a hit records them again): they hold copies of every texture uploaded.
-    ts::Measurements kept = m;
-    bump::Found bare = *m.detailAs<bump::Found>();
-    bare.picturesGL.clear(), bare.refNormalsGL = nullptr, bare.embossTermGL = nullptr;
-    kept.detail = bare;
+    // The GL calls hold copies of every texture uploaded: older states keep their results without them.
+    for (size_t k = 0; k + 1 < measuredCache_.size(); ++k)
+      if (measuredCache_[k].withGL) {
+        bump::Found bare = *measuredCache_[k].m.detailAs<bump::Found>();
+        bare.picturesGL.clear(), bare.refNormalsGL = nullptr, bare.embossTermGL = nullptr;
+        measuredCache_[k].m.detail = bare, measuredCache_[k].withGL = false;
+      }
     if (measuredCache_.size() >= 4) measuredCache_.erase(measuredCache_.begin());
-    measuredCache_.push_back({key, std::move(kept)});
+    measuredCache_.push_back({key, m, viewport, true});
     return m;
   }
   // A window's first stage (ts::measureStage), before the 40-odd renders the
@@ -215,7 +223,13 @@ class BumpMapping final : public ts::Scene {
   ts::UserTexture file_;
   mutable std::shared_ptr<const bump::Heights> cache_;
   mutable std::string cacheKey_;
-  std::vector<std::pair<std::string, ts::Measurements>> measuredCache_;  // measuredState() -> measure(), oldest first
+  struct Kept {
+    std::string key;  // measuredState()
+    ts::Measurements m;
+    glm::ivec4 viewport;  // current when it was measured (the pictures' passes restore it)
+    bool withGL;          // m's pictures' GL calls are kept
+  };
+  std::vector<Kept> measuredCache_;  // oldest first
 };
 
 ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::RenderSpec& s) const {

@@ -95,6 +95,30 @@ inline void recordPicturesAgain(const RenderFn& render, Found& found) {
   recorded(embossTermSpec(), &found.embossTermGL);
 }
 
+// The GL calls of every picture measureAll records as they would be
+// recorded with the viewport `now` current instead of `was`: a pass
+// (RenderTarget::Bind) ends by restoring the viewport it found, the one call
+// of a recording that depends on it; every other viewport a pass sets is its
+// own, `own`.  A restore equal to `own` is left out as a no-op, so a
+// recording made or wanted there cannot be fitted: false, nothing changed.
+inline bool retargetViewports(Found& found, glm::ivec4 was, glm::ivec4 now, glm::ivec4 own) {
+  if (was == now) return true;
+  if (was == own || now == own) return false;
+  auto fit = [&](ts::gl::CallList& list) {
+    if (!list) return;
+    auto calls = std::make_shared<std::vector<ts::gl::Call>>(*list);
+    for (ts::gl::Call& c : *calls)
+      if (std::string(c.name) == "glViewport" && c.args.size() == 4 && c.args[0].i == was.x &&
+          c.args[1].i == was.y && c.args[2].i == was.z && c.args[3].i == was.w)
+        c.args[0].i = now.x, c.args[1].i = now.y, c.args[2].i = now.z, c.args[3].i = now.w;
+    list = std::move(calls);
+  };
+  for (auto& [m, list] : found.picturesGL) fit(list);
+  fit(found.refNormalsGL);
+  fit(found.embossTermGL);
+  return true;
+}
+
 // `seam`: the normal map baked with and without wrapping differences.
 inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye, const ts::Image& wrapped,
                                    const ts::Image& unwrapped) {
