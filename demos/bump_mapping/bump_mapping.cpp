@@ -54,6 +54,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <map>
 #include <memory>
 
 #include "bump_mapping_ff.hpp"
@@ -141,9 +142,8 @@ class BumpMapping final : public ts::Scene {
         return again;
       }
     if (ts::measureStaged()) firstStage(draw);
-    const bump::Heights& H = heights();
-    ts::Measurements m = bump::measureAll(draw, toLight(0), bump::normalMap(H, 1.0, 0.4, heightScale_, true),
-                                          bump::normalMap(H, 1.0, 0.4, heightScale_, false));
+    ts::Measurements m = bump::measureAll(draw, toLight(0), *normalTexture(heightScale_, false, true, false).image,
+                                          *normalTexture(heightScale_, false, false, false).image);
     // The GL calls hold copies of every texture uploaded: older states keep their results without them.
     for (size_t k = 0; k + 1 < measuredCache_.size(); ++k)
       if (measuredCache_[k].withGL) {
@@ -199,6 +199,29 @@ class BumpMapping final : public ts::Scene {
                   camera_.zoom);
     return b + std::string(file_.active() ? file_.path() : heights_ ? "bricks" : "procedural");
   }
+  // The textures the renders bind, each baked on the CPU once per source and
+  // parameters (the heights as grey, the normal map, its DXT1 round trip) and
+  // shared by every render of a measurement and every copy of the scene.
+  ts::TextureDesc heightTexture(bool inverted, bool mip) const {
+    const bump::Heights& H = heights();
+    return memo('h' + std::to_string(inverted) + std::to_string(mip),
+                [&] { return bump::heightTexture(H, cacheKey_, inverted, mip); });
+  }
+  ts::TextureDesc normalTexture(float scale, bool mip, bool wrap, bool dxt1) const {
+    const bump::Heights& H = heights();
+    char k[64];
+    std::snprintf(k, sizeof k, "n%a %d%d%d", double(scale), mip, wrap, dxt1);
+    return memo(k, [&] { return bump::normalTexture(H, cacheKey_, scale, mip, wrap, dxt1); });
+  }
+  template <class Make>
+  ts::TextureDesc memo(const std::string& what, Make make) const {
+    auto& m = *textures_;
+    const std::string key = cacheKey_ + '|' + what;
+    auto it = m.find(key);
+    if (it != m.end()) return it->second;
+    if (m.size() >= 32) m.clear();  // a window's many height scales: the cache stays small
+    return m.emplace(key, make()).first->second;
+  }
   glm::vec3 toLight(int k) const {
     float az = glm::radians(light_[k].x), el = glm::radians(light_[k].y);
     return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
@@ -223,6 +246,8 @@ class BumpMapping final : public ts::Scene {
   ts::UserTexture file_;
   mutable std::shared_ptr<const bump::Heights> cache_;
   mutable std::string cacheKey_;
+  std::shared_ptr<std::map<std::string, ts::TextureDesc>> textures_ =
+      std::make_shared<std::map<std::string, ts::TextureDesc>>();  // heightTexture, normalTexture: cacheKey_|what
   struct Kept {
     std::string key;  // measuredState()
     ts::Measurements m;
@@ -244,9 +269,8 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
   p.modelview = glm::rotate(p.modelview, glm::radians(tilt_), glm::vec3(1, 0, 0));
   camera_.apply(p);
   const bump::Heights& H = heights();
-  ts::TextureDesc tex = s.method == bump::kNormalMap
-                            ? bump::normalTexture(H, cacheKey_, heightScale_, s.mipmaps, wrapSlopes_, s.dxt1)
-                            : bump::heightTexture(H, cacheKey_, false, s.mipmaps);
+  ts::TextureDesc tex = s.method == bump::kNormalMap ? normalTexture(heightScale_, s.mipmaps, wrapSlopes_, s.dxt1)
+                                                     : heightTexture(false, s.mipmaps);
   // The mesh's (s, t) become glTexCoord4f(s, t, 0, 1) in Renderer::draw: the shader's gl_MultiTexCoord0.
   ts::Batch b = ts::meshBatch(ts::torusMesh(tp), f.addTexture(tex));
   b.role = "torus";
@@ -284,9 +308,9 @@ ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const 
                        glm::vec2(float(H.w), float(H.h)),
                        {v.toLight(0), v.toLight(1)},
                        {kIntensity[0], kIntensity[1]},
-                       bump::heightTexture(H, v.cacheKey_),
-                       bump::heightTexture(H, v.cacheKey_, true),
-                       bump::normalTexture(H, v.cacheKey_, v.heightScale_, false, wrapSlopes_),
+                       v.heightTexture(false, false),
+                       v.heightTexture(true, false),
+                       v.normalTexture(v.heightScale_, false, wrapSlopes_, false),
                        s.embossTermOnly};
   return bump::renderFixedFunction(r, f, s.method, in);
 }

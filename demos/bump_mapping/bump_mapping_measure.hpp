@@ -122,8 +122,8 @@ inline bool retargetViewports(Found& found, glm::ivec4 was, glm::ivec4 now, glm:
     if (!list) return;
     auto calls = std::make_shared<std::vector<ts::gl::Call>>(*list);
     for (ts::gl::Call& c : *calls)
-      if (std::string(c.name) == "glViewport" && c.args.size() == 4 && c.args[0].i == was.x &&
-          c.args[1].i == was.y && c.args[2].i == was.z && c.args[3].i == was.w)
+      if (std::string(c.name) == "glViewport" && c.args.size() == 4 && c.args[0].i == was.x && c.args[1].i == was.y &&
+          c.args[2].i == was.z && c.args[3].i == was.w)
         c.args[0].i = now.x, c.args[1].i = now.y, c.args[2].i = now.z, c.args[3].i = now.w;
     list = std::move(calls);
   };
