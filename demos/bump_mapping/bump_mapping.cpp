@@ -122,37 +122,36 @@ class BumpMapping final : public ts::Scene {
   // tilt and the orbit, not on the method or the view shown: three of the
   // five figures (bricks, the default lights) measure the same state, some 40
   // renders each.  The last few states' results are kept and reused: the
-  // same numbers and pictures.  The pictures' GL calls (the listings) are
-  // kept for the newest two states and fitted to the viewport that is current
-  // now (retargetViewport: the one call that depends on it); older states
-  // record them again.
+  // same numbers and pictures.  Their GL calls (the listings) hold the
+  // viewport current when they were recorded (a pass restores it): R's, two
+  // renders of the displaced grid, are kept and fitted to the viewport of now
+  // (retargetViewports); the fixed-function pictures' (a quarter of a million
+  // immediate-mode calls) are recorded again, a few cheap renders.
   ts::Measurements measure(ts::Renderer& r) override {
     const std::string key = measuredState();
     const bump::RenderFn draw = [&](const bump::RenderSpec& s) { return render(r, s); };
     glm::ivec4 viewport(0);
     glGetIntegerv(GL_VIEWPORT, &viewport.x);
-    const glm::ivec4 own(0, 0, kMeasureSize, kMeasureSize);
     for (const Kept& k : measuredCache_)
       if (k.key == key) {
         ts::Measurements again = k.m;
         bump::Found found = *k.m.detailAs<bump::Found>();
-        if (!k.withGL || !bump::retargetViewports(found, k.viewport, viewport, own))
-          bump::recordPicturesAgain(draw, found);
+        const bool fitted = bump::retargetViewports(found, k.viewport, viewport, {0, 0, kMeasureSize, kMeasureSize});
+        bump::recordPicturesAgain(draw, found, !fitted);
         again.detail = found;
         return again;
       }
     if (ts::measureStaged()) firstStage(draw);
     ts::Measurements m = bump::measureAll(draw, toLight(0), *normalTexture(heightScale_, false, true, false).image,
                                           *normalTexture(heightScale_, false, false, false).image);
-    // The GL calls hold copies of every texture uploaded: older states keep their results without them.
-    for (size_t k = 0; k + 1 < measuredCache_.size(); ++k)
-      if (measuredCache_[k].withGL) {
-        bump::Found bare = *measuredCache_[k].m.detailAs<bump::Found>();
-        bare.picturesGL.clear(), bare.refNormalsGL = nullptr, bare.embossTermGL = nullptr;
-        measuredCache_[k].m.detail = bare, measuredCache_[k].withGL = false;
-      }
+    ts::Measurements kept = m;
+    bump::Found bare = *m.detailAs<bump::Found>();
+    for (int k = 0; k < bump::kMethodCount; ++k)
+      if (kMethods[k].fixedFunction) bare.picturesGL.erase(k);
+    bare.embossTermGL = nullptr;
+    kept.detail = bare;
     if (measuredCache_.size() >= 4) measuredCache_.erase(measuredCache_.begin());
-    measuredCache_.push_back({key, m, viewport, true});
+    measuredCache_.push_back({key, std::move(kept), viewport});
     return m;
   }
   // A window's first stage (ts::measureStage), before the 40-odd renders the
@@ -252,7 +251,6 @@ class BumpMapping final : public ts::Scene {
     std::string key;  // measuredState()
     ts::Measurements m;
     glm::ivec4 viewport;  // current when it was measured (the pictures' passes restore it)
-    bool withGL;          // m's pictures' GL calls are kept
   };
   std::vector<Kept> measuredCache_;  // oldest first
 };

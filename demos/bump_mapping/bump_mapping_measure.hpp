@@ -93,33 +93,36 @@ inline RenderSpec embossTermSpec() {
   return s;
 }
 
-// The GL calls of every picture measureAll records, recorded again (the
-// pictures themselves are the same): a measurement reused for another
-// figure of the same state takes them anew, since a recording holds the
-// viewport it found (that figure's size).
-inline void recordPicturesAgain(const RenderFn& render, Found& found) {
+// The GL calls of the pictures measureAll records, recorded again (the
+// pictures themselves are the same): a measurement reused for another figure
+// of the same state takes them anew, since a recording holds the viewport it
+// found (that figure's size).  `reference`: R's two pictures too, else only
+// the fixed-function ones (R's fitted by retargetViewports).
+inline void recordPicturesAgain(const RenderFn& render, Found& found, bool reference = true) {
   auto recorded = [&](RenderSpec s, ts::gl::CallList* calls) {
     s.recordTo = calls;
     render(s);
   };
-  recorded({kReference}, &found.picturesGL[kReference]);
-  recorded(shownNormalsSpec(), &found.refNormalsGL);
+  if (reference) {
+    recorded({kReference}, &found.picturesGL[kReference]);
+    recorded(shownNormalsSpec(), &found.refNormalsGL);
+  }
   for (int m = 0; m < kMethodCount; ++m)
     if (kMethods[m].fixedFunction) recorded({m}, &found.picturesGL[m]);
   recorded(embossTermSpec(), &found.embossTermGL);
 }
 
-// The GL calls of every picture measureAll records as they would be
+// R's GL calls (its shaded picture and its normals) as they would be
 // recorded with the viewport `now` current instead of `was`: a pass
 // (RenderTarget::Bind) ends by restoring the viewport it found, the one call
 // of a recording that depends on it; every other viewport a pass sets is its
 // own, `own`.  A restore equal to `own` is left out as a no-op, so a
 // recording made or wanted there cannot be fitted: false, nothing changed.
 inline bool retargetViewports(Found& found, glm::ivec4 was, glm::ivec4 now, glm::ivec4 own) {
+  if (!found.picturesGL.count(kReference) || !found.refNormalsGL) return false;
   if (was == now) return true;
   if (was == own || now == own) return false;
   auto fit = [&](ts::gl::CallList& list) {
-    if (!list) return;
     auto calls = std::make_shared<std::vector<ts::gl::Call>>(*list);
     for (ts::gl::Call& c : *calls)
       if (std::string(c.name) == "glViewport" && c.args.size() == 4 && c.args[0].i == was.x && c.args[1].i == was.y &&
@@ -127,9 +130,8 @@ inline bool retargetViewports(Found& found, glm::ivec4 was, glm::ivec4 now, glm:
         c.args[0].i = now.x, c.args[1].i = now.y, c.args[2].i = now.z, c.args[3].i = now.w;
     list = std::move(calls);
   };
-  for (auto& [m, list] : found.picturesGL) fit(list);
+  fit(found.picturesGL[kReference]);
   fit(found.refNormalsGL);
-  fit(found.embossTermGL);
   return true;
 }
 
