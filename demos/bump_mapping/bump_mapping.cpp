@@ -53,6 +53,7 @@
 // bump_emboss_overhead.gl.txt.
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -192,10 +193,15 @@ class BumpMapping final : public ts::Scene {
   }
   // Every option measure() reads (all but --method and --view), floats in hex: exact.
   std::string measuredState() const {
+    char b[128];
+    std::snprintf(b, sizeof b, "%a %a %a %a|", light_[0].x, light_[0].y, light_[1].x, light_[1].y);
+    return b + shapeState();
+  }
+  // The same but the lights: all a normal render (colour 0.5 + 0.5 n) depends on.
+  std::string shapeState() const {
     char b[512];
-    std::snprintf(b, sizeof b, "%a %a %a %a %a %a %a %a %d %a %a %a|", heightScale_, objectScale_, tilt_, light_[0].x,
-                  light_[0].y, light_[1].x, light_[1].y, distance_, wrapSlopes_ ? 1 : 0, camera_.yaw, camera_.pitch,
-                  camera_.zoom);
+    std::snprintf(b, sizeof b, "%a %a %a %a %d %a %a %a|", heightScale_, objectScale_, tilt_, distance_,
+                  wrapSlopes_ ? 1 : 0, camera_.yaw, camera_.pitch, camera_.zoom);
     return b + std::string(file_.active() ? file_.path() : heights_ ? "bricks" : "procedural");
   }
   // The textures the renders bind, each baked on the CPU once per source and
@@ -233,8 +239,10 @@ class BumpMapping final : public ts::Scene {
   // The torus panel of a GLSL method at `vp` (its matrices serve every
   // method); the demo's own torus (R = 1, r = 0.4) times the object scale.
   ts::Panel torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::RenderSpec& s) const;
-  // One method's picture alone at the measurement size (no labels).
+  // One method's picture alone at the measurement size (no labels): from
+  // the normal renders kept (normalRenders_) or renderNow.
   ts::Image render(ts::Renderer& r, const bump::RenderSpec& s) const;
+  ts::Image renderNow(ts::Renderer& r, const bump::RenderSpec& s) const;
 
   int method_ = 1, view_ = 1, heights_ = 0;
   bool wrapSlopes_ = true;
@@ -252,7 +260,12 @@ class BumpMapping final : public ts::Scene {
     ts::Measurements m;
     glm::ivec4 viewport;  // current when it was measured (the pictures' passes restore it)
   };
-  std::vector<Kept> measuredCache_;  // oldest first
+  std::vector<Kept> measuredCache_;
+  // render()'s normal renders: "spec|shapeState()" -> picture, for the shapes listed (newest last).
+  std::shared_ptr<std::map<std::string, std::shared_ptr<const ts::Image>>> normalRenders_ =
+      std::make_shared<std::map<std::string, std::shared_ptr<const ts::Image>>>();
+  std::shared_ptr<std::vector<std::string>> normalRenderShapes_ =
+      std::make_shared<std::vector<std::string>>();  // oldest first
 };
 
 ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::RenderSpec& s) const {
@@ -288,9 +301,41 @@ ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const 
     bump::RenderSpec plain = s;
     plain.recordTo = nullptr;
     ts::Image img;
-    *s.recordTo = ts::recordRender(r, [&] { img = render(r, plain); });
+    *s.recordTo = ts::recordRender(r, [&] { img = renderNow(r, plain); });  // its calls: never from a kept render
     return img;
   }
+  // A GLSL normal render on black does not depend on the lights: one made for
+  // another state of the same shape (emboss's figure: light 1 moved) serves.
+  std::string normalsKey;
+  if (s.normals && !s.onBackdrop && !kMethods[s.method].fixedFunction) {
+    char b[256];
+    std::snprintf(b, sizeof b, "%d %d %d %d %a %a %a %d %d|", s.method, s.smoothGeometry, s.noSpecular, s.coarseGrid,
+                  s.heightFactor, s.objectFactor, s.distanceFactor, s.mipmaps, s.dxt1);
+    normalsKey = b + shapeState();
+    const auto it = normalRenders_->find(normalsKey);
+    if (it != normalRenders_->end()) return *it->second;
+  }
+  ts::Image img = renderNow(r, s);
+  if (!normalsKey.empty()) {
+    // Two shapes' worth (some 30 renders each), the oldest shape dropped first.
+    auto& order = normalRenderShapes_;
+    if (std::find(order->begin(), order->end(), shapeState()) == order->end()) {
+      order->push_back(shapeState());
+      if (order->size() > 2) {
+        const std::string old = order->front();
+        order->erase(order->begin());
+        for (auto it = normalRenders_->begin(); it != normalRenders_->end();)
+          it = it->first.size() >= old.size() && it->first.compare(it->first.size() - old.size(), old.size(), old) == 0
+                   ? normalRenders_->erase(it)
+                   : std::next(it);
+      }
+    }
+    normalRenders_->emplace(normalsKey, std::make_shared<const ts::Image>(img));
+  }
+  return img;
+}
+
+ts::Image BumpMapping::renderNow(ts::Renderer& r, const bump::RenderSpec& s) const {
   BumpMapping v = *this;
   v.heightScale_ *= s.heightFactor, v.objectScale_ *= s.objectFactor, v.distance_ = s.distanceFactor;
   ts::Frame f = ts::layout::blankFrame(kMeasureSize, kMeasureSize);
