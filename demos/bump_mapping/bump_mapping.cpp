@@ -126,11 +126,16 @@ class BumpMapping final : public ts::Scene {
   // same numbers and pictures.  Their GL calls (the listings) hold the
   // viewport current when they were recorded (a pass restores it): R's, two
   // renders of the displaced grid, are kept and fitted to the viewport of now
-  // (retargetViewports); the fixed-function pictures' (a quarter of a million
-  // immediate-mode calls) are recorded again, a few cheap renders.
+  // (retargetViewports); those of the fixed-function pictures the view shows
+  // (some 100,000 immediate-mode calls each) are recorded again, cheap renders.
   ts::Measurements measure(ts::Renderer& r) override {
     const std::string key = measuredState();
     const bump::RenderFn draw = [&](const bump::RenderSpec& s) { return render(r, s); };
+    // The fixed-function pictures this view shows (build(): a cell per method of the view, the compare view's
+    // middle cell for emboss's term).
+    const bump::ShownFn shown = [&](int p) {
+      return p == bump::kEmbossTermPicture ? view_ == 1 && method_ == bump::kEmboss : view_ == 3 || method_ == p;
+    };
     glm::ivec4 viewport(0);
     glGetIntegerv(GL_VIEWPORT, &viewport.x);
     for (const Kept& k : measuredCache_)
@@ -138,13 +143,13 @@ class BumpMapping final : public ts::Scene {
         ts::Measurements again = k.m;
         bump::Found found = *k.m.detailAs<bump::Found>();
         const bool fitted = bump::retargetViewports(found, k.viewport, viewport, {0, 0, kMeasureSize, kMeasureSize});
-        bump::recordPicturesAgain(draw, found, !fitted);
+        bump::recordPicturesAgain(draw, found, !fitted, shown);
         again.detail = found;
         return again;
       }
     if (ts::measureStaged()) firstStage(draw);
     ts::Measurements m = bump::measureAll(draw, toLight(0), *normalTexture(heightScale_, false, true, false).image,
-                                          *normalTexture(heightScale_, false, false, false).image);
+                                          *normalTexture(heightScale_, false, false, false).image, shown);
     ts::Measurements kept = m;
     bump::Found bare = *m.detailAs<bump::Found>();
     for (int k = 0; k < bump::kMethodCount; ++k)

@@ -33,6 +33,12 @@ struct RenderSpec {
   bool coarseGrid = false;  // R from CoarseReferencePass (a window's first stage)
 };
 using RenderFn = std::function<ts::Image(const RenderSpec&)>;
+// Which fixed-function pictures the view shows (a method of kMethods, or
+// kEmbossTermPicture): only theirs have their GL calls recorded for the
+// listing (a quarter of a million immediate-mode calls each); the others are
+// rendered for the numbers only.  R's two pictures are always recorded.
+constexpr int kEmbossTermPicture = -1;
+using ShownFn = std::function<bool(int picture)>;
 
 // Emboss's contrast per band of the angle between the smooth normal and light 1.
 inline const double kEmbossBands[] = {0, 10, 30, 60, 90};
@@ -97,8 +103,8 @@ inline RenderSpec embossTermSpec() {
 // pictures themselves are the same): a measurement reused for another figure
 // of the same state takes them anew, since a recording holds the viewport it
 // found (that figure's size).  `reference`: R's two pictures too, else only
-// the fixed-function ones (R's fitted by retargetViewports).
-inline void recordPicturesAgain(const RenderFn& render, Found& found, bool reference = true) {
+// the fixed-function ones the view shows (R's fitted by retargetViewports).
+inline void recordPicturesAgain(const RenderFn& render, Found& found, bool reference, const ShownFn& shown) {
   auto recorded = [&](RenderSpec s, ts::gl::CallList* calls) {
     s.recordTo = calls;
     render(s);
@@ -108,8 +114,8 @@ inline void recordPicturesAgain(const RenderFn& render, Found& found, bool refer
     recorded(shownNormalsSpec(), &found.refNormalsGL);
   }
   for (int m = 0; m < kMethodCount; ++m)
-    if (kMethods[m].fixedFunction) recorded({m}, &found.picturesGL[m]);
-  recorded(embossTermSpec(), &found.embossTermGL);
+    if (kMethods[m].fixedFunction && shown(m)) recorded({m}, &found.picturesGL[m]);
+  if (shown(kEmbossTermPicture)) recorded(embossTermSpec(), &found.embossTermGL);
 }
 
 // R's GL calls (its shaded picture and its normals) as they would be
@@ -137,7 +143,7 @@ inline bool retargetViewports(Found& found, glm::ivec4 was, glm::ivec4 now, glm:
 
 // `seam`: the normal map baked with and without wrapping differences.
 inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye, const ts::Image& wrapped,
-                                   const ts::Image& unwrapped) {
+                                   const ts::Image& unwrapped, const ShownFn& shown) {
   ts::Measurements out;
   Found found;
   // The pictures shown (R, its normals, B4, B5) are rendered with their GL
@@ -158,7 +164,7 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   std::map<int, ts::Image> normals;
   for (int m = 0; m < kMethodCount; ++m) {
     const bool ideal = m == kReference, fixed = kMethods[m].fixedFunction;
-    ts::Image shaded = fixed ? recorded({m}, &found.picturesGL[m]) : render({m, false, ideal});
+    ts::Image shaded = fixed && shown(m) ? recorded({m}, &found.picturesGL[m]) : render({m, false, ideal});
     normals[m] = m == kFlat ? smooth : ideal ? exact : fixed ? smooth : render({m, true});
     Compare c = compare(shaded, normals[m], *refShaded, *refNormals);
     const std::string k = std::string("[") + (ideal ? "ideal" : kMethods[m].key) + "]";
@@ -242,7 +248,8 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   // per band of the angle between the smooth normal and light 1.  The shift
   // is the light's part along the surface: 0 with the light along the normal.
   {
-    const ts::Image term = recorded(embossTermSpec(), &found.embossTermGL);
+    const ts::Image term = shown(kEmbossTermPicture) ? recorded(embossTermSpec(), &found.embossTermGL)
+                                                     : render(embossTermSpec());
     double sum[4] = {0, 0, 0, 0}, cnt[4] = {0, 0, 0, 0};
     const glm::dvec3 L = glm::normalize(light1Eye);
     found.embossBand.assign(size_t(term.width) * size_t(term.height), -1);
