@@ -147,9 +147,28 @@ class BumpMapping final : public ts::Scene {
         again.detail = found;
         return again;
       }
-    if (ts::measureStaged()) firstStage(draw);
-    ts::Measurements m = bump::measureAll(draw, toLight(0), *normalTexture(heightScale_, false, true, false).image,
-                                          *normalTexture(heightScale_, false, false, false).image, shown);
+    const ts::Image &wrapped = *normalTexture(heightScale_, false, true, false).image,
+                    &unwrapped = *normalTexture(heightScale_, false, false, false).image;
+    struct StageRenders {  // a staged measurement's renders, kept for its end only
+      const BumpMapping& scene;
+      explicit StageRenders(const BumpMapping& s) : scene(s) {
+        if (ts::measureStaged()) scene.stageRenders_ = std::make_shared<StageMap>();
+      }
+      ~StageRenders() { scene.stageRenders_ = nullptr; }
+    } stageRenders(*this);
+    if (ts::measureStaged()) {
+      firstStage(draw);
+      // The second stage: the view's own numbers and R's pictures, complete,
+      // when its cells need nothing but the methods' comparison with R (not
+      // seed 002's tilt cell, not the fixed-function methods' extra notes, not
+      // the view of all).  Its renders serve the whole measurement after it.
+      const bool plain = view_ != 3 && !kMethods[method_].fixedFunction && !(view_ == 1 && method_ == bump::kSeed002);
+      if (plain) {
+        const std::vector<int> only = {method_, bump::kReference};
+        ts::measureStage(bump::measureAll(draw, toLight(0), wrapped, unwrapped, shown, &only));
+      }
+    }
+    ts::Measurements m = bump::measureAll(draw, toLight(0), wrapped, unwrapped, shown);
     ts::Measurements kept = m;
     bump::Found bare = *m.detailAs<bump::Found>();
     for (int k = 0; k < bump::kMethodCount; ++k)
@@ -180,6 +199,7 @@ class BumpMapping final : public ts::Scene {
         first.pictures[m] = std::make_shared<const ts::Image>(draw({m}));
       first.cmp[m] = bump::Compare{};
     }
+    first.coarseReference = true;
     ts::Measurements stage;
     stage.detail = first;
     ts::measureStage(std::move(stage));
@@ -266,6 +286,8 @@ class BumpMapping final : public ts::Scene {
     glm::ivec4 viewport;  // current when it was measured (the pictures' passes restore it)
   };
   std::vector<Kept> measuredCache_;
+  using StageMap = std::map<std::string, std::pair<ts::Image, ts::gl::CallList>>;
+  mutable std::shared_ptr<StageMap> stageRenders_;  // render(): set during a window's staged measure() only
   // render()'s normal renders: "spec|shapeState()" -> picture, for the shapes listed (newest last).
   std::shared_ptr<std::map<std::string, std::shared_ptr<const ts::Image>>> normalRenders_ =
       std::make_shared<std::map<std::string, std::shared_ptr<const ts::Image>>>();
@@ -302,6 +324,26 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
 }
 
 ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const {
+  if (stageRenders_) {  // a window's staged measurement: each render once for all its stages
+    char b[256];
+    std::snprintf(b, sizeof b, "%d %d %d %d %d %a %a %a %d %d %d %d %d", s.method, s.normals, s.smoothGeometry,
+                  s.embossTermOnly, s.noSpecular, s.heightFactor, s.objectFactor, s.distanceFactor, s.mipmaps, s.dxt1,
+                  s.onBackdrop, s.coarseGrid, s.recordTo != nullptr);
+    auto keep = std::move(stageRenders_);  // the render itself goes on below
+    const auto it = keep->find(b);
+    ts::Image img;
+    ts::gl::CallList gl;
+    if (it != keep->end()) {
+      img = it->second.first, gl = it->second.second;
+    } else {
+      img = render(r, s);
+      if (s.recordTo) gl = *s.recordTo;
+      keep->emplace(b, std::make_pair(img, gl));
+    }
+    if (s.recordTo) *s.recordTo = gl;
+    stageRenders_ = std::move(keep);
+    return img;
+  }
   if (s.recordTo) {  // a picture shown: the same render, its calls kept for the listing
     bump::RenderSpec plain = s;
     plain.recordTo = nullptr;
@@ -467,7 +509,8 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
               n                               ? found->refNormalsGL
               : gl != found->picturesGL.end() ? gl->second
                                               : nullptr);
-      if (m == bump::kReference && measured.refining) L::refiningTag(f, c.picture);  // the coarse grid (firstStage)
+      if (m == bump::kReference && found->coarseReference)
+        L::refiningTag(f, c.picture);  // the coarse grid (firstStage)
     } else {
       L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
     }

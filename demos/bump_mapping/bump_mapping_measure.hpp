@@ -4,6 +4,7 @@
 // object's size, emboss's contrast against the light's angle to the
 // normal, and DOT3 against the shader doing the same diffuse sum.
 #pragma once
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <memory>
@@ -68,7 +69,8 @@ inline ts::Image onBlack(const ts::Image& normals, ts::Rgba background) {
 
 // What measure() found, for the pictures.
 struct Found {
-  std::map<int, Compare> cmp;  // method -> against R (normalDeg: at the same (s,t); screenNormalDeg: same pixel)
+  bool coarseReference = false;  // R drawn from the coarse grid (a window's first stage): tagged refining
+  std::map<int, Compare> cmp;    // method -> against R (normalDeg: at the same (s,t); screenNormalDeg: same pixel)
   std::map<int, std::shared_ptr<const ts::Image>> pictures;  // R and the fixed-function methods, shaded
   std::shared_ptr<const ts::Image> refNormals;               // R's normals as shown (on the figure's background)
   std::map<int, ts::gl::CallList> picturesGL;                // the calls that rendered each picture (the GL listing)
@@ -142,8 +144,12 @@ inline bool retargetViewports(Found& found, glm::ivec4 was, glm::ivec4 now, glm:
 }
 
 // `seam`: the normal map baked with and without wrapping differences.
+// `only` (may be null): just R's pictures and the comparison of these
+// methods with R (a window's view, shown first: the same numbers, the rest
+// left out).
 inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye, const ts::Image& wrapped,
-                                   const ts::Image& unwrapped, const ShownFn& shown) {
+                                   const ts::Image& unwrapped, const ShownFn& shown,
+                                   const std::vector<int>* only = nullptr) {
   ts::Measurements out;
   Found found;
   // The pictures shown (R, its normals, B4, B5) are rendered with their GL
@@ -163,6 +169,7 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   ts::measureProgress(0.15);
   std::map<int, ts::Image> normals;
   for (int m = 0; m < kMethodCount; ++m) {
+    if (only && std::find(only->begin(), only->end(), m) == only->end()) continue;
     const bool ideal = m == kReference, fixed = kMethods[m].fixedFunction;
     ts::Image shaded = fixed && shown(m) ? recorded({m}, &found.picturesGL[m]) : render({m, false, ideal});
     normals[m] = m == kFlat ? smooth : ideal ? exact : fixed ? smooth : render({m, true});
@@ -184,6 +191,10 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
     out.push_back({"mad" + k, c.mad, "mean absolute difference from R's picture, 8-bit units"});
     found.cmp[m] = c;
     ts::measureProgress(0.15 + 0.06 * m);
+  }
+  if (only) {
+    out.detail = found;
+    return out;
   }
   // Seed 001: DXT1 is "bad for normal maps".  B3 with its map compressed,
   // against the displaced surface at the same (s,t), as B3 itself above.
