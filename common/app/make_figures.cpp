@@ -548,7 +548,8 @@ int run(int argc, char** argv) {
     std::vector<std::string> flags = {"--json", json};
     flags.insert(flags.end(), e.spec.flags.begin(), e.spec.flags.end());
     e.command = ts::figureCommand(e.demo, png, e.spec.width, e.spec.height, flags);
-    e.measurements = got.measurements;
+    // The numbers only: a scene's detail (its pictures, their GL calls) is not kept past its figure.
+    e.measurements.assign(got.measurements.begin(), got.measurements.end());
     e.claim = claimLine(e.spec, *scene, got.measurements);
     ts::SidecarInfo info{e.spec.id,        e.spec.bookNumber,
                          e.spec.caption,   e.demo,

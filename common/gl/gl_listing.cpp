@@ -133,21 +133,28 @@ std::vector<gl::Call> numberObjects(const std::vector<gl::Call>& calls) {
 }
 
 namespace {
-// One entry of a listing before shortening: the call's text (may hold
-// several lines: a shader's source) and where it stands.
+// One entry of a listing before shortening: a heading, or a call whose text
+// (may hold several lines: a shader's source) is written when it is first
+// read.  A listing shows a few vertices of each glBegin: the rest of a mesh
+// drawn call by call (a million calls) is counted, never written.
 struct Entry {
-  std::string text;
-  bool changed = false;
-  bool vertex = false;              // a glVertex*: ends one vertex's group of calls
-  bool picked = false;              // sets the picked pixel's texture state
-  bool begin = false, end = false;  // glBegin, glEnd
-  // A call whose text is made when first asked for (formatted()): most of a
-  // long mesh's vertices fold into "... N more vertices" and are never shown.
-  const gl::Call* call = nullptr;
-  const std::string& formatted() {
-    if (call) text = gl::formatCall(*call), call = nullptr;
-    return text;
+  Entry() = default;
+  explicit Entry(std::string heading) : text_(std::move(heading)), formatted_(true) {}
+  Entry(const gl::Call* call, std::shared_ptr<const gl::Call> numbered) : call_(call), numbered_(std::move(numbered)) {}
+  const std::string& text() const {
+    if (!formatted_) text_ = gl::formatCall(*call_), formatted_ = true;
+    return text_;
   }
+  bool is(const char* name) const { return call_ && std::strcmp(call_->name, name) == 0; }
+  bool changed = false;
+  bool vertex = false;  // a glVertex*: ends one vertex's group of calls
+  bool picked = false;  // sets the picked pixel's texture state
+
+ private:
+  const gl::Call* call_ = nullptr;            // in its section's CallList (alive while the listing is made)
+  std::shared_ptr<const gl::Call> numbered_;  // or its copy with object names numbered (call_ points here)
+  mutable std::string text_;
+  mutable bool formatted_ = false;
 };
 
 // The calls as numberObjects would give them, numbered one at a time: a
@@ -155,23 +162,19 @@ struct Entry {
 // all of them would double what the listing holds.
 void addEntries(const std::vector<gl::Call>& calls, std::vector<Entry>* out, const std::vector<bool>* picked) {
   ObjectNumbers numbers;
-  gl::Call numbered;
   for (size_t k = 0; k < calls.size(); ++k) {
     const gl::Call* call = &calls[k];
-    if (ObjectNumbers::names(*call)) {
-      numbered = *call;
-      numbers.apply(numbered);
-      call = &numbered;
+    std::shared_ptr<gl::Call> numbered;
+    if (ObjectNumbers::names(*call)) {  // numbered even when left out (a query): names count in order of use
+      numbered = std::make_shared<gl::Call>(*call);
+      numbers.apply(*numbered);
+      call = numbered.get();
     }
-    const gl::Call& c = *call;
-    if (c.query) continue;
-    Entry e;
+    if (call->query) continue;
+    Entry e(call, std::move(numbered));
     e.picked = picked && k < picked->size() && (*picked)[k];
-    if (call == &numbered) e.text = gl::formatCall(c);  // `numbered` is reused: its text now
-    else e.call = call;                                 // calls[k] outlives the entries
-    e.begin = std::strcmp(c.name, "glBegin") == 0, e.end = std::strcmp(c.name, "glEnd") == 0;
-    e.vertex = std::strncmp(c.name, "glVertex", 8) == 0 && std::strcmp(c.name, "glVertexPointer") != 0 &&
-               std::strncmp(c.name, "glVertexAttrib", 14) != 0;
+    e.vertex = std::strncmp(call->name, "glVertex", 8) == 0 && std::strcmp(call->name, "glVertexPointer") != 0 &&
+               std::strncmp(call->name, "glVertexAttrib", 14) != 0;
     out->push_back(std::move(e));
   }
 }
@@ -179,7 +182,7 @@ std::vector<Entry> entries(const std::vector<CallSection>& sections, const std::
   std::vector<Entry> out;
   for (size_t k = 0; k < sections.size(); ++k) {
     const CallSection& s = sections[k];
-    if (!s.heading.empty()) out.push_back({"/* " + s.heading + " */"});
+    if (!s.heading.empty()) out.emplace_back("/* " + s.heading + " */");
     if (s.calls) addEntries(*s.calls, &out, k + 1 == sections.size() ? pickedLast : nullptr);
   }
   return out;
@@ -189,12 +192,10 @@ std::vector<Entry> entries(const std::vector<CallSection>& sections, const std::
 // changed values, not structure), the longest common subsequence when that
 // is small enough, else as multisets of texts (many vertices added or
 // removed: nearly everything changed anyway).
-void markChanged(std::vector<Entry>& before, std::vector<Entry>* now) {
-  for (Entry& e : before) e.formatted();  // compared by text: every call's
-  for (Entry& e : *now) e.formatted();
+void markChanged(const std::vector<Entry>& before, std::vector<Entry>* now) {
   size_t n = before.size(), m = now->size();
   if (n == m) {
-    for (size_t k = 0; k < m; ++k) (*now)[k].changed = (*now)[k].text != before[k].text;
+    for (size_t k = 0; k < m; ++k) (*now)[k].changed = (*now)[k].text() != before[k].text();
     return;
   }
   if (n * m <= size_t(4) << 20) {
@@ -203,11 +204,11 @@ void markChanged(std::vector<Entry>& before, std::vector<Entry>* now) {
     auto at = [&](size_t i, size_t j) -> unsigned short& { return lcs[i * (m + 1) + j]; };
     for (size_t i = n; i-- > 0;)
       for (size_t j = m; j-- > 0;)
-        at(i, j) = before[i].text == (*now)[j].text ? (unsigned short)(at(i + 1, j + 1) + 1)
-                                                    : std::max(at(i + 1, j), at(i, j + 1));
+        at(i, j) = before[i].text() == (*now)[j].text() ? (unsigned short)(at(i + 1, j + 1) + 1)
+                                                        : std::max(at(i + 1, j), at(i, j + 1));
     for (Entry& e : *now) e.changed = true;
     for (size_t i = 0, j = 0; i < n && j < m;) {
-      if (before[i].text == (*now)[j].text) {
+      if (before[i].text() == (*now)[j].text()) {
         (*now)[j].changed = false;
         ++i, ++j;
       } else if (at(i + 1, j) >= at(i, j + 1)) {
@@ -219,9 +220,9 @@ void markChanged(std::vector<Entry>& before, std::vector<Entry>* now) {
     return;
   }
   std::unordered_map<std::string, int> count;
-  for (const Entry& e : before) ++count[e.text];
+  for (const Entry& e : before) ++count[e.text()];
   for (Entry& e : *now) {
-    auto it = count.find(e.text);
+    auto it = count.find(e.text());
     e.changed = !(it != count.end() && it->second > 0);
     if (!e.changed) --it->second;
   }
@@ -241,33 +242,30 @@ std::vector<ListingLine> listing(const std::vector<gl::Call>& calls, const std::
 std::vector<ListingLine> listing(const std::vector<CallSection>& sections, const std::vector<CallSection>* previous,
                                  int keepVertices, const std::vector<bool>* picked) {
   std::vector<Entry> now = entries(sections, picked);
-  if (previous) {
-    std::vector<Entry> before = entries(*previous);
-    markChanged(before, &now);
-  }
+  if (previous) markChanged(entries(*previous), &now);
   std::vector<ListingLine> out;
-  auto emit = [&](Entry& e) {
-    e.formatted();
+  auto emit = [&](const Entry& e) {
     // One listing line per source line (a shader's source spans many).
+    const std::string& text = e.text();
     size_t pos = 0;
     while (true) {
-      size_t nl = e.text.find('\n', pos);
-      out.push_back({e.text.substr(pos, nl == std::string::npos ? std::string::npos : nl - pos), e.changed, e.picked});
+      size_t nl = text.find('\n', pos);
+      out.push_back({text.substr(pos, nl == std::string::npos ? std::string::npos : nl - pos), e.changed, e.picked});
       if (nl == std::string::npos) break;
       pos = nl + 1;
     }
   };
   size_t i = 0;
   while (i < now.size()) {
-    Entry& e = now[i];
+    const Entry& e = now[i];
     emit(e);
     ++i;
-    if (!e.begin) continue;
+    if (!e.is("glBegin")) continue;
     // The vertices up to glEnd, in groups: the attribute calls of a vertex
     // and its glVertex.  Kept: the first `keepVertices` groups and every
     // group with a changed call; the rest become "... N more vertices".
     size_t end = i;
-    while (end < now.size() && !now[end].end) ++end;
+    while (end < now.size() && !now[end].is("glEnd")) ++end;
     int vertex = 0, skipped = 0, keptChanged = 0;
     constexpr int kMaxChanged = 64;
     size_t groupStart = i;

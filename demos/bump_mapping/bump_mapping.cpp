@@ -53,7 +53,9 @@
 // bump_emboss_overhead.gl.txt.
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 
 #include "bump_mapping_ff.hpp"
@@ -121,30 +123,60 @@ class BumpMapping final : public ts::Scene {
   // tilt and the orbit, not on the method or the view shown: three of the
   // five figures (bricks, the default lights) measure the same state, some 40
   // renders each.  The last few states' results are kept and reused: the
-  // same numbers and pictures, only the pictures' GL calls recorded again
-  // (a recording holds the viewport of the figure it was made for).
+  // same numbers and pictures.  Their GL calls (the listings) hold the
+  // viewport current when they were recorded (a pass restores it): R's, two
+  // renders of the displaced grid, are kept and fitted to the viewport of now
+  // (retargetViewports); those of the fixed-function pictures the view shows
+  // (some 100,000 immediate-mode calls each) are recorded again, cheap renders.
   ts::Measurements measure(ts::Renderer& r) override {
     const std::string key = measuredState();
     const bump::RenderFn draw = [&](const bump::RenderSpec& s) { return render(r, s); };
-    for (const auto& [k, m] : measuredCache_)
-      if (k == key) {
-        ts::Measurements again = m;
-        bump::Found found = *m.detailAs<bump::Found>();
-        bump::recordPicturesAgain(draw, found);
+    // The fixed-function pictures this view shows (build(): a cell per method of the view, the compare view's
+    // middle cell for emboss's term).
+    const bump::ShownFn shown = [&](int p) {
+      return p == bump::kEmbossTermPicture ? view_ == 1 && method_ == bump::kEmboss : view_ == 3 || method_ == p;
+    };
+    glm::ivec4 viewport(0);
+    glGetIntegerv(GL_VIEWPORT, &viewport.x);
+    for (const Kept& k : measuredCache_)
+      if (k.key == key) {
+        ts::Measurements again = k.m;
+        bump::Found found = *k.m.detailAs<bump::Found>();
+        const bool fitted = bump::retargetViewports(found, k.viewport, viewport, {0, 0, kMeasureSize, kMeasureSize});
+        bump::recordPicturesAgain(draw, found, !fitted, shown);
         again.detail = found;
         return again;
       }
-    if (ts::measureStaged()) firstStage(draw);
-    const bump::Heights& H = heights();
-    ts::Measurements m = bump::measureAll(draw, toLight(0), bump::normalMap(H, 1.0, 0.4, heightScale_, true),
-                                          bump::normalMap(H, 1.0, 0.4, heightScale_, false));
-    // Kept without its GL calls (a hit records them again): they hold copies of every texture uploaded.
+    const ts::Image &wrapped = *normalTexture(heightScale_, false, true, false).image,
+                    &unwrapped = *normalTexture(heightScale_, false, false, false).image;
+    struct StageRenders {  // a staged measurement's renders, kept for its end only
+      const BumpMapping& scene;
+      explicit StageRenders(const BumpMapping& s) : scene(s) {
+        if (ts::measureStaged()) scene.stageRenders_ = std::make_shared<StageMap>();
+      }
+      ~StageRenders() { scene.stageRenders_ = nullptr; }
+    } stageRenders(*this);
+    if (ts::measureStaged()) {
+      firstStage(draw);
+      // The second stage: the view's own numbers and R's pictures, complete,
+      // when its cells need nothing but the methods' comparison with R (not
+      // seed 002's tilt cell, not the fixed-function methods' extra notes, not
+      // the view of all).  Its renders serve the whole measurement after it.
+      const bool plain = view_ != 3 && !kMethods[method_].fixedFunction && !(view_ == 1 && method_ == bump::kSeed002);
+      if (plain) {
+        const std::vector<int> only = {method_, bump::kReference};
+        ts::measureStage(bump::measureAll(draw, toLight(0), wrapped, unwrapped, shown, &only));
+      }
+    }
+    ts::Measurements m = bump::measureAll(draw, toLight(0), wrapped, unwrapped, shown);
     ts::Measurements kept = m;
     bump::Found bare = *m.detailAs<bump::Found>();
-    bare.picturesGL.clear(), bare.refNormalsGL = nullptr, bare.embossTermGL = nullptr;
+    for (int k = 0; k < bump::kMethodCount; ++k)
+      if (kMethods[k].fixedFunction) bare.picturesGL.erase(k);
+    bare.embossTermGL = nullptr;
     kept.detail = bare;
     if (measuredCache_.size() >= 4) measuredCache_.erase(measuredCache_.begin());
-    measuredCache_.push_back({key, std::move(kept)});
+    measuredCache_.push_back({key, std::move(kept), viewport});
     return m;
   }
   // A window's first stage (ts::measureStage), before the 40-odd renders the
@@ -167,6 +199,7 @@ class BumpMapping final : public ts::Scene {
         first.pictures[m] = std::make_shared<const ts::Image>(draw({m}));
       first.cmp[m] = bump::Compare{};
     }
+    first.coarseReference = true;
     ts::Measurements stage;
     stage.detail = first;
     ts::measureStage(std::move(stage));
@@ -185,11 +218,39 @@ class BumpMapping final : public ts::Scene {
   }
   // Every option measure() reads (all but --method and --view), floats in hex: exact.
   std::string measuredState() const {
+    char b[128];
+    std::snprintf(b, sizeof b, "%a %a %a %a|", light_[0].x, light_[0].y, light_[1].x, light_[1].y);
+    return b + shapeState();
+  }
+  // The same but the lights: all a normal render (colour 0.5 + 0.5 n) depends on.
+  std::string shapeState() const {
     char b[512];
-    std::snprintf(b, sizeof b, "%a %a %a %a %a %a %a %a %d %a %a %a|", heightScale_, objectScale_, tilt_, light_[0].x,
-                  light_[0].y, light_[1].x, light_[1].y, distance_, wrapSlopes_ ? 1 : 0, camera_.yaw, camera_.pitch,
-                  camera_.zoom);
+    std::snprintf(b, sizeof b, "%a %a %a %a %d %a %a %a|", heightScale_, objectScale_, tilt_, distance_,
+                  wrapSlopes_ ? 1 : 0, camera_.yaw, camera_.pitch, camera_.zoom);
     return b + std::string(file_.active() ? file_.path() : heights_ ? "bricks" : "procedural");
+  }
+  // The textures the renders bind, each baked on the CPU once per source and
+  // parameters (the heights as grey, the normal map, its DXT1 round trip) and
+  // shared by every render of a measurement and every copy of the scene.
+  ts::TextureDesc heightTexture(bool inverted, bool mip) const {
+    const bump::Heights& H = heights();
+    return memo('h' + std::to_string(inverted) + std::to_string(mip),
+                [&] { return bump::heightTexture(H, cacheKey_, inverted, mip); });
+  }
+  ts::TextureDesc normalTexture(float scale, bool mip, bool wrap, bool dxt1) const {
+    const bump::Heights& H = heights();
+    char k[64];
+    std::snprintf(k, sizeof k, "n%a %d%d%d", double(scale), mip, wrap, dxt1);
+    return memo(k, [&] { return bump::normalTexture(H, cacheKey_, scale, mip, wrap, dxt1); });
+  }
+  template <class Make>
+  ts::TextureDesc memo(const std::string& what, Make make) const {
+    auto& m = *textures_;
+    const std::string key = cacheKey_ + '|' + what;
+    auto it = m.find(key);
+    if (it != m.end()) return it->second;
+    if (m.size() >= 32) m.clear();  // a window's many height scales: the cache stays small
+    return m.emplace(key, make()).first->second;
   }
   glm::vec3 toLight(int k) const {
     float az = glm::radians(light_[k].x), el = glm::radians(light_[k].y);
@@ -203,8 +264,10 @@ class BumpMapping final : public ts::Scene {
   // The torus panel of a GLSL method at `vp` (its matrices serve every
   // method); the demo's own torus (R = 1, r = 0.4) times the object scale.
   ts::Panel torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::RenderSpec& s) const;
-  // One method's picture alone at the measurement size (no labels).
+  // One method's picture alone at the measurement size (no labels): from
+  // the normal renders kept (normalRenders_) or renderNow.
   ts::Image render(ts::Renderer& r, const bump::RenderSpec& s) const;
+  ts::Image renderNow(ts::Renderer& r, const bump::RenderSpec& s) const;
 
   int method_ = 1, view_ = 1, heights_ = 0;
   bool wrapSlopes_ = true;
@@ -215,7 +278,21 @@ class BumpMapping final : public ts::Scene {
   ts::UserTexture file_;
   mutable std::shared_ptr<const bump::Heights> cache_;
   mutable std::string cacheKey_;
-  std::vector<std::pair<std::string, ts::Measurements>> measuredCache_;  // measuredState() -> measure(), oldest first
+  std::shared_ptr<std::map<std::string, ts::TextureDesc>> textures_ =
+      std::make_shared<std::map<std::string, ts::TextureDesc>>();  // heightTexture, normalTexture: cacheKey_|what
+  struct Kept {
+    std::string key;  // measuredState()
+    ts::Measurements m;
+    glm::ivec4 viewport;  // current when it was measured (the pictures' passes restore it)
+  };
+  std::vector<Kept> measuredCache_;
+  using StageMap = std::map<std::string, std::pair<ts::Image, ts::gl::CallList>>;
+  mutable std::shared_ptr<StageMap> stageRenders_;  // render(): set during a window's staged measure() only
+  // render()'s normal renders: "spec|shapeState()" -> picture, for the shapes listed (newest last).
+  std::shared_ptr<std::map<std::string, std::shared_ptr<const ts::Image>>> normalRenders_ =
+      std::make_shared<std::map<std::string, std::shared_ptr<const ts::Image>>>();
+  std::shared_ptr<std::vector<std::string>> normalRenderShapes_ =
+      std::make_shared<std::vector<std::string>>();  // oldest first
 };
 
 ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::RenderSpec& s) const {
@@ -230,9 +307,8 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
   p.modelview = glm::rotate(p.modelview, glm::radians(tilt_), glm::vec3(1, 0, 0));
   camera_.apply(p);
   const bump::Heights& H = heights();
-  ts::TextureDesc tex = s.method == bump::kNormalMap
-                            ? bump::normalTexture(H, cacheKey_, heightScale_, s.mipmaps, wrapSlopes_, s.dxt1)
-                            : bump::heightTexture(H, cacheKey_, false, s.mipmaps);
+  ts::TextureDesc tex = s.method == bump::kNormalMap ? normalTexture(heightScale_, s.mipmaps, wrapSlopes_, s.dxt1)
+                                                     : heightTexture(false, s.mipmaps);
   // The mesh's (s, t) become glTexCoord4f(s, t, 0, 1) in Renderer::draw: the shader's gl_MultiTexCoord0.
   ts::Batch b = ts::meshBatch(ts::torusMesh(tp), f.addTexture(tex));
   b.role = "torus";
@@ -248,13 +324,65 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
 }
 
 ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const {
+  if (stageRenders_) {  // a window's staged measurement: each render once for all its stages
+    char b[256];
+    std::snprintf(b, sizeof b, "%d %d %d %d %d %a %a %a %d %d %d %d %d", s.method, s.normals, s.smoothGeometry,
+                  s.embossTermOnly, s.noSpecular, s.heightFactor, s.objectFactor, s.distanceFactor, s.mipmaps, s.dxt1,
+                  s.onBackdrop, s.coarseGrid, s.recordTo != nullptr);
+    auto keep = std::move(stageRenders_);  // the render itself goes on below
+    const auto it = keep->find(b);
+    ts::Image img;
+    ts::gl::CallList gl;
+    if (it != keep->end()) {
+      img = it->second.first, gl = it->second.second;
+    } else {
+      img = render(r, s);
+      if (s.recordTo) gl = *s.recordTo;
+      keep->emplace(b, std::make_pair(img, gl));
+    }
+    if (s.recordTo) *s.recordTo = gl;
+    stageRenders_ = std::move(keep);
+    return img;
+  }
   if (s.recordTo) {  // a picture shown: the same render, its calls kept for the listing
     bump::RenderSpec plain = s;
     plain.recordTo = nullptr;
     ts::Image img;
-    *s.recordTo = ts::recordRender(r, [&] { img = render(r, plain); });
+    *s.recordTo = ts::recordRender(r, [&] { img = renderNow(r, plain); });  // its calls: never from a kept render
     return img;
   }
+  // A GLSL normal render on black does not depend on the lights: one made for
+  // another state of the same shape (emboss's figure: light 1 moved) serves.
+  std::string normalsKey;
+  if (s.normals && !s.onBackdrop && !kMethods[s.method].fixedFunction) {
+    char b[256];
+    std::snprintf(b, sizeof b, "%d %d %d %d %a %a %a %d %d|", s.method, s.smoothGeometry, s.noSpecular, s.coarseGrid,
+                  s.heightFactor, s.objectFactor, s.distanceFactor, s.mipmaps, s.dxt1);
+    normalsKey = b + shapeState();
+    const auto it = normalRenders_->find(normalsKey);
+    if (it != normalRenders_->end()) return *it->second;
+  }
+  ts::Image img = renderNow(r, s);
+  if (!normalsKey.empty()) {
+    // Two shapes' worth (some 30 renders each), the oldest shape dropped first.
+    auto& order = normalRenderShapes_;
+    if (std::find(order->begin(), order->end(), shapeState()) == order->end()) {
+      order->push_back(shapeState());
+      if (order->size() > 2) {
+        const std::string old = order->front();
+        order->erase(order->begin());
+        for (auto it = normalRenders_->begin(); it != normalRenders_->end();)
+          it = it->first.size() >= old.size() && it->first.compare(it->first.size() - old.size(), old.size(), old) == 0
+                   ? normalRenders_->erase(it)
+                   : std::next(it);
+      }
+    }
+    normalRenders_->emplace(normalsKey, std::make_shared<const ts::Image>(img));
+  }
+  return img;
+}
+
+ts::Image BumpMapping::renderNow(ts::Renderer& r, const bump::RenderSpec& s) const {
   BumpMapping v = *this;
   v.heightScale_ *= s.heightFactor, v.objectScale_ *= s.objectFactor, v.distance_ = s.distanceFactor;
   ts::Frame f = ts::layout::blankFrame(kMeasureSize, kMeasureSize);
@@ -270,9 +398,9 @@ ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const 
                        glm::vec2(float(H.w), float(H.h)),
                        {v.toLight(0), v.toLight(1)},
                        {kIntensity[0], kIntensity[1]},
-                       bump::heightTexture(H, v.cacheKey_),
-                       bump::heightTexture(H, v.cacheKey_, true),
-                       bump::normalTexture(H, v.cacheKey_, v.heightScale_, false, wrapSlopes_),
+                       v.heightTexture(false, false),
+                       v.heightTexture(true, false),
+                       v.normalTexture(v.heightScale_, false, wrapSlopes_, false),
                        s.embossTermOnly};
   return bump::renderFixedFunction(r, f, s.method, in);
 }
@@ -381,7 +509,8 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
               n                               ? found->refNormalsGL
               : gl != found->picturesGL.end() ? gl->second
                                               : nullptr);
-      if (m == bump::kReference && measured.refining) L::refiningTag(f, c.picture);  // the coarse grid (firstStage)
+      if (m == bump::kReference && found->coarseReference)
+        L::refiningTag(f, c.picture);  // the coarse grid (firstStage)
     } else {
       L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
     }

@@ -4,6 +4,7 @@
 // object's size, emboss's contrast against the light's angle to the
 // normal, and DOT3 against the shader doing the same diffuse sum.
 #pragma once
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <memory>
@@ -33,6 +34,12 @@ struct RenderSpec {
   bool coarseGrid = false;  // R from CoarseReferencePass (a window's first stage)
 };
 using RenderFn = std::function<ts::Image(const RenderSpec&)>;
+// Which fixed-function pictures the view shows (a method of kMethods, or
+// kEmbossTermPicture): only theirs have their GL calls recorded for the
+// listing (a quarter of a million immediate-mode calls each); the others are
+// rendered for the numbers only.  R's two pictures are always recorded.
+constexpr int kEmbossTermPicture = -1;
+using ShownFn = std::function<bool(int picture)>;
 
 // Emboss's contrast per band of the angle between the smooth normal and light 1.
 inline const double kEmbossBands[] = {0, 10, 30, 60, 90};
@@ -46,9 +53,24 @@ inline const ts::Rgba kTiltWith{80, 200, 110, 255}, kTiltAgainst{225, 70, 200, 2
 constexpr double kEmbossGain = 4.0;
 inline const ts::Rgba kEmbossEdge{60, 210, 255, 255};
 
+// A normal render (colour 0.5 + 0.5 n) drawn on `background`, as drawn on
+// black: only the clear colour differs, so the pixels of that colour become
+// black.  No unit normal has the background's colour (a grey near 0.12 is n
+// near -0.76 in every component, |n| = 1.3), so no surface pixel is taken.
+inline ts::Image onBlack(const ts::Image& normals, ts::Rgba background) {
+  ts::Image out = normals;
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) {
+      const ts::Rgba c = out.at(x, y);
+      if (c.r == background.r && c.g == background.g && c.b == background.b) out.set(x, y, {0, 0, 0, 255});
+    }
+  return out;
+}
+
 // What measure() found, for the pictures.
 struct Found {
-  std::map<int, Compare> cmp;  // method -> against R (normalDeg: at the same (s,t); screenNormalDeg: same pixel)
+  bool coarseReference = false;  // R drawn from the coarse grid (a window's first stage): tagged refining
+  std::map<int, Compare> cmp;    // method -> against R (normalDeg: at the same (s,t); screenNormalDeg: same pixel)
   std::map<int, std::shared_ptr<const ts::Image>> pictures;  // R and the fixed-function methods, shaded
   std::shared_ptr<const ts::Image> refNormals;               // R's normals as shown (on the figure's background)
   std::map<int, ts::gl::CallList> picturesGL;                // the calls that rendered each picture (the GL listing)
@@ -79,25 +101,55 @@ inline RenderSpec embossTermSpec() {
   return s;
 }
 
-// The GL calls of every picture measureAll records, recorded again (the
-// pictures themselves are the same): a measurement reused for another
-// figure of the same state takes them anew, since a recording holds the
-// viewport it found (that figure's size).
-inline void recordPicturesAgain(const RenderFn& render, Found& found) {
+// The GL calls of the pictures measureAll records, recorded again (the
+// pictures themselves are the same): a measurement reused for another figure
+// of the same state takes them anew, since a recording holds the viewport it
+// found (that figure's size).  `reference`: R's two pictures too, else only
+// the fixed-function ones the view shows (R's fitted by retargetViewports).
+inline void recordPicturesAgain(const RenderFn& render, Found& found, bool reference, const ShownFn& shown) {
   auto recorded = [&](RenderSpec s, ts::gl::CallList* calls) {
     s.recordTo = calls;
     render(s);
   };
-  recorded({kReference}, &found.picturesGL[kReference]);
-  recorded(shownNormalsSpec(), &found.refNormalsGL);
+  if (reference) {
+    recorded({kReference}, &found.picturesGL[kReference]);
+    recorded(shownNormalsSpec(), &found.refNormalsGL);
+  }
   for (int m = 0; m < kMethodCount; ++m)
-    if (kMethods[m].fixedFunction) recorded({m}, &found.picturesGL[m]);
-  recorded(embossTermSpec(), &found.embossTermGL);
+    if (kMethods[m].fixedFunction && shown(m)) recorded({m}, &found.picturesGL[m]);
+  if (shown(kEmbossTermPicture)) recorded(embossTermSpec(), &found.embossTermGL);
+}
+
+// R's GL calls (its shaded picture and its normals) as they would be
+// recorded with the viewport `now` current instead of `was`: a pass
+// (RenderTarget::Bind) ends by restoring the viewport it found, the one call
+// of a recording that depends on it; every other viewport a pass sets is its
+// own, `own`.  A restore equal to `own` is left out as a no-op, so a
+// recording made or wanted there cannot be fitted: false, nothing changed.
+inline bool retargetViewports(Found& found, glm::ivec4 was, glm::ivec4 now, glm::ivec4 own) {
+  if (!found.picturesGL.count(kReference) || !found.refNormalsGL) return false;
+  if (was == now) return true;
+  if (was == own || now == own) return false;
+  auto fit = [&](ts::gl::CallList& list) {
+    auto calls = std::make_shared<std::vector<ts::gl::Call>>(*list);
+    for (ts::gl::Call& c : *calls)
+      if (std::string(c.name) == "glViewport" && c.args.size() == 4 && c.args[0].i == was.x && c.args[1].i == was.y &&
+          c.args[2].i == was.z && c.args[3].i == was.w)
+        c.args[0].i = now.x, c.args[1].i = now.y, c.args[2].i = now.z, c.args[3].i = now.w;
+    list = std::move(calls);
+  };
+  fit(found.picturesGL[kReference]);
+  fit(found.refNormalsGL);
+  return true;
 }
 
 // `seam`: the normal map baked with and without wrapping differences.
+// `only` (may be null): just R's pictures and the comparison of these
+// methods with R (a window's view, shown first: the same numbers, the rest
+// left out).
 inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye, const ts::Image& wrapped,
-                                   const ts::Image& unwrapped) {
+                                   const ts::Image& unwrapped, const ShownFn& shown,
+                                   const std::vector<int>* only = nullptr) {
   ts::Measurements out;
   Found found;
   // The pictures shown (R, its normals, B4, B5) are rendered with their GL
@@ -107,15 +159,19 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
     return render(s);
   };
   auto refShaded = std::make_shared<const ts::Image>(recorded({kReference}, &found.picturesGL[kReference]));
-  auto refNormals = std::make_shared<const ts::Image>(render({kReference, true}));
+  // R's normals are drawn once, on the figure's background (shown); the
+  // measurements' copy on black is the same picture with that colour zeroed
+  // (onBlack): the displaced grid is the costliest render here.
   found.refNormals = std::make_shared<const ts::Image>(recorded(shownNormalsSpec(), &found.refNormalsGL));
+  auto refNormals = std::make_shared<const ts::Image>(onBlack(*found.refNormals, found.refNormals->at(0, 0)));
   const ts::Image exact = render({kReference, true, true}), smooth = render({kFlat, true});
   found.pictures[kReference] = refShaded;
   ts::measureProgress(0.15);
   std::map<int, ts::Image> normals;
   for (int m = 0; m < kMethodCount; ++m) {
+    if (only && std::find(only->begin(), only->end(), m) == only->end()) continue;
     const bool ideal = m == kReference, fixed = kMethods[m].fixedFunction;
-    ts::Image shaded = fixed ? recorded({m}, &found.picturesGL[m]) : render({m, false, ideal});
+    ts::Image shaded = fixed && shown(m) ? recorded({m}, &found.picturesGL[m]) : render({m, false, ideal});
     normals[m] = m == kFlat ? smooth : ideal ? exact : fixed ? smooth : render({m, true});
     Compare c = compare(shaded, normals[m], *refShaded, *refNormals);
     const std::string k = std::string("[") + (ideal ? "ideal" : kMethods[m].key) + "]";
@@ -135,6 +191,10 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
     out.push_back({"mad" + k, c.mad, "mean absolute difference from R's picture, 8-bit units"});
     found.cmp[m] = c;
     ts::measureProgress(0.15 + 0.06 * m);
+  }
+  if (only) {
+    out.detail = found;
+    return out;
   }
   // Seed 001: DXT1 is "bad for normal maps".  B3 with its map compressed,
   // against the displaced surface at the same (s,t), as B3 itself above.
@@ -199,7 +259,8 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   // per band of the angle between the smooth normal and light 1.  The shift
   // is the light's part along the surface: 0 with the light along the normal.
   {
-    const ts::Image term = recorded(embossTermSpec(), &found.embossTermGL);
+    const ts::Image term = shown(kEmbossTermPicture) ? recorded(embossTermSpec(), &found.embossTermGL)
+                                                     : render(embossTermSpec());
     double sum[4] = {0, 0, 0, 0}, cnt[4] = {0, 0, 0, 0};
     const glm::dvec3 L = glm::normalize(light1Eye);
     found.embossBand.assign(size_t(term.width) * size_t(term.height), -1);
