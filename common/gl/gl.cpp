@@ -2,6 +2,9 @@
 
 #include <cstdio>
 #include <cstring>
+#include <map>
+#include <mutex>
+#include <string>
 
 #include "common/core/error.hpp"
 
@@ -54,8 +57,29 @@ bool hasAnisotropicFiltering() {
          hasExtension("GL_ARB_texture_filter_anisotropic");
 }
 
+// What hasExtension answered, by the context's renderer and version (a
+// process may hold an offscreen context and a window's, of different
+// versions): the renderer makes textures by the hundred, each asking for
+// anisotropic filtering, and each answer walks some 200 extension names.
+static std::mutex g_extensionsMutex;
+static std::map<std::string, bool> g_extensions;
+static bool hasExtensionUncached(const char* name);
+
 bool hasExtension(const char* name) {
   if (!g_loaded) return false;
+  const std::string key = rendererString() + "|" + versionString() + "|" + name;
+  {
+    std::lock_guard<std::mutex> lock(g_extensionsMutex);
+    auto it = g_extensions.find(key);
+    if (it != g_extensions.end()) return it->second;
+  }
+  const bool has = hasExtensionUncached(name);
+  std::lock_guard<std::mutex> lock(g_extensionsMutex);
+  g_extensions[key] = has;
+  return has;
+}
+
+static bool hasExtensionUncached(const char* name) {
   if (version() >= 30 && p_glGetStringi) {
     GLint n = 0;
     p_glGetIntegerv(GL_NUM_EXTENSIONS, &n);
