@@ -2,10 +2,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <system_error>
 #include <utility>
 
 #include "common/core/text.hpp"
@@ -20,8 +22,15 @@ using Json = nlohmann::ordered_json;
 Json num(double v) {
   if (!std::isfinite(v)) return nullptr;
   if (v == std::floor(v) && std::abs(v) < 1e15) return Json(static_cast<long long>(v));  // no "-0", no "1.0"
+  // The double nearest the 9-digit decimal ("%.9g" read back by strtod):
+  // to_chars with a precision rounds as printf does and from_chars reads as
+  // strtod does (both correctly), four times faster than the two, which were
+  // a tenth of make_figures for the demos with meshes in their sidecars.
   char buf[40];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf - 1, v, std::chars_format::general, 9);
+  double d = 0;
+  if (r.ec == std::errc() && std::from_chars(buf, r.ptr, d).ec == std::errc()) return Json(d);
+  std::snprintf(buf, sizeof buf, "%.9g", v);  // out of range (a 9-digit rounding past DBL_MAX): as before
   return Json(std::strtod(buf, nullptr));
 }
 template <int N>
