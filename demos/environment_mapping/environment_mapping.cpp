@@ -46,6 +46,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <thread>
 
 #include "common/gl/gl_listing.hpp"
 #include "common/core/layout.hpp"
@@ -499,16 +501,34 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
                                               "reference");
     }
   };
+  // In a window: the solid-angle studies (arithmetic only, a third of a
+  // measurement's CPU) on another thread while this one has GL draw; joined
+  // before addStudies reads them (kept: envmap::keptUniformity), or on a cancel.
+  std::thread studies;
+  struct Join {
+    std::thread& t;
+    ~Join() {
+      if (t.joinable()) t.join();
+    }
+  } joinStudies{studies};
+  // The first stage's pictures and [shown] numbers are the result's too: kept, not drawn again.
+  std::unique_ptr<Found> first;
+  ts::Measurements shownNumbers;
   if (ts::measureStaged()) {
-    Found first;
-    ts::Measurements numbers;  // not shown before the table's: the stage's labels say "(measuring)"
-    shownPictures(first, numbers);
+    const int face = face_;
+    if (studiesFace_ != face)  // not yet measured at this size
+      studies = std::thread([face] {
+        for (int p = 0; p < envmap::kParams; ++p) envmap::keptUniformity(envmap::Param(p), face);
+      });
+    first = std::make_unique<Found>();
+    shownPictures(*first, shownNumbers);  // not shown before the table's: the stage's labels say "(measuring)"
     ts::Measurements stage;
-    stage.detail = first;
+    stage.detail = *first;
     ts::measureStage(std::move(stage));
   }
   ts::Measurements out;
   Found found;
+  if (first) found = *first;  // the table below fills found.compare, which shownPictures leaves alone
   for (int o = object_; o == object_; ++o) {
     const envmap::Pixels ref = g.draw(pass(-1, o, false, true, kMeasureSize));
     for (int p = 0; p < envmap::kParams; ++p)
@@ -552,15 +572,21 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
       }
     ts::measureProgress(0.4);
   }
-  shownPictures(found, out);
+  if (first) {  // what shownPictures(found, out) does to `out`: its three numbers first, the mirror's last
+    out.insert(out.begin(), shownNumbers.begin(), shownNumbers.begin() + 3);
+    out.insert(out.end(), shownNumbers.begin() + 3, shownNumbers.end());
+  } else {
+    shownPictures(found, out);
+  }
   ts::measureProgress(0.6);
   // The seeds' examples, solid angle, the stale sphere map, the near ball:
   // they depend on the map's size alone, so they are measured once per size
   // (a third of the work of each figure, and of each key in a window).
+  if (studies.joinable()) studies.join();
   if (studiesFace_ != face_) {
-    ts::Measurements studies;
-    envmap::addStudies(g, face_, studies);
-    studies_ = std::move(studies), studiesFace_ = face_;
+    ts::Measurements kept;
+    envmap::addStudies(g, face_, kept);
+    studies_ = std::move(kept), studiesFace_ = face_;
   }
   out.insert(out.end(), studies_.begin(), studies_.end());
   out.push_back({"texels", double(envmap::mapTexels(envmap::Param(param_), face_)), "texels of the shown map"});

@@ -7,6 +7,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <array>
+#include <map>
+#include <mutex>
+#include <utility>
 #include <vector>
 
 #include "common/core/layout.hpp"
@@ -175,6 +178,22 @@ inline Mirror mirrorNear(const envmap::Pixels& ref, const glm::mat4& projection,
   return m;
 }
 
+// envmap::uniformity (pure arithmetic: 36 cells of two spherical triangles a
+// texel) made once per process for each (parameterization, face size):
+// every figure prints the same four, and it was a fifth of the demo's time.
+inline envmap::Uniformity keptUniformity(envmap::Param p, int face) {
+  static std::mutex lock;
+  static std::map<std::pair<int, int>, envmap::Uniformity> kept;
+  {
+    std::lock_guard<std::mutex> g(lock);
+    auto it = kept.find({int(p), face});
+    if (it != kept.end()) return it->second;
+  }
+  const envmap::Uniformity u = envmap::uniformity(p, face);
+  std::lock_guard<std::mutex> g(lock);
+  return kept.emplace(std::make_pair(int(p), face), u).first->second;
+}
+
 // ---- all of the above, as the demo prints them -----------------------------
 inline void addStudies(envmap::EnvGL& g, int face, ts::Measurements& out) {
   {  // the flat mirror in the default view, at the measuring size (Pass: 256 x 256; a figure's own picture
@@ -205,7 +224,7 @@ inline void addStudies(envmap::EnvGL& g, int face, ts::Measurements& out) {
   out.push_back({"seed_cube_readback_t", (c.readBack.y + 0.5) / c.n, "the GL's texel centre t"});
   // Texels per steradian at equal memory.
   for (int p = 0; p < envmap::kParams; ++p) {
-    const envmap::Uniformity u = envmap::uniformity(envmap::Param(p), face);
+    const envmap::Uniformity u = keptUniformity(envmap::Param(p), face);
     const std::string k = envmap::kParamKeys[p];
     out.push_back(
         {"texel_solid_angle_ratio[" + k + "]", u.analyticRatio(), "largest / smallest texel solid angle, analytic"});
