@@ -288,9 +288,9 @@ class BumpMapping final : public ts::Scene {
   std::vector<Kept> measuredCache_;
   using StageMap = std::map<std::string, std::pair<ts::Image, ts::gl::CallList>>;
   mutable std::shared_ptr<StageMap> stageRenders_;  // render(): set during a window's staged measure() only
-  // render()'s normal renders: "spec|shapeState()" -> picture, for the shapes listed (newest last).
-  std::shared_ptr<std::map<std::string, std::shared_ptr<const ts::Image>>> normalRenders_ =
-      std::make_shared<std::map<std::string, std::shared_ptr<const ts::Image>>>();
+  // render()'s normal renders: "spec|shapeState()" -> picture (packed), for the shapes listed (newest last).
+  std::shared_ptr<std::map<std::string, bump::PackedNormals>> normalRenders_ =
+      std::make_shared<std::map<std::string, bump::PackedNormals>>();
   std::shared_ptr<std::vector<std::string>> normalRenderShapes_ =
       std::make_shared<std::vector<std::string>>();  // oldest first
 };
@@ -360,11 +360,11 @@ ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const 
                   s.heightFactor, s.objectFactor, s.distanceFactor, s.mipmaps, s.dxt1);
     normalsKey = b + shapeState();
     const auto it = normalRenders_->find(normalsKey);
-    if (it != normalRenders_->end()) return *it->second;
+    if (it != normalRenders_->end()) return it->second.image();
   }
   ts::Image img = renderNow(r, s);
   if (!normalsKey.empty()) {
-    // Two shapes' worth (some 30 renders each), the oldest shape dropped first.
+    // Two shapes' worth (some 30 renders each, packed: 10 MB a shape), the oldest shape dropped first.
     auto& order = normalRenderShapes_;
     if (std::find(order->begin(), order->end(), shapeState()) == order->end()) {
       order->push_back(shapeState());
@@ -377,7 +377,7 @@ ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const 
                    : std::next(it);
       }
     }
-    normalRenders_->emplace(normalsKey, std::make_shared<const ts::Image>(img));
+    normalRenders_->emplace(normalsKey, bump::PackedNormals(img));
   }
   return img;
 }

@@ -165,6 +165,43 @@ inline ts::TextureDesc normalTexture(const Heights& H, const std::string& key, d
   return t;
 }
 
+// A normal render on black kept small: a bit per pixel for "covered" (not
+// black) and the covered pixels' red, green and blue, a third of the RGBA
+// image where the torus covers two fifths of it.  Exact: every pixel of such
+// a render is opaque (a render that is not is kept whole).
+struct PackedNormals {
+  int width = 0, height = 0;
+  std::vector<uint8_t> covered, rgb;       // bits, row by row; 3 bytes per covered pixel
+  std::shared_ptr<const ts::Image> whole;  // a render with a pixel not opaque, as it is
+
+  explicit PackedNormals(const ts::Image& img) : width(img.width), height(img.height) {
+    const size_t n = size_t(img.width) * size_t(img.height);
+    for (size_t k = 0; k < n; ++k)
+      if (img.pixels[4 * k + 3] != 255) {
+        whole = std::make_shared<const ts::Image>(img);
+        return;
+      }
+    covered.assign((n + 7) / 8, 0);
+    for (size_t k = 0; k < n; ++k) {
+      const uint8_t* p = &img.pixels[4 * k];
+      if ((p[0] | p[1] | p[2]) == 0) continue;
+      covered[k / 8] |= uint8_t(1u << (k % 8));
+      rgb.insert(rgb.end(), p, p + 3);
+    }
+  }
+  ts::Image image() const {
+    if (whole) return *whole;
+    ts::Image img(width, height);  // opaque black
+    const size_t n = size_t(width) * size_t(height);
+    for (size_t k = 0, j = 0; k < n; ++k)
+      if (covered[k / 8] & (1u << (k % 8))) {
+        std::copy(&rgb[j], &rgb[j] + 3, &img.pixels[4 * k]);
+        j += 3;
+      }
+    return img;
+  }
+};
+
 // ---- image statistics ---------------------------------------------------
 // Pixels of a normal render (colour = 0.5 + 0.5 n, background black) that
 // show the surface.

@@ -131,6 +131,46 @@ TEST(BumpMapping, AWindowsFirstStageShowsThePicturesNotTheNumbers) {
   EXPECT_GT(printed, 0u);
 }
 
+// A window's second stage: the default view (B1 beside R) complete before
+// the rest of the measurement, its numbers the result's own (the same
+// renders, the same comparisons) and R the full grid's, so the frame built
+// from it is the result's frame: the window's picture stops changing there.
+// The control: the first stage's frame is not the result's.
+TEST(BumpMapping, AWindowsSecondStageIsTheDefaultViewComplete) {
+  std::atomic<uint64_t> latest{1};
+  std::atomic<bool> quit{false};
+  std::atomic<double> progress{0};
+  std::vector<ts::Measurements> stages;
+  ts::MeasureRun run{&latest, &quit, 1, &progress, [&](ts::Measurements&& m) {
+                       stages.push_back(std::move(m));
+                       if (stages.size() == 2) latest.store(2);  // the rest is not needed here
+                     }};
+  Demo d("bump_mapping", {});
+  ts::setMeasureRun(&run);
+  EXPECT_THROW(d.measure(), ts::MeasureCancelled);
+  ts::setMeasureRun(nullptr);
+  ASSERT_EQ(stages.size(), 2u);
+  const ts::Measurements& second = stages[1];
+  ASSERT_FALSE(second.empty());
+  for (const ts::Measurement& m : second) EXPECT_EQ(m.value, value(defaults(), m.name)) << m.name;
+  const bump::Found* found = second.detailAs<bump::Found>();
+  const bump::Found* result = defaults().detailAs<bump::Found>();
+  ASSERT_NE(found, nullptr);
+  ASSERT_NE(result, nullptr);
+  EXPECT_FALSE(found->coarseReference);
+  EXPECT_EQ(ts::probe::countDiffering(*found->pictures.at(bump::kReference), *result->pictures.at(bump::kReference), 0),
+            0);
+  auto texts = [&](const ts::Measurements& m) {
+    d.measured = m;
+    std::vector<std::string> out;
+    for (const ts::Label& l : d.frame(1024, 512).labels) out.push_back(l.text);
+    return out;
+  };
+  const std::vector<std::string> final = texts(defaults());
+  EXPECT_EQ(texts(second), final);
+  EXPECT_NE(texts(stages[0]), final);  // the control: the first stage says "(measuring)"
+}
+
 // The pictures that show seed 002's and emboss's claims show what was
 // measured: seed 002's x tilt picture, counted in the near and the far rows,
 // gives the measured agreements exactly; emboss's term, as shown (magnified),
