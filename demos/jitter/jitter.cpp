@@ -236,7 +236,9 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
     ensure(r, 0, 1);
     for (int kind = 0; kind < 4; ++kind) ensure(r, kind, side_);
     ts::Measurements first;
+    found_.coarse = true;
     first.detail = found_;
+    found_.coarse = false;
     coarse_ = false;
     reference_ = jitter::FloatImage();
     preparedSeed_ = -1;
@@ -271,6 +273,14 @@ ts::Measurements Jitter::measure(ts::Renderer& r) {
     out.push_back({"aliasing" + k, row.res->stats.aliasing,
                    "RMS of the error its 24 neighbours' errors predict: interference, moire"});
     out.push_back({"noise" + k, row.res->stats.noise, "RMS of the unpredictable rest: grain"});
+  }
+  // The mode and compare views draw nothing below this line: in a window,
+  // their whole picture goes out now, as a second stage (not coarse), and
+  // the CPU model's and the zone plate's numbers follow in the panel.
+  if (ts::measureStaged() && (view_ == kViewMode || view_ == kViewCompare)) {
+    ts::Measurements shown = out;
+    shown.detail = found_;
+    ts::measureStage(std::move(shown));
   }
   // Pure random sampling against jittered (jitter_math.hpp, the CPU model).
   for (Pattern p : {Pattern::Random, Pattern::JitterPixel})

@@ -24,6 +24,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -37,6 +38,7 @@
 #include "common/gl/context.hpp"
 #include "common/core/error.hpp"
 #include "common/core/image.hpp"
+#include "common/core/measure_run.hpp"
 #include "common/core/options.hpp"
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
@@ -68,6 +70,43 @@ using ts::test::value;
 
 // The demo in one state, on this file's context (not the shared one).
 Demo jitterDemo(const std::vector<std::string>& flags) { return Demo("jitter", flags, renderer()); }
+
+// A window's measurement comes in stages (ts::measureStage, only on the
+// window's worker): first GL's pictures with errors against a coarse stand-in
+// for the reference (tagged refining), then, for the mode view, its whole
+// picture: every label and picture the result's, so the window is complete
+// before the CPU model's and the zone plate's numbers (which it does not
+// draw) are in.  The control: the first stage's labels are not the result's.
+TEST(Stage, TheModeViewsSecondStageIsItsWholePicture) {
+  const std::vector<std::string> flags = {"--view", "mode"};
+  std::atomic<uint64_t> latest{1};
+  std::atomic<bool> quit{false};
+  std::atomic<double> progress{0};
+  std::vector<ts::Measurements> stages;
+  ts::MeasureRun run{&latest, &quit, 1, &progress, [&](ts::Measurements&& m) { stages.push_back(std::move(m)); }};
+  Demo staged = jitterDemo(flags);
+  ts::setMeasureRun(&run);
+  staged.measure();
+  ts::setMeasureRun(nullptr);
+  ASSERT_EQ(stages.size(), 2u);
+  auto texts = [](const ts::Frame& f) {
+    std::vector<std::string> t;
+    for (const ts::Label& l : f.labels) t.push_back(l.text);
+    return t;
+  };
+  const ts::Frame result = staged.frame(1024, 560);
+  const ts::Measurements whole = staged.measured;
+  staged.measured = stages[1];
+  const ts::Frame second = staged.frame(1024, 560);
+  EXPECT_EQ(texts(second), texts(result));
+  ASSERT_EQ(second.textures.size(), result.textures.size());
+  for (size_t k = 0; k < result.textures.size(); ++k)
+    if (result.textures[k].image && second.textures[k].image)
+      EXPECT_EQ(second.textures[k].image->pixels, result.textures[k].image->pixels) << result.textures[k].name;
+  EXPECT_LT(stages[1].size(), whole.size());  // the panel's numbers follow
+  staged.measured = stages[0];
+  EXPECT_NE(texts(staged.frame(1024, 560)), texts(result));
+}
 
 // The plot view measures every pattern at n = 1..4; one render per seed.
 const ts::Measurements& sweep(int seed) {

@@ -103,6 +103,9 @@ struct Found {
   std::array<Result, kMaxSide> random;  // pure random per pixel, n = 1..4 (made when shown or measured)
   zone::Plate zone;                     // the zone plate's GL renders and alias curves (jitter_gl.hpp, zoneMeasure)
   Result reference;
+  // A window's first stage (Jitter::measure): the reference is a coarse
+  // stand-in, so it and every error picture are tagged refining.
+  bool coarse = false;
   const Result& at(int kind, int side) const { return results[size_t(kind)][size_t(side - 1)]; }
   Result& at(int kind, int side) { return results[size_t(kind)][size_t(side - 1)]; }
 };
@@ -146,6 +149,10 @@ struct Views {
   int mode_ = kJitterPixel, side_ = 3, seed_ = 1;
   bool showError_ = false;
   const ts::Measurements* measured = nullptr;  // what build() was given: the numbers the labels print
+  bool coarse() const {                        // a first stage's pictures (Found::coarse)
+    const Found* f = measured ? measured->detailAs<Found>() : nullptr;
+    return f && f->coarse;
+  }
   // One measurement printed as `format` (measure() made every one a drawn result shows).
   ts::layout::Text num(const std::string& name, const char* format = "%.4f") const {
     return ts::layout::measured(*measured, name, format);
@@ -187,8 +194,7 @@ inline void Views::addImage(ts::Frame& f, const std::string& id, ts::Rect rect, 
   if (index < 0) index = f.addTexture(t);
   f.panels.push_back(ts::layout::texturePanel(id, rect, index));
   // A first stage (Jitter::measure): the reference and the errors are coarse.
-  if (measured && measured->refining && (id.rfind("error", 0) == 0 || id == "image_reference"))
-    ts::layout::refiningTag(f, rect);
+  if (coarse() && (id.rfind("error", 0) == 0 || id == "image_reference")) ts::layout::refiningTag(f, rect);
 }
 
 // A pixel square of `box` (canvas pixels, y down) with its subpixel grid and
@@ -306,7 +312,7 @@ inline void Views::buildMode(ts::Frame& f, ts::Panel& canvas, const Found& fd) c
   L::caption(f, {12, 8, float(f.width) - 12, float(p.top - 2)}, title, kWhite, sc, ts::Align::Left);
   const Result* res = current(fd);
   if (res) addImage(f, "image", rect, showError_ ? res->errorTexture : res->texture);
-  if (res && measured && measured->refining && (showError_ || mode_ == kReference))  // coarse, as in addImage
+  if (res && coarse() && (showError_ || mode_ == kReference))  // coarse, as in addImage
     L::refiningTag(f, rect);
   int sideX = rect.x + rect.w + 24;  // where the numbers start
   int x = p.column ? 16 : sideX, y0 = p.column ? rect.y + rect.h + 12 : p.top + 4;
