@@ -579,6 +579,13 @@ ts::Measurements EnvironmentMapping::measure(ts::Renderer& r) {
     shownPictures(found, out);
   }
   ts::measureProgress(0.6);
+  // In a window, every view but the map's is whole now (the studies below
+  // print only in the map view's notes and the panel): a second stage.
+  if (ts::measureStaged() && view_ != kMapView && studiesFace_ != face_) {
+    ts::Measurements shown = out;
+    shown.detail = found;
+    ts::measureStage(std::move(shown));
+  }
   // The seeds' examples, solid angle, the stale sphere map, the near ball:
   // they depend on the map's size alone, so they are measured once per size
   // (a third of the work of each figure, and of each key in a window).

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "common/core/layout.hpp"
+#include "common/core/measure_run.hpp"
 #include "demos/environment_mapping/environment_mapping_studies.hpp"
 #include "demos/environment_mapping/environment_mapping_math.hpp"
 #include "tests/support/scene_test.hpp"
@@ -302,6 +304,34 @@ TEST(EnvironmentMapping, ShownStateAndPictures) {
     ts::Frame f = s.frame(900, 400);
     EXPECT_GE(f.panels.size(), 2u) << view;
   }
+}
+
+// A window's measurement comes in stages (ts::measureStage, only on the
+// window's worker): the pictures first, numbers "(measuring)"; then, for
+// every view but the map's, its whole picture before the seeds' studies
+// (which only the map view's notes print) are measured.  The second stage's
+// labels are the result's; the first's, the control, are not.
+TEST(Stage, TheObjectViewsSecondStageIsItsWholePicture) {
+  std::atomic<uint64_t> latest{1};
+  std::atomic<bool> quit{false};
+  std::atomic<double> progress{0};
+  std::vector<ts::Measurements> stages;
+  ts::MeasureRun run{&latest, &quit, 1, &progress, [&](ts::Measurements&& m) { stages.push_back(std::move(m)); }};
+  Demo staged("environment_mapping", {"--view", "object"});
+  ts::setMeasureRun(&run);
+  staged.measure();
+  ts::setMeasureRun(nullptr);
+  ASSERT_EQ(stages.size(), 2u);
+  auto texts = [&](const ts::Measurements& m) {
+    staged.measured = m;
+    std::vector<std::string> t;
+    for (const ts::Label& l : staged.frame(1080, 440).labels) t.push_back(l.text);
+    return t;
+  };
+  const ts::Measurements whole = staged.measured;
+  EXPECT_EQ(texts(stages[1]), texts(whole));
+  EXPECT_LT(stages[1].size(), whole.size());  // the studies follow, in the panel
+  EXPECT_NE(texts(stages[0]), texts(whole));
 }
 }  // namespace
 
