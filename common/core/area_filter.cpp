@@ -298,28 +298,46 @@ glm::dvec2 periodShift(int w_, int h_, double u0, double v0) {
   return {w_ * std::floor(u0 / w_), h_ * std::floor(v0 / h_)};
 }
 
-template <class Sum>
-glm::dvec4 outlineAverage(const SumTable<Sum>& table, int w_, int h_, const Polygon2& in, long* pieces) {
-  using Table = SumTable<Sum>;
-  if (pieces) *pieces = 0;
-  if (in.empty() || w_ <= 0 || h_ <= 0) return glm::dvec4(0.0);
-  // Work near the origin: shift by whole periods (the texture is the same
-  // there), so G's running sums and the area's products stay small, and the
-  // rounding with them.
+// A polygon's place and area as outlineAverage and averageFromEdges take
+// them.  Work near the origin: shift by whole periods (the texture is the
+// same there), so G's running sums and the area's products stay small, and
+// the rounding with them.  A polygon of no area (degenerate) reads the texel
+// under its first corner instead.
+struct Placed {
+  glm::dvec2 shift;
+  double total = 0;
+  bool degenerate = false;
+};
+Placed place(int w_, int h_, const Polygon2& in) {
   double u0 = in[0].x, v0 = in[0].y;
   for (const glm::dvec2& p : in) u0 = std::min(u0, p.x), v0 = std::min(v0, p.y);
-  const glm::dvec2 shift = periodShift(w_, h_, u0, v0);
+  Placed pl;
+  pl.shift = periodShift(w_, h_, u0, v0);
   double twice = 0;
   for (size_t k = 0; k < in.size(); ++k) {
-    const glm::dvec2 a = in[k] - shift, b = in[(k + 1) % in.size()] - shift;
+    const glm::dvec2 a = in[k] - pl.shift, b = in[(k + 1) % in.size()] - pl.shift;
     twice += a.x * b.y - b.x * a.y;
   }
-  const double total = 0.5 * twice;
-  if (!(std::fabs(total) >= 1e-12)) {
-    const long i = ((long(std::floor(in[0].x)) % w_) + w_) % w_, j = ((long(std::floor(in[0].y)) % h_) + h_) % h_;
-    const Sum* row = &table.sums[table.rowBase(j)];
-    return texelOf(row[Table::column(i)], row[Table::column(i + 1)]);
-  }
+  pl.total = 0.5 * twice;
+  pl.degenerate = !(std::fabs(pl.total) >= 1e-12);
+  return pl;
+}
+template <class Sum>
+glm::dvec4 firstCornerTexel(const SumTable<Sum>& table, int w_, int h_, const Polygon2& in) {
+  using Table = SumTable<Sum>;
+  const long i = ((long(std::floor(in[0].x)) % w_) + w_) % w_, j = ((long(std::floor(in[0].y)) % h_) + h_) % h_;
+  const Sum* row = &table.sums[table.rowBase(j)];
+  return texelOf(row[Table::column(i)], row[Table::column(i + 1)]);
+}
+
+template <class Sum>
+glm::dvec4 outlineAverage(const SumTable<Sum>& table, int w_, int h_, const Polygon2& in, long* pieces) {
+  if (pieces) *pieces = 0;
+  if (in.empty() || w_ <= 0 || h_ <= 0) return glm::dvec4(0.0);
+  const Placed pl = place(w_, h_, in);
+  if (pl.degenerate) return firstCornerTexel(table, w_, h_, in);
+  const glm::dvec2 shift = pl.shift;
+  const double total = pl.total;
   glm::dvec4 sum(0.0);
   long count = 0;
   const size_t n = in.size();
@@ -340,23 +358,12 @@ AreaIntegral::Edge outlineEdge(const SumTable<Sum>& table, int w_, int h_, glm::
 template <class Sum>
 glm::dvec4 averageFromEdges(const SumTable<Sum>& table, int w_, int h_, const Polygon2& in,
                             const AreaIntegral::Edge* const* edges, const int* signs) {
-  using Table = SumTable<Sum>;
   if (in.empty() || w_ <= 0 || h_ <= 0) return glm::dvec4(0.0);
-  // The polygon's shift, area and degenerate case exactly as average()'s.
-  double u0 = in[0].x, v0 = in[0].y;
-  for (const glm::dvec2& p : in) u0 = std::min(u0, p.x), v0 = std::min(v0, p.y);
-  const glm::dvec2 shift = periodShift(w_, h_, u0, v0);
-  double twice = 0;
-  for (size_t k = 0; k < in.size(); ++k) {
-    const glm::dvec2 a = in[k] - shift, b = in[(k + 1) % in.size()] - shift;
-    twice += a.x * b.y - b.x * a.y;
-  }
-  const double total = 0.5 * twice;
-  if (!(std::fabs(total) >= 1e-12)) {
-    const long i = ((long(std::floor(in[0].x)) % w_) + w_) % w_, j = ((long(std::floor(in[0].y)) % h_) + h_) % h_;
-    const Sum* row = &table.sums[table.rowBase(j)];
-    return texelOf(row[Table::column(i)], row[Table::column(i + 1)]);
-  }
+  // The polygon's shift, area and degenerate case exactly as outlineAverage's.
+  const Placed pl = place(w_, h_, in);
+  if (pl.degenerate) return firstCornerTexel(table, w_, h_, in);
+  const glm::dvec2 shift = pl.shift;
+  const double total = pl.total;
   // Each edge's integral moved from its own shift to the polygon's: G at
   // u - s_e is G at u - s minus (s_e - s) / W row totals (the v shift does
   // not change G: the rows repeat).

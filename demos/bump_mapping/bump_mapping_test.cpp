@@ -16,7 +16,6 @@
 // differs from 2 by 3 %, and the 8-bit normals add their own).
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -27,7 +26,6 @@
 #include "demos/bump_mapping/bump_mapping_math.hpp"
 #include "demos/bump_mapping/bump_mapping_measure.hpp"
 #include "common/core/layout.hpp"
-#include "common/core/measure_run.hpp"
 #include "common/core/probe.hpp"
 #include "tests/support/scene_test.hpp"
 
@@ -81,19 +79,9 @@ TEST(BumpMapping, FiguresShowTheirNumbersWhole) {
 // the frame built from it prints no number: every note says "(measuring)".
 // The control: the result's frame of the same view prints its numbers.
 TEST(BumpMapping, AWindowsFirstStageShowsThePicturesNotTheNumbers) {
-  std::atomic<uint64_t> latest{1};
-  std::atomic<bool> quit{false};
-  std::atomic<double> progress{0};
-  std::vector<ts::Measurements> stages;
-  // Superseded as soon as the stage is handed over: the rest (some 40 renders) is not needed here.
-  ts::MeasureRun run{&latest, &quit, 1, &progress, [&](ts::Measurements&& m) {
-                       stages.push_back(std::move(m));
-                       latest.store(2);
-                     }};
   Demo d("bump_mapping", {});
-  ts::setMeasureRun(&run);
-  EXPECT_THROW(d.measure(), ts::MeasureCancelled);
-  ts::setMeasureRun(nullptr);
+  // Superseded as soon as the stage is handed over: the rest (some 40 renders) is not needed here.
+  const std::vector<ts::Measurements> stages = ts::test::measureInStages(d, 1);
   ASSERT_EQ(stages.size(), 1u);
   const ts::Measurements& stage = stages[0];
   EXPECT_TRUE(stage.refining);
@@ -137,18 +125,8 @@ TEST(BumpMapping, AWindowsFirstStageShowsThePicturesNotTheNumbers) {
 // from it is the result's frame: the window's picture stops changing there.
 // The control: the first stage's frame is not the result's.
 TEST(BumpMapping, AWindowsSecondStageIsTheDefaultViewComplete) {
-  std::atomic<uint64_t> latest{1};
-  std::atomic<bool> quit{false};
-  std::atomic<double> progress{0};
-  std::vector<ts::Measurements> stages;
-  ts::MeasureRun run{&latest, &quit, 1, &progress, [&](ts::Measurements&& m) {
-                       stages.push_back(std::move(m));
-                       if (stages.size() == 2) latest.store(2);  // the rest is not needed here
-                     }};
   Demo d("bump_mapping", {});
-  ts::setMeasureRun(&run);
-  EXPECT_THROW(d.measure(), ts::MeasureCancelled);
-  ts::setMeasureRun(nullptr);
+  const std::vector<ts::Measurements> stages = ts::test::measureInStages(d, 2);  // the rest is not needed here
   ASSERT_EQ(stages.size(), 2u);
   const ts::Measurements& second = stages[1];
   ASSERT_FALSE(second.empty());

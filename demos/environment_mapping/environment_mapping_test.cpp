@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -19,7 +18,6 @@
 #include <vector>
 
 #include "common/core/layout.hpp"
-#include "common/core/measure_run.hpp"
 #include "demos/environment_mapping/environment_mapping_studies.hpp"
 #include "demos/environment_mapping/environment_mapping_math.hpp"
 #include "tests/support/scene_test.hpp"
@@ -312,15 +310,8 @@ TEST(EnvironmentMapping, ShownStateAndPictures) {
 // (which only the map view's notes print) are measured.  The second stage's
 // labels are the result's; the first's, the control, are not.
 TEST(Stage, TheObjectViewsSecondStageIsItsWholePicture) {
-  std::atomic<uint64_t> latest{1};
-  std::atomic<bool> quit{false};
-  std::atomic<double> progress{0};
-  std::vector<ts::Measurements> stages;
-  ts::MeasureRun run{&latest, &quit, 1, &progress, [&](ts::Measurements&& m) { stages.push_back(std::move(m)); }};
   Demo staged("environment_mapping", {"--view", "object"});
-  ts::setMeasureRun(&run);
-  staged.measure();
-  ts::setMeasureRun(nullptr);
+  const std::vector<ts::Measurements> stages = ts::test::measureInStages(staged);
   ASSERT_EQ(stages.size(), 2u);
   auto texts = [&](const ts::Measurements& m) {
     staged.measured = m;

@@ -24,7 +24,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -38,7 +37,6 @@
 #include "common/gl/context.hpp"
 #include "common/core/error.hpp"
 #include "common/core/image.hpp"
-#include "common/core/measure_run.hpp"
 #include "common/core/options.hpp"
 #include "common/gl/render.hpp"
 #include "common/core/scene.hpp"
@@ -79,15 +77,8 @@ Demo jitterDemo(const std::vector<std::string>& flags) { return Demo("jitter", f
 // draw) are in.  The control: the first stage's labels are not the result's.
 TEST(Stage, TheModeViewsSecondStageIsItsWholePicture) {
   const std::vector<std::string> flags = {"--view", "mode"};
-  std::atomic<uint64_t> latest{1};
-  std::atomic<bool> quit{false};
-  std::atomic<double> progress{0};
-  std::vector<ts::Measurements> stages;
-  ts::MeasureRun run{&latest, &quit, 1, &progress, [&](ts::Measurements&& m) { stages.push_back(std::move(m)); }};
   Demo staged = jitterDemo(flags);
-  ts::setMeasureRun(&run);
-  staged.measure();
-  ts::setMeasureRun(nullptr);
+  const std::vector<ts::Measurements> stages = ts::test::measureInStages(staged);
   ASSERT_EQ(stages.size(), 2u);
   auto texts = [](const ts::Frame& f) {
     std::vector<std::string> t;

@@ -39,7 +39,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -51,7 +50,6 @@
 #include "demos/parallax_aniso/parallax_aniso_gl.hpp"
 #include "demos/parallax_aniso/parallax_aniso_math.hpp"
 #include "demos/parallax_aniso/parallax_aniso_views.hpp"
-#include "common/core/measure_run.hpp"
 #include "common/core/probe.hpp"
 #include "tests/support/gl_test.hpp"
 #include "tests/support/scene_test.hpp"
@@ -555,19 +553,8 @@ TEST(Table, AnEmptyBandLeavesItsCellsEmpty) {
 // once, the reference with fewer rays, no numbers ("(measuring)"), which
 // the control shows differs from its result's frame.
 std::vector<ts::Measurements> firstStages(const std::vector<std::string>& flags) {
-  std::atomic<uint64_t> latest{1};
-  std::atomic<bool> quit{false};
-  std::atomic<double> progress{0};
-  std::vector<ts::Measurements> stages;
-  ts::MeasureRun run{&latest, &quit, 1, &progress, [&](ts::Measurements&& m) {
-                       stages.push_back(std::move(m));
-                       latest.store(2);  // superseded: the table is not needed here
-                     }};
   ts::test::Demo staged("parallax_aniso", flags);
-  ts::setMeasureRun(&run);
-  EXPECT_THROW(staged.measure(), ts::MeasureCancelled);
-  ts::setMeasureRun(nullptr);
-  return stages;
+  return ts::test::measureInStages(staged, 1);  // superseded: the table is not needed here
 }
 std::vector<std::string> labelTexts(ts::test::Demo& d) {
   std::vector<std::string> texts;

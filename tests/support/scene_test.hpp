@@ -4,6 +4,7 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/core/measure_run.hpp"
 #include "common/core/scene.hpp"
 #include "tests/support/gl_test.hpp"
 
@@ -57,6 +59,32 @@ inline const Panel& panelOf(const Frame& f, const std::string& id) {
   const Panel* p = f.panel(id);
   if (!p) throw std::runtime_error("frame has no panel " + id);
   return *p;
+}
+
+// The stages a window's worker is handed (ts::measureStage) while `d`
+// measures as in a window.  stopAfter > 0: the request is superseded once
+// that many stages are in, so the measurement stops at its next check (a
+// test failure if it does not); 0: it runs to the end, its result in
+// d.measured.
+inline std::vector<Measurements> measureInStages(Demo& d, size_t stopAfter = 0) {
+  std::atomic<uint64_t> latest{1};
+  std::atomic<bool> quit{false};
+  std::atomic<double> progress{0};
+  std::vector<Measurements> stages;
+  MeasureRun run{&latest, &quit, 1, &progress, [&](Measurements&& m) {
+                   stages.push_back(std::move(m));
+                   if (stopAfter && stages.size() >= stopAfter) latest.store(2);  // the rest is not needed
+                 }};
+  setMeasureRun(&run);
+  bool cancelled = false;
+  try {
+    d.measure();
+  } catch (const MeasureCancelled&) {
+    cancelled = true;
+  }
+  setMeasureRun(nullptr);
+  EXPECT_EQ(cancelled, stopAfter > 0) << "superseded after " << stopAfter << " stages: " << stages.size() << " came";
+  return stages;
 }
 
 // The value of the measurement `name`; a test failure (and NaN) when absent.
