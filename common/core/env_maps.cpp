@@ -4,45 +4,37 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
-#include <mutex>
 #include <sstream>
 #include <vector>
 
 #include "common/core/error.hpp"
+#include "common/core/kept.hpp"
 
 namespace ts::envmaps {
 namespace {
 // The maps made so far, by what makes them: a figure's passes ask for the
 // same map many times (the dynamic cube map's background, in every face of
-// every pass it measures), and each costs a world colour per texel.  A few
-// are kept, the most recent last; the pictures are shared and never changed.
-struct Made {
+// every pass it measures), and each costs a world colour per texel.
+struct MapInputs {
   Param p;
   int face;
   glm::dmat3 view;
-  std::shared_ptr<const Image> image;
+  bool operator==(const MapInputs& o) const { return p == o.p && face == o.face && view == o.view; }
 };
-std::mutex g_madeMutex;
-std::vector<Made> g_made;
+Kept<MapInputs, std::shared_ptr<const Image>> g_maps(8);
 
 std::shared_ptr<const Image> mapPicture(Param p, int face, const glm::dmat3& sphereView) {
-  {
-    std::lock_guard<std::mutex> lock(g_madeMutex);
-    for (const Made& m : g_made)
-      if (m.p == p && m.face == face && m.view == sphereView) return m.image;
-  }
-  const Size sz = mapSize(p, face);
-  const int faces = p == kCube ? 6 : 1;
-  const glm::dmat3 toWorld = glm::transpose(sphereView);
-  auto img = std::make_shared<Image>(sz.w, sz.h * faces);
-  for (int f = 0; f < faces; ++f)
-    for (int j = 0; j < sz.h; ++j)  // row j is t = (j + 1/2) / h (a cube face's rows f h + j)
-      for (int i = 0; i < sz.w; ++i)
-        img->set(i, f * sz.h + j, toRgba(worldColour(texelDir(p, f, (i + 0.5) / sz.w, (j + 0.5) / sz.h, toWorld))));
-  std::lock_guard<std::mutex> lock(g_madeMutex);
-  if (g_made.size() >= 8) g_made.erase(g_made.begin());
-  g_made.push_back({p, face, sphereView, img});
-  return img;
+  return g_maps.get({p, face, sphereView}, [&] {
+    const Size sz = mapSize(p, face);
+    const int faces = p == kCube ? 6 : 1;
+    const glm::dmat3 toWorld = glm::transpose(sphereView);
+    auto img = std::make_shared<Image>(sz.w, sz.h * faces);
+    for (int f = 0; f < faces; ++f)
+      for (int j = 0; j < sz.h; ++j)  // row j is t = (j + 1/2) / h (a cube face's rows f h + j)
+        for (int i = 0; i < sz.w; ++i)
+          img->set(i, f * sz.h + j, toRgba(worldColour(texelDir(p, f, (i + 0.5) / sz.w, (j + 0.5) / sz.h, toWorld))));
+    return std::shared_ptr<const Image>(img);
+  });
 }
 }  // namespace
 

@@ -2,11 +2,10 @@
 
 #include <cstdio>
 #include <cstring>
-#include <map>
-#include <mutex>
 #include <string>
 
 #include "common/core/error.hpp"
+#include "common/core/kept.hpp"
 
 namespace ts::gl {
 #define TS_GL_DEFINE_POINTER(name) __thread decltype(p_##name) p_##name = nullptr;
@@ -61,22 +60,12 @@ bool hasAnisotropicFiltering() {
 // process may hold an offscreen context and a window's, of different
 // versions): the renderer makes textures by the hundred, each asking for
 // anisotropic filtering, and each answer walks some 200 extension names.
-static std::mutex g_extensionsMutex;
-static std::map<std::string, bool> g_extensions;
 static bool hasExtensionUncached(const char* name);
 
 bool hasExtension(const char* name) {
   if (!g_loaded) return false;
-  const std::string key = rendererString() + "|" + versionString() + "|" + name;
-  {
-    std::lock_guard<std::mutex> lock(g_extensionsMutex);
-    auto it = g_extensions.find(key);
-    if (it != g_extensions.end()) return it->second;
-  }
-  const bool has = hasExtensionUncached(name);
-  std::lock_guard<std::mutex> lock(g_extensionsMutex);
-  g_extensions[key] = has;
-  return has;
+  static Kept<std::string, bool> answers(64);
+  return answers.get(rendererString() + "|" + versionString() + "|" + name, [&] { return hasExtensionUncached(name); });
 }
 
 static bool hasExtensionUncached(const char* name) {

@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,6 +24,7 @@
 #include "common/core/env_maps.hpp"
 #include "common/core/frame.hpp"
 #include "common/core/image.hpp"
+#include "common/core/kept.hpp"
 
 namespace envlight {
 constexpr double kPi = 3.14159265358979323846;
@@ -70,25 +70,18 @@ inline glm::dvec3 specular(glm::dvec3 r, const std::vector<Light>& ls) {
 // draws the same map in several passes and views, and each texel costs a
 // pow() per light.  A few are kept; the pictures are shared, never changed.
 inline std::shared_ptr<const ts::Image> lightingMapTexels(int nLights, int face) {
-  static std::mutex mutex;
-  static std::vector<std::pair<std::pair<int, int>, std::shared_ptr<const ts::Image>>> made;
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    for (const auto& [key, image] : made)
-      if (key == std::make_pair(nLights, face)) return image;
-  }
-  const std::vector<Light> ls = lights(nLights);
-  auto img = std::make_shared<ts::Image>(face, 6 * face);
-  for (int f = 0; f < 6; ++f)
-    for (int j = 0; j < face; ++j)
-      for (int i = 0; i < face; ++i) {
-        const glm::dvec3 d = ts::envmaps::cubeDir(f, (i + 0.5) / face, (j + 0.5) / face);
-        img->set(i, f * face + j, ts::envmaps::toRgba(specular(d, ls)));
-      }
-  std::lock_guard<std::mutex> lock(mutex);
-  if (made.size() >= 8) made.erase(made.begin());
-  made.push_back({{nLights, face}, img});
-  return img;
+  static ts::Kept<std::pair<int, int>, std::shared_ptr<const ts::Image>> made(8);
+  return made.get({nLights, face}, [&] {
+    const std::vector<Light> ls = lights(nLights);
+    auto img = std::make_shared<ts::Image>(face, 6 * face);
+    for (int f = 0; f < 6; ++f)
+      for (int j = 0; j < face; ++j)
+        for (int i = 0; i < face; ++i) {
+          const glm::dvec3 d = ts::envmaps::cubeDir(f, (i + 0.5) / face, (j + 0.5) / face);
+          img->set(i, f * face + j, ts::envmaps::toRgba(specular(d, ls)));
+        }
+    return std::shared_ptr<const ts::Image>(img);
+  });
 }
 inline ts::TextureDesc lightingMap(int nLights, int face) {
   std::shared_ptr<const ts::Image> img = lightingMapTexels(nLights, face);

@@ -7,11 +7,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <array>
-#include <map>
-#include <mutex>
 #include <utility>
 #include <vector>
 
+#include "common/core/kept.hpp"
 #include "common/core/layout.hpp"
 #include "common/gl/gl_listing.hpp"
 #include "common/core/orbit_camera.hpp"
@@ -182,16 +181,8 @@ inline Mirror mirrorNear(const envmap::Pixels& ref, const glm::mat4& projection,
 // texel) made once per process for each (parameterization, face size):
 // every figure prints the same four, and it was a fifth of the demo's time.
 inline envmap::Uniformity keptUniformity(envmap::Param p, int face) {
-  static std::mutex lock;
-  static std::map<std::pair<int, int>, envmap::Uniformity> kept;
-  {
-    std::lock_guard<std::mutex> g(lock);
-    auto it = kept.find({int(p), face});
-    if (it != kept.end()) return it->second;
-  }
-  const envmap::Uniformity u = envmap::uniformity(p, face);
-  std::lock_guard<std::mutex> g(lock);
-  return kept.emplace(std::make_pair(int(p), face), u).first->second;
+  static ts::Kept<std::pair<int, int>, envmap::Uniformity> kept(4 * envmap::kParams);
+  return kept.get({int(p), face}, [&] { return envmap::uniformity(p, face); });
 }
 
 // ---- all of the above, as the demo prints them -----------------------------
