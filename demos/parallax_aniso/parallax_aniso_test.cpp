@@ -588,6 +588,23 @@ TEST(Stage, TheSingleViewsFirstStageIsItsWholePicture) {
   EXPECT_FALSE(says(staged, "(measuring)"));
 }
 
+// A key that shows a mode the single view's first stage did not measure
+// (c: the split screen's other half) before the table is in: the view waits
+// for it ("rendering the modes ..."), never draws a picture it lacks.  The
+// control: the same stage without the key draws its picture.
+TEST(Stage, AKeyThatShowsAModeTheStageLacksWaits) {
+  const std::vector<std::string> flags = {"--res", "80", "--rays", "2"};
+  const std::vector<ts::Measurements> stages = firstStages(flags);
+  ASSERT_EQ(stages.size(), 1u);
+  std::vector<std::string> compared = flags;
+  compared.push_back("--compare");
+  ts::test::Demo keyed("parallax_aniso", compared), plain("parallax_aniso", flags);
+  keyed.measured = plain.measured = stages[0];
+  EXPECT_TRUE(says(keyed, "rendering the modes"));
+  EXPECT_EQ(keyed.frame(1024, 560).panels.size(), plain.frame(1024, 560).panels.size() - 1);
+  EXPECT_FALSE(says(plain, "rendering the modes"));
+}
+
 TEST(Stage, TheModesViewsFirstStageIsCoarseAndSaysSo) {
   const std::vector<std::string> flags = {"--res", "80", "--rays", "4", "--view", "modes"};
   ts::test::Demo plain("parallax_aniso", flags);

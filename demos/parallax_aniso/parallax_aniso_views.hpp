@@ -193,6 +193,10 @@ inline void Views::buildWaiting(ts::Frame& f) const {
 
 inline void Views::buildSingle(ts::Frame& f, const Shown& shown) const {
   namespace L = ts::layout;
+  // A window's first stage holds only the modes it was asked for: a key that
+  // shows another (c, b, m) before the table is in waits for it.
+  for (int m : {mode_, compare_ ? against_ : mode_})
+    if (!shown.of(m).image) return buildWaiting(f);
   const Table& table = *shown.table;
   // The render as large as fits between the header (two lines) and the numbers (two lines).
   auto pictureAt = [&](int s) {
