@@ -70,11 +70,22 @@ wine reg add 'HKLM\Software\Microsoft\Windows NT\CurrentVersion\AeDebug' /v Debu
 t_wine=$(now)
 # w SECONDS EXE ARGS...: runs a Windows program from the current folder;
 # its stdout and stderr in ./out and ./err with Windows' \r removed.
+# Wine now and then ends a run with status 1 and nothing on stderr (twice
+# in about 8,000 runs: a figure, and a malformed file that fails with its
+# message on every other run; 400 reruns of each under load never did).  The
+# programs say why on every failure of their own, so such a run is Wine's:
+# it is noted, counted and run once more; a second one in a row stands.
 w() {
   local limit=$1 exe=$2
   shift 2
   timeout "$limit" wine "$WIN/$exe.exe" "$@" </dev/null >out.raw 2>err.raw
   local rc=$?
+  if [ "$rc" -ne 0 ] && [ "$rc" -ne 124 ] && [ ! -s err.raw ]; then
+    echo "  $exe $*: Wine ended it with status $rc and nothing on stderr; run once more"
+    echo >>"$T/silent_reruns"
+    timeout "$limit" wine "$WIN/$exe.exe" "$@" </dev/null >out.raw 2>err.raw
+    rc=$?
+  fi
   tr -d '\r' <out.raw >out
   tr -d '\r' <err.raw >err
   return $rc
@@ -134,20 +145,19 @@ for json in "$T/linux"/*.json; do
   rc=$?
   # Wine on Xvfb now and then ends a run that has written its output with a
   # page fault (the same address each time; no run faulted twice in a row),
-  # once, with another Xvfb job beside it, could not make GLFW's helper
-  # window ("Failed to create helper window: Resource data not found"), and
-  # once ended a run with status 1 and nothing on stderr (the program says
-  # why on every failure of its own; that run did not recur in 7 more).  Such
-  # a run is counted and run once more; a second fault fails.
+  # and once, with another Xvfb job beside it, could not make GLFW's helper
+  # window ("Failed to create helper window: Resource data not found").  Such
+  # a run is counted and run once more; a second fault fails.  (A silent
+  # status 1 is w's to run again.)
   wine_fault='Unhandled|Failed to create helper window'
-  faulted() { grep -Eq "$wine_fault" "$T/win/err" || { [ "$1" -ne 0 ] && [ ! -s "$T/win/err" ]; }; }
-  if faulted "$rc"; then
+  faulted() { grep -Eq "$wine_fault" "$T/win/err"; }
+  if faulted; then
     faults=$((faults + 1))
     echo "  $id: Wine reported a fault (exit status $rc): $(grep -Em1 "$wine_fault" "$T/win/err" || echo 'nothing on stderr'); run once more"
     rm -f "$T/win/$id.png" "$T/win/$id.json"
     (cd "$T/win" && w 120 "$demo" "${args[@]}")
     rc=$?
-    if faulted "$rc"; then
+    if faulted; then
       fail "$id: Wine reported a fault twice (exit status $rc): $(grep -Em1 "$wine_fault" "$T/win/err" || echo 'nothing on stderr')"
       continue
     fi
@@ -270,5 +280,6 @@ t_end=$(now)
 awk -v a="$t0" -v b="$t_wine" -v c="$t_linux" -v d="$t_figs" -v e="$t_cli" -v f="$t_win" -v g="$t_end" 'BEGIN {
   printf "times: Wine start %.1f s, Linux figures %.1f s, Windows figures %.1f s, command line %.1f s, windows %.1f s, child %.1f s\n",
     b - a, c - b, d - c, e - d, f - e, g - f }'
-echo "wine_test: $checks checks passed, $failures failed"
+silent=0 && [ -f "$T/silent_reruns" ] && silent=$(wc -l <"$T/silent_reruns")
+echo "wine_test: $checks checks passed, $failures failed; $silent runs rerun after Wine ended them silently"
 [ "$failures" -eq 0 ]
