@@ -13,23 +13,32 @@ namespace ts::window_parts {
 bool FrameLoop::running() const { return !glfwWindowShouldClose(win) && !input.quit; }
 
 // Polls the events, or sleeps until one comes while nothing needs a frame.
+constexpr double kActiveFrame = 1.0 / 30, kAloneFrame = 0.2;  // seconds between frames while measuring
 void FrameLoop::waitForEvents() {
   // Idle is idle: with nothing animating, no key waiting and no test
   // counting frames, wait for an event instead of drawing again (while a
   // changed line of the GL pane is highlighted, wake to fade it).
   // While a measurement runs (and nothing else asks for frames) the loop
-  // draws about 30 frames a second for the progress, leaving the cores to
-  // the worker; --frames (tests) counts those frames too.
+  // draws frames for the progress: about 30 a second for 2 s after the
+  // student's last key or mouse action, so that what they did shows at
+  // once and the progress runs smoothly, and 5 a second in a window left
+  // alone (the start, a long measurement): a frame of a large window costs
+  // llvmpipe 10-20 ms of the two cores the worker needs, so 30 a second
+  // took about a third of them (the start's complete picture came 0.04-0.09 s
+  // later).  Any event, and a stage or the result (the worker posts one),
+  // wakes the loop at once either way.  --frames (tests) counts those
+  // frames too.
   // A --keys key may wait for an event (TS_TEST_KEY_WHEN) or a time
   // (TS_TEST_KEY_INTERVAL_MS): the loop then waits instead of spinning.
   bool keyReady = !input.keys.empty() && testLog.keyDue(measuring, worker->progress(), measuredOnce);
   double keyWait = input.keys.empty() ? 0.0 : testLog.untilKey();
   busy = dirty || redraw || scene.live() || keyReady || !input.dropped.empty() ||
          (flags.frames && !measuring && input.keys.empty());
+  const double measuringFrame = glfwGetTime() - lastAction < 2.0 ? kActiveFrame : kAloneFrame;
   if (busy) glfwPollEvents();
-  else if (keyWait > 0) glfwWaitEventsTimeout(measuring ? std::min(keyWait, 1.0 / 30) : keyWait);
+  else if (keyWait > 0) glfwWaitEventsTimeout(measuring ? std::min(keyWait, measuringFrame) : keyWait);
   else if (measuring || !input.keys.empty())  // the progress moves; the worker wakes us when done
-    glfwWaitEventsTimeout(1.0 / 30);
+    glfwWaitEventsTimeout(measuring ? measuringFrame : kActiveFrame);
   else if (scene.animating()) glfwWaitEventsTimeout(0.05);           // an animation that steps now and then
   else if (pane.visible && glfwGetTime() < pane.marksUntil() + 0.1)  // the marks fade on time
     glfwWaitEventsTimeout(0.25);

@@ -136,6 +136,9 @@ void connectInput(GLFWwindow* win, const CommonFlags& flags, Input* in) {
 // The mouse: a drag or the wheel turns the orbit options; a dropped file
 // is --texture FILE (a bad one: one line, the picture stays).
 void FrameLoop::applyMouse() {
+  if (input.dragX != 0 || input.dragY != 0 || input.wheel != 0 || input.lightX != 0 || input.lightY != 0 ||
+      input.clicked || !input.dropped.empty())
+    lastAction = glfwGetTime();
   if (mouseToOptions(&input, opts)) dirty = true, record = pane.visible, keyChanged();
   for (const std::string& path : input.dropped) {
     if (!opts.has("texture")) {
@@ -176,6 +179,7 @@ void FrameLoop::clickScene() {
 void FrameLoop::applyKey() {
   if (input.keys.empty() || !testLog.keyDue(measuring, worker->progress(), measuredOnce)) return;
   testLog.keyTaken();
+  lastAction = glfwGetTime();
   char k = input.keys.front();
   testLog.line("key", std::string(1, std::isprint(static_cast<unsigned char>(k)) ? k : '?'));
   input.keys.erase(0, 1);

@@ -141,8 +141,9 @@ class FrameLoop {
   bool record = false, resultIn = false;  // the GL pane needs a new recording (of a new measurement)
   int recordedW = 0, recordedH = 0;       // the figure size of its last recording
   // Pacing and counting frames.
-  bool redraw = true;  // draw again without waiting for an event
-  bool busy = false;   // this frame was drawn without waiting for an event
+  bool redraw = true;        // draw again without waiting for an event
+  bool busy = false;         // this frame was drawn without waiting for an event
+  double lastAction = -1e9;  // glfwGetTime() of the last key, drag, wheel, click or drop taken
   double fps = 0, fpsSince = glfwGetTime();
   int fpsFrame = 0;
   int frame = 0;

@@ -61,6 +61,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <future>
 #include <memory>
 #include <utility>
 #include <string>
@@ -226,18 +227,35 @@ ts::Measurements FilterZoo::measure(ts::Renderer& r) {
   if (ts::measureStaged() && view_ != kKernels && view_ != kBias && view_ != kMemory) {
     // 0. In a window, a first stage at once: the GL methods' pictures, the
     // CPU methods' coarse (coarseRow), refined in place by what follows.
+    // Once the coarse pictures are made, the current azimuth's CPU work (the
+    // exact integral, the CPU methods, the reads counted: some 0.45
+    // CPU-seconds, no GL) starts on a thread of its own, beside GL's
+    // pictures (llvmpipe draws the anisotropic filter in about 0.1 s) and the
+    // window's first frames.  It keeps to one thread until the stage is
+    // handed over (RowShare), so that the stage is not delayed much, then
+    // takes both cores; the second stage finds it made.
+    std::future<void> cpu;  // waited for last, however this ends
+    struct Share {          // closed for the first stage, open again however it ends
+      Share() { RowShare::get().set(false); }
+      ~Share() { RowShare::get().set(true); }
+    } share;
+    auto startCpu = [&] {
+      if (!cpu.valid()) cpu = std::async(std::launch::async, cpuRowWork, scene_, pattern_, double(azimuth_), bias_);
+    };
     Result first = res;
     for (size_t k = 0; k < azs.size(); ++k) {
       if (view_ != kAzimuthGrid && azs[k] != double(azimuth_)) continue;  // the other views show one azimuth
       if (azs[k] == double(azimuth_)) first.current = int(first.rows.size());
-      first.rows.push_back(coarseRow(r, scene_, pattern_, azs[k], bias_));
+      first.rows.push_back(coarseRow(r, scene_, pattern_, azs[k], bias_, startCpu));
     }
     ts::Measurements stage;
     stage.detail = first;
     ts::measureStage(std::move(stage));
+    RowShare::get().set(true);
     // A second stage: the current azimuth's row in full, before anything
     // else.  It is all the methods view shows (pictures, RMS, reads), so that
     // view is complete here; the other azimuths' rows and the numbers follow.
+    cpu.get();
     currentRow = std::make_unique<Row>(measureRow(r, scene_, pattern_, azimuth_, bias_, true));
     for (Row& row : first.rows)
       if (row.azimuth == double(azimuth_)) row = *currentRow;

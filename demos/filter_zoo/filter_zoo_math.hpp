@@ -55,7 +55,9 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <condition_variable>
 #include <cstdint>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -638,6 +640,43 @@ struct Picture {
   std::vector<glm::dvec4> exact;  // kExact only: the unrounded averages
   double meanReads = 0;
 };
+// Whether parallelRows may use its second thread.  A window's measurement
+// closes it while its first stage is drawn beside CPU work it started on a
+// thread of its own (FilterZoo::measure): that work keeps to one thread
+// until the stage is handed over, so that the stage is not delayed much.
+// The pictures are the same either way (parallelRows computes each row as
+// one thread would).
+class RowShare {
+ public:
+  static RowShare& get() {
+    static RowShare s;
+    return s;
+  }
+  void set(bool open) {
+    std::lock_guard<std::mutex> g(m_);
+    open_ = open;
+    cv_.notify_all();
+  }
+  // Waits until the share is open or `done()`.
+  template <class Done>
+  void wait(Done done) {
+    std::unique_lock<std::mutex> g(m_);
+    cv_.wait(g, [&] { return open_ || done(); });
+  }
+  void wake() {
+    std::lock_guard<std::mutex> g(m_);
+    cv_.notify_all();
+  }
+  bool isOpen() {
+    std::lock_guard<std::mutex> g(m_);
+    return open_;
+  }
+
+ private:
+  std::mutex m_;
+  std::condition_variable cv_;
+  bool open_ = true;
+};
 // Rows 0 .. h-1 shared by two threads (the machine's two cores), each taking
 // the next row not yet taken: a picture's rows differ in cost (the horizon's
 // footprints are the long ones).  Every pixel is computed as one thread would
@@ -649,8 +688,12 @@ inline void parallelRows(int h, RowFn row) {
   auto work = [&] {
     for (int r; (r = next.fetch_add(1)) < h;) row(r);
   };
-  std::thread other(work);
+  std::thread other([&] {
+    RowShare::get().wait([&] { return next.load() >= h; });
+    work();
+  });
   work();
+  RowShare::get().wake();  // a second thread still waiting: the rows are done
   other.join();
 }
 
@@ -793,8 +836,9 @@ inline void clipStripV(const StripPoly& in, StripPoly& out, double c, bool below
   }
 }
 inline double exactTexels(const View& v, const std::vector<char>& mask) {
-  long n = 0, px = 0;
-  for (int row = 0; row < v.h; ++row)
+  std::atomic<long> total{0}, pixels{0};  // integers: the same totals in any order
+  parallelRows(v.h, [&](int row) {
+    long n = 0, px = 0;
     for (int col = 0; col < v.w; ++col) {
       if (!mask[size_t(row) * size_t(v.w) + size_t(col)]) continue;
       const ts::Polygon2 poly = v.preimage(col, row);
@@ -820,7 +864,9 @@ inline double exactTexels(const View& v, const std::vector<char>& mask) {
       }
       ++px;
     }
-  return px ? double(n) / double(px) : 0;
+    total += n, pixels += px;
+  });
+  return pixels ? double(total) / double(pixels) : 0;
 }
 
 // RMS (8-bit units over R, G, B) of an image against the exact averages, where mask is set.

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -148,14 +149,17 @@ inline const Pyramids& pyramids(int scene, int pattern) {
 inline double texelsPerPixel(int method, const Pyramids& p, const View& v, double bias, const std::vector<char>& mask) {
   if (method == kAniso16) return -1;
   if (method == kExact) return exactTexels(v, mask);
-  long reads = 0, n = 0;
-  for (int row = 0; row < v.h; ++row)
+  std::atomic<long> reads{0}, pixels{0};  // integers: the same totals in any order
+  parallelRows(v.h, [&](int row) {
+    long rowReads = 0, n = 0;
     for (int col = 0; col < v.w; ++col) {
       if (!mask[size_t(row) * size_t(v.w) + size_t(col)]) continue;
-      lookup(method, p, v, col + 0.5, v.h - 1 - row + 0.5, bias, &reads);
+      lookup(method, p, v, col + 0.5, v.h - 1 - row + 0.5, bias, &rowReads);
       ++n;
     }
-  return n ? double(reads) / double(n) : 0;
+    reads += rowReads, pixels += n;
+  });
+  return pixels ? double(reads) / double(pixels) : 0;
 }
 
 // ---------------------------------------------------------------- magnification, read from GL
@@ -295,6 +299,14 @@ inline std::shared_ptr<const CpuResult> cpuResult(int method, int scene, int pat
   return cache.emplace(key, out).first->second;
 }
 
+// The CPU's share of measureRow(..., counts = true) at one azimuth, made and
+// kept (exactPicture, cpuResult; no GL): a window's measurement starts it on
+// threads of their own while its first stage is drawn.
+inline void cpuRowWork(int scene, int pattern, double az, double bias) {
+  exactPicture(scene, pattern, az, pyramids(scene, pattern));
+  for (int m = 0; m < kMethodCount; ++m) cpuResult(m, scene, pattern, az, bias);
+}
+
 // One scene at one azimuth: every method's picture, its RMS against the exact
 // integral over the mask and its texels read.
 inline Row measureRow(ts::Renderer& r, int scene, int pattern, double az, double bias, bool counts) {
@@ -329,23 +341,27 @@ inline Row measureRow(ts::Renderer& r, int scene, int pattern, double az, double
 // The window's first stage of a row (ts::measureStage): GL's pictures as
 // measured, the CPU methods' at a quarter of the resolution (coarsePicture,
 // a sixteenth of the work), shown with GL_NEAREST and tagged "refining"; no
-// RMS or reads yet (NaN).  Never in a figure.
-inline Row coarseRow(ts::Renderer& r, int scene, int pattern, double az, double bias) {
+// RMS or reads yet (NaN).  Never in a figure.  The CPU's pictures come
+// first; `beforeGl` (may be null) is called before GL's (llvmpipe draws the
+// anisotropic filter's in about 0.1 s, the others in a millisecond or two).
+inline Row coarseRow(ts::Renderer& r, int scene, int pattern, double az, double bias,
+                     const std::function<void()>& beforeGl = nullptr) {
   Row row;
   row.azimuth = az;
   const View v = sceneView(scene, az);
   for (int m = 0; m < kMethodCount; ++m) {
     row.rms[size_t(m)] = row.reads[size_t(m)] = std::nan("");
-    if (byGL(m)) {
-      row.pictures[size_t(m)] = pictureTexture(sceneGlPicture(r, scene, pattern, az, m, bias), methodKey(m), scene, az);
-      continue;
-    }
+    if (byGL(m)) continue;
     ts::measureProgress(0.02 + 0.08 * m / kMethodCount);
     ts::TextureDesc& t = row.pictures[size_t(m)];
     t = pictureTexture(coarsePicture(m, pyramids(scene, pattern), v, bias, 4, kBackground), methodKey(m), scene, az);
     t.minFilter = t.magFilter = GL_NEAREST;
     t.params.push_back({"stage", "coarse"});
   }
+  if (beforeGl) beforeGl();
+  for (int m = 0; m < kMethodCount; ++m)
+    if (byGL(m))
+      row.pictures[size_t(m)] = pictureTexture(sceneGlPicture(r, scene, pattern, az, m, bias), methodKey(m), scene, az);
   return row;
 }
 

@@ -377,4 +377,57 @@ TEST(FilterZoo, FiguresPrintTheirMeasurements) {
     }
   }
 }
+
+// A window's measurement (ts::measureStage): a first stage with GL's
+// pictures and the CPU methods' coarse, no numbers; a second with the
+// current azimuth's row whole, the result's.  That row's CPU work runs on a
+// thread of its own beside the first stage, keeping to one thread until the
+// stage is handed over (RowShare): its pictures, RMS and reads are those
+// computed here again, one call at a time without the kept copies.  At
+// azimuth 30, which nothing else in this program measures, the staged
+// measurement computes the row itself.
+TEST(Stage, TheSecondStageIsTheCurrentRowAsTheSerialWorkMakesIt) {
+  Demo staged("filter_zoo", {"--azimuth", "30"});
+  const std::vector<ts::Measurements> stages = ts::test::measureInStages(staged);
+  ASSERT_EQ(stages.size(), 2u);
+  const Result *result = staged.measured.detailAs<Result>(), *first = stages[0].detailAs<Result>(),
+               *second = stages[1].detailAs<Result>();
+  ASSERT_TRUE(result && first && second);
+  const Row &row = result->rows[size_t(result->current)], &one = first->rows[size_t(first->current)],
+            &two = second->rows[size_t(second->current)];
+  ASSERT_EQ(row.azimuth, 30.0);
+  const Pyramids& p = pyramids(kSlant, kChecker);
+  const View v = sceneView(kSlant, 30);
+  const std::vector<char> mask = sceneMask(kSlant, v);
+  const Picture exact = cpuPicture(kExact, p, v, 0, mask, kBackground);
+  for (int m = 0; m < kMethodCount; ++m) {
+    SCOPED_TRACE(methodKey(m));
+    const size_t k = size_t(m);
+    EXPECT_EQ(two.rms[k], row.rms[k]);
+    EXPECT_EQ(two.reads[k], row.reads[k]);
+    EXPECT_EQ(two.pictures[k].image->pixels, row.pictures[k].image->pixels);
+    EXPECT_TRUE(std::isnan(one.rms[k]) && std::isnan(one.reads[k])) << "the first stage has no numbers";
+    if (byGL(m)) {
+      EXPECT_EQ(one.pictures[k].image->pixels, row.pictures[k].image->pixels) << "GL's pictures come whole at once";
+      EXPECT_EQ(row.reads[k], texelsPerPixel(m, p, v, 0, mask));
+      continue;
+    }
+    const Picture alone = m == kExact ? exact : cpuPicture(m, p, v, 0, mask, kBackground);
+    EXPECT_EQ(row.pictures[k].image->pixels, pictureTexture(alone.image, methodKey(m), kSlant, 30).image->pixels);
+    EXPECT_NE(one.pictures[k].image->width, alone.image.width) << "the first stage's CPU pictures are coarse";
+    EXPECT_EQ(row.reads[k], m == kExact ? exactTexels(v, mask) : alone.meanReads);
+    if (m != kExact) EXPECT_EQ(row.rms[k], rmsAgainst(alone.image, exact.exact, mask));
+  }
+  EXPECT_TRUE(RowShare::get().isOpen());
+}
+
+// Superseded after its first stage, while the row's CPU work runs beside it:
+// the measurement ends (the work is waited for, not left running) and
+// parallelRows has both threads again.
+TEST(Stage, SupersededAfterTheFirstStageItEndsAndSharesTheRowsAgain) {
+  Demo d("filter_zoo", {"--azimuth", "60"});
+  const std::vector<ts::Measurements> stages = ts::test::measureInStages(d, 1);
+  EXPECT_EQ(stages.size(), 1u);
+  EXPECT_TRUE(RowShare::get().isOpen());
+}
 }  // namespace
