@@ -157,7 +157,11 @@ class BumpMapping final : public ts::Scene {
       ~StageRenders() { scene.stageRenders_ = nullptr; }
     } stageRenders(*this);
     if (ts::measureStaged()) {
-      firstStage(draw);
+      referenceStage(draw, true);
+      // R's picture whole, the view's other pictures as they are, before what
+      // needs R drawn a second time (its normals, for the numbers): refined in
+      // place, the numbers still coming.  measureAll takes this render again.
+      if (view_ != 0 || method_ == bump::kReference) referenceStage(draw, false);
       // The second stage: the view's own numbers and R's pictures, complete,
       // when its cells need nothing but the methods' comparison with R (not
       // seed 002's tilt cell, not the fixed-function methods' extra notes, not
@@ -179,19 +183,20 @@ class BumpMapping final : public ts::Scene {
     measuredCache_.push_back({key, std::move(kept), viewport});
     return m;
   }
-  // A window's first stage (ts::measureStage), before the 40-odd renders the
-  // numbers need: the pictures this view shows that measure() draws, at
-  // once.  R from the coarse grid (tagged refining, replaced in place), the
-  // fixed-function methods as they are; every picture's note is there, its
-  // numbers "(measuring)" (the stage's list is empty).  The other pictures
-  // are GL's own, drawn by the window.  Elsewhere (--png, make_figures, the
-  // tests) there is no stage.
-  void firstStage(const bump::RenderFn& draw) const {
+  // A window's stage (ts::measureStage), before the 40-odd renders the
+  // numbers need: the pictures this view shows that measure() draws.  R from
+  // the coarse grid at once (`coarse`: tagged refining, replaced in place),
+  // or whole (recorded, as measureAll records it); the fixed-function methods
+  // as they are; every picture's note is there, its numbers "(measuring)"
+  // (the stage's list is empty).  The other pictures are GL's own, drawn by
+  // the window.  Elsewhere (--png, make_figures, the tests) there is no stage.
+  void referenceStage(const bump::RenderFn& draw, bool coarse) const {
     bump::Found first;
     const bool all = view_ == 3, normals = view_ == 2;
     if (view_ != 0 || method_ == bump::kReference) {
       bump::RenderSpec s = normals ? bump::shownNormalsSpec() : bump::RenderSpec{bump::kReference};
-      s.coarseGrid = true;
+      s.coarseGrid = coarse;
+      if (!coarse) s.recordTo = normals ? &first.refNormalsGL : &first.picturesGL[bump::kReference];
       (normals ? first.refNormals : first.pictures[bump::kReference]) = std::make_shared<const ts::Image>(draw(s));
     }
     for (int m = 0; m < bump::kMethodCount; ++m) {
@@ -199,7 +204,7 @@ class BumpMapping final : public ts::Scene {
         first.pictures[m] = std::make_shared<const ts::Image>(draw({m}));
       first.cmp[m] = bump::Compare{};
     }
-    first.coarseReference = true;
+    first.coarseReference = coarse;
     ts::Measurements stage;
     stage.detail = first;
     ts::measureStage(std::move(stage));
@@ -510,7 +515,7 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
               : gl != found->picturesGL.end() ? gl->second
                                               : nullptr);
       if (m == bump::kReference && found->coarseReference)
-        L::refiningTag(f, c.picture);  // the coarse grid (firstStage)
+        L::refiningTag(f, c.picture);  // the coarse grid (referenceStage)
     } else {
       L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
     }

@@ -16,6 +16,7 @@
 // differs from 2 by 3 %, and the 8-bit normals add their own).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -119,25 +120,20 @@ TEST(BumpMapping, AWindowsFirstStageShowsThePicturesNotTheNumbers) {
   EXPECT_GT(printed, 0u);
 }
 
-// A window's second stage: the default view (B1 beside R) complete before
-// the rest of the measurement, its numbers the result's own (the same
-// renders, the same comparisons) and R the full grid's, so the frame built
-// from it is the result's frame: the window's picture stops changing there.
-// The control: the first stage's frame is not the result's.
-TEST(BumpMapping, AWindowsSecondStageIsTheDefaultViewComplete) {
+// A window's later stages.  The second: R's picture whole (the full grid,
+// the result's picture), not tagged refining, its numbers still to come
+// (R's normals, which they need, not drawn yet).  The third: the default
+// view (B1 beside R) complete before the rest of the measurement, its
+// numbers the result's own (the same renders, the same comparisons), so the
+// frame built from it is the result's frame: the window's picture stops
+// changing there.  The controls: the first and second stages' frames are
+// not the result's.
+TEST(BumpMapping, AWindowsLaterStagesBringRWholeThenTheDefaultViewComplete) {
   Demo d("bump_mapping", {});
-  const std::vector<ts::Measurements> stages = ts::test::measureInStages(d, 2);  // the rest is not needed here
-  ASSERT_EQ(stages.size(), 2u);
-  const ts::Measurements& second = stages[1];
-  ASSERT_FALSE(second.empty());
-  for (const ts::Measurement& m : second) EXPECT_EQ(m.value, value(defaults(), m.name)) << m.name;
-  const bump::Found* found = second.detailAs<bump::Found>();
+  const std::vector<ts::Measurements> stages = ts::test::measureInStages(d, 3);  // the rest is not needed here
+  ASSERT_EQ(stages.size(), 3u);
   const bump::Found* result = defaults().detailAs<bump::Found>();
-  ASSERT_NE(found, nullptr);
   ASSERT_NE(result, nullptr);
-  EXPECT_FALSE(found->coarseReference);
-  EXPECT_EQ(ts::probe::countDiffering(*found->pictures.at(bump::kReference), *result->pictures.at(bump::kReference), 0),
-            0);
   auto texts = [&](const ts::Measurements& m) {
     d.measured = m;
     std::vector<std::string> out;
@@ -145,7 +141,29 @@ TEST(BumpMapping, AWindowsSecondStageIsTheDefaultViewComplete) {
     return out;
   };
   const std::vector<std::string> final = texts(defaults());
-  EXPECT_EQ(texts(second), final);
+  // The second stage: R whole, no numbers.
+  const bump::Found* whole = stages[1].detailAs<bump::Found>();
+  ASSERT_NE(whole, nullptr);
+  EXPECT_TRUE(stages[1].empty());
+  EXPECT_FALSE(whole->coarseReference);
+  ASSERT_TRUE(whole->pictures.count(bump::kReference));
+  EXPECT_EQ(ts::probe::countDiffering(*whole->pictures.at(bump::kReference), *result->pictures.at(bump::kReference), 0),
+            0);
+  const std::vector<std::string> second = texts(stages[1]);
+  EXPECT_NE(second, final);
+  EXPECT_EQ(std::count(second.begin(), second.end(), "refining"), 0);
+  EXPECT_TRUE(std::any_of(second.begin(), second.end(),
+                          [](const std::string& t) { return t.find("(measuring)") != std::string::npos; }));
+  // The third stage: the view complete.
+  const ts::Measurements& third = stages[2];
+  ASSERT_FALSE(third.empty());
+  for (const ts::Measurement& m : third) EXPECT_EQ(m.value, value(defaults(), m.name)) << m.name;
+  const bump::Found* found = third.detailAs<bump::Found>();
+  ASSERT_NE(found, nullptr);
+  EXPECT_FALSE(found->coarseReference);
+  EXPECT_EQ(ts::probe::countDiffering(*found->pictures.at(bump::kReference), *result->pictures.at(bump::kReference), 0),
+            0);
+  EXPECT_EQ(texts(third), final);
   EXPECT_NE(texts(stages[0]), final);  // the control: the first stage says "(measuring)"
 }
 

@@ -57,6 +57,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -304,15 +305,16 @@ struct Pyramids {
   Ripmap rip;
   Sat sat;
   ts::AreaIntegral exact;
-  ts::AreaIntegral exactLinear;  // of the linear-light values (0..1; alpha / 255)
-  explicit Pyramids(const ts::Image& img)
-      : base(img),
-        mip8(ts::buildMipChain(img)),
-        rip(img),
-        sat(img),
-        exact(img),
-        exactLinear(img.width, img.height, linearTexels(img)) {
+  explicit Pyramids(const ts::Image& img) : base(img), mip8(ts::buildMipChain(img)), rip(img), sat(img), exact(img) {
     for (const ts::Image& l : mip8) chain.emplace_back(l);
+  }
+  // The exact integral of the linear-light values (0..1; alpha / 255): only
+  // the kernels view asks for it, so it is made when first asked (a window's
+  // first picture does not wait for its 8 ms).
+  const ts::AreaIntegral& exactLinear() const {
+    std::call_once(linearOnce_,
+                   [&] { linear_ = std::make_unique<ts::AreaIntegral>(base.width, base.height, linearTexels(base)); });
+    return *linear_;
   }
   static std::vector<glm::dvec4> linearTexels(const ts::Image& img) {
     std::vector<glm::dvec4> t;
@@ -324,6 +326,10 @@ struct Pyramids {
     return t;
   }
   int levels() const { return int(chain.size()); }
+
+ private:
+  mutable std::once_flag linearOnce_;
+  mutable std::unique_ptr<ts::AreaIntegral> linear_;
 };
 
 // ---------------------------------------------------------------- 6. the lookups

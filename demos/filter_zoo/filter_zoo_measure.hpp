@@ -125,7 +125,7 @@ inline std::shared_ptr<const Picture> exactPicture(int scene, int pattern, doubl
   out->image = ts::Image(v.w, v.h, kBackground);
   out->exact.assign(size_t(v.w) * size_t(v.h), glm::dvec4(kBackground.r, kBackground.g, kBackground.b, 255));
   exactAverages(
-      linearLight ? p.exactLinear : p.exact, v, [&](int col, int row) { return v.coversPixel(col, row); },
+      linearLight ? p.exactLinear() : p.exact, v, [&](int col, int row) { return v.coversPixel(col, row); },
       [&](int col, int row, glm::dvec4 c) {
         if (linearLight) c = glm::dvec4(linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b), 255.0 * c.a);
         out->exact[size_t(row) * size_t(v.w) + size_t(col)] = c;
