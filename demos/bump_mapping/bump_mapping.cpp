@@ -427,9 +427,6 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
   else if (view_ == 1 && method_ == bump::kEmboss) shown = {method_, kTermCell, bump::kReference};
   else shown = {method_, bump::kReference};
   const bool keyed = normals || shown.size() == 3;  // a second line above: the key of a picture's colours
-  // Six narrow cells (view all) need a third line for emboss's contrasts, as do the compare view's three.
-  spec.n = int(shown.size()), spec.linesAbove = keyed ? 2 : 1, spec.linesBelow = shown.size() >= 3 ? 3 : 2;
-  std::vector<L::Cell> cells = L::flow({6, 6, float(width) - 6, float(height) - 6}, spec);
   // A number of measure() by name: R's own comparison is its [ideal] (its normal on the smooth torus).
   auto num = [&](const std::string& name, int m, const char* format) {
     return L::measured(measured, name + "[" + (m == bump::kReference ? "ideal" : kMethods[m].key) + "]", format);
@@ -441,86 +438,32 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
                        "%.3f");
   };
   auto bandDeg = [&](int b) { return L::given("emboss band: light to normal, degrees", bump::kEmbossBands[b], "%g"); };
-  auto picture = [&](const L::Cell& c, const std::string& id, const std::shared_ptr<const ts::Image>& img,
-                     const std::string& what, const ts::gl::CallList& gl) {
-    ts::TextureDesc t = ts::renderedImageTexture(*img, "bump_render", what, "bump_mapping");
-    t.renderedBy = gl;
-    f.panels.push_back(L::texturePanel(id, c.picture, f.addTexture(t)));
+  // Cell k's title, and its note as phrases (a line breaks between them, never inside one): empty while
+  // what it speaks of is still being measured.
+  auto titleOf = [&](int m) -> L::Text {
+    if (m == kTiltCell) return "B2's tilt along x against R's";
+    if (m == kTermCell)
+      return "B4's term (1+H-H')/2 alone, shown x" + L::given("emboss term's magnification", bump::kEmbossGain, "%g");
+    const bool noNormals = normals && kMethods[m].fixedFunction;
+    return std::string(kMethods[m].title) + (normals && !noNormals ? ", normals" : "");
   };
-  for (size_t k = 0; k < cells.size(); ++k) {
-    const L::Cell& c = cells[k];
-    const int m = shown[k];
-    const L::Box title = keyed ? L::halves(c.above).first : c.above;
+  auto noteOf = [&](int m) -> std::vector<L::Text> {
     if (m == kTiltCell) {
-      L::caption(f, title, "B2's tilt along x against R's", kWhite, c.scale);
-      auto rgba = [](ts::Rgba q) { return glm::vec4(q.r, q.g, q.b, 255) / 255.0f; };
-      L::legend(f, L::halves(c.above).second,
-                {{rgba(bump::kTiltWith), "with R"},
-                 {rgba(bump::kTiltAgainst), "against R"},
-                 {rgba(bump::kTiltUncounted), "not counted"}},
-                1);
-      if (!found || !found->seedTiltX) {  // a window's first stage: a CPU picture of the numbers' renders
-        L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
-        continue;
-      }
-      picture(c, "picture_seed002_tilt_x", found->seedTiltX, "seed002 x tilt against R", nullptr);
+      if (!found || !found->seedTiltX) return {};
       // Seed 002's claim, where its colours are: the near side (the lower third) mostly against R.
-      L::phrases(f, c.below,
-                 {"x tilt with R (+1) or against it (-1):",
-                  "near side (lower third) " + L::measured(measured, "tilt_agreement_x_near[seed002]", "%+.2f") + ",",
-                  "far side (upper third) " + L::measured(measured, "tilt_agreement_x_far[seed002]", "%+.2f")},
-                 kAmber, c.scale);
-      continue;
+      return {"x tilt with R (+1) or against it (-1):",
+              "near side (lower third) " + L::measured(measured, "tilt_agreement_x_near[seed002]", "%+.2f") + ",",
+              "far side (upper third) " + L::measured(measured, "tilt_agreement_x_far[seed002]", "%+.2f")};
     }
     if (m == kTermCell) {
-      L::caption(f, title,
-                 "B4's term (1+H-H')/2 alone, shown x" +
-                     L::given("emboss term's magnification", bump::kEmbossGain, "%g"),
-                 kWhite, c.scale);
-      auto rgba = [](ts::Rgba q) { return glm::vec4(q.r, q.g, q.b, 255) / 255.0f; };
-      L::legend(f, L::halves(c.above).second,
-                {{rgba(bump::kEmbossEdge),
-                  "light 1 within " + L::fmt("%g", bump::kEmbossBands[1]) + " deg of the normal"}},
-                1);
-      if (!found || !found->embossTerm) {
-        L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
-        continue;
-      }
-      picture(c, "picture_emboss_term", found->embossTerm, "emboss term", found->embossTermGL);
+      if (!found || !found->embossTerm) return {};
       // The contrast per band: where the light is along the normal the bricks are gone.
-      L::phrases(f, c.below,
-                 {"mean contrast |H-H'|:", band(0) + " inside the line,",
-                  band(1) + " at " + bandDeg(1) + "-" + bandDeg(2) + " deg,",
-                  band(2) + " at " + bandDeg(2) + "-" + bandDeg(3) + ",", band(3) + " beyond " + bandDeg(3) + " deg"},
-                 kAmber, c.scale);
-      continue;
+      return {"mean contrast |H-H'|:", band(0) + " inside the line,",
+              band(1) + " at " + bandDeg(1) + "-" + bandDeg(2) + " deg,",
+              band(2) + " at " + bandDeg(2) + "-" + bandDeg(3) + ",", band(3) + " beyond " + bandDeg(3) + " deg"};
     }
-    const bool isPicture = m == bump::kReference || kMethods[m].fixedFunction;  // drawn by measure()
+    if (!found || !found->cmp.count(m)) return {};
     const bool noNormals = normals && kMethods[m].fixedFunction;
-    L::caption(f, title, std::string(kMethods[m].title) + (normals && !noNormals ? ", normals" : ""), kWhite, c.scale);
-    if (normals && k == 0)  // one key for both pictures: each channel is 0.5 + 0.5 of an eye-space component
-      L::legend(f, L::halves(c.above).second,
-                {{{1.0f, 0.5f, 0.5f, 1.0f}, "n to the right (+x)"},
-                 {{0.5f, 1.0f, 0.5f, 1.0f}, "n up (+y)"},
-                 {{0.5f, 0.5f, 1.0f, 1.0f}, "n to the eye (+z)"}},
-                1);
-    if (!isPicture) {
-      f.panels.push_back(torusPanel(f, c.picture, {m, normals}));
-    } else if (found && (normals && m == bump::kReference ? found->refNormals != nullptr : found->pictures.count(m))) {
-      const bool n = normals && m == bump::kReference;
-      const auto gl = found->picturesGL.find(m);
-      picture(c, std::string("picture_") + kMethods[m].key, n ? found->refNormals : found->pictures.at(m),
-              std::string(kMethods[m].key) + (n ? " normals" : ""),
-              n                               ? found->refNormalsGL
-              : gl != found->picturesGL.end() ? gl->second
-                                              : nullptr);
-      if (m == bump::kReference && found->coarseReference)
-        L::refiningTag(f, c.picture);  // the coarse grid (referenceStage)
-    } else {
-      L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
-    }
-    if (!found || !found->cmp.count(m)) continue;
-    // The note as phrases: a line breaks between them, never inside one.
     std::vector<L::Text> note;
     if (m == bump::kReference)
       note = normals ? std::vector<L::Text>{"R's normals on the smooth torus:",
@@ -550,6 +493,84 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
       note.insert(note.end(), {"contrast " + band(0) + " with the light within " + bandDeg(1) + " deg of the normal,",
                                band(3) + " beyond " + bandDeg(3) + " deg"});
     }
+    return note;
+  };
+  // Six narrow cells (view all) need a third line for emboss's contrasts, as do the compare view's three; a
+  // narrow window wraps the titles and the notes rather than cut them (flowFitting: at the figures' sizes
+  // every caption fits these lines, and the layout is flow()'s).
+  spec.n = int(shown.size()), spec.linesAbove = keyed ? 2 : 1, spec.linesBelow = shown.size() >= 3 ? 3 : 2;
+  std::vector<L::Stack> above, below;
+  for (int m : shown) {
+    above.push_back({titleOf(m).text});
+    std::string note;
+    for (const L::Text& t : noteOf(m)) note += (note.empty() ? "" : " ") + t.text;
+    below.push_back({note});
+  }
+  std::vector<L::Cell> cells = L::flowFitting({6, 6, float(width) - 6, float(height) - 6}, spec, above, below,
+                                              keyed ? 1 : 0, 12);
+  auto picture = [&](const L::Cell& c, const std::string& id, const std::shared_ptr<const ts::Image>& img,
+                     const std::string& what, const ts::gl::CallList& gl) {
+    ts::TextureDesc t = ts::renderedImageTexture(*img, "bump_render", what, "bump_mapping");
+    t.renderedBy = gl;
+    f.panels.push_back(L::texturePanel(id, c.picture, f.addTexture(t)));
+  };
+  auto rgba = [](ts::Rgba q) { return glm::vec4(q.r, q.g, q.b, 255) / 255.0f; };
+  for (size_t k = 0; k < cells.size(); ++k) {
+    const L::Cell& c = cells[k];
+    const int m = shown[k];
+    const auto [title, key] = keyed ? L::lastLineApart(c.above, c.scale) : std::pair<L::Box, L::Box>{c.above, {}};
+    L::caption(f, title, titleOf(m), kWhite, c.scale);
+    const std::vector<L::Text> note = noteOf(m);
+    if (m == kTiltCell) {
+      L::legend(f, key,
+                {{rgba(bump::kTiltWith), "with R"},
+                 {rgba(bump::kTiltAgainst), "against R"},
+                 {rgba(bump::kTiltUncounted), "not counted"}},
+                1);
+      if (!found || !found->seedTiltX) {  // a window's first stage: a CPU picture of the numbers' renders
+        L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
+        continue;
+      }
+      picture(c, "picture_seed002_tilt_x", found->seedTiltX, "seed002 x tilt against R", nullptr);
+      L::phrases(f, c.below, note, kAmber, c.scale);
+      continue;
+    }
+    if (m == kTermCell) {
+      L::legend(f, key,
+                {{rgba(bump::kEmbossEdge),
+                  "light 1 within " + L::fmt("%g", bump::kEmbossBands[1]) + " deg of the normal"}},
+                1);
+      if (!found || !found->embossTerm) {
+        L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
+        continue;
+      }
+      picture(c, "picture_emboss_term", found->embossTerm, "emboss term", found->embossTermGL);
+      L::phrases(f, c.below, note, kAmber, c.scale);
+      continue;
+    }
+    const bool isPicture = m == bump::kReference || kMethods[m].fixedFunction;  // drawn by measure()
+    if (normals && k == 0)  // one key for both pictures: each channel is 0.5 + 0.5 of an eye-space component
+      L::legend(f, key,
+                {{{1.0f, 0.5f, 0.5f, 1.0f}, "n to the right (+x)"},
+                 {{0.5f, 1.0f, 0.5f, 1.0f}, "n up (+y)"},
+                 {{0.5f, 0.5f, 1.0f, 1.0f}, "n to the eye (+z)"}},
+                1);
+    if (!isPicture) {
+      f.panels.push_back(torusPanel(f, c.picture, {m, normals}));
+    } else if (found && (normals && m == bump::kReference ? found->refNormals != nullptr : found->pictures.count(m))) {
+      const bool n = normals && m == bump::kReference;
+      const auto gl = found->picturesGL.find(m);
+      picture(c, std::string("picture_") + kMethods[m].key, n ? found->refNormals : found->pictures.at(m),
+              std::string(kMethods[m].key) + (n ? " normals" : ""),
+              n                               ? found->refNormalsGL
+              : gl != found->picturesGL.end() ? gl->second
+                                              : nullptr);
+      if (m == bump::kReference && found->coarseReference)
+        L::refiningTag(f, c.picture);  // the coarse grid (referenceStage)
+    } else {
+      L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
+    }
+    if (note.empty()) continue;
     L::phrases(f, c.below, note, kAmber, c.scale);
   }
   return f;
