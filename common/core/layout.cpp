@@ -488,8 +488,11 @@ std::vector<Cell> flow(Box area, const FlowSpec& spec) {
   return flowWith(area, spec, [&](float, int) { return std::pair{spec.linesAbove, spec.linesBelow}; });
 }
 
-std::vector<Cell> flowFitting(Box area, FlowSpec spec, const std::vector<Stack>& above, const std::vector<Stack>& below,
-                              int keyLines, int maxLines) {
+namespace {
+// flowFitting's arrangements; keyLines(k, width): the lines cell k's key takes above its title.
+std::vector<Cell> fitting(Box area, const FlowSpec& spec, const std::vector<Stack>& above,
+                          const std::vector<Stack>& below, const std::function<int(size_t, float)>& keyLines,
+                          int maxLines) {
   // Each arrangement with the lines its cells' width needs: a grid of wider cells may then give larger
   // pictures than a row of narrow ones whose captions wrap.  Cells too narrow for a caption's longest
   // word, or a formula's glued words (cut however many lines they had), are not an arrangement.
@@ -500,18 +503,32 @@ std::vector<Cell> flowFitting(Box area, FlowSpec spec, const std::vector<Stack>&
     return false;
   };
   std::vector<Cell> cells = flowWith(area, spec, [&](float width, int scale) {
-    auto need = [&](const std::vector<Stack>& stacks, int have, int extra) {
-      for (const Stack& stack : stacks) {
-        int n = extra;
-        for (const std::string& t : stack) n = unbreakable(t, width) ? kNoRoom : n + captionLines(t, scale, width);
+    auto need = [&](const std::vector<Stack>& stacks, int have, bool keyed) {
+      for (size_t k = 0; k < stacks.size(); ++k) {
+        int n = keyed ? keyLines(k, width) : 0;
+        for (const std::string& t : stacks[k]) n = unbreakable(t, width) ? kNoRoom : n + captionLines(t, scale, width);
         have = std::max(have, n >= kNoRoom ? kNoRoom : std::min(maxLines, n));
       }
       return have;
     };
-    return std::pair{need(above, spec.linesAbove, keyLines), need(below, spec.linesBelow, 0)};
+    return std::pair{need(above, spec.linesAbove, true), need(below, spec.linesBelow, false)};
   });
   // No arrangement has room for the words: flow()'s, its captions cut with "...".
   if (cells.empty() || (cells.front().picture.w <= 1 && cells.front().picture.h <= 1)) return flow(area, spec);
   return cells;
+}
+}  // namespace
+
+std::vector<Cell> flowFitting(Box area, FlowSpec spec, const std::vector<Stack>& above, const std::vector<Stack>& below,
+                              int keyLines, int maxLines) {
+  return fitting(
+      area, spec, above, below, [&](size_t, float) { return keyLines; }, maxLines);
+}
+
+std::vector<Cell> flowFitting(Box area, FlowSpec spec, const std::vector<Stack>& above, const std::vector<Stack>& below,
+                              const std::vector<std::vector<LegendEntry>>& keys, int maxLines) {
+  return fitting(
+      area, spec, above, below,
+      [&](size_t k, float width) { return k < keys.size() ? legendLines(keys[k], 1, width) : 0; }, maxLines);
 }
 }  // namespace ts::layout

@@ -115,11 +115,23 @@ std::vector<Cell> flow(Box area, const FlowSpec& spec);
 using Stack = std::vector<std::string>;
 std::vector<Cell> flowFitting(Box area, FlowSpec spec, const std::vector<Stack>& above, const std::vector<Stack>& below,
                               int keyLines = 0, int maxLines = 8);
+// The same with a key (legend(), at scale 1) under cell k's title, keys[k]
+// (empty: none): the band takes the lines the key needs at the cell's width,
+// so that a narrow window wraps the key rather than leave entries out.
+std::vector<Cell> flowFitting(Box area, FlowSpec spec, const std::vector<Stack>& above, const std::vector<Stack>& below,
+                              const std::vector<std::vector<LegendEntry>>& keys, int maxLines = 8);
 // The band's lines but its last (a title over a key's line), and its last
 // line, at `scale`.  For a two-line band, halves().
 inline std::pair<Box, Box> lastLineApart(const Box& b, int scale) {
   const float lines = std::max(1.0f, std::round(b.h() / lineHeight(scale)));
   const float mid = b.y0 + b.h() * (lines - 1) / lines;
+  return {{b.x0, b.y0, b.x1, mid}, {b.x0, mid, b.x1, b.y1}};
+}
+// The band's lines but its last `lower` lines of scale 1 (a key under a
+// title, flowFitting with keys), and those lines; one line: lastLineApart.
+inline std::pair<Box, Box> keyApart(const Box& b, int scale, int lower) {
+  if (lower <= 1) return lastLineApart(b, scale);
+  const float mid = std::max(b.y0, b.y1 - float(lower) * lineHeight(1));
   return {{b.x0, b.y0, b.x1, mid}, {b.x0, mid, b.x1, b.y1}};
 }
 

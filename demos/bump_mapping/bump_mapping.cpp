@@ -499,34 +499,53 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
   // narrow window wraps the titles and the notes rather than cut them (flowFitting: at the figures' sizes
   // every caption fits these lines, and the layout is flow()'s).
   spec.n = int(shown.size()), spec.linesAbove = keyed ? 2 : 1, spec.linesBelow = shown.size() >= 3 ? 3 : 2;
+  // The keys of the pictures' colours, under their titles: seed 002's tilt, emboss's term, and one key for
+  // both normal pictures (each channel is 0.5 + 0.5 of an eye-space component).
+  auto rgba = [](ts::Rgba q) { return glm::vec4(q.r, q.g, q.b, 255) / 255.0f; };
+  auto keyOf = [&](size_t k) -> std::vector<ts::LegendEntry> {
+    if (shown[k] == kTiltCell)
+      return {{rgba(bump::kTiltWith), "with R"},
+              {rgba(bump::kTiltAgainst), "against R"},
+              {rgba(bump::kTiltUncounted), "not counted"}};
+    if (shown[k] == kTermCell)
+      return {
+          {rgba(bump::kEmbossEdge), "light 1 within " + L::fmt("%g", bump::kEmbossBands[1]) + " deg of the normal"}};
+    if (normals && k == 0)
+      return {{{1.0f, 0.5f, 0.5f, 1.0f}, "n to the right (+x)"},
+              {{0.5f, 1.0f, 0.5f, 1.0f}, "n up (+y)"},
+              {{0.5f, 0.5f, 1.0f, 1.0f}, "n to the eye (+z)"}};
+    return {};
+  };
   std::vector<L::Stack> above, below;
-  for (int m : shown) {
-    above.push_back({titleOf(m).text});
+  std::vector<std::vector<ts::LegendEntry>> keys;
+  for (size_t k = 0; k < shown.size(); ++k) {
+    above.push_back({titleOf(shown[k]).text});
     std::string note;
-    for (const L::Text& t : noteOf(m)) note += (note.empty() ? "" : " ") + t.text;
+    for (const L::Text& t : noteOf(shown[k])) note += (note.empty() ? "" : " ") + t.text;
     below.push_back({note});
+    keys.push_back(keyOf(k));
   }
-  std::vector<L::Cell> cells = L::flowFitting({6, 6, float(width) - 6, float(height) - 6}, spec, above, below,
-                                              keyed ? 1 : 0, 12);
+  std::vector<L::Cell> cells = L::flowFitting({6, 6, float(width) - 6, float(height) - 6}, spec, above, below, keys,
+                                              12);
+  // Every title on the same line: the key bands as deep as the deepest key.
+  int keyLines = keyed ? 1 : 0;
+  for (size_t k = 0; k < cells.size(); ++k)
+    keyLines = std::max(keyLines, L::legendLines(keys[k], 1, cells[k].above.w()));
   auto picture = [&](const L::Cell& c, const std::string& id, const std::shared_ptr<const ts::Image>& img,
                      const std::string& what, const ts::gl::CallList& gl) {
     ts::TextureDesc t = ts::renderedImageTexture(*img, "bump_render", what, "bump_mapping");
     t.renderedBy = gl;
     f.panels.push_back(L::texturePanel(id, c.picture, f.addTexture(t)));
   };
-  auto rgba = [](ts::Rgba q) { return glm::vec4(q.r, q.g, q.b, 255) / 255.0f; };
   for (size_t k = 0; k < cells.size(); ++k) {
     const L::Cell& c = cells[k];
     const int m = shown[k];
-    const auto [title, key] = keyed ? L::lastLineApart(c.above, c.scale) : std::pair<L::Box, L::Box>{c.above, {}};
+    const auto [title, key] = keyLines ? L::keyApart(c.above, c.scale, keyLines)
+                                       : std::pair<L::Box, L::Box>{c.above, {}};
     L::caption(f, title, titleOf(m), kWhite, c.scale);
+    if (!keys[k].empty()) L::legend(f, key, keys[k], 1);
     const std::vector<L::Text> note = noteOf(m);
     if (m == kTiltCell) {
-      L::legend(f, key,
-                {{rgba(bump::kTiltWith), "with R"},
-                 {rgba(bump::kTiltAgainst), "against R"},
-                 {rgba(bump::kTiltUncounted), "not counted"}},
-                1);
       if (!found || !found->seedTiltX) {  // a window's first stage: a CPU picture of the numbers' renders
         L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
         continue;
@@ -536,10 +555,6 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
       continue;
     }
     if (m == kTermCell) {
-      L::legend(f, key,
-                {{rgba(bump::kEmbossEdge),
-                  "light 1 within " + L::fmt("%g", bump::kEmbossBands[1]) + " deg of the normal"}},
-                1);
       if (!found || !found->embossTerm) {
         L::caption(f, L::box(c.picture), "measuring...", kWhite, c.scale);
         continue;
@@ -549,12 +564,6 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
       continue;
     }
     const bool isPicture = m == bump::kReference || kMethods[m].fixedFunction;  // drawn by measure()
-    if (normals && k == 0)  // one key for both pictures: each channel is 0.5 + 0.5 of an eye-space component
-      L::legend(f, key,
-                {{{1.0f, 0.5f, 0.5f, 1.0f}, "n to the right (+x)"},
-                 {{0.5f, 1.0f, 0.5f, 1.0f}, "n up (+y)"},
-                 {{0.5f, 0.5f, 1.0f, 1.0f}, "n to the eye (+z)"}},
-                1);
     if (!isPicture) {
       f.panels.push_back(torusPanel(f, c.picture, {m, normals}));
     } else if (found && (normals && m == bump::kReference ? found->refNormals != nullptr : found->pictures.count(m))) {
