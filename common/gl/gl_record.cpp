@@ -697,6 +697,11 @@ void Recording::append(Call c) {
   calls_.push_back(std::move(c));
 }
 
+// The wrappers stay in place and pass each call straight on (no Recording
+// to keep it); the innermost Recording is back at the end.
+NotRecorded::NotRecorded() : saved_(g_recording) { g_recording = nullptr; }
+NotRecorded::~NotRecorded() { g_recording = saved_; }
+
 bool Recording::active() { return g_alive.load() > 0; }
 bool Recording::activeHere() { return g_recording != nullptr; }
 }  // namespace ts::gl

@@ -66,4 +66,19 @@ class Recording {
   std::vector<Call> calls_;
   Recording* outer_ = nullptr;  // the Recording this one is inside (same thread)
 };
+
+// Calls a recorded render makes for the measurement rather than the picture
+// (a readback of its depth, say): made, and kept by no Recording of this
+// thread while a NotRecorded is alive, so the listing stays the picture's
+// calls alone.  No Recording may start inside one.
+class NotRecorded {
+ public:
+  NotRecorded();
+  ~NotRecorded();
+  NotRecorded(const NotRecorded&) = delete;
+  NotRecorded& operator=(const NotRecorded&) = delete;
+
+ private:
+  Recording* saved_;
+};
 }  // namespace ts::gl

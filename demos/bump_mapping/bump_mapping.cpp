@@ -165,11 +165,14 @@ class BumpMapping final : public ts::Scene {
       // The second stage: the view's own numbers and R's pictures, complete,
       // when its cells need nothing but the methods' comparison with R (not
       // seed 002's tilt cell, not the fixed-function methods' extra notes, not
-      // the view of all).  Its renders serve the whole measurement after it.
+      // the view of all).  R's normals only where they are shown (the normals
+      // view): elsewhere its coverage serves these numbers, and the grid's
+      // second draw comes after the picture is complete.  Its renders serve
+      // the whole measurement after it.
       const bool plain = view_ != 3 && !kMethods[method_].fixedFunction && !(view_ == 1 && method_ == bump::kSeed002);
       if (plain) {
         const std::vector<int> only = {method_, bump::kReference};
-        ts::measureStage(bump::measureAll(draw, toLight(0), wrapped, unwrapped, shown, &only));
+        ts::measureStage(bump::measureAll(draw, toLight(0), wrapped, unwrapped, shown, &only, view_ == 2));
       }
     }
     ts::Measurements m = bump::measureAll(draw, toLight(0), wrapped, unwrapped, shown);
@@ -194,10 +197,11 @@ class BumpMapping final : public ts::Scene {
     bump::Found first;
     const bool all = view_ == 3, normals = view_ == 2;
     if (view_ != 0 || method_ == bump::kReference) {
-      bump::RenderSpec s = normals ? bump::shownNormalsSpec() : bump::RenderSpec{bump::kReference};
+      bump::RenderSpec s = normals ? bump::shownNormalsSpec() : bump::referenceSpec();
       s.coarseGrid = coarse;
       if (!coarse) s.recordTo = normals ? &first.refNormalsGL : &first.picturesGL[bump::kReference];
-      (normals ? first.refNormals : first.pictures[bump::kReference]) = std::make_shared<const ts::Image>(draw(s));
+      (normals ? first.refNormals : first.pictures[bump::kReference]) = std::make_shared<const ts::Image>(
+          normals ? draw(s) : bump::partCoverage(draw(s)).first);
     }
     for (int m = 0; m < bump::kMethodCount; ++m) {
       if (kMethods[m].fixedFunction && (all || m == method_))
@@ -331,9 +335,9 @@ ts::Panel BumpMapping::torusPanel(ts::Frame& f, const ts::Rect& vp, const bump::
 ts::Image BumpMapping::render(ts::Renderer& r, const bump::RenderSpec& s) const {
   if (stageRenders_) {  // a window's staged measurement: each render once for all its stages
     char b[256];
-    std::snprintf(b, sizeof b, "%d %d %d %d %d %a %a %a %d %d %d %d %d", s.method, s.normals, s.smoothGeometry,
+    std::snprintf(b, sizeof b, "%d %d %d %d %d %a %a %a %d %d %d %d %d %d", s.method, s.normals, s.smoothGeometry,
                   s.embossTermOnly, s.noSpecular, s.heightFactor, s.objectFactor, s.distanceFactor, s.mipmaps, s.dxt1,
-                  s.onBackdrop, s.coarseGrid, s.recordTo != nullptr);
+                  s.onBackdrop, s.coarseGrid, s.coverageAlpha, s.recordTo != nullptr);
     auto keep = std::move(stageRenders_);  // the render itself goes on below
     const auto it = keep->find(b);
     ts::Image img;
@@ -395,7 +399,8 @@ ts::Image BumpMapping::renderNow(ts::Renderer& r, const bump::RenderSpec& s) con
     f.clearColor = {0.0f, 0.0f, 0.0f, 1.0f};  // "covered" = not black
   f.panels.push_back(v.torusPanel(f, {0, 0, kMeasureSize, kMeasureSize}, s));
   if (s.method == bump::kReference && !s.smoothGeometry)
-    return s.coarseGrid ? bump::renderReference<bump::CoarseReferencePass>(r, f) : bump::renderReference(r, f);
+    return s.coarseGrid ? bump::renderReference<bump::CoarseReferencePass>(r, f, s.coverageAlpha)
+                        : bump::renderReference(r, f, s.coverageAlpha);
   if (!kMethods[s.method].fixedFunction) return r.renderOffscreen(f);
   const bump::Heights& H = v.heights();
   bump::FixedInputs in{v.torus(),

@@ -39,6 +39,7 @@
 #include "common/core/error.hpp"
 #include "common/core/frame.hpp"
 #include "common/gl/gl.hpp"
+#include "common/gl/gl_record.hpp"
 #include "common/gl/render.hpp"
 
 namespace bump {
@@ -267,12 +268,18 @@ ts::Image offscreen(ts::Renderer& r, const ts::Frame& f, const char* what, Draw 
 
 // R as an image: the frame `f` (its first panel holds the torus batch whose
 // uniforms and height texture R takes) drawn with that panel's matrices,
-// the displaced grid in place of the torus.
+// the displaced grid in place of the torus.  `coverageAlpha`: alpha 255
+// where the grid covers the pixel, 0 elsewhere, from the same render's
+// depth (a pixel covered is one whose depth passed GL_LESS against the
+// cleared 1.0, so its stored depth is below 1): which pixels R covers,
+// without drawing the grid again for its normals.  The depth is read aside
+// from any recording (gl::NotRecorded): the listing is the picture's.
 template <class Grid = ReferencePass>
-inline ts::Image renderReference(ts::Renderer& r, const ts::Frame& f) {
+inline ts::Image renderReference(ts::Renderer& r, const ts::Frame& f, bool coverageAlpha = false) {
   Grid& pass = r.attachment<Grid>();
   const ts::Batch& b = f.panels.front().batches.front();
-  return offscreen(r, f, "drawing the displaced reference torus", [&] {
+  std::vector<float> depth;
+  ts::Image img = offscreen(r, f, "drawing the displaced reference torus", [&] {
     GLuint prog = r.program("bump_reference", referenceProgram());
     glActiveTexture(GL_TEXTURE0);
     glEnable(GL_TEXTURE_2D);
@@ -291,6 +298,16 @@ inline ts::Image renderReference(ts::Renderer& r, const ts::Frame& f) {
     glDisableClientState(GL_VERTEX_ARRAY);
     glUseProgram(0);
     glDisable(GL_TEXTURE_2D);
+    if (coverageAlpha) {
+      ts::gl::NotRecorded aside;
+      depth.resize(size_t(f.width) * size_t(f.height));
+      glReadPixels(0, 0, f.width, f.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    }
   });
+  for (int y = 0; coverageAlpha && y < img.height; ++y)  // depth row 0 = bottom, the image's = top
+    for (int x = 0; x < img.width; ++x)
+      img.pixels[(size_t(y) * size_t(img.width) + size_t(x)) * 4 + 3] =
+          depth[size_t(img.height - 1 - y) * size_t(img.width) + size_t(x)] < 1.0f ? 255 : 0;
+  return img;
 }
 }  // namespace bump

@@ -31,7 +31,8 @@ struct RenderSpec {
   // measurements' normal renders stay on black, which is how covered() tells
   // the surface from the rest.
   bool onBackdrop = false;
-  bool coarseGrid = false;  // R from CoarseReferencePass (a window's first stage)
+  bool coarseGrid = false;     // R from CoarseReferencePass (a window's first stage)
+  bool coverageAlpha = false;  // R's grid: alpha 255 where it covers the pixel, else 0 (renderReference)
 };
 using RenderFn = std::function<ts::Image(const RenderSpec&)>;
 // Which fixed-function pictures the view shows (a method of kMethods, or
@@ -88,8 +89,28 @@ struct Found {
   ts::gl::CallList embossTermGL;
 };
 
-// The pictures measureAll shows and records: R's normals on the figure's
-// background, and emboss's term alone.
+// The pictures measureAll shows and records: R shaded, with its coverage
+// in alpha (partCoverage parts them); R's normals on the figure's
+// background; and emboss's term alone.
+inline RenderSpec referenceSpec() {
+  RenderSpec s{kReference};
+  s.coverageAlpha = true;
+  return s;
+}
+// R's picture as shown (opaque: its clear colour's alpha and its
+// fragments' are 1), and the pixels it covers as covered() reads a normal
+// render: white where covered, black elsewhere.
+inline std::pair<ts::Image, ts::Image> partCoverage(const ts::Image& withCoverage) {
+  ts::Image shaded = withCoverage, coverage(withCoverage.width, withCoverage.height, ts::Rgba{0, 0, 0, 255});
+  for (int y = 0; y < shaded.height; ++y)
+    for (int x = 0; x < shaded.width; ++x) {
+      ts::Rgba c = shaded.at(x, y);
+      if (c.a == 255) coverage.set(x, y, {255, 255, 255, 255});
+      c.a = 255;
+      shaded.set(x, y, c);
+    }
+  return {std::move(shaded), std::move(coverage)};
+}
 inline RenderSpec shownNormalsSpec() {
   RenderSpec s{kReference, true};
   s.onBackdrop = true;
@@ -146,10 +167,13 @@ inline bool retargetViewports(Found& found, glm::ivec4 was, glm::ivec4 now, glm:
 // `seam`: the normal map baked with and without wrapping differences.
 // `only` (may be null): just R's pictures and the comparison of these
 // methods with R (a window's view, shown first: the same numbers, the rest
-// left out).
+// left out); without `refNormals`, not even R's normals (the view shows
+// neither them nor a number of theirs): the comparisons take the pixels R
+// covers from its shaded render instead, the same pixels (the same grid
+// rasterized alike), and so the same numbers, one draw of the grid sooner.
 inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye, const ts::Image& wrapped,
                                    const ts::Image& unwrapped, const ShownFn& shown,
-                                   const std::vector<int>* only = nullptr) {
+                                   const std::vector<int>* only = nullptr, bool refNormals = true) {
   ts::Measurements out;
   Found found;
   // The pictures shown (R, its normals, B4, B5) are rendered with their GL
@@ -158,12 +182,17 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
     s.recordTo = calls;
     return render(s);
   };
-  auto refShaded = std::make_shared<const ts::Image>(recorded({kReference}, &found.picturesGL[kReference]));
+  auto [shadedR, coverageR] = partCoverage(recorded(referenceSpec(), &found.picturesGL[kReference]));
+  auto refShaded = std::make_shared<const ts::Image>(std::move(shadedR));
   // R's normals are drawn once, on the figure's background (shown); the
   // measurements' copy on black is the same picture with that colour zeroed
-  // (onBlack): the displaced grid is the costliest render here.
-  found.refNormals = std::make_shared<const ts::Image>(recorded(shownNormalsSpec(), &found.refNormalsGL));
-  auto refNormals = std::make_shared<const ts::Image>(onBlack(*found.refNormals, found.refNormals->at(0, 0)));
+  // (onBlack): the displaced grid is the costliest render here.  Left out,
+  // the coverage stands in for them (covered() alone reads it).
+  const bool withNormals = !only || refNormals;
+  if (withNormals)
+    found.refNormals = std::make_shared<const ts::Image>(recorded(shownNormalsSpec(), &found.refNormalsGL));
+  const auto onBlackR = std::make_shared<const ts::Image>(
+      withNormals ? onBlack(*found.refNormals, found.refNormals->at(0, 0)) : std::move(coverageR));
   const ts::Image exact = render({kReference, true, true}), smooth = render({kFlat, true});
   found.pictures[kReference] = refShaded;
   ts::measureProgress(0.15);
@@ -173,17 +202,18 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
     const bool ideal = m == kReference, fixed = kMethods[m].fixedFunction;
     ts::Image shaded = fixed && shown(m) ? recorded({m}, &found.picturesGL[m]) : render({m, false, ideal});
     normals[m] = m == kFlat ? smooth : ideal ? exact : fixed ? smooth : render({m, true});
-    Compare c = compare(shaded, normals[m], *refShaded, *refNormals);
+    Compare c = compare(shaded, normals[m], *refShaded, *onBlackR);
     const std::string k = std::string("[") + (ideal ? "ideal" : kMethods[m].key) + "]";
     if (!fixed) {
-      c.screenNormalDeg = c.normalDeg;
+      c.screenNormalDeg = withNormals ? c.normalDeg : NAN;  // (from the coverage: no normals)
       c.normalDeg = compare(shaded, normals[m], shaded, exact).normalDeg;
       if (!ideal)
         out.push_back(
             {"normal_err_deg" + k, c.normalDeg,
              "mean angle between the method's normal and the displaced surface's at the same (s,t), degrees"});
-      out.push_back({"screen_normal_err_deg" + k, c.screenNormalDeg,
-                     "mean angle between the normal and R's in the same pixel, degrees"});
+      if (withNormals)
+        out.push_back({"screen_normal_err_deg" + k, c.screenNormalDeg,
+                       "mean angle between the normal and R's in the same pixel, degrees"});
     } else {
       found.pictures[m] = std::make_shared<const ts::Image>(shaded);
     }
@@ -307,7 +337,7 @@ inline ts::Measurements measureAll(const RenderFn& render, glm::dvec3 light1Eye,
   // The outline: the bump methods keep the smooth torus's, R does not.
   out.push_back({"outline_deviation_px[blinn]", outlineDeviationPx(normals[kBlinn], smooth),
                  "mean distance of B1's outline from the smooth torus's, pixels"});
-  out.push_back({"outline_deviation_px[reference]", outlineDeviationPx(*refNormals, smooth),
+  out.push_back({"outline_deviation_px[reference]", outlineDeviationPx(*onBlackR, smooth),
                  "mean distance of R's outline from the smooth torus's, pixels"});
   // DOT3 against the shader's own diffuse sum with the same normal map.
   {

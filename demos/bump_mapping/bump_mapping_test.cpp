@@ -122,12 +122,13 @@ TEST(BumpMapping, AWindowsFirstStageShowsThePicturesNotTheNumbers) {
 
 // A window's later stages.  The second: R's picture whole (the full grid,
 // the result's picture), not tagged refining, its numbers still to come
-// (R's normals, which they need, not drawn yet).  The third: the default
-// view (B1 beside R) complete before the rest of the measurement, its
-// numbers the result's own (the same renders, the same comparisons), so the
-// frame built from it is the result's frame: the window's picture stops
-// changing there.  The controls: the first and second stages' frames are
-// not the result's.
+// (the method's renders not made yet).  The third: the default view (B1
+// beside R) complete before the rest of the measurement, R's normals not
+// drawn yet (the grid drawn once: its coverage, from the shaded render's
+// depth, stands in), its numbers the result's own (the same pixels compared,
+// the same values), so the frame built from it is the result's frame: the
+// window's picture stops changing there.  The controls: the first and second
+// stages' frames are not the result's.
 TEST(BumpMapping, AWindowsLaterStagesBringRWholeThenTheDefaultViewComplete) {
   Demo d("bump_mapping", {});
   const std::vector<ts::Measurements> stages = ts::test::measureInStages(d, 3);  // the rest is not needed here
@@ -161,6 +162,12 @@ TEST(BumpMapping, AWindowsLaterStagesBringRWholeThenTheDefaultViewComplete) {
   const bump::Found* found = third.detailAs<bump::Found>();
   ASSERT_NE(found, nullptr);
   EXPECT_FALSE(found->coarseReference);
+  EXPECT_EQ(found->refNormals, nullptr) << "R's normals drawn before the view was complete";
+  for (int m : {bump::kBlinn, bump::kReference}) {  // R's coverage from its depth: the pixels its normals cover
+    ASSERT_TRUE(found->cmp.count(m) && result->cmp.count(m)) << m;
+    EXPECT_GT(found->cmp.at(m).pixels, 10000) << m;
+    EXPECT_EQ(found->cmp.at(m).pixels, result->cmp.at(m).pixels) << m;
+  }
   EXPECT_EQ(ts::probe::countDiffering(*found->pictures.at(bump::kReference), *result->pictures.at(bump::kReference), 0),
             0);
   EXPECT_EQ(texts(third), final);

@@ -270,6 +270,36 @@ TEST(GlRecord, RecordingsNest) {
   EXPECT_STREQ(outer[2].name, "glClear");
 }
 
+// Claim: calls made inside a NotRecorded (a measurement's readback inside a
+// recorded render) are made and kept by no Recording, the outer or the
+// inner; the recording goes on after it.  The control: the same call before
+// and after it is kept.
+TEST(GlRecord, NotRecordedCallsAreMadeNotKept) {
+  ts::test::context();
+  std::vector<Call> outer, inner;
+  GLint viewport[4] = {0, 0, 0, 0};
+  {
+    ts::gl::Recording o;
+    glViewport(0, 0, 8, 8);
+    {
+      ts::gl::Recording i;
+      {
+        ts::gl::NotRecorded aside;
+        glViewport(0, 0, 5, 6);
+        glGetIntegerv(GL_VIEWPORT, viewport);  // made: the driver has it
+      }
+      glClear(GL_COLOR_BUFFER_BIT);
+      inner = i.take();
+    }
+    outer = o.take();
+  }
+  EXPECT_EQ(viewport[2], 5);
+  EXPECT_EQ(viewport[3], 6);
+  EXPECT_EQ(lines(inner), std::vector<std::string>{"glClear(GL_COLOR_BUFFER_BIT);"});
+  EXPECT_EQ(lines(outer), (std::vector<std::string>{"glViewport(0, 0, 8, 8);", "glClear(GL_COLOR_BUFFER_BIT);"}));
+  EXPECT_FALSE(ts::gl::Recording::activeHere());
+}
+
 // Claim: with recording off the cost is nothing at all: once a Recording
 // ends, every pointer of the table is the very pointer it was before, so a
 // call goes straight to the driver (bench_figures' render_after_recording
