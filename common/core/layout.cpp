@@ -103,6 +103,21 @@ std::vector<std::string> wrap(const std::string& text, int scale, float width) {
   std::vector<std::string> lines;
   std::string line;
   for (const std::string& u : units) {
+    // A word wider than the line with underscores in it (a GL name,
+    // GL_NEAREST_MIPMAP_NEAREST) breaks after an underscore: on lines of
+    // its own, as many parts to a line as fit, the last part going on with
+    // the words after it.
+    if (u.find(' ') == std::string::npos && u.find('_') + 1 < u.size() && text::width(u, scale) > width) {
+      if (!line.empty()) lines.push_back(line), line.clear();
+      for (size_t from = 0; from < u.size();) {
+        const size_t end = std::min(u.find('_', from), u.size() - 1) + 1;  // a part, with its underscore
+        const std::string part = u.substr(from, end - from);
+        if (!line.empty() && text::width(line + part, scale) > width) lines.push_back(line), line.clear();
+        line += part;
+        from = end;
+      }
+      continue;
+    }
     std::string joined = line.empty() ? u : line + " " + u;
     if (!line.empty() && text::width(joined, scale) > width) {
       lines.push_back(line);

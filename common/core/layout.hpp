@@ -187,7 +187,8 @@ float legend(Frame& f, Box band, const std::vector<LegendEntry>& entries, int sc
 void addSwatch(Frame& f, float x, float y, int scale, glm::vec4 colour);
 
 // Text fitted to a box: at `scale` if it fits, else smaller, else wrapped at
-// spaces onto the lines the box has room for, else cut with "...".  Adds
+// spaces (a word too wide for a line, a GL name, after an underscore) onto
+// the lines the box has room for, else cut with "...".  Adds
 // the labels and returns the y below the last line (band.y0 when nothing
 // fits).  Never places text outside `band`.
 float caption(Frame& f, Box band, const Text& text, glm::vec4 color, int scale, Align align = Align::Center,

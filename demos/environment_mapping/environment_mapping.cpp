@@ -398,24 +398,12 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     return f;
   }
   // Two lines above each picture: its title, and the key of the colours the reference and the error carry.
-  L::FlowSpec spec;
-  spec.n = 3, spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 8;
-  std::vector<L::Cell> cells = L::flow(area, spec);
-  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_),
-       found ? statsLine(measured, found->current) : std::vector<L::Text>{}, {}, true);
   // The near ball's pixels are those painted red on this very picture (measure(): [shown]).
   std::vector<L::Text> refNote;
   if (found && object_ == envmap::kMirror)
     refNote = {L::measuredText(measured, "red: a near ball, {mirror_ball_pixels[shown]|%.0f} px;"),
                L::measuredText(measured, "a map made at the centre: {mirror_ball_pixels_centre_map[shown]|%.0f} px, "
                                          "{mirror_ball_pixels_both[shown]|%.0f} right")};
-  // One key for the picture and the reference, under their titles: the world's colours, and the flat
-  // mirror's near ball painted on the reference.
-  std::vector<ts::LegendEntry> key = worldKey();
-  if (object_ == envmap::kMirror) key.push_back({kNearBall, "the near ball"});
-  show(cells[1], "reference", found ? &found->reference : nullptr, refCaption(), refNote, {}, true);
-  cellKey(f, {cells[0].above.x0, L::halves(cells[0].above).second.y0, cells[1].above.x1, cells[0].above.y1}, key,
-          cells[0].scale);
   // Where the error is worst, and the other evaluation's mean beside it (the figures' claims compare them).
   auto errorNote = [&]() -> std::vector<L::Text> {
     const std::string other = std::string(envmap::kParamKeys[param_]) + "/" + envmap::kObjectKeys[object_] + "/" +
@@ -425,12 +413,32 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
             std::string("r per ") + kEval[1 - eval_] + ": " +
                 L::measured(measured, "error_mean_deg[" + other + "]", "%.2f") + " deg mean"};
   };
-  const ts::TextureDesc errorTex = found ? image(found->error, "error") : ts::TextureDesc{};
   const double scale = found ? found->errorScale : envmap::errorScale(eval_ == 1, 0);
-  show(cells[2], "error", found ? &errorTex : nullptr,
-       "direction error (black " + L::given("error shown black, degrees", 0, "%g") + ", white " +
-           L::given("error shown white, degrees (the heat scale's top)", scale, "%g") + " deg or more)",
-       found ? errorNote() : std::vector<L::Text>{}, heatKey(scale));
+  const L::Text errorTitle = "direction error (black " + L::given("error shown black, degrees", 0, "%g") + ", white " +
+                             L::given("error shown white, degrees (the heat scale's top)", scale, "%g") +
+                             " deg or more)";
+  const std::vector<L::Text> notes[3] = {found ? statsLine(measured, found->current) : std::vector<L::Text>{}, refNote,
+                                         found ? errorNote() : std::vector<L::Text>{}};
+  // Each title over a key's line; a narrow window wraps the titles and the notes rather than cut them.
+  std::vector<L::Stack> above = {{stateName(param_)}, {refCaption().text}, {errorTitle.text}}, below(3);
+  for (int k = 0; k < 3; ++k) {
+    std::string note;
+    for (const L::Text& t : notes[k]) note += (note.empty() ? "" : " ") + t.text;
+    below[size_t(k)].push_back(note);
+  }
+  L::FlowSpec spec;
+  spec.n = 3, spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 8;
+  std::vector<L::Cell> cells = L::flowFitting(area, spec, above, below, 1);
+  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), notes[0], {}, true);
+  // One key for the picture and the reference, under their titles: the world's colours, and the flat
+  // mirror's near ball painted on the reference.
+  std::vector<ts::LegendEntry> key = worldKey();
+  if (object_ == envmap::kMirror) key.push_back({kNearBall, "the near ball"});
+  show(cells[1], "reference", found ? &found->reference : nullptr, refCaption(), notes[1], {}, true);
+  const L::Box keyLine = L::lastLineApart(cells[0].above, cells[0].scale).second;
+  cellKey(f, {cells[0].above.x0, keyLine.y0, cells[1].above.x1, keyLine.y1}, key, cells[0].scale);
+  const ts::TextureDesc errorTex = found ? image(found->error, "error") : ts::TextureDesc{};
+  show(cells[2], "error", found ? &errorTex : nullptr, errorTitle, notes[2], heatKey(scale));
   return f;
 }
 

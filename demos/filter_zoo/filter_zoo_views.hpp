@@ -193,33 +193,46 @@ inline const Row* rowAt(const Result* m, double az) {
 }
 inline std::string readsText(double r) { return r < 0 ? "reads: GL's own" : fmt("%.1f texels", r); }
 
-// Every method side by side at the current azimuth.
+// Every method side by side at the current azimuth.  A narrow window
+// wraps the notes and the cells' captions rather than cut them: the notes
+// take the lines they need at the frame's width (at least two), the cells'
+// bands the lines their captions need at the cells' width (flowFitting; at
+// the figures' sizes every caption fits one line, and the layout is
+// flow()'s).
 inline void Views::buildMethods(ts::Frame& f, const Result* m) const {
   const int w = f.width, h = f.height;
   const int sc = L::scaleFor({0, 0, w, h}, 2), line = int(L::lineHeight(sc));
+  const std::vector<L::Text> footNotes = {
+      sceneText().text + (bias != 0 ? ", LOD bias " + fmt("%g", bias) : std::string()) + ".  " + maskText().text,
+      "GL_* and anisotropic: GL renders" + (m ? " (" + m->renderer + ")" : std::string()) +
+          "; ripmap, SAT, probe line, EWA, exact: on the CPU, in double precision"};
+  int fs = sc;  // the notes' scale, as notes() picks it; at 1 a line may wrap
+  while (fs > 1 && std::any_of(footNotes.begin(), footNotes.end(),
+                               [&](const L::Text& t) { return ts::text::width(t.text, fs) > w - 8; }))
+    --fs;
+  const int footH = std::max(2 * line, int(std::ceil(L::columnHeight(footNotes, fs, float(w - 8)))));
+  const Row* row = m && m->scene == scene ? rowAt(m, azimuth) : nullptr;
+  auto noteOf = [&](int k) -> std::string {
+    if (!row) return "";
+    return std::isnan(row->rms[size_t(k)]) ? std::string("RMS, reads: measuring...")
+           : k == kExact                   ? "the reference (" + readsText(row->reads[size_t(k)]) + ")"
+                         : "RMS " + fmt("%.2f", row->rms[size_t(k)]) + ", " + readsText(row->reads[size_t(k)]);
+  };
   L::FlowSpec spec;
   spec.n = kMethodCount, spec.aspect = float(kImageW) / kImageH, spec.linesAbove = 1, spec.linesBelow = 1, spec.gap = 8;
   spec.minCellWidth = 150;
-  const std::vector<L::Cell> cells = L::flow({4, 4, float(w - 4), float(h - 2 * line - 4)}, spec);
-  const Row* row = m && m->scene == scene ? rowAt(m, azimuth) : nullptr;
+  std::vector<L::Stack> above, below;
+  for (int k = 0; k < kMethodCount; ++k) above.push_back({methodTitle(k)}), below.push_back({noteOf(k)});
+  const std::vector<L::Cell> cells = L::flowFitting({4, 4, float(w - 4), float(h - footH - 4)}, spec, above, below);
   for (int k = 0; k < kMethodCount && k < int(cells.size()); ++k) {
     const L::Cell& c = cells[size_t(k)];
     const glm::vec4 colour = k == method ? kAmber : kWhite;
     L::caption(f, c.above, methodTitle(k), colour, c.scale, ts::Align::Left);
     picturePanel(f, std::string("method_") + methodKey(k), c.picture, row ? &row->pictures[size_t(k)] : nullptr,
                  c.scale);
-    if (row)
-      L::caption(f, c.below,
-                 std::isnan(row->rms[size_t(k)]) ? std::string("RMS, reads: measuring...")
-                 : k == kExact                   ? "the reference (" + readsText(row->reads[size_t(k)]) + ")"
-                               : "RMS " + fmt("%.2f", row->rms[size_t(k)]) + ", " + readsText(row->reads[size_t(k)]),
-                 colour, c.scale, ts::Align::Left);
+    if (row) L::caption(f, c.below, noteOf(k), colour, c.scale, ts::Align::Left);
   }
-  notes(f, {4, float(h - 2 * line - 2), float(w - 4), float(h)},
-        {sceneText().text + (bias != 0 ? ", LOD bias " + fmt("%g", bias) : std::string()) + ".  " + maskText().text,
-         "GL_* and anisotropic: GL renders" + (m ? " (" + m->renderer + ")" : std::string()) +
-             "; ripmap, SAT, probe line, EWA, exact: on the CPU, in double precision"},
-        kGrey, sc, ts::Align::Center);
+  notes(f, {4, float(h - footH - 2), float(w - 4), float(h)}, footNotes, kGrey, sc, ts::Align::Center);
 }
 
 // Methods x azimuths (the slanted plane): a band per azimuth, each

@@ -3,6 +3,7 @@
 // one line at the cells' width leaves the layout flow()'s with one line for
 // it (the figures' sizes); a narrow window gives the band the lines the key
 // wraps to, so that legend() draws every entry instead of leaving some out.
+// And caption(): a GL name wider than the line breaks after an underscore.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -10,6 +11,7 @@
 
 #include "common/core/frame.hpp"
 #include "common/core/layout.hpp"
+#include "common/core/text.hpp"
 
 namespace {
 namespace L = ts::layout;
@@ -59,5 +61,31 @@ TEST(FlowFitting, ANarrowWindowWrapsTheKeyInsteadOfLeavingEntriesOut) {
   // The control: the one line flow() would have given the key leaves entries out.
   const std::vector<L::Cell> plain = L::flow(area, twoCells());
   EXPECT_LT(drawn(L::lastLineApart(plain[0].above, plain[0].scale).second), kKey.size());
+}
+// A GL name wider than its cell (filter_zoo's GL_NEAREST_MIPMAP_NEAREST in
+// a 640x480 window) wraps after an underscore instead of being cut with
+// "...": every line within the band, the text whole, the words after it
+// going on from its last part.  The control: a band wide enough holds it on
+// one line.
+TEST(Caption, AGLNameTooWideForALineBreaksAfterAnUnderscore) {
+  const std::string name = "GL_NEAREST_MIPMAP_NEAREST", text = name + " and trilinear";
+  const float width = float(ts::text::width("GL_NEAREST_MIPMAP_", 1)) + 4;
+  ASSERT_GT(ts::text::width(name, 1), width);
+  ts::Frame f = L::blankFrame(1, 1);
+  L::caption(f, {0, 0, width, 5 * L::lineHeight(1)}, text, {1, 1, 1, 1}, 1, ts::Align::Left);
+  ASSERT_GE(f.labels.size(), 2u);
+  std::string joined;
+  for (const ts::Label& l : f.labels) {
+    EXPECT_LE(ts::text::width(l.text, 1), width) << l.text;
+    EXPECT_EQ(l.text.find("..."), std::string::npos) << l.text;
+    joined += (joined.empty() || joined.back() == '_' ? "" : " ") + l.text;
+  }
+  EXPECT_EQ(joined, text);
+  EXPECT_EQ(f.labels[0].text, "GL_NEAREST_MIPMAP_");
+  EXPECT_EQ(f.labels[1].text.rfind("NEAREST", 0), 0u) << "the words after it go on from its last part";
+  ts::Frame wide = L::blankFrame(1, 1);
+  L::caption(wide, {0, 0, 1000, 5 * L::lineHeight(1)}, text, {1, 1, 1, 1}, 1, ts::Align::Left);
+  ASSERT_EQ(wide.labels.size(), 1u);
+  EXPECT_EQ(wide.labels[0].text, text);
 }
 }  // namespace
