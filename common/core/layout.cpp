@@ -136,6 +136,18 @@ std::string cut(std::string s, int scale, float width) {
   while (!s.empty() && s.back() == ' ') s.pop_back();
   return s.empty() ? std::string() : s + "...";
 }
+// A key entry's meaning as legend() sets it in a band `width` wide at
+// `scale`: one line when the entry fits, else wrapped at words onto lines
+// beside its swatch (a narrow window's cell); none when a word does not
+// fit even so (the entry is left out, never cut).
+std::vector<std::string> entryLines(const LegendEntry& e, int scale, float width) {
+  const float indent = text::height(scale) + 4.0f * float(scale);
+  if (indent + text::width(e.meaning, scale) <= width) return {e.meaning};
+  std::vector<std::string> lines = wrap(e.meaning, scale, width - indent);
+  for (const std::string& l : lines)
+    if (indent + text::width(l, scale) > width) return {};
+  return lines;
+}
 }  // namespace
 
 int captionLines(const std::string& text, int scale, float width) {
@@ -273,15 +285,20 @@ float legend(Frame& f, Box band, const std::vector<LegendEntry>& entries, int sc
   const float swatch = text::height(scale), gap = 8.0f * float(scale), row = lineHeight(scale);
   float x = band.x0, y = band.y0;
   for (const LegendEntry& e : entries) {
-    const float w = swatch + 4.0f * float(scale) + text::width(e.meaning, scale);
+    // An entry wider than the band has its meaning wrapped beside its swatch, on lines of its own.
+    const std::vector<std::string> lines = entryLines(e, scale, band.w());
+    const float w = lines.size() == 1 ? swatch + 4.0f * float(scale) + text::width(e.meaning, scale) : band.w();
     if (x > band.x0 && x + w > band.x1) x = band.x0, y += row;
-    if (w > band.w() || y + swatch > band.y1 + 0.5f) break;  // no room: left out, never cut
+    const float last = y + row * float(int(lines.size()) - 1);
+    if (lines.empty() || last + swatch > band.y1 + 0.5f) break;  // no room: left out, never cut
     addSwatch(f, x, y, scale, e.color);
     // The meaning in its colour, unless that colour is too dark to read on the figure's background.
     const float luma = 0.3f * e.color.r + 0.59f * e.color.g + 0.11f * e.color.b;
-    f.labels.push_back({float(int(x)) + swatch + 4.0f * float(scale), y, e.meaning, luma < 0.35f ? kWhite : e.color,
-                        scale, Align::Left, glm::vec4(0.0f)});
+    for (size_t k = 0; k < lines.size(); ++k)
+      f.labels.push_back({float(int(x)) + swatch + 4.0f * float(scale), y + row * float(k), lines[k],
+                          luma < 0.35f ? kWhite : e.color, scale, Align::Left, glm::vec4(0.0f)});
     f.legend.push_back(e);
+    y = last;
     x += w + gap;
   }
   return y + row;
@@ -387,8 +404,10 @@ int legendLines(const std::vector<LegendEntry>& entries, int scale, float width)
   int lines = 1;
   float x = 0;
   for (const LegendEntry& e : entries) {
-    const float w = swatch + 4.0f * float(scale) + text::width(e.meaning, scale);
+    const size_t n = std::max<size_t>(1, entryLines(e, scale, width).size());
+    const float w = n == 1 ? swatch + 4.0f * float(scale) + text::width(e.meaning, scale) : width;
     if (x > 0 && x + w > width) x = 0, ++lines;
+    lines += int(n) - 1;
     x += w + gap;
   }
   return lines;
@@ -421,8 +440,9 @@ std::vector<Cell> pictureFigure(Frame& f, const std::vector<Captioned>& pictures
     caption(f, cells[k].above, pictures[k].title, kWhite, cells[k].scale);
     caption(f, cells[k].below, pictures[k].note, kAmber, cells[k].scale);
   }
-  if (!legend.empty())
-    layout::legend(f, {8, float(f.height) - band - key, float(f.width - 8), float(f.height) - band}, legend, 1);
+  if (!legend.empty())  // within the window: notes that fill a tiny window leave the key no room (left out)
+    layout::legend(f, {8, std::max(8.0f, float(f.height) - band - key), float(f.width - 8), float(f.height) - band},
+                   legend, 1);
   float y = float(f.height) - band;
   for (const Text& n : notes) {
     const float h = lineHeight(1) * float(captionLines(n.text, 1, width));

@@ -179,8 +179,10 @@ void refiningTag(Frame& f, const Rect& picture);
 void attachNumbers(Frame& f, size_t first, const Text& t);
 
 // A key of the colours that carry meaning: a swatch and its meaning per
-// entry, left to right, wrapping to the next line; each entry also goes
-// into f.legend.  Returns the y below the last line.
+// entry, left to right, wrapping to the next line (an entry wider than the
+// band: its meaning wrapped at words beside the swatch); each entry also
+// goes into f.legend.  What the band has no room for is left out, never
+// cut.  Returns the y below the last line.
 float legend(Frame& f, Box band, const std::vector<LegendEntry>& entries, int scale);
 // A legend's swatch: a square panel of the colour, as tall as a line of text
 // at `scale`, its top-left at (x, y).  The caller records the legend entry.

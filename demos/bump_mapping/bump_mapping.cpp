@@ -531,7 +531,7 @@ ts::Frame BumpMapping::build(int width, int height, const ts::Measurements& meas
     keys.push_back(keyOf(k));
   }
   std::vector<L::Cell> cells = L::flowFitting({6, 6, float(width) - 6, float(height) - 6}, spec, above, below, keys,
-                                              12);
+                                              20);
   // Every title on the same line: the key bands as deep as the deepest key.
   int keyLines = keyed ? 1 : 0;
   for (size_t k = 0; k < cells.size(); ++k)

@@ -137,11 +137,15 @@ TEST_P(Layout, NoLabelLeavesItsPanelOrTheWindowOrOverlapsAnother) {
 // and notes wrap (flowFitting; a GL name after an underscore) and the
 // notes take the lines they need, so at 640x480 and 700x1000 no label is
 // cut.  (Other views still cut a label at 640x480; they are not listed.)
-// The control: "measuring..." placeholders are not cuts.
+// The control: "measuring..." placeholders are not cuts.  Emboss's compare
+// view also keeps its term's key entry, wider than its cell: wrapped.
 TEST(NarrowWindows, TheseViewsCutNoLabel) {
-  const std::vector<std::pair<std::string, std::vector<std::string>>> views = {{"filter_zoo", {"--view", "methods"}},
-                                                                               {"filter_zoo", {}},
-                                                                               {"environment_mapping", {}}};
+  const std::vector<std::pair<std::string, std::vector<std::string>>> views = {
+      {"filter_zoo", {"--view", "methods"}},
+      {"filter_zoo", {}},
+      {"environment_mapping", {}},
+      {"bump_mapping", {"--view", "all"}},
+      {"bump_mapping", {"--view", "compare", "--method", "emboss", "--heights", "bricks"}}};
   for (const auto& [id, flags] : views) {
     ts::test::Demo d(id, flags);
     d.measure();
@@ -155,6 +159,10 @@ TEST(NarrowWindows, TheseViewsCutNoLabel) {
             << id << " " << joined(flags) << " at " << w << "x" << h << ": \"" << l.text << "\" is cut";
       }
       EXPECT_GT(labels, 5u) << id << " at " << w << "x" << h;
+      if (flags.size() > 3 && flags[3] == "emboss")
+        EXPECT_TRUE(std::any_of(f.legend.begin(), f.legend.end(),
+                                [](const ts::LegendEntry& e) { return e.meaning.find("within") != std::string::npos; }))
+            << "emboss's term key at " << w << "x" << h;
     }
   }
 }

@@ -88,4 +88,35 @@ TEST(Caption, AGLNameTooWideForALineBreaksAfterAnUnderscore) {
   ASSERT_EQ(wide.labels.size(), 1u);
   EXPECT_EQ(wide.labels[0].text, text);
 }
+// A key entry wider than its band (bump_mapping's emboss term in a 640x480
+// window: "light 1 within 10 deg of the normal" over a third of it) is
+// drawn with its meaning wrapped beside its swatch, every line within the
+// band, on as many lines as legendLines() counts; the entries after it go
+// on below it.  The control: a band one line deep has no room for it, and
+// leaves it out rather than cut it.
+TEST(Legend, AnEntryWiderThanItsBandWrapsBesideItsSwatch) {
+  const std::vector<ts::LegendEntry> key = {{{0.2f, 0.8f, 1.0f, 1.0f}, "light 1 within 10 deg of the normal"},
+                                            {{1.0f, 0.5f, 0.5f, 1.0f}, "+x"}};
+  const float width = ts::text::width("light 1 within 10 deg", 1);
+  const int lines = L::legendLines(key, 1, width);
+  ASSERT_GE(lines, 3);  // the long entry's two or more, then the short one's
+  ts::Frame f = L::blankFrame(1, 1);
+  const L::Box band{0, 0, width, float(lines) * L::lineHeight(1)};
+  L::legend(f, band, key, 1);
+  ASSERT_EQ(f.legend.size(), 2u);
+  std::string meaning;
+  float lowest = 0;
+  for (const ts::Label& l : f.labels) {
+    EXPECT_TRUE(L::labelBox(l).inside(band)) << l.text;
+    EXPECT_EQ(l.text.find("..."), std::string::npos) << l.text;
+    if (l.text != "+x") meaning += (meaning.empty() ? "" : " ") + l.text;
+    else lowest = l.y;
+  }
+  EXPECT_EQ(meaning, key[0].meaning);
+  EXPECT_NEAR(lowest, float(lines - 1) * L::lineHeight(1), 0.5f) << "the short entry on the last line";
+  ts::Frame shallow = L::blankFrame(1, 1);
+  L::legend(shallow, {0, 0, width, L::lineHeight(1)}, key, 1);
+  EXPECT_TRUE(shallow.legend.empty());
+  EXPECT_TRUE(shallow.labels.empty());
+}
 }  // namespace
