@@ -117,7 +117,10 @@ void drawSidePanel(const Scene& scene, const Options& opts, const Measurements& 
     else ImGui::SetCursorPosX(ImGui::GetCursorPosX() + std::max(0.0f, avail - need));
     ImGui::TextColored(dim, "%s", keys.c_str());
   }
-  ImGui::TextColored(dim, "%-12s %.1f%s", "fps", status.fps, status.idle ? " (idle)" : "");
+  ImGui::TextColored(dim, "%-12s %.1f%s", "fps", status.fps,
+                     status.idle    ? " (idle)"
+                     : status.paced ? " (measuring)"
+                                    : "");
   ImGui::PushStyleColor(ImGuiCol_Text, dim);
   ImGui::TextWrapped("h: hide this panel  l: OpenGL calls  ?: help  F12: save  Backspace: reset  q: quit");
   ImGui::PopStyleColor();

@@ -20,7 +20,8 @@ namespace ts {
 // state.
 struct PanelStatus {
   double fps = 0;
-  bool idle = false;  // nothing animating: drawn only when something changes
+  bool idle = false;   // nothing animating: drawn only when something changes
+  bool paced = false;  // a measurement runs, nobody acting: a few frames a second, the rest the worker's
   bool measuring = false;
   double progress = 0;  // 0..1 while measuring
   bool stale = false;   // the numbers shown are not the current state's

@@ -34,7 +34,7 @@ void FrameLoop::waitForEvents() {
   double keyWait = input.keys.empty() ? 0.0 : testLog.untilKey();
   busy = dirty || redraw || scene.live() || keyReady || !input.dropped.empty() ||
          (flags.frames && !measuring && input.keys.empty());
-  const double measuringFrame = glfwGetTime() - lastAction < 2.0 ? kActiveFrame : kAloneFrame;
+  const double measuringFrame = aloneWhileMeasuring() ? kAloneFrame : kActiveFrame;
   if (busy) glfwPollEvents();
   else if (keyWait > 0) glfwWaitEventsTimeout(measuring ? std::min(keyWait, measuringFrame) : keyWait);
   else if (measuring || !input.keys.empty())  // the progress moves; the worker wakes us when done
@@ -45,6 +45,8 @@ void FrameLoop::waitForEvents() {
   else glfwWaitEvents();
   redraw = false;
 }
+
+bool FrameLoop::aloneWhileMeasuring() const { return measuring && glfwGetTime() - lastAction >= 2.0; }
 
 // The scene's clock (animations) and the frames per second.
 void FrameLoop::advanceClock() {

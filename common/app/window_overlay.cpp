@@ -141,6 +141,7 @@ void FrameLoop::drawOverlay() {
     PanelStatus status;
     status.fps = fps;
     status.idle = !busy && !measuring;
+    status.paced = !busy && aloneWhileMeasuring();
     // The measurement's status: running, how far, and whether the numbers shown are an older state's.
     status.measuring = measuring;
     status.progress = measuring ? worker->progress() : 0.0;

@@ -90,6 +90,9 @@ class FrameLoop {
 
   bool running() const;
   void waitForEvents();
+  // While a measurement runs in a window left alone (no key, drag, wheel,
+  // click or drop for 2 s): frames a few a second, the cores the worker's.
+  bool aloneWhileMeasuring() const;
   void applyMouse();
   void applyKey();
   void advanceClock();
