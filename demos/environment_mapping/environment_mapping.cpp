@@ -231,8 +231,8 @@ std::vector<ts::LegendEntry> heatKey(double scaleDeg) {
   auto c = [&](double e) { return glm::vec4(glm::vec3(envmap::heat(e, scaleDeg)), 1.0f); };
   return {{c(0), "no error"}, {c(0.5 * scaleDeg), "half the scale"}, {c(scaleDeg), "the scale or more"}};
 }
-// A key in a cell's band: at the largest scale (at most `scale`) at which its widest entry fits; an entry
-// too wide even at scale 1 (a narrow window's cell) is left out rather than run into the next cell.
+// A key in a cell's band: at the largest scale (at most `scale`) at which its widest entry fits; at scale 1
+// legend() wraps what a line cannot hold (a narrow window's cell: the band has the lines, keyLinesAt).
 void cellKey(ts::Frame& f, ts::layout::Box band, const std::vector<ts::LegendEntry>& entries, int scale) {
   auto entryWidth = [](const ts::LegendEntry& e, int s) {
     return ts::text::height(s) + 4.0f * float(s) + ts::text::width(e.meaning, s);
@@ -241,10 +241,7 @@ void cellKey(ts::Frame& f, ts::layout::Box band, const std::vector<ts::LegendEnt
   for (const ts::LegendEntry& e : entries) widest = std::max(widest, entryWidth(e, 1));
   int s = std::max(1, scale);
   while (s > 1 && widest * float(s) > band.w()) --s;
-  std::vector<ts::LegendEntry> fit;
-  for (const ts::LegendEntry& e : entries)
-    if (entryWidth(e, s) <= band.w()) fit.push_back(e);
-  ts::layout::legend(f, band, fit, s);
+  ts::layout::legend(f, band, entries, s);
 }
 const glm::vec4 kNearBall{230 / 255.0f, 40 / 255.0f, 40 / 255.0f, 1.0f};  // painted on the flat mirror's reference
 // The key of the world's colours (ts::envmaps::worldColour): its base colour toward +X, +Y and +Z (the
@@ -271,13 +268,13 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   // A cell's title takes the upper line of its band; a key of the picture's colours, when it has one, the lower.
   // The note below is set as phrases: a line breaks between them, never inside one.
   auto show = [&](const L::Cell& c, const std::string& id, const ts::TextureDesc* t, const L::Text& above,
-                  const std::vector<L::Text>& below, const std::vector<ts::LegendEntry>& key = {},
-                  bool keyLine = false) {
+                  const std::vector<L::Text>& below, const std::vector<ts::LegendEntry>& key = {}, int keyLines = 0) {
     if (t && t->image) f.panels.push_back(L::picturePanel(f, id, c.picture, *t));  // a nested frame's picture upright
-    // keyLine: the lower line holds a key drawn across cells (the caller's).
-    const L::Box title = key.empty() && !keyLine ? c.above : L::lastLineApart(c.above, c.scale).first;
+    // keyLines: the lower lines hold a key (this cell's, or one drawn across cells by the caller).
+    const int lower = std::max(keyLines, key.empty() ? 0 : 1);
+    const auto [title, keyBand] = lower ? L::keyApart(c.above, c.scale, lower) : std::pair<L::Box, L::Box>{c.above, {}};
     L::caption(f, title, above, kWhite, c.scale);
-    if (!key.empty()) cellKey(f, L::lastLineApart(c.above, c.scale).second, key, c.scale);
+    if (!key.empty()) cellKey(f, keyBand, key, c.scale);
     if (!below.empty()) L::phrases(f, c.below, below, kAmber, c.scale);
   };
   if (view_ == kCompareView) {
@@ -325,11 +322,11 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
     for (int rule = 0; rule < 2; ++rule) {
       const std::string k = kSeamRules[rule];
       show(cells[size_t(rule)], "seam_" + k, found ? &found->seamPictures[size_t(rule)] : nullptr, titles[rule], {}, {},
-           true);
+           1);
       const ts::TextureDesc errorTex = found ? image(found->seamErrors[size_t(rule)], "seam error " + k)
                                              : ts::TextureDesc{};
       show(cells[size_t(2 + rule)], "seam_error_" + k, found ? &errorTex : nullptr, errorTitles[size_t(rule)],
-           numbers[size_t(rule)], {}, true);
+           numbers[size_t(rule)], {}, 1);
     }
     // One key across the two pictures (the world's colours), one across the two errors (the heat scale).
     auto acrossTwo = [&](size_t first) {
@@ -428,17 +425,26 @@ ts::Frame EnvironmentMapping::build(int width, int height, const ts::Measurement
   }
   L::FlowSpec spec;
   spec.n = 3, spec.linesAbove = 2, spec.linesBelow = 2, spec.gap = 8;
-  std::vector<L::Cell> cells = L::flowFitting(area, spec, above, below, 1);
-  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), notes[0], {}, true);
   // One key for the picture and the reference, under their titles: the world's colours, and the flat
-  // mirror's near ball painted on the reference.
+  // mirror's near ball painted on the reference; the error's heat scale under its own.
   std::vector<ts::LegendEntry> key = worldKey();
   if (object_ == envmap::kMirror) key.push_back({kNearBall, "the near ball"});
-  show(cells[1], "reference", found ? &found->reference : nullptr, refCaption(), notes[1], {}, true);
-  const L::Box keyLine = L::lastLineApart(cells[0].above, cells[0].scale).second;
-  cellKey(f, {cells[0].above.x0, keyLine.y0, cells[1].above.x1, keyLine.y1}, key, cells[0].scale);
+  const std::vector<ts::LegendEntry> heat = heatKey(scale);
+  // The keys' lines at the cells' widths (the world's across the first two cells): one at the figures' sizes;
+  // a narrow window lays the cells out again with the lines its keys wrap to, every entry kept.
+  auto keyLinesAt = [&](const std::vector<L::Cell>& c) {
+    return std::max(L::legendLines(key, 1, c[1].above.x1 - c[0].above.x0), L::legendLines(heat, 1, c[2].above.w()));
+  };
+  std::vector<L::Cell> cells = L::flowFitting(area, spec, above, below, 1);
+  for (int lines = 1, want = keyLinesAt(cells); want > lines && want <= 4; lines = want, want = keyLinesAt(cells))
+    cells = L::flowFitting(area, spec, above, below, want);
+  const int keyLines = keyLinesAt(cells);
+  const L::Box keyBand = L::keyApart(cells[0].above, cells[0].scale, keyLines).second;
+  show(cells[0], "picture", found ? &found->picture : nullptr, stateName(param_), notes[0], {}, keyLines);
+  show(cells[1], "reference", found ? &found->reference : nullptr, refCaption(), notes[1], {}, keyLines);
+  cellKey(f, {cells[0].above.x0, keyBand.y0, cells[1].above.x1, keyBand.y1}, key, cells[0].scale);
   const ts::TextureDesc errorTex = found ? image(found->error, "error") : ts::TextureDesc{};
-  show(cells[2], "error", found ? &errorTex : nullptr, errorTitle, notes[2], heatKey(scale));
+  show(cells[2], "error", found ? &errorTex : nullptr, errorTitle, notes[2], heat, keyLines);
   return f;
 }
 

@@ -138,7 +138,8 @@ TEST_P(Layout, NoLabelLeavesItsPanelOrTheWindowOrOverlapsAnother) {
 // notes take the lines they need, so at 640x480 and 700x1000 no label is
 // cut.  (Other views still cut a label at 640x480; they are not listed.)
 // The control: "measuring..." placeholders are not cuts.  Emboss's compare
-// view also keeps its term's key entry, wider than its cell: wrapped.
+// view also keeps its term's key entry, wider than its cell: wrapped; and
+// environment_mapping's keys keep every entry (their bands take the lines).
 TEST(NarrowWindows, TheseViewsCutNoLabel) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> views = {
       {"filter_zoo", {"--view", "methods"}},
@@ -159,6 +160,8 @@ TEST(NarrowWindows, TheseViewsCutNoLabel) {
             << id << " " << joined(flags) << " at " << w << "x" << h << ": \"" << l.text << "\" is cut";
       }
       EXPECT_GT(labels, 5u) << id << " at " << w << "x" << h;
+      if (id == "environment_mapping")  // the world's four colours and the heat scale's three, every one
+        EXPECT_EQ(f.legend.size(), 7u) << "environment_mapping's keys at " << w << "x" << h;
       if (flags.size() > 3 && flags[3] == "emboss")
         EXPECT_TRUE(std::any_of(f.legend.begin(), f.legend.end(),
                                 [](const ts::LegendEntry& e) { return e.meaning.find("within") != std::string::npos; }))
