@@ -151,9 +151,10 @@ std::vector<std::string> entryLines(const LegendEntry& e, int scale, float width
 }  // namespace
 
 int captionLines(const std::string& text, int scale, float width) {
+  // caption()'s test: a line is at most the band's width less one pixel.
   for (int s = std::max(1, scale); s >= 1; --s)
-    if (text::width(text, s) <= width) return 1;
-  return int(wrap(text, 1, width).size());
+    if (text::width(text, s) <= width - 1) return 1;
+  return int(wrap(text, 1, width - 1).size());
 }
 
 std::pair<Box, Box> stackApart(const Box& b, int scale, const std::string& lower) {
@@ -533,8 +534,8 @@ std::vector<Cell> fitting(Box area, const FlowSpec& spec, const std::vector<Stac
   // word, or a formula's glued words (cut however many lines they had), are not an arrangement.
   constexpr int kNoRoom = 100000;
   auto unbreakable = [](const std::string& t, float width) {  // a word, or a formula's glued words, too wide
-    for (const std::string& line : wrap(t, 1, width))
-      if (text::width(line, 1) > width) return true;
+    for (const std::string& line : wrap(t, 1, width - 1))  // caption()'s width
+      if (text::width(line, 1) > width - 1) return true;
     return false;
   };
   std::vector<Cell> cells = flowWith(area, spec, [&](float width, int scale) {

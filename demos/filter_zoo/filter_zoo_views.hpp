@@ -160,17 +160,19 @@ struct Views {
   }
 };
 
-// Lines of notes at one scale: the largest (up to maxScale) at which every
-// line fits the box's width (at 1 they may wrap); from the box's top down.
+// The scale of lines of notes: the largest (up to maxScale) at which every
+// line fits `width` (at 1 they may wrap).
+inline int notesScale(const std::vector<L::Text>& lines, float width, int maxScale) {
+  int s = std::max(1, maxScale);
+  while (s > 1 && std::any_of(lines.begin(), lines.end(),
+                              [&](const L::Text& l) { return ts::text::width(l.text, s) > width; }))
+    --s;
+  return s;
+}
+// Lines of notes at notesScale's scale, from the box's top down.
 inline void notes(ts::Frame& f, L::Box box, const std::vector<L::Text>& lines, glm::vec4 colour, int maxScale,
                   ts::Align align = ts::Align::Left) {
-  int s = std::max(1, maxScale);
-  auto fits = [&](int sc) {
-    for (const L::Text& l : lines)
-      if (ts::text::width(l.text, sc) > box.w()) return false;
-    return true;
-  };
-  while (s > 1 && !fits(s)) --s;
+  const int s = notesScale(lines, box.w(), maxScale);
   L::Column c(f, box);
   for (const L::Text& l : lines) c.add(l, colour, s, align);
 }
@@ -206,10 +208,7 @@ inline void Views::buildMethods(ts::Frame& f, const Result* m) const {
       sceneText().text + (bias != 0 ? ", LOD bias " + fmt("%g", bias) : std::string()) + ".  " + maskText().text,
       "GL_* and anisotropic: GL renders" + (m ? " (" + m->renderer + ")" : std::string()) +
           "; ripmap, SAT, probe line, EWA, exact: on the CPU, in double precision"};
-  int fs = sc;  // the notes' scale, as notes() picks it; at 1 a line may wrap
-  while (fs > 1 && std::any_of(footNotes.begin(), footNotes.end(),
-                               [&](const L::Text& t) { return ts::text::width(t.text, fs) > w - 8; }))
-    --fs;
+  const int fs = notesScale(footNotes, float(w - 8), sc);  // as notes() picks it; at 1 a line may wrap
   const int footH = std::max(2 * line, int(std::ceil(L::columnHeight(footNotes, fs, float(w - 8)))));
   const Row* row = m && m->scene == scene ? rowAt(m, azimuth) : nullptr;
   auto noteOf = [&](int k) -> std::string {
@@ -256,10 +255,7 @@ inline void Views::buildAzimuths(ts::Frame& f, const Result* m, const ts::Measur
                                               (bias != 0 ? "; LOD bias " + L::given("LOD bias", bias, "%g")
                                                          : L::Text()),
                                           same};
-  int fs = sc;
-  while (fs > 1 && std::any_of(footNotes.begin(), footNotes.end(),
-                               [&](const L::Text& t) { return ts::text::width(t.text, fs) > w - 8; }))
-    --fs;
+  const int fs = notesScale(footNotes, float(w - 8), sc);
   int noteLines = 0;  // a note too long for one line wraps: its lines are reserved
   for (const L::Text& t : footNotes) noteLines += L::captionLines(t.text, fs, float(w - 8));
   const float footH = keyHeight(1, fs) + float(noteLines) * L::lineHeight(fs) + 4;
