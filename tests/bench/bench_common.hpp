@@ -8,6 +8,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -183,6 +185,36 @@ inline std::string loadAverage() {
   return b;
 }
 
+// This host's speed, to set a run's times against another host's: the
+// milliseconds a fixed single-threaded workload takes, the fastest of five
+// (the least disturbed).  The workload is the gallery's commonest kind:
+// bilinear lookups of a byte map at hashed double-precision coordinates, as
+// the parallax reference traces.  A slip in a timing shows as a larger
+// ratio to this, whatever the host.
+inline double yardstickMs() {
+  constexpr int kSize = 512;
+  std::vector<unsigned char> map(size_t(kSize) * kSize);
+  for (size_t p = 0; p < map.size(); ++p) map[p] = static_cast<unsigned char>((p * 2654435761u) >> 13);
+  double best = std::numeric_limits<double>::infinity(), sink = 0;
+  for (int run = 0; run < 5; ++run) {
+    const auto t0 = std::chrono::steady_clock::now();
+    uint32_t h = 12345u;
+    double sum = 0;
+    for (int k = 0; k < 4000000; ++k) {
+      h = h * 1664525u + 1013904223u;
+      const double x = double(h >> 8) * (kSize / 16777216.0), y = double((h * 2246822519u) >> 8) * (kSize / 16777216.0);
+      const int i = int(x), j = int(y);
+      const double ax = x - i, ay = y - j;
+      auto at = [&](int a, int b) { return double(map[size_t(b & (kSize - 1)) * kSize + size_t(a & (kSize - 1))]); };
+      sum += (at(i, j) * (1 - ax) + at(i + 1, j) * ax) * (1 - ay) + (at(i, j + 1) * (1 - ax) + at(i + 1, j + 1) * ax) * ay;
+    }
+    best = std::min(best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    sink += sum;
+  }
+  benchmark::DoNotOptimize(sink);
+  return best;
+}
+
 inline void printErrors(const SummaryReporter& rep) {
   for (const auto& [name, why] : rep.errors()) std::printf("- `%s` skipped: %s\n", name.c_str(), why.c_str());
 }
@@ -194,6 +226,7 @@ inline int run(int argc, char** argv, const std::function<void(const SummaryRepo
   if (benchmark::ReportUnrecognizedArguments(*args.argc(), args.argv())) return 2;
   SummaryReporter rep;
   std::string loadBefore = loadAverage();
+  const double yardstick = yardstickMs();
   size_t n = benchmark::RunSpecifiedBenchmarks(&rep);
   std::string loadAfter = loadAverage();
   benchmark::Shutdown();
@@ -202,8 +235,10 @@ inline int run(int argc, char** argv, const std::function<void(const SummaryRepo
   summary(rep);
   std::printf(
       "Machine: %ld cores, load average (1, 5, 15 min) %s before the run, %s after. Other processes on these cores "
-      "inflate wall-clock times: if the load was high, compare the `min` aggregates or re-run on a quiet machine.\n",
-      sysconf(_SC_NPROCESSORS_ONLN), loadBefore.c_str(), loadAfter.c_str());
+      "inflate wall-clock times: if the load was high, compare the `min` aggregates or re-run on a quiet machine. "
+      "Yardstick %.0f ms (a fixed CPU workload, fastest of 5, before the run): another host's times scale by its "
+      "yardstick's ratio to this one.\n",
+      sysconf(_SC_NPROCESSORS_ONLN), loadBefore.c_str(), loadAfter.c_str(), yardstick);
   printErrors(rep);
   return rep.errors().empty() ? 0 : 1;
 }

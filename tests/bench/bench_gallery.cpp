@@ -8,12 +8,16 @@
 //
 // Counters: peak_sum_MB, the largest sum of the resident memory of every
 // make_figures process of the run at one time (sampled every 50 ms from
-// /proc: Linux; 0 elsewhere), and figures, the PNGs it wrote.  One run each
+// /proc: Linux; 0 elsewhere), cpu_s, the CPU seconds (user and system) of
+// make_figures and its children (getrusage: what a busy machine does not
+// inflate, and what a host of another speed scales), and figures, the PNGs
+// it wrote.  One run each
 // (a gallery takes a minute): wall clock, the load average printed after
 // the table; compare the two as a ratio within one run.  Speed is measured,
 // never asserted.
 //   bench_gallery --benchmark_filter=jobs:2
 #include <benchmark/benchmark.h>
+#include <sys/resource.h>
 
 #include <atomic>
 #include <chrono>
@@ -55,6 +59,15 @@ long residentKb(const std::string& marker) {
   return sum;
 }
 
+// The CPU seconds of this process's waited-for children so far (their own
+// waited-for children included).
+double childrenCpuSeconds() {
+  rusage u{};
+  if (getrusage(RUSAGE_CHILDREN, &u) != 0) return 0;
+  auto s = [](const timeval& t) { return double(t.tv_sec) + double(t.tv_usec) * 1e-6; };
+  return s(u.ru_utime) + s(u.ru_stime);
+}
+
 void gallery(benchmark::State& st, int jobs) {
   const std::string program = ts::programPath("make_figures");
   for (auto _ : st) {
@@ -71,6 +84,7 @@ void gallery(benchmark::State& st, int jobs) {
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
       }
     });
+    const double cpu0 = childrenCpuSeconds();
     const auto t0 = std::chrono::steady_clock::now();
     ts::ProcessResult r = ts::runProcess({program, "--jobs", std::to_string(jobs), "--out", out}, "", 3600.0);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -86,6 +100,7 @@ void gallery(benchmark::State& st, int jobs) {
     }
     st.SetIterationTime(seconds);
     st.counters["peak_sum_MB"] = double(peak.load()) / 1024.0;
+    st.counters["cpu_s"] = childrenCpuSeconds() - cpu0;
     st.counters["figures"] = double(pngs);
   }
 }
