@@ -534,7 +534,7 @@ std::vector<Cell> fitting(Box area, const FlowSpec& spec, const std::vector<Stac
   // word, or a formula's glued words (cut however many lines they had), are not an arrangement.
   constexpr int kNoRoom = 100000;
   auto unbreakable = [](const std::string& t, float width) {  // a word, or a formula's glued words, too wide
-    for (const std::string& line : wrap(t, 1, width - 1))  // caption()'s width
+    for (const std::string& line : wrap(t, 1, width - 1))     // caption()'s width
       if (text::width(line, 1) > width - 1) return true;
     return false;
   };

@@ -164,8 +164,8 @@ struct Views {
 // line fits `width` (at 1 they may wrap).
 inline int notesScale(const std::vector<L::Text>& lines, float width, int maxScale) {
   int s = std::max(1, maxScale);
-  while (s > 1 && std::any_of(lines.begin(), lines.end(),
-                              [&](const L::Text& l) { return ts::text::width(l.text, s) > width; }))
+  while (s > 1 &&
+         std::any_of(lines.begin(), lines.end(), [&](const L::Text& l) { return ts::text::width(l.text, s) > width; }))
     --s;
   return s;
 }

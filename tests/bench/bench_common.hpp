@@ -206,7 +206,8 @@ inline double yardstickMs() {
       const int i = int(x), j = int(y);
       const double ax = x - i, ay = y - j;
       auto at = [&](int a, int b) { return double(map[size_t(b & (kSize - 1)) * kSize + size_t(a & (kSize - 1))]); };
-      sum += (at(i, j) * (1 - ax) + at(i + 1, j) * ax) * (1 - ay) + (at(i, j + 1) * (1 - ax) + at(i + 1, j + 1) * ax) * ay;
+      sum += (at(i, j) * (1 - ax) + at(i + 1, j) * ax) * (1 - ay) +
+             (at(i, j + 1) * (1 - ax) + at(i + 1, j + 1) * ax) * ay;
     }
     best = std::min(best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     sink += sum;
