@@ -93,7 +93,8 @@ w() {
 
 # Wine on Xvfb now and then ends a run that has written its output with a
 # page fault (the same address each time; no run faulted twice in a row;
-# once in a demo's window, at 640x480), and once, with another Xvfb job
+# in demos' windows too: 3 of 50 window runs on 2026-12-07, each passing
+# when run again), and once, with another Xvfb job
 # beside it, could not make GLFW's helper window ("Failed to create helper
 # window: Resource data not found").  faulted ERR: whether a run's stderr
 # says so; the parts run such a run once more, and a second fault fails.
