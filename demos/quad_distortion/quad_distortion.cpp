@@ -140,11 +140,12 @@ class QuadDistortion final : public ts::Scene {
   // The bend the math predicts: closed form for the affine split, the same
   // angle measured on the analytic map for the others (smooth: about 0).
   double predicted(Variant v) const {
-    if (v.interp == kAffine) return quad::predictedKinkDeg(corners(), v.diagonal);
-    return quad::kinkAcrossDiagonalDeg([&](glm::dvec2 p) { return analytic(v, p); }, v.diagonal);
+    const quad::Corners st = corners();
+    if (v.interp == kAffine) return quad::predictedKinkDeg(st, v.diagonal);
+    return quad::kinkAcrossDiagonalDeg([&](glm::dvec2 p) { return analytic(st, v, p); }, v.diagonal);
   }
-  glm::dvec2 analytic(Variant v, glm::dvec2 p) const {
-    quad::Corners st = corners();
+  // The corners come parsed (corners()) by the caller: this runs once a pixel.
+  static glm::dvec2 analytic(const quad::Corners& st, Variant v, glm::dvec2 p) {
     if (v.interp == kBilinear) return quad::bilinear(st, p);
     if (v.interp == kProjective) return quad::projective(quad::homography(st), p);
     return quad::split(st, v.diagonal).at(p, v.diagonal)(p);
@@ -238,9 +239,10 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
               right = L::unitPanel("screen_space", cells[1].picture);
     // The texture, the corners' region and the screen diagonal's image (quad_distortion_views.hpp; the affine
     // split's along its first triangle).
-    const quad::Split sp = quad::split(corners(), current.diagonal);
-    quad::views::addTextureView(left, corners(), current.diagonal, checker, [&](glm::dvec2 q) {
-      return current.interp == kAffine ? sp.first(q) : analytic(current, q);
+    const quad::Corners st = corners();
+    const quad::Split sp = quad::split(st, current.diagonal);
+    quad::views::addTextureView(left, st, current.diagonal, checker, [&](glm::dvec2 q) {
+      return current.interp == kAffine ? sp.first(q) : analytic(st, current, q);
     });
     addSquare(f, right, current, checker, edges_);
     f.panels = {left, right};
@@ -249,7 +251,7 @@ ts::Frame QuadDistortion::build(int width, int height, const ts::Measurements& m
       const L::Cell& c = cells[size_t(k)];
       L::caption(f, {c.above.x0, c.above.y0, c.above.x1, c.above.y1 - L::lineHeight(c.scale)}, titles[k], white,
                  c.scale);
-      quad::views::cornerLabels(f, c, corners(), k == 1);
+      quad::views::cornerLabels(f, c, st, k == 1);
     }
     // The kink, then the key of the marks' colours: under the pictures, across the window.
     const L::Cell& c = cells[1];
@@ -302,8 +304,9 @@ double QuadDistortion::measureKink(ts::Renderer& r, Variant v, double* texelErro
   addSquare(mf, p, v, tex, false);
   mf.panels.push_back(p);
   ts::Image img = r.renderOffscreen(mf);
+  const quad::Corners st = corners();
   return quad::kinkDeg(
-      img, T, v.diagonal, [&](glm::dvec2 ab) { return analytic(v, ab); }, texelError);
+      img, T, v.diagonal, [&](glm::dvec2 ab) { return analytic(st, v, ab); }, texelError);
 }
 
 ts::Measurements QuadDistortion::measure(ts::Renderer& r) {
