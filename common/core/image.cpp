@@ -44,27 +44,10 @@ double rmsRgb(const Image& a, const Image& b) {
 Image::Image(int w, int h, Rgba fill) : width(w), height(h) {
   if (w < 0 || h < 0 || w > kMaxImageDimension || h > kMaxImageDimension)
     throw Error("image size " + std::to_string(w) + "x" + std::to_string(h) + " is out of range");
-  pixels.resize(size_t(w) * size_t(h) * 4);
-  for (size_t i = 0; i < pixels.size(); i += 4) {
-    pixels[i] = fill.r;
-    pixels[i + 1] = fill.g;
-    pixels[i + 2] = fill.b;
-    pixels[i + 3] = fill.a;
-  }
-}
-
-Rgba Image::at(int x, int y) const {
-  const uint8_t* p = &pixels[(size_t(y) * width + x) * 4];
-  return {p[0], p[1], p[2], p[3]};
-}
-
-void Image::set(int x, int y, Rgba c) {
-  if (x < 0 || y < 0 || x >= width || y >= height) return;
-  uint8_t* p = &pixels[(size_t(y) * width + x) * 4];
-  p[0] = c.r;
-  p[1] = c.g;
-  p[2] = c.b;
-  p[3] = c.a;
+  pixels.resize(size_t(w) * size_t(h) * 4);  // zeros
+  if (fill == Rgba{0, 0, 0, 0}) return;
+  const uint8_t q[4] = {fill.r, fill.g, fill.b, fill.a};
+  for (size_t i = 0; i < pixels.size(); i += 4) std::memcpy(&pixels[i], q, 4);
 }
 
 void Image::blit(const Image& src, int x0, int y0) {

@@ -20,8 +20,16 @@ struct Image {
   Image() = default;
   Image(int w, int h, Rgba fill = {0, 0, 0, 255});
   bool empty() const { return width == 0 || height == 0; }
-  Rgba at(int x, int y) const;  // (0,0) = top-left
-  void set(int x, int y, Rgba c);
+  // (0,0) = top-left.  Inline: the figures' loops call these once a pixel.
+  Rgba at(int x, int y) const {
+    const uint8_t* p = &pixels[(size_t(y) * size_t(width) + size_t(x)) * 4];
+    return {p[0], p[1], p[2], p[3]};
+  }
+  void set(int x, int y, Rgba c) {  // outside the image: nothing
+    if (x < 0 || y < 0 || x >= width || y >= height) return;
+    uint8_t* p = &pixels[(size_t(y) * size_t(width) + size_t(x)) * 4];
+    p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = c.a;
+  }
   // Copies `src` into this image with its top-left at (x, y), clipped.
   void blit(const Image& src, int x, int y);
   void flipVertical();

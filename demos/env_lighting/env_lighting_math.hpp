@@ -56,10 +56,14 @@ inline std::vector<Light> lights(int n) {
   return out;
 }
 
-// Phong's specular sum at the mirror direction r (unit), unclamped.
+// Phong's specular sum at the mirror direction r (unit), unclamped.  A
+// light behind r adds pow(0, n) = 0: left out, the same sum (s is never -0).
 inline glm::dvec3 specular(glm::dvec3 r, const std::vector<Light>& ls) {
   glm::dvec3 s(0.0);
-  for (const Light& l : ls) s += l.colour * std::pow(std::max(0.0, glm::dot(r, l.dir)), kShininess);
+  for (const Light& l : ls) {
+    const double c = glm::dot(r, l.dir);
+    if (c > 0.0) s += l.colour * std::pow(c, kShininess);
+  }
   return s;
 }
 
