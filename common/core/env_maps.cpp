@@ -9,12 +9,14 @@
 
 #include "common/core/error.hpp"
 #include "common/core/kept.hpp"
+#include "common/core/parallel.hpp"
 
 namespace ts::envmaps {
 namespace {
 // The maps made so far, by what makes them: a figure's passes ask for the
 // same map many times (the dynamic cube map's background, in every face of
-// every pass it measures), and each costs a world colour per texel.
+// every pass it measures), and each costs a world colour per texel (made
+// on both cores).
 struct MapInputs {
   Param p;
   int face;
@@ -29,10 +31,11 @@ std::shared_ptr<const Image> mapPicture(Param p, int face, const glm::dmat3& sph
     const int faces = p == kCube ? 6 : 1;
     const glm::dmat3 toWorld = glm::transpose(sphereView);
     auto img = std::make_shared<Image>(sz.w, sz.h * faces);
-    for (int f = 0; f < faces; ++f)
-      for (int j = 0; j < sz.h; ++j)  // row j is t = (j + 1/2) / h (a cube face's rows f h + j)
-        for (int i = 0; i < sz.w; ++i)
-          img->set(i, f * sz.h + j, toRgba(worldColour(texelDir(p, f, (i + 0.5) / sz.w, (j + 0.5) / sz.h, toWorld))));
+    evenAndOdd(faces * sz.h, [&](int y) {  // row j is t = (j + 1/2) / h (a cube face's rows f h + j)
+      const int f = y / sz.h, j = y % sz.h;
+      for (int i = 0; i < sz.w; ++i)
+        img->set(i, y, toRgba(worldColour(texelDir(p, f, (i + 0.5) / sz.w, (j + 0.5) / sz.h, toWorld))));
+    });
     return std::shared_ptr<const Image>(img);
   });
 }

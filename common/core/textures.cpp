@@ -8,6 +8,7 @@
 #include <string>
 
 #include "common/core/error.hpp"
+#include "common/core/kept.hpp"
 #include "common/core/text.hpp"
 
 namespace ts {
@@ -63,14 +64,22 @@ Rgba checkerAt(int size, int checks, Rgba a, Rgba b, double s, double t) {
 
 TextureDesc texelIndexTexture(int size) {
   if (size < 1 || size > 4096) throw Error("texel index texture: size must be 1..4096");
-  auto img = std::make_shared<Image>(size, size);
-  for (int j = 0; j < size; ++j)
-    for (int i = 0; i < size; ++i)
-      img->set(i, j, {uint8_t(i & 255), uint8_t(j & 255), uint8_t((i >> 8) | ((j >> 8) << 4)), 255});
+  auto make = [size] {
+    auto img = std::make_shared<Image>(size, size);
+    uint8_t* p = img->pixels.data();
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i < size; ++i, p += 4)
+        p[0] = uint8_t(i & 255), p[1] = uint8_t(j & 255), p[2] = uint8_t((i >> 8) | ((j >> 8) << 4)), p[3] = 255;
+    return std::shared_ptr<const Image>(img);
+  };
+  // Made once per process for sizes up to 2048 (16 MB): a demo's measurement
+  // asks for the same one pass after pass.  Larger ones are made each time,
+  // so that they do not stay beside a demo's peak.
+  static Kept<int, std::shared_ptr<const Image>> kept(2);
   TextureDesc t;
+  t.image = size <= 2048 ? kept.get(size, make) : make();
   t.name = "texel_index";
   t.params = {{"size", str(size)}};
-  t.image = img;
   t.minFilter = t.magFilter = GL_NEAREST;
   return t;
 }

@@ -25,6 +25,7 @@
 #include "common/core/frame.hpp"
 #include "common/core/image.hpp"
 #include "common/core/kept.hpp"
+#include "common/core/parallel.hpp"
 
 namespace envlight {
 constexpr double kPi = 3.14159265358979323846;
@@ -70,20 +71,20 @@ inline glm::dvec3 specular(glm::dvec3 r, const std::vector<Light>& ls) {
 // The map: 6 faces of face x face texels, each S at its centre's direction
 // (ts::envmaps::cubeDir: GL's face table), GL_LINEAR, no mipmaps.  Named
 // "env_lighting_map" with its parameters, which the generator remakes.
-// The map's texels for (nLights, face), made once per process: a figure
-// draws the same map in several passes and views, and each texel costs a
-// pow() per light.  A few are kept; the pictures are shared, never changed.
+// The map's texels for (nLights, face), made once per process (on both
+// cores): a figure draws the same map in several passes and views, and each
+// texel costs a pow() per light.  A few are kept; the pictures are shared, never changed.
 inline std::shared_ptr<const ts::Image> lightingMapTexels(int nLights, int face) {
   static ts::Kept<std::pair<int, int>, std::shared_ptr<const ts::Image>> made(8);
   return made.get({nLights, face}, [&] {
     const std::vector<Light> ls = lights(nLights);
     auto img = std::make_shared<ts::Image>(face, 6 * face);
-    for (int f = 0; f < 6; ++f)
-      for (int j = 0; j < face; ++j)
-        for (int i = 0; i < face; ++i) {
-          const glm::dvec3 d = ts::envmaps::cubeDir(f, (i + 0.5) / face, (j + 0.5) / face);
-          img->set(i, f * face + j, ts::envmaps::toRgba(specular(d, ls)));
-        }
+    ts::evenAndOdd(6 * face, [&](int y) {  // face f's row j is image row f face + j
+      for (int i = 0; i < face; ++i) {
+        const glm::dvec3 d = ts::envmaps::cubeDir(y / face, (i + 0.5) / face, (y % face + 0.5) / face);
+        img->set(i, y, ts::envmaps::toRgba(specular(d, ls)));
+      }
+    });
     return std::shared_ptr<const ts::Image>(img);
   });
 }
