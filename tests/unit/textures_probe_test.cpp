@@ -3,10 +3,15 @@
 // No GL.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "common/core/error.hpp"
+#include "common/core/parallel.hpp"
 #include "common/core/probe.hpp"
 #include "common/core/textures.hpp"
 
@@ -134,6 +139,39 @@ TEST(TexelIndex, RoundTrip) {
   EXPECT_EQ(i, 4095);
   EXPECT_EQ(j, 4095);
   EXPECT_THROW(ts::texelIndexTexture(4097), ts::Error);
+}
+
+// Claim: a size up to 2048 is made once per process (the same picture for
+// every pass that asks), 4096 afresh each time, and either decodes right.
+TEST(TexelIndex, KeptUpTo2048) {
+  EXPECT_EQ(ts::texelIndexTexture(2048).image, ts::texelIndexTexture(2048).image);
+  EXPECT_EQ(ts::texelIndexTexture(64).image, ts::texelIndexTexture(64).image);
+  const ts::TextureDesc a = ts::texelIndexTexture(4096), b = ts::texelIndexTexture(4096);
+  EXPECT_NE(a.image, b.image);
+  int i = -1, j = -1;
+  ts::decodeTexelIndex(a.image->at(4095, 2049), &i, &j);
+  EXPECT_EQ(i, 4095);
+  EXPECT_EQ(j, 2049);
+}
+
+// Claim: evenAndOdd calls f once for each index, whichever thread, and an
+// exception from either half reaches the caller after both halves stopped.
+TEST(EvenAndOdd, EachIndexOnceAndExceptionsReachTheCaller) {
+  for (int n : {0, 1, 2, 7, 1000}) {
+    std::vector<int> calls(size_t(n), 0);
+    ts::evenAndOdd(n, [&](int y) { ++calls[size_t(y)]; });
+    EXPECT_EQ(std::count(calls.begin(), calls.end(), 1), n) << n;
+  }
+  for (int bad : {4, 5}) {  // thrown on the caller's half, then on the other's
+    std::atomic<int> done{0};
+    EXPECT_THROW(ts::evenAndOdd(10,
+                                [&](int y) {
+                                  if (y == bad) throw ts::Error("row " + std::to_string(y));
+                                  ++done;
+                                }),
+                 ts::Error);
+    EXPECT_LE(done.load(), 9);
+  }
 }
 
 // Claim: probe::fit recovers the coefficients of an exact quadratic (and of a
