@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -69,39 +70,59 @@ bool hasListPerLine(const Json& v) {
       if ((listPerLine(k) && x.is_array() && !x.empty()) || hasListPerLine(x)) return true;
   return false;
 }
-void emit(std::string& out, const Json& v, const std::string& indent) {
-  if (v.is_object()) {
-    bool multi = hasListPerLine(v);
-    out += '{';
-    bool first = true;
-    for (const auto& [k, x] : v.items()) {
-      if (!first) out += multi && (listPerLine(k) && x.is_array() && !x.empty()) ? ",\n" + indent + " " : ", ";
-      first = false;
-      out += Json(k).dump() + ": ";
-      if (listPerLine(k) && x.is_array() && !x.empty()) {
-        out += '[';
-        std::string inner = indent + "  ";
-        for (size_t i = 0; i < x.size(); ++i) {
-          out += (i ? ",\n" : "\n") + inner;
-          emit(out, x[i], inner);
-        }
-        out += ']';
-      } else {
-        emit(out, x, indent);
-      }
-    }
-    out += '}';
-  } else if (v.is_array()) {
-    out += '[';
-    for (size_t i = 0; i < v.size(); ++i) {
-      if (i) out += v[i].is_primitive() ? "," : ", ";
-      emit(out, v[i], indent);
-    }
-    out += ']';
-  } else {
-    out += v.dump();
+// The text of one file, appended to `out`: scalars by nlohmann's own
+// serializer writing straight into `out` (Json::dump() makes a string and a
+// shared adapter for every number, which was most of a mesh's sidecar time),
+// keys of plain printable ASCII quoted as dump() quotes them (nothing to
+// escape).  The bytes are dump()'s.
+class Writer {
+ public:
+  explicit Writer(std::string& out)
+      : out_(out), scalars_(nlohmann::detail::output_adapter<char, std::string>(out), ' ') {}
+  void key(const std::string& k) {
+    const bool plain = std::all_of(k.begin(), k.end(),
+                                   [](char c) { return c >= 0x20 && c < 0x7f && c != '"' && c != '\\'; });
+    if (plain) out_ += '"', out_ += k, out_ += "\": ";
+    else out_ += Json(k).dump() + ": ";
   }
-}
+  void emit(const Json& v, const std::string& indent) {
+    if (v.is_object()) {
+      bool multi = hasListPerLine(v);
+      out_ += '{';
+      bool first = true;
+      for (const auto& [k, x] : v.items()) {
+        if (!first) out_ += multi && (listPerLine(k) && x.is_array() && !x.empty()) ? ",\n" + indent + " " : ", ";
+        first = false;
+        key(k);
+        if (listPerLine(k) && x.is_array() && !x.empty()) {
+          out_ += '[';
+          std::string inner = indent + "  ";
+          for (size_t i = 0; i < x.size(); ++i) {
+            out_ += (i ? ",\n" : "\n") + inner;
+            emit(x[i], inner);
+          }
+          out_ += ']';
+        } else {
+          emit(x, indent);
+        }
+      }
+      out_ += '}';
+    } else if (v.is_array()) {
+      out_ += '[';
+      for (size_t i = 0; i < v.size(); ++i) {
+        if (i) out_ += v[i].is_primitive() ? "," : ", ";
+        emit(v[i], indent);
+      }
+      out_ += ']';
+    } else {
+      scalars_.dump(v, false, false, 0);  // as v.dump()
+    }
+  }
+
+ private:
+  std::string& out_;
+  nlohmann::detail::serializer<Json> scalars_;
+};
 
 // The environment-mapping texgen modes: the mode and the
 // coordinates it generates; no planes (they read the normal).
@@ -355,20 +376,21 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
   frameInto(d, f, true);
 
   std::string out = "{";
+  Writer w(out);
   bool first = true;
   for (const auto& [k, v] : d.items()) {
     out += first ? "\n  " : ",\n  ";
     first = false;
-    out += Json(k).dump() + ": ";
+    w.key(k);
     if (listPerLine(k) && v.is_array() && !v.empty()) {
       out += '[';
       for (size_t i = 0; i < v.size(); ++i) {
         out += i ? ",\n    " : "\n    ";
-        emit(out, v[i], "    ");
+        w.emit(v[i], "    ");
       }
       out += "\n  ]";
     } else {
-      emit(out, v, "  ");
+      w.emit(v, "  ");
     }
   }
   return out + "\n}\n";
