@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <system_error>
 #include <utility>
+#include <vector>
 
 #include "common/core/text.hpp"
 
@@ -77,8 +79,10 @@ bool hasListPerLine(const Json& v) {
 // escape).  The bytes are dump()'s.
 class Writer {
  public:
-  explicit Writer(std::string& out)
-      : out_(out), scalars_(nlohmann::detail::output_adapter<char, std::string>(out), ' ') {}
+  // `streamed`: the batches whose vertex lists the tree holds as a marker
+  // (vertexMarker), written from the batch itself.
+  Writer(std::string& out, const std::vector<const Batch*>& streamed)
+      : out_(out), streamed_(streamed), scalars_(nlohmann::detail::output_adapter<char, std::string>(out), ' ') {}
   void key(const std::string& k) {
     const bool plain = std::all_of(k.begin(), k.end(),
                                    [](char c) { return c >= 0x20 && c < 0x7f && c != '"' && c != '\\'; });
@@ -97,9 +101,13 @@ class Writer {
         if (listPerLine(k) && x.is_array() && !x.empty()) {
           out_ += '[';
           std::string inner = indent + "  ";
-          for (size_t i = 0; i < x.size(); ++i) {
-            out_ += (i ? ",\n" : "\n") + inner;
-            emit(x[i], inner);
+          if (k == "vertices" && x.size() == 1 && x[0].is_binary()) {
+            vertices(*streamed_.at(size_t(x[0].get_binary().subtype())), inner);
+          } else {
+            for (size_t i = 0; i < x.size(); ++i) {
+              out_ += (i ? ",\n" : "\n") + inner;
+              emit(x[i], inner);
+            }
           }
           out_ += ']';
         } else {
@@ -120,9 +128,50 @@ class Writer {
   }
 
  private:
+  // A batch's vertices, one a line, as emit() writes the list of objects
+  // frameInto once built for them: {"pos": [...], "tex": [...], "color":
+  // [...]} and the keys the batch needs.  A mesh has some hundred thousand:
+  // a tree of them cost more than all the rest of the file.
+  void vertices(const Batch& b, const std::string& inner) {
+    for (size_t i = 0; i < b.vertices.size(); ++i) {
+      const Vertex& x = b.vertices[i];
+      out_ += (i ? ",\n" : "\n") + inner;
+      out_ += '{';
+      member("pos", x.pos, true);
+      member("tex", x.tex);
+      member("color", x.color);
+      if (b.colorSum) member("secondary", x.secondary);
+      if (b.texGen.needsNormal()) member("normal", x.normal);
+      if (b.texture1 >= 0 && b.coords1) member("tex1", x.tex1);
+      out_ += '}';
+    }
+  }
+  template <int N>
+  void member(const char* name, const glm::vec<N, float>& v, bool first = false) {
+    if (!first) out_ += ", ";
+    key(name);
+    out_ += '[';
+    for (int i = 0; i < N; ++i) {
+      if (i) out_ += ',';
+      scalars_.dump(num(v[i]), false, false, 0);
+    }
+    out_ += ']';
+  }
+
   std::string& out_;
+  const std::vector<const Batch*>& streamed_;
   nlohmann::detail::serializer<Json> scalars_;
 };
+// What frameInto puts where a batch's vertex list goes: a list of one binary
+// value whose subtype is the batch's index in `streamed` (Writer writes the
+// vertices); an empty batch keeps its empty list.
+Json vertexMarker(const Batch& b, std::vector<const Batch*>& streamed) {
+  if (b.vertices.empty()) return Json::array();
+  Json marker = Json::array();
+  marker.push_back(Json::binary({}, std::uint64_t(streamed.size())));
+  streamed.push_back(&b);
+  return marker;
+}
 
 // The environment-mapping texgen modes: the mode and the
 // coordinates it generates; no planes (they read the normal).
@@ -193,7 +242,7 @@ std::string glEnumName(GLenum e) {
 // The frame's own keys, in the sidecar's order (the fixed state after the
 // size at the top level; a nested frame, TextureDesc::renderedFrom, shares
 // the top level's fixed state and writes none).
-static void frameInto(Json& d, const Frame& f, bool withFixedState) {
+static void frameInto(Json& d, const Frame& f, bool withFixedState, std::vector<const Batch*>& streamed) {
   d["size"] = {f.width, f.height};
   if (withFixedState)
     d["fixed_state"] = {{"blend_func",
@@ -234,7 +283,7 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
     }
     if (t.renderedFrom) {  // a nested frame: the frame this texture is the render of
       Json nested;
-      frameInto(nested, *t.renderedFrom, false);
+      frameInto(nested, *t.renderedFrom, false, streamed);
       textures.back()["rendered_from"] = std::move(nested);
     }
     if (t.cube) {  // a cube map: only then; height is a face's
@@ -252,14 +301,10 @@ static void frameInto(Json& d, const Frame& f, bool withFixedState) {
     for (const Batch& b : p.batches) {
       Json uniforms = Json::object();
       for (const Uniform& u : b.uniforms) uniforms[u.name] = vec(u.value);
-      Json vertices = Json::array();
-      for (const Vertex& x : b.vertices) {
-        Json v = {{"pos", vec(x.pos)}, {"tex", vec(x.tex)}, {"color", vec(x.color)}};
-        if (b.colorSum) v["secondary"] = vec(x.secondary);
-        if (b.texGen.needsNormal()) v["normal"] = vec(x.normal);    // only where texgen reads it
-        if (b.texture1 >= 0 && b.coords1) v["tex1"] = vec(x.tex1);  // unit 1's own coordinates
-        vertices.push_back(std::move(v));
-      }
+      // Each vertex: pos, tex, color, and only where they matter secondary
+      // (the colour sum), normal (texgen reads it), tex1 (unit 1's own
+      // coordinates); written by Writer::vertices.
+      Json vertices = vertexMarker(b, streamed);
       Json bj = {{"role", b.role},
                  {"primitive", primName(b.prim)},
                  {"texture", b.texture},
@@ -373,10 +418,11 @@ std::string sidecarJson(const Frame& f, const SidecarInfo& info) {
       "matrices column-major as glLoadMatrixf takes them; viewports in pixels from the top-left of the image; "
       "texture row 0 is t = 0; vertex tex is (s,t,r,q)";
   if (!info.renderer.empty()) d["renderer"] = info.renderer;
-  frameInto(d, f, true);
+  std::vector<const Batch*> streamed;
+  frameInto(d, f, true, streamed);
 
   std::string out = "{";
-  Writer w(out);
+  Writer w(out, streamed);
   bool first = true;
   for (const auto& [k, v] : d.items()) {
     out += first ? "\n  " : ",\n  ";
