@@ -463,9 +463,14 @@ bool Column::add(const Text& text, glm::vec4 color, int scale, Align align, glm:
 }
 
 namespace {
-// flow() with each arrangement's caption lines from `lines(cell width, scale)` (above, below).
+// The caption lines a cell's bands take (above, below) in an arrangement.
+using Lines = std::pair<int, int>;
+// flow() with each arrangement's caption lines from `lines(cell width, scale)`:
+// cell k's (above, below).  Every row's bands are as tall as the tallest of
+// all cells' (flow()'s even grid), or with `perRow` as its own cells' tallest.
 std::vector<Cell> flowWith(Box area, const FlowSpec& spec,
-                           const std::function<std::pair<int, int>(float width, int scale)>& lines) {
+                           const std::function<std::vector<Lines>(float width, int scale)>& lines,
+                           bool perRow = false) {
   std::vector<Cell> best;
   double bestArea = -1;
   bool bestFits = false;
@@ -477,10 +482,20 @@ std::vector<Cell> flowWith(Box area, const FlowSpec& spec,
     // whose picture asks for at least that scale.
     for (int s = std::max(1, spec.maxScale); s >= 1; --s) {
       float cw = (area.w() - float(cols - 1) * spec.gap) / float(cols);
-      const auto [linesAbove, linesBelow] = lines(cw, s);
-      float bandA = float(linesAbove) * lineHeight(s), bandB = float(linesBelow) * lineHeight(s);
+      const std::vector<Lines> need = lines(cw, s);
+      // Each row's band heights: its own cells' lines, or every cell's.
+      std::vector<float> bandA(size_t(rows), 0), bandB(size_t(rows), 0);
+      for (int k = 0; k < int(need.size()); ++k)  // (a cell k >= n is in no row: counted only without perRow)
+        for (int r = 0; r < rows; ++r)
+          if (!perRow || r == k / cols) {
+            bandA[size_t(r)] = std::max(bandA[size_t(r)], float(need[size_t(k)].first) * lineHeight(s));
+            bandB[size_t(r)] = std::max(bandB[size_t(r)], float(need[size_t(k)].second) * lineHeight(s));
+          }
+      float bands = 0;
+      for (int r = 0; r < rows; ++r) bands += bandA[size_t(r)] + bandB[size_t(r)];
       float ch = (area.h() - float(rows - 1) * spec.gap) / float(rows);
-      float ph = ch - bandA - bandB, pw = cw;
+      float ph = perRow ? (area.h() - float(rows - 1) * spec.gap - bands) / float(rows) : ch - bandA[0] - bandB[0];
+      float pw = cw;
       if (pw < 1 || ph < 1) continue;
       if (pw / ph > spec.aspect) pw = ph * spec.aspect;
       else ph = pw / spec.aspect;
@@ -495,20 +510,25 @@ std::vector<Cell> flowWith(Box area, const FlowSpec& spec,
       best.clear();
       // Centre the grid: the used width and height.
       float usedW = float(cols) * cw + float(cols - 1) * spec.gap;
-      float cellH = bandA + float(pic.h) + bandB;
-      float usedH = float(rows) * cellH + float(rows - 1) * spec.gap;
+      float cellH = bandA[0] + float(pic.h) + bandB[0];
+      float usedH = perRow ? bands + float(rows) * float(pic.h) + float(rows - 1) * spec.gap
+                           : float(rows) * cellH + float(rows - 1) * spec.gap;
       float y0 = area.y0 + (area.h() - usedH) / 2;
+      std::vector<float> rowY(size_t(rows), y0);  // each row's top (perRow)
+      for (int r = 1; r < rows; ++r)
+        rowY[size_t(r)] = rowY[size_t(r - 1)] + bandA[size_t(r - 1)] + float(pic.h) + bandB[size_t(r - 1)] + spec.gap;
       for (int k = 0; k < n; ++k) {
         int r = k / cols, c = k % cols;
         int inRow = std::min(cols, n - r * cols);  // a short last row is centred too
         float x0 = area.x0 + (area.w() - usedW) / 2 + (float(cols - inRow) * (cw + spec.gap)) / 2 +
                    float(c) * (cw + spec.gap);
-        float cy = y0 + float(r) * (cellH + spec.gap);
+        float cy = perRow ? rowY[size_t(r)] : y0 + float(r) * (cellH + spec.gap);
+        const float a0 = bandA[size_t(r)], b0 = bandB[size_t(r)];
         Cell cell;
         cell.scale = s;
-        cell.picture = {int(std::lround(x0 + (cw - float(pic.w)) / 2)), int(std::lround(cy + bandA)), pic.w, pic.h};
+        cell.picture = {int(std::lround(x0 + (cw - float(pic.w)) / 2)), int(std::lround(cy + a0)), pic.w, pic.h};
         cell.above = {x0, cy, x0 + cw, float(cell.picture.y)};
-        cell.below = {x0, float(cell.picture.y + pic.h), x0 + cw, float(cell.picture.y + pic.h) + bandB};
+        cell.below = {x0, float(cell.picture.y + pic.h), x0 + cw, float(cell.picture.y + pic.h) + b0};
         best.push_back(cell);
       }
       break;
@@ -521,7 +541,9 @@ std::vector<Cell> flowWith(Box area, const FlowSpec& spec,
 }  // namespace
 
 std::vector<Cell> flow(Box area, const FlowSpec& spec) {
-  return flowWith(area, spec, [&](float, int) { return std::pair{spec.linesAbove, spec.linesBelow}; });
+  return flowWith(area, spec, [&](float, int) {
+    return std::vector<Lines>(size_t(std::max(1, spec.n)), Lines{spec.linesAbove, spec.linesBelow});
+  });
 }
 
 namespace {
@@ -538,19 +560,29 @@ std::vector<Cell> fitting(Box area, const FlowSpec& spec, const std::vector<Stac
       if (text::width(line, 1) > width - 1) return true;
     return false;
   };
-  std::vector<Cell> cells = flowWith(area, spec, [&](float width, int scale) {
-    auto need = [&](const std::vector<Stack>& stacks, int have, bool keyed) {
-      for (size_t k = 0; k < stacks.size(); ++k) {
-        int n = keyed ? keyLines(k, width) : 0;
-        for (const std::string& t : stacks[k]) n = unbreakable(t, width) ? kNoRoom : n + captionLines(t, scale, width);
-        have = std::max(have, n >= kNoRoom ? kNoRoom : std::min(maxLines, n));
-      }
-      return have;
-    };
-    return std::pair{need(above, spec.linesAbove, true), need(below, spec.linesBelow, false)};
-  });
-  // No arrangement has room for the words: flow()'s, its captions cut with "...".
-  if (cells.empty() || (cells.front().picture.w <= 1 && cells.front().picture.h <= 1)) return flow(area, spec);
+  auto lines = [&](float width, int scale) {
+    std::vector<Lines> out(std::max(above.size(), below.size()), Lines{spec.linesAbove, spec.linesBelow});
+    auto need = [&](const std::string& t) { return unbreakable(t, width) ? kNoRoom : captionLines(t, scale, width); };
+    for (size_t k = 0; k < out.size(); ++k) {
+      int a = k < above.size() ? keyLines(k, width) : 0, b = 0;
+      if (k < above.size())
+        for (const std::string& t : above[k]) a = std::min(kNoRoom, a + need(t));
+      if (k < below.size())
+        for (const std::string& t : below[k]) b = std::min(kNoRoom, b + need(t));
+      out[k].first = std::max(out[k].first, a >= kNoRoom ? kNoRoom : std::min(maxLines, a));
+      out[k].second = std::max(out[k].second, b >= kNoRoom ? kNoRoom : std::min(maxLines, b));
+    }
+    return out;
+  };
+  auto none = [](const std::vector<Cell>& c) {
+    return c.empty() || (c.front().picture.w <= 1 && c.front().picture.h <= 1);
+  };
+  std::vector<Cell> cells = flowWith(area, spec, lines);
+  // No even grid has room for the words: each row's bands only as tall as its own cells need (one
+  // long title then costs its row a line, not every row); failing that too, flow()'s, its captions
+  // cut with "...".
+  if (none(cells)) cells = flowWith(area, spec, lines, true);
+  if (none(cells)) return flow(area, spec);
   return cells;
 }
 }  // namespace
