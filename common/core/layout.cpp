@@ -577,11 +577,15 @@ std::vector<Cell> fitting(Box area, const FlowSpec& spec, const std::vector<Stac
   auto none = [](const std::vector<Cell>& c) {
     return c.empty() || (c.front().picture.w <= 1 && c.front().picture.h <= 1);
   };
+  auto wide = [&](const std::vector<Cell>& c) { return !none(c) && c.front().above.w() >= spec.minCellWidth; };
   std::vector<Cell> cells = flowWith(area, spec, lines);
-  // No even grid has room for the words: each row's bands only as tall as its own cells need (one
-  // long title then costs its row a line, not every row); failing that too, flow()'s, its captions
-  // cut with "...".
-  if (none(cells)) cells = flowWith(area, spec, lines, true);
+  // No even grid of cells wide enough has room for the words: each row's bands only as tall as its
+  // own cells need (one long title then costs its row a line, not every row); failing that too,
+  // the even grid of narrow cells, else flow()'s, its captions cut with "...".
+  if (!wide(cells)) {
+    std::vector<Cell> rows = flowWith(area, spec, lines, true);
+    if (wide(rows) || none(cells)) cells = std::move(rows);
+  }
   if (none(cells)) return flow(area, spec);
   return cells;
 }

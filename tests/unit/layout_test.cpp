@@ -6,6 +6,7 @@
 // And caption(): a GL name wider than the line breaks after an underscore.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,39 @@ TEST(FlowFitting, ANarrowWindowWrapsTheKeyInsteadOfLeavingEntriesOut) {
   // The control: the one line flow() would have given the key leaves entries out.
   const std::vector<L::Cell> plain = L::flow(area, twoCells());
   EXPECT_LT(drawn(L::lastLineApart(plain[0].above, plain[0].scale).second), kKey.size());
+}
+// Ten cells in two columns, one title two lines at the cells' width, in an
+// area with no even grid of two-line titles (filter_zoo's methods beside
+// its panel): only that title's row takes the second line.  Every band is
+// as deep as its own cell's lines, the rows do not overlap, and the control,
+// an even grid of two-line title bands, has no room for a picture in cells
+// that wide (only in narrower ones, which an arrangement of wide cells beats).
+TEST(FlowFitting, WithNoRoomForAnEvenGridEachRowTakesItsOwnLines) {
+  const std::string longTitle = "GL_NEAREST_MIPMAP_NEAREST";
+  L::FlowSpec spec;
+  spec.n = 10, spec.aspect = 2.5f, spec.gap = 8, spec.minCellWidth = 150;
+  std::vector<L::Stack> above(10, {"trilinear"}), below(10, {"RMS 12.34"});
+  above[3] = {longTitle};
+  const float line = L::lineHeight(1), width = 432;
+  // Height for ten rows' worth of lines and a few pixels of picture each, not for five rows of three lines.
+  const L::Box area{4, 4, 4 + width, 4 + 11 * line + 4 * 8 + 5 * 6};
+  ASSERT_GT(ts::text::width(longTitle, 1), (width - 8) / 2 - 1) << "the title must wrap in two columns";
+  L::FlowSpec even = spec;
+  even.linesAbove = 2;
+  const std::vector<L::Cell> control = L::flow(area, even);
+  EXPECT_TRUE(control.front().picture.h <= 1 || control.front().above.w() < spec.minCellWidth)
+      << "the control: an even grid of two-line titles in cells wide enough should have no room here";
+  const std::vector<L::Cell> cells = L::flowFitting(area, spec, above, below);
+  ASSERT_EQ(cells.size(), 10u);
+  EXPECT_GT(cells[0].picture.h, 1);
+  for (size_t k = 0; k < cells.size(); ++k) {
+    const int lines = int(std::lround(cells[k].above.h() / line));
+    const bool longRow = k / 2 == 1;
+    EXPECT_EQ(lines, longRow ? 2 : 1) << "cell " << k;
+    EXPECT_EQ(int(std::lround(cells[k].below.h() / line)), 1) << "cell " << k;
+    if (k >= 2) EXPECT_GE(cells[k].above.y0, cells[k - 2].below.y1) << "cell " << k << " overlaps the row above";
+    EXPECT_LE(cells[k].below.y1, area.y1 + 0.5f) << "cell " << k;
+  }
 }
 // A GL name wider than its cell (filter_zoo's GL_NEAREST_MIPMAP_NEAREST in
 // a 640x480 window) wraps after an underscore instead of being cut with
