@@ -7,6 +7,7 @@
 #include "common/gl/gl_record.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <charconv>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <map>
 #include <type_traits>
@@ -67,6 +69,14 @@ struct Raw {
   double f = 0;
   const void* p = nullptr;
   enum { Integer, Unsigned, Real, RealDouble, Ptr } type = Integer;
+};
+
+// A call's arguments, held by its wrapper on the stack (no allocation per call).
+struct Raws {
+  const Raw* data;
+  size_t count;
+  size_t size() const { return count; }
+  const Raw& operator[](size_t k) const { return data[k]; }
 };
 
 template <typename T>
@@ -284,7 +294,7 @@ int typeBytes(long long type) {
   }
 }
 
-Arg describe(char hint, const Raw& r, const std::vector<Raw>& all, size_t index, const char* fn) {
+Arg describe(char hint, const Raw& r, const Raws& all, size_t index, const char* fn) {
   Arg a;
   a.i = r.i;
   a.f = r.f;
@@ -425,13 +435,13 @@ const std::string& hintOf(int index) {
   return byIndex[size_t(index)];
 }
 
-Call begin(int index, const std::vector<Raw>& raws) {
+Call begin(int index, const Raws& raws) {
   Call c;
   c.name = kNames[index];
-  std::string hint = hintOf(index);
+  std::string_view hint = hintOf(index);
   if (!hint.empty() && hint[0] == '?') {
     c.query = true;
-    hint.erase(0, 1);
+    hint.remove_prefix(1);
   }
   // Exactly as many as the call has: a recording of a fixed-function mesh
   // holds a million calls, and the vector's growth (1, 2, 4) would leave a
@@ -444,7 +454,7 @@ Call begin(int index, const std::vector<Raw>& raws) {
   return c;
 }
 
-void finish(int index, Call& c, const std::vector<Raw>& raws) {
+void finish(int index, Call& c, const Raws& raws) {
   // Names the call wrote (glGenTextures(1, &id)): read them now.
   const std::string& hint = hintOf(index);
   for (size_t k = 0; k < c.args.size(); ++k) {
@@ -463,7 +473,8 @@ struct Wrapper<Index, R (*)(A...)> {
   static R APIENTRY call(A... a) {
     auto real = reinterpret_cast<R (*)(A...)>(g_real[Index]);
     if (!g_recording) return real(a...);  // a Recording ending on this thread
-    std::vector<Raw> raws{toRaw(a)...};
+    const std::array<Raw, sizeof...(A)> held{toRaw(a)...};
+    const Raws raws{held.data(), held.size()};
     Call c = begin(Index, raws);
     if constexpr (std::is_void_v<R>) {
       real(a...);

@@ -75,7 +75,8 @@ struct Ray {
   dvec3 o, d;
 };
 inline Ray eyeRay(int x, int y, int n) {
-  const glm::dmat4 inv = glm::inverse(glm::dmat4(eyeProjection()) * glm::dmat4(eyeView()));
+  // The eye is fixed: its inverse once, not per pixel (a 4x4 inverse was a twentieth of a window's start).
+  static const glm::dmat4 inv = glm::inverse(glm::dmat4(eyeProjection()) * glm::dmat4(eyeView()));
   const double nx = (x + 0.5) / n * 2 - 1, ny = 1 - (y + 0.5) / n * 2;
   glm::dvec4 a = inv * glm::dvec4(nx, ny, -1, 1), b = inv * glm::dvec4(nx, ny, 1, 1);
   const dvec3 p = dvec3(a) / a.w, q = dvec3(b) / b.w;
