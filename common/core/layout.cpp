@@ -578,14 +578,17 @@ std::vector<Cell> fitting(Box area, const FlowSpec& spec, const std::vector<Stac
     return c.empty() || (c.front().picture.w <= 1 && c.front().picture.h <= 1);
   };
   auto wide = [&](const std::vector<Cell>& c) { return !none(c) && c.front().above.w() >= spec.minCellWidth; };
+  auto size = [](const std::vector<Cell>& c) {
+    return c.empty() ? 0.0 : double(c.front().picture.w) * c.front().picture.h;
+  };
+  // An even grid: every row's bands as deep as the deepest cell's.  Rows of their own, each as deep as
+  // its own cells need, when that gives larger pictures in cells wide enough (one cell's long note then
+  // costs its row the lines, not every row; in a narrow window that can be most of the height), or
+  // when the even grid has no room for the words at all; failing both, flow()'s, its captions cut
+  // with "...".
   std::vector<Cell> cells = flowWith(area, spec, lines);
-  // No even grid of cells wide enough has room for the words: each row's bands only as tall as its
-  // own cells need (one long title then costs its row a line, not every row); failing that too,
-  // the even grid of narrow cells, else flow()'s, its captions cut with "...".
-  if (!wide(cells)) {
-    std::vector<Cell> rows = flowWith(area, spec, lines, true);
-    if (wide(rows) || none(cells)) cells = std::move(rows);
-  }
+  std::vector<Cell> rows = flowWith(area, spec, lines, true);
+  if ((wide(rows) && (!wide(cells) || size(rows) > size(cells))) || none(cells)) cells = std::move(rows);
   if (none(cells)) return flow(area, spec);
   return cells;
 }

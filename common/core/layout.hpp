@@ -111,7 +111,9 @@ std::vector<Cell> flow(Box area, const FlowSpec& spec);
 // wraps rather than being cut with "...".  above[k] and below[k] are cell
 // k's texts stacked in its band (a title over a formula; phrases), their
 // lines summed; `keyLines` more lines above hold a key.  Where every text
-// fits spec's lines, it is flow(area, spec) itself.
+// fits spec's lines, it is flow(area, spec) itself.  Each row's bands are as
+// deep as its own cells need when that gives larger pictures than an even
+// grid (one long note costs its row the lines, not every row).
 using Stack = std::vector<std::string>;
 std::vector<Cell> flowFitting(Box area, FlowSpec spec, const std::vector<Stack>& above, const std::vector<Stack>& below,
                               int keyLines = 0, int maxLines = 8);

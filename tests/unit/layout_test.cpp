@@ -96,6 +96,28 @@ TEST(FlowFitting, WithNoRoomForAnEvenGridEachRowTakesItsOwnLines) {
     EXPECT_LE(cells[k].below.y1, area.y1 + 0.5f) << "cell " << k;
   }
 }
+// Six cells, three a row, one note four lines longer than the others
+// (bump_mapping's emboss in a 640x480 window): its row takes those lines and
+// the other row does not, so the pictures are larger than an even grid's,
+// which gives every row the long note's lines (the control).
+TEST(FlowFitting, ALongNoteCostsOnlyItsOwnRowTheLines) {
+  const std::string shortNote = "PSNR 23.6 dB", longNote = "PSNR 24.4 dB; contrast 0.006 with the light within 10 deg "
+                                                           "of the normal, 0.039 beyond 60 deg, and more words besides";
+  L::FlowSpec spec;
+  spec.n = 6, spec.aspect = 1.0f, spec.gap = 8;
+  std::vector<L::Stack> above(6, {"B1 Blinn"}), below(6, {shortNote});
+  below[3] = {longNote};
+  const L::Box area{4, 4, 436, 420};
+  const std::vector<L::Cell> cells = L::flowFitting(area, spec, above, below);
+  ASSERT_EQ(cells.size(), 6u);
+  const int longLines = int(std::lround(cells[3].below.h() / L::lineHeight(cells[3].scale)));
+  ASSERT_GT(longLines, 2) << "the long note must wrap for the test to mean anything";
+  EXPECT_LT(cells[0].below.h(), cells[3].below.h()) << "the first row took the long note's lines";
+  for (size_t k = 1; k < cells.size(); ++k) EXPECT_EQ(cells[k].picture.w, cells[0].picture.w) << "cell " << k;
+  // The control: the same cells with every note as long, an even grid.
+  const std::vector<L::Cell> even = L::flowFitting(area, spec, above, std::vector<L::Stack>(6, {longNote}));
+  EXPECT_GT(cells[0].picture.h, even[0].picture.h) << "rows of their own should give larger pictures";
+}
 // A GL name wider than its cell (filter_zoo's GL_NEAREST_MIPMAP_NEAREST in
 // a 640x480 window) wraps after an underscore instead of being cut with
 // "...": every line within the band, the text whole, the words after it
