@@ -155,16 +155,31 @@ inline glm::dvec2 randomIn(uint32_t key, int k) {
 constexpr uint32_t kRandomSalt = 0x27d4eb2fu;  // keeps random's points apart from jitter-pixel's
 
 enum class Pattern { Regular, JitterGlobal, JitterPixel, Reference, Random };
-// Sample k of n x n in pixel (i, j).  Reference ignores n and seed (16 x 16).
-inline glm::dvec2 samplePos(Pattern p, int n, uint32_t seed, int i, int j, int k) {
+// The key pixel (i, j)'s samples are drawn with (none for Regular).
+inline uint32_t keyOf(Pattern p, uint32_t seed, int i, int j) {
+  switch (p) {
+    case Pattern::Regular: return 0;
+    case Pattern::JitterGlobal: return globalKey(seed);
+    case Pattern::JitterPixel: return pixelKey(seed, uint32_t(i), uint32_t(j));
+    case Pattern::Reference: return pixelKey(kReferenceSeed, uint32_t(i), uint32_t(j));
+    case Pattern::Random: return pixelKey(seed ^ kRandomSalt, uint32_t(i), uint32_t(j));
+  }
+  return 0;
+}
+// Sample k of n x n in the pixel whose key is `key` (keyOf).  Reference ignores n (16 x 16).
+inline glm::dvec2 sampleOf(Pattern p, int n, uint32_t key, int k) {
   switch (p) {
     case Pattern::Regular: return regular(n, k);
-    case Pattern::JitterGlobal: return jittered(globalKey(seed), n, k);
-    case Pattern::JitterPixel: return jittered(pixelKey(seed, uint32_t(i), uint32_t(j)), n, k);
-    case Pattern::Reference: return jittered(pixelKey(kReferenceSeed, uint32_t(i), uint32_t(j)), kReferenceSide, k);
-    case Pattern::Random: return randomIn(pixelKey(seed ^ kRandomSalt, uint32_t(i), uint32_t(j)), k);
+    case Pattern::JitterGlobal:
+    case Pattern::JitterPixel: return jittered(key, n, k);
+    case Pattern::Reference: return jittered(key, kReferenceSide, k);
+    case Pattern::Random: return randomIn(key, k);
   }
   return {0.5, 0.5};
+}
+// Sample k of n x n in pixel (i, j).  Reference ignores n and seed (16 x 16).
+inline glm::dvec2 samplePos(Pattern p, int n, uint32_t seed, int i, int j, int k) {
+  return sampleOf(p, n, keyOf(p, seed, i, j), k);
 }
 inline int sideOf(Pattern p, int n) { return p == Pattern::Reference ? kReferenceSide : n; }
 
@@ -193,8 +208,9 @@ inline FloatImage renderCpu(const Camera& c, Pattern p, int n, uint32_t seed) {
     for (int j; (j = next.fetch_add(1)) < c.height;)
       for (int i = 0; i < c.width; ++i) {
         glm::dvec3 sum(0.0);
+        const uint32_t key = keyOf(p, seed, i, j);  // once a pixel, not once a sample
         for (int k = 0; k < count; ++k) {
-          glm::dvec2 s = samplePos(p, n, seed, i, j, k);
+          glm::dvec2 s = sampleOf(p, n, key, k);
           sum += colourAt(c, h, i + s.x, j + s.y);
         }
         float* o = img.at(i, c.height - 1 - j);
