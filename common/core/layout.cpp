@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <map>
 
 #include "common/core/error.hpp"
 #include "common/core/text.hpp"
@@ -560,7 +561,10 @@ std::vector<Cell> fitting(Box area, const FlowSpec& spec, const std::vector<Stac
       if (text::width(line, 1) > width - 1) return true;
     return false;
   };
+  std::map<std::pair<float, int>, std::vector<Lines>> known;  // both flows try the same widths and scales
   auto lines = [&](float width, int scale) {
+    const auto seen = known.find({width, scale});
+    if (seen != known.end()) return seen->second;
     std::vector<Lines> out(std::max(above.size(), below.size()), Lines{spec.linesAbove, spec.linesBelow});
     auto need = [&](const std::string& t) { return unbreakable(t, width) ? kNoRoom : captionLines(t, scale, width); };
     for (size_t k = 0; k < out.size(); ++k) {
@@ -572,6 +576,7 @@ std::vector<Cell> fitting(Box area, const FlowSpec& spec, const std::vector<Stac
       out[k].first = std::max(out[k].first, a >= kNoRoom ? kNoRoom : std::min(maxLines, a));
       out[k].second = std::max(out[k].second, b >= kNoRoom ? kNoRoom : std::min(maxLines, b));
     }
+    known.emplace(std::pair{width, scale}, out);
     return out;
   };
   auto none = [](const std::vector<Cell>& c) {
